@@ -1,0 +1,247 @@
+#include "explorer.h"
+
+#include <epoxy/gl.h>
+// GLFW after epoxy: epoxy provides the GL declarations, GLFW only the window.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+
+#include "core/accumulator.h"
+#include "core/camera.h"
+#include "core/error.h"
+#include "core/snapshot_publisher.h"
+#include "gl/volume_renderer.h"
+#include "pipeline.h"
+
+namespace voxflame::app {
+
+namespace {
+
+bool haveDisplay() {
+  const char* x11 = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x11 && *x11) || (wayland && *wayland);
+}
+
+int renderInsteadOfWindow(const core::Scene& scene) {
+  const std::filesystem::path output = std::filesystem::absolute("voxflame-preview.png");
+  std::cout << "voxflame: no display found (DISPLAY is not set); rendering the preset to " << output.string()
+            << " instead" << std::endl;
+  const StillResult result = renderStill(scene, StillOptions{});
+  core::writePng(output, result.image, 8, stillMetadata(scene, result));
+  std::cout << output.string() << std::endl;
+  return 0;
+}
+
+// UI state is plain data owned here; the scene being edited is the single source of truth.
+struct ExplorerState {
+  core::Scene scene;
+  bool patternDirty = false;
+  bool dragging = false;
+  double lastMouseX = 0.0, lastMouseY = 0.0;
+  double frameMs = 0.0;
+};
+
+void onScroll(GLFWwindow* window, double, double yOffset) {
+  if (ImGui::GetIO().WantCaptureMouse) return;
+  auto* state = static_cast<ExplorerState*>(glfwGetWindowUserPointer(window));
+  state->scene.camera.distance = std::clamp(state->scene.camera.distance * std::pow(0.9, yOffset), 0.2, 20.0);
+}
+
+void handleMouse(GLFWwindow* window, ExplorerState& state) {
+  double x = 0.0, y = 0.0;
+  glfwGetCursorPos(window, &x, &y);
+  const bool pressed = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  if (pressed && !state.dragging && !ImGui::GetIO().WantCaptureMouse) state.dragging = true;
+  if (!pressed) state.dragging = false;
+  if (state.dragging) {
+    state.scene.camera.azimuthDeg -= 0.3 * (x - state.lastMouseX);
+    state.scene.camera.elevationDeg = std::clamp(state.scene.camera.elevationDeg + 0.3 * (y - state.lastMouseY), -90.0, 90.0);
+  }
+  state.lastMouseX = x;
+  state.lastMouseY = y;
+}
+
+void drawPanel(ExplorerState& state, const core::AccumulatorStats& stats) {
+  ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("voxflame");
+  ImGui::TextUnformatted(state.scene.name.c_str());
+  for (std::size_t li = 0; li < state.scene.layers.size(); ++li) {
+    core::PatternLayer& layer = state.scene.layers[li];
+    const core::AttractorInfo& info = core::attractorOrThrow(layer.attractor);
+    ImGui::PushID(static_cast<int>(li));
+    if (ImGui::CollapsingHeader(info.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+      for (std::size_t p = 0; p < info.params.size(); ++p) {
+        const core::ParamInfo& param = info.params[p];
+        if (ImGui::SliderScalar(param.name.c_str(), ImGuiDataType_Double, &layer.params[p], &param.sliderMin,
+                                &param.sliderMax, "%.4f"))
+          state.patternDirty = true;
+      }
+      if (info.kind == core::AttractorKind::Flow) {
+        const double minStep = 0.001, maxStep = 0.3;
+        if (ImGui::SliderScalar("step", ImGuiDataType_Double, &layer.step, &minStep, &maxStep, "%.4f",
+                                ImGuiSliderFlags_Logarithmic))
+          state.patternDirty = true;
+      }
+      if (ImGui::Button("Reset parameters")) {
+        layer.params = info.defaultParams();
+        layer.step = info.defaultStep;
+        state.patternDirty = true;
+      }
+    }
+    ImGui::PopID();
+  }
+  if (ImGui::CollapsingHeader("Tone", ImGuiTreeNodeFlags_DefaultOpen)) {
+    core::ToneMapSettings& tone = state.scene.tone;
+    const double zero = 0.0, brightMax = 30.0, expMin = -5.0, expMax = 5.0, gMin = 0.5, gMax = 5.0, opMax = 10.0;
+    ImGui::SliderScalar("brightness", ImGuiDataType_Double, &tone.brightness, &zero, &brightMax, "%.2f");
+    ImGui::SliderScalar("exposure", ImGuiDataType_Double, &tone.exposure, &expMin, &expMax, "%.2f");
+    ImGui::SliderScalar("gamma", ImGuiDataType_Double, &tone.gamma, &gMin, &gMax, "%.2f");
+    ImGui::SliderScalar("opacity", ImGuiDataType_Double, &tone.opacity, &zero, &opMax, "%.2f");
+  }
+  ImGui::Separator();
+  ImGui::Text("%.1f M points inside  %.1f M/s", static_cast<double>(stats.points) * 1e-6, stats.pointsPerSecond * 1e-6);
+  ImGui::Text("inside %.1f%%  escapes %llu", 100.0 * stats.insideFraction(), static_cast<unsigned long long>(stats.escapes));
+  ImGui::Text("%.1f ms/frame", state.frameMs);
+  if (!stats.problem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", stats.problem.c_str());
+  ImGui::End();
+}
+
+void saveScreenshot(const std::filesystem::path& path, int width, int height) {
+  core::ImageRGBA image;
+  image.width = width;
+  image.height = height;
+  std::vector<float> rows(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadBuffer(GL_BACK);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rows.data());
+  image.pixels.resize(rows.size());
+  const std::size_t stride = 4 * static_cast<std::size_t>(width);
+  for (int y = 0; y < height; ++y)
+    std::copy_n(&rows[static_cast<std::size_t>(height - 1 - y) * stride], stride, &image.pixels[static_cast<std::size_t>(y) * stride]);
+  for (std::size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 1.0f;
+  core::writePng(path, image, 8, {});
+}
+
+struct GlfwSession {
+  GlfwSession() {
+    if (!glfwInit()) throw core::Error("could not initialise GLFW (is the display reachable?)");
+  }
+  ~GlfwSession() { glfwTerminate(); }
+};
+
+}  // namespace
+
+int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options) {
+  if (!haveDisplay()) return renderInsteadOfWindow(initialScene);
+
+  // Load everything that can fail on the user's input before opening a window.
+  const auto mask = buildSceneMask(initialScene);
+  GlfwSession glfw;
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  const std::string title = "voxflame — " + initialScene.name;
+  GLFWwindow* window = glfwCreateWindow(1280, 720, title.c_str(), nullptr, nullptr);
+  if (!window) throw core::Error("could not open an OpenGL 4.3 window on this display");
+  glfwMakeContextCurrent(window);
+  glfwSwapInterval(1);
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 430");
+
+  ExplorerState state{initialScene};
+  glfwSetWindowUserPointer(window, &state);
+  glfwSetScrollCallback(window, onScroll);
+  int exitStatus = 0;
+  {
+    gl::VolumeRenderer renderer;
+    core::Accumulator accumulator(mask);
+    accumulator.setTargetPoints(std::uint64_t{4'000'000'000});
+    accumulator.setPattern(state.scene.layers, state.scene.seed);
+    core::SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(100));
+    core::VolumeSnapshot snapshot;
+    std::uint32_t frame = 0;
+    auto lastFrame = std::chrono::steady_clock::now();
+
+    while (!glfwWindowShouldClose(window)) {
+      glfwPollEvents();
+      const bool ctrl = glfwGetKey(window, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS ||
+                        glfwGetKey(window, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+      if (ctrl && glfwGetKey(window, GLFW_KEY_Q) == GLFW_PRESS) glfwSetWindowShouldClose(window, GLFW_TRUE);
+      if (glfwGetWindowAttrib(window, GLFW_ICONIFIED)) {
+        glfwWaitEventsTimeout(0.1);
+        continue;
+      }
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui_ImplGlfw_NewFrame();
+      ImGui::NewFrame();
+      handleMouse(window, state);
+      drawPanel(state, accumulator.stats());
+      ImGui::Render();
+
+      if (state.patternDirty) {
+        state.patternDirty = false;
+        try {
+          accumulator.setPattern(state.scene.layers, state.scene.seed);
+          publisher.requestNow();
+        } catch (const core::Error& e) {
+          std::cerr << "voxflame: " << e.what() << "\n";
+        }
+      }
+      if (publisher.takeIfNewer(snapshot)) renderer.upload(snapshot);
+
+      int width = 0, height = 0;
+      glfwGetFramebufferSize(window, &width, &height);
+      gl::RenderSettings settings;
+      settings.camera = core::orbitCamera(state.scene.camera, mask->geometry.box(),
+                                          static_cast<double>(width) / std::max(1, height));
+      settings.tone = state.scene.tone;
+      settings.stepVoxels = 0.75;
+      settings.frameIndex = frame;
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      if (renderer.uploadedVersion() > 0) {
+        renderer.draw(settings, width, height);
+      } else {
+        glViewport(0, 0, width, height);
+        glClearColor(settings.tone.background.r, settings.tone.background.g, settings.tone.background.b, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+      }
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+      ++frame;
+      if (options.frames > 0 && static_cast<int>(frame) >= options.frames) {
+        if (!options.screenshotPath.empty()) {
+          saveScreenshot(options.screenshotPath, width, height);
+          std::cout << "wrote " << options.screenshotPath.string() << std::endl;
+        }
+        glfwSetWindowShouldClose(window, GLFW_TRUE);
+      }
+      glfwSwapBuffers(window);
+      const auto now = std::chrono::steady_clock::now();
+      state.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame).count();
+      lastFrame = now;
+    }
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window);
+  return exitStatus;
+}
+
+}  // namespace voxflame::app

@@ -1,0 +1,19 @@
+// The explorer: a GLFW window with Dear ImGui panels over the live, refining volume.
+#pragma once
+
+#include <filesystem>
+
+#include "core/scene.h"
+
+namespace voxflame::app {
+
+struct ExplorerOptions {
+  std::filesystem::path screenshotPath;  // when set: save the window after `frames` frames, exit
+  int frames = 0;                        // 0: run until the window is closed
+};
+
+// Opens the window and runs until it is closed. With no display, says so and renders the scene
+// to a PNG instead. Returns the process exit status.
+int runExplorer(const core::Scene& scene, const ExplorerOptions& options);
+
+}  // namespace voxflame::app

@@ -1,0 +1,39 @@
+// Images in memory and on disk. Renders come back from GL as linear-light float RGBA; writers
+// quantise to 8 or 16 bits per channel and store text chunks (the preset travels inside the PNG
+// as an iTXt chunk, so a render can be reopened and reproduced).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace voxflame::core {
+
+// Display-ready (already tone-mapped, sRGB-encoded) RGBA in [0, 1], rows top to bottom.
+struct ImageRGBA {
+  int width = 0;
+  int height = 0;
+  std::vector<float> pixels;  // 4 per pixel
+
+  float* at(int x, int y) { return &pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x))]; }
+  const float* at(int x, int y) const {
+    return &pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x))];
+  }
+};
+
+using TextChunks = std::map<std::string, std::string>;  // keyword -> UTF-8 text
+
+// Writes a PNG of 8 or 16 bits per channel. The file appears complete or not at all (written to
+// a temporary beside it, then renamed). Throws core::Error naming the path on failure.
+void writePng(const std::filesystem::path& path, const ImageRGBA& image, int bitDepth, const TextChunks& text);
+
+struct PngInfo {
+  ImageRGBA image;
+  TextChunks text;
+  int bitDepth = 8;
+};
+PngInfo readPng(const std::filesystem::path& path);
+
+}  // namespace voxflame::core

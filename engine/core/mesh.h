@@ -1,0 +1,43 @@
+// A triangle mesh as the rest of voxflame sees it: one flat list of vertices and triangles in the
+// file's own coordinates, with every sub-mesh of the file merged and its node transform applied.
+// Loading goes through Assimp, so any format Assimp reads works; what cannot be used (missing
+// file, no triangles, a flat mesh) is refused with a message naming the file.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace voxflame::core {
+
+struct Box {
+  glm::dvec3 min{0.0};
+  glm::dvec3 max{0.0};
+  glm::dvec3 extent() const { return max - min; }
+  glm::dvec3 center() const { return 0.5 * (min + max); }
+};
+
+struct TriangleMesh {
+  std::vector<glm::vec3> vertices;
+  std::vector<std::array<std::uint32_t, 3>> triangles;
+  std::string name;  // file name, for messages and statistics
+
+  Box bounds() const;
+};
+
+// Loads and merges every mesh of the file. Throws core::Error naming the file on any problem.
+TriangleMesh loadMesh(const std::filesystem::path& path);
+
+// Same, from bytes in memory (an embedded resource); extensionHint is the format's extension
+// without the dot ("obj", "ply") and displayName is what messages call it.
+TriangleMesh loadMeshFromMemory(std::span<const std::byte> data, std::string_view extensionHint,
+                                std::string_view displayName);
+
+}  // namespace voxflame::core

@@ -1,0 +1,285 @@
+#include "scene.h"
+
+#include <cmath>
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "error.h"
+
+namespace voxflame::core {
+
+using nlohmann::json;
+
+std::filesystem::path Scene::resolvedMeshPath() const {
+  const std::filesystem::path mesh(meshPath);
+  if (mesh.is_absolute() || embedded) return mesh;
+  return baseDirectory / mesh;
+}
+
+namespace {
+
+// Reads one JSON object strictly: every key read is remembered, and finish() reports any key
+// that was not, so misspelt keys are errors. Messages carry the source and the key path.
+class ObjectReader {
+public:
+  ObjectReader(const json& object, std::string source, std::string path)
+      : object_(object), source_(std::move(source)), path_(std::move(path)) {
+    if (!object_.is_object()) fail(path_.empty() ? "the preset must be a JSON object" : "must be an object");
+  }
+
+  [[noreturn]] void fail(const std::string& reason, const std::string& key = "") const {
+    const std::string where = key.empty() ? path_ : keyPath(key);
+    throw Error(source_ + ": " + (where.empty() ? "" : "'" + where + "' ") + reason);
+  }
+  std::string keyPath(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
+  const std::string& source() const { return source_; }
+
+  const json* find(const std::string& key) {
+    seen_.insert(key);
+    auto it = object_.find(key);
+    return it == object_.end() ? nullptr : &*it;
+  }
+
+  double number(const std::string& key, double fallback, double min, double max) {
+    const json* value = find(key);
+    if (!value) return fallback;
+    return checkNumber(*value, key, min, max);
+  }
+
+  double checkNumber(const json& value, const std::string& key, double min, double max) const {
+    if (!value.is_number()) fail("must be a number", key);
+    const double v = value.get<double>();
+    if (!std::isfinite(v) || v < min || v > max) {
+      std::ostringstream range;
+      range << "is " << v << ", outside the allowed range [" << min << ", " << max << "]";
+      fail(range.str(), key);
+    }
+    return v;
+  }
+
+  std::int64_t integer(const std::string& key, std::int64_t fallback, std::int64_t min, std::int64_t max) {
+    const json* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_number_integer()) fail("must be a whole number", key);
+    const auto v = value->get<std::int64_t>();
+    if (v < min || v > max)
+      fail("is " + std::to_string(v) + ", outside the allowed range [" + std::to_string(min) + ", " +
+               std::to_string(max) + "]",
+           key);
+    return v;
+  }
+
+  std::string string(const std::string& key, const std::string& fallback) {
+    const json* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_string()) fail("must be a string", key);
+    return value->get<std::string>();
+  }
+
+  std::string requiredString(const std::string& key) {
+    if (!object_.contains(key)) fail("is missing", key);
+    return string(key, "");
+  }
+
+  glm::vec3 color(const std::string& key, glm::vec3 fallback) {
+    const json* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_string()) fail("must be a colour string like \"#ff8800\"", key);
+    try {
+      return parseHexColor(value->get<std::string>());
+    } catch (const Error& e) {
+      fail(e.what(), key);
+    }
+  }
+
+  void finish() const {
+    for (auto it = object_.begin(); it != object_.end(); ++it)
+      if (!seen_.count(it.key())) fail("is not a known key", it.key());
+  }
+
+private:
+  const json& object_;
+  std::string source_;
+  std::string path_;
+  std::set<std::string> seen_;
+};
+
+ColorSettings readColor(ObjectReader& parent, const std::string& key) {
+  ColorSettings color;
+  color.gradient = {{0.0f, parseHexColor("#2a6cff")}, {1.0f, parseHexColor("#ffb347")}};
+  const json* value = parent.find(key);
+  if (!value) return color;
+  ObjectReader reader(*value, parent.source(), parent.keyPath(key));
+  const std::string mode = reader.string("mode", "speed");
+  if (mode != "speed") reader.fail("is '" + mode + "'; the known colour modes are: speed", "mode");
+  if (const json* stops = reader.find("gradient")) {
+    const std::string path = reader.keyPath("gradient");
+    if (!stops->is_array() || stops->size() < 2 || stops->size() > 64)
+      reader.fail("must be an array of 2 to 64 colours like \"#ff8800\"", "gradient");
+    color.gradient.clear();
+    const std::size_t count = stops->size();
+    for (std::size_t i = 0; i < count; ++i) {
+      const json& stop = (*stops)[i];
+      if (!stop.is_string())
+        throw Error(parent.source() + ": '" + path + "[" + std::to_string(i) + "]' must be a colour string");
+      try {
+        color.gradient.push_back({static_cast<float>(i) / static_cast<float>(count - 1),
+                                  parseHexColor(stop.get<std::string>())});
+      } catch (const Error& e) {
+        throw Error(parent.source() + ": '" + path + "[" + std::to_string(i) + "]' " + e.what());
+      }
+    }
+  }
+  reader.finish();
+  return color;
+}
+
+PatternLayer readLayer(const json& value, const std::string& source, const std::string& path) {
+  ObjectReader reader(value, source, path);
+  PatternLayer layer;
+  layer.attractor = reader.requiredString("attractor");
+  const AttractorInfo* info = findAttractor(layer.attractor);
+  if (!info) {
+    try {
+      attractorOrThrow(layer.attractor);
+    } catch (const Error& e) {
+      reader.fail(e.what(), "attractor");
+    }
+  }
+  layer.params = info->defaultParams();
+  if (const json* params = reader.find("params")) {
+    ObjectReader paramReader(*params, source, reader.keyPath("params"));
+    for (std::size_t i = 0; i < info->params.size(); ++i)
+      layer.params[i] = paramReader.number(info->params[i].name, info->params[i].defaultValue, -1e6, 1e6);
+    paramReader.finish();
+  }
+  const std::string integrator = reader.string("integrator", std::string(toString(info->defaultIntegrator)));
+  try {
+    layer.integrator = integratorFromString(integrator);
+  } catch (const Error& e) {
+    reader.fail(e.what(), "integrator");
+  }
+  layer.step = reader.number("step", info->defaultStep, 1e-6, 1.0);
+  layer.weight = reader.number("weight", 1.0, 0.0, 1000.0);
+  layer.color = readColor(reader, "color");
+  reader.finish();
+  return layer;
+}
+
+}  // namespace
+
+Scene sceneFromJson(std::string_view text, std::string_view sourceName) {
+  const std::string source(sourceName);
+  json document;
+  try {
+    document = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw Error(source + ": not valid JSON (" + e.what() + ")");
+  }
+  ObjectReader root(document, source, "");
+  Scene scene;
+  const auto version = root.integer("schema_version", kSchemaVersion, 1, 1'000'000);
+  if (version > kSchemaVersion)
+    root.fail("is " + std::to_string(version) + ", newer than this voxflame understands (" +
+                  std::to_string(kSchemaVersion) + ")",
+              "schema_version");
+  scene.name = root.string("name", scene.name);
+
+  const json* mesh = root.find("mesh");
+  if (!mesh) root.fail("is missing", "mesh");
+  {
+    ObjectReader meshReader(*mesh, source, "mesh");
+    scene.meshPath = meshReader.requiredString("path");
+    if (scene.meshPath.empty()) meshReader.fail("must not be empty", "path");
+    meshReader.finish();
+  }
+  if (const json* grid = root.find("grid")) {
+    ObjectReader gridReader(*grid, source, "grid");
+    scene.gridResolution = static_cast<int>(gridReader.integer("resolution", scene.gridResolution, 16, 1024));
+    gridReader.finish();
+  }
+
+  const json* layers = root.find("layers");
+  if (!layers) root.fail("is missing", "layers");
+  if (!layers->is_array() || layers->empty() || layers->size() > 16)
+    root.fail("must be an array of 1 to 16 pattern layers", "layers");
+  for (std::size_t i = 0; i < layers->size(); ++i)
+    scene.layers.push_back(readLayer((*layers)[i], source, "layers[" + std::to_string(i) + "]"));
+
+  if (const json* tone = root.find("tone")) {
+    ObjectReader toneReader(*tone, source, "tone");
+    ToneMapSettings& t = scene.tone;
+    t.brightness = toneReader.number("brightness", t.brightness, 0.0, 1000.0);
+    t.gamma = toneReader.number("gamma", t.gamma, 0.1, 10.0);
+    t.exposure = toneReader.number("exposure", t.exposure, -20.0, 20.0);
+    t.opacity = toneReader.number("opacity", t.opacity, 0.0, 100.0);
+    t.background = toneReader.color("background", t.background);
+    toneReader.finish();
+  }
+  if (const json* camera = root.find("camera")) {
+    ObjectReader cameraReader(*camera, source, "camera");
+    CameraSettings& c = scene.camera;
+    c.azimuthDeg = cameraReader.number("azimuth_deg", c.azimuthDeg, -3600.0, 3600.0);
+    c.elevationDeg = cameraReader.number("elevation_deg", c.elevationDeg, -90.0, 90.0);
+    c.distance = cameraReader.number("distance", c.distance, 0.01, 1000.0);
+    c.fovDeg = cameraReader.number("fov_deg", c.fovDeg, 1.0, 170.0);
+    cameraReader.finish();
+  }
+  scene.seed = static_cast<std::uint64_t>(root.integer("seed", 1, 0, std::int64_t{1} << 53));
+  scene.points = static_cast<std::uint64_t>(root.integer("points", 20'000'000, 1'000, std::int64_t{1} << 40));
+  root.finish();
+  return scene;
+}
+
+Scene loadScene(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw Error("preset file '" + path.string() + "' does not exist");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error("cannot open preset file '" + path.string() + "'");
+  std::ostringstream text;
+  text << in.rdbuf();
+  Scene scene = sceneFromJson(text.str(), path.string());
+  scene.baseDirectory = path.parent_path();
+  return scene;
+}
+
+std::string sceneToJson(const Scene& scene) {
+  json root;
+  root["schema_version"] = kSchemaVersion;
+  root["name"] = scene.name;
+  root["mesh"] = {{"path", scene.meshPath}};
+  root["grid"] = {{"resolution", scene.gridResolution}};
+  json layers = json::array();
+  for (const auto& layer : scene.layers) {
+    const AttractorInfo& info = attractorOrThrow(layer.attractor);
+    json params = json::object();
+    for (std::size_t i = 0; i < info.params.size() && i < layer.params.size(); ++i)
+      params[info.params[i].name] = layer.params[i];
+    json gradient = json::array();
+    for (const auto& stop : layer.color.gradient) gradient.push_back(toHexColor(stop.color));
+    layers.push_back({{"attractor", layer.attractor},
+                      {"params", params},
+                      {"integrator", std::string(toString(layer.integrator))},
+                      {"step", layer.step},
+                      {"weight", layer.weight},
+                      {"color", {{"mode", "speed"}, {"gradient", gradient}}}});
+  }
+  root["layers"] = layers;
+  root["tone"] = {{"brightness", scene.tone.brightness},
+                  {"gamma", scene.tone.gamma},
+                  {"exposure", scene.tone.exposure},
+                  {"opacity", scene.tone.opacity},
+                  {"background", toHexColor(scene.tone.background)}};
+  root["camera"] = {{"azimuth_deg", scene.camera.azimuthDeg},
+                    {"elevation_deg", scene.camera.elevationDeg},
+                    {"distance", scene.camera.distance},
+                    {"fov_deg", scene.camera.fovDeg}};
+  root["seed"] = scene.seed;
+  root["points"] = scene.points;
+  return root.dump(2) + "\n";
+}
+
+}  // namespace voxflame::core

@@ -1,0 +1,75 @@
+// The Scene is the one document: everything a user can set, and exactly what a JSON preset
+// holds. Loading validates every key against its allowed range and refuses unknown keys, naming
+// the file, the key path and the reason, so a typo never silently does nothing.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json_fwd.hpp>
+
+#include "attractor.h"
+#include "color.h"
+
+namespace voxflame::core {
+
+inline constexpr int kSchemaVersion = 1;
+
+enum class ColorMode { Speed };
+
+struct ColorSettings {
+  ColorMode mode = ColorMode::Speed;
+  std::vector<GradientStop> gradient;  // linear RGB stops
+};
+
+// One attractor filling the volume; several layers share one grid, each with its weight.
+struct PatternLayer {
+  std::string attractor = "lorenz84";
+  std::vector<double> params;          // in the catalogue's parameter order
+  Integrator integrator = Integrator::Euler;
+  double step = 0.135;                 // flows only
+  double weight = 1.0;
+  ColorSettings color;
+};
+
+// flam3-style tone mapping, applied in the shader so changing it never restarts accumulation.
+struct ToneMapSettings {
+  double brightness = 4.0;
+  double gamma = 2.2;
+  double exposure = 0.0;     // stops
+  double opacity = 1.0;      // how strongly dense voxels hide what is behind them
+  glm::vec3 background{0.0f};  // linear RGB
+};
+
+struct CameraSettings {
+  double azimuthDeg = 30.0;
+  double elevationDeg = 15.0;
+  double distance = 2.6;     // in units of the grid's bounding-sphere radius
+  double fovDeg = 35.0;
+};
+
+struct Scene {
+  std::string name = "untitled";
+  std::string meshPath;                    // as written in the preset
+  std::filesystem::path baseDirectory;     // relative mesh paths resolve against this
+  bool embedded = false;                   // the preset and its mesh live inside the binary
+  int gridResolution = 192;
+  std::vector<PatternLayer> layers;
+  ToneMapSettings tone;
+  CameraSettings camera;
+  std::uint64_t seed = 1;
+  std::uint64_t points = 20'000'000;       // points accumulated for a still
+
+  std::filesystem::path resolvedMeshPath() const;
+};
+
+// Parses a preset. `sourceName` is what messages call it (a file path). Throws core::Error.
+Scene sceneFromJson(std::string_view text, std::string_view sourceName);
+Scene loadScene(const std::filesystem::path& path);
+std::string sceneToJson(const Scene& scene);  // pretty-printed, loads back to an equal Scene
+
+}  // namespace voxflame::core

@@ -1,0 +1,39 @@
+// Double-buffered snapshots of a running Accumulator, taken on a thread of their own so the main
+// thread never spends a frame copying the grid: it only swaps in the newest finished snapshot.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "accumulator.h"
+
+namespace voxflame::core {
+
+class SnapshotPublisher {
+public:
+  SnapshotPublisher(const Accumulator& accumulator, std::chrono::milliseconds interval);
+  ~SnapshotPublisher();  // joins the thread
+
+  // Swaps the newest snapshot into `out` when one newer than `out.version` is ready; never waits
+  // for a snapshot in progress. Returns whether `out` changed.
+  bool takeIfNewer(VolumeSnapshot& out);
+  void requestNow();  // take the next snapshot without waiting for the interval
+
+private:
+  void loop(std::stop_token stop);
+
+  const Accumulator& accumulator_;
+  std::chrono::milliseconds interval_;
+  std::mutex mutex_;               // guards ready_ and readyFresh_
+  VolumeSnapshot ready_;
+  bool readyFresh_ = false;
+  std::mutex wakeMutex_;
+  std::condition_variable_any wake_;
+  bool wakeRequested_ = false;     // guarded by wakeMutex_
+  std::jthread thread_;
+};
+
+}  // namespace voxflame::core

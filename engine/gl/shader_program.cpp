@@ -1,0 +1,74 @@
+#include "shader_program.h"
+
+#include <utility>
+
+#include "core/error.h"
+
+namespace voxflame::gl {
+
+namespace {
+
+GLuint compile(GLenum stage, const std::string& source) {
+  const GLuint shader = glCreateShader(stage);
+  const char* text = source.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    glDeleteShader(shader);
+    throw core::Error(std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+                      " shader failed to compile: " + log);
+  }
+  return shader;
+}
+
+}  // namespace
+
+ShaderProgram::ShaderProgram(const std::string& vertexSource, const std::string& fragmentSource) {
+  const GLuint vertex = compile(GL_VERTEX_SHADER, vertexSource);
+  GLuint fragment = 0;
+  try {
+    fragment = compile(GL_FRAGMENT_SHADER, fragmentSource);
+  } catch (...) {
+    glDeleteShader(vertex);
+    throw;
+  }
+  program_ = glCreateProgram();
+  glAttachShader(program_, vertex);
+  glAttachShader(program_, fragment);
+  glLinkProgram(program_);
+  glDeleteShader(vertex);
+  glDeleteShader(fragment);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program_, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program_, length, nullptr, log.data());
+    glDeleteProgram(program_);
+    program_ = 0;
+    throw core::Error("shader program failed to link: " + log);
+  }
+}
+
+ShaderProgram::~ShaderProgram() {
+  if (program_) glDeleteProgram(program_);
+}
+
+ShaderProgram::ShaderProgram(ShaderProgram&& other) noexcept : program_(std::exchange(other.program_, 0)) {}
+
+ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
+  if (this != &other) {
+    if (program_) glDeleteProgram(program_);
+    program_ = std::exchange(other.program_, 0);
+  }
+  return *this;
+}
+
+}  // namespace voxflame::gl

@@ -1,0 +1,95 @@
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/camera.h"
+#include "core/scene_io.h"
+#include "gl/headless_context.h"
+#include "gl/volume_renderer.h"
+#include "pipeline.h"
+
+using namespace voxflame;
+
+namespace {
+
+float luminance(const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; }
+
+// The screen-space box of the bunny's 3D bounding box under the scene's camera.
+void projectedBox(const core::Scene& scene, const core::Box& grid, const core::Box& mesh, int width, int height,
+                  glm::ivec2& low, glm::ivec2& high) {
+  const core::CameraFrame camera = core::orbitCamera(scene.camera, grid, static_cast<double>(width) / height);
+  low = glm::ivec2(width, height);
+  high = glm::ivec2(0);
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? mesh.max.x : mesh.min.x, (corner & 2) ? mesh.max.y : mesh.min.y,
+                       (corner & 4) ? mesh.max.z : mesh.min.z);
+    glm::dvec4 clip = camera.projection * camera.view * glm::dvec4(p, 1.0);
+    clip /= clip.w;
+    const glm::ivec2 pixel(static_cast<int>((clip.x * 0.5 + 0.5) * width), static_cast<int>((0.5 - clip.y * 0.5) * height));
+    low = glm::min(low, pixel);
+    high = glm::max(high, pixel);
+  }
+}
+
+}  // namespace
+
+TEST(HeadlessGl, MakesACoreContext) {
+  gl::HeadlessContext context;
+  EXPECT_FALSE(context.renderer().empty());
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  EXPECT_GE(major * 10 + minor, 43) << context.version();
+}
+
+TEST(HeadlessRender, DefaultPresetLightsTheBunnyAndLeavesBackgroundAround) {
+  const core::Scene scene = core::defaultScene();
+  app::StillOptions options;
+  options.width = 160;
+  options.height = 120;
+  options.points = 2'000'000;
+  const app::StillResult result = app::renderStill(scene, options);
+  ASSERT_EQ(result.image.width, 160);
+  ASSERT_EQ(result.image.height, 120);
+
+  const core::TriangleMesh mesh = core::loadSceneMesh(scene);
+  const core::GridGeometry grid = core::gridOverBox(mesh.bounds(), scene.gridResolution);
+  glm::ivec2 low, high;
+  projectedBox(scene, grid.box(), mesh.bounds(), 160, 120, low, high);
+  ASSERT_LT(low.x, high.x);
+
+  const glm::vec3 background = core::linearToSrgb(scene.tone.background);
+  int litInside = 0, insideCount = 0, litOutside = 0, outsideCount = 0;
+  for (int y = 0; y < 120; ++y)
+    for (int x = 0; x < 160; ++x) {
+      const float* p = result.image.at(x, y);
+      const bool lit = luminance(p) > luminance(&background.x) + 0.08f;
+      const bool inBox = x >= low.x && x <= high.x && y >= low.y && y <= high.y;
+      const bool farOutside = x < low.x - 4 || x > high.x + 4 || y < low.y - 4 || y > high.y + 4;
+      if (inBox) {
+        ++insideCount;
+        litInside += lit;
+      } else if (farOutside) {
+        ++outsideCount;
+        litOutside += lit;
+      }
+    }
+  EXPECT_GT(litInside, insideCount / 10) << "too few lit pixels over the bunny";
+  EXPECT_EQ(litOutside, 0) << "lit pixels far outside the bunny";
+  EXPECT_GT(outsideCount, 0);
+}
+
+TEST(HeadlessRender, LookingStraightDownIsNotBlack) {
+  core::Scene scene = core::defaultScene();
+  scene.camera.elevationDeg = 90.0;
+  scene.gridResolution = 64;
+  app::StillOptions options;
+  options.width = 64;
+  options.height = 64;
+  options.points = 300'000;
+  const app::StillResult result = app::renderStill(scene, options);
+  float brightest = 0.0f;
+  for (int y = 0; y < 64; ++y)
+    for (int x = 0; x < 64; ++x) brightest = std::max(brightest, luminance(result.image.at(x, y)));
+  EXPECT_GT(brightest, 0.2f);
+}

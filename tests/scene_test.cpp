@@ -1,0 +1,130 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+
+#include "core/error.h"
+#include "core/scene.h"
+#include "core/scene_io.h"
+#include "test_support.h"
+
+using namespace voxflame::core;
+
+namespace {
+
+std::string errorOf(const std::string& json) {
+  try {
+    sceneFromJson(json, "test.json");
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const char* kMinimal = R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84"}]})";
+
+}  // namespace
+
+TEST(Scene, DefaultPresetLoadsWithSeedParameters) {
+  const Scene scene = defaultScene();
+  ASSERT_EQ(scene.layers.size(), 1u);
+  const PatternLayer& layer = scene.layers[0];
+  EXPECT_EQ(layer.attractor, "lorenz84");
+  ASSERT_EQ(layer.params.size(), 4u);
+  EXPECT_DOUBLE_EQ(layer.params[0], 1.111);
+  EXPECT_DOUBLE_EQ(layer.params[1], 1.479);
+  EXPECT_DOUBLE_EQ(layer.params[2], 4.494);
+  EXPECT_DOUBLE_EQ(layer.params[3], 0.44);
+  EXPECT_DOUBLE_EQ(layer.step, 0.135);
+  EXPECT_EQ(layer.integrator, Integrator::Euler);
+  EXPECT_TRUE(scene.embedded);
+}
+
+TEST(Scene, ShippedDefaultFileEqualsEmbeddedOne) {
+  const Scene file = loadScene(voxflame::test::sourcePath("presets/default.json"));
+  EXPECT_EQ(sceneToJson(file), sceneToJson(defaultScene()));
+}
+
+TEST(Scene, MinimalPresetGetsDefaults) {
+  const Scene scene = sceneFromJson(kMinimal, "test.json");
+  EXPECT_EQ(scene.layers[0].params.size(), 4u);
+  EXPECT_EQ(scene.gridResolution, 192);
+}
+
+TEST(Scene, SerialisedSceneLoadsBackEqual) {
+  const Scene scene = defaultScene();
+  const std::string text = sceneToJson(scene);
+  const Scene back = sceneFromJson(text, "roundtrip.json");
+  EXPECT_EQ(sceneToJson(back), text);
+}
+
+TEST(Scene, ErrorsNameTheSourceKeyAndReason) {
+  EXPECT_NE(errorOf("{not json").find("not valid JSON"), std::string::npos);
+  EXPECT_NE(errorOf("[]").find("must be a JSON object"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"layers":[{"attractor":"lorenz84"}]})").find("'mesh' is missing"), std::string::npos);
+  const std::string unknown = errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84"}],"colour":1})");
+  EXPECT_NE(unknown.find("test.json"), std::string::npos);
+  EXPECT_NE(unknown.find("'colour' is not a known key"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"nope"}]})").find("unknown attractor 'nope'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84","params":{"q":1}}]})")
+                .find("'layers[0].params.q' is not a known key"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"grid":{"resolution":5000},"layers":[{"attractor":"lorenz84"}]})")
+                .find("'grid.resolution' is 5000, outside the allowed range"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84","step":1e300}]})")
+                .find("'layers[0].step'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84","integrator":"verlet"}]})")
+                .find("unknown integrator"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[],"seed":1})").find("'layers'"), std::string::npos);
+  EXPECT_NE(errorOf(R"({"schema_version":99,"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84"}]})")
+                .find("newer than this voxflame"),
+            std::string::npos);
+}
+
+TEST(Scene, MissingPresetFileIsNamed) {
+  try {
+    loadScene("/nonexistent/where.json");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/where.json"), std::string::npos);
+  }
+}
+
+TEST(Scene, RelativeMeshResolvesAgainstThePresetFolder) {
+  voxflame::test::TemporaryFolder folder;
+  std::ofstream(folder / "p.json") << kMinimal;
+  const Scene scene = loadScene(folder / "p.json");
+  EXPECT_EQ(scene.resolvedMeshPath(), folder.path() / "m.obj");
+}
+
+// Mutated presets must give an Error or a valid Scene, never a crash or another exception.
+TEST(Scene, FuzzedPresetsNeverCrash) {
+  const std::string base = sceneToJson(defaultScene());
+  std::uint64_t state = 12345;
+  auto next = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<std::size_t>(state >> 33);
+  };
+  const std::string alphabet = "{}[]\",:0123456789.eE-+ntrufalsx\\#";
+  for (int round = 0; round < 3000; ++round) {
+    std::string text = base;
+    const int edits = 1 + static_cast<int>(next() % 4);
+    for (int e = 0; e < edits; ++e) {
+      const std::size_t at = next() % text.size();
+      switch (next() % 3) {
+        case 0: text[at] = alphabet[next() % alphabet.size()]; break;
+        case 1: text.erase(at, 1 + next() % 8); break;
+        default: text.insert(at, 1, alphabet[next() % alphabet.size()]); break;
+      }
+      if (text.empty()) text = "{";
+    }
+    try {
+      sceneFromJson(text, "fuzz.json");
+    } catch (const Error&) {
+    }
+  }
+}

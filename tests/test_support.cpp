@@ -1,0 +1,43 @@
+#include "test_support.h"
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <random>
+
+namespace voxflame::test {
+
+std::filesystem::path meshPath(const std::string& name) { return std::filesystem::path(VOXFLAME_TEST_MESHES) / name; }
+std::filesystem::path sourcePath(const std::string& relative) {
+  return std::filesystem::path(VOXFLAME_SOURCE_DIR) / relative;
+}
+
+TemporaryFolder::TemporaryFolder() {
+  std::random_device random;
+  path_ = std::filesystem::temp_directory_path() / ("voxflame-test-" + std::to_string(random()) + std::to_string(random()));
+  std::filesystem::create_directories(path_);
+}
+
+TemporaryFolder::~TemporaryFolder() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
+
+CommandResult runVoxflame(const std::string& arguments, const std::filesystem::path& workingDir,
+                          const std::string& environment) {
+  std::string command;
+  if (!workingDir.empty()) command += "cd '" + workingDir.string() + "' && ";
+  command += environment + " '" + std::string(VOXFLAME_BINARY) + "' " + arguments + " 2>&1";
+  CommandResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) return result;
+  std::array<char, 4096> buffer{};
+  std::size_t count = 0;
+  while ((count = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), count);
+  const int status = pclose(pipe);
+  result.exitStatus = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+}  // namespace voxflame::test

@@ -1,0 +1,33 @@
+// Helpers shared by the test suites: where the shared meshes are, temporary folders, running
+// the voxflame binary and capturing what it prints.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace voxflame::test {
+
+std::filesystem::path meshPath(const std::string& name);  // ../shared/data/meshes/NAME
+std::filesystem::path sourcePath(const std::string& relative);
+
+// A fresh, empty folder removed when the object goes away.
+class TemporaryFolder {
+public:
+  TemporaryFolder();
+  ~TemporaryFolder();
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+private:
+  std::filesystem::path path_;
+};
+
+struct CommandResult {
+  int exitStatus = -1;
+  std::string output;  // stdout and stderr together
+};
+// Runs the built voxflame binary with these arguments (a shell-quoted string) in `workingDir`.
+CommandResult runVoxflame(const std::string& arguments, const std::filesystem::path& workingDir = {},
+                          const std::string& environment = "");
+
+}  // namespace voxflame::test
