@@ -8,6 +8,8 @@
 #include <iostream>
 #include <optional>
 
+#include "arguments.h"
+#include "commands.h"
 #include "core/error.h"
 #include "core/scene_io.h"
 #include "explorer.h"
@@ -26,72 +28,12 @@ usage:
   voxflame render [PRESET.json] -o OUT.png [--width W] [--height H] [--points N]
                   [--bit-depth 8|16] [--threads T]
       Render a still headless (no display needed); the PNG carries the preset.
+  voxflame bench [accumulate|mask|raymarch|export] [--json]
+      Measure performance (Release build).
   voxflame --help | --version
 )";
 
-class UsageError : public core::Error {
-public:
-  using core::Error::Error;
-};
-
-// Reads `--name value` pairs and positional arguments; every option must be known.
-class Arguments {
-public:
-  Arguments(const std::vector<std::string>& args, std::size_t first) {
-    for (std::size_t i = first; i < args.size(); ++i) {
-      const std::string& a = args[i];
-      if (a.size() > 1 && a[0] == '-' && !(a.size() > 1 && std::isdigit(static_cast<unsigned char>(a[1])))) {
-        if (i + 1 >= args.size()) throw UsageError("option " + a + " needs a value");
-        options_.push_back({a, args[++i], false});
-      } else {
-        positional_.push_back(a);
-      }
-    }
-  }
-
-  std::optional<std::string> take(const std::string& name, const std::string& alias = "") {
-    std::optional<std::string> value;
-    for (auto& option : options_)
-      if (option.name == name || (!alias.empty() && option.name == alias)) {
-        value = option.value;
-        option.used = true;
-      }
-    return value;
-  }
-
-  long long integer(const std::string& name, long long fallback, long long min, long long max) {
-    const auto text = take(name);
-    if (!text) return fallback;
-    std::size_t used = 0;
-    long long value = 0;
-    try {
-      value = std::stoll(*text, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != text->size()) throw UsageError(name + " expects a whole number, not '" + *text + "'");
-    if (value < min || value > max)
-      throw UsageError(name + " is " + *text + "; allowed: " + std::to_string(min) + " to " + std::to_string(max));
-    return value;
-  }
-
-  const std::vector<std::string>& positional() const { return positional_; }
-
-  void finish(std::size_t maxPositional) const {
-    for (const auto& option : options_)
-      if (!option.used) throw UsageError("unknown option " + option.name);
-    if (positional_.size() > maxPositional) throw UsageError("unexpected argument '" + positional_.back() + "'");
-  }
-
-private:
-  struct Option {
-    std::string name;
-    std::string value;
-    bool used;
-  };
-  std::vector<Option> options_;
-  std::vector<std::string> positional_;
-};
+}  // namespace
 
 core::Scene sceneFromArgument(const std::vector<std::string>& positional) {
   if (positional.empty()) return core::defaultScene();
@@ -130,6 +72,8 @@ int renderCommand(const std::vector<std::string>& args) {
   return 0;
 }
 
+namespace {
+
 int explorerCommand(const std::vector<std::string>& args) {
   Arguments arguments(args, 1);
   ExplorerOptions options;
@@ -153,7 +97,8 @@ int runCommandLine(const std::vector<std::string>& args) {
       std::cout << "voxflame " << kVersion << "\n";
       return 0;
     }
-    if (command == "render") return renderCommand(args);
+    for (const Subcommand& subcommand : subcommands())
+      if (command == subcommand.name) return subcommand.run(args);
     return explorerCommand(args);
   } catch (const UsageError& e) {
     std::cerr << "voxflame: " << e.what() << "\n\n" << kUsage;
@@ -165,6 +110,18 @@ int runCommandLine(const std::vector<std::string>& args) {
     std::cerr << "voxflame: out of memory; try a smaller grid or image\n";
     return 1;
   }
+}
+
+}  // namespace voxflame::app
+
+namespace voxflame::app {
+
+const std::vector<Subcommand>& subcommands() {
+  static const std::vector<Subcommand> table = {
+      {"render", &renderCommand},
+      {"bench", &benchCommand},
+  };
+  return table;
 }
 
 }  // namespace voxflame::app

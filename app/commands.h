@@ -1,0 +1,26 @@
+// The subcommands of the voxflame binary. Each lives in its own file and is listed once in
+// subcommands(); runCommandLine dispatches on the first argument.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/scene.h"
+
+namespace voxflame::app {
+
+using CommandArgs = std::vector<std::string>;  // the whole argv: [0] program, [1] subcommand
+
+struct Subcommand {
+  const char* name;
+  int (*run)(const CommandArgs& args);
+};
+const std::vector<Subcommand>& subcommands();
+
+int renderCommand(const CommandArgs& args);  // cli.cpp
+int benchCommand(const CommandArgs& args);   // bench/bench_command.cpp
+
+// The preset named by the first positional argument, or the embedded default when none.
+core::Scene sceneFromArgument(const std::vector<std::string>& positional);
+
+}  // namespace voxflame::app

@@ -1,0 +1,30 @@
+// `voxflame bench NAME [--json]`: each benchmark measures one part of the pipeline on the shared
+// test meshes and prints one line per measurement (a JSON object per line with --json).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace voxflame::bench {
+
+struct BenchOptions {
+  bool json = false;
+  std::string meshFolder;  // where bunny.obj, dragon.ply, ... are
+};
+
+struct Benchmark {
+  const char* name;
+  const char* description;
+  void (*run)(const BenchOptions& options);
+};
+const std::vector<Benchmark>& benchmarks();
+
+// Prints one measurement: the JSON object as one line with --json, else "key=value" pairs.
+void report(const BenchOptions& options, const nlohmann::json& measurement);
+
+void benchAccumulate(const BenchOptions& options);  // bench_accumulate.cpp
+void benchRaymarch(const BenchOptions& options);    // bench_raymarch.cpp
+
+}  // namespace voxflame::bench

@@ -1,0 +1,71 @@
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "arguments.h"
+#include "bench.h"
+#include "commands.h"
+
+namespace voxflame::bench {
+
+const std::vector<Benchmark>& benchmarks() {
+  static const std::vector<Benchmark> table = {
+      {"accumulate", "points per second filling the bunny mask at 256³", &benchAccumulate},
+      {"raymarch", "milliseconds per 1280×720 frame of a 256³ and a 512³ grid", &benchRaymarch},
+  };
+  return table;
+}
+
+void report(const BenchOptions& options, const nlohmann::json& measurement) {
+  if (options.json) {
+    std::cout << measurement.dump() << std::endl;
+    return;
+  }
+  bool first = true;
+  for (auto it = measurement.begin(); it != measurement.end(); ++it) {
+    std::cout << (first ? "" : "  ") << it.key() << "=" << (it->is_string() ? it->get<std::string>() : it->dump());
+    first = false;
+  }
+  std::cout << std::endl;
+}
+
+namespace {
+
+// The shared test meshes: $VOXFLAME_MESHES, else ../shared/data/meshes from the current folder
+// or from the source tree this binary was built from.
+std::string findMeshFolder() {
+  if (const char* env = std::getenv("VOXFLAME_MESHES")) return env;
+  for (const std::filesystem::path& candidate :
+       {std::filesystem::path("../shared/data/meshes"), std::filesystem::path(VOXFLAME_SOURCE_DIR) / "../shared/data/meshes"})
+    if (std::filesystem::exists(candidate / "bunny.obj")) return std::filesystem::weakly_canonical(candidate).string();
+  throw core::Error("cannot find the benchmark meshes; set VOXFLAME_MESHES to the folder holding bunny.obj");
+}
+
+}  // namespace
+
+}  // namespace voxflame::bench
+
+namespace voxflame::app {
+
+int benchCommand(const CommandArgs& args) {
+  Arguments arguments(args, 2, {"--json"});
+  bench::BenchOptions options;
+  options.json = arguments.flag("--json");
+  arguments.finish(1);
+  const std::string which = arguments.positional().empty() ? "" : arguments.positional().front();
+  bool found = false;
+  for (const bench::Benchmark& benchmark : bench::benchmarks()) {
+    if (!which.empty() && which != benchmark.name) continue;
+    found = true;
+    if (options.meshFolder.empty()) options.meshFolder = bench::findMeshFolder();
+    benchmark.run(options);
+  }
+  if (!found) {
+    std::string names;
+    for (const auto& b : bench::benchmarks()) names += std::string(names.empty() ? "" : ", ") + b.name;
+    throw UsageError("unknown benchmark '" + which + "' (known: " + names + ")");
+  }
+  return 0;
+}
+
+}  // namespace voxflame::app
