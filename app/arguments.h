@@ -14,13 +14,13 @@ namespace voxflame::app {
 
 // A mistake in how voxflame was called: the CLI prints it followed by the usage text.
 class UsageError : public core::Error {
-public:
+ public:
   using core::Error::Error;
 };
 
 // Reads `--name value` pairs and positional arguments; every option must be known.
 class Arguments {
-public:
+ public:
   // Reads args[first..]. Options listed in `flags` take no value (e.g. "--json").
   Arguments(const std::vector<std::string>& args, std::size_t first, std::vector<std::string> flags = {}) {
     for (std::size_t i = first; i < args.size(); ++i) {
@@ -90,7 +90,7 @@ public:
     if (positional_.size() > maxPositional) throw UsageError("unexpected argument '" + positional_.back() + "'");
   }
 
-private:
+ private:
   struct Option {
     std::string name;
     std::string value;

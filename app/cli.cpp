@@ -59,15 +59,16 @@ int renderCommand(const std::vector<std::string>& args) {
   const bool interactive = isatty(fileno(stderr));
   options.progress = [interactive](const core::AccumulatorStats& stats, std::uint64_t target) {
     if (!interactive) return;
-    const double percent = target ? 100.0 * static_cast<double>(std::min(stats.points, target)) / static_cast<double>(target) : 0.0;
+    const double percent =
+        target ? 100.0 * static_cast<double>(std::min(stats.points, target)) / static_cast<double>(target) : 0.0;
     std::fprintf(stderr, "\raccumulating %5.1f%%  %.1f M points/s   ", percent, stats.pointsPerSecond * 1e-6);
   };
   const StillResult result = renderStill(scene, options);
   if (interactive) std::fprintf(stderr, "\n");
   if (!result.warning.empty()) std::cerr << "voxflame: warning: " << result.warning << "\n";
   core::writePng(*output, result.image, bitDepth, stillMetadata(scene, result));
-  std::printf("wrote %s (%d×%d, %llu points inside, %.2f s accumulating, %.2f s rendering on %s)\n",
-              output->c_str(), options.width, options.height, static_cast<unsigned long long>(result.stats.points),
+  std::printf("wrote %s (%d×%d, %llu points inside, %.2f s accumulating, %.2f s rendering on %s)\n", output->c_str(),
+              options.width, options.height, static_cast<unsigned long long>(result.stats.points),
               result.accumulateSeconds, result.renderSeconds, result.renderer.c_str());
   return 0;
 }

@@ -65,7 +65,8 @@ void handleMouse(GLFWwindow* window, ExplorerState& state) {
   if (!pressed) state.dragging = false;
   if (state.dragging) {
     state.scene.camera.azimuthDeg -= 0.3 * (x - state.lastMouseX);
-    state.scene.camera.elevationDeg = std::clamp(state.scene.camera.elevationDeg + 0.3 * (y - state.lastMouseY), -90.0, 90.0);
+    state.scene.camera.elevationDeg =
+        std::clamp(state.scene.camera.elevationDeg + 0.3 * (y - state.lastMouseY), -90.0, 90.0);
   }
   state.lastMouseX = x;
   state.lastMouseY = y;
@@ -111,7 +112,8 @@ void drawPanel(ExplorerState& state, const core::AccumulatorStats& stats) {
   }
   ImGui::Separator();
   ImGui::Text("%.1f M points inside  %.1f M/s", static_cast<double>(stats.points) * 1e-6, stats.pointsPerSecond * 1e-6);
-  ImGui::Text("inside %.1f%%  escapes %llu", 100.0 * stats.insideFraction(), static_cast<unsigned long long>(stats.escapes));
+  ImGui::Text("inside %.1f%%  escapes %llu", 100.0 * stats.insideFraction(),
+              static_cast<unsigned long long>(stats.escapes));
   ImGui::Text("%.1f ms/frame", state.frameMs);
   if (!stats.problem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", stats.problem.c_str());
   ImGui::End();
@@ -128,7 +130,8 @@ void saveScreenshot(const std::filesystem::path& path, int width, int height) {
   image.pixels.resize(rows.size());
   const std::size_t stride = 4 * static_cast<std::size_t>(width);
   for (int y = 0; y < height; ++y)
-    std::copy_n(&rows[static_cast<std::size_t>(height - 1 - y) * stride], stride, &image.pixels[static_cast<std::size_t>(y) * stride]);
+    std::copy_n(&rows[static_cast<std::size_t>(height - 1 - y) * stride], stride,
+                &image.pixels[static_cast<std::size_t>(y) * stride]);
   for (std::size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 1.0f;
   core::writePng(path, image, 8, {});
 }
@@ -209,8 +212,8 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
       gl::RenderSettings settings;
-      settings.camera = core::orbitCamera(state.scene.camera, mask->geometry.box(),
-                                          static_cast<double>(width) / std::max(1, height));
+      settings.camera =
+          core::orbitCamera(state.scene.camera, mask->geometry.box(), static_cast<double>(width) / std::max(1, height));
       settings.tone = state.scene.tone;
       settings.stepVoxels = 0.75;
       settings.frameIndex = frame;

@@ -14,8 +14,8 @@ namespace voxflame::bench {
 // colour by speed, timed over a fixed wall-clock window after a warm-up.
 void benchAccumulate(const BenchOptions& options) {
   const core::TriangleMesh mesh = core::loadMesh(options.meshFolder + "/bunny.obj");
-  const auto mask = std::make_shared<const core::InsideMask>(
-      core::buildInsideMask(mesh, core::gridOverBox(mesh.bounds(), 256)));
+  const auto mask =
+      std::make_shared<const core::InsideMask>(core::buildInsideMask(mesh, core::gridOverBox(mesh.bounds(), 256)));
   const int allThreads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   for (const char* id : {"lorenz84"}) {
     const core::AttractorInfo* info = core::findAttractor(id);

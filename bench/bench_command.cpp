@@ -35,8 +35,8 @@ namespace {
 // or from the source tree this binary was built from.
 std::string findMeshFolder() {
   if (const char* env = std::getenv("VOXFLAME_MESHES")) return env;
-  for (const std::filesystem::path& candidate :
-       {std::filesystem::path("../shared/data/meshes"), std::filesystem::path(VOXFLAME_SOURCE_DIR) / "../shared/data/meshes"})
+  for (const std::filesystem::path& candidate : {std::filesystem::path("../shared/data/meshes"),
+                                                 std::filesystem::path(VOXFLAME_SOURCE_DIR) / "../shared/data/meshes"})
     if (std::filesystem::exists(candidate / "bunny.obj")) return std::filesystem::weakly_canonical(candidate).string();
   throw core::Error("cannot find the benchmark meshes; set VOXFLAME_MESHES to the folder holding bunny.obj");
 }

@@ -40,7 +40,8 @@ void benchRaymarch(const BenchOptions& options) {
       settings.frameIndex = static_cast<std::uint32_t>(frame);
       gl::renderToImage(renderer, settings, 1280, 720);
     }
-    const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / kFrames;
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / kFrames;
     report(options, {{"bench", "raymarch"},
                      {"grid", resolution},
                      {"width", 1280},

@@ -24,7 +24,8 @@ TEST(Cli, RenderWithoutPresetWritesPngCarryingTheDefaultPreset) {
 
 TEST(Cli, RenderSixteenBit) {
   TemporaryFolder folder;
-  const auto result = runVoxflame("render -o deep.png --width 32 --height 32 --points 50000 --bit-depth 16", folder.path());
+  const auto result =
+      runVoxflame("render -o deep.png --width 32 --height 32 --points 50000 --bit-depth 16", folder.path());
   ASSERT_EQ(result.exitStatus, 0) << result.output;
   EXPECT_EQ(voxflame::core::readPng(folder / "deep.png").bitDepth, 16);
 }

@@ -30,8 +30,7 @@ namespace {
 // A closed axis-aligned cube [lo, hi]^3 as twelve outward-facing triangles.
 TriangleMesh cube(float lo, float hi) {
   TriangleMesh mesh;
-  for (int i = 0; i < 8; ++i)
-    mesh.vertices.emplace_back((i & 1) ? hi : lo, (i & 2) ? hi : lo, (i & 4) ? hi : lo);
+  for (int i = 0; i < 8; ++i) mesh.vertices.emplace_back((i & 1) ? hi : lo, (i & 2) ? hi : lo, (i & 4) ? hi : lo);
   mesh.triangles = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                     {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
   return mesh;

@@ -12,7 +12,9 @@ using namespace voxflame;
 
 namespace {
 
-float luminance(const float* p) { return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2]; }
+float luminance(const float* p) {
+  return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+}
 
 // The screen-space box of the bunny's 3D bounding box under the scene's camera.
 void projectedBox(const core::Scene& scene, const core::Box& grid, const core::Box& mesh, int width, int height,
@@ -25,7 +27,8 @@ void projectedBox(const core::Scene& scene, const core::Box& grid, const core::B
                        (corner & 4) ? mesh.max.z : mesh.min.z);
     glm::dvec4 clip = camera.projection * camera.view * glm::dvec4(p, 1.0);
     clip /= clip.w;
-    const glm::ivec2 pixel(static_cast<int>((clip.x * 0.5 + 0.5) * width), static_cast<int>((0.5 - clip.y * 0.5) * height));
+    const glm::ivec2 pixel(static_cast<int>((clip.x * 0.5 + 0.5) * width),
+                           static_cast<int>((0.5 - clip.y * 0.5) * height));
     low = glm::min(low, pixel);
     high = glm::max(high, pixel);
   }

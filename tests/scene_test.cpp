@@ -73,9 +73,9 @@ TEST(Scene, ErrorsNameTheSourceKeyAndReason) {
   EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"grid":{"resolution":5000},"layers":[{"attractor":"lorenz84"}]})")
                 .find("'grid.resolution' is 5000, outside the allowed range"),
             std::string::npos);
-  EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84","step":1e300}]})")
-                .find("'layers[0].step'"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84","step":1e300}]})").find("'layers[0].step'"),
+      std::string::npos);
   EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84","integrator":"verlet"}]})")
                 .find("unknown integrator"),
             std::string::npos);
@@ -116,9 +116,15 @@ TEST(Scene, FuzzedPresetsNeverCrash) {
     for (int e = 0; e < edits; ++e) {
       const std::size_t at = next() % text.size();
       switch (next() % 3) {
-        case 0: text[at] = alphabet[next() % alphabet.size()]; break;
-        case 1: text.erase(at, 1 + next() % 8); break;
-        default: text.insert(at, 1, alphabet[next() % alphabet.size()]); break;
+        case 0:
+          text[at] = alphabet[next() % alphabet.size()];
+          break;
+        case 1:
+          text.erase(at, 1 + next() % 8);
+          break;
+        default:
+          text.insert(at, 1, alphabet[next() % alphabet.size()]);
+          break;
       }
       if (text.empty()) text = "{";
     }

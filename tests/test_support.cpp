@@ -8,14 +8,17 @@
 
 namespace voxflame::test {
 
-std::filesystem::path meshPath(const std::string& name) { return std::filesystem::path(VOXFLAME_TEST_MESHES) / name; }
+std::filesystem::path meshPath(const std::string& name) {
+  return std::filesystem::path(VOXFLAME_TEST_MESHES) / name;
+}
 std::filesystem::path sourcePath(const std::string& relative) {
   return std::filesystem::path(VOXFLAME_SOURCE_DIR) / relative;
 }
 
 TemporaryFolder::TemporaryFolder() {
   std::random_device random;
-  path_ = std::filesystem::temp_directory_path() / ("voxflame-test-" + std::to_string(random()) + std::to_string(random()));
+  path_ =
+      std::filesystem::temp_directory_path() / ("voxflame-test-" + std::to_string(random()) + std::to_string(random()));
   std::filesystem::create_directories(path_);
 }
 

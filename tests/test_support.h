@@ -12,13 +12,13 @@ std::filesystem::path sourcePath(const std::string& relative);
 
 // A fresh, empty folder removed when the object goes away.
 class TemporaryFolder {
-public:
+ public:
   TemporaryFolder();
   ~TemporaryFolder();
   const std::filesystem::path& path() const { return path_; }
   std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
 
-private:
+ private:
   std::filesystem::path path_;
 };
 

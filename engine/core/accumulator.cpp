@@ -123,7 +123,8 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
   for (std::size_t i = 0; i < kSeedPoolSize; ++i)
     prepared.seeds.push_back(samples[static_cast<std::size_t>(rng.uniform() * static_cast<double>(samples.size()))]);
 
-  std::nth_element(speeds.begin(), speeds.begin() + static_cast<std::ptrdiff_t>(speeds.size() * 95 / 100), speeds.end());
+  std::nth_element(speeds.begin(), speeds.begin() + static_cast<std::ptrdiff_t>(speeds.size() * 95 / 100),
+                   speeds.end());
   prepared.speedReference = std::max(speeds[speeds.size() * 95 / 100], 1e-12);
 
   const Gradient gradient(layer.color.gradient);
@@ -151,8 +152,7 @@ Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : 
   colorSum_.assign(3 * voxels, 0);
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads_.reserve(static_cast<std::size_t>(threads));
-  for (int t = 0; t < threads; ++t)
-    threads_.emplace_back([this, t](std::stop_token stop) { workerLoop(stop, t); });
+  for (int t = 0; t < threads; ++t) threads_.emplace_back([this, t](std::stop_token stop) { workerLoop(stop, t); });
 }
 
 Accumulator::~Accumulator() {
@@ -239,9 +239,10 @@ void Accumulator::snapshot(VolumeSnapshot& out) const {
       out.rgba[4 * v + 0] = out.rgba[4 * v + 1] = out.rgba[4 * v + 2] = 0;
     } else {
       for (int c = 0; c < 3; ++c) {
-        const std::uint32_t sum =
-            std::atomic_ref<const std::uint32_t>(colorSum_[3 * v + static_cast<std::size_t>(c)]).load(std::memory_order_relaxed);
-        out.rgba[4 * v + static_cast<std::size_t>(c)] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, sum / hits));
+        const std::uint32_t sum = std::atomic_ref<const std::uint32_t>(colorSum_[3 * v + static_cast<std::size_t>(c)])
+                                      .load(std::memory_order_relaxed);
+        out.rgba[4 * v + static_cast<std::size_t>(c)] =
+            static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, sum / hits));
       }
     }
     out.rgba[4 * v + 3] = 255;

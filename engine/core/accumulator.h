@@ -28,8 +28,8 @@ namespace voxflame::core {
 // Maps attractor coordinates into grid voxel coordinates: uniform scale about a centre.
 struct FitTransform {
   glm::dvec3 attractorCenter{0.0};
-  double scale = 1.0;             // voxels per attractor unit
-  glm::dvec3 gridCenter{0.0};     // in voxel units
+  double scale = 1.0;          // voxels per attractor unit
+  glm::dvec3 gridCenter{0.0};  // in voxel units
   glm::dvec3 apply(glm::dvec3 p) const { return (p - attractorCenter) * scale + gridCenter; }
 };
 
@@ -38,11 +38,11 @@ struct PreparedLayer {
   PatternLayer layer;
   const AttractorInfo* info = nullptr;
   FitTransform fit;
-  std::vector<glm::dvec3> seeds;        // points known to lie on the attractor
-  double escapeRadius = 1e6;            // beyond this an orbit counts as escaped
-  double speedReference = 1.0;          // speed mapped to the gradient's end
-  std::vector<glm::u8vec3> palette;     // 256 gradient entries, linear RGB
-  bool bounded = false;                 // the probe orbit stayed finite and bounded
+  std::vector<glm::dvec3> seeds;     // points known to lie on the attractor
+  double escapeRadius = 1e6;         // beyond this an orbit counts as escaped
+  double speedReference = 1.0;       // speed mapped to the gradient's end
+  std::vector<glm::u8vec3> palette;  // 256 gradient entries, linear RGB
+  bool bounded = false;              // the probe orbit stayed finite and bounded
 };
 
 // Samples the layer's attractor and fits it into the mask's grid. Deterministic for a seed.
@@ -60,21 +60,21 @@ struct VolumeSnapshot {
 
 struct AccumulatorStats {
   std::uint64_t generation = 0;
-  std::uint64_t iterations = 0;   // orbit steps taken, transients included
-  std::uint64_t points = 0;       // points splatted inside the mask
-  std::uint64_t outside = 0;      // points dropped for lying outside the mask
-  std::uint64_t escapes = 0;      // orbits that diverged and were reseeded
-  double pointsPerSecond = 0.0;   // iterations per second over the current generation
+  std::uint64_t iterations = 0;  // orbit steps taken, transients included
+  std::uint64_t points = 0;      // points splatted inside the mask
+  std::uint64_t outside = 0;     // points dropped for lying outside the mask
+  std::uint64_t escapes = 0;     // orbits that diverged and were reseeded
+  double pointsPerSecond = 0.0;  // iterations per second over the current generation
   double insideFraction() const {
     const auto total = points + outside;
     return total ? static_cast<double>(points) / static_cast<double>(total) : 0.0;
   }
-  bool done = false;              // the target number of points was reached
-  std::string problem;            // why nothing accumulates (an escaping attractor), else empty
+  bool done = false;    // the target number of points was reached
+  std::string problem;  // why nothing accumulates (an escaping attractor), else empty
 };
 
 class Accumulator {
-public:
+ public:
   // threads == 0 means one per hardware thread.
   Accumulator(std::shared_ptr<const InsideMask> mask, int threads = 0);
   ~Accumulator();
@@ -99,7 +99,7 @@ public:
   // Copies the grid; safe to call while the workers run.
   void snapshot(VolumeSnapshot& out) const;
 
-private:
+ private:
   void workerLoop(std::stop_token stop, int threadIndex);
   void runBatch(int threadIndex, std::uint64_t generation, std::vector<struct OrbitBatch>& batches);
 
@@ -118,12 +118,12 @@ private:
   std::atomic<std::uint64_t> outside_{0};
   std::atomic<std::uint64_t> escapes_{0};
   std::atomic<std::uint64_t> targetPoints_{0};
-  std::atomic<bool> active_{false};      // a pattern is set and can accumulate
+  std::atomic<bool> active_{false};  // a pattern is set and can accumulate
   std::atomic<double> generationStart_{0.0};
-  std::string problem_;                  // guarded by gridMutex_
+  std::string problem_;  // guarded by gridMutex_
 
   std::mutex wakeMutex_;
-  std::condition_variable_any wake_;     // workers sleep here when idle
+  std::condition_variable_any wake_;  // workers sleep here when idle
   std::condition_variable doneSignal_;
 
   std::vector<std::jthread> threads_;

@@ -4,7 +4,9 @@
 
 namespace voxflame::core {
 
-std::string_view toString(AttractorKind kind) { return kind == AttractorKind::Map ? "map" : "flow"; }
+std::string_view toString(AttractorKind kind) {
+  return kind == AttractorKind::Map ? "map" : "flow";
+}
 std::string_view toString(Integrator integrator) {
   return integrator == Integrator::RK4 ? "rk4" : "euler";
 }

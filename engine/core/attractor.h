@@ -29,30 +29,27 @@ struct ParamInfo {
 };
 
 // Advances `count` orbits (structure of arrays) by one map iteration or one integrator step.
-using AdvanceFn = void (*)(const double* params, double step, double* x, double* y, double* z,
-                           std::size_t count);
+using AdvanceFn = void (*)(const double* params, double step, double* x, double* y, double* z, std::size_t count);
 
 struct AttractorInfo {
   std::string id;
   std::string name;
   AttractorKind kind = AttractorKind::Flow;
   std::vector<ParamInfo> params;
-  double defaultStep = 0.01;          // flows only; maps ignore the step
+  double defaultStep = 0.01;  // flows only; maps ignore the step
   Integrator defaultIntegrator = Integrator::Euler;
-  glm::dvec3 start{0.1, 0.1, 0.1};    // a point in the basin of attraction for the defaults
+  glm::dvec3 start{0.1, 0.1, 0.1};  // a point in the basin of attraction for the defaults
   std::string citation;
-  AdvanceFn advanceEuler = nullptr;   // for maps: the map itself
-  AdvanceFn advanceRk4 = nullptr;     // for maps: the map itself
+  AdvanceFn advanceEuler = nullptr;  // for maps: the map itself
+  AdvanceFn advanceRk4 = nullptr;    // for maps: the map itself
 
-  AdvanceFn advance(Integrator integrator) const {
-    return integrator == Integrator::RK4 ? advanceRk4 : advanceEuler;
-  }
+  AdvanceFn advance(Integrator integrator) const { return integrator == Integrator::RK4 ? advanceRk4 : advanceEuler; }
   std::vector<double> defaultParams() const;
   int paramIndex(std::string_view paramName) const;  // -1 when absent
 };
 
 const std::vector<AttractorInfo>& attractorCatalogue();
-const AttractorInfo* findAttractor(std::string_view id);  // nullptr when unknown
+const AttractorInfo* findAttractor(std::string_view id);     // nullptr when unknown
 const AttractorInfo& attractorOrThrow(std::string_view id);  // core::Error listing known ids
 
 }  // namespace voxflame::core

@@ -11,15 +11,21 @@
 namespace voxflame::core {
 
 namespace {
-float toLinear(float c) { return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f); }
+float toLinear(float c) {
+  return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
 float toSrgb(float c) {
   c = std::clamp(c, 0.0f, 1.0f);
   return c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
 }
 }  // namespace
 
-glm::vec3 srgbToLinear(glm::vec3 s) { return {toLinear(s.r), toLinear(s.g), toLinear(s.b)}; }
-glm::vec3 linearToSrgb(glm::vec3 l) { return {toSrgb(l.r), toSrgb(l.g), toSrgb(l.b)}; }
+glm::vec3 srgbToLinear(glm::vec3 s) {
+  return {toLinear(s.r), toLinear(s.g), toLinear(s.b)};
+}
+glm::vec3 linearToSrgb(glm::vec3 l) {
+  return {toSrgb(l.r), toSrgb(l.g), toSrgb(l.b)};
+}
 
 // Björn Ottosson's OKLab (2020), from linear sRGB.
 glm::vec3 linearToOklab(glm::vec3 c) {
@@ -49,8 +55,7 @@ glm::vec3 parseHexColor(std::string_view text) {
     if (ch >= 'A' && ch <= 'F') return ch - 'A' + 10;
     return -1;
   };
-  if (text.size() != 7 || text[0] != '#')
-    throw Error("colour '" + std::string(text) + "' is not of the form #rrggbb");
+  if (text.size() != 7 || text[0] != '#') throw Error("colour '" + std::string(text) + "' is not of the form #rrggbb");
   glm::vec3 srgb;
   for (int c = 0; c < 3; ++c) {
     const int hi = hex(text[1 + 2 * c]);

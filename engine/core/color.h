@@ -21,19 +21,19 @@ glm::vec3 parseHexColor(std::string_view text);
 std::string toHexColor(glm::vec3 linear);
 
 struct GradientStop {
-  float position = 0.0f;    // 0..1
-  glm::vec3 color{0.0f};    // linear RGB
+  float position = 0.0f;  // 0..1
+  glm::vec3 color{0.0f};  // linear RGB
 };
 
 class Gradient {
-public:
+ public:
   Gradient() = default;
   explicit Gradient(std::vector<GradientStop> stops);  // sorted by position; needs ≥ 1 stop
 
   glm::vec3 at(float t) const;  // linear RGB; t is clamped to [0, 1]
   const std::vector<GradientStop>& stops() const { return stops_; }
 
-private:
+ private:
   std::vector<GradientStop> stops_;
   std::vector<glm::vec3> labs_;  // the stops in OKLab, computed once
 };

@@ -16,22 +16,19 @@ inline constexpr int kMinGridResolution = 16;
 inline constexpr int kMaxGridResolution = 1024;
 
 struct GridGeometry {
-  glm::ivec3 size{0};         // voxels along x, y, z
-  glm::dvec3 origin{0.0};     // corner of voxel (0, 0, 0)
-  double voxelSize = 1.0;     // edge of a (cubic) voxel
+  glm::ivec3 size{0};      // voxels along x, y, z
+  glm::dvec3 origin{0.0};  // corner of voxel (0, 0, 0)
+  double voxelSize = 1.0;  // edge of a (cubic) voxel
 
   std::size_t voxelCount() const {
-    return static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) *
-           static_cast<std::size_t>(size.z);
+    return static_cast<std::size_t>(size.x) * static_cast<std::size_t>(size.y) * static_cast<std::size_t>(size.z);
   }
   std::size_t index(int i, int j, int k) const {
     return static_cast<std::size_t>(i) +
            static_cast<std::size_t>(size.x) *
                (static_cast<std::size_t>(j) + static_cast<std::size_t>(size.y) * static_cast<std::size_t>(k));
   }
-  glm::dvec3 voxelCenter(int i, int j, int k) const {
-    return origin + voxelSize * (glm::dvec3(i, j, k) + 0.5);
-  }
+  glm::dvec3 voxelCenter(int i, int j, int k) const { return origin + voxelSize * (glm::dvec3(i, j, k) + 0.5); }
   Box box() const { return {origin, origin + voxelSize * glm::dvec3(size)}; }
 };
 

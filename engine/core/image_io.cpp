@@ -141,7 +141,8 @@ bool readPngFile(std::FILE* file, PngInfo& out, std::vector<std::uint8_t>& data,
   png_textp texts = nullptr;
   const int count = png_get_text(png, info, &texts, nullptr);
   for (int i = 0; i < count; ++i)
-    out.text[texts[i].key] = std::string(texts[i].text, texts[i].text_length ? texts[i].text_length : texts[i].itxt_length);
+    out.text[texts[i].key] =
+        std::string(texts[i].text, texts[i].text_length ? texts[i].text_length : texts[i].itxt_length);
   out.bitDepth = bitDepth == 16 ? 16 : 8;
   out.image.width = static_cast<int>(width);
   out.image.height = static_cast<int>(height);
@@ -159,7 +160,8 @@ PngInfo readPng(const std::filesystem::path& path) {
   std::string reason;
   if (!readPngFile(file.get(), info, data, reason))
     throw Error("'" + path.string() + "' is not a readable PNG" + (reason.empty() ? "" : ": " + reason));
-  const std::size_t samples = 4 * static_cast<std::size_t>(info.image.width) * static_cast<std::size_t>(info.image.height);
+  const std::size_t samples =
+      4 * static_cast<std::size_t>(info.image.width) * static_cast<std::size_t>(info.image.height);
   info.image.pixels.resize(samples);
   for (std::size_t i = 0; i < samples; ++i)
     info.image.pixels[i] = info.bitDepth == 16 ? static_cast<float>(data[2 * i] | (data[2 * i + 1] << 8)) / 65535.0f

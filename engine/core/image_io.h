@@ -17,7 +17,9 @@ struct ImageRGBA {
   int height = 0;
   std::vector<float> pixels;  // 4 per pixel
 
-  float* at(int x, int y) { return &pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x))]; }
+  float* at(int x, int y) {
+    return &pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x))];
+  }
   const float* at(int x, int y) const {
     return &pixels[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x))];
   }

@@ -23,7 +23,6 @@ struct InsideMask {
   double insideFraction() const;
 };
 
-InsideMask buildInsideMask(const TriangleMesh& mesh, const GridGeometry& grid,
-                           MaskMethod method = MaskMethod::Parity);
+InsideMask buildInsideMask(const TriangleMesh& mesh, const GridGeometry& grid, MaskMethod method = MaskMethod::Parity);
 
 }  // namespace voxflame::core

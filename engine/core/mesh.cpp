@@ -30,11 +30,10 @@ Box TriangleMesh::bounds() const {
 
 namespace {
 
-constexpr unsigned kImportFlags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices |
-                                  aiProcess_SortByPType | aiProcess_PreTransformVertices;
+constexpr unsigned kImportFlags =
+    aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType | aiProcess_PreTransformVertices;
 
-void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
-                TriangleMesh& out) {
+void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, TriangleMesh& out) {
   const aiMatrix4x4 transform = parent * node.mTransformation;
   for (unsigned m = 0; m < node.mNumMeshes; ++m) {
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
@@ -46,18 +45,15 @@ void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& par
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
       if (face.mNumIndices != 3) continue;  // points and lines carry no volume
-      const std::array<std::uint32_t, 3> tri{base + face.mIndices[0], base + face.mIndices[1],
-                                             base + face.mIndices[2]};
+      const std::array<std::uint32_t, 3> tri{base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]};
       if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
       out.triangles.push_back(tri);
     }
   }
-  for (unsigned c = 0; c < node.mNumChildren; ++c)
-    appendNode(scene, *node.mChildren[c], transform, out);
+  for (unsigned c = 0; c < node.mNumChildren; ++c) appendNode(scene, *node.mChildren[c], transform, out);
 }
 
-TriangleMesh convertScene(const aiScene* scene, Assimp::Importer& importer,
-                          std::string_view displayName) {
+TriangleMesh convertScene(const aiScene* scene, Assimp::Importer& importer, std::string_view displayName) {
   if (!scene || !scene->mRootNode) {
     std::string reason = importer.GetErrorString();
     if (reason.empty()) reason = "not a mesh Assimp can read";
@@ -66,8 +62,7 @@ TriangleMesh convertScene(const aiScene* scene, Assimp::Importer& importer,
   TriangleMesh mesh;
   mesh.name = std::string(displayName);
   appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
-  if (mesh.triangles.empty())
-    throw Error("mesh '" + mesh.name + "' has no triangles (only points or lines, or empty)");
+  if (mesh.triangles.empty()) throw Error("mesh '" + mesh.name + "' has no triangles (only points or lines, or empty)");
   for (const auto& v : mesh.vertices)
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
       throw Error("mesh '" + mesh.name + "' has a vertex that is not a finite number");
@@ -155,12 +150,9 @@ void checkPlyComplete(std::span<const std::byte> data, const std::string& name) 
 
 TriangleMesh loadMesh(const std::filesystem::path& path) {
   std::error_code ec;
-  if (!std::filesystem::exists(path, ec))
-    throw Error("mesh file '" + path.string() + "' does not exist");
-  if (std::filesystem::is_directory(path, ec))
-    throw Error("mesh path '" + path.string() + "' is a folder, not a file");
-  if (std::filesystem::file_size(path, ec) == 0)
-    throw Error("mesh file '" + path.string() + "' is empty");
+  if (!std::filesystem::exists(path, ec)) throw Error("mesh file '" + path.string() + "' does not exist");
+  if (std::filesystem::is_directory(path, ec)) throw Error("mesh path '" + path.string() + "' is a folder, not a file");
+  if (std::filesystem::file_size(path, ec) == 0) throw Error("mesh file '" + path.string() + "' is empty");
   if (path.extension() == ".ply" || path.extension() == ".PLY") {
     std::ifstream in(path, std::ios::binary);
     std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
@@ -177,8 +169,8 @@ TriangleMesh loadMeshFromMemory(std::span<const std::byte> data, std::string_vie
   if (data.empty()) throw Error("mesh '" + std::string(displayName) + "' is empty");
   if (extensionHint == "ply" || extensionHint == "PLY") checkPlyComplete(data, std::string(displayName));
   Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFileFromMemory(data.data(), data.size(), kImportFlags,
-                                                     std::string(extensionHint).c_str());
+  const aiScene* scene =
+      importer.ReadFileFromMemory(data.data(), data.size(), kImportFlags, std::string(extensionHint).c_str());
   return convertScene(scene, importer, displayName);
 }
 

@@ -7,7 +7,7 @@
 namespace voxflame::core {
 
 class SplitMix64 {
-public:
+ public:
   explicit SplitMix64(std::uint64_t seed) : state_(seed) {}
   std::uint64_t next() {
     std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ULL);
@@ -16,9 +16,9 @@ public:
     return z ^ (z >> 31);
   }
   double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }  // [0, 1)
-  double symmetric() { return 2.0 * uniform() - 1.0; }                       // [-1, 1)
+  double symmetric() { return 2.0 * uniform() - 1.0; }                        // [-1, 1)
 
-private:
+ private:
   std::uint64_t state_;
 };
 

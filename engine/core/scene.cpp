@@ -24,7 +24,7 @@ namespace {
 // Reads one JSON object strictly: every key read is remembered, and finish() reports any key
 // that was not, so misspelt keys are errors. Messages carry the source and the key path.
 class ObjectReader {
-public:
+ public:
   ObjectReader(const json& object, std::string source, std::string path)
       : object_(object), source_(std::move(source)), path_(std::move(path)) {
     if (!object_.is_object()) fail(path_.empty() ? "the preset must be a JSON object" : "must be an object");
@@ -100,7 +100,7 @@ public:
       if (!seen_.count(it.key())) fail("is not a known key", it.key());
   }
 
-private:
+ private:
   const json& object_;
   std::string source_;
   std::string path_;
@@ -126,8 +126,8 @@ ColorSettings readColor(ObjectReader& parent, const std::string& key) {
       if (!stop.is_string())
         throw Error(parent.source() + ": '" + path + "[" + std::to_string(i) + "]' must be a colour string");
       try {
-        color.gradient.push_back({static_cast<float>(i) / static_cast<float>(count - 1),
-                                  parseHexColor(stop.get<std::string>())});
+        color.gradient.push_back(
+            {static_cast<float>(i) / static_cast<float>(count - 1), parseHexColor(stop.get<std::string>())});
       } catch (const Error& e) {
         throw Error(parent.source() + ": '" + path + "[" + std::to_string(i) + "]' " + e.what());
       }

@@ -29,9 +29,9 @@ struct ColorSettings {
 // One attractor filling the volume; several layers share one grid, each with its weight.
 struct PatternLayer {
   std::string attractor = "lorenz84";
-  std::vector<double> params;          // in the catalogue's parameter order
+  std::vector<double> params;  // in the catalogue's parameter order
   Integrator integrator = Integrator::Euler;
-  double step = 0.135;                 // flows only
+  double step = 0.135;  // flows only
   double weight = 1.0;
   ColorSettings color;
 };
@@ -40,29 +40,29 @@ struct PatternLayer {
 struct ToneMapSettings {
   double brightness = 4.0;
   double gamma = 2.2;
-  double exposure = 0.0;     // stops
-  double opacity = 1.0;      // how strongly dense voxels hide what is behind them
+  double exposure = 0.0;       // stops
+  double opacity = 1.0;        // how strongly dense voxels hide what is behind them
   glm::vec3 background{0.0f};  // linear RGB
 };
 
 struct CameraSettings {
   double azimuthDeg = 30.0;
   double elevationDeg = 15.0;
-  double distance = 2.6;     // in units of the grid's bounding-sphere radius
+  double distance = 2.6;  // in units of the grid's bounding-sphere radius
   double fovDeg = 35.0;
 };
 
 struct Scene {
   std::string name = "untitled";
-  std::string meshPath;                    // as written in the preset
-  std::filesystem::path baseDirectory;     // relative mesh paths resolve against this
-  bool embedded = false;                   // the preset and its mesh live inside the binary
+  std::string meshPath;                 // as written in the preset
+  std::filesystem::path baseDirectory;  // relative mesh paths resolve against this
+  bool embedded = false;                // the preset and its mesh live inside the binary
   int gridResolution = 192;
   std::vector<PatternLayer> layers;
   ToneMapSettings tone;
   CameraSettings camera;
   std::uint64_t seed = 1;
-  std::uint64_t points = 20'000'000;       // points accumulated for a still
+  std::uint64_t points = 20'000'000;  // points accumulated for a still
 
   std::filesystem::path resolvedMeshPath() const;
 };

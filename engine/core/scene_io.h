@@ -9,7 +9,7 @@ namespace voxflame::core {
 
 inline constexpr const char* kDefaultPresetName = "presets/default.json";
 
-Scene defaultScene();                           // the preset embedded in the binary
+Scene defaultScene();                            // the preset embedded in the binary
 TriangleMesh loadSceneMesh(const Scene& scene);  // throws core::Error naming the mesh file
 
 }  // namespace voxflame::core

@@ -13,7 +13,7 @@
 namespace voxflame::core {
 
 class SnapshotPublisher {
-public:
+ public:
   SnapshotPublisher(const Accumulator& accumulator, std::chrono::milliseconds interval);
   ~SnapshotPublisher();  // joins the thread
 
@@ -22,17 +22,17 @@ public:
   bool takeIfNewer(VolumeSnapshot& out);
   void requestNow();  // take the next snapshot without waiting for the interval
 
-private:
+ private:
   void loop(std::stop_token stop);
 
   const Accumulator& accumulator_;
   std::chrono::milliseconds interval_;
-  std::mutex mutex_;               // guards ready_ and readyFresh_
+  std::mutex mutex_;  // guards ready_ and readyFresh_
   VolumeSnapshot ready_;
   bool readyFresh_ = false;
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;
-  bool wakeRequested_ = false;     // guarded by wakeMutex_
+  bool wakeRequested_ = false;  // guarded by wakeMutex_
   std::jthread thread_;
 };
 

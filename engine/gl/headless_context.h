@@ -8,7 +8,7 @@
 namespace voxflame::gl {
 
 class HeadlessContext {
-public:
+ public:
   HeadlessContext();  // creates and makes current; throws core::Error saying why it could not
   ~HeadlessContext();
   HeadlessContext(const HeadlessContext&) = delete;
@@ -17,7 +17,7 @@ public:
   std::string renderer() const;  // GL_RENDERER
   std::string version() const;   // GL_VERSION
 
-private:
+ private:
   void* display_ = nullptr;
   void* context_ = nullptr;
 };

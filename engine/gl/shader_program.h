@@ -8,7 +8,7 @@
 namespace voxflame::gl {
 
 class ShaderProgram {
-public:
+ public:
   ShaderProgram() = default;
   ShaderProgram(const std::string& vertexSource, const std::string& fragmentSource);
   ~ShaderProgram();
@@ -20,7 +20,7 @@ public:
   GLuint id() const { return program_; }
   GLint uniform(const char* name) const { return glGetUniformLocation(program_, name); }
 
-private:
+ private:
   GLuint program_ = 0;
 };
 

@@ -130,7 +130,8 @@ void VolumeRenderer::upload(const core::VolumeSnapshot& snapshot) {
     glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, size.x, size.y, size.z, GL_RED, GL_FLOAT, snapshot.density.data());
   glBindTexture(GL_TEXTURE_3D, colorTexture_);
   if (resized)
-    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, size.x, size.y, size.z, 0, GL_RGBA, GL_UNSIGNED_BYTE, snapshot.rgba.data());
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, size.x, size.y, size.z, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                 snapshot.rgba.data());
   else
     glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, 0, size.x, size.y, size.z, GL_RGBA, GL_UNSIGNED_BYTE, snapshot.rgba.data());
   uploadedVersion_ = snapshot.version;
@@ -199,7 +200,8 @@ core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& se
     image.pixels.resize(flipped.size());
     const std::size_t row = 4 * static_cast<std::size_t>(width);
     for (int y = 0; y < height; ++y)  // GL's rows run bottom to top
-      std::copy_n(&flipped[static_cast<std::size_t>(height - 1 - y) * row], row, &image.pixels[static_cast<std::size_t>(y) * row]);
+      std::copy_n(&flipped[static_cast<std::size_t>(height - 1 - y) * row], row,
+                  &image.pixels[static_cast<std::size_t>(y) * row]);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glDeleteRenderbuffers(1, &colorBuffer);

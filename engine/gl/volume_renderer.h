@@ -18,12 +18,12 @@ namespace voxflame::gl {
 struct RenderSettings {
   core::CameraFrame camera;
   core::ToneMapSettings tone;
-  double stepVoxels = 0.5;    // ray step as a fraction of a voxel edge
+  double stepVoxels = 0.5;       // ray step as a fraction of a voxel edge
   std::uint32_t frameIndex = 0;  // varies the per-pixel jitter between frames
 };
 
 class VolumeRenderer {
-public:
+ public:
   VolumeRenderer();  // needs a current GL 4.3 core context
   ~VolumeRenderer();
   VolumeRenderer(const VolumeRenderer&) = delete;
@@ -36,7 +36,7 @@ public:
   // Draws into the currently bound framebuffer over a viewport of width × height.
   void draw(const RenderSettings& settings, int width, int height);
 
-private:
+ private:
   ShaderProgram program_;
   GLuint vertexArray_ = 0;
   GLuint densityTexture_ = 0;
