@@ -180,6 +180,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     core::SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(100));
     core::VolumeSnapshot snapshot;
     std::uint32_t frame = 0;
+    int framesWithVolume = 0;
     auto lastFrame = std::chrono::steady_clock::now();
 
     while (!glfwWindowShouldClose(window)) {
@@ -227,7 +228,9 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       }
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       ++frame;
-      if (options.frames > 0 && static_cast<int>(frame) >= options.frames) {
+      // Scripted runs count frames from the first one that shows the volume.
+      if (renderer.uploadedVersion() > 0) ++framesWithVolume;
+      if (options.frames > 0 && framesWithVolume >= options.frames) {
         if (!options.screenshotPath.empty()) {
           saveScreenshot(options.screenshotPath, width, height);
           std::cout << "wrote " << options.screenshotPath.string() << std::endl;

@@ -9,7 +9,7 @@ namespace voxflame::app {
 
 struct ExplorerOptions {
   std::filesystem::path screenshotPath;  // when set: save the window after `frames` frames, exit
-  int frames = 0;                        // 0: run until the window is closed
+  int frames = 0;                        // frames showing the volume before the screenshot; 0: run until closed
 };
 
 // Opens the window and runs until it is closed. With no display, says so and renders the scene
