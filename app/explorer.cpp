@@ -18,6 +18,7 @@
 #include "core/accumulator.h"
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/packed_volume.h"
 #include "core/snapshot_publisher.h"
 #include "gl/volume_renderer.h"
 #include "pipeline.h"
@@ -45,6 +46,9 @@ int renderInsteadOfWindow(const core::Scene& scene) {
 // UI state is plain data owned here; the scene being edited is the single source of truth.
 struct ExplorerState {
   core::Scene scene;
+  core::CameraSettings initialCamera;
+  float renderScale = 1.0f;  // fraction of the window's pixels the volume is marched at
+  int samples = 0;
   bool patternDirty = false;
   bool dragging = false;
   double lastMouseX = 0.0, lastMouseY = 0.0;
@@ -70,6 +74,10 @@ void handleMouse(GLFWwindow* window, ExplorerState& state) {
   }
   state.lastMouseX = x;
   state.lastMouseY = y;
+}
+
+bool slider(const char* label, double& value, double min, double max, ImGuiSliderFlags flags = 0) {
+  return ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, "%.3f", flags);
 }
 
 void drawPanel(ExplorerState& state, const core::AccumulatorStats& stats) {
@@ -104,17 +112,49 @@ void drawPanel(ExplorerState& state, const core::AccumulatorStats& stats) {
   }
   if (ImGui::CollapsingHeader("Tone", ImGuiTreeNodeFlags_DefaultOpen)) {
     core::ToneMapSettings& tone = state.scene.tone;
-    const double zero = 0.0, brightMax = 30.0, expMin = -5.0, expMax = 5.0, gMin = 0.5, gMax = 5.0, opMax = 10.0;
-    ImGui::SliderScalar("brightness", ImGuiDataType_Double, &tone.brightness, &zero, &brightMax, "%.2f");
-    ImGui::SliderScalar("exposure", ImGuiDataType_Double, &tone.exposure, &expMin, &expMax, "%.2f");
-    ImGui::SliderScalar("gamma", ImGuiDataType_Double, &tone.gamma, &gMin, &gMax, "%.2f");
-    ImGui::SliderScalar("opacity", ImGuiDataType_Double, &tone.opacity, &zero, &opMax, "%.2f");
+    slider("brightness", tone.brightness, 0.0, 50.0, ImGuiSliderFlags_Logarithmic);
+    slider("gamma", tone.gamma, 0.5, 6.0);
+    slider("gamma threshold", tone.gammaThreshold, 0.0, 0.5);
+    slider("vibrancy", tone.vibrancy, 0.0, 1.0);
+    slider("highlight power", tone.highlightPower, -1.0, 5.0);
+    slider("exposure", tone.exposure, -5.0, 5.0);
+    slider("contrast", tone.contrast, 0.2, 3.0);
+    slider("opacity", tone.opacity, 0.0, 1.0);
+    float background[3] = {tone.background.r, tone.background.g, tone.background.b};
+    if (ImGui::ColorEdit3("background", background, ImGuiColorEditFlags_Float))
+      tone.background = glm::vec3(background[0], background[1], background[2]);
+  }
+  if (ImGui::CollapsingHeader("Render")) {
+    core::RenderSettingsDoc& render = state.scene.render;
+    slider("step (voxels)", render.stepVoxels, 0.1, 2.0);
+    int meshMode = static_cast<int>(render.meshDisplay);
+    if (ImGui::Combo("mesh", &meshMode, "off\0ghost\0silhouette\0"))
+      render.meshDisplay = static_cast<core::MeshDisplay>(meshMode);
+    slider("mesh strength", render.meshStrength, 0.0, 2.0);
+    ImGui::SliderFloat("render scale", &state.renderScale, 0.25f, 1.0f, "%.2f");
+  }
+  if (ImGui::CollapsingHeader("Camera")) {
+    core::CameraSettings& camera = state.scene.camera;
+    slider("azimuth", camera.azimuthDeg, -180.0, 180.0);
+    slider("elevation", camera.elevationDeg, -90.0, 90.0);
+    slider("roll", camera.rollDeg, -180.0, 180.0);
+    slider("distance", camera.distance, 0.2, 20.0, ImGuiSliderFlags_Logarithmic);
+    bool orthographic = camera.projection == core::Projection::Orthographic;
+    if (ImGui::Checkbox("orthographic", &orthographic))
+      camera.projection = orthographic ? core::Projection::Orthographic : core::Projection::Perspective;
+    if (ImGui::Button("Front")) camera.azimuthDeg = 0.0, camera.elevationDeg = 0.0, camera.rollDeg = 0.0;
+    ImGui::SameLine();
+    if (ImGui::Button("Side")) camera.azimuthDeg = 90.0, camera.elevationDeg = 0.0, camera.rollDeg = 0.0;
+    ImGui::SameLine();
+    if (ImGui::Button("Top")) camera.azimuthDeg = 0.0, camera.elevationDeg = 90.0, camera.rollDeg = 0.0;
+    ImGui::SameLine();
+    if (ImGui::Button("Reset")) camera = state.initialCamera;
   }
   ImGui::Separator();
   ImGui::Text("%.1f M points inside  %.1f M/s", static_cast<double>(stats.points) * 1e-6, stats.pointsPerSecond * 1e-6);
   ImGui::Text("inside %.1f%%  escapes %llu", 100.0 * stats.insideFraction(),
               static_cast<unsigned long long>(stats.escapes));
-  ImGui::Text("%.1f ms/frame", state.frameMs);
+  ImGui::Text("%.1f ms/frame  %d samples", state.frameMs, state.samples);
   if (!stats.problem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", stats.problem.c_str());
   ImGui::End();
 }
@@ -149,7 +189,8 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   if (!haveDisplay()) return renderInsteadOfWindow(initialScene);
 
   // Load everything that can fail on the user's input before opening a window.
-  const auto mask = buildSceneMask(initialScene);
+  const SceneShape shape = buildSceneShape(initialScene);
+  const auto& mask = shape.mask;
   GlfwSession glfw;
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
@@ -168,19 +209,31 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 430");
 
-  ExplorerState state{initialScene};
+  ExplorerState state;
+  state.scene = initialScene;
+  state.initialCamera = initialScene.camera;
+  // Software GL (llvmpipe) marches a quarter of the pixels to stay interactive; samples then
+  // refine the image while nothing changes.
+  const std::string glRenderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  if (glRenderer.find("llvmpipe") != std::string::npos || glRenderer.find("softpipe") != std::string::npos)
+    state.renderScale = 0.5f;
   glfwSetWindowUserPointer(window, &state);
   glfwSetScrollCallback(window, onScroll);
-  int exitStatus = 0;
   {
     gl::VolumeRenderer renderer;
+    renderer.setMesh(shape.mesh);
+    gl::FrameTarget target;
     core::Accumulator accumulator(mask);
     accumulator.setTargetPoints(std::uint64_t{4'000'000'000});
     accumulator.setPattern(state.scene.layers, state.scene.seed);
     core::SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(100));
-    core::VolumeSnapshot snapshot;
+    core::PackedVolume incoming, uploading;
+    bool uploadInProgress = false;
+    constexpr std::size_t kUploadBytesPerFrame = 48u << 20;  // keeps a frame's upload to a few ms
+    constexpr int kMaxSamples = 64;
     std::uint32_t frame = 0;
     int framesWithVolume = 0;
+    std::string lastView;
     auto lastFrame = std::chrono::steady_clock::now();
 
     while (!glfwWindowShouldClose(window)) {
@@ -208,7 +261,15 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
           std::cerr << "voxflame: " << e.what() << "\n";
         }
       }
-      if (publisher.takeIfNewer(snapshot)) renderer.upload(snapshot);
+      if (!uploadInProgress && publisher.takeIfNewer(incoming)) {
+        std::swap(incoming, uploading);
+        renderer.beginUpload(uploading);
+        uploadInProgress = true;
+      }
+      if (uploadInProgress && renderer.continueUpload(kUploadBytesPerFrame)) {
+        uploadInProgress = false;
+        target.samples = 0;  // new content: start refining the image afresh
+      }
 
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
@@ -216,20 +277,29 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       settings.camera =
           core::orbitCamera(state.scene.camera, mask->geometry.box(), static_cast<double>(width) / std::max(1, height));
       settings.tone = state.scene.tone;
-      settings.stepVoxels = 0.75;
-      settings.frameIndex = frame;
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      if (renderer.uploadedVersion() > 0) {
-        renderer.draw(settings, width, height);
-      } else {
-        glViewport(0, 0, width, height);
-        glClearColor(settings.tone.background.r, settings.tone.background.g, settings.tone.background.b, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
+      settings.render = state.scene.render;
+      // Anything that changes what a ray sees restarts the sample average; tone alone does not.
+      core::Scene marchInputs = state.scene;
+      marchInputs.tone = core::ToneMapSettings{};
+      marchInputs.tone.brightness = state.scene.tone.brightness;
+      marchInputs.tone.opacity = state.scene.tone.opacity;
+      const std::string view = core::sceneToJson(marchInputs) + std::to_string(width) + "x" + std::to_string(height) +
+                               std::to_string(state.renderScale);
+      target.resize(std::max(1, static_cast<int>(static_cast<float>(width) * state.renderScale)),
+                    std::max(1, static_cast<int>(static_cast<float>(height) * state.renderScale)));
+      if (view != lastView) {
+        target.samples = 0;
+        renderer.drawMesh(target, settings);
+        lastView = view;
       }
+      if (target.samples < kMaxSamples) renderer.march(target, settings, static_cast<int>(frame));
+      state.samples = target.samples;
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      renderer.resolve(target, settings, glm::ivec4(0, 0, width, height), false);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       ++frame;
       // Scripted runs count frames from the first one that shows the volume.
-      if (renderer.uploadedVersion() > 0) ++framesWithVolume;
+      if (renderer.hasVolume()) ++framesWithVolume;
       if (options.frames > 0 && framesWithVolume >= options.frames) {
         if (!options.screenshotPath.empty()) {
           saveScreenshot(options.screenshotPath, width, height);
@@ -247,7 +317,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext();
   glfwDestroyWindow(window);
-  return exitStatus;
+  return 0;
 }
 
 }  // namespace voxflame::app

@@ -9,6 +9,7 @@
 
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/packed_volume.h"
 #include "core/scene_io.h"
 #include "gl/headless_context.h"
 #include "gl/volume_renderer.h"
@@ -43,20 +44,23 @@ void checkGridFitsInMemory(const core::GridGeometry& grid) {
                       " in all); choose a smaller grid resolution");
 }
 
-std::shared_ptr<const core::InsideMask> buildSceneMask(const core::Scene& scene) {
-  const core::TriangleMesh mesh = core::loadSceneMesh(scene);
-  const core::GridGeometry grid = core::gridOverBox(mesh.bounds(), scene.gridResolution);
+SceneShape buildSceneShape(const core::Scene& scene) {
+  SceneShape shape;
+  shape.mesh = core::loadSceneMesh(scene);
+  const core::GridGeometry grid = core::gridOverBox(shape.mesh.bounds(), scene.gridResolution);
   checkGridFitsInMemory(grid);
-  return std::make_shared<const core::InsideMask>(core::buildInsideMask(mesh, grid));
+  shape.mask = std::make_shared<const core::InsideMask>(core::buildInsideMask(shape.mesh, grid));
+  return shape;
 }
 
 StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   StillResult result;
-  const auto mask = buildSceneMask(scene);
+  const SceneShape shape = buildSceneShape(scene);
+  const auto& mask = shape.mask;
   const std::uint64_t target = options.points ? options.points : scene.points;
 
   const auto accumulateStart = std::chrono::steady_clock::now();
-  core::VolumeSnapshot snapshot;
+  core::PackedVolume volume;
   {
     core::Accumulator accumulator(mask, options.threads);
     accumulator.setTargetPoints(target);
@@ -76,7 +80,9 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
     result.stats = accumulator.stats();
     if (options.progress) options.progress(result.stats, target);
     if (!result.stats.problem.empty()) throw core::Error(result.stats.problem);
+    core::VolumeSnapshot snapshot;
     accumulator.snapshot(snapshot);
+    core::packVolume(snapshot, volume);
   }
   result.accumulateSeconds = secondsSince(accumulateStart);
 
@@ -84,13 +90,14 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   gl::HeadlessContext context;
   result.renderer = context.renderer();
   gl::VolumeRenderer renderer;
-  renderer.upload(snapshot);
+  renderer.upload(volume);
+  if (scene.render.meshDisplay != core::MeshDisplay::Off) renderer.setMesh(shape.mesh);
   gl::RenderSettings settings;
   settings.camera = core::orbitCamera(scene.camera, mask->geometry.box(),
                                       static_cast<double>(options.width) / static_cast<double>(options.height));
   settings.tone = scene.tone;
-  settings.stepVoxels = options.stepVoxels;
-  result.image = gl::renderToImage(renderer, settings, options.width, options.height);
+  settings.render = scene.render;
+  result.image = gl::renderToImage(renderer, settings, options.width, options.height, options.linearOutput);
   result.renderSeconds = secondsSince(renderStart);
   return result;
 }

@@ -14,8 +14,15 @@
 
 namespace voxflame::app {
 
-// Builds the grid and inside mask for a scene's mesh; refuses grids too large for this machine.
-std::shared_ptr<const core::InsideMask> buildSceneMask(const core::Scene& scene);
+// A scene's mesh and the inside mask over its grid.
+struct SceneShape {
+  core::TriangleMesh mesh;
+  std::shared_ptr<const core::InsideMask> mask;
+};
+
+// Loads the scene's mesh and builds its grid and inside mask; refuses grids too large for this
+// machine.
+SceneShape buildSceneShape(const core::Scene& scene);
 
 // Refuses (core::Error saying how much it needs) a grid whose buffers would not fit in memory.
 void checkGridFitsInMemory(const core::GridGeometry& grid);
@@ -23,9 +30,9 @@ void checkGridFitsInMemory(const core::GridGeometry& grid);
 struct StillOptions {
   int width = 1280;
   int height = 720;
-  std::uint64_t points = 0;  // 0: the scene's own count
-  int threads = 0;           // 0: all hardware threads
-  double stepVoxels = 0.5;
+  std::uint64_t points = 0;   // 0: the scene's own count
+  int threads = 0;            // 0: all hardware threads
+  bool linearOutput = false;  // linear light (for EXR) instead of display-encoded
   std::function<void(const core::AccumulatorStats&, std::uint64_t target)> progress;  // may be empty
 };
 
@@ -38,7 +45,8 @@ struct StillResult {
   std::string warning;   // e.g. fewer points landed inside the mesh than asked for
 };
 
-// Renders a still headless through EGL. Throws core::Error on anything the user can fix.
+// Renders a still headless through EGL, with the scene's camera, tone and render settings
+// (samples included). Throws core::Error on anything the user can fix.
 StillResult renderStill(const core::Scene& scene, const StillOptions& options);
 
 // The PNG text chunks that make a render reproducible: the preset and render statistics.

@@ -1,5 +1,6 @@
 #include "camera.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -11,20 +12,37 @@ CameraFrame orbitCamera(const CameraSettings& settings, const Box& box, double a
   const double radius = 0.5 * glm::length(box.extent());
   const double azimuth = glm::radians(settings.azimuthDeg);
   const double elevation = glm::radians(settings.elevationDeg);
-  // Y is up in the conventional mesh frame; the orbit is about the Y axis.
+  const double roll = glm::radians(settings.rollDeg);
+  // Y is up in the conventional mesh frame; the orbit is about the Y axis. The up vector is the
+  // derivative of the eye direction along elevation, so it is never parallel to the view.
   const glm::dvec3 toEye(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
                          std::cos(elevation) * std::cos(azimuth));
   const glm::dvec3 upFromAngles(-std::sin(elevation) * std::sin(azimuth), std::cos(elevation),
                                 -std::sin(elevation) * std::cos(azimuth));
+  const glm::dvec3 target = box.center() + settings.target * radius;
   const double distance = settings.distance * radius;
-  frame.eye = box.center() + distance * toEye;
+  frame.eye = target + distance * toEye;
   frame.forward = -toEye;
-  frame.up = glm::normalize(upFromAngles);
-  frame.right = glm::normalize(glm::cross(frame.forward, frame.up));
-  frame.view = glm::lookAt(frame.eye, box.center(), frame.up);
-  frame.nearPlane = std::max(1e-4 * radius, distance - 2.0 * radius);
-  frame.farPlane = distance + 2.0 * radius;
-  frame.projection = glm::perspective(glm::radians(settings.fovDeg), aspect, frame.nearPlane, frame.farPlane);
+  const glm::dvec3 right0 = glm::normalize(glm::cross(frame.forward, glm::normalize(upFromAngles)));
+  const glm::dvec3 up0 = glm::cross(right0, frame.forward);
+  frame.right = std::cos(roll) * right0 + std::sin(roll) * up0;
+  frame.up = std::cos(roll) * up0 - std::sin(roll) * right0;
+  frame.view = glm::lookAt(frame.eye, frame.eye + frame.forward, frame.up);
+
+  // Automatic clip planes enclose the grid's bounding sphere; explicit ones are honoured as given.
+  const double toCenter = glm::length(box.center() - frame.eye);
+  frame.nearPlane =
+      settings.nearClip > 0.0 ? settings.nearClip * radius : std::max(1e-4 * radius, toCenter - 1.01 * radius);
+  frame.farPlane = settings.farClip > 0.0 ? settings.farClip * radius : toCenter + 1.01 * radius;
+  frame.farPlane = std::max(frame.farPlane, frame.nearPlane * 1.0001);
+  frame.orthographic = settings.projection == Projection::Orthographic;
+  if (frame.orthographic) {
+    const double halfHeight = 0.5 * settings.orthoHeight * radius;
+    frame.projection =
+        glm::ortho(-halfHeight * aspect, halfHeight * aspect, -halfHeight, halfHeight, frame.nearPlane, frame.farPlane);
+  } else {
+    frame.projection = glm::perspective(glm::radians(settings.fovDeg), aspect, frame.nearPlane, frame.farPlane);
+  }
   return frame;
 }
 

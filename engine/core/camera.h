@@ -20,6 +20,7 @@ struct CameraFrame {
   glm::dmat4 projection{1.0};
   double nearPlane = 0.01;
   double farPlane = 100.0;
+  bool orthographic = false;
 };
 
 // The frame for a camera orbiting `box` (in world units), for an image of the given aspect.

@@ -95,6 +95,15 @@ class ObjectReader {
     }
   }
 
+  glm::dvec3 vector(const std::string& key, glm::dvec3 fallback, double min, double max) {
+    const json* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_array() || value->size() != 3) fail("must be an array of three numbers", key);
+    glm::dvec3 v;
+    for (int i = 0; i < 3; ++i) v[i] = checkNumber((*value)[static_cast<std::size_t>(i)], key, min, max);
+    return v;
+  }
+
   void finish() const {
     for (auto it = object_.begin(); it != object_.end(); ++it)
       if (!seen_.count(it.key())) fail("is not a known key", it.key());
@@ -214,7 +223,11 @@ Scene sceneFromJson(std::string_view text, std::string_view sourceName) {
     ToneMapSettings& t = scene.tone;
     t.brightness = toneReader.number("brightness", t.brightness, 0.0, 1000.0);
     t.gamma = toneReader.number("gamma", t.gamma, 0.1, 10.0);
+    t.gammaThreshold = toneReader.number("gamma_threshold", t.gammaThreshold, 0.0, 1.0);
+    t.vibrancy = toneReader.number("vibrancy", t.vibrancy, 0.0, 1.0);
+    t.highlightPower = toneReader.number("highlight_power", t.highlightPower, -1.0, 10.0);
     t.exposure = toneReader.number("exposure", t.exposure, -20.0, 20.0);
+    t.contrast = toneReader.number("contrast", t.contrast, 0.0, 10.0);
     t.opacity = toneReader.number("opacity", t.opacity, 0.0, 100.0);
     t.background = toneReader.color("background", t.background);
     toneReader.finish();
@@ -223,10 +236,50 @@ Scene sceneFromJson(std::string_view text, std::string_view sourceName) {
     ObjectReader cameraReader(*camera, source, "camera");
     CameraSettings& c = scene.camera;
     c.azimuthDeg = cameraReader.number("azimuth_deg", c.azimuthDeg, -3600.0, 3600.0);
-    c.elevationDeg = cameraReader.number("elevation_deg", c.elevationDeg, -90.0, 90.0);
+    c.elevationDeg = cameraReader.number("elevation_deg", c.elevationDeg, -360.0, 360.0);
+    c.rollDeg = cameraReader.number("roll_deg", c.rollDeg, -360.0, 360.0);
     c.distance = cameraReader.number("distance", c.distance, 0.01, 1000.0);
     c.fovDeg = cameraReader.number("fov_deg", c.fovDeg, 1.0, 170.0);
+    c.orthoHeight = cameraReader.number("ortho_height", c.orthoHeight, 0.001, 1000.0);
+    const std::string projection = cameraReader.string("projection", "perspective");
+    if (projection == "perspective") {
+      c.projection = Projection::Perspective;
+    } else if (projection == "orthographic") {
+      c.projection = Projection::Orthographic;
+    } else {
+      cameraReader.fail("is '" + projection + "'; expected 'perspective' or 'orthographic'", "projection");
+    }
+    c.target = cameraReader.vector("target", c.target, -1000.0, 1000.0);
+    c.nearClip = cameraReader.number("near", c.nearClip, 0.0, 1000.0);
+    c.farClip = cameraReader.number("far", c.farClip, 0.0, 10000.0);
+    if (c.farClip > 0.0 && c.farClip <= c.nearClip) cameraReader.fail("must be larger than 'near'", "far");
     cameraReader.finish();
+  }
+  if (const json* render = root.find("render")) {
+    ObjectReader renderReader(*render, source, "render");
+    RenderSettingsDoc& r = scene.render;
+    r.stepVoxels = renderReader.number("step", r.stepVoxels, 0.05, 4.0);
+    r.samples = static_cast<int>(renderReader.integer("samples", r.samples, 1, 1024));
+    const std::string mesh = renderReader.string("mesh", "off");
+    if (mesh == "off") {
+      r.meshDisplay = MeshDisplay::Off;
+    } else if (mesh == "ghost") {
+      r.meshDisplay = MeshDisplay::Ghost;
+    } else if (mesh == "silhouette") {
+      r.meshDisplay = MeshDisplay::Silhouette;
+    } else {
+      renderReader.fail("is '" + mesh + "'; expected 'off', 'ghost' or 'silhouette'", "mesh");
+    }
+    r.meshColor = renderReader.color("mesh_color", r.meshColor);
+    r.meshStrength = renderReader.number("mesh_strength", r.meshStrength, 0.0, 10.0);
+    if (const json* lighting = renderReader.find("lighting")) {
+      if (!lighting->is_boolean()) renderReader.fail("must be true or false", "lighting");
+      r.lighting = lighting->get<bool>();
+    }
+    r.lightAzimuthDeg = renderReader.number("light_azimuth_deg", r.lightAzimuthDeg, -3600.0, 3600.0);
+    r.lightElevationDeg = renderReader.number("light_elevation_deg", r.lightElevationDeg, -90.0, 90.0);
+    r.lightStrength = renderReader.number("light_strength", r.lightStrength, 0.0, 1.0);
+    renderReader.finish();
   }
   scene.seed = static_cast<std::uint64_t>(root.integer("seed", 1, 0, std::int64_t{1} << 53));
   scene.points = static_cast<std::uint64_t>(root.integer("points", 20'000'000, 1'000, std::int64_t{1} << 40));
@@ -268,15 +321,38 @@ std::string sceneToJson(const Scene& scene) {
                       {"color", {{"mode", "speed"}, {"gradient", gradient}}}});
   }
   root["layers"] = layers;
-  root["tone"] = {{"brightness", scene.tone.brightness},
-                  {"gamma", scene.tone.gamma},
-                  {"exposure", scene.tone.exposure},
-                  {"opacity", scene.tone.opacity},
-                  {"background", toHexColor(scene.tone.background)}};
-  root["camera"] = {{"azimuth_deg", scene.camera.azimuthDeg},
-                    {"elevation_deg", scene.camera.elevationDeg},
-                    {"distance", scene.camera.distance},
-                    {"fov_deg", scene.camera.fovDeg}};
+  const ToneMapSettings& t = scene.tone;
+  root["tone"] = {{"brightness", t.brightness},
+                  {"gamma", t.gamma},
+                  {"gamma_threshold", t.gammaThreshold},
+                  {"vibrancy", t.vibrancy},
+                  {"highlight_power", t.highlightPower},
+                  {"exposure", t.exposure},
+                  {"contrast", t.contrast},
+                  {"opacity", t.opacity},
+                  {"background", toHexColor(t.background)}};
+  const CameraSettings& c = scene.camera;
+  root["camera"] = {{"azimuth_deg", c.azimuthDeg},
+                    {"elevation_deg", c.elevationDeg},
+                    {"roll_deg", c.rollDeg},
+                    {"distance", c.distance},
+                    {"fov_deg", c.fovDeg},
+                    {"ortho_height", c.orthoHeight},
+                    {"projection", c.projection == Projection::Orthographic ? "orthographic" : "perspective"},
+                    {"target", {c.target.x, c.target.y, c.target.z}},
+                    {"near", c.nearClip},
+                    {"far", c.farClip}};
+  const RenderSettingsDoc& r = scene.render;
+  const char* meshNames[] = {"off", "ghost", "silhouette"};
+  root["render"] = {{"step", r.stepVoxels},
+                    {"samples", r.samples},
+                    {"mesh", meshNames[static_cast<int>(r.meshDisplay)]},
+                    {"mesh_color", toHexColor(r.meshColor)},
+                    {"mesh_strength", r.meshStrength},
+                    {"lighting", r.lighting},
+                    {"light_azimuth_deg", r.lightAzimuthDeg},
+                    {"light_elevation_deg", r.lightElevationDeg},
+                    {"light_strength", r.lightStrength}};
   root["seed"] = scene.seed;
   root["points"] = scene.points;
   return root.dump(2) + "\n";

@@ -37,19 +37,49 @@ struct PatternLayer {
 };
 
 // flam3-style tone mapping, applied in the shader so changing it never restarts accumulation.
+// Names follow flam3 (Draves & Reckase, "The Fractal Flame Algorithm"); see volume_renderer.cpp.
 struct ToneMapSettings {
-  double brightness = 4.0;
+  double brightness = 4.0;  // scales the log-density emission
   double gamma = 2.2;
-  double exposure = 0.0;       // stops
-  double opacity = 1.0;        // how strongly dense voxels hide what is behind them
-  glm::vec3 background{0.0f};  // linear RGB
+  double gammaThreshold = 0.01;  // below this opacity the gamma curve is linear (no noise boost)
+  double vibrancy = 1.0;         // 1: gamma on opacity keeps hues; 0: gamma per channel
+  double highlightPower = -1.0;  // < 0 clips overexposed colours; ≥ 0 fades them to white
+  double exposure = 0.0;         // stops
+  double contrast = 1.0;         // around mid grey, after gamma
+  double opacity = 1.0;          // how strongly dense voxels hide what is behind them
+  glm::vec3 background{0.0f};    // linear RGB
 };
 
+enum class Projection { Perspective, Orthographic };
+
+// The camera orbits `target` (an offset from the grid's centre, in bounding-sphere radii) at
+// `distance` radii; free flight moves the target with the eye. Any orientation is valid.
 struct CameraSettings {
   double azimuthDeg = 30.0;
   double elevationDeg = 15.0;
-  double distance = 2.6;  // in units of the grid's bounding-sphere radius
-  double fovDeg = 35.0;
+  double rollDeg = 0.0;
+  double distance = 2.6;     // in units of the grid's bounding-sphere radius
+  double fovDeg = 35.0;      // perspective: vertical field of view
+  double orthoHeight = 2.2;  // orthographic: visible height, in radii
+  Projection projection = Projection::Perspective;
+  glm::dvec3 target{0.0};  // in radii, relative to the grid's centre
+  double nearClip = 0.0;   // distance from the eye in radii; 0: automatic
+  double farClip = 0.0;    // distance from the eye in radii; 0: automatic
+};
+
+enum class MeshDisplay { Off, Ghost, Silhouette };
+
+// How a frame is drawn; none of it restarts accumulation.
+struct RenderSettingsDoc {
+  double stepVoxels = 0.5;  // ray-march step as a fraction of a voxel edge
+  int samples = 1;          // jittered sub-samples averaged per pixel for stills
+  MeshDisplay meshDisplay = MeshDisplay::Off;
+  glm::vec3 meshColor{0.55f, 0.65f, 0.8f};  // linear RGB of the ghost or outline
+  double meshStrength = 0.35;
+  bool lighting = false;  // directional light with a shadow volume
+  double lightAzimuthDeg = 45.0;
+  double lightElevationDeg = 50.0;
+  double lightStrength = 0.8;  // how much shadowed emission is dimmed
 };
 
 struct Scene {
@@ -61,6 +91,7 @@ struct Scene {
   std::vector<PatternLayer> layers;
   ToneMapSettings tone;
   CameraSettings camera;
+  RenderSettingsDoc render;
   std::uint64_t seed = 1;
   std::uint64_t points = 20'000'000;  // points accumulated for a still
 

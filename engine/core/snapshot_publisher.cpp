@@ -20,7 +20,7 @@ void SnapshotPublisher::requestNow() {
   wake_.notify_all();
 }
 
-bool SnapshotPublisher::takeIfNewer(VolumeSnapshot& out) {
+bool SnapshotPublisher::takeIfNewer(PackedVolume& out) {
   std::unique_lock lock(mutex_, std::try_to_lock);
   if (!lock.owns_lock() || !readyFresh_) return false;
   std::swap(out, ready_);
@@ -29,7 +29,8 @@ bool SnapshotPublisher::takeIfNewer(VolumeSnapshot& out) {
 }
 
 void SnapshotPublisher::loop(std::stop_token stop) {
-  VolumeSnapshot working;
+  VolumeSnapshot snapshot;
+  PackedVolume working;
   std::uint64_t lastVersion = ~std::uint64_t{0};
   while (!stop.stop_requested()) {
     {
@@ -40,7 +41,8 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     if (stop.stop_requested()) break;
     const std::uint64_t version = accumulator_.version();
     if (version == lastVersion) continue;
-    accumulator_.snapshot(working);
+    accumulator_.snapshot(snapshot);
+    packVolume(snapshot, working);
     lastVersion = working.version;
     std::lock_guard lock(mutex_);
     std::swap(working, ready_);

@@ -1,5 +1,6 @@
-// Double-buffered snapshots of a running Accumulator, taken on a thread of their own so the main
-// thread never spends a frame copying the grid: it only swaps in the newest finished snapshot.
+// Double-buffered snapshots of a running Accumulator, taken and packed for upload on a thread of
+// their own so the main thread never spends a frame copying the grid: it only swaps in the newest
+// finished volume.
 #pragma once
 
 #include <chrono>
@@ -9,6 +10,7 @@
 #include <thread>
 
 #include "accumulator.h"
+#include "packed_volume.h"
 
 namespace voxflame::core {
 
@@ -19,7 +21,7 @@ class SnapshotPublisher {
 
   // Swaps the newest snapshot into `out` when one newer than `out.version` is ready; never waits
   // for a snapshot in progress. Returns whether `out` changed.
-  bool takeIfNewer(VolumeSnapshot& out);
+  bool takeIfNewer(PackedVolume& out);
   void requestNow();  // take the next snapshot without waiting for the interval
 
  private:
@@ -28,7 +30,7 @@ class SnapshotPublisher {
   const Accumulator& accumulator_;
   std::chrono::milliseconds interval_;
   std::mutex mutex_;  // guards ready_ and readyFresh_
-  VolumeSnapshot ready_;
+  PackedVolume ready_;
   bool readyFresh_ = false;
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;

@@ -1,0 +1,93 @@
+#include "packed_volume.h"
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+
+namespace voxflame::core {
+
+std::uint16_t floatToHalf(float value) {
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(value);
+  const std::uint32_t sign = (bits >> 16) & 0x8000u;
+  const std::uint32_t magnitude = bits & 0x7fffffffu;
+  if (magnitude >= 0x7f800000u)
+    return static_cast<std::uint16_t>(sign | 0x7c00u | (magnitude > 0x7f800000u ? 0x200u : 0u));
+  if (magnitude >= 0x477ff000u) return static_cast<std::uint16_t>(sign | 0x7c00u);  // overflows to infinity
+  if (magnitude < 0x38800000u) {
+    // Subnormal half (or zero): shift the implicit-one mantissa into place, rounding to nearest even.
+    if (magnitude < 0x33000000u) return static_cast<std::uint16_t>(sign);
+    const std::uint32_t exponent = magnitude >> 23;
+    const std::uint32_t mantissa = (magnitude & 0x7fffffu) | 0x800000u;
+    const std::uint32_t shift = 126u - exponent;
+    std::uint32_t half = mantissa >> shift;
+    const std::uint32_t remainder = mantissa & ((1u << shift) - 1u);
+    const std::uint32_t halfway = 1u << (shift - 1u);
+    if (remainder > halfway || (remainder == halfway && (half & 1u))) ++half;
+    return static_cast<std::uint16_t>(sign | half);
+  }
+  std::uint32_t half = ((magnitude - 0x38000000u) >> 13);
+  const std::uint32_t remainder = magnitude & 0x1fffu;
+  if (remainder > 0x1000u || (remainder == 0x1000u && (half & 1u))) ++half;
+  return static_cast<std::uint16_t>(sign | half);
+}
+
+float halfToFloat(std::uint16_t half) {
+  const std::uint32_t sign = static_cast<std::uint32_t>(half & 0x8000u) << 16;
+  const std::uint32_t exponent = (half >> 10) & 0x1fu;
+  const std::uint32_t mantissa = half & 0x3ffu;
+  if (exponent == 0) {
+    const float value = std::ldexp(static_cast<float>(mantissa), -24);
+    return sign ? -value : value;
+  }
+  if (exponent == 31) return std::bit_cast<float>(sign | 0x7f800000u | (mantissa << 13));
+  return std::bit_cast<float>(sign | ((exponent + 112u) << 23) | (mantissa << 13));
+}
+
+void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
+  const GridGeometry& g = snapshot.geometry;
+  out.geometry = g;
+  out.version = snapshot.version;
+  out.points = snapshot.points;
+  out.maxDensity = snapshot.maxDensity;
+  const std::size_t voxels = g.voxelCount();
+  out.texels.resize(4 * voxels);
+  out.brickCount = (g.size + (kBrickSize - 1)) / kBrickSize;
+  out.occupancy.assign(static_cast<std::size_t>(out.brickCount.x) * out.brickCount.y * out.brickCount.z, 0);
+  const float inverseMax = snapshot.maxDensity > 0.0f ? 1.0f / snapshot.maxDensity : 0.0f;
+  auto markBricks = [&](int i, int j, int k) {
+    // A voxel's density reaches samples up to one voxel away (trilinear filtering), so every
+    // brick within one voxel of it must be marched.
+    const int i0 = std::max(0, i - 1) / kBrickSize, i1 = std::min(g.size.x - 1, i + 1) / kBrickSize;
+    const int j0 = std::max(0, j - 1) / kBrickSize, j1 = std::min(g.size.y - 1, j + 1) / kBrickSize;
+    const int k0 = std::max(0, k - 1) / kBrickSize, k1 = std::min(g.size.z - 1, k + 1) / kBrickSize;
+    for (int bk = k0; bk <= k1; ++bk)
+      for (int bj = j0; bj <= j1; ++bj)
+        for (int bi = i0; bi <= i1; ++bi)
+          out.occupancy[static_cast<std::size_t>(bi) + static_cast<std::size_t>(out.brickCount.x) *
+                                                           (bj + static_cast<std::size_t>(out.brickCount.y) * bk)] = 1;
+  };
+  constexpr std::uint16_t kZero = 0;
+  double densitySum = 0.0;
+  std::size_t occupied = 0;
+  for (int k = 0; k < g.size.z; ++k)
+    for (int j = 0; j < g.size.y; ++j)
+      for (int i = 0; i < g.size.x; ++i) {
+        const std::size_t v = g.index(i, j, k);
+        std::uint16_t* texel = &out.texels[4 * v];
+        const float density = snapshot.density[v];
+        if (density <= 0.0f) {
+          texel[0] = texel[1] = texel[2] = texel[3] = kZero;
+          continue;
+        }
+        densitySum += density;
+        ++occupied;
+        const float weight = density * inverseMax;
+        const std::uint8_t* rgba = &snapshot.rgba[4 * v];
+        for (int c = 0; c < 3; ++c) texel[c] = floatToHalf(weight * static_cast<float>(rgba[c]) * (1.0f / 255.0f));
+        texel[3] = floatToHalf(weight);
+        markBricks(i, j, k);
+      }
+  out.meanDensity = occupied ? static_cast<float>(densitySum / static_cast<double>(occupied)) : 0.0f;
+}
+
+}  // namespace voxflame::core

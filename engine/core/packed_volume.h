@@ -1,0 +1,36 @@
+// The volume in the form the renderer uploads: one RGBA half-float texel per voxel holding the
+// density normalised by the densest voxel (alpha) and the mean colour premultiplied by it (rgb),
+// so trilinear filtering blends colour by density and empty neighbours never darken an edge.
+// A coarse occupancy grid of bricks lets the ray-marcher leap over empty space. Packing runs
+// on whichever thread took the snapshot, so the main thread only uploads.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "accumulator.h"
+#include "grid.h"
+
+namespace voxflame::core {
+
+inline constexpr int kBrickSize = 8;
+
+struct PackedVolume {
+  GridGeometry geometry;
+  std::vector<std::uint16_t> texels;  // 4 half floats per voxel, x fastest
+  glm::ivec3 brickCount{0};
+  std::vector<std::uint8_t> occupancy;  // 1 where a brick, grown by one voxel, holds density
+  float maxDensity = 0.0f;
+  float meanDensity = 0.0f;  // over voxels with any density: the scale of a "typical" voxel
+  std::uint64_t version = 0;
+  std::uint64_t points = 0;
+};
+
+void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out);
+
+std::uint16_t floatToHalf(float value);  // IEEE 754 binary16, round to nearest even
+float halfToFloat(std::uint16_t half);
+
+}  // namespace voxflame::core
