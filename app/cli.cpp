@@ -1,6 +1,9 @@
 #include "cli.h"
 
+#include <signal.h>
 #include <unistd.h>
+
+#include <atomic>
 
 #include <cctype>
 #include <cstdio>
@@ -25,9 +28,11 @@ constexpr const char* kUsage = R"(voxflame — strange attractors filling the vo
 usage:
   voxflame [PRESET.json] [--screenshot FILE --frames N]
       Open the explorer on a preset (the built-in default when none is given).
-  voxflame render [PRESET.json] -o OUT.png [--width W] [--height H] [--points N]
-                  [--bit-depth 8|16] [--threads T]
-      Render a still headless (no display needed); the PNG carries the preset.
+  voxflame render [PRESET.json|IMAGE.png] -o OUT.png|OUT.exr [--width W] [--height H]
+                  [--samples S] [--points N] [--grid R] [--bit-depth 8|16]
+                  [--camera-azimuth DEG] [--camera-elevation DEG] [--threads T]
+      Render a still headless (no display needed). A PNG carries its preset: rendering
+      it again reproduces it. EXR is linear 32-bit float.
   voxflame bench [accumulate|mask|raymarch|export] [--json]
       Measure performance (Release build).
   voxflame --help | --version
@@ -37,40 +42,106 @@ usage:
 
 core::Scene sceneFromArgument(const std::vector<std::string>& positional) {
   if (positional.empty()) return core::defaultScene();
-  return core::loadScene(positional.front());
+  const std::filesystem::path path(positional.front());
+  if (path.extension() == ".png" || path.extension() == ".PNG") return sceneFromImage(path);
+  return core::loadScene(path);
 }
+
+namespace {
+
+// Ctrl-C during a render only raises this flag; the render stops at its next check and no
+// half-written file is left behind.
+std::atomic<bool> gInterrupted{false};
+extern "C" void onInterrupt(int) {
+  gInterrupted.store(true);
+}
+
+std::string formatDuration(double seconds) {
+  char text[32];
+  if (seconds >= 3600.0)
+    std::snprintf(text, sizeof text, "%dh%02dm", static_cast<int>(seconds / 3600.0),
+                  static_cast<int>(seconds / 60.0) % 60);
+  else if (seconds >= 60.0)
+    std::snprintf(text, sizeof text, "%dm%02ds", static_cast<int>(seconds / 60.0), static_cast<int>(seconds) % 60);
+  else
+    std::snprintf(text, sizeof text, "%.0fs", seconds);
+  return text;
+}
+
+}  // namespace
 
 int renderCommand(const std::vector<std::string>& args) {
   Arguments arguments(args, 2);
   const auto output = arguments.take("-o", "--output");
   StillOptions options;
-  options.width = static_cast<int>(arguments.integer("--width", 1280, 1, 16384));
-  options.height = static_cast<int>(arguments.integer("--height", 720, 1, 16384));
+  options.width = static_cast<int>(arguments.integer("--width", 1280, 1, 65536));
+  options.height = static_cast<int>(arguments.integer("--height", 720, 1, 65536));
   options.points = static_cast<std::uint64_t>(arguments.integer("--points", 0, 0, 1LL << 40));
   options.threads = static_cast<int>(arguments.integer("--threads", 0, 0, 1024));
+  const auto samples = arguments.take("--samples");
+  const int sampleCount = static_cast<int>(arguments.integer("--samples", 0, 1, 1024));
+  const auto grid = arguments.take("--grid");
+  const int gridResolution = static_cast<int>(arguments.integer("--grid", 0, 16, 1024));
+  const auto azimuth = arguments.take("--camera-azimuth");
+  const double azimuthDeg = arguments.real("--camera-azimuth", 0.0, -3600.0, 3600.0);
+  const auto elevation = arguments.take("--camera-elevation");
+  const double elevationDeg = arguments.real("--camera-elevation", 0.0, -360.0, 360.0);
   const int bitDepth = static_cast<int>(arguments.integer("--bit-depth", 8, 8, 16));
   if (bitDepth != 8 && bitDepth != 16) throw UsageError("--bit-depth must be 8 or 16");
   arguments.finish(1);
-  if (!output) throw UsageError("render needs an output file: -o OUT.png");
-  if (std::filesystem::path(*output).extension() != ".png")
-    throw UsageError("output '" + *output + "' must end in .png");
+  if (!output) throw UsageError("render needs an output file: -o OUT.png or -o OUT.exr");
+  const std::string extension = std::filesystem::path(*output).extension().string();
+  if (extension != ".png" && extension != ".exr") throw UsageError("output '" + *output + "' must end in .png or .exr");
+  if (static_cast<double>(options.width) * options.height > 1.5e9)
+    throw core::Error("an image of " + std::to_string(options.width) + "×" + std::to_string(options.height) +
+                      " pixels is too large to hold in memory");
 
+  // Command-line settings go into the scene, so the preset stored in the image reproduces it.
   core::Scene scene = sceneFromArgument(arguments.positional());
+  if (options.points) scene.points = options.points;
+  if (samples) scene.render.samples = sampleCount;
+  if (grid) scene.gridResolution = gridResolution;
+  if (azimuth) scene.camera.azimuthDeg = azimuthDeg;
+  if (elevation) scene.camera.elevationDeg = elevationDeg;
+  options.linearOutput = extension == ".exr";
+
+  gInterrupted = false;
+  struct sigaction action {};
+  action.sa_handler = onInterrupt;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  options.cancel = &gInterrupted;
   const bool interactive = isatty(fileno(stderr));
   options.progress = [interactive](const core::AccumulatorStats& stats, std::uint64_t target) {
     if (!interactive) return;
-    const double percent =
-        target ? 100.0 * static_cast<double>(std::min(stats.points, target)) / static_cast<double>(target) : 0.0;
-    std::fprintf(stderr, "\raccumulating %5.1f%%  %.1f M points/s   ", percent, stats.pointsPerSecond * 1e-6);
+    const double done =
+        target ? static_cast<double>(std::min(stats.points, target)) / static_cast<double>(target) : 0.0;
+    const double insideRate = stats.pointsPerSecond * stats.insideFraction();
+    const double left =
+        insideRate > 0.0 ? static_cast<double>(target - std::min(stats.points, target)) / insideRate : 0.0;
+    std::fprintf(stderr, "\raccumulating %5.1f%%  %6.1f M points/s  %s left   ", 100.0 * done,
+                 stats.pointsPerSecond * 1e-6, formatDuration(left).c_str());
+    std::fflush(stderr);
   };
-  const StillResult result = renderStill(scene, options);
+  StillResult result;
+  try {
+    result = renderStill(scene, options);
+  } catch (const RenderCancelled&) {
+    if (interactive) std::fprintf(stderr, "\n");
+    std::cerr << "voxflame: interrupted; nothing was written\n";
+    return 130;
+  }
   if (interactive) std::fprintf(stderr, "\n");
   if (!result.warning.empty()) std::cerr << "voxflame: warning: " << result.warning << "\n";
-  core::writePng(*output, result.image, bitDepth, stillMetadata(scene, result));
-  std::printf("wrote %s (%d×%d, %llu points inside, %.2f s accumulating, %.2f s rendering on %s)\n", output->c_str(),
-              options.width, options.height, static_cast<unsigned long long>(result.stats.points),
-              result.accumulateSeconds, result.renderSeconds, result.renderer.c_str());
-  return 0;
+  if (options.linearOutput)
+    core::writeExr(*output, result.image, stillMetadata(scene, result));
+  else
+    core::writePng(*output, result.image, bitDepth, stillMetadata(scene, result));
+  std::printf("wrote %s (%d×%d, %d samples, %llu points inside, %.2f s accumulating, %.2f s rendering on %s)\n",
+              output->c_str(), options.width, options.height, scene.render.samples,
+              static_cast<unsigned long long>(result.stats.points), result.accumulateSeconds, result.renderSeconds,
+              result.renderer.c_str());
+  return gInterrupted ? 130 : 0;
 }
 
 namespace {

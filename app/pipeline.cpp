@@ -69,6 +69,7 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
     // generous number of iterations and say how many points landed.
     const std::uint64_t iterationLimit = 40 * target + 50'000'000;
     while (!accumulator.waitUntilDone(0.25)) {
+      if (options.cancel && options.cancel->load()) throw RenderCancelled();
       const core::AccumulatorStats stats = accumulator.stats();
       if (options.progress) options.progress(stats, target);
       if (stats.iterations > iterationLimit) {
@@ -86,6 +87,7 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   }
   result.accumulateSeconds = secondsSince(accumulateStart);
 
+  if (options.cancel && options.cancel->load()) throw RenderCancelled();
   const auto renderStart = std::chrono::steady_clock::now();
   gl::HeadlessContext context;
   result.renderer = context.renderer();
@@ -107,9 +109,24 @@ core::TextChunks stillMetadata(const core::Scene& scene, const StillResult& resu
   stats << "{\"points\":" << result.stats.points << ",\"iterations\":" << result.stats.iterations
         << ",\"accumulate_seconds\":" << result.accumulateSeconds << ",\"render_seconds\":" << result.renderSeconds
         << ",\"version\":\"" << kVersion << "\"}";
-  return {{kPresetChunkKey, core::sceneToJson(scene)},
+  // A preset inside an image must find its mesh from wherever the image goes.
+  core::Scene stored = scene;
+  if (!stored.embedded)
+    stored.meshPath = std::filesystem::absolute(scene.resolvedMeshPath()).lexically_normal().string();
+  return {{kPresetChunkKey, core::sceneToJson(stored)},
           {"voxflame:stats", stats.str()},
           {"Software", std::string("voxflame ") + kVersion}};
+}
+
+core::Scene sceneFromImage(const std::filesystem::path& path) {
+  const core::PngInfo png = core::readPng(path);
+  const auto preset = png.text.find(kPresetChunkKey);
+  if (preset == png.text.end())
+    throw core::Error("image '" + path.string() + "' carries no voxflame preset (no \"" + kPresetChunkKey +
+                      "\" chunk)");
+  core::Scene scene = core::sceneFromJson(preset->second, path.string());
+  if (!scene.embedded) scene.baseDirectory = path.parent_path();
+  return scene;
 }
 
 }  // namespace voxflame::app

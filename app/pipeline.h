@@ -2,12 +2,15 @@
 // accumulation → snapshot → ray-marched image.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
 
 #include "core/accumulator.h"
+#include "core/error.h"
 #include "core/image_io.h"
 #include "core/inside_mask.h"
 #include "core/scene.h"
@@ -30,9 +33,10 @@ void checkGridFitsInMemory(const core::GridGeometry& grid);
 struct StillOptions {
   int width = 1280;
   int height = 720;
-  std::uint64_t points = 0;   // 0: the scene's own count
-  int threads = 0;            // 0: all hardware threads
-  bool linearOutput = false;  // linear light (for EXR) instead of display-encoded
+  std::uint64_t points = 0;                   // 0: the scene's own count
+  int threads = 0;                            // 0: all hardware threads
+  bool linearOutput = false;                  // linear light (for EXR) instead of display-encoded
+  const std::atomic<bool>* cancel = nullptr;  // when set and raised, renderStill throws RenderCancelled
   std::function<void(const core::AccumulatorStats&, std::uint64_t target)> progress;  // may be empty
 };
 
@@ -45,6 +49,12 @@ struct StillResult {
   std::string warning;   // e.g. fewer points landed inside the mesh than asked for
 };
 
+// Thrown by renderStill when StillOptions::cancel was raised.
+class RenderCancelled : public core::Error {
+ public:
+  RenderCancelled() : core::Error("render cancelled") {}
+};
+
 // Renders a still headless through EGL, with the scene's camera, tone and render settings
 // (samples included). Throws core::Error on anything the user can fix.
 StillResult renderStill(const core::Scene& scene, const StillOptions& options);
@@ -53,5 +63,8 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options);
 core::TextChunks stillMetadata(const core::Scene& scene, const StillResult& result);
 
 inline constexpr const char* kPresetChunkKey = "voxflame:preset";
+
+// The scene stored in a PNG rendered by voxflame (its "voxflame:preset" chunk).
+core::Scene sceneFromImage(const std::filesystem::path& path);
 
 }  // namespace voxflame::app

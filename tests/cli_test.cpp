@@ -78,3 +78,80 @@ TEST(Cli, HelpAndVersion) {
   EXPECT_EQ(version.exitStatus, 0);
   EXPECT_NE(version.output.find("voxflame"), std::string::npos);
 }
+
+TEST(Cli, RenderingThePngAgainReproducesIt) {
+  TemporaryFolder folder;
+  const std::string size = " --width 48 --height 32 --points 100000 --threads 1 --samples 2 --grid 48";
+  auto result = runVoxflame("render -o first.png --camera-azimuth 70 --camera-elevation -20" + size, folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  result = runVoxflame("render first.png -o second.png --threads 1 --width 48 --height 32", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  const auto first = voxflame::core::readPng(folder / "first.png");
+  const auto second = voxflame::core::readPng(folder / "second.png");
+  EXPECT_EQ(first.image.pixels, second.image.pixels);
+  const auto scene = voxflame::core::sceneFromJson(first.text.at("voxflame:preset"), "first.png");
+  EXPECT_DOUBLE_EQ(scene.camera.azimuthDeg, 70.0);
+  EXPECT_DOUBLE_EQ(scene.camera.elevationDeg, -20.0);
+  EXPECT_EQ(scene.render.samples, 2);
+  EXPECT_EQ(scene.gridResolution, 48);
+  EXPECT_EQ(voxflame::core::sceneToJson(scene), voxflame::core::sceneToJson(voxflame::core::sceneFromJson(
+                                                    second.text.at("voxflame:preset"), "second.png")));
+  EXPECT_NE(first.text.at("voxflame:stats").find("\"points\""), std::string::npos);
+}
+
+TEST(Cli, PresetWithAMeshOnDiskTravelsInsideThePng) {
+  TemporaryFolder folder;
+  std::filesystem::create_directories(folder / "work");
+  std::ofstream(folder / "work" / "p.json") << R"({"mesh":{"path":")" << voxflame::test::meshPath("teapot.obj").string()
+                                            << R"("},"grid":{"resolution":32},"layers":[{"attractor":"lorenz84"}]})";
+  auto result = runVoxflame("render work/p.json -o out.png --width 32 --height 32 --points 50000", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  std::filesystem::create_directories(folder / "elsewhere");
+  std::filesystem::rename(folder / "out.png", folder / "elsewhere" / "moved.png");
+  result = runVoxflame("render moved.png -o again.png --width 32 --height 32 --points 50000", folder / "elsewhere");
+  EXPECT_EQ(result.exitStatus, 0) << result.output;
+}
+
+TEST(Cli, ExrOutputIsLinearFloat) {
+  TemporaryFolder folder;
+  const auto result = runVoxflame("render -o out.exr --width 40 --height 30 --points 100000", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  const auto image = voxflame::core::readExr(folder / "out.exr");
+  EXPECT_EQ(image.width, 40);
+  EXPECT_EQ(image.height, 30);
+  float brightest = 0.0f;
+  for (float v : image.pixels) brightest = std::max(brightest, v);
+  EXPECT_GT(brightest, 0.05f);
+}
+
+TEST(Cli, PngWithoutPresetAndBadRenderOptionsAreRefused) {
+  TemporaryFolder folder;
+  voxflame::core::ImageRGBA plain;
+  plain.width = plain.height = 4;
+  plain.pixels.assign(64, 0.5f);
+  voxflame::core::writePng(folder / "plain.png", plain, 8, {});
+  auto result = runVoxflame("render plain.png -o out.png", folder.path());
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_NE(result.output.find("carries no voxflame preset"), std::string::npos) << result.output;
+  result = runVoxflame("render -o out.tiff", folder.path());
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_NE(result.output.find(".png or .exr"), std::string::npos) << result.output;
+  result = runVoxflame("render -o out.png --samples 0", folder.path());
+  EXPECT_NE(result.exitStatus, 0);
+  result = runVoxflame("render -o out.png --grid 4096", folder.path());
+  EXPECT_NE(result.exitStatus, 0);
+  result = runVoxflame("render -o out.png --camera-elevation nan", folder.path());
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_FALSE(std::filesystem::exists(folder / "out.png"));
+}
+
+TEST(Cli, InterruptedRenderLeavesNoFile) {
+  TemporaryFolder folder;
+  // A render far too long to finish, stopped by SIGINT after a moment.
+  const auto result = runVoxflame(
+      "render -o never.png --points 100000000000 2>&1 & pid=$!; sleep 2; kill -INT $pid; wait $pid", folder.path());
+  EXPECT_EQ(result.exitStatus, 130) << result.output;
+  EXPECT_NE(result.output.find("interrupted"), std::string::npos) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(folder / "never.png"));
+  EXPECT_FALSE(std::filesystem::exists(folder / "never.png.part"));
+}

@@ -41,7 +41,8 @@ TEST(Scene, DefaultPresetLoadsWithSeedParameters) {
 }
 
 TEST(Scene, ShippedDefaultFileEqualsEmbeddedOne) {
-  const Scene file = loadScene(voxflame::test::sourcePath("presets/default.json"));
+  Scene file = loadScene(voxflame::test::sourcePath("presets/default.json"));
+  file.embedded = true;  // the same document, read from the binary instead of the folder
   EXPECT_EQ(sceneToJson(file), sceneToJson(defaultScene()));
 }
 
@@ -82,6 +83,41 @@ TEST(Scene, ErrorsNameTheSourceKeyAndReason) {
   EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[],"seed":1})").find("'layers'"), std::string::npos);
   EXPECT_NE(errorOf(R"({"schema_version":99,"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84"}]})")
                 .find("newer than this voxflame"),
+            std::string::npos);
+}
+
+TEST(Scene, BuiltinMeshPathRoundTrips) {
+  const Scene scene = sceneFromJson(sceneToJson(defaultScene()), "copy.json");
+  EXPECT_TRUE(scene.embedded);
+  EXPECT_EQ(scene.meshPath, "meshes/bunny.obj");
+}
+
+TEST(Scene, RendererKeysAreReadAndChecked) {
+  const Scene scene = sceneFromJson(
+      R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84"}],
+          "tone":{"gamma_threshold":0.05,"vibrancy":0.5,"highlight_power":1,"contrast":1.2},
+          "camera":{"projection":"orthographic","target":[0.1,0,0],"near":1.5,"far":4,"roll_deg":10},
+          "render":{"samples":4,"mesh":"silhouette","step":0.25,"lighting":false}})",
+      "r.json");
+  EXPECT_EQ(scene.camera.projection, Projection::Orthographic);
+  EXPECT_DOUBLE_EQ(scene.camera.target.x, 0.1);
+  EXPECT_DOUBLE_EQ(scene.camera.nearClip, 1.5);
+  EXPECT_EQ(scene.render.samples, 4);
+  EXPECT_EQ(scene.render.meshDisplay, MeshDisplay::Silhouette);
+  EXPECT_DOUBLE_EQ(scene.tone.vibrancy, 0.5);
+  EXPECT_EQ(sceneToJson(sceneFromJson(sceneToJson(scene), "again.json")), sceneToJson(scene));
+  EXPECT_NE(
+      errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84"}],"camera":{"projection":"fisheye"}})")
+          .find("'camera.projection'"),
+      std::string::npos);
+  EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84"}],"camera":{"near":3,"far":2}})")
+                .find("'camera.far'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84"}],"render":{"samples":0}})")
+                .find("'render.samples'"),
+            std::string::npos);
+  EXPECT_NE(errorOf(R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84"}],"camera":{"target":[1,2]}})")
+                .find("'camera.target'"),
             std::string::npos);
 }
 

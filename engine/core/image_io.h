@@ -31,6 +31,10 @@ using TextChunks = std::map<std::string, std::string>;  // keyword -> UTF-8 text
 // a temporary beside it, then renamed). Throws core::Error naming the path on failure.
 void writePng(const std::filesystem::path& path, const ImageRGBA& image, int bitDepth, const TextChunks& text);
 
+// Writes a 32-bit float RGBA OpenEXR (linear light expected), complete or not at all.
+void writeExr(const std::filesystem::path& path, const ImageRGBA& image, const TextChunks& text);
+ImageRGBA readExr(const std::filesystem::path& path);
+
 struct PngInfo {
   ImageRGBA image;
   TextChunks text;

@@ -203,6 +203,11 @@ Scene sceneFromJson(std::string_view text, std::string_view sourceName) {
     ObjectReader meshReader(*mesh, source, "mesh");
     scene.meshPath = meshReader.requiredString("path");
     if (scene.meshPath.empty()) meshReader.fail("must not be empty", "path");
+    if (scene.meshPath.rfind(kBuiltinMeshPrefix, 0) == 0) {
+      scene.meshPath = scene.meshPath.substr(std::string_view(kBuiltinMeshPrefix).size());
+      scene.embedded = true;
+      scene.baseDirectory = "presets";
+    }
     meshReader.finish();
   }
   if (const json* grid = root.find("grid")) {
@@ -260,15 +265,15 @@ Scene sceneFromJson(std::string_view text, std::string_view sourceName) {
     RenderSettingsDoc& r = scene.render;
     r.stepVoxels = renderReader.number("step", r.stepVoxels, 0.05, 4.0);
     r.samples = static_cast<int>(renderReader.integer("samples", r.samples, 1, 1024));
-    const std::string mesh = renderReader.string("mesh", "off");
-    if (mesh == "off") {
+    const std::string meshDisplay = renderReader.string("mesh", "off");
+    if (meshDisplay == "off") {
       r.meshDisplay = MeshDisplay::Off;
-    } else if (mesh == "ghost") {
+    } else if (meshDisplay == "ghost") {
       r.meshDisplay = MeshDisplay::Ghost;
-    } else if (mesh == "silhouette") {
+    } else if (meshDisplay == "silhouette") {
       r.meshDisplay = MeshDisplay::Silhouette;
     } else {
-      renderReader.fail("is '" + mesh + "'; expected 'off', 'ghost' or 'silhouette'", "mesh");
+      renderReader.fail("is '" + meshDisplay + "'; expected 'off', 'ghost' or 'silhouette'", "mesh");
     }
     r.meshColor = renderReader.color("mesh_color", r.meshColor);
     r.meshStrength = renderReader.number("mesh_strength", r.meshStrength, 0.0, 10.0);
@@ -303,7 +308,7 @@ std::string sceneToJson(const Scene& scene) {
   json root;
   root["schema_version"] = kSchemaVersion;
   root["name"] = scene.name;
-  root["mesh"] = {{"path", scene.meshPath}};
+  root["mesh"] = {{"path", (scene.embedded ? std::string(kBuiltinMeshPrefix) : std::string()) + scene.meshPath}};
   root["grid"] = {{"resolution", scene.gridResolution}};
   json layers = json::array();
   for (const auto& layer : scene.layers) {

@@ -18,6 +18,8 @@
 namespace voxflame::core {
 
 inline constexpr int kSchemaVersion = 1;
+// A mesh path starting with this names a mesh compiled into the binary ("builtin:meshes/bunny.obj").
+inline constexpr const char* kBuiltinMeshPrefix = "builtin:";
 
 enum class ColorMode { Speed };
 

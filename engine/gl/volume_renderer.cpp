@@ -43,6 +43,7 @@ uniform float uLogNormalizer;   // 1 / log(1 + maxDensity * uDensityScale)
 uniform float uBrightness;
 uniform float uOpacity;
 uniform uint uSample;
+uniform ivec2 uPixelOffset;     // this tile's place in the whole image, so jitter ignores tiling
 
 // A per-pixel, per-sample jitter of the first step hides the wood-grain banding of fixed steps.
 float hash(uvec3 v) {
@@ -77,7 +78,7 @@ void main() {
   float transmittance = 1.0;  // what is left to see behind, given uOpacity
   if (tExit > tEnter) {
     float stepLength = uStepVoxels * uVoxelSize;
-    float t = tEnter + stepLength * hash(uvec3(gl_FragCoord.xy, uSample));
+    float t = tEnter + stepLength * hash(uvec3(uvec2(ivec2(gl_FragCoord.xy) + uPixelOffset), uSample));
     vec3 toVoxel = vec3(1.0 / uVoxelSize);
     vec3 toTexture = 1.0 / vec3(uGridSize);
     float brickLength = float(uBrickSize) * uVoxelSize;
@@ -450,6 +451,7 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   setUniform(p, "uBrightness", settings.tone.brightness);
   setUniform(p, "uOpacity", std::clamp(settings.tone.opacity, 0.0, 1.0));
   glUniform1ui(p.uniform("uSample"), static_cast<GLuint>(sampleIndex));
+  glUniform2i(p.uniform("uPixelOffset"), tile.x, tile.y);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_3D, volumeTexture_);
   glUniform1i(p.uniform("uVolume"), 0);

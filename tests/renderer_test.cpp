@@ -1,0 +1,226 @@
+// The ray-marcher and tone mapping against analytic expectations, headless through EGL.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/camera.h"
+#include "core/packed_volume.h"
+#include "gl/headless_context.h"
+#include "gl/volume_renderer.h"
+
+using namespace voxflame;
+
+namespace {
+
+constexpr int kCube = 32;
+
+// A grid of kCube³ unit voxels, every one holding the same density and colour.
+core::PackedVolume uniformCube(std::uint8_t red = 255, std::uint8_t green = 255, std::uint8_t blue = 255) {
+  core::VolumeSnapshot snapshot;
+  snapshot.geometry.size = glm::ivec3(kCube);
+  snapshot.geometry.origin = glm::dvec3(0.0);
+  snapshot.geometry.voxelSize = 1.0;
+  const std::size_t voxels = snapshot.geometry.voxelCount();
+  snapshot.density.assign(voxels, 10.0f);
+  snapshot.rgba.resize(4 * voxels);
+  for (std::size_t v = 0; v < voxels; ++v) {
+    snapshot.rgba[4 * v] = red;
+    snapshot.rgba[4 * v + 1] = green;
+    snapshot.rgba[4 * v + 2] = blue;
+    snapshot.rgba[4 * v + 3] = 255;
+  }
+  snapshot.maxDensity = 10.0f;
+  snapshot.version = 1;
+  core::PackedVolume volume;
+  core::packVolume(snapshot, volume);
+  return volume;
+}
+
+// Tone mapping that passes opacity straight through: pixel = 1 − transmittance for white.
+core::ToneMapSettings neutralTone(double brightness) {
+  core::ToneMapSettings tone;
+  tone.brightness = brightness;
+  tone.gamma = 1.0;
+  tone.gammaThreshold = 0.0;
+  tone.vibrancy = 1.0;
+  tone.highlightPower = -1.0;
+  tone.contrast = 1.0;
+  tone.exposure = 0.0;
+  tone.opacity = 1.0;
+  tone.background = glm::vec3(0.0f);
+  return tone;
+}
+
+gl::RenderSettings frontView(const core::GridGeometry& grid, core::ToneMapSettings tone) {
+  core::CameraSettings camera;
+  camera.azimuthDeg = 0.0;  // eye on +z looking down −z, straight through the cube
+  camera.elevationDeg = 0.0;
+  camera.projection = core::Projection::Orthographic;
+  camera.orthoHeight = 0.5;  // only the cube's middle
+  gl::RenderSettings settings;
+  settings.camera = core::orbitCamera(camera, grid.box(), 1.0);
+  settings.tone = tone;
+  settings.render.stepVoxels = 0.25;
+  return settings;
+}
+
+float centre(const core::ImageRGBA& image, int channel = 0) {
+  return image.at(image.width / 2, image.height / 2)[channel];
+}
+
+float luminance(const float* p) {
+  return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+}
+
+class Renderer : public ::testing::Test {
+ protected:
+  gl::HeadlessContext context;
+  gl::VolumeRenderer renderer;
+};
+
+}  // namespace
+
+TEST_F(Renderer, UniformCubeMatchesAnalyticOpacity) {
+  const core::PackedVolume cube = uniformCube();
+  renderer.upload(cube);
+  for (double brightness : {0.005, 0.02, 0.05}) {
+    const auto settings = frontView(cube.geometry, neutralTone(brightness));
+    const core::ImageRGBA image = gl::renderToImage(renderer, settings, 16, 16, true);
+    // Every voxel is at the densest level, so extinction is `brightness` per voxel over 32 voxels.
+    const double expected = 1.0 - std::exp(-brightness * kCube);
+    EXPECT_NEAR(centre(image), expected, 0.02 * expected) << "brightness " << brightness;
+  }
+}
+
+TEST_F(Renderer, NearPlaneCutsThroughTheVolume) {
+  const core::PackedVolume cube = uniformCube();
+  renderer.upload(cube);
+  const double brightness = 0.03;
+  auto settings = frontView(cube.geometry, neutralTone(brightness));
+  const double whole = centre(gl::renderToImage(renderer, settings, 16, 16, true));
+  // Put the near plane through the cube's centre: rays see only its far half.
+  core::CameraSettings camera;
+  camera.azimuthDeg = 0.0;
+  camera.elevationDeg = 0.0;
+  camera.projection = core::Projection::Orthographic;
+  camera.orthoHeight = 0.5;
+  camera.nearClip = camera.distance;
+  settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.0);
+  const double half = centre(gl::renderToImage(renderer, settings, 16, 16, true));
+  EXPECT_NEAR(whole, 1.0 - std::exp(-brightness * kCube), 0.02);
+  EXPECT_NEAR(half, 1.0 - std::exp(-brightness * kCube / 2), 0.02);
+}
+
+TEST_F(Renderer, LookingStraightUpAndDownSeesTheVolume) {
+  const core::PackedVolume cube = uniformCube();
+  renderer.upload(cube);
+  for (double elevation : {90.0, -90.0}) {
+    core::CameraSettings camera;
+    camera.elevationDeg = elevation;
+    gl::RenderSettings settings;
+    settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.0);
+    settings.tone = neutralTone(0.05);
+    EXPECT_GT(centre(gl::renderToImage(renderer, settings, 16, 16)), 0.5) << "elevation " << elevation;
+  }
+}
+
+TEST_F(Renderer, ToneParametersMovePixelsTheExpectedWay) {
+  const core::PackedVolume cube = uniformCube(255, 80, 40);
+  renderer.upload(cube);
+  const auto base = neutralTone(0.01);
+  auto value = [&](const core::ToneMapSettings& tone) {
+    return luminance(gl::renderToImage(renderer, frontView(cube.geometry, tone), 8, 8).at(4, 4));
+  };
+  const float reference = value(base);
+  ASSERT_GT(reference, 0.05f);
+  ASSERT_LT(reference, 0.9f);
+  auto with = [&](auto change) {
+    core::ToneMapSettings tone = base;
+    change(tone);
+    return value(tone);
+  };
+  EXPECT_GT(with([](auto& t) { t.brightness = 0.03; }), reference);
+  EXPECT_GT(with([](auto& t) { t.exposure = 1.0; }), reference);
+  EXPECT_LT(with([](auto& t) { t.exposure = -1.0; }), reference);
+  EXPECT_GT(with([](auto& t) { t.gamma = 2.2; }), reference);     // gamma lifts partial opacity
+  EXPECT_LT(with([](auto& t) { t.contrast = 2.0; }), reference);  // below mid grey goes darker
+  EXPECT_GT(with([](auto& t) { t.background = glm::vec3(1.0f); }), reference);
+  // Vibrancy 0 applies gamma per channel instead of to opacity.
+  EXPECT_NE(with([](auto& t) {
+              t.gamma = 2.2;
+              t.vibrancy = 0.0;
+            }),
+            with([](auto& t) { t.gamma = 2.2; }));
+}
+
+TEST_F(Renderer, HighlightPowerDesaturatesOverexposedColour) {
+  const core::PackedVolume cube = uniformCube(255, 80, 40);
+  renderer.upload(cube);
+  auto tone = neutralTone(0.5);
+  tone.exposure = 1.0;  // red overexposed, green and blue not
+  tone.highlightPower = -1.0;
+  const core::ImageRGBA clipped = gl::renderToImage(renderer, frontView(cube.geometry, tone), 8, 8);
+  tone.highlightPower = 1.0;
+  const core::ImageRGBA faded = gl::renderToImage(renderer, frontView(cube.geometry, tone), 8, 8);
+  // Clipping keeps the hue saturated; highlight power ≥ 0 moves it toward white.
+  EXPECT_LT(clipped.at(4, 4)[2], faded.at(4, 4)[2]);
+  EXPECT_NEAR(faded.at(4, 4)[0], 1.0f, 0.01f);
+}
+
+TEST_F(Renderer, TiledAndSampledRendersMatchOneTile) {
+  const core::PackedVolume cube = uniformCube(200, 120, 255);
+  renderer.upload(cube);
+  core::CameraSettings camera;
+  camera.azimuthDeg = 35.0;
+  camera.elevationDeg = 20.0;
+  gl::RenderSettings settings;
+  settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.5);
+  settings.tone = neutralTone(0.05);
+  settings.tone.gamma = 2.2;
+  settings.render.samples = 3;
+  const core::ImageRGBA whole = gl::renderToImage(renderer, settings, 60, 40, false, 2048);
+  const core::ImageRGBA tiled = gl::renderToImage(renderer, settings, 60, 40, false, 16);
+  ASSERT_EQ(whole.pixels.size(), tiled.pixels.size());
+  double maxDifference = 0.0;
+  for (std::size_t i = 0; i < whole.pixels.size(); ++i)
+    maxDifference = std::max(maxDifference, static_cast<double>(std::abs(whole.pixels[i] - tiled.pixels[i])));
+  EXPECT_LT(maxDifference, 0.02);
+  // Rendering twice gives the same image, bit for bit.
+  const core::ImageRGBA again = gl::renderToImage(renderer, settings, 60, 40, false, 2048);
+  EXPECT_EQ(whole.pixels, again.pixels);
+}
+
+TEST_F(Renderer, EmptyBricksAreSkippedWithoutChangingTheImage) {
+  // A single dense voxel in an otherwise empty grid: brick skipping must still find it.
+  core::VolumeSnapshot snapshot;
+  snapshot.geometry.size = glm::ivec3(64);
+  snapshot.geometry.voxelSize = 1.0;
+  snapshot.density.assign(snapshot.geometry.voxelCount(), 0.0f);
+  snapshot.rgba.assign(4 * snapshot.geometry.voxelCount(), 255);
+  snapshot.density[snapshot.geometry.index(40, 32, 32)] = 50.0f;
+  snapshot.maxDensity = 50.0f;
+  snapshot.version = 1;
+  core::PackedVolume volume;
+  core::packVolume(snapshot, volume);
+  EXPECT_LT(std::count(volume.occupancy.begin(), volume.occupancy.end(), 1), 10);
+  renderer.upload(volume);
+  core::CameraSettings camera;
+  camera.azimuthDeg = 0.0;
+  camera.elevationDeg = 0.0;
+  camera.projection = core::Projection::Orthographic;
+  camera.orthoHeight = 1.0;
+  gl::RenderSettings settings;
+  settings.camera = core::orbitCamera(camera, snapshot.geometry.box(), 1.0);
+  settings.tone = neutralTone(2.0);
+  const core::ImageRGBA image = gl::renderToImage(renderer, settings, 110, 110);
+  float brightest = 0.0f;
+  for (int y = 0; y < 110; ++y)
+    for (int x = 0; x < 110; ++x) brightest = std::max(brightest, image.at(x, y)[0]);
+  EXPECT_GT(brightest, 0.3f);
+}
+
+TEST(PackedVolume, HalfFloatConversionRoundTrips) {
+  for (float value : {0.0f, 1.0f, -2.5f, 0.333f, 1e-5f, 6.1e-5f, 65504.0f, 1e-7f})
+    EXPECT_NEAR(core::halfToFloat(core::floatToHalf(value)), value, std::abs(value) * 1e-3f + 6e-8f) << value;
+  EXPECT_TRUE(std::isinf(core::halfToFloat(core::floatToHalf(1e6f))));
+}
