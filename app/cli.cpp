@@ -28,6 +28,14 @@ usage:
   voxflame render [PRESET.json] -o OUT.png [--width W] [--height H] [--points N]
                   [--bit-depth 8|16] [--threads T]
       Render a still headless (no display needed); the PNG carries the preset.
+  voxflame list [--json]
+      The attractor catalogue: ids, kinds, parameters with defaults.
+  voxflame info [PRESET.json] [--attractor ID] [--set NAME] [--param NAME=VALUE]...
+                [--integrator euler|rk4] [--step H] [--json]
+      Boundedness, Lyapunov exponents (largest first) and dimension of one parameter set.
+  voxflame search [PRESET.json | --attractor ID] [--seed N] [--count K] [--strength S]
+                  [--set NAME] [--param NAME=VALUE]... [--json]
+      Find K nearby parameter sets that are bounded, chaotic and fill a volume.
   voxflame bench [accumulate|mask|raymarch|export] [--json]
       Measure performance (Release build).
   voxflame --help | --version
@@ -119,8 +127,8 @@ namespace voxflame::app {
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
-      {"render", &renderCommand},
-      {"bench", &benchCommand},
+      {"render", &renderCommand}, {"bench", &benchCommand},   {"list", &listCommand},
+      {"info", &infoCommand},     {"search", &searchCommand},
   };
   return table;
 }
