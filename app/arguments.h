@@ -48,6 +48,17 @@ class Arguments {
     return value;
   }
 
+  // Every value of a repeatable option (e.g. --param a=1 --param b=2), in command-line order.
+  std::vector<std::string> takeAll(const std::string& name) {
+    std::vector<std::string> values;
+    for (auto& option : options_)
+      if (option.name == name) {
+        values.push_back(option.value);
+        option.used = true;
+      }
+    return values;
+  }
+
   long long integer(const std::string& name, long long fallback, long long min, long long max) {
     const auto text = take(name);
     if (!text) return fallback;

@@ -33,6 +33,14 @@ usage:
                   [--camera-azimuth DEG] [--camera-elevation DEG] [--threads T]
       Render a still headless (no display needed). A PNG carries its preset: rendering
       it again reproduces it. EXR is linear 32-bit float.
+  voxflame list [--json]
+      The attractor catalogue: ids, kinds, parameters with defaults.
+  voxflame info [PRESET.json] [--attractor ID] [--set NAME] [--param NAME=VALUE]...
+                [--integrator euler|rk4] [--step H] [--json]
+      Boundedness, Lyapunov exponents (largest first) and dimension of one parameter set.
+  voxflame search [PRESET.json | --attractor ID] [--seed N] [--count K] [--strength S]
+                  [--set NAME] [--param NAME=VALUE]... [--json]
+      Find K nearby parameter sets that are bounded, chaotic and fill a volume.
   voxflame bench [accumulate|mask|raymarch|export] [--json]
       Measure performance (Release build).
   voxflame --help | --version
@@ -190,8 +198,8 @@ namespace voxflame::app {
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
-      {"render", &renderCommand},
-      {"bench", &benchCommand},
+      {"render", &renderCommand}, {"bench", &benchCommand},   {"list", &listCommand},
+      {"info", &infoCommand},     {"search", &searchCommand},
   };
   return table;
 }

@@ -19,6 +19,9 @@ const std::vector<Subcommand>& subcommands();
 
 int renderCommand(const CommandArgs& args);  // cli.cpp
 int benchCommand(const CommandArgs& args);   // bench/bench_command.cpp
+int listCommand(const CommandArgs& args);    // catalogue_commands.cpp
+int infoCommand(const CommandArgs& args);    // catalogue_commands.cpp
+int searchCommand(const CommandArgs& args);  // catalogue_commands.cpp
 
 // The preset named by the first positional argument, or the embedded default when none.
 core::Scene sceneFromArgument(const std::vector<std::string>& positional);

@@ -3,6 +3,9 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
+#include "core/attractor.h"
 #include "core/image_io.h"
 #include "core/scene.h"
 #include "test_support.h"
@@ -154,4 +157,87 @@ TEST(Cli, InterruptedRenderLeavesNoFile) {
   EXPECT_NE(result.output.find("interrupted"), std::string::npos) << result.output;
   EXPECT_FALSE(std::filesystem::exists(folder / "never.png"));
   EXPECT_FALSE(std::filesystem::exists(folder / "never.png.part"));
+}
+
+TEST(Cli, ListJsonIsTheCatalogue) {
+  const auto result = runVoxflame("list --json");
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  const auto list = nlohmann::json::parse(result.output);
+  ASSERT_TRUE(list.is_array());
+  EXPECT_EQ(list.size(), voxflame::core::attractorCatalogue().size());
+  bool sawPickover = false;
+  for (const auto& entry : list) {
+    EXPECT_TRUE(entry.contains("id") && entry.contains("name") && entry.contains("kind")) << entry.dump();
+    EXPECT_TRUE(entry["parameters"].is_array());
+    if (entry["id"] == "pickover") {
+      sawPickover = true;
+      EXPECT_EQ(entry["kind"], "map");
+      EXPECT_EQ(entry["parameters"][0]["name"], "a");
+      EXPECT_DOUBLE_EQ(entry["parameters"][0]["default"].get<double>(), -0.759494);
+    }
+  }
+  EXPECT_TRUE(sawPickover);
+  const auto table = runVoxflame("list");
+  ASSERT_EQ(table.exitStatus, 0);
+  EXPECT_NE(table.output.find("lorenz84"), std::string::npos);
+  EXPECT_NE(runVoxflame("list --frobnicate").exitStatus, 0);
+}
+
+TEST(Cli, InfoJsonGivesBoundednessAndLyapunovLargestFirst) {
+  auto result = runVoxflame(
+      "info --attractor lorenz --param a=10 --param b=28 --param c=2.6666666667 "
+      "--integrator rk4 --json");
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  auto info = nlohmann::json::parse(result.output);
+  EXPECT_EQ(info["attractor"], "lorenz");
+  EXPECT_DOUBLE_EQ(info["params"]["a"].get<double>(), 10.0);
+  EXPECT_DOUBLE_EQ(info["params"]["b"].get<double>(), 28.0);
+  EXPECT_EQ(info["bounded"], true);
+  ASSERT_EQ(info["lyapunov"].size(), 3u);
+  EXPECT_NEAR(info["lyapunov"][0].get<double>(), 0.906, 0.05);
+  EXPECT_NEAR(info["lyapunov"][2].get<double>(), -14.57, 0.1);
+  EXPECT_GE(info["lyapunov"][0].get<double>(), info["lyapunov"][1].get<double>());
+
+  // A preset's first layer; the seed's escaping polynomial_b set.
+  result = runVoxflame("info " + voxflame::test::sourcePath("presets/default.json").string() + " --json");
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  EXPECT_EQ(nlohmann::json::parse(result.output)["attractor"], "lorenz84");
+  result = runVoxflame("info --attractor polynomial_b --set seed --json");
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  EXPECT_EQ(nlohmann::json::parse(result.output)["bounded"], false);
+}
+
+TEST(Cli, InfoRefusesBadValuesWithMessages) {
+  auto result = runVoxflame("info --attractor lorenz --param a=nan");
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_NE(result.output.find("finite number"), std::string::npos) << result.output;
+  result = runVoxflame("info --attractor lorenz --param q=1");
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_NE(result.output.find("no parameter 'q'"), std::string::npos) << result.output;
+  result = runVoxflame("info --attractor lorenz --step 1e9");
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_NE(result.output.find("step"), std::string::npos) << result.output;
+  result = runVoxflame("info --attractor nope");
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_NE(result.output.find("unknown attractor 'nope'"), std::string::npos) << result.output;
+  result = runVoxflame("info --attractor lorenz --integrator leapfrog");
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_NE(result.output.find("leapfrog"), std::string::npos) << result.output;
+}
+
+TEST(Cli, SearchPrintsKDeterministicSets) {
+  const auto first = runVoxflame("search --attractor polynomial_b --set seed --seed 7 --count 2 --strength 0.3 --json");
+  ASSERT_EQ(first.exitStatus, 0) << first.output;
+  const auto sets = nlohmann::json::parse(first.output);
+  ASSERT_EQ(sets.size(), 2u);
+  for (const auto& set : sets) {
+    EXPECT_GT(set["lyapunov"][0].get<double>(), 0.0);
+    EXPECT_EQ(set["params"].size(), 6u);
+  }
+  EXPECT_EQ(runVoxflame("search --attractor polynomial_b --set seed --seed 7 --count 2 --strength 0.3 --json").output,
+            first.output);
+  const auto text = runVoxflame("search --attractor lorenz84 --count 3");
+  ASSERT_EQ(text.exitStatus, 0) << text.output;
+  EXPECT_NE(text.output.find("3. a="), std::string::npos) << text.output;
+  EXPECT_NE(runVoxflame("search --attractor lorenz84 --count 0").exitStatus, 0);
 }

@@ -1,0 +1,229 @@
+// `voxflame list`, `voxflame info` and `voxflame search`: the attractor catalogue, the chaos
+// diagnostics of one parameter set, and the chaos search, from the command line.
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "arguments.h"
+#include "commands.h"
+#include "core/attractor.h"
+#include "core/lyapunov.h"
+
+namespace voxflame::app {
+
+namespace {
+
+using nlohmann::json;
+
+json paramsJson(const core::AttractorInfo& info, const std::vector<double>& values) {
+  json params = json::object();
+  for (std::size_t i = 0; i < info.params.size() && i < values.size(); ++i) params[info.params[i].name] = values[i];
+  return params;
+}
+
+json lyapunovJson(const core::OrbitAnalysis& analysis) {
+  // Non-finite exponents cannot occur for a bounded orbit; an escaped one reports nulls.
+  json exponents = json::array();
+  for (double value : analysis.lyapunov) exponents.push_back(analysis.bounded ? json(value) : json(nullptr));
+  return exponents;
+}
+
+double parseNumber(const std::string& text, const std::string& what) {
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || text.empty() || !std::isfinite(value))
+    throw UsageError(what + " expects a finite number, not '" + text + "'");
+  return value;
+}
+
+// The parameter set a command works on: a preset's first layer, or --attractor ID with its
+// defaults, then --set NAME (a named alternative), --param NAME=VALUE..., --integrator, --step.
+core::OrbitSpec specFromArguments(Arguments& arguments) {
+  const auto attractorId = arguments.take("--attractor");
+  const auto setName = arguments.take("--set");
+  const auto integrator = arguments.take("--integrator");
+  const auto step = arguments.take("--step");
+  const std::vector<std::string> assignments = arguments.takeAll("--param");
+
+  core::OrbitSpec spec;
+  if (attractorId) {
+    spec = core::defaultOrbitSpec(core::attractorOrThrow(*attractorId));
+  } else if (!arguments.positional().empty()) {
+    const core::Scene scene = sceneFromArgument(arguments.positional());
+    const core::PatternLayer& layer = scene.layers.front();
+    spec = core::defaultOrbitSpec(core::attractorOrThrow(layer.attractor));
+    spec.params = layer.params;
+    spec.integrator = layer.integrator;
+    spec.step = layer.step;
+  } else {
+    throw UsageError("name a preset or an attractor (--attractor ID; `voxflame list` shows them)");
+  }
+  const core::AttractorInfo& info = *spec.info;
+  if (setName) {
+    const core::NamedParams* set = info.alternative(*setName);
+    if (!set) {
+      std::string known;
+      for (const auto& s : info.alternatives) known += (known.empty() ? "" : ", ") + s.name;
+      throw UsageError("attractor '" + info.id + "' has no parameter set '" + *setName + "'" +
+                       (known.empty() ? std::string(" (it has none)") : " (it has: " + known + ")"));
+    }
+    spec.params = set->values;
+    spec.start = set->start;
+  }
+  for (const std::string& assignment : assignments) {
+    const auto equals = assignment.find('=');
+    if (equals == std::string::npos) throw UsageError("--param expects NAME=VALUE, not '" + assignment + "'");
+    const std::string name = assignment.substr(0, equals);
+    const int index = info.paramIndex(name);
+    if (index < 0) {
+      std::string known;
+      for (const auto& p : info.params) known += (known.empty() ? "" : ", ") + p.name;
+      throw UsageError("attractor '" + info.id + "' has no parameter '" + name + "' (it has: " + known + ")");
+    }
+    spec.params[static_cast<std::size_t>(index)] = parseNumber(assignment.substr(equals + 1), "--param " + name);
+  }
+  if (integrator) {
+    try {
+      spec.integrator = core::integratorFromString(*integrator);
+    } catch (const core::Error& e) {
+      throw UsageError(std::string("--integrator: ") + e.what());
+    }
+  }
+  if (step) spec.step = parseNumber(*step, "--step");
+  core::validateOrbitSpec(spec);
+  return spec;
+}
+
+std::string formatParams(const core::AttractorInfo& info, const std::vector<double>& values) {
+  std::ostringstream out;
+  for (std::size_t i = 0; i < values.size(); ++i) out << (i ? " " : "") << info.params[i].name << "=" << values[i];
+  return out.str();
+}
+
+}  // namespace
+
+int listCommand(const CommandArgs& args) {
+  Arguments arguments(args, 2, {"--json"});
+  const bool asJson = arguments.flag("--json");
+  arguments.finish(0);
+  if (asJson) {
+    json list = json::array();
+    for (const auto& info : core::attractorCatalogue()) {
+      json params = json::array();
+      for (const auto& p : info.params)
+        params.push_back({{"name", p.name}, {"default", p.defaultValue}, {"min", p.sliderMin}, {"max", p.sliderMax}});
+      json alternatives = json::array();
+      for (const auto& set : info.alternatives)
+        alternatives.push_back({{"name", set.name}, {"params", paramsJson(info, set.values)}, {"note", set.note}});
+      json entry = {{"id", info.id},
+                    {"name", info.name},
+                    {"kind", std::string(core::toString(info.kind))},
+                    {"parameters", params},
+                    {"integrator", std::string(core::toString(info.defaultIntegrator))},
+                    {"start", {info.start.x, info.start.y, info.start.z}},
+                    {"equations", info.equations},
+                    {"citation", info.citation},
+                    {"alternatives", alternatives}};
+      if (info.kind == core::AttractorKind::Flow) entry["step"] = info.defaultStep;
+      if (!info.note.empty()) entry["note"] = info.note;
+      list.push_back(entry);
+    }
+    std::cout << list.dump(2) << "\n";
+    return 0;
+  }
+  std::printf("%-22s %-5s %-32s %s\n", "ID", "KIND", "NAME", "PARAMETERS (defaults)");
+  for (const auto& info : core::attractorCatalogue())
+    std::printf("%-22s %-5s %-32s %s\n", info.id.c_str(), std::string(core::toString(info.kind)).c_str(),
+                info.name.c_str(), formatParams(info, info.defaultParams()).c_str());
+  return 0;
+}
+
+int infoCommand(const CommandArgs& args) {
+  Arguments arguments(args, 2, {"--json"});
+  const bool asJson = arguments.flag("--json");
+  const core::OrbitSpec spec = specFromArguments(arguments);
+  arguments.finish(1);
+  const core::AttractorInfo& info = *spec.info;
+  const core::OrbitAnalysis analysis = core::analyseOrbit(spec);
+  if (asJson) {
+    json out = {{"attractor", info.id},
+                {"kind", std::string(core::toString(info.kind))},
+                {"params", paramsJson(info, spec.params)},
+                {"integrator", std::string(core::toString(spec.integrator))},
+                {"start", {spec.start.x, spec.start.y, spec.start.z}},
+                {"bounded", analysis.bounded},
+                {"lyapunov", lyapunovJson(analysis)},
+                {"lyapunov_units", info.kind == core::AttractorKind::Flow ? "per unit time" : "per iteration"},
+                {"verdict", std::string(core::toString(analysis.verdict))},
+                {"steps", analysis.stepsTaken}};
+    if (info.kind == core::AttractorKind::Flow) out["step"] = spec.step;
+    if (analysis.bounded) {
+      out["kaplan_yorke_dimension"] = analysis.kaplanYorkeDimension;
+      out["box"] = {{"low", {analysis.low.x, analysis.low.y, analysis.low.z}},
+                    {"high", {analysis.high.x, analysis.high.y, analysis.high.z}}};
+    }
+    std::cout << out.dump() << "\n";
+    return 0;
+  }
+  std::printf("%s (%s): %s\n", info.name.c_str(), info.id.c_str(), formatParams(info, spec.params).c_str());
+  if (info.kind == core::AttractorKind::Flow)
+    std::printf("integrator %s, step %g\n", std::string(core::toString(spec.integrator)).c_str(), spec.step);
+  if (!analysis.bounded) {
+    std::printf("escapes: the orbit left every bound after %d steps\n", analysis.stepsTaken);
+    return 0;
+  }
+  std::printf("bounded, %s; Lyapunov exponents %.5g %.5g %.5g (%s); Kaplan-Yorke dimension %.3f\n",
+              std::string(core::toString(analysis.verdict)).c_str(), analysis.lyapunov[0], analysis.lyapunov[1],
+              analysis.lyapunov[2], info.kind == core::AttractorKind::Flow ? "per unit time" : "per iteration",
+              analysis.kaplanYorkeDimension);
+  return 0;
+}
+
+int searchCommand(const CommandArgs& args) {
+  Arguments arguments(args, 2, {"--json"});
+  const bool asJson = arguments.flag("--json");
+  core::SearchOptions options;
+  options.seed = static_cast<std::uint64_t>(arguments.integer("--seed", 1, 0, 1LL << 53));
+  options.count = static_cast<int>(arguments.integer("--count", 5, 1, 1000));
+  options.strength = arguments.real("--strength", 0.1, 1e-6, 10.0);
+  const core::OrbitSpec spec = specFromArguments(arguments);
+  arguments.finish(1);
+  const core::AttractorInfo& info = *spec.info;
+  const auto found = core::searchChaos(spec, options);
+  json list = json::array();
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    const auto& result = found[i];
+    if (asJson) {
+      json entry = {{"attractor", info.id},
+                    {"params", paramsJson(info, result.params)},
+                    {"start", {result.start.x, result.start.y, result.start.z}},
+                    {"lyapunov", lyapunovJson(result.analysis)},
+                    {"kaplan_yorke_dimension", result.analysis.kaplanYorkeDimension}};
+      if (info.id == "sprott_quadratic") entry["code"] = core::paramsToSprottCode(result.params);
+      list.push_back(entry);
+      continue;
+    }
+    std::printf("%zu. %s  lyapunov %.4g %.4g %.4g  dimension %.2f  start (%g, %g, %g)\n", i + 1,
+                formatParams(info, result.params).c_str(), result.analysis.lyapunov[0], result.analysis.lyapunov[1],
+                result.analysis.lyapunov[2], result.analysis.kaplanYorkeDimension, result.start.x, result.start.y,
+                result.start.z);
+    if (info.id == "sprott_quadratic") std::printf("   code %s\n", core::paramsToSprottCode(result.params).c_str());
+  }
+  if (asJson) std::cout << list.dump(2) << "\n";
+  if (static_cast<int>(found.size()) < options.count) {
+    std::cerr << "voxflame: found " << found.size() << " of " << options.count
+              << " chaotic sets near these parameters; try another --seed or a larger --strength\n";
+    return found.empty() ? 1 : 0;
+  }
+  return 0;
+}
+
+}  // namespace voxflame::app
