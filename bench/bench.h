@@ -26,5 +26,6 @@ void report(const BenchOptions& options, const nlohmann::json& measurement);
 
 void benchAccumulate(const BenchOptions& options);  // bench_accumulate.cpp
 void benchRaymarch(const BenchOptions& options);    // bench_raymarch.cpp
+void benchMask(const BenchOptions& options);        // bench_mask.cpp
 
 }  // namespace voxflame::bench

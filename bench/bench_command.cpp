@@ -11,6 +11,7 @@ namespace voxflame::bench {
 const std::vector<Benchmark>& benchmarks() {
   static const std::vector<Benchmark> table = {
       {"accumulate", "points per second filling the bunny mask at 256³", &benchAccumulate},
+      {"mask", "seconds to build the inside mask: bunny at 256³, dragon at 256³ and 512³", &benchMask},
       {"raymarch", "milliseconds per 1280×720 frame of a 256³ and a 512³ grid", &benchRaymarch},
   };
   return table;

@@ -12,7 +12,7 @@
 
 namespace voxflame::core {
 
-inline constexpr int kMinGridResolution = 16;
+inline constexpr int kMinGridResolution = 32;
 inline constexpr int kMaxGridResolution = 1024;
 
 struct GridGeometry {

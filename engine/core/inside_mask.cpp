@@ -1,8 +1,13 @@
 #include "inside_mask.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <numbers>
 #include <numeric>
+#include <thread>
+
+#include <glm/geometric.hpp>
 
 namespace voxflame::core {
 
@@ -12,14 +17,328 @@ double InsideMask::insideFraction() const {
   return static_cast<double>(count) / static_cast<double>(inside.size());
 }
 
+const char* maskMethodName(MaskMethod method) {
+  switch (method) {
+    case MaskMethod::WindingNumber:
+      return "winding-number";
+    case MaskMethod::ExactWindingNumber:
+      return "exact-winding-number";
+    case MaskMethod::Parity:
+      return "parity";
+  }
+  return "unknown";
+}
+
 namespace {
 
-// Every triangle is rasterised onto the xy columns its projection covers; each column collects
-// the z of its crossings, then the column is filled between alternate crossings. Column rays are
-// nudged off the voxel centres by a fraction no mesh is aligned to, so a ray never passes
-// exactly through a shared edge or vertex and counts it twice.
-constexpr double kNudgeX = 1.3e-4;
-constexpr double kNudgeY = 2.9e-4;
+int resolveThreads(int threads) {
+  if (threads > 0) return threads;
+  return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
+// Runs work(threadIndex) on `threads` threads (the calling one included) and joins them.
+template <class Work>
+void onThreads(int threads, const Work& work) {
+  std::vector<std::jthread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back([&work, t] { work(t); });
+  work(0);
+}
+
+// Hands out [begin, end) chunks of [0, count) to whichever thread asks next, so uneven work
+// (dense and empty parts of a mesh) still keeps every thread busy.
+class ChunkQueue {
+ public:
+  ChunkQueue(std::size_t count, std::size_t chunk) : count_(count), chunk_(std::max<std::size_t>(1, chunk)) {}
+  bool next(std::size_t& begin, std::size_t& end) {
+    begin = next_.fetch_add(chunk_, std::memory_order_relaxed);
+    if (begin >= count_) return false;
+    end = std::min(count_, begin + chunk_);
+    return true;
+  }
+
+ private:
+  std::size_t count_, chunk_;
+  std::atomic<std::size_t> next_{0};
+};
+
+// Signed solid angle of triangle (a, b, c), given relative to the viewpoint (Van Oosterom and
+// Strackee 1983); positive when the viewpoint sees the triangle's back, i.e. is inside.
+double solidAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+  const double la = glm::length(a), lb = glm::length(b), lc = glm::length(c);
+  const double numerator = glm::dot(a, glm::cross(b, c));
+  const double denominator = la * lb * lc + glm::dot(a, b) * lc + glm::dot(b, c) * la + glm::dot(c, a) * lb;
+  return 2.0 * std::atan2(numerator, denominator);
+}
+
+constexpr double kFourPi = 4.0 * std::numbers::pi;
+
+// ---------------------------------------------------------------------------------------------
+// Ray crossings along grid columns.
+//
+// A column of axis a runs along a through the voxel centres (u, v) = (iu + 0.5, iv + 0.5), where
+// (u, v, a) is right-handed. Each column is nudged off the centres by a fraction no mesh is
+// aligned to, so it (almost) never passes exactly through an edge or a vertex. Edge functions are
+// evaluated with the edge's vertices in index order and negated for the other direction, so two
+// triangles sharing an edge see exactly opposite values and a column is claimed by at most one
+// of them: no crossing is counted twice. Anything missed makes the column's signs not sum to
+// zero, and the column is then not trusted.
+
+constexpr int kAxisU[3] = {1, 2, 0};
+constexpr int kAxisV[3] = {2, 0, 1};
+constexpr double kNudge[3][2] = {{1.37e-4, 2.91e-4}, {3.13e-4, 1.71e-4}, {2.23e-4, 1.19e-4}};
+
+// Column index with the layouts the sweep below reads fastest: x columns by (j, k), y columns by
+// (i, k), z columns by (i, j), the first one fastest.
+std::size_t columnIndex(int axis, int iu, int iv, const glm::ivec3& n) {
+  if (axis == 1) return static_cast<std::size_t>(iv) + static_cast<std::size_t>(n.x) * static_cast<std::size_t>(iu);
+  return static_cast<std::size_t>(iu) + static_cast<std::size_t>(n[kAxisU[axis]]) * static_cast<std::size_t>(iv);
+}
+
+// Calls emit(column, t, sign) for every column of `axis` that crosses the triangle: t is where
+// along the column (voxel units), sign +1 where the column enters the mesh, -1 where it leaves.
+template <class Emit>
+void rasterizeTriangle(const std::vector<glm::dvec3>& p, const std::array<std::uint32_t, 3>& tri, int axis,
+                       const glm::ivec3& n, Emit&& emit) {
+  const int u = kAxisU[axis], v = kAxisV[axis];
+  const double du = kNudge[axis][0], dv = kNudge[axis][1];
+  const glm::dvec3& p0 = p[tri[0]];
+  const glm::dvec3& p1 = p[tri[1]];
+  const glm::dvec3& p2 = p[tri[2]];
+  const int iu0 = std::max(0, static_cast<int>(std::ceil(std::min({p0[u], p1[u], p2[u]}) - 0.5 - du)));
+  const int iu1 = std::min(n[u] - 1, static_cast<int>(std::floor(std::max({p0[u], p1[u], p2[u]}) - 0.5 - du)));
+  const int iv0 = std::max(0, static_cast<int>(std::ceil(std::min({p0[v], p1[v], p2[v]}) - 0.5 - dv)));
+  const int iv1 = std::min(n[v] - 1, static_cast<int>(std::floor(std::max({p0[v], p1[v], p2[v]}) - 0.5 - dv)));
+  if (iu0 > iu1 || iv0 > iv1) return;
+  // orient(a, b, s) > 0 when s lies left of a → b in the (u, v) plane.
+  auto edge = [&](std::uint32_t a, std::uint32_t b, double su, double sv) {
+    const bool ordered = a < b;
+    const glm::dvec3& from = p[ordered ? a : b];
+    const glm::dvec3& to = p[ordered ? b : a];
+    const double value = (to[u] - from[u]) * (sv - from[v]) - (to[v] - from[v]) * (su - from[u]);
+    return ordered ? value : -value;
+  };
+  for (int iv = iv0; iv <= iv1; ++iv) {
+    const double sv = iv + 0.5 + dv;
+    for (int iu = iu0; iu <= iu1; ++iu) {
+      const double su = iu + 0.5 + du;
+      const double e0 = edge(tri[1], tri[2], su, sv);
+      const double e1 = edge(tri[2], tri[0], su, sv);
+      const double e2 = edge(tri[0], tri[1], su, sv);
+      int sign = 0;
+      if (e0 > 0.0 && e1 > 0.0 && e2 > 0.0) {
+        sign = -1;  // counter-clockwise seen down the column: the normal points along it, leaving
+      } else if (e0 < 0.0 && e1 < 0.0 && e2 < 0.0) {
+        sign = 1;
+      } else {
+        continue;
+      }
+      const double t = (e0 * p0[axis] + e1 * p1[axis] + e2 * p2[axis]) / (e0 + e1 + e2);
+      emit(columnIndex(axis, iu, iv, n), t, sign);
+    }
+  }
+}
+
+// Every column's crossings, sorted along the column: compressed rows, one float per crossing
+// holding where it is (always > 0) with the crossing's sign as the float's sign.
+struct AxisCrossings {
+  std::vector<std::uint32_t> offsets;  // columns + 1
+  std::vector<float> crossings;
+  std::vector<std::uint8_t> closed;  // 1 when the column's signs sum to zero: it can be trusted
+};
+
+void collectCrossings(const std::vector<glm::dvec3>& p, const TriangleMesh& mesh, const glm::ivec3& n, int orientation,
+                      int threads, AxisCrossings (&axes)[3]) {
+  std::vector<std::uint32_t> cursors[3];
+  for (int a = 0; a < 3; ++a) {
+    const std::size_t columns = static_cast<std::size_t>(n[kAxisU[a]]) * static_cast<std::size_t>(n[kAxisV[a]]);
+    axes[a].offsets.assign(columns + 1, 0);
+    cursors[a].assign(columns, 0);
+  }
+  const std::size_t triangleChunk = 4096;
+  // Pass 1 counts the crossings of every column, pass 2 writes them where the counts say.
+  {
+    ChunkQueue queue(mesh.triangles.size(), triangleChunk);
+    onThreads(threads, [&](int) {
+      std::size_t begin = 0, end = 0;
+      while (queue.next(begin, end))
+        for (std::size_t t = begin; t < end; ++t)
+          for (int a = 0; a < 3; ++a)
+            rasterizeTriangle(p, mesh.triangles[t], a, n, [&](std::size_t column, double, int) {
+              std::atomic_ref<std::uint32_t>(cursors[a][column]).fetch_add(1, std::memory_order_relaxed);
+            });
+    });
+  }
+  for (int a = 0; a < 3; ++a) {
+    std::uint32_t total = 0;
+    for (std::size_t c = 0; c < cursors[a].size(); ++c) {
+      axes[a].offsets[c] = total;
+      total += cursors[a][c];
+      cursors[a][c] = axes[a].offsets[c];
+    }
+    axes[a].offsets.back() = total;
+    axes[a].crossings.resize(total);
+  }
+  {
+    ChunkQueue queue(mesh.triangles.size(), triangleChunk);
+    onThreads(threads, [&](int) {
+      std::size_t begin = 0, end = 0;
+      while (queue.next(begin, end))
+        for (std::size_t t = begin; t < end; ++t)
+          for (int a = 0; a < 3; ++a)
+            rasterizeTriangle(p, mesh.triangles[t], a, n, [&](std::size_t column, double where, int sign) {
+              const std::uint32_t slot =
+                  std::atomic_ref<std::uint32_t>(cursors[a][column]).fetch_add(1, std::memory_order_relaxed);
+              // Any crossing before the first voxel centre (0.5) acts the same; keep it positive.
+              const float position = static_cast<float>(std::max(where, 0.25));
+              axes[a].crossings[slot] = sign * orientation > 0 ? position : -position;
+            });
+    });
+  }
+  // Sort each column and check that its signs sum to zero.
+  for (int a = 0; a < 3; ++a) {
+    AxisCrossings& axis = axes[a];
+    const std::size_t columns = axis.offsets.size() - 1;
+    axis.closed.assign(columns, 1);
+    ChunkQueue queue(columns, 4096);
+    onThreads(threads, [&](int) {
+      std::size_t begin = 0, end = 0;
+      while (queue.next(begin, end))
+        for (std::size_t c = begin; c < end; ++c) {
+          float* first = axis.crossings.data() + axis.offsets[c];
+          float* last = axis.crossings.data() + axis.offsets[c + 1];
+          if (first == last) continue;
+          std::sort(first, last, [](float x, float y) { return std::fabs(x) < std::fabs(y); });
+          int sum = 0;
+          for (float* f = first; f != last; ++f) sum += *f > 0.0f ? 1 : -1;
+          axis.closed[c] = sum == 0;
+        }
+    });
+  }
+}
+
+// A column's crossings read in order while walking its voxels: the running sum of the signs
+// passed so far is the integer winding number along that column.
+struct ColumnWalk {
+  const float* next = nullptr;
+  const float* end = nullptr;
+  int winding = 0;
+
+  void reset(const AxisCrossings& axis, std::size_t column) {
+    next = axis.crossings.data() + axis.offsets[column];
+    end = axis.crossings.data() + axis.offsets[column + 1];
+    winding = 0;
+  }
+  void advanceTo(float centre) {
+    while (next != end && std::fabs(*next) < centre) winding += *next++ > 0.0f ? 1 : -1;
+  }
+};
+
+InsideMask voteOverAxes(const TriangleMesh& mesh, const GridGeometry& grid, int threads) {
+  const glm::ivec3 n = grid.size;
+  std::vector<glm::dvec3> p(mesh.vertices.size());
+  for (std::size_t v = 0; v < p.size(); ++v) p[v] = (glm::dvec3(mesh.vertices[v]) - grid.origin) / grid.voxelSize;
+  const int orientation = meshOrientation(mesh);
+  AxisCrossings axes[3];
+  collectCrossings(p, mesh, n, orientation, threads, axes);
+
+  InsideMask mask;
+  mask.geometry = grid;
+  mask.inside.resize(grid.voxelCount());
+  std::vector<std::vector<std::size_t>> undecided(static_cast<std::size_t>(threads));
+  const std::size_t planeSize = static_cast<std::size_t>(n.x) * static_cast<std::size_t>(n.y);
+  const std::size_t slabSlices = std::max<std::size_t>(4, static_cast<std::size_t>(n.z) / (4 * threads));
+  ChunkQueue slabs(static_cast<std::size_t>(n.z), slabSlices);
+  // Slab by slab along z, voxels in memory order: x columns are walked along each row, y columns
+  // along each slice, z columns across the slab, so every read and write streams.
+  onThreads(threads, [&](int thread) {
+    std::vector<ColumnWalk> zWalks(planeSize), yWalks(static_cast<std::size_t>(n.x));
+    std::size_t kBegin = 0, kEnd = 0;
+    while (slabs.next(kBegin, kEnd)) {
+      for (std::size_t c = 0; c < planeSize; ++c) {
+        zWalks[c].reset(axes[2], c);
+        zWalks[c].advanceTo(static_cast<float>(kBegin) + 0.5f);
+      }
+      for (int k = static_cast<int>(kBegin); k < static_cast<int>(kEnd); ++k) {
+        const float cz = static_cast<float>(k) + 0.5f;
+        for (int i = 0; i < n.x; ++i) yWalks[i].reset(axes[1], columnIndex(1, k, i, n));
+        for (int j = 0; j < n.y; ++j) {
+          const float cy = static_cast<float>(j) + 0.5f;
+          const std::size_t xColumn = columnIndex(0, j, k, n);
+          const bool xClosed = axes[0].closed[xColumn];
+          ColumnWalk xWalk;
+          xWalk.reset(axes[0], xColumn);
+          const std::size_t row = grid.index(0, j, k);
+          for (int i = 0; i < n.x; ++i) {
+            xWalk.advanceTo(static_cast<float>(i) + 0.5f);
+            ColumnWalk& yWalk = yWalks[i];
+            yWalk.advanceTo(cy);
+            const std::size_t zColumn = static_cast<std::size_t>(i) + static_cast<std::size_t>(n.x) * j;
+            ColumnWalk& zWalk = zWalks[zColumn];
+            zWalk.advanceTo(cz);
+            int votesInside = 0, votesOutside = 0;
+            if (xClosed) ++(xWalk.winding > 0 ? votesInside : votesOutside);
+            if (axes[1].closed[columnIndex(1, k, i, n)]) ++(yWalk.winding > 0 ? votesInside : votesOutside);
+            if (axes[2].closed[zColumn]) ++(zWalk.winding > 0 ? votesInside : votesOutside);
+            std::uint8_t& voxel = mask.inside[row + static_cast<std::size_t>(i)];
+            if (votesInside >= 2 && votesOutside == 0) {
+              voxel = 1;
+            } else if (votesOutside >= 2 && votesInside == 0) {
+              voxel = 0;
+            } else {
+              voxel = 0;
+              undecided[static_cast<std::size_t>(thread)].push_back(row + static_cast<std::size_t>(i));
+            }
+          }
+        }
+      }
+    }
+  });
+
+  std::vector<std::size_t> pending;
+  for (auto& list : undecided) pending.insert(pending.end(), list.begin(), list.end());
+  mask.windingNumberVoxels = pending.size();
+  if (pending.empty()) return mask;
+  const WindingNumberTree tree(mesh, threads);
+  ChunkQueue queue(pending.size(), 256);
+  onThreads(threads, [&](int) {
+    std::size_t begin = 0, end = 0;
+    while (queue.next(begin, end))
+      for (std::size_t e = begin; e < end; ++e) {
+        const std::size_t index = pending[e];
+        const std::size_t i = index % static_cast<std::size_t>(n.x);
+        const std::size_t j = (index / static_cast<std::size_t>(n.x)) % static_cast<std::size_t>(n.y);
+        const std::size_t k = index / planeSize;
+        const glm::dvec3 centre = grid.voxelCenter(static_cast<int>(i), static_cast<int>(j), static_cast<int>(k));
+        mask.inside[index] = orientation * tree(centre) >= 0.5;
+      }
+  });
+  return mask;
+}
+
+InsideMask exactWindingNumber(const TriangleMesh& mesh, const GridGeometry& grid, int threads) {
+  InsideMask mask;
+  mask.geometry = grid;
+  mask.inside.assign(grid.voxelCount(), 0);
+  const int orientation = meshOrientation(mesh);
+  ChunkQueue queue(grid.voxelCount(), 64);
+  onThreads(threads, [&](int) {
+    std::size_t begin = 0, end = 0;
+    while (queue.next(begin, end))
+      for (std::size_t index = begin; index < end; ++index) {
+        const int i = static_cast<int>(index % static_cast<std::size_t>(grid.size.x));
+        const int j =
+            static_cast<int>((index / static_cast<std::size_t>(grid.size.x)) % static_cast<std::size_t>(grid.size.y));
+        const int k = static_cast<int>(index / (static_cast<std::size_t>(grid.size.x) * grid.size.y));
+        mask.inside[index] = orientation * windingNumber(mesh, grid.voxelCenter(i, j, k)) >= 0.5;
+      }
+  });
+  mask.windingNumberVoxels = grid.voxelCount();
+  return mask;
+}
+
+// The seed's method, kept for comparison: crossings along +z only, filled between alternate ones.
+constexpr double kParityNudgeX = 1.3e-4;
+constexpr double kParityNudgeY = 2.9e-4;
 
 InsideMask parityAlongZ(const TriangleMesh& mesh, const GridGeometry& grid) {
   InsideMask mask;
@@ -30,25 +349,23 @@ InsideMask parityAlongZ(const TriangleMesh& mesh, const GridGeometry& grid) {
   std::vector<std::vector<float>> crossings(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
 
   for (const auto& tri : mesh.triangles) {
-    // Work in voxel units so that column (i, j) sits at (i + 0.5, j + 0.5).
     glm::dvec3 p[3];
     for (int c = 0; c < 3; ++c) p[c] = (glm::dvec3(mesh.vertices[tri[c]]) - grid.origin) / grid.voxelSize;
     const double minX = std::min({p[0].x, p[1].x, p[2].x});
     const double maxX = std::max({p[0].x, p[1].x, p[2].x});
     const double minY = std::min({p[0].y, p[1].y, p[2].y});
     const double maxY = std::max({p[0].y, p[1].y, p[2].y});
-    const int i0 = std::max(0, static_cast<int>(std::ceil(minX - 0.5 - kNudgeX)));
-    const int i1 = std::min(nx - 1, static_cast<int>(std::floor(maxX - 0.5 - kNudgeX)));
-    const int j0 = std::max(0, static_cast<int>(std::ceil(minY - 0.5 - kNudgeY)));
-    const int j1 = std::min(ny - 1, static_cast<int>(std::floor(maxY - 0.5 - kNudgeY)));
+    const int i0 = std::max(0, static_cast<int>(std::ceil(minX - 0.5 - kParityNudgeX)));
+    const int i1 = std::min(nx - 1, static_cast<int>(std::floor(maxX - 0.5 - kParityNudgeX)));
+    const int j0 = std::max(0, static_cast<int>(std::ceil(minY - 0.5 - kParityNudgeY)));
+    const int j1 = std::min(ny - 1, static_cast<int>(std::floor(maxY - 0.5 - kParityNudgeY)));
     if (i0 > i1 || j0 > j1) continue;
     const double area = (p[1].x - p[0].x) * (p[2].y - p[0].y) - (p[2].x - p[0].x) * (p[1].y - p[0].y);
     if (area == 0.0) continue;  // edge-on to the columns: no crossing
     for (int j = j0; j <= j1; ++j) {
-      const double y = j + 0.5 + kNudgeY;
+      const double y = j + 0.5 + kParityNudgeY;
       for (int i = i0; i <= i1; ++i) {
-        const double x = i + 0.5 + kNudgeX;
-        // Barycentric coordinates of (x, y) in the projected triangle.
+        const double x = i + 0.5 + kParityNudgeX;
         const double w0 = ((p[1].x - x) * (p[2].y - y) - (p[2].x - x) * (p[1].y - y)) / area;
         const double w1 = ((p[2].x - x) * (p[0].y - y) - (p[0].x - x) * (p[2].y - y)) / area;
         const double w2 = 1.0 - w0 - w1;
@@ -76,12 +393,192 @@ InsideMask parityAlongZ(const TriangleMesh& mesh, const GridGeometry& grid) {
 
 }  // namespace
 
-InsideMask buildInsideMask(const TriangleMesh& mesh, const GridGeometry& grid, MaskMethod method) {
-  switch (method) {
-    case MaskMethod::Parity:
-      break;
+int meshOrientation(const TriangleMesh& mesh) {
+  double volume = 0.0;  // six times the signed enclosed volume
+  for (const auto& tri : mesh.triangles)
+    volume += glm::dot(glm::dvec3(mesh.vertices[tri[0]]),
+                       glm::cross(glm::dvec3(mesh.vertices[tri[1]]), glm::dvec3(mesh.vertices[tri[2]])));
+  return volume < 0.0 ? -1 : 1;
+}
+
+double windingNumber(const TriangleMesh& mesh, const glm::dvec3& point) {
+  double sum = 0.0;
+  for (const auto& tri : mesh.triangles)
+    sum += solidAngle(glm::dvec3(mesh.vertices[tri[0]]) - point, glm::dvec3(mesh.vertices[tri[1]]) - point,
+                      glm::dvec3(mesh.vertices[tri[2]]) - point);
+  return sum / kFourPi;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Fast winding number.
+
+struct WindingNumberTree::Node {
+  glm::dvec3 centre{0.0};      // area-weighted centre of its triangles
+  glm::dvec3 areaNormal{0.0};  // sum of the triangles' normals times their areas
+  double area = 0.0;
+  double radius = 0.0;      // every triangle of the node lies within this distance of centre
+  std::uint32_t first = 0;  // leaf: first triangle in corners_; inner: index of the second child
+  std::uint32_t count = 0;  // leaf: number of triangles; 0 for an inner node (first child follows it)
+};
+
+namespace {
+
+constexpr std::uint32_t kLeafTriangles = 8;
+
+// Spreads the low 10 bits of x so that two zero bits follow each.
+std::uint32_t spreadBits(std::uint32_t x) {
+  x &= 0x3ffu;
+  x = (x | (x << 16)) & 0x030000ffu;
+  x = (x | (x << 8)) & 0x0300f00fu;
+  x = (x | (x << 4)) & 0x030c30c3u;
+  x = (x | (x << 2)) & 0x09249249u;
+  return x;
+}
+
+}  // namespace
+
+WindingNumberTree::WindingNumberTree(const TriangleMesh& mesh, int threads) {
+  threads = resolveThreads(threads);
+  const std::size_t count = mesh.triangles.size();
+  if (count == 0) return;
+  // Per triangle, in parallel: centre, area-weighted normal, area.
+  struct TriangleMoments {
+    glm::dvec3 centre, areaNormal;
+    double area;
+  };
+  std::vector<TriangleMoments> moments(count);
+  {
+    ChunkQueue queue(count, 8192);
+    onThreads(threads, [&](int) {
+      std::size_t begin = 0, end = 0;
+      while (queue.next(begin, end))
+        for (std::size_t t = begin; t < end; ++t) {
+          const auto& tri = mesh.triangles[t];
+          const glm::dvec3 a(mesh.vertices[tri[0]]), b(mesh.vertices[tri[1]]), c(mesh.vertices[tri[2]]);
+          const glm::dvec3 normal = 0.5 * glm::cross(b - a, c - a);
+          moments[t] = {(a + b + c) / 3.0, normal, glm::length(normal)};
+        }
+    });
   }
-  return parityAlongZ(mesh, grid);
+  // Triangles ordered along a Morton curve of their centres: consecutive runs are compact
+  // clusters, so the tree can split runs in half instead of partitioning at every level.
+  Box box{moments[0].centre, moments[0].centre};
+  for (const auto& m : moments) {
+    box.min = glm::min(box.min, m.centre);
+    box.max = glm::max(box.max, m.centre);
+  }
+  const glm::dvec3 scale = 1023.0 / glm::max(box.extent(), glm::dvec3(1e-30));
+  std::vector<std::uint64_t> keys(count);
+  for (std::size_t t = 0; t < count; ++t) {
+    const glm::dvec3 q = (moments[t].centre - box.min) * scale;
+    const std::uint32_t code = spreadBits(static_cast<std::uint32_t>(q.x)) |
+                               (spreadBits(static_cast<std::uint32_t>(q.y)) << 1) |
+                               (spreadBits(static_cast<std::uint32_t>(q.z)) << 2);
+    keys[t] = (static_cast<std::uint64_t>(code) << 32) | static_cast<std::uint64_t>(t);
+  }
+  // Least-significant-digit radix sort on the 30-bit code (bits 32..61), 10 bits a pass.
+  {
+    std::vector<std::uint64_t> scratch(count);
+    for (int shift = 32; shift < 62; shift += 10) {
+      std::vector<std::uint32_t> histogram(1025, 0);
+      for (const std::uint64_t key : keys) ++histogram[((key >> shift) & 1023u) + 1];
+      for (std::size_t b = 1; b < histogram.size(); ++b) histogram[b] += histogram[b - 1];
+      for (const std::uint64_t key : keys) scratch[histogram[(key >> shift) & 1023u]++] = key;
+      keys.swap(scratch);
+    }
+  }
+  corners_.resize(count);
+  std::vector<std::uint32_t> order(count);
+  for (std::size_t e = 0; e < count; ++e) {
+    order[e] = static_cast<std::uint32_t>(keys[e] & 0xffffffffu);
+    const auto& tri = mesh.triangles[order[e]];
+    corners_[e] = {mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]};
+  }
+  nodes_.reserve(4 * count / kLeafTriangles + 4);
+  // Depth-first: a node's first child directly follows it, so a query walks memory forward.
+  auto build = [&](auto&& self, std::uint32_t begin, std::uint32_t end) -> std::uint32_t {
+    const auto index = static_cast<std::uint32_t>(nodes_.size());
+    nodes_.emplace_back();
+    Node node;
+    if (end - begin <= kLeafTriangles) {
+      node.first = begin;
+      node.count = end - begin;
+      glm::dvec3 weighted(0.0), plain(0.0);
+      for (std::uint32_t e = begin; e < end; ++e) {
+        const TriangleMoments& m = moments[order[e]];
+        node.areaNormal += m.areaNormal;
+        node.area += m.area;
+        weighted += m.area * m.centre;
+        plain += m.centre;
+      }
+      node.centre = node.area > 0.0 ? weighted / node.area : plain / static_cast<double>(end - begin);
+      double radius2 = 0.0;
+      for (std::uint32_t e = begin; e < end; ++e)
+        for (const glm::vec3& corner : corners_[e]) {
+          const glm::dvec3 d = glm::dvec3(corner) - node.centre;
+          radius2 = std::max(radius2, glm::dot(d, d));
+        }
+      node.radius = std::sqrt(radius2);
+    } else {
+      const std::uint32_t middle = begin + (end - begin) / 2;
+      const std::uint32_t left = self(self, begin, middle);
+      const std::uint32_t right = self(self, middle, end);
+      const Node& l = nodes_[left];
+      const Node& r = nodes_[right];
+      node.first = right;
+      node.areaNormal = l.areaNormal + r.areaNormal;
+      node.area = l.area + r.area;
+      node.centre = node.area > 0.0 ? (l.area * l.centre + r.area * r.centre) / node.area : 0.5 * (l.centre + r.centre);
+      node.radius =
+          std::max(glm::length(l.centre - node.centre) + l.radius, glm::length(r.centre - node.centre) + r.radius);
+    }
+    nodes_[index] = node;
+    return index;
+  };
+  build(build, 0, static_cast<std::uint32_t>(count));
+}
+
+WindingNumberTree::~WindingNumberTree() = default;
+
+double WindingNumberTree::operator()(const glm::dvec3& point, double accuracy) const {
+  if (nodes_.empty()) return 0.0;
+  double sum = 0.0;
+  std::uint32_t stack[64];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& node = nodes_[stack[--top]];
+    const glm::dvec3 toCentre = node.centre - point;
+    const double distance2 = glm::dot(toCentre, toCentre);
+    const double reach = accuracy * node.radius;
+    if (distance2 > reach * reach) {
+      // Far away the cluster looks like a dipole: solid angle ≈ (c - p)·N / |c - p|³.
+      sum += glm::dot(toCentre, node.areaNormal) / (distance2 * std::sqrt(distance2));
+    } else if (node.count > 0) {
+      for (std::uint32_t e = node.first; e < node.first + node.count; ++e) {
+        const auto& c = corners_[e];
+        sum += solidAngle(glm::dvec3(c[0]) - point, glm::dvec3(c[1]) - point, glm::dvec3(c[2]) - point);
+      }
+    } else {
+      const auto self = static_cast<std::uint32_t>(&node - nodes_.data());
+      stack[top++] = node.first;
+      stack[top++] = self + 1;
+    }
+  }
+  return sum / kFourPi;
+}
+
+InsideMask buildInsideMask(const TriangleMesh& mesh, const GridGeometry& grid, MaskMethod method, int threads) {
+  threads = resolveThreads(threads);
+  switch (method) {
+    case MaskMethod::WindingNumber:
+      return voteOverAxes(mesh, grid, threads);
+    case MaskMethod::ExactWindingNumber:
+      return exactWindingNumber(mesh, grid, threads);
+    case MaskMethod::Parity:
+      return parityAlongZ(mesh, grid);
+  }
+  return voteOverAxes(mesh, grid, threads);
 }
 
 }  // namespace voxflame::core

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "error.h"
+#include "grid.h"
 
 namespace voxflame::core {
 
@@ -212,7 +213,8 @@ Scene sceneFromJson(std::string_view text, std::string_view sourceName) {
   }
   if (const json* grid = root.find("grid")) {
     ObjectReader gridReader(*grid, source, "grid");
-    scene.gridResolution = static_cast<int>(gridReader.integer("resolution", scene.gridResolution, 16, 1024));
+    scene.gridResolution = static_cast<int>(
+        gridReader.integer("resolution", scene.gridResolution, kMinGridResolution, kMaxGridResolution));
     gridReader.finish();
   }
 
