@@ -19,6 +19,7 @@
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/packed_volume.h"
+#include "core/shadow_volume.h"
 #include "core/snapshot_publisher.h"
 #include "gl/volume_renderer.h"
 #include "pipeline.h"
@@ -74,6 +75,17 @@ void handleMouse(GLFWwindow* window, ExplorerState& state) {
   }
   state.lastMouseX = x;
   state.lastMouseY = y;
+
+  // Free flight: W/S move along the view, A/D sideways, Q/E down and up; the orbit target moves
+  // with the eye, so the camera turns about itself when dragged afterwards.
+  if (ImGui::GetIO().WantCaptureKeyboard) return;
+  const core::CameraFrame frame = core::orbitCamera(state.scene.camera, core::Box{{-1, -1, -1}, {1, 1, 1}}, 1.0);
+  const double speed = 0.02 * state.scene.camera.distance;
+  auto held = [&](int key) { return glfwGetKey(window, key) == GLFW_PRESS ? 1.0 : 0.0; };
+  const glm::dvec3 move = (held(GLFW_KEY_W) - held(GLFW_KEY_S)) * frame.forward +
+                          (held(GLFW_KEY_D) - held(GLFW_KEY_A)) * frame.right +
+                          (held(GLFW_KEY_E) - held(GLFW_KEY_Q)) * frame.up;
+  state.scene.camera.target += speed * move;
 }
 
 bool slider(const char* label, double& value, double min, double max, ImGuiSliderFlags flags = 0) {
@@ -131,6 +143,12 @@ void drawPanel(ExplorerState& state, const core::AccumulatorStats& stats) {
     if (ImGui::Combo("mesh", &meshMode, "off\0ghost\0silhouette\0"))
       render.meshDisplay = static_cast<core::MeshDisplay>(meshMode);
     slider("mesh strength", render.meshStrength, 0.0, 2.0);
+    ImGui::Checkbox("lighting", &render.lighting);
+    if (render.lighting) {
+      slider("light azimuth", render.lightAzimuthDeg, -180.0, 180.0);
+      slider("light elevation", render.lightElevationDeg, -90.0, 90.0);
+      slider("light strength", render.lightStrength, 0.0, 1.0);
+    }
     ImGui::SliderFloat("render scale", &state.renderScale, 0.25f, 1.0f, "%.2f");
   }
   if (ImGui::CollapsingHeader("Camera")) {
@@ -234,6 +252,8 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     std::uint32_t frame = 0;
     int framesWithVolume = 0;
     std::string lastView;
+    std::string lastShadowKey;
+    constexpr int kShadowDownsample = 2;
     auto lastFrame = std::chrono::steady_clock::now();
 
     while (!glfwWindowShouldClose(window)) {
@@ -269,6 +289,19 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       if (uploadInProgress && renderer.continueUpload(kUploadBytesPerFrame)) {
         uploadInProgress = false;
         target.samples = 0;  // new content: start refining the image afresh
+      }
+      // The shadow volume follows the volume, the light and the brightness (extinction).
+      const core::RenderSettingsDoc& render = state.scene.render;
+      const std::string shadowKey =
+          std::to_string(renderer.uploadedVersion()) + "/" + std::to_string(render.lightAzimuthDeg) + "/" +
+          std::to_string(render.lightElevationDeg) + "/" + std::to_string(state.scene.tone.brightness);
+      if (render.lighting && renderer.hasVolume() && !uploadInProgress && shadowKey != lastShadowKey) {
+        core::ShadowVolume shadow;
+        core::computeShadowVolume(uploading, core::lightDirection(render.lightAzimuthDeg, render.lightElevationDeg),
+                                  state.scene.tone.brightness, kShadowDownsample, shadow);
+        renderer.uploadShadow(shadow, kShadowDownsample);
+        lastShadowKey = shadowKey;
+        target.samples = 0;
       }
 
       int width = 0, height = 0;

@@ -26,6 +26,7 @@ void report(const BenchOptions& options, const nlohmann::json& measurement);
 
 void benchAccumulate(const BenchOptions& options);  // bench_accumulate.cpp
 void benchRaymarch(const BenchOptions& options);    // bench_raymarch.cpp
+void benchExport(const BenchOptions& options);      // bench_export.cpp
 void benchMask(const BenchOptions& options);        // bench_mask.cpp
 
 }  // namespace voxflame::bench

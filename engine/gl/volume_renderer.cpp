@@ -44,6 +44,10 @@ uniform float uBrightness;
 uniform float uOpacity;
 uniform uint uSample;
 uniform ivec2 uPixelOffset;     // this tile's place in the whole image, so jitter ignores tiling
+uniform sampler3D uShadow;      // light transmittance, when lighting is on
+uniform bool uLighting;
+uniform vec3 uShadowScale;      // voxel coordinates to shadow texture coordinates
+uniform float uLightStrength;
 
 // A per-pixel, per-sample jitter of the first step hides the wood-grain banding of fixed steps.
 float hash(uvec3 v) {
@@ -99,7 +103,8 @@ void main() {
       if (texel.a > 0.0) {
         float level = log(1.0 + texel.a * uMaxDensity * uDensityScale) * uLogNormalizer;
         float alpha = 1.0 - exp(-level * uBrightness * uStepVoxels);
-        radiance += transmittance * alpha * (texel.rgb / texel.a);
+        float lit = uLighting ? mix(1.0, texture(uShadow, voxel * uShadowScale).r, uLightStrength) : 1.0;
+        radiance += transmittance * alpha * lit * (texel.rgb / texel.a);
         coverage *= 1.0 - alpha;
         transmittance *= 1.0 - alpha * uOpacity;
         if (transmittance < 0.002 || coverage < 0.0005 && uOpacity >= 1.0) break;
@@ -316,11 +321,13 @@ VolumeRenderer::VolumeRenderer()
   glGenVertexArrays(1, &vertexArray_);
   volumeTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
   occupancyTexture_ = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
+  shadowTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
 }
 
 VolumeRenderer::~VolumeRenderer() {
   glDeleteTextures(1, &volumeTexture_);
   glDeleteTextures(1, &occupancyTexture_);
+  glDeleteTextures(1, &shadowTexture_);
   glDeleteVertexArrays(1, &vertexArray_);
   glDeleteVertexArrays(1, &meshArray_);
   glDeleteBuffers(1, &meshVertices_);
@@ -375,6 +382,15 @@ bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
   uploadedVersion_ = std::max<std::uint64_t>(volume.version, 1);
   pending_ = nullptr;
   return true;
+}
+
+void VolumeRenderer::uploadShadow(const core::ShadowVolume& shadow, int downsample) {
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBindTexture(GL_TEXTURE_3D, shadowTexture_);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8, shadow.size.x, shadow.size.y, shadow.size.z, 0, GL_RED, GL_UNSIGNED_BYTE,
+               shadow.transmittance.data());
+  shadowSize_ = shadow.size;
+  shadowDownsample_ = std::max(1, downsample);
 }
 
 void VolumeRenderer::setMesh(const core::TriangleMesh& mesh) {
@@ -452,12 +468,19 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   setUniform(p, "uOpacity", std::clamp(settings.tone.opacity, 0.0, 1.0));
   glUniform1ui(p.uniform("uSample"), static_cast<GLuint>(sampleIndex));
   glUniform2i(p.uniform("uPixelOffset"), tile.x, tile.y);
+  const bool lighting = settings.render.lighting && hasShadow();
+  glUniform1i(p.uniform("uLighting"), lighting ? 1 : 0);
+  if (lighting) setUniform(p, "uShadowScale", 1.0f / glm::vec3(shadowSize_ * shadowDownsample_));
+  setUniform(p, "uLightStrength", settings.render.lightStrength);
   glActiveTexture(GL_TEXTURE0);
   glBindTexture(GL_TEXTURE_3D, volumeTexture_);
   glUniform1i(p.uniform("uVolume"), 0);
   glActiveTexture(GL_TEXTURE1);
   glBindTexture(GL_TEXTURE_3D, occupancyTexture_);
   glUniform1i(p.uniform("uOccupancy"), 1);
+  glActiveTexture(GL_TEXTURE2);
+  glBindTexture(GL_TEXTURE_3D, shadowTexture_);
+  glUniform1i(p.uniform("uShadow"), 2);
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);

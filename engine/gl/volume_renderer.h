@@ -18,6 +18,7 @@
 #include "core/mesh.h"
 #include "core/packed_volume.h"
 #include "core/scene.h"
+#include "core/shadow_volume.h"
 #include "shader_program.h"
 
 namespace voxflame::gl {
@@ -67,6 +68,9 @@ class VolumeRenderer {
   bool hasVolume() const { return uploadedVersion_ > 0; }
 
   void setMesh(const core::TriangleMesh& mesh);  // for the ghost and silhouette overlays
+  // Light transmittance used when settings.render.lighting is on; `downsample` voxels per cell.
+  void uploadShadow(const core::ShadowVolume& shadow, int downsample);
+  bool hasShadow() const { return shadowDownsample_ > 0; }
 
   // Adds one jittered sub-sample of the view to `target` (a running average). `sampleIndex`
   // picks the jitter; `tile` selects part of a larger image (x, y, full width, full height).
@@ -89,6 +93,9 @@ class VolumeRenderer {
   GLuint vertexArray_ = 0;
   GLuint volumeTexture_ = 0;     // RGBA16F: premultiplied colour, normalised density
   GLuint occupancyTexture_ = 0;  // R8UI per brick
+  GLuint shadowTexture_ = 0;     // R8 light transmittance
+  glm::ivec3 shadowSize_{0};
+  int shadowDownsample_ = 0;
   core::GridGeometry geometry_;
   glm::ivec3 brickCount_{0};
   float maxDensity_ = 0.0f;

@@ -1,0 +1,29 @@
+// Light transmittance through the volume toward one directional light: per cell, how much of the
+// light survives the density between it and the light. The renderer dims emission by it so the
+// pattern reads as a lit shape. Computed on the CPU by sweeping slices away from the light, each
+// slice reading the one before it a fraction of a cell sideways (O(cells), no ray per voxel).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "packed_volume.h"
+
+namespace voxflame::core {
+
+struct ShadowVolume {
+  glm::ivec3 size{0};                       // cells; each covers `downsample`³ voxels
+  std::vector<std::uint8_t> transmittance;  // 255 = fully lit
+};
+
+// `towardLight` need not be normalised. `extinctionScale` is the extinction per voxel of the
+// densest voxel (the tone's brightness); levels follow the renderer's log-density curve.
+void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, double extinctionScale, int downsample,
+                         ShadowVolume& out);
+
+// The unit vector toward a light at these angles, in the camera's orbit convention (Y up).
+glm::dvec3 lightDirection(double azimuthDeg, double elevationDeg);
+
+}  // namespace voxflame::core
