@@ -112,6 +112,13 @@ int renderCommand(const std::vector<std::string>& args) {
   if (azimuth) scene.camera.azimuthDeg = azimuthDeg;
   if (elevation) scene.camera.elevationDeg = elevationDeg;
   options.linearOutput = extension == ".exr";
+  // Render exactly what the image will store: values pass through their JSON form first (colours
+  // become hex), so rendering the image's preset again gives the same pixels.
+  const bool embedded = scene.embedded;
+  const std::filesystem::path baseDirectory = scene.baseDirectory;
+  scene = core::sceneFromJson(core::sceneToJson(scene), "(command line)");
+  scene.embedded = embedded;
+  scene.baseDirectory = baseDirectory;
 
   gInterrupted = false;
   struct sigaction action {};

@@ -76,7 +76,7 @@ struct RenderSettingsDoc {
   double stepVoxels = 0.5;  // ray-march step as a fraction of a voxel edge
   int samples = 1;          // jittered sub-samples averaged per pixel for stills
   MeshDisplay meshDisplay = MeshDisplay::Off;
-  glm::vec3 meshColor{0.55f, 0.65f, 0.8f};  // linear RGB of the ghost or outline
+  glm::vec3 meshColor = parseHexColor("#c2d3e8");  // linear RGB of the ghost or outline
   double meshStrength = 0.35;
   bool lighting = false;  // directional light with a shadow volume
   double lightAzimuthDeg = 45.0;
