@@ -22,4 +22,4 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${VOXFLAME_BUILD_TYPE:-Release}" "$@" >/dev/null
-cmake --build "$build" -j "$(nproc)"
+cmake --build "$build" -j "$(nproc)" ${VOXFLAME_BUILD_TARGET:+--target "$VOXFLAME_BUILD_TARGET"}
