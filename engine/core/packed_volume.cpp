@@ -51,6 +51,7 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
   out.maxDensity = snapshot.maxDensity;
   const std::size_t voxels = g.voxelCount();
   out.texels.resize(4 * voxels);
+  out.density.resize(voxels);
   out.brickCount = (g.size + (kBrickSize - 1)) / kBrickSize;
   out.occupancy.assign(static_cast<std::size_t>(out.brickCount.x) * out.brickCount.y * out.brickCount.z, 0);
   const float inverseMax = snapshot.maxDensity > 0.0f ? 1.0f / snapshot.maxDensity : 0.0f;
@@ -77,6 +78,7 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
         const float density = snapshot.density[v];
         if (density <= 0.0f) {
           texel[0] = texel[1] = texel[2] = texel[3] = kZero;
+          out.density[v] = kZero;
           continue;
         }
         densitySum += density;
@@ -85,6 +87,7 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
         const std::uint8_t* rgba = &snapshot.rgba[4 * v];
         for (int c = 0; c < 3; ++c) texel[c] = floatToHalf(weight * static_cast<float>(rgba[c]) * (1.0f / 255.0f));
         texel[3] = floatToHalf(weight);
+        out.density[v] = texel[3];
         markBricks(i, j, k);
       }
   out.meanDensity = occupied ? static_cast<float>(densitySum / static_cast<double>(occupied)) : 0.0f;

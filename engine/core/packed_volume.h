@@ -19,7 +19,9 @@ inline constexpr int kBrickSize = 8;
 
 struct PackedVolume {
   GridGeometry geometry;
-  std::vector<std::uint16_t> texels;  // 4 half floats per voxel, x fastest
+  std::vector<std::uint16_t> texels;   // 4 half floats per voxel, x fastest
+  std::vector<std::uint16_t> density;  // the alpha channel alone: the march tests it first, and one
+                                       // channel filters far faster than four in software GL
   glm::ivec3 brickCount{0};
   std::vector<std::uint8_t> occupancy;  // 1 where a brick, grown by one voxel, holds density
   float maxDensity = 0.0f;

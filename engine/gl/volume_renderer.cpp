@@ -34,6 +34,7 @@ uniform ivec3 uGridSize;
 uniform float uVoxelSize;
 uniform float uStepVoxels;
 uniform sampler3D uVolume;      // rgb: colour × normalised density, a: normalised density
+uniform sampler3D uDensity;     // normalised density alone, tested before the colour is fetched
 uniform usampler3D uOccupancy;  // 1 per brick that holds density
 uniform ivec3 uBrickCount;
 uniform int uBrickSize;
@@ -99,9 +100,10 @@ void main() {
         t += max(ceil((tLeave - t) / stepLength), 1.0) * stepLength;
         continue;
       }
-      vec4 texel = texture(uVolume, voxel * toTexture);
-      if (texel.a > 0.0) {
-        float level = log(1.0 + texel.a * uMaxDensity * uDensityScale) * uLogNormalizer;
+      float density = texture(uDensity, voxel * toTexture).r;
+      if (density > 0.0) {
+        vec4 texel = texture(uVolume, voxel * toTexture);
+        float level = log(1.0 + density * uMaxDensity * uDensityScale) * uLogNormalizer;
         float alpha = 1.0 - exp(-level * uBrightness * uStepVoxels);
         float lit = uLighting ? mix(1.0, texture(uShadow, voxel * uShadowScale).r, uLightStrength) : 1.0;
         radiance += transmittance * alpha * lit * (texel.rgb / texel.a);
@@ -320,12 +322,14 @@ VolumeRenderer::VolumeRenderer()
       meshProgram_(kMeshVertexShader, kMeshFragmentShader) {
   glGenVertexArrays(1, &vertexArray_);
   volumeTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
+  densityTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
   occupancyTexture_ = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
   shadowTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
 }
 
 VolumeRenderer::~VolumeRenderer() {
   glDeleteTextures(1, &volumeTexture_);
+  glDeleteTextures(1, &densityTexture_);
   glDeleteTextures(1, &occupancyTexture_);
   glDeleteTextures(1, &shadowTexture_);
   glDeleteVertexArrays(1, &vertexArray_);
@@ -346,6 +350,9 @@ void VolumeRenderer::beginUpload(const core::PackedVolume& volume) {
     glBindTexture(GL_TEXTURE_3D, volumeTexture_);
     glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA16F, volume.geometry.size.x, volume.geometry.size.y, volume.geometry.size.z,
                  0, GL_RGBA, GL_HALF_FLOAT, nullptr);
+    glBindTexture(GL_TEXTURE_3D, densityTexture_);
+    glTexImage3D(GL_TEXTURE_3D, 0, GL_R16F, volume.geometry.size.x, volume.geometry.size.y, volume.geometry.size.z, 0,
+                 GL_RED, GL_HALF_FLOAT, nullptr);
     uploadedVersion_ = 0;  // the old content is gone until this upload completes
   }
 }
@@ -357,12 +364,15 @@ void VolumeRenderer::uploadSlab(int firstZ, int endZ) {
   const std::size_t offset = 4 * pending_->geometry.index(0, 0, firstZ);
   glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, firstZ, size.x, size.y, endZ - firstZ, GL_RGBA, GL_HALF_FLOAT,
                   pending_->texels.data() + offset);
+  glBindTexture(GL_TEXTURE_3D, densityTexture_);
+  glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, firstZ, size.x, size.y, endZ - firstZ, GL_RED, GL_HALF_FLOAT,
+                  pending_->density.data() + offset / 4);
 }
 
 bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
   if (!pending_) return true;
   const core::PackedVolume& volume = *pending_;
-  const std::size_t slabBytes = 8 * static_cast<std::size_t>(volume.geometry.size.x) * volume.geometry.size.y;
+  const std::size_t slabBytes = 10 * static_cast<std::size_t>(volume.geometry.size.x) * volume.geometry.size.y;
   const int slabs = static_cast<int>(std::clamp<std::size_t>(budgetBytes / std::max<std::size_t>(slabBytes, 1), 1,
                                                              static_cast<std::size_t>(volume.geometry.size.z)));
   const int endZ = std::min(volume.geometry.size.z, pendingZ_ + slabs);
@@ -481,6 +491,9 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   glActiveTexture(GL_TEXTURE2);
   glBindTexture(GL_TEXTURE_3D, shadowTexture_);
   glUniform1i(p.uniform("uShadow"), 2);
+  glActiveTexture(GL_TEXTURE3);
+  glBindTexture(GL_TEXTURE_3D, densityTexture_);
+  glUniform1i(p.uniform("uDensity"), 3);
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);

@@ -92,6 +92,7 @@ class VolumeRenderer {
   ShaderProgram meshProgram_;
   GLuint vertexArray_ = 0;
   GLuint volumeTexture_ = 0;     // RGBA16F: premultiplied colour, normalised density
+  GLuint densityTexture_ = 0;    // R16F: normalised density alone
   GLuint occupancyTexture_ = 0;  // R8UI per brick
   GLuint shadowTexture_ = 0;     // R8 light transmittance
   glm::ivec3 shadowSize_{0};
