@@ -9,6 +9,7 @@
 #include <imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -54,6 +55,7 @@ struct ExplorerState {
   bool dragging = false;
   double lastMouseX = 0.0, lastMouseY = 0.0;
   double frameMs = 0.0;
+  char attractorFilter[64] = "";
 };
 
 void onScroll(GLFWwindow* window, double, double yOffset) {
@@ -94,7 +96,7 @@ bool slider(const char* label, double& value, double min, double max, ImGuiSlide
 
 void drawPanel(ExplorerState& state, const core::AccumulatorStats& stats) {
   ImGui::SetNextWindowPos(ImVec2(10, 10), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(380, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("voxflame");
   ImGui::TextUnformatted(state.scene.name.c_str());
   for (std::size_t li = 0; li < state.scene.layers.size(); ++li) {
@@ -102,6 +104,32 @@ void drawPanel(ExplorerState& state, const core::AccumulatorStats& stats) {
     const core::AttractorInfo& info = core::attractorOrThrow(layer.attractor);
     ImGui::PushID(static_cast<int>(li));
     if (ImGui::CollapsingHeader(info.name.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+      // The picker lists the catalogue, narrowed by the filter text (id or name).
+      ImGui::InputTextWithHint("##filter", "filter attractors", state.attractorFilter, sizeof state.attractorFilter);
+      if (ImGui::BeginCombo("attractor", info.name.c_str())) {
+        std::string filter = state.attractorFilter;
+        std::transform(filter.begin(), filter.end(), filter.begin(), [](unsigned char c) { return std::tolower(c); });
+        for (const core::AttractorInfo& candidate : core::attractorCatalogue()) {
+          std::string haystack = candidate.id + " " + candidate.name;
+          std::transform(haystack.begin(), haystack.end(), haystack.begin(),
+                         [](unsigned char c) { return std::tolower(c); });
+          if (!filter.empty() && haystack.find(filter) == std::string::npos) continue;
+          if (ImGui::Selectable(candidate.name.c_str(), candidate.id == layer.attractor) &&
+              candidate.id != layer.attractor) {
+            layer.attractor = candidate.id;
+            layer.params = candidate.defaultParams();
+            layer.step = candidate.defaultStep;
+            layer.integrator = candidate.defaultIntegrator;
+            state.patternDirty = true;
+          }
+        }
+        ImGui::EndCombo();
+      }
+      if (ImGui::IsItemHovered() && !info.citation.empty()) ImGui::SetTooltip("%s", info.citation.c_str());
+      if (layer.params.size() != info.params.size()) {
+        ImGui::PopID();
+        break;  // the layer changed attractor this frame; its sliders appear on the next one
+      }
       for (std::size_t p = 0; p < info.params.size(); ++p) {
         const core::ParamInfo& param = info.params[p];
         if (ImGui::SliderScalar(param.name.c_str(), ImGuiDataType_Double, &layer.params[p], &param.sliderMin,
