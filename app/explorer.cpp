@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <future>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -19,6 +20,7 @@
 #include "core/accumulator.h"
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/lyapunov.h"
 #include "core/packed_volume.h"
 #include "core/shadow_volume.h"
 #include "core/snapshot_publisher.h"
@@ -56,7 +58,45 @@ struct ExplorerState {
   double lastMouseX = 0.0, lastMouseY = 0.0;
   double frameMs = 0.0;
   char attractorFilter[64] = "";
+  // Search (F3) and Mutate run off the main thread; their result replaces layer 0's parameters.
+  std::future<std::vector<core::SearchResult>> search;
+  std::uint64_t searchSeed = 1;
+  double mutateStrength = 0.1;
+  std::string searchMessage;
 };
+
+void startSearch(ExplorerState& state, double strength) {
+  if (state.search.valid()) return;  // one at a time
+  const core::PatternLayer& layer = state.scene.layers.front();
+  core::OrbitSpec spec = core::defaultOrbitSpec(core::attractorOrThrow(layer.attractor));
+  spec.params = layer.params;
+  spec.integrator = layer.integrator;
+  spec.step = layer.step;
+  core::SearchOptions options;
+  options.seed = state.searchSeed++;
+  options.count = 1;
+  options.strength = strength;
+  state.searchMessage = "searching…";
+  state.search = std::async(std::launch::async, [spec, options] { return core::searchChaos(spec, options); });
+}
+
+void collectSearch(ExplorerState& state) {
+  if (!state.search.valid() || state.search.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  try {
+    const auto results = state.search.get();
+    if (results.empty()) {
+      state.searchMessage = "no chaotic set found nearby; try a larger strength";
+      return;
+    }
+    state.scene.layers.front().params = results.front().params;
+    state.patternDirty = true;
+    char text[96];
+    std::snprintf(text, sizeof text, "found: largest Lyapunov exponent %.3f", results.front().analysis.lyapunov[0]);
+    state.searchMessage = text;
+  } catch (const core::Error& e) {
+    state.searchMessage = e.what();
+  }
+}
 
 void onScroll(GLFWwindow* window, double, double yOffset) {
   if (ImGui::GetIO().WantCaptureMouse) return;
@@ -150,6 +190,15 @@ void drawPanel(ExplorerState& state, const core::AccumulatorStats& stats) {
     }
     ImGui::PopID();
   }
+  if (ImGui::Button("Search (F3)")) startSearch(state, 0.1);
+  ImGui::SameLine();
+  if (ImGui::Button("Mutate")) startSearch(state, state.mutateStrength);
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(120);
+  slider("strength", state.mutateStrength, 0.01, 1.0, ImGuiSliderFlags_Logarithmic);
+  if (!state.searchMessage.empty()) ImGui::TextWrapped("%s", state.searchMessage.c_str());
+  if (!stats.problem.empty())
+    ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "This pattern escapes: press Search (F3) for a nearby one.");
   if (ImGui::CollapsingHeader("Tone", ImGuiTreeNodeFlags_DefaultOpen)) {
     core::ToneMapSettings& tone = state.scene.tone;
     slider("brightness", tone.brightness, 0.0, 50.0, ImGuiSliderFlags_Logarithmic);
@@ -297,6 +346,8 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
       handleMouse(window, state);
+      if (ImGui::IsKeyPressed(GLFW_KEY_F3, false)) startSearch(state, 0.1);
+      collectSearch(state);
       drawPanel(state, accumulator.stats());
       ImGui::Render();
 
