@@ -28,6 +28,10 @@ usage:
   voxflame render [PRESET.json] -o OUT.png [--width W] [--height H] [--points N]
                   [--bit-depth 8|16] [--threads T]
       Render a still headless (no display needed); the PNG carries the preset.
+  voxflame mask MESH -o OUT.nrrd [--grid N] [--stats]
+                [--method winding-number|exact-winding-number|parity]
+      Write the mesh's inside mask (N voxels along its longest axis, 32-1024, default 256)
+      as an NRRD volume in the mesh's own coordinates.
   voxflame bench [accumulate|mask|raymarch|export] [--json]
       Measure performance (Release build).
   voxflame --help | --version
@@ -121,6 +125,7 @@ const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
       {"render", &renderCommand},
       {"bench", &benchCommand},
+      {"mask", &maskCommand},
   };
   return table;
 }

@@ -19,6 +19,7 @@ const std::vector<Subcommand>& subcommands();
 
 int renderCommand(const CommandArgs& args);  // cli.cpp
 int benchCommand(const CommandArgs& args);   // bench/bench_command.cpp
+int maskCommand(const CommandArgs& args);    // mask_command.cpp
 
 // The preset named by the first positional argument, or the embedded default when none.
 core::Scene sceneFromArgument(const std::vector<std::string>& positional);

@@ -14,7 +14,8 @@
 
 namespace voxflame::app {
 
-// Builds the grid and inside mask for a scene's mesh; refuses grids too large for this machine.
+// Builds the grid and inside mask for a scene's mesh (through the mask cache); refuses grids too
+// large for this machine.
 std::shared_ptr<const core::InsideMask> buildSceneMask(const core::Scene& scene);
 
 // Refuses (core::Error saying how much it needs) a grid whose buffers would not fit in memory.
