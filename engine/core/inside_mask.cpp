@@ -155,20 +155,33 @@ void collectCrossings(const std::vector<glm::dvec3>& p, const TriangleMesh& mesh
     axes[a].offsets.assign(columns + 1, 0);
     cursors[a].assign(columns, 0);
   }
-  const std::size_t triangleChunk = 4096;
-  // Pass 1 counts the crossings of every column, pass 2 writes them where the counts say.
+  // Each thread rasterises its share of the triangles once into its own list of (column,
+  // crossing) records; the records are then counted and scattered into per-column rows.
+  struct Record {
+    std::uint32_t column;
+    float crossing;
+  };
+  std::vector<std::array<std::vector<Record>, 3>> records(static_cast<std::size_t>(threads));
   {
-    ChunkQueue queue(mesh.triangles.size(), triangleChunk);
-    onThreads(threads, [&](int) {
+    ChunkQueue queue(mesh.triangles.size(), 4096);
+    onThreads(threads, [&](int thread) {
+      auto& mine = records[static_cast<std::size_t>(thread)];
       std::size_t begin = 0, end = 0;
       while (queue.next(begin, end))
         for (std::size_t t = begin; t < end; ++t)
           for (int a = 0; a < 3; ++a)
-            rasterizeTriangle(p, mesh.triangles[t], a, n, [&](std::size_t column, double, int) {
-              std::atomic_ref<std::uint32_t>(cursors[a][column]).fetch_add(1, std::memory_order_relaxed);
+            rasterizeTriangle(p, mesh.triangles[t], a, n, [&](std::size_t column, double where, int sign) {
+              // Any crossing before the first voxel centre (0.5) acts the same; keep it positive.
+              const float position = static_cast<float>(std::max(where, 0.25));
+              mine[a].push_back({static_cast<std::uint32_t>(column), sign * orientation > 0 ? position : -position});
             });
     });
   }
+  onThreads(threads, [&](int thread) {
+    for (int a = 0; a < 3; ++a)
+      for (const Record& r : records[static_cast<std::size_t>(thread)][a])
+        std::atomic_ref<std::uint32_t>(cursors[a][r.column]).fetch_add(1, std::memory_order_relaxed);
+  });
   for (int a = 0; a < 3; ++a) {
     std::uint32_t total = 0;
     for (std::size_t c = 0; c < cursors[a].size(); ++c) {
@@ -179,22 +192,16 @@ void collectCrossings(const std::vector<glm::dvec3>& p, const TriangleMesh& mesh
     axes[a].offsets.back() = total;
     axes[a].crossings.resize(total);
   }
-  {
-    ChunkQueue queue(mesh.triangles.size(), triangleChunk);
-    onThreads(threads, [&](int) {
-      std::size_t begin = 0, end = 0;
-      while (queue.next(begin, end))
-        for (std::size_t t = begin; t < end; ++t)
-          for (int a = 0; a < 3; ++a)
-            rasterizeTriangle(p, mesh.triangles[t], a, n, [&](std::size_t column, double where, int sign) {
-              const std::uint32_t slot =
-                  std::atomic_ref<std::uint32_t>(cursors[a][column]).fetch_add(1, std::memory_order_relaxed);
-              // Any crossing before the first voxel centre (0.5) acts the same; keep it positive.
-              const float position = static_cast<float>(std::max(where, 0.25));
-              axes[a].crossings[slot] = sign * orientation > 0 ? position : -position;
-            });
-    });
-  }
+  onThreads(threads, [&](int thread) {
+    for (int a = 0; a < 3; ++a) {
+      for (const Record& r : records[static_cast<std::size_t>(thread)][a]) {
+        const std::uint32_t slot =
+            std::atomic_ref<std::uint32_t>(cursors[a][r.column]).fetch_add(1, std::memory_order_relaxed);
+        axes[a].crossings[slot] = r.crossing;
+      }
+      std::vector<Record>().swap(records[static_cast<std::size_t>(thread)][a]);
+    }
+  });
   // Sort each column and check that its signs sum to zero.
   for (int a = 0; a < 3; ++a) {
     AxisCrossings& axis = axes[a];
@@ -484,13 +491,13 @@ struct WindingNumberTree::Node {
   glm::dvec3 areaNormal{0.0};  // sum of the triangles' normals times their areas
   double area = 0.0;
   double radius = 0.0;      // every triangle of the node lies within this distance of centre
-  std::uint32_t first = 0;  // leaf: first triangle in corners_; inner: index of the second child
+  std::uint32_t first = 0;  // leaf: first triangle in order_; inner: index of the second child
   std::uint32_t count = 0;  // leaf: number of triangles; 0 for an inner node (first child follows it)
 };
 
 namespace {
 
-constexpr std::uint32_t kLeafTriangles = 8;
+constexpr std::uint32_t kLeafTriangles = 12;
 
 // Spreads the low 10 bits of x so that two zero bits follow each.
 std::uint32_t spreadBits(std::uint32_t x) {
@@ -504,7 +511,7 @@ std::uint32_t spreadBits(std::uint32_t x) {
 
 }  // namespace
 
-WindingNumberTree::WindingNumberTree(const TriangleMesh& mesh, int threads) {
+WindingNumberTree::WindingNumberTree(const TriangleMesh& mesh, int threads) : mesh_(&mesh) {
   threads = resolveThreads(threads);
   const std::size_t count = mesh.triangles.size();
   if (count == 0) return;
@@ -542,18 +549,10 @@ WindingNumberTree::WindingNumberTree(const TriangleMesh& mesh, int threads) {
       keys.swap(scratch);
     }
   }
-  corners_.resize(count);
-  {
-    ChunkQueue queue(count, 16384);
-    onThreads(threads, [&](int) {
-      std::size_t begin = 0, end = 0;
-      while (queue.next(begin, end))
-        for (std::size_t e = begin; e < end; ++e) {
-          const auto& tri = mesh.triangles[keys[e] & 0xffffffffu];
-          corners_[e] = {mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]};
-        }
-    });
-  }
+  order_.resize(count);
+  for (std::size_t e = 0; e < count; ++e) order_[e] = static_cast<std::uint32_t>(keys[e] & 0xffffffffu);
+  std::vector<std::uint64_t>().swap(keys);
+  auto corner = [&](std::uint32_t e, int c) { return glm::dvec3(mesh.vertices[mesh.triangles[order_[e]][c]]); };
   // Depth-first: a node's first child directly follows it, so a query walks memory forward.
   // Each top-level subtree is built by its own thread into its own array, then appended.
   auto build = [&](auto&& self, std::vector<Node>& nodes, std::uint32_t begin, std::uint32_t end) -> std::uint32_t {
@@ -565,7 +564,7 @@ WindingNumberTree::WindingNumberTree(const TriangleMesh& mesh, int threads) {
       node.count = end - begin;
       glm::dvec3 weighted(0.0), plain(0.0);
       for (std::uint32_t e = begin; e < end; ++e) {
-        const glm::dvec3 a(corners_[e][0]), b(corners_[e][1]), c(corners_[e][2]);
+        const glm::dvec3 a = corner(e, 0), b = corner(e, 1), c = corner(e, 2);
         const glm::dvec3 normal = 0.5 * glm::cross(b - a, c - a);
         const double area = glm::length(normal);
         const glm::dvec3 centre = (a + b + c) / 3.0;
@@ -577,8 +576,8 @@ WindingNumberTree::WindingNumberTree(const TriangleMesh& mesh, int threads) {
       node.centre = node.area > 0.0 ? weighted / node.area : plain / static_cast<double>(end - begin);
       double radius2 = 0.0;
       for (std::uint32_t e = begin; e < end; ++e)
-        for (const glm::vec3& corner : corners_[e]) {
-          const glm::dvec3 d = glm::dvec3(corner) - node.centre;
+        for (int c = 0; c < 3; ++c) {
+          const glm::dvec3 d = corner(e, c) - node.centre;
           radius2 = std::max(radius2, glm::dot(d, d));
         }
       node.radius = std::sqrt(radius2);
@@ -649,8 +648,9 @@ double WindingNumberTree::operator()(const glm::dvec3& point, double accuracy) c
       sum += glm::dot(toCentre, node.areaNormal) / (distance2 * std::sqrt(distance2));
     } else if (node.count > 0) {
       for (std::uint32_t e = node.first; e < node.first + node.count; ++e) {
-        const auto& c = corners_[e];
-        sum += solidAngle(glm::dvec3(c[0]) - point, glm::dvec3(c[1]) - point, glm::dvec3(c[2]) - point);
+        const auto& tri = mesh_->triangles[order_[e]];
+        sum += solidAngle(glm::dvec3(mesh_->vertices[tri[0]]) - point, glm::dvec3(mesh_->vertices[tri[1]]) - point,
+                          glm::dvec3(mesh_->vertices[tri[2]]) - point);
       }
     } else {
       const auto self = static_cast<std::uint32_t>(&node - nodes_.data());

@@ -56,7 +56,8 @@ int meshOrientation(const TriangleMesh& mesh);
 
 // The fast winding number: a bounding-volume hierarchy over the triangles; a cluster farther than
 // `accuracy` times its radius from the query point is replaced by its dipole (the area-weighted
-// normal sum at its area-weighted centre). Built once, queried from any number of threads.
+// normal sum at its area-weighted centre). Built once, queried from any number of threads; the
+// mesh must outlive the tree.
 class WindingNumberTree {
  public:
   explicit WindingNumberTree(const TriangleMesh& mesh, int threads = 0);  // threads: 0 means all
@@ -70,7 +71,8 @@ class WindingNumberTree {
   struct Node;
   static Node combine(const Node& left, const Node& right, std::uint32_t rightIndex);
   std::vector<Node> nodes_;
-  std::vector<std::array<glm::vec3, 3>> corners_;  // triangles in leaf order
+  const TriangleMesh* mesh_;
+  std::vector<std::uint32_t> order_;  // triangle indices in leaf order
 };
 
 }  // namespace voxflame::core
