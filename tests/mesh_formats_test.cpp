@@ -210,9 +210,13 @@ TEST(MeshFormats, PolygonsAreTriangulatedAndDegenerateTrianglesDropped) {
   for (int s = 0; s < 6; ++s)
     obj << "f " << s + 1 << " " << (s + 1) % 6 + 1 << " " << (s + 1) % 6 + 7 << " " << s + 7 << "\n";
   obj << "f 13 14 15\nf 1 1 2\n";
+  // A stray point far away and a line: neither may stretch the mesh's box.
+  obj << "v 100 100 100\np 16\nl 1 16\n";
   write(folder / "prism.obj", obj.str());
   const TriangleMesh mesh = loadMesh(folder / "prism.obj");
   EXPECT_EQ(mesh.triangles.size(), 20u);
+  EXPECT_EQ(mesh.vertices.size(), 12u);
+  EXPECT_NEAR(mesh.bounds().max.z, 1.0, 1e-6);
 }
 
 TEST(MeshFormats, EveryBadFileGetsAMessageNamingItAndTheProblem) {

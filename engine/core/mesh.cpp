@@ -141,6 +141,22 @@ TriangleMesh convertScene(const aiScene* read, Assimp::Importer& importer, std::
                   " are degenerate)");
     throw Error("mesh '" + mesh.name + "' has no triangles");
   }
+  // Keep only the vertices triangles use: stray points (or the corners of dropped lines) must
+  // not stretch the bounding box the grid is fitted to.
+  {
+    std::vector<std::uint32_t> remap(mesh.vertices.size(), UINT32_MAX);
+    std::vector<glm::vec3> used;
+    used.reserve(mesh.vertices.size());
+    for (auto& tri : mesh.triangles)
+      for (std::uint32_t& v : tri) {
+        if (remap[v] == UINT32_MAX) {
+          remap[v] = static_cast<std::uint32_t>(used.size());
+          used.push_back(mesh.vertices[v]);
+        }
+        v = remap[v];
+      }
+    mesh.vertices = std::move(used);
+  }
   for (const auto& v : mesh.vertices)
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
       throw Error("mesh '" + mesh.name + "' has a vertex that is not a finite number");
