@@ -204,3 +204,16 @@ TEST(WindingNumberTree, AgreesWithTheExactSum) {
   EXPECT_NEAR(windingNumber(sphere, {1.5, 0.2, -0.1}), 0.0, 1e-9);
   EXPECT_NEAR(WindingNumberTree(sphere)({0.1, 0.2, -0.1}), 1.0, 0.01);
 }
+
+TEST(InsideMask, GridCoveringOnlyPartOfTheMeshIsStillRight) {
+  // Crossings before the grid's start and beyond its end still count for the columns.
+  const auto mesh = voxflame::test::uvSphere({0.0f, 0.0f, 0.0f}, 1.0f, 48, 24);
+  GridGeometry grid;
+  grid.size = {40, 36, 32};
+  grid.voxelSize = 0.02;
+  grid.origin = {-0.4, -0.3, -0.2};  // inside the ball throughout
+  const InsideMask mask = buildInsideMask(mesh, grid);
+  EXPECT_EQ(mask.insideFraction(), 1.0);
+  grid.origin = {2.0, 2.0, 2.0};  // entirely outside
+  EXPECT_EQ(buildInsideMask(mesh, grid).insideFraction(), 0.0);
+}

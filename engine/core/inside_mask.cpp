@@ -105,10 +105,17 @@ void rasterizeTriangle(const std::vector<glm::dvec3>& p, const std::array<std::u
   const glm::dvec3& p0 = p[tri[0]];
   const glm::dvec3& p1 = p[tri[1]];
   const glm::dvec3& p2 = p[tri[2]];
-  const int iu0 = std::max(0, static_cast<int>(std::ceil(std::min({p0[u], p1[u], p2[u]}) - 0.5 - du)));
-  const int iu1 = std::min(n[u] - 1, static_cast<int>(std::floor(std::max({p0[u], p1[u], p2[u]}) - 0.5 - du)));
-  const int iv0 = std::max(0, static_cast<int>(std::ceil(std::min({p0[v], p1[v], p2[v]}) - 0.5 - dv)));
-  const int iv1 = std::min(n[v] - 1, static_cast<int>(std::floor(std::max({p0[v], p1[v], p2[v]}) - 0.5 - dv)));
+  // Clamped before the conversion so that a grid far smaller than the mesh cannot overflow it.
+  auto firstColumn = [](double low, int count) {
+    return static_cast<int>(std::clamp(std::ceil(low), 0.0, 1.0 * count));
+  };
+  auto lastColumn = [](double high, int count) {
+    return static_cast<int>(std::clamp(std::floor(high), -1.0, count - 1.0));
+  };
+  const int iu0 = firstColumn(std::min({p0[u], p1[u], p2[u]}) - 0.5 - du, n[u]);
+  const int iu1 = lastColumn(std::max({p0[u], p1[u], p2[u]}) - 0.5 - du, n[u]);
+  const int iv0 = firstColumn(std::min({p0[v], p1[v], p2[v]}) - 0.5 - dv, n[v]);
+  const int iv1 = lastColumn(std::max({p0[v], p1[v], p2[v]}) - 0.5 - dv, n[v]);
   if (iu0 > iu1 || iv0 > iv1) return;
   // orient(a, b, s) > 0 when s lies left of a → b in the (u, v) plane.
   auto edge = [&](std::uint32_t a, std::uint32_t b, double su, double sv) {
@@ -172,7 +179,7 @@ void collectCrossings(const std::vector<glm::dvec3>& p, const TriangleMesh& mesh
           for (int a = 0; a < 3; ++a)
             rasterizeTriangle(p, mesh.triangles[t], a, n, [&](std::size_t column, double where, int sign) {
               // Any crossing before the first voxel centre (0.5) acts the same; keep it positive.
-              const float position = static_cast<float>(std::max(where, 0.25));
+              const float position = static_cast<float>(std::clamp(where, 0.25, 1.0e9));
               mine[a].push_back({static_cast<std::uint32_t>(column), sign * orientation > 0 ? position : -position});
             });
     });
@@ -270,7 +277,7 @@ InsideMask voteOverAxes(const TriangleMesh& mesh, const GridGeometry& grid, int 
     std::int32_t sign;
   };
   auto firstSlice = [](float position) {
-    return static_cast<std::size_t>(std::floor(std::fabs(position) - 0.5f) + 1.0f);
+    return static_cast<std::size_t>(std::min(std::floor(std::fabs(position) - 0.5f) + 1.0f, 2.0e9f));
   };
   std::vector<std::uint32_t> sliceStart(static_cast<std::size_t>(n.z) + 1, 0);
   for (const float f : axes[2].crossings) {
