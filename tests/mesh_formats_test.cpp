@@ -267,8 +267,8 @@ TEST(MeshFormats, TruncatedAndCorruptedFilesNeverHangOrCrash) {
   int loaded = 0, refused = 0;
   for (const auto& [name, original] : files) {
     std::vector<std::string> variants;
-    for (int cut = 1; cut < 16; ++cut) variants.push_back(original.substr(0, original.size() * cut / 16));
-    for (int flips = 0; flips < 24; ++flips) {
+    for (int cut = 1; cut < 10; ++cut) variants.push_back(original.substr(0, original.size() * cut / 10));
+    for (int flips = 0; flips < 14; ++flips) {
       std::string bytes = original;
       for (int n = 0; n < 1 + flips % 4; ++n) {
         const std::size_t at = std::uniform_int_distribution<std::size_t>(0, bytes.size() - 1)(random);
@@ -294,7 +294,7 @@ TEST(MeshFormats, TruncatedAndCorruptedFilesNeverHangOrCrash) {
     }
   }
   EXPECT_GT(refused, 0);
-  EXPECT_GT(loaded + refused, 200);
+  EXPECT_EQ(loaded + refused, 7 * (9 + 14));
 }
 
 TEST(MeshFormats, AllSharedMeshesLoad) {
