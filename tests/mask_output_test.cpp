@@ -1,6 +1,7 @@
 // What surrounds the mask: the memory refusal, the NRRD file and the on-disk cache.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <iterator>
 
@@ -124,6 +125,27 @@ TEST(MaskCache, SecondRequestIsACacheHitAndCorruptEntriesAreRebuilt) {
     EXPECT_EQ(rebuilt.inside, built.inside);
     EXPECT_EQ(readAll(entry), good);  // and the entry is whole again
   }
+}
+
+TEST(MaskCache, PruningKeepsTheNewestEntries) {
+  TemporaryFolder folder;
+  const auto mesh = voxflame::test::box({0.0f, 0.0f, 0.0f}, {1.0f, 1.0f, 1.0f});
+  std::vector<std::filesystem::path> entries;
+  for (int resolution : {32, 33, 34, 35}) {
+    const GridGeometry grid = gridOverBox(mesh.bounds(), resolution);
+    cachedInsideMask(mesh, grid, MaskMethod::WindingNumber, folder.path());
+    entries.push_back(maskCacheEntry(folder.path(), mesh, grid, MaskMethod::WindingNumber));
+    // Distinct modification times, oldest first, whatever the file system's resolution.
+    std::filesystem::last_write_time(
+        entries.back(), std::filesystem::file_time_type::clock::now() + std::chrono::seconds(10 * resolution));
+  }
+  std::ofstream(folder / "unrelated.txt") << "kept";
+  pruneMaskCache(folder.path(), 2);
+  EXPECT_FALSE(std::filesystem::exists(entries[0]));
+  EXPECT_FALSE(std::filesystem::exists(entries[1]));
+  EXPECT_TRUE(std::filesystem::exists(entries[2]));
+  EXPECT_TRUE(std::filesystem::exists(entries[3]));
+  EXPECT_TRUE(std::filesystem::exists(folder / "unrelated.txt"));
 }
 
 TEST(MaskCache, FolderFollowsXdgAndTestsUseAPrivateOne) {

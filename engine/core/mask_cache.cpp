@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -9,6 +10,7 @@
 #include <iterator>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace voxflame::core {
@@ -158,6 +160,19 @@ std::uint64_t meshContentHash(const TriangleMesh& mesh) {
   return hasher.value();
 }
 
+void pruneMaskCache(const std::filesystem::path& folder, std::size_t keep) {
+  std::error_code ec;
+  std::vector<std::pair<std::filesystem::file_time_type, std::filesystem::path>> entries;
+  for (const auto& item : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string name = item.path().filename().string();
+    if (name.rfind("mask-", 0) != 0 || item.path().extension() != ".bin") continue;
+    entries.emplace_back(item.last_write_time(ec), item.path());
+  }
+  if (entries.size() <= keep) return;
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.first > b.first; });
+  for (std::size_t e = keep; e < entries.size(); ++e) std::filesystem::remove(entries[e].second, ec);
+}
+
 std::filesystem::path maskCacheEntry(const std::filesystem::path& folder, const TriangleMesh& mesh,
                                      const GridGeometry& grid, MaskMethod method) {
   char name[64];
@@ -174,10 +189,14 @@ InsideMask cachedInsideMask(const TriangleMesh& mesh, const GridGeometry& grid, 
   InsideMask mask;
   if (readEntry(path, key, grid, method, mask)) {
     if (fromCache) *fromCache = true;
+    // Touched on use, so pruning drops the entries used least recently.
+    std::error_code ec;
+    std::filesystem::last_write_time(path, std::filesystem::file_time_type::clock::now(), ec);
     return mask;
   }
   mask = buildInsideMask(mesh, grid, method);
   writeEntry(path, key, mask, method);
+  pruneMaskCache(folder, kMaskCacheEntries);
   return mask;
 }
 

@@ -24,6 +24,11 @@ std::uint64_t meshContentHash(const TriangleMesh& mesh);
 InsideMask cachedInsideMask(const TriangleMesh& mesh, const GridGeometry& grid, MaskMethod method,
                             const std::filesystem::path& folder, bool* fromCache = nullptr);
 
+// Keeps the `keep` most recently written or used entries in `folder` and removes the others, so the
+// cache cannot grow without bound (an entry of a 512³ mask is 16 MB).
+void pruneMaskCache(const std::filesystem::path& folder, std::size_t keep);
+inline constexpr std::size_t kMaskCacheEntries = 24;
+
 // Where the entry for this (mesh, grid, method) lives in `folder`.
 std::filesystem::path maskCacheEntry(const std::filesystem::path& folder, const TriangleMesh& mesh,
                                      const GridGeometry& grid, MaskMethod method);
