@@ -41,6 +41,10 @@ usage:
   voxflame search [PRESET.json | --attractor ID] [--seed N] [--count K] [--strength S]
                   [--set NAME] [--param NAME=VALUE]... [--json]
       Find K nearby parameter sets that are bounded, chaotic and fill a volume.
+  voxflame mask MESH -o OUT.nrrd [--grid N] [--stats]
+                [--method winding-number|exact-winding-number|parity]
+      Write the mesh's inside mask (N voxels along its longest axis, 32-1024, default 256)
+      as an NRRD volume in the mesh's own coordinates.
   voxflame bench [accumulate|mask|raymarch|export] [--json]
       Measure performance (Release build).
   voxflame --help | --version
@@ -206,7 +210,7 @@ namespace voxflame::app {
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
       {"render", &renderCommand}, {"bench", &benchCommand},   {"list", &listCommand},
-      {"info", &infoCommand},     {"search", &searchCommand},
+      {"info", &infoCommand},     {"search", &searchCommand}, {"mask", &maskCommand},
   };
   return table;
 }

@@ -22,6 +22,7 @@ int benchCommand(const CommandArgs& args);   // bench/bench_command.cpp
 int listCommand(const CommandArgs& args);    // catalogue_commands.cpp
 int infoCommand(const CommandArgs& args);    // catalogue_commands.cpp
 int searchCommand(const CommandArgs& args);  // catalogue_commands.cpp
+int maskCommand(const CommandArgs& args);    // mask_command.cpp
 
 // The preset named by the first positional argument, or the embedded default when none.
 core::Scene sceneFromArgument(const std::vector<std::string>& positional);

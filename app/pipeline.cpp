@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/packed_volume.h"
 #include "core/shadow_volume.h"
+#include "core/mask_cache.h"
 #include "core/scene_io.h"
 #include "gl/headless_context.h"
 #include "gl/volume_renderer.h"
@@ -27,25 +28,12 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-std::string gibibytes(double bytes) {
-  std::ostringstream text;
-  text.precision(1);
-  text << std::fixed << bytes / (1024.0 * 1024.0 * 1024.0) << " GiB";
-  return text.str();
-}
-
 }  // namespace
 
 void checkGridFitsInMemory(const core::GridGeometry& grid) {
   // Per voxel: mask 1 B, density and colour sums 16 B, a snapshot 8 B, its upload copy 8 B.
   constexpr double kBytesPerVoxel = 1.0 + 16.0 + 8.0 + 8.0;
-  const double needed = kBytesPerVoxel * static_cast<double>(grid.voxelCount());
-  const double physical = static_cast<double>(sysconf(_SC_PHYS_PAGES)) * static_cast<double>(sysconf(_SC_PAGE_SIZE));
-  if (physical > 0.0 && needed > 0.75 * physical)
-    throw core::Error("a grid of " + std::to_string(grid.size.x) + "×" + std::to_string(grid.size.y) + "×" +
-                      std::to_string(grid.size.z) + " voxels needs about " + gibibytes(needed) +
-                      " of memory, more than this machine can spare (" + gibibytes(physical) +
-                      " in all); choose a smaller grid resolution");
+  core::checkGridFitsInMemory(grid, kBytesPerVoxel);
 }
 
 SceneShape buildSceneShape(const core::Scene& scene) {
@@ -53,7 +41,9 @@ SceneShape buildSceneShape(const core::Scene& scene) {
   shape.mesh = core::loadSceneMesh(scene);
   const core::GridGeometry grid = core::gridOverBox(shape.mesh.bounds(), scene.gridResolution);
   checkGridFitsInMemory(grid);
-  shape.mask = std::make_shared<const core::InsideMask>(core::buildInsideMask(shape.mesh, grid));
+  // Reopening a preset finds its mask in the user's cache instead of computing it again.
+  shape.mask = std::make_shared<const core::InsideMask>(
+      core::cachedInsideMask(shape.mesh, grid, core::MaskMethod::WindingNumber, core::defaultMaskCacheFolder()));
   return shape;
 }
 

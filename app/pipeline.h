@@ -23,8 +23,8 @@ struct SceneShape {
   std::shared_ptr<const core::InsideMask> mask;
 };
 
-// Loads the scene's mesh and builds its grid and inside mask; refuses grids too large for this
-// machine.
+// Loads the scene's mesh and builds its grid and inside mask (through the mask cache); refuses
+// grids too large for this machine.
 SceneShape buildSceneShape(const core::Scene& scene);
 
 // Refuses (core::Error saying how much it needs) a grid whose buffers would not fit in memory.

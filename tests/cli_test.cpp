@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 
 #include <nlohmann/json.hpp>
 
@@ -240,4 +241,28 @@ TEST(Cli, SearchPrintsKDeterministicSets) {
   ASSERT_EQ(text.exitStatus, 0) << text.output;
   EXPECT_NE(text.output.find("3. a="), std::string::npos) << text.output;
   EXPECT_NE(runVoxflame("search --attractor lorenz84 --count 0").exitStatus, 0);
+}
+
+TEST(Cli, MaskWritesNrrdAndStats) {
+  TemporaryFolder folder;
+  const std::string mesh = voxflame::test::meshPath("teapot.obj").string();
+  auto result = runVoxflame("mask '" + mesh + "' --grid 48 -o teapot.nrrd --stats", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  for (const char* line : {"triangles: 992", "grid: 48 ", "inside fraction: 0.", "seconds: "})
+    EXPECT_NE(result.output.find(line), std::string::npos) << line << "\n" << result.output;
+  std::ifstream in(folder / "teapot.nrrd", std::ios::binary);
+  std::string file((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(file.rfind("NRRD0004\n", 0), 0u);
+  EXPECT_NE(file.find("type: uchar\n"), std::string::npos);
+
+  result = runVoxflame("mask '" + mesh + "' --grid 16 -o t.nrrd", folder.path());
+  EXPECT_EQ(result.exitStatus, 2);
+  EXPECT_NE(result.output.find("--grid"), std::string::npos) << result.output;
+  result = runVoxflame("mask '" + mesh + "' --grid 48", folder.path());
+  EXPECT_EQ(result.exitStatus, 2);
+  EXPECT_NE(result.output.find("-o OUT.nrrd"), std::string::npos) << result.output;
+  result = runVoxflame("mask gone.obj -o t.nrrd", folder.path());
+  EXPECT_EQ(result.exitStatus, 1);
+  EXPECT_NE(result.output.find("gone.obj"), std::string::npos) << result.output;
+  EXPECT_FALSE(std::filesystem::exists(folder / "t.nrrd"));
 }

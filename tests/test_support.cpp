@@ -4,9 +4,20 @@
 
 #include <array>
 #include <cstdio>
+#include <cstdlib>
 #include <random>
 
 namespace voxflame::test {
+
+namespace {
+// Every test process, and every voxflame it starts, keeps its mask cache in a temporary folder
+// of its own: tests never write to the user's real ~/.cache.
+struct PrivateCacheFolder {
+  TemporaryFolder folder;
+  PrivateCacheFolder() { setenv("XDG_CACHE_HOME", folder.path().c_str(), 1); }
+};
+const PrivateCacheFolder privateCacheFolder;
+}  // namespace
 
 std::filesystem::path meshPath(const std::string& name) {
   return std::filesystem::path(VOXFLAME_TEST_MESHES) / name;

@@ -32,6 +32,14 @@ struct GridGeometry {
   Box box() const { return {origin, origin + voxelSize * glm::dvec3(size)}; }
 };
 
+// Bytes of physical memory on this machine; 0 when it cannot be told.
+double physicalMemoryBytes();
+
+// Refuses, before anything is allocated, a grid whose buffers (bytesPerVoxel for every voxel)
+// would not fit: core::Error says how much it would need. availableBytes 0 means three quarters
+// of this machine's physical memory.
+void checkGridFitsInMemory(const GridGeometry& grid, double bytesPerVoxel, double availableBytes = 0.0);
+
 // A grid whose longest axis has `resolution` voxels, covering `box` plus `marginVoxels` on every
 // side. Throws core::Error when resolution is outside [kMinGridResolution, kMaxGridResolution].
 GridGeometry gridOverBox(const Box& box, int resolution, int marginVoxels = 1);

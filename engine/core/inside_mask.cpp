@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <numeric>
@@ -104,10 +105,17 @@ void rasterizeTriangle(const std::vector<glm::dvec3>& p, const std::array<std::u
   const glm::dvec3& p0 = p[tri[0]];
   const glm::dvec3& p1 = p[tri[1]];
   const glm::dvec3& p2 = p[tri[2]];
-  const int iu0 = std::max(0, static_cast<int>(std::ceil(std::min({p0[u], p1[u], p2[u]}) - 0.5 - du)));
-  const int iu1 = std::min(n[u] - 1, static_cast<int>(std::floor(std::max({p0[u], p1[u], p2[u]}) - 0.5 - du)));
-  const int iv0 = std::max(0, static_cast<int>(std::ceil(std::min({p0[v], p1[v], p2[v]}) - 0.5 - dv)));
-  const int iv1 = std::min(n[v] - 1, static_cast<int>(std::floor(std::max({p0[v], p1[v], p2[v]}) - 0.5 - dv)));
+  // Clamped before the conversion so that a grid far smaller than the mesh cannot overflow it.
+  auto firstColumn = [](double low, int count) {
+    return static_cast<int>(std::clamp(std::ceil(low), 0.0, 1.0 * count));
+  };
+  auto lastColumn = [](double high, int count) {
+    return static_cast<int>(std::clamp(std::floor(high), -1.0, count - 1.0));
+  };
+  const int iu0 = firstColumn(std::min({p0[u], p1[u], p2[u]}) - 0.5 - du, n[u]);
+  const int iu1 = lastColumn(std::max({p0[u], p1[u], p2[u]}) - 0.5 - du, n[u]);
+  const int iv0 = firstColumn(std::min({p0[v], p1[v], p2[v]}) - 0.5 - dv, n[v]);
+  const int iv1 = lastColumn(std::max({p0[v], p1[v], p2[v]}) - 0.5 - dv, n[v]);
   if (iu0 > iu1 || iv0 > iv1) return;
   // orient(a, b, s) > 0 when s lies left of a → b in the (u, v) plane.
   auto edge = [&](std::uint32_t a, std::uint32_t b, double su, double sv) {
@@ -154,20 +162,33 @@ void collectCrossings(const std::vector<glm::dvec3>& p, const TriangleMesh& mesh
     axes[a].offsets.assign(columns + 1, 0);
     cursors[a].assign(columns, 0);
   }
-  const std::size_t triangleChunk = 4096;
-  // Pass 1 counts the crossings of every column, pass 2 writes them where the counts say.
+  // Each thread rasterises its share of the triangles once into its own list of (column,
+  // crossing) records; the records are then counted and scattered into per-column rows.
+  struct Record {
+    std::uint32_t column;
+    float crossing;
+  };
+  std::vector<std::array<std::vector<Record>, 3>> records(static_cast<std::size_t>(threads));
   {
-    ChunkQueue queue(mesh.triangles.size(), triangleChunk);
-    onThreads(threads, [&](int) {
+    ChunkQueue queue(mesh.triangles.size(), 4096);
+    onThreads(threads, [&](int thread) {
+      auto& mine = records[static_cast<std::size_t>(thread)];
       std::size_t begin = 0, end = 0;
       while (queue.next(begin, end))
         for (std::size_t t = begin; t < end; ++t)
           for (int a = 0; a < 3; ++a)
-            rasterizeTriangle(p, mesh.triangles[t], a, n, [&](std::size_t column, double, int) {
-              std::atomic_ref<std::uint32_t>(cursors[a][column]).fetch_add(1, std::memory_order_relaxed);
+            rasterizeTriangle(p, mesh.triangles[t], a, n, [&](std::size_t column, double where, int sign) {
+              // Any crossing before the first voxel centre (0.5) acts the same; keep it positive.
+              const float position = static_cast<float>(std::clamp(where, 0.25, 1.0e9));
+              mine[a].push_back({static_cast<std::uint32_t>(column), sign * orientation > 0 ? position : -position});
             });
     });
   }
+  onThreads(threads, [&](int thread) {
+    for (int a = 0; a < 3; ++a)
+      for (const Record& r : records[static_cast<std::size_t>(thread)][a])
+        std::atomic_ref<std::uint32_t>(cursors[a][r.column]).fetch_add(1, std::memory_order_relaxed);
+  });
   for (int a = 0; a < 3; ++a) {
     std::uint32_t total = 0;
     for (std::size_t c = 0; c < cursors[a].size(); ++c) {
@@ -178,22 +199,16 @@ void collectCrossings(const std::vector<glm::dvec3>& p, const TriangleMesh& mesh
     axes[a].offsets.back() = total;
     axes[a].crossings.resize(total);
   }
-  {
-    ChunkQueue queue(mesh.triangles.size(), triangleChunk);
-    onThreads(threads, [&](int) {
-      std::size_t begin = 0, end = 0;
-      while (queue.next(begin, end))
-        for (std::size_t t = begin; t < end; ++t)
-          for (int a = 0; a < 3; ++a)
-            rasterizeTriangle(p, mesh.triangles[t], a, n, [&](std::size_t column, double where, int sign) {
-              const std::uint32_t slot =
-                  std::atomic_ref<std::uint32_t>(cursors[a][column]).fetch_add(1, std::memory_order_relaxed);
-              // Any crossing before the first voxel centre (0.5) acts the same; keep it positive.
-              const float position = static_cast<float>(std::max(where, 0.25));
-              axes[a].crossings[slot] = sign * orientation > 0 ? position : -position;
-            });
-    });
-  }
+  onThreads(threads, [&](int thread) {
+    for (int a = 0; a < 3; ++a) {
+      for (const Record& r : records[static_cast<std::size_t>(thread)][a]) {
+        const std::uint32_t slot =
+            std::atomic_ref<std::uint32_t>(cursors[a][r.column]).fetch_add(1, std::memory_order_relaxed);
+        axes[a].crossings[slot] = r.crossing;
+      }
+      std::vector<Record>().swap(records[static_cast<std::size_t>(thread)][a]);
+    }
+  });
   // Sort each column and check that its signs sum to zero.
   for (int a = 0; a < 3; ++a) {
     AxisCrossings& axis = axes[a];
@@ -238,55 +253,118 @@ InsideMask voteOverAxes(const TriangleMesh& mesh, const GridGeometry& grid, int 
   std::vector<glm::dvec3> p(mesh.vertices.size());
   for (std::size_t v = 0; v < p.size(); ++v) p[v] = (glm::dvec3(mesh.vertices[v]) - grid.origin) / grid.voxelSize;
   const int orientation = meshOrientation(mesh);
+  auto clock = std::chrono::steady_clock::now();
+  auto lap = [&clock] {
+    const auto now = std::chrono::steady_clock::now();
+    const double seconds = std::chrono::duration<double>(now - clock).count();
+    clock = now;
+    return seconds;
+  };
   AxisCrossings axes[3];
   collectCrossings(p, mesh, n, orientation, threads, axes);
 
   InsideMask mask;
   mask.geometry = grid;
+  mask.crossingSeconds = lap();
   mask.inside.resize(grid.voxelCount());
-  std::vector<std::vector<std::size_t>> undecided(static_cast<std::size_t>(threads));
   const std::size_t planeSize = static_cast<std::size_t>(n.x) * static_cast<std::size_t>(n.y);
+
+  // z crossings regrouped by the slice they first count for (a crossing at t counts for every
+  // voxel centre beyond t), so a sweep up the slices carries a plane of z votes and touches a
+  // column only where it crosses the surface.
+  struct ZEvent {
+    std::uint32_t column;
+    std::int32_t sign;
+  };
+  auto firstSlice = [](float position) {
+    return static_cast<std::size_t>(std::min(std::floor(std::fabs(position) - 0.5f) + 1.0f, 2.0e9f));
+  };
+  std::vector<std::uint32_t> sliceStart(static_cast<std::size_t>(n.z) + 1, 0);
+  for (const float f : axes[2].crossings) {
+    const std::size_t k = firstSlice(f);
+    if (k < static_cast<std::size_t>(n.z)) ++sliceStart[k + 1];
+  }
+  for (std::size_t k = 1; k < sliceStart.size(); ++k) sliceStart[k] += sliceStart[k - 1];
+  std::vector<ZEvent> zEvents(sliceStart.back());
+  {
+    std::vector<std::uint32_t> fill(sliceStart.begin(), sliceStart.end() - 1);
+    for (std::size_t c = 0; c < planeSize; ++c)
+      for (std::uint32_t e = axes[2].offsets[c]; e < axes[2].offsets[c + 1]; ++e) {
+        const float f = axes[2].crossings[e];
+        const std::size_t k = firstSlice(f);
+        if (k < static_cast<std::size_t>(n.z)) zEvents[fill[k]++] = {static_cast<std::uint32_t>(c), f > 0.0f ? 1 : -1};
+      }
+  }
+
+  // A vote is 0 (the column is not closed: no vote), 1 (outside) or 2 (inside); the table turns
+  // three votes into 0 or 1, or kUndecided when fewer than two agree and none dissent.
+  constexpr std::uint8_t kUndecided = 2;
+  std::uint8_t decide[27];
+  for (int x = 0; x < 3; ++x)
+    for (int y = 0; y < 3; ++y)
+      for (int z = 0; z < 3; ++z) {
+        const int in = (x == 2) + (y == 2) + (z == 2), out = (x == 1) + (y == 1) + (z == 1);
+        decide[9 * x + 3 * y + z] = in >= 2 && out == 0 ? 1 : (out >= 2 && in == 0 ? 0 : kUndecided);
+      }
+  auto vote = [](bool closed, int winding) -> std::uint8_t { return closed ? (winding > 0 ? 2 : 1) : 0; };
+
+  std::vector<std::vector<std::size_t>> undecided(static_cast<std::size_t>(threads));
   const std::size_t slabSlices = std::max<std::size_t>(4, static_cast<std::size_t>(n.z) / (4 * threads));
   ChunkQueue slabs(static_cast<std::size_t>(n.z), slabSlices);
   // Slab by slab along z, voxels in memory order: x columns are walked along each row, y columns
-  // along each slice, z columns across the slab, so every read and write streams.
+  // along each slice, z votes carried in a plane that fits the cache, so every read and write
+  // streams.
   onThreads(threads, [&](int thread) {
-    std::vector<ColumnWalk> zWalks(planeSize), yWalks(static_cast<std::size_t>(n.x));
+    std::vector<std::int32_t> zWinding(planeSize);
+    std::vector<std::uint8_t> zVote(planeSize), yVote(static_cast<std::size_t>(n.x));
+    std::vector<ColumnWalk> yWalks(static_cast<std::size_t>(n.x));
+    auto applySlice = [&](std::size_t k) {
+      for (std::uint32_t e = sliceStart[k]; e < sliceStart[k + 1]; ++e) {
+        const ZEvent event = zEvents[e];
+        zWinding[event.column] += event.sign;
+        zVote[event.column] = vote(axes[2].closed[event.column], zWinding[event.column]);
+      }
+    };
     std::size_t kBegin = 0, kEnd = 0;
     while (slabs.next(kBegin, kEnd)) {
-      for (std::size_t c = 0; c < planeSize; ++c) {
-        zWalks[c].reset(axes[2], c);
-        zWalks[c].advanceTo(static_cast<float>(kBegin) + 0.5f);
-      }
-      for (int k = static_cast<int>(kBegin); k < static_cast<int>(kEnd); ++k) {
-        const float cz = static_cast<float>(k) + 0.5f;
-        for (int i = 0; i < n.x; ++i) yWalks[i].reset(axes[1], columnIndex(1, k, i, n));
+      std::fill(zWinding.begin(), zWinding.end(), 0);
+      for (std::size_t c = 0; c < planeSize; ++c) zVote[c] = vote(axes[2].closed[c], 0);
+      for (std::size_t k = 0; k < kBegin; ++k) applySlice(k);
+      for (std::size_t k = kBegin; k < kEnd; ++k) {
+        applySlice(k);
+        const int kk = static_cast<int>(k);
+        for (int i = 0; i < n.x; ++i) {
+          const std::size_t yColumn = columnIndex(1, kk, i, n);
+          yWalks[i].reset(axes[1], yColumn);
+          yVote[i] = vote(axes[1].closed[yColumn], 0);
+        }
         for (int j = 0; j < n.y; ++j) {
           const float cy = static_cast<float>(j) + 0.5f;
-          const std::size_t xColumn = columnIndex(0, j, k, n);
+          const std::size_t xColumn = columnIndex(0, j, kk, n);
           const bool xClosed = axes[0].closed[xColumn];
           ColumnWalk xWalk;
           xWalk.reset(axes[0], xColumn);
-          const std::size_t row = grid.index(0, j, k);
+          int xVote = vote(xClosed, 0);
+          const std::size_t row = grid.index(0, j, kk);
+          const std::uint8_t* zRow = zVote.data() + static_cast<std::size_t>(n.x) * static_cast<std::size_t>(j);
+          std::uint8_t* out = mask.inside.data() + row;
           for (int i = 0; i < n.x; ++i) {
-            xWalk.advanceTo(static_cast<float>(i) + 0.5f);
+            const float cx = static_cast<float>(i) + 0.5f;
+            if (xWalk.next != xWalk.end && std::fabs(*xWalk.next) < cx) {
+              xWalk.advanceTo(cx);
+              xVote = vote(xClosed, xWalk.winding);
+            }
             ColumnWalk& yWalk = yWalks[i];
-            yWalk.advanceTo(cy);
-            const std::size_t zColumn = static_cast<std::size_t>(i) + static_cast<std::size_t>(n.x) * j;
-            ColumnWalk& zWalk = zWalks[zColumn];
-            zWalk.advanceTo(cz);
-            int votesInside = 0, votesOutside = 0;
-            if (xClosed) ++(xWalk.winding > 0 ? votesInside : votesOutside);
-            if (axes[1].closed[columnIndex(1, k, i, n)]) ++(yWalk.winding > 0 ? votesInside : votesOutside);
-            if (axes[2].closed[zColumn]) ++(zWalk.winding > 0 ? votesInside : votesOutside);
-            std::uint8_t& voxel = mask.inside[row + static_cast<std::size_t>(i)];
-            if (votesInside >= 2 && votesOutside == 0) {
-              voxel = 1;
-            } else if (votesOutside >= 2 && votesInside == 0) {
-              voxel = 0;
-            } else {
-              voxel = 0;
+            if (yWalk.next != yWalk.end && std::fabs(*yWalk.next) < cy) {
+              yWalk.advanceTo(cy);
+              yVote[i] = vote(axes[1].closed[columnIndex(1, kk, i, n)], yWalk.winding);
+            }
+            const std::uint8_t decision = decide[9 * xVote + 3 * yVote[i] + zRow[i]];
+            if (decision == kUndecided) {
+              out[i] = 0;
               undecided[static_cast<std::size_t>(thread)].push_back(row + static_cast<std::size_t>(i));
+            } else {
+              out[i] = decision;
             }
           }
         }
@@ -297,8 +375,10 @@ InsideMask voteOverAxes(const TriangleMesh& mesh, const GridGeometry& grid, int 
   std::vector<std::size_t> pending;
   for (auto& list : undecided) pending.insert(pending.end(), list.begin(), list.end());
   mask.windingNumberVoxels = pending.size();
+  mask.sweepSeconds = lap();
   if (pending.empty()) return mask;
   const WindingNumberTree tree(mesh, threads);
+  mask.treeSeconds = lap();
   ChunkQueue queue(pending.size(), 256);
   onThreads(threads, [&](int) {
     std::size_t begin = 0, end = 0;
@@ -312,6 +392,7 @@ InsideMask voteOverAxes(const TriangleMesh& mesh, const GridGeometry& grid, int 
         mask.inside[index] = orientation * tree(centre) >= 0.5;
       }
   });
+  mask.windingNumberSeconds = lap();
   return mask;
 }
 
@@ -417,13 +498,13 @@ struct WindingNumberTree::Node {
   glm::dvec3 areaNormal{0.0};  // sum of the triangles' normals times their areas
   double area = 0.0;
   double radius = 0.0;      // every triangle of the node lies within this distance of centre
-  std::uint32_t first = 0;  // leaf: first triangle in corners_; inner: index of the second child
+  std::uint32_t first = 0;  // leaf: first triangle in order_; inner: index of the second child
   std::uint32_t count = 0;  // leaf: number of triangles; 0 for an inner node (first child follows it)
 };
 
 namespace {
 
-constexpr std::uint32_t kLeafTriangles = 8;
+constexpr std::uint32_t kLeafTriangles = 12;
 
 // Spreads the low 10 bits of x so that two zero bits follow each.
 std::uint32_t spreadBits(std::uint32_t x) {
@@ -437,44 +518,32 @@ std::uint32_t spreadBits(std::uint32_t x) {
 
 }  // namespace
 
-WindingNumberTree::WindingNumberTree(const TriangleMesh& mesh, int threads) {
+WindingNumberTree::WindingNumberTree(const TriangleMesh& mesh, int threads) : mesh_(&mesh) {
   threads = resolveThreads(threads);
   const std::size_t count = mesh.triangles.size();
   if (count == 0) return;
-  // Per triangle, in parallel: centre, area-weighted normal, area.
-  struct TriangleMoments {
-    glm::dvec3 centre, areaNormal;
-    double area;
-  };
-  std::vector<TriangleMoments> moments(count);
+  // Triangles ordered along a Morton curve of their centres: consecutive runs are compact
+  // clusters, so the tree can split runs in half instead of partitioning at every level.
+  const Box box = mesh.bounds();
+  const glm::dvec3 scale = 1023.0 / glm::max(box.extent(), glm::dvec3(1e-30));
+  std::vector<std::uint64_t> keys(count);
   {
-    ChunkQueue queue(count, 8192);
+    ChunkQueue queue(count, 16384);
     onThreads(threads, [&](int) {
       std::size_t begin = 0, end = 0;
       while (queue.next(begin, end))
         for (std::size_t t = begin; t < end; ++t) {
           const auto& tri = mesh.triangles[t];
-          const glm::dvec3 a(mesh.vertices[tri[0]]), b(mesh.vertices[tri[1]]), c(mesh.vertices[tri[2]]);
-          const glm::dvec3 normal = 0.5 * glm::cross(b - a, c - a);
-          moments[t] = {(a + b + c) / 3.0, normal, glm::length(normal)};
+          const glm::dvec3 centre = (glm::dvec3(mesh.vertices[tri[0]]) + glm::dvec3(mesh.vertices[tri[1]]) +
+                                     glm::dvec3(mesh.vertices[tri[2]])) /
+                                    3.0;
+          const glm::dvec3 q = glm::clamp((centre - box.min) * scale, glm::dvec3(0.0), glm::dvec3(1023.0));
+          const std::uint32_t code = spreadBits(static_cast<std::uint32_t>(q.x)) |
+                                     (spreadBits(static_cast<std::uint32_t>(q.y)) << 1) |
+                                     (spreadBits(static_cast<std::uint32_t>(q.z)) << 2);
+          keys[t] = (static_cast<std::uint64_t>(code) << 32) | static_cast<std::uint64_t>(t);
         }
     });
-  }
-  // Triangles ordered along a Morton curve of their centres: consecutive runs are compact
-  // clusters, so the tree can split runs in half instead of partitioning at every level.
-  Box box{moments[0].centre, moments[0].centre};
-  for (const auto& m : moments) {
-    box.min = glm::min(box.min, m.centre);
-    box.max = glm::max(box.max, m.centre);
-  }
-  const glm::dvec3 scale = 1023.0 / glm::max(box.extent(), glm::dvec3(1e-30));
-  std::vector<std::uint64_t> keys(count);
-  for (std::size_t t = 0; t < count; ++t) {
-    const glm::dvec3 q = (moments[t].centre - box.min) * scale;
-    const std::uint32_t code = spreadBits(static_cast<std::uint32_t>(q.x)) |
-                               (spreadBits(static_cast<std::uint32_t>(q.y)) << 1) |
-                               (spreadBits(static_cast<std::uint32_t>(q.z)) << 2);
-    keys[t] = (static_cast<std::uint64_t>(code) << 32) | static_cast<std::uint64_t>(t);
   }
   // Least-significant-digit radix sort on the 30-bit code (bits 32..61), 10 bits a pass.
   {
@@ -487,55 +556,85 @@ WindingNumberTree::WindingNumberTree(const TriangleMesh& mesh, int threads) {
       keys.swap(scratch);
     }
   }
-  corners_.resize(count);
-  std::vector<std::uint32_t> order(count);
-  for (std::size_t e = 0; e < count; ++e) {
-    order[e] = static_cast<std::uint32_t>(keys[e] & 0xffffffffu);
-    const auto& tri = mesh.triangles[order[e]];
-    corners_[e] = {mesh.vertices[tri[0]], mesh.vertices[tri[1]], mesh.vertices[tri[2]]};
-  }
-  nodes_.reserve(4 * count / kLeafTriangles + 4);
+  order_.resize(count);
+  for (std::size_t e = 0; e < count; ++e) order_[e] = static_cast<std::uint32_t>(keys[e] & 0xffffffffu);
+  std::vector<std::uint64_t>().swap(keys);
+  auto corner = [&](std::uint32_t e, int c) { return glm::dvec3(mesh.vertices[mesh.triangles[order_[e]][c]]); };
   // Depth-first: a node's first child directly follows it, so a query walks memory forward.
-  auto build = [&](auto&& self, std::uint32_t begin, std::uint32_t end) -> std::uint32_t {
-    const auto index = static_cast<std::uint32_t>(nodes_.size());
-    nodes_.emplace_back();
+  // Each top-level subtree is built by its own thread into its own array, then appended.
+  auto build = [&](auto&& self, std::vector<Node>& nodes, std::uint32_t begin, std::uint32_t end) -> std::uint32_t {
+    const auto index = static_cast<std::uint32_t>(nodes.size());
+    nodes.emplace_back();
     Node node;
     if (end - begin <= kLeafTriangles) {
       node.first = begin;
       node.count = end - begin;
       glm::dvec3 weighted(0.0), plain(0.0);
       for (std::uint32_t e = begin; e < end; ++e) {
-        const TriangleMoments& m = moments[order[e]];
-        node.areaNormal += m.areaNormal;
-        node.area += m.area;
-        weighted += m.area * m.centre;
-        plain += m.centre;
+        const glm::dvec3 a = corner(e, 0), b = corner(e, 1), c = corner(e, 2);
+        const glm::dvec3 normal = 0.5 * glm::cross(b - a, c - a);
+        const double area = glm::length(normal);
+        const glm::dvec3 centre = (a + b + c) / 3.0;
+        node.areaNormal += normal;
+        node.area += area;
+        weighted += area * centre;
+        plain += centre;
       }
       node.centre = node.area > 0.0 ? weighted / node.area : plain / static_cast<double>(end - begin);
       double radius2 = 0.0;
       for (std::uint32_t e = begin; e < end; ++e)
-        for (const glm::vec3& corner : corners_[e]) {
-          const glm::dvec3 d = glm::dvec3(corner) - node.centre;
+        for (int c = 0; c < 3; ++c) {
+          const glm::dvec3 d = corner(e, c) - node.centre;
           radius2 = std::max(radius2, glm::dot(d, d));
         }
       node.radius = std::sqrt(radius2);
     } else {
       const std::uint32_t middle = begin + (end - begin) / 2;
-      const std::uint32_t left = self(self, begin, middle);
-      const std::uint32_t right = self(self, middle, end);
-      const Node& l = nodes_[left];
-      const Node& r = nodes_[right];
-      node.first = right;
-      node.areaNormal = l.areaNormal + r.areaNormal;
-      node.area = l.area + r.area;
-      node.centre = node.area > 0.0 ? (l.area * l.centre + r.area * r.centre) / node.area : 0.5 * (l.centre + r.centre);
-      node.radius =
-          std::max(glm::length(l.centre - node.centre) + l.radius, glm::length(r.centre - node.centre) + r.radius);
+      const std::uint32_t left = self(self, nodes, begin, middle);
+      const std::uint32_t right = self(self, nodes, middle, end);
+      node = combine(nodes[left], nodes[right], right);
     }
-    nodes_[index] = node;
+    nodes[index] = node;
     return index;
   };
-  build(build, 0, static_cast<std::uint32_t>(count));
+  const auto total = static_cast<std::uint32_t>(count);
+  if (threads < 2 || total <= 2 * kLeafTriangles) {
+    nodes_.reserve(2 * count / kLeafTriangles * 2 + 4);
+    build(build, nodes_, 0, total);
+    return;
+  }
+  const std::uint32_t middle = total / 2;
+  std::vector<Node> leftNodes, rightNodes;
+  leftNodes.reserve(2 * count / kLeafTriangles + 4);
+  rightNodes.reserve(2 * count / kLeafTriangles + 4);
+  {
+    std::jthread right([&] { build(build, rightNodes, middle, total); });
+    build(build, leftNodes, 0, middle);
+  }
+  // Root, then the left subtree (offset 1), then the right one: shift the child links.
+  const auto rightOffset = static_cast<std::uint32_t>(1 + leftNodes.size());
+  nodes_.reserve(1 + leftNodes.size() + rightNodes.size());
+  nodes_.push_back(combine(leftNodes[0], rightNodes[0], rightOffset));
+  for (Node node : leftNodes) {
+    if (node.count == 0) node.first += 1;
+    nodes_.push_back(node);
+  }
+  for (Node node : rightNodes) {
+    if (node.count == 0) node.first += rightOffset;
+    nodes_.push_back(node);
+  }
+}
+
+WindingNumberTree::Node WindingNumberTree::combine(const Node& l, const Node& r, std::uint32_t rightIndex) {
+  Node node;
+  node.first = rightIndex;
+  node.count = 0;
+  node.areaNormal = l.areaNormal + r.areaNormal;
+  node.area = l.area + r.area;
+  node.centre = node.area > 0.0 ? (l.area * l.centre + r.area * r.centre) / node.area : 0.5 * (l.centre + r.centre);
+  node.radius =
+      std::max(glm::length(l.centre - node.centre) + l.radius, glm::length(r.centre - node.centre) + r.radius);
+  return node;
 }
 
 WindingNumberTree::~WindingNumberTree() = default;
@@ -556,8 +655,9 @@ double WindingNumberTree::operator()(const glm::dvec3& point, double accuracy) c
       sum += glm::dot(toCentre, node.areaNormal) / (distance2 * std::sqrt(distance2));
     } else if (node.count > 0) {
       for (std::uint32_t e = node.first; e < node.first + node.count; ++e) {
-        const auto& c = corners_[e];
-        sum += solidAngle(glm::dvec3(c[0]) - point, glm::dvec3(c[1]) - point, glm::dvec3(c[2]) - point);
+        const auto& tri = mesh_->triangles[order_[e]];
+        sum += solidAngle(glm::dvec3(mesh_->vertices[tri[0]]) - point, glm::dvec3(mesh_->vertices[tri[1]]) - point,
+                          glm::dvec3(mesh_->vertices[tri[2]]) - point);
       }
     } else {
       const auto self = static_cast<std::uint32_t>(&node - nodes_.data());

@@ -36,6 +36,8 @@ struct InsideMask {
   GridGeometry geometry;
   std::vector<std::uint8_t> inside;     // 1 inside, 0 outside; geometry.index order
   std::size_t windingNumberVoxels = 0;  // voxels the ray votes left to the winding number (statistics)
+  // Where the time went (statistics): crossings, the voting sweep, the winding-number tree and its queries.
+  double crossingSeconds = 0.0, sweepSeconds = 0.0, treeSeconds = 0.0, windingNumberSeconds = 0.0;
 
   bool at(int i, int j, int k) const { return inside[geometry.index(i, j, k)] != 0; }
   double insideFraction() const;
@@ -54,7 +56,8 @@ int meshOrientation(const TriangleMesh& mesh);
 
 // The fast winding number: a bounding-volume hierarchy over the triangles; a cluster farther than
 // `accuracy` times its radius from the query point is replaced by its dipole (the area-weighted
-// normal sum at its area-weighted centre). Built once, queried from any number of threads.
+// normal sum at its area-weighted centre). Built once, queried from any number of threads; the
+// mesh must outlive the tree.
 class WindingNumberTree {
  public:
   explicit WindingNumberTree(const TriangleMesh& mesh, int threads = 0);  // threads: 0 means all
@@ -66,8 +69,10 @@ class WindingNumberTree {
 
  private:
   struct Node;
+  static Node combine(const Node& left, const Node& right, std::uint32_t rightIndex);
   std::vector<Node> nodes_;
-  std::vector<std::array<glm::vec3, 3>> corners_;  // triangles in leaf order
+  const TriangleMesh* mesh_;
+  std::vector<std::uint32_t> order_;  // triangle indices in leaf order
 };
 
 }  // namespace voxflame::core

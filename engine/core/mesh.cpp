@@ -1,13 +1,23 @@
 #include "mesh.h"
 
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 
 #include <algorithm>
+#include <cerrno>
+#include <chrono>
 #include <cmath>
+#include <cstring>
+#include <functional>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -30,12 +40,44 @@ Box TriangleMesh::bounds() const {
 
 namespace {
 
-constexpr unsigned kImportFlags =
+// Reading is two steps. The reader's output is checked first (ValidateDataStructure, then our
+// own check of every face), because Assimp's post-processing asserts, i.e. aborts the program,
+// on some malformed faces a corrupt file yields (a face with no vertices). Only then are node
+// transforms applied and meshes merged (PreTransformVertices), polygons of any size split
+// (Triangulate) and shared corners joined, so that neighbouring triangles share vertex indices.
+constexpr unsigned kReadFlags = aiProcess_ValidateDataStructure;
+constexpr unsigned kPostProcessFlags =
     aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_SortByPType | aiProcess_PreTransformVertices;
 
-void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, TriangleMesh& out) {
+// Throws core::Error naming the file when the reader produced faces post-processing cannot take.
+void checkFaces(const aiScene& scene, const std::string& name) {
+  for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+    const aiMesh* mesh = scene.mMeshes[m];
+    if (!mesh || (mesh->mNumVertices > 0 && !mesh->mVertices))
+      throw Error("mesh '" + name + "' is corrupt: a sub-mesh has no vertex data");
+    for (unsigned f = 0; f < mesh->mNumFaces; ++f) {
+      const aiFace& face = mesh->mFaces[f];
+      if (face.mNumIndices == 0 || !face.mIndices)
+        throw Error("mesh '" + name + "' is corrupt: face " + std::to_string(f + 1) + " has no vertices");
+      for (unsigned c = 0; c < face.mNumIndices; ++c)
+        if (face.mIndices[c] >= mesh->mNumVertices)
+          throw Error("mesh '" + name + "' is corrupt: face " + std::to_string(f + 1) + " uses vertex index " +
+                      std::to_string(face.mIndices[c]) + ", out of range (the mesh has " +
+                      std::to_string(mesh->mNumVertices) + " vertices)");
+    }
+  }
+}
+
+struct PrimitiveCounts {
+  std::size_t points = 0, lines = 0, degenerate = 0;
+};
+
+void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent, TriangleMesh& out,
+                PrimitiveCounts& skipped) {
   const aiMatrix4x4 transform = parent * node.mTransformation;
   for (unsigned m = 0; m < node.mNumMeshes; ++m) {
+    if (node.mMeshes[m] >= scene.mNumMeshes)
+      throw Error("mesh '" + out.name + "' refers to a sub-mesh that does not exist");
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[m]];
     const auto base = static_cast<std::uint32_t>(out.vertices.size());
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
@@ -44,25 +86,77 @@ void appendNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& par
     }
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
+      if (face.mNumIndices == 1) ++skipped.points;
+      if (face.mNumIndices == 2) ++skipped.lines;
       if (face.mNumIndices != 3) continue;  // points and lines carry no volume
+      for (unsigned c = 0; c < 3; ++c)
+        if (face.mIndices[c] >= mesh.mNumVertices)
+          throw Error("mesh '" + out.name + "' has a face using vertex " + std::to_string(face.mIndices[c] + 1) +
+                      ", but its mesh has only " + std::to_string(mesh.mNumVertices) + " vertices");
       const std::array<std::uint32_t, 3> tri{base + face.mIndices[0], base + face.mIndices[1], base + face.mIndices[2]};
-      if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2]) continue;
+      // Repeated corners or corners on one line: no area, no crossing, no winding number.
+      const glm::vec3 a = out.vertices[tri[0]], b = out.vertices[tri[1]], c = out.vertices[tri[2]];
+      const glm::vec3 normal = glm::cross(b - a, c - a);
+      if (tri[0] == tri[1] || tri[1] == tri[2] || tri[0] == tri[2] || glm::dot(normal, normal) == 0.0f) {
+        ++skipped.degenerate;
+        continue;
+      }
       out.triangles.push_back(tri);
     }
   }
-  for (unsigned c = 0; c < node.mNumChildren; ++c) appendNode(scene, *node.mChildren[c], transform, out);
+  for (unsigned c = 0; c < node.mNumChildren; ++c) appendNode(scene, *node.mChildren[c], transform, out, skipped);
 }
 
-TriangleMesh convertScene(const aiScene* scene, Assimp::Importer& importer, std::string_view displayName) {
-  if (!scene || !scene->mRootNode) {
-    std::string reason = importer.GetErrorString();
-    if (reason.empty()) reason = "not a mesh Assimp can read";
-    throw Error("cannot read mesh '" + std::string(displayName) + "': " + reason);
-  }
+void throwReadError(Assimp::Importer& importer, const std::string& name) {
+  const std::string reason = importer.GetErrorString();
+  if (reason.find("mNumMeshes is 0") != std::string::npos)
+    throw Error("mesh '" + name + "' holds no geometry (empty, corrupt, or not the format its name says)");
+  if (reason.find("out of range") != std::string::npos)
+    throw Error("mesh '" + name + "' is corrupt: a face uses a vertex index out of range (" + reason + ")");
+  if (reason.find("Validation failed") != std::string::npos)
+    throw Error("mesh '" + name + "' is corrupt or truncated (" + reason + ")");
+  if (reason.empty()) throw Error("cannot read mesh '" + name + "': not a mesh format Assimp can read");
+  throw Error("cannot read mesh '" + name + "': " + reason);
+}
+
+// `read` is the scene as the reader returned it (owned by `importer`).
+TriangleMesh convertScene(const aiScene* read, Assimp::Importer& importer, std::string_view displayName) {
+  if (!read || !read->mRootNode) throwReadError(importer, std::string(displayName));
+  checkFaces(*read, std::string(displayName));
+  const aiScene* scene = importer.ApplyPostProcessing(kPostProcessFlags);
+  if (!scene || !scene->mRootNode) throwReadError(importer, std::string(displayName));
   TriangleMesh mesh;
   mesh.name = std::string(displayName);
-  appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), mesh);
-  if (mesh.triangles.empty()) throw Error("mesh '" + mesh.name + "' has no triangles (only points or lines, or empty)");
+  if (scene->mNumMeshes == 0)
+    throw Error("mesh '" + mesh.name +
+                "' holds no geometry (an empty scene, or not a file of the format its name says)");
+  PrimitiveCounts skipped;
+  appendNode(*scene, *scene->mRootNode, aiMatrix4x4(), mesh, skipped);
+  if (mesh.triangles.empty()) {
+    if (skipped.points + skipped.lines > 0)
+      throw Error("mesh '" + mesh.name + "' has only points or lines (" + std::to_string(skipped.points) + " points, " +
+                  std::to_string(skipped.lines) + " lines), no triangles to enclose a volume");
+    if (skipped.degenerate > 0)
+      throw Error("mesh '" + mesh.name + "' has no triangles with any area (all " + std::to_string(skipped.degenerate) +
+                  " are degenerate)");
+    throw Error("mesh '" + mesh.name + "' has no triangles");
+  }
+  // Keep only the vertices triangles use: stray points (or the corners of dropped lines) must
+  // not stretch the bounding box the grid is fitted to.
+  {
+    std::vector<std::uint32_t> remap(mesh.vertices.size(), UINT32_MAX);
+    std::vector<glm::vec3> used;
+    used.reserve(mesh.vertices.size());
+    for (auto& tri : mesh.triangles)
+      for (std::uint32_t& v : tri) {
+        if (remap[v] == UINT32_MAX) {
+          remap[v] = static_cast<std::uint32_t>(used.size());
+          used.push_back(mesh.vertices[v]);
+        }
+        v = remap[v];
+      }
+    mesh.vertices = std::move(used);
+  }
   for (const auto& v : mesh.vertices)
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
       throw Error("mesh '" + mesh.name + "' has a vertex that is not a finite number");
@@ -148,30 +242,141 @@ void checkPlyComplete(std::span<const std::byte> data, const std::string& name) 
 
 }  // namespace
 
-TriangleMesh loadMesh(const std::filesystem::path& path) {
+namespace {
+
+// Assimp's readers are not hardened against corrupt input: a flipped byte can crash one (binary
+// PLY) or send one into an endless loop (Collada). So the import runs in a child process that
+// sends the finished mesh, or its error message, back through a pipe; a child that crashes or
+// overruns its time limit is reported as a corrupt file instead of taking voxflame down.
+
+bool writeAll(int fd, const void* data, std::size_t size) {
+  const char* bytes = static_cast<const char*>(data);
+  while (size > 0) {
+    const ssize_t written = ::write(fd, bytes, size);
+    if (written < 0 && errno == EINTR) continue;
+    if (written <= 0) return false;
+    bytes += written;
+    size -= static_cast<std::size_t>(written);
+  }
+  return true;
+}
+
+[[noreturn]] void childSendsResult(int fd, const std::function<TriangleMesh()>& import) {
+  std::string message;
+  try {
+    const TriangleMesh mesh = import();
+    const std::uint64_t counts[2] = {mesh.vertices.size(), mesh.triangles.size()};
+    const char ok = 1;
+    const bool sent = writeAll(fd, &ok, 1) && writeAll(fd, counts, sizeof counts) &&
+                      writeAll(fd, mesh.vertices.data(), mesh.vertices.size() * sizeof(glm::vec3)) &&
+                      writeAll(fd, mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]));
+    ::_exit(sent ? 0 : 3);
+  } catch (const std::exception& e) {
+    message = e.what();
+  } catch (...) {
+    message = "unknown failure";
+  }
+  const char failed = 0;
+  writeAll(fd, &failed, 1);
+  writeAll(fd, message.data(), message.size());
+  ::_exit(0);
+}
+
+TriangleMesh importIsolated(const std::string& name, std::uint64_t fileBytes, double timeLimitSeconds,
+                            const std::function<TriangleMesh()>& import) {
+  if (timeLimitSeconds <= 0.0) timeLimitSeconds = 30.0 + 4.0 * static_cast<double>(fileBytes) / (1024.0 * 1024.0);
+  int fds[2];
+  if (::pipe(fds) != 0) return import();  // no pipe to spare: read in this process, unprotected
+  const pid_t child = ::fork();
+  if (child < 0) {
+    ::close(fds[0]);
+    ::close(fds[1]);
+    return import();
+  }
+  if (child == 0) {
+    ::close(fds[0]);
+    childSendsResult(fds[1], import);
+  }
+  ::close(fds[1]);
+  std::string received;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeLimitSeconds);
+  bool timedOut = false;
+  char buffer[1 << 16];
+  for (;;) {
+    const double left = std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count();
+    if (left <= 0.0) {
+      timedOut = true;
+      break;
+    }
+    pollfd poller{fds[0], POLLIN, 0};
+    const int ready = ::poll(&poller, 1, static_cast<int>(std::min(left * 1000.0, 1000.0)) + 1);
+    if (ready < 0 && errno == EINTR) continue;
+    if (ready <= 0) continue;
+    const ssize_t got = ::read(fds[0], buffer, sizeof buffer);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) break;
+    received.append(buffer, static_cast<std::size_t>(got));
+  }
+  ::close(fds[0]);
+  if (timedOut) ::kill(child, SIGKILL);
+  int status = 0;
+  while (::waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (timedOut)
+    throw Error("mesh '" + name + "' could not be read within " + std::to_string(static_cast<int>(timeLimitSeconds)) +
+                " s: the importer got stuck on it (corrupt or truncated file?)");
+  if (WIFSIGNALED(status) || received.empty())
+    throw Error("mesh '" + name + "' is corrupt: the importer failed on it" +
+                (WIFSIGNALED(status) ? " (signal " + std::to_string(WTERMSIG(status)) + ")" : std::string()));
+  if (received[0] == 0) throw Error(received.substr(1));
+  std::uint64_t counts[2] = {0, 0};
+  if (received.size() < 1 + sizeof counts) throw Error("mesh '" + name + "': the importer's answer was cut short");
+  std::memcpy(counts, received.data() + 1, sizeof counts);
+  TriangleMesh mesh;
+  mesh.name = name;
+  const std::size_t vertexBytes = counts[0] * sizeof(glm::vec3);
+  const std::size_t triangleBytes = counts[1] * sizeof(mesh.triangles[0]);
+  if (received.size() != 1 + sizeof counts + vertexBytes + triangleBytes)
+    throw Error("mesh '" + name + "': the importer's answer was cut short");
+  mesh.vertices.resize(counts[0]);
+  mesh.triangles.resize(counts[1]);
+  std::memcpy(mesh.vertices.data(), received.data() + 1 + sizeof counts, vertexBytes);
+  std::memcpy(mesh.triangles.data(), received.data() + 1 + sizeof counts + vertexBytes, triangleBytes);
+  return mesh;
+}
+
+}  // namespace
+
+TriangleMesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& options) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw Error("mesh file '" + path.string() + "' does not exist");
   if (std::filesystem::is_directory(path, ec)) throw Error("mesh path '" + path.string() + "' is a folder, not a file");
-  if (std::filesystem::file_size(path, ec) == 0) throw Error("mesh file '" + path.string() + "' is empty");
+  const std::uint64_t size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error("cannot read mesh file '" + path.string() + "': " + ec.message());
+  if (size == 0) throw Error("mesh file '" + path.string() + "' is empty");
   if (path.extension() == ".ply" || path.extension() == ".PLY") {
     std::ifstream in(path, std::ios::binary);
     std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (!in && !in.eof()) throw Error("cannot read mesh file '" + path.string() + "'");
-    return loadMeshFromMemory(std::as_bytes(std::span<const char>(bytes)), "ply", path.string());
+    return loadMeshFromMemory(std::as_bytes(std::span<const char>(bytes)), "ply", path.string(), options);
   }
-  Assimp::Importer importer;
-  const aiScene* scene = importer.ReadFile(path.string(), kImportFlags);
-  return convertScene(scene, importer, path.string());
+  return importIsolated(path.string(), size, options.timeLimitSeconds, [&] {
+    Assimp::Importer importer;
+    const aiScene* scene = importer.ReadFile(path.string(), kReadFlags);
+    return convertScene(scene, importer, path.string());
+  });
 }
 
 TriangleMesh loadMeshFromMemory(std::span<const std::byte> data, std::string_view extensionHint,
-                                std::string_view displayName) {
+                                std::string_view displayName, const MeshLoadOptions& options) {
   if (data.empty()) throw Error("mesh '" + std::string(displayName) + "' is empty");
   if (extensionHint == "ply" || extensionHint == "PLY") checkPlyComplete(data, std::string(displayName));
-  Assimp::Importer importer;
-  const aiScene* scene =
-      importer.ReadFileFromMemory(data.data(), data.size(), kImportFlags, std::string(extensionHint).c_str());
-  return convertScene(scene, importer, displayName);
+  return importIsolated(std::string(displayName), data.size(), options.timeLimitSeconds, [&] {
+    Assimp::Importer importer;
+    const aiScene* scene =
+        importer.ReadFileFromMemory(data.data(), data.size(), kReadFlags, std::string(extensionHint).c_str());
+    return convertScene(scene, importer, displayName);
+  });
 }
 
 }  // namespace voxflame::core

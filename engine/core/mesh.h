@@ -32,12 +32,20 @@ struct TriangleMesh {
   Box bounds() const;
 };
 
-// Loads and merges every mesh of the file. Throws core::Error naming the file on any problem.
-TriangleMesh loadMesh(const std::filesystem::path& path);
+struct MeshLoadOptions {
+  // The importer runs in a child process and is stopped after this long (a corrupt file can send
+  // Assimp into an endless loop). 0: 30 s plus 4 s per MB of file.
+  double timeLimitSeconds = 0.0;
+};
+
+// Loads and merges every mesh of the file. Throws core::Error naming the file on any problem:
+// missing, empty, corrupt, truncated, no triangles, only points or lines, indices out of range,
+// flat. A file that crashes or hangs the importer is reported as corrupt; voxflame carries on.
+TriangleMesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& options = {});
 
 // Same, from bytes in memory (an embedded resource); extensionHint is the format's extension
 // without the dot ("obj", "ply") and displayName is what messages call it.
 TriangleMesh loadMeshFromMemory(std::span<const std::byte> data, std::string_view extensionHint,
-                                std::string_view displayName);
+                                std::string_view displayName, const MeshLoadOptions& options = {});
 
 }  // namespace voxflame::core
