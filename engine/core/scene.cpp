@@ -19,6 +19,28 @@ std::filesystem::path Scene::resolvedMeshPath() const {
   return baseDirectory / mesh;
 }
 
+std::string_view toString(ColorMode mode) {
+  switch (mode) {
+    case ColorMode::Speed:
+      return "speed";
+    case ColorMode::Curvature:
+      return "curvature";
+    case ColorMode::Time:
+      return "time";
+    case ColorMode::Axis:
+      return "axis";
+    case ColorMode::Distance:
+      return "distance";
+  }
+  return "speed";
+}
+
+ColorMode colorModeFromString(std::string_view name) {
+  for (ColorMode mode : {ColorMode::Speed, ColorMode::Curvature, ColorMode::Time, ColorMode::Axis, ColorMode::Distance})
+    if (toString(mode) == name) return mode;
+  throw Error("is '" + std::string(name) + "'; the known colour modes are: speed, curvature, time, axis, distance");
+}
+
 namespace {
 
 // Reads one JSON object strictly: every key read is remembered, and finish() reports any key
