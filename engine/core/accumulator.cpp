@@ -3,6 +3,13 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -26,8 +33,9 @@ constexpr int kProbeTransient = 2'000;
 constexpr int kProbeSamplesPerOrbit = 1'000;
 constexpr std::size_t kSeedPoolSize = 1'024;
 constexpr double kProbeEscape = 1e8;
-constexpr int kMaxSlabs = 64;                 // grid slabs, each with its own mutex and bucket
-constexpr std::size_t kBucketCapacity = 512;  // splats collected per slab before a flush
+constexpr int kMaxSlabs = 64;                       // grid slabs, each with its own mutex
+constexpr std::size_t kFlushThreshold = 8'192;      // splats a thread collects before adding them to the grid
+constexpr std::uint32_t kOutsideBit = 0x80000000u;  // in GridCell::density: the voxel is outside the mask
 
 double nowSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -239,21 +247,25 @@ struct OrbitBatch {
   std::vector<std::int32_t> age;                        // steps since (re)seeding, saturating
   std::vector<std::int32_t> voxel;                      // this step's voxel, -1 when none
   std::vector<std::int32_t> colorIndex;                 // this step's palette entry (0..255)
-  std::vector<std::int32_t> escaped;                    // 32-bit like voxel: one vector width
+  std::vector<std::int32_t> escaped;
+  std::vector<std::int32_t> brick;  // this step's 4×4×4 brick of the grid, 0 when none                    // 32-bit
+                                    // like voxel: one vector width
   SplitMix64 rng{0};
   std::uint64_t generation = ~std::uint64_t{0};
 };
 
-// Each thread's splats, bucketed by grid slab. A bucket is flushed under its slab's mutex when
-// full and at the end of every batch. Entry: voxel index in the low 32 bits, packed RGB above.
+// Each thread's splats: appended in orbit order, then sorted by grid slab (a counting sort) and
+// added slab by slab under that slab's mutex. Entry: voxel index in the low 32 bits, packed RGB above.
 struct SplatBuffer {
-  std::vector<std::uint64_t> entries;  // (slabs + 1) buckets of kBucketCapacity; the last discards
-  std::vector<std::size_t> counts;
-  std::size_t slabs = 0;
-  void reset(std::size_t slabCount) {
-    slabs = slabCount;
-    entries.assign((slabs + 1) * kBucketCapacity, 0);
-    counts.assign(slabs + 1, 0);
+  std::vector<std::uint64_t> entries;  // kFlushThreshold plus room for one more step of every orbit
+  std::vector<std::uint64_t> sorted;
+  std::vector<std::size_t> slabStart;
+  std::size_t count = 0;
+  void reset(std::size_t slabs) {
+    entries.assign(kFlushThreshold + kOrbitsPerBatch, 0);
+    sorted.assign(entries.size(), 0);
+    slabStart.assign(slabs + 1, 0);
+    count = 0;
   }
 };
 
@@ -265,6 +277,7 @@ struct LayerKernel {
   double o[3];
   double gridSize[3];
   std::int32_t sizeX, sizeXY;
+  std::int32_t bricksX, bricksXY;
   double escapeRadius;
   double colorScale;  // mode value × colorScale = gradient position (before clamping to [0, 1])
   double inversePeriod;
@@ -284,6 +297,8 @@ LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
   }
   k.sizeX = grid.size.x;
   k.sizeXY = grid.size.x * grid.size.y;
+  k.bricksX = (grid.size.x + 3) / 4;
+  k.bricksXY = k.bricksX * ((grid.size.y + 3) / 4);
   k.escapeRadius = layer.escapeRadius;
   const ColorSettings& color = layer.layer.color;
   const glm::dvec3 axis = glm::normalize(color.axis);
@@ -322,8 +337,8 @@ LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
   const LayerKernel &kernel, const double *__restrict x, const double *__restrict y, const double *__restrict z,  \
       double *__restrict px, double *__restrict py, double *__restrict pz, double *__restrict sx,                 \
       double *__restrict sy, double *__restrict sz, std::int32_t *__restrict age, std::int32_t *__restrict voxel, \
-      std::int32_t *__restrict colorIndex, std::int32_t *__restrict escaped
-#define VOXFLAME_CLASSIFY_ARGS kernel, x, y, z, px, py, pz, sx, sy, sz, age, voxel, colorIndex, escaped
+      std::int32_t *__restrict colorIndex, std::int32_t *__restrict escaped, std::int32_t *__restrict brick
+#define VOXFLAME_CLASSIFY_ARGS kernel, x, y, z, px, py, pz, sx, sy, sz, age, voxel, colorIndex, escaped, brick
 
 // One pass over a batch after it advanced: escape test, colour value, voxel index. Bitwise &
 // (not &&) and selects keep the body one basic block so it vectorises across orbits; the colour
@@ -366,7 +381,10 @@ template <ColorMode kMode>
     const auto vi = static_cast<std::int32_t>(inGrid ? gx : 0.0);
     const auto vj = static_cast<std::int32_t>(inGrid ? gy : 0.0);
     const auto vk = static_cast<std::int32_t>(inGrid ? gz : 0.0);
-    voxel[i] = inGrid ? vi + k.sizeX * vj + k.sizeXY * vk : -1;
+    // -1: outside the grid (counted as outside); -2: not a point yet (transient or escaped).
+    const bool settled = finite & (age[i] > kTransientSteps);
+    voxel[i] = settled ? (inGrid ? vi + k.sizeX * vj + k.sizeXY * vk : -1) : -2;
+    brick[i] = (vi >> 2) + k.bricksX * (vj >> 2) + k.bricksXY * (vk >> 2);
     escaped[i] = finite ? 0 : 1;
     sx[i] = dx;
     sy[i] = dy;
@@ -397,7 +415,7 @@ using ClassifyFn = void (*)(VOXFLAME_CLASSIFY_PARAMS);
 
 void classifyBatch(ClassifyFn classify, const LayerKernel& kernel, OrbitBatch& b) {
   classify(kernel, b.x.data(), b.y.data(), b.z.data(), b.px.data(), b.py.data(), b.pz.data(), b.sx.data(), b.sy.data(),
-           b.sz.data(), b.age.data(), b.voxel.data(), b.colorIndex.data(), b.escaped.data());
+           b.sz.data(), b.age.data(), b.voxel.data(), b.colorIndex.data(), b.escaped.data(), b.brick.data());
 }
 
 ClassifyFn classifier(ColorMode mode) {
@@ -434,14 +452,45 @@ ClassifyFn classifier(ColorMode mode) {
 
 }  // namespace
 
+namespace detail {
+
+void CellBuffer::Free::operator()(void* p) const {
+  std::free(p);
+}
+
+void CellBuffer::allocate(std::size_t count) {
+  constexpr std::size_t kHugePage = std::size_t{2} << 20;
+  const std::size_t bytes = (count * sizeof(GridCell) + kHugePage - 1) / kHugePage * kHugePage;
+  void* memory = std::aligned_alloc(kHugePage, bytes);
+  if (!memory) throw std::bad_alloc();
+#if defined(__linux__)
+  madvise(memory, bytes, MADV_HUGEPAGE);  // a hint: without it (or if refused) 4 KiB pages still work
+#endif
+  std::memset(memory, 0, bytes);
+  cells_.reset(static_cast<GridCell*>(memory));
+  count_ = count;
+}
+
+}  // namespace detail
+
 Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : mask_(std::move(mask)) {
   if (!mask_) throw Error("the accumulator needs an inside mask");
   const std::size_t voxels = mask_->geometry.voxelCount();
   if (voxels == 0 || voxels >= (std::size_t{1} << 31)) throw Error("the accumulation grid must have 1 to 2^31 voxels");
-  cells_.assign(voxels, detail::GridCell{});
-  insideBits_.assign((voxels + 63) / 64, 0);
-  for (std::size_t v = 0; v < voxels; ++v)
-    if (mask_->inside[v]) insideBits_[v / 64] |= std::uint64_t{1} << (v % 64);
+  cells_.allocate(voxels);
+  {
+    const GridGeometry& g = mask_->geometry;
+    const int bx = (g.size.x + 3) / 4, by = (g.size.y + 3) / 4, bz = (g.size.z + 3) / 4;
+    brickBits_.assign((static_cast<std::size_t>(bx) * by * bz + 63) / 64 + 1, 0);
+    for (int k = 0; k < g.size.z; ++k)
+      for (int j = 0; j < g.size.y; ++j)
+        for (int i = 0; i < g.size.x; ++i)
+          if (mask_->inside[g.index(i, j, k)]) {
+            const auto brick = static_cast<std::size_t>((i / 4) + bx * ((j / 4) + by * (k / 4)));
+            brickBits_[brick / 64] |= std::uint64_t{1} << (brick % 64);
+          }
+  }
+  clearCells();
   while (((voxels - 1) >> slabShift_) + 1 > static_cast<std::size_t>(kMaxSlabs)) ++slabShift_;
   slabCount_ = ((voxels - 1) >> slabShift_) + 1;
   slabMutexes_ = std::make_unique<std::mutex[]>(slabCount_);
@@ -470,7 +519,7 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     layers_ = std::move(prepared);
     seed_ = seed;
     problem_ = problem;
-    std::fill(cells_.begin(), cells_.end(), detail::GridCell{});
+    clearCells();
     iterations_ = 0;
     points_ = 0;
     outside_ = 0;
@@ -483,6 +532,12 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
   }
   wake_.notify_all();
   doneSignal_.notify_all();
+}
+
+void Accumulator::clearCells() {
+  const std::uint8_t* inside = mask_->inside.data();
+  for (std::size_t v = 0; v < cells_.size(); ++v)
+    cells_[v] = detail::GridCell{inside[v] ? 0u : kOutsideBit, 0u, 0u, 0u};
 }
 
 void Accumulator::setTargetPoints(std::uint64_t target) {
@@ -529,7 +584,8 @@ void Accumulator::snapshot(VolumeSnapshot& out) const {
     const std::size_t begin = slab << slabShift_;
     const std::size_t end = std::min(voxels, (slab + 1) << slabShift_);
     for (std::size_t v = begin; v < end; ++v) {
-      const detail::GridCell cell = cells_[v];
+      detail::GridCell cell = cells_[v];
+      cell.density &= ~kOutsideBit;
       out.density[v] = static_cast<float>(cell.density);
       maxDensity = std::max(maxDensity, out.density[v]);
       std::uint8_t* rgba = &out.rgba[4 * v];
@@ -566,23 +622,46 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
   }
 }
 
-void Accumulator::flushSlab(std::size_t slab, const std::uint64_t* entries, std::size_t count) {
-  constexpr std::size_t kPrefetchDistance = 8;
+std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {
+  // Counting sort by slab, so each slab's mutex is taken once per flush.
+  const std::size_t count = splats.count;
+  const std::uint64_t* entries = splats.entries.data();
+  std::size_t* start = splats.slabStart.data();
+  std::fill(splats.slabStart.begin(), splats.slabStart.end(), 0);
+  for (std::size_t e = 0; e < count; ++e) ++start[(static_cast<std::uint32_t>(entries[e]) >> slabShift_) + 1];
+  for (std::size_t slab = 0; slab < slabCount_; ++slab) start[slab + 1] += start[slab];
+  std::uint64_t* sorted = splats.sorted.data();
+  for (std::size_t e = 0; e < count; ++e)
+    sorted[start[static_cast<std::uint32_t>(entries[e]) >> slabShift_]++] = entries[e];
+  // start[slab] is now the end of that slab's run (and the beginning of the next one's).
+
+  constexpr std::size_t kPrefetchDistance = 32;
   detail::GridCell* cells = cells_.data();
-  std::lock_guard lock(slabMutexes_[slab]);
-  for (std::size_t e = 0; e < count; ++e) {
-    // The adds are independent plain stores, so the CPU overlaps their cache misses; prefetching
-    // a few entries ahead hides most of the rest.
-    if (e + kPrefetchDistance < count)
-      __builtin_prefetch(&cells[static_cast<std::uint32_t>(entries[e + kPrefetchDistance])], 1);
-    const std::uint64_t entry = entries[e];
-    detail::GridCell& cell = cells[static_cast<std::uint32_t>(entry)];
-    const auto rgb = static_cast<std::uint32_t>(entry >> 32);
-    cell.density += 1;
-    cell.red += rgb & 0xffu;
-    cell.green += (rgb >> 8) & 0xffu;
-    cell.blue += rgb >> 16;
+  std::uint64_t inside = 0;
+  std::size_t begin = 0;
+  for (std::size_t slab = 0; slab < slabCount_; ++slab) {
+    const std::size_t end = start[slab];
+    if (end == begin) continue;
+    std::lock_guard lock(slabMutexes_[slab]);
+    for (std::size_t e = begin; e < end; ++e) {
+      // The adds are independent plain stores, so the CPU overlaps their cache misses;
+      // prefetching a few entries ahead hides most of the rest.
+      if (e + kPrefetchDistance < end)
+        __builtin_prefetch(&cells[static_cast<std::uint32_t>(sorted[e + kPrefetchDistance])], 1);
+      const std::uint64_t entry = sorted[e];
+      detail::GridCell& cell = cells[static_cast<std::uint32_t>(entry)];
+      const auto rgb = static_cast<std::uint32_t>(entry >> 32);
+      // Branch-free: a voxel outside the mask (flag set) gets zero added.
+      const std::uint32_t in = (~cell.density) >> 31;
+      cell.density += in;
+      cell.red += in * (rgb & 0xffu);
+      cell.green += in * ((rgb >> 8) & 0xffu);
+      cell.blue += in * (rgb >> 16);
+      inside += in;
+    }
+    begin = end;
   }
+  return inside;
 }
 
 void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vector<OrbitBatch>& batches,
@@ -590,16 +669,14 @@ void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vecto
   std::shared_lock lock(gridMutex_);
   if (generation != generation_.load()) return;  // a new pattern arrived; pick it up next time
   const GridGeometry& grid = mask_->geometry;
-  const std::uint64_t* insideBits = insideBits_.data();
+
   batches.resize(layers_.size());
 
   double maxWeight = 0.0;
   for (const auto& l : layers_) maxWeight = std::max(maxWeight, l.layer.weight);
 
   std::uint64_t iterations = 0, points = 0, outside = 0, escapes = 0;
-  std::uint64_t* bucketEntries = splats.entries.data();
-  std::size_t* counts = splats.counts.data();
-  const std::size_t discard = splats.slabs;
+
   for (std::size_t li = 0; li < layers_.size(); ++li) {
     const PreparedLayer& layer = layers_[li];
     if (!layer.bounded || maxWeight <= 0.0 || layer.layer.weight <= 0.0) continue;
@@ -613,6 +690,7 @@ void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vecto
       b.voxel.assign(kOrbitsPerBatch, -1);
       b.colorIndex.assign(kOrbitsPerBatch, 0);
       b.escaped.assign(kOrbitsPerBatch, 0);
+      b.brick.assign(kOrbitsPerBatch, 0);
       for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
         const glm::dvec3 s = layer.seeds[b.rng.next() % layer.seeds.size()];
         b.x[i] = b.px[i] = s.x;
@@ -635,13 +713,28 @@ void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vecto
       advance(params, h, b.x.data(), b.y.data(), b.z.data(), kOrbitsPerBatch);
       classifyBatch(classify, kernel, b);
       iterations += kOrbitsPerBatch;
-      // The mask lookups below would each wait for a cache miss in turn; asking for all the lines
-      // first lets the memory system fetch them in parallel.
-      for (std::size_t i = 0; i < kOrbitsPerBatch; ++i)
-        __builtin_prefetch(&insideBits[static_cast<std::uint32_t>(std::max(b.voxel[i], 0)) / 64]);
+      // Branch-free append of every settled point in a brick that touches the mask (a 4×4×4-voxel
+      // bitmap small enough to stay in L1/L2 drops most outside points here); the exact test
+      // happens at the flush, where the voxel's cell (which carries the inside flag) is fetched anyway.
+      const std::uint64_t* bricks = brickBits_.data();
+      std::uint64_t* out = splats.entries.data();
+      std::size_t n = splats.count;
+      std::int32_t escapedHere = 0;
       for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
-        if (b.escaped[i]) [[unlikely]] {
-          ++escapes;
+        const std::int32_t v = b.voxel[i];
+        out[n] = std::uint64_t{static_cast<std::uint32_t>(v)} |
+                 std::uint64_t{packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])]} << 32;
+        const auto brickIndex = static_cast<std::uint32_t>(b.brick[i]);
+        const bool keep = (v >= 0) & (((bricks[brickIndex / 64] >> (brickIndex % 64)) & 1u) != 0);
+        n += keep ? 1 : 0;
+        outside += ((v >= -1) & !keep) ? 1 : 0;
+        escapedHere += b.escaped[i];
+      }
+      splats.count = n;
+      if (escapedHere > 0) [[unlikely]] {
+        escapes += static_cast<std::uint64_t>(escapedHere);
+        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
+          if (!b.escaped[i]) continue;
           const glm::dvec3 seedPoint = layer.seeds[b.rng.next() % layer.seeds.size()];
           const double jitter = 1e-7 * (1.0 + std::abs(seedPoint.x));
           b.x[i] = b.px[i] = seedPoint.x + jitter * b.rng.symmetric();
@@ -649,37 +742,23 @@ void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vecto
           b.z[i] = b.pz[i] = seedPoint.z;
           b.sx[i] = b.sy[i] = b.sz[i] = 0.0;
           b.age[i] = 0;
-          continue;
+          b.escaped[i] = 0;
         }
-        if (b.age[i] <= kTransientSteps) [[unlikely]]
-          continue;
-        const std::int32_t v = b.voxel[i];
-        const auto voxel = static_cast<std::uint32_t>(v);
-        const bool inside = v >= 0 && ((insideBits[voxel / 64] >> (voxel % 64)) & 1u);
-        outside += inside ? 0 : 1;
-        // Branch-free push: a point outside goes to the discard bucket, which is never flushed.
-        const std::size_t slab = inside ? (voxel >> slabShift_) : discard;
-        std::size_t& count = counts[slab];
-        bucketEntries[slab * kBucketCapacity + count] =
-            std::uint64_t{voxel} | std::uint64_t{packedPalette[b.colorIndex[i]]} << 32;
-        ++count;
-        if (count == kBucketCapacity) [[unlikely]] {
-          if (slab != discard) {
-            flushSlab(slab, bucketEntries + slab * kBucketCapacity, count);
-            points += count;
-          }
-          count = 0;
-        }
+      }
+      if (splats.count >= kFlushThreshold) {
+        const std::uint64_t inside = flushSplats(splats);
+        points += inside;
+        outside += splats.count - inside;
+        splats.count = 0;
       }
     }
   }
-  for (std::size_t slab = 0; slab < splats.slabs; ++slab)
-    if (counts[slab] > 0) {
-      flushSlab(slab, bucketEntries + slab * kBucketCapacity, counts[slab]);
-      points += counts[slab];
-      counts[slab] = 0;
-    }
-  counts[discard] = 0;
+  if (splats.count > 0) {
+    const std::uint64_t inside = flushSplats(splats);
+    points += inside;
+    outside += splats.count - inside;
+    splats.count = 0;
+  }
   iterations_.fetch_add(iterations, std::memory_order_relaxed);
   points_.fetch_add(points, std::memory_order_relaxed);
   outside_.fetch_add(outside, std::memory_order_relaxed);

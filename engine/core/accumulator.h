@@ -5,8 +5,9 @@
 // Speed comes from three things: orbits advance as structure-of-arrays batches that the compiler
 // vectorises; a second vectorised pass turns each new point into a voxel index and a palette
 // colour without branches; and points are not added to the grid one at a time with atomics but
-// collected per thread into buckets by grid slab, then added with plain stores under that slab's
-// mutex (one lock per ~thousand points, and the adds of a bucket overlap their cache misses).
+// collected per thread, sorted by grid slab and added with plain stores under that slab's mutex
+// (one lock per slab per few thousand points; the adds overlap their cache misses). The inside
+// mask lives in each voxel's cell as a flag, so a splat costs one cache line, not two.
 //
 // Every change of pattern bumps a *generation*: the grid is cleared and work of the older
 // generation is thrown away. Readers (the UI, the exporter) take versioned snapshots; the
@@ -99,10 +100,27 @@ struct AccumulatorStats {
 };
 
 namespace detail {
-struct GridCell {  // one voxel's sums, together in one 16-byte slot so a splat touches one line
-  std::uint32_t density = 0;
+struct GridCell {             // one voxel's sums, together in one 16-byte slot so a splat touches one line
+  std::uint32_t density = 0;  // hits; the top bit marks a voxel outside the mask (never counted)
   std::uint32_t red = 0, green = 0, blue = 0;
 };
+// Memory for the grid's cells on 2 MiB pages where the OS offers them: splats land at random
+// across hundreds of megabytes, and with 4 KiB pages nearly every one would also miss the TLB.
+class CellBuffer {
+ public:
+  struct Free {
+    void operator()(void* p) const;
+  };
+  void allocate(std::size_t count);  // zero-filled
+  GridCell* data() const { return cells_.get(); }
+  std::size_t size() const { return count_; }
+  GridCell& operator[](std::size_t i) const { return cells_.get()[i]; }
+
+ private:
+  std::unique_ptr<GridCell[], Free> cells_;
+  std::size_t count_ = 0;
+};
+
 }  // namespace detail
 
 class Accumulator {
@@ -136,12 +154,15 @@ class Accumulator {
   void workerLoop(std::stop_token stop, int threadIndex);
   void runBatch(int threadIndex, std::uint64_t generation, std::vector<struct OrbitBatch>& batches,
                 struct SplatBuffer& splats);
-  void flushSlab(std::size_t slab, const std::uint64_t* entries, std::size_t count);
+  // Adds a thread's collected splats to the grid; returns how many landed inside the mask.
+  std::uint64_t flushSplats(struct SplatBuffer& splats);
+  void clearCells();  // zero sums; the outside flag set from the mask
 
   std::shared_ptr<const InsideMask> mask_;
-  std::vector<std::uint64_t> insideBits_;  // the mask, one bit per voxel: 32× smaller, stays in cache
-  std::vector<detail::GridCell> cells_;    // guarded per slab by slabMutexes_
-  int slabShift_ = 0;                      // voxel index >> slabShift_ = its slab
+
+  detail::CellBuffer cells_;              // guarded per slab by slabMutexes_
+  std::vector<std::uint64_t> brickBits_;  // per 4×4×4 brick: does any voxel lie inside the mask
+  int slabShift_ = 0;                     // voxel index >> slabShift_ = its slab
   std::unique_ptr<std::mutex[]> slabMutexes_;
   std::size_t slabCount_ = 0;
 
