@@ -67,8 +67,9 @@ struct PreparedLayer {
   bool bounded = false;                  // the probe orbit stayed finite and bounded
 };
 
-// The automatic fit of robust bounds [low, high] into the mask's inside box.
-AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& high, const InsideMask& mask);
+// The automatic fit of robust bounds (low, median and high percentiles) into the mask's inside box.
+AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const glm::dvec3& high,
+                          const InsideMask& mask);
 
 // Samples the layer's attractor and fits it into the mask's grid. Deterministic for a seed.
 // Throws core::Error on parameters that are not finite numbers, absurd steps or transforms.

@@ -41,7 +41,7 @@ struct ColorSettings {
 };
 
 // Places a layer in the grid on top of the automatic fit: scale about the fitted centre,
-// rotation (degrees about x, then y, then z), offset as a fraction of the mask's largest extent.
+// rotation (degrees about x, then y, then z), offset as a fraction of the grid's longest side.
 // With `lockFit` the automatic fit is replaced by the stored one, so parameter changes (an
 // animation) never move or resize the pattern.
 struct LayerTransform {
