@@ -1,7 +1,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
+#include <thread>
 #include <limits>
 
 #include <glm/geometric.hpp>
@@ -251,6 +253,12 @@ TEST(Accumulator, NaNNeverReachesTheGrid) {
     accumulator.setPattern({layer}, 3);
     ASSERT_TRUE(accumulator.waitUntilDone(60.0)) << layer.attractor;
     EXPECT_TRUE(accumulator.stats().problem.empty()) << accumulator.stats().problem;
+    // Past the target, threads still finish the batch they are in; wait until they rest so the
+    // snapshot and the point count describe the same grid.
+    for (std::uint64_t before = ~std::uint64_t{0}; before != accumulator.stats().points;) {
+      before = accumulator.stats().points;
+      std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    }
     VolumeSnapshot snapshot;
     accumulator.snapshot(snapshot);
     double total = 0.0;
