@@ -1,3 +1,5 @@
+#include <sys/resource.h>
+
 #include <chrono>
 #include <thread>
 
@@ -10,6 +12,21 @@
 
 namespace voxflame::bench {
 
+namespace {
+
+// CPU time of the whole process (all threads): on a shared machine the wall-clock rate depends on
+// what else runs, while points per CPU second measures the code itself.
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  const auto seconds = [](const timeval& t) {
+    return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
+  };
+  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+}  // namespace
+
 // Lorenz-84 (and every other catalogue entry named below) filling the bunny's mask at 256³,
 // colour by speed, timed over a fixed wall-clock window after a warm-up.
 void benchAccumulate(const BenchOptions& options) {
@@ -17,7 +34,7 @@ void benchAccumulate(const BenchOptions& options) {
   const auto mask =
       std::make_shared<const core::InsideMask>(core::buildInsideMask(mesh, core::gridOverBox(mesh.bounds(), 256)));
   const int allThreads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  for (const char* id : {"lorenz84"}) {
+  for (const char* id : {"lorenz84", "lorenz", "pickover", "polynomial_a"}) {
     const core::AttractorInfo* info = core::findAttractor(id);
     if (!info) continue;
     core::PatternLayer layer;
@@ -31,9 +48,11 @@ void benchAccumulate(const BenchOptions& options) {
       accumulator.setPattern({layer}, 1);
       std::this_thread::sleep_for(std::chrono::milliseconds(300));  // warm-up
       const auto before = accumulator.stats();
+      const double cpuBefore = processCpuSeconds();
       const auto start = std::chrono::steady_clock::now();
       std::this_thread::sleep_for(std::chrono::seconds(2));
       const auto after = accumulator.stats();
+      const double cpuSeconds = processCpuSeconds() - cpuBefore;
       const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       const double pointsPerSecond = static_cast<double>(after.iterations - before.iterations) / seconds;
       report(options, {{"bench", "accumulate"},
@@ -41,7 +60,9 @@ void benchAccumulate(const BenchOptions& options) {
                        {"grid", 256},
                        {"threads", threads},
                        {"points_per_s", pointsPerSecond},
-                       {"inside_fraction", after.insideFraction()}});
+                       {"inside_fraction", after.insideFraction()},
+                       {"cpu_seconds_per_second", cpuSeconds / seconds},
+                       {"points_per_cpu_s", static_cast<double>(after.iterations - before.iterations) / cpuSeconds}});
     }
   }
 }

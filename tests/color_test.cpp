@@ -37,3 +37,19 @@ TEST(Color, GradientMidpointKeepsPerceivedLightness) {
   EXPECT_EQ(gradient.at(1.0f), yellow);
   EXPECT_EQ(gradient.at(-3.0f), blue);
 }
+
+TEST(Color, NamedPalettesParseAndUnknownNamesAreListed) {
+  ASSERT_GE(namedPalettes().size(), 6u);
+  for (const auto& palette : namedPalettes()) {
+    const auto stops = paletteStops(palette.name);
+    ASSERT_GE(stops.size(), 2u) << palette.name;
+    EXPECT_FLOAT_EQ(stops.front().position, 0.0f);
+    EXPECT_FLOAT_EQ(stops.back().position, 1.0f);
+  }
+  try {
+    paletteStops("plaid");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("ember"), std::string::npos) << e.what();
+  }
+}

@@ -1,9 +1,23 @@
 #include "accumulator.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <new>
 
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/vector_relational.hpp>
+
+#include "cpu_features.h"
 #include "error.h"
 #include "random.h"
 
@@ -12,11 +26,18 @@ namespace voxflame::core {
 namespace {
 
 constexpr std::size_t kOrbitsPerBatch = 256;  // independent orbits advanced together per layer
-constexpr int kStepsPerBatch = 64;            // steps per batch before checking for a new generation
-constexpr int kTransientSteps = 32;           // steps an orbit takes before it may splat
+constexpr int kStepsPerBatch = 128;           // steps per batch before checking for a new generation
+constexpr std::int32_t kTransientSteps = 32;  // steps an orbit takes before it may splat
+constexpr std::int32_t kAgeLimit = 1 << 30;   // ages saturate here (time colouring then freezes)
+constexpr std::size_t kProbeOrbits = 64;      // the fit samples many orbits, not one: steadier bounds
 constexpr int kProbeTransient = 2'000;
-constexpr int kProbeSamples = 20'000;
+constexpr int kProbeSpacing = 250;  // steps between the probe orbits' seeds
+constexpr int kProbeSamplesPerOrbit = 2'000;
 constexpr std::size_t kSeedPoolSize = 1'024;
+constexpr double kProbeEscape = 1e8;
+constexpr int kMaxSlabs = 64;                       // grid slabs, each with its own mutex
+constexpr std::size_t kFlushThreshold = 8'192;      // splats a thread collects before adding them to the grid
+constexpr std::uint32_t kOutsideBit = 0x80000000u;  // in GridCell::density: the voxel is outside the mask
 
 double nowSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -26,19 +47,67 @@ bool isFiniteAndNear(double x, double y, double z, double radius) {
   return std::abs(x) < radius && std::abs(y) < radius && std::abs(z) < radius;  // false for NaN
 }
 
+// The value below which `fraction` of `values` lie (values is reordered).
+double percentile(std::vector<double>& values, double fraction) {
+  const auto index = static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1));
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index), values.end());
+  return values[index];
+}
+
 // Robust bounds: a fraction of outliers on each side is ignored so a rare excursion does not
 // shrink the whole pattern, and a small parameter change moves the fit only a little.
-void percentileBounds(std::vector<glm::dvec3>& samples, double fraction, glm::dvec3& low, glm::dvec3& high) {
+void percentileBounds(const std::vector<glm::dvec3>& samples, double fraction, glm::dvec3& low, glm::dvec3& high) {
   std::vector<double> axis(samples.size());
   for (int a = 0; a < 3; ++a) {
     for (std::size_t i = 0; i < samples.size(); ++i) axis[i] = samples[i][a];
-    const auto lowIndex = static_cast<std::size_t>(fraction * static_cast<double>(axis.size() - 1));
-    const auto highIndex = axis.size() - 1 - lowIndex;
-    std::nth_element(axis.begin(), axis.begin() + static_cast<std::ptrdiff_t>(lowIndex), axis.end());
-    low[a] = axis[lowIndex];
-    std::nth_element(axis.begin(), axis.begin() + static_cast<std::ptrdiff_t>(highIndex), axis.end());
-    high[a] = axis[highIndex];
+    low[a] = percentile(axis, fraction);
+    high[a] = percentile(axis, 1.0 - fraction);
   }
+}
+
+bool finiteVector(glm::dvec3 v) {
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+glm::dmat3 rotationFromDegrees(glm::dvec3 degrees) {
+  const glm::dvec3 r = glm::radians(degrees);
+  const double cx = std::cos(r.x), sx = std::sin(r.x), cy = std::cos(r.y), sy = std::sin(r.y);
+  const double cz = std::cos(r.z), sz = std::sin(r.z);
+  // Column-major (glm): rotate about x first, then y, then z.
+  const glm::dmat3 rx(1, 0, 0, 0, cx, sx, 0, -sx, cx);
+  const glm::dmat3 ry(cy, 0, -sy, 0, 1, 0, sy, 0, cy);
+  const glm::dmat3 rz(cz, sz, 0, -sz, cz, 0, 0, 0, 1);
+  return rz * ry * rx;
+}
+
+void validateLayer(const PatternLayer& layer, const AttractorInfo& info) {
+  const std::string name = "attractor '" + info.id + "'";
+  if (layer.params.size() != info.params.size())
+    throw Error(name + " takes " + std::to_string(info.params.size()) + " parameters, got " +
+                std::to_string(layer.params.size()));
+  for (std::size_t i = 0; i < layer.params.size(); ++i)
+    if (!std::isfinite(layer.params[i]))
+      throw Error("parameter '" + info.params[i].name + "' of " + name + " is not a finite number");
+  if (!std::isfinite(layer.step) || layer.step <= 0.0 || layer.step > 1.0)
+    throw Error("the step of " + name + " must be in (0, 1]");
+  if (!std::isfinite(layer.weight) || layer.weight < 0.0 || layer.weight > 1000.0)
+    throw Error("the weight of " + name + " must be in [0, 1000]");
+  const LayerTransform& t = layer.transform;
+  if (!std::isfinite(t.scale) || t.scale <= 1e-3 || t.scale > 1e3)
+    throw Error("the transform scale of " + name + " must be in (0.001, 1000]");
+  if (!finiteVector(t.rotationDeg) || !finiteVector(t.offset) ||
+      glm::any(glm::greaterThan(glm::abs(t.offset), glm::dvec3(100.0))))
+    throw Error("the transform rotation and offset of " + name + " must be finite (offset within ±100)");
+  if (t.lockFit && (!finiteVector(t.lockedCenter) || !std::isfinite(t.lockedScale) || t.lockedScale <= 0.0))
+    throw Error("the locked fit of " + name + " needs a finite centre and a positive scale");
+  const ColorSettings& c = layer.color;
+  if (!std::isfinite(c.period) || c.period < 1.0 || c.period > 1e9)
+    throw Error("the colour period of " + name + " must be 1 to 1e9 steps");
+  if (!finiteVector(c.axis) || glm::length(c.axis) < 1e-12)
+    throw Error("the colour axis of " + name + " must be a finite, non-zero vector");
+  if (!std::isfinite(c.scale) || c.scale <= 0.0 || c.scale > 1e6)
+    throw Error("the colour scale of " + name + " must be in (0, 1e6]");
+  if (c.gradient.empty()) throw Error("the colour gradient of " + name + " has no stops");
 }
 
 // The box of voxels inside the mask, in voxel units; the whole grid when the mask is empty.
@@ -63,58 +132,104 @@ void insideBounds(const InsideMask& mask, glm::dvec3& low, glm::dvec3& high) {
 
 }  // namespace
 
+AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const glm::dvec3& high,
+                          const InsideMask& mask) {
+  // Scale from the percentile box, centre on the median: for lopsided attractors (Rössler's flat
+  // disc with rare spikes) the dense part then sits in the middle of the shape, not at its edge.
+  // (Both are smooth in the samples; a max() of the two half-boxes would jump between sides.)
+  const glm::dvec3 extent = glm::max(high - low, glm::dvec3(1e-9));
+  glm::dvec3 maskLow, maskHigh;
+  insideBounds(mask, maskLow, maskHigh);
+  const glm::dvec3 ratiosVector = (maskHigh - maskLow) / extent;
+  std::array<double, 3> ratios{ratiosVector.x, ratiosVector.y, ratiosVector.z};
+  std::sort(ratios.begin(), ratios.end());
+  // Scale so the attractor covers the shape along its middle axis (at most 2.5× over along its
+  // widest); what spills over the surface is cut away by the mask, which is what makes the pattern
+  // take the mesh's form. The thinnest axis is ignored: for flat attractors its extent is the
+  // least stable statistic (Rössler's z), and it would make the scale jump.
+  return {median, std::min(ratios[1], 2.5 * ratios[0])};
+}
+
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, std::uint64_t seed) {
   PreparedLayer prepared;
   prepared.layer = layer;
   prepared.info = &attractorOrThrow(layer.attractor);
   const AttractorInfo& info = *prepared.info;
-  if (layer.params.size() != info.params.size())
-    throw Error("attractor '" + info.id + "' takes " + std::to_string(info.params.size()) + " parameters, got " +
-                std::to_string(layer.params.size()));
-  for (double p : layer.params)
-    if (!std::isfinite(p)) throw Error("a parameter of attractor '" + info.id + "' is not a finite number");
-  if (!std::isfinite(layer.step) || layer.step <= 0.0 || layer.step > 1.0)
-    throw Error("the step of attractor '" + info.id + "' must be in (0, 1]");
+  validateLayer(layer, info);
 
+  // Probe: one orbit from the start runs through its transient, then drops a seed every
+  // kProbeSpacing steps; the seeds (different phases of the attractor, not near-copies of one
+  // orbit, which chaos would take long to pull apart) advance as one batch and are sampled. Many
+  // decorrelated samples make the bounds — and so the fit — steady under small changes.
   const AdvanceFn advance = info.advance(layer.integrator);
   SplitMix64 rng(mixSeed(seed, 0x70726f6265ULL));
-  double x = info.start.x, y = info.start.y, z = info.start.z;
-  constexpr double kProbeEscape = 1e8;
-  std::vector<glm::dvec3> samples;
-  samples.reserve(kProbeSamples);
-  std::vector<double> speeds;
-  speeds.reserve(kProbeSamples);
-  bool escaped = false;
-  for (int step = 0; step < kProbeTransient + kProbeSamples; ++step) {
-    const double px = x, py = y, pz = z;
-    advance(layer.params.data(), layer.step, &x, &y, &z, 1);
-    if (!isFiniteAndNear(x, y, z, kProbeEscape)) {
-      escaped = true;
-      break;
-    }
-    if (step >= kProbeTransient) {
-      samples.emplace_back(x, y, z);
-      speeds.push_back(std::sqrt((x - px) * (x - px) + (y - py) * (y - py) + (z - pz) * (z - pz)));
+  std::vector<double> x(kProbeOrbits), y(kProbeOrbits), z(kProbeOrbits);
+  std::vector<std::uint8_t> alive(kProbeOrbits, 1);
+  {
+    double sx = info.start.x, sy = info.start.y, sz = info.start.z;
+    // The seed shifts the phase at which sampling begins, so different seeds give independent
+    // probes (which is how the tests measure the fit's sampling noise).
+    const int transient = kProbeTransient + static_cast<int>(rng.next() % 1'000);
+    for (int step = 0; step < transient + static_cast<int>(kProbeOrbits) * kProbeSpacing; ++step) {
+      advance(layer.params.data(), layer.step, &sx, &sy, &sz, 1);
+      if (!isFiniteAndNear(sx, sy, sz, kProbeEscape)) return prepared;  // escapes: bounded stays false
+      const int sampled = step - transient;
+      if (sampled >= 0 && sampled % kProbeSpacing == 0) {
+        const auto orbit = static_cast<std::size_t>(sampled / kProbeSpacing);
+        x[orbit] = sx;
+        y[orbit] = sy;
+        z[orbit] = sz;
+      }
     }
   }
-  if (escaped || samples.empty()) return prepared;  // bounded stays false
+  std::vector<glm::dvec3> samples;
+  samples.reserve(kProbeOrbits * kProbeSamplesPerOrbit);
+  std::vector<double> speeds, turns;
+  std::vector<glm::dvec3> previous(kProbeOrbits), previousStep(kProbeOrbits, glm::dvec3(0.0));
+  for (int step = 0; step < kProbeSamplesPerOrbit; ++step) {
+    for (std::size_t i = 0; i < kProbeOrbits; ++i) previous[i] = {x[i], y[i], z[i]};
+    advance(layer.params.data(), layer.step, x.data(), y.data(), z.data(), kProbeOrbits);
+    for (std::size_t i = 0; i < kProbeOrbits; ++i) {
+      if (!alive[i]) continue;
+      if (!isFiniteAndNear(x[i], y[i], z[i], kProbeEscape)) {
+        alive[i] = 0;
+        x[i] = y[i] = z[i] = 0.0;  // parked; never sampled again
+        continue;
+      }
+      const glm::dvec3 p(x[i], y[i], z[i]);
+      const glm::dvec3 d = p - previous[i];
+      if (step > 0) {
+        samples.push_back(p);
+        speeds.push_back(glm::length(d));
+        const double lengths = glm::length(d) * glm::length(previousStep[i]);
+        if (lengths > 0.0) turns.push_back(glm::length(glm::cross(d, previousStep[i])) / lengths);
+      }
+      previousStep[i] = d;
+    }
+  }
+  // A few probe orbits leaving (a basin boundary nearby) is tolerated as long as most stay.
+  const auto survivors = static_cast<std::size_t>(std::count(alive.begin(), alive.end(), std::uint8_t{1}));
+  if (survivors < kProbeOrbits / 2 || samples.empty()) return prepared;  // bounded stays false
 
   glm::dvec3 low, high;
-  percentileBounds(samples, 0.005, low, high);
-  const glm::dvec3 extent = glm::max(high - low, glm::dvec3(1e-9));
+  // 5%..95%: the bulk of the density decides the fit, not rare excursions (Rössler's z spikes
+  // would otherwise push its dense spiral out of the grid), and a small sample noise moves it little.
+  percentileBounds(samples, 0.05, low, high);
+  const glm::dvec3 extent = high - low;
   if (std::max({extent.x, extent.y, extent.z}) < 1e-6) return prepared;  // collapsed to a point
+  glm::dvec3 median, unused;
+  percentileBounds(samples, 0.5, median, unused);
+  prepared.center = median;
+  prepared.automaticFit = automaticFit(low, median, high, mask);
 
   glm::dvec3 maskLow, maskHigh;
   insideBounds(mask, maskLow, maskHigh);
-  const glm::dvec3 maskExtent = maskHigh - maskLow;
-  // Scale so the attractor covers the shape along its best-filled axis; what spills over the
-  // surface is cut away by the mask, which is what makes the pattern take the mesh's form.
-  const glm::dvec3 ratios = maskExtent / extent;
-  const double minRatio = std::min({ratios.x, ratios.y, ratios.z});
-  const double maxRatio = std::max({ratios.x, ratios.y, ratios.z});
-  prepared.fit.scale = std::min(maxRatio, 2.5 * minRatio);
-  prepared.fit.attractorCenter = 0.5 * (low + high);
-  prepared.fit.gridCenter = 0.5 * (maskLow + maskHigh);
+  const LayerTransform& t = layer.transform;
+  prepared.fit.attractorCenter = t.lockFit ? t.lockedCenter : prepared.automaticFit.center;
+  prepared.fit.scale = (t.lockFit ? t.lockedScale : prepared.automaticFit.scale) * t.scale;
+  prepared.fit.rotation = rotationFromDegrees(t.rotationDeg);
+  const glm::dvec3 gridSize(mask.geometry.size);
+  prepared.fit.gridCenter = 0.5 * (maskLow + maskHigh) + t.offset * std::max({gridSize.x, gridSize.y, gridSize.z});
   prepared.escapeRadius = 1e3 * (std::max({std::abs(low.x), std::abs(low.y), std::abs(low.z), std::abs(high.x),
                                            std::abs(high.y), std::abs(high.z)}) +
                                  1.0);
@@ -123,9 +238,19 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
   for (std::size_t i = 0; i < kSeedPoolSize; ++i)
     prepared.seeds.push_back(samples[static_cast<std::size_t>(rng.uniform() * static_cast<double>(samples.size()))]);
 
-  std::nth_element(speeds.begin(), speeds.begin() + static_cast<std::ptrdiff_t>(speeds.size() * 95 / 100),
-                   speeds.end());
-  prepared.speedReference = std::max(speeds[speeds.size() * 95 / 100], 1e-12);
+  // References that map each colour mode's raw value onto the gradient, measured on the probe
+  // so the gradient spans what this attractor actually does.
+  prepared.speedReference = std::max(percentile(speeds, 0.95), 1e-12);
+  std::vector<double> distances(samples.size()), along(samples.size());
+  const glm::dvec3 axis = glm::normalize(layer.color.axis);
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    distances[i] = glm::length(samples[i] - prepared.center);
+    along[i] = glm::dot(samples[i], axis);
+  }
+  prepared.distanceReference = std::max(percentile(distances, 0.95), 1e-12);
+  prepared.axisLow = percentile(along, 0.01);
+  prepared.axisHigh = std::max(percentile(along, 0.99), prepared.axisLow + 1e-12);
+  prepared.curvatureReference = turns.empty() ? 1.0 : std::max(percentile(turns, 0.95), 1e-12);
 
   const Gradient gradient(layer.color.gradient);
   prepared.palette.resize(256);
@@ -137,19 +262,260 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
   return prepared;
 }
 
-// Per-thread state of one layer's orbits, structure of arrays so the advance loop vectorises.
+// Per-thread state of one layer's orbits, structure of arrays so the advance and classify loops
+// vectorise across orbits.
 struct OrbitBatch {
-  std::vector<double> x, y, z, px, py, pz;
-  std::vector<int> warmup;
+  std::vector<double> x, y, z, px, py, pz, sx, sy, sz;  // position, previous position, previous step
+  std::vector<std::int32_t> age;                        // steps since (re)seeding, saturating
+  std::vector<std::int32_t> voxel;                      // this step's voxel, -1 when none
+  std::vector<std::int32_t> colorIndex;                 // this step's palette entry (0..255)
+  std::vector<std::int32_t> escaped;
+  std::vector<std::int32_t> brick;  // this step's 4×4×4 brick of the grid, 0 when none                    // 32-bit
+                                    // like voxel: one vector width
   SplitMix64 rng{0};
   std::uint64_t generation = ~std::uint64_t{0};
 };
 
+// Each thread's splats: appended in orbit order, then sorted by grid slab (a counting sort) and
+// added slab by slab under that slab's mutex. Entry: voxel index in the low 32 bits, packed RGB above.
+struct SplatBuffer {
+  std::vector<std::uint64_t> entries;  // kFlushThreshold plus room for one more step of every orbit
+  std::vector<std::uint64_t> sorted;
+  std::vector<std::size_t> slabStart;
+  std::size_t count = 0;
+  void reset(std::size_t slabs) {
+    entries.assign(kFlushThreshold + kOrbitsPerBatch, 0);
+    sorted.assign(entries.size(), 0);
+    slabStart.assign(slabs + 1, 0);
+    count = 0;
+  }
+};
+
+namespace {
+
+// What the classify pass needs of a layer, flattened into plain numbers.
+struct LayerKernel {
+  double m[9];  // attractor → voxel: row-major 3×3
+  double o[3];
+  double gridSize[3];
+  std::int32_t sizeX, sizeXY;
+  std::int32_t bricksX, bricksXY;
+  double escapeRadius;
+  double colorScale;  // mode value × colorScale = gradient position (before clamping to [0, 1])
+  double inversePeriod;
+  double axis[3];
+  double axisOffset;
+  double center[3];
+};
+
+LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
+  LayerKernel k{};
+  const glm::dmat3 m = layer.fit.rotation * layer.fit.scale;
+  const glm::dvec3 o = layer.fit.gridCenter - m * layer.fit.attractorCenter;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) k.m[3 * r + c] = m[c][r];
+    k.o[r] = o[r];
+    k.gridSize[r] = static_cast<double>(grid.size[r]);
+  }
+  k.sizeX = grid.size.x;
+  k.sizeXY = grid.size.x * grid.size.y;
+  k.bricksX = (grid.size.x + 3) / 4;
+  k.bricksXY = k.bricksX * ((grid.size.y + 3) / 4);
+  k.escapeRadius = layer.escapeRadius;
+  const ColorSettings& color = layer.layer.color;
+  const glm::dvec3 axis = glm::normalize(color.axis);
+  for (int r = 0; r < 3; ++r) {
+    k.axis[r] = axis[r];
+    k.center[r] = layer.center[r];
+  }
+  switch (color.mode) {
+    case ColorMode::Speed:
+      k.colorScale = color.scale / layer.speedReference;
+      break;
+    case ColorMode::Curvature:
+      k.colorScale = color.scale / layer.curvatureReference;
+      break;
+    case ColorMode::Time:
+      k.colorScale = color.scale;
+      break;
+    case ColorMode::Axis:
+      k.colorScale = color.scale / (layer.axisHigh - layer.axisLow);
+      break;
+    case ColorMode::Distance:
+      k.colorScale = color.scale / layer.distanceReference;
+      break;
+  }
+  k.axisOffset = layer.axisLow;
+  k.inversePeriod = 1.0 / color.period;
+  return k;
+}
+
+// One pass over a batch after it advanced: escape test, colour value, voxel index. Branch-free
+// (selects, not jumps), so GCC vectorises it across orbits; the colour mode is a template
+// argument so the per-point work has no switch.
+// The arrays of an OrbitBatch as __restrict function parameters: GCC honours restrict reliably
+// on parameters (not on locals loaded from a struct), and without it the loop does not vectorise.
+#define VOXFLAME_CLASSIFY_PARAMS                                                                                  \
+  const LayerKernel &kernel, const double *__restrict x, const double *__restrict y, const double *__restrict z,  \
+      double *__restrict px, double *__restrict py, double *__restrict pz, double *__restrict sx,                 \
+      double *__restrict sy, double *__restrict sz, std::int32_t *__restrict age, std::int32_t *__restrict voxel, \
+      std::int32_t *__restrict colorIndex, std::int32_t *__restrict escaped, std::int32_t *__restrict brick
+#define VOXFLAME_CLASSIFY_ARGS kernel, x, y, z, px, py, pz, sx, sy, sz, age, voxel, colorIndex, escaped, brick
+
+// One pass over a batch after it advanced: escape test, colour value, voxel index. Bitwise &
+// (not &&) and selects keep the body one basic block so it vectorises across orbits; the colour
+// mode is a template argument so the per-point work has no switch.
+template <ColorMode kMode>
+[[gnu::always_inline]] inline void classifyBody(VOXFLAME_CLASSIFY_PARAMS) {
+  const LayerKernel k = kernel;  // a local copy cannot alias the arrays written below
+  for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
+    const double xi = x[i], yi = y[i], zi = z[i];
+    const bool finite =
+        (std::abs(xi) < k.escapeRadius) & (std::abs(yi) < k.escapeRadius) & (std::abs(zi) < k.escapeRadius);
+    const double dx = xi - px[i], dy = yi - py[i], dz = zi - pz[i];
+    double value;
+    if constexpr (kMode == ColorMode::Speed) {
+      value = std::sqrt(dx * dx + dy * dy + dz * dz);
+    } else if constexpr (kMode == ColorMode::Curvature) {
+      const double cx = dy * sz[i] - dz * sy[i], cy = dz * sx[i] - dx * sz[i], cz = dx * sy[i] - dy * sx[i];
+      const double lengths = std::sqrt((dx * dx + dy * dy + dz * dz) * (sx[i] * sx[i] + sy[i] * sy[i] + sz[i] * sz[i]));
+      value = std::sqrt(cx * cx + cy * cy + cz * cz) / (lengths + 1e-300);
+    } else if constexpr (kMode == ColorMode::Time) {
+      const double cycles = static_cast<double>(age[i]) * k.inversePeriod;
+      value = cycles - std::floor(cycles);
+    } else if constexpr (kMode == ColorMode::Axis) {
+      value = xi * k.axis[0] + yi * k.axis[1] + zi * k.axis[2] - k.axisOffset;
+    } else {
+      const double ex = xi - k.center[0], ey = yi - k.center[1], ez = zi - k.center[2];
+      value = std::sqrt(ex * ex + ey * ey + ez * ez);
+    }
+    double t = value * k.colorScale * 255.0;
+    t = finite ? t : 0.0;
+    t = std::min(std::max(t, 0.0), 255.0);
+    colorIndex[i] = static_cast<std::int32_t>(t);
+
+    const double gx = k.m[0] * xi + k.m[1] * yi + k.m[2] * zi + k.o[0];
+    const double gy = k.m[3] * xi + k.m[4] * yi + k.m[5] * zi + k.o[1];
+    const double gz = k.m[6] * xi + k.m[7] * yi + k.m[8] * zi + k.o[2];
+    const bool inGrid = finite & (gx >= 0.0) & (gy >= 0.0) & (gz >= 0.0) & (gx < k.gridSize[0]) & (gy < k.gridSize[1]) &
+                        (gz < k.gridSize[2]);
+    // Converting only in-range values keeps the float→int conversion defined for NaN and huge ones.
+    const auto vi = static_cast<std::int32_t>(inGrid ? gx : 0.0);
+    const auto vj = static_cast<std::int32_t>(inGrid ? gy : 0.0);
+    const auto vk = static_cast<std::int32_t>(inGrid ? gz : 0.0);
+    // -1: outside the grid (counted as outside); -2: not a point yet (transient or escaped).
+    const bool settled = finite & (age[i] > kTransientSteps);
+    voxel[i] = settled ? (inGrid ? vi + k.sizeX * vj + k.sizeXY * vk : -1) : -2;
+    brick[i] = (vi >> 2) + k.bricksX * (vj >> 2) + k.bricksXY * (vk >> 2);
+    escaped[i] = finite ? 0 : 1;
+    sx[i] = dx;
+    sy[i] = dy;
+    sz[i] = dz;
+    px[i] = xi;
+    py[i] = yi;
+    pz[i] = zi;
+    age[i] += age[i] < kAgeLimit ? 1 : 0;
+  }
+}
+
+// Built twice: for any x86-64 and for AVX2, picked at run time, so the binary still runs on CPUs
+// without AVX2.
+template <ColorMode kMode>
+[[gnu::noinline]] void classifyBaseline(VOXFLAME_CLASSIFY_PARAMS) {
+  classifyBody<kMode>(VOXFLAME_CLASSIFY_ARGS);
+}
+#if defined(__x86_64__) && !defined(__AVX2__)
+template <ColorMode kMode>
+[[gnu::target("avx2"), gnu::noinline]] void classifyAvx2(VOXFLAME_CLASSIFY_PARAMS) {
+  classifyBody<kMode>(VOXFLAME_CLASSIFY_ARGS);
+}
+#endif
+
+using ClassifyFn = void (*)(VOXFLAME_CLASSIFY_PARAMS);
+#undef VOXFLAME_CLASSIFY_PARAMS
+#undef VOXFLAME_CLASSIFY_ARGS
+
+void classifyBatch(ClassifyFn classify, const LayerKernel& kernel, OrbitBatch& b) {
+  classify(kernel, b.x.data(), b.y.data(), b.z.data(), b.px.data(), b.py.data(), b.pz.data(), b.sx.data(), b.sy.data(),
+           b.sz.data(), b.age.data(), b.voxel.data(), b.colorIndex.data(), b.escaped.data(), b.brick.data());
+}
+
+ClassifyFn classifier(ColorMode mode) {
+#if defined(__x86_64__) && !defined(__AVX2__)
+  if (cpuHasAvx2()) {
+    switch (mode) {
+      case ColorMode::Speed:
+        return &classifyAvx2<ColorMode::Speed>;
+      case ColorMode::Curvature:
+        return &classifyAvx2<ColorMode::Curvature>;
+      case ColorMode::Time:
+        return &classifyAvx2<ColorMode::Time>;
+      case ColorMode::Axis:
+        return &classifyAvx2<ColorMode::Axis>;
+      case ColorMode::Distance:
+        return &classifyAvx2<ColorMode::Distance>;
+    }
+  }
+#endif
+  switch (mode) {
+    case ColorMode::Speed:
+      return &classifyBaseline<ColorMode::Speed>;
+    case ColorMode::Curvature:
+      return &classifyBaseline<ColorMode::Curvature>;
+    case ColorMode::Time:
+      return &classifyBaseline<ColorMode::Time>;
+    case ColorMode::Axis:
+      return &classifyBaseline<ColorMode::Axis>;
+    case ColorMode::Distance:
+      return &classifyBaseline<ColorMode::Distance>;
+  }
+  return &classifyBaseline<ColorMode::Speed>;
+}
+
+}  // namespace
+
+namespace detail {
+
+void CellBuffer::Free::operator()(void* p) const {
+  std::free(p);
+}
+
+void CellBuffer::allocate(std::size_t count) {
+  constexpr std::size_t kHugePage = std::size_t{2} << 20;
+  const std::size_t bytes = (count * sizeof(GridCell) + kHugePage - 1) / kHugePage * kHugePage;
+  void* memory = std::aligned_alloc(kHugePage, bytes);
+  if (!memory) throw std::bad_alloc();
+#if defined(__linux__)
+  madvise(memory, bytes, MADV_HUGEPAGE);  // a hint: without it (or if refused) 4 KiB pages still work
+#endif
+  std::memset(memory, 0, bytes);
+  cells_.reset(static_cast<GridCell*>(memory));
+  count_ = count;
+}
+
+}  // namespace detail
+
 Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : mask_(std::move(mask)) {
   if (!mask_) throw Error("the accumulator needs an inside mask");
   const std::size_t voxels = mask_->geometry.voxelCount();
-  density_.assign(voxels, 0);
-  colorSum_.assign(3 * voxels, 0);
+  if (voxels == 0 || voxels >= (std::size_t{1} << 31)) throw Error("the accumulation grid must have 1 to 2^31 voxels");
+  cells_.allocate(voxels);
+  {
+    const GridGeometry& g = mask_->geometry;
+    const int bx = (g.size.x + 3) / 4, by = (g.size.y + 3) / 4, bz = (g.size.z + 3) / 4;
+    brickBits_.assign((static_cast<std::size_t>(bx) * by * bz + 63) / 64 + 1, 0);
+    for (int k = 0; k < g.size.z; ++k)
+      for (int j = 0; j < g.size.y; ++j)
+        for (int i = 0; i < g.size.x; ++i)
+          if (mask_->inside[g.index(i, j, k)]) {
+            const auto brick = static_cast<std::size_t>((i / 4) + bx * ((j / 4) + by * (k / 4)));
+            brickBits_[brick / 64] |= std::uint64_t{1} << (brick % 64);
+          }
+  }
+  clearCells();
+  while (((voxels - 1) >> slabShift_) + 1 > static_cast<std::size_t>(kMaxSlabs)) ++slabShift_;
+  slabCount_ = ((voxels - 1) >> slabShift_) + 1;
+  slabMutexes_ = std::make_unique<std::mutex[]>(slabCount_);
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threads_.reserve(static_cast<std::size_t>(threads));
   for (int t = 0; t < threads; ++t) threads_.emplace_back([this, t](std::stop_token stop) { workerLoop(stop, t); });
@@ -171,12 +537,11 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
       problem = "attractor '" + layer.attractor + "' escapes to infinity (or collapses) with these parameters";
   }
   {
-    std::unique_lock lock(gridMutex_);
+    std::unique_lock lock(gridMutex_);  // no batch runs and no snapshot copies while we clear
     layers_ = std::move(prepared);
     seed_ = seed;
     problem_ = problem;
-    std::fill(density_.begin(), density_.end(), 0u);
-    std::fill(colorSum_.begin(), colorSum_.end(), 0u);
+    clearCells();
     iterations_ = 0;
     points_ = 0;
     outside_ = 0;
@@ -189,6 +554,12 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
   }
   wake_.notify_all();
   doneSignal_.notify_all();
+}
+
+void Accumulator::clearCells() {
+  const std::uint8_t* inside = mask_->inside.data();
+  for (std::size_t v = 0; v < cells_.size(); ++v)
+    cells_[v] = detail::GridCell{inside[v] ? 0u : kOutsideBit, 0u, 0u, 0u};
 }
 
 void Accumulator::setTargetPoints(std::uint64_t target) {
@@ -222,36 +593,41 @@ AccumulatorStats Accumulator::stats() const {
 
 void Accumulator::snapshot(VolumeSnapshot& out) const {
   std::shared_lock lock(gridMutex_);
-  const std::size_t voxels = density_.size();
+  const std::size_t voxels = cells_.size();
   out.geometry = mask_->geometry;
   out.density.resize(voxels);
   out.rgba.resize(4 * voxels);
   out.version = version_.load(std::memory_order_acquire);
   out.points = points_.load();
   float maxDensity = 0.0f;
-  for (std::size_t v = 0; v < voxels; ++v) {
-    // Workers keep adding while we copy: relaxed atomic loads make that well defined, and a
-    // voxel read mid-update is at worst one hit behind.
-    const std::uint32_t hits = std::atomic_ref<const std::uint32_t>(density_[v]).load(std::memory_order_relaxed);
-    out.density[v] = static_cast<float>(hits);
-    maxDensity = std::max(maxDensity, out.density[v]);
-    if (hits == 0) {
-      out.rgba[4 * v + 0] = out.rgba[4 * v + 1] = out.rgba[4 * v + 2] = 0;
-    } else {
-      for (int c = 0; c < 3; ++c) {
-        const std::uint32_t sum = std::atomic_ref<const std::uint32_t>(colorSum_[3 * v + static_cast<std::size_t>(c)])
-                                      .load(std::memory_order_relaxed);
-        out.rgba[4 * v + static_cast<std::size_t>(c)] =
-            static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, sum / hits));
+  for (std::size_t slab = 0; slab < slabCount_; ++slab) {
+    // Workers add into a slab only under its mutex, so each slab is copied consistently.
+    std::lock_guard slabLock(slabMutexes_[slab]);
+    const std::size_t begin = slab << slabShift_;
+    const std::size_t end = std::min(voxels, (slab + 1) << slabShift_);
+    for (std::size_t v = begin; v < end; ++v) {
+      detail::GridCell cell = cells_[v];
+      cell.density &= ~kOutsideBit;
+      out.density[v] = static_cast<float>(cell.density);
+      maxDensity = std::max(maxDensity, out.density[v]);
+      std::uint8_t* rgba = &out.rgba[4 * v];
+      if (cell.density == 0) {
+        rgba[0] = rgba[1] = rgba[2] = 0;
+      } else {
+        rgba[0] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.red / cell.density));
+        rgba[1] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.green / cell.density));
+        rgba[2] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.blue / cell.density));
       }
+      rgba[3] = 255;
     }
-    out.rgba[4 * v + 3] = 255;
   }
   out.maxDensity = maxDensity;
 }
 
 void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
   std::vector<OrbitBatch> batches;
+  SplatBuffer splats;
+  splats.reset(slabCount_);
   while (!stop.stop_requested()) {
     const auto target = targetPoints_.load();
     const bool reachedTarget = target > 0 && points_.load() >= target;
@@ -264,31 +640,79 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
       });
       continue;
     }
-    runBatch(threadIndex, generation_.load(), batches);
+    runBatch(threadIndex, generation_.load(), batches, splats);
   }
 }
 
-void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vector<OrbitBatch>& batches) {
+std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {
+  // Counting sort by slab, so each slab's mutex is taken once per flush.
+  const std::size_t count = splats.count;
+  const std::uint64_t* entries = splats.entries.data();
+  std::size_t* start = splats.slabStart.data();
+  std::fill(splats.slabStart.begin(), splats.slabStart.end(), 0);
+  for (std::size_t e = 0; e < count; ++e) ++start[(static_cast<std::uint32_t>(entries[e]) >> slabShift_) + 1];
+  for (std::size_t slab = 0; slab < slabCount_; ++slab) start[slab + 1] += start[slab];
+  std::uint64_t* sorted = splats.sorted.data();
+  for (std::size_t e = 0; e < count; ++e)
+    sorted[start[static_cast<std::uint32_t>(entries[e]) >> slabShift_]++] = entries[e];
+  // start[slab] is now the end of that slab's run (and the beginning of the next one's).
+
+  constexpr std::size_t kPrefetchDistance = 32;
+  detail::GridCell* cells = cells_.data();
+  std::uint64_t inside = 0;
+  std::size_t begin = 0;
+  for (std::size_t slab = 0; slab < slabCount_; ++slab) {
+    const std::size_t end = start[slab];
+    if (end == begin) continue;
+    std::lock_guard lock(slabMutexes_[slab]);
+    for (std::size_t e = begin; e < end; ++e) {
+      // The adds are independent plain stores, so the CPU overlaps their cache misses;
+      // prefetching a few entries ahead hides most of the rest.
+      if (e + kPrefetchDistance < end)
+        __builtin_prefetch(&cells[static_cast<std::uint32_t>(sorted[e + kPrefetchDistance])], 1);
+      const std::uint64_t entry = sorted[e];
+      detail::GridCell& cell = cells[static_cast<std::uint32_t>(entry)];
+      const auto rgb = static_cast<std::uint32_t>(entry >> 32);
+      // Branch-free: a voxel outside the mask (flag set) gets zero added.
+      const std::uint32_t in = (~cell.density) >> 31;
+      cell.density += in;
+      cell.red += in * (rgb & 0xffu);
+      cell.green += in * ((rgb >> 8) & 0xffu);
+      cell.blue += in * (rgb >> 16);
+      inside += in;
+    }
+    begin = end;
+  }
+  return inside;
+}
+
+void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vector<OrbitBatch>& batches,
+                           SplatBuffer& splats) {
   std::shared_lock lock(gridMutex_);
   if (generation != generation_.load()) return;  // a new pattern arrived; pick it up next time
   const GridGeometry& grid = mask_->geometry;
-  const std::uint8_t* inside = mask_->inside.data();
+
   batches.resize(layers_.size());
 
   double maxWeight = 0.0;
   for (const auto& l : layers_) maxWeight = std::max(maxWeight, l.layer.weight);
 
   std::uint64_t iterations = 0, points = 0, outside = 0, escapes = 0;
+
   for (std::size_t li = 0; li < layers_.size(); ++li) {
     const PreparedLayer& layer = layers_[li];
-    if (!layer.bounded || maxWeight <= 0.0) continue;
+    if (!layer.bounded || maxWeight <= 0.0 || layer.layer.weight <= 0.0) continue;
     OrbitBatch& b = batches[li];
     if (b.generation != generation) {
       // New generation: restart this thread's orbits from the seed pool, reproducibly.
       b.generation = generation;
       b.rng = SplitMix64(mixSeed(seed_, (static_cast<std::uint64_t>(threadIndex) << 8) + li));
-      for (auto* v : {&b.x, &b.y, &b.z, &b.px, &b.py, &b.pz}) v->assign(kOrbitsPerBatch, 0.0);
-      b.warmup.assign(kOrbitsPerBatch, kTransientSteps);
+      for (auto* v : {&b.x, &b.y, &b.z, &b.px, &b.py, &b.pz, &b.sx, &b.sy, &b.sz}) v->assign(kOrbitsPerBatch, 0.0);
+      b.age.assign(kOrbitsPerBatch, 0);
+      b.voxel.assign(kOrbitsPerBatch, -1);
+      b.colorIndex.assign(kOrbitsPerBatch, 0);
+      b.escaped.assign(kOrbitsPerBatch, 0);
+      b.brick.assign(kOrbitsPerBatch, 0);
       for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
         const glm::dvec3 s = layer.seeds[b.rng.next() % layer.seeds.size()];
         b.x[i] = b.px[i] = s.x;
@@ -299,55 +723,63 @@ void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vecto
     const AdvanceFn advance = layer.info->advance(layer.layer.integrator);
     const double* params = layer.layer.params.data();
     const double h = layer.layer.step;
+    // A layer's weight is its share of the iterations, hence of the density it adds.
     const int steps = std::max(1, static_cast<int>(std::lround(kStepsPerBatch * layer.layer.weight / maxWeight)));
-    const double speedToIndex = 255.0 / layer.speedReference;
-    const FitTransform fit = layer.fit;
+    const LayerKernel kernel = makeKernel(layer, grid);
+    const ClassifyFn classify = classifier(layer.layer.color.mode);
+    std::uint32_t packedPalette[256];
+    for (std::size_t c = 0; c < 256; ++c)
+      packedPalette[c] = std::uint32_t{layer.palette[c].r} | std::uint32_t{layer.palette[c].g} << 8 |
+                         std::uint32_t{layer.palette[c].b} << 16;
     for (int s = 0; s < steps; ++s) {
       advance(params, h, b.x.data(), b.y.data(), b.z.data(), kOrbitsPerBatch);
+      classifyBatch(classify, kernel, b);
       iterations += kOrbitsPerBatch;
+      // Branch-free append of every settled point in a brick that touches the mask (a 4×4×4-voxel
+      // bitmap small enough to stay in L1/L2 drops most outside points here); the exact test
+      // happens at the flush, where the voxel's cell (which carries the inside flag) is fetched anyway.
+      const std::uint64_t* bricks = brickBits_.data();
+      std::uint64_t* out = splats.entries.data();
+      std::size_t n = splats.count;
+      std::int32_t escapedHere = 0;
       for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
-        const double x = b.x[i], y = b.y[i], z = b.z[i];
-        if (!isFiniteAndNear(x, y, z, layer.escapeRadius)) {
-          ++escapes;
+        const std::int32_t v = b.voxel[i];
+        out[n] = std::uint64_t{static_cast<std::uint32_t>(v)} |
+                 std::uint64_t{packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])]} << 32;
+        const auto brickIndex = static_cast<std::uint32_t>(b.brick[i]);
+        const bool keep = (v >= 0) & (((bricks[brickIndex / 64] >> (brickIndex % 64)) & 1u) != 0);
+        n += keep ? 1 : 0;
+        outside += ((v >= -1) & !keep) ? 1 : 0;
+        escapedHere += b.escaped[i];
+      }
+      splats.count = n;
+      if (escapedHere > 0) [[unlikely]] {
+        escapes += static_cast<std::uint64_t>(escapedHere);
+        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
+          if (!b.escaped[i]) continue;
           const glm::dvec3 seedPoint = layer.seeds[b.rng.next() % layer.seeds.size()];
           const double jitter = 1e-7 * (1.0 + std::abs(seedPoint.x));
           b.x[i] = b.px[i] = seedPoint.x + jitter * b.rng.symmetric();
           b.y[i] = b.py[i] = seedPoint.y;
           b.z[i] = b.pz[i] = seedPoint.z;
-          b.warmup[i] = kTransientSteps;
-          continue;
+          b.sx[i] = b.sy[i] = b.sz[i] = 0.0;
+          b.age[i] = 0;
+          b.escaped[i] = 0;
         }
-        const double dx = x - b.px[i], dy = y - b.py[i], dz = z - b.pz[i];
-        b.px[i] = x;
-        b.py[i] = y;
-        b.pz[i] = z;
-        if (b.warmup[i] > 0) {
-          --b.warmup[i];
-          continue;
-        }
-        const glm::dvec3 g = fit.apply({x, y, z});
-        const int vi = static_cast<int>(std::floor(g.x));
-        const int vj = static_cast<int>(std::floor(g.y));
-        const int vk = static_cast<int>(std::floor(g.z));
-        if (vi < 0 || vj < 0 || vk < 0 || vi >= grid.size.x || vj >= grid.size.y || vk >= grid.size.z) {
-          ++outside;
-          continue;
-        }
-        const std::size_t voxel = grid.index(vi, vj, vk);
-        if (!inside[voxel]) {
-          ++outside;
-          continue;
-        }
-        const double speed = std::sqrt(dx * dx + dy * dy + dz * dz);
-        const auto paletteIndex = static_cast<std::size_t>(std::min(255.0, speed * speedToIndex));
-        const glm::u8vec3 color = layer.palette[paletteIndex];
-        std::atomic_ref<std::uint32_t>(density_[voxel]).fetch_add(1, std::memory_order_relaxed);
-        std::atomic_ref<std::uint32_t>(colorSum_[3 * voxel + 0]).fetch_add(color.r, std::memory_order_relaxed);
-        std::atomic_ref<std::uint32_t>(colorSum_[3 * voxel + 1]).fetch_add(color.g, std::memory_order_relaxed);
-        std::atomic_ref<std::uint32_t>(colorSum_[3 * voxel + 2]).fetch_add(color.b, std::memory_order_relaxed);
-        ++points;
+      }
+      if (splats.count >= kFlushThreshold) {
+        const std::uint64_t inside = flushSplats(splats);
+        points += inside;
+        outside += splats.count - inside;
+        splats.count = 0;
       }
     }
+  }
+  if (splats.count > 0) {
+    const std::uint64_t inside = flushSplats(splats);
+    points += inside;
+    outside += splats.count - inside;
+    splats.count = 0;
   }
   iterations_.fetch_add(iterations, std::memory_order_relaxed);
   points_.fetch_add(points, std::memory_order_relaxed);

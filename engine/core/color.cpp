@@ -93,4 +93,33 @@ glm::vec3 Gradient::at(float t) const {
   return oklabToLinear(labs_[upper - 1] + w * (labs_[upper] - labs_[upper - 1]));
 }
 
+const std::vector<NamedPalette>& namedPalettes() {
+  static const std::vector<NamedPalette> palettes = {
+      {"ember", {"#1a0500", "#8c1c03", "#ff6a00", "#ffd27a", "#fff8e7"}},
+      {"glacier", {"#020a1a", "#0b3d91", "#2aa7d6", "#a8ecff", "#ffffff"}},
+      {"aurora", {"#06131f", "#11694d", "#3ee08f", "#b8ff6a", "#f3f7ff"}},
+      {"dusk", {"#1d0b36", "#6b1f73", "#d9436b", "#ffa552", "#ffe9a8"}},
+      {"reef", {"#001b2e", "#006d77", "#83c5be", "#ffddd2", "#e29578"}},
+      {"nebula", {"#0b0221", "#4b1d8f", "#c23bd4", "#ff7eb6", "#ffe3f1"}},
+      {"moss", {"#0d1b0a", "#355e1f", "#8db83a", "#e3e87a", "#fffbe0"}},
+      {"steel", {"#0a0d12", "#3a4756", "#8597ad", "#d8e1ea", "#ffffff"}},
+      {"seed", {"#1e4dff", "#ffb13b"}},  // the default preset's two stops
+  };
+  return palettes;
+}
+
+std::vector<GradientStop> paletteStops(std::string_view name) {
+  for (const auto& palette : namedPalettes()) {
+    if (palette.name != name) continue;
+    std::vector<GradientStop> stops;
+    const std::size_t count = palette.hexStops.size();
+    for (std::size_t i = 0; i < count; ++i)
+      stops.push_back({static_cast<float>(i) / static_cast<float>(count - 1), parseHexColor(palette.hexStops[i])});
+    return stops;
+  }
+  std::string known;
+  for (const auto& palette : namedPalettes()) known += (known.empty() ? "" : ", ") + palette.name;
+  throw Error("unknown palette '" + std::string(name) + "' (known: " + known + ")");
+}
+
 }  // namespace voxflame::core

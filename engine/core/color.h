@@ -38,4 +38,14 @@ class Gradient {
   std::vector<glm::vec3> labs_;  // the stops in OKLab, computed once
 };
 
+// Named palettes a preset can refer to ("palette": "ember"): evenly spaced sRGB hex stops,
+// interpolated in OKLab like any gradient.
+struct NamedPalette {
+  std::string name;
+  std::vector<std::string> hexStops;
+};
+const std::vector<NamedPalette>& namedPalettes();
+// The palette's stops in linear RGB; throws core::Error listing the known names.
+std::vector<GradientStop> paletteStops(std::string_view name);
+
 }  // namespace voxflame::core

@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include "error.h"
@@ -18,6 +19,28 @@ std::filesystem::path Scene::resolvedMeshPath() const {
   const std::filesystem::path mesh(meshPath);
   if (mesh.is_absolute() || embedded) return mesh;
   return baseDirectory / mesh;
+}
+
+std::string_view toString(ColorMode mode) {
+  switch (mode) {
+    case ColorMode::Speed:
+      return "speed";
+    case ColorMode::Curvature:
+      return "curvature";
+    case ColorMode::Time:
+      return "time";
+    case ColorMode::Axis:
+      return "axis";
+    case ColorMode::Distance:
+      return "distance";
+  }
+  return "speed";
+}
+
+ColorMode colorModeFromString(std::string_view name) {
+  for (ColorMode mode : {ColorMode::Speed, ColorMode::Curvature, ColorMode::Time, ColorMode::Axis, ColorMode::Distance})
+    if (toString(mode) == name) return mode;
+  throw Error("is '" + std::string(name) + "'; the known colour modes are: speed, curvature, time, axis, distance");
 }
 
 namespace {
@@ -117,6 +140,15 @@ class ObjectReader {
   std::set<std::string> seen_;
 };
 
+glm::dvec3 readVector(ObjectReader& reader, const std::string& key, glm::dvec3 fallback, double limit) {
+  const json* value = reader.find(key);
+  if (!value) return fallback;
+  if (!value->is_array() || value->size() != 3) reader.fail("must be an array of three numbers", key);
+  glm::dvec3 v;
+  for (int i = 0; i < 3; ++i) v[i] = reader.checkNumber((*value)[static_cast<std::size_t>(i)], key, -limit, limit);
+  return v;
+}
+
 ColorSettings readColor(ObjectReader& parent, const std::string& key) {
   ColorSettings color;
   color.gradient = {{0.0f, parseHexColor("#2a6cff")}, {1.0f, parseHexColor("#ffb347")}};
@@ -124,8 +156,22 @@ ColorSettings readColor(ObjectReader& parent, const std::string& key) {
   if (!value) return color;
   ObjectReader reader(*value, parent.source(), parent.keyPath(key));
   const std::string mode = reader.string("mode", "speed");
-  if (mode != "speed") reader.fail("is '" + mode + "'; the known colour modes are: speed", "mode");
-  if (const json* stops = reader.find("gradient")) {
+  try {
+    color.mode = colorModeFromString(mode);
+  } catch (const Error& e) {
+    reader.fail(e.what(), "mode");
+  }
+  const json* stops = reader.find("gradient");
+  color.palette = reader.string("palette", "");
+  if (!color.palette.empty()) {
+    if (stops) reader.fail("cannot be given together with 'gradient'; choose one", "palette");
+    try {
+      color.gradient = paletteStops(color.palette);
+    } catch (const Error& e) {
+      reader.fail(e.what(), "palette");
+    }
+  }
+  if (stops) {
     const std::string path = reader.keyPath("gradient");
     if (!stops->is_array() || stops->size() < 2 || stops->size() > 64)
       reader.fail("must be an array of 2 to 64 colours like \"#ff8800\"", "gradient");
@@ -143,8 +189,33 @@ ColorSettings readColor(ObjectReader& parent, const std::string& key) {
       }
     }
   }
+  color.axis = readVector(reader, "axis", color.axis, 1e6);
+  if (glm::dot(color.axis, color.axis) < 1e-24) reader.fail("must not be the zero vector", "axis");
+  color.period = reader.number("period", color.period, 1.0, 1e9);
+  color.scale = reader.number("scale", color.scale, 1e-6, 1e6);
   reader.finish();
   return color;
+}
+
+LayerTransform readTransform(ObjectReader& parent, const std::string& key) {
+  LayerTransform transform;
+  const json* value = parent.find(key);
+  if (!value) return transform;
+  ObjectReader reader(*value, parent.source(), parent.keyPath(key));
+  transform.scale = reader.number("scale", transform.scale, 1e-3, 1e3);
+  transform.rotationDeg = readVector(reader, "rotation_deg", transform.rotationDeg, 3600.0);
+  transform.offset = readVector(reader, "offset", transform.offset, 100.0);
+  if (const json* locked = reader.find("locked_fit")) {
+    ObjectReader lockedReader(*locked, parent.source(), reader.keyPath("locked_fit"));
+    transform.lockFit = true;
+    if (!locked->contains("center")) lockedReader.fail("is missing", "center");
+    if (!locked->contains("scale")) lockedReader.fail("is missing", "scale");
+    transform.lockedCenter = readVector(lockedReader, "center", transform.lockedCenter, 1e9);
+    transform.lockedScale = lockedReader.number("scale", transform.lockedScale, 1e-12, 1e12);
+    lockedReader.finish();
+  }
+  reader.finish();
+  return transform;
 }
 
 PatternLayer readLayer(const json& value, const std::string& source, const std::string& path) {
@@ -175,6 +246,7 @@ PatternLayer readLayer(const json& value, const std::string& source, const std::
   layer.step = reader.number("step", info->defaultStep, 1e-6, 1.0);
   layer.weight = reader.number("weight", 1.0, 0.0, 1000.0);
   layer.color = readColor(reader, "color");
+  layer.transform = readTransform(reader, "transform");
   reader.finish();
   return layer;
 }
@@ -320,12 +392,30 @@ std::string sceneToJson(const Scene& scene) {
       params[info.params[i].name] = layer.params[i];
     json gradient = json::array();
     for (const auto& stop : layer.color.gradient) gradient.push_back(toHexColor(stop.color));
-    layers.push_back({{"attractor", layer.attractor},
-                      {"params", params},
-                      {"integrator", std::string(toString(layer.integrator))},
-                      {"step", layer.step},
-                      {"weight", layer.weight},
-                      {"color", {{"mode", "speed"}, {"gradient", gradient}}}});
+    const auto vector = [](glm::dvec3 v) { return json::array({v.x, v.y, v.z}); };
+    json color = {{"mode", std::string(toString(layer.color.mode))}};
+    if (layer.color.palette.empty())
+      color["gradient"] = gradient;
+    else
+      color["palette"] = layer.color.palette;
+    const ColorSettings defaults;
+    if (layer.color.axis != defaults.axis) color["axis"] = vector(layer.color.axis);
+    if (layer.color.period != defaults.period) color["period"] = layer.color.period;
+    if (layer.color.scale != defaults.scale) color["scale"] = layer.color.scale;
+    json entry = {{"attractor", layer.attractor},
+                  {"params", params},
+                  {"integrator", std::string(toString(layer.integrator))},
+                  {"step", layer.step},
+                  {"weight", layer.weight},
+                  {"color", color}};
+    const LayerTransform& t = layer.transform;
+    const LayerTransform none;
+    if (t.scale != none.scale || t.rotationDeg != none.rotationDeg || t.offset != none.offset || t.lockFit) {
+      json transform = {{"scale", t.scale}, {"rotation_deg", vector(t.rotationDeg)}, {"offset", vector(t.offset)}};
+      if (t.lockFit) transform["locked_fit"] = {{"center", vector(t.lockedCenter)}, {"scale", t.lockedScale}};
+      entry["transform"] = transform;
+    }
+    layers.push_back(entry);
   }
   root["layers"] = layers;
   const ToneMapSettings& t = scene.tone;

@@ -21,11 +21,38 @@ inline constexpr int kSchemaVersion = 1;
 // A mesh path starting with this names a mesh compiled into the binary ("builtin:meshes/bunny.obj").
 inline constexpr const char* kBuiltinMeshPrefix = "builtin:";
 
-enum class ColorMode { Speed };
+// What a point's colour follows. Each mode yields a value normalised on the layer's probe orbit
+// (so the gradient spans what the attractor actually does), times `scale`, clamped to [0, 1].
+enum class ColorMode {
+  Speed,      // distance travelled in the last step
+  Curvature,  // sine of the turning angle between the last two steps
+  Time,       // steps since the orbit was seeded, cycling through the gradient every `period`
+  Axis,       // position along `axis` across the attractor's extent
+  Distance,   // distance from the attractor's centre
+};
+std::string_view toString(ColorMode mode);
+ColorMode colorModeFromString(std::string_view name);  // throws core::Error listing the modes
 
 struct ColorSettings {
   ColorMode mode = ColorMode::Speed;
-  std::vector<GradientStop> gradient;  // linear RGB stops
+  std::vector<GradientStop> gradient;  // linear RGB stops (filled from `palette` when one is named)
+  std::string palette;                 // a named palette (color.h), or empty for `gradient`
+  glm::dvec3 axis{0.0, 0.0, 1.0};      // Axis mode, in attractor coordinates
+  double period = 1000.0;              // Time mode: steps per trip through the gradient
+  double scale = 1.0;                  // stretches the normalised value before clamping
+};
+
+// Places a layer in the grid on top of the automatic fit: scale about the fitted centre,
+// rotation (degrees about x, then y, then z), offset as a fraction of the grid's longest side.
+// With `lockFit` the automatic fit is replaced by the stored one, so parameter changes (an
+// animation) never move or resize the pattern.
+struct LayerTransform {
+  double scale = 1.0;
+  glm::dvec3 rotationDeg{0.0};
+  glm::dvec3 offset{0.0};
+  bool lockFit = false;
+  glm::dvec3 lockedCenter{0.0};  // attractor coordinates mapped to the mask's centre
+  double lockedScale = 1.0;      // voxels per attractor unit
 };
 
 // One attractor filling the volume; several layers share one grid, each with its weight.
@@ -36,6 +63,7 @@ struct PatternLayer {
   double step = 0.135;  // flows only
   double weight = 1.0;
   ColorSettings color;
+  LayerTransform transform;
 };
 
 // flam3-style tone mapping, applied in the shader so changing it never restarts accumulation.
