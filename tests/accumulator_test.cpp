@@ -74,7 +74,7 @@ TEST(Accumulator, NewPatternBumpsGenerationAndClearsTheGrid) {
   const auto mask = bunnyMask(32);
   auto layers = defaultScene().layers;
   Accumulator accumulator(mask, 2);
-  accumulator.setTargetPoints(200'000);
+  accumulator.setTargetPoints(2'000'000);
   accumulator.setPattern(layers, 1);
   ASSERT_TRUE(accumulator.waitUntilDone(60.0));
   const auto generation = accumulator.generation();
@@ -87,9 +87,25 @@ TEST(Accumulator, NewPatternBumpsGenerationAndClearsTheGrid) {
   accumulator.snapshot(snapshot);
   double total = 0.0;
   for (float d : snapshot.density) total += d;
-  // Only the new generation's points are in the grid: a little over the new target, far below 200k.
-  EXPECT_LT(total, 100'000.0);
+  // Only the new generation's points are in the grid: at most a batch per work stream over the new
+  // target, far below the 2 M of the old one.
+  EXPECT_LT(total, 400'000.0);
   EXPECT_GE(total, 1'000.0);
+}
+
+TEST(Accumulator, TheVolumeDoesNotDependOnTheNumberOfThreads) {
+  const auto mask = bunnyMask(40);
+  const auto layers = defaultScene().layers;
+  const VolumeSnapshot one = accumulate(mask, layers, 300'000, 1, 11);
+  const VolumeSnapshot two = accumulate(mask, layers, 300'000, 2, 11);
+  const VolumeSnapshot five = accumulate(mask, layers, 300'000, 5, 11);
+  EXPECT_EQ(one.points, two.points);
+  EXPECT_EQ(one.density, two.density);
+  EXPECT_EQ(one.rgba, two.rgba);
+  EXPECT_EQ(one.density, five.density);
+  EXPECT_EQ(one.rgba, five.rgba);
+  const VolumeSnapshot otherSeed = accumulate(mask, layers, 300'000, 2, 12);
+  EXPECT_NE(one.density, otherSeed.density);
 }
 
 TEST(Accumulator, EscapingAttractorIsReportedAndNeverSplatted) {

@@ -517,6 +517,7 @@ Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : 
   slabCount_ = ((voxels - 1) >> slabShift_) + 1;
   slabMutexes_ = std::make_unique<std::mutex[]>(slabCount_);
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  threadCount_ = threads;
   threads_.reserve(static_cast<std::size_t>(threads));
   for (int t = 0; t < threads; ++t) threads_.emplace_back([this, t](std::stop_token stop) { workerLoop(stop, t); });
 }
@@ -544,6 +545,7 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     clearCells();
     iterations_ = 0;
     points_ = 0;
+    for (auto& streamPoints : streamPoints_) streamPoints = 0;
     outside_ = 0;
     escapes_ = 0;
     generationStart_ = nowSeconds();
@@ -569,10 +571,19 @@ void Accumulator::setTargetPoints(std::uint64_t target) {
 
 bool Accumulator::waitUntilDone(double timeoutSeconds) {
   std::unique_lock lock(wakeMutex_);
-  return doneSignal_.wait_for(lock, std::chrono::duration<double>(timeoutSeconds), [&] {
-    const auto target = targetPoints_.load();
-    return !active_.load() || (target > 0 && points_.load() >= target);
-  });
+  return doneSignal_.wait_for(lock, std::chrono::duration<double>(timeoutSeconds),
+                              [&] { return !active_.load() || allStreamsDone(targetPoints_.load()); });
+}
+
+bool Accumulator::streamDone(int stream, std::uint64_t target) const {
+  const std::uint64_t quota = (target + kStreams - 1) / kStreams;
+  return target > 0 && streamPoints_[static_cast<std::size_t>(stream)].load() >= quota;
+}
+
+bool Accumulator::allStreamsDone(std::uint64_t target) const {
+  for (int stream = 0; stream < kStreams; ++stream)
+    if (!streamDone(stream, target)) return false;
+  return true;
 }
 
 AccumulatorStats Accumulator::stats() const {
@@ -585,7 +596,7 @@ AccumulatorStats Accumulator::stats() const {
   const double elapsed = nowSeconds() - generationStart_.load();
   s.pointsPerSecond = elapsed > 0.0 ? static_cast<double>(s.iterations) / elapsed : 0.0;
   const auto target = targetPoints_.load();
-  s.done = target > 0 && s.points >= target;
+  s.done = allStreamsDone(target);
   std::shared_lock lock(gridMutex_);
   s.problem = problem_;
   return s;
@@ -625,22 +636,37 @@ void Accumulator::snapshot(VolumeSnapshot& out) const {
 }
 
 void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
-  std::vector<OrbitBatch> batches;
+  const int threadCount = threadCount_;
+  std::vector<int> owned;
+  for (int stream = threadIndex; stream < kStreams; stream += threadCount) owned.push_back(stream);
+  std::vector<std::vector<OrbitBatch>> batches(kStreams);
   SplatBuffer splats;
   splats.reset(slabCount_);
+  std::size_t turn = 0;
+  auto nextStream = [&](std::uint64_t target) {
+    // Round robin over this thread's streams that still have work.
+    for (std::size_t k = 0; k < owned.size(); ++k) {
+      const int stream = owned[(turn + k) % owned.size()];
+      if (!streamDone(stream, target)) {
+        turn = (turn + k + 1) % owned.size();
+        return stream;
+      }
+    }
+    return -1;
+  };
   while (!stop.stop_requested()) {
-    const auto target = targetPoints_.load();
-    const bool reachedTarget = target > 0 && points_.load() >= target;
-    if (!active_.load() || reachedTarget) {
+    const int stream = active_.load() && !owned.empty() ? nextStream(targetPoints_.load()) : -1;
+    if (stream < 0) {
       doneSignal_.notify_all();
       std::unique_lock lock(wakeMutex_);
       wake_.wait_for(lock, stop, std::chrono::milliseconds(50), [&] {
-        const auto t = targetPoints_.load();
-        return active_.load() && !(t > 0 && points_.load() >= t);
+        if (!active_.load() || owned.empty()) return false;
+        const auto target = targetPoints_.load();
+        return std::any_of(owned.begin(), owned.end(), [&](int s) { return !streamDone(s, target); });
       });
       continue;
     }
-    runBatch(threadIndex, generation_.load(), batches, splats);
+    runBatch(stream, generation_.load(), batches[static_cast<std::size_t>(stream)], splats);
   }
 }
 
@@ -686,7 +712,7 @@ std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {
   return inside;
 }
 
-void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vector<OrbitBatch>& batches,
+void Accumulator::runBatch(int stream, std::uint64_t generation, std::vector<OrbitBatch>& batches,
                            SplatBuffer& splats) {
   std::shared_lock lock(gridMutex_);
   if (generation != generation_.load()) return;  // a new pattern arrived; pick it up next time
@@ -706,7 +732,7 @@ void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vecto
     if (b.generation != generation) {
       // New generation: restart this thread's orbits from the seed pool, reproducibly.
       b.generation = generation;
-      b.rng = SplitMix64(mixSeed(seed_, (static_cast<std::uint64_t>(threadIndex) << 8) + li));
+      b.rng = SplitMix64(mixSeed(seed_, (static_cast<std::uint64_t>(stream) << 8) + li));
       for (auto* v : {&b.x, &b.y, &b.z, &b.px, &b.py, &b.pz, &b.sx, &b.sy, &b.sz}) v->assign(kOrbitsPerBatch, 0.0);
       b.age.assign(kOrbitsPerBatch, 0);
       b.voxel.assign(kOrbitsPerBatch, -1);
@@ -783,6 +809,7 @@ void Accumulator::runBatch(int threadIndex, std::uint64_t generation, std::vecto
   }
   iterations_.fetch_add(iterations, std::memory_order_relaxed);
   points_.fetch_add(points, std::memory_order_relaxed);
+  streamPoints_[static_cast<std::size_t>(stream)].fetch_add(points, std::memory_order_relaxed);
   outside_.fetch_add(outside, std::memory_order_relaxed);
   escapes_.fetch_add(escapes, std::memory_order_relaxed);
   version_.fetch_add(1, std::memory_order_release);

@@ -14,6 +14,7 @@
 // accumulator never touches GL. Threads are std::jthreads owned here and joined in the destructor.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -153,8 +154,10 @@ class Accumulator {
  private:
   friend struct SplatBuffer;
   void workerLoop(std::stop_token stop, int threadIndex);
-  void runBatch(int threadIndex, std::uint64_t generation, std::vector<struct OrbitBatch>& batches,
+  void runBatch(int stream, std::uint64_t generation, std::vector<struct OrbitBatch>& batches,
                 struct SplatBuffer& splats);
+  bool streamDone(int stream, std::uint64_t target) const;
+  bool allStreamsDone(std::uint64_t target) const;
   // Adds a thread's collected splats to the grid; returns how many landed inside the mask.
   std::uint64_t flushSplats(struct SplatBuffer& splats);
   void clearCells();  // zero sums; the outside flag set from the mask
@@ -185,6 +188,14 @@ class Accumulator {
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;  // workers sleep here when idle
   std::condition_variable doneSignal_;
+
+  // The work is cut into a fixed number of streams, each with its own orbits and random numbers and
+  // a share of the target, and each owned by one thread (stream s by thread s mod threads). What
+  // lands in the grid therefore depends on the seed alone, never on the number of threads or how
+  // they were scheduled: the same preset and seed give the same volume, bit for bit.
+  static constexpr int kStreams = 16;
+  int threadCount_ = 1;                                              // set before the threads start
+  std::array<std::atomic<std::uint64_t>, kStreams> streamPoints_{};  // inside points this generation
 
   std::vector<std::jthread> threads_;
 };
