@@ -91,6 +91,17 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
         markBricks(i, j, k);
       }
   out.meanDensity = occupied ? static_cast<float>(densitySum / static_cast<double>(occupied)) : 0.0f;
+  out.coarseCount = (out.brickCount + (kCoarseBricks - 1)) / kCoarseBricks;
+  out.coarseOccupancy.assign(static_cast<std::size_t>(out.coarseCount.x) * out.coarseCount.y * out.coarseCount.z, 0);
+  for (int k = 0; k < out.brickCount.z; ++k)
+    for (int j = 0; j < out.brickCount.y; ++j)
+      for (int i = 0; i < out.brickCount.x; ++i)
+        if (out.occupancy[static_cast<std::size_t>(i) + static_cast<std::size_t>(out.brickCount.x) *
+                                                            (j + static_cast<std::size_t>(out.brickCount.y) * k)])
+          out.coarseOccupancy[static_cast<std::size_t>(i / kCoarseBricks) +
+                              static_cast<std::size_t>(out.coarseCount.x) *
+                                  (j / kCoarseBricks +
+                                   static_cast<std::size_t>(out.coarseCount.y) * (k / kCoarseBricks))] = 1;
 }
 
 }  // namespace voxflame::core

@@ -16,6 +16,7 @@
 namespace voxflame::core {
 
 inline constexpr int kBrickSize = 8;
+inline constexpr int kCoarseBricks = 4;
 
 struct PackedVolume {
   GridGeometry geometry;
@@ -23,7 +24,9 @@ struct PackedVolume {
   std::vector<std::uint16_t> density;  // the alpha channel alone: the march tests it first, and one
                                        // channel filters far faster than four in software GL
   glm::ivec3 brickCount{0};
-  std::vector<std::uint8_t> occupancy;  // 1 where a brick, grown by one voxel, holds density
+  std::vector<std::uint8_t> occupancy;        // 1 where a brick, grown by one voxel, holds density
+  glm::ivec3 coarseCount{0};                  // bricks of kCoarseBricks³ bricks: long empty stretches
+  std::vector<std::uint8_t> coarseOccupancy;  // are crossed in a few leaps instead of dozens
   float maxDensity = 0.0f;
   float meanDensity = 0.0f;  // over voxels with any density: the scale of a "typical" voxel
   std::uint64_t version = 0;

@@ -38,6 +38,9 @@ uniform sampler3D uDensity;     // normalised density alone, tested before the c
 uniform usampler3D uOccupancy;  // 1 per brick that holds density
 uniform ivec3 uBrickCount;
 uniform int uBrickSize;
+uniform usampler3D uCoarseOccupancy;  // 1 per group of kCoarseBricks³ bricks with any density
+uniform ivec3 uCoarseCount;
+uniform int uCoarseSize;              // voxels along a coarse brick
 uniform float uMaxDensity;
 uniform float uDensityScale;    // maps raw hits into the log curve
 uniform float uLogNormalizer;   // 1 / log(1 + maxDensity * uDensityScale)
@@ -86,26 +89,41 @@ void main() {
     float t = tEnter + stepLength * hash(uvec3(uvec2(ivec2(gl_FragCoord.xy) + uPixelOffset), uSample));
     vec3 toVoxel = vec3(1.0 / uVoxelSize);
     vec3 toTexture = 1.0 / vec3(uGridSize);
-    float brickLength = float(uBrickSize) * uVoxelSize;
     vec3 exitSide = step(vec3(0.0), direction);
     while (t < tExit) {
       vec3 position = origin + t * direction;
       vec3 voxel = (position - uGridOrigin) * toVoxel;
-      ivec3 brick = clamp(ivec3(floor(voxel)) / uBrickSize, ivec3(0), uBrickCount - 1);
-      if (texelFetch(uOccupancy, brick, 0).r == 0u) {
-        // Leap to the first step past this empty brick, staying on the jittered step lattice.
-        vec3 brickMin = uGridOrigin + vec3(brick) * brickLength;
-        vec3 tBrick = (brickMin + exitSide * brickLength - origin) * inverseDirection;
-        float tLeave = min(tBrick.x, min(tBrick.y, tBrick.z));
+      ivec3 voxelIndex = ivec3(floor(voxel));
+      // Two levels of empty space: a coarse brick, then a brick; either leaps to the first step
+      // past its far side, staying on the jittered step lattice.
+      ivec3 coarse = clamp(voxelIndex / uCoarseSize, ivec3(0), uCoarseCount - 1);
+      int leapVoxels = 0;
+      ivec3 leapCell;
+      if (texelFetch(uCoarseOccupancy, coarse, 0).r == 0u) {
+        leapVoxels = uCoarseSize;
+        leapCell = coarse;
+      } else {
+        ivec3 brick = clamp(voxelIndex / uBrickSize, ivec3(0), uBrickCount - 1);
+        if (texelFetch(uOccupancy, brick, 0).r == 0u) {
+          leapVoxels = uBrickSize;
+          leapCell = brick;
+        }
+      }
+      if (leapVoxels > 0) {
+        float cellLength = float(leapVoxels) * uVoxelSize;
+        vec3 cellMin = uGridOrigin + vec3(leapCell) * cellLength;
+        vec3 tCell = (cellMin + exitSide * cellLength - origin) * inverseDirection;
+        float tLeave = min(tCell.x, min(tCell.y, tCell.z));
         t += max(ceil((tLeave - t) / stepLength), 1.0) * stepLength;
         continue;
       }
-      float density = texture(uDensity, voxel * toTexture).r;
+      // Explicit LOD: there are no mipmaps, and implicit derivatives are undefined in this loop.
+      float density = textureLod(uDensity, voxel * toTexture, 0.0).r;
       if (density > 0.0) {
-        vec4 texel = texture(uVolume, voxel * toTexture);
+        vec4 texel = textureLod(uVolume, voxel * toTexture, 0.0);
         float level = log(1.0 + density * uMaxDensity * uDensityScale) * uLogNormalizer;
         float alpha = 1.0 - exp(-level * uBrightness * uStepVoxels);
-        float lit = uLighting ? mix(1.0, texture(uShadow, voxel * uShadowScale).r, uLightStrength) : 1.0;
+        float lit = uLighting ? mix(1.0, textureLod(uShadow, voxel * uShadowScale, 0.0).r, uLightStrength) : 1.0;
         radiance += transmittance * alpha * lit * (texel.rgb / texel.a);
         coverage *= 1.0 - alpha;
         transmittance *= 1.0 - alpha * uOpacity;
@@ -324,6 +342,7 @@ VolumeRenderer::VolumeRenderer()
   volumeTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
   densityTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
   occupancyTexture_ = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
+  coarseTexture_ = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
   shadowTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
 }
 
@@ -331,6 +350,7 @@ VolumeRenderer::~VolumeRenderer() {
   glDeleteTextures(1, &volumeTexture_);
   glDeleteTextures(1, &densityTexture_);
   glDeleteTextures(1, &occupancyTexture_);
+  glDeleteTextures(1, &coarseTexture_);
   glDeleteTextures(1, &shadowTexture_);
   glDeleteVertexArrays(1, &vertexArray_);
   glDeleteVertexArrays(1, &meshArray_);
@@ -387,6 +407,10 @@ bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
                GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.occupancy.data());
   geometry_ = volume.geometry;
   brickCount_ = volume.brickCount;
+  glBindTexture(GL_TEXTURE_3D, coarseTexture_);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, volume.coarseCount.x, volume.coarseCount.y, volume.coarseCount.z, 0,
+               GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.coarseOccupancy.data());
+  coarseCount_ = volume.coarseCount;
   maxDensity_ = volume.maxDensity;
   meanDensity_ = volume.meanDensity;
   uploadedVersion_ = std::max<std::uint64_t>(volume.version, 1);
@@ -468,6 +492,8 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   setUniform(p, "uStepVoxels", std::clamp(settings.render.stepVoxels, 0.05, 4.0));
   glUniform3i(p.uniform("uBrickCount"), brickCount_.x, brickCount_.y, brickCount_.z);
   glUniform1i(p.uniform("uBrickSize"), core::kBrickSize);
+  glUniform3i(p.uniform("uCoarseCount"), coarseCount_.x, coarseCount_.y, coarseCount_.z);
+  glUniform1i(p.uniform("uCoarseSize"), core::kBrickSize * core::kCoarseBricks);
   // Like flam3's k2: density is measured against a typical (mean) occupied voxel, so the image
   // does not change character as points accumulate, and the log keeps sparse and dense visible.
   const float densityScale = meanDensity_ > 0.0f ? 1.0f / meanDensity_ : 1.0f;
@@ -494,6 +520,9 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   glActiveTexture(GL_TEXTURE3);
   glBindTexture(GL_TEXTURE_3D, densityTexture_);
   glUniform1i(p.uniform("uDensity"), 3);
+  glActiveTexture(GL_TEXTURE4);
+  glBindTexture(GL_TEXTURE_3D, coarseTexture_);
+  glUniform1i(p.uniform("uCoarseOccupancy"), 4);
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);

@@ -94,7 +94,9 @@ class VolumeRenderer {
   GLuint volumeTexture_ = 0;     // RGBA16F: premultiplied colour, normalised density
   GLuint densityTexture_ = 0;    // R16F: normalised density alone
   GLuint occupancyTexture_ = 0;  // R8UI per brick
-  GLuint shadowTexture_ = 0;     // R8 light transmittance
+  GLuint coarseTexture_ = 0;     // R8UI per coarse brick
+  glm::ivec3 coarseCount_{0};
+  GLuint shadowTexture_ = 0;  // R8 light transmittance
   glm::ivec3 shadowSize_{0};
   int shadowDownsample_ = 0;
   core::GridGeometry geometry_;
