@@ -5,18 +5,14 @@
 #include "core/color.h"
 #include "core/error.h"
 #include "core/scene.h"
+#include "test_support.h"
 
 using namespace voxflame::core;
 
 namespace {
 
 std::string errorOf(const std::string& json) {
-  try {
-    sceneFromJson(json, "test.json");
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return voxflame::test::presetErrorOf(json);
 }
 
 }  // namespace

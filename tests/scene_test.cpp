@@ -13,12 +13,7 @@ using namespace voxflame::core;
 namespace {
 
 std::string errorOf(const std::string& json) {
-  try {
-    sceneFromJson(json, "test.json");
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "";
+  return voxflame::test::presetErrorOf(json);
 }
 
 const char* kMinimal = R"({"mesh":{"path":"m.obj"},"layers":[{"attractor":"lorenz84"}]})";

@@ -1,5 +1,8 @@
 #include "test_support.h"
 
+#include "core/error.h"
+#include "core/scene.h"
+
 #include <sys/wait.h>
 
 #include <array>
@@ -36,6 +39,15 @@ TemporaryFolder::TemporaryFolder() {
 TemporaryFolder::~TemporaryFolder() {
   std::error_code ec;
   std::filesystem::remove_all(path_, ec);
+}
+
+std::string presetErrorOf(const std::string& json) {
+  try {
+    core::sceneFromJson(json, "test.json");
+  } catch (const core::Error& e) {
+    return e.what();
+  }
+  return "";
 }
 
 CommandResult runVoxflame(const std::string& arguments, const std::filesystem::path& workingDir,

@@ -22,6 +22,9 @@ class TemporaryFolder {
   std::filesystem::path path_;
 };
 
+// The message core::sceneFromJson gives for this preset text, or "" when it loads.
+std::string presetErrorOf(const std::string& json);
+
 struct CommandResult {
   int exitStatus = -1;
   std::string output;  // stdout and stderr together

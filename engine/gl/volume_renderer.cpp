@@ -285,6 +285,13 @@ glm::dvec2 samplePixelOffset(int sampleIndex) {
 void setUniform(const ShaderProgram& program, const char* name, glm::vec3 v) {
   glUniform3f(program.uniform(name), v.x, v.y, v.z);
 }
+// Binds `texture` to texture unit `unit` and points the sampler uniform `name` at it.
+void bindSampler(const ShaderProgram& program, const char* name, int unit, GLenum target, GLuint texture) {
+  glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+  glBindTexture(target, texture);
+  glUniform1i(program.uniform(name), unit);
+}
+
 void setUniform(const ShaderProgram& program, const char* name, double v) {
   glUniform1f(program.uniform(name), static_cast<float>(v));
 }
@@ -508,21 +515,11 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   glUniform1i(p.uniform("uLighting"), lighting ? 1 : 0);
   if (lighting) setUniform(p, "uShadowScale", 1.0f / glm::vec3(shadowSize_ * shadowDownsample_));
   setUniform(p, "uLightStrength", settings.render.lightStrength);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_3D, volumeTexture_);
-  glUniform1i(p.uniform("uVolume"), 0);
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_3D, occupancyTexture_);
-  glUniform1i(p.uniform("uOccupancy"), 1);
-  glActiveTexture(GL_TEXTURE2);
-  glBindTexture(GL_TEXTURE_3D, shadowTexture_);
-  glUniform1i(p.uniform("uShadow"), 2);
-  glActiveTexture(GL_TEXTURE3);
-  glBindTexture(GL_TEXTURE_3D, densityTexture_);
-  glUniform1i(p.uniform("uDensity"), 3);
-  glActiveTexture(GL_TEXTURE4);
-  glBindTexture(GL_TEXTURE_3D, coarseTexture_);
-  glUniform1i(p.uniform("uCoarseOccupancy"), 4);
+  bindSampler(p, "uVolume", 0, GL_TEXTURE_3D, volumeTexture_);
+  bindSampler(p, "uOccupancy", 1, GL_TEXTURE_3D, occupancyTexture_);
+  bindSampler(p, "uShadow", 2, GL_TEXTURE_3D, shadowTexture_);
+  bindSampler(p, "uDensity", 3, GL_TEXTURE_3D, densityTexture_);
+  bindSampler(p, "uCoarseOccupancy", 4, GL_TEXTURE_3D, coarseTexture_);
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
@@ -581,12 +578,8 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
   setUniform(p, "uContrast", tone.contrast);
   setUniform(p, "uBackground", displayEncode(tone.background, tone.gamma));
   glUniform1i(p.uniform("uLinearOutput"), linearOutput ? 1 : 0);
-  glActiveTexture(GL_TEXTURE0);
-  glBindTexture(GL_TEXTURE_2D, target.radiance_);
-  glUniform1i(p.uniform("uRadiance"), 0);
-  glActiveTexture(GL_TEXTURE1);
-  glBindTexture(GL_TEXTURE_2D, target.meshLayer_);
-  glUniform1i(p.uniform("uMeshLayer"), 1);
+  bindSampler(p, "uRadiance", 0, GL_TEXTURE_2D, target.radiance_);
+  bindSampler(p, "uMeshLayer", 1, GL_TEXTURE_2D, target.meshLayer_);
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
