@@ -63,15 +63,44 @@ struct ExplorerState {
   std::uint64_t searchSeed = 1;
   double mutateStrength = 0.1;
   std::string searchMessage;
+  // The Lyapunov spectrum of layer 0, analysed off the main thread whenever the pattern changes.
+  std::future<core::OrbitAnalysis> analysis;
+  std::string lyapunovText = "Lyapunov: …";
 };
 
-void startSearch(ExplorerState& state, double strength) {
-  if (state.search.valid()) return;  // one at a time
-  const core::PatternLayer& layer = state.scene.layers.front();
+core::OrbitSpec layerSpec(const core::PatternLayer& layer) {
   core::OrbitSpec spec = core::defaultOrbitSpec(core::attractorOrThrow(layer.attractor));
   spec.params = layer.params;
   spec.integrator = layer.integrator;
   spec.step = layer.step;
+  return spec;
+}
+
+void startAnalysis(ExplorerState& state) {
+  if (state.analysis.valid()) state.analysis.wait();  // a short run (tens of ms); keeps one at a time
+  const core::OrbitSpec spec = layerSpec(state.scene.layers.front());
+  core::LyapunovOptions options;
+  options.steps = 20'000;
+  state.analysis = std::async(std::launch::async, [spec, options] { return core::analyseOrbit(spec, options); });
+}
+
+void collectAnalysis(ExplorerState& state) {
+  if (!state.analysis.valid() || state.analysis.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+  try {
+    const core::OrbitAnalysis result = state.analysis.get();
+    char text[128];
+    std::snprintf(text, sizeof text, "Lyapunov %.3f %.3f %.3f (%s)", result.lyapunov[0], result.lyapunov[1],
+                  result.lyapunov[2], std::string(core::toString(result.verdict)).c_str());
+    state.lyapunovText = text;
+  } catch (const core::Error& e) {
+    state.lyapunovText = e.what();
+  }
+}
+
+void startSearch(ExplorerState& state, double strength) {
+  if (state.search.valid()) return;  // one at a time
+  const core::PatternLayer& layer = state.scene.layers.front();
+  const core::OrbitSpec spec = layerSpec(layer);
   core::SearchOptions options;
   options.seed = state.searchSeed++;
   options.count = 1;
@@ -250,6 +279,7 @@ void drawPanel(ExplorerState& state, const core::AccumulatorStats& stats) {
   ImGui::Text("inside %.1f%%  escapes %llu", 100.0 * stats.insideFraction(),
               static_cast<unsigned long long>(stats.escapes));
   ImGui::Text("%.1f ms/frame  %d samples", state.frameMs, state.samples);
+  ImGui::TextUnformatted(state.lyapunovText.c_str());
   if (!stats.problem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.45f, 0.35f, 1.0f), "%s", stats.problem.c_str());
   ImGui::End();
 }
@@ -321,6 +351,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     core::Accumulator accumulator(mask);
     accumulator.setTargetPoints(std::uint64_t{4'000'000'000});
     accumulator.setPattern(state.scene.layers, state.scene.seed);
+    startAnalysis(state);
     core::SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(100));
     core::PackedVolume incoming, uploading;
     bool uploadInProgress = false;
@@ -351,8 +382,10 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       drawPanel(state, accumulator.stats());
       ImGui::Render();
 
+      collectAnalysis(state);
       if (state.patternDirty) {
         state.patternDirty = false;
+        startAnalysis(state);
         try {
           accumulator.setPattern(state.scene.layers, state.scene.seed);
           publisher.requestNow();
