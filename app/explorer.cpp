@@ -12,6 +12,7 @@
 #include <cctype>
 #include <chrono>
 #include <future>
+#include <optional>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -26,6 +27,7 @@
 #include "core/snapshot_publisher.h"
 #include "gl/volume_renderer.h"
 #include "pipeline.h"
+#include "scene_history.h"
 
 namespace voxflame::app {
 
@@ -66,7 +68,35 @@ struct ExplorerState {
   // The Lyapunov spectrum of layer 0, analysed off the main thread whenever the pattern changes.
   std::future<core::OrbitAnalysis> analysis;
   std::string lyapunovText = "Lyapunov: …";
+  std::optional<SceneHistory> history;  // undo/redo over the whole scene
 };
+
+// The part of a scene that the accumulation depends on; other edits only change the drawing.
+std::string patternKey(const core::Scene& scene) {
+  core::Scene pattern = scene;
+  pattern.tone = {};
+  pattern.camera = {};
+  pattern.render = {};
+  return core::sceneToJson(pattern);
+}
+
+// Ctrl+Z undoes, Ctrl+Shift+Z (or Ctrl+Y) redoes; an edit is recorded once it settles, so a
+// whole slider drag or camera drag is one step.
+void handleHistory(ExplorerState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.WantTextInput && io.KeyCtrl &&
+      (ImGui::IsKeyPressed(GLFW_KEY_Z, false) || ImGui::IsKeyPressed(GLFW_KEY_Y, false))) {
+    const bool redo = io.KeyShift || ImGui::IsKeyPressed(GLFW_KEY_Y, false);
+    if (auto scene = redo ? state.history->redo() : state.history->undo()) {
+      if (patternKey(*scene) != patternKey(state.scene)) state.patternDirty = true;
+      state.scene = *scene;
+    }
+    return;
+  }
+  const bool mouseHeld = ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right) ||
+                         ImGui::IsMouseDown(ImGuiMouseButton_Middle);
+  if (!mouseHeld && !ImGui::IsAnyItemActive()) state.history->record(state.scene);
+}
 
 core::OrbitSpec layerSpec(const core::PatternLayer& layer) {
   core::OrbitSpec spec = core::defaultOrbitSpec(core::attractorOrThrow(layer.attractor));
@@ -337,6 +367,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   ExplorerState state;
   state.scene = initialScene;
   state.initialCamera = initialScene.camera;
+  state.history.emplace(initialScene);
   // Software GL (llvmpipe) marches a quarter of the pixels to stay interactive; samples then
   // refine the image while nothing changes.
   const std::string glRenderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -377,6 +408,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       ImGui_ImplGlfw_NewFrame();
       ImGui::NewFrame();
       handleMouse(window, state);
+      handleHistory(state);
       if (ImGui::IsKeyPressed(GLFW_KEY_F3, false)) startSearch(state, 0.1);
       collectSearch(state);
       drawPanel(state, accumulator.stats());

@@ -1,0 +1,29 @@
+#include "scene_history.h"
+
+namespace voxflame::app {
+
+SceneHistory::SceneHistory(const core::Scene& initial, std::size_t limit) : limit_(std::max<std::size_t>(limit, 2)) {
+  steps_.push_back({initial, core::sceneToJson(initial)});
+}
+
+bool SceneHistory::record(const core::Scene& scene) {
+  std::string json = core::sceneToJson(scene);
+  if (json == steps_[current_].json) return false;
+  steps_.resize(current_ + 1);
+  steps_.push_back({scene, std::move(json)});
+  if (steps_.size() > limit_) steps_.erase(steps_.begin());
+  current_ = steps_.size() - 1;
+  return true;
+}
+
+std::optional<core::Scene> SceneHistory::undo() {
+  if (!canUndo()) return std::nullopt;
+  return steps_[--current_].scene;
+}
+
+std::optional<core::Scene> SceneHistory::redo() {
+  if (!canRedo()) return std::nullopt;
+  return steps_[++current_].scene;
+}
+
+}  // namespace voxflame::app
