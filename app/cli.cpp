@@ -26,8 +26,9 @@ namespace {
 constexpr const char* kUsage = R"(voxflame — strange attractors filling the volume of a mesh
 
 usage:
-  voxflame [PRESET.json] [--screenshot FILE --frames N]
-      Open the explorer on a preset (the built-in default when none is given).
+  voxflame [PRESET.json | IMAGE.png | MESH] [--screenshot FILE --frames N] [--ui-scale S]
+      Open the explorer on a preset (the built-in default when none is given), on the preset
+      stored in a PNG rendered by voxflame, or on a mesh filled with the default pattern.
   voxflame render [PRESET.json|IMAGE.png] -o OUT.png|OUT.exr [--width W] [--height H]
                   [--samples S] [--points N] [--grid R] [--bit-depth 8|16]
                   [--camera-azimuth DEG] [--camera-elevation DEG] [--threads T]
@@ -54,9 +55,7 @@ usage:
 
 core::Scene sceneFromArgument(const std::vector<std::string>& positional) {
   if (positional.empty()) return core::defaultScene();
-  const std::filesystem::path path(positional.front());
-  if (path.extension() == ".png" || path.extension() == ".PNG") return sceneFromImage(path);
-  return core::loadScene(path);
+  return sceneFromFile(positional.front());
 }
 
 namespace {
@@ -170,6 +169,9 @@ int explorerCommand(const std::vector<std::string>& args) {
   ExplorerOptions options;
   if (const auto screenshot = arguments.take("--screenshot")) options.screenshotPath = *screenshot;
   options.frames = static_cast<int>(arguments.integer("--frames", 0, 0, 1'000'000));
+  options.uiScale = static_cast<float>(arguments.real("--ui-scale", 0.0, 0.5, 4.0));
+  options.width = static_cast<int>(arguments.integer("--width", 1280, 320, 16384));
+  options.height = static_cast<int>(arguments.integer("--height", 720, 240, 16384));
   arguments.finish(1);
   if (!options.screenshotPath.empty() && options.frames == 0) options.frames = 60;
   return runExplorer(sceneFromArgument(arguments.positional()), options);

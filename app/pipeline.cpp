@@ -2,6 +2,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -127,6 +129,29 @@ core::Scene sceneFromImage(const std::filesystem::path& path) {
                       "\" chunk)");
   core::Scene scene = core::sceneFromJson(preset->second, path.string());
   if (!scene.embedded) scene.baseDirectory = path.parent_path();
+  return scene;
+}
+
+}  // namespace voxflame::app
+
+namespace voxflame::app {
+
+core::Scene sceneWithMesh(core::Scene scene, const std::filesystem::path& path) {
+  if (!std::filesystem::exists(path)) throw core::Error(path.string() + ": no such file");
+  scene.meshPath = std::filesystem::absolute(path).lexically_normal().string();
+  scene.baseDirectory.clear();
+  scene.embedded = false;
+  return scene;
+}
+
+core::Scene sceneFromFile(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
+  if (extension == ".json") return core::loadScene(path);
+  if (extension == ".png") return sceneFromImage(path);
+  core::Scene scene = sceneWithMesh(core::defaultScene(), path);
+  scene.name = path.stem().string();
   return scene;
 }
 

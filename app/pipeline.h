@@ -67,4 +67,11 @@ inline constexpr const char* kPresetChunkKey = "voxflame:preset";
 // The scene stored in a PNG rendered by voxflame (its "voxflame:preset" chunk).
 core::Scene sceneFromImage(const std::filesystem::path& path);
 
+// `scene` with its mesh replaced by the mesh file at `path` (the pattern and look stay).
+core::Scene sceneWithMesh(core::Scene scene, const std::filesystem::path& path);
+
+// Whatever a user can open: a preset (.json), a PNG rendered by voxflame (its preset), or a mesh
+// (any other file: the default pattern fills it). Throws core::Error naming the file.
+core::Scene sceneFromFile(const std::filesystem::path& path);
+
 }  // namespace voxflame::app

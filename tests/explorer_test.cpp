@@ -62,10 +62,10 @@ TEST(Explorer, WindowUnderXvfbShowsPanelAndLitVolume) {
   const auto png = voxflame::core::readPng(folder / "shot.png");
   ASSERT_EQ(png.image.width, 1280);
   ASSERT_EQ(png.image.height, 720);
-  // The ImGui panel sits at the top left: its title bar is a saturated blue-grey, unlike the
-  // near-black background.
+  // The Pattern panel sits at the top left: its headers and sliders are a saturated blue-grey,
+  // unlike the near-black background.
   int panelPixels = 0;
-  for (int y = 12; y < 30; ++y)
+  for (int y = 30; y < 120; ++y)
     for (int x = 20; x < 300; ++x) {
       const float* p = png.image.at(x, y);
       panelPixels += (p[2] > 0.15f && p[2] > p[0] + 0.03f);
@@ -74,7 +74,7 @@ TEST(Explorer, WindowUnderXvfbShowsPanelAndLitVolume) {
   // The volume lights up pixels in the middle of the window.
   int lit = 0;
   for (int y = 200; y < 600; ++y)
-    for (int x = 500; x < 1100; ++x) {
+    for (int x = 400; x < 900; ++x) {
       const float* p = png.image.at(x, y);
       lit += (p[0] + p[1] + p[2] > 0.4f);
     }

@@ -541,7 +541,10 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     std::unique_lock lock(gridMutex_);  // no batch runs and no snapshot copies while we clear
     layers_ = std::move(prepared);
     seed_ = seed;
-    problem_ = problem;
+    {
+      std::lock_guard problemLock(problemMutex_);
+      problem_ = problem;
+    }
     clearCells();
     iterations_ = 0;
     points_ = 0;
@@ -597,7 +600,7 @@ AccumulatorStats Accumulator::stats() const {
   s.pointsPerSecond = elapsed > 0.0 ? static_cast<double>(s.iterations) / elapsed : 0.0;
   const auto target = targetPoints_.load();
   s.done = allStreamsDone(target);
-  std::shared_lock lock(gridMutex_);
+  std::lock_guard lock(problemMutex_);
   s.problem = problem_;
   return s;
 }
@@ -609,6 +612,7 @@ void Accumulator::snapshot(VolumeSnapshot& out) const {
   out.density.resize(voxels);
   out.rgba.resize(4 * voxels);
   out.version = version_.load(std::memory_order_acquire);
+  out.generation = generation_.load(std::memory_order_acquire);
   out.points = points_.load();
   float maxDensity = 0.0f;
   for (std::size_t slab = 0; slab < slabCount_; ++slab) {

@@ -83,6 +83,7 @@ struct VolumeSnapshot {
   std::vector<std::uint8_t> rgba;  // average linear colour, alpha unused (255)
   float maxDensity = 0.0f;
   std::uint64_t version = 0;
+  std::uint64_t generation = 0;  // the pattern generation the grid held when copied
   std::uint64_t points = 0;
 };
 
@@ -183,7 +184,10 @@ class Accumulator {
   std::atomic<std::uint64_t> targetPoints_{0};
   std::atomic<bool> active_{false};  // a pattern is set and can accumulate
   std::atomic<double> generationStart_{0.0};
-  std::string problem_;  // guarded by gridMutex_
+  // Guarded by its own mutex, not gridMutex_: stats() is read every UI frame and must not wait
+  // while a generation change clears a large grid.
+  mutable std::mutex problemMutex_;
+  std::string problem_;  // guarded by problemMutex_
 
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;  // workers sleep here when idle

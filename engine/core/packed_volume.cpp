@@ -47,6 +47,7 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
   const GridGeometry& g = snapshot.geometry;
   out.geometry = g;
   out.version = snapshot.version;
+  out.generation = snapshot.generation;
   out.points = snapshot.points;
   out.maxDensity = snapshot.maxDensity;
   const std::size_t voxels = g.voxelCount();

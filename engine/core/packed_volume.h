@@ -30,6 +30,7 @@ struct PackedVolume {
   float maxDensity = 0.0f;
   float meanDensity = 0.0f;  // over voxels with any density: the scale of a "typical" voxel
   std::uint64_t version = 0;
+  std::uint64_t generation = 0;
   std::uint64_t points = 0;
 };
 

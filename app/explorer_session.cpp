@@ -1,0 +1,215 @@
+#include "explorer_session.h"
+
+#include <new>
+#include <utility>
+
+#include "core/error.h"
+#include "core/mask_cache.h"
+#include "core/scene_io.h"
+#include "pipeline.h"
+
+namespace voxflame::app {
+
+namespace {
+
+// The explorer refines until the user changes something; this is "forever" in practice.
+constexpr std::uint64_t kExplorerTargetPoints = 4'000'000'000;
+
+// What decides the shape: the mesh file and the grid over it.
+std::string shapeKey(const core::Scene& scene) {
+  return scene.resolvedMeshPath().string() + (scene.embedded ? "|embedded|" : "|file|") +
+         std::to_string(scene.gridResolution);
+}
+
+std::string gridText(const core::GridGeometry& grid) {
+  return std::to_string(grid.size.x) + "×" + std::to_string(grid.size.y) + "×" + std::to_string(grid.size.z);
+}
+
+}  // namespace
+
+std::string patternKey(const core::Scene& scene) {
+  core::Scene pattern = scene;
+  pattern.name.clear();
+  pattern.tone = {};
+  pattern.camera = {};
+  pattern.render = {};
+  pattern.points = 0;
+  return core::sceneToJson(pattern) + "|" + scene.baseDirectory.string() + (scene.embedded ? "|embedded" : "");
+}
+
+struct ExplorerSession::Engine {
+  Engine(std::string key, std::shared_ptr<const core::InsideMask> insideMask, int threads,
+         std::chrono::milliseconds interval)
+      : shapeKey(std::move(key)),
+        mask(std::move(insideMask)),
+        accumulator(mask, threads),
+        publisher(accumulator, interval) {
+    accumulator.setTargetPoints(kExplorerTargetPoints);
+  }
+  std::string shapeKey;
+  std::shared_ptr<const core::InsideMask> mask;
+  core::Accumulator accumulator;
+  core::SnapshotPublisher publisher;    // after the accumulator it reads, so it is destroyed first
+  std::uint64_t patternGeneration = 0;  // the Accumulator generation of the latest applied post
+  std::uint64_t patternPost = 0;        // ... and that post's number
+};
+
+ExplorerSession::ExplorerSession(int threads, std::chrono::milliseconds snapshotInterval)
+    : threads_(threads),
+      snapshotInterval_(snapshotInterval),
+      control_([this](std::stop_token stop) { controlLoop(stop); }) {}
+
+ExplorerSession::~ExplorerSession() {
+  control_.request_stop();
+  wake_.notify_all();
+  control_.join();
+  // The engine's destructor joins the accumulation and snapshot threads.
+}
+
+void ExplorerSession::post(const core::Scene& scene) {
+  {
+    std::lock_guard lock(mutex_);
+    pending_ = scene;
+    ++requested_;
+  }
+  wake_.notify_all();
+}
+
+bool ExplorerSession::postIfPatternChanged(const core::Scene& scene) {
+  std::string key = patternKey(scene);
+  if (key == postedPatternKey_) return false;
+  postedPatternKey_ = std::move(key);
+  post(scene);
+  return true;
+}
+
+bool ExplorerSession::takeVolumeIfNewer(core::PackedVolume& out, std::uint64_t* reflectsPost) {
+  std::lock_guard lock(mutex_);  // held for a swap at most: the publisher never waits either
+  if (!engine_ || !engine_->publisher.takeIfNewer(out)) return false;
+  if (reflectsPost) *reflectsPost = out.generation == engine_->patternGeneration ? engine_->patternPost : 0;
+  return true;
+}
+
+std::optional<core::TriangleMesh> ExplorerSession::takeNewMesh() {
+  std::lock_guard lock(mutex_);
+  return std::exchange(newMesh_, std::nullopt);
+}
+
+std::optional<core::GridGeometry> ExplorerSession::geometry() const {
+  std::lock_guard lock(mutex_);
+  if (!engine_) return std::nullopt;
+  return engine_->mask->geometry;
+}
+
+SessionStatus ExplorerSession::status() const {
+  std::lock_guard lock(mutex_);
+  SessionStatus status;
+  status.buildingShape = buildingShape_;
+  status.shapeStage = shapeStage_;
+  if (buildingShape_)
+    status.shapeSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - shapeStart_).count();
+  status.error = error_;
+  status.requestedGeneration = requested_;
+  status.appliedGeneration = applied_;
+  status.hasShape = engine_ != nullptr;
+  if (engine_) status.stats = engine_->accumulator.stats();
+  return status;
+}
+
+void ExplorerSession::clearError() {
+  std::lock_guard lock(mutex_);
+  error_.clear();
+}
+
+bool ExplorerSession::waitUntilApplied(double timeoutSeconds) {
+  std::unique_lock lock(mutex_);
+  return appliedSignal_.wait_for(lock, std::chrono::duration<double>(timeoutSeconds),
+                                 [&] { return applied_ == requested_ && !working_; });
+}
+
+void ExplorerSession::controlLoop(std::stop_token stop) {
+  std::string failedShapeKey;  // a mesh that failed to load is not retried on every edit
+  while (!stop.stop_requested()) {
+    core::Scene scene;
+    std::uint64_t post = 0;
+    {
+      std::unique_lock lock(mutex_);
+      wake_.wait(lock, stop, [&] { return pending_.has_value(); });
+      if (stop.stop_requested()) return;
+      scene = std::move(*pending_);
+      pending_.reset();
+      post = requested_;
+      working_ = true;
+    }
+    std::string error;
+    try {
+      const std::string key = shapeKey(scene);
+      // Only this thread replaces engine_, so it may use it without the lock; the UI reaches it
+      // only under the lock, for calls that never wait.
+      Engine* current = engine_.get();
+      if (current && current->shapeKey == key) failedShapeKey.clear();  // back on a good mesh
+      if ((!current || current->shapeKey != key) && key != failedShapeKey) {
+        auto setStage = [&](std::string stage) {
+          std::lock_guard lock(mutex_);
+          shapeStage_ = std::move(stage);
+        };
+        {
+          std::lock_guard lock(mutex_);
+          buildingShape_ = true;
+          shapeStart_ = std::chrono::steady_clock::now();
+        }
+        setStage("loading mesh " + scene.resolvedMeshPath().filename().string() + " …");
+        try {
+          core::TriangleMesh mesh = core::loadSceneMesh(scene);
+          const core::GridGeometry grid = core::gridOverBox(mesh.bounds(), scene.gridResolution);
+          checkGridFitsInMemory(grid);
+          setStage("building the inside mask on a " + gridText(grid) + " grid …");
+          auto mask = std::make_shared<const core::InsideMask>(
+              core::cachedInsideMask(mesh, grid, core::MaskMethod::WindingNumber, core::defaultMaskCacheFolder()));
+          if (stop.stop_requested()) return;
+          // The old grid goes before the new one is allocated, so a switch never needs both.
+          setStage("allocating the " + gridText(grid) + " grid …");
+          std::unique_ptr<Engine> old;
+          {
+            std::lock_guard lock(mutex_);
+            old = std::exchange(engine_, nullptr);
+          }
+          old.reset();
+          auto engine = std::make_unique<Engine>(key, std::move(mask), threads_, snapshotInterval_);
+          std::lock_guard lock(mutex_);
+          engine_ = std::move(engine);
+          newMesh_ = std::move(mesh);
+          buildingShape_ = false;
+          failedShapeKey.clear();
+        } catch (...) {
+          failedShapeKey = key;
+          std::lock_guard lock(mutex_);
+          buildingShape_ = false;
+          throw;
+        }
+        current = engine_.get();
+      }
+      if (current) {
+        current->accumulator.setPattern(scene.layers, scene.seed);
+        current->publisher.requestNow();
+        std::lock_guard lock(mutex_);
+        current->patternGeneration = current->accumulator.generation();
+        current->patternPost = post;
+      }
+    } catch (const core::Error& e) {
+      error = e.what();
+    } catch (const std::bad_alloc&) {
+      error = "out of memory: choose a smaller grid resolution";
+    }
+    std::lock_guard lock(mutex_);
+    if (!error.empty())
+      error_ = error;
+    else if (failedShapeKey.empty())
+      error_.clear();
+    applied_ = post;
+    working_ = false;
+    appliedSignal_.notify_all();
+  }
+}
+
+}  // namespace voxflame::app

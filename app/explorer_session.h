@@ -1,0 +1,95 @@
+// The explorer's engine side: the mesh, its inside mask, the Accumulator and the snapshot thread
+// for the scene being edited, with every slow step (loading a mesh, building a mask, clearing a
+// large grid for a new generation) done on a control thread of its own. The UI thread only posts
+// the newest scene and takes what is ready, so a frame never waits on refinement. No GL here.
+#pragma once
+
+#include <chrono>
+#include <condition_variable>
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+#include "core/accumulator.h"
+#include "core/mesh.h"
+#include "core/packed_volume.h"
+#include "core/scene.h"
+#include "core/snapshot_publisher.h"
+
+namespace voxflame::app {
+
+// The part of a scene that the accumulation depends on (mesh, grid, layers, seed): when it
+// changes, the pattern restarts; other edits only change the drawing.
+std::string patternKey(const core::Scene& scene);
+
+// What the status line and the panels show; a copy, taken without waiting.
+struct SessionStatus {
+  bool buildingShape = false;  // a mesh load or mask build is running in the background
+  std::string shapeStage;      // what it is doing ("loading mesh …", "inside mask 256³ …")
+  double shapeSeconds = 0.0;   // how long it has been at it
+  std::string error;           // the last thing that went wrong (bad mesh, bad parameters), or empty
+  core::AccumulatorStats stats;
+  std::uint64_t requestedGeneration = 0;  // pattern requests posted so far
+  std::uint64_t appliedGeneration = 0;    // of those, the newest the Accumulator runs
+  bool hasShape = false;
+};
+
+class ExplorerSession {
+ public:
+  // threads: accumulation threads (0: one per hardware thread). snapshotInterval: how often the
+  // refining grid is copied and packed for upload.
+  explicit ExplorerSession(int threads = 0,
+                           std::chrono::milliseconds snapshotInterval = std::chrono::milliseconds(100));
+  ~ExplorerSession();  // stops and joins every thread it owns
+  ExplorerSession(const ExplorerSession&) = delete;
+  ExplorerSession& operator=(const ExplorerSession&) = delete;
+
+  // Posts the scene being edited. Returns at once; only the newest posted scene is applied. A new
+  // mesh or grid resolution rebuilds the shape in the background (the old volume stays on screen
+  // meanwhile); any other change to the pattern starts a new generation.
+  void post(const core::Scene& scene);
+
+  // Posts the scene when its pattern (patternKey: mesh, grid, layers, seed) differs from the
+  // last one posted this way; returns whether it did. The explorer calls it every frame.
+  bool postIfPatternChanged(const core::Scene& scene);
+
+  // Swaps the newest packed volume into `out` when one newer than it is ready. Never waits.
+  // `reflectsPost` gets the number of the post (counting from 1) whose pattern the volume shows,
+  // or 0 when it still shows an older one.
+  bool takeVolumeIfNewer(core::PackedVolume& out, std::uint64_t* reflectsPost = nullptr);
+  // The mesh of a shape that became current since the last call (for the renderer), else empty.
+  std::optional<core::TriangleMesh> takeNewMesh();
+  // The grid of the current shape (for the camera), or empty before the first shape is ready.
+  std::optional<core::GridGeometry> geometry() const;
+  SessionStatus status() const;
+  void clearError();
+  // Blocks until the posted scene is applied (for tests and scripted runs); false on timeout.
+  bool waitUntilApplied(double timeoutSeconds);
+
+ private:
+  struct Engine;  // the shape plus the Accumulator and publisher running on it
+  void controlLoop(std::stop_token stop);
+
+  const int threads_;
+  const std::chrono::milliseconds snapshotInterval_;
+
+  mutable std::mutex mutex_;  // guards everything below except the control thread's locals
+  std::condition_variable_any wake_;
+  std::condition_variable appliedSignal_;
+  std::string postedPatternKey_;        // UI thread only
+  std::optional<core::Scene> pending_;  // the newest posted scene not yet picked up
+  std::uint64_t requested_ = 0, applied_ = 0;
+  bool working_ = false;            // the control thread is applying a scene
+  std::unique_ptr<Engine> engine_;  // replaced and destroyed only by the control thread
+  std::optional<core::TriangleMesh> newMesh_;
+  bool buildingShape_ = false;
+  std::string shapeStage_;
+  std::chrono::steady_clock::time_point shapeStart_;
+  std::string error_;
+  std::jthread control_;  // last: started after everything it uses exists
+};
+
+}  // namespace voxflame::app

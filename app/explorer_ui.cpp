@@ -1,0 +1,710 @@
+#include "explorer_ui.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "core/attractor.h"
+#include "core/camera.h"
+#include "core/color.h"
+#include "core/error.h"
+#include "core/grid.h"
+#include "pipeline.h"
+
+namespace voxflame::app {
+
+namespace {
+
+// The window backend fills io.KeysDown by GLFW key code; letters are their ASCII capitals.
+constexpr int kKeyRight = 262, kKeyLeft = 263, kKeyF3 = 292;
+constexpr int kKeyLeftAlt = 342, kKeyRightAlt = 346;
+
+const ImVec4 kErrorColor(1.0f, 0.45f, 0.35f, 1.0f);
+const ImVec4 kDimColor(0.62f, 0.65f, 0.72f, 1.0f);
+
+void probe(ExplorerState& state, const std::string& name) {
+  if (!state.probe) return;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  state.probe->items[name] = UiProbe::Rect{min.x, min.y, max.x, max.y};
+}
+
+bool slider(ExplorerState& state, const std::string& scope, const char* label, double& value, double min, double max,
+            ImGuiSliderFlags flags = 0, const char* format = "%.3f") {
+  const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format, flags);
+  probe(state, scope + label);
+  return changed;
+}
+
+bool button(ExplorerState& state, const std::string& scope, const char* label) {
+  const bool pressed = ImGui::Button(label);
+  probe(state, scope + label);
+  return pressed;
+}
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
+bool keyDown(int key) {
+  return key >= 0 && key < IM_ARRAYSIZE(ImGui::GetIO().KeysDown) && ImGui::GetIO().KeysDown[key];
+}
+
+core::OrbitSpec layerSpec(const core::PatternLayer& layer) {
+  core::OrbitSpec spec = core::defaultOrbitSpec(core::attractorOrThrow(layer.attractor));
+  spec.params = layer.params;
+  spec.integrator = layer.integrator;
+  spec.step = layer.step;
+  return spec;
+}
+
+// ---------------------------------------------------------------------------------------------
+// Background analysis, search and the search history.
+
+std::string analysisKey(const core::PatternLayer& layer) {
+  std::string key =
+      layer.attractor + "/" + std::string(core::toString(layer.integrator)) + "/" + std::to_string(layer.step);
+  for (double p : layer.params) {
+    key += '/';
+    key += std::to_string(p);
+  }
+  return key;
+}
+
+bool ready(const auto& future) {
+  return future.valid() && future.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
+// Keeps the Lyapunov line in step with layer 0; one analysis at a time, never waited for.
+void updateAnalysis(ExplorerState& state) {
+  if (ready(state.analysis)) {
+    try {
+      const core::OrbitAnalysis result = state.analysis.get();
+      char text[160];
+      std::snprintf(text, sizeof text, "λ %.3f  %.3f  %.3f  (%s)", result.lyapunov[0], result.lyapunov[1],
+                    result.lyapunov[2], std::string(core::toString(result.verdict)).c_str());
+      state.lyapunovText = text;
+    } catch (const core::Error& e) {
+      state.lyapunovText = e.what();
+    }
+  }
+  if (state.analysis.valid() || state.scene.layers.empty()) return;
+  const std::string key = analysisKey(state.scene.layers.front());
+  if (key == state.analysedKey) return;
+  state.analysedKey = key;
+  try {
+    const core::OrbitSpec spec = layerSpec(state.scene.layers.front());
+    core::LyapunovOptions options;
+    options.steps = 20'000;
+    state.analysis = std::async(std::launch::async, [spec, options] { return core::analyseOrbit(spec, options); });
+  } catch (const core::Error& e) {
+    state.lyapunovText = e.what();
+  }
+}
+
+// The part of a layer that Search changes and the history restores; colour and placement stay.
+void applyVisited(core::PatternLayer& layer, const core::PatternLayer& visited) {
+  layer.attractor = visited.attractor;
+  layer.params = visited.params;
+  layer.integrator = visited.integrator;
+  layer.step = visited.step;
+}
+
+void startSearch(ExplorerState& state, double strength) {
+  if (state.search.valid() || state.scene.layers.empty()) return;  // one at a time
+  try {
+    const core::OrbitSpec spec = layerSpec(state.scene.layers.front());
+    core::SearchOptions options;
+    options.seed = state.searchSeed++;
+    options.count = 1;
+    options.strength = strength;
+    state.searchMessage = "searching…";
+    state.search = std::async(std::launch::async, [spec, options] { return core::searchChaos(spec, options); });
+  } catch (const core::Error& e) {
+    state.searchMessage = e.what();
+  }
+}
+
+void collectSearch(ExplorerState& state) {
+  if (!ready(state.search)) return;
+  try {
+    const auto results = state.search.get();
+    if (results.empty()) {
+      state.searchMessage = "no chaotic set found nearby; try a larger strength";
+      return;
+    }
+    core::PatternLayer& layer = state.scene.layers.front();
+    // The history keeps where the search started from, then each find; a find after going back
+    // drops the forward part, as in a browser.
+    if (state.visited.empty()) state.visited.push_back(layer);
+    state.visited.resize(std::min(state.visited.size(), state.visitedIndex + 1));
+    layer.params = results.front().params;
+    state.visited.push_back(layer);
+    state.visitedIndex = state.visited.size() - 1;
+    char text[96];
+    std::snprintf(text, sizeof text, "found: largest Lyapunov exponent %.3f", results.front().analysis.lyapunov[0]);
+    state.searchMessage = text;
+  } catch (const core::Error& e) {
+    state.searchMessage = e.what();
+  }
+}
+
+void goVisited(ExplorerState& state, int direction) {
+  if (state.visited.empty() || state.scene.layers.empty()) return;
+  const auto target = static_cast<long long>(state.visitedIndex) + direction;
+  if (target < 0 || target >= static_cast<long long>(state.visited.size())) return;
+  state.visitedIndex = static_cast<std::size_t>(target);
+  applyVisited(state.scene.layers.front(), state.visited[state.visitedIndex]);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Input: undo/redo, camera, shortcuts.
+
+// Ctrl+Z undoes, Ctrl+Shift+Z (or Ctrl+Y) redoes; an edit is recorded once it settles, so a
+// whole slider drag or camera drag is one step.
+void handleHistory(ExplorerState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool z = ImGui::IsKeyPressed('Z', false), y = ImGui::IsKeyPressed('Y', false);
+  if (!io.WantTextInput && io.KeyCtrl && (z || y)) {
+    const bool redo = io.KeyShift || y;
+    if (auto scene = redo ? state.history->redo() : state.history->undo()) state.scene = *scene;
+    return;
+  }
+  const bool mouseHeld = ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right) ||
+                         ImGui::IsMouseDown(ImGuiMouseButton_Middle);
+  if (!mouseHeld && !ImGui::IsAnyItemActive()) state.history->record(state.scene);
+}
+
+// Left-drag orbits, right- or middle-drag pans, the wheel zooms; W/A/S/D/Q/E fly. Input that
+// starts over a panel belongs to the panel.
+void handleCamera(ExplorerState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  core::CameraSettings& camera = state.scene.camera;
+  const bool overUi = io.WantCaptureMouse;
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !overUi) state.orbiting = true;
+  if ((ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) && !overUi)
+    state.panning = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) state.orbiting = false;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Right) && !ImGui::IsMouseDown(ImGuiMouseButton_Middle))
+    state.panning = false;
+  const ImVec2 delta = io.MouseDelta;
+  const bool moved = std::isfinite(delta.x) && std::isfinite(delta.y) && (delta.x != 0.0f || delta.y != 0.0f);
+  const core::CameraFrame frame = core::orbitCamera(camera, core::Box{{-1, -1, -1}, {1, 1, 1}}, 1.0);
+  if (state.orbiting && moved) {
+    camera.azimuthDeg = std::remainder(camera.azimuthDeg - 0.3 * delta.x, 360.0);
+    camera.elevationDeg = std::clamp(camera.elevationDeg + 0.3 * delta.y, -90.0, 90.0);
+  }
+  if (state.panning && moved) {
+    // The target moves with the pointer: a screen's height of drag moves the view by about
+    // what is visible at the target's distance.
+    const double perPixel =
+        2.0 * camera.distance * std::tan(0.5 * glm::radians(camera.fovDeg)) / std::max(1.0f, io.DisplaySize.y);
+    camera.target += perPixel * (-static_cast<double>(delta.x) * frame.right + static_cast<double>(delta.y) * frame.up);
+  }
+  if (!overUi && io.MouseWheel != 0.0f)
+    camera.distance = std::clamp(camera.distance * std::pow(0.9, io.MouseWheel), 0.2, 20.0);
+
+  // Free flight: W/S move along the view, A/D sideways, Q/E down and up; the orbit target moves
+  // with the eye, so the camera turns about itself when dragged afterwards.
+  if (io.WantCaptureKeyboard || io.KeyCtrl) return;
+  const double speed = 1.2 * camera.distance * std::min(0.1f, io.DeltaTime);
+  auto held = [](int key) { return keyDown(key) ? 1.0 : 0.0; };
+  const glm::dvec3 move = (held('W') - held('S')) * frame.forward + (held('D') - held('A')) * frame.right +
+                          (held('E') - held('Q')) * frame.up;
+  camera.target += speed * move;
+}
+
+void handleShortcuts(ExplorerState& state) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (io.KeyCtrl && ImGui::IsKeyPressed('Q', false)) state.requests.quit = true;
+  if (io.WantTextInput) return;
+  if (ImGui::IsKeyPressed(kKeyF3, false)) startSearch(state, 0.1);
+  const bool alt = io.KeyAlt || keyDown(kKeyLeftAlt) || keyDown(kKeyRightAlt);
+  if (alt && ImGui::IsKeyPressed(kKeyLeft, false)) goVisited(state, -1);
+  if (alt && ImGui::IsKeyPressed(kKeyRight, false)) goVisited(state, +1);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Panels.
+
+void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core::AttractorInfo& info) {
+  ImGui::InputTextWithHint("##filter", "filter attractors", state.attractorFilter, sizeof state.attractorFilter);
+  if (!ImGui::BeginCombo("attractor", info.name.c_str())) {
+    if (ImGui::IsItemHovered() && !info.citation.empty()) ImGui::SetTooltip("%s", info.citation.c_str());
+    return;
+  }
+  const std::string filter = lowercase(state.attractorFilter);
+  for (const core::AttractorInfo& candidate : core::attractorCatalogue()) {
+    if (!filter.empty() && lowercase(candidate.id + " " + candidate.name).find(filter) == std::string::npos) continue;
+    if (ImGui::Selectable(candidate.name.c_str(), candidate.id == layer.attractor) && candidate.id != layer.attractor) {
+      layer.attractor = candidate.id;
+      layer.params = candidate.defaultParams();
+      layer.step = candidate.defaultStep;
+      layer.integrator = candidate.defaultIntegrator;
+    }
+  }
+  ImGui::EndCombo();
+}
+
+void gradientPreview(const std::vector<core::GradientStop>& stops, float width, float height) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
+  if (!stops.empty()) {
+    const core::Gradient gradient(stops);
+    constexpr int kSegments = 48;
+    for (int i = 0; i < kSegments; ++i) {
+      const float t0 = static_cast<float>(i) / kSegments, t1 = static_cast<float>(i + 1) / kSegments;
+      auto color = [&](float t) {
+        const glm::vec3 srgb = core::linearToSrgb(gradient.at(t));
+        return ImGui::ColorConvertFloat4ToU32(ImVec4(srgb.r, srgb.g, srgb.b, 1.0f));
+      };
+      const ImU32 left = color(t0), right = color(t1);
+      draw->AddRectFilledMultiColor(ImVec2(origin.x + t0 * width, origin.y),
+                                    ImVec2(origin.x + t1 * width, origin.y + height), left, right, right, left);
+    }
+  }
+  ImGui::Dummy(ImVec2(width, height));
+}
+
+void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSettings& color) {
+  int mode = static_cast<int>(color.mode);
+  if (ImGui::Combo("colour by", &mode, "speed\0curvature\0time\0axis\0distance\0"))
+    color.mode = static_cast<core::ColorMode>(mode);
+  probe(state, scope + "colour by");
+  if (color.mode == core::ColorMode::Time)
+    slider(state, scope, "period (steps)", color.period, 10.0, 100000.0, ImGuiSliderFlags_Logarithmic, "%.0f");
+  if (color.mode == core::ColorMode::Axis) {
+    double axis[3] = {color.axis.x, color.axis.y, color.axis.z};
+    const double min = -1.0, max = 1.0;
+    if (ImGui::SliderScalarN("axis", ImGuiDataType_Double, axis, 3, &min, &max, "%.2f")) {
+      const glm::dvec3 chosen(axis[0], axis[1], axis[2]);
+      if (glm::length(chosen) > 1e-6) color.axis = chosen;
+    }
+  }
+  slider(state, scope, "colour scale", color.scale, 0.05, 20.0, ImGuiSliderFlags_Logarithmic);
+
+  // Palettes: a named one fills the stops; editing a stop makes the gradient custom.
+  const char* current = color.palette.empty() ? "custom gradient" : color.palette.c_str();
+  if (ImGui::BeginCombo("palette", current)) {
+    for (const core::NamedPalette& palette : core::namedPalettes())
+      if (ImGui::Selectable(palette.name.c_str(), palette.name == color.palette)) {
+        color.palette = palette.name;
+        color.gradient = core::paletteStops(palette.name);
+      }
+    ImGui::EndCombo();
+  }
+  probe(state, scope + "palette");
+  gradientPreview(color.gradient, ImGui::CalcItemWidth(), ImGui::GetFrameHeight());
+  bool edited = false;
+  int remove = -1;
+  for (std::size_t s = 0; s < color.gradient.size(); ++s) {
+    core::GradientStop& stop = color.gradient[s];
+    ImGui::PushID(static_cast<int>(s));
+    const glm::vec3 srgb = core::linearToSrgb(stop.color);
+    float rgb[3] = {srgb.r, srgb.g, srgb.b};
+    if (ImGui::ColorEdit3("##colour", rgb, ImGuiColorEditFlags_NoInputs)) {
+      stop.color = core::srgbToLinear(glm::vec3(rgb[0], rgb[1], rgb[2]));
+      edited = true;
+    }
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
+    if (ImGui::SliderFloat("##position", &stop.position, 0.0f, 1.0f, "stop at %.2f")) edited = true;
+    probe(state, scope + "stop" + std::to_string(s));
+    ImGui::SameLine();
+    if (color.gradient.size() > 1 && ImGui::SmallButton("x")) remove = static_cast<int>(s);
+    ImGui::PopID();
+  }
+  if (remove >= 0) {
+    color.gradient.erase(color.gradient.begin() + remove);
+    edited = true;
+  }
+  if (button(state, scope, "Add stop") && color.gradient.size() < 16) {
+    // A new stop goes into the widest gap, with the colour the gradient already has there.
+    std::vector<core::GradientStop> sorted = color.gradient;
+    std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.position < b.position; });
+    float bestGap = -1.0f, at = 0.5f;
+    float previous = 0.0f;
+    for (std::size_t s = 0; s <= sorted.size(); ++s) {
+      const float next = s < sorted.size() ? sorted[s].position : 1.0f;
+      if (next - previous > bestGap) bestGap = next - previous, at = 0.5f * (previous + next);
+      previous = next;
+    }
+    const glm::vec3 colour = sorted.empty() ? glm::vec3(1.0f) : core::Gradient(sorted).at(at);
+    color.gradient.push_back({at, colour});
+    edited = true;
+  }
+  if (edited) {
+    color.palette.clear();
+    // Stops stay in position order (the preset's order), except while one is being dragged past another.
+    if (!ImGui::IsAnyItemActive())
+      std::stable_sort(color.gradient.begin(), color.gradient.end(),
+                       [](const auto& a, const auto& b) { return a.position < b.position; });
+  }
+}
+
+void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
+  core::PatternLayer& layer = state.scene.layers[index];
+  const core::AttractorInfo& info = core::attractorOrThrow(layer.attractor);
+  const std::string scope = "layer" + std::to_string(index) + "/";
+  attractorPicker(state, layer, info);
+  if (layer.params.size() != info.params.size()) return;  // changed attractor: sliders next frame
+  const core::AttractorInfo& current = core::attractorOrThrow(layer.attractor);
+  for (std::size_t p = 0; p < current.params.size(); ++p) {
+    const core::ParamInfo& param = current.params[p];
+    // The slider's range is the catalogue's; Ctrl+click types any value, right-click resets it.
+    slider(state, scope, param.name.c_str(), layer.params[p], param.sliderMin, param.sliderMax, 0, "%.4f");
+    if (ImGui::BeginPopupContextItem()) {
+      if (ImGui::Selectable("Reset to default")) layer.params[p] = param.defaultValue;
+      ImGui::EndPopup();
+    }
+    if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+      ImGui::SetTooltip("default %.4g — Ctrl+click to type, right-click to reset", param.defaultValue);
+  }
+  if (current.kind == core::AttractorKind::Flow) {
+    int integrator = layer.integrator == core::Integrator::RK4 ? 1 : 0;
+    if (ImGui::Combo("integrator", &integrator, "Euler\0Runge-Kutta 4\0"))
+      layer.integrator = integrator == 1 ? core::Integrator::RK4 : core::Integrator::Euler;
+    slider(state, scope, "step", layer.step, 0.0005, 0.3, ImGuiSliderFlags_Logarithmic, "%.4f");
+  }
+  if (button(state, scope, "Reset parameters")) {
+    layer.params = current.defaultParams();
+    layer.step = current.defaultStep;
+    layer.integrator = current.defaultIntegrator;
+  }
+  if (state.scene.layers.size() > 1) {
+    ImGui::SameLine();
+    if (button(state, scope, "Remove layer")) removeThis = true;
+    slider(state, scope, "weight", layer.weight, 0.01, 10.0, ImGuiSliderFlags_Logarithmic);
+  }
+  if (ImGui::TreeNode("Placement")) {
+    slider(state, scope, "scale", layer.transform.scale, 0.1, 4.0, ImGuiSliderFlags_Logarithmic);
+    double rotation[3] = {layer.transform.rotationDeg.x, layer.transform.rotationDeg.y, layer.transform.rotationDeg.z};
+    const double minDeg = -180.0, maxDeg = 180.0;
+    if (ImGui::SliderScalarN("rotation", ImGuiDataType_Double, rotation, 3, &minDeg, &maxDeg, "%.0f°"))
+      layer.transform.rotationDeg = glm::dvec3(rotation[0], rotation[1], rotation[2]);
+    double offset[3] = {layer.transform.offset.x, layer.transform.offset.y, layer.transform.offset.z};
+    const double minOffset = -0.5, maxOffset = 0.5;
+    if (ImGui::SliderScalarN("offset", ImGuiDataType_Double, offset, 3, &minOffset, &maxOffset, "%.2f"))
+      layer.transform.offset = glm::dvec3(offset[0], offset[1], offset[2]);
+    ImGui::TreePop();
+  }
+  if (ImGui::TreeNodeEx("Colour", ImGuiTreeNodeFlags_DefaultOpen)) {
+    colourEditor(state, scope, layer.color);
+    ImGui::TreePop();
+  }
+}
+
+void patternWindow(ExplorerState& state, float scale) {
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(8 * scale, 8 * scale), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(350 * scale, io.DisplaySize.y - 48 * scale), ImGuiCond_FirstUseEver);
+  // Side panels stay behind the notice and popups even when clicked.
+  ImGui::Begin("Pattern", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::PushItemWidth(-110 * scale);
+  std::size_t removeIndex = state.scene.layers.size();
+  for (std::size_t li = 0; li < state.scene.layers.size(); ++li) {
+    const core::AttractorInfo& info = core::attractorOrThrow(state.scene.layers[li].attractor);
+    ImGui::PushID(static_cast<int>(li));
+    const std::string header = "Layer " + std::to_string(li + 1) + ": " + info.name + "###layer";
+    if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+      bool remove = false;
+      layerEditor(state, li, remove);
+      if (remove) removeIndex = li;
+    }
+    ImGui::PopID();
+  }
+  if (removeIndex < state.scene.layers.size())
+    state.scene.layers.erase(state.scene.layers.begin() + static_cast<std::ptrdiff_t>(removeIndex));
+  if (state.scene.layers.size() < 8 && button(state, "", "Add layer")) {
+    // A second pattern starts as a different attractor at half weight, coloured apart.
+    core::PatternLayer layer;
+    layer.attractor = state.scene.layers.front().attractor == "aizawa" ? "thomas" : "aizawa";
+    const core::AttractorInfo& info = core::attractorOrThrow(layer.attractor);
+    layer.params = info.defaultParams();
+    layer.step = info.defaultStep;
+    layer.integrator = info.defaultIntegrator;
+    layer.weight = 0.5;
+    layer.color.palette = core::namedPalettes().back().name;
+    layer.color.gradient = core::paletteStops(layer.color.palette);
+    state.scene.layers.push_back(layer);
+  }
+
+  if (ImGui::CollapsingHeader("Explore", ImGuiTreeNodeFlags_DefaultOpen)) {
+    if (button(state, "", "Search (F3)")) startSearch(state, 0.1);
+    ImGui::SameLine();
+    if (button(state, "", "Mutate")) startSearch(state, state.mutateStrength);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1);
+    slider(state, "", "##strength", state.mutateStrength, 0.01, 1.0, ImGuiSliderFlags_Logarithmic, "strength %.2f");
+    ImGui::BeginDisabled(state.visited.empty() || state.visitedIndex == 0);
+    if (button(state, "", "< Back")) goVisited(state, -1);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    ImGui::BeginDisabled(state.visited.empty() || state.visitedIndex + 1 >= state.visited.size());
+    if (button(state, "", "Forward >")) goVisited(state, +1);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    if (state.visited.empty())
+      ImGui::TextColored(kDimColor, "no history yet");
+    else
+      ImGui::TextColored(kDimColor, "%zu of %zu (Alt+Left/Right)", state.visitedIndex + 1, state.visited.size());
+    if (state.search.valid())
+      ImGui::TextColored(kDimColor, "searching…");
+    else if (!state.searchMessage.empty())
+      ImGui::TextWrapped("%s", state.searchMessage.c_str());
+    if (!state.session.stats.problem.empty()) {
+      ImGui::TextColored(kErrorColor, "This pattern escapes to infinity.");
+      ImGui::SameLine();
+      if (button(state, "", "Find a nearby one")) startSearch(state, 0.1);
+    }
+  }
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+std::string formatBytes(double bytes) {
+  char text[32];
+  if (bytes >= 1e9)
+    std::snprintf(text, sizeof text, "%.1f GB", bytes * 1e-9);
+  else
+    std::snprintf(text, sizeof text, "%.0f MB", bytes * 1e-6);
+  return text;
+}
+
+void meshSection(ExplorerState& state) {
+  const std::string file = std::filesystem::path(state.scene.meshPath).filename().string();
+  ImGui::Text("mesh: %s%s", file.c_str(), state.scene.embedded ? " (built in)" : "");
+  ImGui::InputTextWithHint("##meshpath", "path to a mesh, preset or image", state.meshPath, sizeof state.meshPath);
+  probe(state, "mesh/path");
+  ImGui::SameLine();
+  if (button(state, "mesh/", "Open") && state.meshPath[0] != '\0') state.requests.open = state.meshPath;
+  if (!state.recentFiles.empty() && ImGui::BeginCombo("recent", "recent files")) {
+    for (const std::string& recent : state.recentFiles)
+      if (ImGui::Selectable(recent.c_str())) state.requests.open = recent;
+    ImGui::EndCombo();
+  }
+  ImGui::TextColored(kDimColor, "or drop a mesh, preset or PNG onto the window");
+
+  // The grid only changes when the slider is let go: each change rebuilds the mask.
+  int& draft = state.gridDraft;
+  if (!ImGui::IsAnyItemActive() || draft == 0) draft = state.scene.gridResolution;
+  ImGui::SliderInt("grid", &draft, 32, 1024, "%d voxels", ImGuiSliderFlags_AlwaysClamp);
+  probe(state, "mesh/grid");
+  if (ImGui::IsItemDeactivatedAfterEdit()) state.scene.gridResolution = draft;
+  // Cells, snapshot, packed copies: what pipeline::checkGridFitsInMemory counts, for a cube.
+  const double voxels = std::pow(static_cast<double>(draft), 3.0);
+  ImGui::TextColored(kDimColor, "at most %s of memory", formatBytes(voxels * 33.0).c_str());
+
+  core::RenderSettingsDoc& render = state.scene.render;
+  int meshMode = static_cast<int>(render.meshDisplay);
+  if (ImGui::Combo("show mesh", &meshMode, "off\0ghost\0silhouette\0"))
+    render.meshDisplay = static_cast<core::MeshDisplay>(meshMode);
+  const glm::vec3 srgb = core::linearToSrgb(render.meshColor);
+  float rgb[3] = {srgb.r, srgb.g, srgb.b};
+  if (ImGui::ColorEdit3("mesh colour", rgb)) render.meshColor = core::srgbToLinear(glm::vec3(rgb[0], rgb[1], rgb[2]));
+  slider(state, "mesh/", "mesh strength", render.meshStrength, 0.0, 2.0);
+}
+
+void renderSection(ExplorerState& state) {
+  core::ToneMapSettings& tone = state.scene.tone;
+  slider(state, "tone/", "brightness", tone.brightness, 0.01, 50.0, ImGuiSliderFlags_Logarithmic);
+  slider(state, "tone/", "gamma", tone.gamma, 0.5, 6.0);
+  slider(state, "tone/", "gamma threshold", tone.gammaThreshold, 0.0, 0.5);
+  slider(state, "tone/", "vibrancy", tone.vibrancy, 0.0, 1.0);
+  slider(state, "tone/", "highlight power", tone.highlightPower, -1.0, 5.0);
+  slider(state, "tone/", "exposure", tone.exposure, -5.0, 5.0);
+  slider(state, "tone/", "contrast", tone.contrast, 0.2, 3.0);
+  slider(state, "tone/", "opacity", tone.opacity, 0.0, 1.0);
+  const glm::vec3 srgb = core::linearToSrgb(tone.background);
+  float background[3] = {srgb.r, srgb.g, srgb.b};
+  if (ImGui::ColorEdit3("background", background))
+    tone.background = core::srgbToLinear(glm::vec3(background[0], background[1], background[2]));
+  core::RenderSettingsDoc& render = state.scene.render;
+  slider(state, "render/", "step (voxels)", render.stepVoxels, 0.1, 2.0);
+  ImGui::Checkbox("lighting", &render.lighting);
+  probe(state, "render/lighting");
+  if (render.lighting) {
+    slider(state, "render/", "light azimuth", render.lightAzimuthDeg, -180.0, 180.0, 0, "%.0f°");
+    slider(state, "render/", "light elevation", render.lightElevationDeg, -90.0, 90.0, 0, "%.0f°");
+    slider(state, "render/", "light strength", render.lightStrength, 0.0, 1.0);
+  }
+  ImGui::SliderFloat("preview scale", &state.renderScale, 0.25f, 1.0f, "%.2f");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("fraction of the window's pixels marched while you edit");
+}
+
+void cameraSection(ExplorerState& state) {
+  core::CameraSettings& camera = state.scene.camera;
+  slider(state, "camera/", "azimuth", camera.azimuthDeg, -180.0, 180.0, 0, "%.1f°");
+  slider(state, "camera/", "elevation", camera.elevationDeg, -90.0, 90.0, 0, "%.1f°");
+  slider(state, "camera/", "roll", camera.rollDeg, -180.0, 180.0, 0, "%.1f°");
+  slider(state, "camera/", "distance", camera.distance, 0.2, 20.0, ImGuiSliderFlags_Logarithmic);
+  slider(state, "camera/", "field of view", camera.fovDeg, 5.0, 120.0, 0, "%.0f°");
+  bool orthographic = camera.projection == core::Projection::Orthographic;
+  if (ImGui::Checkbox("orthographic", &orthographic))
+    camera.projection = orthographic ? core::Projection::Orthographic : core::Projection::Perspective;
+  auto view = [&](const char* label, double azimuth, double elevation) {
+    if (button(state, "camera/", label)) {
+      camera.azimuthDeg = azimuth, camera.elevationDeg = elevation, camera.rollDeg = 0.0;
+      camera.target = glm::dvec3(0.0);
+    }
+  };
+  view("Front", 0.0, 0.0);
+  ImGui::SameLine();
+  view("Side", 90.0, 0.0);
+  ImGui::SameLine();
+  view("Top", 0.0, 90.0);
+  ImGui::SameLine();
+  if (button(state, "camera/", "Reset")) camera = state.initialCamera;
+  ImGui::TextColored(kDimColor, "drag: orbit · right/middle drag: pan · wheel: zoom · W/A/S/D/Q/E: fly");
+}
+
+void viewWindow(ExplorerState& state, float scale) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float width = 320 * scale;
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - width - 8 * scale, 8 * scale), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y - 48 * scale), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Scene", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::PushItemWidth(-120 * scale);
+  if (ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen)) meshSection(state);
+  if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) renderSection(state);
+  if (ImGui::CollapsingHeader("Camera")) cameraSection(state);
+  ImGui::PopItemWidth();
+  ImGui::End();
+}
+
+void statusBar(ExplorerState& state, float scale) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float height = ImGui::GetFrameHeightWithSpacing() + 6 * scale;
+  ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
+  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin("##status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  const core::AccumulatorStats& stats = state.session.stats;
+  const FrameMetrics& m = state.metrics;
+  if (state.session.buildingShape)
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "%s %.1f s", state.session.shapeStage.c_str(),
+                       state.session.shapeSeconds);
+  else
+    ImGui::Text("%.1f M points  %.1f M/s  inside %.1f%%  escapes %llu", static_cast<double>(stats.points) * 1e-6,
+                stats.pointsPerSecond * 1e-6, 100.0 * stats.insideFraction(),
+                static_cast<unsigned long long>(stats.escapes));
+  ImGui::SameLine();
+  ImGui::TextColored(kDimColor, " |  %.0f fps  %.1f ms (worst %.0f)  upload %.1f ms  %d samples", m.fps, m.frameMs,
+                     m.worstFrameMs, m.uploadMs, state.samples);
+  if (m.changeToFrameMs >= 0.0) {
+    ImGui::SameLine();
+    ImGui::TextColored(kDimColor, " |  edit→frame %.0f ms (%d frames)", m.changeToFrameMs, m.changeToFrameFrames);
+  }
+  ImGui::SameLine();
+  ImGui::TextColored(kDimColor, " |  %s", state.lyapunovText.c_str());
+  ImGui::End();
+}
+
+// Errors stay on screen until dismissed; the explorer goes on with the last good state.
+void noticeWindow(ExplorerState& state, float scale) {
+  std::string text;
+  auto addLine = [&text](const std::string& line) {
+    if (line.empty()) return;
+    if (!text.empty()) text += '\n';
+    text += line;
+  };
+  addLine(state.notice);
+  addLine(state.session.error);
+  if (!state.session.stats.problem.empty()) addLine(state.session.stats.problem + " — try Search (F3).");
+  if (text.empty()) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 12 * scale), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
+  ImGui::SetNextWindowSizeConstraints(ImVec2(200 * scale, 0), ImVec2(io.DisplaySize.x * 0.45f, 400 * scale));
+  ImGui::Begin("##notice", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+  ImGui::PushTextWrapPos(io.DisplaySize.x * 0.43f);
+  ImGui::TextColored(kErrorColor, "%s", text.c_str());
+  ImGui::PopTextWrapPos();
+  if (!state.notice.empty() && button(state, "notice/", "Dismiss")) state.notice.clear();
+  ImGui::End();
+}
+
+}  // namespace
+
+void resetExplorerState(ExplorerState& state, const core::Scene& scene) {
+  state.scene = scene;
+  state.initialCamera = scene.camera;
+  state.history.emplace(scene);
+  state.visited.clear();
+  state.visitedIndex = 0;
+  state.searchMessage.clear();
+  state.analysedKey.clear();
+}
+
+bool openFile(ExplorerState& state, const std::filesystem::path& path) {
+  try {
+    std::string extension = path.extension().string();
+    std::transform(extension.begin(), extension.end(), extension.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    const bool preset = extension == ".json" || extension == ".png";
+    const core::Scene scene = preset ? sceneFromFile(path) : sceneWithMesh(state.scene, path);
+    // A preset opens fresh, with its own history; a new mesh is one more undoable edit.
+    if (preset)
+      resetExplorerState(state, scene);
+    else
+      state.scene = scene;
+    state.notice.clear();
+    const std::string entry = std::filesystem::absolute(path).lexically_normal().string();
+    std::erase(state.recentFiles, entry);
+    state.recentFiles.insert(state.recentFiles.begin(), entry);
+    if (state.recentFiles.size() > kMaxRecentFiles) state.recentFiles.resize(kMaxRecentFiles);
+    return true;
+  } catch (const core::Error& e) {
+    state.notice = e.what();
+    return false;
+  }
+}
+
+void explorerUiFrame(ExplorerState& state) {
+  const float scale = state.uiScale;
+  state.requests = UiRequests{};
+  if (state.probe) state.probe->items.clear();
+  handleShortcuts(state);
+  handleCamera(state);
+  handleHistory(state);
+  collectSearch(state);
+  updateAnalysis(state);
+  patternWindow(state, scale);
+  viewWindow(state, scale);
+  statusBar(state, scale);
+  noticeWindow(state, scale);
+}
+
+void applyUiScale(float scale) {
+  ImGuiStyle& style = ImGui::GetStyle();
+  style = ImGuiStyle();
+  ImGui::StyleColorsDark();
+  style.WindowRounding = 6.0f;
+  style.FrameRounding = 4.0f;
+  style.GrabRounding = 4.0f;
+  style.WindowBorderSize = 0.0f;
+  style.Colors[ImGuiCol_WindowBg].w = 0.86f;
+  style.ScaleAllSizes(scale);
+  ImGuiIO& io = ImGui::GetIO();
+  io.Fonts->Clear();
+  // DejaVu Sans has the Greek, arrows and punctuation the panels use; ImGui's built-in font is
+  // the fallback (and is what tests get when the font is not installed).
+  static const ImWchar kRanges[] = {0x0020, 0x00FF, 0x0370, 0x03FF, 0x2010, 0x2044, 0x2190, 0x21FF, 0x2200, 0x22FF, 0};
+  constexpr const char* kFont = "/usr/share/fonts/truetype/dejavu/DejaVuSans.ttf";
+  ImFontConfig config;
+  config.OversampleH = 2;
+  if (!std::filesystem::exists(kFont) || !io.Fonts->AddFontFromFileTTF(kFont, 14.0f * scale, &config, kRanges)) {
+    ImFontConfig fallback;
+    fallback.SizePixels = 13.0f * scale;
+    io.Fonts->AddFontDefault(&fallback);
+  }
+}
+
+}  // namespace voxflame::app

@@ -1,0 +1,105 @@
+// The explorer's panels and input handling: plain ImGui over plain data. Nothing here calls GL or
+// GLFW, so the whole UI logic runs in a headless ImGui context in tests (drive io.MousePos and
+// friends, call explorerUiFrame, look at the Scene). The window loop in explorer.cpp owns GL, the
+// session and the files; panels ask it for things through UiRequests.
+#pragma once
+
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <future>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/lyapunov.h"
+#include "core/scene.h"
+#include "explorer_session.h"
+#include "scene_history.h"
+
+namespace voxflame::app {
+
+// Where widgets were drawn in the last frame, by a stable name ("tone/gamma"), so tests can click
+// and drag them like a user.
+struct UiProbe {
+  struct Rect {
+    float minX = 0, minY = 0, maxX = 0, maxY = 0;
+    float centerX() const { return 0.5f * (minX + maxX); }
+    float centerY() const { return 0.5f * (minY + maxY); }
+  };
+  std::map<std::string, Rect> items;
+};
+
+// What panels ask of the window loop, which owns files, GL and the session; cleared each frame.
+struct UiRequests {
+  std::optional<std::filesystem::path> open;  // a preset, a voxflame PNG or a mesh
+  bool quit = false;
+};
+
+// Timings the status line shows and scripted runs report.
+struct FrameMetrics {
+  double frameMs = 0.0;
+  double fps = 0.0;
+  double worstFrameMs = 0.0;      // since the last change of pattern
+  double uploadMs = 0.0;          // GL upload time spent in the last frame
+  double changeToFrameMs = -1.0;  // the last pattern change until the first frame showing it
+  double worstChangeToFrameMs = 0.0;
+  int changeToFrameFrames = 0;  // ... in frames
+};
+
+struct ExplorerState {
+  core::Scene scene;
+  core::CameraSettings initialCamera;
+  float renderScale = 1.0f;  // fraction of the window's pixels the volume is marched at
+  float uiScale = 1.0f;      // panel and font scale (DPI), as given to applyUiScale
+  int samples = 0;
+  FrameMetrics metrics;
+  SessionStatus session;  // copied from the session once per frame
+  std::string notice;     // an error or a message shown in the window until dismissed
+  UiRequests requests;
+  UiProbe* probe = nullptr;  // set by tests
+  std::vector<std::string> recentFiles;
+
+  // Camera dragging.
+  bool orbiting = false, panning = false;
+
+  // Pattern panel.
+  char attractorFilter[64] = "";
+  char meshPath[512] = "";
+  int gridDraft = 0;  // the grid slider's value while it is held
+
+  // Search (F3) and Mutate run off the main thread; their result replaces layer 0's parameters.
+  std::future<std::vector<core::SearchResult>> search;
+  std::uint64_t searchSeed = 1;
+  double mutateStrength = 0.1;
+  std::string searchMessage;
+  // Where Search and Mutate have been: back and forward walk it like a browser's history.
+  std::vector<core::PatternLayer> visited;
+  std::size_t visitedIndex = 0;
+
+  // The Lyapunov spectrum of layer 0, analysed off the main thread whenever the pattern changes.
+  std::future<core::OrbitAnalysis> analysis;
+  std::string analysedKey;
+  std::string lyapunovText = "Lyapunov: …";
+
+  std::optional<SceneHistory> history;  // undo/redo over the whole scene
+};
+
+// Sets up the state for a scene just opened (history, camera reset point, search history).
+void resetExplorerState(ExplorerState& state, const core::Scene& scene);
+
+// One UI frame between ImGui::NewFrame and ImGui::Render: input, panels, background jobs.
+void explorerUiFrame(ExplorerState& state);
+
+inline constexpr std::size_t kMaxRecentFiles = 10;
+
+// Opens a preset, a voxflame PNG (a fresh scene and history) or a mesh (the pattern stays; one
+// undoable edit) and puts it first in the recent files. On failure the scene is untouched and
+// the notice says why; returns whether it opened.
+bool openFile(ExplorerState& state, const std::filesystem::path& path);
+
+// Applies the UI scale (DPI): fonts and spacing. Call before the first frame.
+void applyUiScale(float scale);
+
+}  // namespace voxflame::app

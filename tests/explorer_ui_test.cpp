@@ -1,0 +1,288 @@
+// The explorer's UI logic, driven like a user would: a headless ImGui context (no window, no GL)
+// gets mouse and key input, the panels run, and the tests look at the Scene and the session.
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include <chrono>
+#include <functional>
+#include <fstream>
+#include <thread>
+
+#include "core/scene_io.h"
+#include "explorer_session.h"
+#include "explorer_ui.h"
+#include "test_support.h"
+
+using namespace voxflame;
+using voxflame::test::TemporaryFolder;
+
+namespace {
+
+class ExplorerUi : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;
+    io.DisplaySize = ImVec2(1280, 1600);  // tall, so every panel fits without scrolling
+    io.DeltaTime = 1.0f / 60.0f;
+    app::applyUiScale(1.0f);
+    unsigned char* pixels = nullptr;
+    int width = 0, height = 0;
+    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);  // what a renderer backend does
+    // Nothing outside the window: the mouse starts over empty space in the middle.
+    io.MousePos = ImVec2(640, 360);
+    state.probe = &probe;
+    app::resetExplorerState(state, core::defaultScene());
+    frame();
+    frame();
+  }
+  void TearDown() override { ImGui::DestroyContext(); }
+
+  void frame(int count = 1) {
+    for (int i = 0; i < count; ++i) {
+      ImGui::NewFrame();
+      app::explorerUiFrame(state);
+      ImGui::Render();
+    }
+  }
+  const app::UiProbe::Rect& item(const std::string& name) {
+    const auto found = probe.items.find(name);
+    if (found == probe.items.end()) throw std::runtime_error("no widget named " + name + " was drawn");
+    return found->second;
+  }
+  void moveTo(float x, float y) {
+    ImGui::GetIO().MousePos = ImVec2(x, y);
+    frame();
+  }
+  // Presses the button at the pointer, moves by (dx, dy) in a few steps, releases. A slider
+  // jumps to where it is pressed; `pressed` runs right then, to note the value the drag starts from.
+  void drag(float x, float y, float dx, float dy, int button = 0, const std::function<void()>& pressed = {}) {
+    ImGuiIO& io = ImGui::GetIO();
+    moveTo(x, y);
+    io.MouseDown[button] = true;
+    frame();
+    if (pressed) pressed();
+    for (int step = 1; step <= 4; ++step)
+      moveTo(x + dx * static_cast<float>(step) / 4, y + dy * static_cast<float>(step) / 4);
+    io.MouseDown[button] = false;
+    frame(2);
+  }
+  void click(const std::string& name) {
+    const auto& rect = item(name);
+    ImGuiIO& io = ImGui::GetIO();
+    moveTo(rect.centerX(), rect.centerY());
+    io.MouseDown[0] = true;
+    frame();
+    io.MouseDown[0] = false;
+    frame(2);
+  }
+  void pressKey(int key, bool ctrl = false, bool shift = false) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = ctrl;
+    io.KeyShift = shift;
+    io.KeysDown[key] = true;
+    frame();
+    io.KeysDown[key] = false;
+    io.KeyCtrl = io.KeyShift = false;
+    frame(2);
+  }
+
+  app::UiProbe probe;
+  app::ExplorerState state;
+};
+
+TEST_F(ExplorerUi, DraggingAParameterSliderChangesThePatternAndIsOneUndoStep) {
+  const double before = state.scene.layers[0].params[0];
+  const std::string keyBefore = app::patternKey(state.scene);
+  const auto& slider = item("layer0/a");
+  double pressedAt = 0.0;
+  drag(slider.minX + 4, slider.centerY(), 60.0f, 0.0f, 0, [&] { pressedAt = state.scene.layers[0].params[0]; });
+  const double after = state.scene.layers[0].params[0];
+  EXPECT_GT(after, pressedAt) << "dragging right raises the value";
+  EXPECT_NE(app::patternKey(state.scene), keyBefore) << "a parameter change restarts the accumulation";
+
+  pressKey('Z', true);
+  EXPECT_DOUBLE_EQ(state.scene.layers[0].params[0], before) << "the whole drag is one undo step";
+  pressKey('Z', true, true);
+  EXPECT_DOUBLE_EQ(state.scene.layers[0].params[0], after) << "Ctrl+Shift+Z redoes it";
+}
+
+TEST_F(ExplorerUi, ToneSlidersChangeTheLookButNotThePattern) {
+  const std::string keyBefore = app::patternKey(state.scene);
+  double gamma = 0.0;
+  const auto& slider = item("tone/gamma");
+  drag(slider.centerX(), slider.centerY(), -50.0f, 0.0f, 0, [&] { gamma = state.scene.tone.gamma; });
+  EXPECT_LT(state.scene.tone.gamma, gamma);
+  EXPECT_EQ(app::patternKey(state.scene), keyBefore) << "tone mapping must not restart accumulation";
+}
+
+TEST_F(ExplorerUi, MouseOrbitsPansAndZoomsOutsideThePanels) {
+  const core::CameraSettings before = state.scene.camera;
+  drag(640, 360, 40, 0);
+  EXPECT_NE(state.scene.camera.azimuthDeg, before.azimuthDeg) << "left drag orbits";
+  drag(640, 360, 30, 20, 1);
+  EXPECT_GT(glm::length(state.scene.camera.target - before.target), 0.0) << "right drag pans";
+  ImGui::GetIO().MouseWheel = 1.0f;
+  frame();
+  ImGui::GetIO().MouseWheel = 0.0f;
+  EXPECT_LT(state.scene.camera.distance, before.distance) << "the wheel zooms in";
+
+  // The same drag starting on a panel belongs to the panel.
+  const double azimuth = state.scene.camera.azimuthDeg;
+  const auto& label = item("layer0/Reset parameters");
+  drag(label.maxX + 120, label.centerY(), 40, 0);
+  EXPECT_DOUBLE_EQ(state.scene.camera.azimuthDeg, azimuth);
+}
+
+TEST_F(ExplorerUi, LayersCanBeAddedWeightedAndRemoved) {
+  click("Add layer");
+  ASSERT_EQ(state.scene.layers.size(), 2u);
+  EXPECT_NE(state.scene.layers[1].attractor, state.scene.layers[0].attractor);
+  double weight = 0.0;
+  const auto& slider = item("layer1/weight");
+  drag(slider.minX + 4, slider.centerY(), 40, 0, 0, [&] { weight = state.scene.layers[1].weight; });
+  EXPECT_GT(state.scene.layers[1].weight, weight);
+  click("layer1/Remove layer");
+  EXPECT_EQ(state.scene.layers.size(), 1u);
+}
+
+TEST_F(ExplorerUi, ResetParametersRestoresTheCatalogueDefaults) {
+  const auto defaults = core::attractorOrThrow(state.scene.layers[0].attractor).defaultParams();
+  state.scene.layers[0].params[1] += 0.2;
+  frame();
+  click("layer0/Reset parameters");
+  EXPECT_EQ(state.scene.layers[0].params, defaults);
+}
+
+TEST_F(ExplorerUi, GradientStopsCanBeAddedAndMoved) {
+  const std::size_t stops = state.scene.layers[0].color.gradient.size();
+  click("layer0/Add stop");
+  EXPECT_EQ(state.scene.layers[0].color.gradient.size(), stops + 1);
+  EXPECT_TRUE(state.scene.layers[0].color.palette.empty()) << "an edited gradient is custom";
+  for (std::size_t s = 1; s < state.scene.layers[0].color.gradient.size(); ++s)
+    EXPECT_LE(state.scene.layers[0].color.gradient[s - 1].position, state.scene.layers[0].color.gradient[s].position);
+}
+
+TEST_F(ExplorerUi, GridResolutionChangesOnlyWhenTheSliderIsReleased) {
+  const int before = state.scene.gridResolution;
+  const auto& slider = item("mesh/grid");
+  ImGuiIO& io = ImGui::GetIO();
+  moveTo(slider.minX + 4, slider.centerY());
+  io.MouseDown[0] = true;
+  frame();
+  moveTo(slider.minX + 10, slider.centerY());
+  EXPECT_EQ(state.scene.gridResolution, before) << "no mask rebuild while dragging";
+  io.MouseDown[0] = false;
+  frame(2);
+  EXPECT_NE(state.scene.gridResolution, before);
+  EXPECT_GE(state.scene.gridResolution, 32);
+  EXPECT_LT(state.scene.gridResolution, before) << "the left part of the slider is below the default";
+}
+
+TEST_F(ExplorerUi, SearchFindsAChaoticSetAndTheHistoryGoesBackAndForward) {
+  const auto start = state.scene.layers[0].params;
+  click("Search (F3)");
+  for (int i = 0; i < 600 && state.visited.empty(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    frame();
+  }
+  ASSERT_EQ(state.visited.size(), 2u) << state.searchMessage;
+  const auto found = state.scene.layers[0].params;
+  EXPECT_NE(found, start);
+  click("< Back");
+  EXPECT_EQ(state.scene.layers[0].params, start);
+  click("Forward >");
+  EXPECT_EQ(state.scene.layers[0].params, found);
+}
+
+TEST_F(ExplorerUi, OpeningFilesKeepsWorkSafe) {
+  TemporaryFolder folder;
+  const auto pattern = state.scene.layers[0].params;
+  // A mesh replaces the shape and keeps the pattern; it is one undoable edit.
+  ASSERT_TRUE(app::openFile(state, test::meshPath("teapot.obj"))) << state.notice;
+  EXPECT_NE(state.scene.meshPath.find("teapot.obj"), std::string::npos);
+  EXPECT_EQ(state.scene.layers[0].params, pattern);
+  EXPECT_FALSE(state.recentFiles.empty());
+  frame(2);
+  pressKey('Z', true);
+  EXPECT_EQ(state.scene.meshPath.find("teapot.obj"), std::string::npos) << "undo goes back to the bunny";
+
+  // A broken preset leaves the scene as it was and says why.
+  const auto broken = folder.path() / "broken.json";
+  std::ofstream(broken) << "{ \"schema_version\": 1, \"name\": ";
+  const std::string meshBefore = state.scene.meshPath;
+  EXPECT_FALSE(app::openFile(state, broken));
+  EXPECT_NE(state.notice.find("broken.json"), std::string::npos) << state.notice;
+  EXPECT_EQ(state.scene.meshPath, meshBefore);
+  frame(3);
+  click("notice/Dismiss");
+  EXPECT_TRUE(state.notice.empty());
+}
+
+// The session restarts accumulation (a new generation) when the UI changes a parameter, and
+// does not when only the tone changes.
+TEST_F(ExplorerUi, AParameterChangeBumpsTheGenerationOfTheSession) {
+  state.scene.gridResolution = 48;
+  app::ExplorerSession session(1);
+  ASSERT_TRUE(session.postIfPatternChanged(state.scene));
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  ASSERT_TRUE(session.status().error.empty()) << session.status().error;
+  const auto generation = session.status().stats.generation;
+
+  const auto& tone = item("tone/brightness");
+  drag(tone.centerX(), tone.centerY(), 30, 0);
+  EXPECT_FALSE(session.postIfPatternChanged(state.scene));
+
+  const auto& slider = item("layer0/b");
+  drag(slider.centerX(), slider.centerY(), 20, 0);
+  ASSERT_TRUE(session.postIfPatternChanged(state.scene));
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  EXPECT_EQ(session.status().stats.generation, generation + 1);
+
+  // The new generation's volume arrives, tagged with the post that asked for it.
+  core::PackedVolume volume;
+  std::uint64_t reflects = 0;
+  for (int i = 0; i < 300 && reflects != session.status().requestedGeneration; ++i) {
+    session.takeVolumeIfNewer(volume, &reflects);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_EQ(reflects, session.status().requestedGeneration);
+}
+
+TEST_F(ExplorerUi, AnEscapingPatternIsShownWithAWayOut) {
+  state.scene.gridResolution = 48;
+  state.scene.layers[0].attractor = "polynomial_b";
+  state.scene.layers[0].params = core::attractorOrThrow("polynomial_b").alternative("seed")->values;
+  app::ExplorerSession session(1);
+  session.postIfPatternChanged(state.scene);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  state.session = session.status();
+  ASSERT_FALSE(state.session.stats.problem.empty());
+  frame();
+  EXPECT_NO_THROW(item("Find a nearby one"));
+}
+
+TEST_F(ExplorerUi, ABadMeshIsReportedAndTheOldShapeStays) {
+  state.scene.gridResolution = 48;
+  app::ExplorerSession session(1);
+  session.postIfPatternChanged(state.scene);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  TemporaryFolder folder;
+  const auto bad = folder.path() / "bad.obj";
+  std::ofstream(bad) << "this is not a mesh\n";
+  ASSERT_TRUE(app::openFile(state, bad));
+  frame(2);
+  session.postIfPatternChanged(state.scene);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  const app::SessionStatus status = session.status();
+  EXPECT_NE(status.error.find("bad.obj"), std::string::npos) << status.error;
+  EXPECT_TRUE(status.hasShape) << "the bunny's grid keeps refining";
+  // Undo returns to the good mesh and clears the message.
+  pressKey('Z', true);
+  session.postIfPatternChanged(state.scene);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  EXPECT_TRUE(session.status().error.empty()) << session.status().error;
+}
+
+}  // namespace
