@@ -46,7 +46,7 @@ usage:
                 [--method winding-number|exact-winding-number|parity]
       Write the mesh's inside mask (N voxels along its longest axis, 32-1024, default 256)
       as an NRRD volume in the mesh's own coordinates.
-  voxflame bench [accumulate|mask|raymarch|export] [--json]
+  voxflame bench [accumulate|mask|raymarch|explorer|export] [--json]
       Measure performance (Release build).
   voxflame --help | --version
 )";

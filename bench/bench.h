@@ -28,5 +28,6 @@ void benchAccumulate(const BenchOptions& options);  // bench_accumulate.cpp
 void benchRaymarch(const BenchOptions& options);    // bench_raymarch.cpp
 void benchExport(const BenchOptions& options);      // bench_export.cpp
 void benchMask(const BenchOptions& options);        // bench_mask.cpp
+void benchExplorer(const BenchOptions& options);    // bench_explorer.cpp
 
 }  // namespace voxflame::bench

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -350,4 +351,26 @@ TEST(Accumulator, LayersKeepTheirOwnColoursAndWeights) {
   const glm::dvec3 redOnly = colourTotals(accumulate(mask, {red, blue}, 100'000, 1));
   EXPECT_GT(redOnly.r, 0.0);
   EXPECT_EQ(redOnly.b, 0.0);
+}
+
+// A generation change must get the grid even while many workers and snapshots keep reading it:
+// a shared_mutex may otherwise let readers starve the writer, and the explorer waits for it.
+TEST(Accumulator, PatternChangesAreNotStarvedByBusyReaders) {
+  const auto mask = bunnyMask(64);
+  Accumulator accumulator(mask, 6);  // more threads than cores: readers overlap all the time
+  accumulator.setPattern(defaultScene().layers, 1);
+  std::atomic<bool> stop{false};
+  std::jthread snapshots([&] {
+    VolumeSnapshot snapshot;
+    while (!stop) accumulator.snapshot(snapshot);
+  });
+  auto layers = defaultScene().layers;
+  for (int change = 0; change < 20; ++change) {
+    layers[0].params[0] *= 1.001;
+    const auto start = std::chrono::steady_clock::now();
+    accumulator.setPattern(layers, 1);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_LT(seconds, 2.0) << "change " << change;
+  }
+  stop = true;
 }

@@ -538,7 +538,11 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
       problem = "attractor '" + layer.attractor + "' escapes to infinity (or collapses) with these parameters";
   }
   {
+    // Readers (batches, snapshots) hold the lock shared almost without pause, and a shared_mutex
+    // may let them starve a writer; announcing the change makes them stand aside until it is done.
+    patternWriters_.fetch_add(1, std::memory_order_acq_rel);
     std::unique_lock lock(gridMutex_);  // no batch runs and no snapshot copies while we clear
+    patternWriters_.fetch_sub(1, std::memory_order_acq_rel);
     layers_ = std::move(prepared);
     seed_ = seed;
     {
@@ -606,6 +610,7 @@ AccumulatorStats Accumulator::stats() const {
 }
 
 void Accumulator::snapshot(VolumeSnapshot& out) const {
+  waitForPatternChange();
   std::shared_lock lock(gridMutex_);
   const std::size_t voxels = cells_.size();
   out.geometry = mask_->geometry;
@@ -716,8 +721,14 @@ std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {
   return inside;
 }
 
+void Accumulator::waitForPatternChange() const {
+  while (patternWriters_.load(std::memory_order_acquire) > 0)
+    std::this_thread::sleep_for(std::chrono::microseconds(100));
+}
+
 void Accumulator::runBatch(int stream, std::uint64_t generation, std::vector<OrbitBatch>& batches,
                            SplatBuffer& splats) {
+  waitForPatternChange();
   std::shared_lock lock(gridMutex_);
   if (generation != generation_.load()) return;  // a new pattern arrived; pick it up next time
   const GridGeometry& grid = mask_->geometry;

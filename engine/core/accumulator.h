@@ -161,7 +161,8 @@ class Accumulator {
   bool allStreamsDone(std::uint64_t target) const;
   // Adds a thread's collected splats to the grid; returns how many landed inside the mask.
   std::uint64_t flushSplats(struct SplatBuffer& splats);
-  void clearCells();  // zero sums; the outside flag set from the mask
+  void clearCells();                  // zero sums; the outside flag set from the mask
+  void waitForPatternChange() const;  // readers step aside while setPattern waits for the grid
 
   std::shared_ptr<const InsideMask> mask_;
 
@@ -171,6 +172,7 @@ class Accumulator {
   std::unique_ptr<std::mutex[]> slabMutexes_;
   std::size_t slabCount_ = 0;
 
+  std::atomic<int> patternWriters_{0};   // setPattern calls waiting for gridMutex_
   mutable std::shared_mutex gridMutex_;  // shared: a batch writing; exclusive: a generation change
   std::vector<PreparedLayer> layers_;    // guarded by gridMutex_
   std::uint64_t seed_ = 1;

@@ -1,0 +1,140 @@
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <unistd.h>
+
+#include "bench.h"
+#include "core/camera.h"
+#include "core/scene_io.h"
+#include "explorer_session.h"
+#include "gl/headless_context.h"
+#include "gl/volume_renderer.h"
+
+namespace voxflame::bench {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double millisecondsSince(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+double residentMegabytes() {
+  std::ifstream statm("/proc/self/statm");
+  long long pages = 0, resident = 0;
+  statm >> pages >> resident;
+  return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
+}
+
+// The explorer's frame without the window: take a new volume if one is ready, upload a slice of
+// it, march one sample and resolve, exactly as explorer.cpp does, then wait for the GL to finish
+// so the time is the frame's real cost.
+struct FrameLoop {
+  explicit FrameLoop(app::ExplorerSession& explorerSession) : session(explorerSession) {}
+  app::ExplorerSession& session;
+  gl::VolumeRenderer renderer;
+  gl::FrameTarget target;
+  core::PackedVolume incoming, uploading;
+  bool uploadInProgress = false;
+  std::uint64_t uploadingPost = 0;
+  float renderScale = 1.0f;
+  int frame = 0;
+
+  // Returns the post whose volume became visible in this frame, or 0.
+  std::uint64_t run(const core::Scene& scene) {
+    std::uint64_t shownPost = 0;
+    if (auto mesh = session.takeNewMesh()) renderer.setMesh(*mesh);
+    std::uint64_t reflects = 0;
+    if (!uploadInProgress && session.takeVolumeIfNewer(incoming, &reflects)) {
+      std::swap(incoming, uploading);
+      renderer.beginUpload(uploading);
+      uploadInProgress = true;
+      uploadingPost = reflects;
+    }
+    if (uploadInProgress && renderer.continueUpload(48u << 20)) {
+      uploadInProgress = false;
+      target.samples = 0;
+      shownPost = uploadingPost;
+    }
+    const auto grid = session.geometry();
+    if (grid && renderer.hasVolume()) {
+      gl::RenderSettings settings;
+      settings.camera = core::orbitCamera(scene.camera, grid->box(), 1280.0 / 720.0);
+      settings.tone = scene.tone;
+      settings.render = scene.render;
+      target.resize(static_cast<int>(1280 * renderScale), static_cast<int>(720 * renderScale));
+      if (target.samples == 0) renderer.drawMesh(target, settings);
+      renderer.march(target, settings, frame);
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      renderer.resolve(target, settings, glm::ivec4(0, 0, 1280, 720), false);
+    }
+    glFinish();
+    ++frame;
+    return shownPost;
+  }
+};
+
+}  // namespace
+
+// The explorer's numbers: time from a parameter change to the first frame showing it, the worst
+// frame time while the volume refines, and the memory the session holds at 256³ and 512³.
+void benchExplorer(const BenchOptions& options) {
+  gl::HeadlessContext context;
+  // As the explorer does: software GL marches a quarter of the pixels.
+  const bool software = context.renderer().find("llvmpipe") != std::string::npos;
+  for (int resolution : {256, 512}) {
+    const double baseline = residentMegabytes();
+    core::Scene scene = core::defaultScene();
+    scene.gridResolution = resolution;
+    app::ExplorerSession session;
+    FrameLoop loop(session);
+    loop.renderScale = software ? 0.5f : 1.0f;
+    session.postIfPatternChanged(scene);
+    session.waitUntilApplied(600.0);
+    // Wait for the first volume, then refine for a while as a user watching would.
+    const auto start = Clock::now();
+    while (!loop.renderer.hasVolume() && millisecondsSince(start) < 120'000) loop.run(scene);
+    double worstRefining = 0.0, totalRefining = 0.0;
+    int refiningFrames = 0;
+    const auto refineStart = Clock::now();
+    while (millisecondsSince(refineStart) < 4000.0) {
+      const auto frameStart = Clock::now();
+      loop.run(scene);
+      const double ms = millisecondsSince(frameStart);
+      worstRefining = std::max(worstRefining, ms);
+      totalRefining += ms;
+      ++refiningFrames;
+    }
+    const double memory = residentMegabytes() - baseline;
+
+    // Parameter changes, as a slider drag makes them: time until the first frame showing each.
+    std::vector<double> latencies, frames;
+    for (int change = 0; change < 5; ++change) {
+      scene.layers[0].params[0] *= change % 2 ? 1.0 / 1.01 : 1.01;
+      const auto changed = Clock::now();
+      const int firstFrame = loop.frame;
+      session.postIfPatternChanged(scene);
+      const std::uint64_t post = session.status().requestedGeneration;
+      while (millisecondsSince(changed) < 60'000)
+        if (loop.run(scene) == post) break;
+      latencies.push_back(millisecondsSince(changed));
+      frames.push_back(loop.frame - firstFrame);
+    }
+    std::sort(latencies.begin(), latencies.end());
+    std::sort(frames.begin(), frames.end());
+    report(options, {{"bench", "explorer"},
+                     {"grid", resolution},
+                     {"renderer", context.renderer()},
+                     {"render_scale", loop.renderScale},
+                     {"mean_frame_ms", totalRefining / std::max(1, refiningFrames)},
+                     {"worst_frame_ms", worstRefining},
+                     {"change_to_frame_ms_median", latencies[latencies.size() / 2]},
+                     {"change_to_frame_ms_worst", latencies.back()},
+                     {"change_to_frame_frames_median", frames[frames.size() / 2]},
+                     {"memory_mb", memory}});
+  }
+}
+
+}  // namespace voxflame::bench
