@@ -14,6 +14,7 @@
 #include "arguments.h"
 #include "commands.h"
 #include "core/error.h"
+#include "core/keyframes.h"
 #include "core/scene_io.h"
 #include "explorer.h"
 #include "pipeline.h"
@@ -29,10 +30,16 @@ usage:
   voxflame [PRESET.json] [--screenshot FILE --frames N]
       Open the explorer on a preset (the built-in default when none is given).
   voxflame render [PRESET.json|IMAGE.png] -o OUT.png|OUT.exr [--width W] [--height H]
-                  [--samples S] [--points N] [--grid R] [--bit-depth 8|16]
+                  [--samples S] [--points N] [--grid R] [--bit-depth 8|16] [--time SECONDS]
                   [--camera-azimuth DEG] [--camera-elevation DEG] [--threads T]
       Render a still headless (no display needed). A PNG carries its preset: rendering
       it again reproduces it. EXR is linear 32-bit float.
+  voxflame animate [PRESET.json|FRAME.png] -o PATTERN [--frames A-B] [--width W] [--height H]
+                   [--fps F] [--motion-blur N] [--shutter S] [--video OUT.mp4]
+                   [--samples S] [--points N] [--grid R] [--threads T]
+      Render the preset's keyframed animation to PNG frames named by a printf pattern
+      (frames/%04d.png); --frames renders part of it (frames split across machines agree).
+      --video encodes the frames with ffmpeg when it is installed.
   voxflame list [--json]
       The attractor catalogue: ids, kinds, parameters with defaults.
   voxflame info [PRESET.json] [--attractor ID] [--set NAME] [--param NAME=VALUE]...
@@ -61,11 +68,20 @@ core::Scene sceneFromArgument(const std::vector<std::string>& positional) {
 
 namespace {
 
-// Ctrl-C during a render only raises this flag; the render stops at its next check and no
-// half-written file is left behind.
 std::atomic<bool> gInterrupted{false};
 extern "C" void onInterrupt(int) {
   gInterrupted.store(true);
+}
+
+}  // namespace
+
+const std::atomic<bool>& catchInterrupts() {
+  gInterrupted = false;
+  struct sigaction action {};
+  action.sa_handler = onInterrupt;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  return gInterrupted;
 }
 
 std::string formatDuration(double seconds) {
@@ -79,8 +95,6 @@ std::string formatDuration(double seconds) {
     std::snprintf(text, sizeof text, "%.0fs", seconds);
   return text;
 }
-
-}  // namespace
 
 int renderCommand(const std::vector<std::string>& args) {
   Arguments arguments(args, 2);
@@ -98,6 +112,8 @@ int renderCommand(const std::vector<std::string>& args) {
   const double azimuthDeg = arguments.real("--camera-azimuth", 0.0, -3600.0, 3600.0);
   const auto elevation = arguments.take("--camera-elevation");
   const double elevationDeg = arguments.real("--camera-elevation", 0.0, -360.0, 360.0);
+  const auto time = arguments.take("--time");
+  const double seconds = arguments.real("--time", 0.0, 0.0, core::kMaxAnimationSeconds);
   const int bitDepth = static_cast<int>(arguments.integer("--bit-depth", 8, 8, 16));
   if (bitDepth != 8 && bitDepth != 16) throw UsageError("--bit-depth must be 8 or 16");
   arguments.finish(1);
@@ -110,6 +126,8 @@ int renderCommand(const std::vector<std::string>& args) {
 
   // Command-line settings go into the scene, so the preset stored in the image reproduces it.
   core::Scene scene = sceneFromArgument(arguments.positional());
+  // An animated preset renders the moment it names (a rendered frame stores its own time).
+  scene = core::sceneAtTime(scene, time ? seconds : scene.animation.time);
   if (options.points) scene.points = options.points;
   if (samples) scene.render.samples = sampleCount;
   if (grid) scene.gridResolution = gridResolution;
@@ -124,12 +142,7 @@ int renderCommand(const std::vector<std::string>& args) {
   scene.embedded = embedded;
   scene.baseDirectory = baseDirectory;
 
-  gInterrupted = false;
-  struct sigaction action {};
-  action.sa_handler = onInterrupt;
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-  options.cancel = &gInterrupted;
+  options.cancel = &catchInterrupts();
   const bool interactive = isatty(fileno(stderr));
   options.progress = [interactive](const core::AccumulatorStats& stats, std::uint64_t target) {
     if (!interactive) return;
@@ -209,8 +222,8 @@ namespace voxflame::app {
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
-      {"render", &renderCommand}, {"bench", &benchCommand},   {"list", &listCommand},
-      {"info", &infoCommand},     {"search", &searchCommand}, {"mask", &maskCommand},
+      {"render", &renderCommand}, {"animate", &animateCommand}, {"bench", &benchCommand}, {"list", &listCommand},
+      {"info", &infoCommand},     {"search", &searchCommand},   {"mask", &maskCommand},
   };
   return table;
 }

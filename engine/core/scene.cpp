@@ -520,7 +520,7 @@ Scene loadScene(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   Scene scene = sceneFromJson(text.str(), path.string());
-  scene.baseDirectory = path.parent_path();
+  if (!scene.embedded) scene.baseDirectory = path.parent_path();  // a builtin: mesh lives in the binary
   return scene;
 }
 
