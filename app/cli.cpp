@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <chrono>
 
 #include <cctype>
 #include <cstdio>
@@ -14,7 +15,9 @@
 #include "arguments.h"
 #include "commands.h"
 #include "core/error.h"
+#include "core/keyframes.h"
 #include "core/scene_io.h"
+#include "core/volume_export.h"
 #include "explorer.h"
 #include "pipeline.h"
 #include "version.h"
@@ -29,11 +32,18 @@ usage:
   voxflame [PRESET.json | IMAGE.png | MESH] [--screenshot FILE --frames N] [--ui-scale S]
       Open the explorer on a preset (the built-in default when none is given), on the preset
       stored in a PNG rendered by voxflame, or on a mesh filled with the default pattern.
-  voxflame render [PRESET.json|IMAGE.png] -o OUT.png|OUT.exr [--width W] [--height H]
-                  [--samples S] [--points N] [--grid R] [--bit-depth 8|16]
+  voxflame render [PRESET.json|IMAGE.png] -o OUT.png|OUT.exr|OUT.vdb|OUT.nrrd [--width W] [--height H]
+                  [--samples S] [--points N] [--grid R] [--bit-depth 8|16] [--time SECONDS]
                   [--camera-azimuth DEG] [--camera-elevation DEG] [--threads T]
       Render a still headless (no display needed). A PNG carries its preset: rendering
-      it again reproduces it. EXR is linear 32-bit float.
+      it again reproduces it. EXR is linear 32-bit float. VDB and NRRD hold the volume
+      itself (normalised density and colour, in the mesh's coordinates) for other renderers.
+  voxflame animate [PRESET.json|FRAME.png] -o PATTERN [--frames A-B] [--width W] [--height H]
+                   [--fps F] [--motion-blur N] [--shutter S] [--video OUT.mp4]
+                   [--samples S] [--points N] [--grid R] [--threads T]
+      Render the preset's keyframed animation to PNG frames named by a printf pattern
+      (frames/%04d.png); --frames renders part of it (frames split across machines agree).
+      --video encodes the frames with ffmpeg when it is installed.
   voxflame list [--json]
       The attractor catalogue: ids, kinds, parameters with defaults.
   voxflame info [PRESET.json] [--attractor ID] [--set NAME] [--param NAME=VALUE]...
@@ -60,11 +70,20 @@ core::Scene sceneFromArgument(const std::vector<std::string>& positional) {
 
 namespace {
 
-// Ctrl-C during a render only raises this flag; the render stops at its next check and no
-// half-written file is left behind.
 std::atomic<bool> gInterrupted{false};
 extern "C" void onInterrupt(int) {
   gInterrupted.store(true);
+}
+
+}  // namespace
+
+const std::atomic<bool>& catchInterrupts() {
+  gInterrupted = false;
+  struct sigaction action {};
+  action.sa_handler = onInterrupt;
+  sigaction(SIGINT, &action, nullptr);
+  sigaction(SIGTERM, &action, nullptr);
+  return gInterrupted;
 }
 
 std::string formatDuration(double seconds) {
@@ -77,6 +96,40 @@ std::string formatDuration(double seconds) {
   else
     std::snprintf(text, sizeof text, "%.0fs", seconds);
   return text;
+}
+
+namespace {
+
+// `render -o OUT.vdb|OUT.nrrd`: accumulates as for a still and writes the grid instead of an image.
+int writeVolume(const core::Scene& scene, const StillOptions& options, const std::string& output, bool vdb,
+                bool interactive) {
+  AccumulatedVolume volume;
+  try {
+    const SceneShape shape = buildSceneShape(scene);
+    volume = accumulateVolume(scene, shape, options);
+  } catch (const RenderCancelled&) {
+    if (interactive) std::fprintf(stderr, "\n");
+    std::cerr << "voxflame: interrupted; nothing was written\n";
+    return 130;
+  }
+  if (interactive) std::fprintf(stderr, "\n");
+  if (!volume.warning.empty()) std::cerr << "voxflame: warning: " << volume.warning << "\n";
+  StillResult stats;
+  stats.stats = volume.stats;
+  const std::string preset = stillMetadata(scene, stats).at(kPresetChunkKey);
+  const auto start = std::chrono::steady_clock::now();
+  if (vdb)
+    core::writeVdbVolume(output, volume.snapshot, preset);
+  else
+    core::writeNrrdVolume(output, volume.snapshot, preset);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::size_t active = 0;
+  for (float hits : volume.snapshot.density) active += hits > 0.0f;
+  const glm::ivec3 size = volume.snapshot.geometry.size;
+  std::printf("wrote %s (%d×%d×%d voxels, %zu with density, %llu points inside, %.2f s accumulating, %.2f s writing)\n",
+              output.c_str(), size.x, size.y, size.z, active, static_cast<unsigned long long>(volume.stats.points),
+              volume.seconds, seconds);
+  return 0;
 }
 
 }  // namespace
@@ -97,18 +150,24 @@ int renderCommand(const std::vector<std::string>& args) {
   const double azimuthDeg = arguments.real("--camera-azimuth", 0.0, -3600.0, 3600.0);
   const auto elevation = arguments.take("--camera-elevation");
   const double elevationDeg = arguments.real("--camera-elevation", 0.0, -360.0, 360.0);
+  const auto time = arguments.take("--time");
+  const double seconds = arguments.real("--time", 0.0, 0.0, core::kMaxAnimationSeconds);
   const int bitDepth = static_cast<int>(arguments.integer("--bit-depth", 8, 8, 16));
   if (bitDepth != 8 && bitDepth != 16) throw UsageError("--bit-depth must be 8 or 16");
   arguments.finish(1);
-  if (!output) throw UsageError("render needs an output file: -o OUT.png or -o OUT.exr");
+  if (!output) throw UsageError("render needs an output file: -o OUT.png, OUT.exr, OUT.vdb or OUT.nrrd");
   const std::string extension = std::filesystem::path(*output).extension().string();
-  if (extension != ".png" && extension != ".exr") throw UsageError("output '" + *output + "' must end in .png or .exr");
+  const bool volumeOutput = extension == ".vdb" || extension == ".nrrd";
+  if (extension != ".png" && extension != ".exr" && !volumeOutput)
+    throw UsageError("output '" + *output + "' must end in .png or .exr (an image) or .vdb or .nrrd (the volume)");
   if (static_cast<double>(options.width) * options.height > 1.5e9)
     throw core::Error("an image of " + std::to_string(options.width) + "×" + std::to_string(options.height) +
                       " pixels is too large to hold in memory");
 
   // Command-line settings go into the scene, so the preset stored in the image reproduces it.
   core::Scene scene = sceneFromArgument(arguments.positional());
+  // An animated preset renders the moment it names (a rendered frame stores its own time).
+  scene = core::sceneAtTime(scene, time ? seconds : scene.animation.time);
   if (options.points) scene.points = options.points;
   if (samples) scene.render.samples = sampleCount;
   if (grid) scene.gridResolution = gridResolution;
@@ -123,12 +182,7 @@ int renderCommand(const std::vector<std::string>& args) {
   scene.embedded = embedded;
   scene.baseDirectory = baseDirectory;
 
-  gInterrupted = false;
-  struct sigaction action {};
-  action.sa_handler = onInterrupt;
-  sigaction(SIGINT, &action, nullptr);
-  sigaction(SIGTERM, &action, nullptr);
-  options.cancel = &gInterrupted;
+  options.cancel = &catchInterrupts();
   const bool interactive = isatty(fileno(stderr));
   options.progress = [interactive](const core::AccumulatorStats& stats, std::uint64_t target) {
     if (!interactive) return;
@@ -141,6 +195,7 @@ int renderCommand(const std::vector<std::string>& args) {
                  stats.pointsPerSecond * 1e-6, formatDuration(left).c_str());
     std::fflush(stderr);
   };
+  if (volumeOutput) return writeVolume(scene, options, *output, extension == ".vdb", interactive);
   StillResult result;
   try {
     result = renderStill(scene, options);
@@ -211,8 +266,8 @@ namespace voxflame::app {
 
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
-      {"render", &renderCommand}, {"bench", &benchCommand},   {"list", &listCommand},
-      {"info", &infoCommand},     {"search", &searchCommand}, {"mask", &maskCommand},
+      {"render", &renderCommand}, {"animate", &animateCommand}, {"bench", &benchCommand}, {"list", &listCommand},
+      {"info", &infoCommand},     {"search", &searchCommand},   {"mask", &maskCommand},
   };
   return table;
 }

@@ -2,6 +2,7 @@
 // subcommands(); runCommandLine dispatches on the first argument.
 #pragma once
 
+#include <atomic>
 #include <string>
 #include <vector>
 
@@ -17,14 +18,22 @@ struct Subcommand {
 };
 const std::vector<Subcommand>& subcommands();
 
-int renderCommand(const CommandArgs& args);  // cli.cpp
-int benchCommand(const CommandArgs& args);   // bench/bench_command.cpp
-int listCommand(const CommandArgs& args);    // catalogue_commands.cpp
-int infoCommand(const CommandArgs& args);    // catalogue_commands.cpp
-int searchCommand(const CommandArgs& args);  // catalogue_commands.cpp
-int maskCommand(const CommandArgs& args);    // mask_command.cpp
+int renderCommand(const CommandArgs& args);   // cli.cpp
+int animateCommand(const CommandArgs& args);  // animate_command.cpp
+int benchCommand(const CommandArgs& args);    // bench/bench_command.cpp
+int listCommand(const CommandArgs& args);     // catalogue_commands.cpp
+int infoCommand(const CommandArgs& args);     // catalogue_commands.cpp
+int searchCommand(const CommandArgs& args);   // catalogue_commands.cpp
+int maskCommand(const CommandArgs& args);     // mask_command.cpp
 
 // The preset named by the first positional argument, or the embedded default when none.
 core::Scene sceneFromArgument(const std::vector<std::string>& positional);
+
+// From now on Ctrl-C and SIGTERM only raise the returned flag (cleared here): a render stops at
+// its next check and leaves no half-written file behind.
+const std::atomic<bool>& catchInterrupts();
+
+// "42s", "3m07s", "1h05m".
+std::string formatDuration(double seconds);
 
 }  // namespace voxflame::app

@@ -49,60 +49,96 @@ SceneShape buildSceneShape(const core::Scene& scene) {
   return shape;
 }
 
+AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& shape, const StillOptions& options) {
+  AccumulatedVolume result;
+  const std::uint64_t target = options.points ? options.points : scene.points;
+  const auto start = std::chrono::steady_clock::now();
+  core::Accumulator accumulator(shape.mask, options.threads);
+  accumulator.setTargetPoints(target);
+  accumulator.setPattern(scene.layers, scene.seed);
+  // A pattern that mostly misses the mesh would never reach its target: give up after a
+  // generous number of iterations and say how many points landed.
+  const std::uint64_t iterationLimit = 40 * target + 50'000'000;
+  while (!accumulator.waitUntilDone(0.25)) {
+    if (options.cancel && options.cancel->load()) throw RenderCancelled();
+    const core::AccumulatorStats stats = accumulator.stats();
+    if (options.progress) options.progress(stats, target);
+    if (stats.iterations > iterationLimit) {
+      result.warning = "only " + std::to_string(stats.points) + " of " + std::to_string(target) +
+                       " points landed inside the mesh; the pattern barely overlaps it";
+      break;
+    }
+  }
+  result.stats = accumulator.stats();
+  if (options.progress) options.progress(result.stats, target);
+  if (!result.stats.problem.empty()) throw core::Error(result.stats.problem);
+  accumulator.snapshot(result.snapshot);
+  result.seconds = secondsSince(start);
+  return result;
+}
+
+struct FrameRenderer::Impl {
+  gl::HeadlessContext context;
+  std::string name = context.renderer();
+  gl::VolumeRenderer renderer;
+  const core::PackedVolume* volume = nullptr;
+  const SceneShape* shape = nullptr;
+  bool meshUploaded = false;
+};
+
+FrameRenderer::FrameRenderer() : impl_(std::make_unique<Impl>()) {}
+FrameRenderer::~FrameRenderer() = default;
+
+const std::string& FrameRenderer::rendererName() const {
+  return impl_->name;
+}
+
+void FrameRenderer::setVolume(const core::PackedVolume& volume, const SceneShape& shape) {
+  impl_->renderer.upload(volume);
+  impl_->volume = &volume;
+  if (impl_->shape != &shape) impl_->meshUploaded = false;
+  impl_->shape = &shape;
+}
+
+core::ImageRGBA FrameRenderer::render(const core::Scene& scene, int width, int height, bool linearOutput) {
+  Impl& d = *impl_;
+  if (!d.volume || !d.shape) throw core::Error("no volume to render");
+  if (scene.render.meshDisplay != core::MeshDisplay::Off && !d.meshUploaded) {
+    d.renderer.setMesh(d.shape->mesh);
+    d.meshUploaded = true;
+  }
+  if (scene.render.lighting) {
+    core::ShadowVolume shadow;
+    core::computeShadowVolume(*d.volume,
+                              core::lightDirection(scene.render.lightAzimuthDeg, scene.render.lightElevationDeg),
+                              scene.tone.brightness, kShadowDownsample, shadow);
+    d.renderer.uploadShadow(shadow, kShadowDownsample);
+  }
+  gl::RenderSettings settings;
+  settings.camera = core::orbitCamera(scene.camera, d.shape->mask->geometry.box(),
+                                      static_cast<double>(width) / static_cast<double>(height));
+  settings.tone = scene.tone;
+  settings.render = scene.render;
+  return gl::renderToImage(d.renderer, settings, width, height, linearOutput);
+}
+
 StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   StillResult result;
   const SceneShape shape = buildSceneShape(scene);
-  const auto& mask = shape.mask;
-  const std::uint64_t target = options.points ? options.points : scene.points;
-
-  const auto accumulateStart = std::chrono::steady_clock::now();
   core::PackedVolume volume;
   {
-    core::Accumulator accumulator(mask, options.threads);
-    accumulator.setTargetPoints(target);
-    accumulator.setPattern(scene.layers, scene.seed);
-    // A pattern that mostly misses the mesh would never reach its target: give up after a
-    // generous number of iterations and say how many points landed.
-    const std::uint64_t iterationLimit = 40 * target + 50'000'000;
-    while (!accumulator.waitUntilDone(0.25)) {
-      if (options.cancel && options.cancel->load()) throw RenderCancelled();
-      const core::AccumulatorStats stats = accumulator.stats();
-      if (options.progress) options.progress(stats, target);
-      if (stats.iterations > iterationLimit) {
-        result.warning = "only " + std::to_string(stats.points) + " of " + std::to_string(target) +
-                         " points landed inside the mesh; the pattern barely overlaps it";
-        break;
-      }
-    }
-    result.stats = accumulator.stats();
-    if (options.progress) options.progress(result.stats, target);
-    if (!result.stats.problem.empty()) throw core::Error(result.stats.problem);
-    core::VolumeSnapshot snapshot;
-    accumulator.snapshot(snapshot);
-    core::packVolume(snapshot, volume);
+    AccumulatedVolume accumulated = accumulateVolume(scene, shape, options);
+    result.stats = accumulated.stats;
+    result.warning = accumulated.warning;
+    result.accumulateSeconds = accumulated.seconds;
+    core::packVolume(accumulated.snapshot, volume);
   }
-  result.accumulateSeconds = secondsSince(accumulateStart);
-
   if (options.cancel && options.cancel->load()) throw RenderCancelled();
   const auto renderStart = std::chrono::steady_clock::now();
-  gl::HeadlessContext context;
-  result.renderer = context.renderer();
-  gl::VolumeRenderer renderer;
-  renderer.upload(volume);
-  if (scene.render.meshDisplay != core::MeshDisplay::Off) renderer.setMesh(shape.mesh);
-  if (scene.render.lighting) {
-    core::ShadowVolume shadow;
-    core::computeShadowVolume(volume,
-                              core::lightDirection(scene.render.lightAzimuthDeg, scene.render.lightElevationDeg),
-                              scene.tone.brightness, kShadowDownsample, shadow);
-    renderer.uploadShadow(shadow, kShadowDownsample);
-  }
-  gl::RenderSettings settings;
-  settings.camera = core::orbitCamera(scene.camera, mask->geometry.box(),
-                                      static_cast<double>(options.width) / static_cast<double>(options.height));
-  settings.tone = scene.tone;
-  settings.render = scene.render;
-  result.image = gl::renderToImage(renderer, settings, options.width, options.height, options.linearOutput);
+  FrameRenderer renderer;
+  result.renderer = renderer.rendererName();
+  renderer.setVolume(volume, shape);
+  result.image = renderer.render(scene, options.width, options.height, options.linearOutput);
   result.renderSeconds = secondsSince(renderStart);
   return result;
 }

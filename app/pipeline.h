@@ -13,6 +13,7 @@
 #include "core/error.h"
 #include "core/image_io.h"
 #include "core/inside_mask.h"
+#include "core/packed_volume.h"
 #include "core/scene.h"
 
 namespace voxflame::app {
@@ -58,6 +59,36 @@ class RenderCancelled : public core::Error {
 // Renders a still headless through EGL, with the scene's camera, tone and render settings
 // (samples included). Throws core::Error on anything the user can fix.
 StillResult renderStill(const core::Scene& scene, const StillOptions& options);
+
+// The first half of a still: the scene's pattern accumulated into its grid until the scene's
+// point count (or options.points) lies inside the mesh. Honours options.cancel and .progress.
+struct AccumulatedVolume {
+  core::VolumeSnapshot snapshot;
+  core::AccumulatorStats stats;
+  double seconds = 0.0;
+  std::string warning;  // e.g. fewer points landed inside the mesh than asked for
+};
+AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& shape, const StillOptions& options);
+
+// The second half: draws accumulated volumes headless. It keeps one GL context and the uploaded
+// volume, so a sequence of frames pays for the context once and re-uploads only a new volume.
+class FrameRenderer {
+ public:
+  FrameRenderer();  // creates the headless context; throws core::Error when there is none
+  ~FrameRenderer();
+  FrameRenderer(const FrameRenderer&) = delete;
+  FrameRenderer& operator=(const FrameRenderer&) = delete;
+
+  // The volume (and the shape it was accumulated in) later render() calls draw.
+  void setVolume(const core::PackedVolume& volume, const SceneShape& shape);
+  // `scene`'s camera, tone and render settings (samples, mesh overlay, lighting).
+  core::ImageRGBA render(const core::Scene& scene, int width, int height, bool linearOutput);
+  const std::string& rendererName() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // The PNG text chunks that make a render reproducible: the preset and render statistics.
 core::TextChunks stillMetadata(const core::Scene& scene, const StillResult& result);

@@ -7,16 +7,14 @@
 #include "core/grid.h"
 #include "core/inside_mask.h"
 #include "core/mesh.h"
-#ifdef VOXFLAME_HAVE_OPENVDB
 #include "openvdb_peer.h"
-#endif
 
 namespace voxflame::bench {
 
 // The inside mask of the bunny at 256³ and the full dragon at 256³ and 512³ with the default
 // method, on every hardware thread. Loading is not timed and the mask cache is not used; each
-// figure is the best of a few runs, so a busy machine disturbs it less. Built with OpenVDB, each
-// case is followed by OpenVDB's time for the same mask ("peer":"openvdb").
+// figure is the best of a few runs, so a busy machine disturbs it less. Each case is followed by
+// OpenVDB's time for the same mask ("peer":"openvdb").
 void benchMask(const BenchOptions& options) {
   struct Case {
     const char* mesh;
@@ -38,7 +36,6 @@ void benchMask(const BenchOptions& options) {
                      {"triangles", mesh.triangles.size()},
                      {"grid", c.grid},
                      {"seconds", best}});
-#ifdef VOXFLAME_HAVE_OPENVDB
     double peerBest = 1e300;
     for (int run = 0; run < 2; ++run) peerBest = std::min(peerBest, openvdbMaskSeconds(mesh, grid));
     report(options, {{"bench", "mask"},
@@ -47,7 +44,6 @@ void benchMask(const BenchOptions& options) {
                      {"grid", c.grid},
                      {"seconds", peerBest},
                      {"peer", "openvdb"}});
-#endif
   }
 }
 

@@ -1,6 +1,6 @@
 // The OpenVDB side of `voxflame bench mask`: the time OpenVDB takes for the same job, a signed
 // level set of the mesh (mesh-to-level-set with its sign flood fill) turned into an interior
-// mask. Built only when libopenvdb-dev is installed; it is a yardstick, never a dependency.
+// mask: a yardstick for voxflame's own inside mask.
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/LevelSetUtil.h>
 #include <openvdb/tools/MeshToVolume.h>

@@ -10,6 +10,7 @@
 
 #include "error.h"
 #include "grid.h"
+#include "keyframes.h"
 
 namespace voxflame::core {
 
@@ -117,6 +118,13 @@ class ObjectReader {
     } catch (const Error& e) {
       fail(e.what(), key);
     }
+  }
+
+  bool boolean(const std::string& key, bool fallback) {
+    const json* value = find(key);
+    if (!value) return fallback;
+    if (!value->is_boolean()) fail("must be true or false", key);
+    return value->get<bool>();
   }
 
   glm::dvec3 vector(const std::string& key, glm::dvec3 fallback, double min, double max) {
@@ -251,7 +259,138 @@ PatternLayer readLayer(const json& value, const std::string& source, const std::
   return layer;
 }
 
+AnimationSettings readAnimation(ObjectReader& root) {
+  AnimationSettings animation;
+  const json* value = root.find("animation");
+  if (!value) return animation;
+  ObjectReader reader(*value, root.source(), "animation");
+  animation.duration = reader.number("duration", animation.duration, 0.0, kMaxAnimationSeconds);
+  animation.fps = reader.number("fps", animation.fps, 0.01, 1000.0);
+  animation.loop = reader.boolean("loop", animation.loop);
+  animation.time = reader.number("time", animation.time, 0.0, kMaxAnimationSeconds);
+  reader.finish();
+  return animation;
+}
+
+// The keyframe value as the track's kind: a number, an array of numbers or a colour string.
+Keyframe readKey(const json& value, const std::string& source, const std::string& path, KeyframeTrack& track,
+                 bool first) {
+  ObjectReader reader(value, source, path);
+  Keyframe key;
+  const json* time = reader.find("time");
+  if (!time) reader.fail("is missing", "time");
+  key.time = reader.checkNumber(*time, "time", 0.0, kMaxAnimationSeconds);
+  const json* v = reader.find("value");
+  if (!v) reader.fail("is missing", "value");
+  KeyKind kind = KeyKind::Number;
+  if (v->is_number()) {
+    key.values = {reader.checkNumber(*v, "value", -1e12, 1e12)};
+  } else if (v->is_string()) {
+    kind = KeyKind::Color;
+    try {
+      const glm::vec3 linear = parseHexColor(v->get<std::string>());
+      key.values = {linear.r, linear.g, linear.b};
+    } catch (const Error& e) {
+      reader.fail(e.what(), "value");
+    }
+  } else if (v->is_array() && !v->empty() && v->size() <= 64) {
+    kind = KeyKind::Array;
+    for (const json& element : *v) key.values.push_back(reader.checkNumber(element, "value", -1e12, 1e12));
+  } else {
+    reader.fail("must be a number, an array of 1 to 64 numbers or a colour string like \"#ff8800\"", "value");
+  }
+  if (first) {
+    track.kind = kind;
+  } else if (kind != track.kind || key.values.size() != track.keys.front().values.size()) {
+    reader.fail(
+        "must be of the same kind as the track's first key (a number, an array of as many numbers, or a colour)",
+        "value");
+  }
+  reader.finish();
+  return key;
+}
+
+std::vector<KeyframeTrack> readKeyframes(ObjectReader& root, const AnimationSettings& animation) {
+  std::vector<KeyframeTrack> tracks;
+  const json* value = root.find("keyframes");
+  if (!value) return tracks;
+  if (!value->is_array() || value->size() > kMaxKeyframeTracks)
+    root.fail("must be an array of at most " + std::to_string(kMaxKeyframeTracks) + " tracks", "keyframes");
+  for (std::size_t i = 0; i < value->size(); ++i) {
+    const std::string path = "keyframes[" + std::to_string(i) + "]";
+    ObjectReader reader((*value)[i], root.source(), path);
+    KeyframeTrack track;
+    track.path = reader.requiredString("path");
+    if (track.path.empty() || track.path[0] != '/')
+      reader.fail(
+          "is '" + track.path + "'; a JSON Pointer into the preset starts with '/', like \"/camera/azimuth_deg\"",
+          "path");
+    const std::string interpolation = reader.string("interpolation", "smooth");
+    if (interpolation == "linear") {
+      track.interpolation = Interpolation::Linear;
+    } else if (interpolation == "smooth") {
+      track.interpolation = Interpolation::Smooth;
+    } else {
+      reader.fail("is '" + interpolation + "'; expected 'linear' or 'smooth'", "interpolation");
+    }
+    const json* keys = reader.find("keys");
+    if (!keys) reader.fail("is missing", "keys");
+    if (!keys->is_array() || keys->empty() || keys->size() > kMaxKeyframes)
+      reader.fail("must be an array of 1 to " + std::to_string(kMaxKeyframes) + " keys", "keys");
+    for (std::size_t k = 0; k < keys->size(); ++k) {
+      const std::string keyPath = reader.keyPath("keys") + "[" + std::to_string(k) + "]";
+      Keyframe key = readKey((*keys)[k], root.source(), keyPath, track, k == 0);
+      if (k > 0 && key.time <= track.keys.back().time) {
+        std::ostringstream reason;
+        reason << "is " << key.time << ", not after the previous key's " << track.keys.back().time
+               << "; key times must increase";
+        throw Error(root.source() + ": '" + keyPath + ".time' " + reason.str());
+      }
+      if (animation.duration > 0.0 && key.time > animation.duration) {
+        std::ostringstream reason;
+        reason << "is " << key.time << ", after the animation's duration " << animation.duration;
+        throw Error(root.source() + ": '" + keyPath + ".time' " + reason.str());
+      }
+      track.keys.push_back(std::move(key));
+    }
+    for (const KeyframeTrack& other : tracks)
+      if (other.path == track.path) reader.fail("'" + track.path + "' already has a track", "path");
+    reader.finish();
+    tracks.push_back(std::move(track));
+  }
+  return tracks;
+}
+
+// One step per schema version: migrations[v - 1] turns a version-v document into version v + 1.
+json migrateV1ToV2(json document, const std::string& source) {
+  // Version 1 had no animation; its keys mean the same in version 2.
+  for (const char* key : {"animation", "keyframes"})
+    if (document.contains(key))
+      throw Error(source + ": '" + key + "' needs schema_version 2 or later (this preset says 1)");
+  document["schema_version"] = 2;
+  return document;
+}
+using Migration = json (*)(json, const std::string&);
+constexpr Migration kMigrations[] = {&migrateV1ToV2};
+static_assert(std::size(kMigrations) == kSchemaVersion - 1, "one migration per schema version step");
+
 }  // namespace
+
+json migratePreset(json document, std::string_view sourceName) {
+  const std::string source(sourceName);
+  if (!document.is_object()) throw Error(source + ": the preset must be a JSON object");
+  const auto found = document.find("schema_version");
+  if (found == document.end()) return document;  // written without one: read as the current version
+  if (!found->is_number_integer() || found->get<std::int64_t>() < 1)
+    throw Error(source + ": 'schema_version' must be a whole number from 1 to " + std::to_string(kSchemaVersion));
+  std::int64_t version = found->get<std::int64_t>();
+  if (version > kSchemaVersion)
+    throw Error(source + ": 'schema_version' is " + std::to_string(version) +
+                ", newer than this voxflame understands (" + std::to_string(kSchemaVersion) +
+                "); update voxflame to read it");
+  for (; version < kSchemaVersion; ++version) document = kMigrations[version - 1](std::move(document), source);
+  return document;
+}
 
 Scene sceneFromJson(std::string_view text, std::string_view sourceName) {
   const std::string source(sourceName);
@@ -260,14 +399,18 @@ Scene sceneFromJson(std::string_view text, std::string_view sourceName) {
     document = json::parse(text);
   } catch (const json::parse_error& e) {
     throw Error(source + ": not valid JSON (" + e.what() + ")");
+  } catch (const json::exception& e) {
+    // e.g. a number too large for a double ("1e999"): refused by the parser, not a parse_error.
+    throw Error(source + ": not valid JSON (" + e.what() + ")");
   }
+  return sceneFromDocument(migratePreset(std::move(document), source), source);
+}
+
+Scene sceneFromDocument(const json& document, std::string_view sourceName, bool checkKeyframes) {
+  const std::string source(sourceName);
   ObjectReader root(document, source, "");
   Scene scene;
-  const auto version = root.integer("schema_version", kSchemaVersion, 1, 1'000'000);
-  if (version > kSchemaVersion)
-    root.fail("is " + std::to_string(version) + ", newer than this voxflame understands (" +
-                  std::to_string(kSchemaVersion) + ")",
-              "schema_version");
+  root.integer("schema_version", kSchemaVersion, kSchemaVersion, kSchemaVersion);  // migrated already
   scene.name = root.string("name", scene.name);
 
   const json* mesh = root.find("mesh");
@@ -362,7 +505,10 @@ Scene sceneFromJson(std::string_view text, std::string_view sourceName) {
   }
   scene.seed = static_cast<std::uint64_t>(root.integer("seed", 1, 0, std::int64_t{1} << 53));
   scene.points = static_cast<std::uint64_t>(root.integer("points", 20'000'000, 1'000, std::int64_t{1} << 40));
+  scene.animation = readAnimation(root);
+  scene.keyframes = readKeyframes(root, scene.animation);
   root.finish();
+  if (checkKeyframes) checkKeyframeTracks(scene, source);
   return scene;
 }
 
@@ -374,11 +520,13 @@ Scene loadScene(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   Scene scene = sceneFromJson(text.str(), path.string());
-  scene.baseDirectory = path.parent_path();
+  if (!scene.embedded) scene.baseDirectory = path.parent_path();  // a builtin: mesh lives in the binary
   return scene;
 }
 
-std::string sceneToJson(const Scene& scene) {
+namespace {
+
+json buildDocument(const Scene& scene, bool complete, bool withAnimation) {
   json root;
   root["schema_version"] = kSchemaVersion;
   root["name"] = scene.name;
@@ -399,9 +547,9 @@ std::string sceneToJson(const Scene& scene) {
     else
       color["palette"] = layer.color.palette;
     const ColorSettings defaults;
-    if (layer.color.axis != defaults.axis) color["axis"] = vector(layer.color.axis);
-    if (layer.color.period != defaults.period) color["period"] = layer.color.period;
-    if (layer.color.scale != defaults.scale) color["scale"] = layer.color.scale;
+    if (complete || layer.color.axis != defaults.axis) color["axis"] = vector(layer.color.axis);
+    if (complete || layer.color.period != defaults.period) color["period"] = layer.color.period;
+    if (complete || layer.color.scale != defaults.scale) color["scale"] = layer.color.scale;
     json entry = {{"attractor", layer.attractor},
                   {"params", params},
                   {"integrator", std::string(toString(layer.integrator))},
@@ -410,7 +558,8 @@ std::string sceneToJson(const Scene& scene) {
                   {"color", color}};
     const LayerTransform& t = layer.transform;
     const LayerTransform none;
-    if (t.scale != none.scale || t.rotationDeg != none.rotationDeg || t.offset != none.offset || t.lockFit) {
+    if (complete || t.scale != none.scale || t.rotationDeg != none.rotationDeg || t.offset != none.offset ||
+        t.lockFit) {
       json transform = {{"scale", t.scale}, {"rotation_deg", vector(t.rotationDeg)}, {"offset", vector(t.offset)}};
       if (t.lockFit) transform["locked_fit"] = {{"center", vector(t.lockedCenter)}, {"scale", t.lockedScale}};
       entry["transform"] = transform;
@@ -452,7 +601,35 @@ std::string sceneToJson(const Scene& scene) {
                     {"light_strength", r.lightStrength}};
   root["seed"] = scene.seed;
   root["points"] = scene.points;
-  return root.dump(2) + "\n";
+  if (!withAnimation) return root;
+  const AnimationSettings& a = scene.animation;
+  const AnimationSettings still;
+  if (complete || !scene.keyframes.empty() || a.duration != still.duration || a.fps != still.fps ||
+      a.loop != still.loop || a.time != still.time)
+    root["animation"] = {{"duration", a.duration}, {"fps", a.fps}, {"loop", a.loop}, {"time", a.time}};
+  if (!scene.keyframes.empty()) {
+    json tracks = json::array();
+    for (const KeyframeTrack& track : scene.keyframes) {
+      json keys = json::array();
+      for (const Keyframe& key : track.keys)
+        keys.push_back({{"time", key.time}, {"value", keyValueToJson(track, key)}});
+      tracks.push_back({{"path", track.path},
+                        {"interpolation", track.interpolation == Interpolation::Linear ? "linear" : "smooth"},
+                        {"keys", keys}});
+    }
+    root["keyframes"] = tracks;
+  }
+  return root;
+}
+
+}  // namespace
+
+json sceneToDocument(const Scene& scene, bool withAnimation) {
+  return buildDocument(scene, true, withAnimation);
+}
+
+std::string sceneToJson(const Scene& scene) {
+  return buildDocument(scene, false, true).dump(2) + "\n";
 }
 
 }  // namespace voxflame::core

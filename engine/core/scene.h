@@ -1,6 +1,12 @@
 // The Scene is the one document: everything a user can set, and exactly what a JSON preset
 // holds. Loading validates every key against its allowed range and refuses unknown keys, naming
 // the file, the key path and the reason, so a typo never silently does nothing.
+//
+// Presets carry a `schema_version`. Older documents are brought up to date by a chain of
+// migrations (one function per version step, JSON to JSON) before they are read, so a preset
+// written by any earlier voxflame keeps loading; a newer version than this build knows is refused.
+// presets/SCHEMA.md documents every key. Version 2 added animation: the `animation` block and
+// keyframe tracks (keyframes.h evaluates them).
 #pragma once
 
 #include <cstdint>
@@ -17,7 +23,7 @@
 
 namespace voxflame::core {
 
-inline constexpr int kSchemaVersion = 1;
+inline constexpr int kSchemaVersion = 2;
 // A mesh path starting with this names a mesh compiled into the binary ("builtin:meshes/bunny.obj").
 inline constexpr const char* kBuiltinMeshPrefix = "builtin:";
 
@@ -112,6 +118,37 @@ struct RenderSettingsDoc {
   double lightStrength = 0.8;  // how much shadowed emission is dimmed
 };
 
+enum class Interpolation {
+  Linear,
+  Smooth,  // Catmull-Rom: passes through every key with a continuous first derivative
+};
+
+// What a keyframe track animates: one number, an array of numbers (e.g. "/camera/target"), or a
+// colour (interpolated in OKLab).
+enum class KeyKind { Number, Array, Color };
+
+struct Keyframe {
+  double time = 0.0;           // seconds
+  std::vector<double> values;  // Number: one value; Array: one per element; Color: linear RGB
+};
+
+// A track addresses one value of the preset document by JSON Pointer (RFC 6901), e.g.
+// "/layers/0/params/a", "/camera/azimuth_deg", "/layers/0/color/gradient/2"; keys are sorted by
+// strictly increasing time.
+struct KeyframeTrack {
+  std::string path;
+  Interpolation interpolation = Interpolation::Smooth;
+  KeyKind kind = KeyKind::Number;
+  std::vector<Keyframe> keys;
+};
+
+struct AnimationSettings {
+  double duration = 0.0;  // seconds; 0: until the last key
+  double fps = 30.0;
+  bool loop = false;  // time wraps at the duration and smooth tracks join their ends without a kink
+  double time = 0.0;  // the moment a still (`voxflame render`) shows
+};
+
 struct Scene {
   std::string name = "untitled";
   std::string meshPath;                 // as written in the preset
@@ -124,13 +161,28 @@ struct Scene {
   RenderSettingsDoc render;
   std::uint64_t seed = 1;
   std::uint64_t points = 20'000'000;  // points accumulated for a still
+  AnimationSettings animation;
+  std::vector<KeyframeTrack> keyframes;  // applied by sceneAtTime (keyframes.h)
 
   std::filesystem::path resolvedMeshPath() const;
 };
 
-// Parses a preset. `sourceName` is what messages call it (a file path). Throws core::Error.
+// Parses a preset (migrating older schema versions first). `sourceName` is what messages call
+// it (a file path). Throws core::Error.
 Scene sceneFromJson(std::string_view text, std::string_view sourceName);
 Scene loadScene(const std::filesystem::path& path);
 std::string sceneToJson(const Scene& scene);  // pretty-printed, loads back to an equal Scene
+
+// Brings a preset document of any supported schema version up to kSchemaVersion, one version
+// step at a time; a document without `schema_version` is taken as current. Throws core::Error
+// (naming `sourceName`) for a version newer than this build or not a whole number.
+nlohmann::json migratePreset(nlohmann::json document, std::string_view sourceName);
+
+// The preset as a JSON document with every key present, defaults included: the document keyframe
+// paths address. `withAnimation` false leaves out the animation block and the keyframes.
+nlohmann::json sceneToDocument(const Scene& scene, bool withAnimation = true);
+// Reads a (migrated) document. `checkKeyframes` false skips the keyframe checks that evaluate
+// tracks (for documents keyframes.cpp has just produced from a checked scene).
+Scene sceneFromDocument(const nlohmann::json& document, std::string_view sourceName, bool checkKeyframes = true);
 
 }  // namespace voxflame::core
