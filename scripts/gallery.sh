@@ -1,0 +1,90 @@
+#!/usr/bin/env bash
+# Renders every shipped preset (presets/*.json) to presets/gallery/<preset>.png and rewrites the
+# README's gallery, the part between <!-- gallery:start --> and <!-- gallery:end -->, as a table
+# of those images with each preset's name, attractors and mesh.
+#
+#   scripts/gallery.sh [VOXFLAME] [--table-only | PRESET.json...]
+#
+# VOXFLAME is the built binary (default: build/app/voxflame). Naming presets renders only those,
+# --table-only renders none; the table always lists them all. GALLERY_WIDTH, GALLERY_HEIGHT and GALLERY_SAMPLES override the
+# image size (640×400) and the jittered samples per pixel (4). The points are each preset's own.
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+voxflame="$root/build/app/voxflame"
+if [[ $# -gt 0 && "$1" != *.json && "$1" != --table-only ]]; then
+  voxflame="$(cd "$(dirname "$1")" && pwd)/$(basename "$1")"
+  shift
+fi
+[[ -x "$voxflame" ]] || { echo "gallery.sh: no voxflame binary at $voxflame (build first, or pass its path)" >&2; exit 1; }
+width="${GALLERY_WIDTH:-640}"
+height="${GALLERY_HEIGHT:-400}"
+samples="${GALLERY_SAMPLES:-4}"
+readme="$root/README.md"
+gallery="$root/presets/gallery"
+mkdir -p "$gallery"
+grep -q '^<!-- gallery:start -->$' "$readme" && grep -q '^<!-- gallery:end -->$' "$readme" ||
+  { echo "gallery.sh: $readme lacks the <!-- gallery:start --> / <!-- gallery:end --> lines" >&2; exit 1; }
+
+# The default preset first, then the others by file name.
+presets=("$root/presets/default.json")
+for file in "$root"/presets/*.json; do
+  [[ "$file" == "$root/presets/default.json" ]] || presets+=("$file")
+done
+
+to_render=("$@")
+[[ ${#to_render[@]} -gt 0 ]] || to_render=("${presets[@]}")
+[[ "${to_render[0]}" != --table-only ]] || to_render=()
+for file in "${to_render[@]+"${to_render[@]}"}"; do
+  stem="$(basename "$file" .json)"
+  echo "rendering $stem"
+  "$voxflame" render "$file" -o "$gallery/$stem.png" --width "$width" --height "$height" \
+    --samples "$samples" --bit-depth 8
+done
+
+# Attractor ids to their catalogue names, from `voxflame list --json` (one object per attractor,
+# its "id" and "name" at the first level of indentation).
+declare -A attractor_names
+while IFS=$'\t' read -r id name; do
+  attractor_names["$id"]="$name"
+done < <("$voxflame" list --json | awk '
+  /^    "id": "/ { id = $0; sub(/^    "id": "/, "", id); sub(/",?$/, "", id) }
+  /^    "name": "/ { name = $0; sub(/^    "name": "/, "", name); sub(/",?$/, "", name); print id "\t" name }')
+
+# The first "name" in a preset is its title (layers have no name); the attractors are every
+# layer's "attractor"; the mesh is the file name of "mesh.path" without its extension.
+json_strings() { grep -o "\"$1\": *\"[^\"]*\"" "$2" | sed 's/^"[^"]*": *"//; s/"$//'; }
+cell() {
+  local file="$1" stem title mesh attractors="" id
+  stem="$(basename "$file" .json)"
+  title="$(json_strings name "$file" | head -n 1)"
+  mesh="$(json_strings path "$file" | head -n 1)"
+  mesh="$(basename "${mesh#builtin:}")"
+  mesh="${mesh%.*}"
+  while read -r id; do
+    attractors+="${attractors:+ + }${attractor_names[$id]:-$id}"
+  done < <(json_strings attractor "$file")
+  printf '<td align="center"><a href="presets/%s.json"><img src="presets/gallery/%s.png" width="280" alt="%s"></a><br><b>%s</b><br><sub>%s · %s</sub></td>' \
+    "$stem" "$stem" "$title" "$title" "$attractors" "$mesh"
+}
+
+table="$(mktemp)"
+trap 'rm -f "$table"' EXIT
+{
+  echo '<table>'
+  column=0
+  for file in "${presets[@]}"; do
+    [[ $column -eq 0 ]] && printf '<tr>'
+    cell "$file"
+    column=$(((column + 1) % 3))
+    [[ $column -eq 0 ]] && printf '</tr>\n'
+  done
+  [[ $column -eq 0 ]] || printf '</tr>\n'
+  echo '</table>'
+} >"$table"
+
+awk -v table="$table" '
+  /^<!-- gallery:start -->$/ { print; while ((getline line < table) > 0) print line; skipping = 1; next }
+  /^<!-- gallery:end -->$/ { skipping = 0 }
+  !skipping { print }' "$readme" >"$readme.new"
+mv "$readme.new" "$readme"
+echo "updated the gallery in $readme (${#presets[@]} presets)"
