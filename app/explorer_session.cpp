@@ -34,6 +34,8 @@ std::string patternKey(const core::Scene& scene) {
   pattern.camera = {};
   pattern.render = {};
   pattern.points = 0;
+  pattern.animation = {};  // the layers already hold the values at the current time
+  pattern.keyframes.clear();
   return core::sceneToJson(pattern) + "|" + scene.baseDirectory.string() + (scene.embedded ? "|embedded" : "");
 }
 

@@ -14,6 +14,7 @@
 #include "core/color.h"
 #include "core/error.h"
 #include "core/grid.h"
+#include "core/keyframes.h"
 #include "pipeline.h"
 
 namespace voxflame::app {
@@ -172,7 +173,10 @@ void handleHistory(ExplorerState& state) {
   const bool z = ImGui::IsKeyPressed('Z', false), y = ImGui::IsKeyPressed('Y', false);
   if (!io.WantTextInput && io.KeyCtrl && (z || y)) {
     const bool redo = io.KeyShift || y;
-    if (auto scene = redo ? state.history->redo() : state.history->undo()) state.scene = *scene;
+    if (auto scene = redo ? state.history->redo() : state.history->undo()) {
+      state.scene = *scene;
+      state.keyBase = *scene;
+    }
     return;
   }
   const bool mouseHeld = ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right) ||
@@ -631,16 +635,152 @@ void noticeWindow(ExplorerState& state, float scale) {
   ImGui::End();
 }
 
+// ---------------------------------------------------------------------------------------------
+// Timeline: the scene shown is the animation at the current time; "Key" records what the user
+// changed there as keyframes; scrubbing and playing re-evaluate the animation.
+
+double timelineLength(const core::Scene& scene) {
+  const double duration = core::animationDuration(scene);
+  return duration > 0.0 ? duration : 5.0;  // room to place the first keys
+}
+
+void showTime(ExplorerState& state, double seconds) {
+  try {
+    state.scene = core::sceneAtTime(state.scene, seconds);
+    state.keyBase = state.scene;
+  } catch (const core::Error& e) {
+    state.notice = e.what();
+    state.playing = false;
+  }
+}
+
+std::vector<double> keyTimes(const core::Scene& scene) {
+  std::vector<double> times;
+  for (const core::KeyframeTrack& track : scene.keyframes)
+    for (const core::Keyframe& key : track.keys) times.push_back(key.time);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }),
+              times.end());
+  return times;
+}
+
+void advancePlayback(ExplorerState& state) {
+  if (!state.playing) return;
+  const double length = timelineLength(state.scene);
+  double next = state.scene.animation.time + static_cast<double>(ImGui::GetIO().DeltaTime);
+  if (next > length) {
+    if (core::animationLoops(state.scene) || state.playLooping)
+      next = std::fmod(next, length);
+    else
+      next = length, state.playing = false;
+  }
+  showTime(state, next);
+}
+
+void timelineWindow(ExplorerState& state, float scale) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float statusHeight = ImGui::GetFrameHeightWithSpacing() + 6 * scale;
+  const float left = 366 * scale, right = 336 * scale;
+  const float height = 3 * ImGui::GetFrameHeightWithSpacing() + ImGui::GetTextLineHeightWithSpacing() + 14 * scale;
+  ImGui::SetNextWindowPos(ImVec2(left, io.DisplaySize.y - statusHeight - height - 4 * scale), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(std::max(300.0f, io.DisplaySize.x - left - right), height), ImGuiCond_FirstUseEver);
+  ImGui::Begin("Timeline", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus);
+  core::Scene& scene = state.scene;
+  const double length = timelineLength(scene);
+  if (button(state, "timeline/", state.playing ? "Pause" : "Play")) state.playing = !state.playing;
+  ImGui::SameLine();
+  const std::vector<double> times = keyTimes(scene);
+  const double now = scene.animation.time;
+  if (button(state, "timeline/", "|<")) {
+    double target = 0.0;
+    for (double t : times)
+      if (t < now - 1e-6) target = t;
+    showTime(state, target);
+  }
+  ImGui::SameLine();
+  if (button(state, "timeline/", ">|")) {
+    double target = length;
+    for (auto t = times.rbegin(); t != times.rend(); ++t)
+      if (*t > now + 1e-6) target = *t;
+    showTime(state, target);
+  }
+  ImGui::SameLine();
+  if (button(state, "timeline/", "Key")) {
+    try {
+      // What changed since the time was last shown becomes keys; animated values always get one.
+      core::Scene animated = state.keyBase;
+      animated.keyframes = scene.keyframes;
+      animated.animation = scene.animation;
+      scene = core::withKeyframeAt(animated, scene, now);
+      state.keyBase = scene;
+      char text[64];
+      std::snprintf(text, sizeof text, "keyed at %.2f s", now);
+      state.timelineMessage = text;
+    } catch (const core::Error& e) {
+      state.notice = e.what();
+    }
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("keyframe every value you changed here (and every animated one)");
+  ImGui::SameLine();
+  const bool keyHere = std::any_of(times.begin(), times.end(), [&](double t) { return std::abs(t - now) < 1e-6; });
+  ImGui::BeginDisabled(!keyHere);
+  if (button(state, "timeline/", "Delete key")) {
+    for (core::KeyframeTrack& track : scene.keyframes)
+      std::erase_if(track.keys, [&](const core::Keyframe& key) { return std::abs(key.time - now) < 1e-6; });
+    std::erase_if(scene.keyframes, [](const core::KeyframeTrack& track) { return track.keys.empty(); });
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90 * scale);
+  double duration = scene.animation.duration;
+  const double minDuration = 0.0, maxDuration = 600.0;
+  if (ImGui::DragScalar("duration", ImGuiDataType_Double, &duration, 0.05f, &minDuration, &maxDuration,
+                        duration > 0.0 ? "%.2f s" : "auto"))
+    scene.animation.duration = duration;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(70 * scale);
+  double fps = scene.animation.fps;
+  const double minFps = 1.0, maxFps = 240.0;
+  if (ImGui::DragScalar("fps", ImGuiDataType_Double, &fps, 0.2f, &minFps, &maxFps, "%.0f")) scene.animation.fps = fps;
+  ImGui::SameLine();
+  ImGui::Checkbox("loop", &scene.animation.loop);
+
+  // The scrubber, with a tick for every key time.
+  double time = now;
+  const double zero = 0.0;
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::SliderScalar("##time", ImGuiDataType_Double, &time, &zero, &length, "%.2f s")) {
+    state.playing = false;
+    showTime(state, time);
+  }
+  probe(state, "timeline/time");
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  const float grab = ImGui::GetStyle().GrabMinSize;
+  for (double t : times) {
+    const float x = min.x + grab * 0.5f + static_cast<float>(t / length) * (max.x - min.x - grab);
+    ImGui::GetWindowDrawList()->AddTriangleFilled(ImVec2(x - 4 * scale, max.y), ImVec2(x + 4 * scale, max.y),
+                                                  ImVec2(x, max.y - 6 * scale), IM_COL32(255, 190, 90, 255));
+  }
+  if (scene.keyframes.empty())
+    ImGui::TextColored(kDimColor, "no keyframes: move the time, change something, press Key");
+  else
+    ImGui::TextColored(kDimColor, "%zu animated values, %zu key times  %s", scene.keyframes.size(), times.size(),
+                       state.timelineMessage.c_str());
+  ImGui::End();
+}
+
 }  // namespace
 
 void resetExplorerState(ExplorerState& state, const core::Scene& scene) {
   state.scene = scene;
+  state.keyBase = scene;
   state.initialCamera = scene.camera;
   state.history.emplace(scene);
   state.visited.clear();
   state.visitedIndex = 0;
   state.searchMessage.clear();
   state.analysedKey.clear();
+  state.playing = false;
 }
 
 bool openFile(ExplorerState& state, const std::filesystem::path& path) {
@@ -676,8 +816,10 @@ void explorerUiFrame(ExplorerState& state) {
   handleHistory(state);
   collectSearch(state);
   updateAnalysis(state);
+  advancePlayback(state);
   patternWindow(state, scale);
   viewWindow(state, scale);
+  timelineWindow(state, scale);
   statusBar(state, scale);
   noticeWindow(state, scale);
 }

@@ -84,6 +84,12 @@ struct ExplorerState {
   std::string lyapunovText = "Lyapunov: …";
 
   std::optional<SceneHistory> history;  // undo/redo over the whole scene
+
+  // Timeline: the shown scene is the animation at scene.animation.time.
+  bool playing = false;
+  core::Scene keyBase;      // the scene when the time was last shown: "Key" records what differs from it
+  bool playLooping = true;  // the live preview starts over at the end, even when the preset does not loop
+  std::string timelineMessage;
 };
 
 // Sets up the state for a scene just opened (history, camera reset point, search history).

@@ -46,7 +46,7 @@ class ExplorerUi : public ::testing::Test {
       ImGui::Render();
     }
   }
-  const app::UiProbe::Rect& item(const std::string& name) {
+  app::UiProbe::Rect item(const std::string& name) {
     const auto found = probe.items.find(name);
     if (found == probe.items.end()) throw std::runtime_error("no widget named " + name + " was drawn");
     return found->second;
@@ -283,6 +283,73 @@ TEST_F(ExplorerUi, ABadMeshIsReportedAndTheOldShapeStays) {
   session.postIfPatternChanged(state.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   EXPECT_TRUE(session.status().error.empty()) << session.status().error;
+}
+
+}  // namespace
+
+namespace {
+
+TEST_F(ExplorerUi, TimelineKeysScrubsAndPlaysAnAnimation) {
+  // Key the camera at 0 s and, turned, at 2 s; the middle of the timeline is halfway.
+  state.scene.animation.duration = 2.0;
+  state.scene.camera.azimuthDeg = 0.0;
+  frame();
+  click("timeline/Key");
+  ASSERT_EQ(state.scene.keyframes.size(), 1u);
+  EXPECT_EQ(state.scene.keyframes[0].path, "/camera/azimuth_deg");
+  const auto& scrubber = item("timeline/time");
+  drag(scrubber.minX + 2, scrubber.centerY(), scrubber.maxX - scrubber.minX, 0);
+  EXPECT_NEAR(state.scene.animation.time, 2.0, 1e-9);
+  state.scene.camera.azimuthDeg = 90.0;
+  frame();
+  click("timeline/Key");
+  ASSERT_EQ(state.scene.keyframes[0].keys.size(), 2u);
+
+  // Scrubbing to the middle shows the interpolated value; the camera is not the pattern.
+  const std::string pattern = app::patternKey(state.scene);
+  drag(scrubber.minX + 2, scrubber.centerY(), 0.5f * (scrubber.maxX - scrubber.minX) - 2, 0);
+  EXPECT_GT(state.scene.animation.time, 0.5);
+  EXPECT_LT(state.scene.animation.time, 1.5);
+  EXPECT_GT(state.scene.camera.azimuthDeg, 10.0);
+  EXPECT_LT(state.scene.camera.azimuthDeg, 80.0);
+  EXPECT_EQ(app::patternKey(state.scene), pattern);
+
+  // Play moves time forward frame by frame and the camera with it.
+  const double time = state.scene.animation.time, azimuth = state.scene.camera.azimuthDeg;
+  click("timeline/Play");
+  frame(10);
+  EXPECT_GT(state.scene.animation.time, time);
+  EXPECT_GT(state.scene.camera.azimuthDeg, azimuth);
+  click("timeline/Pause");
+  EXPECT_FALSE(state.playing);
+}
+
+TEST_F(ExplorerUi, KeyingAParameterAnimatesThePattern) {
+  state.scene.animation.duration = 1.0;
+  const double start = state.scene.layers[0].params[0];
+  state.scene.animation.time = 1.0;
+  state.scene.layers[0].params[0] = start * 1.05;
+  frame();
+  click("timeline/Key");
+  ASSERT_EQ(state.scene.keyframes.size(), 1u);
+  EXPECT_EQ(state.scene.keyframes[0].path, "/layers/0/params/a");
+  const std::string patternAtEnd = app::patternKey(state.scene);
+  const auto& scrubber = item("timeline/time");
+  drag(scrubber.minX + 2, scrubber.centerY(), -40, 0);
+  state.scene.layers[0].params[0] = start;
+  frame();
+  click("timeline/Key");
+  ASSERT_EQ(state.scene.keyframes[0].keys.size(), 2u);
+  drag(scrubber.minX + 2, scrubber.centerY(), 0.5f * (scrubber.maxX - scrubber.minX) - 2, 0);
+  const double middle = state.scene.layers[0].params[0];
+  EXPECT_GT(middle, start);
+  EXPECT_LT(middle, start * 1.05);
+  EXPECT_NE(app::patternKey(state.scene), patternAtEnd) << "an animated parameter restarts the accumulation";
+  // Deleting the key at the current time needs the time on a key: go to the next one.
+  click("timeline/>|");
+  EXPECT_DOUBLE_EQ(state.scene.animation.time, 1.0);
+  click("timeline/Delete key");
+  EXPECT_EQ(state.scene.keyframes[0].keys.size(), 1u);
 }
 
 }  // namespace
