@@ -17,6 +17,7 @@
 #include "core/scene_io.h"
 #include "explorer.h"
 #include "pipeline.h"
+#include "progress_pipe.h"
 #include "version.h"
 
 namespace voxflame::app {
@@ -31,8 +32,10 @@ usage:
   voxflame render [PRESET.json|IMAGE.png] -o OUT.png|OUT.exr [--width W] [--height H]
                   [--samples S] [--points N] [--grid R] [--bit-depth 8|16]
                   [--camera-azimuth DEG] [--camera-elevation DEG] [--threads T]
+                  [--progress-fd N]
       Render a still headless (no display needed). A PNG carries its preset: rendering
-      it again reproduces it. EXR is linear 32-bit float.
+      it again reproduces it. EXR is linear 32-bit float. --progress-fd writes lines
+      "progress STAGE FRACTION" to file descriptor N for a parent process.
   voxflame list [--json]
       The attractor catalogue: ids, kinds, parameters with defaults.
   voxflame info [PRESET.json] [--attractor ID] [--set NAME] [--param NAME=VALUE]...
@@ -100,6 +103,8 @@ int renderCommand(const std::vector<std::string>& args) {
   const double elevationDeg = arguments.real("--camera-elevation", 0.0, -360.0, 360.0);
   const int bitDepth = static_cast<int>(arguments.integer("--bit-depth", 8, 8, 16));
   if (bitDepth != 8 && bitDepth != 16) throw UsageError("--bit-depth must be 8 or 16");
+  const int progressFd = static_cast<int>(arguments.integer("--progress-fd", -1, 0, 1 << 20));
+  checkProgressFd(progressFd);
   arguments.finish(1);
   if (!output) throw UsageError("render needs an output file: -o OUT.png or -o OUT.exr");
   const std::string extension = std::filesystem::path(*output).extension().string();
@@ -142,6 +147,11 @@ int renderCommand(const std::vector<std::string>& args) {
                  stats.pointsPerSecond * 1e-6, formatDuration(left).c_str());
     std::fflush(stderr);
   };
+  ProgressPipe progressPipe(progressFd, gInterrupted);
+  if (progressPipe.active())
+    options.stage = [&progressPipe](StillStage stage, double fraction) {
+      progressPipe.report(toString(stage), fraction);
+    };
   StillResult result;
   try {
     result = renderStill(scene, options);
@@ -152,6 +162,11 @@ int renderCommand(const std::vector<std::string>& args) {
   }
   if (interactive) std::fprintf(stderr, "\n");
   if (!result.warning.empty()) std::cerr << "voxflame: warning: " << result.warning << "\n";
+  progressPipe.report("writing", 0.0);
+  if (gInterrupted) {
+    std::cerr << "voxflame: interrupted; nothing was written\n";
+    return 130;
+  }
   if (options.linearOutput)
     core::writeExr(*output, result.image, stillMetadata(scene, result));
   else
@@ -160,7 +175,8 @@ int renderCommand(const std::vector<std::string>& args) {
               output->c_str(), options.width, options.height, scene.render.samples,
               static_cast<unsigned long long>(result.stats.points), result.accumulateSeconds, result.renderSeconds,
               result.renderer.c_str());
-  return gInterrupted ? 130 : 0;
+  // The image is complete on disk: an interruption that came too late to stop it is not a failure.
+  return 0;
 }
 
 namespace {

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <sstream>
@@ -30,6 +31,18 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+const char* toString(StillStage stage) {
+  switch (stage) {
+    case StillStage::Loading:
+      return "loading";
+    case StillStage::Accumulating:
+      return "accumulating";
+    case StillStage::Rendering:
+      return "rendering";
+  }
+  return "loading";
+}
+
 void checkGridFitsInMemory(const core::GridGeometry& grid) {
   // Per voxel: mask 1 B, density and colour sums 16 B, a snapshot 8 B, its upload copy 8 B.
   constexpr double kBytesPerVoxel = 1.0 + 16.0 + 8.0 + 8.0;
@@ -49,9 +62,16 @@ SceneShape buildSceneShape(const core::Scene& scene) {
 
 StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   StillResult result;
+  if (options.stage) options.stage(StillStage::Loading, 0.0);
   const SceneShape shape = buildSceneShape(scene);
   const auto& mask = shape.mask;
   const std::uint64_t target = options.points ? options.points : scene.points;
+  const auto reportAccumulation = [&](const core::AccumulatorStats& stats) {
+    if (options.progress) options.progress(stats, target);
+    if (options.stage)
+      options.stage(StillStage::Accumulating,
+                    target ? static_cast<double>(std::min(stats.points, target)) / static_cast<double>(target) : 1.0);
+  };
 
   const auto accumulateStart = std::chrono::steady_clock::now();
   core::PackedVolume volume;
@@ -65,7 +85,7 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
     while (!accumulator.waitUntilDone(0.25)) {
       if (options.cancel && options.cancel->load()) throw RenderCancelled();
       const core::AccumulatorStats stats = accumulator.stats();
-      if (options.progress) options.progress(stats, target);
+      reportAccumulation(stats);
       if (stats.iterations > iterationLimit) {
         result.warning = "only " + std::to_string(stats.points) + " of " + std::to_string(target) +
                          " points landed inside the mesh; the pattern barely overlaps it";
@@ -73,7 +93,7 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
       }
     }
     result.stats = accumulator.stats();
-    if (options.progress) options.progress(result.stats, target);
+    reportAccumulation(result.stats);
     if (!result.stats.problem.empty()) throw core::Error(result.stats.problem);
     core::VolumeSnapshot snapshot;
     accumulator.snapshot(snapshot);
@@ -100,7 +120,16 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
                                       static_cast<double>(options.width) / static_cast<double>(options.height));
   settings.tone = scene.tone;
   settings.render = scene.render;
-  result.image = gl::renderToImage(renderer, settings, options.width, options.height, options.linearOutput);
+  // Between sub-samples a cancelled render stops and a progress bar moves.
+  std::function<void(double)> renderProgress;
+  if (options.cancel || options.stage)
+    renderProgress = [&options](double fraction) {
+      if (options.cancel && options.cancel->load()) throw RenderCancelled();
+      if (options.stage) options.stage(StillStage::Rendering, fraction);
+    };
+  if (options.stage) options.stage(StillStage::Rendering, 0.0);
+  result.image = gl::renderToImage(renderer, settings, options.width, options.height, options.linearOutput,
+                                   gl::kDefaultMaxTile, renderProgress);
   result.renderSeconds = secondsSince(renderStart);
   return result;
 }

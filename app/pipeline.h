@@ -30,6 +30,11 @@ SceneShape buildSceneShape(const core::Scene& scene);
 // Refuses (core::Error saying how much it needs) a grid whose buffers would not fit in memory.
 void checkGridFitsInMemory(const core::GridGeometry& grid);
 
+// What a still is doing, for progress reports: loading the mesh and its mask, accumulating
+// points, ray-marching the image.
+enum class StillStage { Loading, Accumulating, Rendering };
+const char* toString(StillStage stage);  // "loading", "accumulating", "rendering"
+
 struct StillOptions {
   int width = 1280;
   int height = 720;
@@ -38,6 +43,9 @@ struct StillOptions {
   bool linearOutput = false;                  // linear light (for EXR) instead of display-encoded
   const std::atomic<bool>* cancel = nullptr;  // when set and raised, renderStill throws RenderCancelled
   std::function<void(const core::AccumulatorStats&, std::uint64_t target)> progress;  // may be empty
+  // Every stage with its fraction done in [0, 1]: Loading once at 0, Accumulating about every
+  // quarter second, Rendering after each tile's sub-sample. May be empty.
+  std::function<void(StillStage, double fraction)> stage;
 };
 
 struct StillResult {

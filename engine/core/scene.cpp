@@ -374,7 +374,8 @@ Scene loadScene(const std::filesystem::path& path) {
   std::ostringstream text;
   text << in.rdbuf();
   Scene scene = sceneFromJson(text.str(), path.string());
-  scene.baseDirectory = path.parent_path();
+  // A builtin: mesh lives inside the binary, wherever the preset file is.
+  if (!scene.embedded) scene.baseDirectory = path.parent_path();
   return scene;
 }
 
