@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/xdg_paths.h"
+#include "json_guard.h"
 
 namespace voxflame::app {
 
@@ -35,30 +36,6 @@ std::filesystem::path normalised(const std::filesystem::path& path) {
   std::error_code ec;
   const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
   return (ec ? path : absolute).lexically_normal();
-}
-
-// How deeply arrays and objects nest, outside strings; stops counting past `limit`.
-int nestingDepth(const std::string& text, int limit) {
-  int depth = 0, deepest = 0;
-  bool inString = false, escaped = false;
-  for (const char c : text) {
-    if (inString) {
-      if (escaped)
-        escaped = false;
-      else if (c == '\\')
-        escaped = true;
-      else if (c == '"')
-        inString = false;
-    } else if (c == '"') {
-      inString = true;
-    } else if (c == '[' || c == '{') {
-      deepest = std::max(deepest, ++depth);
-      if (deepest > limit) return deepest;
-    } else if (c == ']' || c == '}') {
-      --depth;
-    }
-  }
-  return deepest;
 }
 
 // Reads keys leniently: a value of the wrong type or out of range keeps the default and is
@@ -269,7 +246,7 @@ SettingsLoad loadSettings(const std::filesystem::path& file) {
       return result;
     }
     const std::string content = text.str();
-    if (nestingDepth(content, kMaxNesting) > kMaxNesting) {
+    if (jsonNestingDepth(content, kMaxNesting) > kMaxNesting) {
       result.message = name + " nests deeper than any settings file; using defaults" + keepAside(file);
       return result;
     }
