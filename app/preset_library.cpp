@@ -97,7 +97,7 @@ class BoxDownscaler {
     for (std::size_t i = 0; i < counts_.size(); ++i)
       for (std::size_t c = 0; c < 4; ++c)
         thumbnail.rgba[4 * i + c] =
-            counts_[i] ? static_cast<std::uint8_t>((sums_[4 * i + c] + counts_[i] / 2) / counts_[i]) : 0;
+            static_cast<std::uint8_t>(counts_[i] ? (sums_[4 * i + c] + counts_[i] / 2) / counts_[i] : 0);
     return thumbnail;
   }
 
