@@ -20,6 +20,7 @@
 #include "core/volume_export.h"
 #include "explorer.h"
 #include "pipeline.h"
+#include "progress_pipe.h"
 #include "version.h"
 
 namespace voxflame::app {
@@ -35,9 +36,11 @@ usage:
   voxflame render [PRESET.json|IMAGE.png] -o OUT.png|OUT.exr|OUT.vdb|OUT.nrrd [--width W] [--height H]
                   [--samples S] [--points N] [--grid R] [--bit-depth 8|16] [--time SECONDS]
                   [--camera-azimuth DEG] [--camera-elevation DEG] [--threads T]
+                  [--progress-fd N]
       Render a still headless (no display needed). A PNG carries its preset: rendering
       it again reproduces it. EXR is linear 32-bit float. VDB and NRRD hold the volume
-      itself (normalised density and colour, in the mesh's coordinates) for other renderers.
+      itself (normalised density and colour, in the mesh's coordinates) for other renderers. --progress-fd N writes lines
+      "progress STAGE FRACTION" to file descriptor N for a parent process.
   voxflame animate [PRESET.json|FRAME.png] -o PATTERN [--frames A-B] [--width W] [--height H]
                    [--fps F] [--motion-blur N] [--shutter S] [--video OUT.mp4]
                    [--samples S] [--points N] [--grid R] [--threads T]
@@ -154,6 +157,8 @@ int renderCommand(const std::vector<std::string>& args) {
   const double seconds = arguments.real("--time", 0.0, 0.0, core::kMaxAnimationSeconds);
   const int bitDepth = static_cast<int>(arguments.integer("--bit-depth", 8, 8, 16));
   if (bitDepth != 8 && bitDepth != 16) throw UsageError("--bit-depth must be 8 or 16");
+  const int progressFd = static_cast<int>(arguments.integer("--progress-fd", -1, 0, 1 << 20));
+  checkProgressFd(progressFd);
   arguments.finish(1);
   if (!output) throw UsageError("render needs an output file: -o OUT.png, OUT.exr, OUT.vdb or OUT.nrrd");
   const std::string extension = std::filesystem::path(*output).extension().string();
@@ -195,6 +200,11 @@ int renderCommand(const std::vector<std::string>& args) {
                  stats.pointsPerSecond * 1e-6, formatDuration(left).c_str());
     std::fflush(stderr);
   };
+  ProgressPipe progressPipe(progressFd, gInterrupted);
+  if (progressPipe.active())
+    options.stage = [&progressPipe](StillStage stage, double fraction) {
+      progressPipe.report(toString(stage), fraction);
+    };
   if (volumeOutput) return writeVolume(scene, options, *output, extension == ".vdb", interactive);
   StillResult result;
   try {
@@ -206,6 +216,11 @@ int renderCommand(const std::vector<std::string>& args) {
   }
   if (interactive) std::fprintf(stderr, "\n");
   if (!result.warning.empty()) std::cerr << "voxflame: warning: " << result.warning << "\n";
+  progressPipe.report("writing", 0.0);
+  if (gInterrupted) {
+    std::cerr << "voxflame: interrupted; nothing was written\n";
+    return 130;
+  }
   if (options.linearOutput)
     core::writeExr(*output, result.image, stillMetadata(scene, result));
   else
@@ -214,7 +229,8 @@ int renderCommand(const std::vector<std::string>& args) {
               output->c_str(), options.width, options.height, scene.render.samples,
               static_cast<unsigned long long>(result.stats.points), result.accumulateSeconds, result.renderSeconds,
               result.renderer.c_str());
-  return gInterrupted ? 130 : 0;
+  // The image is complete on disk: an interruption that came too late to stop it is not a failure.
+  return 0;
 }
 
 namespace {

@@ -487,9 +487,11 @@ void meshSection(ExplorerState& state) {
   probe(state, "mesh/path");
   ImGui::SameLine();
   if (button(state, "mesh/", "Open") && state.meshPath[0] != '\0') state.requests.open = state.meshPath;
-  if (!state.recentFiles.empty() && ImGui::BeginCombo("recent", "recent files")) {
-    for (const std::string& recent : state.recentFiles)
-      if (ImGui::Selectable(recent.c_str())) state.requests.open = recent;
+  if (!state.settings.recent.empty() && ImGui::BeginCombo("recent", "recent files")) {
+    for (const RecentFile& recent : state.settings.recent) {
+      const std::string label = recent.path.filename().string() + "  (" + recent.path.parent_path().string() + ")";
+      if (ImGui::Selectable(label.c_str())) state.requests.open = recent.path;
+    }
     ImGui::EndCombo();
   }
   ImGui::TextColored(kDimColor, "or drop a mesh, preset or PNG onto the window");
@@ -796,10 +798,8 @@ bool openFile(ExplorerState& state, const std::filesystem::path& path) {
     else
       state.scene = scene;
     state.notice.clear();
-    const std::string entry = std::filesystem::absolute(path).lexically_normal().string();
-    std::erase(state.recentFiles, entry);
-    state.recentFiles.insert(state.recentFiles.begin(), entry);
-    if (state.recentFiles.size() > kMaxRecentFiles) state.recentFiles.resize(kMaxRecentFiles);
+    state.settings.addRecent(preset ? RecentKind::Preset : RecentKind::Mesh, path);
+    if (preset && extension == ".json") state.settings.lastPreset = std::filesystem::absolute(path);
     return true;
   } catch (const core::Error& e) {
     state.notice = e.what();

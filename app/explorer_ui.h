@@ -17,6 +17,7 @@
 #include "core/scene.h"
 #include "explorer_session.h"
 #include "scene_history.h"
+#include "settings.h"
 
 namespace voxflame::app {
 
@@ -59,7 +60,7 @@ struct ExplorerState {
   std::string notice;     // an error or a message shown in the window until dismissed
   UiRequests requests;
   UiProbe* probe = nullptr;  // set by tests
-  std::vector<std::string> recentFiles;
+  Settings settings;  // recent files, export settings, preset folder: kept between sessions
 
   // Camera dragging.
   bool orbiting = false, panning = false;
@@ -97,8 +98,6 @@ void resetExplorerState(ExplorerState& state, const core::Scene& scene);
 
 // One UI frame between ImGui::NewFrame and ImGui::Render: input, panels, background jobs.
 void explorerUiFrame(ExplorerState& state);
-
-inline constexpr std::size_t kMaxRecentFiles = 10;
 
 // Opens a preset, a voxflame PNG (a fresh scene and history) or a mesh (the pattern stays; one
 // undoable edit) and puts it first in the recent files. On failure the scene is untouched and

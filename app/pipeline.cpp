@@ -32,6 +32,18 @@ double secondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
+const char* toString(StillStage stage) {
+  switch (stage) {
+    case StillStage::Loading:
+      return "loading";
+    case StillStage::Accumulating:
+      return "accumulating";
+    case StillStage::Rendering:
+      return "rendering";
+  }
+  return "loading";
+}
+
 void checkGridFitsInMemory(const core::GridGeometry& grid) {
   // Per voxel: mask 1 B, density and colour sums 16 B, a snapshot 8 B, its upload copy 8 B.
   constexpr double kBytesPerVoxel = 1.0 + 16.0 + 8.0 + 8.0;
@@ -49,6 +61,17 @@ SceneShape buildSceneShape(const core::Scene& scene) {
   return shape;
 }
 
+namespace {
+
+void reportAccumulation(const StillOptions& options, const core::AccumulatorStats& stats, std::uint64_t target) {
+  if (options.progress) options.progress(stats, target);
+  if (options.stage)
+    options.stage(StillStage::Accumulating,
+                  target ? static_cast<double>(std::min(stats.points, target)) / static_cast<double>(target) : 1.0);
+}
+
+}  // namespace
+
 AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& shape, const StillOptions& options) {
   AccumulatedVolume result;
   const std::uint64_t target = options.points ? options.points : scene.points;
@@ -62,7 +85,7 @@ AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& s
   while (!accumulator.waitUntilDone(0.25)) {
     if (options.cancel && options.cancel->load()) throw RenderCancelled();
     const core::AccumulatorStats stats = accumulator.stats();
-    if (options.progress) options.progress(stats, target);
+    reportAccumulation(options, stats, target);
     if (stats.iterations > iterationLimit) {
       result.warning = "only " + std::to_string(stats.points) + " of " + std::to_string(target) +
                        " points landed inside the mesh; the pattern barely overlaps it";
@@ -70,7 +93,7 @@ AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& s
     }
   }
   result.stats = accumulator.stats();
-  if (options.progress) options.progress(result.stats, target);
+  reportAccumulation(options, result.stats, target);
   if (!result.stats.problem.empty()) throw core::Error(result.stats.problem);
   accumulator.snapshot(result.snapshot);
   result.seconds = secondsSince(start);
@@ -100,7 +123,8 @@ void FrameRenderer::setVolume(const core::PackedVolume& volume, const SceneShape
   impl_->shape = &shape;
 }
 
-core::ImageRGBA FrameRenderer::render(const core::Scene& scene, int width, int height, bool linearOutput) {
+core::ImageRGBA FrameRenderer::render(const core::Scene& scene, int width, int height, bool linearOutput,
+                                      const std::function<void(double)>& progress) {
   Impl& d = *impl_;
   if (!d.volume || !d.shape) throw core::Error("no volume to render");
   if (scene.render.meshDisplay != core::MeshDisplay::Off && !d.meshUploaded) {
@@ -119,11 +143,12 @@ core::ImageRGBA FrameRenderer::render(const core::Scene& scene, int width, int h
                                       static_cast<double>(width) / static_cast<double>(height));
   settings.tone = scene.tone;
   settings.render = scene.render;
-  return gl::renderToImage(d.renderer, settings, width, height, linearOutput);
+  return gl::renderToImage(d.renderer, settings, width, height, linearOutput, gl::kDefaultMaxTile, progress);
 }
 
 StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   StillResult result;
+  if (options.stage) options.stage(StillStage::Loading, 0.0);
   const SceneShape shape = buildSceneShape(scene);
   core::PackedVolume volume;
   {
@@ -138,7 +163,15 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   FrameRenderer renderer;
   result.renderer = renderer.rendererName();
   renderer.setVolume(volume, shape);
-  result.image = renderer.render(scene, options.width, options.height, options.linearOutput);
+  // Between sub-samples a cancelled render stops and a progress bar moves.
+  std::function<void(double)> renderProgress;
+  if (options.cancel || options.stage)
+    renderProgress = [&options](double fraction) {
+      if (options.cancel && options.cancel->load()) throw RenderCancelled();
+      if (options.stage) options.stage(StillStage::Rendering, fraction);
+    };
+  if (options.stage) options.stage(StillStage::Rendering, 0.0);
+  result.image = renderer.render(scene, options.width, options.height, options.linearOutput, renderProgress);
   result.renderSeconds = secondsSince(renderStart);
   return result;
 }

@@ -31,6 +31,11 @@ SceneShape buildSceneShape(const core::Scene& scene);
 // Refuses (core::Error saying how much it needs) a grid whose buffers would not fit in memory.
 void checkGridFitsInMemory(const core::GridGeometry& grid);
 
+// What a still is doing, for progress reports: loading the mesh and its mask, accumulating
+// points, ray-marching the image.
+enum class StillStage { Loading, Accumulating, Rendering };
+const char* toString(StillStage stage);  // "loading", "accumulating", "rendering"
+
 struct StillOptions {
   int width = 1280;
   int height = 720;
@@ -39,6 +44,9 @@ struct StillOptions {
   bool linearOutput = false;                  // linear light (for EXR) instead of display-encoded
   const std::atomic<bool>* cancel = nullptr;  // when set and raised, renderStill throws RenderCancelled
   std::function<void(const core::AccumulatorStats&, std::uint64_t target)> progress;  // may be empty
+  // Every stage with its fraction done in [0, 1]: Loading once at 0, Accumulating about every
+  // quarter second, Rendering after each tile's sub-sample. May be empty.
+  std::function<void(StillStage, double fraction)> stage;
 };
 
 struct StillResult {
@@ -82,7 +90,10 @@ class FrameRenderer {
   // The volume (and the shape it was accumulated in) later render() calls draw.
   void setVolume(const core::PackedVolume& volume, const SceneShape& shape);
   // `scene`'s camera, tone and render settings (samples, mesh overlay, lighting).
-  core::ImageRGBA render(const core::Scene& scene, int width, int height, bool linearOutput);
+  // `progress` (may be empty) gets the fraction done after each tile's sub-sample; it may throw
+  // to stop the render.
+  core::ImageRGBA render(const core::Scene& scene, int width, int height, bool linearOutput,
+                         const std::function<void(double)>& progress = {});
   const std::string& rendererName() const;
 
  private:

@@ -203,7 +203,7 @@ TEST_F(ExplorerUi, OpeningFilesKeepsWorkSafe) {
   ASSERT_TRUE(app::openFile(state, test::meshPath("teapot.obj"))) << state.notice;
   EXPECT_NE(state.scene.meshPath.find("teapot.obj"), std::string::npos);
   EXPECT_EQ(state.scene.layers[0].params, pattern);
-  EXPECT_FALSE(state.recentFiles.empty());
+  EXPECT_FALSE(state.settings.recent.empty());
   frame(2);
   pressKey('Z', true);
   EXPECT_EQ(state.scene.meshPath.find("teapot.obj"), std::string::npos) << "undo goes back to the bunny";

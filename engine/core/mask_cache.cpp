@@ -13,6 +13,8 @@
 #include <utility>
 #include <vector>
 
+#include "xdg_paths.h"
+
 namespace voxflame::core {
 
 namespace {
@@ -145,10 +147,7 @@ void writeEntry(const std::filesystem::path& path, std::uint64_t key, const Insi
 }  // namespace
 
 std::filesystem::path defaultMaskCacheFolder() {
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg == '/')
-    return std::filesystem::path(xdg) / "voxflame";
-  if (const char* home = std::getenv("HOME"); home && *home) return std::filesystem::path(home) / ".cache" / "voxflame";
-  return {};
+  return xdgFolder(XdgKind::Cache);
 }
 
 std::uint64_t meshContentHash(const TriangleMesh& mesh) {

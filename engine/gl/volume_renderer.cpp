@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -587,7 +588,7 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
 }
 
 core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
-                              bool linearOutput, int maxTile) {
+                              bool linearOutput, int maxTile, const std::function<void(double)>& progress) {
   GLint maxRenderbuffer = 0, maxViewport[2] = {0, 0};
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
   glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
@@ -602,9 +603,26 @@ core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& se
   const int samples = std::max(1, settings.render.samples);
 
   FrameTarget target;
-  GLuint output = 0, outputBuffer = 0;
-  glGenFramebuffers(1, &output);
-  glGenRenderbuffers(1, &outputBuffer);
+  // Freed on every way out, a progress callback that throws (a cancelled export) included.
+  struct OutputTarget {
+    GLuint framebuffer = 0, renderbuffer = 0;
+    OutputTarget() {
+      glGenFramebuffers(1, &framebuffer);
+      glGenRenderbuffers(1, &renderbuffer);
+    }
+    ~OutputTarget() {
+      glBindFramebuffer(GL_FRAMEBUFFER, 0);
+      glDeleteFramebuffers(1, &framebuffer);
+      glDeleteRenderbuffers(1, &renderbuffer);
+    }
+    OutputTarget(const OutputTarget&) = delete;
+    OutputTarget& operator=(const OutputTarget&) = delete;
+  } outputTarget;
+  const GLuint output = outputTarget.framebuffer, outputBuffer = outputTarget.renderbuffer;
+  const auto tilesAcross = static_cast<long long>((width + tileSize - 1) / tileSize);
+  const auto tilesDown = static_cast<long long>((height + tileSize - 1) / tileSize);
+  const double totalSteps = static_cast<double>(tilesAcross * tilesDown * samples);
+  long long stepsDone = 0;
   std::vector<float> tilePixels;
   for (int tileY = 0; tileY < height; tileY += tileSize) {
     for (int tileX = 0; tileX < width; tileX += tileSize) {
@@ -615,20 +633,23 @@ core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& se
       const glm::ivec4 tile(tileX, glY, width, height);
       target.resize(tileWidth, tileHeight);
       target.samples = 0;
-      for (int s = 0; s < samples; ++s) renderer.march(target, settings, s, tile);
+      for (int s = 0; s < samples; ++s) {
+        renderer.march(target, settings, s, tile);
+        if (progress) {
+          // Waiting for the GPU here makes the fraction mean work done, not work queued.
+          glFinish();
+          progress(static_cast<double>(++stepsDone) / totalSteps);
+        }
+      }
       renderer.drawMesh(target, settings, tile);
 
       glBindRenderbuffer(GL_RENDERBUFFER, outputBuffer);
       glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, tileWidth, tileHeight);
       glBindFramebuffer(GL_FRAMEBUFFER, output);
       glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, outputBuffer);
-      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        glDeleteFramebuffers(1, &output);
-        glDeleteRenderbuffers(1, &outputBuffer);
+      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         throw core::Error("could not make an offscreen framebuffer for a " + std::to_string(tileWidth) + "×" +
                           std::to_string(tileHeight) + " tile");
-      }
       renderer.resolve(target, settings, glm::ivec4(0, 0, tileWidth, tileHeight), linearOutput);
       tilePixels.resize(4 * static_cast<std::size_t>(tileWidth) * static_cast<std::size_t>(tileHeight));
       glPixelStorei(GL_PACK_ALIGNMENT, 1);
@@ -639,8 +660,6 @@ core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& se
         std::copy_n(&tilePixels[static_cast<std::size_t>(tileHeight - 1 - y) * row], row, image.at(tileX, tileY + y));
     }
   }
-  glDeleteFramebuffers(1, &output);
-  glDeleteRenderbuffers(1, &outputBuffer);
   return image;
 }
 

@@ -12,6 +12,7 @@
 #include <epoxy/gl.h>
 
 #include <cstdint>
+#include <functional>
 
 #include "core/camera.h"
 #include "core/image_io.h"
@@ -111,10 +112,14 @@ class VolumeRenderer {
   GLsizei meshIndexCount_ = 0;
 };
 
+inline constexpr int kDefaultMaxTile = 2048;  // pixels along a tile's side, at most
+
 // Renders one image offscreen in tiles no larger than the GL allows, averaging `samples`
 // jittered sub-samples per pixel, and reads it back (rows top to bottom). Display-encoded in
-// [0, 1], or linear light when `linearOutput`.
+// [0, 1], or linear light when `linearOutput`. `progress`, when set, is called after each tile's
+// sub-sample with the fraction done (0–1]; it may throw to stop the render (GL objects are freed).
 core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
-                              bool linearOutput = false, int maxTile = 2048);
+                              bool linearOutput = false, int maxTile = kDefaultMaxTile,
+                              const std::function<void(double)>& progress = {});
 
 }  // namespace voxflame::gl
