@@ -241,8 +241,8 @@ int explorerCommand(const std::vector<std::string>& args) {
   if (const auto screenshot = arguments.take("--screenshot")) options.screenshotPath = *screenshot;
   options.frames = static_cast<int>(arguments.integer("--frames", 0, 0, 1'000'000));
   options.uiScale = static_cast<float>(arguments.real("--ui-scale", 0.0, 0.5, 4.0));
-  options.width = static_cast<int>(arguments.integer("--width", 1280, 320, 16384));
-  options.height = static_cast<int>(arguments.integer("--height", 720, 240, 16384));
+  options.width = static_cast<int>(arguments.integer("--width", 0, 320, 16384));
+  options.height = static_cast<int>(arguments.integer("--height", 0, 240, 16384));
   arguments.finish(1);
   if (!options.screenshotPath.empty() && options.frames == 0) options.frames = 60;
   return runExplorer(sceneFromArgument(arguments.positional()), options);

@@ -76,6 +76,35 @@ struct GlfwSession {
 // Shadows are smooth: a cell of 2³ voxels keeps them sharp enough at an eighth of the work.
 constexpr int kShadowDownsample = 2;
 
+unsigned uploadThumbnail(const Thumbnail& thumbnail) {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, thumbnail.width, thumbnail.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+               thumbnail.rgba.data());
+  return texture;
+}
+
+// The window's current picture as a thumbnail (rows top to bottom, opaque).
+Thumbnail readThumbnail(int width, int height) {
+  Thumbnail thumbnail;
+  thumbnail.width = width;
+  thumbnail.height = height;
+  std::vector<std::uint8_t> rows(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  thumbnail.rgba.resize(rows.size());
+  const std::size_t stride = 4 * static_cast<std::size_t>(width);
+  for (int y = 0; y < height; ++y)
+    std::copy_n(&rows[static_cast<std::size_t>(height - 1 - y) * stride], stride,
+                &thumbnail.rgba[static_cast<std::size_t>(y) * stride]);
+  for (std::size_t i = 3; i < thumbnail.rgba.size(); i += 4) thumbnail.rgba[i] = 255;
+  return thumbnail;
+}
+
 // Files dropped onto the window wait here until the frame loop opens the first of them.
 void onDrop(GLFWwindow* window, int count, const char** paths) {
   auto* dropped = static_cast<std::vector<std::string>*>(glfwGetWindowUserPointer(window));
@@ -112,7 +141,14 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
   const std::string title = "voxflame — " + initialScene.name;
-  GLFWwindow* window = glfwCreateWindow(options.width, options.height, title.c_str(), nullptr, nullptr);
+  // Settings never stop the explorer: a bad file gives defaults and a message in the window.
+  SettingsLoad settingsLoad = loadSettings();
+  // Scripted runs (screenshots) get a fixed size, so their pictures compare across machines.
+  const bool scriptedRun = options.frames > 0;
+  const int windowWidth = options.width > 0 ? options.width : (scriptedRun ? 1280 : settingsLoad.settings.window.width);
+  const int windowHeight =
+      options.height > 0 ? options.height : (scriptedRun ? 720 : settingsLoad.settings.window.height);
+  GLFWwindow* window = glfwCreateWindow(windowWidth, windowHeight, title.c_str(), nullptr, nullptr);
   if (!window) throw core::Error("could not open an OpenGL 4.3 window on this display");
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
@@ -127,6 +163,11 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   state.uiScale = uiScaleFor(window, options.uiScale);
   applyUiScale(state.uiScale);
   resetExplorerState(state, initialScene);
+  state.settings = settingsLoad.settings;
+  state.notice = settingsLoad.message;
+  // Scripted runs (screenshots, tests) neither offer nor leave autosaves.
+  const bool scripted = options.frames > 0;
+  if (!scripted) state.recoverable = findRecoverable();
   // Software GL (llvmpipe) marches a quarter of the pixels to stay interactive; samples then
   // refine the image while nothing changes.
   const std::string glRenderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
@@ -137,6 +178,13 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   glfwSetDropCallback(window, onDrop);
   {
     ExplorerSession session;
+    PresetLibrary presets(findShippedPresetFolder(), state.settings.presetFolder());
+    state.presets = &presets;
+    std::uint64_t thumbnailsVersion = 0;
+    ExportJob exportJob;
+    state.exportJob = &exportJob;
+    std::optional<Autosave> autosave;
+    if (!scripted) autosave.emplace();
     gl::VolumeRenderer renderer;
     gl::FrameTarget target;
     // The volume being uploaded or shown is shared with the shadow job that may still read it;
@@ -172,6 +220,15 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
 
       if (state.requests.quit) glfwSetWindowShouldClose(window, GLFW_TRUE);
       if (state.requests.open) openInto(state, *state.requests.open, window);
+      if (autosave) autosave->update(state.scene);
+      // Thumbnails arrive decoded from the library's thread; only their upload happens here.
+      if (presets.version() != thumbnailsVersion) {
+        thumbnailsVersion = presets.version();
+        if (const PresetLibrary::Entries entries = presets.entries())
+          for (const PresetEntry& entry : *entries)
+            if (entry.thumbnail && !state.thumbnailTextures.contains(entry.path))
+              state.thumbnailTextures[entry.path] = uploadThumbnail(*entry.thumbnail);
+      }
       if (!dropped.empty()) {
         openInto(state, dropped.front(), window);
         dropped.clear();
@@ -253,6 +310,17 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
         state.samples = target.samples;
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         renderer.resolve(target, settings, glm::ivec4(0, 0, width, height), false);
+        if (state.requests.saveAs) {
+          // The thumbnail is the view as shown, before the panels are drawn over it.
+          try {
+            const std::filesystem::path saved =
+                presets.saveAs(state.scene, *state.requests.saveAs, readThumbnail(width, height));
+            state.presetMessage = "saved " + saved.string();
+            state.settings.addRecent(RecentKind::Preset, saved);
+          } catch (const core::Error& e) {
+            state.notice = e.what();
+          }
+        }
       } else {
         const glm::vec3 background = core::linearToSrgb(state.scene.tone.background);
         glClearColor(background.r, background.g, background.b, 1.0f);
@@ -284,10 +352,23 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       if (frame > 2) metrics.worstFrameMs = std::max(metrics.worstFrameMs, metrics.frameMs);
       lastFrame = now;
     }
+    if (autosave) autosave->finishCleanly();  // a normal close: nothing to recover next time
     if (options.frames > 0) {
       const FrameMetrics& m = state.metrics;
       std::printf("explorer: %u frames, last %.1f ms, worst %.1f ms since the last edit, edit to frame %.0f ms\n",
                   frame, m.frameMs, m.worstFrameMs, m.changeToFrameMs);
+    }
+  }
+  for (const auto& [path, texture] : state.thumbnailTextures) glDeleteTextures(1, &texture);
+  // The window's size for next time; a failure to save settings is only worth a line.
+  if (!glfwGetWindowAttrib(window, GLFW_ICONIFIED))
+    glfwGetWindowSize(window, &state.settings.window.width, &state.settings.window.height);
+  state.settings.window.maximized = glfwGetWindowAttrib(window, GLFW_MAXIMIZED) != 0;
+  if (!scripted) {
+    try {
+      saveSettings(state.settings);
+    } catch (const core::Error& e) {
+      std::cerr << "voxflame: " << e.what() << "\n";
     }
   }
   ImGui_ImplOpenGL3_Shutdown();

@@ -10,7 +10,7 @@ namespace voxflame::app {
 struct ExplorerOptions {
   std::filesystem::path screenshotPath;  // when set: save the window after `frames` frames, exit
   int frames = 0;                        // frames showing the volume before the screenshot; 0: run until closed
-  int width = 1280, height = 720;        // window size in screen coordinates
+  int width = 0, height = 0;             // window size in screen coordinates; 0: as last time (settings)
   float uiScale = 0.0f;                  // panel and font scale; 0: the monitor's content scale
 };
 

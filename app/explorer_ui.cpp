@@ -569,6 +569,144 @@ void cameraSection(ExplorerState& state) {
   ImGui::TextColored(kDimColor, "drag: orbit · right/middle drag: pan · wheel: zoom · W/A/S/D/Q/E: fly");
 }
 
+void presetsSection(ExplorerState& state, float scale) {
+  if (!state.presets) return;
+  const PresetLibrary::Entries entries = state.presets->entries();
+  if (state.presets->busy()) ImGui::TextColored(kDimColor, "reading presets…");
+  if (entries) {
+    const float size = 92 * scale;
+    const int columns = std::max(1, static_cast<int>(ImGui::GetContentRegionAvail().x / (size + 8 * scale)));
+    int column = 0;
+    PresetSource lastSource = PresetSource::Shipped;
+    for (std::size_t i = 0; i < entries->size(); ++i) {
+      const PresetEntry& entry = (*entries)[i];
+      if (i == 0 || entry.source != lastSource) {
+        ImGui::TextColored(kDimColor, entry.source == PresetSource::Shipped ? "shipped" : "yours (%s)",
+                           state.presets->userFolder().string().c_str());
+        column = 0;
+      }
+      lastSource = entry.source;
+      if (column++ % columns != 0) ImGui::SameLine();
+      ImGui::PushID(static_cast<int>(i));
+      ImGui::BeginGroup();
+      const auto texture = state.thumbnailTextures.find(entry.path);
+      bool clicked = false;
+      if (texture != state.thumbnailTextures.end() && entry.thumbnail) {
+        const float aspect = static_cast<float>(entry.thumbnail->height) / static_cast<float>(entry.thumbnail->width);
+        clicked = ImGui::ImageButton(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture->second)),
+                                     ImVec2(size, size * aspect));
+      } else {
+        clicked = ImGui::Button(entry.loads ? "no image" : "broken", ImVec2(size, size * 0.625f));
+      }
+      probe(state, "preset/" + entry.path.stem().string());
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("%s\n%s", entry.displayName.c_str(),
+                          entry.loads ? entry.attractor.c_str() : entry.error.c_str());
+      if (clicked) {
+        if (entry.loads)
+          state.requests.open = entry.path;
+        else
+          state.notice = entry.error;
+      }
+      ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + size);
+      ImGui::TextUnformatted(entry.displayName.c_str());
+      ImGui::PopTextWrapPos();
+      ImGui::EndGroup();
+      ImGui::PopID();
+    }
+  }
+  ImGui::InputTextWithHint("##savename", "name of your preset", state.saveName, sizeof state.saveName);
+  probe(state, "preset/name");
+  ImGui::SameLine();
+  if (button(state, "preset/", "Save as") && state.saveName[0] != '\0') state.requests.saveAs = state.saveName;
+  ImGui::SameLine();
+  if (button(state, "preset/", "Refresh")) state.presets->refresh();
+  if (!state.presetMessage.empty()) ImGui::TextWrapped("%s", state.presetMessage.c_str());
+}
+
+void exportSection(ExplorerState& state) {
+  if (!state.exportJob) return;
+  ExportSettings& settings = state.settings.lastExport;
+  int size[2] = {settings.width, settings.height};
+  if (ImGui::InputInt2("size", size)) {
+    settings.width = std::clamp(size[0], 16, 65536);
+    settings.height = std::clamp(size[1], 16, 65536);
+  }
+  ImGui::SliderInt("samples", &settings.samples, 1, 64, "%d", ImGuiSliderFlags_Logarithmic);
+  double millions = static_cast<double>(settings.points ? settings.points : state.scene.points) * 1e-6;
+  const double minPoints = 0.1, maxPoints = 10000.0;
+  if (ImGui::SliderScalar("M points", ImGuiDataType_Double, &millions, &minPoints, &maxPoints, "%.1f",
+                          ImGuiSliderFlags_Logarithmic))
+    settings.points = static_cast<std::uint64_t>(millions * 1e6);
+  int format = static_cast<int>(settings.format);
+  if (ImGui::Combo("format", &format, "PNG 8-bit\0PNG 16-bit\0EXR (linear float)\0"))
+    settings.format = static_cast<ExportFormat>(format);
+  if (state.exportPath[0] == '\0') {
+    const std::filesystem::path folder =
+        state.settings.lastExportFolder.empty() ? std::filesystem::current_path() : state.settings.lastExportFolder;
+    const std::string path = (folder / (sanitizePresetName(state.scene.name) + extensionOf(settings.format))).string();
+    std::snprintf(state.exportPath, sizeof state.exportPath, "%s", path.c_str());
+  }
+  ImGui::InputText("file", state.exportPath, sizeof state.exportPath);
+  probe(state, "export/file");
+  const ExportStatus& status = state.exportStatus;
+  if (status.state == ExportState::Running) {
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%s %.0f%%", status.stage.c_str(), 100.0 * status.overall);
+    ImGui::ProgressBar(static_cast<float>(status.overall), ImVec2(-80 * state.uiScale, 0), overlay);
+    ImGui::SameLine();
+    if (button(state, "export/", "Cancel")) state.exportJob->cancel();
+    return;
+  }
+  if (button(state, "export/", "Export now")) {  // not "Export": the header above has that id
+    try {
+      ExportRequest request;
+      request.scene = state.scene;
+      request.settings = settings;
+      request.output = withExtensionFor(state.exportPath, settings.format);
+      request.executable = state.executable;
+      std::snprintf(state.exportPath, sizeof state.exportPath, "%s", request.output.string().c_str());
+      state.settings.lastExportFolder = std::filesystem::absolute(request.output).parent_path();
+      state.exportJob->start(request);
+      state.exportStatus = state.exportJob->poll();
+    } catch (const core::Error& e) {
+      state.notice = e.what();
+    }
+  }
+  if (status.state == ExportState::Done) ImGui::TextWrapped("wrote %s", status.output.string().c_str());
+  if (status.state == ExportState::Failed) ImGui::TextColored(kErrorColor, "%s", status.error.c_str());
+  if (status.state == ExportState::Cancelled) ImGui::TextColored(kDimColor, "cancelled; nothing was written");
+}
+
+// Scenes left by a session that crashed or was killed: restore or discard, one at a time.
+void recoveryWindow(ExplorerState& state, float scale) {
+  if (state.recoverable.empty()) return;
+  const Recoverable& recoverable = state.recoverable.front();
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.35f * io.DisplaySize.y), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(440 * scale, 0));
+  ImGui::Begin("Recover unsaved work", nullptr, ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings);
+  if (recoverable.scene) {
+    ImGui::TextWrapped("voxflame did not close normally last time. Its scene \"%s\" was autosaved.",
+                       recoverable.scene->name.c_str());
+    if (button(state, "recover/", "Restore")) {
+      state.scene = *recoverable.scene;
+      state.keyBase = state.scene;
+      dismissRecoverable(recoverable);
+      state.recoverable.erase(state.recoverable.begin());
+    }
+    ImGui::SameLine();
+  } else {
+    ImGui::TextColored(kErrorColor, "%s", recoverable.error.c_str());
+  }
+  if (!state.recoverable.empty() && button(state, "recover/", "Discard")) {
+    dismissRecoverable(state.recoverable.front());
+    state.recoverable.erase(state.recoverable.begin());
+  }
+  ImGui::End();
+}
+
 void viewWindow(ExplorerState& state, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
   const float width = 320 * scale;
@@ -579,6 +717,12 @@ void viewWindow(ExplorerState& state, float scale) {
   if (ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen)) meshSection(state);
   if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) renderSection(state);
   if (ImGui::CollapsingHeader("Camera")) cameraSection(state);
+  const bool presetsOpen = ImGui::CollapsingHeader("Presets");
+  probe(state, "header/Presets");
+  if (presetsOpen) presetsSection(state, scale);
+  const bool exportOpen = ImGui::CollapsingHeader("Export");
+  probe(state, "header/Export");
+  if (exportOpen) exportSection(state);
   ImGui::PopItemWidth();
   ImGui::End();
 }
@@ -811,6 +955,7 @@ void explorerUiFrame(ExplorerState& state) {
   const float scale = state.uiScale;
   state.requests = UiRequests{};
   if (state.probe) state.probe->items.clear();
+  if (state.exportJob) state.exportStatus = state.exportJob->poll();
   handleShortcuts(state);
   handleCamera(state);
   handleHistory(state);
@@ -820,6 +965,7 @@ void explorerUiFrame(ExplorerState& state) {
   patternWindow(state, scale);
   viewWindow(state, scale);
   timelineWindow(state, scale);
+  recoveryWindow(state, scale);
   statusBar(state, scale);
   noticeWindow(state, scale);
 }

@@ -16,6 +16,9 @@
 #include "core/lyapunov.h"
 #include "core/scene.h"
 #include "explorer_session.h"
+#include "autosave.h"
+#include "export_job.h"
+#include "preset_library.h"
 #include "scene_history.h"
 #include "settings.h"
 
@@ -35,6 +38,7 @@ struct UiProbe {
 // What panels ask of the window loop, which owns files, GL and the session; cleared each frame.
 struct UiRequests {
   std::optional<std::filesystem::path> open;  // a preset, a voxflame PNG or a mesh
+  std::optional<std::string> saveAs;          // save the scene as a user preset with this name
   bool quit = false;
 };
 
@@ -60,7 +64,7 @@ struct ExplorerState {
   std::string notice;     // an error or a message shown in the window until dismissed
   UiRequests requests;
   UiProbe* probe = nullptr;  // set by tests
-  Settings settings;  // recent files, export settings, preset folder: kept between sessions
+  Settings settings;         // recent files, export settings, preset folder: kept between sessions
 
   // Camera dragging.
   bool orbiting = false, panning = false;
@@ -85,6 +89,21 @@ struct ExplorerState {
   std::string lyapunovText = "Lyapunov: …";
 
   std::optional<SceneHistory> history;  // undo/redo over the whole scene
+
+  // Presets panel: the library (owned by the window loop) and the GL textures of its thumbnails.
+  PresetLibrary* presets = nullptr;
+  std::map<std::filesystem::path, unsigned> thumbnailTextures;
+  char saveName[128] = "";
+  std::string presetMessage;
+
+  // Export panel: the child process rendering a still (owned by the window loop).
+  ExportJob* exportJob = nullptr;
+  std::filesystem::path executable;  // the voxflame binary exports run; empty: this process
+  ExportStatus exportStatus;
+  char exportPath[512] = "";
+
+  // Autosaves of sessions that crashed or were killed, offered back at start.
+  std::vector<Recoverable> recoverable;
 
   // Timeline: the shown scene is the animation at scene.animation.time.
   bool playing = false;

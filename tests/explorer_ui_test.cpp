@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "core/scene_io.h"
+#include "core/scene.h"
 #include "explorer_session.h"
 #include "explorer_ui.h"
 #include "test_support.h"
@@ -350,6 +351,96 @@ TEST_F(ExplorerUi, KeyingAParameterAnimatesThePattern) {
   EXPECT_DOUBLE_EQ(state.scene.animation.time, 1.0);
   click("timeline/Delete key");
   EXPECT_EQ(state.scene.keyframes[0].keys.size(), 1u);
+}
+
+}  // namespace
+
+namespace {
+
+TEST_F(ExplorerUi, PresetsPanelListsThumbnailsOpensAndSaves) {
+  TemporaryFolder user;
+  app::PresetLibrary library(test::sourcePath("presets"), user.path());
+  state.presets = &library;
+  for (int i = 0; i < 500 && (library.busy() || !library.entries()); ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(library.entries());
+  // Stand-in texture names: the panel only passes them to ImGui.
+  unsigned name = 1;
+  for (const app::PresetEntry& entry : *library.entries())
+    if (entry.thumbnail) state.thumbnailTextures[entry.path] = name++;
+  click("header/Presets");
+  // The click's request is read by the window loop in the frame it was made; do what it does.
+  const auto& rect = item("preset/lorenz-heart");
+  ImGuiIO& io = ImGui::GetIO();
+  moveTo(rect.centerX(), rect.centerY());
+  io.MouseDown[0] = true;
+  frame();
+  io.MouseDown[0] = false;
+  ImGui::NewFrame();
+  app::explorerUiFrame(state);
+  ImGui::Render();
+  ASSERT_TRUE(state.requests.open.has_value());
+  EXPECT_EQ(state.requests.open->filename(), "lorenz-heart.json");
+  ASSERT_TRUE(app::openFile(state, *state.requests.open));
+  EXPECT_EQ(state.scene.layers[0].attractor, "lorenz");
+
+  // Save as: the name box and the button ask the window loop, which owns the pixels.
+  std::snprintf(state.saveName, sizeof state.saveName, "My heart");
+  frame();
+  const auto& save = item("preset/Save as");
+  moveTo(save.centerX(), save.centerY());
+  io.MouseDown[0] = true;
+  frame();
+  io.MouseDown[0] = false;
+  ImGui::NewFrame();
+  app::explorerUiFrame(state);
+  ImGui::Render();
+  ASSERT_TRUE(state.requests.saveAs.has_value());
+  const auto saved = library.saveAs(state.scene, *state.requests.saveAs, {});
+  EXPECT_TRUE(std::filesystem::exists(saved));
+  EXPECT_EQ(core::loadScene(saved).name, "My heart");
+}
+
+TEST_F(ExplorerUi, ExportPanelRendersInAChildWithProgressAndShowsThePath) {
+  TemporaryFolder folder;
+  app::ExportJob job;
+  state.exportJob = &job;
+  state.executable = VOXFLAME_BINARY;
+  state.scene.gridResolution = 48;
+  state.settings.lastExport.width = 64;
+  state.settings.lastExport.height = 48;
+  state.settings.lastExport.samples = 1;
+  state.settings.lastExport.points = 200'000;
+  const auto output = folder.path() / "still.png";
+  std::snprintf(state.exportPath, sizeof state.exportPath, "%s", output.string().c_str());
+  click("header/Export");
+  click("export/Export now");
+  bool sawProgress = false;
+  for (int i = 0; i < 1500 && state.exportStatus.state != app::ExportState::Done &&
+                  state.exportStatus.state != app::ExportState::Failed;
+       ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    frame();
+    sawProgress |= state.exportStatus.state == app::ExportState::Running;
+  }
+  ASSERT_EQ(state.exportStatus.state, app::ExportState::Done) << state.exportStatus.error << state.notice;
+  EXPECT_TRUE(sawProgress) << "the panel showed a progress bar while the child ran";
+  EXPECT_TRUE(std::filesystem::exists(output));
+  EXPECT_EQ(state.exportStatus.output, output);
+}
+
+TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {
+  app::Recoverable recoverable;
+  core::Scene lost = core::defaultScene();
+  lost.name = "lost work";
+  lost.layers[0].params[0] = 1.2;
+  recoverable.scene = lost;
+  state.recoverable.push_back(recoverable);
+  frame(2);
+  click("recover/Restore");
+  EXPECT_EQ(state.scene.name, "lost work");
+  EXPECT_DOUBLE_EQ(state.scene.layers[0].params[0], 1.2);
+  EXPECT_TRUE(state.recoverable.empty());
 }
 
 }  // namespace
