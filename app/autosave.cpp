@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/xdg_paths.h"
+#include "atomic_file.h"
 #include "json_guard.h"
 
 namespace voxflame::app {
@@ -212,28 +213,7 @@ void Autosave::write(const std::string& preset, const std::string& baseDirectory
   document["base_directory"] = baseDirectory;
   document["preset"] = json::parse(preset);
   const std::string text = document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
-
-  std::error_code ec;
-  std::filesystem::create_directories(file_.parent_path(), ec);
-  const std::filesystem::path temporary = file_.string() + ".tmp";
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
-  if (fd < 0) throw core::Error("cannot autosave to '" + temporary.string() + "': " + std::strerror(errno));
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    written += static_cast<std::size_t>(n);
-  }
-  const bool ok = written == text.size() && ::fsync(fd) == 0;
-  const std::string reason = std::strerror(errno);
-  ::close(fd);
-  ec.clear();
-  if (ok) std::filesystem::rename(temporary, file_, ec);
-  if (!ok || ec) {
-    std::filesystem::remove(temporary, ec);
-    throw core::Error("cannot autosave to '" + file_.string() + "': " + (ok ? ec.message() : reason));
-  }
+  writeFileAtomically(file_, text, 0600, ".tmp", "cannot autosave to");
 }
 
 std::vector<Recoverable> findRecoverable(const std::filesystem::path& folder) {

@@ -14,6 +14,7 @@
 
 #include "core/error.h"
 #include "core/xdg_paths.h"
+#include "atomic_file.h"
 #include "json_guard.h"
 
 namespace voxflame::app {
@@ -273,31 +274,11 @@ SettingsLoad loadSettings(const std::filesystem::path& file) {
 
 void saveSettings(const Settings& settings, const std::filesystem::path& file) {
   if (file.empty()) throw core::Error("no folder for settings: neither $XDG_CONFIG_HOME nor $HOME is set");
-  std::error_code ec;
-  std::filesystem::create_directories(file.parent_path(), ec);
   // Paths that are not valid UTF-8 cannot go into JSON as they are; replacing the odd bytes keeps
   // the rest of the file.
   const std::string text = settingsToJson(settings).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
-  const std::filesystem::path temporary = file.string() + ".tmp-" + std::to_string(::getpid());
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
-  if (fd < 0) throw core::Error("cannot write settings '" + file.string() + "': " + std::strerror(errno));
-  std::size_t written = 0;
-  while (written < text.size()) {
-    const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;
-    written += static_cast<std::size_t>(n);
-  }
-  // Durable before the rename, so a power cut leaves the old file or the new one, never an empty one.
-  const bool ok = written == text.size() && ::fsync(fd) == 0;
-  const std::string reason = std::strerror(errno);
-  ::close(fd);
-  ec.clear();
-  if (ok) std::filesystem::rename(temporary, file, ec);
-  if (!ok || ec) {
-    std::filesystem::remove(temporary, ec);
-    throw core::Error("cannot write settings '" + file.string() + "': " + (ok ? ec.message() : reason));
-  }
+  // The pid keeps two explorers saving at once from sharing a temporary.
+  writeFileAtomically(file, text, 0644, ".tmp-" + std::to_string(::getpid()), "cannot write settings");
 }
 
 }  // namespace voxflame::app

@@ -78,6 +78,17 @@ class ExplorerUi : public ::testing::Test {
     io.MouseDown[0] = false;
     frame(2);
   }
+  // Clicks a widget and stops right after the release frame, while the frame's requests to the
+  // window loop (open a file, save) are still there to see.
+  void clickForRequest(const std::string& name) {
+    const auto rect = item(name);
+    ImGuiIO& io = ImGui::GetIO();
+    moveTo(rect.centerX(), rect.centerY());
+    io.MouseDown[0] = true;
+    frame();
+    io.MouseDown[0] = false;
+    frame();
+  }
   void pressKey(int key, bool ctrl = false, bool shift = false) {
     ImGuiIO& io = ImGui::GetIO();
     io.KeyCtrl = ctrl;
@@ -370,15 +381,7 @@ TEST_F(ExplorerUi, PresetsPanelListsThumbnailsOpensAndSaves) {
     if (entry.thumbnail) state.thumbnailTextures[entry.path] = name++;
   click("header/Presets");
   // The click's request is read by the window loop in the frame it was made; do what it does.
-  const auto& rect = item("preset/lorenz-heart");
-  ImGuiIO& io = ImGui::GetIO();
-  moveTo(rect.centerX(), rect.centerY());
-  io.MouseDown[0] = true;
-  frame();
-  io.MouseDown[0] = false;
-  ImGui::NewFrame();
-  app::explorerUiFrame(state);
-  ImGui::Render();
+  clickForRequest("preset/lorenz-heart");
   ASSERT_TRUE(state.requests.open.has_value());
   EXPECT_EQ(state.requests.open->filename(), "lorenz-heart.json");
   ASSERT_TRUE(app::openFile(state, *state.requests.open));
@@ -387,14 +390,7 @@ TEST_F(ExplorerUi, PresetsPanelListsThumbnailsOpensAndSaves) {
   // Save as: the name box and the button ask the window loop, which owns the pixels.
   std::snprintf(state.saveName, sizeof state.saveName, "My heart");
   frame();
-  const auto& save = item("preset/Save as");
-  moveTo(save.centerX(), save.centerY());
-  io.MouseDown[0] = true;
-  frame();
-  io.MouseDown[0] = false;
-  ImGui::NewFrame();
-  app::explorerUiFrame(state);
-  ImGui::Render();
+  clickForRequest("preset/Save as");
   ASSERT_TRUE(state.requests.saveAs.has_value());
   const auto saved = library.saveAs(state.scene, *state.requests.saveAs, {});
   EXPECT_TRUE(std::filesystem::exists(saved));
