@@ -9,6 +9,7 @@
 #include <exception>
 
 #include "error.h"
+#include "file_output.h"
 #include "image_io.h"
 
 namespace voxflame::core {
@@ -36,12 +37,7 @@ void writeExr(const std::filesystem::path& path, const ImageRGBA& image, const T
     std::filesystem::remove(temporary, ec);
     throw Error("cannot write '" + path.string() + "': " + e.what());
   }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw Error("cannot write '" + path.string() + "': " + ec.message());
-  }
+  moveIntoPlace(temporary, path);
 }
 
 ImageRGBA readExr(const std::filesystem::path& path) {

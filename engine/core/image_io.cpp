@@ -1,4 +1,5 @@
 #include "image_io.h"
+#include "file_output.h"
 
 #include <png.h>
 
@@ -103,12 +104,7 @@ void writePng(const std::filesystem::path& path, const ImageRGBA& image, int bit
       throw Error("cannot write '" + path.string() + "': " + (reason.empty() ? "disk full?" : reason));
     }
   }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary);
-    throw Error("cannot write '" + path.string() + "': " + ec.message());
-  }
+  moveIntoPlace(temporary, path);
 }
 
 namespace {

@@ -1,4 +1,5 @@
 #include "nrrd.h"
+#include "file_output.h"
 
 #include <cstdio>
 #include <memory>
@@ -45,12 +46,7 @@ void writeNrrdMask(const std::filesystem::path& path, const InsideMask& mask) {
       throw Error("cannot write '" + path.string() + "': disk full?");
     }
   }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw Error("cannot write '" + path.string() + "': could not move it into place");
-  }
+  moveIntoPlace(temporary, path);
 }
 
 }  // namespace voxflame::core

@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "error.h"
+#include "file_output.h"
 #include "volume_export.h"
 
 namespace voxflame::core {
@@ -62,12 +63,7 @@ void writeVdbVolume(const std::filesystem::path& path, const VolumeSnapshot& sna
     std::filesystem::remove(temporary, ec);
     throw Error("cannot write '" + path.string() + "': " + e.what());
   }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw Error("cannot write '" + path.string() + "': could not move it into place");
-  }
+  moveIntoPlace(temporary, path);
 }
 
 }  // namespace voxflame::core

@@ -1,4 +1,5 @@
 #include "volume_export.h"
+#include "file_output.h"
 
 #include <cmath>
 #include <cstdio>
@@ -86,12 +87,7 @@ void writeNrrdVolume(const std::filesystem::path& path, const VolumeSnapshot& sn
       throw Error("cannot write '" + path.string() + "': disk full?");
     }
   }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw Error("cannot write '" + path.string() + "': could not move it into place");
-  }
+  moveIntoPlace(temporary, path);
 }
 
 }  // namespace voxflame::core
