@@ -126,6 +126,7 @@ void lockFits(core::Scene& scene) {
     transform.lockFit = true;
     transform.lockedCenter = prepared.automaticFit.center;
     transform.lockedScale = prepared.automaticFit.scale;
+    transform.lockedAxisScale = prepared.automaticFit.axisScale;
   }
 }
 

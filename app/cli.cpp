@@ -36,7 +36,7 @@ usage:
   voxflame render [PRESET.json|IMAGE.png] -o OUT.png|OUT.exr|OUT.vdb|OUT.nrrd [--width W] [--height H]
                   [--samples S] [--points N] [--grid R] [--bit-depth 8|16] [--time SECONDS]
                   [--camera-azimuth DEG] [--camera-elevation DEG] [--threads T]
-                  [--progress-fd N]
+                  [--progress-fd N] [--method volume|points] [--oversample 1-4] [--stats]
       Render a still headless (no display needed). A PNG carries its preset: rendering
       it again reproduces it. EXR is linear 32-bit float. VDB and NRRD hold the volume
       itself (normalised density and colour, in the mesh's coordinates) for other renderers. --progress-fd N writes lines
@@ -59,7 +59,7 @@ usage:
                 [--method winding-number|exact-winding-number|parity]
       Write the mesh's inside mask (N voxels along its longest axis, 32-1024, default 256)
       as an NRRD volume in the mesh's own coordinates.
-  voxflame bench [accumulate|mask|raymarch|explorer|export] [--json]
+  voxflame bench [accumulate|mask|raymarch|explorer|export|quality] [--method volume|points] [--json]
       Measure performance (Release build).
   voxflame --help | --version
 )";
@@ -138,7 +138,7 @@ int writeVolume(const core::Scene& scene, const StillOptions& options, const std
 }  // namespace
 
 int renderCommand(const std::vector<std::string>& args) {
-  Arguments arguments(args, 2);
+  Arguments arguments(args, 2, {"--stats"});
   const auto output = arguments.take("-o", "--output");
   StillOptions options;
   options.width = static_cast<int>(arguments.integer("--width", 1280, 1, 65536));
@@ -159,6 +159,12 @@ int renderCommand(const std::vector<std::string>& args) {
   if (bitDepth != 8 && bitDepth != 16) throw UsageError("--bit-depth must be 8 or 16");
   const int progressFd = static_cast<int>(arguments.integer("--progress-fd", -1, 0, 1 << 20));
   checkProgressFd(progressFd);
+  const auto method = arguments.take("--method");
+  if (method && *method != "volume" && *method != "points")
+    throw UsageError("--method must be 'volume' or 'points', not '" + *method + "'");
+  const auto oversample = arguments.take("--oversample");
+  const int oversampleValue = static_cast<int>(arguments.integer("--oversample", 1, 1, 4));
+  const bool printStats = arguments.flag("--stats");
   arguments.finish(1);
   if (!output) throw UsageError("render needs an output file: -o OUT.png, OUT.exr, OUT.vdb or OUT.nrrd");
   const std::string extension = std::filesystem::path(*output).extension().string();
@@ -178,6 +184,8 @@ int renderCommand(const std::vector<std::string>& args) {
   if (grid) scene.gridResolution = gridResolution;
   if (azimuth) scene.camera.azimuthDeg = azimuthDeg;
   if (elevation) scene.camera.elevationDeg = elevationDeg;
+  if (method) scene.render.method = *method == "points" ? core::RenderMethod::Points : core::RenderMethod::Volume;
+  if (oversample) scene.render.oversample = oversampleValue;
   options.linearOutput = extension == ".exr";
   // Render exactly what the image will store: values pass through their JSON form first (colours
   // become hex), so rendering the image's preset again gives the same pixels.
@@ -225,10 +233,13 @@ int renderCommand(const std::vector<std::string>& args) {
     core::writeExr(*output, result.image, stillMetadata(scene, result));
   else
     core::writePng(*output, result.image, bitDepth, stillMetadata(scene, result));
-  std::printf("wrote %s (%d×%d, %d samples, %llu points inside, %.2f s accumulating, %.2f s rendering on %s)\n",
-              output->c_str(), options.width, options.height, scene.render.samples,
-              static_cast<unsigned long long>(result.stats.points), result.accumulateSeconds, result.renderSeconds,
-              result.renderer.c_str());
+  std::printf(
+      "wrote %s (%d×%d, %s method, %d samples, %llu points inside, pattern covers %.0f%% of the mesh, %.2f s "
+      "accumulating, %.2f s rendering on %s)\n",
+      output->c_str(), options.width, options.height, std::string(core::toString(scene.render.method)).c_str(),
+      scene.render.samples, static_cast<unsigned long long>(result.stats.points), 100.0 * result.coverage,
+      result.accumulateSeconds, result.renderSeconds, result.renderer.c_str());
+  if (printStats) std::printf("stats %s\n", stillMetadata(scene, result).at("voxflame:stats").c_str());
   // The image is complete on disk: an interruption that came too late to stop it is not a failure.
   return 0;
 }

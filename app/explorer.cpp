@@ -259,12 +259,12 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
         target.samples = 0;  // new content: start refining the image afresh
       }
       state.metrics.uploadMs = millisecondsSince(uploadStart);
-      // The shadow volume follows the volume, the light and the brightness (extinction). It is
+      // The shadow volume follows the volume and the light. It is
       // computed on a thread of its own (tens of milliseconds at 256³) and uploaded when ready.
       const core::RenderSettingsDoc& render = state.scene.render;
-      const std::string shadowKey =
-          std::to_string(renderer.uploadedVersion()) + "/" + std::to_string(render.lightAzimuthDeg) + "/" +
-          std::to_string(render.lightElevationDeg) + "/" + std::to_string(state.scene.tone.brightness);
+      const std::string shadowKey = std::to_string(renderer.uploadedVersion()) + "/" +
+                                    std::to_string(render.lightAzimuthDeg) + "/" +
+                                    std::to_string(render.lightElevationDeg);
       if (shadowJob.valid() && shadowJob.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
         renderer.uploadShadow(shadowJob.get(), kShadowDownsample);
         target.samples = 0;
@@ -272,9 +272,9 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       if (render.lighting && renderer.hasVolume() && !uploadInProgress && !shadowJob.valid() &&
           shadowKey != lastShadowKey) {
         const glm::dvec3 light = core::lightDirection(render.lightAzimuthDeg, render.lightElevationDeg);
-        shadowJob = std::async(std::launch::async, [volume = shown, light, brightness = state.scene.tone.brightness] {
+        shadowJob = std::async(std::launch::async, [volume = shown, light] {
           core::ShadowVolume shadow;
-          core::computeShadowVolume(*volume, light, brightness, kShadowDownsample, shadow);
+          core::computeShadowVolume(*volume, light, core::kAbsorptionPerDensity, kShadowDownsample, shadow);
           return shadow;
         });
         lastShadowKey = shadowKey;
@@ -294,7 +294,6 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
         // Anything that changes what a ray sees restarts the sample average; tone alone does not.
         core::Scene marchInputs = state.scene;
         marchInputs.tone = core::ToneMapSettings{};
-        marchInputs.tone.brightness = state.scene.tone.brightness;
         marchInputs.tone.opacity = state.scene.tone.opacity;
         marchInputs.layers.clear();
         const std::string view = core::sceneToJson(marchInputs) + std::to_string(width) + "x" + std::to_string(height) +

@@ -387,6 +387,13 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
   }
   if (ImGui::TreeNode("Placement")) {
     slider(state, scope, "scale", layer.transform.scale, 0.1, 4.0, ImGuiSliderFlags_Logarithmic);
+    int fit = static_cast<int>(layer.transform.fit);  // FitMode's order: contain, cover, stretch
+    if (ImGui::Combo("fit", &fit, "contain\0cover\0stretch\0")) layer.transform.fit = static_cast<core::FitMode>(fit);
+    probe(state, scope + "fit");
+    if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+      ImGui::SetTooltip(
+          "contain: fits the shape's middle axis; cover: fills every axis (the mesh carves it); "
+          "stretch: scales each axis to the shape");
     double rotation[3] = {layer.transform.rotationDeg.x, layer.transform.rotationDeg.y, layer.transform.rotationDeg.z};
     const double minDeg = -180.0, maxDeg = 180.0;
     if (ImGui::SliderScalarN("rotation", ImGuiDataType_Double, rotation, 3, &minDeg, &maxDeg, "%.0f°"))
@@ -526,12 +533,34 @@ void renderSection(ExplorerState& state) {
   slider(state, "tone/", "exposure", tone.exposure, -5.0, 5.0);
   slider(state, "tone/", "contrast", tone.contrast, 0.2, 3.0);
   slider(state, "tone/", "opacity", tone.opacity, 0.0, 1.0);
+  slider(state, "tone/", "estimator radius", tone.estimatorRadius, 0.0, 20.0);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("density estimation: blur radius in pixels where few points fell; 0 turns it off");
+  slider(state, "tone/", "estimator minimum", tone.estimatorMinimum, 0.0, 10.0);
+  slider(state, "tone/", "estimator curve", tone.estimatorCurve, 0.05, 2.0);
   const glm::vec3 srgb = core::linearToSrgb(tone.background);
   float background[3] = {srgb.r, srgb.g, srgb.b};
   if (ImGui::ColorEdit3("background", background))
     tone.background = core::srgbToLinear(glm::vec3(background[0], background[1], background[2]));
   core::RenderSettingsDoc& render = state.scene.render;
   slider(state, "render/", "step (voxels)", render.stepVoxels, 0.1, 2.0);
+  int method = static_cast<int>(render.method);
+  if (ImGui::Combo("still method", &method, "volume\0points\0"))
+    render.method = static_cast<core::RenderMethod>(method);
+  probe(state, "render/method");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "how Export and the command line render stills: volume ray-marches the grid; points projects "
+        "every point into the image (pixel-fine filaments). The view always previews with volume.");
+  int oversample = render.oversample;
+  if (ImGui::SliderInt("oversample", &oversample, 1, 4)) render.oversample = oversample;
+  slider(state, "render/", "filter radius", render.filterRadius, 0.0, 3.0);
+  if (render.method == core::RenderMethod::Points) {
+    slider(state, "render/", "lens aperture", render.dofAperture, 0.0, 0.5);
+    slider(state, "render/", "focus distance", render.dofFocusDistance, 0.0, 10.0);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("in bounding-sphere radii from the eye; 0 focuses on the target");
+    slider(state, "render/", "fog", render.fog, 0.0, 5.0);
+  }
   ImGui::Checkbox("lighting", &render.lighting);
   probe(state, "render/lighting");
   if (render.lighting) {
@@ -638,6 +667,8 @@ void exportSection(ExplorerState& state) {
   if (ImGui::SliderScalar("M points", ImGuiDataType_Double, &millions, &minPoints, &maxPoints, "%.1f",
                           ImGuiSliderFlags_Logarithmic))
     settings.points = static_cast<std::uint64_t>(millions * 1e6);
+  ImGui::TextColored(kDimColor, "method: %s (Render panel)",
+                     std::string(core::toString(state.scene.render.method)).c_str());
   int format = static_cast<int>(settings.format);
   if (ImGui::Combo("format", &format, "PNG 8-bit\0PNG 16-bit\0EXR (linear float)\0"))
     settings.format = static_cast<ExportFormat>(format);

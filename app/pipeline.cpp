@@ -11,6 +11,8 @@
 
 #include "core/camera.h"
 #include "core/error.h"
+#include "core/flame_image.h"
+#include "core/point_renderer.h"
 #include "core/packed_volume.h"
 #include "core/shadow_volume.h"
 #include "core/mask_cache.h"
@@ -74,7 +76,8 @@ void reportAccumulation(const StillOptions& options, const core::AccumulatorStat
 
 AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& shape, const StillOptions& options) {
   AccumulatedVolume result;
-  const std::uint64_t target = options.points ? options.points : scene.points;
+  std::uint64_t target = options.points ? options.points : scene.points;
+  if (scene.render.method == core::RenderMethod::Points) target = std::min(target, kGridPointsForPointsMethod);
   const auto start = std::chrono::steady_clock::now();
   core::Accumulator accumulator(shape.mask, options.threads);
   accumulator.setTargetPoints(target);
@@ -107,6 +110,8 @@ struct FrameRenderer::Impl {
   const core::PackedVolume* volume = nullptr;
   const SceneShape* shape = nullptr;
   bool meshUploaded = false;
+  std::uint64_t points = 0;
+  int threads = 0;
 };
 
 FrameRenderer::FrameRenderer() : impl_(std::make_unique<Impl>()) {}
@@ -123,11 +128,22 @@ void FrameRenderer::setVolume(const core::PackedVolume& volume, const SceneShape
   impl_->shape = &shape;
 }
 
+void FrameRenderer::setPointsPass(std::uint64_t points, int threads) {
+  impl_->points = points;
+  impl_->threads = threads;
+}
+
 core::ImageRGBA FrameRenderer::render(const core::Scene& scene, int width, int height, bool linearOutput,
                                       const std::function<void(double)>& progress) {
+  return renderWithStats(scene, width, height, linearOutput, progress).image;
+}
+
+FrameRenderer::Rendered FrameRenderer::renderWithStats(const core::Scene& scene, int width, int height,
+                                                       bool linearOutput, const std::function<void(double)>& progress) {
   Impl& d = *impl_;
   if (!d.volume || !d.shape) throw core::Error("no volume to render");
-  if (scene.render.meshDisplay != core::MeshDisplay::Off && !d.meshUploaded) {
+  // The mesh is always uploaded: its silhouette measures how much of it the pattern covers.
+  if (!d.meshUploaded) {
     d.renderer.setMesh(d.shape->mesh);
     d.meshUploaded = true;
   }
@@ -135,7 +151,7 @@ core::ImageRGBA FrameRenderer::render(const core::Scene& scene, int width, int h
     core::ShadowVolume shadow;
     core::computeShadowVolume(*d.volume,
                               core::lightDirection(scene.render.lightAzimuthDeg, scene.render.lightElevationDeg),
-                              scene.tone.brightness, kShadowDownsample, shadow);
+                              core::kAbsorptionPerDensity, kShadowDownsample, shadow);
     d.renderer.uploadShadow(shadow, kShadowDownsample);
   }
   gl::RenderSettings settings;
@@ -143,7 +159,32 @@ core::ImageRGBA FrameRenderer::render(const core::Scene& scene, int width, int h
                                       static_cast<double>(width) / static_cast<double>(height));
   settings.tone = scene.tone;
   settings.render = scene.render;
-  return gl::renderToImage(d.renderer, settings, width, height, linearOutput, gl::kDefaultMaxTile, progress);
+  const int oversample = std::clamp(scene.render.oversample, 1, 4);
+  core::DensityImage density;
+  core::MeshOverlay mesh;
+  if (scene.render.method == core::RenderMethod::Points) {
+    core::PointsPassOptions points;
+    points.points = d.points;
+    points.threads = d.threads;
+    points.progress = progress;
+    density = core::projectScenePoints(scene, d.shape->mask, *d.volume, settings.camera, width * oversample,
+                                       height * oversample, points);
+    mesh = gl::renderMeshOverlay(d.renderer, settings, width, height);
+  } else {
+    gl::MarchedImage marched = gl::marchImage(d.renderer, settings, width, height, gl::kDefaultMaxTile, progress);
+    density = std::move(marched.density);
+    mesh = std::move(marched.mesh);
+  }
+  core::FinishSettings finish;
+  finish.tone = scene.tone;
+  finish.oversample = oversample;
+  finish.filterRadius = scene.render.filterRadius;
+  finish.linearOutput = linearOutput;
+  core::FinishedImage finished = core::finishImage(density, finish, &mesh);
+  Rendered result;
+  result.coverage = core::silhouetteCoverage(finished, mesh);
+  result.image = std::move(finished.image);
+  return result;
 }
 
 StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
@@ -163,6 +204,7 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   FrameRenderer renderer;
   result.renderer = renderer.rendererName();
   renderer.setVolume(volume, shape);
+  renderer.setPointsPass(options.points, options.threads);
   // Between sub-samples a cancelled render stops and a progress bar moves.
   std::function<void(double)> renderProgress;
   if (options.cancel || options.stage)
@@ -171,7 +213,10 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
       if (options.stage) options.stage(StillStage::Rendering, fraction);
     };
   if (options.stage) options.stage(StillStage::Rendering, 0.0);
-  result.image = renderer.render(scene, options.width, options.height, options.linearOutput, renderProgress);
+  FrameRenderer::Rendered rendered =
+      renderer.renderWithStats(scene, options.width, options.height, options.linearOutput, renderProgress);
+  result.image = std::move(rendered.image);
+  result.coverage = rendered.coverage;
   result.renderSeconds = secondsSince(renderStart);
   return result;
 }
@@ -180,6 +225,7 @@ core::TextChunks stillMetadata(const core::Scene& scene, const StillResult& resu
   std::ostringstream stats;
   stats << "{\"points\":" << result.stats.points << ",\"iterations\":" << result.stats.iterations
         << ",\"accumulate_seconds\":" << result.accumulateSeconds << ",\"render_seconds\":" << result.renderSeconds
+        << ",\"method\":\"" << core::toString(scene.render.method) << "\",\"coverage\":" << result.coverage
         << ",\"version\":\"" << kVersion << "\"}";
   // A preset inside an image must find its mesh from wherever the image goes.
   core::Scene stored = scene;

@@ -54,8 +54,9 @@ struct StillResult {
   core::AccumulatorStats stats;
   double accumulateSeconds = 0.0;
   double renderSeconds = 0.0;
-  std::string renderer;  // GL_RENDERER
-  std::string warning;   // e.g. fewer points landed inside the mesh than asked for
+  std::string renderer;   // GL_RENDERER
+  std::string warning;    // e.g. fewer points landed inside the mesh than asked for
+  double coverage = 0.0;  // share of the mesh's silhouette where the pattern shows (flame_image.h)
 };
 
 // Thrown by renderStill when StillOptions::cancel was raised.
@@ -70,12 +71,15 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options);
 
 // The first half of a still: the scene's pattern accumulated into its grid until the scene's
 // point count (or options.points) lies inside the mesh. Honours options.cancel and .progress.
+// For the points method the grid only gives depth (transmittance and shadows), so it takes at
+// most kGridPointsForPointsMethod points; the points pass projects the full count.
 struct AccumulatedVolume {
   core::VolumeSnapshot snapshot;
   core::AccumulatorStats stats;
   double seconds = 0.0;
   std::string warning;  // e.g. fewer points landed inside the mesh than asked for
 };
+inline constexpr std::uint64_t kGridPointsForPointsMethod = 40'000'000;
 AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& shape, const StillOptions& options);
 
 // The second half: draws accumulated volumes headless. It keeps one GL context and the uploaded
@@ -89,9 +93,17 @@ class FrameRenderer {
 
   // The volume (and the shape it was accumulated in) later render() calls draw.
   void setVolume(const core::PackedVolume& volume, const SceneShape& shape);
-  // `scene`'s camera, tone and render settings (samples, mesh overlay, lighting).
-  // `progress` (may be empty) gets the fraction done after each tile's sub-sample; it may throw
-  // to stop the render.
+  // For the points method: how many points to project (0: the scene's count) on how many threads.
+  void setPointsPass(std::uint64_t points, int threads);
+  // `scene`'s camera, tone and render settings (method, samples, oversample, mesh overlay,
+  // lighting). `progress` (may be empty) gets the fraction done (after each tile's sub-sample, or
+  // as points are projected); it may throw to stop the render.
+  struct Rendered {
+    core::ImageRGBA image;
+    double coverage = 0.0;  // share of the mesh's silhouette where the pattern shows
+  };
+  Rendered renderWithStats(const core::Scene& scene, int width, int height, bool linearOutput,
+                           const std::function<void(double)>& progress = {});
   core::ImageRGBA render(const core::Scene& scene, int width, int height, bool linearOutput,
                          const std::function<void(double)>& progress = {});
   const std::string& rendererName() const;

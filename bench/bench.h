@@ -12,6 +12,7 @@ namespace voxflame::bench {
 struct BenchOptions {
   bool json = false;
   std::string meshFolder;  // where bunny.obj, dragon.ply, ... are
+  std::string method;      // --method volume|points (export), empty: the benchmark's default
 };
 
 struct Benchmark {
@@ -29,5 +30,6 @@ void benchRaymarch(const BenchOptions& options);    // bench_raymarch.cpp
 void benchExport(const BenchOptions& options);      // bench_export.cpp
 void benchMask(const BenchOptions& options);        // bench_mask.cpp
 void benchExplorer(const BenchOptions& options);    // bench_explorer.cpp
+void benchQuality(const BenchOptions& options);     // bench_quality.cpp
 
 }  // namespace voxflame::bench

@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/camera.h"
+#include "core/flame_image.h"
 #include "core/scene_io.h"
 #include "gl/headless_context.h"
 #include "gl/volume_renderer.h"
@@ -95,4 +96,73 @@ TEST(HeadlessRender, LookingStraightDownIsNotBlack) {
   for (int y = 0; y < 64; ++y)
     for (int x = 0; x < 64; ++x) brightest = std::max(brightest, luminance(result.image.at(x, y)));
   EXPECT_GT(brightest, 0.2f);
+}
+
+namespace {
+
+// The default scene without the mesh's outline, whose lines (a pixel or two wide at any size)
+// would change the mean luminance with the image size.
+core::Scene smallScene(core::RenderMethod method) {
+  core::Scene scene = core::defaultScene();
+  scene.render.method = method;
+  scene.render.meshDisplay = core::MeshDisplay::Off;
+  return scene;
+}
+
+double meanLuminanceOf(const core::Scene& scene, std::uint64_t points, int width = 160, int height = 100) {
+  app::StillOptions options;
+  options.width = width;
+  options.height = height;
+  options.points = points;
+  return core::meanLuminance(app::renderStill(scene, options).image, scene.tone.gamma);
+}
+
+}  // namespace
+
+// The flame tone map works on each pixel's summed density relative to the mesh's mean, so the
+// same scene keeps its brightness when the point count, the grid, the image size or the samples
+// change (flame_image.h).
+TEST(HeadlessRender, BrightnessDoesNotDependOnPointsGridSizeOrSamples) {
+  for (core::RenderMethod method : {core::RenderMethod::Volume, core::RenderMethod::Points}) {
+    const core::Scene scene = smallScene(method);
+    const double reference = meanLuminanceOf(scene, 4'000'000);
+    ASSERT_GT(reference, 0.005);
+    const std::string name(core::toString(method));
+    EXPECT_NEAR(meanLuminanceOf(scene, 40'000'000), reference, 0.1 * reference) << name << ": 10× the points";
+    core::Scene finer = scene;
+    finer.gridResolution = 2 * scene.gridResolution;
+    EXPECT_NEAR(meanLuminanceOf(finer, 4'000'000), reference, 0.1 * reference) << name << ": twice the grid";
+    EXPECT_NEAR(meanLuminanceOf(scene, 4'000'000, 320, 200), reference, 0.1 * reference) << name << ": twice the size";
+    core::Scene sampled = scene;
+    sampled.render.samples = 4;
+    sampled.render.oversample = 2;
+    EXPECT_NEAR(meanLuminanceOf(sampled, 4'000'000), reference, 0.1 * reference) << name << ": samples, oversample";
+  }
+}
+
+TEST(HeadlessRender, BothMethodsAgreeOnBrightnessAndReportCoverage) {
+  app::StillOptions options;
+  options.width = 160;
+  options.height = 100;
+  options.points = 4'000'000;
+  const app::StillResult volume = app::renderStill(smallScene(core::RenderMethod::Volume), options);
+  const app::StillResult points = app::renderStill(smallScene(core::RenderMethod::Points), options);
+  const double a = core::meanLuminance(volume.image, 2.2), b = core::meanLuminance(points.image, 2.2);
+  EXPECT_NEAR(b, a, 0.35 * a);
+  EXPECT_GT(volume.coverage, 0.3);
+  EXPECT_GT(points.coverage, 0.3);
+  EXPECT_LE(volume.coverage, 1.0);
+}
+
+TEST(HeadlessRender, APatternThatFillsItsMeshCoversMoreOfIt) {
+  core::Scene full = core::defaultScene();
+  core::Scene small = full;
+  small.layers[0].transform.scale = 0.3;  // shrunk into the middle of the bunny
+  app::StillOptions options;
+  options.width = 160;
+  options.height = 100;
+  options.points = 3'000'000;
+  const double filling = app::renderStill(full, options).coverage;
+  const double shrunk = app::renderStill(small, options).coverage;
+  EXPECT_GT(filling, shrunk + 0.2);
 }

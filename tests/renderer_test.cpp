@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/camera.h"
+#include "core/flame_image.h"
 #include "core/packed_volume.h"
 #include "gl/headless_context.h"
 #include "gl/volume_renderer.h"
@@ -36,7 +37,7 @@ core::PackedVolume uniformCube(std::uint8_t red = 255, std::uint8_t green = 255,
   return volume;
 }
 
-// Tone mapping that passes opacity straight through: pixel = 1 − transmittance for white.
+// Tone mapping without gamma, threshold or density estimation: pixel = brightness · log(1 + k2 D).
 core::ToneMapSettings neutralTone(double brightness) {
   core::ToneMapSettings tone;
   tone.brightness = brightness;
@@ -48,7 +49,14 @@ core::ToneMapSettings neutralTone(double brightness) {
   tone.exposure = 0.0;
   tone.opacity = 1.0;
   tone.background = glm::vec3(0.0f);
+  tone.estimatorRadius = 0.0;
   return tone;
+}
+
+// The marched column density D at the image's centre (flame_image.h).
+double centreDensity(gl::VolumeRenderer& renderer, const gl::RenderSettings& settings, int size = 16) {
+  const gl::MarchedImage marched = gl::marchImage(renderer, settings, size, size);
+  return marched.density.at(size / 2, size / 2)[3];
 }
 
 gl::RenderSettings frontView(const core::GridGeometry& grid, core::ToneMapSettings tone) {
@@ -80,24 +88,37 @@ class Renderer : public ::testing::Test {
 
 }  // namespace
 
-TEST_F(Renderer, UniformCubeMatchesAnalyticOpacity) {
+TEST_F(Renderer, UniformCubeMatchesAnalyticColumnDensity) {
+  // A uniform cube: density relative to the mean is 1 everywhere and the ray crosses one grid
+  // side, so D = ∫ T dD = (1 − e^(−a)) / a with absorption a, and exactly 1 with none.
   const core::PackedVolume cube = uniformCube();
   renderer.upload(cube);
-  for (double brightness : {0.005, 0.02, 0.05}) {
-    const auto settings = frontView(cube.geometry, neutralTone(brightness));
-    const core::ImageRGBA image = gl::renderToImage(renderer, settings, 16, 16, true);
-    // Every voxel is at the densest level, so extinction is `brightness` per voxel over 32 voxels.
-    const double expected = 1.0 - std::exp(-brightness * kCube);
-    EXPECT_NEAR(centre(image), expected, 0.02 * expected) << "brightness " << brightness;
+  for (double opacity : {0.0, 0.25, 1.0}) {
+    auto tone = neutralTone(1.0);
+    tone.opacity = opacity;
+    const double a = opacity * core::kAbsorptionPerDensity;
+    const double expected = a > 0.0 ? (1.0 - std::exp(-a)) / a : 1.0;
+    EXPECT_NEAR(centreDensity(renderer, frontView(cube.geometry, tone)), expected, 0.01 * expected)
+        << "opacity " << opacity;
   }
+}
+
+TEST_F(Renderer, FinishedPixelIsTheLogOfTheColumnDensity) {
+  const core::PackedVolume cube = uniformCube();
+  renderer.upload(cube);
+  auto tone = neutralTone(0.2);
+  tone.opacity = 0.0;
+  const core::ImageRGBA image = gl::renderToImage(renderer, frontView(cube.geometry, tone), 16, 16, true);
+  EXPECT_NEAR(centre(image), core::logDensity(1.0, tone), 0.01 * core::logDensity(1.0, tone));
 }
 
 TEST_F(Renderer, NearPlaneCutsThroughTheVolume) {
   const core::PackedVolume cube = uniformCube();
   renderer.upload(cube);
-  const double brightness = 0.03;
-  auto settings = frontView(cube.geometry, neutralTone(brightness));
-  const double whole = centre(gl::renderToImage(renderer, settings, 16, 16, true));
+  auto tone = neutralTone(1.0);
+  tone.opacity = 0.0;
+  auto settings = frontView(cube.geometry, tone);
+  const double whole = centreDensity(renderer, settings);
   // Put the near plane through the cube's centre: rays see only its far half.
   core::CameraSettings camera;
   camera.azimuthDeg = 0.0;
@@ -106,9 +127,9 @@ TEST_F(Renderer, NearPlaneCutsThroughTheVolume) {
   camera.orthoHeight = 0.5;
   camera.nearClip = camera.distance;
   settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.0);
-  const double half = centre(gl::renderToImage(renderer, settings, 16, 16, true));
-  EXPECT_NEAR(whole, 1.0 - std::exp(-brightness * kCube), 0.02);
-  EXPECT_NEAR(half, 1.0 - std::exp(-brightness * kCube / 2), 0.02);
+  const double half = centreDensity(renderer, settings);
+  EXPECT_NEAR(whole, 1.0, 0.01);
+  EXPECT_NEAR(half, 0.5, 0.01);
 }
 
 TEST_F(Renderer, LookingStraightUpAndDownSeesTheVolume) {
@@ -119,7 +140,7 @@ TEST_F(Renderer, LookingStraightUpAndDownSeesTheVolume) {
     camera.elevationDeg = elevation;
     gl::RenderSettings settings;
     settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.0);
-    settings.tone = neutralTone(0.05);
+    settings.tone = neutralTone(3.0);
     EXPECT_GT(centre(gl::renderToImage(renderer, settings, 16, 16)), 0.5) << "elevation " << elevation;
   }
 }
@@ -127,7 +148,7 @@ TEST_F(Renderer, LookingStraightUpAndDownSeesTheVolume) {
 TEST_F(Renderer, ToneParametersMovePixelsTheExpectedWay) {
   const core::PackedVolume cube = uniformCube(255, 80, 40);
   renderer.upload(cube);
-  const auto base = neutralTone(0.01);
+  const auto base = neutralTone(2.0);
   auto value = [&](const core::ToneMapSettings& tone) {
     return luminance(gl::renderToImage(renderer, frontView(cube.geometry, tone), 8, 8).at(4, 4));
   };
@@ -139,7 +160,7 @@ TEST_F(Renderer, ToneParametersMovePixelsTheExpectedWay) {
     change(tone);
     return value(tone);
   };
-  EXPECT_GT(with([](auto& t) { t.brightness = 0.03; }), reference);
+  EXPECT_GT(with([](auto& t) { t.brightness = 4.0; }), reference);
   EXPECT_GT(with([](auto& t) { t.exposure = 1.0; }), reference);
   EXPECT_LT(with([](auto& t) { t.exposure = -1.0; }), reference);
   EXPECT_GT(with([](auto& t) { t.gamma = 2.2; }), reference);     // gamma lifts partial opacity
@@ -156,7 +177,7 @@ TEST_F(Renderer, ToneParametersMovePixelsTheExpectedWay) {
 TEST_F(Renderer, HighlightPowerDesaturatesOverexposedColour) {
   const core::PackedVolume cube = uniformCube(255, 80, 40);
   renderer.upload(cube);
-  auto tone = neutralTone(0.5);
+  auto tone = neutralTone(3.0);
   tone.exposure = 1.0;  // red overexposed, green and blue not
   tone.highlightPower = -1.0;
   const core::ImageRGBA clipped = gl::renderToImage(renderer, frontView(cube.geometry, tone), 8, 8);
@@ -175,8 +196,9 @@ TEST_F(Renderer, TiledAndSampledRendersMatchOneTile) {
   camera.elevationDeg = 20.0;
   gl::RenderSettings settings;
   settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.5);
-  settings.tone = neutralTone(0.05);
+  settings.tone = neutralTone(0.5);
   settings.tone.gamma = 2.2;
+  settings.tone.estimatorRadius = 9.0;  // density estimation must not see tile seams either
   settings.render.samples = 3;
   const core::ImageRGBA whole = gl::renderToImage(renderer, settings, 60, 40, false, 2048);
   const core::ImageRGBA tiled = gl::renderToImage(renderer, settings, 60, 40, false, 16);
@@ -211,7 +233,7 @@ TEST_F(Renderer, EmptyBricksAreSkippedWithoutChangingTheImage) {
   camera.orthoHeight = 1.0;
   gl::RenderSettings settings;
   settings.camera = core::orbitCamera(camera, snapshot.geometry.box(), 1.0);
-  settings.tone = neutralTone(2.0);
+  settings.tone = neutralTone(40.0);
   const core::ImageRGBA image = gl::renderToImage(renderer, settings, 110, 110);
   float brightest = 0.0f;
   for (int y = 0; y < 110; ++y)

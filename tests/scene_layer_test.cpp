@@ -21,7 +21,7 @@ TEST(Scene, ColourModesPalettesAndTransformRoundTrip) {
   const std::string text = R"({"mesh":{"path":"m.obj"},"layers":[
     {"attractor":"lorenz84","color":{"mode":"axis","palette":"ember","axis":[1,0,0],"scale":2}},
     {"attractor":"rossler","weight":0.5,"color":{"mode":"time","gradient":["#000000","#ff0000","#ffffff"],"period":500},
-     "transform":{"scale":0.8,"rotation_deg":[10,20,30],"offset":[0.1,0,-0.1],"locked_fit":{"center":[1,2,3],"scale":4.5}}}
+     "transform":{"scale":0.8,"rotation_deg":[10,20,30],"offset":[0.1,0,-0.1],"fit":"stretch","locked_fit":{"center":[1,2,3],"scale":4.5,"axis_scale":[0.5,1,2]}}}
   ]})";
   const Scene scene = sceneFromJson(text, "t.json");
   ASSERT_EQ(scene.layers.size(), 2u);
@@ -37,10 +37,15 @@ TEST(Scene, ColourModesPalettesAndTransformRoundTrip) {
   EXPECT_TRUE(t.lockFit);
   EXPECT_EQ(t.lockedCenter, glm::dvec3(1, 2, 3));
   EXPECT_EQ(t.lockedScale, 4.5);
+  EXPECT_EQ(t.fit, FitMode::Stretch);
+  EXPECT_EQ(t.lockedAxisScale, glm::dvec3(0.5, 1, 2));
+  EXPECT_EQ(scene.layers[0].transform.fit, FitMode::Contain);
 
   const Scene again = sceneFromJson(sceneToJson(scene), "again.json");
   EXPECT_EQ(sceneToJson(again), sceneToJson(scene));
   EXPECT_EQ(again.layers[1].transform.lockedScale, 4.5);
+  EXPECT_EQ(again.layers[1].transform.fit, FitMode::Stretch);
+  EXPECT_EQ(again.layers[1].transform.lockedAxisScale, glm::dvec3(0.5, 1, 2));
   EXPECT_EQ(again.layers[0].color.palette, "ember");
   EXPECT_EQ(again.layers[0].color.scale, 2.0);
 }
@@ -58,5 +63,9 @@ TEST(Scene, BadColourAndTransformValuesAreNamed) {
   EXPECT_NE(errorOf(layer(R"("transform":{"scale":-1})")).find("transform.scale"), std::string::npos);
   EXPECT_NE(errorOf(layer(R"("transform":{"rotation_deg":[1,2]})")).find("three numbers"), std::string::npos);
   EXPECT_NE(errorOf(layer(R"("transform":{"locked_fit":{"center":[0,0,0]}})")).find("scale"), std::string::npos);
+  EXPECT_NE(errorOf(layer(R"("transform":{"fit":"squeeze"})")).find("contain, cover, stretch"), std::string::npos);
+  EXPECT_NE(errorOf(layer(R"("transform":{"locked_fit":{"center":[0,0,0],"scale":1,"axis_scale":[1,0,1]}})"))
+                .find("axis_scale"),
+            std::string::npos);
   EXPECT_NE(errorOf(layer(R"("transform":{"sclae":2})")).find("not a known key"), std::string::npos);
 }

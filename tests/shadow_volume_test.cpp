@@ -23,8 +23,10 @@ PackedVolume uniformVolume(int n) {
 TEST(ShadowVolume, AxisLightFollowsBeerLambert) {
   const PackedVolume volume = uniformVolume(32);
   ShadowVolume shadow;
-  const double sigma = 0.05;  // every voxel is at the densest level: extinction 0.05 per voxel
-  computeShadowVolume(volume, {0.0, 1.0, 0.0}, sigma, 1, shadow);
+  // Uniform density is the mean density (relative 1) and a voxel is 1/32 of the grid's side, so
+  // an extinction of 1.6 per unit of column density is 0.05 per voxel.
+  const double sigma = 0.05;
+  computeShadowVolume(volume, {0.0, 1.0, 0.0}, sigma * 32.0, 1, shadow);
   ASSERT_EQ(shadow.size, glm::ivec3(32));
   for (int j = 0; j < 32; ++j) {
     // Light enters at the top (y = 32) and reaches the centre of cell j after 32 − j − 0.5 voxels.

@@ -98,8 +98,10 @@ void validateLayer(const PatternLayer& layer, const AttractorInfo& info) {
   if (!finiteVector(t.rotationDeg) || !finiteVector(t.offset) ||
       glm::any(glm::greaterThan(glm::abs(t.offset), glm::dvec3(100.0))))
     throw Error("the transform rotation and offset of " + name + " must be finite (offset within ±100)");
-  if (t.lockFit && (!finiteVector(t.lockedCenter) || !std::isfinite(t.lockedScale) || t.lockedScale <= 0.0))
-    throw Error("the locked fit of " + name + " needs a finite centre and a positive scale");
+  if (t.lockFit &&
+      (!finiteVector(t.lockedCenter) || !std::isfinite(t.lockedScale) || t.lockedScale <= 0.0 ||
+       !finiteVector(t.lockedAxisScale) || glm::any(glm::lessThanEqual(t.lockedAxisScale, glm::dvec3(0.0)))))
+    throw Error("the locked fit of " + name + " needs a finite centre and positive scales");
   const ColorSettings& c = layer.color;
   if (!std::isfinite(c.period) || c.period < 1.0 || c.period > 1e9)
     throw Error("the colour period of " + name + " must be 1 to 1e9 steps");
@@ -133,7 +135,7 @@ void insideBounds(const InsideMask& mask, glm::dvec3& low, glm::dvec3& high) {
 }  // namespace
 
 AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const glm::dvec3& high,
-                          const InsideMask& mask) {
+                          const InsideMask& mask, FitMode mode) {
   // Scale from the percentile box, centre on the median: for lopsided attractors (Rössler's flat
   // disc with rare spikes) the dense part then sits in the middle of the shape, not at its edge.
   // (Both are smooth in the samples; a max() of the two half-boxes would jump between sides.)
@@ -143,11 +145,28 @@ AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const
   const glm::dvec3 ratiosVector = (maskHigh - maskLow) / extent;
   std::array<double, 3> ratios{ratiosVector.x, ratiosVector.y, ratiosVector.z};
   std::sort(ratios.begin(), ratios.end());
-  // Scale so the attractor covers the shape along its middle axis (at most 2.5× over along its
-  // widest); what spills over the surface is cut away by the mask, which is what makes the pattern
-  // take the mesh's form. The thinnest axis is ignored: for flat attractors its extent is the
-  // least stable statistic (Rössler's z), and it would make the scale jump.
-  return {median, std::min(ratios[1], 2.5 * ratios[0])};
+  switch (mode) {
+    case FitMode::Contain:
+      // Scale so the attractor covers the shape along its middle axis (at most 2.5× over along its
+      // widest); what spills over the surface is cut away by the mask, which is what makes the
+      // pattern take the mesh's form. The thinnest axis is ignored: for flat attractors its extent
+      // is the least stable statistic (Rössler's z), and it would make the scale jump.
+      return {median, std::min(ratios[1], 2.5 * ratios[0]), glm::dvec3(1.0)};
+    case FitMode::Cover:
+      // The largest ratio, so the robust box reaches the shape's box along every axis and the mask
+      // carves the form out of it. A flat attractor's thin axis would ask for a huge blow-up that
+      // shows only its middle, so the scale stops at 3× the middle axis's ratio.
+      return {median, std::min(ratios[2], 3.0 * ratios[1]), glm::dvec3(1.0)};
+    case FitMode::Stretch: {
+      // One ratio per attractor axis; the uniform part is their geometric mean and the rest the
+      // shape. Each axis stays within 8× of the mean so a flat attractor is thickened, not turned
+      // into noise by an absurd stretch of its least stable extent.
+      const double mean = std::cbrt(ratios[0] * ratios[1] * ratios[2]);
+      const glm::dvec3 shape = glm::clamp(ratiosVector / mean, glm::dvec3(1.0 / 8.0), glm::dvec3(8.0));
+      return {median, mean, shape};
+    }
+  }
+  return {median, std::min(ratios[1], 2.5 * ratios[0]), glm::dvec3(1.0)};
 }
 
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, std::uint64_t seed) {
@@ -220,13 +239,14 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
   glm::dvec3 median, unused;
   percentileBounds(samples, 0.5, median, unused);
   prepared.center = median;
-  prepared.automaticFit = automaticFit(low, median, high, mask);
+  prepared.automaticFit = automaticFit(low, median, high, mask, layer.transform.fit);
 
   glm::dvec3 maskLow, maskHigh;
   insideBounds(mask, maskLow, maskHigh);
   const LayerTransform& t = layer.transform;
   prepared.fit.attractorCenter = t.lockFit ? t.lockedCenter : prepared.automaticFit.center;
   prepared.fit.scale = (t.lockFit ? t.lockedScale : prepared.automaticFit.scale) * t.scale;
+  prepared.fit.axisScale = t.lockFit ? t.lockedAxisScale : prepared.automaticFit.axisScale;
   prepared.fit.rotation = rotationFromDegrees(t.rotationDeg);
   const glm::dvec3 gridSize(mask.geometry.size);
   prepared.fit.gridCenter = 0.5 * (maskLow + maskHigh) + t.offset * std::max({gridSize.x, gridSize.y, gridSize.z});
@@ -270,8 +290,9 @@ struct OrbitBatch {
   std::vector<std::int32_t> voxel;                      // this step's voxel, -1 when none
   std::vector<std::int32_t> colorIndex;                 // this step's palette entry (0..255)
   std::vector<std::int32_t> escaped;
-  std::vector<std::int32_t> brick;  // this step's 4×4×4 brick of the grid, 0 when none                    // 32-bit
-                                    // like voxel: one vector width
+  std::vector<std::int32_t> brick;   // this step's 4×4×4 brick of the grid, 0 when none (32-bit like voxel)
+  std::vector<std::uint32_t> noise;  // xorshift32 state per orbit for the deposit jitter (never 0)
+  std::vector<float> gx, gy, gz;     // this step's exact grid position (point sink only)
   SplitMix64 rng{0};
   std::uint64_t generation = ~std::uint64_t{0};
 };
@@ -283,15 +304,44 @@ struct SplatBuffer {
   std::vector<std::uint64_t> sorted;
   std::vector<std::size_t> slabStart;
   std::size_t count = 0;
+  // With a point sink: accepted points collected for the next consume call (allocated on first use).
+  std::vector<float> x, y, z;
+  std::vector<std::uint32_t> rgb;
+  std::size_t pointCount = 0;
   void reset(std::size_t slabs) {
     entries.assign(kFlushThreshold + kOrbitsPerBatch, 0);
     sorted.assign(entries.size(), 0);
     slabStart.assign(slabs + 1, 0);
     count = 0;
   }
+  void reservePoints() {
+    if (!x.empty()) return;
+    for (auto* v : {&x, &y, &z}) v->assign(kFlushThreshold + kOrbitsPerBatch, 0.0f);
+    rgb.assign(kFlushThreshold + kOrbitsPerBatch, 0);
+  }
 };
 
 namespace {
+
+// What the classify pass produces besides the colour: the voxel of the point (Nearest), of the
+// point moved by a random offset in [-0.5, 0.5) per axis (Jittered: a stochastic trilinear
+// deposit), or the exact voxel plus the continuous position for a point sink (Points).
+enum class Output { Nearest, Jittered, Points };
+
+// One xorshift32 step (Marsaglia 2003): shifts and xors only, so it vectorises across orbits
+// alongside the 32-bit voxel arrays; for a jitter its quality is ample.
+[[gnu::always_inline]] inline std::uint32_t xorshift32(std::uint32_t r) {
+  r ^= r << 13;
+  r ^= r >> 17;
+  r ^= r << 5;
+  return r;
+}
+
+// The top 24 bits as a uniform offset in [-0.5, 0.5): through int32 (not uint32) so the
+// conversion to double is one vector instruction.
+[[gnu::always_inline]] inline double jitterOffset(std::uint32_t r) {
+  return static_cast<double>(static_cast<std::int32_t>(r >> 8)) * 0x1p-24 - 0.5;
+}
 
 // What the classify pass needs of a layer, flattened into plain numbers.
 struct LayerKernel {
@@ -301,6 +351,9 @@ struct LayerKernel {
   std::int32_t sizeX, sizeXY;
   std::int32_t bricksX, bricksXY;
   double escapeRadius;
+  // 1 for flows, 0 for maps: a flow's point is placed at a uniformly random spot of its last step,
+  // so the orbit is drawn as the continuous curve it samples instead of a dotted stroboscope.
+  double alongStep;
   double colorScale;  // mode value × colorScale = gradient position (before clamping to [0, 1])
   double inversePeriod;
   double axis[3];
@@ -310,7 +363,10 @@ struct LayerKernel {
 
 LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
   LayerKernel k{};
-  const glm::dmat3 m = layer.fit.rotation * layer.fit.scale;
+  const glm::dvec3 axisScale = layer.fit.axisScale * layer.fit.scale;
+  const glm::dmat3 m =
+      layer.fit.rotation * glm::dmat3(glm::dvec3(axisScale.x, 0.0, 0.0), glm::dvec3(0.0, axisScale.y, 0.0),
+                                      glm::dvec3(0.0, 0.0, axisScale.z));
   const glm::dvec3 o = layer.fit.gridCenter - m * layer.fit.attractorCenter;
   for (int r = 0; r < 3; ++r) {
     for (int c = 0; c < 3; ++c) k.m[3 * r + c] = m[c][r];
@@ -322,6 +378,7 @@ LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
   k.bricksX = (grid.size.x + 3) / 4;
   k.bricksXY = k.bricksX * ((grid.size.y + 3) / 4);
   k.escapeRadius = layer.escapeRadius;
+  k.alongStep = layer.info && layer.info->kind == AttractorKind::Flow ? 1.0 : 0.0;
   const ColorSettings& color = layer.layer.color;
   const glm::dvec3 axis = glm::normalize(color.axis);
   for (int r = 0; r < 3; ++r) {
@@ -359,13 +416,15 @@ LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
   const LayerKernel &kernel, const double *__restrict x, const double *__restrict y, const double *__restrict z,  \
       double *__restrict px, double *__restrict py, double *__restrict pz, double *__restrict sx,                 \
       double *__restrict sy, double *__restrict sz, std::int32_t *__restrict age, std::int32_t *__restrict voxel, \
-      std::int32_t *__restrict colorIndex, std::int32_t *__restrict escaped, std::int32_t *__restrict brick
-#define VOXFLAME_CLASSIFY_ARGS kernel, x, y, z, px, py, pz, sx, sy, sz, age, voxel, colorIndex, escaped, brick
+      std::int32_t *__restrict colorIndex, std::int32_t *__restrict escaped, std::int32_t *__restrict brick,      \
+      std::uint32_t *__restrict noise, float *__restrict gxOut, float *__restrict gyOut, float *__restrict gzOut
+#define VOXFLAME_CLASSIFY_ARGS \
+  kernel, x, y, z, px, py, pz, sx, sy, sz, age, voxel, colorIndex, escaped, brick, noise, gxOut, gyOut, gzOut
 
 // One pass over a batch after it advanced: escape test, colour value, voxel index. Bitwise &
 // (not &&) and selects keep the body one basic block so it vectorises across orbits; the colour
 // mode is a template argument so the per-point work has no switch.
-template <ColorMode kMode>
+template <ColorMode kMode, Output kOut>
 [[gnu::always_inline]] inline void classifyBody(VOXFLAME_CLASSIFY_PARAMS) {
   const LayerKernel k = kernel;  // a local copy cannot alias the arrays written below
   for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
@@ -394,15 +453,49 @@ template <ColorMode kMode>
     t = std::min(std::max(t, 0.0), 255.0);
     colorIndex[i] = static_cast<std::int32_t>(t);
 
-    const double gx = k.m[0] * xi + k.m[1] * yi + k.m[2] * zi + k.o[0];
-    const double gy = k.m[3] * xi + k.m[4] * yi + k.m[5] * zi + k.o[1];
-    const double gz = k.m[6] * xi + k.m[7] * yi + k.m[8] * zi + k.o[2];
-    const bool inGrid = finite & (gx >= 0.0) & (gy >= 0.0) & (gz >= 0.0) & (gx < k.gridSize[0]) & (gy < k.gridSize[1]) &
-                        (gz < k.gridSize[2]);
+    // Where on its last step the point is drawn (flows; 0 for maps and the nearest deposit): a
+    // stroboscopic sample of a flow locks onto fixed phases and shows as dots; a uniform spot
+    // along each step draws the trajectory itself, with density proportional to time spent.
+    double along = 0.0;
+    if constexpr (kOut != Output::Nearest) {
+      const std::uint32_t r = xorshift32(noise[i]);
+      noise[i] = r;
+      along = k.alongStep * (jitterOffset(r) + 0.5);
+    }
+    const double qx = xi - along * dx, qy = yi - along * dy, qz = zi - along * dz;
+    const double gx = k.m[0] * qx + k.m[1] * qy + k.m[2] * qz + k.o[0];
+    const double gy = k.m[3] * qx + k.m[4] * qy + k.m[5] * qz + k.o[1];
+    const double gz = k.m[6] * qx + k.m[7] * qy + k.m[8] * qz + k.o[2];
+    double jx = gx, jy = gy, jz = gz;
+    if constexpr (kOut == Output::Jittered) {
+      // Flooring x + u with u uniform in [-0.5, 0.5) lands in voxel i with probability equal to
+      // the tent weight max(0, 1 - |x - (i + 0.5)|): on average the trilinear splat, at the cost
+      // of one voxel add. A point that jitters out of the grid counts as outside.
+      std::uint32_t r = xorshift32(noise[i]);
+      jx += jitterOffset(r);
+      r = xorshift32(r);
+      jy += jitterOffset(r);
+      r = xorshift32(r);
+      jz += jitterOffset(r);
+      noise[i] = r;
+    }
+    const bool inGrid = finite & (jx >= 0.0) & (jy >= 0.0) & (jz >= 0.0) & (jx < k.gridSize[0]) & (jy < k.gridSize[1]) &
+                        (jz < k.gridSize[2]);
     // Converting only in-range values keeps the float→int conversion defined for NaN and huge ones.
-    const auto vi = static_cast<std::int32_t>(inGrid ? gx : 0.0);
-    const auto vj = static_cast<std::int32_t>(inGrid ? gy : 0.0);
-    const auto vk = static_cast<std::int32_t>(inGrid ? gz : 0.0);
+    const auto vi = static_cast<std::int32_t>(inGrid ? jx : 0.0);
+    const auto vj = static_cast<std::int32_t>(inGrid ? jy : 0.0);
+    const auto vk = static_cast<std::int32_t>(inGrid ? jz : 0.0);
+    if constexpr (kOut == Output::Points) {
+      // Rounding to float may carry a point just below a voxel's upper face onto it; keep it in
+      // [i, i + 1) so the position agrees with the voxel whose mask flag accepted it.
+      const float fx = static_cast<float>(inGrid ? gx : 0.0), fy = static_cast<float>(inGrid ? gy : 0.0),
+                  fz = static_cast<float>(inGrid ? gz : 0.0);
+      const auto ux = static_cast<float>(vi + 1), uy = static_cast<float>(vj + 1), uz = static_cast<float>(vk + 1);
+      constexpr float kBelow = 1.0f - 0x1p-24f;
+      gxOut[i] = fx < ux ? fx : ux * kBelow;
+      gyOut[i] = fy < uy ? fy : uy * kBelow;
+      gzOut[i] = fz < uz ? fz : uz * kBelow;
+    }
     // -1: outside the grid (counted as outside); -2: not a point yet (transient or escaped).
     const bool settled = finite & (age[i] > kTransientSteps);
     voxel[i] = settled ? (inGrid ? vi + k.sizeX * vj + k.sizeXY * vk : -1) : -2;
@@ -420,14 +513,14 @@ template <ColorMode kMode>
 
 // Built twice: for any x86-64 and for AVX2, picked at run time, so the binary still runs on CPUs
 // without AVX2.
-template <ColorMode kMode>
+template <ColorMode kMode, Output kOut>
 [[gnu::noinline]] void classifyBaseline(VOXFLAME_CLASSIFY_PARAMS) {
-  classifyBody<kMode>(VOXFLAME_CLASSIFY_ARGS);
+  classifyBody<kMode, kOut>(VOXFLAME_CLASSIFY_ARGS);
 }
 #if defined(__x86_64__) && !defined(__AVX2__)
-template <ColorMode kMode>
+template <ColorMode kMode, Output kOut>
 [[gnu::target("avx2"), gnu::noinline]] void classifyAvx2(VOXFLAME_CLASSIFY_PARAMS) {
-  classifyBody<kMode>(VOXFLAME_CLASSIFY_ARGS);
+  classifyBody<kMode, kOut>(VOXFLAME_CLASSIFY_ARGS);
 }
 #endif
 
@@ -437,39 +530,53 @@ using ClassifyFn = void (*)(VOXFLAME_CLASSIFY_PARAMS);
 
 void classifyBatch(ClassifyFn classify, const LayerKernel& kernel, OrbitBatch& b) {
   classify(kernel, b.x.data(), b.y.data(), b.z.data(), b.px.data(), b.py.data(), b.pz.data(), b.sx.data(), b.sy.data(),
-           b.sz.data(), b.age.data(), b.voxel.data(), b.colorIndex.data(), b.escaped.data(), b.brick.data());
+           b.sz.data(), b.age.data(), b.voxel.data(), b.colorIndex.data(), b.escaped.data(), b.brick.data(),
+           b.noise.data(), b.gx.data(), b.gy.data(), b.gz.data());
 }
 
-ClassifyFn classifier(ColorMode mode) {
+template <Output kOut>
+ClassifyFn classifierFor(ColorMode mode) {
 #if defined(__x86_64__) && !defined(__AVX2__)
   if (cpuHasAvx2()) {
     switch (mode) {
       case ColorMode::Speed:
-        return &classifyAvx2<ColorMode::Speed>;
+        return &classifyAvx2<ColorMode::Speed, kOut>;
       case ColorMode::Curvature:
-        return &classifyAvx2<ColorMode::Curvature>;
+        return &classifyAvx2<ColorMode::Curvature, kOut>;
       case ColorMode::Time:
-        return &classifyAvx2<ColorMode::Time>;
+        return &classifyAvx2<ColorMode::Time, kOut>;
       case ColorMode::Axis:
-        return &classifyAvx2<ColorMode::Axis>;
+        return &classifyAvx2<ColorMode::Axis, kOut>;
       case ColorMode::Distance:
-        return &classifyAvx2<ColorMode::Distance>;
+        return &classifyAvx2<ColorMode::Distance, kOut>;
     }
   }
 #endif
   switch (mode) {
     case ColorMode::Speed:
-      return &classifyBaseline<ColorMode::Speed>;
+      return &classifyBaseline<ColorMode::Speed, kOut>;
     case ColorMode::Curvature:
-      return &classifyBaseline<ColorMode::Curvature>;
+      return &classifyBaseline<ColorMode::Curvature, kOut>;
     case ColorMode::Time:
-      return &classifyBaseline<ColorMode::Time>;
+      return &classifyBaseline<ColorMode::Time, kOut>;
     case ColorMode::Axis:
-      return &classifyBaseline<ColorMode::Axis>;
+      return &classifyBaseline<ColorMode::Axis, kOut>;
     case ColorMode::Distance:
-      return &classifyBaseline<ColorMode::Distance>;
+      return &classifyBaseline<ColorMode::Distance, kOut>;
   }
-  return &classifyBaseline<ColorMode::Speed>;
+  return &classifyBaseline<ColorMode::Speed, kOut>;
+}
+
+ClassifyFn classifier(ColorMode mode, Output output) {
+  switch (output) {
+    case Output::Nearest:
+      return classifierFor<Output::Nearest>(mode);
+    case Output::Jittered:
+      return classifierFor<Output::Jittered>(mode);
+    case Output::Points:
+      return classifierFor<Output::Points>(mode);
+  }
+  return classifierFor<Output::Jittered>(mode);
 }
 
 }  // namespace
@@ -545,6 +652,8 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     patternWriters_.fetch_sub(1, std::memory_order_acq_rel);
     layers_ = std::move(prepared);
     seed_ = seed;
+    deposit_ = requestedDeposit_.load();
+    sink_ = requestedSink_.load();
     {
       std::lock_guard problemLock(problemMutex_);
       problem_ = problem;
@@ -569,6 +678,14 @@ void Accumulator::clearCells() {
   const std::uint8_t* inside = mask_->inside.data();
   for (std::size_t v = 0; v < cells_.size(); ++v)
     cells_[v] = detail::GridCell{inside[v] ? 0u : kOutsideBit, 0u, 0u, 0u};
+}
+
+void Accumulator::setDeposit(Deposit deposit) {
+  requestedDeposit_ = deposit;
+}
+
+void Accumulator::setPointSink(PointSink* sink) {
+  requestedSink_ = sink;
 }
 
 void Accumulator::setTargetPoints(std::uint64_t target) {
@@ -619,6 +736,8 @@ void Accumulator::snapshot(VolumeSnapshot& out) const {
   out.version = version_.load(std::memory_order_acquire);
   out.generation = generation_.load(std::memory_order_acquire);
   out.points = points_.load();
+  out.insideVoxels =
+      static_cast<std::uint64_t>(std::count(mask_->inside.begin(), mask_->inside.end(), std::uint8_t{1}));
   float maxDensity = 0.0f;
   for (std::size_t slab = 0; slab < slabCount_; ++slab) {
     // Workers add into a slab only under its mutex, so each slab is copied consistently.
@@ -675,7 +794,7 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
       });
       continue;
     }
-    runBatch(stream, generation_.load(), batches[static_cast<std::size_t>(stream)], splats);
+    runBatch(threadIndex, stream, generation_.load(), batches[static_cast<std::size_t>(stream)], splats);
   }
 }
 
@@ -721,12 +840,24 @@ std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {
   return inside;
 }
 
+std::uint64_t Accumulator::flushPoints(int threadIndex, SplatBuffer& splats) {
+  AcceptedPoints points;
+  points.x = splats.x.data();
+  points.y = splats.y.data();
+  points.z = splats.z.data();
+  points.rgb = splats.rgb.data();
+  points.count = splats.pointCount;
+  sink_->consume(threadIndex, points);
+  splats.pointCount = 0;
+  return points.count;
+}
+
 void Accumulator::waitForPatternChange() const {
   while (patternWriters_.load(std::memory_order_acquire) > 0)
     std::this_thread::sleep_for(std::chrono::microseconds(100));
 }
 
-void Accumulator::runBatch(int stream, std::uint64_t generation, std::vector<OrbitBatch>& batches,
+void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation, std::vector<OrbitBatch>& batches,
                            SplatBuffer& splats) {
   waitForPatternChange();
   std::shared_lock lock(gridMutex_);
@@ -739,6 +870,8 @@ void Accumulator::runBatch(int stream, std::uint64_t generation, std::vector<Orb
   for (const auto& l : layers_) maxWeight = std::max(maxWeight, l.layer.weight);
 
   std::uint64_t iterations = 0, points = 0, outside = 0, escapes = 0;
+  const Output output = sink_ ? Output::Points : deposit_ == Deposit::Nearest ? Output::Nearest : Output::Jittered;
+  if (sink_) splats.reservePoints();
 
   for (std::size_t li = 0; li < layers_.size(); ++li) {
     const PreparedLayer& layer = layers_[li];
@@ -754,6 +887,11 @@ void Accumulator::runBatch(int stream, std::uint64_t generation, std::vector<Orb
       b.colorIndex.assign(kOrbitsPerBatch, 0);
       b.escaped.assign(kOrbitsPerBatch, 0);
       b.brick.assign(kOrbitsPerBatch, 0);
+      // The jitter has its own random numbers, so the orbits are the same whatever the deposit.
+      SplitMix64 noiseSeeds(mixSeed(mixSeed(seed_, 0x6a6974746572ULL), (static_cast<std::uint64_t>(stream) << 8) + li));
+      b.noise.resize(kOrbitsPerBatch);
+      for (auto& n : b.noise) n = static_cast<std::uint32_t>(noiseSeeds.next() >> 32) | 1u;
+      for (auto* v : {&b.gx, &b.gy, &b.gz}) v->assign(kOrbitsPerBatch, 0.0f);
       for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
         const glm::dvec3 s = layer.seeds[b.rng.next() % layer.seeds.size()];
         b.x[i] = b.px[i] = s.x;
@@ -767,7 +905,7 @@ void Accumulator::runBatch(int stream, std::uint64_t generation, std::vector<Orb
     // A layer's weight is its share of the iterations, hence of the density it adds.
     const int steps = std::max(1, static_cast<int>(std::lround(kStepsPerBatch * layer.layer.weight / maxWeight)));
     const LayerKernel kernel = makeKernel(layer, grid);
-    const ClassifyFn classify = classifier(layer.layer.color.mode);
+    const ClassifyFn classify = classifier(layer.layer.color.mode, output);
     std::uint32_t packedPalette[256];
     for (std::size_t c = 0; c < 256; ++c)
       packedPalette[c] = std::uint32_t{layer.palette[c].r} | std::uint32_t{layer.palette[c].g} << 8 |
@@ -776,24 +914,48 @@ void Accumulator::runBatch(int stream, std::uint64_t generation, std::vector<Orb
       advance(params, h, b.x.data(), b.y.data(), b.z.data(), kOrbitsPerBatch);
       classifyBatch(classify, kernel, b);
       iterations += kOrbitsPerBatch;
-      // Branch-free append of every settled point in a brick that touches the mask (a 4×4×4-voxel
-      // bitmap small enough to stay in L1/L2 drops most outside points here); the exact test
-      // happens at the flush, where the voxel's cell (which carries the inside flag) is fetched anyway.
-      const std::uint64_t* bricks = brickBits_.data();
-      std::uint64_t* out = splats.entries.data();
-      std::size_t n = splats.count;
       std::int32_t escapedHere = 0;
-      for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
-        const std::int32_t v = b.voxel[i];
-        out[n] = std::uint64_t{static_cast<std::uint32_t>(v)} |
-                 std::uint64_t{packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])]} << 32;
-        const auto brickIndex = static_cast<std::uint32_t>(b.brick[i]);
-        const bool keep = (v >= 0) & (((bricks[brickIndex / 64] >> (brickIndex % 64)) & 1u) != 0);
-        n += keep ? 1 : 0;
-        outside += ((v >= -1) & !keep) ? 1 : 0;
-        escapedHere += b.escaped[i];
+      if (sink_) {
+        // Points for the sink: the exact test (the voxel's mask flag) here, since no grid cell is
+        // fetched later; branch-free like the grid's append below.
+        const std::uint8_t* inside = mask_->inside.data();
+        float* outX = splats.x.data();
+        float* outY = splats.y.data();
+        float* outZ = splats.z.data();
+        std::uint32_t* outRgb = splats.rgb.data();
+        std::size_t n = splats.pointCount;
+        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
+          const std::int32_t v = b.voxel[i];
+          outX[n] = b.gx[i];
+          outY[n] = b.gy[i];
+          outZ[n] = b.gz[i];
+          outRgb[n] = packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])];
+          const bool keep = (v >= 0) & (inside[v >= 0 ? v : 0] != 0);
+          n += keep ? 1 : 0;
+          outside += ((v >= -1) & !keep) ? 1 : 0;
+          escapedHere += b.escaped[i];
+        }
+        splats.pointCount = n;
+        if (n >= kFlushThreshold) points += flushPoints(threadIndex, splats);
+      } else {
+        // Branch-free append of every settled point in a brick that touches the mask (a 4×4×4-voxel
+        // bitmap small enough to stay in L1/L2 drops most outside points here); the exact test
+        // happens at the flush, where the voxel's cell (which carries the inside flag) is fetched anyway.
+        const std::uint64_t* bricks = brickBits_.data();
+        std::uint64_t* out = splats.entries.data();
+        std::size_t n = splats.count;
+        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
+          const std::int32_t v = b.voxel[i];
+          out[n] = std::uint64_t{static_cast<std::uint32_t>(v)} |
+                   std::uint64_t{packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])]} << 32;
+          const auto brickIndex = static_cast<std::uint32_t>(b.brick[i]);
+          const bool keep = (v >= 0) & (((bricks[brickIndex / 64] >> (brickIndex % 64)) & 1u) != 0);
+          n += keep ? 1 : 0;
+          outside += ((v >= -1) & !keep) ? 1 : 0;
+          escapedHere += b.escaped[i];
+        }
+        splats.count = n;
       }
-      splats.count = n;
       if (escapedHere > 0) [[unlikely]] {
         escapes += static_cast<std::uint64_t>(escapedHere);
         for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
@@ -816,6 +978,7 @@ void Accumulator::runBatch(int stream, std::uint64_t generation, std::vector<Orb
       }
     }
   }
+  if (splats.pointCount > 0) points += flushPoints(threadIndex, splats);
   if (splats.count > 0) {
     const std::uint64_t inside = flushSplats(splats);
     points += inside;

@@ -17,6 +17,7 @@
 #include <array>
 #include <atomic>
 #include <condition_variable>
+#include <cstddef>
 #include <cstdint>
 #include <memory>
 #include <mutex>
@@ -34,14 +35,16 @@
 
 namespace voxflame::core {
 
-// Maps attractor coordinates into grid voxel coordinates: uniform scale about a centre, then the
-// user's rotation, then a move to the grid centre (plus the user's offset).
+// Maps attractor coordinates into grid voxel coordinates: scale about a centre (uniform, times a
+// per-axis factor for a stretch fit), then the user's rotation, then a move to the grid centre
+// (plus the user's offset).
 struct FitTransform {
   glm::dvec3 attractorCenter{0.0};
   double scale = 1.0;          // voxels per attractor unit
+  glm::dvec3 axisScale{1.0};   // per attractor axis, times scale (1 unless the fit stretches)
   glm::dvec3 gridCenter{0.0};  // in voxel units
   glm::dmat3 rotation{1.0};
-  glm::dvec3 apply(glm::dvec3 p) const { return rotation * ((p - attractorCenter) * scale) + gridCenter; }
+  glm::dvec3 apply(glm::dvec3 p) const { return rotation * ((p - attractorCenter) * axisScale * scale) + gridCenter; }
 };
 
 // The automatic part of the fit (before the user transform): robust bounds of a probe sample,
@@ -49,6 +52,7 @@ struct FitTransform {
 struct AutomaticFit {
   glm::dvec3 center{0.0};
   double scale = 1.0;
+  glm::dvec3 axisScale{1.0};  // a stretch fit's shape (geometric mean 1); 1 for contain and cover
 };
 
 // What one layer needs to run, prepared once per generation from a short probe orbit.
@@ -68,9 +72,10 @@ struct PreparedLayer {
   bool bounded = false;                  // the probe orbit stayed finite and bounded
 };
 
-// The automatic fit of robust bounds (low, median and high percentiles) into the mask's inside box.
+// The automatic fit of robust bounds (low, median and high percentiles) into the mask's inside box,
+// the way `mode` asks (scene.h's FitMode).
 AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const glm::dvec3& high,
-                          const InsideMask& mask);
+                          const InsideMask& mask, FitMode mode = FitMode::Contain);
 
 // Samples the layer's attractor and fits it into the mask's grid. Deterministic for a seed.
 // Throws core::Error on parameters that are not finite numbers, absurd steps or transforms.
@@ -85,6 +90,7 @@ struct VolumeSnapshot {
   std::uint64_t version = 0;
   std::uint64_t generation = 0;  // the pattern generation the grid held when copied
   std::uint64_t points = 0;
+  std::uint64_t insideVoxels = 0;  // voxels inside the mask (0: unknown, the occupied ones stand in)
 };
 
 struct AccumulatorStats {
@@ -101,6 +107,31 @@ struct AccumulatorStats {
   bool done = false;    // the target number of points was reached
   std::string problem;  // why nothing accumulates (an escaping attractor), else empty
 };
+
+// One batch of points that landed inside the mask, in grid voxel coordinates (continuous: voxel
+// (i, j, k) spans [i, i+1) × [j, j+1) × [k, k+1)), with their palette colour.
+struct AcceptedPoints {
+  const float* x = nullptr;
+  const float* y = nullptr;
+  const float* z = nullptr;
+  const std::uint32_t* rgb = nullptr;  // linear RGB8 packed r | g << 8 | b << 16
+  std::size_t count = 0;
+};
+
+// Receives every accepted point instead of the grid (a points-to-image renderer projects them).
+class PointSink {
+ public:
+  virtual ~PointSink() = default;
+  // Called by worker thread `thread` (0 ≤ thread < Accumulator::threadCount()); calls with the same
+  // thread index never overlap, calls with different ones run concurrently.
+  virtual void consume(int thread, const AcceptedPoints& points) = 0;
+};
+
+// How a point is added to the grid. Jittered: the voxel coordinate is moved by an independent
+// uniform offset in [-0.5, 0.5) per axis before flooring, so the expected deposit is the trilinear
+// tent around the point (measured from voxel centres) and thin sheets do not alias against the
+// lattice. Nearest: the voxel that contains the point (the old deposit, kept for benchmarks).
+enum class Deposit { Jittered, Nearest };
 
 namespace detail {
 struct GridCell {             // one voxel's sums, together in one 16-byte slot so a splat touches one line
@@ -137,6 +168,14 @@ class Accumulator {
   // Starts a new generation with these layers: the grid is cleared and refinement restarts.
   // Blocks only for the probe of each layer (milliseconds) and the end of a running batch.
   void setPattern(const std::vector<PatternLayer>& layers, std::uint64_t seed);
+  // How points are added to the grid (default Jittered). Takes effect at the next setPattern.
+  void setDeposit(Deposit deposit);
+  // When a sink is set, accepted points go to it instead of the grid (they still count as points
+  // towards the target and in stats). Set it before setPattern; nullptr restores grid deposits.
+  // The sink must outlive the pattern's generation. Positions are exact (never jittered) and the
+  // inside test is the voxel's mask flag. The same seed gives the same set of points whatever the
+  // number of threads (their order and batching may differ).
+  void setPointSink(PointSink* sink);
   // Stop once this many points are inside (0 = refine forever).
   void setTargetPoints(std::uint64_t target);
   // Waits until the target is reached or the pattern cannot accumulate; false on timeout.
@@ -155,8 +194,10 @@ class Accumulator {
  private:
   friend struct SplatBuffer;
   void workerLoop(std::stop_token stop, int threadIndex);
-  void runBatch(int stream, std::uint64_t generation, std::vector<struct OrbitBatch>& batches,
+  void runBatch(int threadIndex, int stream, std::uint64_t generation, std::vector<struct OrbitBatch>& batches,
                 struct SplatBuffer& splats);
+  // Hands a thread's collected points to the sink; returns how many there were.
+  std::uint64_t flushPoints(int threadIndex, struct SplatBuffer& splats);
   bool streamDone(int stream, std::uint64_t target) const;
   bool allStreamsDone(std::uint64_t target) const;
   // Adds a thread's collected splats to the grid; returns how many landed inside the mask.
@@ -176,6 +217,12 @@ class Accumulator {
   mutable std::shared_mutex gridMutex_;  // shared: a batch writing; exclusive: a generation change
   std::vector<PreparedLayer> layers_;    // guarded by gridMutex_
   std::uint64_t seed_ = 1;
+  // What setDeposit / setPointSink asked for, and what the current generation uses (copied by
+  // setPattern under gridMutex_, so a running batch never sees them change).
+  std::atomic<Deposit> requestedDeposit_{Deposit::Jittered};
+  std::atomic<PointSink*> requestedSink_{nullptr};
+  Deposit deposit_ = Deposit::Jittered;  // guarded by gridMutex_
+  PointSink* sink_ = nullptr;            // guarded by gridMutex_
 
   std::atomic<std::uint64_t> generation_{0};
   std::atomic<std::uint64_t> version_{0};

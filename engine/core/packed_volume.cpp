@@ -92,6 +92,8 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
         markBricks(i, j, k);
       }
   out.meanDensity = occupied ? static_cast<float>(densitySum / static_cast<double>(occupied)) : 0.0f;
+  out.insideVoxels = static_cast<double>(snapshot.insideVoxels ? snapshot.insideVoxels : occupied);
+  out.referenceDensity = out.insideVoxels > 0.0 && densitySum > 0.0 ? densitySum / out.insideVoxels : 1.0;
   out.coarseCount = (out.brickCount + (kCoarseBricks - 1)) / kCoarseBricks;
   out.coarseOccupancy.assign(static_cast<std::size_t>(out.coarseCount.x) * out.coarseCount.y * out.coarseCount.z, 0);
   for (int k = 0; k < out.brickCount.z; ++k)

@@ -29,6 +29,10 @@ struct PackedVolume {
   std::vector<std::uint8_t> coarseOccupancy;  // are crossed in a few leaps instead of dozens
   float maxDensity = 0.0f;
   float meanDensity = 0.0f;  // over voxels with any density: the scale of a "typical" voxel
+  // Hits in the grid over the voxels inside the mesh: the mean density a uniformly filled mesh
+  // would have. Densities relative to it do not change with the point count or the grid.
+  double referenceDensity = 1.0;
+  double insideVoxels = 0.0;  // voxels inside the mesh (or, when unknown, those with any density)
   std::uint64_t version = 0;
   std::uint64_t generation = 0;
   std::uint64_t points = 0;

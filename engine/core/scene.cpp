@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 #include <nlohmann/json.hpp>
 
 #include "error.h"
@@ -20,6 +21,10 @@ std::filesystem::path Scene::resolvedMeshPath() const {
   const std::filesystem::path mesh(meshPath);
   if (mesh.is_absolute() || embedded) return mesh;
   return baseDirectory / mesh;
+}
+
+std::string_view toString(RenderMethod method) {
+  return method == RenderMethod::Points ? "points" : "volume";
 }
 
 std::string_view toString(ColorMode mode) {
@@ -42,6 +47,24 @@ ColorMode colorModeFromString(std::string_view name) {
   for (ColorMode mode : {ColorMode::Speed, ColorMode::Curvature, ColorMode::Time, ColorMode::Axis, ColorMode::Distance})
     if (toString(mode) == name) return mode;
   throw Error("is '" + std::string(name) + "'; the known colour modes are: speed, curvature, time, axis, distance");
+}
+
+std::string_view toString(FitMode mode) {
+  switch (mode) {
+    case FitMode::Contain:
+      return "contain";
+    case FitMode::Cover:
+      return "cover";
+    case FitMode::Stretch:
+      return "stretch";
+  }
+  return "contain";
+}
+
+FitMode fitModeFromString(std::string_view name) {
+  for (FitMode mode : {FitMode::Contain, FitMode::Cover, FitMode::Stretch})
+    if (toString(mode) == name) return mode;
+  throw Error("is '" + std::string(name) + "'; the known fit modes are: contain, cover, stretch");
 }
 
 namespace {
@@ -213,6 +236,12 @@ LayerTransform readTransform(ObjectReader& parent, const std::string& key) {
   transform.scale = reader.number("scale", transform.scale, 1e-3, 1e3);
   transform.rotationDeg = readVector(reader, "rotation_deg", transform.rotationDeg, 3600.0);
   transform.offset = readVector(reader, "offset", transform.offset, 100.0);
+  const std::string fit = reader.string("fit", std::string(toString(transform.fit)));
+  try {
+    transform.fit = fitModeFromString(fit);
+  } catch (const Error& e) {
+    reader.fail(e.what(), "fit");
+  }
   if (const json* locked = reader.find("locked_fit")) {
     ObjectReader lockedReader(*locked, parent.source(), reader.keyPath("locked_fit"));
     transform.lockFit = true;
@@ -220,6 +249,9 @@ LayerTransform readTransform(ObjectReader& parent, const std::string& key) {
     if (!locked->contains("scale")) lockedReader.fail("is missing", "scale");
     transform.lockedCenter = readVector(lockedReader, "center", transform.lockedCenter, 1e9);
     transform.lockedScale = lockedReader.number("scale", transform.lockedScale, 1e-12, 1e12);
+    transform.lockedAxisScale = readVector(lockedReader, "axis_scale", transform.lockedAxisScale, 1e12);
+    if (glm::any(glm::lessThan(transform.lockedAxisScale, glm::dvec3(1e-12))))
+      lockedReader.fail("must be three numbers from 1e-12 to 1e12", "axis_scale");
     lockedReader.finish();
   }
   reader.finish();
@@ -452,6 +484,11 @@ Scene sceneFromDocument(const json& document, std::string_view sourceName, bool 
     t.contrast = toneReader.number("contrast", t.contrast, 0.0, 10.0);
     t.opacity = toneReader.number("opacity", t.opacity, 0.0, 100.0);
     t.background = toneReader.color("background", t.background);
+    t.estimatorRadius = toneReader.number("estimator_radius", t.estimatorRadius, 0.0, 50.0);
+    t.estimatorMinimum = toneReader.number("estimator_minimum", t.estimatorMinimum, 0.0, 50.0);
+    t.estimatorCurve = toneReader.number("estimator_curve", t.estimatorCurve, 0.01, 5.0);
+    if (t.estimatorMinimum > t.estimatorRadius && t.estimatorRadius > 0.0)
+      toneReader.fail("must not be larger than 'estimator_radius'", "estimator_minimum");
     toneReader.finish();
   }
   if (const json* camera = root.find("camera")) {
@@ -501,6 +538,23 @@ Scene sceneFromDocument(const json& document, std::string_view sourceName, bool 
     r.lightAzimuthDeg = renderReader.number("light_azimuth_deg", r.lightAzimuthDeg, -3600.0, 3600.0);
     r.lightElevationDeg = renderReader.number("light_elevation_deg", r.lightElevationDeg, -90.0, 90.0);
     r.lightStrength = renderReader.number("light_strength", r.lightStrength, 0.0, 1.0);
+    const std::string method = renderReader.string("method", "volume");
+    if (method == "volume") {
+      r.method = RenderMethod::Volume;
+    } else if (method == "points") {
+      r.method = RenderMethod::Points;
+    } else {
+      renderReader.fail("is '" + method + "'; expected 'volume' or 'points'", "method");
+    }
+    r.oversample = static_cast<int>(renderReader.integer("oversample", r.oversample, 1, 4));
+    r.filterRadius = renderReader.number("filter_radius", r.filterRadius, 0.0, 10.0);
+    if (const json* dof = renderReader.find("dof")) {
+      ObjectReader dofReader(*dof, source, "render.dof");
+      r.dofAperture = dofReader.number("aperture", r.dofAperture, 0.0, 10.0);
+      r.dofFocusDistance = dofReader.number("focus_distance", r.dofFocusDistance, 0.0, 1000.0);
+      dofReader.finish();
+    }
+    r.fog = renderReader.number("fog", r.fog, 0.0, 100.0);
     renderReader.finish();
   }
   scene.seed = static_cast<std::uint64_t>(root.integer("seed", 1, 0, std::int64_t{1} << 53));
@@ -559,9 +613,14 @@ json buildDocument(const Scene& scene, bool complete, bool withAnimation) {
     const LayerTransform& t = layer.transform;
     const LayerTransform none;
     if (complete || t.scale != none.scale || t.rotationDeg != none.rotationDeg || t.offset != none.offset ||
-        t.lockFit) {
+        t.fit != none.fit || t.lockFit) {
       json transform = {{"scale", t.scale}, {"rotation_deg", vector(t.rotationDeg)}, {"offset", vector(t.offset)}};
-      if (t.lockFit) transform["locked_fit"] = {{"center", vector(t.lockedCenter)}, {"scale", t.lockedScale}};
+      if (complete || t.fit != none.fit) transform["fit"] = std::string(toString(t.fit));
+      if (t.lockFit) {
+        transform["locked_fit"] = {{"center", vector(t.lockedCenter)}, {"scale", t.lockedScale}};
+        if (complete || t.lockedAxisScale != none.lockedAxisScale)
+          transform["locked_fit"]["axis_scale"] = vector(t.lockedAxisScale);
+      }
       entry["transform"] = transform;
     }
     layers.push_back(entry);
@@ -576,7 +635,10 @@ json buildDocument(const Scene& scene, bool complete, bool withAnimation) {
                   {"exposure", t.exposure},
                   {"contrast", t.contrast},
                   {"opacity", t.opacity},
-                  {"background", toHexColor(t.background)}};
+                  {"background", toHexColor(t.background)},
+                  {"estimator_radius", t.estimatorRadius},
+                  {"estimator_minimum", t.estimatorMinimum},
+                  {"estimator_curve", t.estimatorCurve}};
   const CameraSettings& c = scene.camera;
   root["camera"] = {{"azimuth_deg", c.azimuthDeg},
                     {"elevation_deg", c.elevationDeg},
@@ -598,7 +660,12 @@ json buildDocument(const Scene& scene, bool complete, bool withAnimation) {
                     {"lighting", r.lighting},
                     {"light_azimuth_deg", r.lightAzimuthDeg},
                     {"light_elevation_deg", r.lightElevationDeg},
-                    {"light_strength", r.lightStrength}};
+                    {"light_strength", r.lightStrength},
+                    {"method", toString(r.method)},
+                    {"oversample", r.oversample},
+                    {"filter_radius", r.filterRadius},
+                    {"dof", {{"aperture", r.dofAperture}, {"focus_distance", r.dofFocusDistance}}},
+                    {"fog", r.fog}};
   root["seed"] = scene.seed;
   root["points"] = scene.points;
   if (!withAnimation) return root;

@@ -48,6 +48,15 @@ struct ColorSettings {
   double scale = 1.0;                  // stretches the normalised value before clamping
 };
 
+// How the automatic fit sizes the attractor's robust (5–95%) box against the mesh's inside box.
+enum class FitMode {
+  Contain,  // uniform scale: covers the shape along its middle axis, at most 2.5× over along the widest
+  Cover,    // uniform scale: covers the shape along every axis (the largest ratio); the mask carves it
+  Stretch,  // a scale per axis: the box matches the shape's on each axis (before the user's rotation)
+};
+std::string_view toString(FitMode mode);
+FitMode fitModeFromString(std::string_view name);  // throws core::Error listing the modes
+
 // Places a layer in the grid on top of the automatic fit: scale about the fitted centre,
 // rotation (degrees about x, then y, then z), offset as a fraction of the grid's longest side.
 // With `lockFit` the automatic fit is replaced by the stored one, so parameter changes (an
@@ -56,9 +65,11 @@ struct LayerTransform {
   double scale = 1.0;
   glm::dvec3 rotationDeg{0.0};
   glm::dvec3 offset{0.0};
+  FitMode fit = FitMode::Contain;
   bool lockFit = false;
-  glm::dvec3 lockedCenter{0.0};  // attractor coordinates mapped to the mask's centre
-  double lockedScale = 1.0;      // voxels per attractor unit
+  glm::dvec3 lockedCenter{0.0};     // attractor coordinates mapped to the mask's centre
+  double lockedScale = 1.0;         // voxels per attractor unit
+  glm::dvec3 lockedAxisScale{1.0};  // per attractor axis, times lockedScale (a stretch fit's shape)
 };
 
 // One attractor filling the volume; several layers share one grid, each with its weight.
@@ -72,18 +83,23 @@ struct PatternLayer {
   LayerTransform transform;
 };
 
-// flam3-style tone mapping, applied in the shader so changing it never restarts accumulation.
-// Names follow flam3 (Draves & Reckase, "The Fractal Flame Algorithm"); see volume_renderer.cpp.
+// flam3-style tone mapping (flame_image.h), applied to each pixel's summed density, so changing it
+// never restarts accumulation. Names follow flam3 (Draves & Reckase, "The Fractal Flame Algorithm").
 struct ToneMapSettings {
-  double brightness = 4.0;  // scales the log-density emission
+  double brightness = 4.0;  // k1: scales the log density
   double gamma = 2.2;
   double gammaThreshold = 0.01;  // below this opacity the gamma curve is linear (no noise boost)
   double vibrancy = 1.0;         // 1: gamma on opacity keeps hues; 0: gamma per channel
   double highlightPower = -1.0;  // < 0 clips overexposed colours; ≥ 0 fades them to white
   double exposure = 0.0;         // stops
   double contrast = 1.0;         // around mid grey, after gamma
-  double opacity = 1.0;          // how strongly dense voxels hide what is behind them
+  double opacity = 1.0;          // how strongly dense regions hide what is behind them
   glm::vec3 background{0.0f};    // linear RGB
+  // Density estimation (flam3's keys): a kernel of estimatorRadius output pixels where one point
+  // fell, narrowing as (hits + 1)^-estimatorCurve, never below estimatorMinimum; radius 0 is off.
+  double estimatorRadius = 9.0;
+  double estimatorMinimum = 0.0;
+  double estimatorCurve = 0.4;
 };
 
 enum class Projection { Perspective, Orthographic };
@@ -105,6 +121,11 @@ struct CameraSettings {
 
 enum class MeshDisplay { Off, Ghost, Silhouette };
 
+// How a still is made: "volume" ray-marches the voxel grid; "points" projects every accepted
+// point into a supersampled screen histogram, dimmed by the camera's transmittance through the grid.
+enum class RenderMethod { Volume, Points };
+std::string_view toString(RenderMethod method);
+
 // How a frame is drawn; none of it restarts accumulation.
 struct RenderSettingsDoc {
   double stepVoxels = 0.5;  // ray-march step as a fraction of a voxel edge
@@ -116,6 +137,14 @@ struct RenderSettingsDoc {
   double lightAzimuthDeg = 45.0;
   double lightElevationDeg = 50.0;
   double lightStrength = 0.8;  // how much shadowed emission is dimmed
+  RenderMethod method = RenderMethod::Volume;
+  int oversample = 1;         // supersampled pixels per output pixel along each axis (1–4)
+  double filterRadius = 0.5;  // flam3's spatial filter, in output pixels
+  // Depth of field (points method): lens radius in bounding-sphere radii (0: pinhole) and the
+  // distance in focus, in radii from the eye (0: the camera's distance to its target).
+  double dofAperture = 0.0;
+  double dofFocusDistance = 0.0;
+  double fog = 0.0;  // points method: dims by exp(-fog · depth behind the front of the grid / grid side)
 };
 
 enum class Interpolation {

@@ -22,11 +22,11 @@ void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, dou
            static_cast<std::size_t>(out.size.x) * (j + static_cast<std::size_t>(out.size.y) * k);
   };
 
-  // Extinction per cell edge: the mean of its voxels' levels on the renderer's log curve.
+  // Extinction per cell edge: the mean of its voxels' densities relative to the mesh's mean
+  // density, per grid side, as the renderer absorbs (flame_image.h): nothing log-scaled per voxel.
   std::vector<float> sigma(cells, 0.0f);
-  const float meanDensity = volume.meanDensity > 0.0f ? volume.meanDensity : 1.0f;
-  const float logNormalizer = 1.0f / std::log1p(std::max(volume.maxDensity, 1.0f) / meanDensity);
-  const float perVoxel = static_cast<float>(extinctionScale);
+  const float toRelative = static_cast<float>(volume.maxDensity / std::max(volume.referenceDensity, 1e-30));
+  const float perVoxel = static_cast<float>(extinctionScale / std::max({g.size.x, g.size.y, g.size.z, 1}));
   const float cellVoxels = static_cast<float>(downsample);
   const float voxelsPerCell = cellVoxels * cellVoxels * cellVoxels;
   for (int k = 0; k < g.size.z; ++k)
@@ -34,9 +34,8 @@ void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, dou
       for (int i = 0; i < g.size.x; ++i) {
         const float normalised = halfToFloat(volume.texels[4 * g.index(i, j, k) + 3]);
         if (normalised <= 0.0f) continue;
-        const float level = std::log1p(normalised * volume.maxDensity / meanDensity) * logNormalizer;
         sigma[cellIndex(i / downsample, j / downsample, k / downsample)] +=
-            level * perVoxel * cellVoxels / voxelsPerCell;
+            normalised * toRelative * perVoxel * cellVoxels / voxelsPerCell;
       }
 
   // Sweep along the axis the light is most aligned with, from the light's side.

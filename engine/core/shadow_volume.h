@@ -18,8 +18,9 @@ struct ShadowVolume {
   std::vector<std::uint8_t> transmittance;  // 255 = fully lit
 };
 
-// `towardLight` need not be normalised. `extinctionScale` is the extinction per voxel of the
-// densest voxel (the tone's brightness); levels follow the renderer's log-density curve.
+// `towardLight` need not be normalised. `extinctionScale` is the extinction per unit of
+// normalised column density (flame_image.h: density relative to the mesh's mean, lengths in grid
+// sides), as the renderer absorbs.
 void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, double extinctionScale, int downsample,
                          ShadowVolume& out);
 

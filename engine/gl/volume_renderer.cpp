@@ -42,11 +42,9 @@ uniform int uBrickSize;
 uniform usampler3D uCoarseOccupancy;  // 1 per group of kCoarseBricks³ bricks with any density
 uniform ivec3 uCoarseCount;
 uniform int uCoarseSize;              // voxels along a coarse brick
-uniform float uMaxDensity;
-uniform float uDensityScale;    // maps raw hits into the log curve
-uniform float uLogNormalizer;   // 1 / log(1 + maxDensity * uDensityScale)
-uniform float uBrightness;
-uniform float uOpacity;
+uniform float uToRelative;      // texture density (a fraction of the densest voxel) → relative to the mesh's mean
+uniform float uStepUnits;       // one step's length in grid sides
+uniform float uAbsorption;      // extinction per unit of column density (tone.opacity × kAbsorptionPerDensity)
 uniform uint uSample;
 uniform ivec2 uPixelOffset;     // this tile's place in the whole image, so jitter ignores tiling
 uniform sampler3D uShadow;      // light transmittance, when lighting is on
@@ -82,9 +80,12 @@ void main() {
   float tEnter = max(max(tLow.x, tLow.y), max(tLow.z, 0.0));
   float tExit = min(min(tHigh.x, tHigh.y), min(tHigh.z, rayLength));
 
+  // Emission–absorption on raw density: D sums the density seen along the ray (relative to the
+  // mesh's mean, per grid side) and radiance the colour it carries; the log and gamma come later,
+  // per pixel (flame_image.h), exactly as flam3 sums hits before it takes the log.
   vec3 radiance = vec3(0.0);
-  float coverage = 1.0;       // product of (1 - alpha): what the pixel's opacity is measured by
-  float transmittance = 1.0;  // what is left to see behind, given uOpacity
+  float columnDensity = 0.0;
+  float transmittance = 1.0;
   if (tExit > tEnter) {
     float stepLength = uStepVoxels * uVoxelSize;
     float t = tEnter + stepLength * hash(uvec3(uvec2(ivec2(gl_FragCoord.xy) + uPixelOffset), uSample));
@@ -122,109 +123,31 @@ void main() {
       float density = textureLod(uDensity, voxel * toTexture, 0.0).r;
       if (density > 0.0) {
         vec4 texel = textureLod(uVolume, voxel * toTexture, 0.0);
-        float level = log(1.0 + density * uMaxDensity * uDensityScale) * uLogNormalizer;
-        float alpha = 1.0 - exp(-level * uBrightness * uStepVoxels);
+        float dD = density * uToRelative * uStepUnits;
         float lit = uLighting ? mix(1.0, textureLod(uShadow, voxel * uShadowScale, 0.0).r, uLightStrength) : 1.0;
-        radiance += transmittance * alpha * lit * (texel.rgb / texel.a);
-        coverage *= 1.0 - alpha;
-        transmittance *= 1.0 - alpha * uOpacity;
-        if (transmittance < 0.002 || coverage < 0.0005 && uOpacity >= 1.0) break;
+        // The step's exact integral for constant density: T (1 − e^(−a dD)) / a, or T dD without absorption.
+        float passed = exp(-uAbsorption * dD);
+        float emitted = (uAbsorption > 0.0 ? transmittance * (1.0 - passed) / uAbsorption : transmittance * dD) * lit;
+        columnDensity += emitted;
+        radiance += emitted * (texel.rgb / max(texel.a, 1e-8));
+        transmittance *= passed;
+        if (transmittance < 0.002) break;
       }
       t += stepLength;
     }
   }
-  fragColor = vec4(radiance, 1.0 - coverage);
+  fragColor = vec4(radiance, columnDensity);
 }
 )";
 
-// flam3's final stage (rect.c), on the marched radiance and opacity of each pixel.
-const char* kResolveShader = R"(#version 430 core
+// Draws a finished image (flame_image.h) into the viewport.
+const char* kBlitShader = R"(#version 430 core
 out vec4 fragColor;
-
-uniform sampler2D uRadiance;
-uniform sampler2D uMeshLayer;
+uniform sampler2D uImage;
 uniform vec4 uViewport;
-uniform int uMeshMode;         // 0 off, 1 ghost, 2 silhouette
-uniform vec3 uMeshColor;       // display-encoded
-uniform float uMeshStrength;
-uniform float uGamma;
-uniform float uGammaThreshold;
-uniform float uVibrancy;
-uniform float uHighlightPower;
-uniform float uExposure;
-uniform float uContrast;
-uniform vec3 uBackground;      // display-encoded
-uniform bool uLinearOutput;
-
-// Gamma on opacity, linear below the threshold so faint noise is not amplified.
-float gammaAlpha(float density, float g, float threshold) {
-  if (density <= 0.0) return 0.0;
-  if (density < threshold) {
-    float fraction = density / threshold;
-    return (1.0 - fraction) * density * pow(threshold, g) / threshold + fraction * pow(density, g);
-  }
-  return pow(density, g);
-}
-
-vec3 rgbToHsv(vec3 c) {
-  vec4 k = vec4(0.0, -1.0 / 3.0, 2.0 / 3.0, -1.0);
-  vec4 p = mix(vec4(c.bg, k.wz), vec4(c.gb, k.xy), step(c.b, c.g));
-  vec4 q = mix(vec4(p.xyw, c.r), vec4(c.r, p.yzx), step(p.x, c.r));
-  float d = q.x - min(q.w, q.y);
-  return vec3(abs(q.z + (q.w - q.y) / (6.0 * d + 1e-10)), d / (q.x + 1e-10), q.x);
-}
-
-vec3 hsvToRgb(vec3 c) {
-  vec3 p = abs(fract(c.xxx + vec3(1.0, 2.0 / 3.0, 1.0 / 3.0)) * 6.0 - 3.0);
-  return c.z * mix(vec3(1.0), clamp(p - 1.0, 0.0, 1.0), c.y);
-}
-
-// Scales colour by ls; with highlight power ≥ 0, overexposed colours keep their brightest channel
-// at 1 and lose saturation instead of clipping to a different hue.
-vec3 scaledColor(vec3 c, float ls, float highlightPower) {
-  float maxChannel = max(c.r, max(c.g, c.b));
-  if (ls <= 0.0 || maxChannel <= 0.0) return vec3(0.0);
-  float maxScaled = ls * maxChannel;
-  if (maxScaled > 1.0 && highlightPower >= 0.0) {
-    float newScale = 1.0 / maxChannel;
-    float saturationKept = pow(newScale / ls, highlightPower);
-    vec3 hsv = rgbToHsv(newScale * c);
-    hsv.y *= saturationKept;
-    return hsvToRgb(hsv);
-  }
-  float blend = maxScaled <= 1.0 ? 1.0 : min(1.0, -highlightPower);
-  return ((1.0 - blend) + blend * ls) * c;
-}
-
 void main() {
   vec2 uv = (gl_FragCoord.xy - uViewport.xy) / uViewport.zw;
-  vec4 accumulated = texture(uRadiance, uv);
-  vec3 c = max(accumulated.rgb, vec3(0.0)) * exp2(uExposure);
-  float density = clamp(accumulated.a, 0.0, 1.0);
-  float g = 1.0 / uGamma;
-  float alpha = gammaAlpha(density, g, uGammaThreshold);
-  float ls = density > 0.0 ? uVibrancy * alpha / density : 0.0;
-  vec3 color = scaledColor(c, ls, uHighlightPower) + (1.0 - uVibrancy) * pow(c, vec3(g));
-  color += (1.0 - min(alpha, 1.0)) * uBackground;
-
-  if (uMeshMode == 1) {
-    color += uMeshStrength * texture(uMeshLayer, uv).rgb;
-  } else if (uMeshMode == 2) {
-    vec2 texel = 1.0 / vec2(textureSize(uMeshLayer, 0));
-    float centre = texture(uMeshLayer, uv).a;
-    float edge = 0.0;
-    for (int dy = -1; dy <= 1; ++dy)
-      for (int dx = -1; dx <= 1; ++dx)
-        edge = max(edge, abs(texture(uMeshLayer, uv + vec2(dx, dy) * texel).a - centre));
-    color = mix(color, uMeshColor, clamp(edge * uMeshStrength * 2.5, 0.0, 1.0));
-  }
-  color = (color - 0.5) * uContrast + 0.5;
-  if (uLinearOutput) {
-    // Undo the display gamma so an EXR holds linear light, highlights above 1 included.
-    fragColor = vec4(pow(max(color, vec3(0.0)), vec3(uGamma)), 1.0);
-  } else {
-    fragColor = vec4(clamp(color, 0.0, 1.0), 1.0);
-  }
+  fragColor = vec4(texture(uImage, uv).rgb, 1.0);
 }
 )";
 
@@ -270,10 +193,6 @@ GLuint makeTexture(GLenum target, GLint filter) {
   return texture;
 }
 
-glm::vec3 displayEncode(glm::vec3 linear, double gamma) {
-  return glm::pow(glm::max(linear, glm::vec3(0.0f)), glm::vec3(static_cast<float>(1.0 / gamma)));
-}
-
 // Sub-pixel offsets of the R2 low-discrepancy sequence, so S samples cover a pixel evenly.
 glm::dvec2 samplePixelOffset(int sampleIndex) {
   if (sampleIndex == 0) return {0.0, 0.0};
@@ -305,10 +224,49 @@ FrameTarget::~FrameTarget() {
   glDeleteTextures(1, &radiance_);
   glDeleteTextures(1, &meshLayer_);
   glDeleteRenderbuffers(1, &meshDepth_);
+  glDeleteTextures(1, &finished_);
+}
+
+core::DensityImage FrameTarget::readDensity() const {
+  core::DensityImage image;
+  image.resize(width_, height_);
+  image.hitsPerUnitDensity = hitsPerUnitDensity_;
+  std::vector<float> rows(image.values.size());
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rows.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  // GL's rows run bottom to top.
+  const std::size_t row = 4 * static_cast<std::size_t>(width_);
+  for (int y = 0; y < height_; ++y)
+    std::copy_n(&rows[static_cast<std::size_t>(height_ - 1 - y) * row], row, image.at(0, y));
+  return image;
+}
+
+core::MeshOverlay FrameTarget::readMeshOverlay(const RenderSettings& settings) const {
+  core::MeshOverlay overlay;
+  overlay.mode = settings.render.meshDisplay;
+  overlay.color = settings.render.meshColor;
+  overlay.strength = settings.render.meshStrength;
+  overlay.width = width_;
+  overlay.height = height_;
+  std::vector<std::uint8_t> rows(4 * static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
+  glBindFramebuffer(GL_FRAMEBUFFER, meshFramebuffer_);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  overlay.rgba.resize(rows.size());
+  const std::size_t row = 4 * static_cast<std::size_t>(width_);
+  for (int y = 0; y < height_; ++y)
+    for (std::size_t i = 0; i < row; ++i)
+      overlay.rgba[static_cast<std::size_t>(y) * row + i] =
+          static_cast<float>(rows[static_cast<std::size_t>(height_ - 1 - y) * row + i]) * (1.0f / 255.0f);
+  return overlay;
 }
 
 void FrameTarget::resize(int width, int height) {
   if (width == width_ && height == height_ && framebuffer_) return;
+  ++revision_;
   width_ = std::max(1, width);
   height_ = std::max(1, height);
   samples = 0;
@@ -344,7 +302,7 @@ void FrameTarget::resize(int width, int height) {
 
 VolumeRenderer::VolumeRenderer()
     : marchProgram_(kFullscreenVertexShader, kMarchShader),
-      resolveProgram_(kFullscreenVertexShader, kResolveShader),
+      blitProgram_(kFullscreenVertexShader, kBlitShader),
       meshProgram_(kMeshVertexShader, kMeshFragmentShader) {
   glGenVertexArrays(1, &vertexArray_);
   volumeTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
@@ -420,7 +378,9 @@ bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
                GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.coarseOccupancy.data());
   coarseCount_ = volume.coarseCount;
   maxDensity_ = volume.maxDensity;
-  meanDensity_ = volume.meanDensity;
+  referenceDensity_ = volume.referenceDensity;
+  insideVoxels_ = volume.insideVoxels;
+  points_ = static_cast<double>(volume.points);
   uploadedVersion_ = std::max<std::uint64_t>(volume.version, 1);
   pending_ = nullptr;
   return true;
@@ -479,6 +439,7 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     target.samples = 1;
+    ++target.revision_;
     return;
   }
   // A running average: sample n replaces 1/(n+1) of what is there.
@@ -502,14 +463,13 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   glUniform1i(p.uniform("uBrickSize"), core::kBrickSize);
   glUniform3i(p.uniform("uCoarseCount"), coarseCount_.x, coarseCount_.y, coarseCount_.z);
   glUniform1i(p.uniform("uCoarseSize"), core::kBrickSize * core::kCoarseBricks);
-  // Like flam3's k2: density is measured against a typical (mean) occupied voxel, so the image
-  // does not change character as points accumulate, and the log keeps sparse and dense visible.
-  const float densityScale = meanDensity_ > 0.0f ? 1.0f / meanDensity_ : 1.0f;
-  glUniform1f(p.uniform("uMaxDensity"), maxDensity_);
-  glUniform1f(p.uniform("uDensityScale"), densityScale);
-  glUniform1f(p.uniform("uLogNormalizer"), 1.0f / std::log1p(std::max(maxDensity_, 1.0f) * densityScale));
-  setUniform(p, "uBrightness", settings.tone.brightness);
-  setUniform(p, "uOpacity", std::clamp(settings.tone.opacity, 0.0, 1.0));
+  // Density relative to the mesh's mean and lengths in grid sides make a pixel's sum independent
+  // of the point count and the grid resolution (flame_image.h).
+  glUniform1f(p.uniform("uToRelative"), static_cast<float>(maxDensity_ / std::max(referenceDensity_, 1e-30)));
+  setUniform(p, "uStepUnits",
+             std::clamp(settings.render.stepVoxels, 0.05, 4.0) /
+                 std::max({geometry_.size.x, geometry_.size.y, geometry_.size.z, 1}));
+  setUniform(p, "uAbsorption", std::max(0.0, settings.tone.opacity) * core::kAbsorptionPerDensity);
   glUniform1ui(p.uniform("uSample"), static_cast<GLuint>(sampleIndex));
   glUniform2i(p.uniform("uPixelOffset"), tile.x, tile.y);
   const bool lighting = settings.render.lighting && hasShadow();
@@ -528,14 +488,18 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   glDisable(GL_BLEND);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   ++target.samples;
+  ++target.revision_;
+  const int fullHeight = tile.w > 0 ? tile.w : height;
+  target.hitsPerUnitDensity_ = core::hitsPerUnitDensity(settings.camera, geometry_, points_, insideVoxels_, fullHeight);
 }
 
-void VolumeRenderer::drawMesh(FrameTarget& target, const RenderSettings& settings, glm::ivec4 tile) {
+void VolumeRenderer::drawMesh(FrameTarget& target, const RenderSettings& settings, glm::ivec4 tile, bool always) {
+  ++target.revision_;
   glBindFramebuffer(GL_FRAMEBUFFER, target.meshFramebuffer_);
   glViewport(0, 0, target.width(), target.height());
   glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  if (settings.render.meshDisplay != core::MeshDisplay::Off && meshIndexCount_ > 0) {
+  if ((always || settings.render.meshDisplay != core::MeshDisplay::Off) && meshIndexCount_ > 0) {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_BLEND);
@@ -557,80 +521,141 @@ void VolumeRenderer::drawMesh(FrameTarget& target, const RenderSettings& setting
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+namespace {
+
+// What a finished image depends on besides the target's content.
+std::string finishKey(const RenderSettings& settings, bool linearOutput, bool withMesh) {
+  const core::ToneMapSettings& t = settings.tone;
+  std::string key;
+  for (double v :
+       {t.brightness, t.gamma, t.gammaThreshold, t.vibrancy, t.highlightPower, t.exposure, t.contrast,
+        static_cast<double>(t.background.r), static_cast<double>(t.background.g), static_cast<double>(t.background.b),
+        t.estimatorRadius, t.estimatorMinimum, t.estimatorCurve, settings.render.filterRadius,
+        settings.render.meshStrength, static_cast<double>(settings.render.meshColor.r),
+        static_cast<double>(settings.render.meshColor.g), static_cast<double>(settings.render.meshColor.b)})
+    key += std::to_string(v) + ",";
+  key += std::to_string(static_cast<int>(settings.render.meshDisplay)) + (linearOutput ? "L" : "D") +
+         (withMesh ? "M" : "-");
+  return key;
+}
+
+core::FinishSettings finishSettings(const RenderSettings& settings, bool linearOutput, int oversample) {
+  core::FinishSettings finish;
+  finish.tone = settings.tone;
+  finish.oversample = oversample;
+  finish.filterRadius = settings.render.filterRadius;
+  finish.linearOutput = linearOutput;
+  return finish;
+}
+
+}  // namespace
+
 void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& settings, glm::ivec4 viewport,
                              bool linearOutput) {
+  const bool withMesh = meshIndexCount_ > 0 && settings.render.meshDisplay != core::MeshDisplay::Off;
+  const std::string key = finishKey(settings, linearOutput, withMesh);
+  if (!target.finished_) target.finished_ = makeTexture(GL_TEXTURE_2D, GL_LINEAR);
+  if (target.finishedRevision_ != target.revision_ || target.finishedKey_ != key) {
+    const core::DensityImage density = target.readDensity();
+    core::MeshOverlay overlay;
+    if (withMesh) overlay = target.readMeshOverlay(settings);
+    const core::FinishedImage finished =
+        core::finishImage(density, finishSettings(settings, linearOutput, 1), withMesh ? &overlay : nullptr);
+    // Rows back to GL's bottom-to-top order.
+    std::vector<float> rows(finished.image.pixels.size());
+    const std::size_t row = 4 * static_cast<std::size_t>(finished.image.width);
+    for (int y = 0; y < finished.image.height; ++y)
+      std::copy_n(finished.image.at(0, finished.image.height - 1 - y), row, &rows[static_cast<std::size_t>(y) * row]);
+    glBindTexture(GL_TEXTURE_2D, target.finished_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, finished.image.width, finished.image.height, 0, GL_RGBA, GL_FLOAT,
+                 rows.data());
+    target.finishedRevision_ = target.revision_;
+    target.finishedKey_ = key;
+  }
   glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
-  const ShaderProgram& p = resolveProgram_;
+  const ShaderProgram& p = blitProgram_;
   glUseProgram(p.id());
-  const core::ToneMapSettings& tone = settings.tone;
   glUniform4f(p.uniform("uViewport"), static_cast<float>(viewport.x), static_cast<float>(viewport.y),
               static_cast<float>(viewport.z), static_cast<float>(viewport.w));
-  const int meshMode = meshIndexCount_ > 0 ? static_cast<int>(settings.render.meshDisplay) : 0;
-  glUniform1i(p.uniform("uMeshMode"), meshMode);
-  setUniform(p, "uMeshColor", displayEncode(settings.render.meshColor, tone.gamma));
-  setUniform(p, "uMeshStrength", settings.render.meshStrength);
-  setUniform(p, "uGamma", tone.gamma);
-  setUniform(p, "uGammaThreshold", tone.gammaThreshold);
-  setUniform(p, "uVibrancy", tone.vibrancy);
-  setUniform(p, "uHighlightPower", tone.highlightPower);
-  setUniform(p, "uExposure", tone.exposure);
-  setUniform(p, "uContrast", tone.contrast);
-  setUniform(p, "uBackground", displayEncode(tone.background, tone.gamma));
-  glUniform1i(p.uniform("uLinearOutput"), linearOutput ? 1 : 0);
-  bindSampler(p, "uRadiance", 0, GL_TEXTURE_2D, target.radiance_);
-  bindSampler(p, "uMeshLayer", 1, GL_TEXTURE_2D, target.meshLayer_);
+  bindSampler(p, "uImage", 0, GL_TEXTURE_2D, target.finished_);
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
-  glActiveTexture(GL_TEXTURE0);
 }
 
-core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
-                              bool linearOutput, int maxTile, const std::function<void(double)>& progress) {
+namespace {
+
+int tileSizeFor(int maxTile) {
   GLint maxRenderbuffer = 0, maxViewport[2] = {0, 0};
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
   glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
-  const int tileSize =
-      std::max(16, std::min({maxTile, static_cast<int>(maxRenderbuffer), maxViewport[0], maxViewport[1]}));
-  if (width <= 0 || height <= 0) throw core::Error("image size must be positive");
+  return std::max(16, std::min({maxTile, static_cast<int>(maxRenderbuffer), maxViewport[0], maxViewport[1]}));
+}
 
-  core::ImageRGBA image;
-  image.width = width;
-  image.height = height;
-  image.pixels.resize(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+// Averages a supersampled overlay down to the output size.
+core::MeshOverlay downsampleOverlay(const core::MeshOverlay& full, int oversample) {
+  if (oversample <= 1) return full;
+  core::MeshOverlay out = full;
+  out.width = full.width / oversample;
+  out.height = full.height / oversample;
+  out.rgba.assign(4 * static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height), 0.0f);
+  const float weight = 1.0f / static_cast<float>(oversample * oversample);
+  for (int y = 0; y < out.height; ++y)
+    for (int x = 0; x < out.width; ++x)
+      for (int j = 0; j < oversample; ++j)
+        for (int i = 0; i < oversample; ++i)
+          for (int c = 0; c < 4; ++c)
+            out.rgba[4 * (static_cast<std::size_t>(y) * out.width + x) + c] +=
+                weight *
+                full.rgba[4 * (static_cast<std::size_t>(y * oversample + j) * full.width + x * oversample + i) + c];
+  return out;
+}
+
+void checkImageSize(int width, int height, int oversample) {
+  if (width <= 0 || height <= 0) throw core::Error("image size must be positive");
+  // Sums, log image and overlay: about 48 bytes per supersampled pixel.
+  const double bytes = 48.0 * width * height * oversample * oversample;
+  const double available = 0.75 * core::physicalMemoryBytes();
+  if (available > 0.0 && bytes > available)
+    throw core::Error("an image of " + std::to_string(width) + "×" + std::to_string(height) + " at oversample " +
+                      std::to_string(oversample) + " needs about " +
+                      std::to_string(static_cast<long long>(bytes / 1e9)) + " GB; lower the size or the oversample");
+}
+
+}  // namespace
+
+MarchedImage marchImage(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height, int maxTile,
+                        const std::function<void(double)>& progress) {
+  const int oversample = std::clamp(settings.render.oversample, 1, 4);
+  checkImageSize(width, height, oversample);
+  const int tileSize = tileSizeFor(maxTile);
+  const int fullWidth = width * oversample, fullHeight = height * oversample;
+  MarchedImage result;
+  result.density.resize(fullWidth, fullHeight);
+  core::MeshOverlay mesh;
+  mesh.mode = settings.render.meshDisplay;
+  mesh.color = settings.render.meshColor;
+  mesh.strength = settings.render.meshStrength;
+  mesh.width = fullWidth;
+  mesh.height = fullHeight;
+  mesh.rgba.assign(4 * static_cast<std::size_t>(fullWidth) * static_cast<std::size_t>(fullHeight), 0.0f);
   const int samples = std::max(1, settings.render.samples);
 
   FrameTarget target;
-  // Freed on every way out, a progress callback that throws (a cancelled export) included.
-  struct OutputTarget {
-    GLuint framebuffer = 0, renderbuffer = 0;
-    OutputTarget() {
-      glGenFramebuffers(1, &framebuffer);
-      glGenRenderbuffers(1, &renderbuffer);
-    }
-    ~OutputTarget() {
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      glDeleteFramebuffers(1, &framebuffer);
-      glDeleteRenderbuffers(1, &renderbuffer);
-    }
-    OutputTarget(const OutputTarget&) = delete;
-    OutputTarget& operator=(const OutputTarget&) = delete;
-  } outputTarget;
-  const GLuint output = outputTarget.framebuffer, outputBuffer = outputTarget.renderbuffer;
-  const auto tilesAcross = static_cast<long long>((width + tileSize - 1) / tileSize);
-  const auto tilesDown = static_cast<long long>((height + tileSize - 1) / tileSize);
+  const auto tilesAcross = static_cast<long long>((fullWidth + tileSize - 1) / tileSize);
+  const auto tilesDown = static_cast<long long>((fullHeight + tileSize - 1) / tileSize);
   const double totalSteps = static_cast<double>(tilesAcross * tilesDown * samples);
   long long stepsDone = 0;
-  std::vector<float> tilePixels;
-  for (int tileY = 0; tileY < height; tileY += tileSize) {
-    for (int tileX = 0; tileX < width; tileX += tileSize) {
-      const int tileWidth = std::min(tileSize, width - tileX);
-      const int tileHeight = std::min(tileSize, height - tileY);
+  for (int tileY = 0; tileY < fullHeight; tileY += tileSize) {
+    for (int tileX = 0; tileX < fullWidth; tileX += tileSize) {
+      const int tileWidth = std::min(tileSize, fullWidth - tileX);
+      const int tileHeight = std::min(tileSize, fullHeight - tileY);
       // GL's rows run bottom to top: this tile's GL origin is measured from the image's bottom.
-      const int glY = height - tileY - tileHeight;
-      const glm::ivec4 tile(tileX, glY, width, height);
+      const int glY = fullHeight - tileY - tileHeight;
+      const glm::ivec4 tile(tileX, glY, fullWidth, fullHeight);
       target.resize(tileWidth, tileHeight);
       target.samples = 0;
       for (int s = 0; s < samples; ++s) {
@@ -641,26 +666,60 @@ core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& se
           progress(static_cast<double>(++stepsDone) / totalSteps);
         }
       }
-      renderer.drawMesh(target, settings, tile);
-
-      glBindRenderbuffer(GL_RENDERBUFFER, outputBuffer);
-      glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA32F, tileWidth, tileHeight);
-      glBindFramebuffer(GL_FRAMEBUFFER, output);
-      glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, outputBuffer);
-      if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-        throw core::Error("could not make an offscreen framebuffer for a " + std::to_string(tileWidth) + "×" +
-                          std::to_string(tileHeight) + " tile");
-      renderer.resolve(target, settings, glm::ivec4(0, 0, tileWidth, tileHeight), linearOutput);
-      tilePixels.resize(4 * static_cast<std::size_t>(tileWidth) * static_cast<std::size_t>(tileHeight));
-      glPixelStorei(GL_PACK_ALIGNMENT, 1);
-      glReadPixels(0, 0, tileWidth, tileHeight, GL_RGBA, GL_FLOAT, tilePixels.data());
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      const std::size_t row = 4 * static_cast<std::size_t>(tileWidth);
+      const core::DensityImage tileDensity = target.readDensity();
+      result.density.hitsPerUnitDensity = tileDensity.hitsPerUnitDensity;
       for (int y = 0; y < tileHeight; ++y)
-        std::copy_n(&tilePixels[static_cast<std::size_t>(tileHeight - 1 - y) * row], row, image.at(tileX, tileY + y));
+        std::copy_n(tileDensity.at(0, y), 4 * static_cast<std::size_t>(tileWidth), result.density.at(tileX, tileY + y));
+      if (renderer.hasMesh()) {
+        renderer.drawMesh(target, settings, tile, true);
+        const core::MeshOverlay tileMesh = target.readMeshOverlay(settings);
+        for (int y = 0; y < tileHeight; ++y)
+          std::copy_n(&tileMesh.rgba[4 * static_cast<std::size_t>(y) * tileWidth],
+                      4 * static_cast<std::size_t>(tileWidth),
+                      &mesh.rgba[4 * (static_cast<std::size_t>(tileY + y) * fullWidth + tileX)]);
+      }
     }
   }
-  return image;
+  result.mesh = downsampleOverlay(mesh, oversample);
+  return result;
+}
+
+core::MeshOverlay renderMeshOverlay(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
+                                    int maxTile) {
+  const int oversample = std::clamp(settings.render.oversample, 1, 4);
+  checkImageSize(width, height, oversample);
+  const int tileSize = tileSizeFor(maxTile);
+  const int fullWidth = width * oversample, fullHeight = height * oversample;
+  core::MeshOverlay mesh;
+  mesh.mode = settings.render.meshDisplay;
+  mesh.color = settings.render.meshColor;
+  mesh.strength = settings.render.meshStrength;
+  mesh.width = fullWidth;
+  mesh.height = fullHeight;
+  mesh.rgba.assign(4 * static_cast<std::size_t>(fullWidth) * static_cast<std::size_t>(fullHeight), 0.0f);
+  FrameTarget target;
+  if (renderer.hasMesh())
+    for (int tileY = 0; tileY < fullHeight; tileY += tileSize)
+      for (int tileX = 0; tileX < fullWidth; tileX += tileSize) {
+        const int tileWidth = std::min(tileSize, fullWidth - tileX);
+        const int tileHeight = std::min(tileSize, fullHeight - tileY);
+        const glm::ivec4 tile(tileX, fullHeight - tileY - tileHeight, fullWidth, fullHeight);
+        target.resize(tileWidth, tileHeight);
+        renderer.drawMesh(target, settings, tile, true);
+        const core::MeshOverlay tileMesh = target.readMeshOverlay(settings);
+        for (int y = 0; y < tileHeight; ++y)
+          std::copy_n(&tileMesh.rgba[4 * static_cast<std::size_t>(y) * tileWidth],
+                      4 * static_cast<std::size_t>(tileWidth),
+                      &mesh.rgba[4 * (static_cast<std::size_t>(tileY + y) * fullWidth + tileX)]);
+      }
+  return downsampleOverlay(mesh, oversample);
+}
+
+core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
+                              bool linearOutput, int maxTile, const std::function<void(double)>& progress) {
+  const MarchedImage marched = marchImage(renderer, settings, width, height, maxTile, progress);
+  core::FinishSettings finish = finishSettings(settings, linearOutput, std::clamp(settings.render.oversample, 1, 4));
+  return core::finishImage(marched.density, finish, &marched.mesh).image;
 }
 
 }  // namespace voxflame::gl

@@ -1,11 +1,13 @@
-// Ray-marches the accumulated voxel grid in a fragment shader and tone-maps the result the way
+// Ray-marches the accumulated voxel grid in a fragment shader, then finishes each pixel the way
 // flam3 does, in two passes:
-//   1. march: emission–absorption between the ray's entry into and exit from the grid box,
-//      log-density emission, a jittered start per pixel, early termination and leaps over empty
+//   1. march: emission–absorption on raw density between the ray's entry into and exit from the
+//      grid box: each pixel sums the density it sees (D) and the colour it carries, dimmed by the
+//      density in front of it. A jittered start per pixel, early termination and leaps over empty
 //      bricks. Sub-samples (jittered rays) are averaged into a float FrameTarget, so the explorer
 //      refines its image over frames and exports average S samples.
-//   2. resolve: gamma with a linear threshold, vibrancy, highlight power, exposure, contrast and
-//      background, drawn into whatever framebuffer is bound. Changing tone never re-marches.
+//   2. resolve: the target's sums go through flame_image.h (log density, density estimation,
+//      spatial filter, gamma, vibrancy, highlight power, background, mesh overlay) and the result
+//      is drawn into whatever framebuffer is bound. Changing tone never re-marches.
 // The same code draws the explorer window and offline exports. Main (GL) thread only.
 #pragma once
 
@@ -13,8 +15,10 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 
 #include "core/camera.h"
+#include "core/flame_image.h"
 #include "core/image_io.h"
 #include "core/mesh.h"
 #include "core/packed_volume.h"
@@ -30,8 +34,9 @@ struct RenderSettings {
   core::RenderSettingsDoc render;
 };
 
-// The float image one view accumulates into (premultiplied radiance + opacity), plus the mesh
-// overlay layer. Sized in pixels; reallocated on resize.
+// The float image one view accumulates into (colour-weighted density + density, flame_image.h's
+// DensityImage on the GL side), plus the mesh overlay layer and the finished image last drawn
+// from them. Sized in pixels; reallocated on resize.
 class FrameTarget {
  public:
   FrameTarget() = default;
@@ -44,11 +49,22 @@ class FrameTarget {
   int height() const { return height_; }
   int samples = 0;  // sub-samples accumulated so far
 
+  // The sums read back (rows top to bottom), for tests and exports.
+  core::DensityImage readDensity() const;
+  // The mesh layer read back as an overlay at this target's size.
+  core::MeshOverlay readMeshOverlay(const RenderSettings& settings) const;
+
  private:
   friend class VolumeRenderer;
   int width_ = 0, height_ = 0;
   GLuint framebuffer_ = 0, radiance_ = 0;
   GLuint meshFramebuffer_ = 0, meshLayer_ = 0, meshDepth_ = 0;
+  std::uint64_t revision_ = 0;       // bumped by every march, mesh draw and resize
+  double hitsPerUnitDensity_ = 1.0;  // of the last march
+  // The finished image last resolved, and what it was made from, so an unchanged frame is only drawn.
+  mutable GLuint finished_ = 0;
+  mutable std::uint64_t finishedRevision_ = ~std::uint64_t{0};
+  mutable std::string finishedKey_;
 };
 
 class VolumeRenderer {
@@ -78,10 +94,14 @@ class VolumeRenderer {
   void march(FrameTarget& target, const RenderSettings& settings, int sampleIndex,
              glm::ivec4 tile = glm::ivec4(0, 0, 0, 0));
   // Draws the mesh overlay layer of `target` (when settings ask for one).
-  void drawMesh(FrameTarget& target, const RenderSettings& settings, glm::ivec4 tile = glm::ivec4(0, 0, 0, 0));
-  // Tone-maps `target` into the bound framebuffer's viewport (x, y, w, h). `linearOutput` skips
-  // the display encoding and clamping (for EXR).
+  // `always` draws it even when the settings show no mesh (for the silhouette coverage).
+  void drawMesh(FrameTarget& target, const RenderSettings& settings, glm::ivec4 tile = glm::ivec4(0, 0, 0, 0),
+                bool always = false);
+  // Finishes `target` (flame_image.h, with the settings' tone and filter; no supersampling) and
+  // draws it into the bound framebuffer's viewport (x, y, w, h). `linearOutput` skips the display
+  // encoding and clamping (for EXR). An unchanged target and settings are only drawn again.
   void resolve(const FrameTarget& target, const RenderSettings& settings, glm::ivec4 viewport, bool linearOutput);
+  bool hasMesh() const { return meshIndexCount_ > 0; }
 
  private:
   glm::dmat4 tileProjection(const RenderSettings& settings, glm::ivec4 tile, int width, int height,
@@ -89,7 +109,7 @@ class VolumeRenderer {
   void uploadSlab(int firstZ, int endZ);
 
   ShaderProgram marchProgram_;
-  ShaderProgram resolveProgram_;
+  ShaderProgram blitProgram_;
   ShaderProgram meshProgram_;
   GLuint vertexArray_ = 0;
   GLuint volumeTexture_ = 0;     // RGBA16F: premultiplied colour, normalised density
@@ -103,7 +123,9 @@ class VolumeRenderer {
   core::GridGeometry geometry_;
   glm::ivec3 brickCount_{0};
   float maxDensity_ = 0.0f;
-  float meanDensity_ = 0.0f;
+  double referenceDensity_ = 1.0;
+  double insideVoxels_ = 0.0;
+  double points_ = 0.0;
   std::uint64_t uploadedVersion_ = 0;
   const core::PackedVolume* pending_ = nullptr;
   int pendingZ_ = 0;
@@ -114,10 +136,25 @@ class VolumeRenderer {
 
 inline constexpr int kDefaultMaxTile = 2048;  // pixels along a tile's side, at most
 
-// Renders one image offscreen in tiles no larger than the GL allows, averaging `samples`
-// jittered sub-samples per pixel, and reads it back (rows top to bottom). Display-encoded in
-// [0, 1], or linear light when `linearOutput`. `progress`, when set, is called after each tile's
-// sub-sample with the fraction done (0–1]; it may throw to stop the render (GL objects are freed).
+// The ray-marched sums of a whole image, supersampled by settings.render.oversample, in tiles no
+// larger than the GL allows, each pixel averaging `samples` jittered sub-samples; plus the mesh
+// layer at the output size (drawn even when the settings show none, for the coverage).
+// `progress`, when set, is called after each tile's sub-sample with the fraction done (0–1]; it
+// may throw to stop the render (GL objects are freed).
+struct MarchedImage {
+  core::DensityImage density;
+  core::MeshOverlay mesh;
+};
+MarchedImage marchImage(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
+                        int maxTile = kDefaultMaxTile, const std::function<void(double)>& progress = {});
+
+// Draws the mesh layer alone at the output size, supersampled and averaged down (for the points
+// method's overlay and coverage).
+core::MeshOverlay renderMeshOverlay(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
+                                    int maxTile = kDefaultMaxTile);
+
+// marchImage, then flame_image.h's finish with the settings' tone, oversample and filter. Rows top
+// to bottom; display-encoded in [0, 1], or linear light when `linearOutput`.
 core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
                               bool linearOutput = false, int maxTile = kDefaultMaxTile,
                               const std::function<void(double)>& progress = {});

@@ -1,0 +1,284 @@
+#include "point_renderer.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include <glm/mat4x4.hpp>
+#include <glm/vec4.hpp>
+
+#include "error.h"
+#include "random.h"
+
+namespace voxflame::core {
+
+namespace {
+
+// Relative density (to the mesh's mean) of every voxel, for trilinear sampling.
+std::vector<float> relativeDensity(const PackedVolume& volume) {
+  const float toRelative = static_cast<float>(volume.maxDensity / std::max(volume.referenceDensity, 1e-30));
+  std::vector<float> density(volume.density.size());
+  for (std::size_t v = 0; v < density.size(); ++v) density[v] = halfToFloat(volume.density[v]) * toRelative;
+  return density;
+}
+
+float trilinear(const std::vector<float>& field, const GridGeometry& g, glm::dvec3 voxel) {
+  // Voxel values sit at voxel centres.
+  const glm::dvec3 p = voxel - 0.5;
+  const glm::ivec3 i0(glm::floor(p));
+  const glm::dvec3 f = p - glm::dvec3(i0);
+  float sum = 0.0f;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::ivec3 c = i0 + glm::ivec3(corner & 1, (corner >> 1) & 1, (corner >> 2) & 1);
+    if (c.x < 0 || c.y < 0 || c.z < 0 || c.x >= g.size.x || c.y >= g.size.y || c.z >= g.size.z) continue;
+    const double w = ((corner & 1) ? f.x : 1.0 - f.x) * (((corner >> 1) & 1) ? f.y : 1.0 - f.y) *
+                     (((corner >> 2) & 1) ? f.z : 1.0 - f.z);
+    sum += static_cast<float>(w) * field[g.index(c.x, c.y, c.z)];
+  }
+  return sum;
+}
+
+// View depth of a world point (the camera looks down -z in view space).
+double viewDepth(const CameraFrame& camera, glm::dvec3 world) {
+  return -(camera.view * glm::dvec4(world, 1.0)).z;
+}
+
+void parallelFor(int count, int threads, const std::function<void(int, int)>& fn) {
+  threads = std::clamp(threads, 1, std::max(1, count));
+  if (threads == 1) {
+    fn(0, count);
+    return;
+  }
+  std::vector<std::jthread> pool;
+  for (int t = 0; t < threads; ++t)
+    pool.emplace_back([&fn, count, threads, t] { fn(count * t / threads, count * (t + 1) / threads); });
+}
+
+}  // namespace
+
+ViewTransmittance buildViewTransmittance(const PackedVolume& volume, const CameraFrame& camera, double absorption,
+                                         int width, int height, int depth) {
+  ViewTransmittance t;
+  t.width = std::max(1, width);
+  t.height = std::max(1, height);
+  t.depth = std::max(1, depth);
+  const GridGeometry& g = volume.geometry;
+  const Box box = g.box();
+  // The depth range the grid's corners span, in front of the eye.
+  double nearest = 1e300, farthest = -1e300;
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? box.max.x : box.min.x, ((corner >> 1) & 1) ? box.max.y : box.min.y,
+                       ((corner >> 2) & 1) ? box.max.z : box.min.z);
+    const double d = viewDepth(camera, p);
+    nearest = std::min(nearest, d);
+    farthest = std::max(farthest, d);
+  }
+  t.nearDepth = std::max(nearest, camera.nearPlane);
+  t.farDepth = std::max(farthest, t.nearDepth + 1e-9);
+  t.depthScale = static_cast<float>(t.depth / (t.farDepth - t.nearDepth));
+  t.values.assign(static_cast<std::size_t>(t.width) * t.height * (t.depth + 1), 1.0f);
+  if (absorption <= 0.0 || volume.density.empty()) return t;
+
+  const std::vector<float> density = relativeDensity(volume);
+  const double side = g.voxelSize * std::max({g.size.x, g.size.y, g.size.z, 1});
+  const glm::dmat4 inverse = glm::inverse(camera.projection * camera.view);
+  const glm::dmat4 projection = camera.projection;
+  // NDC depth of a view depth: the ray's world points at the range's two ends.
+  auto ndcDepth = [&](double d) {
+    const glm::dvec4 clip = projection * glm::dvec4(0.0, 0.0, -d, 1.0);
+    return clip.z / clip.w;
+  };
+  const double ndcNear = ndcDepth(t.nearDepth), ndcFar = ndcDepth(t.farDepth);
+  const double sliceDepth = (t.farDepth - t.nearDepth) / t.depth;
+  // Sub-steps per slice so no voxel is skipped.
+  const int subSteps = std::max(1, static_cast<int>(std::ceil(sliceDepth / (0.5 * g.voxelSize))));
+  parallelFor(t.height, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), [&](int begin, int end) {
+    for (int y = begin; y < end; ++y)
+      for (int x = 0; x < t.width; ++x) {
+        const double ndcX = (x + 0.5) / t.width * 2.0 - 1.0, ndcY = 1.0 - (y + 0.5) / t.height * 2.0;
+        glm::dvec4 a = inverse * glm::dvec4(ndcX, ndcY, ndcNear, 1.0);
+        glm::dvec4 b = inverse * glm::dvec4(ndcX, ndcY, ndcFar, 1.0);
+        const glm::dvec3 start = glm::dvec3(a) / a.w, finish = glm::dvec3(b) / b.w;
+        // World length per unit of view depth along this ray.
+        const double lengthPerDepth = glm::length(finish - start) / (t.farDepth - t.nearDepth);
+        const double stepUnits = lengthPerDepth * sliceDepth / subSteps / side;
+        double opticalDepth = 0.0;
+        for (int k = 1; k <= t.depth; ++k) {
+          for (int s = 0; s < subSteps; ++s) {
+            const double fraction = ((k - 1) + (s + 0.5) / subSteps) / t.depth;
+            const glm::dvec3 world = start + fraction * (finish - start);
+            opticalDepth += absorption * stepUnits * trilinear(density, g, (world - g.origin) / g.voxelSize);
+          }
+          t.values[(static_cast<std::size_t>(y) * static_cast<std::size_t>(t.width) + static_cast<std::size_t>(x)) *
+                       static_cast<std::size_t>(t.depth + 1) +
+                   static_cast<std::size_t>(k)] = static_cast<float>(std::exp(-opticalDepth));
+        }
+      }
+  });
+  return t;
+}
+
+PointProjector::PointProjector(const PointProjection& projection, int threads) : p_(projection) {
+  if (p_.width <= 0 || p_.height <= 0) throw Error("the points image must have a positive size");
+  threads = std::max(1, threads);
+  const std::size_t pixels = static_cast<std::size_t>(p_.width) * static_cast<std::size_t>(p_.height);
+  histograms_.assign(static_cast<std::size_t>(threads), std::vector<float>(4 * pixels, 0.0f));
+  rngStates_.resize(static_cast<std::size_t>(threads));
+  for (int t = 0; t < threads; ++t) rngStates_[static_cast<std::size_t>(t)] = mixSeed(p_.seed, 0x6c656e73ULL + t);
+  // One point's D in its pixel: (volume inside the mesh) / (points · pixel footprint), lengths in
+  // grid sides (flame_image.h). The footprint grows with the view depth squared in perspective.
+  const GridGeometry& g = p_.grid;
+  const double side = g.voxelSize * std::max({g.size.x, g.size.y, g.size.z, 1});
+  const double scale = std::max(std::abs(p_.camera.projection[1][1]), 1e-12);
+  const double pixelAtUnitDepth = 2.0 / (scale * p_.height) / side;
+  const double volume = std::max(p_.insideVoxels, 1.0) * std::pow(g.voxelSize / side, 3.0);
+  pointDensity_ = volume / (std::max(p_.totalPoints, 1.0) * pixelAtUnitDepth * pixelAtUnitDepth);
+}
+
+void PointProjector::consume(int thread, const AcceptedPoints& points) {
+  std::vector<float>& histogram = histograms_[static_cast<std::size_t>(thread)];
+  std::uint64_t& rng = rngStates_[static_cast<std::size_t>(thread)];
+  const glm::mat4 view(p_.camera.view);
+  const glm::mat4 projection(p_.camera.projection);
+  const glm::vec3 origin(p_.grid.origin);
+  const auto voxelSize = static_cast<float>(p_.grid.voxelSize);
+  const bool orthographic = p_.camera.orthographic;
+  const auto nearPlane = static_cast<float>(p_.camera.nearPlane);
+  const float width = static_cast<float>(p_.width), height = static_cast<float>(p_.height);
+  const auto aperture = static_cast<float>(p_.dofAperture);
+  const auto focus = static_cast<float>(std::max(p_.dofFocusDepth, 1e-9));
+  const double side = p_.grid.voxelSize * std::max({p_.grid.size.x, p_.grid.size.y, p_.grid.size.z, 1});
+  const auto fogPerDepth = static_cast<float>(p_.fog / side);
+  const auto fogStart = static_cast<float>(p_.fogStart);
+  const ShadowVolume* shadow = p_.shadow;
+  const int shadowDownsample = std::max(1, p_.shadowDownsample);
+  const auto lightStrength = static_cast<float>(p_.lightStrength);
+  const auto pointDensity = static_cast<float>(pointDensity_);
+  const ViewTransmittance* transmittance = p_.transmittance;
+  std::uint64_t projected = 0;
+  for (std::size_t i = 0; i < points.count; ++i) {
+    const glm::vec3 world = origin + voxelSize * glm::vec3(points.x[i], points.y[i], points.z[i]);
+    glm::vec4 eye = view * glm::vec4(world, 1.0f);
+    const float depth = -eye.z;
+    if (depth <= nearPlane) continue;
+    if (aperture > 0.0f) {
+      // A thin lens: seen from a random point of the lens disc, refocused at `focus`, a point
+      // away from the focal plane spreads into a disc.
+      rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
+      const float radius = aperture * std::sqrt(static_cast<float>(rng >> 40) * (1.0f / 16777216.0f));
+      rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
+      const float angle = 6.28318530718f * static_cast<float>(rng >> 40) * (1.0f / 16777216.0f);
+      const float shift = depth / focus - 1.0f;
+      eye.x += radius * std::cos(angle) * shift;
+      eye.y += radius * std::sin(angle) * shift;
+    }
+    const glm::vec4 clip = projection * eye;
+    const float u = (clip.x / clip.w * 0.5f + 0.5f), v = (0.5f - clip.y / clip.w * 0.5f);
+    const float px = u * width, py = v * height;
+    if (!(px >= 0.0f && py >= 0.0f && px < width && py < height)) continue;
+    float weight = orthographic ? pointDensity : pointDensity / (depth * depth);
+    if (transmittance) weight *= transmittance->at(u, v, depth);
+    if (shadow) {
+      const glm::ivec3 cell = glm::clamp(glm::ivec3(points.x[i], points.y[i], points.z[i]) / shadowDownsample,
+                                         glm::ivec3(0), shadow->size - 1);
+      const float lit =
+          static_cast<float>(shadow->transmittance[static_cast<std::size_t>(cell.x) +
+                                                   static_cast<std::size_t>(shadow->size.x) *
+                                                       (cell.y + static_cast<std::size_t>(shadow->size.y) * cell.z)]) *
+          (1.0f / 255.0f);
+      weight *= 1.0f + lightStrength * (lit - 1.0f);
+    }
+    if (fogPerDepth > 0.0f) weight *= std::exp(-fogPerDepth * std::max(0.0f, depth - fogStart));
+    const std::uint32_t rgb = points.rgb[i];
+    float* bucket = &histogram[4 * (static_cast<std::size_t>(py) * static_cast<std::size_t>(p_.width) +
+                                    static_cast<std::size_t>(px))];
+    bucket[0] += weight * static_cast<float>(rgb & 0xffu) * (1.0f / 255.0f);
+    bucket[1] += weight * static_cast<float>((rgb >> 8) & 0xffu) * (1.0f / 255.0f);
+    bucket[2] += weight * static_cast<float>((rgb >> 16) & 0xffu) * (1.0f / 255.0f);
+    bucket[3] += weight;
+    ++projected;
+  }
+  projected_.fetch_add(projected, std::memory_order_relaxed);
+}
+
+DensityImage PointProjector::merge() const {
+  DensityImage image;
+  image.resize(p_.width, p_.height);
+  image.hitsPerUnitDensity = hitsPerUnitDensity(p_.camera, p_.grid, p_.totalPoints, p_.insideVoxels, p_.height);
+  for (const auto& histogram : histograms_)
+    for (std::size_t i = 0; i < histogram.size(); ++i) image.values[i] += histogram[i];
+  return image;
+}
+
+DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const InsideMask> mask, const PackedVolume& volume,
+                                const CameraFrame& camera, int width, int height, const PointsPassOptions& options) {
+  const std::uint64_t target = options.points ? options.points : scene.points;
+  const int cells = std::max(1, options.transmittanceCells);
+  // Building costs cells × slices samples of the grid; past a few hundred cells across, a cell is
+  // finer than the grid's voxels anyway.
+  constexpr int kMaxCells = 320;
+  const double absorption = std::max(0.0, scene.tone.opacity) * kAbsorptionPerDensity;
+  // The transmittance needs detail along depth more than across: a slice per voxel of the grid's
+  // longest side is enough, and across a cell of a few pixels.
+  const int slices =
+      std::clamp(std::max({volume.geometry.size.x, volume.geometry.size.y, volume.geometry.size.z}), 16, 384);
+  const ViewTransmittance transmittance =
+      buildViewTransmittance(volume, camera, absorption, std::min((width + cells - 1) / cells, kMaxCells),
+                             std::min((height + cells - 1) / cells, kMaxCells), slices);
+  ShadowVolume shadow;
+  constexpr int kShadowDownsample = 2;
+  if (scene.render.lighting)
+    computeShadowVolume(volume, lightDirection(scene.render.lightAzimuthDeg, scene.render.lightElevationDeg),
+                        kAbsorptionPerDensity, kShadowDownsample, shadow);
+
+  const int threads =
+      options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  PointProjection projection;
+  projection.grid = mask->geometry;
+  projection.camera = camera;
+  projection.width = width;
+  projection.height = height;
+  projection.totalPoints = static_cast<double>(target);
+  projection.insideVoxels = volume.insideVoxels;
+  projection.transmittance = absorption > 0.0 ? &transmittance : nullptr;
+  projection.shadow = scene.render.lighting ? &shadow : nullptr;
+  projection.shadowDownsample = kShadowDownsample;
+  projection.lightStrength = scene.render.lightStrength;
+  const double radius = 0.5 * glm::length(mask->geometry.box().extent());  // the camera's distance unit
+  const double targetDepth = viewDepth(camera, mask->geometry.box().center());
+  projection.dofAperture = scene.render.dofAperture * radius;
+  projection.dofFocusDepth = scene.render.dofFocusDistance > 0.0 ? scene.render.dofFocusDistance * radius : targetDepth;
+  projection.fog = scene.render.fog;
+  projection.fogStart = transmittance.nearDepth;
+  projection.seed = scene.seed;
+  PointProjector projector(projection, threads);
+  AccumulatorStats stats;
+  {
+    Accumulator accumulator(mask, threads);
+    accumulator.setPointSink(&projector);
+    accumulator.setTargetPoints(target);
+    accumulator.setPattern(scene.layers, scene.seed);
+    // A pattern that mostly misses the mesh would never reach its target: stop after as many
+    // iterations as the grid pass allows.
+    const std::uint64_t iterationLimit = 40 * target + 50'000'000;
+    while (!accumulator.waitUntilDone(0.25)) {
+      stats = accumulator.stats();
+      if (options.progress)
+        options.progress(target ? std::min(1.0, static_cast<double>(stats.points) / static_cast<double>(target)) : 1.0);
+      if (stats.iterations > iterationLimit || !stats.problem.empty()) break;
+    }
+    stats = accumulator.stats();
+  }  // the workers are joined here: no point arrives after this
+  if (!stats.problem.empty()) throw Error(stats.problem);
+  DensityImage image = projector.merge();
+  // Each point's share of D assumed `target` points; the batches overshoot it a little (or a
+  // pattern that barely meets the mesh falls short), so the image is scaled to what landed.
+  if (stats.points > 0 && stats.points != target) {
+    const float scale = static_cast<float>(static_cast<double>(target) / static_cast<double>(stats.points));
+    for (float& value : image.values) value *= scale;
+  }
+  return image;
+}
+
+}  // namespace voxflame::core

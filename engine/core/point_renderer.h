@@ -1,0 +1,103 @@
+// The points method: every point a pattern's chaos game accepts inside the mesh is projected
+// through the camera into a supersampled screen histogram, as flam3 does in 2D, so filaments are
+// pixel-fine at any image size and no voxel shows. The grid still gives depth: each point is
+// dimmed by the camera's transmittance through the accumulated volume in front of it (a
+// view-aligned transmittance volume, built once per image) and, with lighting, by the light's
+// shadow volume. Optional depth of field (a thin lens) and depth fog. The histogram is a
+// DensityImage in the same units as the volume method's, so flame_image.h finishes both alike.
+// Memory grows with the image, not with the grid.
+#pragma once
+
+#include <algorithm>
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <vector>
+
+#include "accumulator.h"
+#include "camera.h"
+#include "flame_image.h"
+#include "packed_volume.h"
+#include "shadow_volume.h"
+
+namespace voxflame::core {
+
+// Transmittance from the eye to any point of the view frustum that crosses the grid: cells across
+// the image (u, v in [0, 1], top-left origin) and slices of view depth between nearDepth and farDepth.
+struct ViewTransmittance {
+  int width = 0, height = 0, depth = 0;
+  double nearDepth = 0.0, farDepth = 1.0;  // view depth (distance along the camera's forward axis)
+  // Per cell, depth + 1 values at the slice boundaries, depth fastest: a lookup reads one cache line.
+  std::vector<float> values;
+
+  // The nearest cell across, linear along depth (cells are a few pixels, smaller than any detail
+  // the grid holds); 1 in front of the grid, the last slice behind it, 1 when empty.
+  float at(float u, float v, float viewDepth) const {
+    if (values.empty() || viewDepth <= nearDepth) return 1.0f;
+    const int x = std::clamp(static_cast<int>(u * static_cast<float>(width)), 0, width - 1);
+    const int y = std::clamp(static_cast<int>(v * static_cast<float>(height)), 0, height - 1);
+    const float z = std::min((viewDepth - static_cast<float>(nearDepth)) * depthScale, static_cast<float>(depth));
+    const int z0 = std::min(static_cast<int>(z), depth - 1);
+    const float f = z - static_cast<float>(z0);
+    const float* cell =
+        &values[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) *
+                    static_cast<std::size_t>(depth + 1) +
+                static_cast<std::size_t>(z0)];
+    return cell[0] + f * (cell[1] - cell[0]);
+  }
+  float depthScale = 1.0f;  // slices per unit of view depth
+};
+
+// `absorption` is the extinction per unit of column density (tone.opacity × kAbsorptionPerDensity).
+ViewTransmittance buildViewTransmittance(const PackedVolume& volume, const CameraFrame& camera, double absorption,
+                                         int width, int height, int depth);
+
+struct PointProjection {
+  GridGeometry grid;
+  CameraFrame camera;
+  int width = 0, height = 0;                         // supersampled image pixels
+  double totalPoints = 1.0;                          // points the pass will project (sets each point's share of D)
+  double insideVoxels = 1.0;                         // voxels inside the mesh
+  const ViewTransmittance* transmittance = nullptr;  // null: nothing dims
+  const ShadowVolume* shadow = nullptr;              // light transmittance, null: unlit
+  int shadowDownsample = 1;
+  double lightStrength = 0.8;
+  double dofAperture = 0.0;    // lens radius, world units (0: pinhole)
+  double dofFocusDepth = 1.0;  // view depth in focus, world units
+  double fog = 0.0;            // extinction per grid side of depth behind fogStart
+  double fogStart = 0.0;       // view depth where fog begins (the front of the grid)
+  std::uint64_t seed = 1;      // for the lens samples
+};
+
+// A PointSink that projects points into one histogram per worker thread.
+class PointProjector : public PointSink {
+ public:
+  PointProjector(const PointProjection& projection, int threads);
+  void consume(int thread, const AcceptedPoints& points) override;
+  // Sums the threads' histograms. Call when no more points arrive.
+  DensityImage merge() const;
+  std::uint64_t projected() const { return projected_.load(); }
+
+ private:
+  PointProjection p_;
+  double pointDensity_ = 1.0;  // D one point adds to its pixel at unit view depth (over depth² in perspective)
+  std::vector<std::vector<float>> histograms_;
+  std::vector<std::uint64_t> rngStates_;
+  std::atomic<std::uint64_t> projected_{0};
+};
+
+// The whole points pass: the scene's layers iterated by an Accumulator over `mask` until
+// `points` lie inside, each projected. `volume` (the grid of the same scene) gives the camera's
+// transmittance and the light's shadow. `width` × `height` are supersampled pixels. `progress`
+// gets the fraction done about four times a second and may throw to stop.
+struct PointsPassOptions {
+  std::uint64_t points = 0;  // 0: the scene's count
+  int threads = 0;
+  int transmittanceCells = 4;  // image pixels per transmittance cell along each axis
+  std::function<void(double)> progress;
+};
+DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const InsideMask> mask, const PackedVolume& volume,
+                                const CameraFrame& camera, int width, int height, const PointsPassOptions& options);
+
+}  // namespace voxflame::core
