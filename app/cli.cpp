@@ -233,12 +233,14 @@ int renderCommand(const std::vector<std::string>& args) {
     core::writeExr(*output, result.image, stillMetadata(scene, result));
   else
     core::writePng(*output, result.image, bitDepth, stillMetadata(scene, result));
+  // The points method's own count is what the image shows; its grid (for depth) took fewer.
+  const std::uint64_t shown = result.pointsProjected ? result.pointsProjected : result.stats.points;
   std::printf(
       "wrote %s (%d×%d, %s method, %d samples, %llu points inside, pattern covers %.0f%% of the mesh, %.2f s "
       "accumulating, %.2f s rendering on %s)\n",
       output->c_str(), options.width, options.height, std::string(core::toString(scene.render.method)).c_str(),
-      scene.render.samples, static_cast<unsigned long long>(result.stats.points), 100.0 * result.coverage,
-      result.accumulateSeconds, result.renderSeconds, result.renderer.c_str());
+      scene.render.samples, static_cast<unsigned long long>(shown), 100.0 * result.coverage, result.accumulateSeconds,
+      result.renderSeconds, result.renderer.c_str());
   if (printStats) std::printf("stats %s\n", stillMetadata(scene, result).at("voxflame:stats").c_str());
   // The image is complete on disk: an interruption that came too late to stop it is not a failure.
   return 0;

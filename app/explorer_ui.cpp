@@ -385,7 +385,8 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
     if (button(state, scope, "Remove layer")) removeThis = true;
     slider(state, scope, "weight", layer.weight, 0.01, 10.0, ImGuiSliderFlags_Logarithmic);
   }
-  if (ImGui::TreeNode("Placement")) {
+  // Open from the start: the fit decides how much of the mesh the pattern fills.
+  if (ImGui::TreeNodeEx("Placement", ImGuiTreeNodeFlags_DefaultOpen)) {
     slider(state, scope, "scale", layer.transform.scale, 0.1, 4.0, ImGuiSliderFlags_Logarithmic);
     int fit = static_cast<int>(layer.transform.fit);  // FitMode's order: contain, cover, stretch
     if (ImGui::Combo("fit", &fit, "contain\0cover\0stretch\0")) layer.transform.fit = static_cast<core::FitMode>(fit);
@@ -402,6 +403,31 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
     const double minOffset = -0.5, maxOffset = 0.5;
     if (ImGui::SliderScalarN("offset", ImGuiDataType_Double, offset, 3, &minOffset, &maxOffset, "%.2f"))
       layer.transform.offset = glm::dvec3(offset[0], offset[1], offset[2]);
+    // Copies: the same pattern again, turned; one set of parameters moves them all.
+    std::vector<glm::dvec3>& copies = layer.transform.copies;
+    std::size_t removeCopy = copies.size();
+    for (std::size_t c = 0; c < copies.size(); ++c) {
+      ImGui::PushID(static_cast<int>(c));
+      double angles[3] = {copies[c].x, copies[c].y, copies[c].z};
+      const std::string label = "copy " + std::to_string(c + 1);
+      if (ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Double, angles, 3, &minDeg, &maxDeg, "%.0f°"))
+        copies[c] = glm::dvec3(angles[0], angles[1], angles[2]);
+      probe(state, scope + label);
+      ImGui::SameLine();
+      if (ImGui::SmallButton("x")) removeCopy = c;
+      probe(state, scope + label + " remove");
+      ImGui::PopID();
+    }
+    if (removeCopy < copies.size()) copies.erase(copies.begin() + static_cast<std::ptrdiff_t>(removeCopy));
+    if (copies.size() < core::kMaxLayerCopies && button(state, scope, "Add copy")) {
+      // Each new copy turns a quarter further about the next axis, so it lands somewhere new.
+      const auto n = static_cast<int>(copies.size());
+      glm::dvec3 angles(0.0);
+      angles[n % 3] = 90.0 * (1 + n / 3);
+      copies.push_back(angles);
+    }
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("the same pattern again, turned: fills a mesh that one copy leaves half empty");
     ImGui::TreePop();
   }
   if (ImGui::TreeNodeEx("Colour", ImGuiTreeNodeFlags_DefaultOpen)) {

@@ -162,11 +162,13 @@ FrameRenderer::Rendered FrameRenderer::renderWithStats(const core::Scene& scene,
   const int oversample = std::clamp(scene.render.oversample, 1, 4);
   core::DensityImage density;
   core::MeshOverlay mesh;
+  std::uint64_t pointsProjected = 0;
   if (scene.render.method == core::RenderMethod::Points) {
     core::PointsPassOptions points;
     points.points = d.points;
     points.threads = d.threads;
     points.progress = progress;
+    points.pointsInside = &pointsProjected;
     density = core::projectScenePoints(scene, d.shape->mask, *d.volume, settings.camera, width * oversample,
                                        height * oversample, points);
     mesh = gl::renderMeshOverlay(d.renderer, settings, width, height);
@@ -183,6 +185,7 @@ FrameRenderer::Rendered FrameRenderer::renderWithStats(const core::Scene& scene,
   core::FinishedImage finished = core::finishImage(density, finish, &mesh);
   Rendered result;
   result.coverage = core::silhouetteCoverage(finished, mesh);
+  result.pointsProjected = pointsProjected;
   result.image = std::move(finished.image);
   return result;
 }
@@ -217,6 +220,7 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
       renderer.renderWithStats(scene, options.width, options.height, options.linearOutput, renderProgress);
   result.image = std::move(rendered.image);
   result.coverage = rendered.coverage;
+  result.pointsProjected = rendered.pointsProjected;
   result.renderSeconds = secondsSince(renderStart);
   return result;
 }
@@ -226,7 +230,7 @@ core::TextChunks stillMetadata(const core::Scene& scene, const StillResult& resu
   stats << "{\"points\":" << result.stats.points << ",\"iterations\":" << result.stats.iterations
         << ",\"accumulate_seconds\":" << result.accumulateSeconds << ",\"render_seconds\":" << result.renderSeconds
         << ",\"method\":\"" << core::toString(scene.render.method) << "\",\"coverage\":" << result.coverage
-        << ",\"version\":\"" << kVersion << "\"}";
+        << ",\"points_projected\":" << result.pointsProjected << ",\"version\":\"" << kVersion << "\"}";
   // A preset inside an image must find its mesh from wherever the image goes.
   core::Scene stored = scene;
   if (!stored.embedded)

@@ -54,9 +54,10 @@ struct StillResult {
   core::AccumulatorStats stats;
   double accumulateSeconds = 0.0;
   double renderSeconds = 0.0;
-  std::string renderer;   // GL_RENDERER
-  std::string warning;    // e.g. fewer points landed inside the mesh than asked for
-  double coverage = 0.0;  // share of the mesh's silhouette where the pattern shows (flame_image.h)
+  std::string renderer;               // GL_RENDERER
+  std::string warning;                // e.g. fewer points landed inside the mesh than asked for
+  double coverage = 0.0;              // share of the mesh's silhouette where the pattern shows (flame_image.h)
+  std::uint64_t pointsProjected = 0;  // points method: points projected into the image (0: volume method)
 };
 
 // Thrown by renderStill when StillOptions::cancel was raised.
@@ -100,7 +101,8 @@ class FrameRenderer {
   // as points are projected); it may throw to stop the render.
   struct Rendered {
     core::ImageRGBA image;
-    double coverage = 0.0;  // share of the mesh's silhouette where the pattern shows
+    double coverage = 0.0;              // share of the mesh's silhouette where the pattern shows
+    std::uint64_t pointsProjected = 0;  // points method: the points drawn (the grid pass took fewer)
   };
   Rendered renderWithStats(const core::Scene& scene, int width, int height, bool linearOutput,
                            const std::function<void(double)>& progress = {});

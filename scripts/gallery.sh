@@ -8,6 +8,7 @@
 # VOXFLAME is the built binary (default: build/app/voxflame). Naming presets renders only those,
 # --table-only renders none; the table always lists them all. GALLERY_WIDTH, GALLERY_HEIGHT and GALLERY_SAMPLES override the
 # image size (640×400) and the jittered samples per pixel (4). The points are each preset's own.
+# The share of each mesh the pattern covers (the render's statistics) goes in the table too.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 voxflame="$root/build/app/voxflame"
@@ -34,11 +35,18 @@ done
 to_render=("$@")
 [[ ${#to_render[@]} -gt 0 ]] || to_render=("${presets[@]}")
 [[ "${to_render[0]}" != --table-only ]] || to_render=()
+# Each render's share of the mesh covered by the pattern is kept in coverage.tsv for the table.
+coverage="$gallery/coverage.tsv"
+touch "$coverage"
 for file in "${to_render[@]+"${to_render[@]}"}"; do
   stem="$(basename "$file" .json)"
   echo "rendering $stem"
-  "$voxflame" render "$file" -o "$gallery/$stem.png" --width "$width" --height "$height" \
-    --samples "$samples" --bit-depth 8
+  line="$("$voxflame" render "$file" -o "$gallery/$stem.png" --width "$width" --height "$height" \
+    --samples "$samples" --bit-depth 8)"
+  echo "$line"
+  percent="$(grep -o 'covers [0-9]*%' <<<"$line" | grep -o '[0-9]*' || true)"
+  { grep -v "^$stem	" "$coverage" || true; printf '%s\t%s\n' "$stem" "$percent"; } | sort >"$coverage.new"
+  mv "$coverage.new" "$coverage"
 done
 
 # Attractor ids to their catalogue names, from `voxflame list --json` (one object per attractor,
@@ -60,11 +68,15 @@ cell() {
   mesh="$(json_strings path "$file" | head -n 1)"
   mesh="$(basename "${mesh#builtin:}")"
   mesh="${mesh%.*}"
+  # Each attractor once, in the order of its first layer (several layers of one attractor at
+  # different rotations are one pattern).
   while read -r id; do
     attractors+="${attractors:+ + }${attractor_names[$id]:-$id}"
-  done < <(json_strings attractor "$file")
-  printf '<td align="center"><a href="presets/%s.json"><img src="presets/gallery/%s.png" width="280" alt="%s"></a><br><b>%s</b><br><sub>%s · %s</sub></td>' \
-    "$stem" "$stem" "$title" "$title" "$attractors" "$mesh"
+  done < <(json_strings attractor "$file" | awk '!seen[$0]++')
+  local covered
+  covered="$(awk -F '\t' -v stem="$stem" '$1 == stem && $2 != "" { print " · covers " $2 "%" }' "$gallery/coverage.tsv" 2>/dev/null || true)"
+  printf '<td align="center"><a href="presets/%s.json"><img src="presets/gallery/%s.png" width="280" alt="%s"></a><br><b>%s</b><br><sub>%s · %s%s</sub></td>' \
+    "$stem" "$stem" "$title" "$title" "$attractors" "$mesh" "$covered"
 }
 
 table="$(mktemp)"

@@ -78,6 +78,9 @@ TEST(Accumulator, OneThreadWithAFixedSeedIsDeterministic) {
 TEST(Accumulator, NewPatternBumpsGenerationAndClearsTheGrid) {
   const auto mask = bunnyMask(32);
   auto layers = defaultScene().layers;
+  // One layer: each of the default's copies is a layer with batches of its own, which would make
+  // the overshoot past the new target (one batch per stream) harder to bound.
+  layers[0].transform.copies.clear();
   Accumulator accumulator(mask, 2);
   accumulator.setTargetPoints(2'000'000);
   accumulator.setPattern(layers, 1);
@@ -302,6 +305,37 @@ TEST(Fit, ALockedStretchFitKeepsItsShape) {
   EXPECT_EQ(locked.fit.axisScale, stretched.fit.axisScale);
   const glm::dvec3 p = stretched.fit.attractorCenter + glm::dvec3(1.0, 1.0, 1.0);
   EXPECT_NEAR(glm::length(locked.fit.apply(p) - stretched.fit.apply(p)), 0.0, 1e-9);
+}
+
+// A layer's copies run as layers of their own, turned by their angles, sharing its weight; and
+// the pattern they make together lights more of the mesh than the original alone.
+TEST(Fit, CopiesAreTurnedLayersThatShareTheWeightAndFillMore) {
+  PatternLayer layer = layerFor("lorenz84");
+  layer.weight = 0.9;
+  layer.transform.rotationDeg = {10.0, 0.0, 0.0};
+  layer.transform.copies = {{0.0, 90.0, 0.0}, {180.0, 0.0, 45.0}};
+  PatternLayer other = layerFor("rossler");
+  const std::vector<PatternLayer> expanded = expandCopies({layer, other});
+  ASSERT_EQ(expanded.size(), 4u);
+  for (int i = 0; i < 3; ++i) {
+    EXPECT_NEAR(expanded[static_cast<std::size_t>(i)].weight, 0.3, 1e-12);
+    EXPECT_TRUE(expanded[static_cast<std::size_t>(i)].transform.copies.empty());
+  }
+  EXPECT_EQ(expanded[0].transform.rotationDeg, glm::dvec3(10.0, 0.0, 0.0));
+  EXPECT_EQ(expanded[1].transform.rotationDeg, glm::dvec3(10.0, 90.0, 0.0));
+  EXPECT_EQ(expanded[2].transform.rotationDeg, glm::dvec3(190.0, 0.0, 45.0));
+  EXPECT_EQ(expanded[3].attractor, "rossler");
+  EXPECT_EQ(expanded[3].weight, other.weight);
+
+  const auto mask = bunnyMask(48);
+  const auto litVoxels = [&](const PatternLayer& l) {
+    const VolumeSnapshot snapshot = accumulate(mask, {l}, 400'000, 2);
+    return std::count_if(snapshot.density.begin(), snapshot.density.end(), [](float d) { return d > 0.0f; });
+  };
+  PatternLayer alone = layerFor("lorenz84");
+  PatternLayer copied = alone;
+  copied.transform.copies = {{0.0, 0.0, 45.0}, {180.0, 90.0, 0.0}};
+  EXPECT_GT(static_cast<double>(litVoxels(copied)), 1.5 * static_cast<double>(litVoxels(alone)));
 }
 
 TEST(Fit, UserTransformAppliesAndALockedFitIgnoresParameterChanges) {

@@ -440,3 +440,33 @@ TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {
 }
 
 }  // namespace
+
+TEST_F(ExplorerUi, DensityEstimationAndStillMethodAreLookOnlyAndTheFitRestartsThePattern) {
+  const std::string keyBefore = app::patternKey(state.scene);
+  double radius = 0.0;
+  const auto& slider = item("tone/estimator radius");
+  drag(slider.centerX(), slider.centerY(), -60.0f, 0.0f, 0, [&] { radius = state.scene.tone.estimatorRadius; });
+  EXPECT_LT(state.scene.tone.estimatorRadius, radius);
+  EXPECT_NO_THROW(item("render/method"));
+  EXPECT_NO_THROW(item("layer0/fit"));
+  state.scene.render.method = core::RenderMethod::Points;
+  frame();
+  EXPECT_NO_THROW(item("render/lens aperture")) << "the points method's depth of field shows with it";
+  EXPECT_EQ(app::patternKey(state.scene), keyBefore) << "tone and still method never restart accumulation";
+  state.scene.layers[0].transform.fit = core::FitMode::Cover;
+  EXPECT_NE(app::patternKey(state.scene), keyBefore) << "a new fit moves the points";
+}
+
+TEST_F(ExplorerUi, CopiesOfALayerAreAddedTurnedAndRemoved) {
+  const std::string keyBefore = app::patternKey(state.scene);
+  const std::size_t before = state.scene.layers[0].transform.copies.size();
+  click("layer0/Add copy");
+  ASSERT_EQ(state.scene.layers[0].transform.copies.size(), before + 1);
+  EXPECT_NE(state.scene.layers[0].transform.copies.back(), glm::dvec3(0.0)) << "a new copy is turned";
+  EXPECT_NE(app::patternKey(state.scene), keyBefore) << "a copy changes the pattern";
+  const std::string label = "layer0/copy " + std::to_string(before + 1);
+  EXPECT_NO_THROW(item(label));
+  click(label + " remove");
+  EXPECT_EQ(state.scene.layers[0].transform.copies.size(), before);
+  EXPECT_EQ(app::patternKey(state.scene), keyBefore);
+}

@@ -169,6 +169,23 @@ AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const
   return {median, std::min(ratios[1], 2.5 * ratios[0]), glm::dvec3(1.0)};
 }
 
+std::vector<PatternLayer> expandCopies(const std::vector<PatternLayer>& layers) {
+  std::vector<PatternLayer> expanded;
+  for (const PatternLayer& layer : layers) {
+    const double share = 1.0 / static_cast<double>(layer.transform.copies.size() + 1);
+    PatternLayer original = layer;
+    original.transform.copies.clear();
+    original.weight = layer.weight * share;
+    expanded.push_back(original);
+    for (const glm::dvec3& angles : layer.transform.copies) {
+      PatternLayer copy = original;
+      copy.transform.rotationDeg = layer.transform.rotationDeg + angles;
+      expanded.push_back(copy);
+    }
+  }
+  return expanded;
+}
+
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, std::uint64_t seed) {
   PreparedLayer prepared;
   prepared.layer = layer;
@@ -639,7 +656,7 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
   // Probe outside the lock so running batches are not held up by it.
   std::vector<PreparedLayer> prepared;
   std::string problem;
-  for (const auto& layer : layers) {
+  for (const PatternLayer& layer : expandCopies(layers)) {
     prepared.push_back(prepareLayer(layer, *mask_, seed));
     if (!prepared.back().bounded)
       problem = "attractor '" + layer.attractor + "' escapes to infinity (or collapses) with these parameters";

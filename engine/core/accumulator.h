@@ -77,6 +77,10 @@ struct PreparedLayer {
 AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const glm::dvec3& high,
                           const InsideMask& mask, FitMode mode = FitMode::Contain);
 
+// Each layer followed by its copies (LayerTransform::copies) as layers of their own: turned by the
+// copy's angles, the layer's weight shared among them, no copies left. What the Accumulator runs.
+std::vector<PatternLayer> expandCopies(const std::vector<PatternLayer>& layers);
+
 // Samples the layer's attractor and fits it into the mask's grid. Deterministic for a seed.
 // Throws core::Error on parameters that are not finite numbers, absurd steps or transforms.
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, std::uint64_t seed);

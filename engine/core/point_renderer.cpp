@@ -178,10 +178,22 @@ void PointProjector::consume(int thread, const AcceptedPoints& points) {
     const float px = u * width, py = v * height;
     if (!(px >= 0.0f && py >= 0.0f && px < width && py < height)) continue;
     float weight = orthographic ? pointDensity : pointDensity / (depth * depth);
-    if (transmittance) weight *= transmittance->at(u, v, depth);
+    // Jitters of ±half a cell for the transmittance and shadow lookups, four 16-bit uniforms
+    // from one generator step: their expected value interpolates between cells (see
+    // ViewTransmittance::at), so neither volume's cells show in the image.
+    rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
+    const auto uniform = [&rng](int part) {
+      return static_cast<float>((rng >> (16 * part)) & 0xffffu) * (1.0f / 65536.0f) - 0.5f;
+    };
+    if (transmittance) weight *= transmittance->at(u, v, depth, uniform(1), uniform(2));
     if (shadow) {
-      const glm::ivec3 cell = glm::clamp(glm::ivec3(points.x[i], points.y[i], points.z[i]) / shadowDownsample,
-                                         glm::ivec3(0), shadow->size - 1);
+      // Shadow cells hold the light's transmittance of shadowDownsample³ voxels each.
+      rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
+      const float toCell = 1.0f / static_cast<float>(shadowDownsample);
+      const glm::ivec3 cell = glm::clamp(
+          glm::ivec3(glm::floor(glm::vec3(points.x[i] * toCell + uniform(1), points.y[i] * toCell + uniform(2),
+                                          points.z[i] * toCell + uniform(3)))),
+          glm::ivec3(0), shadow->size - 1);
       const float lit =
           static_cast<float>(shadow->transmittance[static_cast<std::size_t>(cell.x) +
                                                    static_cast<std::size_t>(shadow->size.x) *
@@ -271,6 +283,7 @@ DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const Inside
     stats = accumulator.stats();
   }  // the workers are joined here: no point arrives after this
   if (!stats.problem.empty()) throw Error(stats.problem);
+  if (options.pointsInside) *options.pointsInside = stats.points;
   DensityImage image = projector.merge();
   // Each point's share of D assumed `target` points; the batches overshoot it a little (or a
   // pattern that barely meets the mesh falls short), so the image is scaled to what landed.

@@ -236,6 +236,19 @@ LayerTransform readTransform(ObjectReader& parent, const std::string& key) {
   transform.scale = reader.number("scale", transform.scale, 1e-3, 1e3);
   transform.rotationDeg = readVector(reader, "rotation_deg", transform.rotationDeg, 3600.0);
   transform.offset = readVector(reader, "offset", transform.offset, 100.0);
+  if (const json* copies = reader.find("copies")) {
+    if (!copies->is_array() || copies->size() > kMaxLayerCopies)
+      reader.fail("must be an array of at most " + std::to_string(kMaxLayerCopies) + " rotations", "copies");
+    for (std::size_t i = 0; i < copies->size(); ++i) {
+      const json& copy = (*copies)[i];
+      const std::string key = "copies[" + std::to_string(i) + "]";
+      if (!copy.is_array() || copy.size() != 3) reader.fail("must be an array of three numbers (degrees)", key);
+      glm::dvec3 angles;
+      for (int axis = 0; axis < 3; ++axis)
+        angles[axis] = reader.checkNumber(copy[static_cast<std::size_t>(axis)], key, -3600.0, 3600.0);
+      transform.copies.push_back(angles);
+    }
+  }
   const std::string fit = reader.string("fit", std::string(toString(transform.fit)));
   try {
     transform.fit = fitModeFromString(fit);
@@ -613,9 +626,14 @@ json buildDocument(const Scene& scene, bool complete, bool withAnimation) {
     const LayerTransform& t = layer.transform;
     const LayerTransform none;
     if (complete || t.scale != none.scale || t.rotationDeg != none.rotationDeg || t.offset != none.offset ||
-        t.fit != none.fit || t.lockFit) {
+        t.fit != none.fit || !t.copies.empty() || t.lockFit) {
       json transform = {{"scale", t.scale}, {"rotation_deg", vector(t.rotationDeg)}, {"offset", vector(t.offset)}};
       if (complete || t.fit != none.fit) transform["fit"] = std::string(toString(t.fit));
+      if (complete || !t.copies.empty()) {
+        json copies = json::array();
+        for (const glm::dvec3& copy : t.copies) copies.push_back(vector(copy));
+        transform["copies"] = copies;
+      }
       if (t.lockFit) {
         transform["locked_fit"] = {{"center", vector(t.lockedCenter)}, {"scale", t.lockedScale}};
         if (complete || t.lockedAxisScale != none.lockedAxisScale)

@@ -61,11 +61,18 @@ FitMode fitModeFromString(std::string_view name);  // throws core::Error listing
 // rotation (degrees about x, then y, then z), offset as a fraction of the grid's longest side.
 // With `lockFit` the automatic fit is replaced by the stored one, so parameter changes (an
 // animation) never move or resize the pattern.
+inline constexpr std::size_t kMaxLayerCopies = 15;  // copies of one layer besides the original
+
 struct LayerTransform {
   double scale = 1.0;
   glm::dvec3 rotationDeg{0.0};
   glm::dvec3 offset{0.0};
   FitMode fit = FitMode::Contain;
+  // More copies of the same pattern, each turned by its angles (added to rotationDeg, angle by
+  // angle): a ribbon or a sheet then fills a mesh that one copy leaves half empty, and the copies
+  // keep one set of parameters, so a slider moves them all. The layer's weight is shared among
+  // the original and its copies.
+  std::vector<glm::dvec3> copies;
   bool lockFit = false;
   glm::dvec3 lockedCenter{0.0};     // attractor coordinates mapped to the mask's centre
   double lockedScale = 1.0;         // voxels per attractor unit
