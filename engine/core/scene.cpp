@@ -241,11 +241,11 @@ LayerTransform readTransform(ObjectReader& parent, const std::string& key) {
       reader.fail("must be an array of at most " + std::to_string(kMaxLayerCopies) + " rotations", "copies");
     for (std::size_t i = 0; i < copies->size(); ++i) {
       const json& copy = (*copies)[i];
-      const std::string key = "copies[" + std::to_string(i) + "]";
-      if (!copy.is_array() || copy.size() != 3) reader.fail("must be an array of three numbers (degrees)", key);
+      const std::string copyKey = "copies[" + std::to_string(i) + "]";
+      if (!copy.is_array() || copy.size() != 3) reader.fail("must be an array of three numbers (degrees)", copyKey);
       glm::dvec3 angles;
       for (int axis = 0; axis < 3; ++axis)
-        angles[axis] = reader.checkNumber(copy[static_cast<std::size_t>(axis)], key, -3600.0, 3600.0);
+        angles[axis] = reader.checkNumber(copy[static_cast<std::size_t>(axis)], copyKey, -3600.0, 3600.0);
       transform.copies.push_back(angles);
     }
   }
