@@ -18,6 +18,7 @@ void report(const BenchOptions& options, const char* method, int grid, int sampl
                                     {"samples", samples},
                                     {"seconds", seconds},
                                     {"points", result.stats.points},
+                                    {"points_projected", result.pointsProjected},
                                     {"accumulate_seconds", result.accumulateSeconds},
                                     {"render_seconds", result.renderSeconds},
                                     {"coverage", result.coverage},

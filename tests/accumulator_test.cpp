@@ -327,6 +327,19 @@ TEST(Fit, CopiesAreTurnedLayersThatShareTheWeightAndFillMore) {
   EXPECT_EQ(expanded[3].attractor, "rossler");
   EXPECT_EQ(expanded[3].weight, other.weight);
 
+  // Prepared copies are the original prepared once and turned: the same fit, their own rotation.
+  const auto smallMask = bunnyMask(32);
+  const std::vector<PreparedLayer> prepared = prepareLayers({layer, other}, *smallMask, 1);
+  ASSERT_EQ(prepared.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) {
+    const PreparedLayer single = prepareLayer(expanded[i], *smallMask, 1);
+    EXPECT_EQ(prepared[i].fit.scale, single.fit.scale) << i;
+    EXPECT_EQ(prepared[i].fit.attractorCenter, single.fit.attractorCenter) << i;
+    EXPECT_EQ(prepared[i].layer.transform.rotationDeg, expanded[i].transform.rotationDeg) << i;
+    const glm::dvec3 p = single.fit.attractorCenter + glm::dvec3(1.0, 2.0, 3.0);
+    EXPECT_NEAR(glm::length(prepared[i].fit.apply(p) - single.fit.apply(p)), 0.0, 1e-9) << i;
+  }
+
   const auto mask = bunnyMask(48);
   const auto litVoxels = [&](const PatternLayer& l) {
     const VolumeSnapshot snapshot = accumulate(mask, {l}, 400'000, 2);

@@ -299,6 +299,26 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
   return prepared;
 }
 
+std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers, const InsideMask& mask,
+                                         std::uint64_t seed) {
+  std::vector<PreparedLayer> prepared;
+  std::size_t source = 0;
+  const std::vector<PatternLayer> expanded = expandCopies(layers);
+  for (const PatternLayer& layer : layers) {
+    // The probe and the automatic fit come before the rotation, so one probe serves the original
+    // and all its copies: only the rotation differs.
+    const PreparedLayer original = prepareLayer(expanded[source++], mask, seed);
+    prepared.push_back(original);
+    for (std::size_t c = 0; c < layer.transform.copies.size(); ++c) {
+      PreparedLayer copy = original;
+      copy.layer = expanded[source++];
+      copy.fit.rotation = rotationFromDegrees(copy.layer.transform.rotationDeg);
+      prepared.push_back(std::move(copy));
+    }
+  }
+  return prepared;
+}
+
 // Per-thread state of one layer's orbits, structure of arrays so the advance and classify loops
 // vectorise across orbits.
 struct OrbitBatch {
@@ -656,10 +676,10 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
   // Probe outside the lock so running batches are not held up by it.
   std::vector<PreparedLayer> prepared;
   std::string problem;
-  for (const PatternLayer& layer : expandCopies(layers)) {
-    prepared.push_back(prepareLayer(layer, *mask_, seed));
+  for (const PreparedLayer& layer : prepareLayers(layers, *mask_, seed)) {
+    prepared.push_back(layer);
     if (!prepared.back().bounded)
-      problem = "attractor '" + layer.attractor + "' escapes to infinity (or collapses) with these parameters";
+      problem = "attractor '" + layer.layer.attractor + "' escapes to infinity (or collapses) with these parameters";
   }
   {
     // Readers (batches, snapshots) hold the lock shared almost without pause, and a shared_mutex

@@ -81,6 +81,11 @@ AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const
 // copy's angles, the layer's weight shared among them, no copies left. What the Accumulator runs.
 std::vector<PatternLayer> expandCopies(const std::vector<PatternLayer>& layers);
 
+// prepareLayer for each layer and its copies (one probe for all copies of a layer), in
+// expandCopies's order.
+std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers, const InsideMask& mask,
+                                         std::uint64_t seed);
+
 // Samples the layer's attractor and fits it into the mask's grid. Deterministic for a seed.
 // Throws core::Error on parameters that are not finite numbers, absurd steps or transforms.
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, std::uint64_t seed);

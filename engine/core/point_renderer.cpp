@@ -125,6 +125,7 @@ PointProjector::PointProjector(const PointProjection& projection, int threads) :
   const std::size_t pixels = static_cast<std::size_t>(p_.width) * static_cast<std::size_t>(p_.height);
   histograms_.assign(static_cast<std::size_t>(threads), std::vector<float>(4 * pixels, 0.0f));
   rngStates_.resize(static_cast<std::size_t>(threads));
+  scratch_.resize(static_cast<std::size_t>(threads));
   for (int t = 0; t < threads; ++t) rngStates_[static_cast<std::size_t>(t)] = mixSeed(p_.seed, 0x6c656e73ULL + t);
   // One point's D in its pixel: (volume inside the mesh) / (points · pixel footprint), lengths in
   // grid sides (flame_image.h). The footprint grows with the view depth squared in perspective.
@@ -156,7 +157,9 @@ void PointProjector::consume(int thread, const AcceptedPoints& points) {
   const auto lightStrength = static_cast<float>(p_.lightStrength);
   const auto pointDensity = static_cast<float>(pointDensity_);
   const ViewTransmittance* transmittance = p_.transmittance;
-  std::uint64_t projected = 0;
+  std::vector<Projected>& batch = scratch_[static_cast<std::size_t>(thread)];
+  batch.clear();
+  batch.reserve(points.count);
   for (std::size_t i = 0; i < points.count; ++i) {
     const glm::vec3 world = origin + voxelSize * glm::vec3(points.x[i], points.y[i], points.z[i]);
     glm::vec4 eye = view * glm::vec4(world, 1.0f);
@@ -185,7 +188,10 @@ void PointProjector::consume(int thread, const AcceptedPoints& points) {
     const auto uniform = [&rng](int part) {
       return static_cast<float>((rng >> (16 * part)) & 0xffffu) * (1.0f / 65536.0f) - 0.5f;
     };
-    if (transmittance) weight *= transmittance->at(u, v, depth, uniform(1), uniform(2));
+    Projected entry{static_cast<std::uint32_t>(static_cast<std::size_t>(py) * static_cast<std::size_t>(p_.width) +
+                                               static_cast<std::size_t>(px)),
+                    0.0f, ViewTransmittance::kNoLookup, 0.0f, points.rgb[i]};
+    if (transmittance) entry.transmittance = transmittance->lookup(u, v, depth, uniform(1), uniform(2), entry.fraction);
     if (shadow) {
       // Shadow cells hold the light's transmittance of shadowDownsample³ voxels each.
       rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -202,16 +208,35 @@ void PointProjector::consume(int thread, const AcceptedPoints& points) {
       weight *= 1.0f + lightStrength * (lit - 1.0f);
     }
     if (fogPerDepth > 0.0f) weight *= std::exp(-fogPerDepth * std::max(0.0f, depth - fogStart));
-    const std::uint32_t rgb = points.rgb[i];
-    float* bucket = &histogram[4 * (static_cast<std::size_t>(py) * static_cast<std::size_t>(p_.width) +
-                                    static_cast<std::size_t>(px))];
+    entry.weight = weight;
+    batch.push_back(entry);
+  }
+  // Second pass: the histogram (16 bytes a pixel, hundreds of MB at 4K) and the transmittance
+  // are far larger than the caches, so each point misses twice; prefetching kAhead points ahead
+  // keeps many of those misses in flight at once.
+  constexpr std::size_t kAhead = 16;
+  const float* transmittanceValues = transmittance ? transmittance->values.data() : nullptr;
+  for (std::size_t i = 0; i < batch.size(); ++i) {
+    if (i + kAhead < batch.size()) {
+      const Projected& next = batch[i + kAhead];
+      __builtin_prefetch(&histogram[4 * static_cast<std::size_t>(next.pixel)], 1);
+      if (next.transmittance != ViewTransmittance::kNoLookup)
+        __builtin_prefetch(&transmittanceValues[next.transmittance], 0);
+    }
+    const Projected& entry = batch[i];
+    float weight = entry.weight;
+    if (entry.transmittance != ViewTransmittance::kNoLookup) {
+      const float* slices = &transmittanceValues[entry.transmittance];
+      weight *= slices[0] + entry.fraction * (slices[1] - slices[0]);
+    }
+    const std::uint32_t rgb = entry.rgb;
+    float* bucket = &histogram[4 * static_cast<std::size_t>(entry.pixel)];
     bucket[0] += weight * static_cast<float>(rgb & 0xffu) * (1.0f / 255.0f);
     bucket[1] += weight * static_cast<float>((rgb >> 8) & 0xffu) * (1.0f / 255.0f);
     bucket[2] += weight * static_cast<float>((rgb >> 16) & 0xffu) * (1.0f / 255.0f);
     bucket[3] += weight;
-    ++projected;
   }
-  projected_.fetch_add(projected, std::memory_order_relaxed);
+  projected_.fetch_add(batch.size(), std::memory_order_relaxed);
 }
 
 DensityImage PointProjector::merge() const {

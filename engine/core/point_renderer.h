@@ -38,17 +38,23 @@ struct ViewTransmittance {
   // onto the image as a lattice wherever the transmittance changes fast. 1 in front of the grid,
   // the last slice behind it, 1 when empty.
   float at(float u, float v, float viewDepth, float jitterU = 0.0f, float jitterV = 0.0f) const {
-    if (values.empty() || viewDepth <= nearDepth) return 1.0f;
+    float fraction = 0.0f;
+    const std::size_t index = lookup(u, v, viewDepth, jitterU, jitterV, fraction);
+    return index == kNoLookup ? 1.0f : values[index] + fraction * (values[index + 1] - values[index]);
+  }
+  // at() in two halves, so a caller can prefetch values[index] before reading it: the slice
+  // boundary below the depth and the fraction towards the next, or kNoLookup where it is 1.
+  static constexpr std::size_t kNoLookup = ~std::size_t{0};
+  std::size_t lookup(float u, float v, float viewDepth, float jitterU, float jitterV, float& fraction) const {
+    if (values.empty() || viewDepth <= nearDepth) return kNoLookup;
     const int x = std::clamp(static_cast<int>(std::floor(u * static_cast<float>(width) + jitterU)), 0, width - 1);
     const int y = std::clamp(static_cast<int>(std::floor(v * static_cast<float>(height) + jitterV)), 0, height - 1);
     const float z = std::min((viewDepth - static_cast<float>(nearDepth)) * depthScale, static_cast<float>(depth));
     const int z0 = std::min(static_cast<int>(z), depth - 1);
-    const float f = z - static_cast<float>(z0);
-    const float* cell =
-        &values[(static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) *
-                    static_cast<std::size_t>(depth + 1) +
-                static_cast<std::size_t>(z0)];
-    return cell[0] + f * (cell[1] - cell[0]);
+    fraction = z - static_cast<float>(z0);
+    return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x)) *
+               static_cast<std::size_t>(depth + 1) +
+           static_cast<std::size_t>(z0);
   }
   float depthScale = 1.0f;  // slices per unit of view depth
 };
@@ -88,6 +94,17 @@ class PointProjector : public PointSink {
   double pointDensity_ = 1.0;  // D one point adds to its pixel at unit view depth (over depth² in perspective)
   std::vector<std::vector<float>> histograms_;
   std::vector<std::uint64_t> rngStates_;
+  // Per thread, the points of one consume call after projection, before they touch the large
+  // histogram and transmittance: a second pass reads them with prefetches running ahead, so the
+  // cache misses of many points overlap instead of following one another.
+  struct Projected {
+    std::uint32_t pixel;        // index into the histogram (in pixels)
+    float weight;               // D the point adds, before the camera's transmittance
+    std::size_t transmittance;  // ViewTransmittance::lookup's index, kNoLookup for none
+    float fraction;
+    std::uint32_t rgb;
+  };
+  std::vector<std::vector<Projected>> scratch_;
   std::atomic<std::uint64_t> projected_{0};
 };
 
