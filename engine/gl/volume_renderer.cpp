@@ -595,6 +595,18 @@ int tileSizeFor(int maxTile) {
   return std::max(16, std::min({maxTile, static_cast<int>(maxRenderbuffer), maxViewport[0], maxViewport[1]}));
 }
 
+// A mesh layer of the settings' look with nothing drawn yet.
+core::MeshOverlay emptyOverlay(const RenderSettings& settings, int width, int height) {
+  core::MeshOverlay mesh;
+  mesh.mode = settings.render.meshDisplay;
+  mesh.color = settings.render.meshColor;
+  mesh.strength = settings.render.meshStrength;
+  mesh.width = width;
+  mesh.height = height;
+  mesh.rgba.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
+  return mesh;
+}
+
 // Averages a supersampled overlay down to the output size.
 core::MeshOverlay downsampleOverlay(const core::MeshOverlay& full, int oversample) {
   if (oversample <= 1) return full;
@@ -635,13 +647,7 @@ MarchedImage marchImage(VolumeRenderer& renderer, const RenderSettings& settings
   const int fullWidth = width * oversample, fullHeight = height * oversample;
   MarchedImage result;
   result.density.resize(fullWidth, fullHeight);
-  core::MeshOverlay mesh;
-  mesh.mode = settings.render.meshDisplay;
-  mesh.color = settings.render.meshColor;
-  mesh.strength = settings.render.meshStrength;
-  mesh.width = fullWidth;
-  mesh.height = fullHeight;
-  mesh.rgba.assign(4 * static_cast<std::size_t>(fullWidth) * static_cast<std::size_t>(fullHeight), 0.0f);
+  core::MeshOverlay mesh = emptyOverlay(settings, fullWidth, fullHeight);
   const int samples = std::max(1, settings.render.samples);
 
   FrameTarget target;
@@ -690,13 +696,7 @@ core::MeshOverlay renderMeshOverlay(VolumeRenderer& renderer, const RenderSettin
   checkImageSize(width, height, oversample);
   const int tileSize = tileSizeFor(maxTile);
   const int fullWidth = width * oversample, fullHeight = height * oversample;
-  core::MeshOverlay mesh;
-  mesh.mode = settings.render.meshDisplay;
-  mesh.color = settings.render.meshColor;
-  mesh.strength = settings.render.meshStrength;
-  mesh.width = fullWidth;
-  mesh.height = fullHeight;
-  mesh.rgba.assign(4 * static_cast<std::size_t>(fullWidth) * static_cast<std::size_t>(fullHeight), 0.0f);
+  core::MeshOverlay mesh = emptyOverlay(settings, fullWidth, fullHeight);
   FrameTarget target;
   if (renderer.hasMesh())
     for (int tileY = 0; tileY < fullHeight; tileY += tileSize)
