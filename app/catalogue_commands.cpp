@@ -108,6 +108,16 @@ std::string formatParams(const core::AttractorInfo& info, const std::vector<doub
   return out.str();
 }
 
+// `text` padded with spaces to `columns` characters as a terminal shows them: printf's %-32s
+// counts bytes, so names with letters outside ASCII (Lü–Chen, Rössler, Nosé–Hoover) came out
+// short by their extra UTF-8 bytes and pushed the next column left.
+std::string padToColumns(const std::string& text, std::size_t columns) {
+  std::size_t shown = 0;
+  for (const char c : text)
+    if ((static_cast<unsigned char>(c) & 0xC0u) != 0x80u) ++shown;  // continuation bytes take no column
+  return text + std::string(columns > shown ? columns - shown : 1, ' ');
+}
+
 }  // namespace
 
 int listCommand(const CommandArgs& args) {
@@ -139,10 +149,11 @@ int listCommand(const CommandArgs& args) {
     std::cout << list.dump(2) << "\n";
     return 0;
   }
-  std::printf("%-22s %-5s %-32s %s\n", "ID", "KIND", "NAME", "PARAMETERS (defaults)");
+  std::cout << padToColumns("ID", 23) << padToColumns("KIND", 6) << padToColumns("NAME", 33)
+            << "PARAMETERS (defaults)\n";
   for (const auto& info : core::attractorCatalogue())
-    std::printf("%-22s %-5s %-32s %s\n", info.id.c_str(), std::string(core::toString(info.kind)).c_str(),
-                info.name.c_str(), formatParams(info, info.defaultParams()).c_str());
+    std::cout << padToColumns(info.id, 23) << padToColumns(std::string(core::toString(info.kind)), 6)
+              << padToColumns(info.name, 33) << formatParams(info, info.defaultParams()) << "\n";
   return 0;
 }
 

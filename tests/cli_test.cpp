@@ -1,8 +1,11 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -182,6 +185,28 @@ TEST(Cli, ListJsonIsTheCatalogue) {
   const auto table = runVoxflame("list");
   ASSERT_EQ(table.exitStatus, 0);
   EXPECT_NE(table.output.find("lorenz84"), std::string::npos);
+  // Every row's parameters start in the same column as the header's, counted in characters (not
+  // bytes), names with letters outside ASCII (Lü–Chen, Rössler, Nosé–Hoover) included.
+  std::istringstream rows(table.output);
+  std::string row;
+  int checked = 0, nonAscii = 0;
+  constexpr std::size_t kParametersColumn = 23 + 6 + 33;
+  while (std::getline(rows, row)) {
+    std::vector<std::string> characters;  // one UTF-8 sequence each
+    for (const char c : row) {
+      if ((static_cast<unsigned char>(c) & 0xC0u) == 0x80u && !characters.empty())
+        characters.back() += c;
+      else
+        characters.emplace_back(1, c);
+    }
+    ASSERT_GT(characters.size(), kParametersColumn) << row;
+    EXPECT_EQ(characters[kParametersColumn - 1], " ") << row;
+    EXPECT_NE(characters[kParametersColumn], " ") << row;
+    if (std::any_of(row.begin(), row.end(), [](char c) { return static_cast<unsigned char>(c) >= 0x80u; })) ++nonAscii;
+    ++checked;
+  }
+  EXPECT_GT(checked, 10);
+  EXPECT_GE(nonAscii, 3) << "the catalogue's names with accents and dashes are among the rows";
   EXPECT_NE(runVoxflame("list --frobnicate").exitStatus, 0);
 }
 
