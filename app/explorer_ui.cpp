@@ -627,6 +627,14 @@ void cameraSection(ExplorerState& state) {
 void presetsSection(ExplorerState& state, float scale) {
   if (!state.presets) return;
   const PresetLibrary::Entries entries = state.presets->entries();
+  // Saving comes first, so it stays in reach however long the library grows.
+  ImGui::InputTextWithHint("##savename", "name of your preset", state.saveName, sizeof state.saveName);
+  probe(state, "preset/name");
+  ImGui::SameLine();
+  if (button(state, "preset/", "Save as") && state.saveName[0] != '\0') state.requests.saveAs = state.saveName;
+  ImGui::SameLine();
+  if (button(state, "preset/", "Refresh")) state.presets->refresh();
+  if (!state.presetMessage.empty()) ImGui::TextWrapped("%s", state.presetMessage.c_str());
   if (state.presets->busy()) ImGui::TextColored(kDimColor, "reading presets…");
   if (entries) {
     const float size = 92 * scale;
@@ -670,13 +678,6 @@ void presetsSection(ExplorerState& state, float scale) {
       ImGui::PopID();
     }
   }
-  ImGui::InputTextWithHint("##savename", "name of your preset", state.saveName, sizeof state.saveName);
-  probe(state, "preset/name");
-  ImGui::SameLine();
-  if (button(state, "preset/", "Save as") && state.saveName[0] != '\0') state.requests.saveAs = state.saveName;
-  ImGui::SameLine();
-  if (button(state, "preset/", "Refresh")) state.presets->refresh();
-  if (!state.presetMessage.empty()) ImGui::TextWrapped("%s", state.presetMessage.c_str());
 }
 
 void exportSection(ExplorerState& state) {

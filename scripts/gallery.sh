@@ -9,6 +9,8 @@
 # --table-only renders none; the table always lists them all. GALLERY_WIDTH, GALLERY_HEIGHT and GALLERY_SAMPLES override the
 # image size (640×400) and the jittered samples per pixel (4). The points are each preset's own.
 # The share of each mesh the pattern covers (the render's statistics) goes in the table too.
+# Animated presets (with keyframes) also get a looping GIF (GALLERY_ANIMATION_WIDTH ×
+# GALLERY_ANIMATION_HEIGHT, default 320×200, through `voxflame animate` and ImageMagick).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 voxflame="$root/build/app/voxflame"
@@ -47,6 +49,20 @@ for file in "${to_render[@]+"${to_render[@]}"}"; do
   percent="$(grep -o 'covers [0-9]*%' <<<"$line" | grep -o '[0-9]*' || true)"
   { grep -v "^$stem	" "$coverage" || true; printf '%s\t%s\n' "$stem" "$percent"; } | sort >"$coverage.new"
   mv "$coverage.new" "$coverage"
+  # An animated preset (one with keyframes) also becomes a looping GIF of its frames, shown in
+  # the table in place of the still (which stays, as the preset's thumbnail).
+  if grep -q '"keyframes"' "$file"; then
+    command -v convert >/dev/null ||
+      { echo "gallery.sh: $stem is animated; its GIF needs ImageMagick's convert (apt-get install imagemagick)" >&2; exit 1; }
+    frames="$(mktemp -d)"
+    "$voxflame" animate "$file" -o "$frames/%04d.png" --width "${GALLERY_ANIMATION_WIDTH:-320}" \
+      --height "${GALLERY_ANIMATION_HEIGHT:-200}" >/dev/null
+    fps="$(grep -o '"fps": *[0-9.]*' "$file" | head -n 1 | grep -o '[0-9.]*$' || echo 30)"
+    delay="$(awk -v fps="$fps" 'BEGIN { printf "%d", 100 / fps + 0.5 }')"
+    convert -delay "$delay" -loop 0 "$frames"/*.png -layers Optimize "$gallery/$stem.gif"
+    rm -rf "$frames"
+    echo "wrote $gallery/$stem.gif ($(ls "$gallery/$stem.gif" >/dev/null && echo "loop at $fps fps"))"
+  fi
 done
 
 # Attractor ids to their catalogue names, from `voxflame list --json` (one object per attractor,
@@ -75,8 +91,10 @@ cell() {
   done < <(json_strings attractor "$file" | awk '!seen[$0]++')
   local covered
   covered="$(awk -F '\t' -v stem="$stem" '$1 == stem && $2 != "" { print " · covers " $2 "%" }' "$gallery/coverage.tsv" 2>/dev/null || true)"
-  printf '<td align="center"><a href="presets/%s.json"><img src="presets/gallery/%s.png" width="280" alt="%s"></a><br><b>%s</b><br><sub>%s · %s%s</sub></td>' \
-    "$stem" "$stem" "$title" "$title" "$attractors" "$mesh" "$covered"
+  local image="$stem.png"
+  [[ -f "$gallery/$stem.gif" ]] && grep -q '"keyframes"' "$file" && image="$stem.gif"
+  printf '<td align="center"><a href="presets/%s.json"><img src="presets/gallery/%s" width="280" alt="%s"></a><br><b>%s</b><br><sub>%s · %s%s</sub></td>' \
+    "$stem" "$image" "$title" "$title" "$attractors" "$mesh" "$covered"
 }
 
 table="$(mktemp)"
