@@ -233,31 +233,12 @@ TEST(Fit, OnePercentParameterChangeMovesTheFitSmoothly) {
   }
 }
 
-namespace {
-
-// The box of the mask's inside voxels, in voxel units (as the fit sees it).
-void maskInsideBox(const InsideMask& mask, glm::dvec3& low, glm::dvec3& high) {
-  const GridGeometry& g = mask.geometry;
-  glm::ivec3 lo = g.size, hi(-1);
-  for (int k = 0; k < g.size.z; ++k)
-    for (int j = 0; j < g.size.y; ++j)
-      for (int i = 0; i < g.size.x; ++i)
-        if (mask.inside[g.index(i, j, k)]) {
-          lo = glm::min(lo, glm::ivec3(i, j, k));
-          hi = glm::max(hi, glm::ivec3(i, j, k));
-        }
-  low = glm::dvec3(lo);
-  high = glm::dvec3(hi) + 1.0;
-}
-
-}  // namespace
-
 // contain: the middle axis reaches the shape; cover: every axis does (the largest ratio, capped
 // for flat boxes); stretch: each attractor axis matches the shape's box on its own.
 TEST(Fit, CoverAndStretchReachTheShapesBoxOnEveryAxis) {
   const auto mask = bunnyMask(48);
   glm::dvec3 maskLow, maskHigh;
-  maskInsideBox(*mask, maskLow, maskHigh);
+  insideBounds(*mask, maskLow, maskHigh);
   const glm::dvec3 maskSize = maskHigh - maskLow;
   const glm::dvec3 low(-1.0, -2.0, -1.5), high(1.0, 2.0, 1.5), median(0.1, 0.0, -0.1);
   const glm::dvec3 ratios = maskSize / (high - low);

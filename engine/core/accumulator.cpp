@@ -112,7 +112,8 @@ void validateLayer(const PatternLayer& layer, const AttractorInfo& info) {
   if (c.gradient.empty()) throw Error("the colour gradient of " + name + " has no stops");
 }
 
-// The box of voxels inside the mask, in voxel units; the whole grid when the mask is empty.
+}  // namespace
+
 void insideBounds(const InsideMask& mask, glm::dvec3& low, glm::dvec3& high) {
   const GridGeometry& g = mask.geometry;
   glm::ivec3 lo = g.size, hi(-1);
@@ -131,8 +132,6 @@ void insideBounds(const InsideMask& mask, glm::dvec3& low, glm::dvec3& high) {
   low = glm::dvec3(lo);
   high = glm::dvec3(hi) + 1.0;
 }
-
-}  // namespace
 
 AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const glm::dvec3& high,
                           const InsideMask& mask, FitMode mode) {

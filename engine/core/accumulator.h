@@ -72,6 +72,10 @@ struct PreparedLayer {
   bool bounded = false;                  // the probe orbit stayed finite and bounded
 };
 
+// The box of the voxels inside the mask, in voxel units; the whole grid when the mask is empty.
+// What the automatic fit sizes the attractor's robust box against.
+void insideBounds(const InsideMask& mask, glm::dvec3& low, glm::dvec3& high);
+
 // The automatic fit of robust bounds (low, median and high percentiles) into the mask's inside box,
 // the way `mode` asks (scene.h's FitMode).
 AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const glm::dvec3& high,

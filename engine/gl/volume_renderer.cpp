@@ -16,6 +16,18 @@ namespace voxflame::gl {
 
 namespace {
 
+// A mesh layer of the settings' look with nothing drawn yet.
+core::MeshOverlay emptyOverlay(const RenderSettings& settings, int width, int height) {
+  core::MeshOverlay mesh;
+  mesh.mode = settings.render.meshDisplay;
+  mesh.color = settings.render.meshColor;
+  mesh.strength = settings.render.meshStrength;
+  mesh.width = width;
+  mesh.height = height;
+  mesh.rgba.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
+  return mesh;
+}
+
 // One triangle covering the viewport; the fragment shaders do the work.
 const char* kFullscreenVertexShader = R"(#version 430 core
 void main() {
@@ -244,18 +256,12 @@ core::DensityImage FrameTarget::readDensity() const {
 }
 
 core::MeshOverlay FrameTarget::readMeshOverlay(const RenderSettings& settings) const {
-  core::MeshOverlay overlay;
-  overlay.mode = settings.render.meshDisplay;
-  overlay.color = settings.render.meshColor;
-  overlay.strength = settings.render.meshStrength;
-  overlay.width = width_;
-  overlay.height = height_;
+  core::MeshOverlay overlay = emptyOverlay(settings, width_, height_);
   std::vector<std::uint8_t> rows(4 * static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
   glBindFramebuffer(GL_FRAMEBUFFER, meshFramebuffer_);
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  overlay.rgba.resize(rows.size());
   const std::size_t row = 4 * static_cast<std::size_t>(width_);
   for (int y = 0; y < height_; ++y)
     for (std::size_t i = 0; i < row; ++i)
@@ -593,18 +599,6 @@ int tileSizeFor(int maxTile) {
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
   glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
   return std::max(16, std::min({maxTile, static_cast<int>(maxRenderbuffer), maxViewport[0], maxViewport[1]}));
-}
-
-// A mesh layer of the settings' look with nothing drawn yet.
-core::MeshOverlay emptyOverlay(const RenderSettings& settings, int width, int height) {
-  core::MeshOverlay mesh;
-  mesh.mode = settings.render.meshDisplay;
-  mesh.color = settings.render.meshColor;
-  mesh.strength = settings.render.meshStrength;
-  mesh.width = width;
-  mesh.height = height;
-  mesh.rgba.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
-  return mesh;
 }
 
 // Averages a supersampled overlay down to the output size.
