@@ -80,7 +80,7 @@ glm::dmat3 rotationFromDegrees(glm::dvec3 degrees) {
   return rz * ry * rx;
 }
 
-void validateLayer(const PatternLayer& layer, const AttractorInfo& info) {
+void validateAttractorLayer(const PatternLayer& layer, const AttractorInfo& info) {
   const std::string name = "attractor '" + info.id + "'";
   if (layer.params.size() != info.params.size())
     throw Error(name + " takes " + std::to_string(info.params.size()) + " parameters, got " +
@@ -90,6 +90,14 @@ void validateLayer(const PatternLayer& layer, const AttractorInfo& info) {
       throw Error("parameter '" + info.params[i].name + "' of " + name + " is not a finite number");
   if (!std::isfinite(layer.step) || layer.step <= 0.0 || layer.step > 1.0)
     throw Error("the step of " + name + " must be in (0, 1]");
+  if (layer.color.mode == ColorMode::Index)
+    throw Error("the colour mode 'index' of " + name + " needs a flame or quaternion Julia layer");
+}
+
+// What every kind of layer must satisfy: weight, placement and colour.
+void validateLayer(const PatternLayer& layer) {
+  const std::string name = layer.kind == PatternKind::Attractor ? "attractor '" + layer.attractor + "'"
+                                                                : std::string(toString(layer.kind)) + " layer";
   if (!std::isfinite(layer.weight) || layer.weight < 0.0 || layer.weight > 1000.0)
     throw Error("the weight of " + name + " must be in [0, 1000]");
   const LayerTransform& t = layer.transform;
@@ -185,19 +193,73 @@ std::vector<PatternLayer> expandCopies(const std::vector<PatternLayer>& layers) 
   return expanded;
 }
 
+namespace {
+
+PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3>& samples, std::vector<double>& speeds,
+                                  std::vector<double>& turns, const InsideMask& mask, SplitMix64& rng);
+
+constexpr std::size_t kChaosProbeLanes = 256;
+constexpr int kChaosProbeTransient = 40;
+constexpr int kChaosProbeSteps = 500;
+
+// The probe of a chaos-game layer: lanes from random starts run through their transient, then
+// every drawn point is a sample. Its points are not kept as seeds: a chaos-game lane restarts
+// anywhere and finds the attractor within its transient.
+void probeChaosGame(const ChaosGame& game, SplitMix64& rng, std::vector<glm::dvec3>& samples,
+                    std::vector<double>& speeds, std::vector<double>& turns) {
+  ChaosLanes lanes;
+  lanes.resize(kChaosProbeLanes);
+  for (std::size_t i = 0; i < kChaosProbeLanes; ++i) game.seedLane(lanes, i, rng);
+  std::vector<double> x(kChaosProbeLanes), y(kChaosProbeLanes), z(kChaosProbeLanes), color(kChaosProbeLanes);
+  std::vector<glm::dvec3> previous(kChaosProbeLanes, glm::dvec3(0.0)), previousStep(kChaosProbeLanes, glm::dvec3(0.0));
+  samples.reserve(kChaosProbeLanes * kChaosProbeSteps);
+  for (int step = 0; step < kChaosProbeTransient + kChaosProbeSteps; ++step) {
+    game.step(lanes, x.data(), y.data(), z.data(), color.data(), kChaosProbeLanes);
+    for (std::size_t i = 0; i < kChaosProbeLanes; ++i) {
+      const glm::dvec3 p(x[i], y[i], z[i]);
+      if (!isFiniteAndNear(p.x, p.y, p.z, kProbeEscape)) {
+        game.seedLane(lanes, i, rng);  // as the workers do: an escaped lane starts again
+        previous[i] = previousStep[i] = glm::dvec3(0.0);
+        continue;
+      }
+      const glm::dvec3 d = p - previous[i];
+      if (step >= kChaosProbeTransient && lanes.visible[i]) {
+        samples.push_back(p);
+        speeds.push_back(glm::length(d));
+        const double lengths = glm::length(d) * glm::length(previousStep[i]);
+        if (lengths > 0.0) turns.push_back(glm::length(glm::cross(d, previousStep[i])) / lengths);
+      }
+      previous[i] = p;
+      previousStep[i] = d;
+    }
+  }
+}
+
+}  // namespace
+
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, std::uint64_t seed) {
   PreparedLayer prepared;
   prepared.layer = layer;
+  validateLayer(layer);
+  SplitMix64 rng(mixSeed(seed, 0x70726f6265ULL));
+  std::vector<glm::dvec3> samples;
+  std::vector<double> speeds, turns;
+  if (layer.isChaosGame()) {
+    prepared.game = std::make_shared<const ChaosGame>(layer, std::string(toString(layer.kind)) + " layer");
+    probeChaosGame(*prepared.game, rng, samples, speeds, turns);
+    // Most of a chaos game's draws must be finite points for the pattern to mean anything.
+    if (samples.size() < kChaosProbeLanes * kChaosProbeSteps / 20) return prepared;  // bounded stays false
+    return finishPreparedLayer(std::move(prepared), samples, speeds, turns, mask, rng);
+  }
   prepared.info = &attractorOrThrow(layer.attractor);
   const AttractorInfo& info = *prepared.info;
-  validateLayer(layer, info);
+  validateAttractorLayer(layer, info);
 
   // Probe: one orbit from the start runs through its transient, then drops a seed every
   // kProbeSpacing steps; the seeds (different phases of the attractor, not near-copies of one
   // orbit, which chaos would take long to pull apart) advance as one batch and are sampled. Many
   // decorrelated samples make the bounds — and so the fit — steady under small changes.
   const AdvanceFn advance = info.advance(layer.integrator);
-  SplitMix64 rng(mixSeed(seed, 0x70726f6265ULL));
   std::vector<double> x(kProbeOrbits), y(kProbeOrbits), z(kProbeOrbits);
   std::vector<std::uint8_t> alive(kProbeOrbits, 1);
   {
@@ -217,9 +279,7 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
       }
     }
   }
-  std::vector<glm::dvec3> samples;
   samples.reserve(kProbeOrbits * kProbeSamplesPerOrbit);
-  std::vector<double> speeds, turns;
   std::vector<glm::dvec3> previous(kProbeOrbits), previousStep(kProbeOrbits, glm::dvec3(0.0));
   for (int step = 0; step < kProbeSamplesPerOrbit; ++step) {
     for (std::size_t i = 0; i < kProbeOrbits; ++i) previous[i] = {x[i], y[i], z[i]};
@@ -245,7 +305,15 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
   // A few probe orbits leaving (a basin boundary nearby) is tolerated as long as most stay.
   const auto survivors = static_cast<std::size_t>(std::count(alive.begin(), alive.end(), std::uint8_t{1}));
   if (survivors < kProbeOrbits / 2 || samples.empty()) return prepared;  // bounded stays false
+  return finishPreparedLayer(std::move(prepared), samples, speeds, turns, mask, rng);
+}
 
+namespace {
+
+// The fit, the colour references and the palette, from a probe's samples (any kind of layer).
+PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3>& samples, std::vector<double>& speeds,
+                                  std::vector<double>& turns, const InsideMask& mask, SplitMix64& rng) {
+  const PatternLayer& layer = prepared.layer;
   glm::dvec3 low, high;
   // 5%..95%: the bulk of the density decides the fit, not rare excursions (Rössler's z spikes
   // would otherwise push its dense spiral out of the grid), and a small sample noise moves it little.
@@ -298,6 +366,8 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
   return prepared;
 }
 
+}  // namespace
+
 std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers, const InsideMask& mask,
                                          std::uint64_t seed) {
   std::vector<PreparedLayer> prepared;
@@ -329,6 +399,8 @@ struct OrbitBatch {
   std::vector<std::int32_t> brick;   // this step's 4×4×4 brick of the grid, 0 when none (32-bit like voxel)
   std::vector<std::uint32_t> noise;  // xorshift32 state per orbit for the deposit jitter (never 0)
   std::vector<float> gx, gy, gz;     // this step's exact grid position (point sink only)
+  std::vector<double> colorCoord;    // chaos games: this step's colour index (ColorMode::Index)
+  ChaosLanes chaos;                  // chaos games: the iterated state behind x, y, z
   SplitMix64 rng{0};
   std::uint64_t generation = ~std::uint64_t{0};
 };
@@ -437,6 +509,9 @@ LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
     case ColorMode::Distance:
       k.colorScale = color.scale / layer.distanceReference;
       break;
+    case ColorMode::Index:
+      k.colorScale = color.scale;
+      break;
   }
   k.axisOffset = layer.axisLow;
   k.inversePeriod = 1.0 / color.period;
@@ -453,9 +528,11 @@ LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
       double *__restrict px, double *__restrict py, double *__restrict pz, double *__restrict sx,                 \
       double *__restrict sy, double *__restrict sz, std::int32_t *__restrict age, std::int32_t *__restrict voxel, \
       std::int32_t *__restrict colorIndex, std::int32_t *__restrict escaped, std::int32_t *__restrict brick,      \
-      std::uint32_t *__restrict noise, float *__restrict gxOut, float *__restrict gyOut, float *__restrict gzOut
-#define VOXFLAME_CLASSIFY_ARGS \
-  kernel, x, y, z, px, py, pz, sx, sy, sz, age, voxel, colorIndex, escaped, brick, noise, gxOut, gyOut, gzOut
+      std::uint32_t *__restrict noise, float *__restrict gxOut, float *__restrict gyOut, float *__restrict gzOut, \
+      const double *__restrict colorCoord
+#define VOXFLAME_CLASSIFY_ARGS                                                                                 \
+  kernel, x, y, z, px, py, pz, sx, sy, sz, age, voxel, colorIndex, escaped, brick, noise, gxOut, gyOut, gzOut, \
+      colorCoord
 
 // One pass over a batch after it advanced: escape test, colour value, voxel index. Bitwise &
 // (not &&) and selects keep the body one basic block so it vectorises across orbits; the colour
@@ -480,6 +557,8 @@ template <ColorMode kMode, Output kOut>
       value = cycles - std::floor(cycles);
     } else if constexpr (kMode == ColorMode::Axis) {
       value = xi * k.axis[0] + yi * k.axis[1] + zi * k.axis[2] - k.axisOffset;
+    } else if constexpr (kMode == ColorMode::Index) {
+      value = colorCoord[i];
     } else {
       const double ex = xi - k.center[0], ey = yi - k.center[1], ez = zi - k.center[2];
       value = std::sqrt(ex * ex + ey * ey + ez * ez);
@@ -567,7 +646,7 @@ using ClassifyFn = void (*)(VOXFLAME_CLASSIFY_PARAMS);
 void classifyBatch(ClassifyFn classify, const LayerKernel& kernel, OrbitBatch& b) {
   classify(kernel, b.x.data(), b.y.data(), b.z.data(), b.px.data(), b.py.data(), b.pz.data(), b.sx.data(), b.sy.data(),
            b.sz.data(), b.age.data(), b.voxel.data(), b.colorIndex.data(), b.escaped.data(), b.brick.data(),
-           b.noise.data(), b.gx.data(), b.gy.data(), b.gz.data());
+           b.noise.data(), b.gx.data(), b.gy.data(), b.gz.data(), b.colorCoord.data());
 }
 
 template <Output kOut>
@@ -585,6 +664,8 @@ ClassifyFn classifierFor(ColorMode mode) {
         return &classifyAvx2<ColorMode::Axis, kOut>;
       case ColorMode::Distance:
         return &classifyAvx2<ColorMode::Distance, kOut>;
+      case ColorMode::Index:
+        return &classifyAvx2<ColorMode::Index, kOut>;
     }
   }
 #endif
@@ -599,6 +680,8 @@ ClassifyFn classifierFor(ColorMode mode) {
       return &classifyBaseline<ColorMode::Axis, kOut>;
     case ColorMode::Distance:
       return &classifyBaseline<ColorMode::Distance, kOut>;
+    case ColorMode::Index:
+      return &classifyBaseline<ColorMode::Index, kOut>;
   }
   return &classifyBaseline<ColorMode::Speed, kOut>;
 }
@@ -678,7 +761,11 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
   for (const PreparedLayer& layer : prepareLayers(layers, *mask_, seed)) {
     prepared.push_back(layer);
     if (!prepared.back().bounded)
-      problem = "attractor '" + layer.layer.attractor + "' escapes to infinity (or collapses) with these parameters";
+      problem =
+          layer.layer.kind == PatternKind::Attractor
+              ? "attractor '" + layer.layer.attractor + "' escapes to infinity (or collapses) with these parameters"
+              : std::string(toString(layer.layer.kind)) +
+                    " layer escapes to infinity (or collapses) with these transforms";
   }
   {
     // Readers (batches, snapshots) hold the lock shared almost without pause, and a shared_mutex
@@ -928,14 +1015,22 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
       b.noise.resize(kOrbitsPerBatch);
       for (auto& n : b.noise) n = static_cast<std::uint32_t>(noiseSeeds.next() >> 32) | 1u;
       for (auto* v : {&b.gx, &b.gy, &b.gz}) v->assign(kOrbitsPerBatch, 0.0f);
-      for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
-        const glm::dvec3 s = layer.seeds[b.rng.next() % layer.seeds.size()];
-        b.x[i] = b.px[i] = s.x;
-        b.y[i] = b.py[i] = s.y;
-        b.z[i] = b.pz[i] = s.z;
+      b.colorCoord.assign(kOrbitsPerBatch, 0.0);
+      if (layer.game) {
+        // A chaos game's lanes start anywhere; their transient (kTransientSteps) finds the attractor.
+        b.chaos.resize(kOrbitsPerBatch);
+        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) layer.game->seedLane(b.chaos, i, b.rng);
+      } else {
+        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
+          const glm::dvec3 s = layer.seeds[b.rng.next() % layer.seeds.size()];
+          b.x[i] = b.px[i] = s.x;
+          b.y[i] = b.py[i] = s.y;
+          b.z[i] = b.pz[i] = s.z;
+        }
       }
     }
-    const AdvanceFn advance = layer.info->advance(layer.layer.integrator);
+    const ChaosGame* game = layer.game.get();
+    const AdvanceFn advance = game ? nullptr : layer.info->advance(layer.layer.integrator);
     const double* params = layer.layer.params.data();
     const double h = layer.layer.step;
     // A layer's weight is its share of the iterations, hence of the density it adds.
@@ -947,8 +1042,18 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
       packedPalette[c] = std::uint32_t{layer.palette[c].r} | std::uint32_t{layer.palette[c].g} << 8 |
                          std::uint32_t{layer.palette[c].b} << 16;
     for (int s = 0; s < steps; ++s) {
-      advance(params, h, b.x.data(), b.y.data(), b.z.data(), kOrbitsPerBatch);
+      if (game) {
+        game->step(b.chaos, b.x.data(), b.y.data(), b.z.data(), b.colorCoord.data(), kOrbitsPerBatch);
+      } else {
+        advance(params, h, b.x.data(), b.y.data(), b.z.data(), kOrbitsPerBatch);
+      }
       classifyBatch(classify, kernel, b);
+      if (game) {
+        // A point its transform's opacity (or a quaternion slice) hides is not a point at all.
+        const std::int32_t* visible = b.chaos.visible.data();
+        std::int32_t* voxel = b.voxel.data();
+        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) voxel[i] = visible[i] ? voxel[i] : -2;
+      }
       iterations += kOrbitsPerBatch;
       std::int32_t escapedHere = 0;
       if (sink_) {
@@ -996,6 +1101,16 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
         escapes += static_cast<std::uint64_t>(escapedHere);
         for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
           if (!b.escaped[i]) continue;
+          if (game) {
+            game->seedLane(b.chaos, i, b.rng);
+            b.px[i] = b.chaos.x[i];
+            b.py[i] = b.chaos.y[i];
+            b.pz[i] = b.chaos.z[i];
+            b.sx[i] = b.sy[i] = b.sz[i] = 0.0;
+            b.age[i] = 0;
+            b.escaped[i] = 0;
+            continue;
+          }
           const glm::dvec3 seedPoint = layer.seeds[b.rng.next() % layer.seeds.size()];
           const double jitter = 1e-7 * (1.0 + std::abs(seedPoint.x));
           b.x[i] = b.px[i] = seedPoint.x + jitter * b.rng.symmetric();

@@ -30,6 +30,7 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
+#include "chaos_game.h"
 #include "inside_mask.h"
 #include "scene.h"
 
@@ -58,10 +59,11 @@ struct AutomaticFit {
 // What one layer needs to run, prepared once per generation from a short probe orbit.
 struct PreparedLayer {
   PatternLayer layer;
-  const AttractorInfo* info = nullptr;
+  const AttractorInfo* info = nullptr;    // attractor layers
+  std::shared_ptr<const ChaosGame> game;  // flame and quaternion Julia layers (shared by copies)
   AutomaticFit automaticFit;
   FitTransform fit;                      // automatic fit (or the locked one) and the user transform
-  std::vector<glm::dvec3> seeds;         // points known to lie on the attractor
+  std::vector<glm::dvec3> seeds;         // points known to lie on the attractor (attractor layers)
   double escapeRadius = 1e6;             // beyond this an orbit counts as escaped
   double speedReference = 1.0;           // speed mapped to the gradient's end
   double distanceReference = 1.0;        // distance from the centre mapped to the gradient's end

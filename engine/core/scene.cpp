@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "error.h"
+#include "flame_variations.h"
 #include "grid.h"
 #include "keyframes.h"
 
@@ -39,14 +40,40 @@ std::string_view toString(ColorMode mode) {
       return "axis";
     case ColorMode::Distance:
       return "distance";
+    case ColorMode::Index:
+      return "index";
   }
   return "speed";
 }
 
 ColorMode colorModeFromString(std::string_view name) {
-  for (ColorMode mode : {ColorMode::Speed, ColorMode::Curvature, ColorMode::Time, ColorMode::Axis, ColorMode::Distance})
+  for (ColorMode mode : {ColorMode::Speed, ColorMode::Curvature, ColorMode::Time, ColorMode::Axis, ColorMode::Distance,
+                         ColorMode::Index})
     if (toString(mode) == name) return mode;
-  throw Error("is '" + std::string(name) + "'; the known colour modes are: speed, curvature, time, axis, distance");
+  throw Error("is '" + std::string(name) +
+              "'; the known colour modes are: speed, curvature, time, axis, distance, index");
+}
+
+std::string_view toString(PatternKind kind) {
+  switch (kind) {
+    case PatternKind::Attractor:
+      return "attractor";
+    case PatternKind::Flame:
+      return "flame";
+    case PatternKind::QuaternionJulia:
+      return "quaternion_julia";
+  }
+  return "attractor";
+}
+
+PatternKind patternKindFromString(std::string_view name) {
+  for (PatternKind kind : {PatternKind::Attractor, PatternKind::Flame, PatternKind::QuaternionJulia})
+    if (toString(kind) == name) return kind;
+  throw Error("is '" + std::string(name) + "'; the known kinds are: attractor, flame, quaternion_julia");
+}
+
+std::string PatternLayer::patternName() const {
+  return kind == PatternKind::Attractor ? attractor : std::string(toString(kind));
 }
 
 std::string_view toString(FitMode mode) {
@@ -180,13 +207,14 @@ glm::dvec3 readVector(ObjectReader& reader, const std::string& key, glm::dvec3 f
   return v;
 }
 
-ColorSettings readColor(ObjectReader& parent, const std::string& key) {
+ColorSettings readColor(ObjectReader& parent, const std::string& key, ColorMode defaultMode = ColorMode::Speed) {
   ColorSettings color;
+  color.mode = defaultMode;
   color.gradient = {{0.0f, parseHexColor("#2a6cff")}, {1.0f, parseHexColor("#ffb347")}};
   const json* value = parent.find(key);
   if (!value) return color;
   ObjectReader reader(*value, parent.source(), parent.keyPath(key));
-  const std::string mode = reader.string("mode", "speed");
+  const std::string mode = reader.string("mode", std::string(toString(defaultMode)));
   try {
     color.mode = colorModeFromString(mode);
   } catch (const Error& e) {
@@ -204,8 +232,8 @@ ColorSettings readColor(ObjectReader& parent, const std::string& key) {
   }
   if (stops) {
     const std::string path = reader.keyPath("gradient");
-    if (!stops->is_array() || stops->size() < 2 || stops->size() > 64)
-      reader.fail("must be an array of 2 to 64 colours like \"#ff8800\"", "gradient");
+    if (!stops->is_array() || stops->size() < 2 || stops->size() > kMaxGradientStops)
+      reader.fail("must be an array of 2 to 256 colours like \"#ff8800\" (a flame's palette has 256)", "gradient");
     color.gradient.clear();
     const std::size_t count = stops->size();
     for (std::size_t i = 0; i < count; ++i) {
@@ -271,9 +299,144 @@ LayerTransform readTransform(ObjectReader& parent, const std::string& key) {
   return transform;
 }
 
+Affine3 readAffine(ObjectReader& reader, const std::string& key, const Affine3& fallback) {
+  const json* value = reader.find(key);
+  if (!value) return fallback;
+  if (!value->is_array() || value->size() != 12)
+    reader.fail("must be 12 numbers: the 3×4 matrix row by row, [m00, m01, m02, t0, m10, ..., t2]", key);
+  Affine3 affine;
+  for (std::size_t i = 0; i < 12; ++i) affine.m[i] = reader.checkNumber((*value)[i], key, -1e6, 1e6);
+  return affine;
+}
+
+// A variation term: {"name": "julian", "weight": 0.5, "power": 3, "dist": 1}; parameters left out
+// take their defaults.
+VariationTerm readVariation(const json& value, const std::string& source, const std::string& path) {
+  ObjectReader reader(value, source, path);
+  VariationTerm term;
+  term.name = reader.requiredString("name");
+  const VariationInfo* info = findVariation(term.name);
+  if (!info) {
+    try {
+      variationOrThrow(term.name);
+    } catch (const Error& e) {
+      reader.fail(e.what(), "name");
+    }
+  }
+  term.weight = reader.number("weight", 1.0, -1e6, 1e6);
+  term.params = info->defaultParams();
+  for (std::size_t i = 0; i < info->params.size(); ++i)
+    term.params[i] = reader.number(info->params[i].name, info->params[i].defaultValue, -1e6, 1e6);
+  reader.finish();
+  return term;
+}
+
+FlameXform readXform(const json& value, const std::string& source, const std::string& path, bool isFinal) {
+  ObjectReader reader(value, source, path);
+  FlameXform xform;
+  if (!isFinal) xform.weight = reader.number("weight", xform.weight, 0.0, 1e6);
+  xform.affine = readAffine(reader, "affine", xform.affine);
+  if (reader.find("post")) {
+    xform.hasPost = true;
+    xform.post = readAffine(reader, "post", xform.post);
+  }
+  if (const json* variations = reader.find("variations")) {
+    if (!variations->is_array() || variations->size() > kMaxXformVariations)
+      reader.fail("must be an array of at most " + std::to_string(kMaxXformVariations) + " variations", "variations");
+    for (std::size_t i = 0; i < variations->size(); ++i)
+      xform.variations.push_back(
+          readVariation((*variations)[i], source, reader.keyPath("variations") + "[" + std::to_string(i) + "]"));
+  } else {
+    xform.variations = {{"linear", 1.0, {}}};
+  }
+  xform.color = reader.number("color", xform.color, 0.0, 1.0);
+  xform.colorSpeed = reader.number("color_speed", xform.colorSpeed, 0.0, 1.0);
+  xform.opacity = reader.number("opacity", xform.opacity, 0.0, 1.0);
+  reader.finish();
+  return xform;
+}
+
+FlameGenome readFlame(ObjectReader& parent) {
+  const json* value = parent.find("flame");
+  if (!value) parent.fail("is missing (a flame layer needs its transforms)", "flame");
+  ObjectReader reader(*value, parent.source(), parent.keyPath("flame"));
+  FlameGenome genome;
+  const json* xforms = reader.find("xforms");
+  if (!xforms) reader.fail("is missing", "xforms");
+  if (!xforms->is_array() || xforms->empty() || xforms->size() > kMaxFlameXforms)
+    reader.fail("must be an array of 1 to " + std::to_string(kMaxFlameXforms) + " transforms", "xforms");
+  double total = 0.0;
+  for (std::size_t i = 0; i < xforms->size(); ++i) {
+    genome.xforms.push_back(
+        readXform((*xforms)[i], parent.source(), reader.keyPath("xforms") + "[" + std::to_string(i) + "]", false));
+    total += genome.xforms.back().weight;
+  }
+  if (!(total > 0.0)) reader.fail("all have weight 0; at least one transform needs a positive weight", "xforms");
+  if (const json* finalXform = reader.find("final")) {
+    genome.hasFinal = true;
+    genome.finalXform = readXform(*finalXform, parent.source(), reader.keyPath("final"), true);
+  }
+  if (const json* symmetry = reader.find("symmetry")) {
+    ObjectReader symmetryReader(*symmetry, parent.source(), reader.keyPath("symmetry"));
+    genome.symmetry.rotational =
+        static_cast<int>(symmetryReader.integer("rotational", genome.symmetry.rotational, 1, kMaxFlameSymmetry));
+    genome.symmetry.axis = readVector(symmetryReader, "axis", genome.symmetry.axis, 1e6);
+    if (glm::dot(genome.symmetry.axis, genome.symmetry.axis) < 1e-24)
+      symmetryReader.fail("must not be the zero vector", "axis");
+    genome.symmetry.mirror = symmetryReader.boolean("mirror", genome.symmetry.mirror);
+    symmetryReader.finish();
+  }
+  reader.finish();
+  return genome;
+}
+
+QuaternionJuliaSettings readJulia(ObjectReader& parent) {
+  QuaternionJuliaSettings q;
+  const json* value = parent.find("julia");
+  if (!value) return q;
+  ObjectReader reader(*value, parent.source(), parent.keyPath("julia"));
+  if (const json* c = reader.find("c")) {
+    if (!c->is_array() || c->size() != 4) reader.fail("must be four numbers (1, i, j, k components)", "c");
+    for (std::size_t i = 0; i < 4; ++i) q.c[static_cast<int>(i)] = reader.checkNumber((*c)[i], "c", -10.0, 10.0);
+  }
+  const std::string view = reader.string("view", "project");
+  if (view == "project") {
+    q.view = QuaternionView::Project;
+  } else if (view == "slice") {
+    q.view = QuaternionView::Slice;
+  } else {
+    reader.fail("is '" + view + "'; expected 'project' or 'slice'", "view");
+  }
+  q.turnDeg = reader.number("turn_deg", q.turnDeg, -3600.0, 3600.0);
+  q.sliceW = reader.number("slice_w", q.sliceW, -10.0, 10.0);
+  q.thickness = reader.number("thickness", q.thickness, 1e-4, 10.0);
+  reader.finish();
+  return q;
+}
+
 PatternLayer readLayer(const json& value, const std::string& source, const std::string& path) {
   ObjectReader reader(value, source, path);
   PatternLayer layer;
+  const std::string kind = reader.string("kind", "attractor");
+  try {
+    layer.kind = patternKindFromString(kind);
+  } catch (const Error& e) {
+    reader.fail(e.what(), "kind");
+  }
+  if (layer.isChaosGame()) {
+    layer.attractor.clear();
+    layer.params.clear();
+    if (layer.kind == PatternKind::Flame) {
+      layer.flame = readFlame(reader);
+    } else {
+      layer.julia = readJulia(reader);
+    }
+    layer.weight = reader.number("weight", 1.0, 0.0, 1000.0);
+    layer.color = readColor(reader, "color", ColorMode::Index);
+    layer.transform = readTransform(reader, "transform");
+    reader.finish();
+    return layer;
+  }
   layer.attractor = reader.requiredString("attractor");
   const AttractorInfo* info = findAttractor(layer.attractor);
   if (!info) {
@@ -593,6 +756,43 @@ Scene loadScene(const std::filesystem::path& path) {
 
 namespace {
 
+json affineToJson(const Affine3& affine) {
+  return json(affine.m);
+}
+
+json xformToJson(const FlameXform& xform, bool isFinal, bool complete) {
+  json out = json::object();
+  if (!isFinal) out["weight"] = xform.weight;
+  out["affine"] = affineToJson(xform.affine);
+  if (xform.hasPost) out["post"] = affineToJson(xform.post);
+  json variations = json::array();
+  for (const VariationTerm& term : xform.variations) {
+    json v = {{"name", term.name}, {"weight", term.weight}};
+    const VariationInfo& info = variationOrThrow(term.name);
+    for (std::size_t i = 0; i < info.params.size() && i < term.params.size(); ++i)
+      v[info.params[i].name] = term.params[i];
+    variations.push_back(v);
+  }
+  out["variations"] = variations;
+  const FlameXform defaults;
+  if (complete || xform.color != defaults.color) out["color"] = xform.color;
+  if (complete || xform.colorSpeed != defaults.colorSpeed) out["color_speed"] = xform.colorSpeed;
+  if (complete || xform.opacity != defaults.opacity) out["opacity"] = xform.opacity;
+  return out;
+}
+
+json flameToJson(const FlameGenome& genome, bool complete) {
+  json xforms = json::array();
+  for (const FlameXform& x : genome.xforms) xforms.push_back(xformToJson(x, false, complete));
+  json out = {{"xforms", xforms}};
+  if (genome.hasFinal) out["final"] = xformToJson(genome.finalXform, true, complete);
+  const FlameSymmetry none;
+  const FlameSymmetry& s = genome.symmetry;
+  if (complete || s != none)
+    out["symmetry"] = {{"rotational", s.rotational}, {"axis", {s.axis.x, s.axis.y, s.axis.z}}, {"mirror", s.mirror}};
+  return out;
+}
+
 json buildDocument(const Scene& scene, bool complete, bool withAnimation) {
   json root;
   root["schema_version"] = kSchemaVersion;
@@ -601,10 +801,6 @@ json buildDocument(const Scene& scene, bool complete, bool withAnimation) {
   root["grid"] = {{"resolution", scene.gridResolution}};
   json layers = json::array();
   for (const auto& layer : scene.layers) {
-    const AttractorInfo& info = attractorOrThrow(layer.attractor);
-    json params = json::object();
-    for (std::size_t i = 0; i < info.params.size() && i < layer.params.size(); ++i)
-      params[info.params[i].name] = layer.params[i];
     json gradient = json::array();
     for (const auto& stop : layer.color.gradient) gradient.push_back(toHexColor(stop.color));
     const auto vector = [](glm::dvec3 v) { return json::array({v.x, v.y, v.z}); };
@@ -617,12 +813,30 @@ json buildDocument(const Scene& scene, bool complete, bool withAnimation) {
     if (complete || layer.color.axis != defaults.axis) color["axis"] = vector(layer.color.axis);
     if (complete || layer.color.period != defaults.period) color["period"] = layer.color.period;
     if (complete || layer.color.scale != defaults.scale) color["scale"] = layer.color.scale;
-    json entry = {{"attractor", layer.attractor},
-                  {"params", params},
-                  {"integrator", std::string(toString(layer.integrator))},
-                  {"step", layer.step},
-                  {"weight", layer.weight},
-                  {"color", color}};
+    json entry;
+    if (layer.kind == PatternKind::Flame) {
+      entry = {{"kind", "flame"}, {"flame", flameToJson(layer.flame, complete)}};
+    } else if (layer.kind == PatternKind::QuaternionJulia) {
+      const QuaternionJuliaSettings& q = layer.julia;
+      entry = {{"kind", "quaternion_julia"},
+               {"julia",
+                {{"c", {q.c.x, q.c.y, q.c.z, q.c.w}},
+                 {"view", q.view == QuaternionView::Slice ? "slice" : "project"},
+                 {"turn_deg", q.turnDeg},
+                 {"slice_w", q.sliceW},
+                 {"thickness", q.thickness}}}};
+    } else {
+      const AttractorInfo& info = attractorOrThrow(layer.attractor);
+      json params = json::object();
+      for (std::size_t i = 0; i < info.params.size() && i < layer.params.size(); ++i)
+        params[info.params[i].name] = layer.params[i];
+      entry = {{"attractor", layer.attractor},
+               {"params", params},
+               {"integrator", std::string(toString(layer.integrator))},
+               {"step", layer.step}};
+    }
+    entry["weight"] = layer.weight;
+    entry["color"] = color;
     const LayerTransform& t = layer.transform;
     const LayerTransform none;
     if (complete || t.scale != none.scale || t.rotationDeg != none.rotationDeg || t.offset != none.offset ||

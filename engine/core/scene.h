@@ -20,10 +20,12 @@
 
 #include "attractor.h"
 #include "color.h"
+#include "flame.h"
 
 namespace voxflame::core {
 
 inline constexpr int kSchemaVersion = 2;
+inline constexpr std::size_t kMaxGradientStops = 256;  // a flam3 palette's 256 colours fit
 // A mesh path starting with this names a mesh compiled into the binary ("builtin:meshes/bunny.obj").
 inline constexpr const char* kBuiltinMeshPrefix = "builtin:";
 
@@ -35,6 +37,7 @@ enum class ColorMode {
   Time,       // steps since the orbit was seeded, cycling through the gradient every `period`
   Axis,       // position along `axis` across the attractor's extent
   Distance,   // distance from the attractor's centre
+  Index,      // chaos-game patterns: flam3's colour index, pulled towards each transform's colour
 };
 std::string_view toString(ColorMode mode);
 ColorMode colorModeFromString(std::string_view name);  // throws core::Error listing the modes
@@ -79,15 +82,26 @@ struct LayerTransform {
   glm::dvec3 lockedAxisScale{1.0};  // per attractor axis, times lockedScale (a stretch fit's shape)
 };
 
-// One attractor filling the volume; several layers share one grid, each with its weight.
+// What a layer iterates: an attractor of the catalogue (attractor.h) or a chaos game (flame.h).
+enum class PatternKind { Attractor, Flame, QuaternionJulia };
+std::string_view toString(PatternKind kind);
+PatternKind patternKindFromString(std::string_view name);  // throws core::Error listing the kinds
+
+// One pattern filling the volume; several layers share one grid, each with its weight.
 struct PatternLayer {
-  std::string attractor = "lorenz84";
-  std::vector<double> params;  // in the catalogue's parameter order
+  PatternKind kind = PatternKind::Attractor;
+  std::string attractor = "lorenz84";  // Attractor layers only
+  std::vector<double> params;          // in the catalogue's parameter order
   Integrator integrator = Integrator::Euler;
   double step = 0.135;  // flows only
   double weight = 1.0;
   ColorSettings color;
   LayerTransform transform;
+  FlameGenome flame;              // Flame layers only
+  QuaternionJuliaSettings julia;  // QuaternionJulia layers only
+  bool isChaosGame() const { return kind != PatternKind::Attractor; }
+  // What the layer shows, for lists and messages: the attractor's id, "flame" or "quaternion_julia".
+  std::string patternName() const;
 };
 
 // flam3-style tone mapping (flame_image.h), applied to each pixel's summed density, so changing it

@@ -1,0 +1,89 @@
+// The chaos game that iterates flame and quaternion Julia layers (flame.h) for the Accumulator,
+// many independent lanes at a time.
+//
+// Every lane draws its own transform at every step from its own random generator: lanes that
+// shared one draw would all apply the same map and, the maps being contractive, converge onto one
+// point. To still vectorise, a step sorts the lanes by the transform they drew (a counting sort),
+// gathers each group's points into contiguous arrays, runs the group's affine map and each of its
+// variations as one loop over the group (flame_variations.h), and scatters the results back.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "flame.h"
+#include "flame_variations.h"
+#include "random.h"
+
+namespace voxflame::core {
+
+struct PatternLayer;
+
+// The state of a set of chaos-game lanes, structure of arrays, plus the scratch a step needs.
+struct ChaosLanes {
+  std::vector<double> x, y, z, w;     // the iterated point (w: a quaternion's fourth component)
+  std::vector<double> color;          // flam3's colour index, 0–1
+  std::vector<std::uint32_t> random;  // each lane's xorshift32 state (never 0)
+  std::vector<std::int32_t> visible;  // 1 when this step's point is drawn (opacity, slice)
+  // Scratch for one step.
+  std::vector<std::uint8_t> choice;
+  std::vector<std::uint32_t> order;
+  std::vector<double> tx, ty, tz, ox, oy, oz;
+  std::vector<std::uint32_t> groupRandom;
+  void resize(std::size_t lanes);
+  std::size_t size() const { return x.size(); }
+};
+
+class ChaosGame {
+ public:
+  // Prepares a flame or quaternion Julia layer; throws core::Error for an invalid one (flame.h's
+  // validate functions name the layer as `where`).
+  ChaosGame(const PatternLayer& layer, const std::string& where);
+
+  // Puts lane i at a fresh start: a uniform point in [-1, 1]³ (and w), a uniform colour, as
+  // flam3 does; the caller lets the lane run through its transient before it draws.
+  void seedLane(ChaosLanes& lanes, std::size_t i, SplitMix64& rng) const;
+
+  // One step for lanes [0, count): the state moves; the point to draw (after the final transform,
+  // or the quaternion's projection) goes to out, its colour index to outColor, and lanes.visible
+  // says whether it is drawn. A lane whose state is no longer finite (or beyond 1e10) gets NaN in
+  // out, which the caller treats as an escape and reseeds.
+  void step(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor, std::size_t count) const;
+
+  std::size_t transformCount() const { return xforms_.size(); }  // symmetry transforms included
+
+ private:
+  struct Term {
+    VariationFn apply = nullptr;
+    double weight = 1.0;
+    std::vector<double> params;
+  };
+  struct Compiled {
+    std::array<double, 12> affine{};
+    bool hasPost = false;
+    std::array<double, 12> post{};
+    std::vector<Term> terms;
+    double color = 0.0, colorSpeed = 0.5, opacity = 1.0;
+  };
+  static Compiled compile(const FlameXform& xform);
+  // Runs one compiled transform's affine map, variations and post map on a contiguous group.
+  void applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const;
+  void stepFlame(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
+                 std::size_t count) const;
+  void stepJulia(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
+                 std::size_t count) const;
+
+  bool julia_ = false;
+  std::vector<Compiled> xforms_;
+  bool hasFinal_ = false;
+  Compiled final_;
+  static constexpr int kPickBits = 12;
+  std::array<std::uint8_t, std::size_t{1} << kPickBits> pick_{};  // top bits of a draw → transform
+  QuaternionJuliaSettings juliaSettings_;
+  double turnCos_ = 1.0, turnSin_ = 0.0;
+};
+
+}  // namespace voxflame::core

@@ -1,0 +1,165 @@
+#include "flame.h"
+
+#include <cmath>
+#include <numbers>
+
+#include <glm/geometric.hpp>
+
+#include "error.h"
+#include "flame_variations.h"
+
+namespace voxflame::core {
+
+namespace {
+
+constexpr double kCoefficientLimit = 1e6;
+
+bool finite(double v) {
+  return std::isfinite(v);
+}
+
+// Rotation by `angle` about the unit vector `axis` (Rodrigues), as an affine map without offset.
+Affine3 rotationAbout(glm::dvec3 axis, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle), t = 1.0 - c;
+  const double x = axis.x, y = axis.y, z = axis.z;
+  Affine3 a;
+  a.m = {t * x * x + c,     t * x * y - s * z, t * x * z + s * y, 0.0,  //
+         t * x * y + s * z, t * y * y + c,     t * y * z - s * x, 0.0,  //
+         t * x * z - s * y, t * y * z + s * x, t * z * z + c,     0.0};
+  return a;
+}
+
+// Reflection across the plane through the origin with unit normal `normal`.
+Affine3 reflectionAcross(glm::dvec3 normal) {
+  const double x = normal.x, y = normal.y, z = normal.z;
+  Affine3 a;
+  a.m = {1 - 2 * x * x, -2 * x * y,    -2 * x * z,    0.0,  //
+         -2 * x * y,    1 - 2 * y * y, -2 * y * z,    0.0,  //
+         -2 * x * z,    -2 * y * z,    1 - 2 * z * z, 0.0};
+  return a;
+}
+
+void validateXform(const FlameXform& xform, const std::string& where) {
+  const auto fail = [&](const std::string& reason) { throw Error(where + " " + reason); };
+  if (!finite(xform.weight) || xform.weight < 0.0 || xform.weight > kCoefficientLimit)
+    fail("has weight " + std::to_string(xform.weight) + "; a weight must be a finite number from 0 to 1e6");
+  for (const double v : xform.affine.m)
+    if (!finite(v) || std::abs(v) > kCoefficientLimit)
+      fail("has an affine coefficient that is not finite or beyond ±1e6");
+  if (xform.hasPost)
+    for (const double v : xform.post.m)
+      if (!finite(v) || std::abs(v) > kCoefficientLimit)
+        fail("has a post-affine coefficient that is not finite or beyond ±1e6");
+  if (!finite(xform.color) || xform.color < 0.0 || xform.color > 1.0) fail("has a colour outside [0, 1]");
+  if (!finite(xform.colorSpeed) || xform.colorSpeed < 0.0 || xform.colorSpeed > 1.0)
+    fail("has a colour speed outside [0, 1]");
+  if (!finite(xform.opacity) || xform.opacity < 0.0 || xform.opacity > 1.0) fail("has an opacity outside [0, 1]");
+  if (xform.variations.size() > kMaxXformVariations)
+    fail("has " + std::to_string(xform.variations.size()) + " variations; at most " +
+         std::to_string(kMaxXformVariations) + " are allowed");
+  for (const VariationTerm& term : xform.variations) {
+    const VariationInfo* info = findVariation(term.name);
+    if (!info) {
+      try {
+        variationOrThrow(term.name);
+      } catch (const Error& e) {
+        fail(std::string("uses ") + e.what());
+      }
+    }
+    if (!finite(term.weight) || std::abs(term.weight) > kCoefficientLimit)
+      fail("gives variation '" + term.name + "' a weight that is not finite or beyond ±1e6");
+    if (term.params.size() != info->params.size())
+      fail("gives variation '" + term.name + "' " + std::to_string(term.params.size()) + " parameters; it takes " +
+           std::to_string(info->params.size()));
+    for (std::size_t i = 0; i < term.params.size(); ++i)
+      if (!finite(term.params[i]) || std::abs(term.params[i]) > kCoefficientLimit)
+        fail("gives parameter '" + info->params[i].name + "' of variation '" + term.name +
+             "' a value that is not finite or beyond ±1e6");
+  }
+}
+
+}  // namespace
+
+std::vector<FlameXform> expandSymmetry(const FlameGenome& genome) {
+  std::vector<FlameXform> xforms = genome.xforms;
+  const FlameSymmetry& s = genome.symmetry;
+  const int turns = std::max(1, s.rotational);
+  if (turns == 1 && !s.mirror) return xforms;
+  double total = 0.0;
+  for (const FlameXform& x : genome.xforms) total += x.weight;
+  const int extra = (turns - 1) + (s.mirror ? 1 : 0);
+  const double share = total / static_cast<double>(extra);
+  glm::dvec3 axis = glm::length(s.axis) > 1e-12 ? glm::normalize(s.axis) : glm::dvec3(0.0, 0.0, 1.0);
+  const auto symmetryXform = [&](const Affine3& map) {
+    FlameXform x;
+    x.weight = share;
+    x.affine = map;
+    x.variations = {{"linear", 1.0, {}}};
+    x.colorSpeed = 0.0;  // a symmetry copy keeps the colour of the point it turns
+    return x;
+  };
+  for (int k = 1; k < turns; ++k)
+    xforms.push_back(symmetryXform(rotationAbout(axis, 2.0 * std::numbers::pi * k / turns)));
+  if (s.mirror) {
+    // The mirror plane contains the axis: its normal is the axis's most perpendicular world axis,
+    // made exactly perpendicular.
+    glm::dvec3 helper = std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+    const glm::dvec3 normal = glm::normalize(helper - glm::dot(helper, axis) * axis);
+    xforms.push_back(symmetryXform(reflectionAcross(normal)));
+  }
+  return xforms;
+}
+
+void validateFlame(const FlameGenome& genome, const std::string& where) {
+  if (genome.xforms.empty()) throw Error(where + " is a flame without transforms; it needs 1 to 16");
+  if (genome.xforms.size() > kMaxFlameXforms)
+    throw Error(where + " has " + std::to_string(genome.xforms.size()) + " transforms; a flame takes 1 to 16");
+  double total = 0.0;
+  for (std::size_t i = 0; i < genome.xforms.size(); ++i) {
+    validateXform(genome.xforms[i], where + " transform " + std::to_string(i));
+    total += genome.xforms[i].weight;
+  }
+  if (!(total > 0.0)) throw Error(where + " has only transforms of weight 0; at least one needs a positive weight");
+  if (genome.hasFinal) validateXform(genome.finalXform, where + " final transform");
+  const FlameSymmetry& s = genome.symmetry;
+  if (s.rotational < 1 || s.rotational > kMaxFlameSymmetry)
+    throw Error(where + " has rotational symmetry " + std::to_string(s.rotational) + "; it must be 1 to " +
+                std::to_string(kMaxFlameSymmetry));
+  if (!finite(s.axis.x) || !finite(s.axis.y) || !finite(s.axis.z) || glm::length(s.axis) < 1e-12)
+    throw Error(where + " has a symmetry axis that is not a finite, non-zero vector");
+}
+
+void validateQuaternionJulia(const QuaternionJuliaSettings& q, const std::string& where) {
+  for (int i = 0; i < 4; ++i)
+    if (!finite(q.c[i]) || std::abs(q.c[i]) > 10.0)
+      throw Error(where + " has a Julia constant component that is not finite or beyond ±10");
+  if (!finite(q.turnDeg) || std::abs(q.turnDeg) > 3600.0) throw Error(where + " has a turn outside ±3600°");
+  if (!finite(q.sliceW) || std::abs(q.sliceW) > 10.0) throw Error(where + " has a slice outside ±10");
+  if (!finite(q.thickness) || q.thickness <= 0.0 || q.thickness > 10.0)
+    throw Error(where + " has a slice thickness outside (0, 10]");
+}
+
+FlameGenome defaultFlame() {
+  // Three transforms: a spherical fold, a julia swirl and a sinusoidal sweep, each turned a
+  // little out of the plane so the attractor is a volume, not a sheet.
+  FlameGenome g;
+  FlameXform a;
+  a.weight = 0.5;
+  a.affine.m = {0.56, -0.32, 0.18, 0.25, 0.31, 0.58, -0.12, -0.12, -0.15, 0.16, 0.62, 0.2};
+  a.variations = {{"spherical", 0.6, {}}, {"linear", 0.4, {}}};
+  a.color = 0.0;
+  FlameXform b;
+  b.weight = 0.3;
+  b.affine.m = {-0.48, 0.22, -0.2, -0.4, -0.18, -0.52, 0.21, 0.3, 0.22, -0.14, 0.55, -0.25};
+  b.variations = {{"julia", 0.7, {}}, {"spherical3D", 0.3, {}}};
+  b.color = 0.55;
+  FlameXform c;
+  c.weight = 0.2;
+  c.affine.m = {0.4, 0.35, 0.0, 0.1, -0.35, 0.4, 0.1, 0.5, 0.05, -0.2, 0.5, 0.0};
+  c.variations = {{"sinusoidal", 0.8, {}}, {"linear", 0.2, {}}};
+  c.color = 1.0;
+  g.xforms = {a, b, c};
+  return g;
+}
+
+}  // namespace voxflame::core

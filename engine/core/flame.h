@@ -1,0 +1,110 @@
+// Chaos-game patterns: 3D fractal flames and quaternion Julia sets. Unlike the attractors of
+// attractor.h (one deterministic map or flow), these pick one of several maps at random at every
+// step; the points then fill a fractal set (an IFS attractor) whose density and colour are the
+// picture. A flame is Draves & Reckase's algorithm ("The Fractal Flame Algorithm", 2003) lifted
+// into 3D: transforms ("xforms"), each an affine map followed by a weighted sum of variations
+// (flame_variations.h) and an optional post-affine, chosen with probability proportional to their
+// weights; an optional final transform bends what is drawn without feeding back; optional
+// rotational and mirror symmetry. Colour is flam3's: each point carries a colour index in [0, 1]
+// that moves towards the chosen transform's colour by its colour speed, and indexes the layer's
+// gradient or palette.
+//
+// A quaternion Julia set (Norton 1982; Hart, Sandin & Kauffman 1989) is drawn by inverse iteration:
+// q ← ±√(q − c) with a random root at every step, which samples the set's boundary.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+namespace voxflame::core {
+
+inline constexpr std::size_t kMaxFlameXforms = 16;
+inline constexpr std::size_t kMaxXformVariations = 16;
+inline constexpr int kMaxFlameSymmetry = 24;
+
+// p ↦ M p + t, stored row-major as a 3×4 matrix: [m00 m01 m02 t0, m10 m11 m12 t1, m20 m21 m22 t2].
+// flam3's 2D coefficients map onto it as a = m00, b = m01, c = t0, d = m10, e = m11, f = t1.
+struct Affine3 {
+  std::array<double, 12> m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+  glm::dvec3 apply(glm::dvec3 p) const {
+    return {m[0] * p.x + m[1] * p.y + m[2] * p.z + m[3], m[4] * p.x + m[5] * p.y + m[6] * p.z + m[7],
+            m[8] * p.x + m[9] * p.y + m[10] * p.z + m[11]};
+  }
+  bool isIdentity() const { return *this == Affine3{}; }
+  bool operator==(const Affine3&) const = default;
+};
+
+// One variation of a transform: its catalogue name, weight and parameters (catalogue order).
+struct VariationTerm {
+  std::string name;
+  double weight = 1.0;
+  std::vector<double> params;
+  bool operator==(const VariationTerm&) const = default;
+};
+
+struct FlameXform {
+  double weight = 1.0;  // relative probability of being chosen (ignored for the final transform)
+  Affine3 affine;
+  std::vector<VariationTerm> variations;  // summed; empty acts as linear
+  bool hasPost = false;
+  Affine3 post;
+  double color = 0.0;       // the colour index this transform pulls points towards, 0–1
+  double colorSpeed = 0.5;  // how far each step moves a point's colour towards `color`, 0–1
+  double opacity = 1.0;     // the chance that a point this transform makes is drawn, 0–1
+  bool operator==(const FlameXform&) const = default;
+};
+
+// Symmetry as flam3 makes it: extra transforms that turn the whole pattern by 360°/N about `axis`
+// (and mirror it across a plane through the axis), chosen like any other transform but never
+// changing a point's colour, so the attractor itself becomes symmetric.
+struct FlameSymmetry {
+  int rotational = 1;  // N-fold, 1 for none
+  glm::dvec3 axis{0.0, 0.0, 1.0};
+  bool mirror = false;
+  bool operator==(const FlameSymmetry&) const = default;
+};
+
+struct FlameGenome {
+  std::vector<FlameXform> xforms;
+  bool hasFinal = false;
+  FlameXform finalXform;
+  FlameSymmetry symmetry;
+  bool operator==(const FlameGenome&) const = default;
+};
+
+// How the fourth coordinate of a quaternion Julia set becomes a 3D picture.
+enum class QuaternionView {
+  Project,  // drop the fourth coordinate after a turn by `turnDeg` in the (z, w) plane
+  Slice,    // keep points within `thickness` of the hyperplane w = `sliceW` (after the same turn)
+};
+
+struct QuaternionJuliaSettings {
+  glm::dvec4 c{-0.2, 0.8, 0.0, 0.0};  // the constant: 1, i, j, k components
+  QuaternionView view = QuaternionView::Project;
+  double turnDeg = 0.0;     // rotation in the (z, w) plane before the fourth coordinate is dropped
+  double sliceW = 0.0;      // Slice: the hyperplane
+  double thickness = 0.05;  // Slice: half its thickness
+  bool operator==(const QuaternionJuliaSettings&) const = default;
+};
+
+// The transforms that are actually iterated: the genome's own, then the symmetry transforms
+// (N − 1 turns about the axis and, with mirror, a reflection), whose weights together equal the
+// genome's total so the symmetry is as dense as the pattern itself.
+std::vector<FlameXform> expandSymmetry(const FlameGenome& genome);
+
+// Checks a genome for what would make the chaos game meaningless or unsafe, naming the transform
+// (`where`: the layer, e.g. "layers[0]"): 1–16 transforms, finite coefficients within ±1e6, known
+// variations with the right number of finite parameters, weights ≥ 0 with a positive sum, colour,
+// colour speed and opacity in [0, 1]. Throws core::Error.
+void validateFlame(const FlameGenome& genome, const std::string& where);
+void validateQuaternionJulia(const QuaternionJuliaSettings& settings, const std::string& where);
+
+// A small, pretty genome for new flame layers (the explorer's "new flame", the tests).
+FlameGenome defaultFlame();
+
+}  // namespace voxflame::core

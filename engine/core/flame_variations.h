@@ -1,0 +1,77 @@
+// The variation catalogue of 3D fractal flames: the non-linear functions a flame transform applies
+// after its affine map (Draves & Reckase, "The Fractal Flame Algorithm", 2003, and the 3D ones that
+// Apophysis 3D and JWildfire added). Each variation is data (name, parameters with defaults and
+// slider ranges, the formula in words) plus one function that adds `weight · V(p)` for a whole
+// group of chaos-game lanes at once: plain loops over arrays, so the compiler vectorises the
+// arithmetic and no indirect call is made per point.
+//
+// Conventions for the formulas (flam3's names): p = (x, y, z) is the point after the transform's
+// affine map, r² = x² + y², r = √r², θ = atan2(x, y) (flam3's "theta", x first), φ = atan2(y, x)
+// (flam3's "phi"), a–f the transform's 2D affine coefficients as flam3 writes them (a = m00,
+// b = m01, c = t0, d = m10, e = m11, f = t1). A 2D variation maps x and y and carries z through
+// (adds weight · z to z), which is what Apophysis 3D and JWildfire do. Ψ is a uniform random
+// number in [0, 1) drawn from the lane's own generator (laneUniform), so lanes never share a draw.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace voxflame::core {
+
+// One xorshift32 step (Marsaglia 2003) per lane: shifts and xors only, so loops that draw random
+// numbers still vectorise. The state is never 0.
+[[gnu::always_inline]] inline std::uint32_t laneNext(std::uint32_t r) {
+  r ^= r << 13;
+  r ^= r >> 17;
+  r ^= r << 5;
+  return r;
+}
+// Advances the lane's state and returns a uniform number in [0, 1) from its top 24 bits.
+[[gnu::always_inline]] inline double laneUniform(std::uint32_t& state) {
+  state = laneNext(state);
+  return static_cast<double>(static_cast<std::int32_t>(state >> 8)) * 0x1p-24;
+}
+
+// What a variation sees for one group of lanes (all lanes that chose the same transform this step).
+struct VariationInput {
+  const double* x = nullptr;  // the point after the transform's affine map
+  const double* y = nullptr;
+  const double* z = nullptr;
+  std::uint32_t* random = nullptr;  // one generator state per lane (advanced by variations that draw)
+  std::size_t count = 0;
+  double weight = 1.0;
+  const double* params = nullptr;  // the variation's parameters, in the catalogue's order
+  const double* affine = nullptr;  // the transform's pre-affine, row-major 3×4 (see flame.h)
+};
+
+// Adds weight · V(p) to (outX, outY, outZ) for every lane of `in`.
+using VariationFn = void (*)(const VariationInput& in, double* outX, double* outY, double* outZ);
+
+struct VariationParam {
+  std::string name;
+  double defaultValue = 0.0;
+  double sliderMin = 0.0;
+  double sliderMax = 1.0;
+  bool integer = false;  // a count (sides, power, slices): rounded where used
+};
+
+struct VariationInfo {
+  std::string name;  // flam3's / JWildfire's name: what flame files say
+  std::vector<VariationParam> params;
+  std::string formula;  // V(p) in the notation above, for the docs and the UI's tooltip
+  bool threeD = false;  // acts on z itself (not only carried through)
+  bool random = false;  // draws random numbers (Ψ)
+  VariationFn apply = nullptr;
+
+  int paramIndex(std::string_view paramName) const;  // -1 when absent
+  std::vector<double> defaultParams() const;
+};
+
+const std::vector<VariationInfo>& variationCatalogue();
+const VariationInfo* findVariation(std::string_view name);     // nullptr when unknown
+const VariationInfo& variationOrThrow(std::string_view name);  // core::Error naming close matches
+
+}  // namespace voxflame::core
