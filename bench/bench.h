@@ -31,5 +31,6 @@ void benchExport(const BenchOptions& options);      // bench_export.cpp
 void benchMask(const BenchOptions& options);        // bench_mask.cpp
 void benchExplorer(const BenchOptions& options);    // bench_explorer.cpp
 void benchQuality(const BenchOptions& options);     // bench_quality.cpp
+void benchFlame(const BenchOptions& options);       // bench_flame.cpp
 
 }  // namespace voxflame::bench

@@ -30,6 +30,9 @@ double processCpuSeconds() {
 
 }  // namespace
 
+void benchAccumulateChaos(const BenchOptions& options, const std::shared_ptr<const core::InsideMask>& mask,
+                          int allThreads);
+
 // Lorenz-84 (and every other catalogue entry named below) filling the bunny's mask at 256³,
 // colour by speed, timed over a fixed wall-clock window after a warm-up. Rows name the deposit.
 void benchAccumulate(const BenchOptions& options) {
@@ -76,6 +79,46 @@ void benchAccumulate(const BenchOptions& options) {
                        {"inside_fraction", after.insideFraction()},
                        {"cpu_seconds_per_second", cpuSeconds / seconds},
                        {"points_per_cpu_s", static_cast<double>(after.iterations - before.iterations) / cpuSeconds}});
+    }
+  }
+  benchAccumulateChaos(options, mask, allThreads);
+}
+
+// The chaos-game kinds on the same mask: the built-in default flame (three transforms, julia,
+// spherical and sinusoidal terms, colour index) and a quaternion Julia set, on one thread and on all.
+void benchAccumulateChaos(const BenchOptions& options, const std::shared_ptr<const core::InsideMask>& mask,
+                          int allThreads) {
+  core::PatternLayer flame;
+  flame.kind = core::PatternKind::Flame;
+  flame.attractor.clear();
+  flame.flame = core::defaultFlame();
+  flame.color.mode = core::ColorMode::Index;
+  flame.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
+  core::PatternLayer julia = flame;
+  julia.kind = core::PatternKind::QuaternionJulia;
+  for (const auto& [name, layer] : {std::pair<const char*, core::PatternLayer>{"flame (default, 3 transforms)", flame},
+                                    std::pair<const char*, core::PatternLayer>{"quaternion_julia", julia}}) {
+    for (const int threads : {1, allThreads}) {
+      core::Accumulator accumulator(mask, threads);
+      accumulator.setPattern({layer}, 1);
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));  // warm-up
+      const auto before = accumulator.stats();
+      const double cpuBefore = processCpuSeconds();
+      const auto start = std::chrono::steady_clock::now();
+      std::this_thread::sleep_for(std::chrono::seconds(2));
+      const auto after = accumulator.stats();
+      const double cpuSeconds = processCpuSeconds() - cpuBefore;
+      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const auto iterations = static_cast<double>(after.iterations - before.iterations);
+      report(options, {{"bench", "accumulate"},
+                       {"pattern", name},
+                       {"grid", 256},
+                       {"threads", threads},
+                       {"deposit", "jittered"},
+                       {"points_per_s", iterations / seconds},
+                       {"inside_fraction", after.insideFraction()},
+                       {"cpu_seconds_per_second", cpuSeconds / seconds},
+                       {"points_per_cpu_s", iterations / cpuSeconds}});
     }
   }
 }

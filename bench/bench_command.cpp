@@ -23,6 +23,10 @@ const std::vector<Benchmark>& benchmarks() {
        "noise of the default preset and two others at 1280×720, both methods: relative luminance RMSE against "
        "10× the points, and seconds",
        &benchQuality},
+      {"flame",
+       "chaos-game samples per second on 2 threads against flam3-render (when installed) on the same 4-transform "
+       "genome",
+       &benchFlame},
   };
   return table;
 }

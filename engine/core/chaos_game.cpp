@@ -11,8 +11,118 @@
 namespace voxflame::core {
 
 namespace {
+
 constexpr double kBadValue = 1e10;  // flam3's limit: a state beyond it has escaped
+
+// The step's loops as functions of restrict-qualified parameters (GCC vectorises loops over
+// those, not over restrict locals), each built for AVX2 and for any x86-64 and picked when the
+// program loads: an always-inline body and a thin multiversioned wrapper around it.
+#if defined(__x86_64__) && !defined(__AVX2__) && !defined(__SANITIZE_THREAD__)
+#define VOXFLAME_CHAOS_TARGETS [[gnu::target_clones("avx2", "default")]]
+#else
+#define VOXFLAME_CHAOS_TARGETS
+#endif
+
+// Each lane draws its transform: the top bits of its next random number index the pick table.
+[[gnu::always_inline]] inline void drawBody(std::uint32_t* __restrict random, std::uint8_t* __restrict choice,
+                                            const std::uint8_t* __restrict pick, int shift, std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t r = laneNext(random[i]);
+    random[i] = r;
+    choice[i] = pick[r >> shift];
+  }
 }
+VOXFLAME_CHAOS_TARGETS void drawTransforms(std::uint32_t* random, std::uint8_t* choice, const std::uint8_t* pick,
+                                           int shift, std::size_t count) {
+  drawBody(random, choice, pick, shift, count);
+}
+
+// The lanes of one group gathered through the affine map into contiguous arrays.
+[[gnu::always_inline]] inline void gatherBody(const std::uint32_t* __restrict group, std::size_t n,
+                                              const double* __restrict x, const double* __restrict y,
+                                              const double* __restrict z, const std::uint32_t* __restrict random,
+                                              const double* __restrict a, double* __restrict tx, double* __restrict ty,
+                                              double* __restrict tz, std::uint32_t* __restrict groupRandom) {
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::uint32_t l = group[j];
+    const double px = x[l], py = y[l], pz = z[l];
+    tx[j] = a[0] * px + a[1] * py + a[2] * pz + a[3];
+    ty[j] = a[4] * px + a[5] * py + a[6] * pz + a[7];
+    tz[j] = a[8] * px + a[9] * py + a[10] * pz + a[11];
+    groupRandom[j] = random[l];
+  }
+}
+VOXFLAME_CHAOS_TARGETS void gatherAffine(const std::uint32_t* group, std::size_t n, const double* x, const double* y,
+                                         const double* z, const std::uint32_t* random, const double* a, double* tx,
+                                         double* ty, double* tz, std::uint32_t* groupRandom) {
+  gatherBody(group, n, x, y, z, random, a, tx, ty, tz, groupRandom);
+}
+
+// The group's results back into their lanes, with flam3's colour blend and the opacity draw.
+[[gnu::always_inline]] inline void scatterBody(const std::uint32_t* __restrict group, std::size_t n,
+                                               const double* __restrict ox, const double* __restrict oy,
+                                               const double* __restrict oz, std::uint32_t* __restrict groupRandom,
+                                               double* __restrict x, double* __restrict y, double* __restrict z,
+                                               double* __restrict color, std::uint32_t* __restrict random,
+                                               std::int32_t* __restrict visible, double keep, double pull,
+                                               double opacity) {
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::uint32_t l = group[j];
+    x[l] = ox[j];
+    y[l] = oy[j];
+    z[l] = oz[j];
+    color[l] = keep * color[l] + pull;
+    std::uint32_t r = groupRandom[j];
+    // An opaque transform still draws (and discards) a number: the lanes' sequences then do not
+    // depend on whether opacity is used, and the loop stays branch-free.
+    visible[l] = laneUniform(r) < opacity ? 1 : 0;
+    random[l] = r;
+  }
+}
+VOXFLAME_CHAOS_TARGETS void scatterGroup(const std::uint32_t* group, std::size_t n, const double* ox, const double* oy,
+                                         const double* oz, std::uint32_t* groupRandom, double* x, double* y, double* z,
+                                         double* color, std::uint32_t* random, std::int32_t* visible, double keep,
+                                         double pull, double opacity) {
+  scatterBody(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull, opacity);
+}
+
+// p ← M p + t in place (the post-affine).
+[[gnu::always_inline]] inline void affineBody(double* __restrict x, double* __restrict y, double* __restrict z,
+                                              const double* __restrict m, std::size_t n) {
+  for (std::size_t j = 0; j < n; ++j) {
+    const double px = x[j], py = y[j], pz = z[j];
+    x[j] = m[0] * px + m[1] * py + m[2] * pz + m[3];
+    y[j] = m[4] * px + m[5] * py + m[6] * pz + m[7];
+    z[j] = m[8] * px + m[9] * py + m[10] * pz + m[11];
+  }
+}
+VOXFLAME_CHAOS_TARGETS void affineInPlace(double* x, double* y, double* z, const double* m, std::size_t n) {
+  affineBody(x, y, z, m, n);
+}
+
+// What is drawn, when there is no final transform: the state itself, or NaN where the state has
+// left every sensible range (the caller reseeds those lanes).
+[[gnu::always_inline]] inline void emitBody(const double* __restrict x, const double* __restrict y,
+                                            const double* __restrict z, const double* __restrict color,
+                                            double* __restrict outX, double* __restrict outY, double* __restrict outZ,
+                                            double* __restrict outColor, std::size_t count) {
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < count; ++i) {
+    const bool good = (std::abs(x[i]) < kBadValue) & (std::abs(y[i]) < kBadValue) & (std::abs(z[i]) < kBadValue);
+    outX[i] = good ? x[i] : kNaN;
+    outY[i] = y[i];
+    outZ[i] = z[i];
+    outColor[i] = color[i];
+  }
+}
+VOXFLAME_CHAOS_TARGETS void emitPoints(const double* x, const double* y, const double* z, const double* color,
+                                       double* outX, double* outY, double* outZ, double* outColor, std::size_t count) {
+  emitBody(x, y, z, color, outX, outY, outZ, outColor, count);
+}
+
+#undef VOXFLAME_CHAOS_TARGETS
+
+}  // namespace
 
 void ChaosLanes::resize(std::size_t lanes) {
   for (auto* v : {&x, &y, &z, &w, &color, &tx, &ty, &tz, &ox, &oy, &oz}) v->assign(lanes, 0.0);
@@ -120,27 +230,15 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
     in.params = term.params.data();
     term.apply(in, ox, oy, oz);
   }
-  if (xform.hasPost) {
-    const auto& m = xform.post;
-    for (std::size_t j = 0; j < count; ++j) {
-      const double px = ox[j], py = oy[j], pz = oz[j];
-      ox[j] = m[0] * px + m[1] * py + m[2] * pz + m[3];
-      oy[j] = m[4] * px + m[5] * py + m[6] * pz + m[7];
-      oz[j] = m[8] * px + m[9] * py + m[10] * pz + m[11];
-    }
-  }
+  if (xform.hasPost) affineInPlace(ox, oy, oz, xform.post.data(), count);
 }
 
 void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
                           std::size_t count) const {
   // 1. Every lane draws its transform.
-  std::uint32_t* __restrict random = lanes.random.data();
-  std::uint8_t* __restrict choice = lanes.choice.data();
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::uint32_t r = laneNext(random[i]);
-    random[i] = r;
-    choice[i] = pick_[r >> (32 - kPickBits)];
-  }
+  std::uint32_t* random = lanes.random.data();
+  std::uint8_t* choice = lanes.choice.data();
+  drawTransforms(random, choice, pick_.data(), 32 - kPickBits, count);
   // 2. Counting sort of the lanes by transform.
   std::array<std::uint32_t, kMaxFlameXforms + kMaxFlameSymmetry + 2> start{};
   for (std::size_t i = 0; i < count; ++i) ++start[choice[i] + 1u];
@@ -149,7 +247,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
   std::uint32_t* order = lanes.order.data();
   for (std::size_t i = 0; i < count; ++i) order[cursor[choice[i]]++] = static_cast<std::uint32_t>(i);
 
-  // 3. Each group: gather through the affine map, variations, scatter with the colour blend.
+  // 3. Each group: gathered through the affine map, its variations, scattered back.
   double* x = lanes.x.data();
   double* y = lanes.y.data();
   double* z = lanes.z.data();
@@ -160,85 +258,33 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     if (n == 0) continue;
     const Compiled& xf = xforms_[k];
     const std::uint32_t* group = order + first;
-    const auto& a = xf.affine;
-    double* __restrict tx = lanes.tx.data();
-    double* __restrict ty = lanes.ty.data();
-    double* __restrict tz = lanes.tz.data();
-    std::uint32_t* __restrict groupRandom = lanes.groupRandom.data();
-    for (std::uint32_t j = 0; j < n; ++j) {
-      const std::uint32_t l = group[j];
-      const double px = x[l], py = y[l], pz = z[l];
-      tx[j] = a[0] * px + a[1] * py + a[2] * pz + a[3];
-      ty[j] = a[4] * px + a[5] * py + a[6] * pz + a[7];
-      tz[j] = a[8] * px + a[9] * py + a[10] * pz + a[11];
-      groupRandom[j] = random[l];
-    }
+    gatherAffine(group, n, x, y, z, random, xf.affine.data(), lanes.tx.data(), lanes.ty.data(), lanes.tz.data(),
+                 lanes.groupRandom.data());
     applyGroup(xf, lanes, n);
-    const double keep = 1.0 - xf.colorSpeed, pull = xf.colorSpeed * xf.color;
-    const double* ox = lanes.ox.data();
-    const double* oy = lanes.oy.data();
-    const double* oz = lanes.oz.data();
-    if (xf.opacity >= 1.0) {
-      for (std::uint32_t j = 0; j < n; ++j) {
-        const std::uint32_t l = group[j];
-        x[l] = ox[j];
-        y[l] = oy[j];
-        z[l] = oz[j];
-        color[l] = keep * color[l] + pull;
-        random[l] = groupRandom[j];
-        visible[l] = 1;
-      }
-    } else {
-      for (std::uint32_t j = 0; j < n; ++j) {
-        const std::uint32_t l = group[j];
-        x[l] = ox[j];
-        y[l] = oy[j];
-        z[l] = oz[j];
-        color[l] = keep * color[l] + pull;
-        std::uint32_t r = groupRandom[j];
-        visible[l] = laneUniform(r) < xf.opacity ? 1 : 0;
-        random[l] = r;
-      }
-    }
+    scatterGroup(group, n, lanes.ox.data(), lanes.oy.data(), lanes.oz.data(), lanes.groupRandom.data(), x, y, z, color,
+                 random, visible, 1.0 - xf.colorSpeed, xf.colorSpeed * xf.color, xf.opacity);
   }
 
   // 4. What is drawn: the state, or the final transform of it (which never feeds back).
-  if (hasFinal_) {
-    const auto& a = final_.affine;
-    double* __restrict tx = lanes.tx.data();
-    double* __restrict ty = lanes.ty.data();
-    double* __restrict tz = lanes.tz.data();
-    std::uint32_t* __restrict groupRandom = lanes.groupRandom.data();
-    for (std::size_t i = 0; i < count; ++i) {
-      tx[i] = a[0] * x[i] + a[1] * y[i] + a[2] * z[i] + a[3];
-      ty[i] = a[4] * x[i] + a[5] * y[i] + a[6] * z[i] + a[7];
-      tz[i] = a[8] * x[i] + a[9] * y[i] + a[10] * z[i] + a[11];
-      groupRandom[i] = random[i];
-    }
-    applyGroup(final_, lanes, count);
-    const double keep = 1.0 - final_.colorSpeed, pull = final_.colorSpeed * final_.color;
-    for (std::size_t i = 0; i < count; ++i) {
-      outX[i] = lanes.ox[i];
-      outY[i] = lanes.oy[i];
-      outZ[i] = lanes.oz[i];
-      outColor[i] = keep * color[i] + pull;
-      std::uint32_t r = groupRandom[i];
-      if (final_.opacity < 1.0) visible[i] &= laneUniform(r) < final_.opacity ? 1 : 0;
-      random[i] = r;
-    }
-  } else {
-    for (std::size_t i = 0; i < count; ++i) {
-      outX[i] = x[i];
-      outY[i] = y[i];
-      outZ[i] = z[i];
-      outColor[i] = color[i];
-    }
+  if (!hasFinal_) {
+    emitPoints(x, y, z, color, outX, outY, outZ, outColor, count);
+    return;
   }
-  // 5. A state that left every sensible range (or became NaN) is an escape.
+  for (std::size_t i = 0; i < count; ++i) order[i] = static_cast<std::uint32_t>(i);
+  gatherAffine(order, count, x, y, z, random, final_.affine.data(), lanes.tx.data(), lanes.ty.data(), lanes.tz.data(),
+               lanes.groupRandom.data());
+  applyGroup(final_, lanes, count);
+  const double keep = 1.0 - final_.colorSpeed, pull = final_.colorSpeed * final_.color;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < count; ++i) {
     const bool good = (std::abs(x[i]) < kBadValue) & (std::abs(y[i]) < kBadValue) & (std::abs(z[i]) < kBadValue);
-    outX[i] = good ? outX[i] : kNaN;
+    outX[i] = good ? lanes.ox[i] : kNaN;
+    outY[i] = lanes.oy[i];
+    outZ[i] = lanes.oz[i];
+    outColor[i] = keep * color[i] + pull;
+    std::uint32_t r = lanes.groupRandom[i];
+    visible[i] &= laneUniform(r) < final_.opacity ? 1 : 0;
+    random[i] = r;
   }
 }
 

@@ -13,25 +13,33 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kEpsilon = 1e-300;  // keeps 1/r finite at the origin, as flam3's EPS does
 
-// The arrays of a variation call as restrict-qualified locals: GCC vectorises loops over
-// parameters it knows do not alias.
-#define VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz) \
-  const double* __restrict x = (in).x;           \
-  const double* __restrict y = (in).y;           \
-  const double* __restrict z = (in).z;           \
-  std::uint32_t* __restrict rnd = (in).random;   \
-  double* __restrict outX = (ox);                \
-  double* __restrict outY = (oy);                \
-  double* __restrict outZ = (oz);                \
-  const std::size_t n = (in).count;              \
-  const double w = (in).weight;                  \
-  const double* __restrict P = (in).params;      \
-  (void)rnd;                                     \
-  (void)P;
+// VARIATION(name) { body } defines one variation. The body sees restrict-qualified parameters
+// (GCC vectorises loops over restrict parameters, not over restrict locals): x, y, z (the point
+// after the affine map), rnd (each lane's generator), outX, outY, outZ (to add weight · V(p) to),
+// n (lanes), w (the weight), P (the parameters) and A (the pre-affine, row-major 3×4). The public
+// function is built for AVX2 and for any x86-64 and picked when the program loads.
+#if defined(__x86_64__) && !defined(__AVX2__) && !defined(__SANITIZE_THREAD__)
+#define VOXFLAME_VARIATION_TARGETS [[gnu::target_clones("avx2", "default")]]
+#else
+#define VOXFLAME_VARIATION_TARGETS
+#endif
+#define VARIATION(name)                                                                                         \
+  [[gnu::always_inline]] inline void name##Body(                                                                \
+      const double* __restrict x, const double* __restrict y, const double* __restrict z,                       \
+      std::uint32_t* __restrict rnd, double* __restrict outX, double* __restrict outY, double* __restrict outZ, \
+      std::size_t n, double w, const double* __restrict P, const double* __restrict A);                         \
+  VOXFLAME_VARIATION_TARGETS void name(const VariationInput& in, double* ox, double* oy, double* oz) {          \
+    name##Body(in.x, in.y, in.z, in.random, ox, oy, oz, in.count, in.weight, in.params, in.affine);             \
+  }                                                                                                             \
+  [[gnu::always_inline]] inline void name##Body(                                                                \
+      [[maybe_unused]] const double* __restrict x, [[maybe_unused]] const double* __restrict y,                 \
+      [[maybe_unused]] const double* __restrict z, [[maybe_unused]] std::uint32_t* __restrict rnd,              \
+      [[maybe_unused]] double* __restrict outX, [[maybe_unused]] double* __restrict outY,                       \
+      [[maybe_unused]] double* __restrict outZ, std::size_t n, [[maybe_unused]] double w,                       \
+      [[maybe_unused]] const double* __restrict P, [[maybe_unused]] const double* __restrict A)
 
 // linear: (x, y, z)
-void linear(const VariationInput& in, double* ox, double* oy, double* oz) {
-  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+VARIATION(linear) {
   for (std::size_t i = 0; i < n; ++i) {
     outX[i] += w * x[i];
     outY[i] += w * y[i];
@@ -40,8 +48,7 @@ void linear(const VariationInput& in, double* ox, double* oy, double* oz) {
 }
 
 // sinusoidal: (sin x, sin y, z)
-void sinusoidal(const VariationInput& in, double* ox, double* oy, double* oz) {
-  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+VARIATION(sinusoidal) {
   for (std::size_t i = 0; i < n; ++i) {
     outX[i] += w * std::sin(x[i]);
     outY[i] += w * std::sin(y[i]);
@@ -50,8 +57,7 @@ void sinusoidal(const VariationInput& in, double* ox, double* oy, double* oz) {
 }
 
 // spherical: (x, y) / r², z
-void spherical(const VariationInput& in, double* ox, double* oy, double* oz) {
-  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+VARIATION(spherical) {
   for (std::size_t i = 0; i < n; ++i) {
     const double s = w / (x[i] * x[i] + y[i] * y[i] + kEpsilon);
     outX[i] += s * x[i];
@@ -61,8 +67,7 @@ void spherical(const VariationInput& in, double* ox, double* oy, double* oz) {
 }
 
 // swirl: (x sin r² − y cos r², x cos r² + y sin r², z)
-void swirl(const VariationInput& in, double* ox, double* oy, double* oz) {
-  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+VARIATION(swirl) {
   for (std::size_t i = 0; i < n; ++i) {
     const double r2 = x[i] * x[i] + y[i] * y[i];
     const double s = std::sin(r2), c = std::cos(r2);
@@ -73,8 +78,7 @@ void swirl(const VariationInput& in, double* ox, double* oy, double* oz) {
 }
 
 // julia: √r (cos(θ/2 + Ω), sin(θ/2 + Ω)), z, with Ω = 0 or π at random (θ = atan2(x, y) as flam3)
-void julia(const VariationInput& in, double* ox, double* oy, double* oz) {
-  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+VARIATION(julia) {
   for (std::size_t i = 0; i < n; ++i) {
     const double angle = 0.5 * std::atan2(x[i], y[i]) + (laneUniform(rnd[i]) < 0.5 ? 0.0 : kPi);
     const double r = w * std::sqrt(std::sqrt(x[i] * x[i] + y[i] * y[i]));
@@ -85,8 +89,7 @@ void julia(const VariationInput& in, double* ox, double* oy, double* oz) {
 }
 
 // spherical3D: (x, y, z) / (x² + y² + z²)
-void spherical3D(const VariationInput& in, double* ox, double* oy, double* oz) {
-  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+VARIATION(spherical3D) {
   for (std::size_t i = 0; i < n; ++i) {
     const double s = w / (x[i] * x[i] + y[i] * y[i] + z[i] * z[i] + kEpsilon);
     outX[i] += s * x[i];
@@ -96,16 +99,12 @@ void spherical3D(const VariationInput& in, double* ox, double* oy, double* oz) {
 }
 
 // zscale: (0, 0, z) — with linear, weight w stretches depth by (1 + w)
-void zscale(const VariationInput& in, double* ox, double* oy, double* oz) {
-  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  (void)x;
-  (void)y;
-  (void)outX;
-  (void)outY;
+VARIATION(zscale) {
   for (std::size_t i = 0; i < n; ++i) outZ[i] += w * z[i];
 }
 
-#undef VOXFLAME_VARIATION_BEGIN
+#undef VARIATION
+#undef VOXFLAME_VARIATION_TARGETS
 
 std::vector<VariationInfo> buildCatalogue() {
   std::vector<VariationInfo> c;
