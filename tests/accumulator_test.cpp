@@ -699,3 +699,70 @@ TEST(PointSink, GridDensityLiesWhereTheSinksPointsAre) {
     difference += 0.5 * std::abs(fromSink[b] / sinkTotal - fromGrid[b] / gridTotal);
   EXPECT_LT(difference, 0.05);
 }
+
+namespace {
+
+PatternLayer defaultFlameLayer() {
+  PatternLayer layer;
+  layer.kind = PatternKind::Flame;
+  layer.attractor.clear();
+  layer.flame = defaultFlame();
+  layer.color.mode = ColorMode::Index;
+  layer.color.gradient = {{0.0f, {1.0f, 0.0f, 0.0f}}, {1.0f, {0.0f, 0.0f, 1.0f}}};
+  return layer;
+}
+
+}  // namespace
+
+TEST(ChaosGameLayers, AFlameFillsTheMaskWithItsTransformColours) {
+  const auto mask = bunnyMask(48);
+  const VolumeSnapshot snapshot = accumulate(mask, {defaultFlameLayer()}, 400'000, 2);
+  EXPECT_GE(snapshot.points, 400'000u);
+  std::size_t lit = 0, reddish = 0, bluish = 0;
+  for (std::size_t v = 0; v < snapshot.density.size(); ++v) {
+    if (snapshot.density[v] <= 0.0f) continue;
+    ++lit;
+    EXPECT_TRUE(mask->inside[v]);
+    const std::uint8_t r = snapshot.rgba[4 * v], b = snapshot.rgba[4 * v + 2];
+    reddish += r > b + 60 ? 1 : 0;
+    bluish += b > r + 60 ? 1 : 0;
+  }
+  // A volume, not a sheet: thousands of the ~40k inside voxels; and the colour index spans the
+  // gradient (the transforms pull towards 0, 0.55 and 1).
+  EXPECT_GT(lit, 4'000u);
+  EXPECT_GT(reddish, 100u);
+  EXPECT_GT(bluish, 100u);
+}
+
+TEST(ChaosGameLayers, TheVolumeDependsOnTheSeedAloneNotOnTheThreads) {
+  const auto mask = bunnyMask(32);
+  PatternLayer julia = defaultFlameLayer();
+  julia.kind = PatternKind::QuaternionJulia;
+  for (const PatternLayer& layer : {defaultFlameLayer(), julia}) {
+    const VolumeSnapshot one = accumulate(mask, {layer}, 200'000, 1);
+    const VolumeSnapshot two = accumulate(mask, {layer}, 200'000, 2);
+    EXPECT_EQ(one.density, two.density) << toString(layer.kind);
+    EXPECT_EQ(one.rgba, two.rgba) << toString(layer.kind);
+  }
+}
+
+TEST(ChaosGameLayers, AnEscapingFlameSaysSoAndNeverHangs) {
+  const auto mask = bunnyMask(32);
+  PatternLayer layer = defaultFlameLayer();
+  for (auto& x : layer.flame.xforms) {
+    x.affine.m = {3.0, 0, 0, 0, 0, 3.0, 0, 0, 0, 0, 3.0, 0};  // expands: every orbit runs away
+    x.variations = {{"linear", 1.0, {}}};
+  }
+  Accumulator accumulator(mask, 2);
+  accumulator.setTargetPoints(10'000);
+  accumulator.setPattern({layer}, 1);
+  EXPECT_TRUE(accumulator.waitUntilDone(10.0));
+  EXPECT_NE(accumulator.stats().problem.find("flame layer escapes"), std::string::npos) << accumulator.stats().problem;
+}
+
+TEST(ChaosGameLayers, IndexColoursNeedAChaosGame) {
+  const auto mask = bunnyMask(32);
+  PatternLayer layer = defaultScene().layers.front();
+  layer.color.mode = ColorMode::Index;
+  EXPECT_THROW(prepareLayer(layer, *mask, 1), Error);
+}

@@ -212,6 +212,9 @@ void probeChaosGame(const ChaosGame& game, SplitMix64& rng, std::vector<glm::dve
   for (std::size_t i = 0; i < kChaosProbeLanes; ++i) game.seedLane(lanes, i, rng);
   std::vector<double> x(kChaosProbeLanes), y(kChaosProbeLanes), z(kChaosProbeLanes), color(kChaosProbeLanes);
   std::vector<glm::dvec3> previous(kChaosProbeLanes, glm::dvec3(0.0)), previousStep(kChaosProbeLanes, glm::dvec3(0.0));
+  // Steps since each lane was (re)seeded: like the workers, a lane draws only once it has survived
+  // its transient, so a pattern whose lanes all run away before that yields no samples at all.
+  std::vector<int> age(kChaosProbeLanes, 0);
   samples.reserve(kChaosProbeLanes * kChaosProbeSteps);
   for (int step = 0; step < kChaosProbeTransient + kChaosProbeSteps; ++step) {
     game.step(lanes, x.data(), y.data(), z.data(), color.data(), kChaosProbeLanes);
@@ -220,10 +223,11 @@ void probeChaosGame(const ChaosGame& game, SplitMix64& rng, std::vector<glm::dve
       if (!isFiniteAndNear(p.x, p.y, p.z, kProbeEscape)) {
         game.seedLane(lanes, i, rng);  // as the workers do: an escaped lane starts again
         previous[i] = previousStep[i] = glm::dvec3(0.0);
+        age[i] = 0;
         continue;
       }
       const glm::dvec3 d = p - previous[i];
-      if (step >= kChaosProbeTransient && lanes.visible[i]) {
+      if (++age[i] > kChaosProbeTransient && lanes.visible[i]) {
         samples.push_back(p);
         speeds.push_back(glm::length(d));
         const double lengths = glm::length(d) * glm::length(previousStep[i]);

@@ -180,6 +180,8 @@ ChaosGame::ChaosGame(const PatternLayer& layer, const std::string& where) {
             : std::min(size, static_cast<std::size_t>(std::llround(cumulative / total * static_cast<double>(size))));
     for (; entry < end; ++entry) pick_[entry] = static_cast<std::uint8_t>(k);
   }
+  if (layer.flame.symmetry.rotational > 1 || layer.flame.symmetry.mirror)
+    for (const Affine3& g : symmetryGroup(layer.flame.symmetry)) group_.push_back(g.m);
   hasFinal_ = layer.flame.hasFinal;
   if (hasFinal_) final_ = compile(layer.flame.finalXform);
 }
@@ -268,6 +270,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
   // 4. What is drawn: the state, or the final transform of it (which never feeds back).
   if (!hasFinal_) {
     emitPoints(x, y, z, color, outX, outY, outZ, outColor, count);
+    if (!group_.empty()) symmetrise(lanes, outX, outY, outZ, count);
     return;
   }
   for (std::size_t i = 0; i < count; ++i) order[i] = static_cast<std::uint32_t>(i);
@@ -285,6 +288,20 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     std::uint32_t r = lanes.groupRandom[i];
     visible[i] &= laneUniform(r) < final_.opacity ? 1 : 0;
     random[i] = r;
+  }
+  if (!group_.empty()) symmetrise(lanes, outX, outY, outZ, count);
+}
+
+void ChaosGame::symmetrise(ChaosLanes& lanes, double* outX, double* outY, double* outZ, std::size_t count) const {
+  const auto elements = static_cast<std::uint64_t>(group_.size());
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t r = laneNext(lanes.random[i]);
+    lanes.random[i] = r;
+    const auto& m = group_[static_cast<std::size_t>((std::uint64_t{r} * elements) >> 32)];
+    const double px = outX[i], py = outY[i], pz = outZ[i];
+    outX[i] = m[0] * px + m[1] * py + m[2] * pz;
+    outY[i] = m[4] * px + m[5] * py + m[6] * pz;
+    outZ[i] = m[8] * px + m[9] * py + m[10] * pz;
   }
 }
 

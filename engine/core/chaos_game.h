@@ -73,6 +73,7 @@ class ChaosGame {
   void applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const;
   void stepFlame(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
                  std::size_t count) const;
+  void symmetrise(ChaosLanes& lanes, double* outX, double* outY, double* outZ, std::size_t count) const;
   void stepJulia(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
                  std::size_t count) const;
 
@@ -82,6 +83,7 @@ class ChaosGame {
   Compiled final_;
   static constexpr int kPickBits = 12;
   std::array<std::uint8_t, std::size_t{1} << kPickBits> pick_{};  // top bits of a draw → transform
+  std::vector<std::array<double, 12>> group_;  // the symmetry group each drawn point goes through (flame.h)
   QuaternionJuliaSettings juliaSettings_;
   double turnCos_ = 1.0, turnSin_ = 0.0;
 };

@@ -39,6 +39,13 @@ Affine3 reflectionAcross(glm::dvec3 normal) {
   return a;
 }
 
+// The mirror plane contains the axis: its normal is the world axis most perpendicular to it
+// (x unless the axis is close to x), made exactly perpendicular.
+glm::dvec3 mirrorNormal(glm::dvec3 axis) {
+  const glm::dvec3 helper = std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
+  return glm::normalize(helper - glm::dot(helper, axis) * axis);
+}
+
 void validateXform(const FlameXform& xform, const std::string& where) {
   const auto fail = [&](const std::string& reason) { throw Error(where + " " + reason); };
   if (!finite(xform.weight) || xform.weight < 0.0 || xform.weight > kCoefficientLimit)
@@ -101,13 +108,32 @@ std::vector<FlameXform> expandSymmetry(const FlameGenome& genome) {
   for (int k = 1; k < turns; ++k)
     xforms.push_back(symmetryXform(rotationAbout(axis, 2.0 * std::numbers::pi * k / turns)));
   if (s.mirror) {
-    // The mirror plane contains the axis: its normal is the axis's most perpendicular world axis,
-    // made exactly perpendicular.
-    glm::dvec3 helper = std::abs(axis.x) < 0.9 ? glm::dvec3(1.0, 0.0, 0.0) : glm::dvec3(0.0, 1.0, 0.0);
-    const glm::dvec3 normal = glm::normalize(helper - glm::dot(helper, axis) * axis);
-    xforms.push_back(symmetryXform(reflectionAcross(normal)));
+    xforms.push_back(symmetryXform(reflectionAcross(mirrorNormal(axis))));
   }
   return xforms;
+}
+
+std::vector<Affine3> symmetryGroup(const FlameSymmetry& s) {
+  const int turns = std::max(1, s.rotational);
+  const glm::dvec3 axis = glm::length(s.axis) > 1e-12 ? glm::normalize(s.axis) : glm::dvec3(0.0, 0.0, 1.0);
+  std::vector<Affine3> group;
+  for (int k = 0; k < turns; ++k) group.push_back(rotationAbout(axis, 2.0 * std::numbers::pi * k / turns));
+  if (s.mirror) {
+    const Affine3 reflection = reflectionAcross(mirrorNormal(axis));
+    for (int k = 0; k < turns; ++k) {
+      const Affine3& r = group[static_cast<std::size_t>(k)];
+      Affine3 both;
+      for (int row = 0; row < 3; ++row)
+        for (int col = 0; col < 3; ++col) {
+          double sum = 0.0;
+          for (int i = 0; i < 3; ++i)
+            sum += r.m[static_cast<std::size_t>(4 * row + i)] * reflection.m[static_cast<std::size_t>(4 * i + col)];
+          both.m[static_cast<std::size_t>(4 * row + col)] = sum;
+        }
+      group.push_back(both);
+    }
+  }
+  return group;
 }
 
 void validateFlame(const FlameGenome& genome, const std::string& where) {

@@ -97,6 +97,12 @@ struct QuaternionJuliaSettings {
 // genome's total so the symmetry is as dense as the pattern itself.
 std::vector<FlameXform> expandSymmetry(const FlameGenome& genome);
 
+// Every element of the symmetry's group: the N turns about the axis (the identity first) and,
+// with mirror, each of them followed by the reflection. The chaos game draws each point through
+// one of them at random, so the drawn density is exactly symmetric, not only the attractor's shape
+// (the symmetry transforms alone leave the points right after a genome transform over-represented).
+std::vector<Affine3> symmetryGroup(const FlameSymmetry& symmetry);
+
 // Checks a genome for what would make the chaos game meaningless or unsafe, naming the transform
 // (`where`: the layer, e.g. "layers[0]"): 1–16 transforms, finite coefficients within ±1e6, known
 // variations with the right number of finite parameters, weights ≥ 0 with a positive sum, colour,

@@ -1,0 +1,343 @@
+// The chaos game behind flame and quaternion Julia layers, and their place in the preset schema.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "core/chaos_game.h"
+#include "core/error.h"
+#include "core/flame.h"
+#include "core/scene.h"
+#include "test_support.h"
+
+using namespace voxflame::core;
+using voxflame::test::presetErrorOf;
+
+namespace {
+
+constexpr std::size_t kLanes = 256;
+
+Affine3 affine(std::array<double, 12> m) {
+  Affine3 a;
+  a.m = m;
+  return a;
+}
+
+FlameXform xform(double weight, Affine3 map, double color = 0.0, double colorSpeed = 0.5) {
+  FlameXform x;
+  x.weight = weight;
+  x.affine = map;
+  x.variations = {{"linear", 1.0, {}}};
+  x.color = color;
+  x.colorSpeed = colorSpeed;
+  return x;
+}
+
+PatternLayer flameLayer(FlameGenome genome) {
+  PatternLayer layer;
+  layer.kind = PatternKind::Flame;
+  layer.attractor.clear();
+  layer.flame = std::move(genome);
+  layer.color.mode = ColorMode::Index;
+  return layer;
+}
+
+// The four half-way maps towards the corners of a regular tetrahedron: Sierpiński's.
+FlameGenome sierpinskiTetrahedron() {
+  FlameGenome g;
+  const glm::dvec3 corners[] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  for (int i = 0; i < 4; ++i) {
+    const glm::dvec3 c = corners[i];
+    g.xforms.push_back(xform(1.0, affine({0.5, 0, 0, 0.5 * c.x, 0, 0.5, 0, 0.5 * c.y, 0, 0, 0.5, 0.5 * c.z}), i / 3.0));
+  }
+  return g;
+}
+
+struct LaneRun {
+  ChaosLanes lanes;
+  std::vector<double> x, y, z, color;
+  explicit LaneRun(const ChaosGame& game, std::uint64_t seed = 3) : x(kLanes), y(kLanes), z(kLanes), color(kLanes) {
+    lanes.resize(kLanes);
+    SplitMix64 rng(seed);
+    for (std::size_t i = 0; i < kLanes; ++i) game.seedLane(lanes, i, rng);
+  }
+  void step(const ChaosGame& game) { game.step(lanes, x.data(), y.data(), z.data(), color.data(), kLanes); }
+};
+
+}  // namespace
+
+TEST(ChaosGame, LanesDrawTheirOwnTransformsAndNeverConverge) {
+  // All lanes start at one point; were they to share each step's draw they would stay one point.
+  const ChaosGame game(flameLayer(sierpinskiTetrahedron()), "test");
+  LaneRun run(game);
+  for (std::size_t i = 0; i < kLanes; ++i) run.lanes.x[i] = run.lanes.y[i] = run.lanes.z[i] = 0.0;
+  for (int s = 0; s < 40; ++s) run.step(game);
+  std::set<std::tuple<double, double, double>> distinct;
+  for (std::size_t i = 0; i < kLanes; ++i) distinct.insert({run.x[i], run.y[i], run.z[i]});
+  EXPECT_GT(distinct.size(), kLanes * 9 / 10);
+}
+
+TEST(ChaosGame, SierpinskiPointsStayInTheTetrahedronAndReachEveryCorner) {
+  const ChaosGame game(flameLayer(sierpinskiTetrahedron()), "test");
+  LaneRun run(game);
+  const glm::dvec3 corners[] = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+  int nearCorner[4] = {0, 0, 0, 0};
+  for (int s = 0; s < 200; ++s) {
+    run.step(game);
+    if (s < 30) continue;
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      const glm::dvec3 p(run.x[i], run.y[i], run.z[i]);
+      // Inside the tetrahedron: on the inner side of each face plane (x + y + z ≥ -1 etc.).
+      EXPECT_LE(-p.x - p.y - p.z, 1.0 + 1e-9);
+      EXPECT_LE(-p.x + p.y + p.z, 1.0 + 1e-9);
+      EXPECT_LE(p.x - p.y + p.z, 1.0 + 1e-9);
+      EXPECT_LE(p.x + p.y - p.z, 1.0 + 1e-9);
+      for (int c = 0; c < 4; ++c) nearCorner[c] += glm::length(p - corners[c]) < 0.3 ? 1 : 0;
+    }
+  }
+  for (int c = 0; c < 4; ++c) EXPECT_GT(nearCorner[c], 500) << "corner " << c;
+}
+
+TEST(ChaosGame, TransformsAreChosenInProportionToTheirWeights) {
+  // Colour speed 1: a point's colour is the colour of the transform that made it.
+  FlameGenome g;
+  g.xforms = {xform(3.0, affine({0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0}), 0.0, 1.0),
+              xform(1.0, affine({0.5, 0, 0, 0.5, 0, 0.5, 0, 0, 0, 0, 0.5, 0}), 1.0, 1.0)};
+  const ChaosGame game(flameLayer(g), "test");
+  LaneRun run(game);
+  std::size_t second = 0, total = 0;
+  for (int s = 0; s < 400; ++s) {
+    run.step(game);
+    for (std::size_t i = 0; i < kLanes; ++i) second += run.color[i] > 0.5 ? 1 : 0;
+    total += kLanes;
+  }
+  EXPECT_NEAR(static_cast<double>(second) / static_cast<double>(total), 0.25, 0.01);
+}
+
+TEST(ChaosGame, ColourMovesTowardsTheTransformColourByItsSpeed) {
+  FlameGenome g;
+  g.xforms = {xform(1.0, affine({0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0}), 1.0, 0.25)};
+  const ChaosGame game(flameLayer(g), "test");
+  LaneRun run(game);
+  const std::vector<double> start = run.lanes.color;
+  for (int s = 1; s <= 5; ++s) {
+    run.step(game);
+    for (std::size_t i = 0; i < 8; ++i)
+      EXPECT_NEAR(run.color[i], 1.0 - std::pow(0.75, s) * (1.0 - start[i]), 1e-12);  // flam3's blend
+  }
+}
+
+TEST(ChaosGame, OpacityHidesThePointsOfItsTransform) {
+  FlameGenome g;
+  g.xforms = {xform(1.0, affine({0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0}), 0.0, 1.0),
+              xform(1.0, affine({0.5, 0, 0, 0.5, 0, 0.5, 0, 0, 0, 0, 0.5, 0}), 1.0, 1.0)};
+  g.xforms[1].opacity = 0.0;
+  const ChaosGame game(flameLayer(g), "test");
+  LaneRun run(game);
+  std::size_t shown = 0;
+  for (int s = 0; s < 50; ++s) {
+    run.step(game);
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      EXPECT_EQ(run.lanes.visible[i], run.color[i] < 0.5 ? 1 : 0);
+      shown += static_cast<std::size_t>(run.lanes.visible[i]);
+    }
+  }
+  EXPECT_GT(shown, 50u * kLanes / 3);
+}
+
+TEST(ChaosGame, TheFinalTransformBendsWhatIsDrawnButNeverFeedsBack) {
+  FlameGenome g = sierpinskiTetrahedron();
+  g.hasFinal = true;
+  g.finalXform = xform(1.0, affine({1, 0, 0, 10, 0, 1, 0, 0, 0, 0, 1, 0}), 0.0, 0.0);
+  const ChaosGame game(flameLayer(g), "test");
+  LaneRun run(game);
+  for (int s = 0; s < 30; ++s) {
+    run.step(game);
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      EXPECT_NEAR(run.x[i], run.lanes.x[i] + 10.0, 1e-12);
+      EXPECT_LE(std::abs(run.lanes.x[i]), 1.0 + 1e-9 + (s < 5 ? 1.0 : 0.0));  // the state stays in the tetrahedron
+    }
+  }
+}
+
+TEST(ChaosGame, RotationalAndMirrorSymmetryMakeTheAttractorSymmetric) {
+  // One transform that pulls towards (1, 0, 0): a blob on the +x side. Four-fold symmetry about z
+  // copies it to the four sides; the mirror across a plane through the axis needs no more copies.
+  FlameGenome g;
+  g.xforms = {xform(1.0, affine({0.3, 0, 0, 0.7, 0, 0.3, 0, 0.2, 0, 0, 0.3, 0}))};
+  g.symmetry.rotational = 4;
+  g.symmetry.mirror = true;
+  EXPECT_EQ(expandSymmetry(g).size(), 5u);
+  const ChaosGame game(flameLayer(g), "test");
+  LaneRun run(game);
+  std::array<double, 4> quadrant{};
+  std::size_t above = 0, below = 0;
+  for (int s = 0; s < 600; ++s) {
+    run.step(game);
+    if (s < 30) continue;
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      const double angle = std::atan2(run.y[i], run.x[i]) + std::numbers::pi / 4.0;
+      const int q =
+          static_cast<int>(std::floor((angle < 0 ? angle + 2 * std::numbers::pi : angle) / (std::numbers::pi / 2.0))) %
+          4;
+      quadrant[static_cast<std::size_t>(q)] += 1.0;
+      // The mirror (normal x) turns the blob's +y offset into -y on the +x side.
+      if (std::abs(run.x[i]) > std::abs(run.y[i])) (run.y[i] * run.x[i] > 0 ? above : below) += 1;
+    }
+  }
+  const double total = quadrant[0] + quadrant[1] + quadrant[2] + quadrant[3];
+  for (double q : quadrant) EXPECT_NEAR(q / total, 0.25, 0.02);
+  EXPECT_NEAR(static_cast<double>(above) / static_cast<double>(above + below), 0.5, 0.03);
+}
+
+TEST(ChaosGame, AnEscapingStateIsReportedAsNaNSoTheLaneIsReseeded) {
+  // Spherical near the origin throws points beyond flam3's 1e10 limit.
+  FlameGenome g;
+  g.xforms = {xform(1.0, affine({1e-12, 0, 0, 0, 0, 1e-12, 0, 0, 0, 0, 1, 0}))};
+  g.xforms[0].variations = {{"spherical", 1.0, {}}};
+  const ChaosGame game(flameLayer(g), "test");
+  LaneRun run(game);
+  run.step(game);
+  std::size_t nan = 0;
+  for (std::size_t i = 0; i < kLanes; ++i) nan += std::isnan(run.x[i]) ? 1 : 0;
+  EXPECT_GT(nan, kLanes / 2);
+}
+
+TEST(ChaosGame, QuaternionJuliaStepsAreSquareRootsOfTheLastPointMinusC) {
+  PatternLayer layer;
+  layer.kind = PatternKind::QuaternionJulia;
+  layer.julia.c = {-0.2, 0.6, 0.2, 0.1};
+  const ChaosGame game(layer, "test");
+  LaneRun run(game);
+  std::set<int> signs;
+  for (int s = 0; s < 20; ++s) {
+    const std::vector<double> a = run.lanes.x, b = run.lanes.y, c = run.lanes.z, d = run.lanes.w;
+    run.step(game);
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      // q² for q = (r, v): (r² − |v|², 2 r v); it must give back the old point minus c.
+      const double r = run.lanes.x[i], vx = run.lanes.y[i], vy = run.lanes.z[i], vz = run.lanes.w[i];
+      EXPECT_NEAR(r * r - vx * vx - vy * vy - vz * vz, a[i] - layer.julia.c.x, 1e-9);
+      EXPECT_NEAR(2 * r * vx, b[i] - layer.julia.c.y, 1e-9);
+      EXPECT_NEAR(2 * r * vy, c[i] - layer.julia.c.z, 1e-9);
+      EXPECT_NEAR(2 * r * vz, d[i] - layer.julia.c.w, 1e-9);
+      signs.insert(r >= 0 ? 1 : -1);
+    }
+  }
+  EXPECT_EQ(signs.size(), 2u);  // both roots are taken
+}
+
+TEST(ChaosGame, AQuaternionSliceShowsOnlyPointsNearItsHyperplane) {
+  PatternLayer layer;
+  layer.kind = PatternKind::QuaternionJulia;
+  layer.julia.c = {-0.2, 0.6, 0.2, 0.1};
+  layer.julia.view = QuaternionView::Slice;
+  layer.julia.sliceW = 0.05;
+  layer.julia.thickness = 0.1;
+  const ChaosGame game(layer, "test");
+  LaneRun run(game);
+  std::size_t shown = 0;
+  for (int s = 0; s < 40; ++s) {
+    run.step(game);
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      EXPECT_EQ(run.lanes.visible[i], std::abs(run.lanes.w[i] - 0.05) < 0.1 ? 1 : 0);
+      shown += static_cast<std::size_t>(run.lanes.visible[i]);
+    }
+  }
+  EXPECT_GT(shown, 0u);
+}
+
+TEST(ChaosGame, BadGenomesAreRefusedWithClearMessages) {
+  const auto messageOf = [](FlameGenome g) {
+    try {
+      ChaosGame game(flameLayer(std::move(g)), "layers[0]");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(messageOf({}).find("without transforms"), std::string::npos);
+  FlameGenome zero = sierpinskiTetrahedron();
+  for (auto& x : zero.xforms) x.weight = 0.0;
+  EXPECT_NE(messageOf(zero).find("weight 0"), std::string::npos);
+  FlameGenome nan = sierpinskiTetrahedron();
+  nan.xforms[2].affine.m[5] = std::nan("");
+  EXPECT_NE(messageOf(nan).find("transform 2"), std::string::npos);
+  FlameGenome huge = sierpinskiTetrahedron();
+  huge.xforms[1].affine.m[0] = 1e300;
+  EXPECT_NE(messageOf(huge).find("beyond"), std::string::npos);
+  FlameGenome unknown = sierpinskiTetrahedron();
+  unknown.xforms[0].variations = {{"sphericle", 1.0, {}}};
+  EXPECT_NE(messageOf(unknown).find("spherical"), std::string::npos);  // suggests the close name
+  FlameGenome tooMany = sierpinskiTetrahedron();
+  while (tooMany.xforms.size() <= kMaxFlameXforms) tooMany.xforms.push_back(tooMany.xforms.front());
+  EXPECT_NE(messageOf(tooMany).find("1 to 16"), std::string::npos);
+}
+
+TEST(FlamePreset, FlameAndQuaternionLayersRoundTripThroughJson) {
+  Scene scene;
+  scene.meshPath = "mesh.obj";
+  PatternLayer flame = flameLayer(sierpinskiTetrahedron());
+  flame.flame.xforms[1].hasPost = true;
+  flame.flame.xforms[1].post = affine({0, -1, 0, 0.1, 1, 0, 0, 0, 0, 0, 1, 0.2});
+  flame.flame.xforms[2].variations = {{"spherical", 0.25, {}}, {"julia", 0.75, {}}};
+  flame.flame.xforms[3].opacity = 0.5;
+  flame.flame.hasFinal = true;
+  flame.flame.finalXform = xform(1.0, affine({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 2, 0}), 0.3, 0.1);
+  flame.flame.symmetry = {3, {0.0, 1.0, 0.0}, true};
+  flame.color.gradient = {{0.0f, {0.0f, 0.0f, 0.0f}}, {1.0f, {1.0f, 1.0f, 1.0f}}};
+  PatternLayer julia;
+  julia.kind = PatternKind::QuaternionJulia;
+  julia.attractor.clear();
+  julia.julia = {{-0.1, 0.7, 0.3, -0.2}, QuaternionView::Slice, 30.0, 0.1, 0.02};
+  julia.color = flame.color;
+  scene.layers = {flame, julia};
+  const Scene back = sceneFromJson(sceneToJson(scene), "round trip");
+  ASSERT_EQ(back.layers.size(), 2u);
+  EXPECT_EQ(back.layers[0].kind, PatternKind::Flame);
+  EXPECT_EQ(back.layers[0].flame, scene.layers[0].flame);
+  EXPECT_EQ(back.layers[0].color.mode, ColorMode::Index);
+  EXPECT_EQ(back.layers[1].kind, PatternKind::QuaternionJulia);
+  EXPECT_EQ(back.layers[1].julia, scene.layers[1].julia);
+  EXPECT_EQ(back.layers[0].patternName(), "flame");
+}
+
+TEST(FlamePreset, BadFlameLayersNameTheKeyAndTheReason) {
+  const auto preset = [](const std::string& layer) {
+    return R"({"mesh": {"path": "m.obj"}, "layers": [)" + layer + "]}";
+  };
+  const std::string good = R"({"kind": "flame", "flame": {"xforms": [{"affine": [1,0,0,0, 0,1,0,0, 0,0,1,0]}]}})";
+  EXPECT_EQ(presetErrorOf(preset(good)), "");
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame"})")).find("'layers[0].flame' is missing"), std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flames"})")).find("known kinds"), std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": []}})")).find("1 to 16"), std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{"weight": 0}]}})")).find("weight"),
+            std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{"affine": [1, 2]}]}})"))
+                .find("'layers[0].flame.xforms[0].affine' must be 12 numbers"),
+            std::string::npos);
+  EXPECT_NE(
+      presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{"affine": [1e9,0,0,0,0,1,0,0,0,0,1,0]}]}})"))
+          .find("outside the allowed range"),
+      std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{"variations": [{"name": "nope"}]}]}})"))
+                .find("'layers[0].flame.xforms[0].variations[0].name'"),
+            std::string::npos);
+  EXPECT_NE(presetErrorOf(
+                preset(R"({"kind": "flame", "flame": {"xforms": [{"variations": [{"name": "linear", "pwr": 2}]}]}})"))
+                .find("'layers[0].flame.xforms[0].variations[0].pwr' is not a known key"),
+            std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{}], "symmetry": {"rotational": 99}}})"))
+                .find("rotational"),
+            std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "quaternion_julia", "julia": {"c": [1, 2, 3]}})")).find("four numbers"),
+            std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "quaternion_julia", "julia": {"view": "cut"}})")).find("'slice'"),
+            std::string::npos);
+}
