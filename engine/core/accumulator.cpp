@@ -205,8 +205,11 @@ constexpr int kChaosProbeSteps = 500;
 // The probe of a chaos-game layer: lanes from random starts run through their transient, then
 // every drawn point is a sample. Its points are not kept as seeds: a chaos-game lane restarts
 // anywhere and finds the attractor within its transient.
-void probeChaosGame(const ChaosGame& game, SplitMix64& rng, std::vector<glm::dvec3>& samples,
-                    std::vector<double>& speeds, std::vector<double>& turns) {
+// Returns how many lane steps survived their transient (drawn or hidden): the measure of whether
+// the pattern stays finite at all, apart from how much of it a slice or an opacity shows.
+std::size_t probeChaosGame(const ChaosGame& game, SplitMix64& rng, std::vector<glm::dvec3>& samples,
+                           std::vector<double>& speeds, std::vector<double>& turns) {
+  std::size_t settled = 0;
   ChaosLanes lanes;
   lanes.resize(kChaosProbeLanes);
   for (std::size_t i = 0; i < kChaosProbeLanes; ++i) game.seedLane(lanes, i, rng);
@@ -227,7 +230,8 @@ void probeChaosGame(const ChaosGame& game, SplitMix64& rng, std::vector<glm::dve
         continue;
       }
       const glm::dvec3 d = p - previous[i];
-      if (++age[i] > kChaosProbeTransient && lanes.visible[i]) {
+      settled += ++age[i] > kChaosProbeTransient ? 1 : 0;
+      if (age[i] > kChaosProbeTransient && lanes.visible[i]) {
         samples.push_back(p);
         speeds.push_back(glm::length(d));
         const double lengths = glm::length(d) * glm::length(previousStep[i]);
@@ -237,6 +241,7 @@ void probeChaosGame(const ChaosGame& game, SplitMix64& rng, std::vector<glm::dve
       previousStep[i] = d;
     }
   }
+  return settled;
 }
 
 }  // namespace
@@ -250,9 +255,13 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
   std::vector<double> speeds, turns;
   if (layer.isChaosGame()) {
     prepared.game = std::make_shared<const ChaosGame>(layer, std::string(toString(layer.kind)) + " layer");
-    probeChaosGame(*prepared.game, rng, samples, speeds, turns);
-    // Most of a chaos game's draws must be finite points for the pattern to mean anything.
-    if (samples.size() < kChaosProbeLanes * kChaosProbeSteps / 20) return prepared;  // bounded stays false
+    const std::size_t settled = probeChaosGame(*prepared.game, rng, samples, speeds, turns);
+    // A good share of the lanes must stay finite past their transient for the pattern to mean
+    // anything, and enough of those must be drawn to fit it (a slice that misses the set shows none).
+    if (settled < kChaosProbeLanes * kChaosProbeSteps / 20 || samples.size() < 500) {
+      prepared.emptyView = settled >= kChaosProbeLanes * kChaosProbeSteps / 20;
+      return prepared;  // bounded stays false
+    }
     return finishPreparedLayer(std::move(prepared), samples, speeds, turns, mask, rng);
   }
   prepared.info = &attractorOrThrow(layer.attractor);
@@ -766,7 +775,9 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     prepared.push_back(layer);
     if (!prepared.back().bounded)
       problem =
-          layer.layer.kind == PatternKind::Attractor
+          layer.emptyView ? "the quaternion slice (or the transforms' opacity) shows almost none of the set; move the "
+                            "slice or thicken it"
+          : layer.layer.kind == PatternKind::Attractor
               ? "attractor '" + layer.layer.attractor + "' escapes to infinity (or collapses) with these parameters"
               : std::string(toString(layer.layer.kind)) +
                     " layer escapes to infinity (or collapses) with these transforms";

@@ -72,6 +72,7 @@ struct PreparedLayer {
   glm::dvec3 center{0.0};                // robust centre of the attractor
   std::vector<glm::u8vec3> palette;      // 256 gradient entries, linear RGB
   bool bounded = false;                  // the probe orbit stayed finite and bounded
+  bool emptyView = false;                // a chaos game stays finite but (almost) nothing of it is drawn
 };
 
 // The box of the voxels inside the mask, in voxel units; the whole grid when the mask is empty.
