@@ -356,11 +356,12 @@ FillReport measureFill(const PatternLayer& layer, std::uint64_t seed, const Fill
   report.occupancy = static_cast<double>(occupied) / static_cast<double>(cells.size());
   if (report.occupancy < criteria.minOccupancy) return fail(report, "is dust: its points fill little of their box");
   const double mean = sum / static_cast<double>(occupied);
-  const double variation = std::sqrt(std::max(0.0, sumSquares / static_cast<double>(occupied) - mean * mean)) / mean;
+  report.contrast = std::sqrt(std::max(0.0, sumSquares / static_cast<double>(occupied) - mean * mean)) / mean;
   report.passes = true;
-  // Filling more than 60% adds nothing to the look; contrast between dense and sparse cells does.
-  report.score = std::min(report.occupancy, 0.6) * std::sqrt(report.extentRatio) * (1.0 - report.badFraction) *
-                 (0.5 + 0.5 * std::min(1.0, variation / 1.5));
+  // Past a third of its box a pattern reads as a volume, so more fill earns nothing; what tells a
+  // flame from an even fog is its dynamic range, the contrast between dense and sparse cells.
+  report.score = std::min(report.occupancy, 0.35) / 0.35 * std::sqrt(report.extentRatio) *
+                 std::min(report.contrast, 4.0) / 4.0 * (1.0 - report.badFraction);
   return report;
 }
 

@@ -39,6 +39,9 @@ struct FillReport {
   double extentRatio = 0.0;  // smallest over largest side of the robust box
   double badFraction = 1.0;  // escaped draws over all draws
   double visibleFraction = 0.0;
+  // How unevenly the points spread over the cells they reach (coefficient of variation of the
+  // counts): filaments and dense cores against sparse veils score high, an even fog low.
+  double contrast = 0.0;
   glm::dvec3 low{0.0}, high{0.0};  // the robust box (5% and 95% per axis)
   double score = 0.0;              // higher is better; 0 when it fails
 };
