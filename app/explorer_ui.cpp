@@ -665,8 +665,9 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
   int& selected = state.selectedXform[index];
   if (selected >= static_cast<int>(flame.xforms.size()) || (selected < 0 && !flame.hasFinal)) selected = 0;
   // The transform selector: one button per transform, then the final one.
+  ImGui::TextColored(kDimColor, "transform");
   for (std::size_t i = 0; i < flame.xforms.size(); ++i) {
-    if (i > 0) ImGui::SameLine();
+    ImGui::SameLine();
     const std::string label = std::to_string(i + 1);
     if (ImGui::Selectable(label.c_str(), selected == static_cast<int>(i), 0, ImVec2(ImGui::GetFrameHeight(), 0)))
       selected = static_cast<int>(i);
