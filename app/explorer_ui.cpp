@@ -604,6 +604,8 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
           if (ImGui::Selectable("Reset to default")) term.params[p] = param.defaultValue;
           ImGui::EndPopup();
         }
+        if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+          ImGui::SetTooltip("default %.4g — right-click to reset", param.defaultValue);
         ImGui::PopID();
       }
       ImGui::Unindent();
