@@ -1,16 +1,22 @@
 // `voxflame list`, `voxflame info` and `voxflame search`: the attractor catalogue, the chaos
-// diagnostics of one parameter set, and the chaos search, from the command line.
+// diagnostics of one parameter set, and the chaos search, from the command line. A flame or
+// quaternion Julia preset gets the fill test and the search of flame_search.h instead.
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "arguments.h"
+#include "atomic_file.h"
 #include "commands.h"
 #include "core/attractor.h"
+#include "core/flame_search.h"
 #include "core/lyapunov.h"
+#include "core/scene.h"
 
 namespace voxflame::app {
 
@@ -118,6 +124,129 @@ std::string padToColumns(const std::string& text, std::size_t columns) {
   return text + std::string(columns > shown ? columns - shown : 1, ' ');
 }
 
+// A preset whose first layer is a flame or a quaternion Julia set, or nothing (no preset named,
+// --attractor given, or an attractor preset): the attractor path handles those.
+std::optional<core::Scene> chaosPreset(Arguments& arguments) {
+  if (arguments.positional().empty()) return std::nullopt;
+  core::Scene scene = sceneFromArgument(arguments.positional());
+  if (scene.layers.empty() || !scene.layers.front().isChaosGame()) return std::nullopt;
+  for (const char* option : {"--attractor", "--set", "--integrator", "--step", "--param"})
+    if (!arguments.takeAll(option).empty())
+      throw UsageError(std::string(option) + " applies to attractors; the first layer of '" +
+                       arguments.positional().front() + "' is a " + scene.layers.front().patternName());
+  return scene;
+}
+
+json fillJson(const core::FillReport& fill) {
+  return {{"passes", fill.passes},
+          {"score", fill.score},
+          {"occupancy", fill.occupancy},
+          {"extent_ratio", fill.extentRatio},
+          {"escaped_fraction", fill.badFraction},
+          {"box", {{"low", {fill.low.x, fill.low.y, fill.low.z}}, {"high", {fill.high.x, fill.high.y, fill.high.z}}}}};
+}
+
+// The layer as the preset writes it ("flame" or "julia" block), so a result pastes into a preset.
+json patternJson(const core::Scene& scene, const core::PatternLayer& layer) {
+  core::Scene one = scene;
+  one.layers = {layer};
+  one.keyframes.clear();
+  const json document = core::sceneToDocument(one, false);
+  const json& written = document.at("layers").at(0);
+  return layer.kind == core::PatternKind::Flame ? written.at("flame") : written.at("julia");
+}
+
+std::string describeFlame(const core::FlameGenome& genome) {
+  std::string text = std::to_string(genome.xforms.size()) + " transforms:";
+  const auto terms = [](const core::FlameXform& x) {
+    std::string names;
+    for (const auto& term : x.variations) names += (names.empty() ? "" : "+") + term.name;
+    return names.empty() ? std::string("linear") : names;
+  };
+  for (std::size_t i = 0; i < genome.xforms.size(); ++i) text += (i ? " | " : " ") + terms(genome.xforms[i]);
+  if (genome.hasFinal) text += " | final " + terms(genome.finalXform);
+  if (genome.symmetry.rotational > 1) text += "  symmetry " + std::to_string(genome.symmetry.rotational);
+  if (genome.symmetry.mirror) text += " mirrored";
+  return text;
+}
+
+std::string describeJulia(const core::QuaternionJuliaSettings& julia) {
+  char text[128];
+  std::snprintf(text, sizeof text, "c = (%.4f, %.4f, %.4f, %.4f)", julia.c.x, julia.c.y, julia.c.z, julia.c.w);
+  return text;
+}
+
+std::string describeFill(const core::FillReport& fill) {
+  char text[160];
+  std::snprintf(text, sizeof text, "fills %.1f%% of its box, thinnest side %.2f of the longest, %.2f%% escaped",
+                100.0 * fill.occupancy, fill.extentRatio, 100.0 * fill.badFraction);
+  return text;
+}
+
+int chaosInfo(const core::Scene& scene, bool asJson) {
+  const core::PatternLayer& layer = scene.layers.front();
+  const core::FillReport fill = core::measureFill(layer, scene.seed);
+  if (asJson) {
+    std::cout << json({{"kind", std::string(core::toString(layer.kind))}, {"fill", fillJson(fill)}}).dump() << "\n";
+    return 0;
+  }
+  std::printf(
+      "%s: %s\n", layer.patternName().c_str(),
+      layer.kind == core::PatternKind::Flame ? describeFlame(layer.flame).c_str() : describeJulia(layer.julia).c_str());
+  std::printf("%s; %s\n", fill.passes ? "fills a volume" : fill.reason.c_str(), describeFill(fill).c_str());
+  return 0;
+}
+
+int chaosSearch(core::Scene scene, const core::FlameSearchOptions& options, bool fresh, bool asJson,
+                const std::optional<std::string>& output) {
+  core::PatternLayer base = scene.layers.front();
+  std::vector<core::PatternLayer> found;
+  std::vector<core::FillReport> fills;
+  if (base.kind == core::PatternKind::Flame) {
+    for (const auto& c : core::searchFlames(fresh ? std::nullopt : std::optional(base.flame), options)) {
+      found.push_back(base);
+      found.back().flame = c.genome;
+      fills.push_back(c.fill);
+    }
+  } else {
+    core::FlameSearchOptions juliaOptions = options;
+    juliaOptions.juliaView = base.julia;
+    for (const auto& c : core::searchQuaternionJulia(fresh ? std::nullopt : std::optional(base.julia), juliaOptions)) {
+      found.push_back(base);
+      found.back().julia = c.julia;
+      fills.push_back(c.fill);
+    }
+  }
+  json list = json::array();
+  for (std::size_t i = 0; i < found.size(); ++i) {
+    if (asJson) {
+      json entry = {{"kind", std::string(core::toString(found[i].kind))}, {"fill", fillJson(fills[i])}};
+      entry[found[i].kind == core::PatternKind::Flame ? "flame" : "julia"] = patternJson(scene, found[i]);
+      list.push_back(entry);
+      continue;
+    }
+    std::printf("%zu. score %.3f  %s\n   %s\n", i + 1, fills[i].score, describeFill(fills[i]).c_str(),
+                found[i].kind == core::PatternKind::Flame ? describeFlame(found[i].flame).c_str()
+                                                          : describeJulia(found[i].julia).c_str());
+  }
+  if (asJson) std::cout << list.dump(2) << "\n";
+  if (output && !found.empty()) {
+    scene.layers.front() = found.front();
+    // The written preset finds its mesh from wherever it is written.
+    if (!scene.embedded)
+      scene.meshPath = std::filesystem::absolute(scene.resolvedMeshPath()).lexically_normal().string();
+    writeFileAtomically(*output, core::sceneToJson(scene), 0644, ".partial", "cannot write preset");
+    if (!asJson) std::printf("wrote the best as %s\n", output->c_str());
+  }
+  if (static_cast<int>(found.size()) < options.count) {
+    std::cerr << "voxflame: found " << found.size() << " of " << options.count << " " << base.patternName()
+              << (fresh ? " patterns" : " patterns near this one") << " that fill their box; try another --seed"
+              << (fresh ? "" : " or a smaller --strength") << "\n";
+    return found.empty() ? 1 : 0;
+  }
+  return 0;
+}
+
 }  // namespace
 
 int listCommand(const CommandArgs& args) {
@@ -160,6 +289,10 @@ int listCommand(const CommandArgs& args) {
 int infoCommand(const CommandArgs& args) {
   Arguments arguments(args, 2, {"--json"});
   const bool asJson = arguments.flag("--json");
+  if (const auto scene = chaosPreset(arguments)) {
+    arguments.finish(1);
+    return chaosInfo(*scene, asJson);
+  }
   const core::OrbitSpec spec = specFromArguments(arguments);
   arguments.finish(1);
   const core::AttractorInfo& info = *spec.info;
@@ -199,12 +332,25 @@ int infoCommand(const CommandArgs& args) {
 }
 
 int searchCommand(const CommandArgs& args) {
-  Arguments arguments(args, 2, {"--json"});
+  Arguments arguments(args, 2, {"--json", "--random"});
   const bool asJson = arguments.flag("--json");
   core::SearchOptions options;
   options.seed = static_cast<std::uint64_t>(arguments.integer("--seed", 1, 0, 1LL << 53));
   options.count = static_cast<int>(arguments.integer("--count", 5, 1, 1000));
   options.strength = arguments.real("--strength", 0.1, 1e-6, 10.0);
+  const bool fresh = arguments.flag("--random");
+  const auto output = arguments.take("-o", "--output");
+  if (auto scene = chaosPreset(arguments)) {
+    arguments.finish(1);
+    core::FlameSearchOptions flameOptions;
+    flameOptions.seed = options.seed;
+    flameOptions.count = options.count;
+    flameOptions.strength = options.strength;
+    flameOptions.maxCandidates = std::max(flameOptions.maxCandidates, 40 * options.count);
+    return chaosSearch(std::move(*scene), flameOptions, fresh, asJson, output);
+  }
+  if (fresh || output)
+    throw UsageError(std::string(fresh ? "--random" : "-o") + " applies to flame and quaternion Julia presets");
   const core::OrbitSpec spec = specFromArguments(arguments);
   arguments.finish(1);
   const core::AttractorInfo& info = *spec.info;

@@ -51,10 +51,13 @@ usage:
       The attractor catalogue: ids, kinds, parameters with defaults.
   voxflame info [PRESET.json] [--attractor ID] [--set NAME] [--param NAME=VALUE]...
                 [--integrator euler|rk4] [--step H] [--json]
-      Boundedness, Lyapunov exponents (largest first) and dimension of one parameter set.
+      Boundedness, Lyapunov exponents (largest first) and dimension of one parameter set;
+      for a flame or quaternion Julia preset, how well it fills its box.
   voxflame search [PRESET.json | --attractor ID] [--seed N] [--count K] [--strength S]
                   [--set NAME] [--param NAME=VALUE]... [--json]
       Find K nearby parameter sets that are bounded, chaotic and fill a volume.
+      On a flame or quaternion Julia preset: K mutations of it that fill their box
+      (--random: new random ones), best first; -o OUT.json writes the best as a preset.
   voxflame mask MESH -o OUT.nrrd [--grid N] [--stats]
                 [--method winding-number|exact-winding-number|parity]
       Write the mesh's inside mask (N voxels along its longest axis, 32-1024, default 256)

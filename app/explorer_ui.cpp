@@ -13,6 +13,9 @@
 #include "core/camera.h"
 #include "core/color.h"
 #include "core/error.h"
+#include "core/flame.h"
+#include "core/flame_search.h"
+#include "core/flame_variations.h"
 #include "core/grid.h"
 #include "core/keyframes.h"
 #include "pipeline.h"
@@ -83,19 +86,30 @@ bool ready(const auto& future) {
 
 // Keeps the Lyapunov line in step with layer 0; one analysis at a time, never waited for.
 void updateAnalysis(ExplorerState& state) {
+  const bool chaosGame = !state.scene.layers.empty() && state.scene.layers.front().isChaosGame();
   if (ready(state.analysis)) {
     try {
       const core::OrbitAnalysis result = state.analysis.get();
       char text[160];
       std::snprintf(text, sizeof text, "λ %.3f  %.3f  %.3f  (%s)", result.lyapunov[0], result.lyapunov[1],
                     result.lyapunov[2], std::string(core::toString(result.verdict)).c_str());
-      state.lyapunovText = text;
+      if (!chaosGame) state.lyapunovText = text;  // an attractor's analysis that finished after a switch is stale
     } catch (const core::Error& e) {
-      state.lyapunovText = e.what();
+      if (!chaosGame) state.lyapunovText = e.what();
     }
   }
-  if (state.analysis.valid() || state.scene.layers.empty()) return;
-  const std::string key = analysisKey(state.scene.layers.front());
+  if (state.scene.layers.empty()) return;
+  const core::PatternLayer& front = state.scene.layers.front();
+  if (chaosGame) {
+    // A chaos game picks a map at random every step: there is no one orbit whose Lyapunov
+    // exponents would mean anything, so the line just says what the layer is.
+    state.lyapunovText =
+        front.kind == core::PatternKind::Flame ? "flame (chaos game)" : "quaternion Julia (chaos game)";
+    state.analysedKey.clear();
+    return;
+  }
+  if (state.analysis.valid()) return;
+  const std::string key = analysisKey(front);
   if (key == state.analysedKey) return;
   state.analysedKey = key;
   try {
@@ -108,24 +122,92 @@ void updateAnalysis(ExplorerState& state) {
   }
 }
 
-// The part of a layer that Search changes and the history restores; colour and placement stay.
+// The part of a layer that Search changes and the history restores (its kind and pattern);
+// colour and placement stay.
 void applyVisited(core::PatternLayer& layer, const core::PatternLayer& visited) {
+  const bool kindChanges = layer.kind != visited.kind;
+  layer.kind = visited.kind;
   layer.attractor = visited.attractor;
   layer.params = visited.params;
   layer.integrator = visited.integrator;
   layer.step = visited.step;
+  layer.flame = visited.flame;
+  layer.julia = visited.julia;
+  // An attractor cannot colour by flam3's index; a chaos layer starts with it.
+  if (kindChanges) layer.color.mode = visited.isChaosGame() ? core::ColorMode::Index : core::ColorMode::Speed;
 }
 
-void startSearch(ExplorerState& state, double strength) {
+std::string fillText(const core::FillReport& fill) {
+  char text[128];
+  std::snprintf(text, sizeof text, "fills %.0f%% of its box, thinnest side %.2f of the longest", 100.0 * fill.occupancy,
+                fill.extentRatio);
+  return text;
+}
+
+// Search (fresh) draws new patterns near nothing; Mutate (and "Find a nearby one") moves the
+// current one by `strength`. Attractors always search near their parameters, as before; flames
+// and Julia sets use the fill test of flame_search.h.
+void startSearch(ExplorerState& state, double strength, bool fresh) {
   if (state.search.valid() || state.scene.layers.empty()) return;  // one at a time
+  using Outcome = ExplorerState::SearchOutcome;
   try {
-    const core::OrbitSpec spec = layerSpec(state.scene.layers.front());
+    const core::PatternLayer layer = state.scene.layers.front();
+    const std::uint64_t seed = state.searchSeed++;
+    if (layer.isChaosGame()) {
+      core::FlameSearchOptions options;
+      options.seed = seed;
+      options.count = 1;
+      options.strength = strength;
+      options.juliaView = layer.julia;
+      state.searchMessage = "searching…";
+      state.search = std::async(std::launch::async, [layer, options, fresh] {
+        Outcome outcome;
+        core::PatternLayer found = layer;
+        if (layer.kind == core::PatternKind::Flame) {
+          const auto results =
+              core::searchFlames(fresh ? std::nullopt : std::optional<core::FlameGenome>(layer.flame), options);
+          if (results.empty()) {
+            outcome.message = "no flame that fills its box was found; try again or a smaller strength";
+            return outcome;
+          }
+          found.flame = results.front().genome;
+          outcome.message = "found a flame: " + fillText(results.front().fill);
+        } else {
+          const auto results = core::searchQuaternionJulia(
+              fresh ? std::nullopt : std::optional<core::QuaternionJuliaSettings>(layer.julia), options);
+          if (results.empty()) {
+            outcome.message = "no Julia set that fills its box was found; try again or a smaller strength";
+            return outcome;
+          }
+          found.julia = results.front().julia;
+          outcome.message = "found a Julia set: " + fillText(results.front().fill);
+        }
+        outcome.found = found;
+        return outcome;
+      });
+      return;
+    }
+    const core::OrbitSpec spec = layerSpec(layer);
     core::SearchOptions options;
-    options.seed = state.searchSeed++;
+    options.seed = seed;
     options.count = 1;
     options.strength = strength;
     state.searchMessage = "searching…";
-    state.search = std::async(std::launch::async, [spec, options] { return core::searchChaos(spec, options); });
+    state.search = std::async(std::launch::async, [layer, spec, options] {
+      Outcome outcome;
+      const auto results = core::searchChaos(spec, options);
+      if (results.empty()) {
+        outcome.message = "no chaotic set found nearby; try a larger strength";
+        return outcome;
+      }
+      core::PatternLayer found = layer;
+      found.params = results.front().params;
+      outcome.found = found;
+      char text[96];
+      std::snprintf(text, sizeof text, "found: largest Lyapunov exponent %.3f", results.front().analysis.lyapunov[0]);
+      outcome.message = text;
+      return outcome;
+    });
   } catch (const core::Error& e) {
     state.searchMessage = e.what();
   }
@@ -134,22 +216,21 @@ void startSearch(ExplorerState& state, double strength) {
 void collectSearch(ExplorerState& state) {
   if (!ready(state.search)) return;
   try {
-    const auto results = state.search.get();
-    if (results.empty()) {
-      state.searchMessage = "no chaotic set found nearby; try a larger strength";
+    const ExplorerState::SearchOutcome outcome = state.search.get();
+    state.searchMessage = outcome.message;
+    if (!outcome.found || state.scene.layers.empty()) return;
+    core::PatternLayer& layer = state.scene.layers.front();
+    if (layer.kind != outcome.found->kind) {
+      state.searchMessage = "the layer changed kind while the search ran; its result was dropped";
       return;
     }
-    core::PatternLayer& layer = state.scene.layers.front();
     // The history keeps where the search started from, then each find; a find after going back
     // drops the forward part, as in a browser.
     if (state.visited.empty()) state.visited.push_back(layer);
     state.visited.resize(std::min(state.visited.size(), state.visitedIndex + 1));
-    layer.params = results.front().params;
+    applyVisited(layer, *outcome.found);
     state.visited.push_back(layer);
     state.visitedIndex = state.visited.size() - 1;
-    char text[96];
-    std::snprintf(text, sizeof text, "found: largest Lyapunov exponent %.3f", results.front().analysis.lyapunov[0]);
-    state.searchMessage = text;
   } catch (const core::Error& e) {
     state.searchMessage = e.what();
   }
@@ -227,7 +308,7 @@ void handleShortcuts(ExplorerState& state) {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.KeyCtrl && ImGui::IsKeyPressed('Q', false)) state.requests.quit = true;
   if (io.WantTextInput) return;
-  if (ImGui::IsKeyPressed(kKeyF3, false)) startSearch(state, 0.1);
+  if (ImGui::IsKeyPressed(kKeyF3, false)) startSearch(state, 0.1, true);
   const bool alt = io.KeyAlt || keyDown(kKeyLeftAlt) || keyDown(kKeyRightAlt);
   if (alt && ImGui::IsKeyPressed(kKeyLeft, false)) goVisited(state, -1);
   if (alt && ImGui::IsKeyPressed(kKeyRight, false)) goVisited(state, +1);
@@ -275,10 +356,12 @@ void gradientPreview(const std::vector<core::GradientStop>& stops, float width, 
   ImGui::Dummy(ImVec2(width, height));
 }
 
-void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSettings& color) {
+void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSettings& color, bool chaosGame) {
+  // ColorMode's order; flam3's colour index only exists for chaos-game layers.
   int mode = static_cast<int>(color.mode);
-  if (ImGui::Combo("colour by", &mode, "speed\0curvature\0time\0axis\0distance\0"))
-    color.mode = static_cast<core::ColorMode>(mode);
+  const char* modes =
+      chaosGame ? "speed\0curvature\0time\0axis\0distance\0index\0" : "speed\0curvature\0time\0axis\0distance\0";
+  if (ImGui::Combo("colour by", &mode, modes)) color.mode = static_cast<core::ColorMode>(mode);
   probe(state, scope + "colour by");
   if (color.mode == core::ColorMode::Time)
     slider(state, scope, "period (steps)", color.period, 10.0, 100000.0, ImGuiSliderFlags_Logarithmic, "%.0f");
@@ -351,10 +434,330 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
   }
 }
 
-void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
-  core::PatternLayer& layer = state.scene.layers[index];
+// ---------------------------------------------------------------------------------------------
+// Chaos-game layers: the kind of a layer, a flame's transforms and variations, a Julia set.
+
+constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
+
+// A layer's kind; a new kind starts from its defaults (the default flame, the classic Julia set,
+// the attractor catalogue's first-layer default) and the colour mode that suits it.
+void patternKindChoice(ExplorerState& state, std::size_t index, const std::string& scope, core::PatternLayer& layer) {
+  static constexpr const char* kKindLabels[] = {"attractor", "flame", "quaternion Julia"};
+  const int current = static_cast<int>(layer.kind);
+  if (ImGui::BeginCombo("pattern", kKindLabels[current])) {
+    for (int k = 0; k < 3; ++k) {
+      const bool chosen = ImGui::Selectable(kKindLabels[k], k == current);
+      probe(state, scope + "pattern/" + kKindLabels[k]);
+      if (!chosen || k == current) continue;
+      const core::PatternLayer defaults;
+      layer.kind = static_cast<core::PatternKind>(k);
+      if (layer.isChaosGame()) {
+        layer.attractor.clear();
+        layer.params.clear();
+        layer.flame = layer.kind == core::PatternKind::Flame ? core::defaultFlame() : core::FlameGenome{};
+        layer.julia = core::QuaternionJuliaSettings{};
+        layer.color.mode = core::ColorMode::Index;
+      } else {
+        const core::AttractorInfo& info = core::attractorOrThrow(defaults.attractor);
+        layer.attractor = info.id;
+        layer.params = info.defaultParams();
+        layer.step = info.defaultStep;
+        layer.integrator = info.defaultIntegrator;
+        layer.flame = {};
+        layer.julia = {};
+        if (layer.color.mode == core::ColorMode::Index) layer.color.mode = core::ColorMode::Speed;
+      }
+      state.selectedXform[index] = 0;
+    }
+    ImGui::EndCombo();
+  }
+  probe(state, scope + "pattern");
+}
+
+// The length of column `col` of the 3×3 part: how much the map stretches its own axis `col`.
+double columnLength(const std::array<double, 12>& m, int col) {
+  const auto c = static_cast<std::size_t>(col);
+  return std::sqrt(m[c] * m[c] + m[4 + c] * m[4 + c] + m[8 + c] * m[8 + c]);
+}
+
+// rotation about x, then y, then z (degrees), as a 3×3 row-major matrix.
+std::array<double, 9> eulerRotation(const double degrees[3]) {
+  const double a = glm::radians(degrees[0]), b = glm::radians(degrees[1]), c = glm::radians(degrees[2]);
+  const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b), cc = std::cos(c),
+               sc = std::sin(c);
+  // Rz · Ry · Rx
+  return {cc * cb,
+          cc * sb * sa - sc * ca,
+          cc * sb * ca + sc * sa,  //
+          sc * cb,
+          sc * sb * sa + cc * ca,
+          sc * sb * ca - cc * sa,  //
+          -sb,
+          cb * sa,
+          cb * ca};
+}
+
+// Translate, rotate and scale handles for one affine map, then its 12 numbers on request. The
+// rotate handle turns the matrix about the transform's own frame (M ← M · R), so its scales and
+// offset stay; the scale handles set the length of each column of the 3×3 part.
+void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3& affine) {
+  std::array<double, 12>& m = affine.m;
+  double translate[3] = {m[3], m[7], m[11]};
+  const double minT = -3.0, maxT = 3.0;
+  if (ImGui::SliderScalarN("translate", ImGuiDataType_Double, translate, 3, &minT, &maxT, "%.3f", kClamp))
+    m[3] = translate[0], m[7] = translate[1], m[11] = translate[2];
+  probe(state, scope + "translate");
+
+  const std::string rotateId = scope + "rotate";
+  const bool rotatingThis = state.rotatingId == rotateId;
+  double shown[3] = {0.0, 0.0, 0.0};
+  if (rotatingThis) std::copy(std::begin(state.rotateAngles), std::end(state.rotateAngles), shown);
+  const double minDeg = -180.0, maxDeg = 180.0;
+  const bool turned = ImGui::SliderScalarN("rotate", ImGuiDataType_Double, shown, 3, &minDeg, &maxDeg, "%.0f°", kClamp);
+  probe(state, rotateId);
+  if (ImGui::IsItemActivated()) {
+    state.rotatingId = rotateId;
+    state.rotateStart = m;
+  }
+  if (turned && state.rotatingId == rotateId) {
+    std::copy(std::begin(shown), std::end(shown), state.rotateAngles);
+    const std::array<double, 9> r = eulerRotation(shown);
+    for (int row = 0; row < 3; ++row)
+      for (int col = 0; col < 3; ++col) {
+        double sum = 0.0;
+        for (int k = 0; k < 3; ++k)
+          sum += state.rotateStart[static_cast<std::size_t>(row * 4 + k)] * r[static_cast<std::size_t>(k * 3 + col)];
+        m[static_cast<std::size_t>(row * 4 + col)] = sum;
+      }
+  }
+  if (ImGui::IsItemDeactivated() && state.rotatingId == rotateId) {
+    state.rotatingId.clear();
+    std::fill(std::begin(state.rotateAngles), std::end(state.rotateAngles), 0.0);
+  }
+  if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+    ImGui::SetTooltip("drag to turn the map about its own x, y and z axes");
+
+  double scales[3] = {columnLength(m, 0), columnLength(m, 1), columnLength(m, 2)};
+  const double minS = 0.01, maxS = 2.0;
+  if (ImGui::SliderScalarN("scale", ImGuiDataType_Double, scales, 3, &minS, &maxS, "%.3f", kClamp))
+    for (int col = 0; col < 3; ++col) {
+      const double length = columnLength(m, col);
+      const auto c = static_cast<std::size_t>(col);
+      if (length > 1e-12) {
+        const double factor = scales[col] / length;
+        m[c] *= factor, m[4 + c] *= factor, m[8 + c] *= factor;
+      } else {  // a collapsed axis comes back along itself
+        m[c] = m[4 + c] = m[8 + c] = 0.0;
+        m[static_cast<std::size_t>(col * 4 + col)] = scales[col];
+      }
+    }
+  probe(state, scope + "scale");
+
+  if (ImGui::TreeNode("numbers")) {
+    static constexpr const char* kRows[] = {"x' = x y z 1", "y' = x y z 1", "z' = x y z 1"};
+    const double minV = -100.0, maxV = 100.0;
+    for (int row = 0; row < 3; ++row) {
+      ImGui::DragScalarN(kRows[row], ImGuiDataType_Double, &m[static_cast<std::size_t>(row * 4)], 4, 0.002f, &minV,
+                         &maxV, "%.3f", kClamp);
+      probe(state, scope + "row" + std::to_string(row));
+    }
+    ImGui::TreePop();
+  }
+}
+
+// A transform's variations: weight and parameter sliders each, remove buttons, and a filterable
+// list of the whole catalogue to add from.
+void variationsEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform) {
+  std::size_t removeIndex = xform.variations.size();
+  for (std::size_t v = 0; v < xform.variations.size(); ++v) {
+    core::VariationTerm& term = xform.variations[v];
+    const core::VariationInfo* info = core::findVariation(term.name);
+    const std::string vscope = scope + "var" + std::to_string(v) + "/";
+    ImGui::PushID(static_cast<int>(v));
+    // The weight slider is labelled with the variation's name; its formula is the tooltip.
+    const double minW = -2.0, maxW = 2.0;
+    ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
+    ImGui::SliderScalar((term.name + "##weight").c_str(), ImGuiDataType_Double, &term.weight, &minW, &maxW,
+                        "weight %.3f", kClamp);
+    probe(state, vscope + "weight");
+    if (ImGui::IsItemHovered() && !ImGui::IsItemActive() && info) ImGui::SetTooltip("%s", info->formula.c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("x")) removeIndex = v;
+    probe(state, vscope + "remove");
+    if (info && term.params.size() == info->params.size()) {
+      ImGui::Indent();
+      for (std::size_t p = 0; p < info->params.size(); ++p) {
+        const core::VariationParam& param = info->params[p];
+        const std::string label = term.name + " " + param.name;
+        ImGui::PushID(static_cast<int>(p));
+        if (param.integer) {
+          int value = static_cast<int>(std::lround(term.params[p]));
+          if (ImGui::SliderInt(label.c_str(), &value, static_cast<int>(std::ceil(param.sliderMin)),
+                               static_cast<int>(std::floor(param.sliderMax)), "%d", kClamp))
+            term.params[p] = value;
+        } else {
+          ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &term.params[p], &param.sliderMin, &param.sliderMax,
+                              "%.3f", kClamp);
+        }
+        probe(state, vscope + param.name);
+        if (ImGui::BeginPopupContextItem()) {
+          if (ImGui::Selectable("Reset to default")) term.params[p] = param.defaultValue;
+          ImGui::EndPopup();
+        }
+        if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+          ImGui::SetTooltip("default %.4g — right-click to reset", param.defaultValue);
+        ImGui::PopID();
+      }
+      ImGui::Unindent();
+    }
+    ImGui::PopID();
+  }
+  if (removeIndex < xform.variations.size())
+    xform.variations.erase(xform.variations.begin() + static_cast<std::ptrdiff_t>(removeIndex));
+
+  ImGui::BeginDisabled(xform.variations.size() >= core::kMaxXformVariations);
+  if (ImGui::BeginCombo("add variation", "choose…", ImGuiComboFlags_HeightLarge)) {
+    if (ImGui::IsWindowAppearing()) {
+      state.variationFilter[0] = '\0';
+      ImGui::SetKeyboardFocusHere();
+    }
+    ImGui::InputTextWithHint("##variationfilter", "filter", state.variationFilter, sizeof state.variationFilter);
+    const std::string filter = lowercase(state.variationFilter);
+    for (const core::VariationInfo& info : core::variationCatalogue()) {
+      if (!filter.empty() && lowercase(info.name).find(filter) == std::string::npos) continue;
+      const bool chosen = ImGui::Selectable(info.name.c_str());
+      probe(state, scope + "add/" + info.name);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", info.formula.c_str());
+      if (chosen) {
+        // A new term starts small, so adding one bends the flame rather than replacing it.
+        xform.variations.push_back({info.name, xform.variations.empty() ? 1.0 : 0.25, info.defaultParams()});
+      }
+    }
+    ImGui::EndCombo();
+  }
+  probe(state, scope + "add variation");
+  ImGui::EndDisabled();
+}
+
+// One transform: weight (not for the final one), colour, colour speed, opacity, the affine map
+// and an optional post map, the variations.
+void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform, bool isFinal) {
+  if (!isFinal)
+    slider(state, scope, "transform weight", xform.weight, 0.01, 10.0, ImGuiSliderFlags_Logarithmic | kClamp);
+  slider(state, scope, "colour", xform.color, 0.0, 1.0, kClamp);
+  slider(state, scope, "colour speed", xform.colorSpeed, 0.0, 1.0, kClamp);
+  slider(state, scope, "opacity", xform.opacity, 0.0, 1.0, kClamp);
+  affineEditor(state, scope, xform.affine);
+  ImGui::Checkbox("post-affine", &xform.hasPost);
+  probe(state, scope + "post-affine");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("a second affine map applied after the variations");
+  if (xform.hasPost) {
+    ImGui::PushID("post");
+    ImGui::Indent();
+    affineEditor(state, scope + "post/", xform.post);
+    ImGui::Unindent();
+    ImGui::PopID();
+  }
+  ImGui::Separator();
+  ImGui::TextColored(kDimColor, "variations");
+  variationsEditor(state, scope, xform);
+}
+
+void flameEditor(ExplorerState& state, std::size_t index, const std::string& scope, core::FlameGenome& flame) {
+  int& selected = state.selectedXform[index];
+  if (selected >= static_cast<int>(flame.xforms.size()) || (selected < 0 && !flame.hasFinal)) selected = 0;
+  // The transform selector: one button per transform, then the final one.
+  ImGui::TextColored(kDimColor, "transform");
+  for (std::size_t i = 0; i < flame.xforms.size(); ++i) {
+    ImGui::SameLine();
+    const std::string label = std::to_string(i + 1);
+    if (ImGui::Selectable(label.c_str(), selected == static_cast<int>(i), 0, ImVec2(ImGui::GetFrameHeight(), 0)))
+      selected = static_cast<int>(i);
+    probe(state, scope + "xform " + label);
+  }
+  if (flame.hasFinal) {
+    ImGui::SameLine();
+    if (ImGui::Selectable("final", selected < 0, 0, ImVec2(ImGui::CalcTextSize("final").x, 0))) selected = -1;
+    probe(state, scope + "xform final");
+  }
+  const bool full = flame.xforms.size() >= core::kMaxFlameXforms;
+  ImGui::BeginDisabled(full);
+  if (button(state, scope, "Add transform")) {
+    flame.xforms.push_back(
+        core::randomTransform(state.searchSeed++, std::fmod(0.37 * static_cast<double>(flame.xforms.size()), 1.0)));
+    selected = static_cast<int>(flame.xforms.size()) - 1;
+  }
+  ImGui::SameLine();
+  if (button(state, scope, "Duplicate") && selected >= 0) {
+    flame.xforms.insert(flame.xforms.begin() + selected + 1, flame.xforms[static_cast<std::size_t>(selected)]);
+    ++selected;
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(selected >= 0 && flame.xforms.size() <= 1);
+  if (button(state, scope, "Remove")) {
+    if (selected < 0) {
+      flame.hasFinal = false;
+      selected = 0;
+    } else if (flame.xforms.size() > 1) {
+      flame.xforms.erase(flame.xforms.begin() + selected);
+      selected = std::min(selected, static_cast<int>(flame.xforms.size()) - 1);
+    }
+  }
+  ImGui::EndDisabled();
+  if (ImGui::Checkbox("final transform", &flame.hasFinal)) {
+    if (flame.hasFinal) {
+      if (flame.finalXform.variations.empty()) flame.finalXform.variations = {{"linear", 1.0, {}}};
+      selected = -1;
+    } else if (selected < 0) {
+      selected = 0;
+    }
+  }
+  probe(state, scope + "final transform");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("bends what is drawn without feeding back into the iteration");
+
+  const std::string xscope = scope + (selected < 0 ? "final/" : "xform/");
+  ImGui::PushID(selected);
+  core::FlameXform& xform = selected < 0 ? flame.finalXform : flame.xforms[static_cast<std::size_t>(selected)];
+  xformEditor(state, xscope, xform, selected < 0);
+  ImGui::PopID();
+
+  if (ImGui::TreeNode("Symmetry")) {
+    core::FlameSymmetry& symmetry = flame.symmetry;
+    ImGui::SliderInt("rotational", &symmetry.rotational, 1, core::kMaxFlameSymmetry, "%d-fold", kClamp);
+    probe(state, scope + "rotational");
+    ImGui::Checkbox("mirror", &symmetry.mirror);
+    probe(state, scope + "mirror");
+    double axis[3] = {symmetry.axis.x, symmetry.axis.y, symmetry.axis.z};
+    const double minA = -1.0, maxA = 1.0;
+    if (ImGui::SliderScalarN("axis", ImGuiDataType_Double, axis, 3, &minA, &maxA, "%.2f", kClamp)) {
+      const glm::dvec3 chosen(axis[0], axis[1], axis[2]);
+      if (glm::length(chosen) > 1e-3) symmetry.axis = chosen;  // a zero axis is no axis: keep the last one
+    }
+    probe(state, scope + "symmetry axis");
+    ImGui::TreePop();
+  }
+}
+
+void juliaEditor(ExplorerState& state, const std::string& scope, core::QuaternionJuliaSettings& julia) {
+  static constexpr const char* kComponents[] = {"c (1)", "c (i)", "c (j)", "c (k)"};
+  for (int i = 0; i < 4; ++i) slider(state, scope, kComponents[i], julia.c[i], -1.5, 1.5, kClamp, "%.4f");
+  int view = julia.view == core::QuaternionView::Slice ? 1 : 0;
+  if (ImGui::Combo("view", &view, "project\0slice\0"))
+    julia.view = view == 1 ? core::QuaternionView::Slice : core::QuaternionView::Project;
+  probe(state, scope + "view");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("project: drop the fourth coordinate; slice: keep the points near w = slice w");
+  slider(state, scope, "turn", julia.turnDeg, -180.0, 180.0, kClamp, "%.1f°");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("turns the set in the (z, w) plane before it is projected or sliced");
+  if (julia.view == core::QuaternionView::Slice) {
+    slider(state, scope, "slice w", julia.sliceW, -2.0, 2.0, kClamp);
+    slider(state, scope, "thickness", julia.thickness, 0.001, 1.0, ImGuiSliderFlags_Logarithmic | kClamp);
+  }
+}
+
+void attractorEditor(ExplorerState& state, const std::string& scope, core::PatternLayer& layer) {
   const core::AttractorInfo& info = core::attractorOrThrow(layer.attractor);
-  const std::string scope = "layer" + std::to_string(index) + "/";
   attractorPicker(state, layer, info);
   if (layer.params.size() != info.params.size()) return;  // changed attractor: sliders next frame
   const core::AttractorInfo& current = core::attractorOrThrow(layer.attractor);
@@ -380,8 +783,27 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
     layer.step = current.defaultStep;
     layer.integrator = current.defaultIntegrator;
   }
+}
+
+void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
+  core::PatternLayer& layer = state.scene.layers[index];
+  const std::string scope = "layer" + std::to_string(index) + "/";
+  const core::PatternKind kindBefore = layer.kind;
+  patternKindChoice(state, index, scope, layer);
+  if (layer.kind != kindBefore) return;  // the new kind's widgets from the next frame
+  switch (layer.kind) {
+    case core::PatternKind::Attractor:
+      attractorEditor(state, scope, layer);
+      break;
+    case core::PatternKind::Flame:
+      flameEditor(state, index, scope, layer.flame);
+      break;
+    case core::PatternKind::QuaternionJulia:
+      juliaEditor(state, scope, layer.julia);
+      break;
+  }
   if (state.scene.layers.size() > 1) {
-    ImGui::SameLine();
+    if (layer.kind == core::PatternKind::Attractor) ImGui::SameLine();  // beside "Reset parameters"
     if (button(state, scope, "Remove layer")) removeThis = true;
     slider(state, scope, "weight", layer.weight, 0.01, 10.0, ImGuiSliderFlags_Logarithmic);
   }
@@ -431,7 +853,7 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
     ImGui::TreePop();
   }
   if (ImGui::TreeNodeEx("Colour", ImGuiTreeNodeFlags_DefaultOpen)) {
-    colourEditor(state, scope, layer.color);
+    colourEditor(state, scope, layer.color, layer.isChaosGame());
     ImGui::TreePop();
   }
 }
@@ -445,9 +867,13 @@ void patternWindow(ExplorerState& state, float scale) {
   ImGui::PushItemWidth(-110 * scale);
   std::size_t removeIndex = state.scene.layers.size();
   for (std::size_t li = 0; li < state.scene.layers.size(); ++li) {
-    const core::AttractorInfo& info = core::attractorOrThrow(state.scene.layers[li].attractor);
+    const core::PatternLayer& shown = state.scene.layers[li];
+    const std::string what = shown.kind == core::PatternKind::Attractor ? core::attractorOrThrow(shown.attractor).name
+                             : shown.kind == core::PatternKind::Flame
+                                 ? "flame (" + std::to_string(shown.flame.xforms.size()) + " transforms)"
+                                 : std::string("quaternion Julia");
     ImGui::PushID(static_cast<int>(li));
-    const std::string header = "Layer " + std::to_string(li + 1) + ": " + info.name + "###layer";
+    const std::string header = "Layer " + std::to_string(li + 1) + ": " + what + "###layer";
     if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
       bool remove = false;
       layerEditor(state, li, remove);
@@ -472,9 +898,11 @@ void patternWindow(ExplorerState& state, float scale) {
   }
 
   if (ImGui::CollapsingHeader("Explore", ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (button(state, "", "Search (F3)")) startSearch(state, 0.1);
+    if (button(state, "", "Search (F3)")) startSearch(state, 0.1, true);
+    if (ImGui::IsItemHovered() && !state.scene.layers.empty() && state.scene.layers.front().isChaosGame())
+      ImGui::SetTooltip("a new random pattern of this kind that fills its box");
     ImGui::SameLine();
-    if (button(state, "", "Mutate")) startSearch(state, state.mutateStrength);
+    if (button(state, "", "Mutate")) startSearch(state, state.mutateStrength, false);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1);
     slider(state, "", "##strength", state.mutateStrength, 0.01, 1.0, ImGuiSliderFlags_Logarithmic, "strength %.2f");
@@ -497,7 +925,7 @@ void patternWindow(ExplorerState& state, float scale) {
     if (!state.session.stats.problem.empty()) {
       ImGui::TextColored(kErrorColor, "This pattern escapes to infinity.");
       ImGui::SameLine();
-      if (button(state, "", "Find a nearby one")) startSearch(state, 0.1);
+      if (button(state, "", "Find a nearby one")) startSearch(state, 0.1, false);
     }
   }
   ImGui::PopItemWidth();

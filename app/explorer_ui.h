@@ -4,6 +4,7 @@
 // session and the files; panels ask it for things through UiRequests.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <deque>
 #include <filesystem>
@@ -71,15 +72,28 @@ struct ExplorerState {
 
   // Pattern panel.
   char attractorFilter[64] = "";
+  char variationFilter[64] = "";             // the "add variation" list's filter (one list is open at a time)
+  std::map<std::size_t, int> selectedXform;  // per layer: the flame transform being edited (-1: the final one)
+  // A rotate handle turns the matrix it was pressed on by the angles dragged so far, so the
+  // angles start at 0 on every press and the drag never accumulates rounding.
+  std::string rotatingId;
+  std::array<double, 12> rotateStart{};
+  double rotateAngles[3] = {0.0, 0.0, 0.0};
   char meshPath[512] = "";
   int gridDraft = 0;  // the grid slider's value while it is held
 
-  // Search (F3) and Mutate run off the main thread; their result replaces layer 0's parameters.
-  std::future<std::vector<core::SearchResult>> search;
+  // Search (F3) and Mutate run off the main thread; their result replaces layer 0's pattern
+  // (an attractor's parameters, a flame's genome or a Julia set's constant).
+  struct SearchOutcome {
+    std::optional<core::PatternLayer> found;  // the pattern part of layer 0 (applyVisited copies it)
+    std::string message;                      // what was found, or why nothing was
+  };
+  std::future<SearchOutcome> search;
   std::uint64_t searchSeed = 1;
   double mutateStrength = 0.1;
   std::string searchMessage;
-  // Where Search and Mutate have been: back and forward walk it like a browser's history.
+  // Where Search and Mutate have been: back and forward walk it like a browser's history. Each
+  // entry is a whole layer, so it holds the kind and the genome or constant of chaos layers too.
   std::vector<core::PatternLayer> visited;
   std::size_t visitedIndex = 0;
 

@@ -169,7 +169,7 @@ PresetEntry readEntry(const std::filesystem::path& path, PresetSource source,
       throw core::Error(path.string() + ": nests deeper than any preset");
     const core::Scene scene = core::sceneFromJson(text.str(), path.string());
     entry.displayName = scene.name;
-    entry.attractor = scene.layers.empty() ? std::string() : scene.layers.front().attractor;
+    entry.attractor = scene.layers.empty() ? std::string() : scene.layers.front().patternName();
     entry.loads = true;
   } catch (const std::exception& e) {
     entry.loads = false;

@@ -1,5 +1,5 @@
 // The preset library behind the explorer's preset browser: the presets shipped with voxflame and
-// the user's own (Settings::presetFolder()), each with its name, first attractor, whether it
+// the user's own (Settings::presetFolder()), each with its name, first pattern (attractor or chaos game), whether it
 // loads, and a thumbnail decoded off the UI thread into RGBA8 pixels ready for a texture upload.
 //
 // Where the shipped presets are found, first existing folder wins:
@@ -47,7 +47,7 @@ struct PresetEntry {
   std::filesystem::path path;
   PresetSource source = PresetSource::Shipped;
   std::string displayName;  // the preset's "name"; the file's stem when it does not load
-  std::string attractor;    // layer 0's attractor id; empty when it does not load
+  std::string attractor;    // layer 0's pattern (attractor id, "flame", ...); empty when it does not load
   bool loads = false;
   std::string error;                    // why it does not load (names the file and the key)
   std::filesystem::path thumbnailPath;  // where its thumbnail is looked for

@@ -114,7 +114,15 @@ void benchExplorer(const BenchOptions& options) {
     // Parameter changes, as a slider drag makes them: time until the first frame showing each.
     std::vector<double> latencies, frames;
     for (int change = 0; change < 5; ++change) {
-      scene.layers[0].params[0] *= change % 2 ? 1.0 / 1.01 : 1.01;
+      // A 1% nudge of the first number a slider would move, whatever the first layer's kind.
+      const double factor = change % 2 ? 1.0 / 1.01 : 1.01;
+      core::PatternLayer& layer = scene.layers[0];
+      if (layer.kind == core::PatternKind::Flame)
+        layer.flame.xforms[0].affine.m[0] *= factor;
+      else if (layer.kind == core::PatternKind::QuaternionJulia)
+        layer.julia.c.x *= factor;
+      else
+        layer.params[0] *= factor;
       const auto changed = Clock::now();
       const int firstFrame = loop.frame;
       session.postIfPatternChanged(scene);

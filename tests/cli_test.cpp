@@ -10,8 +10,10 @@
 #include <nlohmann/json.hpp>
 
 #include "core/attractor.h"
+#include "core/flame.h"
 #include "core/image_io.h"
 #include "core/scene.h"
+#include "core/scene_io.h"
 #include "test_support.h"
 
 using voxflame::test::runVoxflame;
@@ -267,6 +269,56 @@ TEST(Cli, SearchPrintsKDeterministicSets) {
   ASSERT_EQ(text.exitStatus, 0) << text.output;
   EXPECT_NE(text.output.find("3. a="), std::string::npos) << text.output;
   EXPECT_NE(runVoxflame("search --attractor lorenz84 --count 0").exitStatus, 0);
+}
+
+// A flame or quaternion Julia preset gets the fill test (info) and the flame search (search).
+TEST(Cli, InfoAndSearchOnChaosGamePresetsUseTheFlameSearch) {
+  TemporaryFolder folder;
+  voxflame::core::Scene scene = voxflame::core::defaultScene();
+  voxflame::core::PatternLayer& layer = scene.layers[0];
+  layer.kind = voxflame::core::PatternKind::Flame;
+  layer.attractor.clear();
+  layer.params.clear();
+  layer.flame = voxflame::core::defaultFlame();
+  layer.color.mode = voxflame::core::ColorMode::Index;
+  std::ofstream(folder.path() / "flame.json") << voxflame::core::sceneToJson(scene);
+  layer.kind = voxflame::core::PatternKind::QuaternionJulia;
+  layer.flame = {};
+  std::ofstream(folder.path() / "julia.json") << voxflame::core::sceneToJson(scene);
+
+  auto info = runVoxflame("info flame.json", folder.path());
+  ASSERT_EQ(info.exitStatus, 0) << info.output;
+  EXPECT_NE(info.output.find("fills a volume"), std::string::npos) << info.output;
+
+  const auto first = runVoxflame("search flame.json --seed 3 --count 2 --json", folder.path());
+  ASSERT_EQ(first.exitStatus, 0) << first.output;
+  const auto found = nlohmann::json::parse(first.output);
+  ASSERT_EQ(found.size(), 2u);
+  for (const auto& entry : found) {
+    EXPECT_EQ(entry["kind"], "flame");
+    EXPECT_TRUE(entry["fill"]["passes"].get<bool>());
+    EXPECT_FALSE(entry["flame"]["xforms"].empty());
+  }
+  EXPECT_GE(found[0]["fill"]["score"].get<double>(), found[1]["fill"]["score"].get<double>()) << "best first";
+  EXPECT_EQ(runVoxflame("search flame.json --seed 3 --count 2 --json", folder.path()).output, first.output);
+
+  // -o writes the best as a preset that loads and renders as a flame.
+  const auto written = runVoxflame("search flame.json --random --seed 4 --count 1 -o best.json", folder.path());
+  ASSERT_EQ(written.exitStatus, 0) << written.output;
+  EXPECT_NE(written.output.find("1. score"), std::string::npos) << written.output;
+  const voxflame::core::Scene best = voxflame::core::loadScene(folder.path() / "best.json");
+  EXPECT_EQ(best.layers[0].kind, voxflame::core::PatternKind::Flame);
+  EXPECT_NE(best.layers[0].flame, voxflame::core::defaultFlame());
+
+  const auto julia = runVoxflame("search julia.json --count 1 --json", folder.path());
+  ASSERT_EQ(julia.exitStatus, 0) << julia.output;
+  EXPECT_EQ(nlohmann::json::parse(julia.output)[0]["julia"]["c"].size(), 4u);
+
+  // Attractor options on a flame preset say why they do not apply.
+  const auto wrong = runVoxflame("search flame.json --param a=1", folder.path());
+  EXPECT_NE(wrong.exitStatus, 0);
+  EXPECT_NE(wrong.output.find("applies to attractors"), std::string::npos) << wrong.output;
+  EXPECT_NE(runVoxflame("search --attractor lorenz84 --random").exitStatus, 0);
 }
 
 TEST(Cli, MaskWritesNrrdAndStats) {

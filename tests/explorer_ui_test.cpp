@@ -8,6 +8,8 @@
 #include <fstream>
 #include <thread>
 
+#include "core/flame_search.h"
+#include "core/flame_variations.h"
 #include "core/scene_io.h"
 #include "core/scene.h"
 #include "explorer_session.h"
@@ -470,3 +472,232 @@ TEST_F(ExplorerUi, CopiesOfALayerAreAddedTurnedAndRemoved) {
   EXPECT_EQ(state.scene.layers[0].transform.copies.size(), before);
   EXPECT_EQ(app::patternKey(state.scene), keyBefore);
 }
+
+// ---------------------------------------------------------------------------------------------
+// Chaos-game layers: the kind choice, the flame transform editor, the Julia set's sliders, and
+// Search and Mutate on them.
+
+namespace {
+
+class ExplorerFlameUi : public ExplorerUi {
+ protected:
+  // Layer 0 as the default flame, opened fresh (its own history), as a flame preset would be.
+  void useFlameLayer() {
+    core::Scene scene = core::defaultScene();
+    core::PatternLayer& layer = scene.layers[0];
+    layer.kind = core::PatternKind::Flame;
+    layer.attractor.clear();
+    layer.params.clear();
+    layer.flame = core::defaultFlame();
+    layer.color.mode = core::ColorMode::Index;
+    app::resetExplorerState(state, scene);
+    frame(2);
+  }
+  core::FlameGenome& flame() { return state.scene.layers[0].flame; }
+  void waitForSearch(std::size_t visited) {
+    for (int i = 0; i < 1500 && state.visited.size() < visited; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      frame();
+    }
+  }
+  static double rowLength(const core::Affine3& a, int row) {
+    const auto r = static_cast<std::size_t>(row * 4);
+    return std::sqrt(a.m[r] * a.m[r] + a.m[r + 1] * a.m[r + 1] + a.m[r + 2] * a.m[r + 2]);
+  }
+};
+
+TEST_F(ExplorerFlameUi, SwitchingALayerToFlameStartsFromTheDefaultFlame) {
+  const std::string keyBefore = app::patternKey(state.scene);
+  click("layer0/pattern");
+  click("layer0/pattern/flame");
+  ASSERT_EQ(state.scene.layers[0].kind, core::PatternKind::Flame);
+  EXPECT_EQ(flame(), core::defaultFlame());
+  EXPECT_EQ(state.scene.layers[0].color.mode, core::ColorMode::Index) << "a flame colours by flam3's index";
+  EXPECT_NE(app::patternKey(state.scene), keyBefore);
+  frame();
+  EXPECT_NO_THROW(item("layer0/xform/transform weight"));
+  EXPECT_NO_THROW(item("layer0/xform/rotate"));
+  EXPECT_NE(state.lyapunovText.find("flame"), std::string::npos) << "the status line names the kind";
+  pressKey('Z', true);
+  EXPECT_EQ(state.scene.layers[0].kind, core::PatternKind::Attractor) << "switching is one undo step";
+  EXPECT_FALSE(state.scene.layers[0].params.empty());
+}
+
+TEST_F(ExplorerFlameUi, TransformsAreAddedDuplicatedAndRemoved) {
+  useFlameLayer();
+  const std::size_t count = flame().xforms.size();
+  click("layer0/Add transform");
+  ASSERT_EQ(flame().xforms.size(), count + 1);
+  EXPECT_NO_THROW(core::validateFlame(flame(), "added"));
+  EXPECT_NO_THROW(item("layer0/xform " + std::to_string(count + 1))) << "the new transform has a button";
+  click("layer0/xform 2");
+  click("layer0/Duplicate");
+  ASSERT_EQ(flame().xforms.size(), count + 2);
+  EXPECT_EQ(flame().xforms[2], flame().xforms[1]) << "the copy goes right after the original";
+  click("layer0/Remove");
+  EXPECT_EQ(flame().xforms.size(), count + 1);
+  pressKey('Z', true);
+  EXPECT_EQ(flame().xforms.size(), count + 2) << "each button press is one undo step";
+
+  // The last transform cannot go: a flame needs one.
+  useFlameLayer();
+  while (flame().xforms.size() > 1) click("layer0/Remove");
+  click("layer0/Remove");
+  EXPECT_EQ(flame().xforms.size(), 1u);
+
+  // The final transform switches on with the same editor, and off again.
+  click("layer0/final transform");
+  EXPECT_TRUE(flame().hasFinal);
+  EXPECT_NO_THROW(item("layer0/final/rotate"));
+  EXPECT_THROW(item("layer0/final/transform weight"), std::runtime_error) << "a final transform has no weight";
+  click("layer0/final transform");
+  EXPECT_FALSE(flame().hasFinal);
+}
+
+TEST_F(ExplorerFlameUi, DraggingATransformWeightIsOneUndoStep) {
+  useFlameLayer();
+  click("layer0/xform 2");
+  const core::FlameGenome before = flame();
+  const std::string keyBefore = app::patternKey(state.scene);
+  const auto slider = item("layer0/xform/transform weight");
+  double pressedAt = 0.0;
+  drag(slider.minX + 4, slider.centerY(), 80, 0, 0, [&] { pressedAt = flame().xforms[1].weight; });
+  EXPECT_GT(flame().xforms[1].weight, pressedAt);
+  EXPECT_EQ(flame().xforms[0], before.xforms[0]) << "only the selected transform moves";
+  EXPECT_NE(app::patternKey(state.scene), keyBefore) << "a genome edit restarts the accumulation";
+  pressKey('Z', true);
+  EXPECT_EQ(flame(), before) << "the whole drag is one undo step";
+}
+
+TEST_F(ExplorerFlameUi, TheRotateHandleTurnsTheMapAndBumpsTheGeneration) {
+  useFlameLayer();
+  state.scene.gridResolution = 48;
+  app::ExplorerSession session(1);
+  ASSERT_TRUE(session.postIfPatternChanged(state.scene));
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  ASSERT_TRUE(session.status().error.empty()) << session.status().error;
+  const auto generation = session.status().stats.generation;
+  frame();
+  state.history->record(state.scene);
+
+  const core::Affine3 before = flame().xforms[0].affine;
+  const auto handle = item("layer0/xform/rotate");
+  const float third = (handle.maxX - handle.minX) / 3.0f;
+  // The first of the three angles, pressed at its middle (0°) and dragged right.
+  drag(handle.minX + 0.5f * third, handle.centerY(), 0.3f * third, 0);
+  const core::Affine3& after = flame().xforms[0].affine;
+  EXPECT_NE(after, before);
+  for (int row = 0; row < 3; ++row)
+    EXPECT_NEAR(rowLength(after, row), rowLength(before, row), 1e-9) << "a rotation of the map's own frame";
+  EXPECT_EQ(after.m[3], before.m[3]);
+  EXPECT_EQ(after.m[7], before.m[7]);
+  EXPECT_EQ(after.m[11], before.m[11]) << "the offset stays";
+  ASSERT_TRUE(session.postIfPatternChanged(state.scene));
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  EXPECT_EQ(session.status().stats.generation, generation + 1);
+  EXPECT_TRUE(session.status().error.empty()) << session.status().error;
+  pressKey('Z', true);
+  EXPECT_EQ(flame().xforms[0].affine, before) << "the whole drag is one undo step";
+
+  // The translate handle moves the offset only.
+  const auto translate = item("layer0/xform/translate");
+  drag(translate.minX + 4, translate.centerY(), 30, 0);
+  EXPECT_NE(flame().xforms[0].affine.m[3], before.m[3]);
+  EXPECT_EQ(flame().xforms[0].affine.m[0], before.m[0]);
+}
+
+TEST_F(ExplorerFlameUi, VariationsAreAddedWeightedAndRemoved) {
+  useFlameLayer();
+  const std::size_t terms = flame().xforms[0].variations.size();
+  click("layer0/xform/add variation");
+  click("layer0/xform/add/swirl");
+  ASSERT_EQ(flame().xforms[0].variations.size(), terms + 1);
+  EXPECT_EQ(flame().xforms[0].variations.back().name, "swirl");
+  EXPECT_NO_THROW(core::validateFlame(flame(), "with swirl"));
+
+  const std::string weightName = "layer0/xform/var" + std::to_string(terms) + "/weight";
+  const auto weight = item(weightName);
+  double pressedAt = 0.0;
+  drag(weight.centerX(), weight.centerY(), 30, 0, 0, [&] { pressedAt = flame().xforms[0].variations.back().weight; });
+  EXPECT_GT(flame().xforms[0].variations.back().weight, pressedAt);
+  click("layer0/xform/var" + std::to_string(terms) + "/remove");
+  EXPECT_EQ(flame().xforms[0].variations.size(), terms);
+
+  // A variation with parameters shows them as sliders over the catalogue's range.
+  const core::VariationInfo* withParams = nullptr;
+  for (const core::VariationInfo& info : core::variationCatalogue())
+    if (!info.params.empty() && !withParams) withParams = &info;
+  if (!withParams) GTEST_SKIP() << "the catalogue has no variation with parameters yet";
+  click("layer0/xform/add variation");
+  click("layer0/xform/add/" + withParams->name);
+  ASSERT_EQ(flame().xforms[0].variations.back().name, withParams->name);
+  EXPECT_EQ(flame().xforms[0].variations.back().params, withParams->defaultParams());
+  const core::VariationParam& param = withParams->params[0];
+  const auto slider = item("layer0/xform/var" + std::to_string(terms) + "/" + param.name);
+  const core::FlameGenome before = flame();
+  drag(slider.minX + 2, slider.centerY(), slider.maxX - slider.minX + 40, 0);
+  EXPECT_DOUBLE_EQ(flame().xforms[0].variations.back().params[0],
+                   param.integer ? std::floor(param.sliderMax) : param.sliderMax)
+      << "dragged past the end, the slider stops at its maximum";
+  pressKey('Z', true);
+  EXPECT_EQ(flame(), before);
+}
+
+TEST_F(ExplorerFlameUi, SearchAndMutateOnAFlameKeepTheKindAndBackRestoresTheGenome) {
+  useFlameLayer();
+  const core::FlameGenome start = flame();
+  click("Search (F3)");
+  waitForSearch(2);
+  ASSERT_EQ(state.visited.size(), 2u) << state.searchMessage;
+  ASSERT_EQ(state.scene.layers[0].kind, core::PatternKind::Flame);
+  const core::FlameGenome found = flame();
+  EXPECT_NE(found, start);
+  EXPECT_NO_THROW(core::validateFlame(found, "found"));
+  EXPECT_TRUE(core::measureFlameFill(found, 1).passes);
+  EXPECT_NE(state.searchMessage.find("fills"), std::string::npos) << state.searchMessage;
+
+  click("Mutate");
+  waitForSearch(3);
+  ASSERT_EQ(state.visited.size(), 3u) << state.searchMessage;
+  EXPECT_NE(flame(), found);
+  EXPECT_NO_THROW(core::validateFlame(flame(), "mutated"));
+
+  click("< Back");
+  EXPECT_EQ(flame(), found);
+  click("< Back");
+  EXPECT_EQ(flame(), start);
+  click("Forward >");
+  EXPECT_EQ(flame(), found);
+}
+
+TEST_F(ExplorerFlameUi, QuaternionJuliaHasSlidersForItsConstantAndView) {
+  click("layer0/pattern");
+  click("layer0/pattern/quaternion Julia");
+  ASSERT_EQ(state.scene.layers[0].kind, core::PatternKind::QuaternionJulia);
+  frame();
+  const core::QuaternionJuliaSettings before = state.scene.layers[0].julia;
+  const std::string keyBefore = app::patternKey(state.scene);
+  const auto slider = item("layer0/c (j)");
+  double pressedAt = 0.0;
+  drag(slider.centerX(), slider.centerY(), 25, 0, 0, [&] { pressedAt = state.scene.layers[0].julia.c.z; });
+  EXPECT_GT(state.scene.layers[0].julia.c.z, pressedAt);
+  EXPECT_EQ(state.scene.layers[0].julia.c.x, before.c.x);
+  EXPECT_NE(app::patternKey(state.scene), keyBefore);
+  pressKey('Z', true);
+  EXPECT_EQ(state.scene.layers[0].julia, before);
+  EXPECT_NO_THROW(item("layer0/turn"));
+  EXPECT_THROW(item("layer0/slice w"), std::runtime_error) << "the slice sliders show in slice view only";
+  state.scene.layers[0].julia.view = core::QuaternionView::Slice;
+  frame();
+  EXPECT_NO_THROW(item("layer0/slice w"));
+  EXPECT_NO_THROW(item("layer0/thickness"));
+
+  click("Mutate");
+  waitForSearch(2);
+  ASSERT_EQ(state.visited.size(), 2u) << state.searchMessage;
+  EXPECT_EQ(state.scene.layers[0].kind, core::PatternKind::QuaternionJulia);
+  EXPECT_NE(state.scene.layers[0].julia.c, before.c);
+  EXPECT_EQ(state.scene.layers[0].julia.view, core::QuaternionView::Slice) << "the search keeps the view";
+}
+
+}  // namespace

@@ -112,6 +112,27 @@ TEST(PresetLibrary, ListsShippedAndUserPresetsBrokenOnesWithTheirError) {
   EXPECT_TRUE(voxflame::app::listPresets(folder / "nothing", {}).empty());
 }
 
+TEST(PresetLibrary, ChaosGamePresetsAreListedByTheirKind) {
+  TemporaryFolder folder;
+  const auto shipped = folder / "presets";
+  std::filesystem::create_directories(shipped);
+  std::ofstream(shipped / "flame.json") << R"({"name": "Flame", "mesh": {"path": "meshes/bunny.obj"},
+      "layers": [{"kind": "flame", "flame": {"xforms": [{"weight": 1, "affine": [0.5, 0, 0, 0.3, 0, 0.5, 0, 0.1,
+      0, 0, 0.5, 0], "variations": [{"name": "spherical", "weight": 1}]}]}}]})";
+  std::ofstream(shipped / "julia.json") << R"({"name": "Julia", "mesh": {"path": "meshes/bunny.obj"},
+      "layers": [{"kind": "quaternion_julia", "julia": {"c": [-0.2, 0.8, 0, 0]}}]})";
+  const auto entries = voxflame::app::listPresets(shipped, {});
+  ASSERT_EQ(entries.size(), 2u);
+  const PresetEntry* flame = findEntry(entries, "flame.json");
+  ASSERT_TRUE(flame);
+  EXPECT_TRUE(flame->loads) << flame->error;
+  EXPECT_EQ(flame->attractor, "flame");
+  const PresetEntry* julia = findEntry(entries, "julia.json");
+  ASSERT_TRUE(julia);
+  EXPECT_TRUE(julia->loads) << julia->error;
+  EXPECT_EQ(julia->attractor, "quaternion_julia");
+}
+
 TEST(PresetLibrary, HostilePresetFilesAreListedNotFatal) {
   TemporaryFolder folder;
   std::ofstream(folder / "deep.json") << std::string(100000, '[') << std::string(100000, ']');
