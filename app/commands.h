@@ -34,6 +34,10 @@ int importCommand(const CommandArgs& args);   // import_command.cpp
 // to look clean, and flames are sampled at well over a million points a second.
 inline constexpr std::uint64_t kImportedFlamePoints = 60'000'000;
 
+// The scene an imported flame goes into when there is no current one: the default preset's mesh
+// and camera, kImportedFlamePoints, the points render method.
+core::Scene importBaseScene();
+
 // Reads the flame `options` picks from `path` and makes `scene` from `base` (its mesh, camera and
 // render settings) with that flame as its only layer (import_command.cpp). Throws core::Error.
 core::FlameFileContents importFlameScene(const std::filesystem::path& path, const core::Scene& base,

@@ -36,6 +36,15 @@ void placeMesh(core::Scene& scene, const std::string& mesh, const std::filesyste
 
 }  // namespace
 
+core::Scene importBaseScene() {
+  core::Scene base = core::defaultScene();
+  base.points = kImportedFlamePoints;
+  // A flame's fine filaments survive projecting every point (the flam3 way) better than
+  // ray-marching the voxel grid, which blurs them to the voxel size.
+  base.render.method = core::RenderMethod::Points;
+  return base;
+}
+
 core::FlameFileContents importFlameScene(const std::filesystem::path& path, const core::Scene& base,
                                          const core::FlameImportOptions& options, core::Scene& scene) {
   core::FlameFileContents contents = core::loadFlameFile(path, options);
@@ -63,9 +72,7 @@ int importCommand(const CommandArgs& args) {
   if (name) options.name = *name;
 
   const std::filesystem::path input = arguments.positional().front();
-  core::Scene base = core::defaultScene();
-  // Imported flames are sampled densely enough for a clean still without the default's 150 M.
-  base.points = kImportedFlamePoints;
+  core::Scene base = importBaseScene();
   if (mesh) placeMesh(base, *mesh, *output);
   core::Scene scene;
   const core::FlameFileContents contents = importFlameScene(input, base, options, scene);

@@ -273,10 +273,8 @@ core::Scene sceneFromFile(const std::filesystem::path& path) {
   if (extension == ".png") return sceneFromImage(path);
   if (core::isFlameFilePath(path)) {
     // The first flame of the file in the default mesh; the warnings go where a command line sees them.
-    core::Scene base = core::defaultScene();
-    base.points = kImportedFlamePoints;
     core::Scene scene;
-    const core::FlameFileContents contents = importFlameScene(path, base, {}, scene);
+    const core::FlameFileContents contents = importFlameScene(path, importBaseScene(), {}, scene);
     for (const std::string& warning : contents.flame.warnings)
       std::cerr << "voxflame: warning: " << path.string() << ": " << warning << "\n";
     return scene;
