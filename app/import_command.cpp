@@ -83,11 +83,12 @@ int importCommand(const CommandArgs& args) {
   core::sceneFromJson(json, *output);
   writeFileAtomically(*output, json, 0644, ".tmp", "preset");
   const std::size_t count = contents.names.size();
-  std::printf("imported flame '%s' (%zu of %zu in %s; %zu transforms%s%s) into %s\n", contents.flame.name.c_str(),
-              contents.index + 1, count, input.string().c_str(), contents.flame.genome.xforms.size(),
-              contents.flame.genome.hasFinal ? " and a final one" : "",
-              contents.flame.depthAdded ? (", depth " + std::to_string(options.depth).substr(0, 4)).c_str() : "",
-              output->c_str());
+  const std::size_t transforms = contents.flame.genome.xforms.size();
+  char depth[48] = "";
+  if (contents.flame.depthAdded) std::snprintf(depth, sizeof depth, ", depth %g", options.depth);
+  std::printf("imported flame '%s' (%zu of %zu in %s; %zu transform%s%s%s) into %s\n", contents.flame.name.c_str(),
+              contents.index + 1, count, input.string().c_str(), transforms, transforms == 1 ? "" : "s",
+              contents.flame.genome.hasFinal ? " and a final one" : "", depth, output->c_str());
   if (count > 1 && !index && !name)
     std::printf("the file holds %zu flames; --index N or --name NAME picks another\n", count);
   return 0;

@@ -274,6 +274,17 @@ TEST(FlameXml, InlineColoursFillTheirGapsAndTrivialXaosIsSilent) {
   EXPECT_TRUE(flame.warnings.empty());
 }
 
+TEST(FlameXml, Linear3DOfApophysisIsLinear) {
+  if (findVariation("linear3D")) GTEST_SKIP() << "the catalogue has its own linear3D";
+  const std::string xform = "<xform weight=\"1\" linear3D=\"0.8\" coefs=\"0.5 0 0 0.5 0 0\"/>";
+  const ImportedFlame flame = readFlameXml(flameFile(xform, hexPaletteBlock()), "l.flame").flame;
+  ASSERT_EQ(flame.genome.xforms.at(0).variations.size(), 1u);
+  EXPECT_EQ(flame.genome.xforms[0].variations[0].name, "linear");
+  EXPECT_DOUBLE_EQ(flame.genome.xforms[0].variations[0].weight, 0.8);
+  EXPECT_TRUE(flame.warnings.empty());
+  EXPECT_TRUE(flame.depthAdded);
+}
+
 TEST(FlameXml, SeveralFlamesArePickedByIndexOrName) {
   const std::string text = "<Flames>" + flameFile(kTwoXforms) + "<flame name=\"second\">" + kTwoXforms +
                            "<xform weight=\"1\" coefs=\"1 0 0 1 0 0\"/></flame>"

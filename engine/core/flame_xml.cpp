@@ -67,6 +67,15 @@ const std::set<std::string, std::less<>>& knownXformAttributes() {
   return names;
 }
 
+// The catalogue entry a flame file's variation name means. Apophysis and JWildfire write
+// "linear3D" for the linear map that carries z along, which is exactly voxflame's "linear"; the
+// alias stands only while the catalogue has no entry of that name itself.
+const VariationInfo* variationNamed(std::string_view name) {
+  if (const VariationInfo* info = findVariation(name)) return info;
+  if (name == "linear3D") return findVariation("linear");
+  return nullptr;
+}
+
 std::string trimmed(std::string_view text) {
   const auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
   while (!text.empty() && isSpace(text.front())) text.remove_prefix(1);
@@ -210,9 +219,9 @@ class FlameReader {
     for (const pugi::xml_attribute& attribute : node.attributes()) {
       const std::string name = attribute.name();
       if (knownXformAttributes().contains(name)) continue;
-      if (const VariationInfo* info = findVariation(name)) {
+      if (const VariationInfo* info = variationNamed(name)) {
         VariationTerm term;
-        term.name = name;
+        term.name = info->name;
         term.weight = number(attribute, context, -kCoefficientLimit, kCoefficientLimit);
         if (term.weight == 0.0) continue;
         term.params = info->defaultParams();
@@ -228,13 +237,13 @@ class FlameReader {
       std::string owner;
       for (std::size_t cut = name.rfind('_'); cut != std::string::npos && cut > 0; cut = name.rfind('_', cut - 1)) {
         const std::string prefix = name.substr(0, cut);
-        if (present.contains(prefix) || findVariation(prefix)) {
+        if (present.contains(prefix) || variationNamed(prefix)) {
           owner = prefix;
           break;
         }
       }
       if (!owner.empty()) {
-        const VariationInfo* info = findVariation(owner);
+        const VariationInfo* info = variationNamed(owner);
         if (info && present.contains(owner) && info->paramIndex(name.substr(owner.size() + 1)) < 0)
           warn(context + " sets '" + name + "', which voxflame's '" + owner + "' does not have; it was left out");
         continue;
