@@ -259,6 +259,12 @@ TEST(FlameXml, HandWrittenFileWithEveryElement) {
   EXPECT_TRUE(hasWarningContaining(flame, "bwraps7"));
   EXPECT_FALSE(hasWarningContaining(flame, "cellsize"));
   EXPECT_TRUE(hasWarningContaining(flame, "xaos"));
+  // bwraps7 (0.3) is less than julia (1): no warning that transform 1 lost most of its weight.
+  EXPECT_FALSE(hasWarningContaining(flame, "look different"));
+  const std::string mostlyUnknown =
+      "<xform weight=\"1\" julia=\"0.1\" waves_unknown_here=\"0.9\" coefs=\"0.5 0 0 0.5 0 0\"/>";
+  const ImportedFlame shrunk = readFlameXml(flameFile(mostlyUnknown, hexPaletteBlock()), "u.flame").flame;
+  EXPECT_TRUE(hasWarningContaining(shrunk, "transform 0 keeps 0.1 of its variation weight 1"));
 }
 
 TEST(FlameXml, InlineColoursFillTheirGapsAndTrivialXaosIsSilent) {

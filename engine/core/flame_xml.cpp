@@ -216,6 +216,8 @@ class FlameReader {
     // `<variation>_<parameter>`; an unknown variation's parameters are dropped with it.
     std::set<std::string> present;
     for (const pugi::xml_attribute& attribute : node.attributes()) present.insert(attribute.name());
+    double droppedWeight = 0.0;
+    std::string dropped;
     for (const pugi::xml_attribute& attribute : node.attributes()) {
       const std::string name = attribute.name();
       if (knownXformAttributes().contains(name)) continue;
@@ -249,7 +251,18 @@ class FlameReader {
         continue;
       }
       unknownVariations_.insert(name);
+      if (const auto weight = parseNumber(attribute.value()); weight && std::isfinite(*weight)) {
+        droppedWeight += std::abs(*weight);
+        dropped += (dropped.empty() ? "" : ", ") + name;
+      }
     }
+    // Without most of its variation weight a transform shrinks towards its affine map's origin
+    // and the picture changes: say so, so an odd-looking import is not a mystery.
+    double keptWeight = 0.0;
+    for (const VariationTerm& term : x.variations) keptWeight += std::abs(term.weight);
+    if (droppedWeight > keptWeight)
+      warn(context + " keeps " + formatted(keptWeight) + " of its variation weight " +
+           formatted(keptWeight + droppedWeight) + " without " + dropped + "; it will look different");
     if (x.variations.size() > kMaxXformVariations)
       fail(context, "has " + std::to_string(x.variations.size()) + " variations; voxflame takes at most " +
                         std::to_string(kMaxXformVariations));
@@ -339,7 +352,7 @@ const PaletteTable& paletteTable(const std::filesystem::path& path) {
   }
   for (const pugi::xml_node& node : document.child("palettes").children("palette")) {
     const auto number = parseNumber(node.attribute("number").value());
-    if (!number) continue;
+    if (!number || !(*number >= 0.0 && *number < 1e6)) continue;
     if (const auto palette = parseHexPalette(node.attribute("data").value(), 8))
       table.palettes[static_cast<int>(*number)] = *palette;
   }
