@@ -267,6 +267,22 @@ TEST(FlameXml, HandWrittenFileWithEveryElement) {
   EXPECT_TRUE(hasWarningContaining(shrunk, "transform 0 keeps 0.1 of its variation weight 1"));
 }
 
+TEST(FlameXml, HexPaletteLayoutsRgbaAndFlam3sPaddedColours) {
+  std::string rgba = "<palette count=\"256\" format=\"RGBA\">", padded = "<colors count=\"256\" data=\"";
+  char hex[16];
+  for (int i = 0; i < 256; ++i) {
+    std::snprintf(hex, sizeof hex, "%02x%02x%02xff", 255 - i, i, 7);
+    rgba += hex;
+    std::snprintf(hex, sizeof hex, "00%02x%02x%02x", 9, i, 255 - i);
+    padded += hex;
+  }
+  const ImportedFlame fromRgba = readFlameXml(flameFile(kTwoXforms, rgba + "</palette>"), "a.flame").flame;
+  expectColorNear(srgb255(fromRgba, 10), {245, 10, 7});
+  const ImportedFlame fromPadded = readFlameXml(flameFile(kTwoXforms, padded + "\"/>"), "p.flame").flame;
+  expectColorNear(srgb255(fromPadded, 10), {9, 10, 245});
+  EXPECT_NE(errorOf(flameFile(kTwoXforms, "<palette format=\"HSV\">00</palette>")).find("HSV"), std::string::npos);
+}
+
 TEST(FlameXml, InlineColoursFillTheirGapsAndTrivialXaosIsSilent) {
   const std::string colours = "<color index=\"0\" rgb=\"255 0 0\"/><color index=\"100\" rgb=\"0 0 255\"/>";
   const std::string xforms =

@@ -306,9 +306,18 @@ int hexDigit(char c) {
   return -1;
 }
 
-// A hex block of `count` colours, `digits` (6: RRGGBB, 8: 00RRGGBB as flam3 writes) per colour,
-// whitespace anywhere. nullopt when it is not exactly that.
-std::optional<Palette> parseHexPalette(std::string_view text, std::size_t digits) {
+// The layouts of a hex palette block: digits per colour and where red starts among them.
+struct HexLayout {
+  std::size_t digits;
+  std::size_t redAt;
+};
+constexpr HexLayout kHexRgb{6, 0};     // RRGGBB (Apophysis, Fractorium, JWildfire: format="RGB")
+constexpr HexLayout kHexRgba{8, 0};    // RRGGBBAA (format="RGBA"; the alpha is not used)
+constexpr HexLayout kHexPadded{8, 2};  // 00RRGGBB (flam3's palette table and its <colors data=>)
+
+// A hex block of 256 colours in `layout`, whitespace anywhere; nullopt when it is not exactly that.
+std::optional<Palette> parseHexPalette(std::string_view text, HexLayout layout) {
+  const std::size_t digits = layout.digits;
   std::string hex;
   hex.reserve(text.size());
   for (const char c : text)
@@ -316,7 +325,7 @@ std::optional<Palette> parseHexPalette(std::string_view text, std::size_t digits
   if (hex.size() != digits * kFlamePaletteSize) return std::nullopt;
   Palette palette;
   for (std::size_t i = 0; i < kFlamePaletteSize; ++i) {
-    const std::size_t start = i * digits + (digits - 6);
+    const std::size_t start = i * digits + layout.redAt;
     int rgb[3];
     for (int k = 0; k < 3; ++k) {
       const int high = hexDigit(hex[start + 2 * static_cast<std::size_t>(k)]);
@@ -353,7 +362,7 @@ const PaletteTable& paletteTable(const std::filesystem::path& path) {
   for (const pugi::xml_node& node : document.child("palettes").children("palette")) {
     const auto number = parseNumber(node.attribute("number").value());
     if (!number || !(*number >= 0.0 && *number < 1e6)) continue;
-    if (const auto palette = parseHexPalette(node.attribute("data").value(), 8))
+    if (const auto palette = parseHexPalette(node.attribute("data").value(), kHexPadded))
       table.palettes[static_cast<int>(*number)] = *palette;
   }
   if (table.palettes.empty()) table.error = "flam3's palette table " + path.string() + " holds no palettes";
@@ -444,11 +453,17 @@ Palette readPalette(const pugi::xml_node& flame, FlameReader& reader) {
     if (!block) continue;
     const std::string format = block.attribute("format").value();
     const std::string data = block.attribute("data") ? block.attribute("data").value() : block.text().get();
-    const std::size_t digits = format == "RGB" ? 6 : 8;
-    std::optional<Palette> parsed = parseHexPalette(data, digits);
-    if (!parsed && format.empty()) parsed = parseHexPalette(data, 6);
+    // Without a format the length tells: 6 digits a colour, or flam3's padded 8.
+    const HexLayout layout = format == "RGB"    ? kHexRgb
+                             : format == "RGBA" ? kHexRgba
+                             : format.empty()   ? (std::string_view(element) == "colors" ? kHexPadded : kHexRgb)
+                                                : HexLayout{0, 0};
+    if (layout.digits == 0)
+      reader.fail("", std::string("<") + element + " format=\"" + format + "\"> is not RGB or RGBA");
+    std::optional<Palette> parsed = parseHexPalette(data, layout);
+    if (!parsed && format.empty()) parsed = parseHexPalette(data, layout.digits == 6 ? kHexPadded : kHexRgb);
     if (!parsed)
-      reader.fail("", std::string("<") + element + "> must hold 256 colours as hex (" + std::to_string(digits) +
+      reader.fail("", std::string("<") + element + "> must hold 256 colours as hex (" + std::to_string(layout.digits) +
                           " digits each)");
     return *parsed;
   }
