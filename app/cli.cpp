@@ -30,9 +30,10 @@ namespace {
 constexpr const char* kUsage = R"(voxflame — strange attractors filling the volume of a mesh
 
 usage:
-  voxflame [PRESET.json | IMAGE.png | MESH] [--screenshot FILE --frames N] [--ui-scale S]
+  voxflame [PRESET.json | IMAGE.png | FILE.flame | MESH] [--screenshot FILE --frames N] [--ui-scale S]
       Open the explorer on a preset (the built-in default when none is given), on the preset
-      stored in a PNG rendered by voxflame, or on a mesh filled with the default pattern.
+      stored in a PNG rendered by voxflame, on an imported flame, or on a mesh filled with the
+      default pattern.
   voxflame render [PRESET.json|IMAGE.png] -o OUT.png|OUT.exr|OUT.vdb|OUT.nrrd [--width W] [--height H]
                   [--samples S] [--points N] [--grid R] [--bit-depth 8|16] [--time SECONDS]
                   [--camera-azimuth DEG] [--camera-elevation DEG] [--threads T]
@@ -62,6 +63,13 @@ usage:
                 [--method winding-number|exact-winding-number|parity]
       Write the mesh's inside mask (N voxels along its longest axis, 32-1024, default 256)
       as an NRRD volume in the mesh's own coordinates.
+  voxflame import FILE.flame|FILE.flam3 -o PRESET.json [--mesh MESH] [--depth D]
+                  [--index N | --name NAME]
+      Turn a flame from flam3, Apophysis, Fractorium or JWildfire into a preset: transforms,
+      variations voxflame knows (others are named in a warning), final transform, symmetry,
+      palette and tone. A flat flame gains depth D (default 0.5, 0 keeps it flat); --mesh
+      fills another mesh (default builtin:meshes/bunny.obj); --index (from 1) or --name picks
+      one flame of a file that holds several (default the first).
   voxflame bench [accumulate|mask|raymarch|explorer|export|quality] [--method volume|points] [--json]
       Measure performance (Release build).
   voxflame --help | --version
@@ -299,7 +307,7 @@ namespace voxflame::app {
 const std::vector<Subcommand>& subcommands() {
   static const std::vector<Subcommand> table = {
       {"render", &renderCommand}, {"animate", &animateCommand}, {"bench", &benchCommand}, {"list", &listCommand},
-      {"info", &infoCommand},     {"search", &searchCommand},   {"mask", &maskCommand},
+      {"info", &infoCommand},     {"search", &searchCommand},   {"mask", &maskCommand},   {"import", &importCommand},
   };
   return table;
 }

@@ -3,9 +3,12 @@
 #pragma once
 
 #include <atomic>
+#include <cstdint>
+#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "core/flame_xml.h"
 #include "core/scene.h"
 
 namespace voxflame::app {
@@ -25,6 +28,20 @@ int listCommand(const CommandArgs& args);     // catalogue_commands.cpp
 int infoCommand(const CommandArgs& args);     // catalogue_commands.cpp
 int searchCommand(const CommandArgs& args);   // catalogue_commands.cpp
 int maskCommand(const CommandArgs& args);     // mask_command.cpp
+int importCommand(const CommandArgs& args);   // import_command.cpp
+
+// Points of a still for an imported flame: a chaos game's dust needs fewer than a smooth attractor
+// to look clean, and flames are sampled at well over a million points a second.
+inline constexpr std::uint64_t kImportedFlamePoints = 60'000'000;
+
+// The scene an imported flame goes into when there is no current one: the default preset's mesh
+// and camera, kImportedFlamePoints, the points render method.
+core::Scene importBaseScene();
+
+// Reads the flame `options` picks from `path` and makes `scene` from `base` (its mesh, camera and
+// render settings) with that flame as its only layer (import_command.cpp). Throws core::Error.
+core::FlameFileContents importFlameScene(const std::filesystem::path& path, const core::Scene& base,
+                                         const core::FlameImportOptions& options, core::Scene& scene);
 
 // The preset named by the first positional argument, or the embedded default when none.
 core::Scene sceneFromArgument(const std::vector<std::string>& positional);

@@ -16,8 +16,10 @@
 #include "core/flame.h"
 #include "core/flame_search.h"
 #include "core/flame_variations.h"
+#include "core/flame_xml.h"
 #include "core/grid.h"
 #include "core/keyframes.h"
+#include "commands.h"
 #include "pipeline.h"
 
 namespace voxflame::app {
@@ -1420,6 +1422,17 @@ bool openFile(ExplorerState& state, const std::filesystem::path& path) {
     std::string extension = path.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return std::tolower(c); });
+    if (core::isFlameFilePath(path)) {
+      // A flame replaces the pattern and keeps the mesh and view: one undoable edit.
+      core::Scene scene;
+      const core::FlameFileContents contents = importFlameScene(path, state.scene, {}, scene);
+      state.scene = scene;
+      state.notice.clear();
+      for (const std::string& warning : contents.flame.warnings)
+        state.notice += (state.notice.empty() ? "" : "\n") + path.filename().string() + ": " + warning;
+      state.settings.addRecent(RecentKind::Preset, path);
+      return true;
+    }
     const bool preset = extension == ".json" || extension == ".png";
     const core::Scene scene = preset ? sceneFromFile(path) : sceneWithMesh(state.scene, path);
     // A preset opens fresh, with its own history; a new mesh is one more undoable edit.

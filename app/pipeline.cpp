@@ -6,9 +6,11 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <iostream>
 #include <sstream>
 #include <thread>
 
+#include "commands.h"
 #include "core/camera.h"
 #include "core/error.h"
 #include "core/flame_image.h"
@@ -269,6 +271,14 @@ core::Scene sceneFromFile(const std::filesystem::path& path) {
                  [](unsigned char c) { return std::tolower(c); });
   if (extension == ".json") return core::loadScene(path);
   if (extension == ".png") return sceneFromImage(path);
+  if (core::isFlameFilePath(path)) {
+    // The first flame of the file in the default mesh; the warnings go where a command line sees them.
+    core::Scene scene;
+    const core::FlameFileContents contents = importFlameScene(path, importBaseScene(), {}, scene);
+    for (const std::string& warning : contents.flame.warnings)
+      std::cerr << "voxflame: warning: " << path.string() << ": " << warning << "\n";
+    return scene;
+  }
   core::Scene scene = sceneWithMesh(core::defaultScene(), path);
   scene.name = path.stem().string();
   return scene;

@@ -126,8 +126,9 @@ core::Scene sceneFromImage(const std::filesystem::path& path);
 // `scene` with its mesh replaced by the mesh file at `path` (the pattern and look stay).
 core::Scene sceneWithMesh(core::Scene scene, const std::filesystem::path& path);
 
-// Whatever a user can open: a preset (.json), a PNG rendered by voxflame (its preset), or a mesh
-// (any other file: the default pattern fills it). Throws core::Error naming the file.
+// Whatever a user can open: a preset (.json), a PNG rendered by voxflame (its preset), a flame
+// file (.flame/.flam3: its first flame imported into the default mesh, warnings on stderr), or a
+// mesh (any other file: the default pattern fills it). Throws core::Error naming the file.
 core::Scene sceneFromFile(const std::filesystem::path& path);
 
 }  // namespace voxflame::app

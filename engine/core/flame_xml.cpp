@@ -1,0 +1,739 @@
+#include "flame_xml.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <mutex>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <set>
+#include <sstream>
+
+#include <glm/common.hpp>
+#include <pugixml.hpp>
+
+#include "error.h"
+#include "flame_variations.h"
+
+namespace voxflame::core {
+
+namespace {
+
+constexpr double kCoefficientLimit = 1e6;
+// Flame files are a few kilobytes; the largest real ones (animations with hundreds of keyframe
+// genomes) stay well below this. A larger file is almost certainly something else.
+constexpr std::uintmax_t kMaxFlameFileBytes = 64u << 20;
+
+// Attributes of <xform> that are not variations: flam3's, Apophysis', Fractorium's and JWildfire's
+// own keys. Anything else that is not a catalogue variation or one of its parameters is reported
+// as an unknown variation.
+const std::set<std::string, std::less<>>& knownXformAttributes() {
+  static const std::set<std::string, std::less<>> names = {"weight",
+                                                           "color",
+                                                           "color_speed",
+                                                           "symmetry",
+                                                           "opacity",
+                                                           "coefs",
+                                                           "post",
+                                                           "animate",
+                                                           "chaos",
+                                                           "name",
+                                                           "plotmode",
+                                                           "var_color",
+                                                           "visible",
+                                                           "motion_frequency",
+                                                           "motion_function",
+                                                           "motion_offset",
+                                                           "mod_gamma",
+                                                           "mod_gamma_speed",
+                                                           "mod_contrast",
+                                                           "mod_contrast_speed",
+                                                           "mod_saturation",
+                                                           "mod_saturation_speed",
+                                                           "mod_hue",
+                                                           "mod_hue_speed",
+                                                           "material",
+                                                           "material_speed",
+                                                           "color_type",
+                                                           "draw_mode",
+                                                           "enabled",
+                                                           "var",
+                                                           "var1",
+                                                           "opacity_speed"};
+  return names;
+}
+
+// The catalogue entry a flame file's variation name means. Apophysis and JWildfire write
+// "linear3D" for the linear map that carries z along, which is exactly voxflame's "linear"; the
+// alias stands only while the catalogue has no entry of that name itself.
+const VariationInfo* variationNamed(std::string_view name) {
+  if (const VariationInfo* info = findVariation(name)) return info;
+  if (name == "linear3D") return findVariation("linear");
+  return nullptr;
+}
+
+std::string trimmed(std::string_view text) {
+  const auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  while (!text.empty() && isSpace(text.front())) text.remove_prefix(1);
+  while (!text.empty() && isSpace(text.back())) text.remove_suffix(1);
+  return std::string(text);
+}
+
+// One number, in the C locale whatever the process's locale is; nullopt when the text is not
+// exactly a number. "nan" and "inf" parse (and are then refused by the range checks).
+std::optional<double> parseNumber(std::string_view text) {
+  std::string token = trimmed(text);
+  std::string_view view = token;
+  if (!view.empty() && view.front() == '+') view.remove_prefix(1);
+  if (view.empty()) return std::nullopt;
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(view.data(), view.data() + view.size(), value);
+  if (error == std::errc::result_out_of_range) return std::numeric_limits<double>::infinity();
+  if (error != std::errc() || end != view.data() + view.size()) return std::nullopt;
+  return value;
+}
+
+// Whitespace-separated numbers; nullopt when a token is not a number.
+std::optional<std::vector<double>> parseNumbers(std::string_view text) {
+  std::vector<double> values;
+  std::istringstream in{std::string(text)};
+  std::string token;
+  while (in >> token) {
+    const auto value = parseNumber(token);
+    if (!value) return std::nullopt;
+    values.push_back(*value);
+  }
+  return values;
+}
+
+bool finiteWithin(double v, double limit) {
+  return std::isfinite(v) && std::abs(v) <= limit;
+}
+
+std::string formatted(double v) {
+  std::ostringstream out;
+  out << v;
+  return out.str();
+}
+
+// Builds the messages of one flame: "FILE, flame 'NAME'".
+class FlameReader {
+ public:
+  FlameReader(std::string where, const FlameImportOptions& options) : where_(std::move(where)), options_(options) {}
+
+  [[noreturn]] void fail(const std::string& context, const std::string& reason) const {
+    throw Error(where_ + (context.empty() ? "" : " " + context) + ": " + reason);
+  }
+
+  double number(const pugi::xml_attribute& attribute, const std::string& context, double low, double high) const {
+    const auto value = parseNumber(attribute.value());
+    if (!value)
+      fail(context, std::string("attribute ") + attribute.name() + "=\"" + attribute.value() + "\" is not a number");
+    if (!std::isfinite(*value) || *value < low || *value > high)
+      fail(context, std::string("attribute ") + attribute.name() + "=\"" + attribute.value() +
+                        "\" must be a number from " + formatted(low) + " to " + formatted(high));
+    return *value;
+  }
+
+  // A number that the file may write slightly out of range (colour 1.0000001): clamped once finite.
+  double clampedNumber(const pugi::xml_attribute& attribute, const std::string& context, double low,
+                       double high) const {
+    return std::clamp(number(attribute, context, -kCoefficientLimit, kCoefficientLimit), low, high);
+  }
+
+  // flam3's "a d b e c f" into Affine3's rows (x' = a x + b y + c, y' = d x + e y + f; z kept).
+  Affine3 affine(const pugi::xml_attribute& attribute, const std::string& context) const {
+    const auto values = parseNumbers(attribute.value());
+    if (!values || values->size() != 6)
+      fail(context, std::string("attribute ") + attribute.name() +
+                        " must be 6 numbers \"a d b e c f\" (flam3's order), not \"" +
+                        std::string(attribute.value()).substr(0, 80) + "\"");
+    for (const double v : *values)
+      if (!finiteWithin(v, kCoefficientLimit))
+        fail(context, std::string("attribute ") + attribute.name() +
+                          " has a coefficient that is not finite or beyond ±1e6 (" + formatted(v) + ")");
+    const auto& c = *values;
+    Affine3 a;
+    a.m[0] = c[0];  // a
+    a.m[4] = c[1];  // d
+    a.m[1] = c[2];  // b
+    a.m[5] = c[3];  // e
+    a.m[3] = c[4];  // c
+    a.m[7] = c[5];  // f
+    return a;
+  }
+
+  FlameXform xform(const pugi::xml_node& node, const std::string& context, bool isFinal) {
+    FlameXform x;
+    x.variations.clear();
+    if (isFinal) x.colorSpeed = 0.0;  // flam3's final transform leaves colour alone unless told
+    bool haveColorSpeed = false;
+    if (!isFinal) {
+      const pugi::xml_attribute weight = node.attribute("weight");
+      x.weight = weight ? number(weight, context, 0.0, kCoefficientLimit) : 0.0;
+      if (!weight) warn(context + " has no weight attribute; it is never chosen");
+    }
+    const pugi::xml_attribute coefs = node.attribute("coefs");
+    if (!coefs) fail(context, "has no coefs attribute (its affine map \"a d b e c f\")");
+    x.affine = affine(coefs, context);
+    if (const pugi::xml_attribute post = node.attribute("post")) {
+      x.post = affine(post, context);
+      x.hasPost = !x.post.isIdentity();
+    }
+    if (const pugi::xml_attribute color = node.attribute("color")) {
+      // Apophysis writes "color" as one number; flam3's old files as two ("c1 c2"): the first counts.
+      const auto values = parseNumbers(color.value());
+      if (!values || values->empty() || !finiteWithin(values->front(), kCoefficientLimit))
+        fail(context, std::string("attribute color=\"") + color.value() + "\" is not a number");
+      x.color = std::clamp(values->front(), 0.0, 1.0);
+    }
+    if (const pugi::xml_attribute speed = node.attribute("color_speed")) {
+      x.colorSpeed = clampedNumber(speed, context, 0.0, 1.0);
+      haveColorSpeed = true;
+    }
+    // flam3 before 3.0 wrote symmetry = 1 − 2 · color_speed.
+    if (const pugi::xml_attribute symmetry = node.attribute("symmetry"); symmetry && !haveColorSpeed)
+      x.colorSpeed =
+          std::clamp((1.0 - number(symmetry, context, -kCoefficientLimit, kCoefficientLimit)) / 2.0, 0.0, 1.0);
+    if (const pugi::xml_attribute opacity = node.attribute("opacity"))
+      x.opacity = clampedNumber(opacity, context, 0.0, 1.0);
+    if (const pugi::xml_attribute plotmode = node.attribute("plotmode");
+        plotmode && std::string_view(plotmode.value()) == "off")
+      x.opacity = 0.0;  // Apophysis' invisible transform
+    if (const pugi::xml_attribute chaos = node.attribute("chaos")) {
+      const auto values = parseNumbers(chaos.value());
+      const bool trivial = values && std::all_of(values->begin(), values->end(), [](double v) { return v == 1.0; });
+      if (!trivial) xaos_ = true;
+    }
+    if (node.attribute("var") || node.attribute("var1"))
+      warn(context + " uses flam3's old var=/var1= variation lists, which voxflame does not read; it acts as linear");
+
+    // Variations: attributes naming a catalogue entry. Their parameters follow as
+    // `<variation>_<parameter>`; an unknown variation's parameters are dropped with it.
+    std::set<std::string> present;
+    for (const pugi::xml_attribute& attribute : node.attributes()) present.insert(attribute.name());
+    double droppedWeight = 0.0;
+    std::string dropped;
+    for (const pugi::xml_attribute& attribute : node.attributes()) {
+      const std::string name = attribute.name();
+      if (knownXformAttributes().contains(name)) continue;
+      if (const VariationInfo* info = variationNamed(name)) {
+        VariationTerm term;
+        term.name = info->name;
+        term.weight = number(attribute, context, -kCoefficientLimit, kCoefficientLimit);
+        if (term.weight == 0.0) continue;
+        term.params = info->defaultParams();
+        for (std::size_t i = 0; i < info->params.size(); ++i) {
+          const std::string key = name + "_" + info->params[i].name;
+          if (const pugi::xml_attribute param = node.attribute(key.c_str()))
+            term.params[i] = number(param, context, -kCoefficientLimit, kCoefficientLimit);
+        }
+        x.variations.push_back(std::move(term));
+        continue;
+      }
+      // A parameter: the longest present attribute (or catalogue variation) it extends with "_".
+      std::string owner;
+      for (std::size_t cut = name.rfind('_'); cut != std::string::npos && cut > 0; cut = name.rfind('_', cut - 1)) {
+        const std::string prefix = name.substr(0, cut);
+        if (present.contains(prefix) || variationNamed(prefix)) {
+          owner = prefix;
+          break;
+        }
+      }
+      if (!owner.empty()) {
+        const VariationInfo* info = variationNamed(owner);
+        if (info && present.contains(owner) && info->paramIndex(name.substr(owner.size() + 1)) < 0)
+          warn(context + " sets '" + name + "', which voxflame's '" + owner + "' does not have; it was left out");
+        continue;
+      }
+      unknownVariations_.insert(name);
+      if (const auto weight = parseNumber(attribute.value()); weight && std::isfinite(*weight)) {
+        droppedWeight += std::abs(*weight);
+        dropped += (dropped.empty() ? "" : ", ") + name;
+      }
+    }
+    // Without most of its variation weight a transform shrinks towards its affine map's origin
+    // and the picture changes: say so, so an odd-looking import is not a mystery.
+    double keptWeight = 0.0;
+    for (const VariationTerm& term : x.variations) keptWeight += std::abs(term.weight);
+    if (droppedWeight > keptWeight)
+      warn(context + " keeps " + formatted(keptWeight) + " of its variation weight " +
+           formatted(keptWeight + droppedWeight) + " without " + dropped + "; it will look different");
+    if (x.variations.size() > kMaxXformVariations)
+      fail(context, "has " + std::to_string(x.variations.size()) + " variations; voxflame takes at most " +
+                        std::to_string(kMaxXformVariations));
+    if (x.variations.empty()) x.variations = {{"linear", 1.0, {}}};
+    return x;
+  }
+
+  void warn(std::string text) { warnings_.push_back(std::move(text)); }
+
+  std::vector<std::string> finishWarnings() {
+    std::vector<std::string> out;
+    if (!unknownVariations_.empty()) {
+      std::string list;
+      for (const std::string& name : unknownVariations_) list += (list.empty() ? "" : ", ") + name;
+      out.push_back("variations voxflame does not know were left out: " + list);
+    }
+    if (xaos_) out.push_back("xaos (chaos=) is not supported: every transform follows every other by weight alone");
+    out.insert(out.end(), warnings_.begin(), warnings_.end());
+    return out;
+  }
+
+  const std::string& where() const { return where_; }
+  const FlameImportOptions& options() const { return options_; }
+
+ private:
+  std::string where_;
+  const FlameImportOptions& options_;
+  std::set<std::string> unknownVariations_;
+  bool xaos_ = false;
+  std::vector<std::string> warnings_;
+};
+
+// --- palettes -------------------------------------------------------------------------------
+
+using Palette = std::array<glm::vec3, kFlamePaletteSize>;  // sRGB, 0–1
+
+int hexDigit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+// The layouts of a hex palette block: digits per colour and where red starts among them.
+struct HexLayout {
+  std::size_t digits;
+  std::size_t redAt;
+};
+constexpr HexLayout kHexRgb{6, 0};     // RRGGBB (Apophysis, Fractorium, JWildfire: format="RGB")
+constexpr HexLayout kHexRgba{8, 0};    // RRGGBBAA (format="RGBA"; the alpha is not used)
+constexpr HexLayout kHexPadded{8, 2};  // 00RRGGBB (flam3's palette table and its <colors data=>)
+
+// A hex block of 256 colours in `layout`, whitespace anywhere; nullopt when it is not exactly that.
+std::optional<Palette> parseHexPalette(std::string_view text, HexLayout layout) {
+  const std::size_t digits = layout.digits;
+  std::string hex;
+  hex.reserve(text.size());
+  for (const char c : text)
+    if (c != ' ' && c != '\t' && c != '\n' && c != '\r') hex.push_back(c);
+  if (hex.size() != digits * kFlamePaletteSize) return std::nullopt;
+  Palette palette;
+  for (std::size_t i = 0; i < kFlamePaletteSize; ++i) {
+    const std::size_t start = i * digits + layout.redAt;
+    int rgb[3];
+    for (int k = 0; k < 3; ++k) {
+      const int high = hexDigit(hex[start + 2 * static_cast<std::size_t>(k)]);
+      const int low = hexDigit(hex[start + 2 * static_cast<std::size_t>(k) + 1]);
+      if (high < 0 || low < 0) return std::nullopt;
+      rgb[k] = high * 16 + low;
+    }
+    palette[i] = glm::vec3(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2])) / 255.0f;
+  }
+  return palette;
+}
+
+// flam3's palette table, read once per path (1.5 MB of XML) and kept for the process.
+struct PaletteTable {
+  std::map<int, Palette> palettes;
+  std::string error;  // why it could not be read, when it could not
+};
+
+const PaletteTable& paletteTable(const std::filesystem::path& path) {
+  static std::mutex mutex;
+  static std::map<std::filesystem::path, PaletteTable> tables;
+  const std::lock_guard lock(mutex);
+  if (const auto found = tables.find(path); found != tables.end()) return found->second;
+  PaletteTable& table = tables[path];
+  pugi::xml_document document;
+  const pugi::xml_parse_result result = document.load_file(path.c_str());
+  if (!result) {
+    table.error =
+        std::filesystem::exists(path)
+            ? "flam3's palette table " + path.string() + " could not be read (" + result.description() + ")"
+            : "flam3's palette table " + path.string() + " is missing (Debian's flam3-utils package installs it)";
+    return table;
+  }
+  for (const pugi::xml_node& node : document.child("palettes").children("palette")) {
+    const auto number = parseNumber(node.attribute("number").value());
+    if (!number || !(*number >= 0.0 && *number < 1e6)) continue;
+    if (const auto palette = parseHexPalette(node.attribute("data").value(), kHexPadded))
+      table.palettes[static_cast<int>(*number)] = *palette;
+  }
+  if (table.palettes.empty()) table.error = "flam3's palette table " + path.string() + " holds no palettes";
+  return table;
+}
+
+// flam3 turns a built-in palette's hues by `hue` of a full turn (the flame's hue attribute).
+glm::vec3 rotateHue(glm::vec3 rgb, double turns) {
+  const float maxC = std::max({rgb.r, rgb.g, rgb.b}), minC = std::min({rgb.r, rgb.g, rgb.b});
+  const float chroma = maxC - minC;
+  if (chroma <= 0.0f) return rgb;
+  float hue;  // in sixths of a turn
+  if (maxC == rgb.r)
+    hue = (rgb.g - rgb.b) / chroma;
+  else if (maxC == rgb.g)
+    hue = 2.0f + (rgb.b - rgb.r) / chroma;
+  else
+    hue = 4.0f + (rgb.r - rgb.g) / chroma;
+  hue = static_cast<float>(std::fmod(hue + 6.0 * turns, 6.0));
+  if (hue < 0.0f) hue += 6.0f;
+  const float x = chroma * (1.0f - std::abs(std::fmod(hue, 2.0f) - 1.0f));
+  glm::vec3 out;
+  switch (static_cast<int>(hue)) {
+    case 0:
+      out = {chroma, x, 0.0f};
+      break;
+    case 1:
+      out = {x, chroma, 0.0f};
+      break;
+    case 2:
+      out = {0.0f, chroma, x};
+      break;
+    case 3:
+      out = {0.0f, x, chroma};
+      break;
+    case 4:
+      out = {x, 0.0f, chroma};
+      break;
+    default:
+      out = {chroma, 0.0f, x};
+      break;
+  }
+  return out + glm::vec3(minC);
+}
+
+// A fallback when a flame names no usable palette: flam3's palette 0 is not always at hand, so a
+// warm ramp from the named palettes stands in.
+Palette fallbackPalette() {
+  const Gradient gradient(paletteStops(namedPalettes().front().name));
+  Palette palette;
+  for (std::size_t i = 0; i < kFlamePaletteSize; ++i)
+    palette[i] = linearToSrgb(gradient.at(static_cast<float>(i) / static_cast<float>(kFlamePaletteSize - 1)));
+  return palette;
+}
+
+Palette readPalette(const pugi::xml_node& flame, FlameReader& reader) {
+  // Inline colours: <color index="i" rgb="r g b"/> (0–255), gaps filled from the colour before.
+  std::array<bool, kFlamePaletteSize> set{};
+  Palette palette;
+  palette.fill(glm::vec3(0.0f));
+  bool any = false;
+  for (const pugi::xml_node& color : flame.children("color")) {
+    const auto index = parseNumber(color.attribute("index").value());
+    const auto rgb = parseNumbers(color.attribute("rgb").value());
+    if (!index || !std::isfinite(*index) || *index < 0.0 || *index > 255.0 || *index != std::floor(*index))
+      reader.fail(
+          "", std::string("<color index=\"") + color.attribute("index").value() + "\"> needs an index from 0 to 255");
+    if (!rgb || rgb->size() != 3 || !std::all_of(rgb->begin(), rgb->end(), [](double v) { return std::isfinite(v); }))
+      reader.fail("", "<color index=\"" + std::to_string(static_cast<int>(*index)) +
+                          "\"> needs rgb=\"r g b\" with three numbers from 0 to 255");
+    const auto i = static_cast<std::size_t>(*index);
+    palette[i] = glm::clamp(
+        glm::vec3(static_cast<float>((*rgb)[0]), static_cast<float>((*rgb)[1]), static_cast<float>((*rgb)[2])) / 255.0f,
+        0.0f, 1.0f);
+    set[i] = true;
+    any = true;
+  }
+  if (any) {
+    std::size_t first = 0;
+    while (!set[first]) ++first;
+    for (std::size_t i = 0; i < kFlamePaletteSize; ++i)
+      if (!set[i]) palette[i] = palette[i < first ? first : i - 1];
+    return palette;
+  }
+  // Apophysis/Fractorium: <palette count="256" format="RGB">hex</palette>; flam3: <colors data=>.
+  for (const char* element : {"palette", "colors"}) {
+    const pugi::xml_node block = flame.child(element);
+    if (!block) continue;
+    const std::string format = block.attribute("format").value();
+    const std::string data = block.attribute("data") ? block.attribute("data").value() : block.text().get();
+    // Without a format the length tells: 6 digits a colour, or flam3's padded 8.
+    const HexLayout layout = format == "RGB"    ? kHexRgb
+                             : format == "RGBA" ? kHexRgba
+                             : format.empty()   ? (std::string_view(element) == "colors" ? kHexPadded : kHexRgb)
+                                                : HexLayout{0, 0};
+    if (layout.digits == 0)
+      reader.fail("", std::string("<") + element + " format=\"" + format + "\"> is not RGB or RGBA");
+    std::optional<Palette> parsed = parseHexPalette(data, layout);
+    if (!parsed && format.empty()) parsed = parseHexPalette(data, layout.digits == 6 ? kHexPadded : kHexRgb);
+    if (!parsed)
+      reader.fail("", std::string("<") + element + "> must hold 256 colours as hex (" + std::to_string(layout.digits) +
+                          " digits each)");
+    return *parsed;
+  }
+  // flam3's built-in palettes by number, turned by the flame's hue.
+  if (const pugi::xml_attribute number = flame.attribute("palette")) {
+    const double index = reader.number(number, "", -1.0, 100000.0);
+    const PaletteTable& table = paletteTable(reader.options().paletteTable);
+    const auto found = table.palettes.find(static_cast<int>(index));
+    if (!table.error.empty()) {
+      reader.warn(table.error + "; palette " + std::to_string(static_cast<int>(index)) +
+                  " was replaced by voxflame's '" + namedPalettes().front().name + "'");
+    } else if (found == table.palettes.end()) {
+      reader.warn("flam3 has no palette " + std::to_string(static_cast<int>(index)) + "; voxflame's '" +
+                  namedPalettes().front().name + "' stands in");
+    } else {
+      Palette turned = found->second;
+      double hue = 0.0;
+      if (const pugi::xml_attribute hueAttribute = flame.attribute("hue"))
+        hue = reader.number(hueAttribute, "", -kCoefficientLimit, kCoefficientLimit);
+      if (hue != 0.0)
+        for (glm::vec3& c : turned) c = rotateHue(c, hue);
+      return turned;
+    }
+    return fallbackPalette();
+  }
+  reader.warn("the flame has no palette; voxflame's '" + namedPalettes().front().name + "' stands in");
+  return fallbackPalette();
+}
+
+// --- tone -----------------------------------------------------------------------------------
+
+ToneMapSettings readTone(const pugi::xml_node& flame, FlameReader& reader) {
+  // flam3's defaults where the file is silent (they differ from voxflame's: gamma 4).
+  ToneMapSettings tone;
+  tone.brightness = 4.0;
+  tone.gamma = 4.0;
+  tone.gammaThreshold = 0.01;
+  tone.vibrancy = 1.0;
+  tone.highlightPower = -1.0;
+  tone.background = glm::vec3(0.0f);
+  tone.estimatorRadius = 9.0;
+  tone.estimatorMinimum = 0.0;
+  tone.estimatorCurve = 0.4;
+  // Out-of-range values are brought into voxflame's ranges (scene.cpp's), with a warning.
+  const auto key = [&](const char* name, double& target, double low, double high) {
+    const pugi::xml_attribute attribute = flame.attribute(name);
+    if (!attribute) return;
+    const double value = reader.number(attribute, "", -kCoefficientLimit, kCoefficientLimit);
+    target = std::clamp(value, low, high);
+    if (target != value)
+      reader.warn(std::string(name) + " " + formatted(value) + " is outside voxflame's range; " + formatted(target) +
+                  " is used");
+  };
+  key("brightness", tone.brightness, 0.0, 1000.0);
+  key("gamma", tone.gamma, 0.1, 10.0);
+  key("gamma_threshold", tone.gammaThreshold, 0.0, 1.0);
+  key("vibrancy", tone.vibrancy, 0.0, 1.0);
+  key("highlight_power", tone.highlightPower, -1.0, 10.0);
+  key("estimator_radius", tone.estimatorRadius, 0.0, 50.0);
+  key("estimator_minimum", tone.estimatorMinimum, 0.0, 50.0);
+  key("estimator_curve", tone.estimatorCurve, 0.01, 5.0);
+  // flam3's "estimator" is the radius.
+  key("estimator", tone.estimatorRadius, 0.0, 50.0);
+  if (tone.estimatorMinimum > tone.estimatorRadius) tone.estimatorMinimum = tone.estimatorRadius;
+  if (const pugi::xml_attribute background = flame.attribute("background")) {
+    const auto rgb = parseNumbers(background.value());
+    if (!rgb || rgb->size() < 3 ||
+        !std::all_of(rgb->begin(), rgb->begin() + 3, [](double v) { return finiteWithin(v, 1e6); }))
+      reader.fail("", std::string("background=\"") + background.value() + "\" must be three numbers \"r g b\"");
+    glm::vec3 srgb(static_cast<float>((*rgb)[0]), static_cast<float>((*rgb)[1]), static_cast<float>((*rgb)[2]));
+    // flam3 writes 0–1; a few editors 0–255.
+    if (std::max({srgb.r, srgb.g, srgb.b}) > 1.0f) srgb /= 255.0f;
+    tone.background = srgbToLinear(glm::clamp(srgb, 0.0f, 1.0f));
+  }
+  return tone;
+}
+
+// --- the flame ------------------------------------------------------------------------------
+
+FlameSymmetry symmetryOfKind(double kind, FlameReader& reader) {
+  if (kind != std::floor(kind) || std::abs(kind) > kMaxFlameSymmetry)
+    reader.fail("", "symmetry kind " + formatted(kind) + " must be a whole number from −" +
+                        std::to_string(kMaxFlameSymmetry) + " to " + std::to_string(kMaxFlameSymmetry));
+  FlameSymmetry symmetry;
+  const int n = static_cast<int>(kind);
+  symmetry.rotational = std::max(1, std::abs(n));
+  symmetry.mirror = n < 0;  // flam3: negative kinds add a mirror
+  return symmetry;
+}
+
+ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, const std::string& name,
+                        const FlameImportOptions& options) {
+  FlameReader reader(where, options);
+  ImportedFlame flame;
+  flame.name = name;
+  std::size_t index = 0;
+  for (const pugi::xml_node& child : node.children("xform")) {
+    if (index >= kMaxFlameXforms)
+      reader.fail("", "has more than " + std::to_string(kMaxFlameXforms) + " transforms; voxflame takes at most " +
+                          std::to_string(kMaxFlameXforms));
+    flame.genome.xforms.push_back(reader.xform(child, "transform " + std::to_string(index), false));
+    ++index;
+  }
+  if (flame.genome.xforms.empty()) reader.fail("", "has no transforms (<xform> elements); there is nothing to draw");
+  double total = 0.0;
+  for (const FlameXform& x : flame.genome.xforms) total += x.weight;
+  if (!(total > 0.0)) reader.fail("", "has only transforms of weight 0; at least one needs a positive weight");
+  if (const pugi::xml_node finalNode = node.child("finalxform")) {
+    flame.genome.hasFinal = true;
+    flame.genome.finalXform = reader.xform(finalNode, "final transform", true);
+  }
+  if (const pugi::xml_attribute symmetry = node.attribute("symmetry"))
+    flame.genome.symmetry = symmetryOfKind(reader.number(symmetry, "", -1e6, 1e6), reader);
+  if (const pugi::xml_node symmetry = node.child("symmetry")) {
+    if (!symmetry.attribute("kind"))
+      reader.fail("", "<symmetry> needs a kind attribute (flam3: N-fold, negative adds a mirror)");
+    flame.genome.symmetry = symmetryOfKind(reader.number(symmetry.attribute("kind"), "<symmetry>", -1e6, 1e6), reader);
+  }
+  const Palette palette = readPalette(node, reader);
+  flame.palette.reserve(kFlamePaletteSize);
+  for (std::size_t i = 0; i < kFlamePaletteSize; ++i)
+    flame.palette.push_back(
+        {static_cast<float>(i) / static_cast<float>(kFlamePaletteSize - 1), srgbToLinear(palette[i])});
+  flame.tone = readTone(node, reader);
+  flame.depthAdded = addFlameDepth(flame.genome, options.depth);
+  validateFlame(flame.genome, where);
+  flame.warnings = reader.finishWarnings();
+  return flame;
+}
+
+// Every <flame> element, in document order, at any depth (explicit stack: a deeply nested file
+// must not exhaust the call stack).
+std::vector<pugi::xml_node> flameElements(const pugi::xml_document& document) {
+  std::vector<pugi::xml_node> flames;
+  std::vector<pugi::xml_node> stack;
+  for (pugi::xml_node child = document.last_child(); child; child = child.previous_sibling()) stack.push_back(child);
+  while (!stack.empty()) {
+    const pugi::xml_node node = stack.back();
+    stack.pop_back();
+    if (node.type() != pugi::node_element) continue;
+    if (std::string_view(node.name()) == "flame") {
+      flames.push_back(node);
+      continue;  // flames do not nest
+    }
+    for (pugi::xml_node child = node.last_child(); child; child = child.previous_sibling()) stack.push_back(child);
+  }
+  return flames;
+}
+
+}  // namespace
+
+bool isFlameFilePath(const std::filesystem::path& path) {
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return extension == ".flame" || extension == ".flam3";
+}
+
+bool isFlatFlame(const FlameGenome& genome) {
+  const auto flatAffine = [](const Affine3& a) {
+    return a.m[2] == 0.0 && a.m[6] == 0.0 && a.m[8] == 0.0 && a.m[9] == 0.0 && a.m[10] == 1.0 && a.m[11] == 0.0;
+  };
+  const auto flatXform = [&](const FlameXform& x) {
+    if (!flatAffine(x.affine) || (x.hasPost && !flatAffine(x.post))) return false;
+    for (const VariationTerm& term : x.variations) {
+      const VariationInfo* info = findVariation(term.name);
+      if (!info || info->threeD) return false;
+    }
+    return true;
+  };
+  if (genome.hasFinal && !flatXform(genome.finalXform)) return false;
+  return std::all_of(genome.xforms.begin(), genome.xforms.end(), flatXform);
+}
+
+bool addFlameDepth(FlameGenome& genome, double depth) {
+  if (!isFlatFlame(genome)) return false;
+  // A transform's place in colour order (ties by position) sets its layer: s from −1 to +1.
+  const std::size_t n = genome.xforms.size();
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return genome.xforms[a].color < genome.xforms[b].color; });
+  constexpr double kShrink = 0.5;  // each step halves the depth already recorded: a binary fraction
+  for (std::size_t rank = 0; rank < n; ++rank) {
+    FlameXform& x = genome.xforms[order[rank]];
+    const double s = n > 1 ? 2.0 * static_cast<double>(rank) / static_cast<double>(n - 1) - 1.0 : 0.0;
+    // 2D variations carry z as (sum of their weights) · z: divide it out, so z' is exactly
+    // ½ z + depth · s after them. Near-zero sums are held at ±0.05 (z then shrinks further).
+    double sum = 0.0;
+    for (const VariationTerm& term : x.variations) sum += term.weight;
+    if (x.variations.empty()) sum = 1.0;
+    const double divisor = std::abs(sum) < 0.05 ? std::copysign(0.05, sum) : sum;
+    x.affine.m[10] = kShrink / divisor;
+    x.affine.m[11] = depth * s / divisor;
+  }
+  return true;
+}
+
+FlameFileContents readFlameXml(std::string_view text, const std::string& sourceName,
+                               const FlameImportOptions& options) {
+  if (!std::isfinite(options.depth) || options.depth < 0.0 || options.depth > kMaxFlameDepth)
+    throw Error("the flame depth must be from 0 to " + formatted(kMaxFlameDepth));
+  pugi::xml_document document;
+  const pugi::xml_parse_result result =
+      document.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
+  if (!result)
+    throw Error(sourceName + " is not flame XML: " + result.description() + " at byte " +
+                std::to_string(result.offset));
+  const std::vector<pugi::xml_node> flames = flameElements(document);
+  if (flames.empty())
+    throw Error(sourceName +
+                " holds no <flame> element; it is XML but not a flame file (flam3, Apophysis, "
+                "Fractorium or JWildfire)");
+  FlameFileContents contents;
+  for (std::size_t i = 0; i < flames.size(); ++i) {
+    const std::string name = flames[i].attribute("name").value();
+    contents.names.push_back(name.empty() ? "flame " + std::to_string(i + 1) : name);
+  }
+  if (!options.name.empty()) {
+    const auto found = std::find(contents.names.begin(), contents.names.end(), options.name);
+    if (found == contents.names.end())
+      throw Error(sourceName + " has no flame named '" + options.name + "'; it holds " + std::to_string(flames.size()) +
+                  " flame" + (flames.size() == 1 ? "" : "s"));
+    contents.index = static_cast<std::size_t>(found - contents.names.begin());
+  } else {
+    if (options.index >= flames.size())
+      throw Error(sourceName + " holds " + std::to_string(flames.size()) + " flame" + (flames.size() == 1 ? "" : "s") +
+                  "; there is no flame " + std::to_string(options.index + 1));
+    contents.index = options.index;
+  }
+  const pugi::xml_node chosen = flames[contents.index];
+  std::string title = chosen.attribute("name").value();
+  if (title.empty()) {
+    title = std::filesystem::path(sourceName).stem().string();
+    if (flames.size() > 1) title += " " + std::to_string(contents.index + 1);
+  }
+  const std::string where = sourceName + ", flame '" + contents.names[contents.index] + "'";
+  contents.flame = readFlame(chosen, where, title, options);
+  return contents;
+}
+
+FlameFileContents loadFlameFile(const std::filesystem::path& path, const FlameImportOptions& options) {
+  std::error_code error;
+  const std::uintmax_t size = std::filesystem::file_size(path, error);
+  if (error) throw Error(path.string() + ": cannot read it (" + error.message() + ")");
+  if (size > kMaxFlameFileBytes)
+    throw Error(path.string() + " is " + std::to_string(size >> 20) + " MiB; a flame file is far smaller");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(path.string() + ": cannot open it");
+  std::ostringstream bytes;
+  bytes << in.rdbuf();
+  return readFlameXml(bytes.str(), path.string(), options);
+}
+
+Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base) {
+  Scene scene = base;
+  scene.name = flame.name;
+  PatternLayer layer;
+  layer.kind = PatternKind::Flame;
+  layer.attractor.clear();
+  layer.params.clear();
+  layer.flame = flame.genome;
+  layer.color.mode = ColorMode::Index;
+  layer.color.palette.clear();
+  layer.color.gradient = flame.palette;
+  scene.layers = {layer};
+  scene.tone = flame.tone;
+  scene.animation = AnimationSettings{};
+  scene.keyframes.clear();
+  return scene;
+}
+
+}  // namespace voxflame::core

@@ -1,0 +1,83 @@
+// Importing flame files: the XML genomes that flam3, Apophysis, Fractorium and JWildfire write
+// (.flame, .flam3). A file holds one or many <flame> elements under any root; each becomes a
+// FlameGenome plus what a scene needs besides: a name, a 256-colour palette (inline <color>
+// entries, a hex <palette>/<colors> block, or flam3's built-in palette number resolved from the
+// palette table of Debian's flam3 package) and the tone keys flam3 and voxflame share.
+//
+// flam3 writes an affine map as coefs="a d b e c f", meaning x' = a x + b y + c, y' = d x + e y + f;
+// the reader puts a, b, c, d, e, f into Affine3's first two rows (flame.h). Variations are the
+// attributes of an <xform> that name a variation of the catalogue (flame_variations.h), their
+// parameters `<variation>_<parameter>` attributes (julian_power, ngon_sides). What voxflame does not
+// know (a variation, xaos) is left out and reported as a warning; what would make the flame
+// meaningless (no transforms, only zero weights, coefficients that are not finite or beyond ±1e6)
+// is a core::Error naming the file and the transform.
+//
+// Flames are 2D. A flat one (no 3D variation, no z coefficient) gains depth on import
+// (addFlameDepth): the z row of every transform becomes z' = ½ z + depth · s, with s from −1 for
+// the transform of lowest colour to +1 for the highest, so a point's depth is a binary-fraction-like
+// record of the transforms it went through: a fractal stack of layers, coloured like the flame,
+// that fills a volume. It is nothing but affine coefficients, so it stays editable after import.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "color.h"
+#include "flame.h"
+#include "scene.h"
+
+namespace voxflame::core {
+
+// Where Debian's flam3 package keeps flam3's 701 built-in palettes (palette="N" in a flame file).
+inline constexpr const char* kFlam3PaletteTable = "/usr/share/flam3/flam3-palettes.xml";
+inline constexpr double kDefaultFlameDepth = 0.5;
+inline constexpr double kMaxFlameDepth = 10.0;
+inline constexpr std::size_t kFlamePaletteSize = 256;
+
+struct FlameImportOptions {
+  std::filesystem::path paletteTable = kFlam3PaletteTable;
+  double depth = kDefaultFlameDepth;  // addFlameDepth's depth for flat flames; 0 keeps them flat
+  std::size_t index = 0;              // which <flame> of the file (0-based), unless `name` is set
+  std::string name;                   // pick the flame with this name attribute instead
+};
+
+struct ImportedFlame {
+  std::string name;
+  FlameGenome genome;
+  std::vector<GradientStop> palette;  // kFlamePaletteSize stops at i/255, linear RGB
+  ToneMapSettings tone;               // flam3's defaults, then the file's keys
+  bool depthAdded = false;            // addFlameDepth changed the genome
+  std::vector<std::string> warnings;  // what was left out or replaced, for the user
+};
+
+struct FlameFileContents {
+  std::vector<std::string> names;  // every <flame> of the file, in order (name or "flame N")
+  std::size_t index = 0;           // the one imported
+  ImportedFlame flame;
+};
+
+// Reads the flame selected by `options` from the XML `text`; `sourceName` (a path) is what
+// messages call it. Throws core::Error.
+FlameFileContents readFlameXml(std::string_view text, const std::string& sourceName,
+                               const FlameImportOptions& options = {});
+FlameFileContents loadFlameFile(const std::filesystem::path& path, const FlameImportOptions& options = {});
+
+// True for the extensions flame files use: .flame, .flam3 (any case).
+bool isFlameFilePath(const std::filesystem::path& path);
+
+// Whether no transform (the final one included) has a 3D variation or a z coefficient: such a
+// genome iterates in the plane z = const.
+bool isFlatFlame(const FlameGenome& genome);
+
+// Gives a flat genome depth as described above (depth ≥ 0; 0 collapses it onto z = 0). Returns
+// false, changing nothing, for a genome that is not flat.
+bool addFlameDepth(FlameGenome& genome, double depth);
+
+// A complete scene showing the imported flame: `base` with its layers replaced by one flame layer
+// (colour index mode over the flame's palette), the flame's tone keys, its name, no animation.
+Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base);
+
+}  // namespace voxflame::core

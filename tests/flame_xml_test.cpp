@@ -1,0 +1,555 @@
+// Importing flame files (issue 12): Debian's flam3 samples, hand-written files with every element
+// and attribute the reader supports, every bad-input case with a message naming the file, the
+// depth given to flat flames, and mutated files that must neither crash nor hang.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "core/chaos_game.h"
+#include "core/error.h"
+#include "core/flame_variations.h"
+#include "core/flame_xml.h"
+#include "core/random.h"
+#include "core/scene.h"
+#include "core/scene_io.h"
+#include "test_support.h"
+
+using namespace voxflame::core;
+using voxflame::test::TemporaryFolder;
+
+namespace {
+
+const std::filesystem::path kFlam3Samples = "/usr/share/flam3";
+
+std::string readText(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+// A flame file around these transforms; `extra` goes inside <flame> after them.
+std::string flameFile(const std::string& xforms, const std::string& extra = "", const std::string& attributes = "") {
+  return "<flames><flame name=\"hand\" " + attributes + ">\n" + xforms + extra + "</flame></flames>\n";
+}
+
+const std::string kTwoXforms =
+    "<xform weight=\"0.5\" color=\"0\" spherical=\"1\" coefs=\"0.5 0 0 0.5 0.25 0\"/>\n"
+    "<xform weight=\"0.5\" color=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 -0.25 0\"/>\n";
+
+std::string errorOf(const std::string& text, const std::string& source = "bad.flame") {
+  try {
+    readFlameXml(text, source);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool hasWarningContaining(const ImportedFlame& flame, const std::string& text) {
+  return std::any_of(flame.warnings.begin(), flame.warnings.end(),
+                     [&](const std::string& w) { return w.find(text) != std::string::npos; });
+}
+
+// 256 colours as Apophysis writes them: RRGGBB, 32 per line; colour i is (i, 255 − i, 128).
+std::string hexPaletteBlock() {
+  std::string out = "<palette count=\"256\" format=\"RGB\">\n";
+  char hex[8];
+  for (int i = 0; i < 256; ++i) {
+    std::snprintf(hex, sizeof hex, "%02X%02X%02X", i, 255 - i, 128);
+    out += hex;
+    if (i % 32 == 31) out += "\n";
+  }
+  return out + "</palette>\n";
+}
+
+// The palette's sRGB colour i (0–255 per channel).
+glm::vec3 srgb255(const ImportedFlame& flame, std::size_t i) {
+  return linearToSrgb(flame.palette.at(i).color) * 255.0f;
+}
+
+void expectColorNear(glm::vec3 actual, glm::vec3 expected, float tolerance = 0.6f) {
+  EXPECT_NEAR(actual.r, expected.r, tolerance);
+  EXPECT_NEAR(actual.g, expected.g, tolerance);
+  EXPECT_NEAR(actual.b, expected.b, tolerance);
+}
+
+std::vector<std::filesystem::path> debianSamples() {
+  std::vector<std::filesystem::path> samples;
+  if (!std::filesystem::is_directory(kFlam3Samples)) return samples;
+  for (const auto& entry : std::filesystem::directory_iterator(kFlam3Samples))
+    if (entry.path().extension() == ".flam3") samples.push_back(entry.path());
+  std::sort(samples.begin(), samples.end());
+  return samples;
+}
+
+// The z extent (5–95%) of points the chaos game draws for this genome.
+double zSpread(const FlameGenome& genome) {
+  PatternLayer layer;
+  layer.kind = PatternKind::Flame;
+  layer.attractor.clear();
+  layer.flame = genome;
+  const ChaosGame game(layer, "test");
+  constexpr std::size_t kLanes = 256;
+  ChaosLanes lanes;
+  lanes.resize(kLanes);
+  SplitMix64 rng(7);
+  for (std::size_t i = 0; i < kLanes; ++i) game.seedLane(lanes, i, rng);
+  std::vector<double> x(kLanes), y(kLanes), z(kLanes), c(kLanes), zs;
+  for (int step = 0; step < 200; ++step) {
+    game.step(lanes, x.data(), y.data(), z.data(), c.data(), kLanes);
+    if (step >= 40)
+      for (double v : z)
+        if (std::isfinite(v)) zs.push_back(v);
+  }
+  std::sort(zs.begin(), zs.end());
+  if (zs.empty()) return 0.0;
+  return zs[zs.size() * 95 / 100] - zs[zs.size() * 5 / 100];
+}
+
+}  // namespace
+
+TEST(FlameXml, DebianSampleGenomesImportWithTheirTransformsAndPalettes) {
+  const auto samples = debianSamples();
+  if (samples.empty()) GTEST_SKIP() << "flam3-utils is not installed (no " << kFlam3Samples << ")";
+  // test.flam3: two flames of four spherical transforms, flam3 palettes 15 and 29.
+  const std::filesystem::path test = kFlam3Samples / "test.flam3";
+  ASSERT_TRUE(std::filesystem::exists(test));
+  for (std::size_t index : {0u, 1u}) {
+    FlameImportOptions options;
+    options.index = index;
+    const FlameFileContents contents = loadFlameFile(test, options);
+    EXPECT_EQ(contents.names.size(), 2u);
+    EXPECT_EQ(contents.index, index);
+    EXPECT_EQ(contents.flame.name, "test " + std::to_string(index + 1));
+    ASSERT_EQ(contents.flame.genome.xforms.size(), 4u);
+    EXPECT_FALSE(contents.flame.genome.hasFinal);
+    EXPECT_EQ(contents.flame.palette.size(), 256u);
+    EXPECT_TRUE(contents.flame.warnings.empty()) << contents.flame.warnings.front();
+    EXPECT_DOUBLE_EQ(contents.flame.tone.gamma, 4.0);
+    EXPECT_DOUBLE_EQ(contents.flame.tone.brightness, 4.0);
+    for (const FlameXform& x : contents.flame.genome.xforms) {
+      ASSERT_EQ(x.variations.size(), 1u);
+      EXPECT_EQ(x.variations[0].name, "spherical");
+      EXPECT_DOUBLE_EQ(x.weight, 0.25);
+    }
+  }
+  // coefs="a d b e c f" of the first transform of the first flame.
+  const Affine3 a = loadFlameFile(test).flame.genome.xforms[0].affine;
+  EXPECT_DOUBLE_EQ(a.m[0], -0.681206);   // a
+  EXPECT_DOUBLE_EQ(a.m[4], -0.0779465);  // d
+  EXPECT_DOUBLE_EQ(a.m[1], 0.20769);     // b
+  EXPECT_DOUBLE_EQ(a.m[5], 0.755065);    // e
+  EXPECT_DOUBLE_EQ(a.m[3], -0.0416126);  // c
+  EXPECT_DOUBLE_EQ(a.m[7], -0.262334);   // f
+  EXPECT_EQ(a.m[2], 0.0);
+  EXPECT_EQ(a.m[6], 0.0);
+  // Every sample either imports (a palette of 256) or, having no transforms, is refused by name.
+  for (const auto& sample : samples) {
+    try {
+      const FlameFileContents contents = loadFlameFile(sample);
+      EXPECT_EQ(contents.flame.palette.size(), 256u) << sample;
+      EXPECT_FALSE(contents.flame.genome.xforms.empty()) << sample;
+    } catch (const Error& e) {
+      EXPECT_NE(std::string(e.what()).find(sample.string()), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("no transforms"), std::string::npos) << e.what();
+    }
+  }
+}
+
+// Ten random genomes that flam3-genome (Debian's flam3-utils) made, with the variations and
+// parameter attributes flam3 really writes: each imports with all its transforms; a variation the
+// catalogue knows is used (never reported unknown), and its parameters are named as flam3 names
+// them (no "does not have" warning: this catches a catalogue parameter named differently).
+TEST(FlameXml, Flam3GenomesImportAndTheirParameterNamesMatchTheCatalogue) {
+  const std::filesystem::path file = voxflame::test::sourcePath("tests/data/flam3_random_genomes.flam3");
+  const std::string text = readText(file);
+  std::vector<std::size_t> starts;
+  for (std::size_t at = text.find("<flame "); at != std::string::npos; at = text.find("<flame ", at + 1))
+    starts.push_back(at);
+  ASSERT_EQ(starts.size(), 10u);
+  for (std::size_t i = 0; i < starts.size(); ++i) {
+    const std::string flameText =
+        text.substr(starts[i], (i + 1 < starts.size() ? starts[i + 1] : text.size()) - starts[i]);
+    FlameImportOptions options;
+    options.index = i;
+    const FlameFileContents contents = loadFlameFile(file, options);
+    const ImportedFlame& flame = contents.flame;
+    std::size_t xforms = 0;
+    for (std::size_t at = flameText.find("<xform "); at != std::string::npos; at = flameText.find("<xform ", at + 1))
+      ++xforms;
+    EXPECT_EQ(flame.genome.xforms.size(), xforms) << "flame " << i;
+    EXPECT_EQ(flame.genome.hasFinal, flameText.find("<finalxform") != std::string::npos) << "flame " << i;
+    EXPECT_EQ(flame.palette.size(), 256u);
+    EXPECT_FALSE(hasWarningContaining(flame, "does not have")) << "flame " << i << ": " << flame.warnings.front();
+    for (const VariationInfo& info : variationCatalogue()) {
+      if (flameText.find(" " + info.name + "=\"") == std::string::npos) continue;
+      bool used = false;
+      for (const FlameXform& x : flame.genome.xforms)
+        for (const VariationTerm& term : x.variations) used |= term.name == info.name;
+      if (flame.genome.hasFinal)
+        for (const VariationTerm& term : flame.genome.finalXform.variations) used |= term.name == info.name;
+      EXPECT_TRUE(used) << "flame " << i << " names " << info.name;
+    }
+  }
+}
+
+TEST(FlameXml, BuiltInPaletteNumberComesFromFlam3sTableTurnedByHue) {
+  if (!std::filesystem::exists(kFlam3PaletteTable)) GTEST_SKIP() << "no " << kFlam3PaletteTable;
+  // The table's own first colour of palette 15 ("00RRGGBB"), read here independently.
+  const std::string table = readText(kFlam3PaletteTable);
+  const std::size_t entry = table.find("number=\"15\"");
+  ASSERT_NE(entry, std::string::npos);
+  const std::size_t data = table.find("data=\"", entry) + 6;
+  const glm::vec3 first(static_cast<float>(std::stoi(table.substr(data + 2, 2), nullptr, 16)),
+                        static_cast<float>(std::stoi(table.substr(data + 4, 2), nullptr, 16)),
+                        static_cast<float>(std::stoi(table.substr(data + 6, 2), nullptr, 16)));
+  const ImportedFlame plain = readFlameXml(flameFile(kTwoXforms, "", "palette=\"15\""), "p.flame").flame;
+  EXPECT_TRUE(plain.warnings.empty());
+  expectColorNear(srgb255(plain, 0), first);
+  // A whole turn of hue is no turn; half a turn changes the colours.
+  const ImportedFlame whole = readFlameXml(flameFile(kTwoXforms, "", "palette=\"15\" hue=\"1\""), "p.flame").flame;
+  expectColorNear(srgb255(whole, 0), first, 1.0f);
+  const ImportedFlame half = readFlameXml(flameFile(kTwoXforms, "", "palette=\"15\" hue=\"0.5\""), "p.flame").flame;
+  const glm::vec3 turned = srgb255(half, 0);
+  EXPECT_GT(std::abs(turned.r - first.r) + std::abs(turned.g - first.g) + std::abs(turned.b - first.b), 20.0f);
+}
+
+TEST(FlameXml, MissingPaletteTableIsAWarningNotAFailure) {
+  FlameImportOptions options;
+  options.paletteTable = "/nonexistent/flam3-palettes.xml";
+  const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, "", "palette=\"3\""), "p.flame", options).flame;
+  EXPECT_EQ(flame.palette.size(), 256u);
+  EXPECT_TRUE(hasWarningContaining(flame, "/nonexistent/flam3-palettes.xml")) << flame.warnings.size();
+  EXPECT_TRUE(hasWarningContaining(flame, "missing"));
+}
+
+TEST(FlameXml, HandWrittenFileWithEveryElement) {
+  const std::string xforms =
+      // color_speed given directly; post map; opacity.
+      "<xform weight=\"0.6\" color=\"0.25\" color_speed=\"0.3\" opacity=\"0.75\" spherical=\"0.8\" linear=\"0.2\" "
+      "coefs=\"1 2 3 4 5 6\" post=\"0.9 0.1 -0.1 0.9 0.05 -0.05\" chaos=\"1 0\"/>\n"
+      // The old symmetry attribute: color_speed = (1 − symmetry) / 2; an unknown variation and its parameter.
+      "<xform weight=\"0.4\" color=\"0.75\" symmetry=\"0.5\" julia=\"1\" bwraps7=\"0.3\" bwraps7_cellsize=\"2\" "
+      "coefs=\"0.5 0 0 0.5 0 0\" plotmode=\"off\"/>\n"
+      "<finalxform color=\"0.5\" color_speed=\"0.2\" swirl=\"0.7\" coefs=\"1 0 0 1 0.1 0.2\"/>\n";
+  const std::string extra = "<symmetry kind=\"-3\"/>\n" + hexPaletteBlock();
+  const std::string attributes =
+      "brightness=\"7\" gamma=\"3.5\" gamma_threshold=\"0.02\" vibrancy=\"0.6\" highlight_power=\"0.5\" "
+      "estimator_radius=\"7\" estimator_minimum=\"1\" estimator_curve=\"0.6\" background=\"1 0 0\"";
+  FlameImportOptions options;
+  options.depth = 0.0;
+  const FlameFileContents contents = readFlameXml(flameFile(xforms, extra, attributes), "hand.flame", options);
+  const ImportedFlame& flame = contents.flame;
+  EXPECT_EQ(flame.name, "hand");
+  ASSERT_EQ(flame.genome.xforms.size(), 2u);
+  const FlameXform& first = flame.genome.xforms[0];
+  EXPECT_DOUBLE_EQ(first.weight, 0.6);
+  EXPECT_DOUBLE_EQ(first.color, 0.25);
+  EXPECT_DOUBLE_EQ(first.colorSpeed, 0.3);
+  EXPECT_DOUBLE_EQ(first.opacity, 0.75);
+  // "1 2 3 4 5 6" is a d b e c f.
+  EXPECT_EQ(first.affine.m[0], 1.0);
+  EXPECT_EQ(first.affine.m[4], 2.0);
+  EXPECT_EQ(first.affine.m[1], 3.0);
+  EXPECT_EQ(first.affine.m[5], 4.0);
+  EXPECT_EQ(first.affine.m[3], 5.0);
+  EXPECT_EQ(first.affine.m[7], 6.0);
+  ASSERT_TRUE(first.hasPost);
+  EXPECT_DOUBLE_EQ(first.post.m[1], -0.1);  // post's b
+  EXPECT_DOUBLE_EQ(first.post.m[4], 0.1);   // post's d
+  EXPECT_DOUBLE_EQ(first.post.m[7], -0.05);
+  ASSERT_EQ(first.variations.size(), 2u);
+  EXPECT_EQ(first.variations[0].name, "spherical");
+  EXPECT_DOUBLE_EQ(first.variations[0].weight, 0.8);
+  EXPECT_EQ(first.variations[1].name, "linear");
+  const FlameXform& second = flame.genome.xforms[1];
+  EXPECT_DOUBLE_EQ(second.colorSpeed, 0.25);
+  EXPECT_EQ(second.opacity, 0.0);           // plotmode="off"
+  ASSERT_EQ(second.variations.size(), 1u);  // bwraps7 left out
+  EXPECT_EQ(second.variations[0].name, "julia");
+  ASSERT_TRUE(flame.genome.hasFinal);
+  EXPECT_DOUBLE_EQ(flame.genome.finalXform.colorSpeed, 0.2);
+  EXPECT_DOUBLE_EQ(flame.genome.finalXform.affine.m[7], 0.2);
+  EXPECT_EQ(flame.genome.finalXform.variations.at(0).name, "swirl");
+  EXPECT_EQ(flame.genome.symmetry.rotational, 3);
+  EXPECT_TRUE(flame.genome.symmetry.mirror);
+  ASSERT_EQ(flame.palette.size(), 256u);
+  expectColorNear(srgb255(flame, 0), {0, 255, 128});
+  expectColorNear(srgb255(flame, 200), {200, 55, 128});
+  EXPECT_FLOAT_EQ(flame.palette[255].position, 1.0f);
+  EXPECT_DOUBLE_EQ(flame.tone.brightness, 7.0);
+  EXPECT_DOUBLE_EQ(flame.tone.gamma, 3.5);
+  EXPECT_DOUBLE_EQ(flame.tone.gammaThreshold, 0.02);
+  EXPECT_DOUBLE_EQ(flame.tone.vibrancy, 0.6);
+  EXPECT_DOUBLE_EQ(flame.tone.highlightPower, 0.5);
+  EXPECT_DOUBLE_EQ(flame.tone.estimatorRadius, 7.0);
+  EXPECT_DOUBLE_EQ(flame.tone.estimatorMinimum, 1.0);
+  EXPECT_DOUBLE_EQ(flame.tone.estimatorCurve, 0.6);
+  expectColorNear(linearToSrgb(flame.tone.background) * 255.0f, {255, 0, 0});
+  // The unknown variation by name (not its parameter), xaos once.
+  EXPECT_TRUE(hasWarningContaining(flame, "bwraps7"));
+  EXPECT_FALSE(hasWarningContaining(flame, "cellsize"));
+  EXPECT_TRUE(hasWarningContaining(flame, "xaos"));
+  // bwraps7 (0.3) is less than julia (1): no warning that transform 1 lost most of its weight.
+  EXPECT_FALSE(hasWarningContaining(flame, "look different"));
+  const std::string mostlyUnknown =
+      "<xform weight=\"1\" julia=\"0.1\" waves_unknown_here=\"0.9\" coefs=\"0.5 0 0 0.5 0 0\"/>";
+  const ImportedFlame shrunk = readFlameXml(flameFile(mostlyUnknown, hexPaletteBlock()), "u.flame").flame;
+  EXPECT_TRUE(hasWarningContaining(shrunk, "transform 0 keeps 0.1 of its variation weight 1"));
+}
+
+TEST(FlameXml, HexPaletteLayoutsRgbaAndFlam3sPaddedColours) {
+  std::string rgba = "<palette count=\"256\" format=\"RGBA\">", padded = "<colors count=\"256\" data=\"";
+  char hex[16];
+  for (int i = 0; i < 256; ++i) {
+    std::snprintf(hex, sizeof hex, "%02x%02x%02xff", 255 - i, i, 7);
+    rgba += hex;
+    std::snprintf(hex, sizeof hex, "00%02x%02x%02x", 9, i, 255 - i);
+    padded += hex;
+  }
+  const ImportedFlame fromRgba = readFlameXml(flameFile(kTwoXforms, rgba + "</palette>"), "a.flame").flame;
+  expectColorNear(srgb255(fromRgba, 10), {245, 10, 7});
+  const ImportedFlame fromPadded = readFlameXml(flameFile(kTwoXforms, padded + "\"/>"), "p.flame").flame;
+  expectColorNear(srgb255(fromPadded, 10), {9, 10, 245});
+  EXPECT_NE(errorOf(flameFile(kTwoXforms, "<palette format=\"HSV\">00</palette>")).find("HSV"), std::string::npos);
+}
+
+TEST(FlameXml, InlineColoursFillTheirGapsAndTrivialXaosIsSilent) {
+  const std::string colours = "<color index=\"0\" rgb=\"255 0 0\"/><color index=\"100\" rgb=\"0 0 255\"/>";
+  const std::string xforms =
+      "<xform weight=\"1\" color=\"0\" linear=\"1\" chaos=\"1 1\" coefs=\"0.5 0 0 0.5 0 0\"/>"
+      "<xform weight=\"1\" color=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.5 0\"/>";
+  const ImportedFlame flame = readFlameXml(flameFile(xforms, colours), "c.flame").flame;
+  ASSERT_EQ(flame.palette.size(), 256u);
+  expectColorNear(srgb255(flame, 0), {255, 0, 0});
+  expectColorNear(srgb255(flame, 99), {255, 0, 0});
+  expectColorNear(srgb255(flame, 255), {0, 0, 255});
+  EXPECT_TRUE(flame.warnings.empty());
+}
+
+TEST(FlameXml, Linear3DOfApophysisIsLinear) {
+  if (findVariation("linear3D")) GTEST_SKIP() << "the catalogue has its own linear3D";
+  const std::string xform = "<xform weight=\"1\" linear3D=\"0.8\" coefs=\"0.5 0 0 0.5 0 0\"/>";
+  const ImportedFlame flame = readFlameXml(flameFile(xform, hexPaletteBlock()), "l.flame").flame;
+  ASSERT_EQ(flame.genome.xforms.at(0).variations.size(), 1u);
+  EXPECT_EQ(flame.genome.xforms[0].variations[0].name, "linear");
+  EXPECT_DOUBLE_EQ(flame.genome.xforms[0].variations[0].weight, 0.8);
+  EXPECT_TRUE(flame.warnings.empty());
+  EXPECT_TRUE(flame.depthAdded);
+}
+
+TEST(FlameXml, SeveralFlamesArePickedByIndexOrName) {
+  const std::string text = "<Flames>" + flameFile(kTwoXforms) + "<flame name=\"second\">" + kTwoXforms +
+                           "<xform weight=\"1\" coefs=\"1 0 0 1 0 0\"/></flame>"
+                           "</Flames>";
+  FlameImportOptions options;
+  options.name = "second";
+  const FlameFileContents byName = readFlameXml(text, "many.flame", options);
+  EXPECT_EQ(byName.names.size(), 2u);  // one inside a nested <flames>, one directly under <Flames>
+  EXPECT_EQ(byName.index, 1u);
+  EXPECT_EQ(byName.flame.genome.xforms.size(), 3u);
+  options.name.clear();
+  options.index = 5;
+  try {
+    readFlameXml(text, "many.flame", options);
+    ADD_FAILURE() << "index 5 of 3 flames was accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("many.flame"), std::string::npos);
+  }
+}
+
+TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
+  std::size_t withParameters = 0;
+  for (const VariationInfo& info : variationCatalogue()) {
+    std::string attributes = info.name + "=\"0.7\"";
+    std::vector<double> expected;
+    for (const VariationParam& param : info.params) {
+      // A value inside the slider range that is not the default.
+      const double value = param.defaultValue == param.sliderMin ? param.sliderMax : param.sliderMin;
+      expected.push_back(value);
+      std::ostringstream number;
+      number.precision(17);
+      number << value;
+      attributes += " " + info.name + "_" + param.name + "=\"" + number.str() + "\"";
+    }
+    withParameters += !info.params.empty();
+    const std::string xform = "<xform weight=\"1\" " + attributes + " coefs=\"0.5 0 0 0.5 0 0\"/>";
+    const ImportedFlame flame = readFlameXml(flameFile(xform, hexPaletteBlock()), "v.flame").flame;
+    ASSERT_EQ(flame.genome.xforms.at(0).variations.size(), 1u) << info.name;
+    const VariationTerm& term = flame.genome.xforms[0].variations[0];
+    EXPECT_EQ(term.name, info.name);
+    EXPECT_DOUBLE_EQ(term.weight, 0.7);
+    ASSERT_EQ(term.params.size(), expected.size()) << info.name;
+    for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_DOUBLE_EQ(term.params[i], expected[i]) << info.name;
+    EXPECT_TRUE(flame.warnings.empty()) << info.name << ": " << flame.warnings.front();
+  }
+  if (withParameters == 0) GTEST_SKIP() << "no catalogue variation has parameters yet; only their names were checked";
+}
+
+TEST(FlameXml, JulianPowerAndDistanceWhenTheCatalogueHasJulian) {
+  const VariationInfo* julian = findVariation("julian");
+  if (!julian) GTEST_SKIP() << "the variation catalogue has no 'julian' yet";
+  const std::string xform =
+      "<xform weight=\"1\" julian=\"0.5\" julian_power=\"5\" julian_dist=\"-1\" "
+      "coefs=\"0.5 0 0 0.5 0 0\"/>";
+  const ImportedFlame flame = readFlameXml(flameFile(xform), "j.flame").flame;
+  const VariationTerm& term = flame.genome.xforms.at(0).variations.at(0);
+  EXPECT_EQ(term.params.at(static_cast<std::size_t>(julian->paramIndex("power"))), 5.0);
+  EXPECT_EQ(term.params.at(static_cast<std::size_t>(julian->paramIndex("dist"))), -1.0);
+}
+
+TEST(FlameXml, BadFilesAreErrorsNamingTheFile) {
+  const auto expectError = [](const std::string& text, const std::string& needle) {
+    const std::string message = errorOf(text);
+    EXPECT_NE(message.find("bad.flame"), std::string::npos) << "no file named for: " << text << "\n" << message;
+    EXPECT_NE(message.find(needle), std::string::npos) << "expected '" << needle << "' in: " << message;
+  };
+  expectError("this is not XML at all <", "not flame XML");
+  expectError("", "not flame XML");
+  expectError("<svg><rect/></svg>", "no <flame>");
+  expectError(flameFile(""), "no transforms");
+  expectError(flameFile("<xform weight=\"0\" coefs=\"1 0 0 1 0 0\"/><xform weight=\"0\" coefs=\"1 0 0 1 0 0\"/>"),
+              "weight 0");
+  expectError(flameFile("<xform weight=\"1\" coefs=\"nan 0 0 1 0 0\"/>"), "transform 0");
+  expectError(flameFile("<xform weight=\"1\" coefs=\"1e308 0 0 1 0 0\"/>"), "beyond");
+  expectError(flameFile("<xform weight=\"1\" coefs=\"1 0 0 1 0 0\" post=\"1 0 0 1 0 inf\"/>"), "post");
+  expectError(flameFile("<xform weight=\"1\" coefs=\"1 0 0 1 0\"/>"), "6 numbers");
+  expectError(flameFile("<xform weight=\"1\"/>"), "coefs");
+  expectError(flameFile("<xform weight=\"-1\" coefs=\"1 0 0 1 0 0\"/>"), "weight");
+  expectError(flameFile("<xform weight=\"1\" linear=\"1e400\" coefs=\"1 0 0 1 0 0\"/>"), "linear");
+  expectError(flameFile("<xform weight=\"1\" linear=\"x\" coefs=\"1 0 0 1 0 0\"/>"), "not a number");
+  expectError(flameFile(kTwoXforms, "<symmetry kind=\"99\"/>"), "symmetry");
+  expectError(flameFile(kTwoXforms, "<palette count=\"256\" format=\"RGB\">00ff00</palette>"), "256 colours");
+  std::string many;
+  for (int i = 0; i < 17; ++i) many += "<xform weight=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>";
+  expectError(flameFile(many), "16");
+}
+
+TEST(FlameXml, MissingFileIsNamed) {
+  try {
+    loadFlameFile("/nonexistent/x.flame");
+    ADD_FAILURE() << "a missing file loaded";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("/nonexistent/x.flame"), std::string::npos);
+  }
+}
+
+TEST(FlameXml, FlatFlamesGainAdjustableDepth) {
+  const std::string xforms =
+      "<xform weight=\"1\" color=\"0\" spherical=\"2\" coefs=\"0.5 0 0 0.5 0.5 0\"/>"
+      "<xform weight=\"1\" color=\"0.5\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 0.5\"/>"
+      "<xform weight=\"1\" color=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 -0.5 0\"/>";
+  FlameImportOptions options;
+  options.depth = 0.5;
+  const ImportedFlame deep = readFlameXml(flameFile(xforms), "d.flame", options).flame;
+  EXPECT_TRUE(deep.depthAdded);
+  // z' = ½ z + depth · s after the variations: the spherical transform's weight 2 is divided out.
+  EXPECT_DOUBLE_EQ(deep.genome.xforms[0].affine.m[10], 0.25);
+  EXPECT_DOUBLE_EQ(deep.genome.xforms[0].affine.m[11], -0.25);
+  EXPECT_DOUBLE_EQ(deep.genome.xforms[1].affine.m[11], 0.0);
+  EXPECT_DOUBLE_EQ(deep.genome.xforms[2].affine.m[11], 0.5);
+  options.depth = 0.0;
+  const ImportedFlame flat = readFlameXml(flameFile(xforms), "d.flame", options).flame;
+  // Depth fills a volume; depth 0 lies in one plane.
+  EXPECT_GT(zSpread(deep.genome), 0.5);
+  EXPECT_LT(zSpread(flat.genome), 1e-6);
+  // A flame with a 3D variation keeps its own depth.
+  FlameGenome threeD = deep.genome;
+  threeD.xforms[0].variations = {{"spherical3D", 1.0, {}}};
+  EXPECT_FALSE(isFlatFlame(threeD));
+  EXPECT_FALSE(addFlameDepth(threeD, 0.5));
+}
+
+TEST(FlameXml, ImportedSceneIsACompletePresetThatLoadsBack) {
+  const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, hexPaletteBlock(), "gamma=\"3\""), "s.flame").flame;
+  const Scene scene = sceneFromImportedFlame(flame, defaultScene());
+  ASSERT_EQ(scene.layers.size(), 1u);
+  EXPECT_EQ(scene.layers[0].kind, PatternKind::Flame);
+  EXPECT_EQ(scene.layers[0].color.mode, ColorMode::Index);
+  EXPECT_EQ(scene.layers[0].color.gradient.size(), 256u);
+  EXPECT_EQ(scene.name, "hand");
+  EXPECT_DOUBLE_EQ(scene.tone.gamma, 3.0);
+  const Scene loaded = sceneFromJson(sceneToJson(scene), "s.json");
+  ASSERT_EQ(loaded.layers.size(), 1u);
+  EXPECT_EQ(loaded.layers[0].flame.xforms.size(), 2u);
+  EXPECT_EQ(loaded.layers[0].color.gradient.size(), 256u);
+  EXPECT_EQ(loaded.meshPath, scene.meshPath);
+}
+
+// Deterministic mutations of the Debian samples and the hand-written files: bytes flipped,
+// deleted and inserted, and attribute values replaced by hostile numbers. Each case either
+// imports (and then plays a few chaos-game steps and round-trips as a preset) or throws
+// core::Error; never anything else, and the whole run takes seconds.
+TEST(FlameXml, FuzzedFlameFilesNeverCrashOrHang) {
+  std::vector<std::string> bases = {
+      flameFile(kTwoXforms),
+      flameFile(kTwoXforms, "<symmetry kind=\"-4\"/>" + hexPaletteBlock(), "gamma=\"3\" background=\"0 0 0.2\""),
+      flameFile("<xform weight=\"0.5\" color=\"0\" swirl=\"1\" julia=\"0.5\" coefs=\"0.6 0.2 -0.2 0.6 0 0.1\" "
+                "post=\"1 0 0 1 0.1 0\" symmetry=\"0.2\" opacity=\"0.5\"/>"
+                "<xform weight=\"0.5\" color=\"1\" sinusoidal=\"1\" unknownvar=\"1\" coefs=\"0.5 0 0 0.5 0.3 0\"/>"
+                "<finalxform spherical=\"1\" coefs=\"1 0 0 1 0 0\"/>"
+                "<color index=\"0\" rgb=\"10 20 30\"/><color index=\"255\" rgb=\"200 100 50\"/>"),
+  };
+  for (const auto& sample : debianSamples()) bases.push_back(readText(sample));
+  bases.push_back(readText(voxflame::test::sourcePath("tests/data/flam3_random_genomes.flam3")));
+  const std::vector<std::string> hostile = {"nan", "inf",  "-inf", "1e308", "-1e308", "1e-320",      "0", "-0",
+                                            "1e6", "-1e7", "abc",  "",      "1 2",    "99999999999", "-3"};
+  const std::string alphabet = "<>/=\"' abcdefgxyz0123456789.-e\n&;!?[]";
+  std::uint64_t state = 0x5eed;
+  const auto next = [&] {
+    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return static_cast<std::size_t>(state >> 33);
+  };
+  FlameImportOptions options;
+  options.paletteTable = kFlam3PaletteTable;
+  const auto start = std::chrono::steady_clock::now();
+  int imported = 0, refused = 0;
+  constexpr int kCases = 20000;
+  for (int round = 0; round < kCases; ++round) {
+    std::string text = bases[static_cast<std::size_t>(round) % bases.size()];
+    const int edits = 1 + static_cast<int>(next() % 4);
+    for (int e = 0; e < edits; ++e) {
+      if (text.empty()) text = "<";
+      const std::size_t at = next() % text.size();
+      switch (next() % 4) {
+        case 0:
+          text[at] = alphabet[next() % alphabet.size()];
+          break;
+        case 1:
+          text.erase(at, 1 + next() % 12);
+          break;
+        case 2:
+          text.insert(at, 1, alphabet[next() % alphabet.size()]);
+          break;
+        default: {
+          // Replace the value of the attribute at or after `at`.
+          const std::size_t open = text.find("=\"", at);
+          if (open == std::string::npos) break;
+          const std::size_t close = text.find('"', open + 2);
+          if (close == std::string::npos) break;
+          text.replace(open + 2, close - open - 2, hostile[next() % hostile.size()]);
+        }
+      }
+    }
+    options.index = next() % 3;
+    try {
+      const FlameFileContents contents = readFlameXml(text, "fuzz.flame", options);
+      ++imported;
+      const Scene scene = sceneFromImportedFlame(contents.flame, defaultScene());
+      sceneFromJson(sceneToJson(scene), "fuzz.json");      // whatever imports is a valid preset
+      if (round % 8 == 0) zSpread(contents.flame.genome);  // and iterates without trouble
+    } catch (const Error&) {
+      ++refused;
+    }
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_GT(imported, kCases / 20) << "the mutations should leave many files importable";
+  EXPECT_GT(refused, kCases / 20);
+  EXPECT_LT(seconds, 120.0);  // about 3 s in a Release build; sanitizer builds are slower
+}
