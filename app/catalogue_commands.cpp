@@ -1,5 +1,5 @@
-// `voxflame list`, `voxflame info` and `voxflame search`: the attractor catalogue, the chaos
-// diagnostics of one parameter set, and the chaos search, from the command line.
+// `voxflame list`, `voxflame info` and `voxflame search`: the attractor and flame-variation
+// catalogues, the chaos diagnostics of one parameter set, and the chaos search, from the command line.
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -10,6 +10,7 @@
 #include "arguments.h"
 #include "commands.h"
 #include "core/attractor.h"
+#include "core/flame_variations.h"
 #include "core/lyapunov.h"
 
 namespace voxflame::app {
@@ -118,12 +119,60 @@ std::string padToColumns(const std::string& text, std::size_t columns) {
   return text + std::string(columns > shown ? columns - shown : 1, ' ');
 }
 
+// `voxflame list --variations`: the flame variation catalogue as text, JSON or Markdown (the last
+// is presets/VARIATIONS.md).
+int listVariations(bool asJson, bool asMarkdown) {
+  if (asMarkdown) {
+    std::cout << core::variationsMarkdown();
+    return 0;
+  }
+  if (asJson) {
+    json list = json::array();
+    for (const auto& info : core::variationCatalogue()) {
+      json params = json::array();
+      for (const auto& p : info.params)
+        params.push_back({{"name", p.name},
+                          {"default", p.defaultValue},
+                          {"min", p.sliderMin},
+                          {"max", p.sliderMax},
+                          {"integer", p.integer}});
+      list.push_back({{"name", info.name},
+                      {"dimensions", info.threeD ? "3D" : "2D"},
+                      {"random", info.random},
+                      {"parameters", params},
+                      {"formula", info.formula}});
+    }
+    std::cout << list.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << padToColumns("NAME", 15) << padToColumns("KIND", 11) << "PARAMETERS (defaults)\n"
+            << padToColumns("", 15) << padToColumns("", 11) << "FORMULA\n";
+  for (const auto& info : core::variationCatalogue()) {
+    std::string params;
+    for (const auto& p : info.params) {
+      std::ostringstream value;
+      value << p.defaultValue;
+      params += (params.empty() ? "" : " ") + p.name + "=" + value.str();
+    }
+    std::cout << padToColumns(info.name, 15)
+              << padToColumns(std::string(info.threeD ? "3D" : "2D") + (info.random ? " random" : ""), 11)
+              << (params.empty() ? "-" : params) << "\n"
+              << padToColumns("", 15) << padToColumns("", 11) << info.formula << "\n";
+  }
+  return 0;
+}
+
 }  // namespace
 
 int listCommand(const CommandArgs& args) {
-  Arguments arguments(args, 2, {"--json"});
+  Arguments arguments(args, 2, {"--json", "--variations", "--markdown"});
   const bool asJson = arguments.flag("--json");
+  const bool variations = arguments.flag("--variations");
+  const bool asMarkdown = arguments.flag("--markdown");
   arguments.finish(0);
+  if (asMarkdown && !variations) throw UsageError("--markdown lists the variations: use list --variations --markdown");
+  if (asMarkdown && asJson) throw UsageError("choose one of --json and --markdown");
+  if (variations) return listVariations(asJson, asMarkdown);
   if (asJson) {
     json list = json::array();
     for (const auto& info : core::attractorCatalogue()) {

@@ -74,4 +74,8 @@ const std::vector<VariationInfo>& variationCatalogue();
 const VariationInfo* findVariation(std::string_view name);     // nullptr when unknown
 const VariationInfo& variationOrThrow(std::string_view name);  // core::Error naming close matches
 
+// presets/VARIATIONS.md: the catalogue as a Markdown table (name, 2D/3D, parameters with defaults
+// and slider ranges, formula). A test keeps the committed file equal to this text.
+std::string variationsMarkdown();
+
 }  // namespace voxflame::core
