@@ -35,8 +35,11 @@ constexpr std::size_t kAffineC = 3;  // t0
 constexpr std::size_t kAffineE = 5;  // m11
 constexpr std::size_t kAffineF = 7;  // t1
 
-// The arrays of a variation call as restrict-qualified locals: GCC vectorises loops over
-// parameters it knows do not alias.
+// The arrays of a variation call as restrict-qualified locals: GCC vectorises loops over arrays it
+// knows do not alias. The outputs must carry `__restrict` in the function's own parameters too:
+// GCC 12 does not vectorise stores through a restrict local copied from an unqualified parameter
+// (it left even `linear` scalar). Loops that call sin, cos, atan2 or pow stay scalar, as libm has
+// no vector variants without -ffast-math; those without such calls vectorise.
 #define VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz) \
   const double* __restrict x = (in).x;           \
   const double* __restrict y = (in).y;           \
@@ -58,7 +61,7 @@ constexpr std::size_t kAffineF = 7;  // t1
 
 // ---- flam3's classics: x and y mapped, z carried through -------------------------------------
 
-void linear(const VariationInput& in, double* ox, double* oy, double* oz) {
+void linear(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     outX[i] += w * x[i];
@@ -67,7 +70,7 @@ void linear(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void sinusoidal(const VariationInput& in, double* ox, double* oy, double* oz) {
+void sinusoidal(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     outX[i] += w * std::sin(x[i]);
@@ -76,7 +79,7 @@ void sinusoidal(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void spherical(const VariationInput& in, double* ox, double* oy, double* oz) {
+void spherical(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double s = w / (x[i] * x[i] + y[i] * y[i] + kEpsilon);
@@ -86,7 +89,7 @@ void spherical(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void swirl(const VariationInput& in, double* ox, double* oy, double* oz) {
+void swirl(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double r2 = x[i] * x[i] + y[i] * y[i];
@@ -97,7 +100,7 @@ void swirl(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void horseshoe(const VariationInput& in, double* ox, double* oy, double* oz) {
+void horseshoe(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double s = w / (std::sqrt(x[i] * x[i] + y[i] * y[i]) + kFlam3Eps);
@@ -107,7 +110,7 @@ void horseshoe(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void polar(const VariationInput& in, double* ox, double* oy, double* oz) {
+void polar(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     outX[i] += w * std::atan2(x[i], y[i]) / kPi;
@@ -116,7 +119,7 @@ void polar(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void handkerchief(const VariationInput& in, double* ox, double* oy, double* oz) {
+void handkerchief(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double theta = std::atan2(x[i], y[i]);
@@ -127,7 +130,7 @@ void handkerchief(const VariationInput& in, double* ox, double* oy, double* oz) 
   }
 }
 
-void heart(const VariationInput& in, double* ox, double* oy, double* oz) {
+void heart(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double r = std::sqrt(x[i] * x[i] + y[i] * y[i]);
@@ -138,7 +141,7 @@ void heart(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void disc(const VariationInput& in, double* ox, double* oy, double* oz) {
+void disc(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double a = std::atan2(x[i], y[i]) / kPi;
@@ -149,7 +152,7 @@ void disc(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void spiral(const VariationInput& in, double* ox, double* oy, double* oz) {
+void spiral(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double rawR = std::sqrt(x[i] * x[i] + y[i] * y[i]);
@@ -162,7 +165,7 @@ void spiral(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void hyperbolic(const VariationInput& in, double* ox, double* oy, double* oz) {
+void hyperbolic(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double rawR = std::sqrt(x[i] * x[i] + y[i] * y[i]);
@@ -174,7 +177,7 @@ void hyperbolic(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void diamond(const VariationInput& in, double* ox, double* oy, double* oz) {
+void diamond(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double r = std::sqrt(x[i] * x[i] + y[i] * y[i]);
@@ -185,7 +188,7 @@ void diamond(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void ex(const VariationInput& in, double* ox, double* oy, double* oz) {
+void ex(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double theta = std::atan2(x[i], y[i]);
@@ -198,7 +201,7 @@ void ex(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void julia(const VariationInput& in, double* ox, double* oy, double* oz) {
+void julia(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double angle = 0.5 * std::atan2(x[i], y[i]) + (laneUniform(rnd[i]) < 0.5 ? 0.0 : kPi);
@@ -209,7 +212,7 @@ void julia(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void bent(const VariationInput& in, double* ox, double* oy, double* oz) {
+void bent(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     outX[i] += w * (x[i] < 0.0 ? 2.0 * x[i] : x[i]);
@@ -218,7 +221,7 @@ void bent(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void waves(const VariationInput& in, double* ox, double* oy, double* oz) {
+void waves(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double b = in.affine[kAffineB], c = in.affine[kAffineC];
   const double e = in.affine[kAffineE], f = in.affine[kAffineF];
@@ -230,7 +233,7 @@ void waves(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void fisheye(const VariationInput& in, double* ox, double* oy, double* oz) {
+void fisheye(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double s = 2.0 * w / (std::sqrt(x[i] * x[i] + y[i] * y[i]) + 1.0);
@@ -240,7 +243,7 @@ void fisheye(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void popcorn(const VariationInput& in, double* ox, double* oy, double* oz) {
+void popcorn(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double c = in.affine[kAffineC], f = in.affine[kAffineF];
   for (std::size_t i = 0; i < n; ++i) {
@@ -250,7 +253,7 @@ void popcorn(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void exponential(const VariationInput& in, double* ox, double* oy, double* oz) {
+void exponential(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double d = w * std::exp(x[i] - 1.0);
@@ -261,7 +264,7 @@ void exponential(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void power(const VariationInput& in, double* ox, double* oy, double* oz) {
+void power(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double r = std::sqrt(x[i] * x[i] + y[i] * y[i]);
@@ -273,7 +276,7 @@ void power(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void cosine(const VariationInput& in, double* ox, double* oy, double* oz) {
+void cosine(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double a = kPi * x[i];
@@ -283,7 +286,7 @@ void cosine(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void rings(const VariationInput& in, double* ox, double* oy, double* oz) {
+void rings(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double c = in.affine[kAffineC];
   const double dx = c * c + kFlam3Eps;
@@ -297,7 +300,7 @@ void rings(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void fan(const VariationInput& in, double* ox, double* oy, double* oz) {
+void fan(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double c = in.affine[kAffineC], f = in.affine[kAffineF];
   const double dx = kPi * (c * c + kFlam3Eps);
@@ -312,7 +315,7 @@ void fan(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void blob(const VariationInput& in, double* ox, double* oy, double* oz) {
+void blob(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double low = P[0], high = P[1], wavesCount = P[2];
   for (std::size_t i = 0; i < n; ++i) {
@@ -326,7 +329,7 @@ void blob(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void pdj(const VariationInput& in, double* ox, double* oy, double* oz) {
+void pdj(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double a = P[0], b = P[1], c = P[2], d = P[3];
   for (std::size_t i = 0; i < n; ++i) {
@@ -336,7 +339,7 @@ void pdj(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void fan2(const VariationInput& in, double* ox, double* oy, double* oz) {
+void fan2(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double dy = P[1];
   const double dx = kPi * (P[0] * P[0] + kFlam3Eps);
@@ -352,7 +355,7 @@ void fan2(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void rings2(const VariationInput& in, double* ox, double* oy, double* oz) {
+void rings2(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double dx = P[0] * P[0] + kFlam3Eps;
   for (std::size_t i = 0; i < n; ++i) {
@@ -365,7 +368,7 @@ void rings2(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void eyefish(const VariationInput& in, double* ox, double* oy, double* oz) {
+void eyefish(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double s = 2.0 * w / (std::sqrt(x[i] * x[i] + y[i] * y[i]) + 1.0);
@@ -375,7 +378,7 @@ void eyefish(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void bubble(const VariationInput& in, double* ox, double* oy, double* oz) {
+void bubble(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double s = w / (0.25 * (x[i] * x[i] + y[i] * y[i]) + 1.0);
@@ -385,7 +388,7 @@ void bubble(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void cylinder(const VariationInput& in, double* ox, double* oy, double* oz) {
+void cylinder(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     outX[i] += w * std::sin(x[i]);
@@ -394,7 +397,7 @@ void cylinder(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void perspective(const VariationInput& in, double* ox, double* oy, double* oz) {
+void perspective(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double angle = P[0] * kPi / 2.0, dist = P[1];
   const double vsin = std::sin(angle), vfcos = dist * std::cos(angle);
@@ -406,7 +409,7 @@ void perspective(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void noise(const VariationInput& in, double* ox, double* oy, double* oz) {
+void noise(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double a = kTwoPi * laneUniform(rnd[i]);
@@ -417,7 +420,7 @@ void noise(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void julian(const VariationInput& in, double* ox, double* oy, double* oz) {
+void julian(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double powerN = countParam(P[0]);
   const double rootCount = std::abs(powerN);
@@ -432,7 +435,7 @@ void julian(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void juliascope(const VariationInput& in, double* ox, double* oy, double* oz) {
+void juliascope(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double powerN = countParam(P[0]);
   const double rootCount = std::abs(powerN);
@@ -449,7 +452,7 @@ void juliascope(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void blur(const VariationInput& in, double* ox, double* oy, double* oz) {
+void blur(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double a = kTwoPi * laneUniform(rnd[i]);
@@ -466,7 +469,7 @@ void blur(const VariationInput& in, double* ox, double* oy, double* oz) {
   return a + b + c + d - 2.0;
 }
 
-void gaussianBlur(const VariationInput& in, double* ox, double* oy, double* oz) {
+void gaussianBlur(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double a = kTwoPi * laneUniform(rnd[i]);
@@ -477,7 +480,7 @@ void gaussianBlur(const VariationInput& in, double* ox, double* oy, double* oz) 
   }
 }
 
-void radialBlur(const VariationInput& in, double* ox, double* oy, double* oz) {
+void radialBlur(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double angle = P[0] * kPi / 2.0;
   const double spin = std::sin(angle), zoom = std::cos(angle);
@@ -493,7 +496,7 @@ void radialBlur(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void pie(const VariationInput& in, double* ox, double* oy, double* oz) {
+void pie(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double slices = countParam(P[0]), rotation = P[1], thickness = P[2];
   for (std::size_t i = 0; i < n; ++i) {
@@ -506,7 +509,7 @@ void pie(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void ngon(const VariationInput& in, double* ox, double* oy, double* oz) {
+void ngon(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double sides = countParam(P[0]), halfPower = P[1] / 2.0, circle = P[2], corners = P[3];
   const double b = kTwoPi / sides;
@@ -522,7 +525,7 @@ void ngon(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void curl(const VariationInput& in, double* ox, double* oy, double* oz) {
+void curl(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double c1 = P[0], c2 = P[1];
   for (std::size_t i = 0; i < n; ++i) {
@@ -535,7 +538,7 @@ void curl(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void rectangles(const VariationInput& in, double* ox, double* oy, double* oz) {
+void rectangles(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double rx = P[0], ry = P[1];
   // A zero size leaves that axis linear; the division by it is computed and then not selected.
@@ -551,7 +554,7 @@ void rectangles(const VariationInput& in, double* ox, double* oy, double* oz) {
 
 // ---- 3D variations ---------------------------------------------------------------------------
 
-void spherical3D(const VariationInput& in, double* ox, double* oy, double* oz) {
+void spherical3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double s = w / (x[i] * x[i] + y[i] * y[i] + z[i] * z[i] + kEpsilon);
@@ -561,7 +564,7 @@ void spherical3D(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void julia3D(const VariationInput& in, double* ox, double* oy, double* oz) {
+void julia3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double powerN = countParam(P[0]);
   const double absPower = std::abs(powerN);
@@ -581,7 +584,7 @@ void julia3D(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void julia3Dz(const VariationInput& in, double* ox, double* oy, double* oz) {
+void julia3Dz(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double powerN = countParam(P[0]);
   const double absPower = std::abs(powerN);
@@ -600,7 +603,7 @@ void julia3Dz(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void bubble3D(const VariationInput& in, double* ox, double* oy, double* oz) {
+void bubble3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double d = 0.25 * (x[i] * x[i] + y[i] * y[i]) + 1.0;
@@ -611,7 +614,7 @@ void bubble3D(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void hemisphere(const VariationInput& in, double* ox, double* oy, double* oz) {
+void hemisphere(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double s = w / std::sqrt(x[i] * x[i] + y[i] * y[i] + 1.0);
@@ -621,7 +624,7 @@ void hemisphere(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void cylinder3D(const VariationInput& in, double* ox, double* oy, double* oz) {
+void cylinder3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double radius = std::clamp(P[0], 0.0, 0.5), halfHeight = std::clamp(P[1], 0.0, 0.5);
   for (std::size_t i = 0; i < n; ++i) {
@@ -634,7 +637,7 @@ void cylinder3D(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void sinusoidal3D(const VariationInput& in, double* ox, double* oy, double* oz) {
+void sinusoidal3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     outX[i] += w * std::sin(x[i]);
@@ -643,7 +646,7 @@ void sinusoidal3D(const VariationInput& in, double* ox, double* oy, double* oz) 
   }
 }
 
-void swirl3D(const VariationInput& in, double* ox, double* oy, double* oz) {
+void swirl3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double r2 = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
@@ -654,7 +657,7 @@ void swirl3D(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void curl3D(const VariationInput& in, double* ox, double* oy, double* oz) {
+void curl3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double cx = P[0], cy = P[1], cz = P[2];
   const double c2 = cx * cx + cy * cy + cz * cz;
@@ -667,7 +670,7 @@ void curl3D(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void pie3D(const VariationInput& in, double* ox, double* oy, double* oz) {
+void pie3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double slices = countParam(P[0]), rotation = P[1], thickness = P[2];
   for (std::size_t i = 0; i < n; ++i) {
@@ -680,7 +683,7 @@ void pie3D(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void blur3D(const VariationInput& in, double* ox, double* oy, double* oz) {
+void blur3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double a = kTwoPi * laneUniform(rnd[i]);
@@ -692,22 +695,22 @@ void blur3D(const VariationInput& in, double* ox, double* oy, double* oz) {
   }
 }
 
-void zblur(const VariationInput& in, double* ox, double* oy, double* oz) {
+void zblur(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) outZ[i] += w * laneGauss(rnd[i]);
 }
 
-void zscale(const VariationInput& in, double* ox, double* oy, double* oz) {
+void zscale(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) outZ[i] += w * z[i];
 }
 
-void ztranslate(const VariationInput& in, double* ox, double* oy, double* oz) {
+void ztranslate(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) outZ[i] += w;
 }
 
-void zcone(const VariationInput& in, double* ox, double* oy, double* oz) {
+void zcone(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) outZ[i] += w * std::sqrt(x[i] * x[i] + y[i] * y[i]);
 }
