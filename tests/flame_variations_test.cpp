@@ -18,8 +18,11 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/chaos_game.h"
 #include "core/error.h"
 #include "core/flame_variations.h"
+#include "core/random.h"
+#include "core/scene.h"
 
 using namespace voxflame::core;
 
@@ -537,6 +540,66 @@ TEST(VariationCatalogue, DefaultsGiveFiniteResultsInTheUnitCube) {
     for (std::size_t i = 0; i < lanes; ++i)
       if (!std::isfinite(ox[i]) || !std::isfinite(oy[i]) || !std::isfinite(oz[i])) ++bad;
     EXPECT_EQ(bad, 0u) << info.name;
+  }
+}
+
+// Runs a flame layer whose transforms (and final transform) use `name` at `weight` through the
+// chaos game the way the accumulator does: a lane whose drawn point is not finite (NaN is the
+// game's escape signal; a final transform may also overflow) starts again from a fresh seed.
+struct ChaosRun {
+  double finiteShare = 0.0;      // of all drawn points
+  bool statesStayUsable = true;  // after each step's reseeding: every lane finite, generator ≠ 0
+};
+
+ChaosRun runInTheChaosGame(const std::string& name, double weight) {
+  const VariationInfo& info = variationOrThrow(name);
+  PatternLayer layer;
+  layer.kind = PatternKind::Flame;
+  layer.attractor.clear();
+  FlameXform a, b;
+  a.affine.m = {0.5, -0.2, 0.0, 0.3, 0.2, 0.5, 0.0, 0.1, 0.0, 0.0, 0.5, -0.2};
+  a.variations = {{name, weight, info.defaultParams()}};
+  a.color = 0.0;
+  b.affine.m = {0.4, 0.1, 0.1, -0.4, -0.1, 0.4, 0.0, 0.2, 0.0, 0.1, 0.4, 0.3};
+  b.variations = {{name, 0.5 * weight, info.defaultParams()}, {"linear3D", 0.5, {}}};
+  b.color = 1.0;
+  layer.flame.xforms = {a, b};
+  layer.flame.hasFinal = true;
+  layer.flame.finalXform.variations = {{name, 0.3 * weight, info.defaultParams()}, {"linear3D", 0.7, {}}};
+  const ChaosGame game(layer, "layers[0]");
+  constexpr std::size_t kLanes = 128;
+  ChaosLanes lanes;
+  lanes.resize(kLanes);
+  SplitMix64 rng(7);
+  for (std::size_t i = 0; i < kLanes; ++i) game.seedLane(lanes, i, rng);
+  std::vector<double> x(kLanes), y(kLanes), z(kLanes), color(kLanes);
+  std::size_t finite = 0, drawn = 0;
+  ChaosRun run;
+  for (int step = 0; step < 200; ++step) {
+    game.step(lanes, x.data(), y.data(), z.data(), color.data(), kLanes);
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      ++drawn;
+      if (std::isfinite(x[i]) && std::isfinite(y[i]) && std::isfinite(z[i]))
+        ++finite;
+      else
+        game.seedLane(lanes, i, rng);
+      run.statesStayUsable = run.statesStayUsable && std::isfinite(lanes.x[i]) && std::isfinite(lanes.y[i]) &&
+                             std::isfinite(lanes.z[i]) && lanes.random[i] != 0u;
+    }
+  }
+  run.finiteShare = static_cast<double>(finite) / static_cast<double>(drawn);
+  return run;
+}
+
+// At its defaults every variation draws points; at weight 1e6 most overflow or turn NaN, and
+// reseeding keeps every lane usable: the game never sticks on a bad state.
+TEST(VariationCatalogue, EveryVariationRunsInTheChaosGameAndEscapesReseed) {
+  for (const VariationInfo& info : variationCatalogue()) {
+    const ChaosRun normal = runInTheChaosGame(info.name, 1.0);
+    EXPECT_GT(normal.finiteShare, 0.5) << info.name;
+    EXPECT_TRUE(normal.statesStayUsable) << info.name;
+    const ChaosRun wild = runInTheChaosGame(info.name, 1e6);
+    EXPECT_TRUE(wild.statesStayUsable) << info.name << " at weight 1e6";
   }
 }
 
