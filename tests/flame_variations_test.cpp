@@ -41,7 +41,11 @@ struct PointCase {
 };
 
 // Every variation at (0.3, −0.7, 0.5) with weight 0.8 and default parameters, then second points
-// where a branch, a parameter or a guard matters.
+// where a branch, a parameter or a guard matters. At the first point r² = 0.58, r = 0.76157731,
+// θ = atan2(0.3, −0.7) = 2.73670087, φ = atan2(−0.7, 0.3) = −1.16590454, sin θ = 0.3/r, cos θ = −0.7/r,
+// and a 2D variation's z is 0.8 · 0.5 = 0.4. For example spherical: 0.8 · (0.3, −0.7) / 0.58 =
+// (0.413793, −0.965517); eyefish: 2 · 0.8 / (r + 1) = 0.908277 times (0.3, −0.7); fisheye swaps
+// those two; bubble: 0.8 / (0.58/4 + 1) = 0.698690 times (0.3, −0.7); zcone: 0.8 r = 0.609262.
 const std::vector<PointCase>& pointCases() {
   static const std::vector<PointCase> cases = {
       {"linear", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.24, -0.5599999999999999, 0.4}},

@@ -779,9 +779,9 @@ std::vector<VariationInfo> buildCatalogue() {
   add("perspective", "dist (x, y cos β) / (dist − y sin β), z; β = angle·π/2", k2D, kFixed, &perspective,
       {{"angle", 0.5, -1.0, 1.0}, {"dist", 2.0, 0.5, 5.0}});
   add("noise", "Ψ₂ (x cos 2πΨ₁, y sin 2πΨ₁), z", k2D, kRandom, &noise);
-  add("julian", "r^(2·dist/power)·(cos α, sin α), z; α = (φ + 2πk)/power, k = trunc(|power|·Ψ)", k2D, kRandom, &julian,
+  add("julian", "r^(dist/power)·(cos α, sin α), z; α = (φ + 2πk)/power, k = trunc(|power|·Ψ)", k2D, kRandom, &julian,
       {count("power", 4.0, -12.0, 12.0), {"dist", 1.0, -3.0, 3.0}});
-  add("juliascope", "r^(2·dist/power)·(cos α, sin α), z; α = (2πk ± φ)/power, k = trunc(|power|·Ψ), − for odd k", k2D,
+  add("juliascope", "r^(dist/power)·(cos α, sin α), z; α = (2πk ± φ)/power, k = trunc(|power|·Ψ), − for odd k", k2D,
       kRandom, &juliascope, {count("power", 4.0, -12.0, 12.0), {"dist", 1.0, -3.0, 3.0}});
   add("blur", "Ψ₂ (cos 2πΨ₁, sin 2πΨ₁), z", k2D, kRandom, &blur);
   add("gaussian_blur", "G (cos 2πΨ, sin 2πΨ), z; G = Ψ + Ψ + Ψ + Ψ − 2", k2D, kRandom, &gaussianBlur);
@@ -810,11 +810,11 @@ std::vector<VariationInfo> buildCatalogue() {
       "α = (φ + 2πk)/power, k = trunc(|power|·Ψ); power −1 is spherical3D (as JWildfire)",
       k3D, kRandom, &julia3D, {count("power", 3.0, -8.0, 8.0)});
   add("julia3Dz",
-      "(x² + y²)^(1/2power) (cos α, sin α, z/(|power| √(x² + y²))); α as julia3D; power ±2 adds JWildfire's "
+      "(x² + y²)^(1/(2·power)) (cos α, sin α, z/(|power| √(x² + y²))); α as julia3D; power ±2 adds JWildfire's "
       "second z term, power −1 is (x, y, z)/(x² + y²)",
       k3D, kRandom, &julia3Dz, {count("power", 3.0, -8.0, 8.0)});
-  add("bubble3D", "((x, y), 2 − d) / d with d = r²/4 + 1 (JWildfire's bubble: a sphere of radius 2 … 1)", k3D, kFixed,
-      &bubble3D);
+  add("bubble3D", "(x, y, 2 − d) / d, d = r²/4 + 1: the plane wrapped onto the unit sphere (JWildfire's bubble)", k3D,
+      kFixed, &bubble3D);
   add("hemisphere", "(x, y, 1) / √(r² + 1)", k3D, kFixed, &hemisphere);
   add("cylinder3D",
       "a random point of the solid cylinder of radius d and half-height H about the y axis: (ρ cos 2πΨ₁, "
