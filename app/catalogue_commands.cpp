@@ -1,6 +1,6 @@
-// `voxflame list`, `voxflame info` and `voxflame search`: the attractor catalogue, the chaos
-// diagnostics of one parameter set, and the chaos search, from the command line. A flame or
-// quaternion Julia preset gets the fill test and the search of flame_search.h instead.
+// `voxflame list`, `voxflame info` and `voxflame search`: the attractor and flame-variation
+// catalogues, the chaos diagnostics of one parameter set, and the chaos search, from the command
+// line. A flame or quaternion Julia preset gets the fill test and the search of flame_search.h instead.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -15,6 +15,7 @@
 #include "commands.h"
 #include "core/attractor.h"
 #include "core/flame_search.h"
+#include "core/flame_variations.h"
 #include "core/lyapunov.h"
 #include "core/scene.h"
 
@@ -247,12 +248,60 @@ int chaosSearch(core::Scene scene, const core::FlameSearchOptions& options, bool
   return 0;
 }
 
+// `voxflame list --variations`: the flame variation catalogue as text, JSON or Markdown (the last
+// is presets/VARIATIONS.md).
+int listVariations(bool asJson, bool asMarkdown) {
+  if (asMarkdown) {
+    std::cout << core::variationsMarkdown();
+    return 0;
+  }
+  if (asJson) {
+    json list = json::array();
+    for (const auto& info : core::variationCatalogue()) {
+      json params = json::array();
+      for (const auto& p : info.params)
+        params.push_back({{"name", p.name},
+                          {"default", p.defaultValue},
+                          {"min", p.sliderMin},
+                          {"max", p.sliderMax},
+                          {"integer", p.integer}});
+      list.push_back({{"name", info.name},
+                      {"dimensions", info.threeD ? "3D" : "2D"},
+                      {"random", info.random},
+                      {"parameters", params},
+                      {"formula", info.formula}});
+    }
+    std::cout << list.dump(2) << "\n";
+    return 0;
+  }
+  std::cout << padToColumns("NAME", 15) << padToColumns("KIND", 11) << "PARAMETERS (defaults)\n"
+            << padToColumns("", 15) << padToColumns("", 11) << "FORMULA\n";
+  for (const auto& info : core::variationCatalogue()) {
+    std::string params;
+    for (const auto& p : info.params) {
+      std::ostringstream value;
+      value << p.defaultValue;
+      params += (params.empty() ? "" : " ") + p.name + "=" + value.str();
+    }
+    std::cout << padToColumns(info.name, 15)
+              << padToColumns(std::string(info.threeD ? "3D" : "2D") + (info.random ? " random" : ""), 11)
+              << (params.empty() ? "-" : params) << "\n"
+              << padToColumns("", 15) << padToColumns("", 11) << info.formula << "\n";
+  }
+  return 0;
+}
+
 }  // namespace
 
 int listCommand(const CommandArgs& args) {
-  Arguments arguments(args, 2, {"--json"});
+  Arguments arguments(args, 2, {"--json", "--variations", "--markdown"});
   const bool asJson = arguments.flag("--json");
+  const bool variations = arguments.flag("--variations");
+  const bool asMarkdown = arguments.flag("--markdown");
   arguments.finish(0);
+  if (asMarkdown && !variations) throw UsageError("--markdown lists the variations: use list --variations --markdown");
+  if (asMarkdown && asJson) throw UsageError("choose one of --json and --markdown");
+  if (variations) return listVariations(asJson, asMarkdown);
   if (asJson) {
     json list = json::array();
     for (const auto& info : core::attractorCatalogue()) {

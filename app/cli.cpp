@@ -50,6 +50,9 @@ usage:
       --video encodes the frames with ffmpeg when it is installed.
   voxflame list [--json]
       The attractor catalogue: ids, kinds, parameters with defaults.
+  voxflame list --variations [--json | --markdown]
+      The flame variation catalogue: names, 2D/3D, parameters with defaults, formulas
+      (--markdown writes presets/VARIATIONS.md).
   voxflame info [PRESET.json] [--attractor ID] [--set NAME] [--param NAME=VALUE]...
                 [--integrator euler|rk4] [--step H] [--json]
       Boundedness, Lyapunov exponents (largest first) and dimension of one parameter set;

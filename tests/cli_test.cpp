@@ -11,6 +11,7 @@
 
 #include "core/attractor.h"
 #include "core/flame.h"
+#include "core/flame_variations.h"
 #include "core/image_io.h"
 #include "core/scene.h"
 #include "core/scene_io.h"
@@ -210,6 +211,50 @@ TEST(Cli, ListJsonIsTheCatalogue) {
   EXPECT_GT(checked, 10);
   EXPECT_GE(nonAscii, 3) << "the catalogue's names with accents and dashes are among the rows";
   EXPECT_NE(runVoxflame("list --frobnicate").exitStatus, 0);
+}
+
+TEST(Cli, ListVariationsGivesTheFlameCatalogueAsTextJsonAndMarkdown) {
+  const auto result = runVoxflame("list --variations --json");
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  const auto list = nlohmann::json::parse(result.output);
+  ASSERT_TRUE(list.is_array());
+  EXPECT_EQ(list.size(), voxflame::core::variationCatalogue().size());
+  EXPECT_GE(list.size(), 40u);
+  bool sawJulian = false, sawCurl3D = false;
+  for (const auto& entry : list) {
+    EXPECT_TRUE(entry.contains("name") && entry.contains("dimensions") && entry.contains("formula") &&
+                entry.contains("random") && entry["parameters"].is_array())
+        << entry.dump();
+    if (entry["name"] == "julian") {
+      sawJulian = true;
+      EXPECT_EQ(entry["dimensions"], "2D");
+      EXPECT_EQ(entry["random"], true);
+      EXPECT_EQ(entry["parameters"][0]["name"], "power");
+      EXPECT_EQ(entry["parameters"][0]["integer"], true);
+      EXPECT_EQ(entry["parameters"][1]["name"], "dist");
+    }
+    if (entry["name"] == "curl3D") {
+      sawCurl3D = true;
+      EXPECT_EQ(entry["dimensions"], "3D");
+      EXPECT_EQ(entry["parameters"].size(), 3u);
+    }
+  }
+  EXPECT_TRUE(sawJulian);
+  EXPECT_TRUE(sawCurl3D);
+
+  const auto table = runVoxflame("list --variations");
+  ASSERT_EQ(table.exitStatus, 0) << table.output;
+  EXPECT_NE(table.output.find("julian"), std::string::npos);
+  EXPECT_NE(table.output.find("power=4 dist=1"), std::string::npos) << table.output;
+  EXPECT_NE(table.output.find("(x sin r² − y cos r², x cos r² + y sin r², z)"), std::string::npos);
+
+  const auto markdown = runVoxflame("list --variations --markdown");
+  ASSERT_EQ(markdown.exitStatus, 0) << markdown.output;
+  EXPECT_EQ(markdown.output, voxflame::core::variationsMarkdown());
+
+  const auto misused = runVoxflame("list --markdown");
+  EXPECT_NE(misused.exitStatus, 0);
+  EXPECT_NE(misused.output.find("--variations"), std::string::npos) << misused.output;
 }
 
 TEST(Cli, InfoJsonGivesBoundednessAndLyapunovLargestFirst) {

@@ -661,6 +661,9 @@ TEST_F(ExplorerFlameUi, VariationsAreAddedWeightedAndRemoved) {
     if (!info.params.empty() && !withParams) withParams = &info;
   if (!withParams) GTEST_SKIP() << "the catalogue has no variation with parameters yet";
   click("layer0/xform/add variation");
+  // The list is longer than its popup: filter it to the name, as a user would type it.
+  ImGui::GetIO().AddInputCharactersUTF8(withParams->name.c_str());  // the filter has the keyboard focus
+  frame(2);
   click("layer0/xform/add/" + withParams->name);
   ASSERT_EQ(flame().xforms[0].variations.back().name, withParams->name);
   EXPECT_EQ(flame().xforms[0].variations.back().params, withParams->defaultParams());

@@ -11,6 +11,9 @@
 // b = m01, c = t0, d = m10, e = m11, f = t1). A 2D variation maps x and y and carries z through
 // (adds weight · z to z), which is what Apophysis 3D and JWildfire do. Ψ is a uniform random
 // number in [0, 1) drawn from the lane's own generator (laneUniform), so lanes never share a draw.
+// ε is flam3's 1e-10, added exactly where flam3 adds it, so imported flames draw as in flam3; where
+// flam3 divides by r unguarded (sin θ = x / r), a far smaller guard keeps the origin finite.
+// presets/VARIATIONS.md lists every variation with its formula (variationsMarkdown below).
 #pragma once
 
 #include <cstddef>
@@ -55,7 +58,7 @@ struct VariationParam {
   double defaultValue = 0.0;
   double sliderMin = 0.0;
   double sliderMax = 1.0;
-  bool integer = false;  // a count (sides, power, slices): rounded where used
+  bool integer = false;  // a count (sides, power, slices): rounded where used, 0 taken as 1
 };
 
 struct VariationInfo {
@@ -73,5 +76,9 @@ struct VariationInfo {
 const std::vector<VariationInfo>& variationCatalogue();
 const VariationInfo* findVariation(std::string_view name);     // nullptr when unknown
 const VariationInfo& variationOrThrow(std::string_view name);  // core::Error naming close matches
+
+// presets/VARIATIONS.md: the catalogue as a Markdown table (name, 2D/3D, parameters with defaults
+// and slider ranges, formula). A test keeps the committed file equal to this text.
+std::string variationsMarkdown();
 
 }  // namespace voxflame::core
