@@ -73,7 +73,7 @@ usage:
       palette and tone. A flat flame gains depth D (default 0.5, 0 keeps it flat); --mesh
       fills another mesh (default builtin:meshes/bunny.obj); --index (from 1) or --name picks
       one flame of a file that holds several (default the first).
-  voxflame bench [accumulate|mask|raymarch|explorer|export|quality] [--method volume|points] [--json]
+  voxflame bench [accumulate|mask|raymarch|explorer|export|quality|flame] [--method volume|points] [--json]
       Measure performance (Release build).
   voxflame --help | --version
 )";

@@ -89,6 +89,13 @@ cell() {
   while read -r id; do
     attractors+="${attractors:+ + }${attractor_names[$id]:-$id}"
   done < <(json_strings attractor "$file" | awk '!seen[$0]++')
+  # Chaos-game layers name their kind instead of an attractor.
+  while read -r kind; do
+    case "$kind" in
+      flame) attractors+="${attractors:+ + }fractal flame" ;;
+      quaternion_julia) attractors+="${attractors:+ + }quaternion Julia set" ;;
+    esac
+  done < <(json_strings kind "$file" | awk '!seen[$0]++')
   local covered
   covered="$(awk -F '\t' -v stem="$stem" '$1 == stem && $2 != "" { print " · covers " $2 "%" }' "$gallery/coverage.tsv" 2>/dev/null || true)"
   local image="$stem.png"

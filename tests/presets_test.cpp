@@ -58,6 +58,32 @@ TEST(ShippedPresets, AtLeastEighteenWithEverySeedAttractorAndUniqueNames) {
     EXPECT_TRUE(attractors.count(seed)) << "no shipped preset uses the seed attractor " << seed;
 }
 
+TEST(ShippedPresets, TenChaosGamePresetsWithFlamesJuliaSetsAndIfsFractalsThreeAnimated) {
+  int chaos = 0, flames = 0, julia = 0, animated = 0, affineOnly = 0;
+  for (const auto& file : shippedPresets()) {
+    const core::Scene scene = core::loadScene(file);
+    bool isChaos = false;
+    for (const auto& layer : scene.layers) {
+      if (!layer.isChaosGame()) continue;
+      isChaos = true;
+      flames += layer.kind == core::PatternKind::Flame ? 1 : 0;
+      julia += layer.kind == core::PatternKind::QuaternionJulia ? 1 : 0;
+      // A classic IFS: every transform an affine map alone (linear variation).
+      bool onlyAffine = layer.kind == core::PatternKind::Flame;
+      for (const auto& xform : layer.flame.xforms)
+        for (const auto& term : xform.variations) onlyAffine = onlyAffine && term.name == "linear";
+      affineOnly += onlyAffine ? 1 : 0;
+    }
+    chaos += isChaos ? 1 : 0;
+    animated += isChaos && !scene.keyframes.empty() ? 1 : 0;
+  }
+  EXPECT_GE(chaos, 10);
+  EXPECT_GE(flames, 5);
+  EXPECT_GE(julia, 2);
+  EXPECT_GE(affineOnly, 3);  // Menger sponge, Sierpiński tetrahedron, fern
+  EXPECT_GE(animated, 3);
+}
+
 namespace {
 
 // What a small still shows: pixels that differ from the background, and pixels blown out to white.

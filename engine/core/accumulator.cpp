@@ -1063,7 +1063,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
         advance(params, h, b.x.data(), b.y.data(), b.z.data(), kOrbitsPerBatch);
       }
       classifyBatch(classify, kernel, b);
-      if (game) {
+      if (game && game->hidesPoints()) {
         // A point its transform's opacity (or a quaternion slice) hides is not a point at all.
         const std::int32_t* visible = b.chaos.visible.data();
         std::int32_t* voxel = b.voxel.data();

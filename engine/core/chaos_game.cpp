@@ -73,9 +73,8 @@ VOXFLAME_CHAOS_TARGETS void gatherAffine(const std::uint32_t* group, std::size_t
     z[l] = oz[j];
     color[l] = keep * color[l] + pull;
     std::uint32_t r = groupRandom[j];
-    // An opaque transform still draws (and discards) a number: the lanes' sequences then do not
-    // depend on whether opacity is used, and the loop stays branch-free.
-    visible[l] = laneUniform(r) < opacity ? 1 : 0;
+    // Only a translucent transform draws for its opacity (the loop is built twice, see below).
+    visible[l] = opacity >= 1.0 ? 1 : (laneUniform(r) < opacity ? 1 : 0);
     random[l] = r;
   }
 }
@@ -83,7 +82,11 @@ VOXFLAME_CHAOS_TARGETS void scatterGroup(const std::uint32_t* group, std::size_t
                                          const double* oz, std::uint32_t* groupRandom, double* x, double* y, double* z,
                                          double* color, std::uint32_t* random, std::int32_t* visible, double keep,
                                          double pull, double opacity) {
-  scatterBody(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull, opacity);
+  // Two copies of the loop, so the common opaque case has no draw and no compare in it.
+  if (opacity >= 1.0)
+    scatterBody(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull, 1.0);
+  else
+    scatterBody(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull, opacity);
 }
 
 // p ← M p + t in place (the post-affine).
@@ -156,6 +159,7 @@ ChaosGame::ChaosGame(const PatternLayer& layer, const std::string& where) {
     const double turn = layer.julia.turnDeg * std::numbers::pi / 180.0;
     turnCos_ = std::cos(turn);
     turnSin_ = std::sin(turn);
+    hidesPoints_ = layer.julia.view == QuaternionView::Slice;
     return;
   }
   if (layer.kind != PatternKind::Flame) throw Error(where + " is not a chaos-game layer");
@@ -184,6 +188,8 @@ ChaosGame::ChaosGame(const PatternLayer& layer, const std::string& where) {
     for (const Affine3& g : symmetryGroup(layer.flame.symmetry)) group_.push_back(g.m);
   hasFinal_ = layer.flame.hasFinal;
   if (hasFinal_) final_ = compile(layer.flame.finalXform);
+  for (const Compiled& x : xforms_) hidesPoints_ = hidesPoints_ || x.opacity < 1.0;
+  hidesPoints_ = hidesPoints_ || (hasFinal_ && final_.opacity < 1.0);
 }
 
 void ChaosGame::seedLane(ChaosLanes& lanes, std::size_t i, SplitMix64& rng) const {

@@ -54,6 +54,9 @@ class ChaosGame {
   void step(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor, std::size_t count) const;
 
   std::size_t transformCount() const { return xforms_.size(); }  // symmetry transforms included
+  // Whether lanes.visible can ever be 0 (a translucent transform, a quaternion slice); when not,
+  // the caller may skip reading it.
+  bool hidesPoints() const { return hidesPoints_; }
 
  private:
   struct Term {
@@ -78,6 +81,7 @@ class ChaosGame {
                  std::size_t count) const;
 
   bool julia_ = false;
+  bool hidesPoints_ = false;
   std::vector<Compiled> xforms_;
   bool hasFinal_ = false;
   Compiled final_;
