@@ -89,7 +89,10 @@ std::string describeFrames(const std::vector<int>& frames) {
     while (j + 1 < sorted.size() && sorted[j + 1] == sorted[j] + 1) ++j;
     if (!text.empty()) text += ", ";
     text += std::to_string(sorted[i]);
-    if (j > i) text += "-" + std::to_string(sorted[j]);
+    if (j > i) {
+      text += '-';
+      text += std::to_string(sorted[j]);
+    }
     i = j + 1;
   }
   return text;
