@@ -41,6 +41,8 @@ cleanup() {
     kill -9 "${pids[i]}" 2>/dev/null || true
     wait "${pids[i]}" 2>/dev/null || true
   done
+  # munged runs under runuser; should it outlive runuser, its pid file names it.
+  if [ -s "$work/munge/munged.pid" ]; then kill "$(cat "$work/munge/munged.pid")" 2>/dev/null || true; fi
   if [ "$status" -ne 0 ]; then
     for log in "$work"/*.log "$work"/job/frames/*.log; do
       [ -f "$log" ] && { echo "--- $log"; tail -n 30 "$log"; }
