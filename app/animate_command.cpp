@@ -9,7 +9,9 @@
 // (a camera move, a tone fade, a still stretch between keys) consecutive volumes are identical,
 // bit for bit, instead of showing fresh Monte Carlo noise on every frame; where parameters move,
 // the noise follows the pattern instead of flickering on its own.
-#include <sys/wait.h>
+//
+// The same two choices let a render farm split the frames (farm_job.h): `--farm slurm` writes the
+// job scripts instead of rendering, and `--status PATTERN` lists the frames still missing.
 #include <unistd.h>
 
 #include <algorithm>
@@ -21,6 +23,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -28,91 +31,24 @@
 #include <nlohmann/json.hpp>
 
 #include "arguments.h"
+#include "atomic_file.h"
 #include "commands.h"
 #include "core/accumulator.h"
 #include "core/error.h"
 #include "core/keyframes.h"
 #include "core/packed_volume.h"
+#include "farm_job.h"
+#include "frame_pattern.h"
 #include "pipeline.h"
+#include "programs.h"
 
 namespace voxflame::app {
 
 namespace {
 
-// Exit status when the frames were written but the asked-for video could not be (no ffmpeg).
+// Exit status when the frames were written but the asked-for video could not be (no ffmpeg), or
+// the farm's job scripts were written but could not be submitted (no sbatch).
 constexpr int kNoVideoStatus = 3;
-
-// A frame pattern holds exactly one integer conversion (%d, with an optional 0 flag and width;
-// %% is a literal percent sign), so snprintf with the frame number is safe and ffmpeg reads it.
-void checkFramePattern(const std::string& pattern) {
-  int conversions = 0;
-  for (std::size_t i = 0; i < pattern.size(); ++i) {
-    if (pattern[i] != '%') continue;
-    if (i + 1 < pattern.size() && pattern[i + 1] == '%') {
-      ++i;
-      continue;
-    }
-    std::size_t j = i + 1;
-    while (j < pattern.size() && pattern[j] == '0') ++j;
-    const std::size_t widthStart = j;
-    while (j < pattern.size() && std::isdigit(static_cast<unsigned char>(pattern[j]))) ++j;
-    if (j >= pattern.size()) throw UsageError("-o '" + pattern + "' ends in an unfinished % conversion");
-    if (j - widthStart > 2) throw UsageError("-o '" + pattern + "': a frame number wider than 99 digits is not useful");
-    if (pattern[j] == 's')
-      throw UsageError("-o '" + pattern + "': %s is not allowed; the frame number is an integer, e.g. frames/%04d.png");
-    if (pattern[j] != 'd')
-      throw UsageError("-o '" + pattern + "': '" + pattern.substr(i, j - i + 1) +
-                       "' is not a frame number; use %d or %04d (and %% for a percent sign)");
-    ++conversions;
-    i = j;
-  }
-  if (conversions == 0)
-    throw UsageError("-o '" + pattern + "' has no frame number; give a printf pattern such as frames/%04d.png");
-  if (conversions > 1)
-    throw UsageError("-o '" + pattern + "' has " + std::to_string(conversions) +
-                     " conversions; it needs exactly one frame number such as %04d");
-  std::string extension = std::filesystem::path(pattern).extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".png") throw UsageError("-o '" + pattern + "' must end in .png (frames are PNG images)");
-}
-
-std::string framePath(const std::string& pattern, int frame) {
-  // checkFramePattern allows exactly one %d: the format is safe with one int.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wformat-nonliteral"
-  const int length = std::snprintf(nullptr, 0, pattern.c_str(), frame);
-  std::string path(static_cast<std::size_t>(length) + 1, '\0');
-  std::snprintf(path.data(), path.size(), pattern.c_str(), frame);
-#pragma GCC diagnostic pop
-  path.resize(static_cast<std::size_t>(length));
-  return path;
-}
-
-struct FrameRange {
-  int first = 0;
-  int last = 0;
-};
-
-FrameRange parseFrameRange(const std::string& text, int frameCount, double fps) {
-  const auto number = [&](const std::string& part) {
-    if (part.empty() || part.size() > 9 ||
-        !std::all_of(part.begin(), part.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
-      throw UsageError("--frames expects A-B or N (frame numbers from 0), not '" + text + "'");
-    return std::stoi(part);
-  };
-  const std::size_t dash = text.find('-');
-  FrameRange range;
-  range.first = number(text.substr(0, dash));
-  range.last = dash == std::string::npos ? range.first : number(text.substr(dash + 1));
-  if (range.first > range.last) throw UsageError("--frames " + text + ": the first frame comes after the last");
-  if (range.last >= frameCount) {
-    char fpsText[32];
-    std::snprintf(fpsText, sizeof fpsText, "%g", fps);
-    throw UsageError("--frames " + text + ": the animation has " + std::to_string(frameCount) + " frames (0-" +
-                     std::to_string(frameCount - 1) + ") at " + fpsText + " fps");
-  }
-  return range;
-}
 
 // Replaces each layer's automatic fit by the one of the scene at time 0, so that every frame, on
 // every machine, places the pattern the same way.
@@ -136,23 +72,6 @@ std::string patternKey(const core::Scene& scene) {
   nlohmann::json key;
   for (const char* member : {"mesh", "grid", "layers", "seed", "points"}) key[member] = document.at(member);
   return key.dump();
-}
-
-std::optional<std::string> findOnPath(const std::string& program) {
-  const char* path = std::getenv("PATH");
-  if (!path) return std::nullopt;
-  std::string folders = path;
-  std::size_t start = 0;
-  while (start <= folders.size()) {
-    const std::size_t end = std::min(folders.find(':', start), folders.size());
-    const std::string folder = folders.substr(start, end - start);
-    const std::filesystem::path candidate = std::filesystem::path(folder.empty() ? "." : folder) / program;
-    std::error_code ec;
-    if (std::filesystem::is_regular_file(candidate, ec) && access(candidate.c_str(), X_OK) == 0)
-      return candidate.string();
-    start = end + 1;
-  }
-  return std::nullopt;
 }
 
 std::vector<std::string> ffmpegArguments(const std::string& pattern, const FrameRange& range, double fps,
@@ -182,43 +101,129 @@ std::vector<std::string> ffmpegArguments(const std::string& pattern, const Frame
           video};
 }
 
-// Runs a program with these arguments (no shell, so no quoting); returns its exit status.
-int runProgram(const std::string& program, const std::vector<std::string>& arguments) {
-  std::vector<char*> argv;
-  for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
-  argv.push_back(nullptr);
-  std::fflush(nullptr);
-  const pid_t child = fork();
-  if (child < 0) throw core::Error("cannot start " + program);
-  if (child == 0) {
-    execv(program.c_str(), argv.data());
-    _exit(127);
+// `--status PATTERN`: which frames of the range exist. The range comes from --frames, else the
+// preset's whole animation, else the farm job's record beside the frames.
+int frameStatus(const std::string& pattern, const std::optional<std::string>& frames,
+                const std::vector<std::string>& positional, const std::optional<double>& fps) {
+  checkFramePattern(pattern);
+  const std::filesystem::path renderScript = frameFolder(pattern, 0) / "farm-render.sbatch";
+  const std::optional<FarmRecord> record = readFarmRecord(renderScript);
+  FrameRange range;
+  if (!positional.empty()) {
+    core::Scene scene = sceneFromArgument(positional);
+    const double rate = fps ? *fps : core::animationFps(scene);
+    const int frameCount = core::animationFrameCount(scene, rate);
+    range = frames ? parseFrameRange(*frames, frameCount, rate) : FrameRange{0, frameCount - 1};
+  } else if (frames) {
+    range = parseFrameRange(*frames, std::numeric_limits<int>::max(), 0.0);
+  } else if (record) {
+    range = record->frames;
+  } else {
+    throw UsageError(
+        "--status needs to know which frames to expect: name the preset (voxflame animate PRESET "
+        "--status " +
+        pattern + ") or give --frames A-B");
   }
-  int status = 0;
-  while (waitpid(child, &status, 0) < 0)
-    if (errno != EINTR) throw core::Error("lost track of " + program);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
+  std::vector<int> missing;
+  for (int frame = range.first; frame <= range.last; ++frame)
+    if (!frameExists(pattern, frame)) missing.push_back(frame);
+  const std::string frameList = std::to_string(range.first) + "-" + std::to_string(range.last);
+  if (missing.empty()) {
+    std::printf("%s: all %d frames (%s) are there\n", pattern.c_str(), range.count(), frameList.c_str());
+    return 0;
+  }
+  std::printf("%s: %d of %d frames (%s) are there; missing %zu: %s\n", pattern.c_str(),
+              range.count() - static_cast<int>(missing.size()), range.count(), frameList.c_str(), missing.size(),
+              describeFrames(missing).c_str());
+  if (record) {
+    // The tasks whose ranges hold a missing frame: running them again alone fills the gaps.
+    const std::vector<FrameRange> ranges = splitFrames(record->frames, record->tasks);
+    std::vector<int> tasks;
+    for (int frame : missing)
+      for (std::size_t task = 0; task < ranges.size(); ++task)
+        if (frame >= ranges[task].first && frame <= ranges[task].last) tasks.push_back(static_cast<int>(task));
+    if (!tasks.empty()) {
+      std::string taskList = describeFrames(tasks);
+      taskList.erase(std::remove(taskList.begin(), taskList.end(), ' '), taskList.end());
+      std::printf("render them again with: sbatch --array=%s %s\n", taskList.c_str(),
+                  shellQuoted({renderScript.string()}).c_str());
+    }
+  }
+  return 1;
 }
 
-std::string shellQuoted(const std::vector<std::string>& arguments) {
-  std::string line;
-  for (const std::string& argument : arguments) {
-    if (!line.empty()) line += ' ';
-    const bool plain = std::all_of(argument.begin(), argument.end(), [](char c) {
-      return std::isalnum(static_cast<unsigned char>(c)) ||
-             std::string_view("-_./%:=+").find(c) != std::string_view::npos;
-    });
-    line += plain ? argument : "'" + argument + "'";
+// A partition name goes into a #SBATCH line: one word of the characters Slurm allows.
+void checkPartition(const std::string& partition) {
+  const bool plain = !partition.empty() && std::all_of(partition.begin(), partition.end(), [](char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' || c == ',';
+  });
+  if (!plain)
+    throw UsageError("--partition '" + partition + "' is not a Slurm partition name (letters, digits, _ - . ,)");
+}
+
+// Submits the render job, then the finish job to start when every render task has ended; returns
+// the job ids. Throws core::Error when sbatch refuses.
+std::pair<std::string, std::string> submitFarmJob(const std::string& sbatch, const FarmJob& job) {
+  const auto submit = [&](std::vector<std::string> arguments) {
+    std::string output;
+    const int status = runProgram(sbatch, arguments, &output);
+    std::string id = output.substr(0, output.find_first_of(";\n"));
+    if (status != 0 || id.empty() ||
+        !std::all_of(id.begin(), id.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
+      throw core::Error("sbatch failed (exit status " + std::to_string(status) + ") submitting '" + arguments.back() +
+                        "'" + (output.empty() ? "" : ": " + output));
+    return id;
+  };
+  const std::string render = submit({"sbatch", "--parsable", renderScriptPath(job).string()});
+  const std::string finish =
+      submit({"sbatch", "--parsable", "--dependency=afterany:" + render, finishScriptPath(job).string()});
+  return {render, finish};
+}
+
+int writeFarmJob(const FarmJob& job, bool submit) {
+  const std::vector<FrameRange> ranges = splitFrames(job.frames, job.tasks);
+  const std::filesystem::path render = renderScriptPath(job);
+  const std::filesystem::path finish = finishScriptPath(job);
+  writeFileAtomically(render, renderJobScript(job), 0755, ".part", "cannot write the job script");
+  writeFileAtomically(finish, finishJobScript(job), 0755, ".part", "cannot write the job script");
+  std::string split;
+  for (const FrameRange& range : ranges)
+    split += (split.empty() ? "" : ", ") + std::to_string(range.first) + "-" + std::to_string(range.last);
+  std::printf("wrote %s (%zu tasks: frames %s) and %s\n", render.c_str(), ranges.size(), split.c_str(), finish.c_str());
+  if (static_cast<int>(ranges.size()) < job.tasks)
+    std::printf("(%d frames make %zu tasks, not %d)\n", job.frames.count(), ranges.size(), job.tasks);
+  const std::string by = "job=$(sbatch --parsable " + shellQuoted({render.string()}) +
+                         ") && sbatch --dependency=afterany:${job%%;*} " + shellQuoted({finish.string()});
+  if (!submit) {
+    std::printf("submit them with:\n  %s\n", by.c_str());
+    return 0;
   }
-  return line;
+  const auto sbatch = findOnPath("sbatch");
+  if (!sbatch) {
+    std::cerr << "voxflame: --submit: sbatch is not installed (not found on PATH), so nothing was submitted; the job "
+                 "scripts are written. On a machine of the cluster run:\n  "
+              << by << "\n";
+    return kNoVideoStatus;
+  }
+  const auto [renderId, finishId] = submitFarmJob(*sbatch, job);
+  std::printf("submitted job %s (%zu tasks) and job %s (after every task of %s has ended); logs go beside the frames\n",
+              renderId.c_str(), ranges.size(), finishId.c_str(), renderId.c_str());
+  std::printf("see what is missing with: voxflame animate --status %s\n", shellQuoted({job.pattern}).c_str());
+  return 0;
 }
 
 }  // namespace
 
 int animateCommand(const CommandArgs& args) {
-  Arguments arguments(args, 2);
+  Arguments arguments(args, 2, {"--submit"});
+  const auto statusPattern = arguments.take("--status");
   const auto output = arguments.take("-o", "--output");
   const auto frames = arguments.take("--frames");
+  // Options a farm task passes on as given (--frames is each task's own).
+  std::vector<std::string> taskOptions;
+  for (const char* name :
+       {"--width", "--height", "--fps", "--motion-blur", "--shutter", "--samples", "--points", "--grid", "--threads"})
+    if (const auto value = arguments.take(name)) taskOptions.insert(taskOptions.end(), {name, *value});
   const int width = static_cast<int>(arguments.integer("--width", 1280, 1, 16384));
   const int height = static_cast<int>(arguments.integer("--height", 720, 1, 16384));
   const auto fpsOption = arguments.take("--fps");
@@ -232,7 +237,22 @@ int animateCommand(const CommandArgs& args) {
   const auto grid = arguments.take("--grid");
   const int gridResolution = static_cast<int>(arguments.integer("--grid", 0, 16, 1024));
   const int threads = static_cast<int>(arguments.integer("--threads", 0, 0, 1024));
+  const auto farm = arguments.take("--farm");
+  const auto tasksOption = arguments.take("--tasks");
+  const int tasks = static_cast<int>(arguments.integer("--tasks", 1, 1, 100000));
+  const auto partition = arguments.take("--partition");
+  const bool submit = arguments.flag("--submit");
   arguments.finish(1);
+  if (statusPattern) {
+    if (output) throw UsageError("--status takes the frame pattern itself (--status frames/%04d.png); leave out -o");
+    if (farm || video) throw UsageError("--status only lists frames; it goes without --farm and --video");
+    return frameStatus(*statusPattern, frames, arguments.positional(),
+                       fpsOption ? std::optional<double>(fpsValue) : std::nullopt);
+  }
+  if (farm && *farm != "slurm") throw UsageError("--farm supports 'slurm' only, not '" + *farm + "'");
+  if (!farm && (tasksOption || partition || submit))
+    throw UsageError("--tasks, --partition and --submit go with --farm slurm");
+  if (partition) checkPartition(*partition);
   if (!output) throw UsageError("animate needs an output pattern: -o frames/%04d.png");
   checkFramePattern(*output);
   if (video && video->empty()) throw UsageError("--video needs a file name such as out.mp4");
@@ -253,6 +273,19 @@ int animateCommand(const CommandArgs& args) {
   scene.animation.fps = fps;
   const int frameCount = core::animationFrameCount(scene, fps);
   const FrameRange range = frames ? parseFrameRange(*frames, frameCount, fps) : FrameRange{0, frameCount - 1};
+  if (farm) {
+    FarmJob job;
+    job.binary = currentExecutable();
+    job.workingDirectory = std::filesystem::current_path().string();
+    if (!arguments.positional().empty()) job.preset = arguments.positional().front();
+    job.pattern = *output;
+    job.frames = range;
+    job.tasks = tasks;
+    job.partition = partition.value_or("");
+    job.options = taskOptions;
+    if (video) job.videoCommand = ffmpegArguments(*output, range, fps, *video);
+    return writeFarmJob(job, submit);
+  }
   lockFits(scene);
 
   const std::filesystem::path folder = std::filesystem::path(framePath(*output, range.first)).parent_path();
@@ -326,7 +359,8 @@ int animateCommand(const CommandArgs& args) {
       const double frameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
       result.renderSeconds = frameSeconds - accumulateSeconds;
       const std::string path = framePath(*output, frame);
-      core::writePng(path, result.image, 8, stillMetadata(core::sceneAtTime(scene, time), result));
+      // No times in the frame: a frame rendered again, here or on a farm, is the same file.
+      core::writePng(path, result.image, 8, stillMetadata(core::sceneAtTime(scene, time), result, false));
       const int done = frame - range.first + 1;
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::fprintf(stderr, "%sframe %d (%d of %d, %.3f s): wrote %s in %.2f s, %s left\n", interactive ? "\r" : "",

@@ -48,6 +48,14 @@ usage:
       Render the preset's keyframed animation to PNG frames named by a printf pattern
       (frames/%04d.png); --frames renders part of it (frames split across machines agree).
       --video encodes the frames with ffmpeg when it is installed.
+  voxflame animate [PRESET.json|FRAME.png] -o PATTERN --farm slurm [--tasks N] [--partition P]
+                   [--submit] [--frames A-B] [--video OUT.mp4] [the options above]
+      Write a Slurm array job beside the frames (farm-render.sbatch: N tasks, each rendering one
+      contiguous range) and a job that checks every frame and makes the video when they have
+      ended (farm-finish.sbatch); --submit submits both with sbatch.
+  voxflame animate [PRESET.json] --status PATTERN [--frames A-B] [--fps F]
+      List the frames still missing (exit status 1 when any is) and the farm tasks that
+      render them.
   voxflame list [--json]
       The attractor catalogue: ids, kinds, parameters with defaults.
   voxflame list --variations [--json | --markdown]

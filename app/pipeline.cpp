@@ -227,11 +227,12 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   return result;
 }
 
-core::TextChunks stillMetadata(const core::Scene& scene, const StillResult& result) {
+core::TextChunks stillMetadata(const core::Scene& scene, const StillResult& result, bool withTimes) {
   std::ostringstream stats;
-  stats << "{\"points\":" << result.stats.points << ",\"iterations\":" << result.stats.iterations
-        << ",\"accumulate_seconds\":" << result.accumulateSeconds << ",\"render_seconds\":" << result.renderSeconds
-        << ",\"method\":\"" << core::toString(scene.render.method) << "\",\"coverage\":" << result.coverage
+  stats << "{\"points\":" << result.stats.points << ",\"iterations\":" << result.stats.iterations;
+  if (withTimes)
+    stats << ",\"accumulate_seconds\":" << result.accumulateSeconds << ",\"render_seconds\":" << result.renderSeconds;
+  stats << ",\"method\":\"" << core::toString(scene.render.method) << "\",\"coverage\":" << result.coverage
         << ",\"points_projected\":" << result.pointsProjected << ",\"version\":\"" << kVersion << "\"}";
   // A preset inside an image must find its mesh from wherever the image goes.
   core::Scene stored = scene;

@@ -115,8 +115,10 @@ class FrameRenderer {
   std::unique_ptr<Impl> impl_;
 };
 
-// The PNG text chunks that make a render reproducible: the preset and render statistics.
-core::TextChunks stillMetadata(const core::Scene& scene, const StillResult& result);
+// The PNG text chunks that make a render reproducible: the preset and render statistics. Without
+// times the statistics leave out how long it took, so the same image rendered again, on any
+// machine, is the same file byte for byte (animation frames, which a farm may render).
+core::TextChunks stillMetadata(const core::Scene& scene, const StillResult& result, bool withTimes = true);
 
 inline constexpr const char* kPresetChunkKey = "voxflame:preset";
 
