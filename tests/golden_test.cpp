@@ -1,7 +1,6 @@
-// Golden images: three shipped presets rendered small with both methods, compared with reference
-// PNGs in tests/golden that were looked at and judged good. When a change to the picture is
-// intended, scripts/update_golden.sh renders them again (VOXFLAME_UPDATE_GOLDEN=1); look at the
-// new ones before committing them.
+// Golden images: shipped presets (attractors, a flame, an IFS, a quaternion Julia set) rendered small, compared with
+// reference PNGs in tests/golden that were looked at and judged good. When a change to the picture is intended,
+// scripts/update_golden.sh renders them again (VOXFLAME_UPDATE_GOLDEN=1); look at the new ones before committing them.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -70,17 +69,17 @@ TEST_P(GoldenImage, MatchesTheReference) {
   EXPECT_LT(static_cast<double>(outliers) / static_cast<double>(pixels), kOutlierShare) << reference;
 }
 
-INSTANTIATE_TEST_SUITE_P(Presets, GoldenImage,
-                         ::testing::Values(Golden{"default", core::RenderMethod::Volume},
-                                           Golden{"default", core::RenderMethod::Points},
-                                           Golden{"thomas-pinwheel", core::RenderMethod::Volume},
-                                           Golden{"thomas-pinwheel", core::RenderMethod::Points},
-                                           Golden{"lorenz-heart", core::RenderMethod::Volume},
-                                           Golden{"lorenz-heart", core::RenderMethod::Points}),
-                         [](const auto& param) {
-                           std::string name =
-                               std::string(param.param.preset) + "_" + std::string(core::toString(param.param.method));
-                           for (char& c : name)
-                             if (c == '-') c = '_';
-                           return name;
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    Presets, GoldenImage,
+    ::testing::Values(
+        Golden{"default", core::RenderMethod::Volume}, Golden{"default", core::RenderMethod::Points},
+        Golden{"thomas-pinwheel", core::RenderMethod::Volume}, Golden{"thomas-pinwheel", core::RenderMethod::Points},
+        Golden{"lorenz-heart", core::RenderMethod::Volume}, Golden{"lorenz-heart", core::RenderMethod::Points},
+        Golden{"flame-silk-bunny", core::RenderMethod::Volume}, Golden{"flame-silk-bunny", core::RenderMethod::Points},
+        Golden{"sierpinski-orb", core::RenderMethod::Volume}, Golden{"qjulia-cage-orb", core::RenderMethod::Volume}),
+    [](const auto& param) {
+      std::string name = std::string(param.param.preset) + "_" + std::string(core::toString(param.param.method));
+      for (char& c : name)
+        if (c == '-') c = '_';
+      return name;
+    });
