@@ -1086,9 +1086,12 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
           outY[n] = b.gy[i];
           outZ[n] = b.gz[i];
           outRgb[n] = packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])];
-          const bool keep = (v >= 0) & (inside[v >= 0 ? v : 0] != 0);
-          n += keep ? 1 : 0;
-          outside += ((v >= -1) & !keep) ? 1 : 0;
+          // Integer arithmetic for the same reason as the grid's append below: no branch to mispredict.
+          const std::uint64_t valid = (static_cast<std::uint32_t>(v) >> 31) ^ 1u;        // v >= 0
+          const std::uint64_t settled = (static_cast<std::uint32_t>(v + 1) >> 31) ^ 1u;  // v >= -1
+          const std::uint64_t keep = valid & static_cast<std::uint64_t>(inside[v >= 0 ? v : 0] != 0);
+          n += keep;
+          outside += settled & (keep ^ 1u);
           escapedHere += b.escaped[i];
         }
         splats.pointCount = n;
@@ -1105,9 +1108,14 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
           out[n] = std::uint64_t{static_cast<std::uint32_t>(v)} |
                    std::uint64_t{packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])]} << 32;
           const auto brickIndex = static_cast<std::uint32_t>(b.brick[i]);
-          const bool keep = (v >= 0) & (((bricks[brickIndex / 64] >> (brickIndex % 64)) & 1u) != 0);
-          n += keep ? 1 : 0;
-          outside += ((v >= -1) & !keep) ? 1 : 0;
+          // Integer arithmetic, not bools: GCC turned the bool form into a bit-test branch, which
+          // mispredicts about every other point of a pattern spread over the grid (a flame).
+          const std::uint64_t inBrick = (bricks[brickIndex >> 6] >> (brickIndex & 63u)) & 1u;
+          const std::uint64_t valid = (static_cast<std::uint32_t>(v) >> 31) ^ 1u;        // v >= 0
+          const std::uint64_t settled = (static_cast<std::uint32_t>(v + 1) >> 31) ^ 1u;  // v >= -1
+          const std::uint64_t keep = inBrick & valid;
+          n += keep;
+          outside += settled & (keep ^ 1u);
           escapedHere += b.escaped[i];
         }
         splats.count = n;
