@@ -28,6 +28,32 @@ double processCpuSeconds() {
   return seconds(usage.ru_utime) + seconds(usage.ru_stime);
 }
 
+// Iterations per wall-clock and per CPU second of a running accumulator, over a fixed window
+// after a warm-up.
+struct Rate {
+  double perSecond = 0.0;
+  double perCpuSecond = 0.0;
+  double cpuSecondsPerSecond = 0.0;
+  core::AccumulatorStats stats;
+};
+
+Rate measureRate(const core::Accumulator& accumulator) {
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));  // warm-up
+  const auto before = accumulator.stats();
+  const double cpuBefore = processCpuSeconds();
+  const auto start = std::chrono::steady_clock::now();
+  std::this_thread::sleep_for(std::chrono::seconds(2));
+  Rate rate;
+  rate.stats = accumulator.stats();
+  const double cpuSeconds = processCpuSeconds() - cpuBefore;
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const auto iterations = static_cast<double>(rate.stats.iterations - before.iterations);
+  rate.perSecond = iterations / seconds;
+  rate.perCpuSecond = iterations / cpuSeconds;
+  rate.cpuSecondsPerSecond = cpuSeconds / seconds;
+  return rate;
+}
+
 }  // namespace
 
 void benchAccumulateChaos(const BenchOptions& options, const std::shared_ptr<const core::InsideMask>& mask,
@@ -61,24 +87,16 @@ void benchAccumulate(const BenchOptions& options) {
       core::Accumulator accumulator(mask, threads);
       accumulator.setDeposit(deposit);
       accumulator.setPattern({layer}, 1);
-      std::this_thread::sleep_for(std::chrono::milliseconds(300));  // warm-up
-      const auto before = accumulator.stats();
-      const double cpuBefore = processCpuSeconds();
-      const auto start = std::chrono::steady_clock::now();
-      std::this_thread::sleep_for(std::chrono::seconds(2));
-      const auto after = accumulator.stats();
-      const double cpuSeconds = processCpuSeconds() - cpuBefore;
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const double pointsPerSecond = static_cast<double>(after.iterations - before.iterations) / seconds;
+      const Rate rate = measureRate(accumulator);
       report(options, {{"bench", "accumulate"},
                        {"attractor", id},
                        {"grid", 256},
                        {"threads", threads},
                        {"deposit", deposit == core::Deposit::Jittered ? "jittered" : "nearest"},
-                       {"points_per_s", pointsPerSecond},
-                       {"inside_fraction", after.insideFraction()},
-                       {"cpu_seconds_per_second", cpuSeconds / seconds},
-                       {"points_per_cpu_s", static_cast<double>(after.iterations - before.iterations) / cpuSeconds}});
+                       {"points_per_s", rate.perSecond},
+                       {"inside_fraction", rate.stats.insideFraction()},
+                       {"cpu_seconds_per_second", rate.cpuSecondsPerSecond},
+                       {"points_per_cpu_s", rate.perCpuSecond}});
     }
   }
   benchAccumulateChaos(options, mask, allThreads);
@@ -101,24 +119,16 @@ void benchAccumulateChaos(const BenchOptions& options, const std::shared_ptr<con
     for (const int threads : {1, allThreads}) {
       core::Accumulator accumulator(mask, threads);
       accumulator.setPattern({layer}, 1);
-      std::this_thread::sleep_for(std::chrono::milliseconds(300));  // warm-up
-      const auto before = accumulator.stats();
-      const double cpuBefore = processCpuSeconds();
-      const auto start = std::chrono::steady_clock::now();
-      std::this_thread::sleep_for(std::chrono::seconds(2));
-      const auto after = accumulator.stats();
-      const double cpuSeconds = processCpuSeconds() - cpuBefore;
-      const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const auto iterations = static_cast<double>(after.iterations - before.iterations);
+      const Rate rate = measureRate(accumulator);
       report(options, {{"bench", "accumulate"},
                        {"pattern", name},
                        {"grid", 256},
                        {"threads", threads},
                        {"deposit", "jittered"},
-                       {"points_per_s", iterations / seconds},
-                       {"inside_fraction", after.insideFraction()},
-                       {"cpu_seconds_per_second", cpuSeconds / seconds},
-                       {"points_per_cpu_s", iterations / cpuSeconds}});
+                       {"points_per_s", rate.perSecond},
+                       {"inside_fraction", rate.stats.insideFraction()},
+                       {"cpu_seconds_per_second", rate.cpuSecondsPerSecond},
+                       {"points_per_cpu_s", rate.perCpuSecond}});
     }
   }
 }
