@@ -371,12 +371,14 @@ TriangleMesh loadMeshFromMemory(std::span<const std::byte> data, std::string_vie
                                 std::string_view displayName, const MeshLoadOptions& options) {
   if (data.empty()) throw Error("mesh '" + std::string(displayName) + "' is empty");
   if (extensionHint == "ply" || extensionHint == "PLY") checkPlyComplete(data, std::string(displayName));
-  return importIsolated(std::string(displayName), data.size(), options.timeLimitSeconds, [&] {
+  const auto import = [&] {
     Assimp::Importer importer;
     const aiScene* scene =
         importer.ReadFileFromMemory(data.data(), data.size(), kReadFlags, std::string(extensionHint).c_str());
     return convertScene(scene, importer, displayName);
-  });
+  };
+  if (!options.isolate) return import();
+  return importIsolated(std::string(displayName), data.size(), options.timeLimitSeconds, import);
 }
 
 }  // namespace voxflame::core

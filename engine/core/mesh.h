@@ -36,6 +36,10 @@ struct MeshLoadOptions {
   // The importer runs in a child process and is stopped after this long (a corrupt file can send
   // Assimp into an endless loop). 0: 30 s plus 4 s per MB of file.
   double timeLimitSeconds = 0.0;
+  // false: import in this process. Only for data voxflame itself ships (the meshes compiled into
+  // the binary): forking a threaded process can leave the child stuck on a lock another thread
+  // held (seen under AddressSanitizer), and a trusted file needs no isolation.
+  bool isolate = true;
 };
 
 // Loads and merges every mesh of the file. Throws core::Error naming the file on any problem:

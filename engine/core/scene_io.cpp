@@ -23,7 +23,10 @@ TriangleMesh loadSceneMesh(const Scene& scene) {
     const auto bytes = embeddedFile(name);
     if (!bytes) throw Error("mesh '" + name + "' is not embedded in this build");
     const std::string extension = std::filesystem::path(name).extension().string();
-    return loadMeshFromMemory(*bytes, extension.empty() ? "" : extension.substr(1), name);
+    // A mesh compiled into the binary is trusted: it is read in this process, without a child.
+    MeshLoadOptions trusted;
+    trusted.isolate = false;
+    return loadMeshFromMemory(*bytes, extension.empty() ? "" : extension.substr(1), name, trusted);
   }
   return loadMesh(scene.resolvedMeshPath());
 }
