@@ -22,6 +22,11 @@ struct Benchmark {
 };
 const std::vector<Benchmark>& benchmarks();
 
+// CPU seconds (user and system, all threads) of this process (RUSAGE_SELF) or of its finished
+// children (RUSAGE_CHILDREN): on a shared machine the wall-clock rate depends on what else runs,
+// while a rate per CPU second measures the code itself.
+double cpuSeconds(int who);
+
 // Prints one measurement: the JSON object as one line with --json, else "key=value" pairs.
 void report(const BenchOptions& options, const nlohmann::json& measurement);
 

@@ -17,17 +17,6 @@ namespace voxflame::bench {
 
 namespace {
 
-// CPU time of the whole process (all threads): on a shared machine the wall-clock rate depends on
-// what else runs, while points per CPU second measures the code itself.
-double processCpuSeconds() {
-  rusage usage{};
-  getrusage(RUSAGE_SELF, &usage);
-  const auto seconds = [](const timeval& t) {
-    return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
-  };
-  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
-
 // Iterations per wall-clock and per CPU second of a running accumulator, over a fixed window
 // after a warm-up.
 struct Rate {
@@ -40,17 +29,17 @@ struct Rate {
 Rate measureRate(const core::Accumulator& accumulator) {
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // warm-up
   const auto before = accumulator.stats();
-  const double cpuBefore = processCpuSeconds();
+  const double cpuBefore = cpuSeconds(RUSAGE_SELF);
   const auto start = std::chrono::steady_clock::now();
   std::this_thread::sleep_for(std::chrono::seconds(2));
   Rate rate;
   rate.stats = accumulator.stats();
-  const double cpuSeconds = processCpuSeconds() - cpuBefore;
+  const double cpuUsed = cpuSeconds(RUSAGE_SELF) - cpuBefore;
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto iterations = static_cast<double>(rate.stats.iterations - before.iterations);
   rate.perSecond = iterations / seconds;
-  rate.perCpuSecond = iterations / cpuSeconds;
-  rate.cpuSecondsPerSecond = cpuSeconds / seconds;
+  rate.perCpuSecond = iterations / cpuUsed;
+  rate.cpuSecondsPerSecond = cpuUsed / seconds;
   return rate;
 }
 

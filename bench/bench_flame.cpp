@@ -11,20 +11,22 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
+#include <optional>
 #include <fstream>
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "bench.h"
 #include "core/accumulator.h"
+#include "core/error.h"
 #include "core/grid.h"
 #include "core/inside_mask.h"
 #include "core/mesh.h"
 #include "core/scene.h"
+#include "programs.h"
 
 namespace voxflame::bench {
 
@@ -70,17 +72,6 @@ std::string sampleXml(int quality) {
   return xml.str();
 }
 
-double seconds(const timeval& t) {
-  return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec);
-}
-
-// CPU seconds (user and system, all threads) of this process, or of its finished children.
-double cpuSeconds(int who) {
-  rusage usage{};
-  getrusage(who, &usage);
-  return seconds(usage.ru_utime) + seconds(usage.ru_stime);
-}
-
 struct Timing {
   double wall = -1.0;  // negative when flam3-render could not run
   double cpu = 0.0;
@@ -90,20 +81,25 @@ struct Timing {
 Timing timeFlam3(const std::filesystem::path& folder, int quality) {
   const std::filesystem::path genome = folder / ("genome-" + std::to_string(quality) + ".flam3");
   std::ofstream(genome) << sampleXml(quality);
-  const std::string command = "env in='" + genome.string() + "' out='" + (folder / "out.png").string() +
-                              "' nthreads=2 verbose=0 flam3-render >/dev/null 2>&1";
+  // flam3-render reads its arguments from the environment; env sets them without a shell.
+  const std::vector<std::string> command = {
+      "env",       "in=" + genome.string(), "out=" + (folder / "out.png").string(), "nthreads=2",
+      "verbose=0", "flam3-render"};
   const double cpuBefore = cpuSeconds(RUSAGE_CHILDREN);
   const auto start = std::chrono::steady_clock::now();
-  const int status = std::system(command.c_str());
+  std::string ignoredOutput;
+  const std::optional<std::string> env = app::findOnPath("env");
+  int status = -1;
+  try {
+    if (env) status = app::runProgram(*env, command, &ignoredOutput);
+  } catch (const core::Error&) {
+    status = -1;  // reported below as a run that failed
+  }
   Timing timing;
   timing.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   timing.cpu = cpuSeconds(RUSAGE_CHILDREN) - cpuBefore;
   if (status != 0) timing.wall = -1.0;
   return timing;
-}
-
-bool flam3Installed() {
-  return std::system("command -v flam3-render >/dev/null 2>&1") == 0;
 }
 
 }  // namespace
@@ -137,7 +133,7 @@ void benchFlame(const BenchOptions& options) {
                      {"inside_fraction", after.insideFraction()},
                      {"escapes_per_million", 1e6 * static_cast<double>(after.escapes - before.escapes) / samples}});
   }
-  if (!flam3Installed()) {
+  if (!app::findOnPath("flam3-render")) {
     report(options, {{"bench", "flame"}, {"renderer", "flam3-render"}, {"skipped", "flam3-render is not installed"}});
     return;
   }

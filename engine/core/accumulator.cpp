@@ -351,8 +351,9 @@ PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3
                                            std::abs(high.y), std::abs(high.z)}) +
                                  1.0);
 
-  prepared.seeds.reserve(kSeedPoolSize);
-  for (std::size_t i = 0; i < kSeedPoolSize; ++i)
+  // Attractor orbits restart from points on the attractor; a chaos-game lane restarts anywhere.
+  if (!prepared.game) prepared.seeds.reserve(kSeedPoolSize);
+  for (std::size_t i = 0; !prepared.game && i < kSeedPoolSize; ++i)
     prepared.seeds.push_back(samples[static_cast<std::size_t>(rng.uniform() * static_cast<double>(samples.size()))]);
 
   // References that map each colour mode's raw value onto the gradient, measured on the probe
