@@ -396,8 +396,9 @@ class CommandLine {
   }
 
   int run() const {
-    for (const auto& [command, run] : commands_)
-      if (command == this->command()) return run();
+    const CLI::App* chosen = command();
+    for (const auto& [subcommand, runSubcommand] : commands_)
+      if (subcommand == chosen) return runSubcommand();
     return explorer_();
   }
 
