@@ -20,6 +20,7 @@
 #include "core/error.h"
 #include "core/grid.h"
 #include "core/keyframes.h"
+#include "core/mesh.h"
 #include "explorer.h"
 #include "usage_error.h"
 #include "version.h"
@@ -337,6 +338,16 @@ Run defineHelp(CLI::App& command) {
   };
 }
 
+// `voxflame __import-mesh -- FILE NAME`: the child process that imports a mesh for its parent
+// (core/mesh.h); NAME is what its messages call the mesh.
+Run defineMeshImportChild(CLI::App& command) {
+  auto file = std::make_shared<std::string>();
+  auto name = std::make_shared<std::string>();
+  command.add_option("file", *file, "The mesh file")->required();
+  command.add_option("name", *name, "What messages call the mesh")->required();
+  return [file, name] { return core::runMeshImportChild(*file, *name); };
+}
+
 constexpr bool kHidden = true;
 
 // The subcommands, in the order --help lists them. A hidden one (for voxflame's own use, e.g. a
@@ -358,6 +369,7 @@ const Subcommand kSubcommands[] = {
     {"import", "Turn a flame file into a preset", &defineImport},
     {"bench", "Measure performance", &defineBench},
     {"help", "Print the help of voxflame or of one subcommand", &defineHelp, kHidden},
+    {core::kMeshImportSubcommand, "Import a mesh for the parent process", &defineMeshImportChild, kHidden},
 };
 
 class CommandLine {

@@ -105,6 +105,15 @@ TEST(CliOptions, RepeatedParamsAreAllKeptAndAPresetMayFollowThem) {
   EXPECT_EQ(usageErrorOf("info --param a=1 b=2 preset.json"), "unexpected argument 'preset.json'");
 }
 
+// What a parent process passes its mesh import child (core/mesh.h): after "--", the file and the
+// name are positional whatever they look like.
+TEST(CliOptions, TheHiddenMeshImportChildTakesAnyFileAndName) {
+  EXPECT_EQ(usageErrorOf("__import-mesh -- -x.obj render"), "");
+  EXPECT_EQ(usageErrorOf("__import-mesh -- mesh.obj --width"), "");
+  EXPECT_EQ(voxflame::cli::usageErrorOf({"voxflame", "__import-mesh", "--", "mesh.obj", ""}), "");
+  EXPECT_NE(usageErrorOf("__import-mesh -- mesh.obj"), "");
+}
+
 TEST(CliOptions, NegativeNumbersAreValues) {
   EXPECT_EQ(usageErrorOf("render -o out.png --camera-azimuth -30"), "");
   EXPECT_EQ(usageErrorOf("render -o out.png --camera-elevation -89.5"), "");
@@ -208,8 +217,9 @@ TEST(CliOptions, EverySubcommandHasAGeneratedHelpListingItsOptions) {
   EXPECT_EQ(top.exitStatus, 0);
   for (const char* part : {"--screenshot", "--ui-scale", "render", "animate", "bench", "import"})
     EXPECT_NE(top.output.find(part), std::string::npos) << part << "\n" << top.output;
-  // `help` is hidden: it works, but --help does not list it among the subcommands.
+  // `help` and the mesh import child are hidden: they work, but --help does not list them.
   EXPECT_EQ(top.output.find("\n  help "), std::string::npos) << top.output;
+  EXPECT_EQ(top.output.find("import-mesh"), std::string::npos) << top.output;
   EXPECT_EQ(runVoxflame("help").output, top.output);
   const auto version = runVoxflame("--version");
   EXPECT_EQ(version.exitStatus, 0);
