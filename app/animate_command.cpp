@@ -30,10 +30,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "atomic_file.h"
+#include "core/file_output.h"
 #include "commands.h"
 #include "core/accumulator.h"
 #include "core/error.h"
+#include "core/file_output.h"
 #include "core/keyframes.h"
 #include "core/packed_volume.h"
 #include "farm_job.h"
@@ -184,8 +185,9 @@ int writeFarmJob(const FarmJob& job, bool submit) {
   const std::vector<FrameRange> ranges = splitFrames(job.frames, job.tasks);
   const std::filesystem::path render = renderScriptPath(job);
   const std::filesystem::path finish = finishScriptPath(job);
-  writeFileAtomically(render, renderJobScript(job), 0755, ".part", "cannot write the job script");
-  writeFileAtomically(finish, finishJobScript(job), 0755, ".part", "cannot write the job script");
+  const core::AtomicWriteOptions script{.mode = 0755, .createFolder = true, .what = "cannot write the job script"};
+  core::writeFileAtomically(render, renderJobScript(job), script);
+  core::writeFileAtomically(finish, finishJobScript(job), script);
   std::string split;
   for (const FrameRange& range : ranges)
     split += (split.empty() ? "" : ", ") + std::to_string(range.first) + "-" + std::to_string(range.last);

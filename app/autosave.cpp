@@ -13,8 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/file_output.h"
 #include "core/xdg_paths.h"
-#include "atomic_file.h"
 #include "json_guard.h"
 
 namespace voxflame::app {
@@ -173,7 +173,6 @@ void Autosave::finishCleanly() {
   if (!file_.empty()) {
     std::error_code ec;
     std::filesystem::remove(file_, ec);
-    std::filesystem::remove(file_.string() + ".tmp", ec);
   }
 }
 
@@ -213,7 +212,7 @@ void Autosave::write(const std::string& preset, const std::string& baseDirectory
   document["base_directory"] = baseDirectory;
   document["preset"] = json::parse(preset);
   const std::string text = document.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
-  writeFileAtomically(file_, text, 0600, ".tmp", "cannot autosave to");
+  core::writeFileAtomically(file_, text, {.mode = 0600, .createFolder = true, .what = "cannot autosave to"});
 }
 
 std::vector<Recoverable> findRecoverable(const std::filesystem::path& folder) {
@@ -224,12 +223,12 @@ std::vector<Recoverable> findRecoverable(const std::filesystem::path& folder) {
     const std::string name = item.path().filename().string();
     const auto namedOwner = ownerFromFileName(name);
     if (!namedOwner) {
-      // A temporary a dead session left mid-write holds nothing the final file lacks.
-      const std::string tmpSuffix = ".json.tmp";
-      if (name.size() > tmpSuffix.size() && name.ends_with(tmpSuffix)) {
-        const auto tmpOwner = ownerFromFileName(name.substr(0, name.size() - 4));
-        if (tmpOwner && !tmpOwner->alive()) std::filesystem::remove(item.path(), ec);
-      }
+      // A temporary a dead session left mid-write holds nothing the final file lacks (".json.tmp"
+      // is how sessions before core::writeFileAtomically named theirs).
+      std::string target = core::atomicTemporaryTarget(name);
+      if (target.empty() && name.ends_with(".json.tmp")) target = name.substr(0, name.size() - 4);
+      const auto tmpOwner = target.empty() ? std::nullopt : ownerFromFileName(target);
+      if (tmpOwner && !tmpOwner->alive()) std::filesystem::remove(item.path(), ec);
       continue;
     }
     Recoverable entry;

@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
-#include "atomic_file.h"
 #include "commands.h"
 #include "core/attractor.h"
+#include "core/file_output.h"
 #include "core/flame_search.h"
 #include "core/flame_variations.h"
 #include "core/lyapunov.h"
@@ -228,7 +228,8 @@ int chaosSearch(core::Scene scene, const core::FlameSearchOptions& options, bool
     // The written preset finds its mesh from wherever it is written.
     if (!scene.embedded)
       scene.meshPath = std::filesystem::absolute(scene.resolvedMeshPath()).lexically_normal().string();
-    writeFileAtomically(*output, core::sceneToJson(scene), 0644, ".partial", "cannot write preset");
+    core::writeFileAtomically(*output, core::sceneToJson(scene),
+                              {.mode = 0644, .createFolder = true, .what = "cannot write preset"});
     if (!asJson) std::printf("wrote the best as %s\n", output->c_str());
   }
   if (static_cast<int>(found.size()) < options.count) {

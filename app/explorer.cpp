@@ -22,6 +22,7 @@
 #include "core/error.h"
 #include "pipeline.h"
 #include "explorer_session.h"
+#include "gl/read_back.h"
 #include "explorer_ui.h"
 #include "live_view.h"
 
@@ -49,16 +50,8 @@ void saveScreenshot(const std::filesystem::path& path, int width, int height) {
   core::ImageRGBA image;
   image.width = width;
   image.height = height;
-  std::vector<float> rows(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadBuffer(GL_BACK);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, rows.data());
-  image.pixels.resize(rows.size());
-  const std::size_t stride = 4 * static_cast<std::size_t>(width);
-  for (int y = 0; y < height; ++y)
-    std::copy_n(&rows[static_cast<std::size_t>(height - 1 - y) * stride], stride,
-                &image.pixels[static_cast<std::size_t>(y) * stride]);
-  for (std::size_t i = 3; i < image.pixels.size(); i += 4) image.pixels[i] = 1.0f;
+  glReadBuffer(GL_BACK);  // the frame just drawn, before the swap
+  image.pixels = gl::readRgbaFloat(0, {0, 0, width, height}, gl::ReadAlpha::Opaque);
   core::writePng(path, image, 8, {});
 }
 

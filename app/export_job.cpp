@@ -14,9 +14,11 @@
 #include <optional>
 #include <sstream>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
+#include "core/file_output.h"
 
 extern char** environ;
 
@@ -158,8 +160,7 @@ ExportJob::~ExportJob() {
       while (::waitpid(pid_, &waitStatus, 0) < 0 && errno == EINTR) {
       }
       // Killed while writing, it may have left its temporary beside the output.
-      std::error_code ec;
-      std::filesystem::remove(std::filesystem::path(status_.output.string() + ".part"), ec);
+      core::removeAtomicTemporaries(status_.output, pid_);
     }
     pid_ = -1;
   }
@@ -345,7 +346,7 @@ ExportStatus ExportJob::poll() {
 }
 
 void ExportJob::finish(std::optional<int> waitStatus) {
-  pid_ = -1;
+  const pid_t child = std::exchange(pid_, -1);
   // The child has gone, so its ends of the pipes are closed: what is left can be read whole.
   readPipes();
   std::string summary, error, warning;
@@ -370,10 +371,7 @@ void ExportJob::finish(std::optional<int> waitStatus) {
     status_.warning = warning;
   } else if (cancelRequested_ || (exited && code == 130) || signal == SIGINT || signal == SIGTERM) {
     status_.state = ExportState::Cancelled;
-    if (signal == SIGKILL) {
-      std::error_code ec;
-      std::filesystem::remove(std::filesystem::path(status_.output.string() + ".part"), ec);
-    }
+    if (signal == SIGKILL) core::removeAtomicTemporaries(status_.output, child);
   } else {
     status_.state = ExportState::Failed;
     if (!error.empty())

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <iostream>
 
-#include "atomic_file.h"
 #include "commands.h"
 #include "core/error.h"
+#include "core/file_output.h"
 #include "core/flame_xml.h"
 #include "core/scene_io.h"
 #include "usage_error.h"
@@ -74,7 +74,7 @@ int importCommand(const ImportArguments& arguments) {
   // What is written must load: read it back before it replaces anything.
   const std::string json = core::sceneToJson(scene);
   core::sceneFromJson(json, output);
-  writeFileAtomically(output, json, 0644, ".tmp", "preset");
+  core::writeFileAtomically(output, json, {.mode = 0644, .createFolder = true, .what = "cannot write preset"});
   const std::size_t count = contents.names.size();
   const std::size_t transforms = contents.flame.genome.xforms.size();
   char depth[48] = "";

@@ -8,6 +8,7 @@
 #include "core/camera.h"
 #include "core/color.h"
 #include "core/error.h"
+#include "gl/read_back.h"
 
 namespace voxflame::app {
 
@@ -19,19 +20,11 @@ constexpr int kShadowDownsample = 2;
 constexpr std::size_t kUploadBytesPerFrame = 48u << 20;
 
 // The framebuffer's picture as a thumbnail (rows top to bottom, opaque).
-Thumbnail readThumbnail(int width, int height) {
+Thumbnail readThumbnail(unsigned framebuffer, int width, int height) {
   Thumbnail thumbnail;
   thumbnail.width = width;
   thumbnail.height = height;
-  std::vector<std::uint8_t> rows(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-  thumbnail.rgba.resize(rows.size());
-  const std::size_t stride = 4 * static_cast<std::size_t>(width);
-  for (int y = 0; y < height; ++y)
-    std::copy_n(&rows[static_cast<std::size_t>(height - 1 - y) * stride], stride,
-                &thumbnail.rgba[static_cast<std::size_t>(y) * stride]);
-  for (std::size_t i = 3; i < thumbnail.rgba.size(); i += 4) thumbnail.rgba[i] = 255;
+  thumbnail.rgba = gl::readRgba8(framebuffer, {0, 0, width, height}, gl::ReadAlpha::Opaque);
   return thumbnail;
 }
 
@@ -182,7 +175,7 @@ void LiveView::serveRequests(ExplorerState& state, int width, int height, unsign
       try {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         const std::filesystem::path saved =
-            presets_->saveAs(state.scene, *state.requests.saveAs, readThumbnail(width, height));
+            presets_->saveAs(state.scene, *state.requests.saveAs, readThumbnail(framebuffer, width, height));
         state.presetMessage = "saved " + saved.string();
         state.settings.addRecent(RecentKind::Preset, saved);
       } catch (const core::Error& e) {

@@ -1,16 +1,13 @@
 #include "preset_library.h"
 
-#include <png.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
-#include <csetjmp>
-#include <cstdio>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/file_output.h"
 #include "core/image_io.h"
 #include "json_guard.h"
 #include "pipeline.h"
@@ -22,98 +19,19 @@ namespace {
 
 constexpr std::uintmax_t kMaxPresetBytes = 4 << 20;  // a preset is a few kilobytes
 constexpr int kMaxPresetNesting = 64;
-constexpr png_uint_32 kMaxThumbnailSide = 16384;
-// Interlaced PNGs must be decoded whole; non-interlaced ones are read a row at a time.
-constexpr std::uint64_t kMaxInterlacedPixels = 4096ull * 4096ull;
+// A thumbnail is decoded whole, as floats: this bounds that to a quarter of a gigabyte.
+constexpr std::uint64_t kMaxThumbnailPixels = 4096ull * 4096ull;
 constexpr std::size_t kMaxStemBytes = 80;
 
-// --- PNG decoding: libpng reports errors by longjmp, so each step runs in a function that owns
-// no C++ object with a destructor across its setjmp.
-
-struct PngReader {
-  png_structp png = nullptr;
-  png_infop info = nullptr;
-  std::string reason;
-};
-
-[[noreturn]] void pngError(png_structp png, png_const_charp message) {
-  auto* reason = static_cast<std::string*>(png_get_error_ptr(png));
-  if (reason) *reason = message;
-  png_longjmp(png, 1);
-}
-void pngWarning(png_structp, png_const_charp) {}
-
-bool readPngHeader(PngReader& reader, std::FILE* file, png_uint_32& width, png_uint_32& height, int& passes) {
-  if (setjmp(png_jmpbuf(reader.png))) return false;
-  png_init_io(reader.png, file);
-  png_set_user_limits(reader.png, kMaxThumbnailSide, kMaxThumbnailSide);
-  png_read_info(reader.png, reader.info);
-  png_set_expand(reader.png);
-  png_set_strip_16(reader.png);
-  png_set_gray_to_rgb(reader.png);
-  png_set_add_alpha(reader.png, 0xff, PNG_FILLER_AFTER);
-  passes = png_set_interlace_handling(reader.png);
-  png_read_update_info(reader.png, reader.info);
-  width = png_get_image_width(reader.png, reader.info);
-  height = png_get_image_height(reader.png, reader.info);
-  return png_get_rowbytes(reader.png, reader.info) == 4 * static_cast<std::size_t>(width);
-}
-
-bool readPngRow(PngReader& reader, png_bytep row) {
-  if (setjmp(png_jmpbuf(reader.png))) return false;
-  png_read_row(reader.png, row, nullptr);
-  return true;
-}
-
-// Sums source pixels into the output pixel each falls in: a box filter that never enlarges.
-class BoxDownscaler {
- public:
-  BoxDownscaler(int sourceWidth, int sourceHeight, int maxWidth)
-      : sourceWidth_(sourceWidth), sourceHeight_(sourceHeight) {
-    width_ = std::max(1, std::min(sourceWidth, maxWidth));
-    height_ = std::max(1, static_cast<int>(static_cast<long long>(sourceHeight) * width_ / sourceWidth));
-    column_.resize(static_cast<std::size_t>(sourceWidth));
-    for (int x = 0; x < sourceWidth; ++x)
-      column_[static_cast<std::size_t>(x)] = static_cast<int>(static_cast<long long>(x) * width_ / sourceWidth);
-    sums_.assign(4 * static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0);
-    counts_.assign(static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_), 0);
-  }
-
-  void addRow(int y, const std::uint8_t* rgba) {
-    const auto outY = static_cast<std::size_t>(static_cast<long long>(y) * height_ / sourceHeight_);
-    for (int x = 0; x < sourceWidth_; ++x) {
-      const std::size_t out =
-          outY * static_cast<std::size_t>(width_) + static_cast<std::size_t>(column_[static_cast<std::size_t>(x)]);
-      for (std::size_t c = 0; c < 4; ++c) sums_[4 * out + c] += rgba[4 * static_cast<std::size_t>(x) + c];
-      ++counts_[out];
-    }
-  }
-
-  Thumbnail finish() const {
-    Thumbnail thumbnail;
-    thumbnail.width = width_;
-    thumbnail.height = height_;
-    thumbnail.rgba.resize(sums_.size());
-    for (std::size_t i = 0; i < counts_.size(); ++i)
-      for (std::size_t c = 0; c < 4; ++c)
-        thumbnail.rgba[4 * i + c] =
-            static_cast<std::uint8_t>(counts_[i] ? (sums_[4 * i + c] + counts_[i] / 2) / counts_[i] : 0);
-    return thumbnail;
-  }
-
- private:
-  int sourceWidth_, sourceHeight_;
-  int width_ = 0, height_ = 0;
-  std::vector<int> column_;
-  std::vector<std::uint64_t> sums_;
-  std::vector<std::uint64_t> counts_;
-};
-
-Thumbnail downscale(const Thumbnail& source, int maxWidth) {
-  BoxDownscaler scaler(source.width, source.height, maxWidth);
-  for (int y = 0; y < source.height; ++y)
-    scaler.addRow(y, &source.rgba[4 * static_cast<std::size_t>(y) * static_cast<std::size_t>(source.width)]);
-  return scaler.finish();
+// RGBA8 from display-ready floats in [0, 1].
+Thumbnail toThumbnail(const core::ImageRGBA& image) {
+  Thumbnail thumbnail;
+  thumbnail.width = image.width;
+  thumbnail.height = image.height;
+  thumbnail.rgba.resize(image.pixels.size());
+  for (std::size_t i = 0; i < image.pixels.size(); ++i)
+    thumbnail.rgba[i] = static_cast<std::uint8_t>(std::lround(std::clamp(image.pixels[i], 0.0f, 1.0f) * 255.0f));
+  return thumbnail;
 }
 
 std::string lowercase(std::string text) {
@@ -198,26 +116,6 @@ std::vector<PresetEntry> scanFolder(const std::filesystem::path& folder, PresetS
   return entries;
 }
 
-void writeTextAtomically(const std::filesystem::path& path, const std::string& text) {
-  const std::filesystem::path temporary =
-      path.parent_path() / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
-  {
-    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-    out << text;
-    if (!out.flush()) {
-      std::error_code ec;
-      std::filesystem::remove(temporary, ec);
-      throw core::Error("cannot write preset '" + path.string() + "': the folder is missing or not writable");
-    }
-  }
-  std::error_code ec;
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) {
-    std::filesystem::remove(temporary, ec);
-    throw core::Error("cannot write preset '" + path.string() + "': " + ec.message());
-  }
-}
-
 }  // namespace
 
 std::vector<std::filesystem::path> shippedPresetFolderCandidates(const std::filesystem::path& executable) {
@@ -258,48 +156,7 @@ std::vector<PresetEntry> listPresets(const std::filesystem::path& shippedFolder,
 }
 
 Thumbnail decodeThumbnail(const std::filesystem::path& path, int maxWidth) {
-  struct FileCloser {
-    void operator()(std::FILE* f) const {
-      if (f) std::fclose(f);
-    }
-  };
-  const std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
-  if (!file) throw core::Error("cannot open thumbnail '" + path.string() + "'");
-  PngReader reader;
-  reader.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reader.reason, pngError, pngWarning);
-  if (!reader.png) throw core::Error("out of memory decoding thumbnail '" + path.string() + "'");
-  reader.info = png_create_info_struct(reader.png);
-  struct Destroy {
-    PngReader& reader;
-    ~Destroy() { png_destroy_read_struct(&reader.png, &reader.info, nullptr); }
-  } destroy{reader};
-  const auto fail = [&]() -> core::Error {
-    return core::Error("'" + path.string() + "' is not a readable PNG" +
-                       (reader.reason.empty() ? "" : ": " + reader.reason));
-  };
-  png_uint_32 width = 0, height = 0;
-  int passes = 1;
-  if (!reader.info || !readPngHeader(reader, file.get(), width, height, passes)) throw fail();
-  if (width == 0 || height == 0) throw fail();
-  BoxDownscaler scaler(static_cast<int>(width), static_cast<int>(height), std::max(1, maxWidth));
-  if (passes > 1) {
-    if (static_cast<std::uint64_t>(width) * height > kMaxInterlacedPixels)
-      throw core::Error("thumbnail '" + path.string() + "' is interlaced and too large (" + std::to_string(width) +
-                        "×" + std::to_string(height) + ")");
-    std::vector<std::uint8_t> image(4 * static_cast<std::size_t>(width) * height);
-    for (int pass = 0; pass < passes; ++pass)
-      for (png_uint_32 y = 0; y < height; ++y)
-        if (!readPngRow(reader, &image[4 * static_cast<std::size_t>(width) * y])) throw fail();
-    for (png_uint_32 y = 0; y < height; ++y)
-      scaler.addRow(static_cast<int>(y), &image[4 * static_cast<std::size_t>(width) * y]);
-  } else {
-    std::vector<std::uint8_t> row(4 * static_cast<std::size_t>(width));
-    for (png_uint_32 y = 0; y < height; ++y) {
-      if (!readPngRow(reader, row.data())) throw fail();
-      scaler.addRow(static_cast<int>(y), row.data());
-    }
-  }
-  return scaler.finish();
+  return toThumbnail(core::downscaleToWidth(core::readPng(path, kMaxThumbnailPixels).image, std::max(1, maxWidth)));
 }
 
 std::string sanitizePresetName(std::string_view displayName) {
@@ -359,18 +216,18 @@ std::filesystem::path savePresetAs(const core::Scene& scene, const std::string& 
   const std::string json = core::sceneToJson(stored);
   // The thumbnail first: a preset that appears has its picture, or a stale one is replaced.
   if (thumbnail.width > 0 && thumbnail.height > 0) {
-    const Thumbnail small = downscale(thumbnail, kSavedThumbnailWidth);
     core::ImageRGBA image;
-    image.width = small.width;
-    image.height = small.height;
-    image.pixels.resize(small.rgba.size());
-    for (std::size_t i = 0; i < small.rgba.size(); ++i) image.pixels[i] = static_cast<float>(small.rgba[i]) / 255.0f;
-    core::writePng(thumbnailPath, image, 8,
+    image.width = thumbnail.width;
+    image.height = thumbnail.height;
+    image.pixels.resize(thumbnail.rgba.size());
+    for (std::size_t i = 0; i < thumbnail.rgba.size(); ++i)
+      image.pixels[i] = static_cast<float>(thumbnail.rgba[i]) / 255.0f;
+    core::writePng(thumbnailPath, core::downscaleToWidth(image, kSavedThumbnailWidth), 8,
                    {{kPresetChunkKey, json}, {"Software", std::string("voxflame ") + kVersion}});
   } else if (overwrite) {
     std::filesystem::remove(thumbnailPath, ec);  // it would show the replaced preset
   }
-  writeTextAtomically(path, json);
+  core::writeFileAtomically(path, json, {.what = "cannot write preset"});
   return path;
 }
 

@@ -68,9 +68,9 @@ std::filesystem::path findShippedPresetFolder(const std::filesystem::path& execu
 std::vector<PresetEntry> listPresets(const std::filesystem::path& shippedFolder,
                                      const std::filesystem::path& userFolder);
 
-// Decodes a PNG (any kind libpng reads, up to 16384 pixels a side) into RGBA8, box-filtered
-// down to at most `maxWidth` wide (never enlarged), keeping the aspect ratio. Throws
-// core::Error naming the file.
+// Decodes a PNG (any kind core::readPng reads, up to 4096×4096 pixels in all) into RGBA8,
+// area-averaged down to at most `maxWidth` wide (never enlarged; core::downscaleToWidth),
+// keeping the aspect ratio. Throws core::Error naming the file.
 Thumbnail decodeThumbnail(const std::filesystem::path& png, int maxWidth = kThumbnailWidth);
 
 // A file name stem for a display name: letters, digits (UTF-8 letters included), '-' and '_'

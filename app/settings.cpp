@@ -1,20 +1,15 @@
 #include "settings.h"
 
-#include <fcntl.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "core/file_output.h"
 #include "core/xdg_paths.h"
-#include "atomic_file.h"
 #include "json_guard.h"
 
 namespace voxflame::app {
@@ -278,7 +273,7 @@ void saveSettings(const Settings& settings, const std::filesystem::path& file) {
   // the rest of the file.
   const std::string text = settingsToJson(settings).dump(2, ' ', false, json::error_handler_t::replace) + "\n";
   // The pid keeps two explorers saving at once from sharing a temporary.
-  writeFileAtomically(file, text, 0644, ".tmp-" + std::to_string(::getpid()), "cannot write settings");
+  core::writeFileAtomically(file, text, {.mode = 0644, .createFolder = true, .what = "cannot write settings"});
 }
 
 }  // namespace voxflame::app

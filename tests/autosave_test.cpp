@@ -219,6 +219,8 @@ TEST(Autosave, CorruptFilesGiveMessagesNotCrashes) {
   std::ofstream(file(4)) << R"({"format": "voxflame-autosave", "owner": {"pid": "seven"}, "preset": {}})";
   std::ofstream(folder / "autosave-garbage.json") << "ignored: not named like an autosave";
   std::ofstream(folder / ("autosave-" + std::to_string(dead) + "-9.json.tmp")) << "half written";
+  std::ofstream(folder / ("autosave-" + std::to_string(dead) + "-8.json." + std::to_string(dead) + "-0.part"))
+      << "half written";
   const auto found = findRecoverable(folder.path());
   ASSERT_EQ(found.size(), 4u);
   for (const auto& entry : found) {
@@ -230,6 +232,8 @@ TEST(Autosave, CorruptFilesGiveMessagesNotCrashes) {
   EXPECT_NE(attractor->error.find("no-such-attractor"), std::string::npos) << attractor->error;
   // The dead session's half-written temporary is cleared away.
   EXPECT_FALSE(std::filesystem::exists(folder / ("autosave-" + std::to_string(dead) + "-9.json.tmp")));
+  EXPECT_FALSE(std::filesystem::exists(
+      folder / ("autosave-" + std::to_string(dead) + "-8.json." + std::to_string(dead) + "-0.part")));
   EXPECT_TRUE(findRecoverable(folder / "no-such-folder").empty());
 }
 

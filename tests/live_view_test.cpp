@@ -14,6 +14,7 @@
 #include "explorer_session.h"
 #include "export_job.h"
 #include "gl/headless_context.h"
+#include "gl/read_back.h"
 #include "live_view.h"
 #include "preset_library.h"
 #include "test_support.h"
@@ -45,10 +46,7 @@ class Canvas {
   unsigned framebuffer() const { return framebuffer_; }
   // The brightest channel value in the picture.
   int brightest() const {
-    std::vector<std::uint8_t> pixels(4 * kWidth * kHeight);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    const std::vector<std::uint8_t> pixels = gl::readRgba8(framebuffer_, {0, 0, kWidth, kHeight});
     int most = 0;
     for (std::size_t i = 0; i < pixels.size(); i += 4)
       most = std::max({most, int(pixels[i]), int(pixels[i + 1]), int(pixels[i + 2])});

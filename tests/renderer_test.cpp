@@ -2,11 +2,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "core/camera.h"
+#include "core/error.h"
 #include "core/flame_image.h"
 #include "core/packed_volume.h"
 #include "gl/headless_context.h"
+#include "gl/read_back.h"
+#include "gl/shader_program.h"
 #include "gl/volume_renderer.h"
 
 using namespace voxflame;
@@ -245,4 +249,109 @@ TEST(PackedVolume, HalfFloatConversionRoundTrips) {
   for (float value : {0.0f, 1.0f, -2.5f, 0.333f, 1e-5f, 6.1e-5f, 65504.0f, 1e-7f})
     EXPECT_NEAR(core::halfToFloat(core::floatToHalf(value)), value, std::abs(value) * 1e-3f + 6e-8f) << value;
   EXPECT_TRUE(std::isinf(core::halfToFloat(core::floatToHalf(1e6f))));
+}
+
+TEST(PackedVolume, HalfFloatRoundsToNearestEven) {
+  // The bits the hand-written converter gave before Imath::half replaced it.
+  EXPECT_EQ(core::floatToHalf(1.0f), 0x3c00);
+  EXPECT_EQ(core::floatToHalf(1.0f + 0x1p-11f), 0x3c00);             // a tie: down to the even mantissa
+  EXPECT_EQ(core::floatToHalf(1.0f + 3 * 0x1p-11f), 0x3c02);         // a tie: up to the even mantissa
+  EXPECT_EQ(core::floatToHalf(1.0f + 0x1p-11f + 0x1p-20f), 0x3c01);  // past the tie
+  EXPECT_EQ(core::floatToHalf(65519.0f), 0x7bff);
+  EXPECT_EQ(core::floatToHalf(65520.0f), 0x7c00);  // overflows to infinity
+  EXPECT_EQ(core::floatToHalf(-0.0f), 0x8000);
+  EXPECT_EQ(core::floatToHalf(0x1p-24f), 0x0001);  // smallest subnormal
+  EXPECT_EQ(core::floatToHalf(0x1p-25f), 0x0000);  // half of it: a tie, to even zero
+  EXPECT_EQ(core::floatToHalf(0x1.8p-24f), 0x0002);
+  EXPECT_EQ(core::halfToFloat(0x3555), 0.333251953125f);
+  EXPECT_EQ(core::halfToFloat(0x0001), 0x1p-24f);
+  EXPECT_TRUE(std::isnan(core::halfToFloat(core::floatToHalf(std::nanf("")))));
+}
+
+namespace {
+
+// A framebuffer object of one colour texture, bound for drawing while it lives.
+struct TestFramebuffer {
+  GLuint framebuffer = 0, texture = 0;
+  TestFramebuffer(int width, int height, GLenum format) {
+    glGenTextures(1, &texture);
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, static_cast<GLint>(format), width, height, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glGenFramebuffers(1, &framebuffer);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) throw std::runtime_error("incomplete");
+    glViewport(0, 0, width, height);
+  }
+  ~TestFramebuffer() {
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDeleteFramebuffers(1, &framebuffer);
+    glDeleteTextures(1, &texture);
+  }
+  // Fills the rectangle with lower-left corner (x, y) in GL's coordinates.
+  static void fill(int x, int y, int width, int height, float r, float g, float b, float a) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, width, height);
+    glClearColor(r, g, b, a);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+  }
+};
+
+}  // namespace
+
+TEST_F(Renderer, ReadBackReturnsRowsTopToBottom) {
+  constexpr int kWidth = 5, kHeight = 4;
+  TestFramebuffer target(kWidth, kHeight, GL_RGBA8);
+  TestFramebuffer::fill(0, 0, kWidth, kHeight, 0.0f, 0.0f, 1.0f, 0.5f);      // blue, half alpha
+  TestFramebuffer::fill(0, kHeight - 1, kWidth, 1, 1.0f, 0.0f, 0.0f, 0.5f);  // the top row red
+  TestFramebuffer::fill(kWidth - 1, 0, 1, 1, 0.0f, 1.0f, 0.0f, 0.5f);        // the bottom-right pixel green
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 8);
+
+  const std::vector<std::uint8_t> bytes = gl::readRgba8(target.framebuffer, {0, 0, kWidth, kHeight});
+  ASSERT_EQ(bytes.size(), 4u * kWidth * kHeight);
+  const auto byte = [&](int x, int y, int c) { return bytes[4 * static_cast<std::size_t>(y * kWidth + x) + c]; };
+  for (int x = 0; x < kWidth; ++x) EXPECT_EQ(byte(x, 0, 0), 255) << x;  // first row returned: the top
+  EXPECT_EQ(byte(0, kHeight - 1, 2), 255);
+  EXPECT_EQ(byte(kWidth - 1, kHeight - 1, 1), 255);  // the last row: the bottom
+  EXPECT_EQ(byte(kWidth - 1, kHeight - 1, 0), 0);
+  EXPECT_EQ(byte(2, 2, 3), 128);  // alpha kept
+
+  const std::vector<float> floats =
+      gl::readRgbaFloat(target.framebuffer, {0, 0, kWidth, kHeight}, gl::ReadAlpha::Opaque);
+  ASSERT_EQ(floats.size(), bytes.size());
+  for (std::size_t i = 0; i < floats.size(); ++i)
+    EXPECT_FLOAT_EQ(floats[i], i % 4 == 3 ? 1.0f : static_cast<float>(bytes[i]) / 255.0f) << i;
+
+  // A region: its own top row first (GL's y = 0 is the image's bottom row).
+  const std::vector<std::uint8_t> corner = gl::readRgba8(target.framebuffer, {kWidth - 2, 0, 2, 2});
+  ASSERT_EQ(corner.size(), 4u * 2 * 2);
+  EXPECT_EQ(corner[4 * 3 + 1], 255);  // bottom-right green, last in the region
+  EXPECT_EQ(corner[4 * 2 + 2], 255);  // bottom-left of the region: blue
+  EXPECT_EQ(corner[0 + 2], 255);      // top-left of the region: blue
+
+  // State left as found.
+  GLint binding = -1, alignment = 0;
+  glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &binding);
+  glGetIntegerv(GL_PACK_ALIGNMENT, &alignment);
+  EXPECT_EQ(binding, 0);
+  EXPECT_EQ(alignment, 8);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  EXPECT_TRUE(gl::readRgba8(target.framebuffer, {0, 0, 0, 3}).empty());
+}
+
+TEST_F(Renderer, ShadersComeFromEmbeddedFilesAndErrorsNameTheFile) {
+  const gl::ShaderSource march = gl::embeddedShader("march.frag.glsl");
+  EXPECT_EQ(march.file, "engine/gl/shaders/march.frag.glsl");
+  EXPECT_EQ(march.text.rfind("#version 430 core\n", 0), 0u);
+  EXPECT_THROW(gl::embeddedShader("no-such.frag.glsl"), core::Error);
+  try {
+    gl::ShaderProgram program(gl::embeddedShader("fullscreen.vert.glsl"),
+                              {"engine/gl/shaders/broken.frag.glsl", "#version 430 core\nvoid main() { oops }\n"});
+    FAIL() << "compiled";
+  } catch (const core::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.frag.glsl"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("fragment shader"), std::string::npos) << e.what();
+  }
 }

@@ -4,6 +4,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace voxflame::test {
 
@@ -21,6 +22,10 @@ class TemporaryFolder {
  private:
   std::filesystem::path path_;
 };
+
+// The names of the files in `folder` that start with `prefix`, sorted: {"out.png"} for
+// "out.png" when no temporary of it was left beside it.
+std::vector<std::string> filesStartingWith(const std::filesystem::path& folder, const std::string& prefix);
 
 // The message core::sceneFromJson gives for this preset text, or "" when it loads.
 std::string presetErrorOf(const std::string& json);

@@ -16,9 +16,7 @@ namespace voxflame::core {
 
 void writeExr(const std::filesystem::path& path, const ImageRGBA& image, const TextChunks& text) {
   if (image.width <= 0 || image.height <= 0) throw Error("cannot write an empty image to '" + path.string() + "'");
-  std::filesystem::path temporary = path;
-  temporary += ".part";
-  try {
+  writeFileAtomicallyWith(path, [&](const std::filesystem::path& temporary) {
     Imf::Header header(image.width, image.height);
     for (const char* channel : {"R", "G", "B", "A"}) header.channels().insert(channel, Imf::Channel(Imf::FLOAT));
     for (const auto& [key, value] : text) header.insert(key, Imf::StringAttribute(value));
@@ -32,12 +30,7 @@ void writeExr(const std::filesystem::path& path, const ImageRGBA& image, const T
     Imf::OutputFile file(temporary.c_str(), header);
     file.setFrameBuffer(frame);
     file.writePixels(image.height);
-  } catch (const std::exception& e) {
-    std::error_code ec;
-    std::filesystem::remove(temporary, ec);
-    throw Error("cannot write '" + path.string() + "': " + e.what());
-  }
-  moveIntoPlace(temporary, path);
+  });
 }
 
 ImageRGBA readExr(const std::filesystem::path& path) {

@@ -1,5 +1,4 @@
 #include "image_io.h"
-#include "file_output.h"
 
 #include <png.h>
 
@@ -10,6 +9,7 @@
 #include <memory>
 
 #include "error.h"
+#include "file_output.h"
 
 namespace voxflame::core {
 
@@ -90,26 +90,21 @@ void writePng(const std::filesystem::path& path, const ImageRGBA& image, int bit
     texts[i].itxt_length = values[i].size();
   }
 
-  std::filesystem::path temporary = path;
-  temporary += ".part";
-  std::string reason;
-  {
+  writeFileAtomicallyWith(path, [&](const std::filesystem::path& temporary) {
+    std::string reason;
     FilePtr file(std::fopen(temporary.c_str(), "wb"));
     if (!file) throw Error("cannot write '" + path.string() + "': the folder is missing or not writable");
     const bool ok = writePngFile(file.get(), image, bitDepth, texts, rows, reason);
-    const bool flushed = std::fflush(file.get()) == 0;
-    if (!ok || !flushed) {
-      file.reset();
-      std::filesystem::remove(temporary);
+    const bool closed = std::fclose(file.release()) == 0;
+    if (!ok || !closed)
       throw Error("cannot write '" + path.string() + "': " + (reason.empty() ? "disk full?" : reason));
-    }
-  }
-  moveIntoPlace(temporary, path);
+  });
 }
 
 namespace {
 
-bool readPngFile(std::FILE* file, PngInfo& out, std::vector<std::uint8_t>& data, std::string& reason) {
+bool readPngFile(std::FILE* file, std::uint64_t maxPixels, PngInfo& out, std::vector<std::uint8_t>& data,
+                 std::string& reason) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reason, pngError, pngWarning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
@@ -120,6 +115,8 @@ bool readPngFile(std::FILE* file, PngInfo& out, std::vector<std::uint8_t>& data,
   png_init_io(png, file);
   png_set_user_limits(png, 1u << 16, 1u << 16);
   png_read_info(png, info);
+  if (static_cast<std::uint64_t>(png_get_image_width(png, info)) * png_get_image_height(png, info) > maxPixels)
+    png_error(png, "the image is too large");
   const int bitDepth = png_get_bit_depth(png, info);
   png_set_expand(png);
   png_set_gray_to_rgb(png);
@@ -148,13 +145,13 @@ bool readPngFile(std::FILE* file, PngInfo& out, std::vector<std::uint8_t>& data,
 
 }  // namespace
 
-PngInfo readPng(const std::filesystem::path& path) {
+PngInfo readPng(const std::filesystem::path& path, std::uint64_t maxPixels) {
   FilePtr file(std::fopen(path.c_str(), "rb"));
   if (!file) throw Error("cannot open image '" + path.string() + "'");
   PngInfo info;
   std::vector<std::uint8_t> data;
   std::string reason;
-  if (!readPngFile(file.get(), info, data, reason))
+  if (!readPngFile(file.get(), maxPixels, info, data, reason))
     throw Error("'" + path.string() + "' is not a readable PNG" + (reason.empty() ? "" : ": " + reason));
   const std::size_t samples =
       4 * static_cast<std::size_t>(info.image.width) * static_cast<std::size_t>(info.image.height);
@@ -163,6 +160,57 @@ PngInfo readPng(const std::filesystem::path& path) {
     info.image.pixels[i] = info.bitDepth == 16 ? static_cast<float>(data[2 * i] | (data[2 * i + 1] << 8)) / 65535.0f
                                                : static_cast<float>(data[i]) / 255.0f;
   return info;
+}
+
+namespace {
+
+struct Tap {
+  int source;
+  float weight;
+};
+
+// For each of `to` output cells along an axis of `from` source cells: the source cells it
+// covers and the share of each (weights sum to 1).
+std::vector<std::vector<Tap>> areaTaps(int from, int to) {
+  std::vector<std::vector<Tap>> taps(static_cast<std::size_t>(to));
+  const double scale = static_cast<double>(from) / to;
+  for (int o = 0; o < to; ++o) {
+    const double begin = o * scale, end = (o + 1) * scale;
+    for (int s = static_cast<int>(begin); s < from && s < end; ++s) {
+      const double covered = std::min(end, s + 1.0) - std::max(begin, static_cast<double>(s));
+      if (covered > 1e-9) taps[static_cast<std::size_t>(o)].push_back({s, static_cast<float>(covered / scale)});
+    }
+  }
+  return taps;
+}
+
+}  // namespace
+
+ImageRGBA downscaleToWidth(const ImageRGBA& image, int maxWidth) {
+  if (image.width <= 0 || image.height <= 0) return image;
+  const int width = std::clamp(maxWidth, 1, image.width);
+  const int height = std::max(1, static_cast<int>(static_cast<long long>(image.height) * width / image.width));
+  if (width == image.width && height == image.height) return image;
+  const auto across = areaTaps(image.width, width), down = areaTaps(image.height, height);
+  // Rows first, then columns: separable, so a pixel costs the taps of one axis plus the other.
+  std::vector<float> rows(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(image.height), 0.0f);
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < width; ++x) {
+      float* out =
+          &rows[4 * (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + static_cast<std::size_t>(x))];
+      for (const Tap& tap : across[static_cast<std::size_t>(x)])
+        for (int c = 0; c < 4; ++c) out[c] += tap.weight * image.at(tap.source, y)[c];
+    }
+  ImageRGBA result;
+  result.width = width;
+  result.height = height;
+  result.pixels.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
+  for (int y = 0; y < height; ++y)
+    for (const Tap& tap : down[static_cast<std::size_t>(y)])
+      for (std::size_t i = 0; i < 4 * static_cast<std::size_t>(width); ++i)
+        result.pixels[4 * static_cast<std::size_t>(y) * static_cast<std::size_t>(width) + i] +=
+            tap.weight * rows[4 * static_cast<std::size_t>(tap.source) * static_cast<std::size_t>(width) + i];
+  return result;
 }
 
 }  // namespace voxflame::core

@@ -40,6 +40,14 @@ struct PngInfo {
   TextChunks text;
   int bitDepth = 8;
 };
-PngInfo readPng(const std::filesystem::path& path);
+// Reads any PNG libpng reads (up to 65536 pixels a side) as RGBA in [0, 1], rows top to bottom.
+// Throws core::Error naming the file when it cannot, or when it holds more than `maxPixels`
+// (checked before the pixels are decoded).
+PngInfo readPng(const std::filesystem::path& path, std::uint64_t maxPixels = UINT64_MAX);
+
+// `image` shrunk to at most `maxWidth` pixels wide (never enlarged; at least 1), the height in
+// proportion (rounded down, at least 1). Each output pixel is the area average of the source
+// pixels it covers, a source pixel straddling two outputs counting in each by the part it gives.
+ImageRGBA downscaleToWidth(const ImageRGBA& image, int maxWidth);
 
 }  // namespace voxflame::core

@@ -1,18 +1,17 @@
 #include "mask_cache.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iterator>
-#include <random>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "error.h"
+#include "file_output.h"
 #include "xdg_paths.h"
 
 namespace voxflame::core {
@@ -126,22 +125,14 @@ void writeEntry(const std::filesystem::path& path, std::uint64_t key, const Insi
   header.voxelSize = g.voxelSize;
   header.packedBytes = packed.size();
   header.checksum = checksumOf(packed);
-  // A unique temporary name, renamed into place: two processes filling the same entry at once
-  // each write whole files and one of them wins.
-  std::filesystem::path temporary = path;
-  temporary += ".part" + std::to_string(::getpid()) + "-" + std::to_string(std::random_device{}());
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    out.write(reinterpret_cast<const char*>(&header), sizeof header);
-    out.write(reinterpret_cast<const char*>(packed.data()), static_cast<std::streamsize>(packed.size()));
-    if (!out.flush()) {
-      out.close();
-      std::filesystem::remove(temporary, ec);
-      return;
-    }
+  std::string bytes(reinterpret_cast<const char*>(&header), sizeof header);
+  bytes.append(reinterpret_cast<const char*>(packed.data()), packed.size());
+  // Two processes filling the same entry at once each write a whole file and one of them wins.
+  // The cache is an optimisation: an entry that cannot be written is simply not cached.
+  try {
+    writeFileAtomically(path, bytes);
+  } catch (const Error&) {  // nothing cached; the caller has its mask
   }
-  std::filesystem::rename(temporary, path, ec);
-  if (ec) std::filesystem::remove(temporary, ec);
 }
 
 }  // namespace

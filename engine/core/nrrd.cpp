@@ -32,21 +32,14 @@ void writeNrrdMask(const std::filesystem::path& path, const InsideMask& mask) {
   if (mask.inside.size() != mask.geometry.voxelCount())
     throw Error("cannot write '" + path.string() + "': the mask does not match its grid");
   const std::string header = nrrdMaskHeader(mask);
-  std::filesystem::path temporary = path;
-  temporary += ".part";
-  {
+  writeFileAtomicallyWith(path, [&](const std::filesystem::path& temporary) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(temporary.c_str(), "wb"), &std::fclose);
     if (!file) throw Error("cannot write '" + path.string() + "': the folder is missing or not writable");
-    const bool ok = std::fwrite(header.data(), 1, header.size(), file.get()) == header.size() &&
-                    std::fwrite(mask.inside.data(), 1, mask.inside.size(), file.get()) == mask.inside.size() &&
-                    std::fflush(file.get()) == 0;
-    if (!ok) {
-      file.reset();
-      std::filesystem::remove(temporary);
-      throw Error("cannot write '" + path.string() + "': disk full?");
-    }
-  }
-  moveIntoPlace(temporary, path);
+    bool ok = std::fwrite(header.data(), 1, header.size(), file.get()) == header.size() &&
+              std::fwrite(mask.inside.data(), 1, mask.inside.size(), file.get()) == mask.inside.size();
+    ok = std::fclose(file.release()) == 0 && ok;
+    if (!ok) throw Error("cannot write '" + path.string() + "': disk full?");
+  });
 }
 
 }  // namespace voxflame::core

@@ -1,46 +1,19 @@
 #include "packed_volume.h"
 
+#include <Imath/half.h>
+
 #include <algorithm>
-#include <bit>
-#include <cmath>
 
 namespace voxflame::core {
 
 std::uint16_t floatToHalf(float value) {
-  const std::uint32_t bits = std::bit_cast<std::uint32_t>(value);
-  const std::uint32_t sign = (bits >> 16) & 0x8000u;
-  const std::uint32_t magnitude = bits & 0x7fffffffu;
-  if (magnitude >= 0x7f800000u)
-    return static_cast<std::uint16_t>(sign | 0x7c00u | (magnitude > 0x7f800000u ? 0x200u : 0u));
-  if (magnitude >= 0x477ff000u) return static_cast<std::uint16_t>(sign | 0x7c00u);  // overflows to infinity
-  if (magnitude < 0x38800000u) {
-    // Subnormal half (or zero): shift the implicit-one mantissa into place, rounding to nearest even.
-    if (magnitude < 0x33000000u) return static_cast<std::uint16_t>(sign);
-    const std::uint32_t exponent = magnitude >> 23;
-    const std::uint32_t mantissa = (magnitude & 0x7fffffu) | 0x800000u;
-    const std::uint32_t shift = 126u - exponent;
-    std::uint32_t half = mantissa >> shift;
-    const std::uint32_t remainder = mantissa & ((1u << shift) - 1u);
-    const std::uint32_t halfway = 1u << (shift - 1u);
-    if (remainder > halfway || (remainder == halfway && (half & 1u))) ++half;
-    return static_cast<std::uint16_t>(sign | half);
-  }
-  std::uint32_t half = ((magnitude - 0x38000000u) >> 13);
-  const std::uint32_t remainder = magnitude & 0x1fffu;
-  if (remainder > 0x1000u || (remainder == 0x1000u && (half & 1u))) ++half;
-  return static_cast<std::uint16_t>(sign | half);
+  return Imath::half(value).bits();
 }
 
-float halfToFloat(std::uint16_t half) {
-  const std::uint32_t sign = static_cast<std::uint32_t>(half & 0x8000u) << 16;
-  const std::uint32_t exponent = (half >> 10) & 0x1fu;
-  const std::uint32_t mantissa = half & 0x3ffu;
-  if (exponent == 0) {
-    const float value = std::ldexp(static_cast<float>(mantissa), -24);
-    return sign ? -value : value;
-  }
-  if (exponent == 31) return std::bit_cast<float>(sign | 0x7f800000u | (mantissa << 13));
-  return std::bit_cast<float>(sign | ((exponent + 112u) << 23) | (mantissa << 13));
+float halfToFloat(std::uint16_t bits) {
+  Imath::half half;
+  half.setBits(bits);
+  return static_cast<float>(half);
 }
 
 void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {

@@ -40,7 +40,8 @@ struct PackedVolume {
 
 void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out);
 
-std::uint16_t floatToHalf(float value);  // IEEE 754 binary16, round to nearest even
-float halfToFloat(std::uint16_t half);
+// IEEE 754 binary16 bits, through Imath::half: round to nearest even, overflow to infinity.
+std::uint16_t floatToHalf(float value);
+float halfToFloat(std::uint16_t bits);
 
 }  // namespace voxflame::core

@@ -52,18 +52,11 @@ void writeVdbVolume(const std::filesystem::path& path, const VolumeSnapshot& sna
   fileMeta.insertMeta("voxflame_preset", openvdb::StringMetadata(presetJson));
   fileMeta.insertMeta("creator", openvdb::StringMetadata("voxflame"));
 
-  std::filesystem::path temporary = path;
-  temporary += ".part";
-  try {
+  writeFileAtomicallyWith(path, [&](const std::filesystem::path& temporary) {
     openvdb::io::File file(temporary.string());
     file.write({densityGrid, colorGrid}, fileMeta);
     file.close();
-  } catch (const openvdb::Exception& e) {
-    std::error_code ec;
-    std::filesystem::remove(temporary, ec);
-    throw Error("cannot write '" + path.string() + "': " + e.what());
-  }
-  moveIntoPlace(temporary, path);
+  });
 }
 
 }  // namespace voxflame::core

@@ -62,9 +62,7 @@ void writeNrrdVolume(const std::filesystem::path& path, const VolumeSnapshot& sn
     throw Error("cannot write '" + path.string() + "': the volume does not match its grid");
   const std::string header = nrrdVolumeHeader(snapshot, presetJson);
   const std::vector<float> density = normalisedDensity(snapshot);
-  std::filesystem::path temporary = path;
-  temporary += ".part";
-  {
+  writeFileAtomicallyWith(path, [&](const std::filesystem::path& temporary) {
     std::unique_ptr<std::FILE, int (*)(std::FILE*)> file(std::fopen(temporary.c_str(), "wb"), &std::fclose);
     if (!file) throw Error("cannot write '" + path.string() + "': the folder is missing or not writable");
     bool ok = std::fwrite(header.data(), 1, header.size(), file.get()) == header.size();
@@ -80,14 +78,9 @@ void writeNrrdVolume(const std::filesystem::path& path, const VolumeSnapshot& sn
       }
       ok = std::fwrite(samples.data(), sizeof(float), 4 * count, file.get()) == 4 * count;
     }
-    ok = ok && std::fflush(file.get()) == 0;
-    if (!ok) {
-      file.reset();
-      std::filesystem::remove(temporary);
-      throw Error("cannot write '" + path.string() + "': disk full?");
-    }
-  }
-  moveIntoPlace(temporary, path);
+    ok = std::fclose(file.release()) == 0 && ok;
+    if (!ok) throw Error("cannot write '" + path.string() + "': disk full?");
+  });
 }
 
 }  // namespace voxflame::core

@@ -1,16 +1,18 @@
 #include "shader_program.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "core/error.h"
+#include "embedded_shaders.h"
 
 namespace voxflame::gl {
 
 namespace {
 
-GLuint compile(GLenum stage, const std::string& source) {
+GLuint compile(GLenum stage, const ShaderSource& source) {
   const GLuint shader = glCreateShader(stage);
-  const char* text = source.c_str();
+  const char* text = source.text.c_str();
   glShaderSource(shader, 1, &text, nullptr);
   glCompileShader(shader);
   GLint ok = GL_FALSE;
@@ -21,7 +23,7 @@ GLuint compile(GLenum stage, const std::string& source) {
     std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
     glGetShaderInfoLog(shader, length, nullptr, log.data());
     glDeleteShader(shader);
-    throw core::Error(std::string(stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
+    throw core::Error(source.file + ": " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
                       " shader failed to compile: " + log);
   }
   return shader;
@@ -29,7 +31,14 @@ GLuint compile(GLenum stage, const std::string& source) {
 
 }  // namespace
 
-ShaderProgram::ShaderProgram(const std::string& vertexSource, const std::string& fragmentSource) {
+ShaderSource embeddedShader(std::string_view name) {
+  const std::string file = "engine/gl/shaders/" + std::string(name);
+  const auto bytes = embeddedShaderFile(file);
+  if (!bytes) throw core::Error("no shader '" + file + "' was built into voxflame");
+  return {file, std::string(reinterpret_cast<const char*>(bytes->data()), bytes->size())};
+}
+
+ShaderProgram::ShaderProgram(const ShaderSource& vertexSource, const ShaderSource& fragmentSource) {
   const GLuint vertex = compile(GL_VERTEX_SHADER, vertexSource);
   GLuint fragment = 0;
   try {
@@ -53,7 +62,7 @@ ShaderProgram::ShaderProgram(const std::string& vertexSource, const std::string&
     glGetProgramInfoLog(program_, length, nullptr, log.data());
     glDeleteProgram(program_);
     program_ = 0;
-    throw core::Error("shader program failed to link: " + log);
+    throw core::Error("shader program (" + vertexSource.file + ", " + fragmentSource.file + ") failed to link: " + log);
   }
 }
 

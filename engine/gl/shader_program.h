@@ -1,16 +1,28 @@
-// A linked GLSL program; compile and link errors become core::Error carrying the driver's log.
+// A linked GLSL program; compile and link errors become core::Error carrying the driver's log and
+// the name of the shader file at fault.
 #pragma once
 
 #include <epoxy/gl.h>
 
 #include <string>
+#include <string_view>
 
 namespace voxflame::gl {
+
+// GLSL source and the file it came from, so a compile error can say where to look.
+struct ShaderSource {
+  std::string file;  // e.g. "engine/gl/shaders/march.frag.glsl"
+  std::string text;
+};
+
+// engine/gl/shaders/<name> (e.g. "march.frag.glsl") as embedded at build time. Throws core::Error
+// when no such shader was embedded.
+ShaderSource embeddedShader(std::string_view name);
 
 class ShaderProgram {
  public:
   ShaderProgram() = default;
-  ShaderProgram(const std::string& vertexSource, const std::string& fragmentSource);
+  ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment);
   ~ShaderProgram();
   ShaderProgram(ShaderProgram&& other) noexcept;
   ShaderProgram& operator=(ShaderProgram&& other) noexcept;

@@ -11,6 +11,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "core/error.h"
+#include "read_back.h"
 
 namespace voxflame::gl {
 
@@ -27,171 +28,6 @@ core::MeshOverlay emptyOverlay(const RenderSettings& settings, int width, int he
   mesh.rgba.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
   return mesh;
 }
-
-// One triangle covering the viewport; the fragment shaders do the work.
-const char* kFullscreenVertexShader = R"(#version 430 core
-void main() {
-  vec2 corner = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2));
-  gl_Position = vec4(corner * 2.0 - 1.0, 0.0, 1.0);
-}
-)";
-
-const char* kMarchShader = R"(#version 430 core
-out vec4 fragColor;
-
-uniform mat4 uInverseViewProjection;
-uniform vec2 uTargetSize;
-uniform vec3 uGridOrigin;
-uniform vec3 uGridExtent;
-uniform ivec3 uGridSize;
-uniform float uVoxelSize;
-uniform float uStepVoxels;
-uniform sampler3D uVolume;      // rgb: colour × normalised density, a: normalised density
-uniform sampler3D uDensity;     // normalised density alone, tested before the colour is fetched
-uniform usampler3D uOccupancy;  // 1 per brick that holds density
-uniform ivec3 uBrickCount;
-uniform int uBrickSize;
-uniform usampler3D uCoarseOccupancy;  // 1 per group of kCoarseBricks³ bricks with any density
-uniform ivec3 uCoarseCount;
-uniform int uCoarseSize;              // voxels along a coarse brick
-uniform float uToRelative;      // texture density (a fraction of the densest voxel) → relative to the mesh's mean
-uniform float uStepUnits;       // one step's length in grid sides
-uniform float uAbsorption;      // extinction per unit of column density (tone.opacity × kAbsorptionPerDensity)
-uniform uint uSample;
-uniform ivec2 uPixelOffset;     // this tile's place in the whole image, so jitter ignores tiling
-uniform sampler3D uShadow;      // light transmittance, when lighting is on
-uniform bool uLighting;
-uniform vec3 uShadowScale;      // voxel coordinates to shadow texture coordinates
-uniform float uLightStrength;
-
-// A per-pixel, per-sample jitter of the first step hides the wood-grain banding of fixed steps.
-float hash(uvec3 v) {
-  v = v * 1664525u + 1013904223u;
-  v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
-  v ^= v >> 16u;
-  v.x += v.y * v.z; v.y += v.z * v.x; v.z += v.x * v.y;
-  return float(v.x & 0x00ffffffu) / 16777216.0;
-}
-
-void main() {
-  vec2 ndc = gl_FragCoord.xy / uTargetSize * 2.0 - 1.0;
-  vec4 nearPoint = uInverseViewProjection * vec4(ndc, -1.0, 1.0);
-  vec4 farPoint = uInverseViewProjection * vec4(ndc, 1.0, 1.0);
-  nearPoint /= nearPoint.w;
-  farPoint /= farPoint.w;
-  vec3 origin = nearPoint.xyz;
-  vec3 direction = farPoint.xyz - origin;
-  float rayLength = length(direction);
-  direction /= rayLength;
-  // Rays run from the near plane to the far plane, so both clip every sample.
-  vec3 inverseDirection = 1.0 / direction;
-  vec3 t0 = (uGridOrigin - origin) * inverseDirection;
-  vec3 t1 = (uGridOrigin + uGridExtent - origin) * inverseDirection;
-  vec3 tLow = min(t0, t1);
-  vec3 tHigh = max(t0, t1);
-  float tEnter = max(max(tLow.x, tLow.y), max(tLow.z, 0.0));
-  float tExit = min(min(tHigh.x, tHigh.y), min(tHigh.z, rayLength));
-
-  // Emission–absorption on raw density: D sums the density seen along the ray (relative to the
-  // mesh's mean, per grid side) and radiance the colour it carries; the log and gamma come later,
-  // per pixel (flame_image.h), exactly as flam3 sums hits before it takes the log.
-  vec3 radiance = vec3(0.0);
-  float columnDensity = 0.0;
-  float transmittance = 1.0;
-  if (tExit > tEnter) {
-    float stepLength = uStepVoxels * uVoxelSize;
-    float t = tEnter + stepLength * hash(uvec3(uvec2(ivec2(gl_FragCoord.xy) + uPixelOffset), uSample));
-    vec3 toVoxel = vec3(1.0 / uVoxelSize);
-    vec3 toTexture = 1.0 / vec3(uGridSize);
-    vec3 exitSide = step(vec3(0.0), direction);
-    while (t < tExit) {
-      vec3 position = origin + t * direction;
-      vec3 voxel = (position - uGridOrigin) * toVoxel;
-      ivec3 voxelIndex = ivec3(floor(voxel));
-      // Two levels of empty space: a coarse brick, then a brick; either leaps to the first step
-      // past its far side, staying on the jittered step lattice.
-      ivec3 coarse = clamp(voxelIndex / uCoarseSize, ivec3(0), uCoarseCount - 1);
-      int leapVoxels = 0;
-      ivec3 leapCell;
-      if (texelFetch(uCoarseOccupancy, coarse, 0).r == 0u) {
-        leapVoxels = uCoarseSize;
-        leapCell = coarse;
-      } else {
-        ivec3 brick = clamp(voxelIndex / uBrickSize, ivec3(0), uBrickCount - 1);
-        if (texelFetch(uOccupancy, brick, 0).r == 0u) {
-          leapVoxels = uBrickSize;
-          leapCell = brick;
-        }
-      }
-      if (leapVoxels > 0) {
-        float cellLength = float(leapVoxels) * uVoxelSize;
-        vec3 cellMin = uGridOrigin + vec3(leapCell) * cellLength;
-        vec3 tCell = (cellMin + exitSide * cellLength - origin) * inverseDirection;
-        float tLeave = min(tCell.x, min(tCell.y, tCell.z));
-        t += max(ceil((tLeave - t) / stepLength), 1.0) * stepLength;
-        continue;
-      }
-      // Explicit LOD: there are no mipmaps, and implicit derivatives are undefined in this loop.
-      float density = textureLod(uDensity, voxel * toTexture, 0.0).r;
-      if (density > 0.0) {
-        vec4 texel = textureLod(uVolume, voxel * toTexture, 0.0);
-        float dD = density * uToRelative * uStepUnits;
-        float lit = uLighting ? mix(1.0, textureLod(uShadow, voxel * uShadowScale, 0.0).r, uLightStrength) : 1.0;
-        // The step's exact integral for constant density: T (1 − e^(−a dD)) / a, or T dD without absorption.
-        float passed = exp(-uAbsorption * dD);
-        float emitted = (uAbsorption > 0.0 ? transmittance * (1.0 - passed) / uAbsorption : transmittance * dD) * lit;
-        columnDensity += emitted;
-        radiance += emitted * (texel.rgb / max(texel.a, 1e-8));
-        transmittance *= passed;
-        if (transmittance < 0.002) break;
-      }
-      t += stepLength;
-    }
-  }
-  fragColor = vec4(radiance, columnDensity);
-}
-)";
-
-// Draws a finished image (flame_image.h) into the viewport.
-const char* kBlitShader = R"(#version 430 core
-out vec4 fragColor;
-uniform sampler2D uImage;
-uniform vec4 uViewport;
-void main() {
-  vec2 uv = (gl_FragCoord.xy - uViewport.xy) / uViewport.zw;
-  fragColor = vec4(texture(uImage, uv).rgb, 1.0);
-}
-)";
-
-const char* kMeshVertexShader = R"(#version 430 core
-layout(location = 0) in vec3 aPosition;
-uniform mat4 uViewProjection;
-out vec3 vPosition;
-void main() {
-  vPosition = aPosition;
-  gl_Position = uViewProjection * vec4(aPosition, 1.0);
-}
-)";
-
-// A fresnel rim: surfaces seen edge-on glow, surfaces facing the camera stay clear, so the shape
-// reads without hiding the volume inside.
-const char* kMeshFragmentShader = R"(#version 430 core
-in vec3 vPosition;
-out vec4 fragColor;
-uniform vec3 uEye;
-uniform vec3 uMeshColor;
-uniform bool uOrthographic;
-uniform vec3 uViewDirection;
-void main() {
-  vec3 facet = cross(dFdx(vPosition), dFdy(vPosition));
-  float facetLength = length(facet);
-  vec3 toEye = uOrthographic ? -uViewDirection : normalize(uEye - vPosition);
-  // Sub-pixel triangles have no usable derivative: treat them as seen edge-on.
-  float facing = facetLength > 0.0 ? abs(dot(facet / facetLength, toEye)) : 0.0;
-  float rim = 0.12 + 0.88 * pow(clamp(1.0 - facing, 0.0, 1.0), 3.0);
-  fragColor = vec4(uMeshColor * rim, 1.0);
-}
-)";
 
 GLuint makeTexture(GLenum target, GLint filter) {
   GLuint texture = 0;
@@ -241,32 +77,18 @@ FrameTarget::~FrameTarget() {
 
 core::DensityImage FrameTarget::readDensity() const {
   core::DensityImage image;
-  image.resize(width_, height_);
+  image.width = width_;
+  image.height = height_;
   image.hitsPerUnitDensity = hitsPerUnitDensity_;
-  std::vector<float> rows(image.values.size());
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_FLOAT, rows.data());
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  // GL's rows run bottom to top.
-  const std::size_t row = 4 * static_cast<std::size_t>(width_);
-  for (int y = 0; y < height_; ++y)
-    std::copy_n(&rows[static_cast<std::size_t>(height_ - 1 - y) * row], row, image.at(0, y));
+  image.values = readRgbaFloat(framebuffer_, {0, 0, width_, height_});
   return image;
 }
 
 core::MeshOverlay FrameTarget::readMeshOverlay(const RenderSettings& settings) const {
   core::MeshOverlay overlay = emptyOverlay(settings, width_, height_);
-  std::vector<std::uint8_t> rows(4 * static_cast<std::size_t>(width_) * static_cast<std::size_t>(height_));
-  glBindFramebuffer(GL_FRAMEBUFFER, meshFramebuffer_);
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-  glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  const std::size_t row = 4 * static_cast<std::size_t>(width_);
-  for (int y = 0; y < height_; ++y)
-    for (std::size_t i = 0; i < row; ++i)
-      overlay.rgba[static_cast<std::size_t>(y) * row + i] =
-          static_cast<float>(rows[static_cast<std::size_t>(height_ - 1 - y) * row + i]) * (1.0f / 255.0f);
+  const std::vector<std::uint8_t> bytes = readRgba8(meshFramebuffer_, {0, 0, width_, height_});
+  std::transform(bytes.begin(), bytes.end(), overlay.rgba.begin(),
+                 [](std::uint8_t v) { return static_cast<float>(v) * (1.0f / 255.0f); });
   return overlay;
 }
 
@@ -307,9 +129,9 @@ void FrameTarget::resize(int width, int height) {
 }
 
 VolumeRenderer::VolumeRenderer()
-    : marchProgram_(kFullscreenVertexShader, kMarchShader),
-      blitProgram_(kFullscreenVertexShader, kBlitShader),
-      meshProgram_(kMeshVertexShader, kMeshFragmentShader) {
+    : marchProgram_(embeddedShader("fullscreen.vert.glsl"), embeddedShader("march.frag.glsl")),
+      blitProgram_(embeddedShader("fullscreen.vert.glsl"), embeddedShader("blit.frag.glsl")),
+      meshProgram_(embeddedShader("mesh.vert.glsl"), embeddedShader("mesh.frag.glsl")) {
   glGenVertexArrays(1, &vertexArray_);
   volumeTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
   densityTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
