@@ -77,7 +77,7 @@ class ExplorerSession {
   std::condition_variable_any wake_;
   std::condition_variable appliedSignal_;
   std::optional<core::Scene> postedPattern_;  // UI thread only: what postIfPatternChanged posted last
-  std::optional<core::Scene> pending_;  // the newest posted scene not yet picked up
+  std::optional<core::Scene> pending_;        // the newest posted scene not yet picked up
   std::uint64_t requested_ = 0, applied_ = 0;
   bool working_ = false;            // the control thread is applying a scene
   std::unique_ptr<Engine> engine_;  // replaced and destroyed only by the control thread

@@ -63,8 +63,8 @@ bool fieldWidget(ExplorerState& state, const std::string& scope, Owner& owner, c
       [&]<class M>(const M& member) -> bool {
         if constexpr (std::is_same_v<M, double Owner::*>) {
           const double min = f.ui.min, max = f.ui.max;
-          return ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &(owner.*member), &min, &max,
-                                     format.c_str(), flags);
+          return ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &(owner.*member), &min, &max, format.c_str(),
+                                     flags);
         } else if constexpr (std::is_same_v<M, int Owner::*>) {
           return ImGui::SliderInt(label.c_str(), &(owner.*member), static_cast<int>(f.ui.min),
                                   static_cast<int>(f.ui.max), format.c_str(), flags);
@@ -356,8 +356,8 @@ void handleCamera(ExplorerState& state) {
     // what is visible at the target's distance.
     const double perPixel =
         2.0 * camera.distance * std::tan(0.5 * glm::radians(camera.fovDeg)) / std::max(1.0f, io.DisplaySize.y);
-    camera.target = clampedTarget(
-        camera.target + perPixel * (-static_cast<double>(delta.x) * frame.right + static_cast<double>(delta.y) * frame.up));
+    camera.target = clampedTarget(camera.target + perPixel * (-static_cast<double>(delta.x) * frame.right +
+                                                              static_cast<double>(delta.y) * frame.up));
   }
   if (!overUi && io.MouseWheel != 0.0f)
     camera.distance = std::clamp(camera.distance * std::pow(0.9, io.MouseWheel), 0.2, 20.0);
@@ -813,8 +813,8 @@ void attractorEditor(ExplorerState& state, const std::string& scope, core::Patte
     // The slider's range is the catalogue's; Ctrl+click types any value the preset reader allows
     // (clamped to it here: ImGui can only clamp to the slider's range), right-click resets it.
     if (slider(state, scope, param.name.c_str(), layer.params[p], param.sliderMin, param.sliderMax, 0, "%.4f"))
-      layer.params[p] = std::isfinite(layer.params[p]) ? std::clamp(layer.params[p], -kParamLimit, kParamLimit)
-                                                       : param.defaultValue;
+      layer.params[p] =
+          std::isfinite(layer.params[p]) ? std::clamp(layer.params[p], -kParamLimit, kParamLimit) : param.defaultValue;
     if (ImGui::BeginPopupContextItem()) {
       if (ImGui::Selectable("Reset to default")) layer.params[p] = param.defaultValue;
       ImGui::EndPopup();
@@ -1016,9 +1016,9 @@ void meshSection(ExplorerState& state) {
 
 void renderSection(ExplorerState& state) {
   core::ToneMapSettings& tone = state.scene.tone;
-  for (std::string_view key : {"brightness", "gamma", "gamma_threshold", "vibrancy", "highlight_power", "exposure",
-                               "contrast", "opacity", "estimator_radius", "estimator_minimum", "estimator_curve",
-                               "background"})
+  for (std::string_view key :
+       {"brightness", "gamma", "gamma_threshold", "vibrancy", "highlight_power", "exposure", "contrast", "opacity",
+        "estimator_radius", "estimator_minimum", "estimator_curve", "background"})
     fieldWidget(state, "tone/", tone, core::toneFields(), key);
   core::RenderSettingsDoc& render = state.scene.render;
   fieldWidget(state, "render/", render, core::renderFields(), "step");

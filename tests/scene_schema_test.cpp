@@ -72,29 +72,33 @@ std::string messageOf(const std::string& base, std::string_view key) {
 // Calls `visit` with each table and where it lives.
 void forEachPlace(const auto& visit) {
   visit(Place<Scene>{sceneFields(), [](Scene& s) -> Scene& { return s; }, "", ""});
-  visit(Place<ToneMapSettings>{toneFields(), [](Scene& s) -> auto& { return s.tone; }, "/tone", "tone"});
-  visit(Place<CameraSettings>{cameraFields(), [](Scene& s) -> auto& { return s.camera; }, "/camera", "camera"});
-  visit(Place<RenderSettingsDoc>{renderFields(), [](Scene& s) -> auto& { return s.render; }, "/render", "render"});
-  visit(Place<PatternLayer>{layerFields(), [](Scene& s) -> auto& { return s.layers[0]; }, "/layers/0", "layers[0]"});
-  visit(Place<ColorSettings>{colorFields(), [](Scene& s) -> auto& { return s.layers[1].color; }, "/layers/1/color",
-                             "layers[1].color"});
-  visit(Place<LayerTransform>{transformFields(), [](Scene& s) -> auto& { return s.layers[0].transform; },
+  visit(Place<ToneMapSettings>{toneFields(), [](Scene& s) -> ToneMapSettings& { return s.tone; }, "/tone", "tone"});
+  visit(
+      Place<CameraSettings>{cameraFields(), [](Scene& s) -> CameraSettings& { return s.camera; }, "/camera", "camera"});
+  visit(Place<RenderSettingsDoc>{renderFields(), [](Scene& s) -> RenderSettingsDoc& { return s.render; }, "/render",
+                                 "render"});
+  visit(Place<PatternLayer>{layerFields(), [](Scene& s) -> PatternLayer& { return s.layers[0]; }, "/layers/0",
+                            "layers[0]"});
+  visit(Place<ColorSettings>{colorFields(), [](Scene& s) -> ColorSettings& { return s.layers[1].color; },
+                             "/layers/1/color", "layers[1].color"});
+  visit(Place<LayerTransform>{transformFields(), [](Scene& s) -> LayerTransform& { return s.layers[0].transform; },
                               "/layers/0/transform", "layers[0].transform"});
-  visit(Place<LayerTransform>{lockedFitFields(), [](Scene& s) -> auto& { return s.layers[0].transform; },
+  visit(Place<LayerTransform>{lockedFitFields(), [](Scene& s) -> LayerTransform& { return s.layers[0].transform; },
                               "/layers/0/transform/locked_fit", "layers[0].transform.locked_fit"});
-  visit(Place<FlameXform>{xformFields(), [](Scene& s) -> auto& { return s.layers[1].flame.xforms[0]; },
+  visit(Place<FlameXform>{xformFields(), [](Scene& s) -> FlameXform& { return s.layers[1].flame.xforms[0]; },
                           "/layers/1/flame/xforms/0", "layers[1].flame.xforms[0]"});
-  visit(Place<FlameXform>{xformFields(), [](Scene& s) -> auto& { return s.layers[1].flame.finalXform; },
+  visit(Place<FlameXform>{xformFields(), [](Scene& s) -> FlameXform& { return s.layers[1].flame.finalXform; },
                           "/layers/1/flame/final", "layers[1].flame.final", "weight"});
   visit(Place<VariationTerm>{variationFields(),
-                             [](Scene& s) -> auto& { return s.layers[1].flame.xforms[0].variations[1]; },
+                             [](Scene& s) -> VariationTerm& { return s.layers[1].flame.xforms[0].variations[1]; },
                              "/layers/1/flame/xforms/0/variations/1", "layers[1].flame.xforms[0].variations[1]"});
-  visit(Place<FlameSymmetry>{symmetryFields(), [](Scene& s) -> auto& { return s.layers[1].flame.symmetry; },
+  visit(Place<FlameSymmetry>{symmetryFields(), [](Scene& s) -> FlameSymmetry& { return s.layers[1].flame.symmetry; },
                              "/layers/1/flame/symmetry", "layers[1].flame.symmetry"});
-  visit(Place<QuaternionJuliaSettings>{juliaFields(), [](Scene& s) -> auto& { return s.layers[2].julia; },
+  visit(Place<QuaternionJuliaSettings>{juliaFields(),
+                                       [](Scene& s) -> QuaternionJuliaSettings& { return s.layers[2].julia; },
                                        "/layers/2/julia", "layers[2].julia"});
-  visit(Place<AnimationSettings>{animationFields(), [](Scene& s) -> auto& { return s.animation; }, "/animation",
-                                 "animation"});
+  visit(Place<AnimationSettings>{animationFields(), [](Scene& s) -> AnimationSettings& { return s.animation; },
+                                 "/animation", "animation"});
 }
 
 bool isNumeric(FieldType type) {
@@ -249,8 +253,8 @@ TEST(SchemaTable, BadValuesOfEveryKeyGiveAnErrorNeverACrash) {
     leaves.push_back(path);
   };
   walk(base, "");
-  const json bad[] = {"x", true, nullptr, json::array(), json::object(), 1e300, -1e300, 0.5, -1, json::array({1, 2}),
-                      "#zzzzzz"};
+  const json bad[] = {"x",    true, nullptr, json::array(),       json::object(), 1e300,
+                      -1e300, 0.5,  -1,      json::array({1, 2}), "#zzzzzz"};
   int refused = 0;
   for (const std::string& path : leaves) {
     if (path.empty()) continue;
@@ -408,7 +412,6 @@ TEST(SchemaDocument, CommittedFileIsWhatTheTablesGenerate) {
       << "  VOXFLAME_UPDATE_SCHEMA=1 ctest --test-dir build -R SchemaDocument\n";
   // Every key of the tables is documented.
   forEachPlace([&](const auto& place) {
-    for (const auto& f : place.table)
-      EXPECT_NE(generated.find(std::string(f.key) + "` |"), std::string::npos) << f.key;
+    for (const auto& f : place.table) EXPECT_NE(generated.find(std::string(f.key) + "` |"), std::string::npos) << f.key;
   });
 }

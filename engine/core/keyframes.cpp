@@ -178,8 +178,8 @@ void applyTrack(const ValueRef& target, const KeyframeTrack& track, double secon
                 const std::string& sourceName) {
   const Point p = interpolate(track, seconds, duration, loop);
   if (track.kind == KeyKind::Color) {
-    *target.color =
-        presetColor(oklabToLinear(glm::vec3(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
+    *target.color = presetColor(
+        oklabToLinear(glm::vec3(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
     return;
   }
   setNumbers(target, p, sourceName);

@@ -417,7 +417,11 @@ const NF kToneFields[] = {
      .ui = {"brightness", 0.01, 50.0, true},
      .help = "flam3's k1: scales the log density",
      .affects = kTone},
-    {.key = "gamma", .member = &ToneMapSettings::gamma, .min = 0.1, .max = 10.0, .ui = {"gamma", 0.5, 6.0},
+    {.key = "gamma",
+     .member = &ToneMapSettings::gamma,
+     .min = 0.1,
+     .max = 10.0,
+     .ui = {"gamma", 0.5, 6.0},
      .affects = kTone},
     {.key = "gamma_threshold",
      .member = &ToneMapSettings::gammaThreshold,
@@ -521,9 +525,7 @@ const MF kCameraFields[] = {
      .ui = {"field of view", 5.0, 120.0, false, "%.0f°"},
      .help = "perspective: vertical field of view",
      .affects = kView},
-    {.key = "projection",
-     .member = choice<&CameraSettings::projection>(kProjections, "projection"),
-     .affects = kView},
+    {.key = "projection", .member = choice<&CameraSettings::projection>(kProjections, "projection"), .affects = kView},
     {.key = "ortho_height",
      .member = &CameraSettings::orthoHeight,
      .min = 0.001,
@@ -570,10 +572,7 @@ const RF kRenderFields[] = {
      .ui = {"show mesh"},
      .help = "how the mesh is shown",
      .affects = kView | kTone},
-    {.key = "mesh_color",
-     .member = &RenderSettingsDoc::meshColor,
-     .ui = {"mesh colour"},
-     .affects = kView | kTone},
+    {.key = "mesh_color", .member = &RenderSettingsDoc::meshColor, .ui = {"mesh colour"}, .affects = kView | kTone},
     {.key = "mesh_strength",
      .member = &RenderSettingsDoc::meshStrength,
      .min = 0.0,
@@ -707,8 +706,8 @@ void readField(ObjectReader& reader, const std::string& key, const Field<Owner>&
         if constexpr (std::is_same_v<M, double Owner::*>) {
           owner.*member = reader.number(key, owner.*member, f.min, f.max);
         } else if constexpr (std::is_same_v<M, int Owner::*>) {
-          owner.*member = static_cast<int>(reader.integer(key, owner.*member, static_cast<std::int64_t>(f.min),
-                                                          static_cast<std::int64_t>(f.max)));
+          owner.*member = static_cast<int>(
+              reader.integer(key, owner.*member, static_cast<std::int64_t>(f.min), static_cast<std::int64_t>(f.max)));
         } else if constexpr (std::is_same_v<M, std::uint64_t Owner::*>) {
           owner.*member = static_cast<std::uint64_t>(reader.integer(key, static_cast<std::int64_t>(owner.*member),
                                                                     static_cast<std::int64_t>(f.min),
@@ -722,11 +721,13 @@ void readField(ObjectReader& reader, const std::string& key, const Field<Owner>&
         } else if constexpr (std::is_same_v<M, glm::dvec3 Owner::*>) {
           owner.*member = reader.vector(key, owner.*member, f.min, f.max);
         } else if constexpr (std::is_same_v<M, Choice<Owner>>) {
-          const std::string name = reader.string(key, std::string(member.names[static_cast<std::size_t>(member.get(owner))]));
+          const std::string name =
+              reader.string(key, std::string(member.names[static_cast<std::size_t>(member.get(owner))]));
           const auto found = std::find(member.names.begin(), member.names.end(), name);
           if (found == member.names.end())
-            reader.fail("is '" + name + "', an unknown " + std::string(member.noun) + "; expected " + choiceList(member.names),
-                        key);
+            reader.fail(
+                "is '" + name + "', an unknown " + std::string(member.noun) + "; expected " + choiceList(member.names),
+                key);
           member.set(owner, static_cast<int>(found - member.names.begin()));
         }
       },
@@ -1113,7 +1114,8 @@ json flameJson(const FlameGenome& genome, bool complete) {
   for (const FlameXform& x : genome.xforms) xforms.push_back(xformJson(x, false, complete));
   json out = {{"xforms", xforms}};
   if (genome.hasFinal) out["final"] = xformJson(genome.finalXform, true, complete);
-  if (complete || genome.symmetry != FlameSymmetry{}) writeFields(out["symmetry"], symmetryFields(), genome.symmetry, complete);
+  if (complete || genome.symmetry != FlameSymmetry{})
+    writeFields(out["symmetry"], symmetryFields(), genome.symmetry, complete);
   return out;
 }
 
@@ -1169,20 +1171,48 @@ json layerJson(const PatternLayer& layer, bool complete) {
 
 }  // namespace
 
-Table<Scene> sceneFields() { return kSceneFields; }
-Table<PatternLayer> layerFields() { return kLayerFields; }
-Table<ColorSettings> colorFields() { return kColorFields; }
-Table<LayerTransform> transformFields() { return kTransformFields; }
-Table<LayerTransform> lockedFitFields() { return kLockedFitFields; }
-Table<FlameGenome> flameFields() { return kFlameFields; }
-Table<FlameXform> xformFields() { return kXformFields; }
-Table<VariationTerm> variationFields() { return kVariationFields; }
-Table<FlameSymmetry> symmetryFields() { return kSymmetryFields; }
-Table<QuaternionJuliaSettings> juliaFields() { return kJuliaFields; }
-Table<ToneMapSettings> toneFields() { return kToneFields; }
-Table<CameraSettings> cameraFields() { return kCameraFields; }
-Table<RenderSettingsDoc> renderFields() { return kRenderFields; }
-Table<AnimationSettings> animationFields() { return kAnimationFields; }
+Table<Scene> sceneFields() {
+  return kSceneFields;
+}
+Table<PatternLayer> layerFields() {
+  return kLayerFields;
+}
+Table<ColorSettings> colorFields() {
+  return kColorFields;
+}
+Table<LayerTransform> transformFields() {
+  return kTransformFields;
+}
+Table<LayerTransform> lockedFitFields() {
+  return kLockedFitFields;
+}
+Table<FlameGenome> flameFields() {
+  return kFlameFields;
+}
+Table<FlameXform> xformFields() {
+  return kXformFields;
+}
+Table<VariationTerm> variationFields() {
+  return kVariationFields;
+}
+Table<FlameSymmetry> symmetryFields() {
+  return kSymmetryFields;
+}
+Table<QuaternionJuliaSettings> juliaFields() {
+  return kJuliaFields;
+}
+Table<ToneMapSettings> toneFields() {
+  return kToneFields;
+}
+Table<CameraSettings> cameraFields() {
+  return kCameraFields;
+}
+Table<RenderSettingsDoc> renderFields() {
+  return kRenderFields;
+}
+Table<AnimationSettings> animationFields() {
+  return kAnimationFields;
+}
 
 Scene sceneFromDocument(const json& document, std::string_view sourceName,
                         std::span<const std::string_view> readElsewhere) {
@@ -1281,9 +1311,8 @@ std::string escapeToken(std::string_view token) {
 
 // An array index as RFC 6901 writes it: "0" or digits without a leading zero.
 std::optional<std::size_t> arrayIndex(const std::string& token) {
-  if (token.empty() || token.size() > 9 || !std::all_of(token.begin(), token.end(), [](char c) {
-        return c >= '0' && c <= '9';
-      }))
+  if (token.empty() || token.size() > 9 ||
+      !std::all_of(token.begin(), token.end(), [](char c) { return c >= '0' && c <= '9'; }))
     return std::nullopt;
   if (token.size() > 1 && token[0] == '0') return std::nullopt;
   return static_cast<std::size_t>(std::stoul(token));
@@ -1747,7 +1776,9 @@ void diffLayer(const PatternLayer& a, const PatternLayer& b, const std::string& 
     const AttractorInfo* info = a.attractor == b.attractor ? findAttractor(a.attractor) : nullptr;
     for (std::size_t i = 0; i < a.params.size(); ++i)
       if (a.params[i] != b.params[i])
-        note(d, base + "/params/" + (info && i < info->params.size() ? escapeToken(info->params[i].name) : std::to_string(i)),
+        note(d,
+             base + "/params/" +
+                 (info && i < info->params.size() ? escapeToken(info->params[i].name) : std::to_string(i)),
              kPattern);
   }
   diffTable(a, b, layerFields(), base, d);

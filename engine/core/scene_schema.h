@@ -41,8 +41,12 @@ constexpr Affects operator|(Affects a, Affects b) {
 constexpr Affects operator&(Affects a, Affects b) {
   return static_cast<Affects>(static_cast<unsigned>(a) & static_cast<unsigned>(b));
 }
-constexpr Affects& operator|=(Affects& a, Affects b) { return a = a | b; }
-constexpr bool any(Affects a) { return a != Affects::None; }
+constexpr Affects& operator|=(Affects& a, Affects b) {
+  return a = a | b;
+}
+constexpr bool any(Affects a) {
+  return a != Affects::None;
+}
 std::string toString(Affects affects);  // "pattern", "view, tone", "nothing drawn"
 
 enum class FieldType { Hand, Number, Integer, Unsigned, Boolean, String, Color, Vector3, Choice };
@@ -58,9 +62,8 @@ struct Choice {
 
 // std::monostate: a `Hand` row, read and written by marked hand code (see the header comment).
 template <class Owner>
-using FieldMember =
-    std::variant<std::monostate, double Owner::*, int Owner::*, std::uint64_t Owner::*, bool Owner::*,
-                 std::string Owner::*, glm::vec3 Owner::*, glm::dvec3 Owner::*, Choice<Owner>>;
+using FieldMember = std::variant<std::monostate, double Owner::*, int Owner::*, std::uint64_t Owner::*, bool Owner::*,
+                                 std::string Owner::*, glm::vec3 Owner::*, glm::dvec3 Owner::*, Choice<Owner>>;
 
 // The explorer's slider for a field. An empty label: the explorer has no slider for it.
 struct UiRange {
@@ -96,20 +99,20 @@ template <class Owner>
 using Table = std::span<const Field<Owner>>;
 
 // The tables, one per object of the preset, in the order SCHEMA.md lists them.
-Table<Scene> sceneFields();                        // top level: name, mesh.path, grid.resolution, seed, ...
-Table<PatternLayer> layerFields();                 // layers[i]
-Table<ColorSettings> colorFields();                // layers[i].color
-Table<LayerTransform> transformFields();           // layers[i].transform
-Table<LayerTransform> lockedFitFields();           // layers[i].transform.locked_fit
-Table<FlameGenome> flameFields();                  // layers[i].flame
-Table<FlameXform> xformFields();                   // layers[i].flame.xforms[j] (the final one skips `weight`)
-Table<VariationTerm> variationFields();            // ....xforms[j].variations[k]
-Table<FlameSymmetry> symmetryFields();             // layers[i].flame.symmetry
-Table<QuaternionJuliaSettings> juliaFields();      // layers[i].julia
-Table<ToneMapSettings> toneFields();               // tone
-Table<CameraSettings> cameraFields();              // camera
-Table<RenderSettingsDoc> renderFields();           // render
-Table<AnimationSettings> animationFields();        // animation
+Table<Scene> sceneFields();                    // top level: name, mesh.path, grid.resolution, seed, ...
+Table<PatternLayer> layerFields();             // layers[i]
+Table<ColorSettings> colorFields();            // layers[i].color
+Table<LayerTransform> transformFields();       // layers[i].transform
+Table<LayerTransform> lockedFitFields();       // layers[i].transform.locked_fit
+Table<FlameGenome> flameFields();              // layers[i].flame
+Table<FlameXform> xformFields();               // layers[i].flame.xforms[j] (the final one skips `weight`)
+Table<VariationTerm> variationFields();        // ....xforms[j].variations[k]
+Table<FlameSymmetry> symmetryFields();         // layers[i].flame.symmetry
+Table<QuaternionJuliaSettings> juliaFields();  // layers[i].julia
+Table<ToneMapSettings> toneFields();           // tone
+Table<CameraSettings> cameraFields();          // camera
+Table<RenderSettingsDoc> renderFields();       // render
+Table<AnimationSettings> animationFields();    // animation
 
 // The row of `table` with this key; throws std::out_of_range for a key it does not have (a
 // programming error: the UI and tests name keys that exist).

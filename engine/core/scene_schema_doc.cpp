@@ -137,8 +137,10 @@ std::vector<DocRow> layerRows() {
 
 std::vector<DocRow> flameRows() {
   const std::vector<DocRow> flame = rows(flameFields(), "flame.");  // xforms, final
-  return concat({{flame.front()}, rows(xformFields(), "flame.xforms[j]."),
-                 rows(variationFields(), "flame.xforms[j].variations[k]."), {flame.back()},
+  return concat({{flame.front()},
+                 rows(xformFields(), "flame.xforms[j]."),
+                 rows(variationFields(), "flame.xforms[j].variations[k]."),
+                 {flame.back()},
                  rows(symmetryFields(), "flame.symmetry.")});
 }
 
