@@ -30,7 +30,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "arguments.h"
 #include "atomic_file.h"
 #include "commands.h"
 #include "core/accumulator.h"
@@ -41,6 +40,7 @@
 #include "frame_pattern.h"
 #include "pipeline.h"
 #include "programs.h"
+#include "usage_error.h"
 
 namespace voxflame::app {
 
@@ -104,13 +104,13 @@ std::vector<std::string> ffmpegArguments(const std::string& pattern, const Frame
 // `--status PATTERN`: which frames of the range exist. The range comes from --frames, else the
 // preset's whole animation, else the farm job's record beside the frames.
 int frameStatus(const std::string& pattern, const std::optional<std::string>& frames,
-                const std::vector<std::string>& positional, const std::optional<double>& fps) {
+                const std::optional<std::string>& preset, const std::optional<double>& fps) {
   checkFramePattern(pattern);
   const std::filesystem::path renderScript = frameFolder(pattern, 0) / "farm-render.sbatch";
   const std::optional<FarmRecord> record = readFarmRecord(renderScript);
   FrameRange range;
-  if (!positional.empty()) {
-    core::Scene scene = sceneFromArgument(positional);
+  if (preset) {
+    core::Scene scene = sceneFromArgument(preset);
     const double rate = fps ? *fps : core::animationFps(scene);
     const int frameCount = core::animationFrameCount(scene, rate);
     range = frames ? parseFrameRange(*frames, frameCount, rate) : FrameRange{0, frameCount - 1};
@@ -214,53 +214,26 @@ int writeFarmJob(const FarmJob& job, bool submit) {
 
 }  // namespace
 
-int animateCommand(const CommandArgs& args) {
-  Arguments arguments(args, 2, {"--submit"});
-  const auto statusPattern = arguments.take("--status");
-  const auto output = arguments.take("-o", "--output");
-  const auto frames = arguments.take("--frames");
-  // Options a farm task passes on as given (--frames is each task's own).
-  std::vector<std::string> taskOptions;
-  for (const char* name :
-       {"--width", "--height", "--fps", "--motion-blur", "--shutter", "--samples", "--points", "--grid", "--threads"})
-    if (const auto value = arguments.take(name)) taskOptions.insert(taskOptions.end(), {name, *value});
-  const int width = static_cast<int>(arguments.integer("--width", 1280, 1, 16384));
-  const int height = static_cast<int>(arguments.integer("--height", 720, 1, 16384));
-  const auto fpsOption = arguments.take("--fps");
-  const double fpsValue = arguments.real("--fps", 0.0, 0.01, 1000.0);
-  const int motionBlur = static_cast<int>(arguments.integer("--motion-blur", 1, 1, 256));
-  const double shutter = arguments.real("--shutter", 0.5, 0.0, 1.0);
-  const auto video = arguments.take("--video");
-  const auto samples = arguments.take("--samples");
-  const int sampleCount = static_cast<int>(arguments.integer("--samples", 0, 1, 1024));
-  const std::uint64_t points = static_cast<std::uint64_t>(arguments.integer("--points", 0, 0, 1LL << 40));
-  const auto grid = arguments.take("--grid");
-  const int gridResolution = static_cast<int>(arguments.integer("--grid", 0, 16, 1024));
-  const int threads = static_cast<int>(arguments.integer("--threads", 0, 0, 1024));
-  const auto farm = arguments.take("--farm");
-  const auto tasksOption = arguments.take("--tasks");
-  const int tasks = static_cast<int>(arguments.integer("--tasks", 1, 1, 100000));
-  const auto partition = arguments.take("--partition");
-  const bool submit = arguments.flag("--submit");
-  arguments.finish(1);
-  if (statusPattern) {
+int animateCommand(const AnimateArguments& arguments) {
+  const std::optional<std::string>& output = arguments.output;
+  const std::optional<std::string>& frames = arguments.frames;
+  const std::optional<std::string>& video = arguments.video;
+  if (arguments.statusPattern) {
     if (output) throw UsageError("--status takes the frame pattern itself (--status frames/%04d.png); leave out -o");
-    if (farm || video) throw UsageError("--status only lists frames; it goes without --farm and --video");
-    return frameStatus(*statusPattern, frames, arguments.positional(),
-                       fpsOption ? std::optional<double>(fpsValue) : std::nullopt);
+    if (arguments.farm || video) throw UsageError("--status only lists frames; it goes without --farm and --video");
+    return frameStatus(*arguments.statusPattern, frames, arguments.preset, arguments.fps);
   }
-  if (farm && *farm != "slurm") throw UsageError("--farm supports 'slurm' only, not '" + *farm + "'");
-  if (!farm && (tasksOption || partition || submit))
+  if (!arguments.farm && (arguments.tasks || arguments.partition || arguments.submit))
     throw UsageError("--tasks, --partition and --submit go with --farm slurm");
-  if (partition) checkPartition(*partition);
+  if (arguments.partition) checkPartition(*arguments.partition);
   if (!output) throw UsageError("animate needs an output pattern: -o frames/%04d.png");
   checkFramePattern(*output);
   if (video && video->empty()) throw UsageError("--video needs a file name such as out.mp4");
 
-  core::Scene scene = sceneFromArgument(arguments.positional());
-  if (points) scene.points = points;
-  if (samples) scene.render.samples = sampleCount;
-  if (grid) scene.gridResolution = gridResolution;
+  core::Scene scene = sceneFromArgument(arguments.preset);
+  if (arguments.points) scene.points = arguments.points;
+  if (arguments.samples) scene.render.samples = *arguments.samples;
+  if (arguments.grid) scene.gridResolution = *arguments.grid;
   // Through the JSON form once, like render: the preset each frame stores reproduces the frame.
   {
     const bool embedded = scene.embedded;
@@ -269,22 +242,22 @@ int animateCommand(const CommandArgs& args) {
     scene.embedded = embedded;
     scene.baseDirectory = baseDirectory;
   }
-  const double fps = fpsOption ? fpsValue : core::animationFps(scene);
+  const double fps = arguments.fps.value_or(core::animationFps(scene));
   scene.animation.fps = fps;
   const int frameCount = core::animationFrameCount(scene, fps);
   const FrameRange range = frames ? parseFrameRange(*frames, frameCount, fps) : FrameRange{0, frameCount - 1};
-  if (farm) {
+  if (arguments.farm) {
     FarmJob job;
     job.binary = currentExecutable();
     job.workingDirectory = std::filesystem::current_path().string();
-    if (!arguments.positional().empty()) job.preset = arguments.positional().front();
+    job.preset = arguments.preset;
     job.pattern = *output;
     job.frames = range;
-    job.tasks = tasks;
-    job.partition = partition.value_or("");
-    job.options = taskOptions;
+    job.tasks = arguments.tasks.value_or(1);
+    job.partition = arguments.partition.value_or("");
+    job.options = arguments.taskOptions;
     if (video) job.videoCommand = ffmpegArguments(*output, range, fps, *video);
-    return writeFarmJob(job, submit);
+    return writeFarmJob(job, arguments.submit);
   }
   lockFits(scene);
 
@@ -298,7 +271,7 @@ int animateCommand(const CommandArgs& args) {
   const std::atomic<bool>& interrupted = catchInterrupts();
   const bool interactive = isatty(fileno(stderr));
   StillOptions options;
-  options.threads = threads;
+  options.threads = arguments.threads;
   options.cancel = &interrupted;
   int current = range.first;
   options.progress = [&](const core::AccumulatorStats& stats, std::uint64_t target) {
@@ -326,9 +299,10 @@ int animateCommand(const CommandArgs& args) {
       StillResult result;
       double accumulateSeconds = 0.0;
       std::vector<double> sum;
-      for (int sub = 0; sub < motionBlur; ++sub) {
+      for (int sub = 0; sub < arguments.motionBlur; ++sub) {
         // Sub-frames spread evenly over the shutter interval, centred on the frame's time.
-        const double offset = motionBlur > 1 ? ((sub + 0.5) / motionBlur - 0.5) * shutter / fps : 0.0;
+        const double offset =
+            arguments.motionBlur > 1 ? ((sub + 0.5) / arguments.motionBlur - 0.5) * arguments.shutter / fps : 0.0;
         const core::Scene moment = core::sceneAtTime(scene, std::max(0.0, time + offset));
         const std::string key = patternKey(moment);
         if (key != volumeKey) {
@@ -346,12 +320,13 @@ int animateCommand(const CommandArgs& args) {
           volumeKey = key;
         }
         if (interrupted) throw RenderCancelled();
-        const core::ImageRGBA image = renderer->render(moment, width, height, false);
+        const core::ImageRGBA image = renderer->render(moment, arguments.width, arguments.height, false);
         if (sum.empty()) sum.assign(image.pixels.size(), 0.0);
         for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += image.pixels[i];
         if (sub == 0) result.image = image;
       }
-      for (std::size_t i = 0; i < sum.size(); ++i) result.image.pixels[i] = static_cast<float>(sum[i] / motionBlur);
+      for (std::size_t i = 0; i < sum.size(); ++i)
+        result.image.pixels[i] = static_cast<float>(sum[i] / arguments.motionBlur);
       if (interrupted) throw RenderCancelled();
       result.stats = accumulated.stats;
       result.accumulateSeconds = accumulateSeconds;

@@ -10,7 +10,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "arguments.h"
 #include "atomic_file.h"
 #include "commands.h"
 #include "core/attractor.h"
@@ -18,6 +17,7 @@
 #include "core/flame_variations.h"
 #include "core/lyapunov.h"
 #include "core/scene.h"
+#include "usage_error.h"
 
 namespace voxflame::app {
 
@@ -51,20 +51,13 @@ double parseNumber(const std::string& text, const std::string& what) {
   return value;
 }
 
-// The parameter set a command works on: a preset's first layer, or --attractor ID with its
-// defaults, then --set NAME (a named alternative), --param NAME=VALUE..., --integrator, --step.
-core::OrbitSpec specFromArguments(Arguments& arguments) {
-  const auto attractorId = arguments.take("--attractor");
-  const auto setName = arguments.take("--set");
-  const auto integrator = arguments.take("--integrator");
-  const auto step = arguments.take("--step");
-  const std::vector<std::string> assignments = arguments.takeAll("--param");
-
+// The parameter set a command works on (OrbitArguments).
+core::OrbitSpec specFromArguments(const OrbitArguments& arguments) {
   core::OrbitSpec spec;
-  if (attractorId) {
-    spec = core::defaultOrbitSpec(core::attractorOrThrow(*attractorId));
-  } else if (!arguments.positional().empty()) {
-    const core::Scene scene = sceneFromArgument(arguments.positional());
+  if (arguments.attractor) {
+    spec = core::defaultOrbitSpec(core::attractorOrThrow(*arguments.attractor));
+  } else if (arguments.preset) {
+    const core::Scene scene = sceneFromArgument(arguments.preset);
     const core::PatternLayer& layer = scene.layers.front();
     spec = core::defaultOrbitSpec(core::attractorOrThrow(layer.attractor));
     spec.params = layer.params;
@@ -74,18 +67,18 @@ core::OrbitSpec specFromArguments(Arguments& arguments) {
     throw UsageError("name a preset or an attractor (--attractor ID; `voxflame list` shows them)");
   }
   const core::AttractorInfo& info = *spec.info;
-  if (setName) {
-    const core::NamedParams* set = info.alternative(*setName);
+  if (arguments.set) {
+    const core::NamedParams* set = info.alternative(*arguments.set);
     if (!set) {
       std::string known;
       for (const auto& s : info.alternatives) known += (known.empty() ? "" : ", ") + s.name;
-      throw UsageError("attractor '" + info.id + "' has no parameter set '" + *setName + "'" +
+      throw UsageError("attractor '" + info.id + "' has no parameter set '" + *arguments.set + "'" +
                        (known.empty() ? std::string(" (it has none)") : " (it has: " + known + ")"));
     }
     spec.params = set->values;
     spec.start = set->start;
   }
-  for (const std::string& assignment : assignments) {
+  for (const std::string& assignment : arguments.params) {
     const auto equals = assignment.find('=');
     if (equals == std::string::npos) throw UsageError("--param expects NAME=VALUE, not '" + assignment + "'");
     const std::string name = assignment.substr(0, equals);
@@ -97,14 +90,8 @@ core::OrbitSpec specFromArguments(Arguments& arguments) {
     }
     spec.params[static_cast<std::size_t>(index)] = parseNumber(assignment.substr(equals + 1), "--param " + name);
   }
-  if (integrator) {
-    try {
-      spec.integrator = core::integratorFromString(*integrator);
-    } catch (const core::Error& e) {
-      throw UsageError(std::string("--integrator: ") + e.what());
-    }
-  }
-  if (step) spec.step = parseNumber(*step, "--step");
+  if (arguments.integrator) spec.integrator = *arguments.integrator;
+  if (arguments.step) spec.step = *arguments.step;
   core::validateOrbitSpec(spec);
   return spec;
 }
@@ -127,14 +114,19 @@ std::string padToColumns(const std::string& text, std::size_t columns) {
 
 // A preset whose first layer is a flame or a quaternion Julia set, or nothing (no preset named,
 // --attractor given, or an attractor preset): the attractor path handles those.
-std::optional<core::Scene> chaosPreset(Arguments& arguments) {
-  if (arguments.positional().empty()) return std::nullopt;
-  core::Scene scene = sceneFromArgument(arguments.positional());
+std::optional<core::Scene> chaosPreset(const OrbitArguments& arguments) {
+  if (!arguments.preset) return std::nullopt;
+  core::Scene scene = sceneFromArgument(arguments.preset);
   if (scene.layers.empty() || !scene.layers.front().isChaosGame()) return std::nullopt;
-  for (const char* option : {"--attractor", "--set", "--integrator", "--step", "--param"})
-    if (!arguments.takeAll(option).empty())
-      throw UsageError(std::string(option) + " applies to attractors; the first layer of '" +
-                       arguments.positional().front() + "' is a " + scene.layers.front().patternName());
+  const std::pair<const char*, bool> attractorOptions[] = {{"--attractor", arguments.attractor.has_value()},
+                                                           {"--set", arguments.set.has_value()},
+                                                           {"--integrator", arguments.integrator.has_value()},
+                                                           {"--step", arguments.step.has_value()},
+                                                           {"--param", !arguments.params.empty()}};
+  for (const auto& [option, given] : attractorOptions)
+    if (given)
+      throw UsageError(std::string(option) + " applies to attractors; the first layer of '" + *arguments.preset +
+                       "' is a " + scene.layers.front().patternName());
   return scene;
 }
 
@@ -293,12 +285,10 @@ int listVariations(bool asJson, bool asMarkdown) {
 
 }  // namespace
 
-int listCommand(const CommandArgs& args) {
-  Arguments arguments(args, 2, {"--json", "--variations", "--markdown"});
-  const bool asJson = arguments.flag("--json");
-  const bool variations = arguments.flag("--variations");
-  const bool asMarkdown = arguments.flag("--markdown");
-  arguments.finish(0);
+int listCommand(const ListArguments& arguments) {
+  const bool asJson = arguments.json;
+  const bool variations = arguments.variations;
+  const bool asMarkdown = arguments.markdown;
   if (asMarkdown && !variations) throw UsageError("--markdown lists the variations: use list --variations --markdown");
   if (asMarkdown && asJson) throw UsageError("choose one of --json and --markdown");
   if (variations) return listVariations(asJson, asMarkdown);
@@ -335,15 +325,10 @@ int listCommand(const CommandArgs& args) {
   return 0;
 }
 
-int infoCommand(const CommandArgs& args) {
-  Arguments arguments(args, 2, {"--json"});
-  const bool asJson = arguments.flag("--json");
-  if (const auto scene = chaosPreset(arguments)) {
-    arguments.finish(1);
-    return chaosInfo(*scene, asJson);
-  }
+int infoCommand(const OrbitArguments& arguments) {
+  const bool asJson = arguments.json;
+  if (const auto scene = chaosPreset(arguments)) return chaosInfo(*scene, asJson);
   const core::OrbitSpec spec = specFromArguments(arguments);
-  arguments.finish(1);
   const core::AttractorInfo& info = *spec.info;
   const core::OrbitAnalysis analysis = core::analyseOrbit(spec);
   if (asJson) {
@@ -380,17 +365,15 @@ int infoCommand(const CommandArgs& args) {
   return 0;
 }
 
-int searchCommand(const CommandArgs& args) {
-  Arguments arguments(args, 2, {"--json", "--random"});
-  const bool asJson = arguments.flag("--json");
+int searchCommand(const SearchArguments& arguments) {
+  const bool asJson = arguments.orbit.json;
   core::SearchOptions options;
-  options.seed = static_cast<std::uint64_t>(arguments.integer("--seed", 1, 0, 1LL << 53));
-  options.count = static_cast<int>(arguments.integer("--count", 5, 1, 1000));
-  options.strength = arguments.real("--strength", 0.1, 1e-6, 10.0);
-  const bool fresh = arguments.flag("--random");
-  const auto output = arguments.take("-o", "--output");
-  if (auto scene = chaosPreset(arguments)) {
-    arguments.finish(1);
+  options.seed = arguments.seed;
+  options.count = arguments.count;
+  options.strength = arguments.strength;
+  const bool fresh = arguments.random;
+  const std::optional<std::string>& output = arguments.output;
+  if (auto scene = chaosPreset(arguments.orbit)) {
     core::FlameSearchOptions flameOptions;
     flameOptions.seed = options.seed;
     flameOptions.count = options.count;
@@ -400,8 +383,7 @@ int searchCommand(const CommandArgs& args) {
   }
   if (fresh || output)
     throw UsageError(std::string(fresh ? "--random" : "-o") + " applies to flame and quaternion Julia presets");
-  const core::OrbitSpec spec = specFromArguments(arguments);
-  arguments.finish(1);
+  const core::OrbitSpec spec = specFromArguments(arguments.orbit);
   const core::AttractorInfo& info = *spec.info;
   const auto found = core::searchChaos(spec, options);
   json list = json::array();

@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
-#include <future>
 #include <optional>
 #include <cmath>
 #include <cstdio>
@@ -21,13 +20,10 @@
 #include "core/color.h"
 #include "core/camera.h"
 #include "core/error.h"
-#include "core/packed_volume.h"
-#include "core/shadow_volume.h"
-#include "core/snapshot_publisher.h"
-#include "gl/volume_renderer.h"
 #include "pipeline.h"
 #include "explorer_session.h"
 #include "explorer_ui.h"
+#include "live_view.h"
 
 namespace voxflame::app {
 
@@ -73,9 +69,6 @@ struct GlfwSession {
   ~GlfwSession() { glfwTerminate(); }
 };
 
-// Shadows are smooth: a cell of 2³ voxels keeps them sharp enough at an eighth of the work.
-constexpr int kShadowDownsample = 2;
-
 unsigned uploadThumbnail(const Thumbnail& thumbnail) {
   GLuint texture = 0;
   glGenTextures(1, &texture);
@@ -86,23 +79,6 @@ unsigned uploadThumbnail(const Thumbnail& thumbnail) {
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, thumbnail.width, thumbnail.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                thumbnail.rgba.data());
   return texture;
-}
-
-// The window's current picture as a thumbnail (rows top to bottom, opaque).
-Thumbnail readThumbnail(int width, int height) {
-  Thumbnail thumbnail;
-  thumbnail.width = width;
-  thumbnail.height = height;
-  std::vector<std::uint8_t> rows(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  glPixelStorei(GL_PACK_ALIGNMENT, 1);
-  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
-  thumbnail.rgba.resize(rows.size());
-  const std::size_t stride = 4 * static_cast<std::size_t>(width);
-  for (int y = 0; y < height; ++y)
-    std::copy_n(&rows[static_cast<std::size_t>(height - 1 - y) * stride], stride,
-                &thumbnail.rgba[static_cast<std::size_t>(y) * stride]);
-  for (std::size_t i = 3; i < thumbnail.rgba.size(); i += 4) thumbnail.rgba[i] = 255;
-  return thumbnail;
 }
 
 // Files dropped onto the window wait here until the frame loop opens the first of them.
@@ -123,10 +99,6 @@ void openInto(ExplorerState& state, const std::filesystem::path& path, GLFWwindo
   if (!openFile(state, path)) return;
   const std::string title = "voxflame — " + state.scene.name;
   glfwSetWindowTitle(window, title.c_str());
-}
-
-double millisecondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 }  // namespace
@@ -185,26 +157,13 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     state.exportJob = &exportJob;
     std::optional<Autosave> autosave;
     if (!scripted) autosave.emplace();
-    gl::VolumeRenderer renderer;
-    gl::FrameTarget target;
-    // The volume being uploaded or shown is shared with the shadow job that may still read it;
-    // a new volume is taken into a spare that nothing else holds.
-    auto shown = std::make_shared<core::PackedVolume>();
-    auto spare = std::make_shared<core::PackedVolume>();
-    std::future<core::ShadowVolume> shadowJob;
-    bool uploadInProgress = false;
-    constexpr std::size_t kUploadBytesPerFrame = 48u << 20;  // keeps a frame's upload to a few ms
-    constexpr int kMaxSamples = 64;
+    LiveView view(session, &presets, &exportJob);
     std::uint32_t frame = 0;
     int framesWithVolume = 0;
-    std::string lastView, lastShadowKey;
-
     auto lastFrame = std::chrono::steady_clock::now();
-    // When each pattern change was posted, to time it until the first frame that shows it.
-    std::uint64_t waitingPost = 0, uploadingPost = 0;
-    std::chrono::steady_clock::time_point waitingSince;
-    std::uint32_t waitingSinceFrame = 0;
 
+    // The canonical ImGui loop: events, the panels (which only edit state and ask for things),
+    // the view under them (app::LiveView), the panels' drawing on top, swap.
     while (!glfwWindowShouldClose(window)) {
       glfwPollEvents();
       if (glfwGetWindowAttrib(window, GLFW_ICONIFIED)) {
@@ -233,109 +192,14 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
         openInto(state, dropped.front(), window);
         dropped.clear();
       }
-      if (session.postIfPatternChanged(state.scene)) {
-        waitingPost = session.status().requestedGeneration;
-        waitingSince = std::chrono::steady_clock::now();
-        waitingSinceFrame = frame;
-        state.metrics.worstFrameMs = 0.0;
-      }
-      if (auto mesh = session.takeNewMesh()) {
-        renderer.setMesh(*mesh);
-        lastView.clear();
-      }
-      const auto uploadStart = std::chrono::steady_clock::now();
-      std::uint64_t reflects = 0;
-      if (spare.use_count() > 1) spare = std::make_shared<core::PackedVolume>();
-      if (!uploadInProgress && session.takeVolumeIfNewer(*spare, &reflects)) {
-        std::swap(spare, shown);
-        renderer.beginUpload(*shown);
-        uploadInProgress = true;
-        uploadingPost = reflects;
-      }
-      bool newVolumeShown = false;
-      if (uploadInProgress && renderer.continueUpload(kUploadBytesPerFrame)) {
-        uploadInProgress = false;
-        newVolumeShown = true;
-        target.samples = 0;  // new content: start refining the image afresh
-      }
-      state.metrics.uploadMs = millisecondsSince(uploadStart);
-      // The shadow volume follows the volume and the light. It is
-      // computed on a thread of its own (tens of milliseconds at 256³) and uploaded when ready.
-      const core::RenderSettingsDoc& render = state.scene.render;
-      const std::string shadowKey = std::to_string(renderer.uploadedVersion()) + "/" +
-                                    std::to_string(render.lightAzimuthDeg) + "/" +
-                                    std::to_string(render.lightElevationDeg);
-      if (shadowJob.valid() && shadowJob.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
-        renderer.uploadShadow(shadowJob.get(), kShadowDownsample);
-        target.samples = 0;
-      }
-      if (render.lighting && renderer.hasVolume() && !uploadInProgress && !shadowJob.valid() &&
-          shadowKey != lastShadowKey) {
-        const glm::dvec3 light = core::lightDirection(render.lightAzimuthDeg, render.lightElevationDeg);
-        shadowJob = std::async(std::launch::async, [volume = shown, light] {
-          core::ShadowVolume shadow;
-          core::computeShadowVolume(*volume, light, core::kAbsorptionPerDensity, kShadowDownsample, shadow);
-          return shadow;
-        });
-        lastShadowKey = shadowKey;
-      }
 
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      glViewport(0, 0, width, height);
-      const std::optional<core::GridGeometry> grid = session.geometry();
-      if (grid && renderer.hasVolume()) {
-        gl::RenderSettings settings;
-        settings.camera =
-            core::orbitCamera(state.scene.camera, grid->box(), static_cast<double>(width) / std::max(1, height));
-        settings.tone = state.scene.tone;
-        settings.render = state.scene.render;
-        // Anything that changes what a ray sees restarts the sample average; tone alone does not.
-        core::Scene marchInputs = state.scene;
-        marchInputs.tone = core::ToneMapSettings{};
-        marchInputs.tone.opacity = state.scene.tone.opacity;
-        marchInputs.layers.clear();
-        const std::string view = core::sceneToJson(marchInputs) + std::to_string(width) + "x" + std::to_string(height) +
-                                 std::to_string(state.renderScale);
-        target.resize(std::max(1, static_cast<int>(static_cast<float>(width) * state.renderScale)),
-                      std::max(1, static_cast<int>(static_cast<float>(height) * state.renderScale)));
-        if (view != lastView) {
-          target.samples = 0;
-          renderer.drawMesh(target, settings);
-          lastView = view;
-        }
-        if (target.samples < kMaxSamples) renderer.march(target, settings, static_cast<int>(frame));
-        state.samples = target.samples;
-        glBindFramebuffer(GL_FRAMEBUFFER, 0);
-        renderer.resolve(target, settings, glm::ivec4(0, 0, width, height), false);
-        if (state.requests.saveAs) {
-          // The thumbnail is the view as shown, before the panels are drawn over it.
-          try {
-            const std::filesystem::path saved =
-                presets.saveAs(state.scene, *state.requests.saveAs, readThumbnail(width, height));
-            state.presetMessage = "saved " + saved.string();
-            state.settings.addRecent(RecentKind::Preset, saved);
-          } catch (const core::Error& e) {
-            state.notice = e.what();
-          }
-        }
-      } else {
-        const glm::vec3 background = core::linearToSrgb(state.scene.tone.background);
-        glClearColor(background.r, background.g, background.b, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT);
-      }
+      view.frame(state, width, height);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-      if (newVolumeShown && waitingPost != 0 && uploadingPost == waitingPost) {
-        FrameMetrics& metrics = state.metrics;
-        metrics.changeToFrameMs = millisecondsSince(waitingSince);
-        metrics.changeToFrameFrames = static_cast<int>(frame - waitingSinceFrame) + 1;
-        metrics.worstChangeToFrameMs = std::max(metrics.worstChangeToFrameMs, metrics.changeToFrameMs);
-        waitingPost = 0;
-      }
       ++frame;
       // Scripted runs count frames from the first one that shows the volume.
-      if (renderer.hasVolume()) ++framesWithVolume;
+      if (view.hasVolume()) ++framesWithVolume;
       if (options.frames > 0 && framesWithVolume >= options.frames) {
         if (!options.screenshotPath.empty()) {
           saveScreenshot(options.screenshotPath, width, height);

@@ -141,16 +141,12 @@ std::string analysisKey(const core::PatternLayer& layer) {
   return key;
 }
 
-bool ready(const auto& future) {
-  return future.valid() && future.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
-}
-
 // Keeps the Lyapunov line in step with layer 0; one analysis at a time, never waited for.
 void updateAnalysis(ExplorerState& state) {
   const bool chaosGame = !state.scene.layers.empty() && state.scene.layers.front().isChaosGame();
-  if (ready(state.analysis)) {
+  if (state.analysis.ready()) {
     try {
-      const core::OrbitAnalysis result = state.analysis.get();
+      const core::OrbitAnalysis result = *state.analysis.take();
       char text[160];
       std::snprintf(text, sizeof text, "λ %.3f  %.3f  %.3f  (%s)", result.lyapunov[0], result.lyapunov[1],
                     result.lyapunov[2], std::string(core::toString(result.verdict)).c_str());
@@ -169,7 +165,7 @@ void updateAnalysis(ExplorerState& state) {
     state.analysedKey.clear();
     return;
   }
-  if (state.analysis.valid()) return;
+  if (state.analysis.busy()) return;
   const std::string key = analysisKey(front);
   if (key == state.analysedKey) return;
   state.analysedKey = key;
@@ -177,7 +173,7 @@ void updateAnalysis(ExplorerState& state) {
     const core::OrbitSpec spec = layerSpec(state.scene.layers.front());
     core::LyapunovOptions options;
     options.steps = 20'000;
-    state.analysis = std::async(std::launch::async, [spec, options] { return core::analyseOrbit(spec, options); });
+    state.analysis.start([spec, options](std::stop_token) { return core::analyseOrbit(spec, options); });
   } catch (const core::Error& e) {
     state.lyapunovText = e.what();
   }
@@ -209,7 +205,7 @@ std::string fillText(const core::FillReport& fill) {
 // current one by `strength`. Attractors always search near their parameters, as before; flames
 // and Julia sets use the fill test of flame_search.h.
 void startSearch(ExplorerState& state, double strength, bool fresh) {
-  if (state.search.valid() || state.scene.layers.empty()) return;  // one at a time
+  if (state.search.busy() || state.scene.layers.empty()) return;  // one at a time
   using Outcome = ExplorerState::SearchOutcome;
   try {
     const core::PatternLayer layer = state.scene.layers.front();
@@ -221,7 +217,8 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
       options.strength = strength;
       options.juliaView = layer.julia;
       state.searchMessage = "searching…";
-      state.search = std::async(std::launch::async, [layer, options, fresh] {
+      state.search.start([layer, options, fresh](std::stop_token stop) mutable {
+        options.stop = stop;
         Outcome outcome;
         core::PatternLayer found = layer;
         if (layer.kind == core::PatternKind::Flame) {
@@ -254,7 +251,8 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
     options.count = 1;
     options.strength = strength;
     state.searchMessage = "searching…";
-    state.search = std::async(std::launch::async, [layer, spec, options] {
+    state.search.start([layer, spec, options](std::stop_token stop) mutable {
+      options.stop = stop;
       Outcome outcome;
       const auto results = core::searchChaos(spec, options);
       if (results.empty()) {
@@ -275,9 +273,9 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
 }
 
 void collectSearch(ExplorerState& state) {
-  if (!ready(state.search)) return;
+  if (!state.search.ready()) return;
   try {
-    const ExplorerState::SearchOutcome outcome = state.search.get();
+    const ExplorerState::SearchOutcome outcome = *state.search.take();
     state.searchMessage = outcome.message;
     if (!outcome.found || state.scene.layers.empty()) return;
     core::PatternLayer& layer = state.scene.layers.front();
@@ -957,7 +955,7 @@ void patternWindow(ExplorerState& state, float scale) {
       ImGui::TextColored(kDimColor, "no history yet");
     else
       ImGui::TextColored(kDimColor, "%zu of %zu (Alt+Left/Right)", state.visitedIndex + 1, state.visited.size());
-    if (state.search.valid())
+    if (state.search.busy())
       ImGui::TextColored(kDimColor, "searching…");
     else if (!state.searchMessage.empty())
       ImGui::TextWrapped("%s", state.searchMessage.c_str());
@@ -1152,24 +1150,32 @@ void exportSection(ExplorerState& state) {
     return;
   }
   if (button(state, "export/", "Export now")) {  // not "Export": the header above has that id
-    try {
-      ExportRequest request;
-      request.scene = state.scene;
-      request.settings = settings;
-      request.output = withExtensionFor(state.exportPath, settings.format);
-      request.executable = state.executable;
-      std::snprintf(state.exportPath, sizeof state.exportPath, "%s", request.output.string().c_str());
-      state.settings.lastExportFolder = std::filesystem::absolute(request.output).parent_path();
-      state.exportJob->start(request);
-      state.exportStatus = state.exportJob->poll();
-    } catch (const core::Error& e) {
-      state.notice = e.what();
-    }
+    ExportRequest request;
+    request.scene = state.scene;
+    request.settings = settings;
+    request.output = withExtensionFor(state.exportPath, settings.format);
+    request.executable = state.executable;
+    std::snprintf(state.exportPath, sizeof state.exportPath, "%s", request.output.string().c_str());
+    state.requests.exportStill = std::move(request);
   }
   if (status.state == ExportState::Done) ImGui::TextWrapped("wrote %s", status.output.string().c_str());
   if (status.state == ExportState::Failed) ImGui::TextColored(kErrorColor, "%s", status.error.c_str());
   if (status.state == ExportState::Cancelled) ImGui::TextColored(kDimColor, "cancelled; nothing was written");
 }
+
+}  // namespace
+
+void startExport(ExplorerState& state, ExportJob& job, const ExportRequest& request) {
+  try {
+    state.settings.lastExportFolder = std::filesystem::absolute(request.output).parent_path();
+    job.start(request);
+    state.exportStatus = job.poll();
+  } catch (const core::Error& e) {
+    state.notice = e.what();
+  }
+}
+
+namespace {
 
 // Scenes left by a session that crashed or was killed: restore or discard, one at a time.
 void recoveryWindow(ExplorerState& state, float scale) {

@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
-#include <future>
 #include <map>
 #include <optional>
 #include <string>
@@ -18,6 +17,7 @@
 #include "core/scene.h"
 #include "explorer_session.h"
 #include "autosave.h"
+#include "background_job.h"
 #include "export_job.h"
 #include "preset_library.h"
 #include "scene_history.h"
@@ -40,6 +40,7 @@ struct UiProbe {
 struct UiRequests {
   std::optional<std::filesystem::path> open;  // a preset, a voxflame PNG or a mesh
   std::optional<std::string> saveAs;          // save the scene as a user preset with this name
+  std::optional<ExportRequest> exportStill;   // render a still in a child process (the Export panel)
   bool quit = false;
 };
 
@@ -88,7 +89,7 @@ struct ExplorerState {
     std::optional<core::PatternLayer> found;  // the pattern part of layer 0 (applyVisited copies it)
     std::string message;                      // what was found, or why nothing was
   };
-  std::future<SearchOutcome> search;
+  BackgroundJob<SearchOutcome> search;
   std::uint64_t searchSeed = 1;
   double mutateStrength = 0.1;
   std::string searchMessage;
@@ -98,7 +99,7 @@ struct ExplorerState {
   std::size_t visitedIndex = 0;
 
   // The Lyapunov spectrum of layer 0, analysed off the main thread whenever the pattern changes.
-  std::future<core::OrbitAnalysis> analysis;
+  BackgroundJob<core::OrbitAnalysis> analysis;
   std::string analysedKey;
   std::string lyapunovText = "Lyapunov: …";
 
@@ -136,6 +137,10 @@ void explorerUiFrame(ExplorerState& state);
 // undoable edit) and puts it first in the recent files. On failure the scene is untouched and
 // the notice says why; returns whether it opened.
 bool openFile(ExplorerState& state, const std::filesystem::path& path);
+
+// Starts the export the Export panel asked for (the frame loop calls it with the window's job) and
+// remembers its folder; a refused request leaves a notice.
+void startExport(ExplorerState& state, ExportJob& job, const ExportRequest& request);
 
 // Applies the UI scale (DPI): fonts and spacing. Call before the first frame.
 void applyUiScale(float scale);

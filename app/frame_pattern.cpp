@@ -6,7 +6,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "arguments.h"
+#include "usage_error.h"
 
 namespace voxflame::app {
 

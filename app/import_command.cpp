@@ -5,12 +5,12 @@
 #include <filesystem>
 #include <iostream>
 
-#include "arguments.h"
 #include "atomic_file.h"
 #include "commands.h"
 #include "core/error.h"
 #include "core/flame_xml.h"
 #include "core/scene_io.h"
+#include "usage_error.h"
 
 namespace voxflame::app {
 
@@ -52,44 +52,37 @@ core::FlameFileContents importFlameScene(const std::filesystem::path& path, cons
   return contents;
 }
 
-int importCommand(const CommandArgs& args) {
-  Arguments arguments(args, 2);
-  const auto output = arguments.take("-o", "--output");
-  const auto mesh = arguments.take("--mesh");
+int importCommand(const ImportArguments& arguments) {
+  if (!arguments.flameFile) throw UsageError("import needs a flame file: voxflame import FILE.flame -o PRESET.json");
+  if (!arguments.output) throw UsageError("import needs an output file: -o PRESET.json");
+  const std::string& output = *arguments.output;
+  if (std::filesystem::path(output).extension() != ".json")
+    throw UsageError("output '" + output + "' must end in .json (a voxflame preset)");
+  if (arguments.index && arguments.name) throw UsageError("--index and --name both pick a flame; give one of them");
   core::FlameImportOptions options;
-  options.depth = arguments.real("--depth", core::kDefaultFlameDepth, 0.0, core::kMaxFlameDepth);
-  const auto index = arguments.take("--index");
-  const long long indexValue = arguments.integer("--index", 1, 1, 1'000'000);
-  const auto name = arguments.take("--name");
-  arguments.finish(1);
-  if (arguments.positional().empty())
-    throw UsageError("import needs a flame file: voxflame import FILE.flame -o PRESET.json");
-  if (!output) throw UsageError("import needs an output file: -o PRESET.json");
-  if (std::filesystem::path(*output).extension() != ".json")
-    throw UsageError("output '" + *output + "' must end in .json (a voxflame preset)");
-  if (index && name) throw UsageError("--index and --name both pick a flame; give one of them");
-  if (index) options.index = static_cast<std::size_t>(indexValue - 1);
-  if (name) options.name = *name;
+  options.depth = arguments.depth;
+  if (arguments.index) options.index = static_cast<std::size_t>(*arguments.index - 1);
+  if (arguments.name) options.name = *arguments.name;
 
-  const std::filesystem::path input = arguments.positional().front();
+  const std::filesystem::path input = *arguments.flameFile;
   core::Scene base = importBaseScene();
-  if (mesh) placeMesh(base, *mesh, *output);
+  if (arguments.mesh) placeMesh(base, *arguments.mesh, output);
   core::Scene scene;
   const core::FlameFileContents contents = importFlameScene(input, base, options, scene);
   for (const std::string& warning : contents.flame.warnings)
     std::cerr << "voxflame: warning: " << input.string() << ": " << warning << "\n";
   // What is written must load: read it back before it replaces anything.
   const std::string json = core::sceneToJson(scene);
-  core::sceneFromJson(json, *output);
-  writeFileAtomically(*output, json, 0644, ".tmp", "preset");
+  core::sceneFromJson(json, output);
+  writeFileAtomically(output, json, 0644, ".tmp", "preset");
   const std::size_t count = contents.names.size();
   const std::size_t transforms = contents.flame.genome.xforms.size();
   char depth[48] = "";
   if (contents.flame.depthAdded) std::snprintf(depth, sizeof depth, ", depth %g", options.depth);
   std::printf("imported flame '%s' (%zu of %zu in %s; %zu transform%s%s%s) into %s\n", contents.flame.name.c_str(),
               contents.index + 1, count, input.string().c_str(), transforms, transforms == 1 ? "" : "s",
-              contents.flame.genome.hasFinal ? " and a final one" : "", depth, output->c_str());
-  if (count > 1 && !index && !name)
+              contents.flame.genome.hasFinal ? " and a final one" : "", depth, output.c_str());
+  if (count > 1 && !arguments.index && !arguments.name)
     std::printf("the file holds %zu flames; --index N or --name NAME picks another\n", count);
   return 0;
 }

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <string>
 
-#include "arguments.h"
+#include "usage_error.h"
 
 namespace voxflame::app {
 

@@ -1,4 +1,4 @@
-// `voxflame bench NAME [--json]`: each benchmark measures one part of the pipeline on the shared
+// `voxflame bench [NAME] [--json]`: each benchmark measures one part of the pipeline on the shared
 // test meshes and prints one line per measurement (a JSON object per line with --json).
 #pragma once
 
@@ -21,6 +21,10 @@ struct Benchmark {
   void (*run)(const BenchOptions& options);
 };
 const std::vector<Benchmark>& benchmarks();
+
+// Runs the benchmark named `which`, or all of them when it is empty; returns the exit status.
+// The command line (voxflame_cli) only lets through names of benchmarks().
+int runBenchmarks(BenchOptions options, const std::string& which);
 
 // CPU seconds (user and system, all threads) of this process (RUSAGE_SELF) or of its finished
 // children (RUSAGE_CHILDREN): on a shared machine the wall-clock rate depends on what else runs,

@@ -4,9 +4,8 @@
 #include <filesystem>
 #include <iostream>
 
-#include "arguments.h"
 #include "bench.h"
-#include "commands.h"
+#include "core/error.h"
 
 namespace voxflame::bench {
 
@@ -69,32 +68,16 @@ std::string findMeshFolder() {
 
 }  // namespace
 
-}  // namespace voxflame::bench
-
-namespace voxflame::app {
-
-int benchCommand(const CommandArgs& args) {
-  Arguments arguments(args, 2, {"--json"});
-  bench::BenchOptions options;
-  options.json = arguments.flag("--json");
-  options.method = arguments.take("--method").value_or("");
-  if (!options.method.empty() && options.method != "volume" && options.method != "points")
-    throw UsageError("--method must be 'volume' or 'points', not '" + options.method + "'");
-  arguments.finish(1);
-  const std::string which = arguments.positional().empty() ? "" : arguments.positional().front();
+int runBenchmarks(BenchOptions options, const std::string& which) {
   bool found = false;
-  for (const bench::Benchmark& benchmark : bench::benchmarks()) {
+  for (const Benchmark& benchmark : benchmarks()) {
     if (!which.empty() && which != benchmark.name) continue;
     found = true;
-    if (options.meshFolder.empty()) options.meshFolder = bench::findMeshFolder();
+    if (options.meshFolder.empty()) options.meshFolder = findMeshFolder();
     benchmark.run(options);
   }
-  if (!found) {
-    std::string names;
-    for (const auto& b : bench::benchmarks()) names += std::string(names.empty() ? "" : ", ") + b.name;
-    throw UsageError("unknown benchmark '" + which + "' (known: " + names + ")");
-  }
+  if (!found) throw core::Error("unknown benchmark '" + which + "'");
   return 0;
 }
 
-}  // namespace voxflame::app
+}  // namespace voxflame::bench

@@ -1,3 +1,5 @@
+#include <epoxy/gl.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -11,7 +13,7 @@
 #include "explorer_session.h"
 #include "export_job.h"
 #include "gl/headless_context.h"
-#include "gl/volume_renderer.h"
+#include "live_view.h"
 
 namespace voxflame::bench {
 
@@ -30,51 +32,34 @@ double residentMegabytes() {
   return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
 }
 
-// The explorer's frame without the window: take a new volume if one is ready, upload a slice of
-// it, march one sample and resolve, exactly as explorer.cpp does, then wait for the GL to finish
-// so the time is the frame's real cost.
+// One explorer frame without the window: app::LiveView, the very frame body the explorer runs
+// under its panels, then a wait for the GL to finish so the time is the frame's real cost.
+// A headless context has no window: the frame goes to a 1280×720 colour buffer standing in for it.
 struct FrameLoop {
-  explicit FrameLoop(app::ExplorerSession& explorerSession) : session(explorerSession) {}
-  app::ExplorerSession& session;
-  gl::VolumeRenderer renderer;
-  gl::FrameTarget target;
-  core::PackedVolume incoming, uploading;
-  bool uploadInProgress = false;
-  std::uint64_t uploadingPost = 0;
-  float renderScale = 1.0f;
-  int frame = 0;
+  FrameLoop(app::ExplorerSession& session, const core::Scene& scene, float renderScale)
+      : view(session, nullptr, nullptr) {
+    app::resetExplorerState(state, scene);
+    state.renderScale = renderScale;
+    glGenRenderbuffers(1, &colour);
+    glBindRenderbuffer(GL_RENDERBUFFER, colour);
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 1280, 720);
+    glGenFramebuffers(1, &window);
+    glBindFramebuffer(GL_FRAMEBUFFER, window);
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
+  }
+  ~FrameLoop() {
+    glDeleteFramebuffers(1, &window);
+    glDeleteRenderbuffers(1, &colour);
+  }
+  app::ExplorerState state;
+  app::LiveView view;
+  GLuint colour = 0, window = 0;
 
   // Returns the post whose volume became visible in this frame, or 0.
-  std::uint64_t run(const core::Scene& scene) {
-    std::uint64_t shownPost = 0;
-    if (auto mesh = session.takeNewMesh()) renderer.setMesh(*mesh);
-    std::uint64_t reflects = 0;
-    if (!uploadInProgress && session.takeVolumeIfNewer(incoming, &reflects)) {
-      std::swap(incoming, uploading);
-      renderer.beginUpload(uploading);
-      uploadInProgress = true;
-      uploadingPost = reflects;
-    }
-    if (uploadInProgress && renderer.continueUpload(48u << 20)) {
-      uploadInProgress = false;
-      target.samples = 0;
-      shownPost = uploadingPost;
-    }
-    const auto grid = session.geometry();
-    if (grid && renderer.hasVolume()) {
-      gl::RenderSettings settings;
-      settings.camera = core::orbitCamera(scene.camera, grid->box(), 1280.0 / 720.0);
-      settings.tone = scene.tone;
-      settings.render = scene.render;
-      target.resize(static_cast<int>(1280 * renderScale), static_cast<int>(720 * renderScale));
-      if (target.samples == 0) renderer.drawMesh(target, settings);
-      renderer.march(target, settings, frame);
-      glBindFramebuffer(GL_FRAMEBUFFER, 0);
-      renderer.resolve(target, settings, glm::ivec4(0, 0, 1280, 720), false);
-    }
+  std::uint64_t run() {
+    const app::LiveFrame frame = view.frame(state, 1280, 720, window);
     glFinish();
-    ++frame;
-    return shownPost;
+    return frame.newVolumeShown ? frame.shownPost : 0;
   }
 };
 
@@ -88,22 +73,22 @@ void benchExplorer(const BenchOptions& options) {
   const bool software = context.renderer().find("llvmpipe") != std::string::npos;
   for (int resolution : {256, 512}) {
     const double baseline = residentMegabytes();
-    core::Scene scene = core::defaultScene();
-    scene.gridResolution = resolution;
+    core::Scene initial = core::defaultScene();
+    initial.gridResolution = resolution;
     app::ExplorerSession session;
-    FrameLoop loop(session);
-    loop.renderScale = software ? 0.5f : 1.0f;
-    session.postIfPatternChanged(scene);
+    FrameLoop loop(session, initial, software ? 0.5f : 1.0f);
+    core::Scene& scene = loop.state.scene;
+    loop.run();  // posts the scene
     session.waitUntilApplied(600.0);
     // Wait for the first volume, then refine for a while as a user watching would.
     const auto start = Clock::now();
-    while (!loop.renderer.hasVolume() && millisecondsSince(start) < 120'000) loop.run(scene);
+    while (!loop.view.hasVolume() && millisecondsSince(start) < 120'000) loop.run();
     double worstRefining = 0.0, totalRefining = 0.0;
     int refiningFrames = 0;
     const auto refineStart = Clock::now();
     while (millisecondsSince(refineStart) < 4000.0) {
       const auto frameStart = Clock::now();
-      loop.run(scene);
+      loop.run();
       const double ms = millisecondsSince(frameStart);
       worstRefining = std::max(worstRefining, ms);
       totalRefining += ms;
@@ -124,13 +109,12 @@ void benchExplorer(const BenchOptions& options) {
       else
         layer.params[0] *= factor;
       const auto changed = Clock::now();
-      const int firstFrame = loop.frame;
-      session.postIfPatternChanged(scene);
-      const std::uint64_t post = session.status().requestedGeneration;
+      const std::uint32_t firstFrame = loop.view.frameCount();
+      const std::uint64_t post = session.status().requestedGeneration + 1;  // the next frame posts it
       while (millisecondsSince(changed) < 60'000)
-        if (loop.run(scene) == post) break;
+        if (loop.run() == post) break;
       latencies.push_back(millisecondsSince(changed));
-      frames.push_back(loop.frame - firstFrame);
+      frames.push_back(loop.view.frameCount() - firstFrame);
     }
     // A still exported from the Export panel runs in a child process; the window's frames go on.
     double worstExporting = 0.0, totalExporting = 0.0;
@@ -147,7 +131,7 @@ void benchExplorer(const BenchOptions& options) {
       job.start(request);
       while (job.poll().state == app::ExportState::Running) {
         const auto frameStart = Clock::now();
-        loop.run(scene);
+        loop.run();
         const double ms = millisecondsSince(frameStart);
         worstExporting = std::max(worstExporting, ms);
         totalExporting += ms;
@@ -160,7 +144,7 @@ void benchExplorer(const BenchOptions& options) {
     report(options, {{"bench", "explorer"},
                      {"grid", resolution},
                      {"renderer", context.renderer()},
-                     {"render_scale", loop.renderScale},
+                     {"render_scale", loop.state.renderScale},
                      {"mean_frame_ms", totalRefining / std::max(1, refiningFrames)},
                      {"worst_frame_ms", worstRefining},
                      {"change_to_frame_ms_median", latencies[latencies.size() / 2]},

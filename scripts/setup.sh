@@ -22,4 +22,6 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE="${VOXFLAME_BUILD_TYPE:-Release}" "$@" >/dev/null
-cmake --build "$build" -j "$(nproc)" ${VOXFLAME_BUILD_TARGET:+--target "$VOXFLAME_BUILD_TARGET"}
+# VOXFLAME_BUILD_TARGET may name several targets, separated by spaces.
+# shellcheck disable=SC2086
+cmake --build "$build" -j "$(nproc)" ${VOXFLAME_BUILD_TARGET:+--target $VOXFLAME_BUILD_TARGET}

@@ -237,10 +237,10 @@ TEST_F(Farm, BadFlagsGiveMessages) {
   };
   auto result = run("-o 'f/%04d.png' --farm slurm --tasks 0");
   EXPECT_EQ(result.exitStatus, 2) << result.output;
-  EXPECT_TRUE(contains(result.output, "--tasks is 0; allowed: 1 to")) << result.output;
+  EXPECT_TRUE(contains(result.output, "--tasks: Value 0 not in range 1 to")) << result.output;
   result = run("-o 'f/%04d.png' --farm pbs");
   EXPECT_EQ(result.exitStatus, 2) << result.output;
-  EXPECT_TRUE(contains(result.output, "--farm supports 'slurm' only, not 'pbs'")) << result.output;
+  EXPECT_TRUE(contains(result.output, "--farm: pbs not in {slurm}")) << result.output;
   result = run("-o 'f/%04d.png' --tasks 4");
   EXPECT_EQ(result.exitStatus, 2) << result.output;
   EXPECT_TRUE(contains(result.output, "--tasks, --partition and --submit go with --farm slurm")) << result.output;

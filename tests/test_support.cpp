@@ -1,6 +1,7 @@
 #include "test_support.h"
 
 #include "core/error.h"
+#include "core/mesh.h"
 #include "core/scene.h"
 
 #include <sys/wait.h>
@@ -20,6 +21,13 @@ struct PrivateCacheFolder {
   PrivateCacheFolder() { setenv("XDG_CACHE_HOME", folder.path().c_str(), 1); }
 };
 const PrivateCacheFolder privateCacheFolder;
+
+// Meshes are imported in a child process as in voxflame itself: the built binary's hidden
+// subcommand (a test program cannot run itself for that).
+struct MeshImportByTheBinary {
+  MeshImportByTheBinary() { core::setMeshImportChild({VOXFLAME_BINARY, {core::kMeshImportSubcommand, "--"}}); }
+};
+const MeshImportByTheBinary meshImportByTheBinary;
 }  // namespace
 
 std::filesystem::path meshPath(const std::string& name) {

@@ -789,6 +789,7 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     patternWriters_.fetch_add(1, std::memory_order_acq_rel);
     std::unique_lock lock(gridMutex_);  // no batch runs and no snapshot copies while we clear
     patternWriters_.fetch_sub(1, std::memory_order_acq_rel);
+    patternWriters_.notify_all();  // readers standing aside (waitForPatternChange) take their turn
     layers_ = std::move(prepared);
     seed_ = seed;
     deposit_ = requestedDeposit_.load();
@@ -809,6 +810,14 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     generation_.fetch_add(1, std::memory_order_acq_rel);
     version_.fetch_add(1, std::memory_order_acq_rel);
   }
+  notifyWorkChanged();
+}
+
+void Accumulator::notifyWorkChanged() {
+  // Under the mutex the sleepers check their conditions with: a worker that has just found
+  // nothing to do is either not yet waiting (and will see the change) or already asleep (and
+  // gets this notification). No wake-up is lost, so nobody needs to poll.
+  std::lock_guard lock(wakeMutex_);
   wake_.notify_all();
   doneSignal_.notify_all();
 }
@@ -829,7 +838,7 @@ void Accumulator::setPointSink(PointSink* sink) {
 
 void Accumulator::setTargetPoints(std::uint64_t target) {
   targetPoints_ = target;
-  wake_.notify_all();
+  notifyWorkChanged();
 }
 
 bool Accumulator::waitUntilDone(double timeoutSeconds) {
@@ -924,9 +933,11 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
   while (!stop.stop_requested()) {
     const int stream = active_.load() && !owned.empty() ? nextStream(targetPoints_.load()) : -1;
     if (stream < 0) {
-      doneSignal_.notify_all();
+      // Nothing left for this thread: say so to waitUntilDone, then sleep until setPattern,
+      // setTargetPoints or the stop request wakes it (all notify under wakeMutex_).
       std::unique_lock lock(wakeMutex_);
-      wake_.wait_for(lock, stop, std::chrono::milliseconds(50), [&] {
+      doneSignal_.notify_all();
+      wake_.wait(lock, stop, [&] {
         if (!active_.load() || owned.empty()) return false;
         const auto target = targetPoints_.load();
         return std::any_of(owned.begin(), owned.end(), [&](int s) { return !streamDone(s, target); });
@@ -992,8 +1003,10 @@ std::uint64_t Accumulator::flushPoints(int threadIndex, SplatBuffer& splats) {
 }
 
 void Accumulator::waitForPatternChange() const {
-  while (patternWriters_.load(std::memory_order_acquire) > 0)
-    std::this_thread::sleep_for(std::chrono::microseconds(100));
+  // Blocks (futex) while a setPattern is waiting for or holding the exclusive lock.
+  for (int writers = patternWriters_.load(std::memory_order_acquire); writers > 0;
+       writers = patternWriters_.load(std::memory_order_acquire))
+    patternWriters_.wait(writers, std::memory_order_acquire);
 }
 
 void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation, std::vector<OrbitBatch>& batches,

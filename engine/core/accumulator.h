@@ -254,6 +254,7 @@ class Accumulator {
   mutable std::mutex problemMutex_;
   std::string problem_;  // guarded by problemMutex_
 
+  void notifyWorkChanged();  // wakes idle workers and waitUntilDone, under wakeMutex_
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;  // workers sleep here when idle
   std::condition_variable doneSignal_;

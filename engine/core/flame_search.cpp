@@ -271,7 +271,7 @@ template <class Candidate, class Make, class Measure>
 std::vector<Candidate> runSearch(const FlameSearchOptions& options, Make make, Measure measure) {
   std::vector<Candidate> pool;
   const auto wanted = static_cast<std::size_t>(std::max(1, options.count) * std::max(1, options.poolPerResult));
-  for (int i = 0; i < options.maxCandidates && pool.size() < wanted; ++i) {
+  for (int i = 0; i < options.maxCandidates && pool.size() < wanted && !options.stop.stop_requested(); ++i) {
     const std::uint64_t seed = mixSeed(options.seed, static_cast<std::uint64_t>(i));
     std::optional<Candidate> candidate = make(seed);
     if (!candidate) continue;

@@ -12,6 +12,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -91,6 +92,7 @@ struct FlameSearchOptions {
   RandomFlameOptions random;          // flames without a base
   QuaternionJuliaSettings juliaView;  // Julia sets without a base: the view, turn and slice kept
   FillCriteria fill;
+  std::stop_token stop;  // a stop request ends the search early with what it found
 };
 
 struct FlameCandidate {

@@ -153,7 +153,8 @@ std::vector<SearchResult> searchChaos(const OrbitSpec& base, const SearchOptions
   const AttractorInfo& info = *base.info;
   SplitMix64 rng(mixSeed(options.seed, 0x736561726368ULL));
   std::vector<SearchResult> found;
-  for (int candidate = 0; candidate < options.maxCandidates && static_cast<int>(found.size()) < options.count;
+  for (int candidate = 0; candidate < options.maxCandidates && static_cast<int>(found.size()) < options.count &&
+                          !options.stop.stop_requested();
        ++candidate) {
     OrbitSpec spec = base;
     for (std::size_t i = 0; i < spec.params.size(); ++i) {

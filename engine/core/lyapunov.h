@@ -8,6 +8,7 @@
 
 #include <array>
 #include <cstdint>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -68,6 +69,7 @@ struct SearchOptions {
   LyapunovOptions screen{1'000, 4'000, 1e4};    // cheap first look at every candidate
   LyapunovOptions confirm{5'000, 40'000, 1e4};  // the full check a found set must pass
   double minExtentRatio = 0.05;                 // smallest box side over largest: rejects flat or thin sets
+  std::stop_token stop;                         // a stop request ends the search early with what it found
 };
 
 struct SearchResult {

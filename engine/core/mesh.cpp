@@ -1,6 +1,8 @@
 #include "mesh.h"
 
+#include <fcntl.h>
 #include <poll.h>
+#include <spawn.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -14,7 +16,8 @@
 #include <chrono>
 #include <cmath>
 #include <cstring>
-#include <functional>
+#include <mutex>
+#include <optional>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -245,9 +248,15 @@ void checkPlyComplete(std::span<const std::byte> data, const std::string& name) 
 namespace {
 
 // Assimp's readers are not hardened against corrupt input: a flipped byte can crash one (binary
-// PLY) or send one into an endless loop (Collada). So the import runs in a child process that
-// sends the finished mesh, or its error message, back through a pipe; a child that crashes or
-// overruns its time limit is reported as a corrupt file instead of taking voxflame down.
+// PLY) or send one into an endless loop (Collada). So the import runs in a child process (the
+// program setMeshImportChild names, normally voxflame itself with a hidden subcommand) that sends
+// the finished mesh, or its error message, back through a pipe; a child that crashes or overruns
+// its time limit is reported as a corrupt file instead of taking voxflame down. The child is
+// spawned, never forked: a fork would copy a process whose worker threads may hold locks and
+// write a grid of gigabytes (copy on write), and would run Assimp in that copy.
+
+std::mutex gChildMutex;
+std::optional<MeshImportChild> gChild;
 
 bool writeAll(int fd, const void* data, std::size_t size) {
   const char* bytes = static_cast<const char*>(data);
@@ -261,43 +270,74 @@ bool writeAll(int fd, const void* data, std::size_t size) {
   return true;
 }
 
-[[noreturn]] void childSendsResult(int fd, const std::function<TriangleMesh()>& import) {
-  std::string message;
-  try {
-    const TriangleMesh mesh = import();
-    const std::uint64_t counts[2] = {mesh.vertices.size(), mesh.triangles.size()};
-    const char ok = 1;
-    const bool sent = writeAll(fd, &ok, 1) && writeAll(fd, counts, sizeof counts) &&
-                      writeAll(fd, mesh.vertices.data(), mesh.vertices.size() * sizeof(glm::vec3)) &&
-                      writeAll(fd, mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]));
-    ::_exit(sent ? 0 : 3);
-  } catch (const std::exception& e) {
-    message = e.what();
-  } catch (...) {
-    message = "unknown failure";
-  }
-  const char failed = 0;
-  writeAll(fd, &failed, 1);
-  writeAll(fd, message.data(), message.size());
-  ::_exit(0);
+TriangleMesh importWithAssimp(const std::filesystem::path& path, const std::string& name) {
+  Assimp::Importer importer;
+  const aiScene* scene = importer.ReadFile(path.string(), kReadFlags);
+  return convertScene(scene, importer, name);
 }
 
-TriangleMesh importIsolated(const std::string& name, std::uint64_t fileBytes, double timeLimitSeconds,
-                            const std::function<TriangleMesh()>& import) {
+// A file holding `data` that is removed with this object (for importing bytes in a child).
+class TemporaryMeshFile {
+ public:
+  TemporaryMeshFile(std::span<const std::byte> data, std::string_view extension) {
+    std::string pattern =
+        (std::filesystem::temp_directory_path() / "voxflame-mesh-XXXXXX").string() + "." + std::string(extension);
+    const int fd = ::mkstemps(pattern.data(), static_cast<int>(extension.size() + 1));
+    if (fd < 0) throw Error("cannot write a temporary copy of the mesh: " + std::string(std::strerror(errno)));
+    path_ = pattern;
+    const bool written = writeAll(fd, data.data(), data.size());
+    ::close(fd);
+    if (!written) throw Error("cannot write a temporary copy of the mesh (disk full?)");
+  }
+  ~TemporaryMeshFile() {
+    std::error_code ec;
+    std::filesystem::remove(path_, ec);
+  }
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+TriangleMesh importInChild(const MeshImportChild& importer, const std::filesystem::path& path, const std::string& name,
+                           std::uint64_t fileBytes, double timeLimitSeconds) {
   if (timeLimitSeconds <= 0.0) timeLimitSeconds = 30.0 + 4.0 * static_cast<double>(fileBytes) / (1024.0 * 1024.0);
   int fds[2];
-  if (::pipe(fds) != 0) return import();  // no pipe to spare: read in this process, unprotected
-  const pid_t child = ::fork();
-  if (child < 0) {
-    ::close(fds[0]);
-    ::close(fds[1]);
-    return import();
-  }
-  if (child == 0) {
-    ::close(fds[0]);
-    childSendsResult(fds[1], import);
-  }
+  if (::pipe2(fds, O_CLOEXEC) != 0) throw Error("cannot read mesh '" + name + "': no pipe for the importer");
+  std::vector<std::string> arguments;
+  arguments.push_back(importer.program.string());
+  arguments.insert(arguments.end(), importer.arguments.begin(), importer.arguments.end());
+  arguments.push_back(path.string());
+  arguments.push_back(name);  // what the child's messages call the mesh (a temporary file has no good name)
+  std::vector<char*> argv;
+  for (std::string& argument : arguments) argv.push_back(argument.data());
+  argv.push_back(nullptr);
+
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  // The child starts with default signal handling and no blocked signals, whatever this process set.
+  sigset_t none, defaults;
+  sigemptyset(&none);
+  sigfillset(&defaults);
+  posix_spawnattr_setsigmask(&attributes, &none);
+  posix_spawnattr_setsigdefault(&attributes, &defaults);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
+  pid_t child = -1;
+  const int spawned = ::posix_spawn(&child, argv[0], &actions, &attributes, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attributes);
   ::close(fds[1]);
+  if (spawned != 0) {
+    ::close(fds[0]);
+    throw Error("cannot read mesh '" + name + "': the importer " + importer.program.string() +
+                " could not be started (" + std::strerror(spawned) + ")");
+  }
+
   std::string received;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeLimitSeconds);
   bool timedOut = false;
@@ -336,7 +376,8 @@ TriangleMesh importIsolated(const std::string& name, std::uint64_t fileBytes, do
   mesh.name = name;
   const std::size_t vertexBytes = counts[0] * sizeof(glm::vec3);
   const std::size_t triangleBytes = counts[1] * sizeof(mesh.triangles[0]);
-  if (received.size() != 1 + sizeof counts + vertexBytes + triangleBytes)
+  if (counts[0] > received.size() || counts[1] > received.size() ||
+      received.size() != 1 + sizeof counts + vertexBytes + triangleBytes)
     throw Error("mesh '" + name + "': the importer's answer was cut short");
   mesh.vertices.resize(counts[0]);
   mesh.triangles.resize(counts[1]);
@@ -345,7 +386,55 @@ TriangleMesh importIsolated(const std::string& name, std::uint64_t fileBytes, do
   return mesh;
 }
 
+// Imports `path` in the child when one is set, else in this process (a program that never
+// named an importer, such as a small tool linking the core: it gets no protection).
+TriangleMesh importIsolated(const std::filesystem::path& path, const std::string& name, std::uint64_t fileBytes,
+                            double timeLimitSeconds) {
+  std::optional<MeshImportChild> importer;
+  {
+    std::lock_guard lock(gChildMutex);
+    importer = gChild;
+  }
+  if (!importer) return importWithAssimp(path, name);
+  return importInChild(*importer, path, name, fileBytes, timeLimitSeconds);
+}
+
 }  // namespace
+
+void setMeshImportChild(MeshImportChild importer) {
+  std::lock_guard lock(gChildMutex);
+  gChild = std::move(importer);
+}
+
+int runMeshImportChild(const std::filesystem::path& path, const std::string& displayName) {
+  // The answer goes to the original standard output; anything the importer prints goes nowhere.
+  std::fflush(stdout);
+  const int answer = ::dup(STDOUT_FILENO);
+  if (answer < 0) return 3;
+  const int devNull = ::open("/dev/null", O_WRONLY);
+  if (devNull >= 0) {
+    ::dup2(devNull, STDOUT_FILENO);
+    ::close(devNull);
+  }
+  std::string message;
+  try {
+    const TriangleMesh mesh = importWithAssimp(path, displayName.empty() ? path.string() : displayName);
+    const std::uint64_t counts[2] = {mesh.vertices.size(), mesh.triangles.size()};
+    const char ok = 1;
+    const bool sent = writeAll(answer, &ok, 1) && writeAll(answer, counts, sizeof counts) &&
+                      writeAll(answer, mesh.vertices.data(), mesh.vertices.size() * sizeof(glm::vec3)) &&
+                      writeAll(answer, mesh.triangles.data(), mesh.triangles.size() * sizeof(mesh.triangles[0]));
+    return sent ? 0 : 3;
+  } catch (const std::exception& e) {
+    message = e.what();
+  } catch (...) {
+    message = "unknown failure";
+  }
+  const char failed = 0;
+  writeAll(answer, &failed, 1);
+  writeAll(answer, message.data(), message.size());
+  return 0;
+}
 
 TriangleMesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& options) {
   std::error_code ec;
@@ -355,30 +444,31 @@ TriangleMesh loadMesh(const std::filesystem::path& path, const MeshLoadOptions& 
   if (ec) throw Error("cannot read mesh file '" + path.string() + "': " + ec.message());
   if (size == 0) throw Error("mesh file '" + path.string() + "' is empty");
   if (path.extension() == ".ply" || path.extension() == ".PLY") {
+    // A truncated PLY is refused here, before any importer sees it, with a precise message.
     std::ifstream in(path, std::ios::binary);
     std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (!in && !in.eof()) throw Error("cannot read mesh file '" + path.string() + "'");
-    return loadMeshFromMemory(std::as_bytes(std::span<const char>(bytes)), "ply", path.string(), options);
+    checkPlyComplete(std::as_bytes(std::span<const char>(bytes)), path.string());
   }
-  return importIsolated(path.string(), size, options.timeLimitSeconds, [&] {
-    Assimp::Importer importer;
-    const aiScene* scene = importer.ReadFile(path.string(), kReadFlags);
-    return convertScene(scene, importer, path.string());
-  });
+  if (!options.isolate) return importWithAssimp(path, path.string());
+  return importIsolated(path, path.string(), size, options.timeLimitSeconds);
 }
 
 TriangleMesh loadMeshFromMemory(std::span<const std::byte> data, std::string_view extensionHint,
                                 std::string_view displayName, const MeshLoadOptions& options) {
   if (data.empty()) throw Error("mesh '" + std::string(displayName) + "' is empty");
   if (extensionHint == "ply" || extensionHint == "PLY") checkPlyComplete(data, std::string(displayName));
-  const auto import = [&] {
+  if (!options.isolate) {
     Assimp::Importer importer;
     const aiScene* scene =
         importer.ReadFileFromMemory(data.data(), data.size(), kReadFlags, std::string(extensionHint).c_str());
     return convertScene(scene, importer, displayName);
-  };
-  if (!options.isolate) return import();
-  return importIsolated(std::string(displayName), data.size(), options.timeLimitSeconds, import);
+  }
+  // The child reads files: the bytes go to a temporary one that it imports.
+  const TemporaryMeshFile copy(data, extensionHint);
+  TriangleMesh mesh = importIsolated(copy.path(), std::string(displayName), data.size(), options.timeLimitSeconds);
+  mesh.name = std::string(displayName);
+  return mesh;
 }
 
 }  // namespace voxflame::core

@@ -37,10 +37,24 @@ struct MeshLoadOptions {
   // Assimp into an endless loop). 0: 30 s plus 4 s per MB of file.
   double timeLimitSeconds = 0.0;
   // false: import in this process. Only for data voxflame itself ships (the meshes compiled into
-  // the binary): forking a threaded process can leave the child stuck on a lock another thread
-  // held (seen under AddressSanitizer), and a trusted file needs no isolation.
+  // the binary): a trusted file needs no isolation and no child process to start.
   bool isolate = true;
 };
+
+// The program that imports a mesh in a child process: run as `program arguments... FILE NAME`, it
+// answers on its standard output with runMeshImportChild's record. voxflame names itself with the
+// hidden subcommand kMeshImportSubcommand; test programs name the built voxflame binary. Until a
+// program sets one, meshes are imported in-process, without protection from a crashing importer.
+struct MeshImportChild {
+  std::filesystem::path program;
+  std::vector<std::string> arguments;
+};
+void setMeshImportChild(MeshImportChild importer);
+inline constexpr const char* kMeshImportSubcommand = "__import-mesh";
+
+// The child's side: imports FILE with Assimp and writes the mesh (or the error message, calling
+// the mesh displayName) to standard output in the record the parent reads. Returns the exit status.
+int runMeshImportChild(const std::filesystem::path& path, const std::string& displayName);
 
 // Loads and merges every mesh of the file. Throws core::Error naming the file on any problem:
 // missing, empty, corrupt, truncated, no triangles, only points or lines, indices out of range,

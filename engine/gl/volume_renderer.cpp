@@ -558,6 +558,10 @@ core::FinishSettings finishSettings(const RenderSettings& settings, bool linearO
 
 void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& settings, glm::ivec4 viewport,
                              bool linearOutput) {
+  // The picture goes to the framebuffer bound on entry (the window's, or an offscreen one); the
+  // read-backs below bind others.
+  GLint output = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &output);
   const bool withMesh = meshIndexCount_ > 0 && settings.render.meshDisplay != core::MeshDisplay::Off;
   const std::string key = finishKey(settings, linearOutput, withMesh);
   if (!target.finished_) target.finished_ = makeTexture(GL_TEXTURE_2D, GL_LINEAR);
@@ -579,6 +583,7 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
     target.finishedRevision_ = target.revision_;
     target.finishedKey_ = key;
   }
+  glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(output));
   glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);

@@ -1,0 +1,203 @@
+#include "live_view.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <utility>
+
+#include "core/camera.h"
+#include "core/color.h"
+#include "core/error.h"
+
+namespace voxflame::app {
+
+namespace {
+
+// Shadows are smooth: a cell of 2³ voxels keeps them sharp enough at an eighth of the work.
+constexpr int kShadowDownsample = 2;
+// Keeps a frame's share of a volume upload to a few milliseconds.
+constexpr std::size_t kUploadBytesPerFrame = 48u << 20;
+
+// The framebuffer's picture as a thumbnail (rows top to bottom, opaque).
+Thumbnail readThumbnail(int width, int height) {
+  Thumbnail thumbnail;
+  thumbnail.width = width;
+  thumbnail.height = height;
+  std::vector<std::uint8_t> rows(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rows.data());
+  thumbnail.rgba.resize(rows.size());
+  const std::size_t stride = 4 * static_cast<std::size_t>(width);
+  for (int y = 0; y < height; ++y)
+    std::copy_n(&rows[static_cast<std::size_t>(height - 1 - y) * stride], stride,
+                &thumbnail.rgba[static_cast<std::size_t>(y) * stride]);
+  for (std::size_t i = 3; i < thumbnail.rgba.size(); i += 4) thumbnail.rgba[i] = 255;
+  return thumbnail;
+}
+
+double millisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The part of the scene that decides what a ray sees, apart from the volume itself: the camera,
+// the render settings, the mesh and the opacity. Layers change the volume (a new generation
+// restarts the samples when it arrives) and the rest of the tone only changes the resolve.
+core::Scene viewInputs(const core::Scene& scene) {
+  core::Scene view = scene;
+  view.layers.clear();
+  view.keyframes.clear();
+  view.animation = {};
+  view.name.clear();
+  view.tone = core::ToneMapSettings{};
+  view.tone.opacity = scene.tone.opacity;
+  return view;
+}
+
+}  // namespace
+
+LiveView::LiveView(ExplorerSession& session, PresetLibrary* presets, ExportJob* exportJob)
+    : session_(session), presets_(presets), exportJob_(exportJob) {}
+
+LiveView::~LiveView() = default;
+
+void LiveView::takeVolume() {
+  // A spare still held by a shadow job is left to it; the next volume goes into a fresh one.
+  if (spare_.use_count() > 1) spare_ = std::make_shared<core::PackedVolume>();
+  std::uint64_t reflects = 0;
+  if (!uploadInProgress_ && session_.takeVolumeIfNewer(*spare_, &reflects)) {
+    std::swap(spare_, shown_);
+    renderer_.beginUpload(*shown_);
+    uploadInProgress_ = true;
+    uploadingPost_ = reflects;
+  }
+  newVolumeShown_ = false;
+  if (uploadInProgress_ && renderer_.continueUpload(kUploadBytesPerFrame)) {
+    uploadInProgress_ = false;
+    newVolumeShown_ = true;
+    shownPost_ = uploadingPost_;
+    target_.samples = 0;  // new content: start refining the image afresh
+  }
+}
+
+void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
+  // The shadow volume follows the volume and the light; it is computed on a job of its own (tens
+  // of milliseconds at 256³) and uploaded when ready.
+  if (shadowJob_.ready()) {
+    try {
+      renderer_.uploadShadow(*shadowJob_.take(), kShadowDownsample);
+      target_.samples = 0;
+    } catch (const core::Error&) {
+      shadowShown_.reset();  // try again next frame
+    }
+  }
+  const ShadowInputs wanted{renderer_.uploadedVersion(), render.lightAzimuthDeg, render.lightElevationDeg};
+  if (render.lighting && renderer_.hasVolume() && !uploadInProgress_ && !shadowJob_.busy() && shadowShown_ != wanted) {
+    const glm::dvec3 light = core::lightDirection(render.lightAzimuthDeg, render.lightElevationDeg);
+    shadowJob_.start([volume = shown_, light](std::stop_token) {
+      core::ShadowVolume shadow;
+      core::computeShadowVolume(*volume, light, core::kAbsorptionPerDensity, kShadowDownsample, shadow);
+      return shadow;
+    });
+    shadowShown_ = wanted;
+  }
+}
+
+LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned framebuffer) {
+  LiveFrame result;
+  width = std::max(1, width);
+  height = std::max(1, height);
+  if (session_.postIfPatternChanged(state.scene)) {
+    result.patternPosted = true;
+    waitingPost_ = session_.status().requestedGeneration;
+    waitingSince_ = std::chrono::steady_clock::now();
+    waitingSinceFrame_ = frame_;
+    state.metrics.worstFrameMs = 0.0;
+  }
+  if (auto mesh = session_.takeNewMesh()) {
+    renderer_.setMesh(*mesh);
+    lastView_.reset();
+  }
+  const auto uploadStart = std::chrono::steady_clock::now();
+  takeVolume();
+  state.metrics.uploadMs = millisecondsSince(uploadStart);
+  keepShadowInStep(state.scene.render);
+
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, width, height);
+  const std::optional<core::GridGeometry> grid = session_.geometry();
+  if (grid && renderer_.hasVolume()) {
+    gl::RenderSettings settings;
+    settings.camera =
+        core::orbitCamera(state.scene.camera, grid->box(), static_cast<double>(width) / static_cast<double>(height));
+    settings.tone = state.scene.tone;
+    settings.render = state.scene.render;
+    target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * state.renderScale)),
+                   std::max(1, static_cast<int>(static_cast<float>(height) * state.renderScale)));
+    core::Scene view = viewInputs(state.scene);
+    if (!lastView_ || core::sceneToJson(*lastView_) != core::sceneToJson(view) || width != lastWidth_ ||
+        height != lastHeight_ || state.renderScale != lastRenderScale_) {
+      target_.samples = 0;
+      renderer_.drawMesh(target_, settings);
+      lastView_ = std::move(view);
+      lastWidth_ = width;
+      lastHeight_ = height;
+      lastRenderScale_ = state.renderScale;
+    }
+    if (target_.samples < kMaxSamples) renderer_.march(target_, settings, static_cast<int>(frame_));
+    state.samples = target_.samples;
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    renderer_.resolve(target_, settings, glm::ivec4(0, 0, width, height), false);
+    result.volumeDrawn = true;
+  } else {
+    const glm::vec3 background = core::linearToSrgb(state.scene.tone.background);
+    glClearColor(background.r, background.g, background.b, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  // Requests are served after the picture is drawn and before the panels go over it, so a
+  // thumbnail shows the view alone.
+  serveRequests(state, width, height, framebuffer);
+
+  if (newVolumeShown_) {
+    result.newVolumeShown = true;
+    result.shownPost = shownPost_;
+    if (waitingPost_ != 0 && shownPost_ == waitingPost_) {
+      FrameMetrics& metrics = state.metrics;
+      metrics.changeToFrameMs = millisecondsSince(waitingSince_);
+      metrics.changeToFrameFrames = static_cast<int>(frame_ - waitingSinceFrame_) + 1;
+      metrics.worstChangeToFrameMs = std::max(metrics.worstChangeToFrameMs, metrics.changeToFrameMs);
+      waitingPost_ = 0;
+    }
+  }
+  ++frame_;
+  return result;
+}
+
+void LiveView::serveRequests(ExplorerState& state, int width, int height, unsigned framebuffer) {
+  if (state.requests.saveAs) {
+    // Saved whatever is on screen: the volume, or the background while a shape builds or after a
+    // bad mesh. The preset is what matters; the thumbnail is the view as it is now.
+    if (!presets_) {
+      state.notice = "there is no preset library to save into";
+    } else {
+      try {
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+        const std::filesystem::path saved =
+            presets_->saveAs(state.scene, *state.requests.saveAs, readThumbnail(width, height));
+        state.presetMessage = "saved " + saved.string();
+        state.settings.addRecent(RecentKind::Preset, saved);
+      } catch (const core::Error& e) {
+        state.notice = e.what();
+      }
+    }
+    state.requests.saveAs.reset();
+  }
+  if (state.requests.exportStill) {
+    if (!exportJob_)
+      state.notice = "exports are not available here";
+    else
+      startExport(state, *exportJob_, *state.requests.exportStill);
+    state.requests.exportStill.reset();
+  }
+}
+
+}  // namespace voxflame::app

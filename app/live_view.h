@@ -1,0 +1,93 @@
+// The explorer's frame body without a window: everything between "the UI has decided what the
+// scene is" and "ImGui draws its panels on top". It posts pattern edits to the session, takes
+// each new mesh and volume, uploads volumes a slice per frame, keeps the shadow volume in step on
+// a background job, restarts the sample average when what a ray sees changes, marches one sample
+// and resolves it into the output framebuffer, and answers the panels' save-as and export
+// requests whether or not a volume is shown yet. The explorer's window loop, `voxflame bench
+// explorer` and the headless tests all run this very code, so the benchmark measures what users
+// get. GL is touched only from the thread that calls frame() (the one whose context is current).
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "background_job.h"
+#include "core/packed_volume.h"
+#include "core/scene.h"
+#include "core/shadow_volume.h"
+#include "explorer_session.h"
+#include "explorer_ui.h"
+#include "gl/volume_renderer.h"
+
+namespace voxflame::app {
+
+// What one frame did, for the loop that called it.
+struct LiveFrame {
+  bool volumeDrawn = false;     // a volume was marched and resolved (else the background was cleared)
+  bool newVolumeShown = false;  // this frame finished uploading a new volume
+  std::uint64_t shownPost = 0;  // ... and the session post whose pattern it shows (0: an older one)
+  bool patternPosted = false;   // the scene's pattern changed and was posted this frame
+};
+
+class LiveView {
+ public:
+  // presets and exports may be null (the benchmark has neither); requests for them then only
+  // leave a notice.
+  LiveView(ExplorerSession& session, PresetLibrary* presets, ExportJob* exportJob);
+  ~LiveView();  // cancels a shadow job still running
+  LiveView(const LiveView&) = delete;
+  LiveView& operator=(const LiveView&) = delete;
+
+  // One frame at width × height pixels into `framebuffer` (0: the window's). Reads state.scene,
+  // state.renderScale and state.requests; writes state.samples, state.metrics (upload time, edit
+  // to frame), state.notice and state.presetMessage. Never waits on the session or a job.
+  LiveFrame frame(ExplorerState& state, int width, int height, unsigned framebuffer = 0);
+
+  bool hasVolume() const { return renderer_.hasVolume(); }
+  std::uint32_t frameCount() const { return frame_; }
+
+  // Refining stops after this many samples of an unchanged view (the picture no longer improves).
+  static constexpr int kMaxSamples = 64;
+
+ private:
+  void takeVolume();
+  void keepShadowInStep(const core::RenderSettingsDoc& render);
+  void serveRequests(ExplorerState& state, int width, int height, unsigned framebuffer);
+
+  ExplorerSession& session_;
+  PresetLibrary* presets_;
+  ExportJob* exportJob_;
+  gl::VolumeRenderer renderer_;
+  gl::FrameTarget target_;
+  // The volume being uploaded or shown is shared with a shadow job that may still read it; a new
+  // volume is taken into a spare that nothing else holds.
+  std::shared_ptr<core::PackedVolume> shown_ = std::make_shared<core::PackedVolume>();
+  std::shared_ptr<core::PackedVolume> spare_ = std::make_shared<core::PackedVolume>();
+  bool uploadInProgress_ = false;
+  std::uint64_t uploadingPost_ = 0;
+  bool newVolumeShown_ = false;
+  std::uint64_t shownPost_ = 0;
+
+  BackgroundJob<core::ShadowVolume> shadowJob_;
+  struct ShadowInputs {
+    std::uint64_t volumeVersion = 0;
+    double azimuthDeg = 0.0, elevationDeg = 0.0;
+    bool operator==(const ShadowInputs&) const = default;
+  };
+  std::optional<ShadowInputs> shadowShown_;  // what the uploaded (or computing) shadow was made from
+
+  // What a ray sees besides the volume: when it changes, the sample average starts over.
+  std::optional<core::Scene> lastView_;
+  int lastWidth_ = 0, lastHeight_ = 0;
+  float lastRenderScale_ = 0.0f;
+
+  // Edit-to-frame timing: the post being waited for and when it was made.
+  std::uint64_t waitingPost_ = 0;
+  std::chrono::steady_clock::time_point waitingSince_;
+  std::uint32_t waitingSinceFrame_ = 0;
+  std::uint32_t frame_ = 0;
+};
+
+}  // namespace voxflame::app

@@ -1,0 +1,99 @@
+# Link cycles between the project's own targets. CMake links a cycle of static libraries without a
+# word (it repeats them on the link line), so a library that links one above it back goes
+# unnoticed: voxflame_check_link_cycles() stops the configure instead, naming the cycle.
+
+# voxflame_find_link_cycle(<out-var> <node>...): the graph is read from variables
+# VOXFLAME_LINKS_<node> (the nodes that <node> links). Sets <out-var> to the first cycle found,
+# as "a -> b -> a", or to "" when there is none. It reads no targets, so a script (cmake -P) can
+# try it on a made-up graph.
+function(voxflame_find_link_cycle out)
+  foreach(node IN LISTS ARGN)
+    set_property(GLOBAL PROPERTY VOXFLAME_LINK_STATE_${node} "")
+  endforeach()
+  set_property(GLOBAL PROPERTY VOXFLAME_LINK_CYCLE "")
+  foreach(node IN LISTS ARGN)
+    get_property(state GLOBAL PROPERTY VOXFLAME_LINK_STATE_${node})
+    if(NOT state)
+      _voxflame_link_visit("${node}" "")
+      get_property(cycle GLOBAL PROPERTY VOXFLAME_LINK_CYCLE)
+      if(cycle)
+        break()  # the search stopped halfway: nodes on its path are still marked active
+      endif()
+    endif()
+  endforeach()
+  get_property(cycle GLOBAL PROPERTY VOXFLAME_LINK_CYCLE)
+  set(${out} "${cycle}" PARENT_SCOPE)
+endfunction()
+
+# Depth first from `node`; `path` is the chain of nodes that led here. A node still on the chain
+# ("active") reached again closes a cycle.
+function(_voxflame_link_visit node path)
+  list(APPEND path "${node}")
+  set_property(GLOBAL PROPERTY VOXFLAME_LINK_STATE_${node} active)
+  foreach(next IN LISTS VOXFLAME_LINKS_${node})
+    get_property(state GLOBAL PROPERTY VOXFLAME_LINK_STATE_${next})
+    if(state STREQUAL "active")
+      list(FIND path "${next}" start)
+      list(SUBLIST path ${start} -1 cycle)
+      list(APPEND cycle "${next}")
+      list(JOIN cycle " -> " text)
+      set_property(GLOBAL PROPERTY VOXFLAME_LINK_CYCLE "${text}")
+      return()
+    elseif(NOT state)
+      _voxflame_link_visit("${next}" "${path}")
+      get_property(cycle GLOBAL PROPERTY VOXFLAME_LINK_CYCLE)
+      if(cycle)
+        return()
+      endif()
+    endif()
+  endforeach()
+  set_property(GLOBAL PROPERTY VOXFLAME_LINK_STATE_${node} done)
+endfunction()
+
+# The targets defined in `dir` and the folders below it.
+function(_voxflame_targets_below dir out)
+  get_property(found DIRECTORY "${dir}" PROPERTY BUILDSYSTEM_TARGETS)
+  get_property(subdirectories DIRECTORY "${dir}" PROPERTY SUBDIRECTORIES)
+  foreach(subdirectory IN LISTS subdirectories)
+    _voxflame_targets_below("${subdirectory}" below)
+    list(APPEND found ${below})
+  endforeach()
+  set(${out} "${found}" PARENT_SCOPE)
+endfunction()
+
+# voxflame_check_link_cycles(): call at the end of the top-level CMakeLists.txt, once every target
+# is defined. Walks LINK_LIBRARIES and INTERFACE_LINK_LIBRARIES of every library and executable
+# the project defines (imported ones cannot link ours back) and stops with FATAL_ERROR on a cycle.
+function(voxflame_check_link_cycles)
+  _voxflame_targets_below("${CMAKE_SOURCE_DIR}" all)
+  set(targets "")
+  foreach(target IN LISTS all)
+    get_target_property(type ${target} TYPE)
+    if(type MATCHES "^(STATIC_LIBRARY|SHARED_LIBRARY|MODULE_LIBRARY|OBJECT_LIBRARY|INTERFACE_LIBRARY|EXECUTABLE)$")
+      list(APPEND targets ${target})
+    endif()
+  endforeach()
+  foreach(target IN LISTS targets)
+    set(VOXFLAME_LINKS_${target} "")
+    foreach(property LINK_LIBRARIES INTERFACE_LINK_LIBRARIES)
+      get_target_property(items ${target} ${property})
+      if(NOT items)
+        continue()
+      endif()
+      # LINK_LIBRARIES holds the PRIVATE and PUBLIC links, INTERFACE_LINK_LIBRARIES the PUBLIC and
+      # INTERFACE ones (and a static library's PRIVATE ones again, as $<LINK_ONLY:name>). Generator
+      # expressions are not evaluated: a target named only inside one is missed.
+      foreach(item IN LISTS items)
+        if(item IN_LIST targets)
+          list(APPEND VOXFLAME_LINKS_${target} "${item}")
+        endif()
+      endforeach()
+    endforeach()
+  endforeach()
+  voxflame_find_link_cycle(cycle ${targets})
+  if(cycle)
+    message(FATAL_ERROR "link cycle between targets: ${cycle}\n"
+                        "A library must not link one that links it back: move what both need below them "
+                        "(or what uses both above them).")
+  endif()
+endfunction()

@@ -1,0 +1,184 @@
+// The explorer's frame body (app::LiveView) driven headless, exactly as the window loop and
+// `bench explorer` drive it: a pattern edit reaches the screen tagged with its post, the sample
+// average restarts only for changes a ray sees, and save-as and export requests are answered
+// whether or not a volume is shown.
+#include <gtest/gtest.h>
+#include <epoxy/gl.h>
+
+#include <chrono>
+#include <fstream>
+#include <thread>
+
+#include "core/scene.h"
+#include "core/scene_io.h"
+#include "explorer_session.h"
+#include "export_job.h"
+#include "gl/headless_context.h"
+#include "live_view.h"
+#include "preset_library.h"
+#include "test_support.h"
+
+using namespace voxflame;
+using voxflame::test::TemporaryFolder;
+
+namespace {
+
+constexpr int kWidth = 160, kHeight = 96;
+
+// An offscreen colour buffer standing in for the window's, so the picture can be read back.
+class Canvas {
+ public:
+  Canvas() {
+    glGenTextures(1, &texture_);
+    glBindTexture(GL_TEXTURE_2D, texture_);
+    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, kWidth, kHeight);
+    glGenFramebuffers(1, &framebuffer_);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
+    complete_ = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  }
+  bool complete() const { return complete_; }
+  ~Canvas() {
+    glDeleteFramebuffers(1, &framebuffer_);
+    glDeleteTextures(1, &texture_);
+  }
+  unsigned framebuffer() const { return framebuffer_; }
+  // The brightest channel value in the picture.
+  int brightest() const {
+    std::vector<std::uint8_t> pixels(4 * kWidth * kHeight);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
+    glPixelStorei(GL_PACK_ALIGNMENT, 1);
+    glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
+    int most = 0;
+    for (std::size_t i = 0; i < pixels.size(); i += 4)
+      most = std::max({most, int(pixels[i]), int(pixels[i + 1]), int(pixels[i + 2])});
+    return most;
+  }
+
+ private:
+  GLuint texture_ = 0, framebuffer_ = 0;
+  bool complete_ = false;
+};
+
+class LiveViewTest : public ::testing::Test {
+ protected:
+  gl::HeadlessContext context;
+  Canvas canvas;
+  // Snapshots come when a pattern is applied and then twice a second.
+  app::ExplorerSession session{1, std::chrono::milliseconds(500)};
+  app::ExplorerState state;
+
+  void SetUp() override {
+    ASSERT_TRUE(canvas.complete());
+    core::Scene scene = core::defaultScene();
+    scene.gridResolution = 48;
+    scene.tone.background = glm::vec3(0.0f);
+    app::resetExplorerState(state, scene);
+  }
+  app::LiveFrame frame(app::LiveView& view) { return view.frame(state, kWidth, kHeight, canvas.framebuffer()); }
+  // Runs frames until a volume of the newest post is on screen; false after 60 s.
+  bool runUntilShown(app::LiveView& view) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (std::chrono::steady_clock::now() < deadline) {
+      const app::LiveFrame shown = frame(view);
+      if (shown.newVolumeShown && shown.shownPost == session.status().requestedGeneration) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return false;
+  }
+};
+
+TEST_F(LiveViewTest, AnEditReachesTheScreenTaggedWithItsPost) {
+  app::LiveView view(session, nullptr, nullptr);
+  const app::LiveFrame first = frame(view);
+  EXPECT_TRUE(first.patternPosted) << "the first frame posts the scene";
+  EXPECT_FALSE(first.volumeDrawn);
+  ASSERT_TRUE(runUntilShown(view));
+  EXPECT_TRUE(view.hasVolume());
+  // The first snapshot comes as the pattern starts; a later one has points to show.
+  const auto shownAt = std::chrono::steady_clock::now();
+  while (std::chrono::steady_clock::now() - shownAt < std::chrono::milliseconds(1500)) {
+    frame(view);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  EXPECT_GT(canvas.brightest(), 40) << "the pattern is drawn into the framebuffer given";
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+
+  // A parameter edit: posted by the next frame, shown later with the edit-to-frame metrics.
+  state.scene.layers[0].params[0] *= 1.02;
+  const app::LiveFrame edited = frame(view);
+  EXPECT_TRUE(edited.patternPosted);
+  ASSERT_TRUE(runUntilShown(view));
+  EXPECT_GE(state.metrics.changeToFrameFrames, 1);
+  EXPECT_GE(state.metrics.changeToFrameMs, 0.0);
+
+  // A tone edit is not a pattern edit.
+  state.scene.tone.gamma += 0.3;
+  EXPECT_FALSE(frame(view).patternPosted);
+}
+
+TEST_F(LiveViewTest, SamplesRestartForTheCameraButNotForTheTone) {
+  app::LiveView view(session, nullptr, nullptr);
+  frame(view);
+  ASSERT_TRUE(runUntilShown(view));
+  // The shadow job may restart the average once when it lands; let it.
+  for (int i = 0; i < 12; ++i) {
+    frame(view);
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  const int refined = state.samples;
+  ASSERT_GT(refined, 1);
+  state.scene.tone.gamma += 0.5;
+  frame(view);
+  // Either the average went on, or a fresh snapshot restarted it: never because of the tone.
+  const int afterTone = state.samples;
+  state.scene.camera.azimuthDeg += 20.0;
+  frame(view);
+  EXPECT_EQ(state.samples, 1) << "a new camera starts the average over";
+  EXPECT_TRUE(afterTone > refined || afterTone == 1);
+}
+
+TEST_F(LiveViewTest, SaveAsAndExportAreAnsweredBeforeAnyVolumeIsShown) {
+  TemporaryFolder folder;
+  // A mesh that cannot load: no shape, no volume, ever.
+  const auto bad = folder.path() / "bad.obj";
+  std::ofstream(bad) << "this is not a mesh\n";
+  state.scene.meshPath = bad.string();
+  state.scene.embedded = false;
+  app::PresetLibrary presets(folder.path() / "shipped", folder.path() / "mine");
+  app::ExportJob exports;
+  app::LiveView view(session, &presets, &exports);
+  frame(view);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  frame(view);
+  ASSERT_FALSE(view.hasVolume());
+
+  state.requests.saveAs = "Saved while broken";
+  const app::LiveFrame saved = frame(view);
+  EXPECT_FALSE(saved.volumeDrawn);
+  EXPECT_FALSE(state.requests.saveAs.has_value()) << "the request was served";
+  EXPECT_NE(state.presetMessage.find("saved"), std::string::npos) << state.presetMessage << state.notice;
+  int savedPresets = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(folder.path() / "mine"))
+    if (entry.path().extension() == ".json") {
+      ++savedPresets;
+      EXPECT_EQ(core::loadScene(entry.path()).name, "Saved while broken");
+    }
+  EXPECT_EQ(savedPresets, 1) << state.presetMessage;
+
+  app::ExportRequest request;
+  request.scene = core::defaultScene();
+  request.scene.gridResolution = 32;
+  request.settings.width = 32;
+  request.settings.height = 24;
+  request.settings.samples = 1;
+  request.settings.points = 50'000;
+  request.output = folder.path() / "still.png";
+  request.executable = VOXFLAME_BINARY;
+  state.requests.exportStill = request;
+  frame(view);
+  EXPECT_FALSE(state.requests.exportStill.has_value());
+  EXPECT_NE(exports.poll().state, app::ExportState::Idle) << state.notice;
+}
+
+}  // namespace
