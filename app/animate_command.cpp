@@ -34,6 +34,7 @@
 #include "commands.h"
 #include "core/accumulator.h"
 #include "core/error.h"
+#include "core/scene_schema.h"
 #include "core/file_output.h"
 #include "core/keyframes.h"
 #include "core/packed_volume.h"
@@ -67,12 +68,12 @@ void lockFits(core::Scene& scene) {
   }
 }
 
-// What decides the accumulated volume: when a frame's differs from the last one's, accumulate again.
-std::string patternKey(const core::Scene& scene) {
-  const nlohmann::json document = core::sceneToDocument(scene, false);
-  nlohmann::json key;
-  for (const char* member : {"mesh", "grid", "layers", "seed", "points"}) key[member] = document.at(member);
-  return key.dump();
+// What decides the accumulated volume (mesh, grid, layers, seed, points): when a frame's differs
+// from the last accumulated one's, accumulate again.
+bool needsNewVolume(const std::optional<core::Scene>& accumulated, const core::Scene& moment) {
+  if (!accumulated) return true;
+  const core::SceneDiff change = core::diff(*accumulated, moment);
+  return change.pattern() || change.touches("/points");
 }
 
 std::vector<std::string> ffmpegArguments(const std::string& pattern, const FrameRange& range, double fps,
@@ -289,7 +290,7 @@ int animateCommand(const AnimateArguments& arguments) {
   SceneShape shape;
   int shapeResolution = 0;
   core::PackedVolume volume;
-  std::string volumeKey;
+  std::optional<core::Scene> volumeScene;  // the moment the accumulated volume shows
   AccumulatedVolume accumulated;
   const auto start = std::chrono::steady_clock::now();
   const int total = range.last - range.first + 1;
@@ -306,8 +307,7 @@ int animateCommand(const AnimateArguments& arguments) {
         const double offset =
             arguments.motionBlur > 1 ? ((sub + 0.5) / arguments.motionBlur - 0.5) * arguments.shutter / fps : 0.0;
         const core::Scene moment = core::sceneAtTime(scene, std::max(0.0, time + offset));
-        const std::string key = patternKey(moment);
-        if (key != volumeKey) {
+        if (needsNewVolume(volumeScene, moment)) {
           if (moment.gridResolution != shapeResolution) {
             shape = buildSceneShape(moment);
             shapeResolution = moment.gridResolution;
@@ -319,7 +319,7 @@ int animateCommand(const AnimateArguments& arguments) {
           core::packVolume(accumulated.snapshot, volume);
           if (!renderer) renderer.emplace();
           renderer->setVolume(volume, shape);
-          volumeKey = key;
+          volumeScene = moment;
         }
         if (interrupted) throw RenderCancelled();
         const core::ImageRGBA image = renderer->render(moment, arguments.width, arguments.height, false);

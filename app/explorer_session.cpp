@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/mask_cache.h"
 #include "core/scene_io.h"
+#include "core/scene_schema.h"
 #include "pipeline.h"
 
 namespace voxflame::app {
@@ -26,18 +27,6 @@ std::string gridText(const core::GridGeometry& grid) {
 }
 
 }  // namespace
-
-std::string patternKey(const core::Scene& scene) {
-  core::Scene pattern = scene;
-  pattern.name.clear();
-  pattern.tone = {};
-  pattern.camera = {};
-  pattern.render = {};
-  pattern.points = 0;
-  pattern.animation = {};  // the layers already hold the values at the current time
-  pattern.keyframes.clear();
-  return core::sceneToJson(pattern) + "|" + scene.baseDirectory.string() + (scene.embedded ? "|embedded" : "");
-}
 
 struct ExplorerSession::Engine {
   Engine(std::string key, std::shared_ptr<const core::InsideMask> insideMask, int threads,
@@ -78,9 +67,8 @@ void ExplorerSession::post(const core::Scene& scene) {
 }
 
 bool ExplorerSession::postIfPatternChanged(const core::Scene& scene) {
-  std::string key = patternKey(scene);
-  if (key == postedPatternKey_) return false;
-  postedPatternKey_ = std::move(key);
+  if (postedPattern_ && !core::diff(*postedPattern_, scene).pattern()) return false;
+  postedPattern_ = scene;
   post(scene);
   return true;
 }

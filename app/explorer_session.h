@@ -21,10 +21,6 @@
 
 namespace voxflame::app {
 
-// The part of a scene that the accumulation depends on (mesh, grid, layers, seed): when it
-// changes, the pattern restarts; other edits only change the drawing.
-std::string patternKey(const core::Scene& scene);
-
 // What the status line and the panels show; a copy, taken without waiting.
 struct SessionStatus {
   bool buildingShape = false;  // a mesh load or mask build is running in the background
@@ -52,8 +48,9 @@ class ExplorerSession {
   // meanwhile); any other change to the pattern starts a new generation.
   void post(const core::Scene& scene);
 
-  // Posts the scene when its pattern (patternKey: mesh, grid, layers, seed) differs from the
-  // last one posted this way; returns whether it did. The explorer calls it every frame.
+  // Posts the scene when its pattern (what core::diff() classes as Affects::Pattern: mesh, grid,
+  // layers, seed) differs from the last one posted this way; returns whether it did. The explorer
+  // calls it every frame.
   bool postIfPatternChanged(const core::Scene& scene);
 
   // Swaps the newest packed volume into `out` when one newer than it is ready. Never waits.
@@ -79,8 +76,8 @@ class ExplorerSession {
   mutable std::mutex mutex_;  // guards everything below except the control thread's locals
   std::condition_variable_any wake_;
   std::condition_variable appliedSignal_;
-  std::string postedPatternKey_;        // UI thread only
-  std::optional<core::Scene> pending_;  // the newest posted scene not yet picked up
+  std::optional<core::Scene> postedPattern_;  // UI thread only: what postIfPatternChanged posted last
+  std::optional<core::Scene> pending_;        // the newest posted scene not yet picked up
   std::uint64_t requested_ = 0, applied_ = 0;
   bool working_ = false;            // the control thread is applying a scene
   std::unique_ptr<Engine> engine_;  // replaced and destroyed only by the control thread

@@ -19,6 +19,7 @@
 #include "core/flame_xml.h"
 #include "core/grid.h"
 #include "core/keyframes.h"
+#include "core/scene_schema.h"
 #include "commands.h"
 #include "pipeline.h"
 
@@ -43,6 +44,64 @@ bool slider(ExplorerState& state, const std::string& scope, const char* label, d
             ImGuiSliderFlags flags = 0, const char* format = "%.3f") {
   const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format, flags);
   probe(state, scope + label);
+  return changed;
+}
+
+// The widget of one schema field (core/scene_schema.h): its label, slider range, format and help
+// come from the table. Sliders always clamp, Ctrl+click typing included, and every table's slider
+// range lies inside what the reader allows, so no value made here is one a preset refuses.
+// `probeName` replaces the probe's usual name (scope + label).
+template <class Owner>
+bool fieldWidget(ExplorerState& state, const std::string& scope, Owner& owner, core::Table<Owner> table,
+                 std::string_view key, const char* probeName = nullptr) {
+  const core::Field<Owner>& f = core::field(table, key);
+  const std::string label(f.ui.label);
+  const std::string format(f.ui.format);
+  const ImGuiSliderFlags flags =
+      ImGuiSliderFlags_AlwaysClamp | (f.ui.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+  const bool changed = std::visit(
+      [&]<class M>(const M& member) -> bool {
+        if constexpr (std::is_same_v<M, double Owner::*>) {
+          const double min = f.ui.min, max = f.ui.max;
+          return ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &(owner.*member), &min, &max, format.c_str(),
+                                     flags);
+        } else if constexpr (std::is_same_v<M, int Owner::*>) {
+          return ImGui::SliderInt(label.c_str(), &(owner.*member), static_cast<int>(f.ui.min),
+                                  static_cast<int>(f.ui.max), format.c_str(), flags);
+        } else if constexpr (std::is_same_v<M, bool Owner::*>) {
+          return ImGui::Checkbox(label.c_str(), &(owner.*member));
+        } else if constexpr (std::is_same_v<M, glm::vec3 Owner::*>) {
+          const glm::vec3 srgb = core::linearToSrgb(owner.*member);
+          float rgb[3] = {srgb.r, srgb.g, srgb.b};
+          if (!ImGui::ColorEdit3(label.c_str(), rgb)) return false;
+          owner.*member = core::srgbToLinear(glm::vec3(rgb[0], rgb[1], rgb[2]));
+          return true;
+        } else if constexpr (std::is_same_v<M, glm::dvec3 Owner::*>) {
+          glm::dvec3& value = owner.*member;
+          double v[3] = {value.x, value.y, value.z};
+          const double min = f.ui.min, max = f.ui.max;
+          if (!ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Double, v, 3, &min, &max, format.c_str(), flags))
+            return false;
+          const glm::dvec3 chosen(v[0], v[1], v[2]);
+          // An axis must not be the zero vector (the reader refuses it): keep the last one.
+          if (key == "axis" && glm::length(chosen) <= 1e-3) return false;
+          value = chosen;
+          return true;
+        } else if constexpr (std::is_same_v<M, core::Choice<Owner>>) {
+          int index = member.get(owner);
+          std::string items;
+          for (std::string_view name : member.names) (items += name) += '\0';
+          if (!ImGui::Combo(label.c_str(), &index, items.c_str())) return false;
+          member.set(owner, index);
+          return true;
+        } else {
+          return false;  // no widget for this kind of field
+        }
+      },
+      f.member);
+  probe(state, probeName ? std::string(probeName) : scope + label);
+  if (!f.help.empty() && ImGui::IsItemHovered() && !ImGui::IsItemActive())
+    ImGui::SetTooltip("%.*s", static_cast<int>(f.help.size()), f.help.data());
   return changed;
 }
 
@@ -265,6 +324,12 @@ void handleHistory(ExplorerState& state) {
   if (!mouseHeld && !ImGui::IsAnyItemActive()) state.history->record(state.scene);
 }
 
+// However far one pans or flies, the target stays a value a preset can hold.
+glm::dvec3 clampedTarget(const glm::dvec3& target) {
+  const core::Field<core::CameraSettings>& field = core::field(core::cameraFields(), "target");
+  return glm::clamp(target, glm::dvec3(field.min), glm::dvec3(field.max));
+}
+
 // Left-drag orbits, right- or middle-drag pans, the wheel zooms; W/A/S/D/Q/E fly. Input that
 // starts over a panel belongs to the panel.
 void handleCamera(ExplorerState& state) {
@@ -289,7 +354,8 @@ void handleCamera(ExplorerState& state) {
     // what is visible at the target's distance.
     const double perPixel =
         2.0 * camera.distance * std::tan(0.5 * glm::radians(camera.fovDeg)) / std::max(1.0f, io.DisplaySize.y);
-    camera.target += perPixel * (-static_cast<double>(delta.x) * frame.right + static_cast<double>(delta.y) * frame.up);
+    camera.target = clampedTarget(camera.target + perPixel * (-static_cast<double>(delta.x) * frame.right +
+                                                              static_cast<double>(delta.y) * frame.up));
   }
   if (!overUi && io.MouseWheel != 0.0f)
     camera.distance = std::clamp(camera.distance * std::pow(0.9, io.MouseWheel), 0.2, 20.0);
@@ -301,7 +367,7 @@ void handleCamera(ExplorerState& state) {
   auto held = [](int key) { return keyDown(key) ? 1.0 : 0.0; };
   const glm::dvec3 move = (held('W') - held('S')) * frame.forward + (held('D') - held('A')) * frame.right +
                           (held('E') - held('Q')) * frame.up;
-  camera.target += speed * move;
+  camera.target = clampedTarget(camera.target + speed * move);
 }
 
 void handleShortcuts(ExplorerState& state) {
@@ -363,17 +429,9 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
       chaosGame ? "speed\0curvature\0time\0axis\0distance\0index\0" : "speed\0curvature\0time\0axis\0distance\0";
   if (ImGui::Combo("colour by", &mode, modes)) color.mode = static_cast<core::ColorMode>(mode);
   probe(state, scope + "colour by");
-  if (color.mode == core::ColorMode::Time)
-    slider(state, scope, "period (steps)", color.period, 10.0, 100000.0, ImGuiSliderFlags_Logarithmic, "%.0f");
-  if (color.mode == core::ColorMode::Axis) {
-    double axis[3] = {color.axis.x, color.axis.y, color.axis.z};
-    const double min = -1.0, max = 1.0;
-    if (ImGui::SliderScalarN("axis", ImGuiDataType_Double, axis, 3, &min, &max, "%.2f")) {
-      const glm::dvec3 chosen(axis[0], axis[1], axis[2]);
-      if (glm::length(chosen) > 1e-6) color.axis = chosen;
-    }
-  }
-  slider(state, scope, "colour scale", color.scale, 0.05, 20.0, ImGuiSliderFlags_Logarithmic);
+  if (color.mode == core::ColorMode::Time) fieldWidget(state, scope, color, core::colorFields(), "period");
+  if (color.mode == core::ColorMode::Axis) fieldWidget(state, scope, color, core::colorFields(), "axis");
+  fieldWidget(state, scope, color, core::colorFields(), "scale");
 
   // Palettes: a named one fills the stops; editing a stop makes the gradient custom.
   const char* current = color.palette.empty() ? "custom gradient" : color.palette.c_str();
@@ -438,6 +496,7 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
 // Chaos-game layers: the kind of a layer, a flame's transforms and variations, a Julia set.
 
 constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
+constexpr double kParamLimit = 1e6;  // what the preset reader allows for an attractor's parameter
 
 // A layer's kind; a new kind starts from its defaults (the default flame, the classic Julia set,
 // the attractor catalogue's first-layer default) and the colour mode that suits it.
@@ -642,11 +701,10 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
 // One transform: weight (not for the final one), colour, colour speed, opacity, the affine map
 // and an optional post map, the variations.
 void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform, bool isFinal) {
-  if (!isFinal)
-    slider(state, scope, "transform weight", xform.weight, 0.01, 10.0, ImGuiSliderFlags_Logarithmic | kClamp);
-  slider(state, scope, "colour", xform.color, 0.0, 1.0, kClamp);
-  slider(state, scope, "colour speed", xform.colorSpeed, 0.0, 1.0, kClamp);
-  slider(state, scope, "opacity", xform.opacity, 0.0, 1.0, kClamp);
+  if (!isFinal) fieldWidget(state, scope, xform, core::xformFields(), "weight");
+  fieldWidget(state, scope, xform, core::xformFields(), "color");
+  fieldWidget(state, scope, xform, core::xformFields(), "color_speed");
+  fieldWidget(state, scope, xform, core::xformFields(), "opacity");
   affineEditor(state, scope, xform.affine);
   ImGui::Checkbox("post-affine", &xform.hasPost);
   probe(state, scope + "post-affine");
@@ -724,17 +782,10 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
 
   if (ImGui::TreeNode("Symmetry")) {
     core::FlameSymmetry& symmetry = flame.symmetry;
-    ImGui::SliderInt("rotational", &symmetry.rotational, 1, core::kMaxFlameSymmetry, "%d-fold", kClamp);
-    probe(state, scope + "rotational");
-    ImGui::Checkbox("mirror", &symmetry.mirror);
-    probe(state, scope + "mirror");
-    double axis[3] = {symmetry.axis.x, symmetry.axis.y, symmetry.axis.z};
-    const double minA = -1.0, maxA = 1.0;
-    if (ImGui::SliderScalarN("axis", ImGuiDataType_Double, axis, 3, &minA, &maxA, "%.2f", kClamp)) {
-      const glm::dvec3 chosen(axis[0], axis[1], axis[2]);
-      if (glm::length(chosen) > 1e-3) symmetry.axis = chosen;  // a zero axis is no axis: keep the last one
-    }
-    probe(state, scope + "symmetry axis");
+    fieldWidget(state, scope, symmetry, core::symmetryFields(), "rotational");
+    fieldWidget(state, scope, symmetry, core::symmetryFields(), "mirror");
+    const std::string axisProbe = scope + "symmetry axis";
+    fieldWidget(state, scope, symmetry, core::symmetryFields(), "axis", axisProbe.c_str());
     ImGui::TreePop();
   }
 }
@@ -742,17 +793,11 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
 void juliaEditor(ExplorerState& state, const std::string& scope, core::QuaternionJuliaSettings& julia) {
   static constexpr const char* kComponents[] = {"c (1)", "c (i)", "c (j)", "c (k)"};
   for (int i = 0; i < 4; ++i) slider(state, scope, kComponents[i], julia.c[i], -1.5, 1.5, kClamp, "%.4f");
-  int view = julia.view == core::QuaternionView::Slice ? 1 : 0;
-  if (ImGui::Combo("view", &view, "project\0slice\0"))
-    julia.view = view == 1 ? core::QuaternionView::Slice : core::QuaternionView::Project;
-  probe(state, scope + "view");
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("project: drop the fourth coordinate; slice: keep the points near w = slice w");
-  slider(state, scope, "turn", julia.turnDeg, -180.0, 180.0, kClamp, "%.1f°");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("turns the set in the (z, w) plane before it is projected or sliced");
+  fieldWidget(state, scope, julia, core::juliaFields(), "view");
+  fieldWidget(state, scope, julia, core::juliaFields(), "turn_deg");
   if (julia.view == core::QuaternionView::Slice) {
-    slider(state, scope, "slice w", julia.sliceW, -2.0, 2.0, kClamp);
-    slider(state, scope, "thickness", julia.thickness, 0.001, 1.0, ImGuiSliderFlags_Logarithmic | kClamp);
+    fieldWidget(state, scope, julia, core::juliaFields(), "slice_w");
+    fieldWidget(state, scope, julia, core::juliaFields(), "thickness");
   }
 }
 
@@ -763,8 +808,11 @@ void attractorEditor(ExplorerState& state, const std::string& scope, core::Patte
   const core::AttractorInfo& current = core::attractorOrThrow(layer.attractor);
   for (std::size_t p = 0; p < current.params.size(); ++p) {
     const core::ParamInfo& param = current.params[p];
-    // The slider's range is the catalogue's; Ctrl+click types any value, right-click resets it.
-    slider(state, scope, param.name.c_str(), layer.params[p], param.sliderMin, param.sliderMax, 0, "%.4f");
+    // The slider's range is the catalogue's; Ctrl+click types any value the preset reader allows
+    // (clamped to it here: ImGui can only clamp to the slider's range), right-click resets it.
+    if (slider(state, scope, param.name.c_str(), layer.params[p], param.sliderMin, param.sliderMax, 0, "%.4f"))
+      layer.params[p] =
+          std::isfinite(layer.params[p]) ? std::clamp(layer.params[p], -kParamLimit, kParamLimit) : param.defaultValue;
     if (ImGui::BeginPopupContextItem()) {
       if (ImGui::Selectable("Reset to default")) layer.params[p] = param.defaultValue;
       ImGui::EndPopup();
@@ -776,7 +824,7 @@ void attractorEditor(ExplorerState& state, const std::string& scope, core::Patte
     int integrator = layer.integrator == core::Integrator::RK4 ? 1 : 0;
     if (ImGui::Combo("integrator", &integrator, "Euler\0Runge-Kutta 4\0"))
       layer.integrator = integrator == 1 ? core::Integrator::RK4 : core::Integrator::Euler;
-    slider(state, scope, "step", layer.step, 0.0005, 0.3, ImGuiSliderFlags_Logarithmic, "%.4f");
+    fieldWidget(state, scope, layer, core::layerFields(), "step");
   }
   if (button(state, scope, "Reset parameters")) {
     layer.params = current.defaultParams();
@@ -805,26 +853,15 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
   if (state.scene.layers.size() > 1) {
     if (layer.kind == core::PatternKind::Attractor) ImGui::SameLine();  // beside "Reset parameters"
     if (button(state, scope, "Remove layer")) removeThis = true;
-    slider(state, scope, "weight", layer.weight, 0.01, 10.0, ImGuiSliderFlags_Logarithmic);
+    fieldWidget(state, scope, layer, core::layerFields(), "weight");
   }
   // Open from the start: the fit decides how much of the mesh the pattern fills.
   if (ImGui::TreeNodeEx("Placement", ImGuiTreeNodeFlags_DefaultOpen)) {
-    slider(state, scope, "scale", layer.transform.scale, 0.1, 4.0, ImGuiSliderFlags_Logarithmic);
-    int fit = static_cast<int>(layer.transform.fit);  // FitMode's order: contain, cover, stretch
-    if (ImGui::Combo("fit", &fit, "contain\0cover\0stretch\0")) layer.transform.fit = static_cast<core::FitMode>(fit);
-    probe(state, scope + "fit");
-    if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
-      ImGui::SetTooltip(
-          "contain: fits the shape's middle axis; cover: fills every axis (the mesh carves it); "
-          "stretch: scales each axis to the shape");
-    double rotation[3] = {layer.transform.rotationDeg.x, layer.transform.rotationDeg.y, layer.transform.rotationDeg.z};
+    fieldWidget(state, scope, layer.transform, core::transformFields(), "scale");
+    fieldWidget(state, scope, layer.transform, core::transformFields(), "fit");
+    fieldWidget(state, scope, layer.transform, core::transformFields(), "rotation_deg");
+    fieldWidget(state, scope, layer.transform, core::transformFields(), "offset");
     const double minDeg = -180.0, maxDeg = 180.0;
-    if (ImGui::SliderScalarN("rotation", ImGuiDataType_Double, rotation, 3, &minDeg, &maxDeg, "%.0f°"))
-      layer.transform.rotationDeg = glm::dvec3(rotation[0], rotation[1], rotation[2]);
-    double offset[3] = {layer.transform.offset.x, layer.transform.offset.y, layer.transform.offset.z};
-    const double minOffset = -0.5, maxOffset = 0.5;
-    if (ImGui::SliderScalarN("offset", ImGuiDataType_Double, offset, 3, &minOffset, &maxOffset, "%.2f"))
-      layer.transform.offset = glm::dvec3(offset[0], offset[1], offset[2]);
     // Copies: the same pattern again, turned; one set of parameters moves them all.
     std::vector<glm::dvec3>& copies = layer.transform.copies;
     std::size_t removeCopy = copies.size();
@@ -832,7 +869,7 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
       ImGui::PushID(static_cast<int>(c));
       double angles[3] = {copies[c].x, copies[c].y, copies[c].z};
       const std::string label = "copy " + std::to_string(c + 1);
-      if (ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Double, angles, 3, &minDeg, &maxDeg, "%.0f°"))
+      if (ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Double, angles, 3, &minDeg, &maxDeg, "%.0f°", kClamp))
         copies[c] = glm::dvec3(angles[0], angles[1], angles[2]);
       probe(state, scope + label);
       ImGui::SameLine();
@@ -960,7 +997,9 @@ void meshSection(ExplorerState& state) {
   // The grid only changes when the slider is let go: each change rebuilds the mask.
   int& draft = state.gridDraft;
   if (!ImGui::IsAnyItemActive() || draft == 0) draft = state.scene.gridResolution;
-  ImGui::SliderInt("grid", &draft, 32, 1024, "%d voxels", ImGuiSliderFlags_AlwaysClamp);
+  const core::Field<core::Scene>& grid = core::field(core::sceneFields(), "grid.resolution");
+  ImGui::SliderInt(std::string(grid.ui.label).c_str(), &draft, static_cast<int>(grid.ui.min),
+                   static_cast<int>(grid.ui.max), std::string(grid.ui.format).c_str(), ImGuiSliderFlags_AlwaysClamp);
   probe(state, "mesh/grid");
   if (ImGui::IsItemDeactivatedAfterEdit()) state.scene.gridResolution = draft;
   // Cells, snapshot, packed copies: what pipeline::checkGridFitsInMemory counts, for a cube.
@@ -968,71 +1007,37 @@ void meshSection(ExplorerState& state) {
   ImGui::TextColored(kDimColor, "at most %s of memory", formatBytes(voxels * 33.0).c_str());
 
   core::RenderSettingsDoc& render = state.scene.render;
-  int meshMode = static_cast<int>(render.meshDisplay);
-  if (ImGui::Combo("show mesh", &meshMode, "off\0ghost\0silhouette\0"))
-    render.meshDisplay = static_cast<core::MeshDisplay>(meshMode);
-  const glm::vec3 srgb = core::linearToSrgb(render.meshColor);
-  float rgb[3] = {srgb.r, srgb.g, srgb.b};
-  if (ImGui::ColorEdit3("mesh colour", rgb)) render.meshColor = core::srgbToLinear(glm::vec3(rgb[0], rgb[1], rgb[2]));
-  slider(state, "mesh/", "mesh strength", render.meshStrength, 0.0, 2.0);
+  fieldWidget(state, "mesh/", render, core::renderFields(), "mesh");
+  fieldWidget(state, "mesh/", render, core::renderFields(), "mesh_color");
+  fieldWidget(state, "mesh/", render, core::renderFields(), "mesh_strength");
 }
 
 void renderSection(ExplorerState& state) {
   core::ToneMapSettings& tone = state.scene.tone;
-  slider(state, "tone/", "brightness", tone.brightness, 0.01, 50.0, ImGuiSliderFlags_Logarithmic);
-  slider(state, "tone/", "gamma", tone.gamma, 0.5, 6.0);
-  slider(state, "tone/", "gamma threshold", tone.gammaThreshold, 0.0, 0.5);
-  slider(state, "tone/", "vibrancy", tone.vibrancy, 0.0, 1.0);
-  slider(state, "tone/", "highlight power", tone.highlightPower, -1.0, 5.0);
-  slider(state, "tone/", "exposure", tone.exposure, -5.0, 5.0);
-  slider(state, "tone/", "contrast", tone.contrast, 0.2, 3.0);
-  slider(state, "tone/", "opacity", tone.opacity, 0.0, 1.0);
-  slider(state, "tone/", "estimator radius", tone.estimatorRadius, 0.0, 20.0);
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("density estimation: blur radius in pixels where few points fell; 0 turns it off");
-  slider(state, "tone/", "estimator minimum", tone.estimatorMinimum, 0.0, 10.0);
-  slider(state, "tone/", "estimator curve", tone.estimatorCurve, 0.05, 2.0);
-  const glm::vec3 srgb = core::linearToSrgb(tone.background);
-  float background[3] = {srgb.r, srgb.g, srgb.b};
-  if (ImGui::ColorEdit3("background", background))
-    tone.background = core::srgbToLinear(glm::vec3(background[0], background[1], background[2]));
+  for (std::string_view key :
+       {"brightness", "gamma", "gamma_threshold", "vibrancy", "highlight_power", "exposure", "contrast", "opacity",
+        "estimator_radius", "estimator_minimum", "estimator_curve", "background"})
+    fieldWidget(state, "tone/", tone, core::toneFields(), key);
   core::RenderSettingsDoc& render = state.scene.render;
-  slider(state, "render/", "step (voxels)", render.stepVoxels, 0.1, 2.0);
-  int method = static_cast<int>(render.method);
-  if (ImGui::Combo("still method", &method, "volume\0points\0"))
-    render.method = static_cast<core::RenderMethod>(method);
-  probe(state, "render/method");
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip(
-        "how Export and the command line render stills: volume ray-marches the grid; points projects "
-        "every point into the image (pixel-fine filaments). The view always previews with volume.");
-  int oversample = render.oversample;
-  if (ImGui::SliderInt("oversample", &oversample, 1, 4)) render.oversample = oversample;
-  slider(state, "render/", "filter radius", render.filterRadius, 0.0, 3.0);
-  if (render.method == core::RenderMethod::Points) {
-    slider(state, "render/", "lens aperture", render.dofAperture, 0.0, 0.5);
-    slider(state, "render/", "focus distance", render.dofFocusDistance, 0.0, 10.0);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("in bounding-sphere radii from the eye; 0 focuses on the target");
-    slider(state, "render/", "fog", render.fog, 0.0, 5.0);
-  }
-  ImGui::Checkbox("lighting", &render.lighting);
-  probe(state, "render/lighting");
-  if (render.lighting) {
-    slider(state, "render/", "light azimuth", render.lightAzimuthDeg, -180.0, 180.0, 0, "%.0f°");
-    slider(state, "render/", "light elevation", render.lightElevationDeg, -90.0, 90.0, 0, "%.0f°");
-    slider(state, "render/", "light strength", render.lightStrength, 0.0, 1.0);
-  }
+  fieldWidget(state, "render/", render, core::renderFields(), "step");
+  fieldWidget(state, "render/", render, core::renderFields(), "method", "render/method");
+  fieldWidget(state, "render/", render, core::renderFields(), "oversample");
+  fieldWidget(state, "render/", render, core::renderFields(), "filter_radius");
+  if (render.method == core::RenderMethod::Points)
+    for (std::string_view key : {"dof.aperture", "dof.focus_distance", "fog"})
+      fieldWidget(state, "render/", render, core::renderFields(), key);
+  fieldWidget(state, "render/", render, core::renderFields(), "lighting");
+  if (render.lighting)
+    for (std::string_view key : {"light_azimuth_deg", "light_elevation_deg", "light_strength"})
+      fieldWidget(state, "render/", render, core::renderFields(), key);
   ImGui::SliderFloat("preview scale", &state.renderScale, 0.25f, 1.0f, "%.2f");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("fraction of the window's pixels marched while you edit");
 }
 
 void cameraSection(ExplorerState& state) {
   core::CameraSettings& camera = state.scene.camera;
-  slider(state, "camera/", "azimuth", camera.azimuthDeg, -180.0, 180.0, 0, "%.1f°");
-  slider(state, "camera/", "elevation", camera.elevationDeg, -90.0, 90.0, 0, "%.1f°");
-  slider(state, "camera/", "roll", camera.rollDeg, -180.0, 180.0, 0, "%.1f°");
-  slider(state, "camera/", "distance", camera.distance, 0.2, 20.0, ImGuiSliderFlags_Logarithmic);
-  slider(state, "camera/", "field of view", camera.fovDeg, 5.0, 120.0, 0, "%.0f°");
+  for (std::string_view key : {"azimuth_deg", "elevation_deg", "roll_deg", "distance", "fov_deg"})
+    fieldWidget(state, "camera/", camera, core::cameraFields(), key);
   bool orthographic = camera.projection == core::Projection::Orthographic;
   if (ImGui::Checkbox("orthographic", &orthographic))
     camera.projection = orthographic ? core::Projection::Orthographic : core::Projection::Perspective;
@@ -1372,16 +1377,19 @@ void timelineWindow(ExplorerState& state, float scale) {
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::SetNextItemWidth(90 * scale);
+  const core::Field<core::AnimationSettings>& durationField = core::field(core::animationFields(), "duration");
   double duration = scene.animation.duration;
-  const double minDuration = 0.0, maxDuration = 600.0;
-  if (ImGui::DragScalar("duration", ImGuiDataType_Double, &duration, 0.05f, &minDuration, &maxDuration,
-                        duration > 0.0 ? "%.2f s" : "auto"))
+  if (ImGui::DragScalar("duration", ImGuiDataType_Double, &duration, 0.05f, &durationField.ui.min,
+                        &durationField.ui.max, duration > 0.0 ? std::string(durationField.ui.format).c_str() : "auto",
+                        ImGuiSliderFlags_AlwaysClamp))
     scene.animation.duration = duration;
   ImGui::SameLine();
   ImGui::SetNextItemWidth(70 * scale);
+  const core::Field<core::AnimationSettings>& fpsField = core::field(core::animationFields(), "fps");
   double fps = scene.animation.fps;
-  const double minFps = 1.0, maxFps = 240.0;
-  if (ImGui::DragScalar("fps", ImGuiDataType_Double, &fps, 0.2f, &minFps, &maxFps, "%.0f")) scene.animation.fps = fps;
+  if (ImGui::DragScalar("fps", ImGuiDataType_Double, &fps, 0.2f, &fpsField.ui.min, &fpsField.ui.max,
+                        std::string(fpsField.ui.format).c_str(), ImGuiSliderFlags_AlwaysClamp))
+    scene.animation.fps = fps;
   ImGui::SameLine();
   ImGui::Checkbox("loop", &scene.animation.loop);
 

@@ -8,6 +8,7 @@
 #include "core/camera.h"
 #include "core/color.h"
 #include "core/error.h"
+#include "core/scene_schema.h"
 #include "gl/read_back.h"
 
 namespace voxflame::app {
@@ -30,20 +31,6 @@ Thumbnail readThumbnail(unsigned framebuffer, int width, int height) {
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-}
-
-// The part of the scene that decides what a ray sees, apart from the volume itself: the camera,
-// the render settings, the mesh and the opacity. Layers change the volume (a new generation
-// restarts the samples when it arrives) and the rest of the tone only changes the resolve.
-core::Scene viewInputs(const core::Scene& scene) {
-  core::Scene view = scene;
-  view.layers.clear();
-  view.keyframes.clear();
-  view.animation = {};
-  view.name.clear();
-  view.tone = core::ToneMapSettings{};
-  view.tone.opacity = scene.tone.opacity;
-  return view;
 }
 
 }  // namespace
@@ -126,12 +113,14 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     settings.render = state.scene.render;
     target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * state.renderScale)),
                    std::max(1, static_cast<int>(static_cast<float>(height) * state.renderScale)));
-    core::Scene view = viewInputs(state.scene);
-    if (!lastView_ || core::sceneToJson(*lastView_) != core::sceneToJson(view) || width != lastWidth_ ||
-        height != lastHeight_ || state.renderScale != lastRenderScale_) {
+    // Anything that changes what a ray sees restarts the sample average (the schema's "view"
+    // class: camera, opacity, mesh display, lighting ...); tone alone only changes the resolve and
+    // layers change the volume, which restarts it when the new generation arrives.
+    if (!lastView_ || core::diff(*lastView_, state.scene).view() || width != lastWidth_ || height != lastHeight_ ||
+        state.renderScale != lastRenderScale_) {
       target_.samples = 0;
       renderer_.drawMesh(target_, settings);
-      lastView_ = std::move(view);
+      lastView_ = state.scene;
       lastWidth_ = width;
       lastHeight_ = height;
       lastRenderScale_ = state.renderScale;

@@ -1,12 +1,11 @@
 // Undo and redo over the whole scene. The explorer records the scene whenever an edit settles
 // (a slider released, a button pressed), so a whole drag is one step; undo and redo hand back
-// earlier or later versions. Scenes are compared through their JSON form, which is what a preset
-// holds, so two scenes that would save identically are one step.
+// earlier or later versions. Scenes are compared with == (every member), so an edit that changes
+// anything, and nothing else, is a step.
 #pragma once
 
 #include <cstddef>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include "core/scene.h"
@@ -27,11 +26,7 @@ class SceneHistory {
   std::size_t size() const { return steps_.size(); }
 
  private:
-  struct Step {
-    core::Scene scene;
-    std::string json;
-  };
-  std::vector<Step> steps_;
+  std::vector<core::Scene> steps_;
   std::size_t current_ = 0;
   std::size_t limit_;
 };

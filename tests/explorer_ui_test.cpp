@@ -11,6 +11,7 @@
 #include "core/flame_search.h"
 #include "core/flame_variations.h"
 #include "core/scene_io.h"
+#include "core/scene_schema.h"
 #include "core/scene.h"
 #include "explorer_session.h"
 #include "explorer_ui.h"
@@ -108,13 +109,13 @@ class ExplorerUi : public ::testing::Test {
 
 TEST_F(ExplorerUi, DraggingAParameterSliderChangesThePatternAndIsOneUndoStep) {
   const double before = state.scene.layers[0].params[0];
-  const std::string keyBefore = app::patternKey(state.scene);
+  const core::Scene keyBefore = state.scene;
   const auto& slider = item("layer0/a");
   double pressedAt = 0.0;
   drag(slider.minX + 4, slider.centerY(), 60.0f, 0.0f, 0, [&] { pressedAt = state.scene.layers[0].params[0]; });
   const double after = state.scene.layers[0].params[0];
   EXPECT_GT(after, pressedAt) << "dragging right raises the value";
-  EXPECT_NE(app::patternKey(state.scene), keyBefore) << "a parameter change restarts the accumulation";
+  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern()) << "a parameter change restarts the accumulation";
 
   pressKey('Z', true);
   EXPECT_DOUBLE_EQ(state.scene.layers[0].params[0], before) << "the whole drag is one undo step";
@@ -123,12 +124,12 @@ TEST_F(ExplorerUi, DraggingAParameterSliderChangesThePatternAndIsOneUndoStep) {
 }
 
 TEST_F(ExplorerUi, ToneSlidersChangeTheLookButNotThePattern) {
-  const std::string keyBefore = app::patternKey(state.scene);
+  const core::Scene keyBefore = state.scene;
   double gamma = 0.0;
   const auto& slider = item("tone/gamma");
   drag(slider.centerX(), slider.centerY(), -50.0f, 0.0f, 0, [&] { gamma = state.scene.tone.gamma; });
   EXPECT_LT(state.scene.tone.gamma, gamma);
-  EXPECT_EQ(app::patternKey(state.scene), keyBefore) << "tone mapping must not restart accumulation";
+  EXPECT_FALSE(core::diff(keyBefore, state.scene).pattern()) << "tone mapping must not restart accumulation";
 }
 
 TEST_F(ExplorerUi, MouseOrbitsPansAndZoomsOutsideThePanels) {
@@ -352,13 +353,13 @@ TEST_F(ExplorerUi, TimelineKeysScrubsAndPlaysAnAnimation) {
   ASSERT_EQ(state.scene.keyframes[0].keys.size(), 2u);
 
   // Scrubbing to the middle shows the interpolated value; the camera is not the pattern.
-  const std::string pattern = app::patternKey(state.scene);
+  const core::Scene pattern = state.scene;
   drag(scrubber.minX + 2, scrubber.centerY(), 0.5f * (scrubber.maxX - scrubber.minX) - 2, 0);
   EXPECT_GT(state.scene.animation.time, 0.5);
   EXPECT_LT(state.scene.animation.time, 1.5);
   EXPECT_GT(state.scene.camera.azimuthDeg, 10.0);
   EXPECT_LT(state.scene.camera.azimuthDeg, 80.0);
-  EXPECT_EQ(app::patternKey(state.scene), pattern);
+  EXPECT_FALSE(core::diff(pattern, state.scene).pattern());
 
   // Play moves time forward frame by frame and the camera with it.
   const double time = state.scene.animation.time, azimuth = state.scene.camera.azimuthDeg;
@@ -379,7 +380,7 @@ TEST_F(ExplorerUi, KeyingAParameterAnimatesThePattern) {
   click("timeline/Key");
   ASSERT_EQ(state.scene.keyframes.size(), 1u);
   EXPECT_EQ(state.scene.keyframes[0].path, "/layers/0/params/a");
-  const std::string patternAtEnd = app::patternKey(state.scene);
+  const core::Scene patternAtEnd = state.scene;
   const auto& scrubber = item("timeline/time");
   drag(scrubber.minX + 2, scrubber.centerY(), -40, 0);
   state.scene.layers[0].params[0] = start;
@@ -390,7 +391,7 @@ TEST_F(ExplorerUi, KeyingAParameterAnimatesThePattern) {
   const double middle = state.scene.layers[0].params[0];
   EXPECT_GT(middle, start);
   EXPECT_LT(middle, start * 1.05);
-  EXPECT_NE(app::patternKey(state.scene), patternAtEnd) << "an animated parameter restarts the accumulation";
+  EXPECT_TRUE(core::diff(patternAtEnd, state.scene).pattern()) << "an animated parameter restarts the accumulation";
   // Deleting the key at the current time needs the time on a key: go to the next one.
   click("timeline/>|");
   EXPECT_DOUBLE_EQ(state.scene.animation.time, 1.0);
@@ -479,7 +480,7 @@ TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {
 }  // namespace
 
 TEST_F(ExplorerUi, DensityEstimationAndStillMethodAreLookOnlyAndTheFitRestartsThePattern) {
-  const std::string keyBefore = app::patternKey(state.scene);
+  const core::Scene keyBefore = state.scene;
   double radius = 0.0;
   const auto& slider = item("tone/estimator radius");
   drag(slider.centerX(), slider.centerY(), -60.0f, 0.0f, 0, [&] { radius = state.scene.tone.estimatorRadius; });
@@ -489,23 +490,23 @@ TEST_F(ExplorerUi, DensityEstimationAndStillMethodAreLookOnlyAndTheFitRestartsTh
   state.scene.render.method = core::RenderMethod::Points;
   frame();
   EXPECT_NO_THROW(item("render/lens aperture")) << "the points method's depth of field shows with it";
-  EXPECT_EQ(app::patternKey(state.scene), keyBefore) << "tone and still method never restart accumulation";
+  EXPECT_FALSE(core::diff(keyBefore, state.scene).pattern()) << "tone and still method never restart accumulation";
   state.scene.layers[0].transform.fit = core::FitMode::Cover;
-  EXPECT_NE(app::patternKey(state.scene), keyBefore) << "a new fit moves the points";
+  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern()) << "a new fit moves the points";
 }
 
 TEST_F(ExplorerUi, CopiesOfALayerAreAddedTurnedAndRemoved) {
-  const std::string keyBefore = app::patternKey(state.scene);
+  const core::Scene keyBefore = state.scene;
   const std::size_t before = state.scene.layers[0].transform.copies.size();
   click("layer0/Add copy");
   ASSERT_EQ(state.scene.layers[0].transform.copies.size(), before + 1);
   EXPECT_NE(state.scene.layers[0].transform.copies.back(), glm::dvec3(0.0)) << "a new copy is turned";
-  EXPECT_NE(app::patternKey(state.scene), keyBefore) << "a copy changes the pattern";
+  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern()) << "a copy changes the pattern";
   const std::string label = "layer0/copy " + std::to_string(before + 1);
   EXPECT_NO_THROW(item(label));
   click(label + " remove");
   EXPECT_EQ(state.scene.layers[0].transform.copies.size(), before);
-  EXPECT_EQ(app::patternKey(state.scene), keyBefore);
+  EXPECT_FALSE(core::diff(keyBefore, state.scene).pattern());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -542,13 +543,13 @@ class ExplorerFlameUi : public ExplorerUi {
 };
 
 TEST_F(ExplorerFlameUi, SwitchingALayerToFlameStartsFromTheDefaultFlame) {
-  const std::string keyBefore = app::patternKey(state.scene);
+  const core::Scene keyBefore = state.scene;
   click("layer0/pattern");
   click("layer0/pattern/flame");
   ASSERT_EQ(state.scene.layers[0].kind, core::PatternKind::Flame);
   EXPECT_EQ(flame(), core::defaultFlame());
   EXPECT_EQ(state.scene.layers[0].color.mode, core::ColorMode::Index) << "a flame colours by flam3's index";
-  EXPECT_NE(app::patternKey(state.scene), keyBefore);
+  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern());
   frame();
   EXPECT_NO_THROW(item("layer0/xform/transform weight"));
   EXPECT_NO_THROW(item("layer0/xform/rotate"));
@@ -593,13 +594,13 @@ TEST_F(ExplorerFlameUi, DraggingATransformWeightIsOneUndoStep) {
   useFlameLayer();
   click("layer0/xform 2");
   const core::FlameGenome before = flame();
-  const std::string keyBefore = app::patternKey(state.scene);
+  const core::Scene keyBefore = state.scene;
   const auto slider = item("layer0/xform/transform weight");
   double pressedAt = 0.0;
   drag(slider.minX + 4, slider.centerY(), 80, 0, 0, [&] { pressedAt = flame().xforms[1].weight; });
   EXPECT_GT(flame().xforms[1].weight, pressedAt);
   EXPECT_EQ(flame().xforms[0], before.xforms[0]) << "only the selected transform moves";
-  EXPECT_NE(app::patternKey(state.scene), keyBefore) << "a genome edit restarts the accumulation";
+  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern()) << "a genome edit restarts the accumulation";
   pressKey('Z', true);
   EXPECT_EQ(flame(), before) << "the whole drag is one undo step";
 }
@@ -714,13 +715,13 @@ TEST_F(ExplorerFlameUi, QuaternionJuliaHasSlidersForItsConstantAndView) {
   ASSERT_EQ(state.scene.layers[0].kind, core::PatternKind::QuaternionJulia);
   frame();
   const core::QuaternionJuliaSettings before = state.scene.layers[0].julia;
-  const std::string keyBefore = app::patternKey(state.scene);
+  const core::Scene keyBefore = state.scene;
   const auto slider = item("layer0/c (j)");
   double pressedAt = 0.0;
   drag(slider.centerX(), slider.centerY(), 25, 0, 0, [&] { pressedAt = state.scene.layers[0].julia.c.z; });
   EXPECT_GT(state.scene.layers[0].julia.c.z, pressedAt);
   EXPECT_EQ(state.scene.layers[0].julia.c.x, before.c.x);
-  EXPECT_NE(app::patternKey(state.scene), keyBefore);
+  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern());
   pressKey('Z', true);
   EXPECT_EQ(state.scene.layers[0].julia, before);
   EXPECT_NO_THROW(item("layer0/turn"));

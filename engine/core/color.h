@@ -23,6 +23,7 @@ std::string toHexColor(glm::vec3 linear);
 struct GradientStop {
   float position = 0.0f;  // 0..1
   glm::vec3 color{0.0f};  // linear RGB
+  bool operator==(const GradientStop&) const = default;
 };
 
 class Gradient {

@@ -9,6 +9,8 @@
 
 #include "color.h"
 #include "error.h"
+#include "json_reader.h"
+#include "scene_schema.h"
 
 namespace voxflame::core {
 
@@ -140,40 +142,16 @@ Point interpolate(const KeyframeTrack& track, double seconds, double duration, b
   return result;
 }
 
-bool isHexColor(const json& value) {
-  if (!value.is_string()) return false;
-  try {
-    parseHexColor(value.get<std::string>());
-    return true;
-  } catch (const Error&) {
-    return false;
+bool kindFits(const KeyframeTrack& track, const ValueRef& target) {
+  switch (track.kind) {
+    case KeyKind::Number:
+      return target.kind == ValueRef::Kind::Number;
+    case KeyKind::Array:
+      return target.kind == ValueRef::Kind::Array && target.numbers.size() == track.keys.front().values.size();
+    case KeyKind::Color:
+      return target.kind == ValueRef::Kind::Color;
   }
-}
-
-bool isNumberArray(const json& value) {
-  return value.is_array() && !value.empty() &&
-         std::all_of(value.begin(), value.end(), [](const json& element) { return element.is_number(); });
-}
-
-// The value a pointer names in `document`, or nullptr (also for a malformed array index).
-const json* resolve(const json& document, const std::string& path) {
-  try {
-    const json::json_pointer pointer(path);
-    if (!document.contains(pointer)) return nullptr;
-    return &document.at(pointer);
-  } catch (const json::exception&) {
-    return nullptr;
-  }
-}
-
-std::string describe(const json& value) {
-  if (value.is_number()) return "a number";
-  if (isHexColor(value)) return "a colour";
-  if (isNumberArray(value)) return "an array of " + std::to_string(value.size()) + " numbers";
-  if (value.is_string()) return "the text " + value.dump();
-  if (value.is_boolean()) return "true or false";
-  if (value.is_array()) return "an array";
-  return "an object";
+  return false;
 }
 
 std::string describe(const KeyframeTrack& track) {
@@ -188,40 +166,56 @@ std::string describe(const KeyframeTrack& track) {
   return "values";
 }
 
-bool kindFits(const KeyframeTrack& track, const json& target) {
-  switch (track.kind) {
-    case KeyKind::Number:
-      return target.is_number();
-    case KeyKind::Array:
-      return isNumberArray(target) && target.size() == track.keys.front().values.size();
-    case KeyKind::Color:
-      return isHexColor(target);
+// A colour as a preset holds it: 8 bits per sRGB channel, so an animated colour is exactly what
+// writing the scene and reading it back would give.
+glm::vec3 presetColor(glm::vec3 linear) {
+  return parseHexColor(toHexColor(linear));
+}
+
+// Writes the track's value at `seconds` into `target` (resolved in the scene being animated),
+// checked against the target's range.
+void applyTrack(const ValueRef& target, const KeyframeTrack& track, double seconds, double duration, bool loop,
+                const std::string& sourceName) {
+  const Point p = interpolate(track, seconds, duration, loop);
+  if (track.kind == KeyKind::Color) {
+    *target.color = presetColor(
+        oklabToLinear(glm::vec3(static_cast<float>(p[0]), static_cast<float>(p[1]), static_cast<float>(p[2]))));
+    return;
   }
-  return false;
+  setNumbers(target, p, sourceName);
 }
 
-void applyTrack(json& document, const KeyframeTrack& track, double seconds, double duration, bool loop) {
-  json& target = document.at(json::json_pointer(track.path));
-  json value = evaluateTrack(track, seconds, duration, loop);
-  // Whole-number keys (seed, points, grid resolution) step to the nearest whole number.
-  if (target.is_number_integer() && value.is_number())
-    value = static_cast<std::int64_t>(std::llround(value.get<double>()));
-  target = std::move(value);
+// The values a target holds now, to put back after trying a track's values in it.
+struct Saved {
+  std::vector<double> numbers;
+  glm::vec3 color{0.0f};
+};
+
+Saved save(const ValueRef& target) {
+  Saved saved;
+  for (const NumberSlot& slot : target.numbers) saved.numbers.push_back(slot.get());
+  if (target.color) saved.color = *target.color;
+  return saved;
 }
 
-Keyframe keyFromJson(const KeyframeTrack& track, const json& value, double seconds) {
+void restore(const ValueRef& target, const Saved& saved) {
+  for (std::size_t i = 0; i < target.numbers.size(); ++i)
+    std::visit([&](auto* p) { *p = static_cast<std::remove_pointer_t<decltype(p)>>(saved.numbers[i]); },
+               target.numbers[i].target);
+  if (target.color) *target.color = saved.color;
+}
+
+Keyframe keyFrom(const KeyframeTrack& track, const ValueRef& value, double seconds) {
   Keyframe key;
   key.time = seconds;
   if (!kindFits(track, value))
     throw Error("the keyframe track '" + track.path + "' holds " + describe(track) + " but the edited scene has " +
                 describe(value) + " there");
   if (track.kind == KeyKind::Color) {
-    const glm::vec3 linear = parseHexColor(value.get<std::string>());
+    const glm::vec3 linear = presetColor(*value.color);
     key.values = {linear.r, linear.g, linear.b};
-  } else if (track.kind == KeyKind::Array) {
-    for (const json& element : value) key.values.push_back(element.get<double>());
   } else {
-    key.values = {value.get<double>()};
+    for (const NumberSlot& slot : value.numbers) key.values.push_back(slot.get());
   }
   return key;
 }
@@ -236,66 +230,94 @@ void insertKey(KeyframeTrack& track, Keyframe key) {
     track.keys.insert(at, std::move(key));
 }
 
-std::string escapePointerToken(const std::string& token) {
-  std::string escaped;
-  for (char c : token) {
-    if (c == '~')
-      escaped += "~0";
-    else if (c == '/')
-      escaped += "~1";
-    else
-      escaped += c;
-  }
-  return escaped;
-}
-
-// Walks the edited document and opens a track for every numeric value or colour that differs from
-// the current one. Values the current scene does not have (a new layer) are structure, not motion.
-void collectChanges(const json& edited, const json* current, const std::string& path,
-                    const std::set<std::string>& tracked, double seconds, std::vector<KeyframeTrack>& tracks) {
-  if (tracked.count(path) || path == "/schema_version") return;
-  if (!current) return;
-  const auto open = [&](KeyKind kind) {
+// Opens a track for every animatable value of `edited` that differs from `current`. Values the
+// current scene does not have (a new layer) are structure, not motion.
+void collectChanges(const Scene& edited, const Scene& current, const std::set<std::string>& tracked, double seconds,
+                    std::vector<KeyframeTrack>& tracks) {
+  const auto open = [&](const std::string& path, KeyKind kind, const ValueRef& value) {
     KeyframeTrack track;
     track.path = path;
     track.kind = kind;
     track.interpolation = Interpolation::Smooth;
-    // An array track's size comes from its first key; keyFromJson then checks the value against it.
-    if (kind == KeyKind::Array) track.keys.push_back({seconds, std::vector<double>(edited.size())});
-    Keyframe key = keyFromJson(track, edited, seconds);
-    // One key: the value holds everywhere until more keys follow.
-    track.keys = {std::move(key)};
+    // An array track's size comes from its first key; keyFrom checks the value against it.
+    if (kind == KeyKind::Array) track.keys.push_back({seconds, std::vector<double>(value.numbers.size())});
+    Keyframe key = keyFrom(track, value, seconds);
+    track.keys = {std::move(key)};  // one key: the value holds everywhere until more keys follow
     tracks.push_back(std::move(track));
   };
-  if (edited.is_number()) {
-    if (!current->is_number() || current->get<double>() != edited.get<double>()) open(KeyKind::Number);
-  } else if (edited.is_string()) {
-    if (isHexColor(edited) && *current != edited) open(KeyKind::Color);
-  } else if (edited.is_array()) {
-    bool elementTracked = false;
-    for (std::size_t i = 0; i < edited.size(); ++i) elementTracked |= tracked.count(path + "/" + std::to_string(i)) > 0;
-    if (isNumberArray(edited) && !elementTracked) {
-      if (!isNumberArray(*current) || current->size() != edited.size()) return;  // structure changed
-      for (std::size_t i = 0; i < edited.size(); ++i)
-        if ((*current)[i].get<double>() != edited[i].get<double>()) {
-          open(KeyKind::Array);
-          return;
+  for (const std::string& path : animatablePaths(edited)) {
+    if (tracked.count(path)) continue;
+    const ValueRef now = resolveValue(edited, path), before = resolveValue(current, path);
+    if (now.kind != before.kind || now.numbers.size() != before.numbers.size()) continue;  // structure changed
+    switch (now.kind) {
+      case ValueRef::Kind::Number:
+        if (now.numbers[0].get() != before.numbers[0].get()) open(path, KeyKind::Number, now);
+        break;
+      case ValueRef::Kind::Color:
+        if (toHexColor(*now.color) != toHexColor(*before.color)) open(path, KeyKind::Color, now);
+        break;
+      case ValueRef::Kind::Array: {
+        bool elementTracked = false;
+        for (std::size_t i = 0; i < now.numbers.size(); ++i)
+          elementTracked |= tracked.count(path + "/" + std::to_string(i)) > 0;
+        if (!elementTracked) {
+          for (std::size_t i = 0; i < now.numbers.size(); ++i)
+            if (now.numbers[i].get() != before.numbers[i].get()) {
+              open(path, KeyKind::Array, now);
+              break;
+            }
+          break;
         }
-      return;
-    }
-    for (std::size_t i = 0; i < edited.size(); ++i)
-      collectChanges(edited[i], current->is_array() && i < current->size() ? &(*current)[i] : nullptr,
-                     path + "/" + std::to_string(i), tracked, seconds, tracks);
-  } else if (edited.is_object()) {
-    for (auto it = edited.begin(); it != edited.end(); ++it) {
-      const json* inner = nullptr;
-      if (current->is_object()) {
-        const auto found = current->find(it.key());
-        if (found != current->end()) inner = &*found;
+        // Some elements have tracks of their own: the others are keyed one by one.
+        for (std::size_t i = 0; i < now.numbers.size(); ++i) {
+          const std::string element = path + "/" + std::to_string(i);
+          if (tracked.count(element) || now.numbers[i].get() == before.numbers[i].get()) continue;
+          open(element, KeyKind::Number, resolveValue(edited, element));
+        }
+        break;
       }
-      collectChanges(it.value(), inner, path + "/" + escapePointerToken(it.key()), tracked, seconds, tracks);
+      default:
+        break;
     }
   }
+}
+
+// The keyframe value as the track's kind: a number, an array of numbers or a colour string.
+Keyframe readKey(const json& value, const std::string& source, const std::string& path, KeyframeTrack& track,
+                 bool first) {
+  ObjectReader reader(value, source, path);
+  Keyframe key;
+  const json* time = reader.find("time");
+  if (!time) reader.fail("is missing", "time");
+  key.time = reader.checkNumber(*time, "time", 0.0, kMaxAnimationSeconds);
+  const json* v = reader.find("value");
+  if (!v) reader.fail("is missing", "value");
+  KeyKind kind = KeyKind::Number;
+  if (v->is_number()) {
+    key.values = {reader.checkNumber(*v, "value", -1e12, 1e12)};
+  } else if (v->is_string()) {
+    kind = KeyKind::Color;
+    try {
+      const glm::vec3 linear = parseHexColor(v->get<std::string>());
+      key.values = {linear.r, linear.g, linear.b};
+    } catch (const Error& e) {
+      reader.fail(e.what(), "value");
+    }
+  } else if (v->is_array() && !v->empty() && v->size() <= 64) {
+    kind = KeyKind::Array;
+    for (const json& element : *v) key.values.push_back(reader.checkNumber(element, "value", -1e12, 1e12));
+  } else {
+    reader.fail("must be a number, an array of 1 to 64 numbers or a colour string like \"#ff8800\"", "value");
+  }
+  if (first) {
+    track.kind = kind;
+  } else if (kind != track.kind || key.values.size() != track.keys.front().values.size()) {
+    reader.fail(
+        "must be of the same kind as the track's first key (a number, an array of as many numbers, or a colour)",
+        "value");
+  }
+  reader.finish();
+  return key;
 }
 
 }  // namespace
@@ -353,26 +375,90 @@ json keyValueToJson(const KeyframeTrack& track, const Keyframe& key) {
   return nullptr;
 }
 
+std::vector<KeyframeTrack> keyframesFromJson(const json* value, const AnimationSettings& animation,
+                                             const std::string& sourceName) {
+  std::vector<KeyframeTrack> tracks;
+  if (!value) return tracks;
+  if (!value->is_array() || value->size() > kMaxKeyframeTracks)
+    throw Error(sourceName + ": 'keyframes' must be an array of at most " + std::to_string(kMaxKeyframeTracks) +
+                " tracks");
+  for (std::size_t i = 0; i < value->size(); ++i) {
+    const std::string path = "keyframes[" + std::to_string(i) + "]";
+    ObjectReader reader((*value)[i], sourceName, path);
+    KeyframeTrack track;
+    track.path = reader.requiredString("path");
+    if (track.path.empty() || track.path[0] != '/')
+      reader.fail(
+          "is '" + track.path + "'; a JSON Pointer into the preset starts with '/', like \"/camera/azimuth_deg\"",
+          "path");
+    const std::string interpolation = reader.string("interpolation", "smooth");
+    if (interpolation == "linear") {
+      track.interpolation = Interpolation::Linear;
+    } else if (interpolation == "smooth") {
+      track.interpolation = Interpolation::Smooth;
+    } else {
+      reader.fail("is '" + interpolation + "'; expected 'linear' or 'smooth'", "interpolation");
+    }
+    const json* keys = reader.find("keys");
+    if (!keys) reader.fail("is missing", "keys");
+    if (!keys->is_array() || keys->empty() || keys->size() > kMaxKeyframes)
+      reader.fail("must be an array of 1 to " + std::to_string(kMaxKeyframes) + " keys", "keys");
+    for (std::size_t k = 0; k < keys->size(); ++k) {
+      const std::string keyPath = reader.keyPath("keys") + "[" + std::to_string(k) + "]";
+      Keyframe key = readKey((*keys)[k], sourceName, keyPath, track, k == 0);
+      if (k > 0 && key.time <= track.keys.back().time) {
+        std::ostringstream reason;
+        reason << "is " << key.time << ", not after the previous key's " << track.keys.back().time
+               << "; key times must increase";
+        throw Error(sourceName + ": '" + keyPath + ".time' " + reason.str());
+      }
+      if (animation.duration > 0.0 && key.time > animation.duration) {
+        std::ostringstream reason;
+        reason << "is " << key.time << ", after the animation's duration " << animation.duration;
+        throw Error(sourceName + ": '" + keyPath + ".time' " + reason.str());
+      }
+      track.keys.push_back(std::move(key));
+    }
+    for (const KeyframeTrack& other : tracks)
+      if (other.path == track.path) reader.fail("'" + track.path + "' already has a track", "path");
+    reader.finish();
+    tracks.push_back(std::move(track));
+  }
+  return tracks;
+}
+
+json keyframesToJson(const std::vector<KeyframeTrack>& tracks) {
+  json out = json::array();
+  for (const KeyframeTrack& track : tracks) {
+    json keys = json::array();
+    for (const Keyframe& key : track.keys) keys.push_back({{"time", key.time}, {"value", keyValueToJson(track, key)}});
+    out.push_back({{"path", track.path},
+                   {"interpolation", track.interpolation == Interpolation::Linear ? "linear" : "smooth"},
+                   {"keys", keys}});
+  }
+  return out;
+}
+
 void checkKeyframeTracks(const Scene& scene, const std::string& sourceName) {
   if (scene.keyframes.empty()) return;
-  const json document = sceneToDocument(scene, false);
+  Scene work = scene;  // each track's values are tried in it, then put back
   const double duration = animationDuration(scene);
   const bool loop = scene.animation.loop;
   for (std::size_t i = 0; i < scene.keyframes.size(); ++i) {
     const KeyframeTrack& track = scene.keyframes[i];
     const std::string name = "keyframes[" + std::to_string(i) + "]";
     const std::string where = sourceName + ": '" + name + ".path' ";
-    const json* target = track.path == "/schema_version" ? nullptr : resolve(document, track.path);
-    if (!target)
+    const ValueRef target = resolveValue(work, track.path);
+    if (target.kind == ValueRef::Kind::Missing)
       throw Error(where + "is '" + track.path +
                   "', which names no value of the preset (paths are JSON Pointers such as \"/camera/azimuth_deg\", "
                   "\"/layers/0/params/a\" or \"/layers/0/color/gradient/1\"; a layer with a palette has no gradient)");
-    if (!target->is_number() && !isHexColor(*target) && !isNumberArray(*target))
-      throw Error(where + "is '" + track.path + "', which is " + describe(*target) +
+    if (target.kind == ValueRef::Kind::Other)
+      throw Error(where + "is '" + track.path + "', which is " + target.what +
                   "; only numbers, arrays of numbers and colours can be animated");
-    if (!kindFits(track, *target))
+    if (!kindFits(track, target))
       throw Error(sourceName + ": '" + name + ".keys' hold " + describe(track) + " but '" + track.path + "' is " +
-                  describe(*target));
+                  describe(target));
 
     // Every key, and for curves points between keys (where Catmull-Rom can overshoot), must give
     // a valid preset: found now, not on frame 900 of a render.
@@ -388,39 +474,37 @@ void checkKeyframeTracks(const Scene& scene, const std::string& sourceName) {
       if (k == 0 && loop && t0 > 0.0)
         for (int s = 1; s < kSamplesBetween; ++s) times.push_back(t0 * s / kSamplesBetween);
     }
+    const Saved original = save(target);
     for (double t : times) {
-      json animated = document;
-      applyTrack(animated, track, t, duration, loop);
-      sceneFromDocument(animated, sourceName + ": " + name + " ('" + track.path + "') at " + formatSeconds(t) + " s",
-                        false);
+      const std::string at = sourceName + ": " + name + " ('" + track.path + "') at " + formatSeconds(t) + " s";
+      applyTrack(target, track, t, duration, loop, at);
+      checkSceneConstraints(work, at);
     }
+    restore(target, original);
   }
 }
 
 Scene sceneAtTime(const Scene& scene, double seconds) {
-  Scene result;
-  if (scene.keyframes.empty()) {
-    result = scene;
-  } else {
-    json document = sceneToDocument(scene, false);
+  Scene result = scene;
+  if (!scene.keyframes.empty()) {
+    const std::string source = "keyframes of '" + scene.name + "' at " + formatSeconds(seconds) + " s";
     const double duration = animationDuration(scene);
-    for (const KeyframeTrack& track : scene.keyframes)
-      applyTrack(document, track, seconds, duration, scene.animation.loop);
-    result =
-        sceneFromDocument(document, "keyframes of '" + scene.name + "' at " + formatSeconds(seconds) + " s", false);
-    result.embedded = scene.embedded;
-    result.baseDirectory = scene.baseDirectory;
-    result.keyframes = scene.keyframes;
+    for (const KeyframeTrack& track : scene.keyframes) {
+      const ValueRef target = resolveValue(result, track.path);
+      if (!kindFits(track, target))
+        throw Error(source + ": the keyframe track '" + track.path + "' finds " +
+                    (target.kind == ValueRef::Kind::Missing ? std::string("no value") : describe(target)) +
+                    " there (a layer removed, a gradient shortened?)");
+      applyTrack(target, track, seconds, duration, scene.animation.loop, source);
+    }
+    checkSceneConstraints(result, source);
   }
-  result.animation = scene.animation;
   result.animation.time = std::clamp(seconds, 0.0, kMaxAnimationSeconds);
   return result;
 }
 
 Scene withKeyframeAt(const Scene& animated, const Scene& edited, double seconds) {
   const Scene current = sceneAtTime(animated, seconds);
-  const json currentDocument = sceneToDocument(current, false);
-  const json editedDocument = sceneToDocument(edited, false);
   const double duration = animationDuration(animated);
   double keyTime = std::clamp(seconds, 0.0, kMaxAnimationSeconds);
   if (animated.animation.loop && duration > 0.0) keyTime = wrapTime(keyTime, duration);
@@ -428,23 +512,22 @@ Scene withKeyframeAt(const Scene& animated, const Scene& edited, double seconds)
   std::vector<KeyframeTrack> tracks = animated.keyframes;
   std::set<std::string> tracked;
   for (KeyframeTrack& track : tracks) {
-    const json* value = resolve(editedDocument, track.path);
-    if (!value) throw Error("the keyframe track '" + track.path + "' addresses a value the edited scene no longer has");
-    insertKey(track, keyFromJson(track, *value, keyTime));
+    const ValueRef value = resolveValue(edited, track.path);
+    if (value.kind == ValueRef::Kind::Missing)
+      throw Error("the keyframe track '" + track.path + "' addresses a value the edited scene no longer has");
+    insertKey(track, keyFrom(track, value, keyTime));
     tracked.insert(track.path);
   }
-  collectChanges(editedDocument, &currentDocument, "", tracked, keyTime, tracks);
+  collectChanges(edited, current, tracked, keyTime, tracks);
 
   Scene result = edited;
   result.keyframes = std::move(tracks);
   result.animation = animated.animation;
   if (result.animation.duration > 0.0) result.animation.duration = std::max(result.animation.duration, keyTime);
   result.animation.time = std::clamp(seconds, 0.0, kMaxAnimationSeconds);
-  // Through the document once more, so the new keys are checked like keys typed into a preset.
-  Scene checked = sceneFromDocument(sceneToDocument(result), "keyframes added at " + formatSeconds(seconds) + " s");
-  checked.embedded = result.embedded;
-  checked.baseDirectory = result.baseDirectory;
-  return checked;
+  // The new keys are checked like keys typed into a preset.
+  checkKeyframeTracks(result, "keyframes added at " + formatSeconds(seconds) + " s");
+  return result;
 }
 
 }  // namespace voxflame::core

@@ -1,9 +1,13 @@
 // Keyframes animate any numeric value of a preset. A track names its target with a JSON Pointer
-// into the preset document (the complete one of sceneToDocument, where every key is present) and
-// holds keys at increasing times; between keys a value moves linearly or along a Catmull-Rom
-// curve, colours in OKLab so that a fade between two saturated colours stays bright. Evaluating
-// a scene at a time applies every track to its document and parses the result, so an animated
-// value is checked exactly like a typed one: one code path, one set of ranges and messages.
+// into the preset document (the complete one, where every key is present; scene_schema.h resolves
+// such a pointer to the Scene member it names without making the document) and holds keys at
+// increasing times; between keys a value moves linearly or along a Catmull-Rom curve, colours in
+// OKLab so that a fade between two saturated colours stays bright. An animated value is checked
+// exactly like a typed one: against the range of the schema table and the reader's cross-field
+// checks, with the same messages.
+//
+// Keyframes read, write and check themselves; the preset loader (scene_io.cpp) composes them with
+// the scene's reader and writer.
 //
 // Catmull-Rom with uneven key spacing: the tangent at key i is (p[i+1] - p[i-1]) / (t[i+1] - t[i-1]);
 // at the first and last key of an open track it is the one-sided slope to the neighbouring key.
@@ -13,6 +17,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include <nlohmann/json_fwd.hpp>
@@ -54,9 +59,17 @@ nlohmann::json evaluateTrack(const KeyframeTrack& track, double seconds, double 
 // A key's value as the preset writes it.
 nlohmann::json keyValueToJson(const KeyframeTrack& track, const Keyframe& key);
 
-// The load-time checks of sceneFromDocument: every track addresses a number, an array of numbers
-// or a colour of the right size in the scene's document, and its values at every key and between
-// keys are within their allowed ranges. Throws core::Error naming the source and the track.
+// Reads a preset's `keyframes` array (nullptr: the preset has none): paths, interpolation, keys of
+// one kind at increasing times, none after `animation.duration` when that is set. Throws
+// core::Error naming the source and the key path ("keyframes[0].keys[1].time").
+std::vector<KeyframeTrack> keyframesFromJson(const nlohmann::json* tracks, const AnimationSettings& animation,
+                                             const std::string& sourceName);
+// The `keyframes` array as a preset writes it.
+nlohmann::json keyframesToJson(const std::vector<KeyframeTrack>& tracks);
+
+// The load-time checks: every track addresses a number, an array of numbers or a colour of the
+// right size in the scene, and its values at every key and between keys are within their allowed
+// ranges. Throws core::Error naming the source and the track.
 void checkKeyframeTracks(const Scene& scene, const std::string& sourceName);
 
 }  // namespace voxflame::core

@@ -49,6 +49,7 @@ struct ColorSettings {
   glm::dvec3 axis{0.0, 0.0, 1.0};      // Axis mode, in attractor coordinates
   double period = 1000.0;              // Time mode: steps per trip through the gradient
   double scale = 1.0;                  // stretches the normalised value before clamping
+  bool operator==(const ColorSettings&) const = default;
 };
 
 // How the automatic fit sizes the attractor's robust (5–95%) box against the mesh's inside box.
@@ -80,6 +81,7 @@ struct LayerTransform {
   glm::dvec3 lockedCenter{0.0};     // attractor coordinates mapped to the mask's centre
   double lockedScale = 1.0;         // voxels per attractor unit
   glm::dvec3 lockedAxisScale{1.0};  // per attractor axis, times lockedScale (a stretch fit's shape)
+  bool operator==(const LayerTransform&) const = default;
 };
 
 // What a layer iterates: an attractor of the catalogue (attractor.h) or a chaos game (flame.h).
@@ -102,6 +104,7 @@ struct PatternLayer {
   bool isChaosGame() const { return kind != PatternKind::Attractor; }
   // What the layer shows, for lists and messages: the attractor's id, "flame" or "quaternion_julia".
   std::string patternName() const;
+  bool operator==(const PatternLayer&) const = default;
 };
 
 // flam3-style tone mapping (flame_image.h), applied to each pixel's summed density, so changing it
@@ -121,6 +124,7 @@ struct ToneMapSettings {
   double estimatorRadius = 9.0;
   double estimatorMinimum = 0.0;
   double estimatorCurve = 0.4;
+  bool operator==(const ToneMapSettings&) const = default;
 };
 
 enum class Projection { Perspective, Orthographic };
@@ -138,6 +142,7 @@ struct CameraSettings {
   glm::dvec3 target{0.0};  // in radii, relative to the grid's centre
   double nearClip = 0.0;   // distance from the eye in radii; 0: automatic
   double farClip = 0.0;    // distance from the eye in radii; 0: automatic
+  bool operator==(const CameraSettings&) const = default;
 };
 
 enum class MeshDisplay { Off, Ghost, Silhouette };
@@ -166,6 +171,7 @@ struct RenderSettingsDoc {
   double dofAperture = 0.0;
   double dofFocusDistance = 0.0;
   double fog = 0.0;  // points method: dims by exp(-fog · depth behind the front of the grid / grid side)
+  bool operator==(const RenderSettingsDoc&) const = default;
 };
 
 enum class Interpolation {
@@ -180,6 +186,7 @@ enum class KeyKind { Number, Array, Color };
 struct Keyframe {
   double time = 0.0;           // seconds
   std::vector<double> values;  // Number: one value; Array: one per element; Color: linear RGB
+  bool operator==(const Keyframe&) const = default;
 };
 
 // A track addresses one value of the preset document by JSON Pointer (RFC 6901), e.g.
@@ -190,6 +197,7 @@ struct KeyframeTrack {
   Interpolation interpolation = Interpolation::Smooth;
   KeyKind kind = KeyKind::Number;
   std::vector<Keyframe> keys;
+  bool operator==(const KeyframeTrack&) const = default;
 };
 
 struct AnimationSettings {
@@ -197,6 +205,7 @@ struct AnimationSettings {
   double fps = 30.0;
   bool loop = false;  // time wraps at the duration and smooth tracks join their ends without a kink
   double time = 0.0;  // the moment a still (`voxflame render`) shows
+  bool operator==(const AnimationSettings&) const = default;
 };
 
 struct Scene {
@@ -215,7 +224,12 @@ struct Scene {
   std::vector<KeyframeTrack> keyframes;  // applied by sceneAtTime (keyframes.h)
 
   std::filesystem::path resolvedMeshPath() const;
+  bool operator==(const Scene&) const = default;
 };
+
+// The preset entry points. They are the preset loader of scene_io.cpp, which composes the scene's
+// reader and writer (scene_schema.h) with the keyframes' (keyframes.h); they are declared here
+// because this is the header every caller already has.
 
 // Parses a preset (migrating older schema versions first). `sourceName` is what messages call
 // it (a file path). Throws core::Error.
@@ -231,8 +245,5 @@ nlohmann::json migratePreset(nlohmann::json document, std::string_view sourceNam
 // The preset as a JSON document with every key present, defaults included: the document keyframe
 // paths address. `withAnimation` false leaves out the animation block and the keyframes.
 nlohmann::json sceneToDocument(const Scene& scene, bool withAnimation = true);
-// Reads a (migrated) document. `checkKeyframes` false skips the keyframe checks that evaluate
-// tracks (for documents keyframes.cpp has just produced from a checked scene).
-Scene sceneFromDocument(const nlohmann::json& document, std::string_view sourceName, bool checkKeyframes = true);
 
 }  // namespace voxflame::core
