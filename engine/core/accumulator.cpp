@@ -752,10 +752,11 @@ Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : 
             brickBits_[brick / 64] |= std::uint64_t{1} << (brick % 64);
           }
   }
-  clearCells();
   while (((voxels - 1) >> slabShift_) + 1 > static_cast<std::size_t>(kMaxSlabs)) ++slabShift_;
   slabCount_ = ((voxels - 1) >> slabShift_) + 1;
   slabMutexes_ = std::make_unique<std::mutex[]>(slabCount_);
+  slabGeneration_ = std::make_unique<std::uint64_t[]>(slabCount_);
+  clearCells();
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threadCount_ = threads;
   threads_.reserve(static_cast<std::size_t>(threads));
@@ -798,8 +799,7 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
       std::lock_guard problemLock(problemMutex_);
       problem_ = problem;
     }
-    clearCells();
-    iterations_ = 0;
+    iterations_ = 0;  // the cells are cleared slab by slab as they are next touched (makeSlabCurrent)
     points_ = 0;
     for (auto& streamPoints : streamPoints_) streamPoints = 0;
     outside_ = 0;
@@ -823,9 +823,27 @@ void Accumulator::notifyWorkChanged() {
 }
 
 void Accumulator::clearCells() {
+  for (std::size_t slab = 0; slab < slabCount_; ++slab) {
+    clearSlab(slab);
+    slabGeneration_[slab] = generation_.load(std::memory_order_relaxed);
+  }
+}
+
+void Accumulator::clearSlab(std::size_t slab) {
   const std::uint8_t* inside = mask_->inside.data();
-  for (std::size_t v = 0; v < cells_.size(); ++v)
+  const std::size_t end = std::min(cells_.size(), (slab + 1) << slabShift_);
+  for (std::size_t v = slab << slabShift_; v < end; ++v)
     cells_[v] = detail::GridCell{inside[v] ? 0u : kOutsideBit, 0u, 0u, 0u};
+}
+
+void Accumulator::makeSlabCurrent(std::size_t slab) {
+  // A new generation leaves the old sums in place (setPattern holds the exclusive lock only for
+  // a moment, not for a clear of gigabytes); the first writer or snapshot to reach a slab clears
+  // it. Called under the slab's mutex and the shared grid lock, so the generation cannot move.
+  const std::uint64_t generation = generation_.load(std::memory_order_relaxed);
+  if (slabGeneration_[slab] == generation) return;
+  clearSlab(slab);
+  slabGeneration_[slab] = generation;
 }
 
 void Accumulator::setDeposit(Deposit deposit) {
@@ -892,6 +910,17 @@ void Accumulator::snapshot(VolumeSnapshot& out) const {
     std::lock_guard slabLock(slabMutexes_[slab]);
     const std::size_t begin = slab << slabShift_;
     const std::size_t end = std::min(voxels, (slab + 1) << slabShift_);
+    // A slab nobody has written since the pattern changed still holds the old sums: it is empty.
+    if (slabGeneration_[slab] != generation_.load(std::memory_order_relaxed)) {
+      std::fill(out.density.begin() + static_cast<std::ptrdiff_t>(begin),
+                out.density.begin() + static_cast<std::ptrdiff_t>(end), 0.0f);
+      for (std::size_t v = begin; v < end; ++v) {
+        std::uint8_t* rgba = &out.rgba[4 * v];
+        rgba[0] = rgba[1] = rgba[2] = 0;
+        rgba[3] = 255;
+      }
+      continue;
+    }
     for (std::size_t v = begin; v < end; ++v) {
       detail::GridCell cell = cells_[v];
       cell.density &= ~kOutsideBit;
@@ -969,6 +998,7 @@ std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {
     const std::size_t end = start[slab];
     if (end == begin) continue;
     std::lock_guard lock(slabMutexes_[slab]);
+    makeSlabCurrent(slab);
     for (std::size_t e = begin; e < end; ++e) {
       // The adds are independent plain stores, so the CPU overlaps their cache misses;
       // prefetching a few entries ahead hides most of the rest.

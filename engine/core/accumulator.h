@@ -218,7 +218,10 @@ class Accumulator {
   bool allStreamsDone(std::uint64_t target) const;
   // Adds a thread's collected splats to the grid; returns how many landed inside the mask.
   std::uint64_t flushSplats(struct SplatBuffer& splats);
-  void clearCells();                  // zero sums; the outside flag set from the mask
+  void clearCells();  // every slab, for the current generation
+  void clearSlab(std::size_t slab);
+  void makeSlabCurrent(
+      std::size_t slab);  // clears a slab left by an older generation (zero sums, outside flags from the mask)
   void waitForPatternChange() const;  // readers step aside while setPattern waits for the grid
 
   std::shared_ptr<const InsideMask> mask_;
@@ -227,6 +230,7 @@ class Accumulator {
   std::vector<std::uint64_t> brickBits_;  // per 4×4×4 brick: does any voxel lie inside the mask
   int slabShift_ = 0;                     // voxel index >> slabShift_ = its slab
   std::unique_ptr<std::mutex[]> slabMutexes_;
+  std::unique_ptr<std::uint64_t[]> slabGeneration_;  // per slab, under its mutex: the generation its cells hold
   std::size_t slabCount_ = 0;
 
   std::atomic<int> patternWriters_{0};   // setPattern calls waiting for gridMutex_
