@@ -9,6 +9,8 @@
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -88,6 +90,16 @@ double secondsSinceEpoch(std::chrono::system_clock::time_point time) {
   return std::chrono::duration<double>(time.time_since_epoch()).count();
 }
 
+// What an autosave holds: the preset text and the folder its relative paths (a mesh) resolve in.
+std::pair<std::string, std::string> presetAndBase(const core::Scene& scene) {
+  std::string base;
+  if (!scene.embedded && !scene.baseDirectory.empty()) {
+    std::error_code ec;
+    base = std::filesystem::absolute(scene.baseDirectory, ec).lexically_normal().string();
+  }
+  return {core::sceneToJson(scene), base};
+}
+
 }  // namespace
 
 SessionOwner SessionOwner::current() {
@@ -133,11 +145,7 @@ void Autosave::update(const core::Scene& scene) {
   lastCheck_ = now;
   std::string preset, base;
   try {
-    preset = core::sceneToJson(scene);
-    if (!scene.embedded && !scene.baseDirectory.empty()) {
-      std::error_code ec;
-      base = std::filesystem::absolute(scene.baseDirectory, ec).lexically_normal().string();
-    }
+    std::tie(preset, base) = presetAndBase(scene);
   } catch (const std::exception& e) {
     const std::lock_guard lock(mutex_);
     lastError_ = std::string("cannot autosave this scene: ") + e.what();
@@ -156,6 +164,24 @@ void Autosave::update(const core::Scene& scene) {
     pending_.emplace(std::move(preset), std::move(base));
   }
   wake_.notify_one();
+}
+
+std::string Autosave::saveNow(const core::Scene& scene) {
+  if (finished_ || file_.empty()) return {};
+  finished_ = true;
+  std::string preset, base;
+  try {
+    std::tie(preset, base) = presetAndBase(scene);
+  } catch (const std::exception& e) {
+    return std::string("cannot autosave this scene: ") + e.what();
+  }
+  {
+    const std::lock_guard lock(mutex_);
+    pending_.emplace(std::move(preset), std::move(base));
+  }
+  wake_.notify_one();
+  flush();
+  return lastError();
 }
 
 void Autosave::flush() {

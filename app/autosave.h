@@ -70,6 +70,12 @@ class Autosave {
   // The session ended as the user wanted: stops autosaving and removes this session's file.
   void finishCleanly();
 
+  // The session ends without the user choosing to (the window was destroyed from outside): writes
+  // this scene now, even when unchanged since the start or the last check, waits until it is on
+  // disk, and stops autosaving. The file stays, so the next start offers it back. Returns the
+  // write's error ("" when it worked).
+  std::string saveNow(const core::Scene& scene);
+
   const std::filesystem::path& file() const { return file_; }
   // The last write's error ("" when it worked), for the window; a failed autosave is retried at
   // the next change.

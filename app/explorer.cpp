@@ -12,6 +12,7 @@
 #include <cctype>
 #include <chrono>
 #include <optional>
+#include <thread>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -24,7 +25,9 @@
 #include "explorer_session.h"
 #include "gl/read_back.h"
 #include "explorer_ui.h"
+#include "input_queue.h"
 #include "live_view.h"
+#include "x11_watch.h"
 
 namespace voxflame::app {
 
@@ -55,11 +58,18 @@ void saveScreenshot(const std::filesystem::path& path, int width, int height) {
   core::writePng(path, image, 8, {});
 }
 
+// GLFW, and the X error handlers that keep a window destroyed from outside (or a lost X server)
+// from ending the process: installed before the window is made, removed after GLFW is gone.
 struct GlfwSession {
   GlfwSession() {
     if (!glfwInit()) throw core::Error("could not initialise GLFW (is the display reachable?)");
+    x11.emplace();
   }
-  ~GlfwSession() { glfwTerminate(); }
+  ~GlfwSession() {
+    glfwTerminate();
+    x11.reset();
+  }
+  std::optional<X11Watch> x11;
 };
 
 unsigned uploadThumbnail(const Thumbnail& thumbnail) {
@@ -74,10 +84,39 @@ unsigned uploadThumbnail(const Thumbnail& thumbnail) {
   return texture;
 }
 
-// Files dropped onto the window wait here until the frame loop opens the first of them.
-void onDrop(GLFWwindow* window, int count, const char** paths) {
-  auto* dropped = static_cast<std::vector<std::string>*>(glfwGetWindowUserPointer(window));
-  for (int i = 0; i < count; ++i) dropped->emplace_back(paths[i]);
+static_assert(kKeyLeftShift == GLFW_KEY_LEFT_SHIFT && kKeyLeftControl == GLFW_KEY_LEFT_CONTROL &&
+              kKeyLeftAlt == GLFW_KEY_LEFT_ALT && kKeyLeftSuper == GLFW_KEY_LEFT_SUPER &&
+              kKeyRightShift == GLFW_KEY_RIGHT_SHIFT && kKeyRightControl == GLFW_KEY_RIGHT_CONTROL &&
+              kKeyRightAlt == GLFW_KEY_RIGHT_ALT && kKeyRightSuper == GLFW_KEY_RIGHT_SUPER);
+
+// What the window's callbacks collect between frames (the window's user pointer).
+struct WindowInput {
+  std::vector<std::string> dropped;  // files dropped onto the window: the loop opens the first
+  InputQueue queue;                  // keys, buttons, characters, wheel, pointer: see input_queue.h
+};
+
+WindowInput& inputOf(GLFWwindow* window) {
+  return *static_cast<WindowInput*>(glfwGetWindowUserPointer(window));
+}
+
+// ImGui's backend is installed without its input callbacks, which would write io.KeysDown and
+// io.MouseDown directly (a tap between two frames cancels out); these queue the events instead.
+// Focus and pointer enter/leave still go to the backend, which tracks them for io.MousePos.
+void installInputCallbacks(GLFWwindow* window) {
+  glfwSetKeyCallback(window, [](GLFWwindow* w, int key, int, int action, int) {
+    if (action != GLFW_REPEAT) inputOf(w).queue.key(key, action == GLFW_PRESS);
+  });
+  glfwSetCharCallback(window, [](GLFWwindow* w, unsigned codepoint) { inputOf(w).queue.character(codepoint); });
+  glfwSetMouseButtonCallback(window, [](GLFWwindow* w, int button, int action, int) {
+    inputOf(w).queue.mouseButton(button, action == GLFW_PRESS);
+  });
+  glfwSetScrollCallback(window, [](GLFWwindow* w, double dx, double dy) { inputOf(w).queue.scroll(dx, dy); });
+  glfwSetCursorPosCallback(window, [](GLFWwindow* w, double x, double y) { inputOf(w).queue.cursor(x, y); });
+  glfwSetWindowFocusCallback(window, ImGui_ImplGlfw_WindowFocusCallback);
+  glfwSetCursorEnterCallback(window, ImGui_ImplGlfw_CursorEnterCallback);
+  glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) inputOf(w).dropped.emplace_back(paths[i]);
+  });
 }
 
 // The window's content scale (DPI), unless the user chose one.
@@ -100,6 +139,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   if (!haveDisplay()) return renderInsteadOfWindow(initialScene);
 
   GlfwSession glfw;
+  X11Watch& x11 = *glfw.x11;
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 4);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -115,13 +155,14 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       options.height > 0 ? options.height : (scriptedRun ? 720 : settingsLoad.settings.window.height);
   GLFWwindow* window = glfwCreateWindow(windowWidth, windowHeight, title.c_str(), nullptr, nullptr);
   if (!window) throw core::Error("could not open an OpenGL 4.3 window on this display");
+  x11.watch(window);  // from here on a window destroyed from outside ends the loop (x11_watch.h)
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
-  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplGlfw_InitForOpenGL(window, false);
   ImGui_ImplOpenGL3_Init("#version 430");
 
   ExplorerState state;
@@ -138,9 +179,10 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   const std::string glRenderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   if (glRenderer.find("llvmpipe") != std::string::npos || glRenderer.find("softpipe") != std::string::npos)
     state.renderScale = 0.5f;
-  std::vector<std::string> dropped;
-  glfwSetWindowUserPointer(window, &dropped);
-  glfwSetDropCallback(window, onDrop);
+  WindowInput input;
+  glfwSetWindowUserPointer(window, &input);
+  installInputCallbacks(window);
+  std::vector<std::string>& dropped = input.dropped;
   {
     ExplorerSession session;
     PresetLibrary presets(findShippedPresetFolder(), state.settings.presetFolder());
@@ -156,15 +198,21 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     auto lastFrame = std::chrono::steady_clock::now();
 
     // The canonical ImGui loop: events, the panels (which only edit state and ask for things),
-    // the view under them (app::LiveView), the panels' drawing on top, swap.
+    // the view under them (app::LiveView), the panels' drawing on top, swap. Once the window is
+    // gone (x11.windowGone()), what GLFW read from it is garbage: each read is checked before use.
     while (!glfwWindowShouldClose(window)) {
+      x11.rearm();
       glfwPollEvents();
-      if (glfwGetWindowAttrib(window, GLFW_ICONIFIED)) {
+      const bool iconified = glfwGetWindowAttrib(window, GLFW_ICONIFIED) != 0;
+      if (x11.windowGone()) break;
+      if (iconified) {
         glfwWaitEventsTimeout(0.1);
         continue;
       }
       ImGui_ImplOpenGL3_NewFrame();
-      ImGui_ImplGlfw_NewFrame();
+      ImGui_ImplGlfw_NewFrame();  // display size, time, pointer; then the queued input over it
+      if (x11.windowGone()) break;
+      input.queue.applyTo(ImGui::GetIO());
       ImGui::NewFrame();
       state.session = session.status();
       explorerUiFrame(state);
@@ -188,6 +236,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
 
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
+      if (x11.windowGone()) break;
       view.frame(state, width, height);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       ++frame;
@@ -201,6 +250,8 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
         glfwSetWindowShouldClose(window, GLFW_TRUE);
       }
       glfwSwapBuffers(window);
+      if (options.minFrameMs > 0)
+        std::this_thread::sleep_until(lastFrame + std::chrono::milliseconds(options.minFrameMs));
       const auto now = std::chrono::steady_clock::now();
       FrameMetrics& metrics = state.metrics;
       metrics.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame).count();
@@ -208,7 +259,13 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       if (frame > 2) metrics.worstFrameMs = std::max(metrics.worstFrameMs, metrics.frameMs);
       lastFrame = now;
     }
-    if (autosave) autosave->finishCleanly();  // a normal close: nothing to recover next time
+    if (autosave && x11.windowGone()) {
+      // Not the user's choice: the scene as it is now stays recoverable at the next start.
+      if (const std::string error = autosave->saveNow(state.scene); !error.empty())
+        std::cerr << "voxflame: " << error << "\n";
+    } else if (autosave) {
+      autosave->finishCleanly();  // a normal close: nothing to recover next time
+    }
     if (options.frames > 0) {
       const FrameMetrics& m = state.metrics;
       std::printf("explorer: %u frames, last %.1f ms, worst %.1f ms since the last edit, edit to frame %.0f ms\n",
@@ -216,10 +273,15 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     }
   }
   for (const auto& [path, texture] : state.thumbnailTextures) glDeleteTextures(1, &texture);
-  // The window's size for next time; a failure to save settings is only worth a line.
-  if (!glfwGetWindowAttrib(window, GLFW_ICONIFIED))
-    glfwGetWindowSize(window, &state.settings.window.width, &state.settings.window.height);
-  state.settings.window.maximized = glfwGetWindowAttrib(window, GLFW_MAXIMIZED) != 0;
+  // The window's size for next time (a window that is gone keeps last time's); a failure to save
+  // settings is only worth a line.
+  if (!x11.windowGone()) {
+    x11.rearm();
+    WindowGeometry geometry = state.settings.window;
+    if (!glfwGetWindowAttrib(window, GLFW_ICONIFIED)) glfwGetWindowSize(window, &geometry.width, &geometry.height);
+    geometry.maximized = glfwGetWindowAttrib(window, GLFW_MAXIMIZED) != 0;
+    if (!x11.windowGone()) state.settings.window = geometry;  // read while the window still existed
+  }
   if (!scripted) {
     try {
       saveSettings(state.settings);

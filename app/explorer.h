@@ -12,6 +12,7 @@ struct ExplorerOptions {
   int frames = 0;                        // frames showing the volume before the screenshot; 0: run until closed
   int width = 0, height = 0;             // window size in screen coordinates; 0: as last time (settings)
   float uiScale = 0.0f;                  // panel and font scale; 0: the monitor's content scale
+  int minFrameMs = 0;                    // each frame lasts at least this long: a slow machine, for tests
 };
 
 // Opens the window and runs until it is closed. With no display, says so and renders the scene

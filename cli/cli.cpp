@@ -103,6 +103,10 @@ Run defineExplorer(CLI::App& root) {
       ->check(within(0.5f, 4.0f));
   root.add_option("--width", options->width, "Window width (default: as last time)")->check(within(320, 16384));
   root.add_option("--height", options->height, "Window height (default: as last time)")->check(within(240, 16384));
+  root.add_option("--min-frame-ms", options->minFrameMs,
+                  "Make each frame last at least MS milliseconds, as on a slow machine (for testing input)")
+      ->type_name("MS")
+      ->check(within(0, 10'000));
   root.footer(
       "Without a subcommand voxflame opens the explorer on FILE: a preset, the preset stored in a PNG\n"
       "rendered by voxflame, the first flame of a flame file (imported as by `voxflame import`), or a mesh\n"

@@ -1,15 +1,25 @@
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <optional>
+#include <sstream>
 #include <thread>
+#include <vector>
 
+#include "autosave.h"
 #include "core/image_io.h"
 #include "test_support.h"
+
+extern char** environ;
 
 using voxflame::test::runVoxflame;
 using voxflame::test::TemporaryFolder;
@@ -36,19 +46,102 @@ class XvfbServer {
     for (int i = 0; i < 100 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display_)); ++i)
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
-  ~XvfbServer() {
+  ~XvfbServer() { stop(); }
+  void stop() {
     if (pid_ > 0) {
       kill(pid_, SIGTERM);
       waitpid(pid_, nullptr, 0);
+      pid_ = -1;
     }
   }
   bool running() const { return std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display_)); }
   std::string environment() const { return "DISPLAY=:" + std::to_string(display_); }
 
+  // Runs xdotool on this display (a shell-quoted argument string); its exit status. A window
+  // search waits at most two minutes.
+  int xdotool(const std::string& arguments) const {
+    return std::system(("env " + environment() + " timeout 120 xdotool " + arguments + " >/dev/null").c_str());
+  }
+
  private:
   int display_ = 99;
   pid_t pid_ = -1;
 };
+
+bool haveXdotool() {
+  return std::system("command -v xdotool >/dev/null") == 0;
+}
+
+// The explorer running in the background on a test's X server, as a user starts it (not a
+// scripted run: settings and autosaves are on), with its settings, state and caches in `folder`
+// and its output in folder/explorer.log.
+class BackgroundExplorer {
+ public:
+  BackgroundExplorer(const XvfbServer& server, const TemporaryFolder& folder, std::vector<std::string> arguments)
+      : log_(folder / "explorer.log") {
+    std::vector<std::string> environment = {server.environment(), "LIBGL_ALWAYS_SOFTWARE=1"};
+    for (const char* kind : {"CONFIG", "STATE", "DATA", "CACHE"})
+      environment.push_back(std::string("XDG_") + kind + "_HOME=" + (folder / kind).string());
+    for (char** variable = environ; *variable; ++variable) {
+      const std::string entry = *variable;
+      if (entry.rfind("DISPLAY=", 0) != 0 && entry.rfind("WAYLAND_DISPLAY=", 0) != 0 && entry.rfind("XDG_", 0) != 0 &&
+          entry.rfind("LIBGL_ALWAYS_SOFTWARE=", 0) != 0)
+        environment.push_back(entry);
+    }
+    arguments.insert(arguments.begin(), VOXFLAME_BINARY);
+    std::vector<char*> argv, envp;
+    for (std::string& argument : arguments) argv.push_back(argument.data());
+    for (std::string& entry : environment) envp.push_back(entry.data());
+    argv.push_back(nullptr);
+    envp.push_back(nullptr);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_addopen(&actions, 1, log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    posix_spawn_file_actions_adddup2(&actions, 1, 2);
+    posix_spawn_file_actions_addchdir_np(&actions, folder.path().c_str());
+    if (posix_spawn(&pid_, VOXFLAME_BINARY, &actions, nullptr, argv.data(), envp.data()) != 0) pid_ = -1;
+    posix_spawn_file_actions_destroy(&actions);
+  }
+  ~BackgroundExplorer() {
+    if (pid_ > 0) {
+      kill(pid_, SIGKILL);
+      waitpid(pid_, nullptr, 0);
+    }
+  }
+  bool started() const { return pid_ > 0 || status_; }
+
+  // Waits up to `limit` for the explorer to end: its exit status (128 + N for signal N), or none
+  // while it is still running.
+  std::optional<int> exitStatus(std::chrono::seconds limit = std::chrono::seconds(120)) {
+    const auto deadline = std::chrono::steady_clock::now() + limit;
+    while (pid_ > 0) {
+      int status = 0;
+      if (waitpid(pid_, &status, WNOHANG) == pid_) {
+        pid_ = -1;
+        status_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+      } else if (std::chrono::steady_clock::now() > deadline) {
+        break;
+      } else {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    }
+    return status_;
+  }
+  std::string output() const {
+    std::ifstream in(log_);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
+  }
+
+ private:
+  std::filesystem::path log_;
+  pid_t pid_ = -1;
+  std::optional<int> status_;
+};
+
+// The xdotool arguments that find the explorer's window once it is shown.
+constexpr const char* kFindWindow = "search --sync --onlyvisible --name voxflame";
 
 }  // namespace
 
@@ -79,4 +172,62 @@ TEST(Explorer, WindowUnderXvfbShowsPanelAndLitVolume) {
       lit += (p[0] + p[1] + p[2] > 0.4f);
     }
   EXPECT_GT(lit, 2000) << "the volume is dark in the screenshot";
+}
+
+// ImGui 1.86 sees a key only if it is still held when a frame starts; a tap shorter than a frame
+// used to be lost. xdotool presses Ctrl and Q and releases them within a few milliseconds (no
+// delay between its chained commands), while each frame lasts at least 400 ms.
+TEST(Explorer, CtrlQTappedFasterThanAFrameStillQuits) {
+  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
+  XvfbServer server;
+  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
+  TemporaryFolder folder;
+  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "400", "--width", "640", "--height", "480"});
+  ASSERT_TRUE(explorer.started());
+  ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync keydown ctrl+q keyup ctrl+q"), 0)
+      << explorer.output();
+  const std::optional<int> status = explorer.exitStatus();
+  ASSERT_TRUE(status) << "the explorer did not quit on a short Ctrl+Q tap\n" << explorer.output();
+  EXPECT_EQ(*status, 0) << explorer.output();
+  // The user quit: nothing is left to recover.
+  EXPECT_TRUE(voxflame::app::findRecoverable(folder / "STATE" / "voxflame" / "autosave").empty());
+}
+
+// `xdotool windowclose` destroys the window under the explorer (XDestroyWindow); Xlib's default
+// handler used to print "X Error" and exit(1). The scene must survive, as an autosave the next
+// start offers back, since the user did not choose to quit.
+TEST(Explorer, WindowDestroyedFromOutsideExitsCleanlyWithTheSceneAutosaved) {
+  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
+  XvfbServer server;
+  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
+  TemporaryFolder folder;
+  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "100", "--width", "640", "--height", "480"});
+  ASSERT_TRUE(explorer.started());
+  ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowclose"), 0) << explorer.output();
+  const std::optional<int> status = explorer.exitStatus();
+  ASSERT_TRUE(status) << "the explorer kept running without its window\n" << explorer.output();
+  EXPECT_EQ(*status, 0) << explorer.output();
+  EXPECT_EQ(explorer.output().find("X Error"), std::string::npos) << explorer.output();
+  const auto recoverable = voxflame::app::findRecoverable(folder / "STATE" / "voxflame" / "autosave");
+  ASSERT_EQ(recoverable.size(), 1u) << explorer.output();
+  EXPECT_TRUE(recoverable.front().scene) << recoverable.front().error;
+}
+
+// The X server going away takes the connection with it: Xlib's default IO error handler used to
+// exit(1). The explorer ends with status 0 and the scene autosaved, as when only the window goes.
+TEST(Explorer, LostXServerExitsCleanlyWithTheSceneAutosaved) {
+  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
+  XvfbServer server;
+  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
+  TemporaryFolder folder;
+  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "100", "--width", "640", "--height", "480"});
+  ASSERT_TRUE(explorer.started());
+  ASSERT_EQ(server.xdotool(kFindWindow), 0) << explorer.output();
+  server.stop();
+  const std::optional<int> status = explorer.exitStatus();
+  ASSERT_TRUE(status) << "the explorer kept running without its X server\n" << explorer.output();
+  EXPECT_EQ(*status, 0) << explorer.output();
+  const auto recoverable = voxflame::app::findRecoverable(folder / "STATE" / "voxflame" / "autosave");
+  ASSERT_EQ(recoverable.size(), 1u) << explorer.output();
+  EXPECT_TRUE(recoverable.front().scene) << recoverable.front().error;
 }
