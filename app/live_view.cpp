@@ -86,6 +86,12 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
   LiveFrame result;
   width = std::max(1, width);
   height = std::max(1, height);
+  const auto frameStart = std::chrono::steady_clock::now();
+  if (lastFrameStart_)
+    budget_.measured(std::chrono::duration<double, std::milli>(frameStart - *lastFrameStart_).count(), lastMarchScale_,
+                     lastMarched_);
+  lastFrameStart_ = frameStart;
+  lastMarched_ = false;
   if (session_.postIfPatternChanged(state.scene)) {
     result.patternPosted = true;
     waitingPost_ = session_.status().requestedGeneration;
@@ -111,21 +117,31 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
         core::orbitCamera(state.scene.camera, grid->box(), static_cast<double>(width) / static_cast<double>(height));
     settings.tone = state.scene.tone;
     settings.render = state.scene.render;
-    target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * state.renderScale)),
-                   std::max(1, static_cast<int>(static_cast<float>(height) * state.renderScale)));
     // Anything that changes what a ray sees restarts the sample average (the schema's "view"
     // class: camera, opacity, mesh display, lighting ...); tone alone only changes the resolve and
     // layers change the volume, which restarts it when the new generation arrives.
-    if (!lastView_ || core::diff(*lastView_, state.scene).view() || width != lastWidth_ || height != lastHeight_ ||
-        state.renderScale != lastRenderScale_) {
+    const bool viewChanged =
+        !lastView_ || core::diff(*lastView_, state.scene).view() || width != lastWidth_ || height != lastHeight_;
+    // While the view or the pattern moves, fewer pixels keep the frame within its budget; a still
+    // view refines at the scale the user chose.
+    budget_.setBudget(state.frameBudgetMs);
+    const float scale = budget_.next(viewChanged || result.patternPosted, state.renderScale);
+    state.metrics.marchScale = scale;
+    target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * scale)),
+                   std::max(1, static_cast<int>(static_cast<float>(height) * scale)));
+    if (viewChanged || scale != lastRenderScale_) {
       target_.samples = 0;
       renderer_.drawMesh(target_, settings);
       lastView_ = state.scene;
       lastWidth_ = width;
       lastHeight_ = height;
-      lastRenderScale_ = state.renderScale;
+      lastRenderScale_ = scale;
     }
-    if (target_.samples < kMaxSamples) renderer_.march(target_, settings, static_cast<int>(frame_));
+    if (target_.samples < kMaxSamples) {
+      renderer_.march(target_, settings, static_cast<int>(frame_));
+      lastMarched_ = true;
+      lastMarchScale_ = scale;
+    }
     state.samples = target_.samples;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     renderer_.resolve(target_, settings, glm::ivec4(0, 0, width, height), false);

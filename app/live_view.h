@@ -19,6 +19,7 @@
 #include "core/shadow_volume.h"
 #include "explorer_session.h"
 #include "explorer_ui.h"
+#include "frame_budget.h"
 #include "gl/volume_renderer.h"
 
 namespace voxflame::app {
@@ -41,8 +42,10 @@ class LiveView {
   LiveView& operator=(const LiveView&) = delete;
 
   // One frame at width × height pixels into `framebuffer` (0: the window's). Reads state.scene,
-  // state.renderScale and state.requests; writes state.samples, state.metrics (upload time, edit
-  // to frame), state.notice and state.presetMessage. Never waits on the session or a job.
+  // state.renderScale, state.frameBudgetMs and state.requests; writes state.samples,
+  // state.metrics (upload time, edit to frame, march scale), state.notice and
+  // state.presetMessage. Never waits on the session or a job. The time from one call to the next
+  // is taken as the frame's cost, so call it once per displayed frame.
   LiveFrame frame(ExplorerState& state, int width, int height, unsigned framebuffer = 0);
 
   bool hasVolume() const { return renderer_.hasVolume(); }
@@ -82,6 +85,12 @@ class LiveView {
   std::optional<core::Scene> lastView_;
   int lastWidth_ = 0, lastHeight_ = 0;
   float lastRenderScale_ = 0.0f;
+
+  // The march scale follows the frame budget while something changes.
+  FrameBudget budget_;
+  std::optional<std::chrono::steady_clock::time_point> lastFrameStart_;
+  float lastMarchScale_ = 0.0f;
+  bool lastMarched_ = false;
 
   // Edit-to-frame timing: the post being waited for and when it was made.
   std::uint64_t waitingPost_ = 0;
