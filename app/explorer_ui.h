@@ -52,8 +52,9 @@ struct FrameMetrics {
   double uploadMs = 0.0;          // GL upload time spent in the last frame
   double changeToFrameMs = -1.0;  // the last pattern change until the first frame showing it
   double worstChangeToFrameMs = 0.0;
-  int changeToFrameFrames = 0;  // ... in frames
-  float marchScale = 1.0f;      // fraction of the window's pixels the last frame marched (frame budget)
+  int changeToFrameFrames = 0;   // ... in frames
+  double changeToFullMs = -1.0;  // the last pattern change until the full grid (not the proxy) shows it
+  float marchScale = 1.0f;       // fraction of the window's pixels the last frame marched (frame budget)
 };
 
 struct ExplorerState {

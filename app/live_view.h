@@ -30,6 +30,7 @@ struct LiveFrame {
   bool newVolumeShown = false;  // this frame finished uploading a new volume
   std::uint64_t shownPost = 0;  // ... and the session post whose pattern it shows (0: an older one)
   bool patternPosted = false;   // the scene's pattern changed and was posted this frame
+  bool fullShown = false;       // the volume drawn is the full grid (else the session's coarse proxy)
 };
 
 class LiveView {
@@ -71,15 +72,26 @@ class LiveView {
   bool uploadInProgress_ = false;
   std::uint64_t uploadingPost_ = 0;
   bool newVolumeShown_ = false;
-  std::uint64_t shownPost_ = 0;
+  std::uint64_t shownPost_ = 0;  // the post of the volume drawn (main grid or proxy)
+  // The main grid: the post and generation of its last complete volume, and whether a volume of
+  // another generation is streaming into it.
+  std::uint64_t mainPost_ = 0, mainGeneration_ = 0;
+  bool mainMixed_ = false;
+  bool mainMixedShown() const { return mainMixed_ && renderer_.marchedSource() == gl::VolumeRenderer::Source::Main; }
+  // The proxy: shown after an edit until the main grid has caught up with it.
+  std::shared_ptr<core::PackedVolume> proxyShown_ = std::make_shared<core::PackedVolume>();
+  std::shared_ptr<core::PackedVolume> proxySpare_ = std::make_shared<core::PackedVolume>();
+  std::uint64_t proxyPost_ = 0;
 
   BackgroundJob<core::ShadowVolume> shadowJob_;
   struct ShadowInputs {
+    bool proxy = false;
     std::uint64_t volumeVersion = 0;
     double azimuthDeg = 0.0, elevationDeg = 0.0;
     bool operator==(const ShadowInputs&) const = default;
   };
   std::optional<ShadowInputs> shadowShown_;  // what the uploaded (or computing) shadow was made from
+  glm::ivec3 shadowSourceSize_{0};           // ... and the size of that volume's grid
 
   // What a ray sees besides the volume: when it changes, the sample average starts over.
   std::optional<core::Scene> lastView_;
@@ -94,6 +106,7 @@ class LiveView {
 
   // Edit-to-frame timing: the post being waited for and when it was made.
   std::uint64_t waitingPost_ = 0;
+  std::uint64_t waitingFullPost_ = 0;  // the same post, until the full grid shows it
   std::chrono::steady_clock::time_point waitingSince_;
   std::uint32_t waitingSinceFrame_ = 0;
   std::uint32_t frame_ = 0;
