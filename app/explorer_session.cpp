@@ -1,5 +1,6 @@
 #include "explorer_session.h"
 
+#include <algorithm>
 #include <new>
 #include <utility>
 
@@ -28,17 +29,35 @@ std::string gridText(const core::GridGeometry& grid) {
 
 }  // namespace
 
+struct ExplorerSession::Proxy {
+  // Snapshots of the proxy come quickly: each costs well under a millisecond at 64³.
+  static constexpr std::chrono::milliseconds kInterval{15};
+  Proxy(std::shared_ptr<const core::InsideMask> insideMask, int threads)
+      : mask(std::move(insideMask)), accumulator(mask, threads), publisher(accumulator, kInterval) {
+    const auto inside = std::count(mask->inside.begin(), mask->inside.end(), std::uint8_t{1});
+    accumulator.setTargetPoints(
+        static_cast<std::uint64_t>(kProxyPointsPerVoxel * static_cast<double>(std::max<std::ptrdiff_t>(inside, 1))));
+  }
+  std::shared_ptr<const core::InsideMask> mask;
+  core::Accumulator accumulator;
+  core::SnapshotPublisher publisher;
+  std::uint64_t patternGeneration = 0;
+  std::uint64_t patternPost = 0;
+};
+
 struct ExplorerSession::Engine {
-  Engine(std::string key, std::shared_ptr<const core::InsideMask> insideMask, int threads,
-         std::chrono::milliseconds interval)
+  Engine(std::string key, std::shared_ptr<const core::InsideMask> insideMask,
+         std::shared_ptr<const core::InsideMask> proxyMask, int threads, std::chrono::milliseconds interval)
       : shapeKey(std::move(key)),
         mask(std::move(insideMask)),
+        proxy(proxyMask ? std::make_unique<Proxy>(std::move(proxyMask), threads) : nullptr),
         accumulator(mask, threads),
         publisher(accumulator, interval) {
     accumulator.setTargetPoints(kExplorerTargetPoints);
   }
   std::string shapeKey;
   std::shared_ptr<const core::InsideMask> mask;
+  std::unique_ptr<Proxy> proxy;  // null for grids no larger than a proxy
   core::Accumulator accumulator;
   core::SnapshotPublisher publisher;    // after the accumulator it reads, so it is destroyed first
   std::uint64_t patternGeneration = 0;  // the Accumulator generation of the latest applied post
@@ -77,6 +96,14 @@ bool ExplorerSession::takeVolumeIfNewer(core::PackedVolume& out, std::uint64_t* 
   std::lock_guard lock(mutex_);  // held for a swap at most: the publisher never waits either
   if (!engine_ || !engine_->publisher.takeIfNewer(out)) return false;
   if (reflectsPost) *reflectsPost = out.generation == engine_->patternGeneration ? engine_->patternPost : 0;
+  return true;
+}
+
+bool ExplorerSession::takeProxyIfNewer(core::PackedVolume& out, std::uint64_t* reflectsPost) {
+  std::lock_guard lock(mutex_);
+  if (!engine_ || !engine_->proxy || !engine_->proxy->publisher.takeIfNewer(out)) return false;
+  if (reflectsPost)
+    *reflectsPost = out.generation == engine_->proxy->patternGeneration ? engine_->proxy->patternPost : 0;
   return true;
 }
 
@@ -156,6 +183,12 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
           setStage("building the inside mask on a " + gridText(grid) + " grid …");
           auto mask = std::make_shared<const core::InsideMask>(
               core::cachedInsideMask(mesh, grid, core::MaskMethod::WindingNumber, core::defaultMaskCacheFolder()));
+          std::shared_ptr<const core::InsideMask> proxyMask;
+          if (std::max({grid.size.x, grid.size.y, grid.size.z}) > kProxyAbove) {
+            const core::GridGeometry proxyGrid = core::gridOverBox(mesh.bounds(), kProxyResolution);
+            proxyMask = std::make_shared<const core::InsideMask>(core::cachedInsideMask(
+                mesh, proxyGrid, core::MaskMethod::WindingNumber, core::defaultMaskCacheFolder()));
+          }
           if (stop.stop_requested()) return;
           // The old grid goes before the new one is allocated, so a switch never needs both.
           setStage("allocating the " + gridText(grid) + " grid …");
@@ -165,7 +198,8 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
             old = std::exchange(engine_, nullptr);
           }
           old.reset();
-          auto engine = std::make_unique<Engine>(key, std::move(mask), threads_, snapshotInterval_);
+          auto engine =
+              std::make_unique<Engine>(key, std::move(mask), std::move(proxyMask), threads_, snapshotInterval_);
           std::lock_guard lock(mutex_);
           engine_ = std::move(engine);
           newMesh_ = std::move(mesh);
@@ -180,6 +214,15 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
         current = engine_.get();
       }
       if (current) {
+        // The proxy first: its grid clears in no time and its burst runs while the large grid is
+        // cleared, so the edit is on screen long before the large grid has anything to show.
+        if (Proxy* proxy = current->proxy.get()) {
+          proxy->accumulator.setPattern(scene.layers, scene.seed);
+          proxy->publisher.requestNow();
+          std::lock_guard lock(mutex_);
+          proxy->patternGeneration = proxy->accumulator.generation();
+          proxy->patternPost = post;
+        }
         current->accumulator.setPattern(scene.layers, scene.seed);
         current->publisher.requestNow();
         std::lock_guard lock(mutex_);

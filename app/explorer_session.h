@@ -2,6 +2,11 @@
 // for the scene being edited, with every slow step (loading a mesh, building a mask, clearing a
 // large grid for a new generation) done on a control thread of its own. The UI thread only posts
 // the newest scene and takes what is ready, so a frame never waits on refinement. No GL here.
+//
+// Grids larger than a proxy have a second, small Accumulator (longest side kProxyResolution, its
+// own mask of the same mesh) that runs a short burst of each new pattern before the large grid
+// is even cleared: its volume is ready within a frame or two, so an edit shows at once, coarse,
+// until the large grid has caught up.
 #pragma once
 
 #include <chrono>
@@ -57,6 +62,16 @@ class ExplorerSession {
   // `reflectsPost` gets the number of the post (counting from 1) whose pattern the volume shows,
   // or 0 when it still shows an older one.
   bool takeVolumeIfNewer(core::PackedVolume& out, std::uint64_t* reflectsPost = nullptr);
+  // The same for the proxy's volume; false when the shape has no proxy (a small grid).
+  bool takeProxyIfNewer(core::PackedVolume& out, std::uint64_t* reflectsPost = nullptr);
+
+  // The proxy grid's longest side, and the grids that get one: those whose longest side is more
+  // than half as long again (smaller ones fill and upload about as fast as the proxy).
+  static constexpr int kProxyResolution = 64;
+  static constexpr int kProxyAbove = kProxyResolution * 3 / 2;
+  // A proxy burst stops at this many points per voxel inside the mesh: enough for a smooth coarse
+  // picture, few enough to take tens of milliseconds.
+  static constexpr double kProxyPointsPerVoxel = 24.0;
   // The mesh of a shape that became current since the last call (for the renderer), else empty.
   std::optional<core::TriangleMesh> takeNewMesh();
   // The grid of the current shape (for the camera), or empty before the first shape is ready.
@@ -68,6 +83,7 @@ class ExplorerSession {
 
  private:
   struct Engine;  // the shape plus the Accumulator and publisher running on it
+  struct Proxy;   // the small Accumulator that runs each pattern first
   void controlLoop(std::stop_token stop);
 
   const int threads_;

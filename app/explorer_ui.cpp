@@ -1031,7 +1031,10 @@ void renderSection(ExplorerState& state) {
     for (std::string_view key : {"light_azimuth_deg", "light_elevation_deg", "light_strength"})
       fieldWidget(state, "render/", render, core::renderFields(), key);
   ImGui::SliderFloat("preview scale", &state.renderScale, 0.25f, 1.0f, "%.2f");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("fraction of the window's pixels marched while you edit");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("fraction of the window's pixels marched while the view is still");
+  ImGui::SliderFloat("frame budget", &state.frameBudgetMs, 8.0f, 200.0f, "%.0f ms");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("while you edit or orbit, fewer pixels are marched to keep frames this quick");
 }
 
 void cameraSection(ExplorerState& state) {

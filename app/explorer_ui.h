@@ -52,14 +52,19 @@ struct FrameMetrics {
   double uploadMs = 0.0;          // GL upload time spent in the last frame
   double changeToFrameMs = -1.0;  // the last pattern change until the first frame showing it
   double worstChangeToFrameMs = 0.0;
-  int changeToFrameFrames = 0;  // ... in frames
+  int changeToFrameFrames = 0;   // ... in frames
+  double changeToFullMs = -1.0;  // the last pattern change until the full grid (not the proxy) shows it
+  float marchScale = 1.0f;       // fraction of the window's pixels the last frame marched (frame budget)
 };
 
 struct ExplorerState {
   core::Scene scene;
   core::CameraSettings initialCamera;
-  float renderScale = 1.0f;  // fraction of the window's pixels the volume is marched at
-  float uiScale = 1.0f;      // panel and font scale (DPI), as given to applyUiScale
+  float renderScale = 1.0f;  // fraction of the window's pixels a still view is refined at
+  // While the view or pattern changes, the march scale drops below renderScale to keep frames
+  // within this many milliseconds (app::FrameBudget).
+  float frameBudgetMs = 33.0f;
+  float uiScale = 1.0f;  // panel and font scale (DPI), as given to applyUiScale
   int samples = 0;
   FrameMetrics metrics;
   SessionStatus session;  // copied from the session once per frame

@@ -19,6 +19,8 @@ namespace {
 constexpr int kShadowDownsample = 2;
 // Keeps a frame's share of a volume upload to a few milliseconds.
 constexpr std::size_t kUploadBytesPerFrame = 48u << 20;
+// A proxy is shown once it holds this many points per voxel inside the mesh.
+constexpr double kMinProxyPointsPerVoxel = 2.0;
 
 // The framebuffer's picture as a thumbnail (rows top to bottom, opaque).
 Thumbnail readThumbnail(unsigned framebuffer, int width, int height) {
@@ -41,6 +43,22 @@ LiveView::LiveView(ExplorerSession& session, PresetLibrary* presets, ExportJob* 
 LiveView::~LiveView() = default;
 
 void LiveView::takeVolume() {
+  newVolumeShown_ = false;
+  // The proxy of a newer post than the main grid shows goes up whole (a few megabytes) and is
+  // shown until the main grid has caught up. One with hardly any points yet would be all noise.
+  if (proxySpare_.use_count() > 1) proxySpare_ = std::make_shared<core::PackedVolume>();
+  std::uint64_t proxyReflects = 0;
+  if (session_.takeProxyIfNewer(*proxySpare_, &proxyReflects) && proxyReflects > mainPost_ &&
+      static_cast<double>(proxySpare_->points) >= kMinProxyPointsPerVoxel * proxySpare_->insideVoxels) {
+    std::swap(proxySpare_, proxyShown_);
+    renderer_.uploadProxy(*proxyShown_);
+    proxyPost_ = proxyReflects;
+    renderer_.marchFrom(gl::VolumeRenderer::Source::Proxy);
+    newVolumeShown_ = true;
+    shownPost_ = proxyPost_;
+    target_.samples = 0;
+  }
+
   // A spare still held by a shadow job is left to it; the next volume goes into a fresh one.
   if (spare_.use_count() > 1) spare_ = std::make_shared<core::PackedVolume>();
   std::uint64_t reflects = 0;
@@ -50,35 +68,58 @@ void LiveView::takeVolume() {
     uploadInProgress_ = true;
     uploadingPost_ = reflects;
   }
-  newVolumeShown_ = false;
   if (uploadInProgress_ && renderer_.continueUpload(kUploadBytesPerFrame)) {
     uploadInProgress_ = false;
-    newVolumeShown_ = true;
-    shownPost_ = uploadingPost_;
-    target_.samples = 0;  // new content: start refining the image afresh
+    mainGeneration_ = shown_->generation;
+    // 0 means an older post than the newest applied one: older than any proxy shown since.
+    if (uploadingPost_ != 0) mainPost_ = uploadingPost_;
+    // The main grid takes over once it shows the proxy's post (or a later one) with at least as
+    // many points: with voxels no larger than pixels the picture's noise depends on the points
+    // per pixel, so it is then as smooth as the proxy and sharper.
+    const bool proxyAhead = renderer_.hasVolume(gl::VolumeRenderer::Source::Proxy) &&
+                            (uploadingPost_ == 0 ? proxyPost_ > mainPost_ : proxyPost_ > uploadingPost_);
+    const bool caughtUp = uploadingPost_ != 0 && uploadingPost_ >= proxyPost_ &&
+                          (uploadingPost_ > proxyPost_ || !proxyShown_ || shown_->points >= proxyShown_->points);
+    if (!proxyAhead && (caughtUp || proxyPost_ == 0 || uploadingPost_ == 0)) {
+      renderer_.marchFrom(gl::VolumeRenderer::Source::Main);
+      newVolumeShown_ = true;
+      shownPost_ = uploadingPost_;
+      target_.samples = 0;  // new content: start refining the image afresh
+    }
   }
+  // While a volume of another pattern streams into the main grid, its slabs are of two patterns.
+  mainMixed_ = uploadInProgress_ && shown_->generation != mainGeneration_;
 }
 
 void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
-  // The shadow volume follows the volume and the light; it is computed on a job of its own (tens
-  // of milliseconds at 256³) and uploaded when ready.
+  // The shadow volume follows the volume shown and the light; it is computed on a job of its own
+  // (tens of milliseconds at 256³) and uploaded when ready. It is looked up by position in the
+  // grid box, so one made from the proxy lights the main grid well enough until its own is ready.
   if (shadowJob_.ready()) {
     try {
-      renderer_.uploadShadow(*shadowJob_.take(), kShadowDownsample);
+      renderer_.uploadShadow(*shadowJob_.take(), shadowShown_ && shadowShown_->proxy ? 1 : kShadowDownsample,
+                             shadowSourceSize_);
       target_.samples = 0;
     } catch (const core::Error&) {
       shadowShown_.reset();  // try again next frame
     }
   }
-  const ShadowInputs wanted{renderer_.uploadedVersion(), render.lightAzimuthDeg, render.lightElevationDeg};
-  if (render.lighting && renderer_.hasVolume() && !uploadInProgress_ && !shadowJob_.busy() && shadowShown_ != wanted) {
+  const bool proxy = renderer_.marchedSource() == gl::VolumeRenderer::Source::Proxy;
+  const std::shared_ptr<core::PackedVolume>& volume = proxy ? proxyShown_ : shown_;
+  const ShadowInputs wanted{proxy, proxy ? volume->version : renderer_.uploadedVersion(), render.lightAzimuthDeg,
+                            render.lightElevationDeg};
+  if (render.lighting && renderer_.hasVolume() && (proxy || !uploadInProgress_) && !shadowJob_.busy() &&
+      shadowShown_ != wanted) {
     const glm::dvec3 light = core::lightDirection(render.lightAzimuthDeg, render.lightElevationDeg);
-    shadowJob_.start([volume = shown_, light](std::stop_token) {
+    // The proxy is small: full-resolution shadows cost little there.
+    const int downsample = proxy ? 1 : kShadowDownsample;
+    shadowJob_.start([volume, light, downsample](std::stop_token) {
       core::ShadowVolume shadow;
-      core::computeShadowVolume(*volume, light, core::kAbsorptionPerDensity, kShadowDownsample, shadow);
+      core::computeShadowVolume(*volume, light, core::kAbsorptionPerDensity, downsample, shadow);
       return shadow;
     });
     shadowShown_ = wanted;
+    shadowSourceSize_ = volume->geometry.size;
   }
 }
 
@@ -86,9 +127,16 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
   LiveFrame result;
   width = std::max(1, width);
   height = std::max(1, height);
+  const auto frameStart = std::chrono::steady_clock::now();
+  if (lastFrameStart_)
+    budget_.measured(std::chrono::duration<double, std::milli>(frameStart - *lastFrameStart_).count(), lastMarchScale_,
+                     lastMarched_);
+  lastFrameStart_ = frameStart;
+  lastMarched_ = false;
   if (session_.postIfPatternChanged(state.scene)) {
     result.patternPosted = true;
     waitingPost_ = session_.status().requestedGeneration;
+    waitingFullPost_ = waitingPost_;
     waitingSince_ = std::chrono::steady_clock::now();
     waitingSinceFrame_ = frame_;
     state.metrics.worstFrameMs = 0.0;
@@ -111,21 +159,33 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
         core::orbitCamera(state.scene.camera, grid->box(), static_cast<double>(width) / static_cast<double>(height));
     settings.tone = state.scene.tone;
     settings.render = state.scene.render;
-    target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * state.renderScale)),
-                   std::max(1, static_cast<int>(static_cast<float>(height) * state.renderScale)));
     // Anything that changes what a ray sees restarts the sample average (the schema's "view"
     // class: camera, opacity, mesh display, lighting ...); tone alone only changes the resolve and
     // layers change the volume, which restarts it when the new generation arrives.
-    if (!lastView_ || core::diff(*lastView_, state.scene).view() || width != lastWidth_ || height != lastHeight_ ||
-        state.renderScale != lastRenderScale_) {
+    const bool viewChanged =
+        !lastView_ || core::diff(*lastView_, state.scene).view() || width != lastWidth_ || height != lastHeight_;
+    // While the view or the pattern moves, fewer pixels keep the frame within its budget; a still
+    // view refines at the scale the user chose.
+    budget_.setBudget(state.frameBudgetMs);
+    const float scale = budget_.next(viewChanged || result.patternPosted, state.renderScale);
+    state.metrics.marchScale = scale;
+    target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * scale)),
+                   std::max(1, static_cast<int>(static_cast<float>(height) * scale)));
+    if (viewChanged || scale != lastRenderScale_) {
       target_.samples = 0;
       renderer_.drawMesh(target_, settings);
       lastView_ = state.scene;
       lastWidth_ = width;
       lastHeight_ = height;
-      lastRenderScale_ = state.renderScale;
+      lastRenderScale_ = scale;
     }
-    if (target_.samples < kMaxSamples) renderer_.march(target_, settings, static_cast<int>(frame_));
+    // A main grid half of one pattern and half of another is not drawn: the last picture stays
+    // until it is whole, unless the view moves.
+    if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged)) {
+      renderer_.march(target_, settings, static_cast<int>(frame_));
+      lastMarched_ = true;
+      lastMarchScale_ = scale;
+    }
     state.samples = target_.samples;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     renderer_.resolve(target_, settings, glm::ivec4(0, 0, width, height), false);
@@ -139,15 +199,20 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
   // thumbnail shows the view alone.
   serveRequests(state, width, height, framebuffer);
 
+  result.fullShown = renderer_.hasVolume() && renderer_.marchedSource() == gl::VolumeRenderer::Source::Main;
   if (newVolumeShown_) {
     result.newVolumeShown = true;
     result.shownPost = shownPost_;
+    FrameMetrics& metrics = state.metrics;
     if (waitingPost_ != 0 && shownPost_ == waitingPost_) {
-      FrameMetrics& metrics = state.metrics;
       metrics.changeToFrameMs = millisecondsSince(waitingSince_);
       metrics.changeToFrameFrames = static_cast<int>(frame_ - waitingSinceFrame_) + 1;
       metrics.worstChangeToFrameMs = std::max(metrics.worstChangeToFrameMs, metrics.changeToFrameMs);
       waitingPost_ = 0;
+    }
+    if (waitingFullPost_ != 0 && result.fullShown && shownPost_ == waitingFullPost_) {
+      metrics.changeToFullMs = millisecondsSince(waitingSince_);
+      waitingFullPost_ = 0;
     }
   }
   ++frame_;

@@ -19,6 +19,7 @@
 #include "core/shadow_volume.h"
 #include "explorer_session.h"
 #include "explorer_ui.h"
+#include "frame_budget.h"
 #include "gl/volume_renderer.h"
 
 namespace voxflame::app {
@@ -29,6 +30,7 @@ struct LiveFrame {
   bool newVolumeShown = false;  // this frame finished uploading a new volume
   std::uint64_t shownPost = 0;  // ... and the session post whose pattern it shows (0: an older one)
   bool patternPosted = false;   // the scene's pattern changed and was posted this frame
+  bool fullShown = false;       // the volume drawn is the full grid (else the session's coarse proxy)
 };
 
 class LiveView {
@@ -41,8 +43,10 @@ class LiveView {
   LiveView& operator=(const LiveView&) = delete;
 
   // One frame at width × height pixels into `framebuffer` (0: the window's). Reads state.scene,
-  // state.renderScale and state.requests; writes state.samples, state.metrics (upload time, edit
-  // to frame), state.notice and state.presetMessage. Never waits on the session or a job.
+  // state.renderScale, state.frameBudgetMs and state.requests; writes state.samples,
+  // state.metrics (upload time, edit to frame, march scale), state.notice and
+  // state.presetMessage. Never waits on the session or a job. The time from one call to the next
+  // is taken as the frame's cost, so call it once per displayed frame.
   LiveFrame frame(ExplorerState& state, int width, int height, unsigned framebuffer = 0);
 
   bool hasVolume() const { return renderer_.hasVolume(); }
@@ -68,23 +72,41 @@ class LiveView {
   bool uploadInProgress_ = false;
   std::uint64_t uploadingPost_ = 0;
   bool newVolumeShown_ = false;
-  std::uint64_t shownPost_ = 0;
+  std::uint64_t shownPost_ = 0;  // the post of the volume drawn (main grid or proxy)
+  // The main grid: the post and generation of its last complete volume, and whether a volume of
+  // another generation is streaming into it.
+  std::uint64_t mainPost_ = 0, mainGeneration_ = 0;
+  bool mainMixed_ = false;
+  bool mainMixedShown() const { return mainMixed_ && renderer_.marchedSource() == gl::VolumeRenderer::Source::Main; }
+  // The proxy: shown after an edit until the main grid has caught up with it.
+  std::shared_ptr<core::PackedVolume> proxyShown_ = std::make_shared<core::PackedVolume>();
+  std::shared_ptr<core::PackedVolume> proxySpare_ = std::make_shared<core::PackedVolume>();
+  std::uint64_t proxyPost_ = 0;
 
   BackgroundJob<core::ShadowVolume> shadowJob_;
   struct ShadowInputs {
+    bool proxy = false;
     std::uint64_t volumeVersion = 0;
     double azimuthDeg = 0.0, elevationDeg = 0.0;
     bool operator==(const ShadowInputs&) const = default;
   };
   std::optional<ShadowInputs> shadowShown_;  // what the uploaded (or computing) shadow was made from
+  glm::ivec3 shadowSourceSize_{0};           // ... and the size of that volume's grid
 
   // What a ray sees besides the volume: when it changes, the sample average starts over.
   std::optional<core::Scene> lastView_;
   int lastWidth_ = 0, lastHeight_ = 0;
   float lastRenderScale_ = 0.0f;
 
+  // The march scale follows the frame budget while something changes.
+  FrameBudget budget_;
+  std::optional<std::chrono::steady_clock::time_point> lastFrameStart_;
+  float lastMarchScale_ = 0.0f;
+  bool lastMarched_ = false;
+
   // Edit-to-frame timing: the post being waited for and when it was made.
   std::uint64_t waitingPost_ = 0;
+  std::uint64_t waitingFullPost_ = 0;  // the same post, until the full grid shows it
   std::chrono::steady_clock::time_point waitingSince_;
   std::uint32_t waitingSinceFrame_ = 0;
   std::uint32_t frame_ = 0;

@@ -5,6 +5,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <string>
+#include <vector>
 #include <unistd.h>
 
 #include "bench.h"
@@ -33,7 +35,7 @@ double residentMegabytes() {
 }
 
 // One explorer frame without the window: app::LiveView, the very frame body the explorer runs
-// under its panels, then a wait for the GL to finish so the time is the frame's real cost.
+// under its panels.
 // A headless context has no window: the frame goes to a 1280×720 colour buffer standing in for it.
 struct FrameLoop {
   FrameLoop(app::ExplorerSession& session, const core::Scene& scene, float renderScale)
@@ -55,23 +57,102 @@ struct FrameLoop {
   app::LiveView view;
   GLuint colour = 0, window = 0;
 
-  // Returns the post whose volume became visible in this frame, or 0.
-  std::uint64_t run() {
+  // Runs one frame and waits for the GL, so the time is the frame's real cost.
+  app::LiveFrame run() {
     const app::LiveFrame frame = view.frame(state, 1280, 720, window);
     glFinish();
-    return frame.newVolumeShown ? frame.shownPost : 0;
+    return frame;
   }
 };
 
+// Peak resident memory of the process so far (VmHWM), in megabytes.
+double peakResidentMegabytes() {
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1e3;  // kB
+  return 0.0;
+}
+
+// Mean and worst frame over a run of frames.
+struct FrameTimes {
+  double total = 0.0, worst = 0.0;
+  int frames = 0;
+  void add(double ms) {
+    total += ms;
+    worst = std::max(worst, ms);
+    ++frames;
+  }
+  double mean() const { return total / std::max(1, frames); }
+};
+
+template <typename Each>
+FrameTimes timeFrames(FrameLoop& loop, int frames, double maxMs, Each each) {
+  FrameTimes times;
+  const auto start = Clock::now();
+  for (int i = 0; i < frames && millisecondsSince(start) < maxMs; ++i) {
+    each(i);
+    const auto frameStart = Clock::now();
+    loop.run();
+    times.add(millisecondsSince(frameStart));
+  }
+  return times;
+}
+
+// A 1% nudge of the first number a slider would move, whatever the first layer's kind.
+void nudgePattern(core::Scene& scene, double factor) {
+  core::PatternLayer& layer = scene.layers[0];
+  if (layer.kind == core::PatternKind::Flame)
+    layer.flame.xforms[0].affine.m[0] *= factor;
+  else if (layer.kind == core::PatternKind::QuaternionJulia)
+    layer.julia.c.x *= factor;
+  else
+    layer.params[0] *= factor;
+}
+
+// Edit → first frame showing it (the proxy, for large grids) and → the full grid showing it.
+struct EditLatencies {
+  std::vector<double> ms, frames, fullMs;
+};
+
+EditLatencies measureEdits(FrameLoop& loop, app::ExplorerSession& session, int edits) {
+  EditLatencies result;
+  for (int change = 0; change < edits; ++change) {
+    nudgePattern(loop.state.scene, change % 2 ? 1.0 / 1.01 : 1.01);
+    const auto changed = Clock::now();
+    const std::uint32_t firstFrame = loop.view.frameCount();
+    const std::uint64_t post = session.status().requestedGeneration + 1;  // the next frame posts it
+    bool shown = false;
+    while (millisecondsSince(changed) < 60'000) {
+      const app::LiveFrame frame = loop.run();
+      if (!frame.newVolumeShown || frame.shownPost != post) continue;
+      if (!shown) {
+        shown = true;
+        result.ms.push_back(millisecondsSince(changed));
+        result.frames.push_back(loop.view.frameCount() - firstFrame);
+      }
+      if (frame.fullShown) break;
+    }
+    if (!shown) {
+      result.ms.push_back(millisecondsSince(changed));
+      result.frames.push_back(loop.view.frameCount() - firstFrame);
+    }
+    result.fullMs.push_back(millisecondsSince(changed));
+  }
+  for (auto* values : {&result.ms, &result.frames, &result.fullMs}) std::sort(values->begin(), values->end());
+  return result;
+}
+
 }  // namespace
 
-// The explorer's numbers: time from a parameter change to the first frame showing it, the worst
-// frame time while the volume refines, and the memory the session holds at 256³ and 512³.
+// The explorer's numbers at 192³, 256³ and 512³: edit → first frame (frames and ms) and → the
+// first full-resolution image, mean and worst frame while a slider drags the pattern, while the
+// camera orbits and while a still view refines, and the memory the session holds.
 void benchExplorer(const BenchOptions& options) {
   gl::HeadlessContext context;
-  // As the explorer does: software GL marches a quarter of the pixels.
+  // As the explorer does: software GL refines a still view at a quarter of the pixels.
   const bool software = context.renderer().find("llvmpipe") != std::string::npos;
-  for (int resolution : {256, 512}) {
+  for (int resolution : {192, 256, 512}) {
     const double baseline = residentMegabytes();
     core::Scene initial = core::defaultScene();
     initial.gridResolution = resolution;
@@ -80,45 +161,24 @@ void benchExplorer(const BenchOptions& options) {
     core::Scene& scene = loop.state.scene;
     loop.run();  // posts the scene
     session.waitUntilApplied(600.0);
-    // Wait for the first volume, then refine for a while as a user watching would.
+    // Wait for the full grid, then refine for a while as a user watching would.
     const auto start = Clock::now();
-    while (!loop.view.hasVolume() && millisecondsSince(start) < 120'000) loop.run();
-    double worstRefining = 0.0, totalRefining = 0.0;
-    int refiningFrames = 0;
-    const auto refineStart = Clock::now();
-    while (millisecondsSince(refineStart) < 4000.0) {
-      const auto frameStart = Clock::now();
-      loop.run();
-      const double ms = millisecondsSince(frameStart);
-      worstRefining = std::max(worstRefining, ms);
-      totalRefining += ms;
-      ++refiningFrames;
+    while (millisecondsSince(start) < 120'000 && !loop.run().fullShown) {
     }
+    const FrameTimes refining = timeFrames(loop, 1 << 30, 4000.0, [](int) {});
     const double memory = residentMegabytes() - baseline;
 
-    // Parameter changes, as a slider drag makes them: time until the first frame showing each.
-    std::vector<double> latencies, frames;
-    for (int change = 0; change < 5; ++change) {
-      // A 1% nudge of the first number a slider would move, whatever the first layer's kind.
-      const double factor = change % 2 ? 1.0 / 1.01 : 1.01;
-      core::PatternLayer& layer = scene.layers[0];
-      if (layer.kind == core::PatternKind::Flame)
-        layer.flame.xforms[0].affine.m[0] *= factor;
-      else if (layer.kind == core::PatternKind::QuaternionJulia)
-        layer.julia.c.x *= factor;
-      else
-        layer.params[0] *= factor;
-      const auto changed = Clock::now();
-      const std::uint32_t firstFrame = loop.view.frameCount();
-      const std::uint64_t post = session.status().requestedGeneration + 1;  // the next frame posts it
-      while (millisecondsSince(changed) < 60'000)
-        if (loop.run() == post) break;
-      latencies.push_back(millisecondsSince(changed));
-      frames.push_back(loop.view.frameCount() - firstFrame);
-    }
+    // Pattern edits one at a time, each waited for.
+    const EditLatencies edits = measureEdits(loop, session, 7);
+    // A slider drag: a small edit every frame; then the camera orbiting; then the still view
+    // refining again.
+    const FrameTimes dragging =
+        timeFrames(loop, 40, 20'000.0, [&](int i) { nudgePattern(scene, i % 2 ? 1.0 / 1.002 : 1.002); });
+    const FrameTimes orbiting = timeFrames(loop, 40, 20'000.0, [&](int) { scene.camera.azimuthDeg += 2.0; });
+    const FrameTimes refiningAfter = timeFrames(loop, 1 << 30, 3000.0, [](int) {});
+
     // A still exported from the Export panel runs in a child process; the window's frames go on.
-    double worstExporting = 0.0, totalExporting = 0.0;
-    int exportingFrames = 0;
+    FrameTimes exporting;
     if (resolution == 256) {
       const std::filesystem::path output = std::filesystem::temp_directory_path() / "voxflame-bench-export.png";
       app::ExportJob job;
@@ -132,28 +192,35 @@ void benchExplorer(const BenchOptions& options) {
       while (job.poll().state == app::ExportState::Running) {
         const auto frameStart = Clock::now();
         loop.run();
-        const double ms = millisecondsSince(frameStart);
-        worstExporting = std::max(worstExporting, ms);
-        totalExporting += ms;
-        ++exportingFrames;
+        exporting.add(millisecondsSince(frameStart));
       }
       std::filesystem::remove(output);
     }
-    std::sort(latencies.begin(), latencies.end());
-    std::sort(frames.begin(), frames.end());
+    auto median = [](const std::vector<double>& sorted) { return sorted[sorted.size() / 2]; };
     report(options, {{"bench", "explorer"},
                      {"grid", resolution},
                      {"renderer", context.renderer()},
                      {"render_scale", loop.state.renderScale},
-                     {"mean_frame_ms", totalRefining / std::max(1, refiningFrames)},
-                     {"worst_frame_ms", worstRefining},
-                     {"change_to_frame_ms_median", latencies[latencies.size() / 2]},
-                     {"change_to_frame_ms_worst", latencies.back()},
-                     {"change_to_frame_frames_median", frames[frames.size() / 2]},
+                     {"frame_budget_ms", loop.state.frameBudgetMs},
+                     {"mean_frame_ms", refining.mean()},
+                     {"worst_frame_ms", refining.worst},
+                     {"change_to_frame_ms_median", median(edits.ms)},
+                     {"change_to_frame_ms_worst", edits.ms.back()},
+                     {"change_to_frame_frames_median", median(edits.frames)},
+                     {"change_to_frame_frames_worst", edits.frames.back()},
+                     {"change_to_full_ms_median", median(edits.fullMs)},
+                     {"change_to_full_ms_worst", edits.fullMs.back()},
+                     {"mean_frame_ms_dragging", dragging.mean()},
+                     {"worst_frame_ms_dragging", dragging.worst},
+                     {"mean_frame_ms_orbiting", orbiting.mean()},
+                     {"worst_frame_ms_orbiting", orbiting.worst},
+                     {"mean_frame_ms_refining", refiningAfter.mean()},
+                     {"worst_frame_ms_refining", refiningAfter.worst},
                      {"memory_mb", memory},
-                     {"frames_during_export", exportingFrames},
-                     {"mean_frame_ms_during_export", totalExporting / std::max(1, exportingFrames)},
-                     {"worst_frame_ms_during_export", worstExporting}});
+                     {"peak_resident_mb", peakResidentMegabytes()},
+                     {"frames_during_export", exporting.frames},
+                     {"mean_frame_ms_during_export", exporting.mean()},
+                     {"worst_frame_ms_during_export", exporting.worst}});
   }
 }
 

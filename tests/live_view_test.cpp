@@ -6,9 +6,11 @@
 #include <epoxy/gl.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <thread>
 
+#include "core/image_io.h"
 #include "core/scene.h"
 #include "core/scene_io.h"
 #include "explorer_session.h"
@@ -44,6 +46,29 @@ class Canvas {
     glDeleteTextures(1, &texture_);
   }
   unsigned framebuffer() const { return framebuffer_; }
+  std::vector<std::uint8_t> pixels() const { return gl::readRgba8(framebuffer_, {0, 0, kWidth, kHeight}); }
+  // The mean of all channels over the picture, 0–255.
+  double meanBrightness() const {
+    const std::vector<std::uint8_t> rgba = pixels();
+    double sum = 0.0;
+    for (std::size_t i = 0; i < rgba.size(); i += 4) sum += rgba[i] + rgba[i + 1] + rgba[i + 2];
+    return sum / (3.0 * kWidth * kHeight);
+  }
+  // Writes the picture as a PNG when VOXFLAME_TEST_IMAGES names a folder (to look at by eye).
+  void save(const std::string& name) const {
+    const char* folder = std::getenv("VOXFLAME_TEST_IMAGES");
+    if (!folder) return;
+    const std::vector<std::uint8_t> rgba = pixels();
+    core::ImageRGBA image;
+    image.width = kWidth;
+    image.height = kHeight;
+    image.pixels.resize(rgba.size());
+    for (int y = 0; y < kHeight; ++y)  // read back bottom row first
+      for (int x = 0; x < 4 * kWidth; ++x)
+        image.pixels[static_cast<std::size_t>((kHeight - 1 - y) * 4 * kWidth + x)] =
+            rgba[static_cast<std::size_t>(y * 4 * kWidth + x)] / 255.0f;
+    core::writePng(std::filesystem::path(folder) / (name + ".png"), image, 8, {});
+  }
   // The brightest channel value in the picture.
   int brightest() const {
     const std::vector<std::uint8_t> pixels = gl::readRgba8(framebuffer_, {0, 0, kWidth, kHeight});
@@ -177,6 +202,81 @@ TEST_F(LiveViewTest, SaveAsAndExportAreAnsweredBeforeAnyVolumeIsShown) {
   frame(view);
   EXPECT_FALSE(state.requests.exportStill.has_value());
   EXPECT_NE(exports.poll().state, app::ExportState::Idle) << state.notice;
+}
+
+TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBrightness) {
+  // A grid large enough to have a proxy; a still view, refined at the full scale.
+  state.scene.gridResolution = 2 * app::ExplorerSession::kProxyAbove;
+  app::LiveView view(session, nullptr, nullptr);
+  frame(view);
+  ASSERT_TRUE(session.waitUntilApplied(120.0));
+  const std::uint64_t post = session.status().requestedGeneration;
+  // Frames until the full grid shows the post, noting what came first.
+  std::optional<bool> firstWasFull;
+  bool fullShown = false;
+  double proxyBrightness = 0.0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fullShown && std::chrono::steady_clock::now() < deadline) {
+    const app::LiveFrame shown = frame(view);
+    if (!shown.newVolumeShown) continue;
+    EXPECT_EQ(shown.shownPost, post) << "only volumes of the newest post are shown";
+    if (!firstWasFull) firstWasFull = shown.fullShown;
+    if (!shown.fullShown) {
+      // Refine the proxy's picture a little, as a user would see it before the handover.
+      for (int i = 0; i < 6; ++i) frame(view);
+      proxyBrightness = canvas.meanBrightness();
+      canvas.save("proxy");
+      continue;
+    }
+    fullShown = true;
+  }
+  ASSERT_TRUE(firstWasFull.has_value()) << "nothing was shown";
+  EXPECT_FALSE(*firstWasFull) << "the first image after the edit comes from the proxy";
+  ASSERT_TRUE(fullShown) << "the full grid replaces the proxy";
+  for (int i = 0; i < 6; ++i) frame(view);
+  const double fullBrightness = canvas.meanBrightness();
+  canvas.save("full");
+  ASSERT_GT(proxyBrightness, 2.0) << "the proxy drew the pattern";
+  // The same pattern on a grid eight times finer: a sharper picture, not a brighter or darker one.
+  EXPECT_NEAR(fullBrightness / proxyBrightness, 1.0, 0.2) << proxyBrightness << " vs " << fullBrightness;
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+
+  // An edit: the proxy of the new post is shown before the full grid shows it.
+  state.scene.layers[0].params[0] *= 1.02;
+  ASSERT_TRUE(frame(view).patternPosted);
+  const std::uint64_t edited = session.status().requestedGeneration;
+  std::optional<bool> editFirstWasFull;
+  while (!editFirstWasFull && std::chrono::steady_clock::now() < deadline) {
+    const app::LiveFrame shown = frame(view);
+    if (shown.newVolumeShown && shown.shownPost == edited) editFirstWasFull = shown.fullShown;
+  }
+  ASSERT_TRUE(editFirstWasFull.has_value());
+  EXPECT_FALSE(*editFirstWasFull);
+}
+
+TEST_F(LiveViewTest, SlowFramesWhileTheCameraMovesLowerTheMarchScale) {
+  state.renderScale = 1.0f;
+  state.frameBudgetMs = 10.0f;
+  app::LiveView view(session, nullptr, nullptr);
+  frame(view);
+  ASSERT_TRUE(runUntilShown(view));
+  for (int i = 0; i < app::FrameBudget::kQuietFrames + 1; ++i) frame(view);
+  EXPECT_EQ(state.metrics.marchScale, 1.0f) << "a still view is marched at the preview scale";
+  // An orbit whose frames take far longer than the budget (a slow machine, played by a sleep).
+  for (int i = 0; i < 4; ++i) {
+    state.scene.camera.azimuthDeg += 3.0;
+    frame(view);
+    std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  }
+  EXPECT_LT(state.metrics.marchScale, 0.5f);
+  EXPECT_GE(state.metrics.marchScale, app::FrameBudget::kDefaultFloor);
+  // Let go: the still view goes back to the preview scale and refines.
+  for (int i = 0; i < app::FrameBudget::kQuietFrames + 2; ++i) frame(view);
+  EXPECT_EQ(state.metrics.marchScale, 1.0f);
+  // Samples add up there (a fresh snapshot of the volume may restart them once in a while).
+  for (int i = 0; i < 30 && state.samples <= 1; ++i) frame(view);
+  EXPECT_GT(state.samples, 1);
+  EXPECT_EQ(state.metrics.marchScale, 1.0f);
 }
 
 }  // namespace

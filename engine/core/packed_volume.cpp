@@ -28,7 +28,21 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
   out.density.resize(voxels);
   out.brickCount = (g.size + (kBrickSize - 1)) / kBrickSize;
   out.occupancy.assign(static_cast<std::size_t>(out.brickCount.x) * out.brickCount.y * out.brickCount.z, 0);
-  const float inverseMax = snapshot.maxDensity > 0.0f ? 1.0f / snapshot.maxDensity : 0.0f;
+  // The mean over the inside voxels first: it is the normalisation of every texel.
+  double densitySum = 0.0;
+  std::size_t occupied = 0;
+  for (const float density : snapshot.density)
+    if (density > 0.0f) {
+      densitySum += density;
+      ++occupied;
+    }
+  out.meanDensity = occupied ? static_cast<float>(densitySum / static_cast<double>(occupied)) : 0.0f;
+  out.insideVoxels = static_cast<double>(snapshot.insideVoxels ? snapshot.insideVoxels : occupied);
+  out.referenceDensity = out.insideVoxels > 0.0 && densitySum > 0.0 ? densitySum / out.insideVoxels : 1.0;
+  out.texelDensity = static_cast<float>(out.referenceDensity);
+  const float inverseScale = 1.0f / out.texelDensity;
+  // Half floats end at 65504; a voxel that much denser than the mean is saturated, not infinite.
+  constexpr float kLargestHalf = 65504.0f;
   auto markBricks = [&](int i, int j, int k) {
     // A voxel's density reaches samples up to one voxel away (trilinear filtering), so every
     // brick within one voxel of it must be marched.
@@ -42,8 +56,6 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
                                                            (bj + static_cast<std::size_t>(out.brickCount.y) * bk)] = 1;
   };
   constexpr std::uint16_t kZero = 0;
-  double densitySum = 0.0;
-  std::size_t occupied = 0;
   for (int k = 0; k < g.size.z; ++k)
     for (int j = 0; j < g.size.y; ++j)
       for (int i = 0; i < g.size.x; ++i) {
@@ -55,18 +67,13 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
           out.density[v] = kZero;
           continue;
         }
-        densitySum += density;
-        ++occupied;
-        const float weight = density * inverseMax;
+        const float weight = std::min(density * inverseScale, kLargestHalf);
         const std::uint8_t* rgba = &snapshot.rgba[4 * v];
         for (int c = 0; c < 3; ++c) texel[c] = floatToHalf(weight * static_cast<float>(rgba[c]) * (1.0f / 255.0f));
         texel[3] = floatToHalf(weight);
         out.density[v] = texel[3];
         markBricks(i, j, k);
       }
-  out.meanDensity = occupied ? static_cast<float>(densitySum / static_cast<double>(occupied)) : 0.0f;
-  out.insideVoxels = static_cast<double>(snapshot.insideVoxels ? snapshot.insideVoxels : occupied);
-  out.referenceDensity = out.insideVoxels > 0.0 && densitySum > 0.0 ? densitySum / out.insideVoxels : 1.0;
   out.coarseCount = (out.brickCount + (kCoarseBricks - 1)) / kCoarseBricks;
   out.coarseOccupancy.assign(static_cast<std::size_t>(out.coarseCount.x) * out.coarseCount.y * out.coarseCount.z, 0);
   for (int k = 0; k < out.brickCount.z; ++k)

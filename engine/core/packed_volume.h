@@ -1,5 +1,5 @@
 // The volume in the form the renderer uploads: one RGBA half-float texel per voxel holding the
-// density normalised by the densest voxel (alpha) and the mean colour premultiplied by it (rgb),
+// density relative to the mesh's mean (alpha) and the mean colour premultiplied by it (rgb),
 // so trilinear filtering blends colour by density and empty neighbours never darken an edge.
 // A coarse occupancy grid of bricks lets the ray-marcher leap over empty space. Packing runs
 // on whichever thread took the snapshot, so the main thread only uploads.
@@ -28,6 +28,11 @@ struct PackedVolume {
   glm::ivec3 coarseCount{0};                  // bricks of kCoarseBricks³ bricks: long empty stretches
   std::vector<std::uint8_t> coarseOccupancy;  // are crossed in a few leaps instead of dozens
   float maxDensity = 0.0f;
+  // Hits one unit of texel density stands for: referenceDensity, so texels hold density relative
+  // to the mesh's mean. Two snapshots of one pattern then agree voxel by voxel whatever their point
+  // counts, and slabs of both can share a texture while a new one streams in without a seam (a
+  // normalisation by the densest voxel would jump with that one noisy voxel).
+  float texelDensity = 1.0f;
   float meanDensity = 0.0f;  // over voxels with any density: the scale of a "typical" voxel
   // Hits in the grid over the voxels inside the mesh: the mean density a uniformly filled mesh
   // would have. Densities relative to it do not change with the point count or the grid.

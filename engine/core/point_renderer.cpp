@@ -17,7 +17,7 @@ namespace {
 
 // Relative density (to the mesh's mean) of every voxel, for trilinear sampling.
 std::vector<float> relativeDensity(const PackedVolume& volume) {
-  const float toRelative = static_cast<float>(volume.maxDensity / std::max(volume.referenceDensity, 1e-30));
+  const float toRelative = static_cast<float>(volume.texelDensity / std::max(volume.referenceDensity, 1e-30));
   std::vector<float> density(volume.density.size());
   for (std::size_t v = 0; v < density.size(); ++v) density[v] = halfToFloat(volume.density[v]) * toRelative;
   return density;

@@ -133,18 +133,22 @@ VolumeRenderer::VolumeRenderer()
       blitProgram_(embeddedShader("fullscreen.vert.glsl"), embeddedShader("blit.frag.glsl")),
       meshProgram_(embeddedShader("mesh.vert.glsl"), embeddedShader("mesh.frag.glsl")) {
   glGenVertexArrays(1, &vertexArray_);
-  volumeTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
-  densityTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
-  occupancyTexture_ = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
-  coarseTexture_ = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
+  for (Slot& slot : slots_) {
+    slot.volume = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
+    slot.density = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
+    slot.occupancy = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
+    slot.coarse = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
+  }
   shadowTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
 }
 
 VolumeRenderer::~VolumeRenderer() {
-  glDeleteTextures(1, &volumeTexture_);
-  glDeleteTextures(1, &densityTexture_);
-  glDeleteTextures(1, &occupancyTexture_);
-  glDeleteTextures(1, &coarseTexture_);
+  for (Slot& slot : slots_) {
+    glDeleteTextures(1, &slot.volume);
+    glDeleteTextures(1, &slot.density);
+    glDeleteTextures(1, &slot.occupancy);
+    glDeleteTextures(1, &slot.coarse);
+  }
   glDeleteTextures(1, &shadowTexture_);
   glDeleteVertexArrays(1, &vertexArray_);
   glDeleteVertexArrays(1, &meshArray_);
@@ -157,30 +161,39 @@ void VolumeRenderer::upload(const core::PackedVolume& volume) {
   continueUpload(~std::size_t{0});
 }
 
+void VolumeRenderer::allocate(Slot& slot, glm::ivec3 size) {
+  if (size == slot.allocated) return;
+  glBindTexture(GL_TEXTURE_3D, slot.volume);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA16F, size.x, size.y, size.z, 0, GL_RGBA, GL_HALF_FLOAT, nullptr);
+  glBindTexture(GL_TEXTURE_3D, slot.density);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R16F, size.x, size.y, size.z, 0, GL_RED, GL_HALF_FLOAT, nullptr);
+  slot.allocated = size;
+  slot.version = 0;  // the old content is gone until an upload completes
+}
+
 void VolumeRenderer::beginUpload(const core::PackedVolume& volume) {
   pending_ = &volume;
   pendingZ_ = 0;
-  if (volume.geometry.size != geometry_.size) {
-    glBindTexture(GL_TEXTURE_3D, volumeTexture_);
-    glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA16F, volume.geometry.size.x, volume.geometry.size.y, volume.geometry.size.z,
-                 0, GL_RGBA, GL_HALF_FLOAT, nullptr);
-    glBindTexture(GL_TEXTURE_3D, densityTexture_);
-    glTexImage3D(GL_TEXTURE_3D, 0, GL_R16F, volume.geometry.size.x, volume.geometry.size.y, volume.geometry.size.z, 0,
-                 GL_RED, GL_HALF_FLOAT, nullptr);
-    uploadedVersion_ = 0;  // the old content is gone until this upload completes
-  }
+  allocate(slots_[kMain], volume.geometry.size);
 }
 
-void VolumeRenderer::uploadSlab(int firstZ, int endZ) {
-  const glm::ivec3 size = pending_->geometry.size;
+void VolumeRenderer::uploadProxy(const core::PackedVolume& volume) {
+  Slot& slot = slots_[kProxy];
+  allocate(slot, volume.geometry.size);
+  uploadSlab(slot, volume, 0, volume.geometry.size.z);
+  finishUpload(slot, volume);
+}
+
+void VolumeRenderer::uploadSlab(Slot& slot, const core::PackedVolume& volume, int firstZ, int endZ) {
+  const glm::ivec3 size = volume.geometry.size;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glBindTexture(GL_TEXTURE_3D, volumeTexture_);
-  const std::size_t offset = 4 * pending_->geometry.index(0, 0, firstZ);
+  glBindTexture(GL_TEXTURE_3D, slot.volume);
+  const std::size_t offset = 4 * volume.geometry.index(0, 0, firstZ);
   glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, firstZ, size.x, size.y, endZ - firstZ, GL_RGBA, GL_HALF_FLOAT,
-                  pending_->texels.data() + offset);
-  glBindTexture(GL_TEXTURE_3D, densityTexture_);
+                  volume.texels.data() + offset);
+  glBindTexture(GL_TEXTURE_3D, slot.density);
   glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, firstZ, size.x, size.y, endZ - firstZ, GL_RED, GL_HALF_FLOAT,
-                  pending_->density.data() + offset / 4);
+                  volume.density.data() + offset / 4);
 }
 
 bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
@@ -190,37 +203,41 @@ bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
   const int slabs = static_cast<int>(std::clamp<std::size_t>(budgetBytes / std::max<std::size_t>(slabBytes, 1), 1,
                                                              static_cast<std::size_t>(volume.geometry.size.z)));
   const int endZ = std::min(volume.geometry.size.z, pendingZ_ + slabs);
-  uploadSlab(pendingZ_, endZ);
+  uploadSlab(slots_[kMain], volume, pendingZ_, endZ);
   pendingZ_ = endZ;
   if (pendingZ_ < volume.geometry.size.z) return false;
-
-  // The occupancy grid is small; it goes up whole, with the last slab, so it matches the volume.
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glBindTexture(GL_TEXTURE_3D, occupancyTexture_);
-  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, volume.brickCount.x, volume.brickCount.y, volume.brickCount.z, 0,
-               GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.occupancy.data());
-  geometry_ = volume.geometry;
-  brickCount_ = volume.brickCount;
-  glBindTexture(GL_TEXTURE_3D, coarseTexture_);
-  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, volume.coarseCount.x, volume.coarseCount.y, volume.coarseCount.z, 0,
-               GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.coarseOccupancy.data());
-  coarseCount_ = volume.coarseCount;
-  maxDensity_ = volume.maxDensity;
-  referenceDensity_ = volume.referenceDensity;
-  insideVoxels_ = volume.insideVoxels;
-  points_ = static_cast<double>(volume.points);
-  uploadedVersion_ = std::max<std::uint64_t>(volume.version, 1);
+  finishUpload(slots_[kMain], volume);
   pending_ = nullptr;
   return true;
 }
 
-void VolumeRenderer::uploadShadow(const core::ShadowVolume& shadow, int downsample) {
+void VolumeRenderer::finishUpload(Slot& slot, const core::PackedVolume& volume) {
+  // The occupancy grid is small; it goes up whole, with the last slab, so it matches the volume.
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glBindTexture(GL_TEXTURE_3D, slot.occupancy);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, volume.brickCount.x, volume.brickCount.y, volume.brickCount.z, 0,
+               GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.occupancy.data());
+  slot.geometry = volume.geometry;
+  slot.brickCount = volume.brickCount;
+  glBindTexture(GL_TEXTURE_3D, slot.coarse);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, volume.coarseCount.x, volume.coarseCount.y, volume.coarseCount.z, 0,
+               GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.coarseOccupancy.data());
+  slot.coarseCount = volume.coarseCount;
+  slot.texelDensity = volume.texelDensity;
+  slot.referenceDensity = volume.referenceDensity;
+  slot.insideVoxels = volume.insideVoxels;
+  slot.points = static_cast<double>(volume.points);
+  slot.version = std::max<std::uint64_t>(volume.version, 1);
+}
+
+void VolumeRenderer::uploadShadow(const core::ShadowVolume& shadow, int downsample, glm::ivec3 sourceSize) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glBindTexture(GL_TEXTURE_3D, shadowTexture_);
   glTexImage3D(GL_TEXTURE_3D, 0, GL_R8, shadow.size.x, shadow.size.y, shadow.size.z, 0, GL_RED, GL_UNSIGNED_BYTE,
                shadow.transmittance.data());
   shadowSize_ = shadow.size;
   shadowDownsample_ = std::max(1, downsample);
+  shadowSource_ = sourceSize == glm::ivec3(0) ? slots_[kMain].geometry.size : sourceSize;
 }
 
 void VolumeRenderer::setMesh(const core::TriangleMesh& mesh) {
@@ -281,34 +298,40 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   const glm::mat4 inverseViewProjection(glm::inverse(projection * settings.camera.view));
   glUniformMatrix4fv(p.uniform("uInverseViewProjection"), 1, GL_FALSE, glm::value_ptr(inverseViewProjection));
   glUniform2f(p.uniform("uTargetSize"), static_cast<float>(width), static_cast<float>(height));
-  const core::Box box = geometry_.box();
+  const Slot& slot = slots_[marched_];
+  const core::GridGeometry& geometry = slot.geometry;
+  const core::Box box = geometry.box();
   setUniform(p, "uGridOrigin", glm::vec3(box.min));
   setUniform(p, "uGridExtent", glm::vec3(box.extent()));
-  glUniform3i(p.uniform("uGridSize"), geometry_.size.x, geometry_.size.y, geometry_.size.z);
-  setUniform(p, "uVoxelSize", geometry_.voxelSize);
+  glUniform3i(p.uniform("uGridSize"), geometry.size.x, geometry.size.y, geometry.size.z);
+  setUniform(p, "uVoxelSize", geometry.voxelSize);
   setUniform(p, "uStepVoxels", std::clamp(settings.render.stepVoxels, 0.05, 4.0));
-  glUniform3i(p.uniform("uBrickCount"), brickCount_.x, brickCount_.y, brickCount_.z);
+  glUniform3i(p.uniform("uBrickCount"), slot.brickCount.x, slot.brickCount.y, slot.brickCount.z);
   glUniform1i(p.uniform("uBrickSize"), core::kBrickSize);
-  glUniform3i(p.uniform("uCoarseCount"), coarseCount_.x, coarseCount_.y, coarseCount_.z);
+  glUniform3i(p.uniform("uCoarseCount"), slot.coarseCount.x, slot.coarseCount.y, slot.coarseCount.z);
   glUniform1i(p.uniform("uCoarseSize"), core::kBrickSize * core::kCoarseBricks);
   // Density relative to the mesh's mean and lengths in grid sides make a pixel's sum independent
   // of the point count and the grid resolution (flame_image.h).
-  glUniform1f(p.uniform("uToRelative"), static_cast<float>(maxDensity_ / std::max(referenceDensity_, 1e-30)));
+  glUniform1f(p.uniform("uToRelative"), static_cast<float>(slot.texelDensity / std::max(slot.referenceDensity, 1e-30)));
   setUniform(p, "uStepUnits",
              std::clamp(settings.render.stepVoxels, 0.05, 4.0) /
-                 std::max({geometry_.size.x, geometry_.size.y, geometry_.size.z, 1}));
+                 std::max({geometry.size.x, geometry.size.y, geometry.size.z, 1}));
   setUniform(p, "uAbsorption", std::max(0.0, settings.tone.opacity) * core::kAbsorptionPerDensity);
   glUniform1ui(p.uniform("uSample"), static_cast<GLuint>(sampleIndex));
   glUniform2i(p.uniform("uPixelOffset"), tile.x, tile.y);
   const bool lighting = settings.render.lighting && hasShadow();
   glUniform1i(p.uniform("uLighting"), lighting ? 1 : 0);
-  if (lighting) setUniform(p, "uShadowScale", 1.0f / glm::vec3(shadowSize_ * shadowDownsample_));
+  // The shadow's cells cover its source grid; the marched grid spans the same box, perhaps at
+  // another resolution (the proxy), so voxel coordinates are rescaled to the source's.
+  if (lighting)
+    setUniform(p, "uShadowScale",
+               glm::vec3(shadowSource_) / glm::vec3(shadowSize_ * shadowDownsample_) / glm::vec3(geometry.size));
   setUniform(p, "uLightStrength", settings.render.lightStrength);
-  bindSampler(p, "uVolume", 0, GL_TEXTURE_3D, volumeTexture_);
-  bindSampler(p, "uOccupancy", 1, GL_TEXTURE_3D, occupancyTexture_);
+  bindSampler(p, "uVolume", 0, GL_TEXTURE_3D, slot.volume);
+  bindSampler(p, "uOccupancy", 1, GL_TEXTURE_3D, slot.occupancy);
   bindSampler(p, "uShadow", 2, GL_TEXTURE_3D, shadowTexture_);
-  bindSampler(p, "uDensity", 3, GL_TEXTURE_3D, densityTexture_);
-  bindSampler(p, "uCoarseOccupancy", 4, GL_TEXTURE_3D, coarseTexture_);
+  bindSampler(p, "uDensity", 3, GL_TEXTURE_3D, slot.density);
+  bindSampler(p, "uCoarseOccupancy", 4, GL_TEXTURE_3D, slot.coarse);
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
@@ -318,7 +341,8 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   ++target.samples;
   ++target.revision_;
   const int fullHeight = tile.w > 0 ? tile.w : height;
-  target.hitsPerUnitDensity_ = core::hitsPerUnitDensity(settings.camera, geometry_, points_, insideVoxels_, fullHeight);
+  target.hitsPerUnitDensity_ =
+      core::hitsPerUnitDensity(settings.camera, geometry, slot.points, slot.insideVoxels, fullHeight);
 }
 
 void VolumeRenderer::drawMesh(FrameTarget& target, const RenderSettings& settings, glm::ivec4 tile, bool always) {

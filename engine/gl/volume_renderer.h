@@ -81,12 +81,23 @@ class VolumeRenderer {
   // `volume` must outlive the upload.
   void beginUpload(const core::PackedVolume& volume);
   bool continueUpload(std::size_t budgetBytes);
-  std::uint64_t uploadedVersion() const { return uploadedVersion_; }
-  bool hasVolume() const { return uploadedVersion_ > 0; }
+  std::uint64_t uploadedVersion() const { return slots_[kMain].version; }  // of the main volume
+
+  // A second, small volume (a coarse proxy of the same pattern, uploaded whole) that march() can
+  // draw instead of the main one, e.g. while the main one is still being filled or uploaded.
+  // Brightness does not depend on the grid (flame_image.h), so the two look alike.
+  enum class Source { Main, Proxy };
+  void uploadProxy(const core::PackedVolume& volume);
+  void marchFrom(Source source) { marched_ = source == Source::Main ? kMain : kProxy; }
+  Source marchedSource() const { return marched_ == kMain ? Source::Main : Source::Proxy; }
+  bool hasVolume(Source source) const { return slots_[source == Source::Main ? kMain : kProxy].version > 0; }
+  bool hasVolume() const { return slots_[marched_].version > 0; }  // the one march() draws
 
   void setMesh(const core::TriangleMesh& mesh);  // for the ghost and silhouette overlays
-  // Light transmittance used when settings.render.lighting is on; `downsample` voxels per cell.
-  void uploadShadow(const core::ShadowVolume& shadow, int downsample);
+  // Light transmittance used when settings.render.lighting is on; `downsample` voxels per cell of
+  // a grid of `sourceSize` voxels (default: the main volume's). It is looked up by position in
+  // the grid box, so a shadow made from the main volume also lights the proxy and vice versa.
+  void uploadShadow(const core::ShadowVolume& shadow, int downsample, glm::ivec3 sourceSize = glm::ivec3(0));
   bool hasShadow() const { return shadowDownsample_ > 0; }
 
   // Adds one jittered sub-sample of the view to `target` (a running average). `sampleIndex`
@@ -106,27 +117,37 @@ class VolumeRenderer {
  private:
   glm::dmat4 tileProjection(const RenderSettings& settings, glm::ivec4 tile, int width, int height,
                             glm::dvec2 pixelJitter) const;
-  void uploadSlab(int firstZ, int endZ);
+  // One uploaded volume: its textures and what the march needs to know about it.
+  struct Slot {
+    GLuint volume = 0;     // RGBA16F: premultiplied colour, relative density
+    GLuint density = 0;    // R16F: relative density alone
+    GLuint occupancy = 0;  // R8UI per brick
+    GLuint coarse = 0;     // R8UI per coarse brick
+    glm::ivec3 coarseCount{0};
+    glm::ivec3 brickCount{0};
+    core::GridGeometry geometry;
+    glm::ivec3 allocated{0};  // the size the volume textures were last allocated at
+    float texelDensity = 1.0f;
+    double referenceDensity = 1.0;
+    double insideVoxels = 0.0;
+    double points = 0.0;
+    std::uint64_t version = 0;  // 0: nothing complete in it
+  };
+  static constexpr int kMain = 0, kProxy = 1;
+  void allocate(Slot& slot, glm::ivec3 size);
+  void uploadSlab(Slot& slot, const core::PackedVolume& volume, int firstZ, int endZ);
+  void finishUpload(Slot& slot, const core::PackedVolume& volume);
 
   ShaderProgram marchProgram_;
   ShaderProgram blitProgram_;
   ShaderProgram meshProgram_;
   GLuint vertexArray_ = 0;
-  GLuint volumeTexture_ = 0;     // RGBA16F: premultiplied colour, normalised density
-  GLuint densityTexture_ = 0;    // R16F: normalised density alone
-  GLuint occupancyTexture_ = 0;  // R8UI per brick
-  GLuint coarseTexture_ = 0;     // R8UI per coarse brick
-  glm::ivec3 coarseCount_{0};
+  Slot slots_[2];
+  int marched_ = kMain;
   GLuint shadowTexture_ = 0;  // R8 light transmittance
   glm::ivec3 shadowSize_{0};
+  glm::ivec3 shadowSource_{0};  // the grid it was made from, in voxels
   int shadowDownsample_ = 0;
-  core::GridGeometry geometry_;
-  glm::ivec3 brickCount_{0};
-  float maxDensity_ = 0.0f;
-  double referenceDensity_ = 1.0;
-  double insideVoxels_ = 0.0;
-  double points_ = 0.0;
-  std::uint64_t uploadedVersion_ = 0;
   const core::PackedVolume* pending_ = nullptr;
   int pendingZ_ = 0;
 
