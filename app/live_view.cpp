@@ -82,10 +82,17 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
   }
 }
 
+bool LiveView::resting() const {
+  return target_.samples >= kMaxSamples && !uploadInProgress_ && !shadowJob_.busy() && !shadowJob_.ready();
+}
+
 LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned framebuffer) {
   LiveFrame result;
   width = std::max(1, width);
   height = std::max(1, height);
+  // Refinement rests at the user's noise target and while an export uses the cores.
+  session_.setRefinement(0.01 * state.settings.refineUntilNoisePercent,
+                         state.exportStatus.state == ExportState::Running);
   if (session_.postIfPatternChanged(state.scene)) {
     result.patternPosted = true;
     waitingPost_ = session_.status().requestedGeneration;
