@@ -14,7 +14,8 @@ const std::vector<Benchmark>& benchmarks() {
       {"accumulate", "points per second filling the bunny mask at 256³", &benchAccumulate},
       {"mask", "seconds to build the inside mask: bunny at 256³, dragon at 256³ and 512³", &benchMask},
       {"raymarch", "milliseconds per 1280×720 frame of a 256³ and a 512³ grid", &benchRaymarch},
-      {"explorer", "explorer frames headless: edit to first frame, worst frame, memory at 256³ and 512³",
+      {"explorer",
+       "explorer frames headless: edit to first frame, worst frame, memory at 256³ and 512³, CPU once converged",
        &benchExplorer},
       {"export",
        "seconds for a 3840×2160 still of the default preset: volume at 512³ with 4 samples, points at 100 points "

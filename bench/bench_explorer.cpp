@@ -5,7 +5,11 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <array>
+#include <thread>
 
 #include "bench.h"
 #include "core/camera.h"
@@ -40,6 +44,7 @@ struct FrameLoop {
       : view(session, nullptr, nullptr) {
     app::resetExplorerState(state, scene);
     state.renderScale = renderScale;
+    state.settings.refineUntilNoisePercent = 0.0;  // refine until told otherwise (cpuAtRest)
     glGenRenderbuffers(1, &colour);
     glBindRenderbuffer(GL_RENDERBUFFER, colour);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 1280, 720);
@@ -62,6 +67,44 @@ struct FrameLoop {
     return frame.newVolumeShown ? frame.shownPost : 0;
   }
 };
+
+double processCpuSeconds() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+         1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+}
+
+// The explorer once its volume has converged: the noise target is set a little below the current
+// estimate, the frame loop runs as the window's does (it waits instead of drawing when
+// app::frameWaitSeconds says so), and the process's CPU time over a few seconds of rest is
+// measured. Returns {seconds to converge, CPU percent of one core at rest, noise}; -1 when it
+// did not converge within a minute.
+std::array<double, 3> cpuAtRest(app::ExplorerSession& session, FrameLoop& loop) {
+  const double noise = session.status().noise;
+  if (!(noise > 0.0)) return {-1.0, -1.0, -1.0};
+  loop.state.settings.refineUntilNoisePercent = 100.0 * 0.9 * noise;
+  int restingFrames = 0;
+  auto step = [&] {
+    loop.state.session = session.status();
+    const double wait = app::frameWaitSeconds(loop.state, loop.view.resting(), restingFrames);
+    if (wait > 0.0) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(wait));  // glfwWaitEventsTimeout, no input
+      return;
+    }
+    loop.run();
+    restingFrames = loop.view.resting() && loop.state.session.resting ? restingFrames + 1 : 0;
+  };
+  const auto start = Clock::now();
+  while (restingFrames < 3 && millisecondsSince(start) < 60'000) step();
+  if (restingFrames < 3) return {-1.0, -1.0, -1.0};
+  const double converged = millisecondsSince(start) / 1000.0;
+  const double cpuStart = processCpuSeconds();
+  const auto restStart = Clock::now();
+  while (millisecondsSince(restStart) < 3000.0) step();
+  const double cpu = processCpuSeconds() - cpuStart;
+  return {converged, 100.0 * cpu / (millisecondsSince(restStart) / 1000.0), session.status().noise};
+}
 
 }  // namespace
 
@@ -129,7 +172,8 @@ void benchExplorer(const BenchOptions& options) {
       request.settings.height = 720;
       request.settings.points = 20'000'000;
       job.start(request);
-      while (job.poll().state == app::ExportState::Running) {
+      // As in the explorer, refinement pauses while the export runs.
+      while ((loop.state.exportStatus = job.poll()).state == app::ExportState::Running) {
         const auto frameStart = Clock::now();
         loop.run();
         const double ms = millisecondsSince(frameStart);
@@ -139,6 +183,8 @@ void benchExplorer(const BenchOptions& options) {
       }
       std::filesystem::remove(output);
     }
+    loop.state.exportStatus = app::ExportStatus{};
+    const auto [convergeSeconds, cpuPercent, restNoise] = cpuAtRest(session, loop);
     std::sort(latencies.begin(), latencies.end());
     std::sort(frames.begin(), frames.end());
     report(options, {{"bench", "explorer"},
@@ -153,7 +199,10 @@ void benchExplorer(const BenchOptions& options) {
                      {"memory_mb", memory},
                      {"frames_during_export", exportingFrames},
                      {"mean_frame_ms_during_export", totalExporting / std::max(1, exportingFrames)},
-                     {"worst_frame_ms_during_export", worstExporting}});
+                     {"worst_frame_ms_during_export", worstExporting},
+                     {"seconds_to_converge", convergeSeconds},
+                     {"noise_converged", restNoise},
+                     {"cpu_percent_converged", cpuPercent}});
   }
 }
 
