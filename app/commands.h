@@ -24,8 +24,9 @@ struct RenderArguments {
   std::optional<std::string> preset;  // PRESET.json, IMAGE.png, FILE.flame or a mesh; none: the default
   std::optional<std::string> output;  // OUT.png, OUT.exr, OUT.vdb or OUT.nrrd
   int width = 1280, height = 720;
-  std::uint64_t points = 0;  // 0: the preset's
-  int threads = 0;           // 0: all cores
+  std::uint64_t points = 0;                 // 0: the preset's
+  int threads = 0;                          // 0: all cores
+  std::optional<double> untilNoisePercent;  // stop at this estimated noise (percent), --points a cap
   std::optional<int> samples, grid, oversample;
   std::optional<double> cameraAzimuthDeg, cameraElevationDeg, time;
   int bitDepth = 8;

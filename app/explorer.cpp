@@ -200,9 +200,17 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     // The canonical ImGui loop: events, the panels (which only edit state and ask for things),
     // the view under them (app::LiveView), the panels' drawing on top, swap. Once the window is
     // gone (x11.windowGone()), what GLFW read from it is garbage: each read is checked before use.
+    int restingFrames = 0;
     while (!glfwWindowShouldClose(window)) {
       x11.rearm();
-      glfwPollEvents();
+      // Frames are drawn only while something moves; at rest the loop sleeps in GLFW until input
+      // arrives (or a short timeout, for what other threads finish), so an idle explorer whose
+      // volume has converged uses almost no CPU. Scripted runs always draw.
+      const double wait = scriptedRun ? 0.0 : frameWaitSeconds(state, view.resting(), restingFrames);
+      if (wait > 0.0)
+        glfwWaitEventsTimeout(wait);
+      else
+        glfwPollEvents();
       const bool iconified = glfwGetWindowAttrib(window, GLFW_ICONIFIED) != 0;
       if (x11.windowGone()) break;
       if (iconified) {
@@ -238,6 +246,12 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       glfwGetFramebufferSize(window, &width, &height);
       if (x11.windowGone()) break;
       view.frame(state, width, height);
+      // Input gets a few frames of its own: ImGui settles hover and layout a frame late.
+      const ImGuiIO& io = ImGui::GetIO();
+      const bool userActive = input.queue.pending() > 0 || io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f ||
+                              io.MouseWheel != 0.0f || io.MouseWheelH != 0.0f || ImGui::IsAnyMouseDown() ||
+                              ImGui::IsAnyItemActive() || !io.InputQueueCharacters.empty();
+      restingFrames = view.resting() && state.session.resting && !userActive ? restingFrames + 1 : 0;
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       ++frame;
       // Scripted runs count frames from the first one that shows the volume.

@@ -62,6 +62,9 @@ struct ExplorerSession::Engine {
   core::SnapshotPublisher publisher;    // after the accumulator it reads, so it is destroyed first
   std::uint64_t patternGeneration = 0;  // the Accumulator generation of the latest applied post
   std::uint64_t patternPost = 0;        // ... and that post's number
+  core::ConvergenceMeter meter;         // control thread only, like the two below
+  core::DensitySample sample;
+  std::uint64_t target = kExplorerTargetPoints;  // what the accumulator was last told
 };
 
 ExplorerSession::ExplorerSession(int threads, std::chrono::milliseconds snapshotInterval)
@@ -130,6 +133,12 @@ SessionStatus ExplorerSession::status() const {
   status.appliedGeneration = applied_;
   status.hasShape = engine_ != nullptr;
   if (engine_) status.stats = engine_->accumulator.stats();
+  status.noise = noise_;
+  status.noiseTarget = noiseTarget_;
+  status.converged = converged_;
+  status.paused = paused_ && holding_;
+  status.resting = engine_ && holding_ && status.stats.done && !buildingShape_ && !pending_ && !working_ &&
+                   !steerRequested_ && engine_->publisher.caughtUp();
   return status;
 }
 
@@ -144,6 +153,48 @@ bool ExplorerSession::waitUntilApplied(double timeoutSeconds) {
                                  [&] { return applied_ == requested_ && !working_; });
 }
 
+void ExplorerSession::setRefinement(double noiseTarget, bool paused) {
+  {
+    std::lock_guard lock(mutex_);
+    if (noiseTarget == noiseTarget_ && paused == paused_) return;
+    noiseTarget_ = noiseTarget;
+    paused_ = paused;
+    steerRequested_ = true;
+  }
+  wake_.notify_all();
+}
+
+void ExplorerSession::steer(Engine& engine) {
+  double target = 0.0;
+  bool paused = false;
+  {
+    std::lock_guard lock(mutex_);
+    target = noiseTarget_;
+    paused = paused_;
+  }
+  engine.accumulator.sampleDensity(engine.sample);
+  const double noise = engine.meter.update(engine.sample);
+  const bool converged = target > 0.0 && noise <= target;  // false while the noise is NaN
+  std::uint64_t wanted = kExplorerTargetPoints;
+  if (converged || paused) {
+    // A target already held stays: raising it to the points counted now would send the streams
+    // that are behind on another batch each time, and the workers would never quite rest.
+    const std::uint64_t points = engine.accumulator.stats().points;
+    wanted = engine.target != kExplorerTargetPoints ? engine.target
+             : converged                            ? std::max<std::uint64_t>(points, 1)
+                                                    : std::max(points, kPausedPreviewPoints);
+  }
+  if (wanted != engine.target) {
+    engine.target = wanted;
+    engine.accumulator.setTargetPoints(wanted);
+    engine.publisher.requestNow();  // the last points before the workers stop, or the first after
+  }
+  std::lock_guard lock(mutex_);
+  noise_ = noise;
+  converged_ = converged;
+  holding_ = wanted != kExplorerTargetPoints;
+}
+
 void ExplorerSession::controlLoop(std::stop_token stop) {
   std::string failedShapeKey;  // a mesh that failed to load is not retried on every edit
   while (!stop.stop_requested()) {
@@ -151,8 +202,21 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
     std::uint64_t post = 0;
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, stop, [&] { return pending_.has_value(); });
+      // While the volume refines the noise is measured every kMeterInterval; once refinement is
+      // held (or before there is a volume) this thread sleeps until it is asked for something.
+      const auto asked = [&] { return pending_.has_value() || steerRequested_; };
+      if (engine_ && !holding_)
+        wake_.wait_for(lock, stop, kMeterInterval, asked);
+      else
+        wake_.wait(lock, stop, asked);
       if (stop.stop_requested()) return;
+      steerRequested_ = false;
+      if (!pending_) {
+        Engine* engine = engine_.get();  // only this thread replaces it
+        lock.unlock();
+        if (engine) steer(*engine);
+        continue;
+      }
       scene = std::move(*pending_);
       pending_.reset();
       post = requested_;
@@ -223,7 +287,11 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
           proxy->patternGeneration = proxy->accumulator.generation();
           proxy->patternPost = post;
         }
+        // A new pattern refines afresh: a held target would stop it at the old generation's count.
+        current->target = kExplorerTargetPoints;
+        current->accumulator.setTargetPoints(kExplorerTargetPoints);
         current->accumulator.setPattern(scene.layers, scene.seed);
+        steer(*current);  // a pause still holds the new pattern (at a preview)
         current->publisher.requestNow();
         std::lock_guard lock(mutex_);
         current->patternGeneration = current->accumulator.generation();

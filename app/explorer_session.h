@@ -12,6 +12,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <optional>
@@ -36,6 +37,15 @@ struct SessionStatus {
   std::uint64_t requestedGeneration = 0;  // pattern requests posted so far
   std::uint64_t appliedGeneration = 0;    // of those, the newest the Accumulator runs
   bool hasShape = false;
+  // Convergence (core/convergence.h): the estimated noise left in the volume (a fraction; NaN
+  // until measured), the target that stops refining (0: never), and why refinement rests.
+  double noise = std::numeric_limits<double>::quiet_NaN();
+  double noiseTarget = 0.0;
+  bool converged = false;  // the noise reached the target: the workers sleep until the next edit
+  bool paused = false;     // refinement is held while an export runs
+  // Nothing will change until the user does something: refinement is held and finished, and the
+  // last volume has been taken. The window loop may then wait for events instead of drawing.
+  bool resting = false;
 };
 
 class ExplorerSession {
@@ -81,10 +91,23 @@ class ExplorerSession {
   // Blocks until the posted scene is applied (for tests and scripted runs); false on timeout.
   bool waitUntilApplied(double timeoutSeconds);
 
+  // Refinement stops once the noise estimate reaches noiseTarget (a fraction; 0: refine until
+  // the next edit), and is held while `paused` (an export runs: the two would fight over the
+  // cores; a pattern edited meanwhile still refines to a small preview). A stopped or held
+  // accumulator's workers sleep; a new pattern or a lower target starts them again. Cheap when
+  // nothing changed: the explorer calls it every frame.
+  void setRefinement(double noiseTarget, bool paused);
+
+  // How often the noise is measured while the volume refines.
+  static constexpr std::chrono::milliseconds kMeterInterval{250};
+  // The points a pattern edited during an export refines to before it is held.
+  static constexpr std::uint64_t kPausedPreviewPoints = 5'000'000;
+
  private:
   struct Engine;  // the shape plus the Accumulator and publisher running on it
   struct Proxy;   // the small Accumulator that runs each pattern first
   void controlLoop(std::stop_token stop);
+  void steer(Engine& engine);  // control thread: measures the noise, holds or releases the workers
 
   const int threads_;
   const std::chrono::milliseconds snapshotInterval_;
@@ -102,6 +125,12 @@ class ExplorerSession {
   std::string shapeStage_;
   std::chrono::steady_clock::time_point shapeStart_;
   std::string error_;
+  double noiseTarget_ = 0.0;
+  bool paused_ = false;
+  bool steerRequested_ = false;  // setRefinement changed something for the control thread
+  double noise_ = std::numeric_limits<double>::quiet_NaN();
+  bool converged_ = false;
+  bool holding_ = false;  // the accumulator's target is held (converged or paused)
   std::jthread control_;  // last: started after everything it uses exists
 };
 

@@ -1035,6 +1035,15 @@ void renderSection(ExplorerState& state) {
   ImGui::SliderFloat("frame budget", &state.frameBudgetMs, 8.0f, 200.0f, "%.0f ms");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("while you edit or orbit, fewer pixels are marched to keep frames this quick");
+  // 0 reads "never": the slider's left end is refining until the next edit.
+  double& stopAt = state.settings.refineUntilNoisePercent;
+  const double low = 0.0, high = 10.0;
+  ImGui::SliderScalar("stop refining at noise", ImGuiDataType_Double, &stopAt, &low, &high,
+                      stopAt <= 0.0 ? "never" : "%.2f%%", ImGuiSliderFlags_Logarithmic);
+  probe(state, "render/stop_refining_at_noise");
+  stopAt = std::clamp(stopAt, 0.0, 100.0);
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("the volume stops refining (and the explorer rests) once its estimated noise is this low");
 }
 
 void cameraSection(ExplorerState& state) {
@@ -1229,6 +1238,35 @@ void viewWindow(ExplorerState& state, float scale) {
   ImGui::End();
 }
 
+}  // namespace
+
+std::string convergenceText(const SessionStatus& status) {
+  if (!status.hasShape) return "";
+  char text[96];
+  const double noise = 100.0 * status.noise, target = 100.0 * status.noiseTarget;
+  if (status.paused)
+    std::snprintf(text, sizeof text, "refining paused for the export");
+  else if (status.converged)
+    std::snprintf(text, sizeof text, "converged (noise %.2g%%)", noise);
+  else if (!std::isfinite(noise))
+    std::snprintf(text, sizeof text, "noise …");
+  else if (status.noiseTarget > 0.0)
+    std::snprintf(text, sizeof text, "noise %.2g%% → %.2g%%", noise, target);
+  else
+    std::snprintf(text, sizeof text, "noise %.2g%%", noise);
+  return text;
+}
+
+double frameWaitSeconds(const ExplorerState& state, bool viewResting, int restingFrames) {
+  if (state.exportStatus.state == ExportState::Running) return 0.1;
+  const bool busy = state.playing || state.search.busy() || state.analysis.busy() || state.orbiting || state.panning;
+  if (busy || !viewResting || !state.session.resting || restingFrames < 3) return 0.0;
+  // Other threads do not wake the loop; this bounds how late it notices one that finished.
+  return 0.5;
+}
+
+namespace {
+
 void statusBar(ExplorerState& state, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
   const float height = ImGui::GetFrameHeightWithSpacing() + 6 * scale;
@@ -1247,6 +1285,10 @@ void statusBar(ExplorerState& state, float scale) {
     ImGui::Text("%.1f M points  %.1f M/s  inside %.1f%%  escapes %llu", static_cast<double>(stats.points) * 1e-6,
                 stats.pointsPerSecond * 1e-6, 100.0 * stats.insideFraction(),
                 static_cast<unsigned long long>(stats.escapes));
+  if (const std::string convergence = convergenceText(state.session); !convergence.empty()) {
+    ImGui::SameLine();
+    ImGui::Text(" |  %s", convergence.c_str());
+  }
   ImGui::SameLine();
   ImGui::TextColored(kDimColor, " |  %.0f fps  %.1f ms (worst %.0f)  upload %.1f ms  %d samples", m.fps, m.frameMs,
                      m.worstFrameMs, m.uploadMs, state.samples);

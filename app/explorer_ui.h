@@ -147,6 +147,17 @@ bool openFile(ExplorerState& state, const std::filesystem::path& path);
 // remembers its folder; a refused request leaves a notice.
 void startExport(ExplorerState& state, ExportJob& job, const ExportRequest& request);
 
+// The status line's convergence meter: "noise 1.2% → 0.5%" while refining towards a target,
+// "noise 1.2%" when refinement never stops, "converged (noise 0.48%)", "paused for the export".
+std::string convergenceText(const SessionStatus& status);
+
+// How long the window loop may wait for input before its next frame: 0 while anything moves (an
+// edit, refinement, an upload, samples, a job, playback); a long wait when the session and the
+// picture rest, so the explorer uses almost no CPU while nothing changes; a short one while an
+// export runs, so its progress shows without taking cores from it. `restingFrames` counts the
+// frames in a row that found everything at rest (ImGui needs a couple to settle after input).
+double frameWaitSeconds(const ExplorerState& state, bool viewResting, int restingFrames);
+
 // Applies the UI scale (DPI): fonts and spacing. Call before the first frame.
 void applyUiScale(float scale);
 

@@ -123,6 +123,10 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
   }
 }
 
+bool LiveView::resting() const {
+  return target_.samples >= kMaxSamples && !uploadInProgress_ && !shadowJob_.busy() && !shadowJob_.ready();
+}
+
 LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned framebuffer) {
   LiveFrame result;
   width = std::max(1, width);
@@ -133,6 +137,9 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
                      lastMarched_);
   lastFrameStart_ = frameStart;
   lastMarched_ = false;
+  // Refinement rests at the user's noise target and while an export uses the cores.
+  session_.setRefinement(0.01 * state.settings.refineUntilNoisePercent,
+                         state.exportStatus.state == ExportState::Running);
   if (session_.postIfPatternChanged(state.scene)) {
     result.patternPosted = true;
     waitingPost_ = session_.status().requestedGeneration;

@@ -50,6 +50,9 @@ class LiveView {
   LiveFrame frame(ExplorerState& state, int width, int height, unsigned framebuffer = 0);
 
   bool hasVolume() const { return renderer_.hasVolume(); }
+  // The picture is finished: every sample marched, no upload or shadow under way. With the
+  // session resting too, another frame would draw the same pixels.
+  bool resting() const;
   std::uint32_t frameCount() const { return frame_; }
 
   // Refining stops after this many samples of an unchanged view (the picture no longer improves).

@@ -12,6 +12,7 @@
 
 #include "commands.h"
 #include "core/camera.h"
+#include "core/convergence.h"
 #include "core/error.h"
 #include "core/flame_image.h"
 #include "core/point_renderer.h"
@@ -78,27 +79,65 @@ void reportAccumulation(const StillOptions& options, const core::AccumulatorStat
 
 AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& shape, const StillOptions& options) {
   AccumulatedVolume result;
-  std::uint64_t target = options.points ? options.points : scene.points;
+  const bool untilNoise = options.untilNoise > 0.0;
+  std::uint64_t target = options.points ? options.points : untilNoise ? kUntilNoisePointCap : scene.points;
   if (scene.render.method == core::RenderMethod::Points) target = std::min(target, kGridPointsForPointsMethod);
   const auto start = std::chrono::steady_clock::now();
   core::Accumulator accumulator(shape.mask, options.threads);
-  accumulator.setTargetPoints(target);
+  core::ConvergenceMeter meter;
+  core::DensitySample sample;
+  auto measure = [&] {
+    accumulator.sampleDensity(sample);
+    return meter.update(sample);
+  };
+  // The target a progress report shows: with a noise target, the points it is estimated to need
+  // (noise falls like 1/sqrt(points)), so the fraction and the time left mean what they say.
+  std::uint64_t reported = target;
+  auto report = [&](const core::AccumulatorStats& stats, double noise) {
+    if (untilNoise && std::isfinite(noise) && noise > 0.0)
+      reported = std::clamp(static_cast<std::uint64_t>(static_cast<double>(stats.points) *
+                                                       (noise / options.untilNoise) * (noise / options.untilNoise)),
+                            stats.points, target);
+    reportAccumulation(options, stats, untilNoise ? reported : target);
+  };
+  // A point count stops a third of the way first: the sample there is what the final count's noise is
+  // measured against. (A noise target without a count is measured along the way.)
+  const std::uint64_t halfway = target < kUntilNoisePointCap ? target / 3 : 0;
+  accumulator.setTargetPoints(halfway ? halfway : target);
   accumulator.setPattern(scene.layers, scene.seed);
   // A pattern that mostly misses the mesh would never reach its target: give up after a
   // generous number of iterations and say how many points landed.
   const std::uint64_t iterationLimit = 40 * target + 50'000'000;
-  while (!accumulator.waitUntilDone(0.25)) {
-    if (options.cancel && options.cancel->load()) throw RenderCancelled();
-    const core::AccumulatorStats stats = accumulator.stats();
-    reportAccumulation(options, stats, target);
-    if (stats.iterations > iterationLimit) {
-      result.warning = "only " + std::to_string(stats.points) + " of " + std::to_string(target) +
-                       " points landed inside the mesh; the pattern barely overlaps it";
-      break;
+  bool reached = false;
+  // Polls start often and slow down geometrically, like the points between two measurements: a
+  // small render stops near its noise target, a large one samples a few times a second at most.
+  double poll = untilNoise ? 0.02 : 0.25;
+  for (bool second = false;; second = true) {
+    while (!accumulator.waitUntilDone(poll)) {
+      poll = std::min(0.25, 1.5 * poll);
+      if (options.cancel && options.cancel->load()) throw RenderCancelled();
+      const double noise = measure();
+      const core::AccumulatorStats stats = accumulator.stats();
+      report(stats, noise);
+      if (untilNoise && !reached && noise <= options.untilNoise) {
+        reached = true;
+        // Reached: the streams finish the batch they are in and the workers stop.
+        accumulator.setTargetPoints(std::max<std::uint64_t>(stats.points, 1));
+        continue;
+      }
+      if (stats.iterations > iterationLimit) {
+        result.warning = "only " + std::to_string(stats.points) + " of " + std::to_string(target) +
+                         " points landed inside the mesh; the pattern barely overlaps it";
+        break;
+      }
     }
+    if (second || !halfway || !result.warning.empty()) break;
+    measure();
+    accumulator.setTargetPoints(target);
   }
   result.stats = accumulator.stats();
-  reportAccumulation(options, result.stats, target);
+  result.noise = measure();
+  report(result.stats, result.noise);
   if (!result.stats.problem.empty()) throw core::Error(result.stats.problem);
   accumulator.snapshot(result.snapshot);
   result.seconds = secondsSince(start);
@@ -202,6 +241,7 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
     result.stats = accumulated.stats;
     result.warning = accumulated.warning;
     result.accumulateSeconds = accumulated.seconds;
+    result.noise = accumulated.noise;
     core::packVolume(accumulated.snapshot, volume);
   }
   if (options.cancel && options.cancel->load()) throw RenderCancelled();
@@ -232,6 +272,9 @@ core::TextChunks stillMetadata(const core::Scene& scene, const StillResult& resu
   stats << "{\"points\":" << result.stats.points << ",\"iterations\":" << result.stats.iterations;
   if (withTimes)
     stats << ",\"accumulate_seconds\":" << result.accumulateSeconds << ",\"render_seconds\":" << result.renderSeconds;
+  // Like the times, the noise depends on when it was measured: a frame that must be the same file
+  // on any machine leaves it out.
+  if (withTimes && std::isfinite(result.noise)) stats << ",\"noise\":" << result.noise;
   stats << ",\"method\":\"" << core::toString(scene.render.method) << "\",\"coverage\":" << result.coverage
         << ",\"points_projected\":" << result.pointsProjected << ",\"version\":\"" << kVersion << "\"}";
   // A preset inside an image must find its mesh from wherever the image goes.

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <string>
 
@@ -39,7 +40,10 @@ const char* toString(StillStage stage);  // "loading", "accumulating", "renderin
 struct StillOptions {
   int width = 1280;
   int height = 720;
-  std::uint64_t points = 0;                   // 0: the scene's own count
+  std::uint64_t points = 0;  // 0: the scene's own count
+  // > 0: accumulate until the estimated noise (core/convergence.h, a fraction) is this low, with
+  // `points` (when set) as a cap. The volume method only: the points method projects a count.
+  double untilNoise = 0.0;
   int threads = 0;                            // 0: all hardware threads
   bool linearOutput = false;                  // linear light (for EXR) instead of display-encoded
   const std::atomic<bool>* cancel = nullptr;  // when set and raised, renderStill throws RenderCancelled
@@ -58,6 +62,7 @@ struct StillResult {
   std::string warning;                // e.g. fewer points landed inside the mesh than asked for
   double coverage = 0.0;              // share of the mesh's silhouette where the pattern shows (flame_image.h)
   std::uint64_t pointsProjected = 0;  // points method: points projected into the image (0: volume method)
+  double noise = std::numeric_limits<double>::quiet_NaN();  // the grid's final noise estimate (NaN: none)
 };
 
 // Thrown by renderStill when StillOptions::cancel was raised.
@@ -71,15 +76,21 @@ class RenderCancelled : public core::Error {
 StillResult renderStill(const core::Scene& scene, const StillOptions& options);
 
 // The first half of a still: the scene's pattern accumulated into its grid until the scene's
-// point count (or options.points) lies inside the mesh. Honours options.cancel and .progress.
+// point count (or options.points) lies inside the mesh, or until options.untilNoise is reached.
+// Honours options.cancel and .progress (whose target is then the points the noise is estimated
+// to need). The noise is measured along the way (a point count stops a third of the way first, for a
+// reference), so the result carries its final estimate.
 // For the points method the grid only gives depth (transmittance and shadows), so it takes at
 // most kGridPointsForPointsMethod points; the points pass projects the full count.
 struct AccumulatedVolume {
   core::VolumeSnapshot snapshot;
   core::AccumulatorStats stats;
   double seconds = 0.0;
-  std::string warning;  // e.g. fewer points landed inside the mesh than asked for
+  std::string warning;                                      // e.g. fewer points landed inside the mesh than asked for
+  double noise = std::numeric_limits<double>::quiet_NaN();  // the final estimate (core/convergence.h)
 };
+// The point count an accumulation with StillOptions::untilNoise and no `points` stops at anyway.
+inline constexpr std::uint64_t kUntilNoisePointCap = std::uint64_t{1} << 40;
 inline constexpr std::uint64_t kGridPointsForPointsMethod = 40'000'000;
 AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& shape, const StillOptions& options);
 

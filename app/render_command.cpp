@@ -3,6 +3,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 
@@ -115,12 +116,15 @@ int renderCommand(const RenderArguments& arguments) {
   // An animated preset renders the moment it names (a rendered frame stores its own time).
   scene = core::sceneAtTime(scene, arguments.time.value_or(scene.animation.time));
   if (options.points) scene.points = options.points;
+  if (arguments.untilNoisePercent) options.untilNoise = 0.01 * *arguments.untilNoisePercent;
   if (arguments.samples) scene.render.samples = *arguments.samples;
   if (arguments.grid) scene.gridResolution = *arguments.grid;
   if (arguments.cameraAzimuthDeg) scene.camera.azimuthDeg = *arguments.cameraAzimuthDeg;
   if (arguments.cameraElevationDeg) scene.camera.elevationDeg = *arguments.cameraElevationDeg;
   if (arguments.method) scene.render.method = *arguments.method;
   if (arguments.oversample) scene.render.oversample = *arguments.oversample;
+  if (options.untilNoise > 0.0 && scene.render.method == core::RenderMethod::Points)
+    throw UsageError("--until-noise measures the voxel grid, which the points method does not show: use --points");
   options.linearOutput = extension == ".exr";
   // Render exactly what the image will store: values pass through their JSON form first (colours
   // become hex), so rendering the image's preset again gives the same pixels.
@@ -159,6 +163,8 @@ int renderCommand(const RenderArguments& arguments) {
   }
   if (interactive) std::fprintf(stderr, "\n");
   if (!result.warning.empty()) std::cerr << "voxflame: warning: " << result.warning << "\n";
+  // The stored preset reproduces the image with the count the noise target came to.
+  if (options.untilNoise > 0.0) scene.points = std::max<std::uint64_t>(result.stats.points, 1);
   progressPipe.report("writing", 0.0);
   if (gInterrupted) {
     std::cerr << "voxflame: interrupted; nothing was written\n";

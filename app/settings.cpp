@@ -62,6 +62,16 @@ class Reader {
                         std::to_string(max));
   }
 
+  void number(const json& object, const char* key, const std::string& path, double& value, double min, double max) {
+    const json* found = find(object, key);
+    if (!found) return;
+    if (found->is_number() && found->get<double>() >= min && found->get<double>() <= max) {
+      value = found->get<double>();
+      return;
+    }
+    problems_.push_back("'" + path + "' must be a number from " + std::to_string(min) + " to " + std::to_string(max));
+  }
+
   void boolean(const json& object, const char* key, const std::string& path, bool& value) {
     const json* found = find(object, key);
     if (!found) return;
@@ -112,6 +122,8 @@ Settings settingsFromJson(const json& root, std::vector<std::string>& problems) 
     reader.boolean(*window, "maximized", "window.maximized", w.maximized);
   }
   reader.path(root, "last_preset", "last_preset", settings.lastPreset);
+  reader.number(root, "refine_until_noise_percent", "refine_until_noise_percent", settings.refineUntilNoisePercent, 0.0,
+                100.0);
   reader.path(root, "user_preset_folder", "user_preset_folder", settings.userPresetFolder);
   if (const json* recent = reader.find(root, "recent")) {
     if (!recent->is_array()) {
@@ -164,6 +176,7 @@ json settingsToJson(const Settings& settings) {
   root["window"] = window;
   root["last_preset"] = settings.lastPreset.string();
   root["user_preset_folder"] = settings.userPresetFolder.string();
+  root["refine_until_noise_percent"] = settings.refineUntilNoisePercent;
   json recent = json::array();
   for (const auto& file : settings.recent)
     recent.push_back({{"path", file.path.string()}, {"kind", toString(file.kind)}});

@@ -24,6 +24,10 @@ inline constexpr std::size_t kMaxRecentFiles = 10;  // per kind
 
 enum class RecentKind { Preset, Mesh };
 
+// Where a default scene's volume stops changing visibly: the last percent or two of voxel noise
+// hides under the ray-marcher's averaging along each ray.
+inline constexpr double kDefaultRefineUntilNoisePercent = 1.5;
+
 struct RecentFile {
   std::filesystem::path path;  // absolute
   RecentKind kind = RecentKind::Preset;
@@ -43,6 +47,9 @@ struct Settings {
   std::filesystem::path userPresetFolder;  // empty: defaultUserPresetFolder()
   ExportSettings lastExport;
   std::filesystem::path lastExportFolder;  // empty: none yet
+  // The explorer stops refining once the volume's estimated noise (core/convergence.h) is this
+  // many percent, and the process rests; 0: never stop (refine until the next edit). 0–100.
+  double refineUntilNoisePercent = kDefaultRefineUntilNoisePercent;
 
   // Puts `path` (made absolute) first among its kind, removing an earlier mention and the
   // oldest beyond kMaxRecentFiles.

@@ -16,7 +16,7 @@ const std::vector<Benchmark>& benchmarks() {
       {"raymarch", "milliseconds per 1280×720 frame of a 256³ and a 512³ grid", &benchRaymarch},
       {"explorer",
        "explorer frames headless at 192³, 256³ and 512³: edit to first frame and to full resolution, frames while "
-       "dragging, orbiting and refining, memory",
+       "dragging, orbiting and refining, memory, CPU once converged",
        &benchExplorer},
       {"export",
        "seconds for a 3840×2160 still of the default preset: volume at 512³ with 4 samples, points at 100 points "

@@ -7,7 +7,11 @@
 #include <fstream>
 #include <string>
 #include <vector>
+#include <sys/resource.h>
 #include <unistd.h>
+
+#include <array>
+#include <thread>
 
 #include "bench.h"
 #include "core/camera.h"
@@ -42,6 +46,7 @@ struct FrameLoop {
       : view(session, nullptr, nullptr) {
     app::resetExplorerState(state, scene);
     state.renderScale = renderScale;
+    state.settings.refineUntilNoisePercent = 0.0;  // refine until told otherwise (cpuAtRest)
     glGenRenderbuffers(1, &colour);
     glBindRenderbuffer(GL_RENDERBUFFER, colour);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 1280, 720);
@@ -143,6 +148,37 @@ EditLatencies measureEdits(FrameLoop& loop, app::ExplorerSession& session, int e
   return result;
 }
 
+// The explorer once its volume has converged: the noise target is set a little below the current
+// estimate, the frame loop runs as the window's does (it waits instead of drawing when
+// app::frameWaitSeconds says so), and the process's CPU time over a few seconds of rest is
+// measured. Returns {seconds to converge, CPU percent of one core at rest, noise}; -1 when it
+// did not converge within a minute.
+std::array<double, 3> cpuAtRest(app::ExplorerSession& session, FrameLoop& loop) {
+  const double noise = session.status().noise;
+  if (!(noise > 0.0)) return {-1.0, -1.0, -1.0};
+  loop.state.settings.refineUntilNoisePercent = 100.0 * 0.9 * noise;
+  int restingFrames = 0;
+  auto step = [&] {
+    loop.state.session = session.status();
+    const double wait = app::frameWaitSeconds(loop.state, loop.view.resting(), restingFrames);
+    if (wait > 0.0) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(wait));  // glfwWaitEventsTimeout, no input
+      return;
+    }
+    loop.run();
+    restingFrames = loop.view.resting() && loop.state.session.resting ? restingFrames + 1 : 0;
+  };
+  const auto start = Clock::now();
+  while (restingFrames < 3 && millisecondsSince(start) < 60'000) step();
+  if (restingFrames < 3) return {-1.0, -1.0, -1.0};
+  const double converged = millisecondsSince(start) / 1000.0;
+  const double cpuStart = cpuSeconds(RUSAGE_SELF);
+  const auto restStart = Clock::now();
+  while (millisecondsSince(restStart) < 3000.0) step();
+  const double cpu = cpuSeconds(RUSAGE_SELF) - cpuStart;
+  return {converged, 100.0 * cpu / (millisecondsSince(restStart) / 1000.0), session.status().noise};
+}
+
 }  // namespace
 
 // The explorer's numbers at 192³, 256³ and 512³: edit → first frame (frames and ms) and → the
@@ -189,7 +225,8 @@ void benchExplorer(const BenchOptions& options) {
       request.settings.height = 720;
       request.settings.points = 20'000'000;
       job.start(request);
-      while (job.poll().state == app::ExportState::Running) {
+      // As in the explorer, refinement pauses while the export runs.
+      while ((loop.state.exportStatus = job.poll()).state == app::ExportState::Running) {
         const auto frameStart = Clock::now();
         loop.run();
         exporting.add(millisecondsSince(frameStart));
@@ -197,6 +234,8 @@ void benchExplorer(const BenchOptions& options) {
       std::filesystem::remove(output);
     }
     auto median = [](const std::vector<double>& sorted) { return sorted[sorted.size() / 2]; };
+    loop.state.exportStatus = app::ExportStatus{};
+    const auto [convergeSeconds, cpuPercent, restNoise] = cpuAtRest(session, loop);
     report(options, {{"bench", "explorer"},
                      {"grid", resolution},
                      {"renderer", context.renderer()},
@@ -220,7 +259,10 @@ void benchExplorer(const BenchOptions& options) {
                      {"peak_resident_mb", peakResidentMegabytes()},
                      {"frames_during_export", exporting.frames},
                      {"mean_frame_ms_during_export", exporting.mean()},
-                     {"worst_frame_ms_during_export", exporting.worst}});
+                     {"worst_frame_ms_during_export", exporting.worst},
+                     {"seconds_to_converge", convergeSeconds},
+                     {"noise_converged", restNoise},
+                     {"cpu_percent_converged", cpuPercent}});
   }
 }
 

@@ -137,6 +137,13 @@ Run defineRender(CLI::App& command) {
       ->check(within<std::uint64_t>(0, std::uint64_t{1} << 40));
   command.add_option("--grid", a->grid, "Voxels along the mesh's longest side (default: the preset's)")
       ->check(within(16, 1024));
+  command
+      .add_option("--until-noise", a->untilNoisePercent,
+                  "Accumulate until the volume's estimated noise is this many PERCENT (0.5 = 0.5%: the RMS error of "
+                  "the voxel densities relative to their RMS), instead of to a point count; --points, when given, "
+                  "caps it. Volume method only")
+      ->type_name("PERCENT")
+      ->check(within(0.001, 100.0));
   command.add_option("--bit-depth", a->bitDepth, "Bits per channel of a PNG")
       ->check(CLI::IsMember({8, 16}))
       ->capture_default_str();
@@ -159,7 +166,8 @@ Run defineRender(CLI::App& command) {
       "(default: the preset's render.method)");
   command.add_option("--oversample", a->oversample, "Supersampling of the points method (default: the preset's)")
       ->check(within(1, 4));
-  command.add_flag("--stats", a->stats, "Print the render statistics as JSON too");
+  command.add_flag("--stats", a->stats,
+                   "Print the render statistics as JSON too (\"noise\": the final noise estimate, a fraction)");
   command.footer(
       "Renders headless (no display needed). A PNG carries its preset: rendering it again reproduces it.\n"
       "EXR is linear 32-bit float. VDB and NRRD hold the volume itself (normalised density and colour, in\n"

@@ -5,6 +5,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <compare>
 #include <limits>
 #include <mutex>
@@ -15,6 +16,7 @@
 #include <memory>
 
 #include "core/accumulator.h"
+#include "core/convergence.h"
 #include "core/error.h"
 #include "core/grid.h"
 #include "core/inside_mask.h"
@@ -765,4 +767,40 @@ TEST(ChaosGameLayers, IndexColoursNeedAChaosGame) {
   PatternLayer layer = defaultScene().layers.front();
   layer.color.mode = ColorMode::Index;
   EXPECT_THROW(prepareLayer(layer, *mask, 1), Error);
+}
+
+// The convergence meter on a real accumulation: the noise it reports falls as points grow, as a
+// Monte Carlo sum's does. (Measured against one early sample: between close samples a flow's
+// orbits also drift slowly, which the estimate honestly reports as noise.)
+TEST(Convergence, TheEstimateFallsAsPointsGrow) {
+  const auto mask = bunnyMask(48);
+  Accumulator accumulator(mask, 2);
+  DensitySample reference, sample;
+  ConvergenceMeter meter;
+  std::vector<double> fromReference, fromMeter;
+  std::uint64_t target = 500'000;
+  accumulator.setTargetPoints(target);
+  accumulator.setPattern(defaultScene().layers, 7);
+  for (int step = 0; step < 4; ++step) {
+    ASSERT_TRUE(accumulator.waitUntilDone(60.0));
+    accumulator.sampleDensity(step == 0 ? reference : sample);
+    EXPECT_GE((step == 0 ? reference : sample).points, target);
+    const double estimate = meter.update(step == 0 ? reference : sample);
+    if (step > 0) {
+      ASSERT_TRUE(std::isfinite(estimate)) << "at step " << step;
+      fromMeter.push_back(estimate);
+      fromReference.push_back(estimateNoise(reference.hits, sample.hits));
+    }
+    target *= 4;
+    accumulator.setTargetPoints(target);
+  }
+  for (std::size_t i = 1; i < fromReference.size(); ++i)
+    EXPECT_LT(fromReference[i], fromReference[i - 1]) << "step " << i;
+  // Sixteen times the points: a quarter of the noise for independent points; these orbits are not
+  // quite independent, but the noise must at least halve.
+  EXPECT_LT(fromReference.back(), 0.5 * fromReference.front())
+      << fromReference.front() << " then " << fromReference.back();
+  EXPECT_LT(fromMeter.back(), fromMeter.front()) << fromMeter.front() << " then " << fromMeter.back();
+  EXPECT_GT(fromMeter.back(), 0.0);
+  EXPECT_LT(fromMeter.front(), 0.2) << "a few million points in a 48³ bunny are not that noisy";
 }

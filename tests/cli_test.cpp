@@ -389,3 +389,42 @@ TEST(Cli, MaskWritesNrrdAndStats) {
   EXPECT_NE(result.output.find("gone.obj"), std::string::npos) << result.output;
   EXPECT_FALSE(std::filesystem::exists(folder / "t.nrrd"));
 }
+
+// `render --until-noise` stops at a noise estimate instead of a point count: a looser target
+// stops sooner, each meets its target, --points still caps it, and --stats prints the estimate.
+TEST(Cli, RenderUntilNoiseStopsAtTheNoiseAndStatsReportIt) {
+  TemporaryFolder folder;
+  auto statsOf = [&](const std::string& options) {
+    const auto result =
+        runVoxflame("render -o out.png --width 64 --height 48 --grid 96 --stats " + options, folder.path());
+    EXPECT_EQ(result.exitStatus, 0) << result.output;
+    const auto at = result.output.find("stats {");
+    if (at == std::string::npos) return nlohmann::json::object();
+    return nlohmann::json::parse(result.output.substr(at + 6, result.output.find('\n', at) - at - 6));
+  };
+  const auto loose = statsOf("--until-noise 8");
+  const auto tight = statsOf("--until-noise 3");
+  ASSERT_TRUE(loose.contains("noise") && tight.contains("noise") && loose.contains("points")) << loose.dump() << "\n"
+                                                                                              << tight.dump();
+  EXPECT_LE(loose["noise"].get<double>(), 0.08);
+  EXPECT_LE(tight["noise"].get<double>(), 0.03);
+  EXPECT_LT(loose["points"].get<std::uint64_t>(), tight["points"].get<std::uint64_t>())
+      << "a lower noise takes more points";
+  // The preset in the image holds the count the target came to, so it renders the same again.
+  const auto png = voxflame::core::readPng(folder / "out.png");
+  EXPECT_EQ(voxflame::core::sceneFromJson(png.text.at("voxflame:preset"), "png").points,
+            tight["points"].get<std::uint64_t>());
+
+  const auto capped = statsOf("--until-noise 0.01 --points 2000000");
+  EXPECT_LT(capped["points"].get<std::uint64_t>(), 3'000'000u) << "--points caps an unreachable noise target";
+  ASSERT_TRUE(capped.contains("noise")) << capped.dump();
+  EXPECT_GT(capped["noise"].get<double>(), 0.0001);
+
+  const auto plain = statsOf("--points 2000000");
+  EXPECT_TRUE(plain.contains("noise")) << "a plain render reports its noise too: " << plain.dump();
+
+  const auto refused = runVoxflame("render -o p.png --method points --until-noise 1", folder.path());
+  EXPECT_EQ(refused.exitStatus, 2) << refused.output;
+  EXPECT_NE(refused.output.find("--until-noise"), std::string::npos) << refused.output;
+  EXPECT_EQ(runVoxflame("render -o q.png --until-noise 0", folder.path()).exitStatus, 2) << "0 is not a noise";
+}

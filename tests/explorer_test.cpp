@@ -29,22 +29,26 @@ namespace {
 // A private X server for the duration of a test, on a display number nobody else uses.
 class XvfbServer {
  public:
+  // Xvfb picks a free display itself (-displayfd) and writes its number to a pipe: tests that run
+  // at once never share a server (two picking the same free number would, and a key meant for one
+  // explorer would reach another).
   XvfbServer() {
-    for (int candidate = 90 + static_cast<int>(getpid() % 50); candidate < 400; ++candidate) {
-      if (std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(candidate)) ||
-          std::filesystem::exists("/tmp/.X" + std::to_string(candidate) + "-lock"))
-        continue;
-      display_ = candidate;
-      break;
-    }
+    int fds[2];
+    if (pipe(fds) != 0) return;
     pid_ = fork();
     if (pid_ == 0) {
-      const std::string display = ":" + std::to_string(display_);
-      execlp("Xvfb", "Xvfb", display.c_str(), "-screen", "0", "1280x720x24", "-nolisten", "tcp", nullptr);
+      close(fds[0]);
+      const std::string fd = std::to_string(fds[1]);
+      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x720x24", "-nolisten", "tcp", nullptr);
       _exit(127);
     }
-    for (int i = 0; i < 100 && !std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display_)); ++i)
-      std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    close(fds[1]);
+    std::string number;
+    char c = 0;
+    while (read(fds[0], &c, 1) == 1 && c != '\n') number += c;
+    close(fds[0]);
+    if (!number.empty()) display_ = std::stoi(number);
+    for (int i = 0; i < 100 && !running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   ~XvfbServer() { stop(); }
   void stop() {
@@ -54,7 +58,9 @@ class XvfbServer {
       pid_ = -1;
     }
   }
-  bool running() const { return std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display_)); }
+  bool running() const {
+    return display_ >= 0 && std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display_));
+  }
   std::string environment() const { return "DISPLAY=:" + std::to_string(display_); }
 
   // Runs xdotool on this display (a shell-quoted argument string); its exit status. A window
@@ -64,7 +70,7 @@ class XvfbServer {
   }
 
  private:
-  int display_ = 99;
+  int display_ = -1;
   pid_t pid_ = -1;
 };
 

@@ -7,6 +7,10 @@
 #include <functional>
 #include <fstream>
 #include <thread>
+#include <sstream>
+#include <filesystem>
+#include <iterator>
+#include <cmath>
 
 #include "core/flame_search.h"
 #include "core/flame_variations.h"
@@ -740,3 +744,121 @@ TEST_F(ExplorerFlameUi, QuaternionJuliaHasSlidersForItsConstantAndView) {
 }
 
 }  // namespace
+
+namespace {
+
+// CPU time (clock ticks) that every thread of this process has used so far.
+long long processThreadTicks() {
+  long long ticks = 0;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+    std::ifstream in(task.path() / "stat");
+    std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    // Fields after the parenthesised name: state is field 3, utime 14 and stime 15.
+    std::istringstream fields(stat.substr(stat.rfind(')') + 2));
+    std::string field;
+    for (int i = 3; i <= 15 && fields >> field; ++i)
+      if (i >= 14) ticks += std::stoll(field);
+  }
+  return ticks;
+}
+
+// Takes volumes as the frame loop would (the session rests only once the last one is taken)
+// until `done` holds; false after `seconds`.
+bool waitForSession(app::ExplorerSession& session, const std::function<bool(const app::SessionStatus&)>& done,
+                    double seconds = 60.0) {
+  core::PackedVolume volume;
+  const auto start = std::chrono::steady_clock::now();
+  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) {
+    session.takeVolumeIfNewer(volume);
+    if (done(session.status())) return true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  return false;
+}
+
+}  // namespace
+
+// The convergence meter falls as points grow; at the target the workers stop and sleep: points
+// stop growing and the process's threads use no CPU while nothing changes. A lower target or a
+// new pattern wakes them.
+TEST_F(ExplorerUi, RefinementStopsAtTheNoiseTargetAndTheWorkersSleep) {
+  state.scene.gridResolution = 48;
+  app::ExplorerSession session(2);
+  session.setRefinement(0.0, false);
+  session.post(state.scene);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  double first = 0.0;
+  ASSERT_TRUE(waitForSession(session, [&](const app::SessionStatus& s) {
+    if (std::isfinite(s.noise) && first == 0.0) first = s.noise;
+    return first > 0.0 && s.noise < 0.7 * first;
+  })) << "the noise estimate falls while the volume refines";
+  EXPECT_FALSE(session.status().converged) << "\"never\" never stops";
+
+  session.setRefinement(0.05, false);
+  ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.converged && s.resting; }))
+      << "noise " << session.status().noise;
+  const app::SessionStatus rested = session.status();
+  EXPECT_LE(rested.noise, 0.05);
+  EXPECT_TRUE(rested.stats.done);
+  EXPECT_EQ(app::convergenceText(rested).rfind("converged", 0), 0u) << app::convergenceText(rested);
+  const long long ticks = processThreadTicks();
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  EXPECT_EQ(session.status().stats.points, rested.stats.points) << "no points are added at rest";
+  // Two busy workers would use about 120 ticks in that time; sleeping ones use none.
+  EXPECT_LE(processThreadTicks() - ticks, 3) << "the threads sleep once the target is reached";
+
+  session.setRefinement(0.0001, false);
+  ASSERT_TRUE(waitForSession(session, [&](const app::SessionStatus& s) {
+    return s.stats.points > rested.stats.points;
+  })) << "a lower target starts refining again";
+  EXPECT_FALSE(session.status().converged);
+  EXPECT_EQ(app::convergenceText(session.status()).rfind("noise ", 0), 0u) << app::convergenceText(session.status());
+}
+
+// While an export runs refinement is held (the two would fight over the cores); it resumes after.
+TEST_F(ExplorerUi, RefinementPausesWhileAnExportRuns) {
+  state.scene.gridResolution = 48;
+  app::ExplorerSession session(2);
+  session.setRefinement(0.0, true);
+  session.post(state.scene);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.paused && s.resting; }));
+  const std::uint64_t held = session.status().stats.points;
+  EXPECT_GE(held, app::ExplorerSession::kPausedPreviewPoints) << "a pattern edited during an export still shows";
+  EXPECT_EQ(app::convergenceText(session.status()), "refining paused for the export");
+  session.setRefinement(0.0, false);
+  ASSERT_TRUE(waitForSession(session, [&](const app::SessionStatus& s) { return s.stats.points > held; }));
+  EXPECT_FALSE(session.status().paused);
+}
+
+// The Render panel has the setting; the window loop waits for input only when everything rests.
+TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) {
+  EXPECT_DOUBLE_EQ(state.settings.refineUntilNoisePercent, app::kDefaultRefineUntilNoisePercent);
+  const auto& slider = item("render/stop_refining_at_noise");
+  drag(slider.centerX(), slider.centerY(), -2000.0f, 0.0f);
+  EXPECT_DOUBLE_EQ(state.settings.refineUntilNoisePercent, 0.0) << "the left end is \"never\"";
+  drag(slider.minX + 2, slider.centerY(), 80.0f, 0.0f);
+  EXPECT_GT(state.settings.refineUntilNoisePercent, 0.0);
+
+  app::SessionStatus status;
+  status.hasShape = true;
+  status.noise = 0.012;
+  status.noiseTarget = 0.005;
+  EXPECT_EQ(app::convergenceText(status), "noise 1.2% → 0.5%");
+  status.noiseTarget = 0.0;
+  EXPECT_EQ(app::convergenceText(status), "noise 1.2%");
+
+  // The Lyapunov analysis of the pattern runs in the background at first: that is not rest.
+  for (int i = 0; i < 600 && (state.analysis.busy() || state.search.busy()); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    frame();
+  }
+  state.session.resting = false;
+  EXPECT_EQ(app::frameWaitSeconds(state, true, 10), 0.0) << "refining: every frame is drawn";
+  state.session.resting = true;
+  EXPECT_EQ(app::frameWaitSeconds(state, false, 10), 0.0) << "samples still to march";
+  EXPECT_EQ(app::frameWaitSeconds(state, true, 1), 0.0) << "input settles first";
+  EXPECT_GT(app::frameWaitSeconds(state, true, 10), 0.0);
+  state.exportStatus.state = app::ExportState::Running;
+  EXPECT_GT(app::frameWaitSeconds(state, false, 0), 0.0) << "an export's frames are throttled";
+}

@@ -940,6 +940,24 @@ void Accumulator::snapshot(VolumeSnapshot& out) const {
   out.maxDensity = maxDensity;
 }
 
+void Accumulator::sampleDensity(DensitySample& out) const {
+  waitForPatternChange();
+  std::shared_lock lock(gridMutex_);
+  const std::size_t voxels = cells_.size();
+  const std::size_t stride = convergenceSampleStride(voxels);
+  out.generation = generation_.load(std::memory_order_acquire);
+  out.points = points_.load();
+  out.hits.clear();
+  out.hits.reserve(voxels / stride + 1);
+  std::size_t v = 0;
+  for (std::size_t slab = 0; slab < slabCount_ && v < voxels; ++slab) {
+    const std::size_t end = std::min(voxels, (slab + 1) << slabShift_);
+    if (v >= end) continue;
+    std::lock_guard slabLock(slabMutexes_[slab]);
+    for (; v < end; v += stride) out.hits.push_back(cells_[v].density & ~kOutsideBit);
+  }
+}
+
 void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
   const int threadCount = threadCount_;
   std::vector<int> owned;

@@ -31,6 +31,7 @@
 #include <glm/vec3.hpp>
 
 #include "chaos_game.h"
+#include "convergence.h"
 #include "inside_mask.h"
 #include "scene.h"
 
@@ -206,6 +207,9 @@ class Accumulator {
 
   // Copies the grid; safe to call while the workers run.
   void snapshot(VolumeSnapshot& out) const;
+  // The hit counts of every convergenceSampleStride()-th voxel, for a ConvergenceMeter: a few
+  // milliseconds at any grid size, safe to call while the workers run.
+  void sampleDensity(DensitySample& out) const;
 
  private:
   friend struct SplatBuffer;

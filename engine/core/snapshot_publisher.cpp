@@ -28,10 +28,14 @@ bool SnapshotPublisher::takeIfNewer(PackedVolume& out) {
   return true;
 }
 
+bool SnapshotPublisher::caughtUp() {
+  std::lock_guard lock(mutex_);
+  return !readyFresh_ && publishedVersion_.load() == accumulator_.version();
+}
+
 void SnapshotPublisher::loop(std::stop_token stop) {
   VolumeSnapshot snapshot;
   PackedVolume working;
-  std::uint64_t lastVersion = ~std::uint64_t{0};
   while (!stop.stop_requested()) {
     {
       std::unique_lock lock(wakeMutex_);
@@ -40,11 +44,12 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     }
     if (stop.stop_requested()) break;
     const std::uint64_t version = accumulator_.version();
-    if (version == lastVersion) continue;
+    // An accumulator at rest adds nothing: the wake-up costs a load and a compare.
+    if (version == publishedVersion_.load()) continue;
     accumulator_.snapshot(snapshot);
     packVolume(snapshot, working);
-    lastVersion = working.version;
     std::lock_guard lock(mutex_);
+    publishedVersion_ = working.version;
     std::swap(working, ready_);
     readyFresh_ = true;
   }

@@ -3,7 +3,9 @@
 // finished volume.
 #pragma once
 
+#include <atomic>
 #include <chrono>
+#include <cstdint>
 #include <condition_variable>
 #include <memory>
 #include <mutex>
@@ -23,6 +25,9 @@ class SnapshotPublisher {
   // for a snapshot in progress. Returns whether `out` changed.
   bool takeIfNewer(PackedVolume& out);
   void requestNow();  // take the next snapshot without waiting for the interval
+  // Everything the accumulator holds has been published and taken: nothing new will come until
+  // the accumulator adds points again.
+  bool caughtUp();
 
  private:
   void loop(std::stop_token stop);
@@ -32,6 +37,7 @@ class SnapshotPublisher {
   std::mutex mutex_;  // guards ready_ and readyFresh_
   PackedVolume ready_;
   bool readyFresh_ = false;
+  std::atomic<std::uint64_t> publishedVersion_{~std::uint64_t{0}};
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;
   bool wakeRequested_ = false;  // guarded by wakeMutex_
