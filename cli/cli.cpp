@@ -357,7 +357,7 @@ Run defineMeshImportChild(CLI::App& command) {
   auto name = std::make_shared<std::string>();
   command.add_option("file", *file, "The mesh file")->required();
   command.add_option("name", *name, "What messages call the mesh")->required();
-  return [file, name] { return core::runMeshImportChild(*file, *name); };
+  return [file, name]() -> int { core::runMeshImportChild(*file, *name); };
 }
 
 constexpr bool kHidden = true;

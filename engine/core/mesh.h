@@ -53,8 +53,8 @@ void setMeshImportChild(MeshImportChild importer);
 inline constexpr const char* kMeshImportSubcommand = "__import-mesh";
 
 // The child's side: imports FILE with Assimp and writes the mesh (or the error message, calling
-// the mesh displayName) to standard output in the record the parent reads. Returns the exit status.
-int runMeshImportChild(const std::filesystem::path& path, const std::string& displayName);
+// the mesh displayName) to standard output in the record the parent reads, then ends the process.
+[[noreturn]] void runMeshImportChild(const std::filesystem::path& path, const std::string& displayName);
 
 // Loads and merges every mesh of the file. Throws core::Error naming the file on any problem:
 // missing, empty, corrupt, truncated, no triangles, only points or lines, indices out of range,
