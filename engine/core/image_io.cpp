@@ -103,8 +103,10 @@ void writePng(const std::filesystem::path& path, const ImageRGBA& image, int bit
 
 namespace {
 
+// `rows` belongs to the caller: libpng reports errors with longjmp, which would skip the
+// destructor of a vector made here.
 bool readPngFile(std::FILE* file, std::uint64_t maxPixels, PngInfo& out, std::vector<std::uint8_t>& data,
-                 std::string& reason) {
+                 std::vector<png_bytep>& rows, std::string& reason) {
   png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, &reason, pngError, pngWarning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
@@ -127,7 +129,7 @@ bool readPngFile(std::FILE* file, std::uint64_t maxPixels, PngInfo& out, std::ve
   const auto height = png_get_image_height(png, info);
   const std::size_t rowBytes = png_get_rowbytes(png, info);
   data.resize(rowBytes * height);
-  std::vector<png_bytep> rows(height);
+  rows.resize(height);
   for (std::size_t y = 0; y < height; ++y) rows[y] = data.data() + y * rowBytes;
   png_read_image(png, rows.data());
   png_read_end(png, info);
@@ -150,8 +152,9 @@ PngInfo readPng(const std::filesystem::path& path, std::uint64_t maxPixels) {
   if (!file) throw Error("cannot open image '" + path.string() + "'");
   PngInfo info;
   std::vector<std::uint8_t> data;
+  std::vector<png_bytep> rows;
   std::string reason;
-  if (!readPngFile(file.get(), maxPixels, info, data, reason))
+  if (!readPngFile(file.get(), maxPixels, info, data, rows, reason))
     throw Error("'" + path.string() + "' is not a readable PNG" + (reason.empty() ? "" : ": " + reason));
   const std::size_t samples =
       4 * static_cast<std::size_t>(info.image.width) * static_cast<std::size_t>(info.image.height);
