@@ -59,14 +59,18 @@ void LiveView::takeVolume() {
     target_.samples = 0;
   }
 
-  // A spare still held by a shadow job is left to it; the next volume goes into a fresh one.
-  if (spare_.use_count() > 1) spare_ = std::make_shared<core::PackedVolume>();
+  // The volume on screen is in the textures once uploaded, so its buffer goes back to the session
+  // in the swap that brings the next one (which packs into it): two copies of the grid in all, not
+  // three. One a shadow job still reads is left to it; the next volume then goes into a fresh one.
   std::uint64_t reflects = 0;
-  if (!uploadInProgress_ && session_.takeVolumeIfNewer(*spare_, &reflects)) {
-    std::swap(spare_, shown_);
-    renderer_.beginUpload(*shown_);
-    uploadInProgress_ = true;
-    uploadingPost_ = reflects;
+  if (!uploadInProgress_) {
+    std::shared_ptr<core::PackedVolume> next = shown_.use_count() > 1 ? std::make_shared<core::PackedVolume>() : shown_;
+    if (session_.takeVolumeIfNewer(*next, &reflects)) {
+      shown_ = std::move(next);
+      renderer_.beginUpload(*shown_);
+      uploadInProgress_ = true;
+      uploadingPost_ = reflects;
+    }
   }
   if (uploadInProgress_ && renderer_.continueUpload(kUploadBytesPerFrame)) {
     uploadInProgress_ = false;

@@ -68,10 +68,9 @@ class LiveView {
   ExportJob* exportJob_;
   gl::VolumeRenderer renderer_;
   gl::FrameTarget target_;
-  // The volume being uploaded or shown is shared with a shadow job that may still read it; a new
-  // volume is taken into a spare that nothing else holds.
+  // The volume being uploaded or shown, shared with a shadow job that may still read it; the next
+  // volume is swapped into it once uploaded (or into a fresh one while a shadow job holds it).
   std::shared_ptr<core::PackedVolume> shown_ = std::make_shared<core::PackedVolume>();
-  std::shared_ptr<core::PackedVolume> spare_ = std::make_shared<core::PackedVolume>();
   bool uploadInProgress_ = false;
   std::uint64_t uploadingPost_ = 0;
   bool newVolumeShown_ = false;

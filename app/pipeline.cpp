@@ -50,9 +50,11 @@ const char* toString(StillStage stage) {
 }
 
 void checkGridFitsInMemory(const core::GridGeometry& grid) {
-  // Per voxel: mask 1 B, density and colour sums 16 B, a snapshot 8 B, its upload copy 8 B.
-  constexpr double kBytesPerVoxel = 1.0 + 16.0 + 8.0 + 8.0;
-  core::checkGridFitsInMemory(grid, kBytesPerVoxel);
+  // The mask (1 B a voxel), the accumulator, a snapshot (8 B) and its packed copy (10 B: a still
+  // packs a colour per voxel).
+  const double voxels = static_cast<double>(std::max<std::size_t>(grid.voxelCount(), 1));
+  const double bytesPerVoxel = 1.0 + static_cast<double>(core::accumulatorBytes(grid)) / voxels + 8.0 + 10.0;
+  core::checkGridFitsInMemory(grid, bytesPerVoxel);
 }
 
 SceneShape buildSceneShape(const core::Scene& scene) {

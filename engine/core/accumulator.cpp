@@ -35,9 +35,10 @@ constexpr int kProbeSpacing = 250;  // steps between the probe orbits' seeds
 constexpr int kProbeSamplesPerOrbit = 2'000;
 constexpr std::size_t kSeedPoolSize = 1'024;
 constexpr double kProbeEscape = 1e8;
-constexpr int kMaxSlabs = 64;                       // grid slabs, each with its own mutex
-constexpr std::size_t kFlushThreshold = 8'192;      // splats a thread collects before adding them to the grid
-constexpr std::uint32_t kOutsideBit = 0x80000000u;  // in GridCell::density: the voxel is outside the mask
+constexpr int kMaxSlabs = 64;                   // grid slabs, each with its own mutex
+constexpr std::size_t kFlushThreshold = 8'192;  // splats a thread collects before adding them to the grid
+using detail::kColourCountLimit;
+using detail::kOutsideBit;
 
 double nowSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -411,6 +412,8 @@ struct OrbitBatch {
   std::vector<std::int32_t> colorIndex;                 // this step's palette entry (0..255)
   std::vector<std::int32_t> escaped;
   std::vector<std::int32_t> brick;   // this step's 4×4×4 brick of the grid, 0 when none (32-bit like voxel)
+  std::vector<std::int32_t> cell;    // this step's colour cell, 0 when none
+  std::vector<std::int32_t> slab;    // the grid slab of that cell (what the flush sorts by)
   std::vector<std::uint32_t> noise;  // xorshift32 state per orbit for the deposit jitter (never 0)
   std::vector<float> gx, gy, gz;     // this step's exact grid position (point sink only)
   std::vector<double> colorCoord;    // chaos games: this step's colour index (ColorMode::Index)
@@ -419,11 +422,18 @@ struct OrbitBatch {
   std::uint64_t generation = ~std::uint64_t{0};
 };
 
+// One point for the grid: its voxel, its colour cell, and its packed RGB with the slab in the top byte.
+struct Splat {
+  std::uint32_t voxel;
+  std::uint32_t cell;
+  std::uint32_t rgbSlab;
+};
+
 // Each thread's splats: appended in orbit order, then sorted by grid slab (a counting sort) and
-// added slab by slab under that slab's mutex. Entry: voxel index in the low 32 bits, packed RGB above.
+// added slab by slab under that slab's mutex.
 struct SplatBuffer {
-  std::vector<std::uint64_t> entries;  // kFlushThreshold plus room for one more step of every orbit
-  std::vector<std::uint64_t> sorted;
+  std::vector<Splat> entries;  // kFlushThreshold plus room for one more step of every orbit
+  std::vector<Splat> sorted;
   std::vector<std::size_t> slabStart;
   std::size_t count = 0;
   // With a point sink: accepted points collected for the next consume call (allocated on first use).
@@ -431,8 +441,8 @@ struct SplatBuffer {
   std::vector<std::uint32_t> rgb;
   std::size_t pointCount = 0;
   void reset(std::size_t slabs) {
-    entries.assign(kFlushThreshold + kOrbitsPerBatch, 0);
-    sorted.assign(entries.size(), 0);
+    entries.assign(kFlushThreshold + kOrbitsPerBatch, Splat{});
+    sorted.assign(entries.size(), Splat{});
     slabStart.assign(slabs + 1, 0);
     count = 0;
   }
@@ -472,6 +482,7 @@ struct LayerKernel {
   double gridSize[3];
   std::int32_t sizeX, sizeXY;
   std::int32_t bricksX, bricksXY;
+  std::int32_t colourShift, cellsX, cellsXY, slabShift;
   double escapeRadius;
   // 1 for flows, 0 for maps: a flow's point is placed at a uniformly random spot of its last step,
   // so the orbit is drawn as the continuous curve it samples instead of a dotted stroboscope.
@@ -483,7 +494,8 @@ struct LayerKernel {
   double center[3];
 };
 
-LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
+LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid, const ColourLayout& colour,
+                       int slabShift) {
   LayerKernel k{};
   const glm::dvec3 axisScale = layer.fit.axisScale * layer.fit.scale;
   const glm::dmat3 m =
@@ -499,6 +511,10 @@ LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
   k.sizeXY = grid.size.x * grid.size.y;
   k.bricksX = (grid.size.x + 3) / 4;
   k.bricksXY = k.bricksX * ((grid.size.y + 3) / 4);
+  k.colourShift = colour.shift;
+  k.cellsX = colour.size.x;
+  k.cellsXY = colour.size.x * colour.size.y;
+  k.slabShift = slabShift;
   k.escapeRadius = layer.escapeRadius;
   k.alongStep = layer.info && layer.info->kind == AttractorKind::Flow ? 1.0 : 0.0;
   const ColorSettings& color = layer.layer.color;
@@ -542,11 +558,11 @@ LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid) {
       double *__restrict px, double *__restrict py, double *__restrict pz, double *__restrict sx,                 \
       double *__restrict sy, double *__restrict sz, std::int32_t *__restrict age, std::int32_t *__restrict voxel, \
       std::int32_t *__restrict colorIndex, std::int32_t *__restrict escaped, std::int32_t *__restrict brick,      \
-      std::uint32_t *__restrict noise, float *__restrict gxOut, float *__restrict gyOut, float *__restrict gzOut, \
-      const double *__restrict colorCoord
-#define VOXFLAME_CLASSIFY_ARGS                                                                                 \
-  kernel, x, y, z, px, py, pz, sx, sy, sz, age, voxel, colorIndex, escaped, brick, noise, gxOut, gyOut, gzOut, \
-      colorCoord
+      std::int32_t *__restrict cell, std::int32_t *__restrict slab, std::uint32_t *__restrict noise,              \
+      float *__restrict gxOut, float *__restrict gyOut, float *__restrict gzOut, const double *__restrict colorCoord
+#define VOXFLAME_CLASSIFY_ARGS                                                                                      \
+  kernel, x, y, z, px, py, pz, sx, sy, sz, age, voxel, colorIndex, escaped, brick, cell, slab, noise, gxOut, gyOut, \
+      gzOut, colorCoord
 
 // One pass over a batch after it advanced: escape test, colour value, voxel index. Bitwise &
 // (not &&) and selects keep the body one basic block so it vectorises across orbits; the colour
@@ -629,6 +645,9 @@ template <ColorMode kMode, Output kOut>
     const bool settled = finite & (age[i] > kTransientSteps);
     voxel[i] = settled ? (inGrid ? vi + k.sizeX * vj + k.sizeXY * vk : -1) : -2;
     brick[i] = (vi >> 2) + k.bricksX * (vj >> 2) + k.bricksXY * (vk >> 2);
+    const std::int32_t ck = vk >> k.colourShift;
+    cell[i] = (vi >> k.colourShift) + k.cellsX * (vj >> k.colourShift) + k.cellsXY * ck;
+    slab[i] = ck >> k.slabShift;
     escaped[i] = finite ? 0 : 1;
     sx[i] = dx;
     sy[i] = dy;
@@ -660,7 +679,7 @@ using ClassifyFn = void (*)(VOXFLAME_CLASSIFY_PARAMS);
 void classifyBatch(ClassifyFn classify, const LayerKernel& kernel, OrbitBatch& b) {
   classify(kernel, b.x.data(), b.y.data(), b.z.data(), b.px.data(), b.py.data(), b.pz.data(), b.sx.data(), b.sy.data(),
            b.sz.data(), b.age.data(), b.voxel.data(), b.colorIndex.data(), b.escaped.data(), b.brick.data(),
-           b.noise.data(), b.gx.data(), b.gy.data(), b.gz.data(), b.colorCoord.data());
+           b.cell.data(), b.slab.data(), b.noise.data(), b.gx.data(), b.gy.data(), b.gz.data(), b.colorCoord.data());
 }
 
 template <Output kOut>
@@ -714,49 +733,69 @@ ClassifyFn classifier(ColorMode mode, Output output) {
 
 }  // namespace
 
+ColourLayout ColourLayout::of(const GridGeometry& grid) {
+  ColourLayout layout;
+  layout.shift = grid.voxelCount() > kFullColourVoxels ? 1 : 0;
+  const int span = 1 << layout.shift;
+  layout.size = (grid.size + (span - 1)) / span;
+  return layout;
+}
+
+std::size_t accumulatorBytes(const GridGeometry& grid) {
+  const ColourLayout colour = ColourLayout::of(grid);
+  const std::size_t bricks =
+      static_cast<std::size_t>((grid.size.x + 3) / 4) * ((grid.size.y + 3) / 4) * ((grid.size.z + 3) / 4);
+  return grid.voxelCount() * sizeof(std::uint32_t) + colour.cellCount() * sizeof(detail::ColourCell) + bricks / 8;
+}
+
 namespace detail {
 
-void CellBuffer::Free::operator()(void* p) const {
+void FreeHugePages::operator()(void* p) const {
   std::free(p);
 }
 
-void CellBuffer::allocate(std::size_t count) {
+void* allocateHugePages(std::size_t bytes) {
   constexpr std::size_t kHugePage = std::size_t{2} << 20;
-  const std::size_t bytes = (count * sizeof(GridCell) + kHugePage - 1) / kHugePage * kHugePage;
+  bytes = std::max<std::size_t>(1, (bytes + kHugePage - 1) / kHugePage) * kHugePage;
   void* memory = std::aligned_alloc(kHugePage, bytes);
   if (!memory) throw std::bad_alloc();
 #if defined(__linux__)
   madvise(memory, bytes, MADV_HUGEPAGE);  // a hint: without it (or if refused) 4 KiB pages still work
 #endif
   std::memset(memory, 0, bytes);
-  cells_.reset(static_cast<GridCell*>(memory));
-  count_ = count;
+  return memory;
 }
 
 }  // namespace detail
 
 Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : mask_(std::move(mask)) {
   if (!mask_) throw Error("the accumulator needs an inside mask");
-  const std::size_t voxels = mask_->geometry.voxelCount();
+  const GridGeometry& g = mask_->geometry;
+  const std::size_t voxels = g.voxelCount();
   if (voxels == 0 || voxels >= (std::size_t{1} << 31)) throw Error("the accumulation grid must have 1 to 2^31 voxels");
-  cells_.allocate(voxels);
+  colour_ = ColourLayout::of(g);
+  hits_.allocate(voxels);
+  colours_.allocate(colour_.cellCount());
   {
-    const GridGeometry& g = mask_->geometry;
     const int bx = (g.size.x + 3) / 4, by = (g.size.y + 3) / 4, bz = (g.size.z + 3) / 4;
     brickBits_.assign((static_cast<std::size_t>(bx) * by * bz + 63) / 64 + 1, 0);
     for (int k = 0; k < g.size.z; ++k)
       for (int j = 0; j < g.size.y; ++j)
-        for (int i = 0; i < g.size.x; ++i)
-          if (mask_->inside[g.index(i, j, k)]) {
+        for (int i = 0; i < g.size.x; ++i) {
+          const std::size_t v = g.index(i, j, k);
+          if (mask_->inside[v]) {
             const auto brick = static_cast<std::size_t>((i / 4) + bx * ((j / 4) + by * (k / 4)));
             brickBits_[brick / 64] |= std::uint64_t{1} << (brick % 64);
+            ++insideVoxels_;
+          } else {
+            hits_[v] = kOutsideBit;  // the flag stays for the grid's life; clears keep it
           }
+        }
   }
-  while (((voxels - 1) >> slabShift_) + 1 > static_cast<std::size_t>(kMaxSlabs)) ++slabShift_;
-  slabCount_ = ((voxels - 1) >> slabShift_) + 1;
+  while (((colour_.size.z - 1) >> slabShift_) + 1 > kMaxSlabs) ++slabShift_;
+  slabCount_ = static_cast<std::size_t>(((colour_.size.z - 1) >> slabShift_) + 1);
   slabMutexes_ = std::make_unique<std::mutex[]>(slabCount_);
-  slabGeneration_ = std::make_unique<std::uint64_t[]>(slabCount_);
-  clearCells();
+  slabGeneration_ = std::make_unique<std::uint64_t[]>(slabCount_);  // generation 0: freshly zeroed
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threadCount_ = threads;
   threads_.reserve(static_cast<std::size_t>(threads));
@@ -822,6 +861,14 @@ void Accumulator::notifyWorkChanged() {
   doneSignal_.notify_all();
 }
 
+int Accumulator::slabFirstZ(std::size_t slab) const {
+  return std::min(mask_->geometry.size.z, static_cast<int>(slab << slabShift_) << colour_.shift);
+}
+
+int Accumulator::slabEndZ(std::size_t slab) const {
+  return slabFirstZ(slab + 1);
+}
+
 void Accumulator::clearCells() {
   for (std::size_t slab = 0; slab < slabCount_; ++slab) {
     clearSlab(slab);
@@ -830,10 +877,15 @@ void Accumulator::clearCells() {
 }
 
 void Accumulator::clearSlab(std::size_t slab) {
-  const std::uint8_t* inside = mask_->inside.data();
-  const std::size_t end = std::min(cells_.size(), (slab + 1) << slabShift_);
-  for (std::size_t v = slab << slabShift_; v < end; ++v)
-    cells_[v] = detail::GridCell{inside[v] ? 0u : kOutsideBit, 0u, 0u, 0u};
+  const GridGeometry& g = mask_->geometry;
+  const std::size_t first = g.index(0, 0, slabFirstZ(slab));
+  const std::size_t end = slab + 1 < slabCount_ ? g.index(0, 0, slabEndZ(slab)) : hits_.size();
+  std::uint32_t* hits = hits_.data();
+  for (std::size_t v = first; v < end; ++v) hits[v] &= kOutsideBit;  // zero hits, the inside flag kept
+  const std::size_t sliceCells = static_cast<std::size_t>(colour_.size.x) * colour_.size.y;
+  const std::size_t firstCell = (slab << slabShift_) * sliceCells;
+  const std::size_t endCell = std::min(colours_.size(), ((slab + 1) << slabShift_) * sliceCells);
+  std::fill(colours_.data() + firstCell, colours_.data() + endCell, detail::ColourCell{});
 }
 
 void Accumulator::makeSlabCurrent(std::size_t slab) {
@@ -892,58 +944,79 @@ AccumulatorStats Accumulator::stats() const {
   return s;
 }
 
-void Accumulator::snapshot(VolumeSnapshot& out) const {
+void Accumulator::readSlabsImpl(GridReading& reading, void (*visit)(const GridSlabView&, void*), void* context) const {
   waitForPatternChange();
   std::shared_lock lock(gridMutex_);
-  const std::size_t voxels = cells_.size();
-  out.geometry = mask_->geometry;
-  out.density.resize(voxels);
-  out.rgba.resize(4 * voxels);
-  out.version = version_.load(std::memory_order_acquire);
-  out.generation = generation_.load(std::memory_order_acquire);
-  out.points = points_.load();
-  out.insideVoxels =
-      static_cast<std::uint64_t>(std::count(mask_->inside.begin(), mask_->inside.end(), std::uint8_t{1}));
-  float maxDensity = 0.0f;
+  const GridGeometry& g = mask_->geometry;
+  reading.geometry = g;
+  reading.colour = colour_;
+  reading.version = version_.load(std::memory_order_acquire);
+  reading.generation = generation_.load(std::memory_order_acquire);
+  reading.points = points_.load();
+  reading.insideVoxels = insideVoxels_;
+  const std::size_t sliceCells = static_cast<std::size_t>(colour_.size.x) * colour_.size.y;
   for (std::size_t slab = 0; slab < slabCount_; ++slab) {
-    // Workers add into a slab only under its mutex, so each slab is copied consistently.
+    // Workers add into a slab only under its mutex, so each slab is seen consistently.
     std::lock_guard slabLock(slabMutexes_[slab]);
-    const std::size_t begin = slab << slabShift_;
-    const std::size_t end = std::min(voxels, (slab + 1) << slabShift_);
+    GridSlabView view;
+    view.firstZ = slabFirstZ(slab);
+    view.endZ = slabEndZ(slab);
+    view.firstColourZ = static_cast<int>(slab << slabShift_);
+    view.endColourZ = std::min(colour_.size.z, static_cast<int>((slab + 1) << slabShift_));
+    view.hits = hits_.data() + g.index(0, 0, view.firstZ);
+    view.colours = colours_.data() + static_cast<std::size_t>(view.firstColourZ) * sliceCells;
     // A slab nobody has written since the pattern changed still holds the old sums: it is empty.
-    if (slabGeneration_[slab] != generation_.load(std::memory_order_relaxed)) {
-      std::fill(out.density.begin() + static_cast<std::ptrdiff_t>(begin),
-                out.density.begin() + static_cast<std::ptrdiff_t>(end), 0.0f);
-      for (std::size_t v = begin; v < end; ++v) {
-        std::uint8_t* rgba = &out.rgba[4 * v];
-        rgba[0] = rgba[1] = rgba[2] = 0;
-        rgba[3] = 255;
-      }
-      continue;
-    }
-    for (std::size_t v = begin; v < end; ++v) {
-      detail::GridCell cell = cells_[v];
-      cell.density &= ~kOutsideBit;
-      out.density[v] = static_cast<float>(cell.density);
-      maxDensity = std::max(maxDensity, out.density[v]);
-      std::uint8_t* rgba = &out.rgba[4 * v];
-      if (cell.density == 0) {
-        rgba[0] = rgba[1] = rgba[2] = 0;
-      } else {
-        rgba[0] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.red / cell.density));
-        rgba[1] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.green / cell.density));
-        rgba[2] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.blue / cell.density));
-      }
-      rgba[3] = 255;
-    }
+    view.empty = slabGeneration_[slab] != reading.generation;
+    visit(view, context);
   }
+}
+
+void Accumulator::snapshot(VolumeSnapshot& out) const {
+  const GridGeometry& g = mask_->geometry;
+  out.density.resize(g.voxelCount());
+  out.rgba.resize(4 * g.voxelCount());
+  float maxDensity = 0.0f;
+  const ColourLayout colour = colour_;
+  GridReading reading;
+  readSlabs(reading, [&](const GridSlabView& slab) {
+    for (int k = slab.firstZ; k < slab.endZ; ++k)
+      for (int j = 0; j < g.size.y; ++j) {
+        const std::uint32_t* hits = slab.hits + g.index(0, j, k - slab.firstZ);
+        const detail::ColourCell* cells =
+            slab.colours + static_cast<std::size_t>(colour.size.x) *
+                               ((j >> colour.shift) +
+                                static_cast<std::size_t>(colour.size.y) * ((k >> colour.shift) - slab.firstColourZ));
+        float* density = &out.density[g.index(0, j, k)];
+        std::uint8_t* rgba = &out.rgba[4 * g.index(0, j, k)];
+        for (int i = 0; i < g.size.x; ++i, rgba += 4) {
+          const std::uint32_t count = slab.empty ? 0u : hits[i] & ~kOutsideBit;
+          density[i] = static_cast<float>(count);
+          maxDensity = std::max(maxDensity, density[i]);
+          const detail::ColourCell& cell = cells[i >> colour.shift];
+          if (count == 0 || cell.count == 0) {
+            rgba[0] = rgba[1] = rgba[2] = 0;
+          } else {
+            rgba[0] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.red / cell.count));
+            rgba[1] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.green / cell.count));
+            rgba[2] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.blue / cell.count));
+          }
+          rgba[3] = 255;
+        }
+      }
+  });
+  out.geometry = reading.geometry;
+  out.version = reading.version;
+  out.generation = reading.generation;
+  out.points = reading.points;
+  out.insideVoxels = reading.insideVoxels;
   out.maxDensity = maxDensity;
 }
 
 void Accumulator::sampleDensity(DensitySample& out) const {
   waitForPatternChange();
   std::shared_lock lock(gridMutex_);
-  const std::size_t voxels = cells_.size();
+  const GridGeometry& g = mask_->geometry;
+  const std::size_t voxels = hits_.size();
   const std::size_t stride = convergenceSampleStride(voxels);
   out.generation = generation_.load(std::memory_order_acquire);
   out.points = points_.load();
@@ -951,10 +1024,12 @@ void Accumulator::sampleDensity(DensitySample& out) const {
   out.hits.reserve(voxels / stride + 1);
   std::size_t v = 0;
   for (std::size_t slab = 0; slab < slabCount_ && v < voxels; ++slab) {
-    const std::size_t end = std::min(voxels, (slab + 1) << slabShift_);
+    const std::size_t end = slab + 1 < slabCount_ ? g.index(0, 0, slabEndZ(slab)) : voxels;
     if (v >= end) continue;
     std::lock_guard slabLock(slabMutexes_[slab]);
-    for (; v < end; v += stride) out.hits.push_back(cells_[v].density & ~kOutsideBit);
+    // A slab not yet written in this generation holds an older pattern's hits: it is empty.
+    const std::uint32_t keep = slabGeneration_[slab] == out.generation ? ~kOutsideBit : 0u;
+    for (; v < end; v += stride) out.hits.push_back(hits_[v] & keep);
   }
 }
 
@@ -998,18 +1073,18 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
 std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {
   // Counting sort by slab, so each slab's mutex is taken once per flush.
   const std::size_t count = splats.count;
-  const std::uint64_t* entries = splats.entries.data();
+  const Splat* entries = splats.entries.data();
   std::size_t* start = splats.slabStart.data();
   std::fill(splats.slabStart.begin(), splats.slabStart.end(), 0);
-  for (std::size_t e = 0; e < count; ++e) ++start[(static_cast<std::uint32_t>(entries[e]) >> slabShift_) + 1];
+  for (std::size_t e = 0; e < count; ++e) ++start[(entries[e].rgbSlab >> 24) + 1];
   for (std::size_t slab = 0; slab < slabCount_; ++slab) start[slab + 1] += start[slab];
-  std::uint64_t* sorted = splats.sorted.data();
-  for (std::size_t e = 0; e < count; ++e)
-    sorted[start[static_cast<std::uint32_t>(entries[e]) >> slabShift_]++] = entries[e];
+  Splat* sorted = splats.sorted.data();
+  for (std::size_t e = 0; e < count; ++e) sorted[start[entries[e].rgbSlab >> 24]++] = entries[e];
   // start[slab] is now the end of that slab's run (and the beginning of the next one's).
 
   constexpr std::size_t kPrefetchDistance = 32;
-  detail::GridCell* cells = cells_.data();
+  std::uint32_t* hits = hits_.data();
+  detail::ColourCell* colours = colours_.data();
   std::uint64_t inside = 0;
   std::size_t begin = 0;
   for (std::size_t slab = 0; slab < slabCount_; ++slab) {
@@ -1020,17 +1095,22 @@ std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {
     for (std::size_t e = begin; e < end; ++e) {
       // The adds are independent plain stores, so the CPU overlaps their cache misses;
       // prefetching a few entries ahead hides most of the rest.
-      if (e + kPrefetchDistance < end)
-        __builtin_prefetch(&cells[static_cast<std::uint32_t>(sorted[e + kPrefetchDistance])], 1);
-      const std::uint64_t entry = sorted[e];
-      detail::GridCell& cell = cells[static_cast<std::uint32_t>(entry)];
-      const auto rgb = static_cast<std::uint32_t>(entry >> 32);
-      // Branch-free: a voxel outside the mask (flag set) gets zero added.
-      const std::uint32_t in = (~cell.density) >> 31;
-      cell.density += in;
-      cell.red += in * (rgb & 0xffu);
-      cell.green += in * ((rgb >> 8) & 0xffu);
-      cell.blue += in * (rgb >> 16);
+      if (e + kPrefetchDistance < end) {
+        __builtin_prefetch(&hits[sorted[e + kPrefetchDistance].voxel], 1);
+        __builtin_prefetch(&colours[sorted[e + kPrefetchDistance].cell], 1);
+      }
+      const Splat splat = sorted[e];
+      std::uint32_t& voxelHits = hits[splat.voxel];
+      detail::ColourCell& cell = colours[splat.cell];
+      // Branch-free: a voxel outside the mask (flag set) gets zero added, and a colour cell whose
+      // count reached the limit keeps its (long converged) mean.
+      const std::uint32_t in = (~voxelHits) >> 31;
+      const std::uint32_t room = in & ((cell.count - kColourCountLimit) >> 31);
+      voxelHits += in;
+      cell.red += room * (splat.rgbSlab & 0xffu);
+      cell.green += room * ((splat.rgbSlab >> 8) & 0xffu);
+      cell.blue += room * ((splat.rgbSlab >> 16) & 0xffu);
+      cell.count += room;
       inside += in;
     }
     begin = end;
@@ -1087,6 +1167,8 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
       b.colorIndex.assign(kOrbitsPerBatch, 0);
       b.escaped.assign(kOrbitsPerBatch, 0);
       b.brick.assign(kOrbitsPerBatch, 0);
+      b.cell.assign(kOrbitsPerBatch, 0);
+      b.slab.assign(kOrbitsPerBatch, 0);
       // The jitter has its own random numbers, so the orbits are the same whatever the deposit.
       SplitMix64 noiseSeeds(mixSeed(mixSeed(seed_, 0x6a6974746572ULL), (static_cast<std::uint64_t>(stream) << 8) + li));
       b.noise.resize(kOrbitsPerBatch);
@@ -1112,7 +1194,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
     const double h = layer.layer.step;
     // A layer's weight is its share of the iterations, hence of the density it adds.
     const int steps = std::max(1, static_cast<int>(std::lround(kStepsPerBatch * layer.layer.weight / maxWeight)));
-    const LayerKernel kernel = makeKernel(layer, grid);
+    const LayerKernel kernel = makeKernel(layer, grid, colour_, slabShift_);
     const ClassifyFn classify = classifier(layer.layer.color.mode, output);
     std::uint32_t packedPalette[256];
     for (std::size_t c = 0; c < 256; ++c)
@@ -1163,12 +1245,13 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
         // bitmap small enough to stay in L1/L2 drops most outside points here); the exact test
         // happens at the flush, where the voxel's cell (which carries the inside flag) is fetched anyway.
         const std::uint64_t* bricks = brickBits_.data();
-        std::uint64_t* out = splats.entries.data();
+        Splat* out = splats.entries.data();
         std::size_t n = splats.count;
         for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
           const std::int32_t v = b.voxel[i];
-          out[n] = std::uint64_t{static_cast<std::uint32_t>(v)} |
-                   std::uint64_t{packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])]} << 32;
+          out[n] = Splat{
+              static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(b.cell[i]),
+              packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])] | static_cast<std::uint32_t>(b.slab[i]) << 24};
           const auto brickIndex = static_cast<std::uint32_t>(b.brick[i]);
           // Integer arithmetic, not bools: GCC turned the bool form into a bit-test branch, which
           // mispredicts about every other point of a pattern spread over the grid (a flame).

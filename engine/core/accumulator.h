@@ -7,7 +7,9 @@
 // colour without branches; and points are not added to the grid one at a time with atomics but
 // collected per thread, sorted by grid slab and added with plain stores under that slab's mutex
 // (one lock per slab per few thousand points; the adds overlap their cache misses). The inside
-// mask lives in each voxel's cell as a flag, so a splat costs one cache line, not two.
+// mask lives in each voxel's hit count as a flag, so the exact test costs no extra memory access.
+// Colour sums live in colour cells (one per voxel up to 256³, one per 2×2×2 voxels above): a splat
+// adds one to its voxel's hits and its colour to its cell.
 //
 // Every change of pattern bumps a *generation*: the grid is cleared and work of the older
 // generation is thrown away. Readers (the UI, the exporter) take versioned snapshots; the
@@ -24,6 +26,7 @@
 #include <shared_mutex>
 #include <string>
 #include <thread>
+#include <type_traits>
 #include <vector>
 
 #include <glm/gtc/type_precision.hpp>
@@ -150,29 +153,77 @@ class PointSink {
 // lattice. Nearest: the voxel that contains the point (the old deposit, kept for benchmarks).
 enum class Deposit { Jittered, Nearest };
 
-namespace detail {
-struct GridCell {             // one voxel's sums, together in one 16-byte slot so a splat touches one line
-  std::uint32_t density = 0;  // hits; the top bit marks a voxel outside the mask (never counted)
-  std::uint32_t red = 0, green = 0, blue = 0;
+// A grid's colour is kept at a coarser resolution than its density above this many voxels: one
+// colour cell per 2×2×2 voxels. Colour varies slowly next to density (the palette follows speed,
+// position or a transform's index, all smooth along the pattern), so the picture keeps every
+// detail of the density while the grid needs a third of the memory (6 instead of 20 bytes a voxel).
+inline constexpr std::size_t kFullColourVoxels = std::size_t{1} << 24;  // 256³
+
+// How colour cells divide the voxels of a grid: each spans 2^colourShift voxels along every axis.
+struct ColourLayout {
+  int shift = 0;       // 0: a colour cell per voxel; 1: per 2×2×2 voxels
+  glm::ivec3 size{0};  // colour cells along each axis
+  static ColourLayout of(const GridGeometry& grid);
+  std::size_t cellCount() const { return static_cast<std::size_t>(size.x) * size.y * size.z; }
 };
-// Memory for the grid's cells on 2 MiB pages where the OS offers them: splats land at random
-// across hundreds of megabytes, and with 4 KiB pages nearly every one would also miss the TLB.
-class CellBuffer {
+
+// The accumulator's own memory for a grid, in bytes (hit counts, colour sums and slab bookkeeping):
+// what the explorer's grid slider and the memory check count.
+std::size_t accumulatorBytes(const GridGeometry& grid);
+
+namespace detail {
+// A colour cell's sums of the palette colours of the points that landed in it, and how many they
+// were. The count stops at kColourCountLimit (the sums then stay below 2^32, and the mean colour,
+// long converged, stays put) while the voxels' hit counts go on.
+struct ColourCell {
+  std::uint32_t red = 0, green = 0, blue = 0, count = 0;
+};
+inline constexpr std::uint32_t kColourCountLimit = std::uint32_t{1} << 24;
+// Hit counts carry a voxel's outside-the-mask flag in their top bit (never counted).
+inline constexpr std::uint32_t kOutsideBit = 0x80000000u;
+
+// Memory for the grid on 2 MiB pages where the OS offers them: splats land at random across
+// hundreds of megabytes, and with 4 KiB pages nearly every one would also miss the TLB.
+void* allocateHugePages(std::size_t bytes);  // zero-filled
+struct FreeHugePages {
+  void operator()(void* p) const;
+};
+template <class T>
+class HugePageArray {
  public:
-  struct Free {
-    void operator()(void* p) const;
-  };
-  void allocate(std::size_t count);  // zero-filled
-  GridCell* data() const { return cells_.get(); }
+  void allocate(std::size_t count) {
+    data_.reset(static_cast<T*>(allocateHugePages(count * sizeof(T))));
+    count_ = count;
+  }
+  T* data() const { return data_.get(); }
   std::size_t size() const { return count_; }
-  GridCell& operator[](std::size_t i) const { return cells_.get()[i]; }
+  T& operator[](std::size_t i) const { return data_.get()[i]; }
 
  private:
-  std::unique_ptr<GridCell[], Free> cells_;
+  std::unique_ptr<T[], FreeHugePages> data_;
   std::size_t count_ = 0;
 };
 
 }  // namespace detail
+
+// One slab of the grid as readSlabs shows it: whole z slices of voxels and the colour cells over them.
+struct GridSlabView {
+  int firstZ = 0, endZ = 0;                     // voxel slices [firstZ, endZ)
+  const std::uint32_t* hits = nullptr;          // from voxel (0, 0, firstZ) on; the top bit flags outside voxels
+  int firstColourZ = 0, endColourZ = 0;         // colour cell slices [firstColourZ, endColourZ)
+  const detail::ColourCell* colours = nullptr;  // from colour cell (0, 0, firstColourZ) on
+  bool empty = false;  // nothing of the current generation has landed here: treat every hit count as 0
+};
+
+// What readSlabs read: the grid and its state when it began.
+struct GridReading {
+  GridGeometry geometry;
+  ColourLayout colour;
+  std::uint64_t version = 0;
+  std::uint64_t generation = 0;
+  std::uint64_t points = 0;
+  std::uint64_t insideVoxels = 0;
+};
 
 class Accumulator {
  public:
@@ -207,6 +258,18 @@ class Accumulator {
 
   // Copies the grid; safe to call while the workers run.
   void snapshot(VolumeSnapshot& out) const;
+  // Shows the grid to `visit` slab by slab in z order, each under its own lock (workers wait for
+  // that slab only), with nothing copied: what packing for the renderer reads, so no full-size
+  // snapshot exists in between. Safe to call while the workers run.
+  // `reading` is filled in before the first slab is visited.
+  template <class Visit>
+  void readSlabs(GridReading& reading, Visit&& visit) const {
+    using VisitType = std::remove_reference_t<Visit>;
+    readSlabsImpl(
+        reading, [](const GridSlabView& slab, void* context) { (*static_cast<VisitType*>(context))(slab); },
+        const_cast<void*>(static_cast<const void*>(&visit)));
+  }
+  const ColourLayout& colourLayout() const { return colour_; }
   // The hit counts of every convergenceSampleStride()-th voxel, for a ConvergenceMeter: a few
   // milliseconds at any grid size, safe to call while the workers run.
   void sampleDensity(DensitySample& out) const;
@@ -222,6 +285,10 @@ class Accumulator {
   bool allStreamsDone(std::uint64_t target) const;
   // Adds a thread's collected splats to the grid; returns how many landed inside the mask.
   std::uint64_t flushSplats(struct SplatBuffer& splats);
+  void readSlabsImpl(GridReading& reading, void (*visit)(const GridSlabView&, void*), void* context) const;
+  std::size_t slabOfColourSlice(int colourZ) const { return static_cast<std::size_t>(colourZ >> slabShift_); }
+  int slabFirstZ(std::size_t slab) const;  // the first voxel slice of a slab
+  int slabEndZ(std::size_t slab) const;
   void clearCells();  // every slab, for the current generation
   void clearSlab(std::size_t slab);
   void makeSlabCurrent(
@@ -230,9 +297,14 @@ class Accumulator {
 
   std::shared_ptr<const InsideMask> mask_;
 
-  detail::CellBuffer cells_;              // guarded per slab by slabMutexes_
+  // The grid, guarded per slab by slabMutexes_. A slab is a run of whole colour slices (and the
+  // voxel slices under them), so a colour cell and all its voxels share one slab and one lock.
+  detail::HugePageArray<std::uint32_t> hits_;          // per voxel
+  detail::HugePageArray<detail::ColourCell> colours_;  // per colour cell
+  ColourLayout colour_;
+  std::uint64_t insideVoxels_ = 0;
   std::vector<std::uint64_t> brickBits_;  // per 4×4×4 brick: does any voxel lie inside the mask
-  int slabShift_ = 0;                     // voxel index >> slabShift_ = its slab
+  int slabShift_ = 0;                     // colour slice >> slabShift_ = its slab
   std::unique_ptr<std::mutex[]> slabMutexes_;
   std::unique_ptr<std::uint64_t[]> slabGeneration_;  // per slab, under its mutex: the generation its cells hold
   std::size_t slabCount_ = 0;

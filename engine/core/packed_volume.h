@@ -1,8 +1,10 @@
-// The volume in the form the renderer uploads: one RGBA half-float texel per voxel holding the
-// density relative to the mesh's mean (alpha) and the mean colour premultiplied by it (rgb),
-// so trilinear filtering blends colour by density and empty neighbours never darken an edge.
-// A coarse occupancy grid of bricks lets the ray-marcher leap over empty space. Packing runs
-// on whichever thread took the snapshot, so the main thread only uploads.
+// The volume in the form the renderer uploads: a half-float density per voxel, relative to the
+// mesh's mean (what the march tests and integrates), and a half-float RGBA texel per colour cell
+// holding the cell's mean colour premultiplied by its density, so trilinear filtering blends colour
+// by density and empty neighbours never darken an edge. Colour cells are voxels, or 2×2×2 voxels
+// on grids above 256³ (ColourLayout): there the colour takes an eighth of the memory and upload.
+// A coarse occupancy grid of bricks lets the ray-marcher leap over empty space. Packing runs on
+// whichever thread reads the grid, so the main thread only uploads.
 #pragma once
 
 #include <cstdint>
@@ -20,9 +22,10 @@ inline constexpr int kCoarseBricks = 4;
 
 struct PackedVolume {
   GridGeometry geometry;
-  std::vector<std::uint16_t> texels;   // 4 half floats per voxel, x fastest
-  std::vector<std::uint16_t> density;  // the alpha channel alone: the march tests it first, and one
-                                       // channel filters far faster than four in software GL
+  std::vector<std::uint16_t> density;  // a half float per voxel, x fastest: the march tests it first,
+                                       // and one channel filters far faster than four in software GL
+  ColourLayout colour;                 // how colour cells divide the voxels
+  std::vector<std::uint16_t> colours;  // 4 half floats per colour cell: rgb premultiplied by a
   glm::ivec3 brickCount{0};
   std::vector<std::uint8_t> occupancy;        // 1 where a brick, grown by one voxel, holds density
   glm::ivec3 coarseCount{0};                  // bricks of kCoarseBricks³ bricks: long empty stretches
@@ -43,7 +46,14 @@ struct PackedVolume {
   std::uint64_t points = 0;
 };
 
+// From a snapshot (stills, tests): a colour cell per voxel.
 void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out);
+// Straight from a running accumulator, slab by slab, in its colour layout: no full-size copy of the
+// grid exists in between (what the explorer's snapshot thread does).
+void packVolume(const Accumulator& accumulator, PackedVolume& out);
+
+// The bytes a packed volume of this grid holds (and the renderer's textures, which mirror it).
+std::size_t packedVolumeBytes(const GridGeometry& grid);
 
 // IEEE 754 binary16 bits, through Imath::half: round to nearest even, overflow to infinity.
 std::uint16_t floatToHalf(float value);

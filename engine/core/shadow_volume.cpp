@@ -32,7 +32,7 @@ void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, dou
   for (int k = 0; k < g.size.z; ++k)
     for (int j = 0; j < g.size.y; ++j)
       for (int i = 0; i < g.size.x; ++i) {
-        const float normalised = halfToFloat(volume.texels[4 * g.index(i, j, k) + 3]);
+        const float normalised = halfToFloat(volume.density[g.index(i, j, k)]);
         if (normalised <= 0.0f) continue;
         sigma[cellIndex(i / downsample, j / downsample, k / downsample)] +=
             normalised * toRelative * perVoxel * cellVoxels / voxelsPerCell;

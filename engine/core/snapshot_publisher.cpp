@@ -29,13 +29,12 @@ bool SnapshotPublisher::takeIfNewer(PackedVolume& out) {
 }
 
 bool SnapshotPublisher::caughtUp() {
-  std::lock_guard lock(mutex_);
-  return !readyFresh_ && publishedVersion_.load() == accumulator_.version();
+  // A pack in progress holds the lock for a while: not caught up, and no reason to wait for it.
+  std::unique_lock lock(mutex_, std::try_to_lock);
+  return lock.owns_lock() && !readyFresh_ && publishedVersion_.load() == accumulator_.version();
 }
 
 void SnapshotPublisher::loop(std::stop_token stop) {
-  VolumeSnapshot snapshot;
-  PackedVolume working;
   while (!stop.stop_requested()) {
     {
       std::unique_lock lock(wakeMutex_);
@@ -46,11 +45,12 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     const std::uint64_t version = accumulator_.version();
     // An accumulator at rest adds nothing: the wake-up costs a load and a compare.
     if (version == publishedVersion_.load()) continue;
-    accumulator_.snapshot(snapshot);
-    packVolume(snapshot, working);
+    // Packed in place, under the lock: a second buffer to pack into while the last one waits
+    // would cost a whole volume of memory (400 MB at 512³), and a taker that finds the lock held
+    // simply takes the volume on a later frame. What it hands back in the swap is packed into next.
     std::lock_guard lock(mutex_);
-    publishedVersion_ = working.version;
-    std::swap(working, ready_);
+    packVolume(accumulator_, ready_);
+    publishedVersion_ = ready_.version;
     readyFresh_ = true;
   }
 }

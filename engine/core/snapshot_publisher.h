@@ -1,6 +1,7 @@
-// Double-buffered snapshots of a running Accumulator, taken and packed for upload on a thread of
-// their own so the main thread never spends a frame copying the grid: it only swaps in the newest
-// finished volume.
+// Packed volumes of a running Accumulator, read and packed for upload on a thread of their own so
+// the main thread never spends a frame copying the grid: it only swaps in the newest finished
+// volume, handing back the one it had (which the next pack reuses). One buffer here and one with
+// the taker: no other copy of the grid exists.
 #pragma once
 
 #include <atomic>
@@ -21,8 +22,8 @@ class SnapshotPublisher {
   SnapshotPublisher(const Accumulator& accumulator, std::chrono::milliseconds interval);
   ~SnapshotPublisher();  // joins the thread
 
-  // Swaps the newest snapshot into `out` when one newer than `out.version` is ready; never waits
-  // for a snapshot in progress. Returns whether `out` changed.
+  // Swaps the newest volume into `out` when a fresh one is ready; never waits for a pack in
+  // progress (it returns false then). Returns whether `out` changed.
   bool takeIfNewer(PackedVolume& out);
   void requestNow();  // take the next snapshot without waiting for the interval
   // Everything the accumulator holds has been published and taken: nothing new will come until
@@ -34,7 +35,7 @@ class SnapshotPublisher {
 
   const Accumulator& accumulator_;
   std::chrono::milliseconds interval_;
-  std::mutex mutex_;  // guards ready_ and readyFresh_
+  std::mutex mutex_;  // guards ready_ and readyFresh_; held while packing
   PackedVolume ready_;
   bool readyFresh_ = false;
   std::atomic<std::uint64_t> publishedVersion_{~std::uint64_t{0}};

@@ -161,25 +161,27 @@ void VolumeRenderer::upload(const core::PackedVolume& volume) {
   continueUpload(~std::size_t{0});
 }
 
-void VolumeRenderer::allocate(Slot& slot, glm::ivec3 size) {
-  if (size == slot.allocated) return;
+void VolumeRenderer::allocate(Slot& slot, glm::ivec3 size, const core::ColourLayout& colour) {
+  if (size == slot.allocated && colour.size == slot.colour.size) return;
   glBindTexture(GL_TEXTURE_3D, slot.volume);
-  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA16F, size.x, size.y, size.z, 0, GL_RGBA, GL_HALF_FLOAT, nullptr);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA16F, colour.size.x, colour.size.y, colour.size.z, 0, GL_RGBA, GL_HALF_FLOAT,
+               nullptr);
   glBindTexture(GL_TEXTURE_3D, slot.density);
   glTexImage3D(GL_TEXTURE_3D, 0, GL_R16F, size.x, size.y, size.z, 0, GL_RED, GL_HALF_FLOAT, nullptr);
   slot.allocated = size;
+  slot.colour = colour;
   slot.version = 0;  // the old content is gone until an upload completes
 }
 
 void VolumeRenderer::beginUpload(const core::PackedVolume& volume) {
   pending_ = &volume;
   pendingZ_ = 0;
-  allocate(slots_[kMain], volume.geometry.size);
+  allocate(slots_[kMain], volume.geometry.size, volume.colour);
 }
 
 void VolumeRenderer::uploadProxy(const core::PackedVolume& volume) {
   Slot& slot = slots_[kProxy];
-  allocate(slot, volume.geometry.size);
+  allocate(slot, volume.geometry.size, volume.colour);
   uploadSlab(slot, volume, 0, volume.geometry.size.z);
   finishUpload(slot, volume);
 }
@@ -187,19 +189,23 @@ void VolumeRenderer::uploadProxy(const core::PackedVolume& volume) {
 void VolumeRenderer::uploadSlab(Slot& slot, const core::PackedVolume& volume, int firstZ, int endZ) {
   const glm::ivec3 size = volume.geometry.size;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glBindTexture(GL_TEXTURE_3D, slot.volume);
-  const std::size_t offset = 4 * volume.geometry.index(0, 0, firstZ);
-  glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, firstZ, size.x, size.y, endZ - firstZ, GL_RGBA, GL_HALF_FLOAT,
-                  volume.texels.data() + offset);
   glBindTexture(GL_TEXTURE_3D, slot.density);
   glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, firstZ, size.x, size.y, endZ - firstZ, GL_RED, GL_HALF_FLOAT,
-                  volume.density.data() + offset / 4);
+                  volume.density.data() + volume.geometry.index(0, 0, firstZ));
+  // The colour cells over these slices (a cell over two slabs goes up with both).
+  const glm::ivec3 cells = volume.colour.size;
+  const int firstCellZ = firstZ >> volume.colour.shift;
+  const int endCellZ = std::min(cells.z, ((endZ - 1) >> volume.colour.shift) + 1);
+  glBindTexture(GL_TEXTURE_3D, slot.volume);
+  glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, firstCellZ, cells.x, cells.y, endCellZ - firstCellZ, GL_RGBA, GL_HALF_FLOAT,
+                  volume.colours.data() + 4 * static_cast<std::size_t>(cells.x) * cells.y * firstCellZ);
 }
 
 bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
   if (!pending_) return true;
   const core::PackedVolume& volume = *pending_;
-  const std::size_t slabBytes = 10 * static_cast<std::size_t>(volume.geometry.size.x) * volume.geometry.size.y;
+  const std::size_t slabBytes =
+      (volume.density.size() + volume.colours.size()) * sizeof(std::uint16_t) / std::max(volume.geometry.size.z, 1);
   const int slabs = static_cast<int>(std::clamp<std::size_t>(budgetBytes / std::max<std::size_t>(slabBytes, 1), 1,
                                                              static_cast<std::size_t>(volume.geometry.size.z)));
   const int endZ = std::min(volume.geometry.size.z, pendingZ_ + slabs);
@@ -304,6 +310,9 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   setUniform(p, "uGridOrigin", glm::vec3(box.min));
   setUniform(p, "uGridExtent", glm::vec3(box.extent()));
   glUniform3i(p.uniform("uGridSize"), geometry.size.x, geometry.size.y, geometry.size.z);
+  // Voxel coordinates to the colour texture's: its cells span 2^shift voxels (the last ones may
+  // reach past the grid's end).
+  setUniform(p, "uColourScale", 1.0f / (glm::vec3(slot.colour.size) * static_cast<float>(1 << slot.colour.shift)));
   setUniform(p, "uVoxelSize", geometry.voxelSize);
   setUniform(p, "uStepVoxels", std::clamp(settings.render.stepVoxels, 0.05, 4.0));
   glUniform3i(p.uniform("uBrickCount"), slot.brickCount.x, slot.brickCount.y, slot.brickCount.z);

@@ -119,14 +119,15 @@ class VolumeRenderer {
                             glm::dvec2 pixelJitter) const;
   // One uploaded volume: its textures and what the march needs to know about it.
   struct Slot {
-    GLuint volume = 0;     // RGBA16F: premultiplied colour, relative density
+    GLuint volume = 0;     // RGBA16F per colour cell: premultiplied colour, relative density
     GLuint density = 0;    // R16F: relative density alone
     GLuint occupancy = 0;  // R8UI per brick
     GLuint coarse = 0;     // R8UI per coarse brick
     glm::ivec3 coarseCount{0};
     glm::ivec3 brickCount{0};
     core::GridGeometry geometry;
-    glm::ivec3 allocated{0};  // the size the volume textures were last allocated at
+    glm::ivec3 allocated{0};    // the size the volume textures were last allocated at
+    core::ColourLayout colour;  // and the colour cells
     float texelDensity = 1.0f;
     double referenceDensity = 1.0;
     double insideVoxels = 0.0;
@@ -134,7 +135,7 @@ class VolumeRenderer {
     std::uint64_t version = 0;  // 0: nothing complete in it
   };
   static constexpr int kMain = 0, kProxy = 1;
-  void allocate(Slot& slot, glm::ivec3 size);
+  void allocate(Slot& slot, glm::ivec3 size, const core::ColourLayout& colour);
   void uploadSlab(Slot& slot, const core::PackedVolume& volume, int firstZ, int endZ);
   void finishUpload(Slot& slot, const core::PackedVolume& volume);
 

@@ -13,7 +13,8 @@ uniform vec3 uGridExtent;
 uniform ivec3 uGridSize;
 uniform float uVoxelSize;
 uniform float uStepVoxels;
-uniform sampler3D uVolume;      // rgb: colour × normalised density, a: normalised density
+uniform sampler3D uVolume;      // per colour cell: rgb = colour × normalised density, a = normalised density
+uniform vec3 uColourScale;      // voxel coordinates → uVolume's texture coordinates
 uniform sampler3D uDensity;     // normalised density alone, tested before the colour is fetched
 uniform usampler3D uOccupancy;  // 1 per brick that holds density
 uniform ivec3 uBrickCount;
@@ -101,7 +102,7 @@ void main() {
       // Explicit LOD: there are no mipmaps, and implicit derivatives are undefined in this loop.
       float density = textureLod(uDensity, voxel * toTexture, 0.0).r;
       if (density > 0.0) {
-        vec4 texel = textureLod(uVolume, voxel * toTexture, 0.0);
+        vec4 texel = textureLod(uVolume, voxel * uColourScale, 0.0);
         float dD = density * uToRelative * uStepUnits;
         float lit = uLighting ? mix(1.0, textureLod(uShadow, voxel * uShadowScale, 0.0).r, uLightStrength) : 1.0;
         // The step's exact integral for constant density: T (1 − e^(−a dD)) / a, or T dD without absorption.
