@@ -29,6 +29,22 @@ std::string gridText(const core::GridGeometry& grid) {
 
 }  // namespace
 
+std::size_t ExplorerSession::estimatedBytes(const core::GridGeometry& grid) {
+  auto gridBytes = [](const core::GridGeometry& g) {
+    // A byte a voxel of mask; the accumulator; two packed volumes (the snapshot thread's and the
+    // live view's) and the textures that mirror them.
+    return g.voxelCount() + core::accumulatorBytes(g) + 3 * core::packedVolumeBytes(g);
+  };
+  std::size_t bytes = gridBytes(grid);
+  if (std::max({grid.size.x, grid.size.y, grid.size.z}) > kProxyAbove)
+    bytes += gridBytes(core::gridOverBox(grid.box(), kProxyResolution));
+  // Shadows: a byte per 2³ voxels, computed on the CPU and uploaded. Then what does not grow with
+  // the grid: the live view's frame buffers and the renderer's programs (about 40 MB measured
+  // with a 1280×720 view).
+  constexpr std::size_t kViewBytes = std::size_t{40} << 20;
+  return bytes + 2 * grid.voxelCount() / 8 + kViewBytes;
+}
+
 struct ExplorerSession::Proxy {
   // Snapshots of the proxy come quickly: each costs well under a millisecond at 64³.
   static constexpr std::chrono::milliseconds kInterval{15};
@@ -132,6 +148,7 @@ SessionStatus ExplorerSession::status() const {
   status.requestedGeneration = requested_;
   status.appliedGeneration = applied_;
   status.hasShape = engine_ != nullptr;
+  if (engine_) status.grid = engine_->mask->geometry;
   if (engine_) status.stats = engine_->accumulator.stats();
   status.noise = noise_;
   status.noiseTarget = noiseTarget_;

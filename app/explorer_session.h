@@ -37,6 +37,7 @@ struct SessionStatus {
   std::uint64_t requestedGeneration = 0;  // pattern requests posted so far
   std::uint64_t appliedGeneration = 0;    // of those, the newest the Accumulator runs
   bool hasShape = false;
+  core::GridGeometry grid;  // the current shape's grid (when hasShape)
   // Convergence (core/convergence.h): the estimated noise left in the volume (a fraction; NaN
   // until measured), the target that stops refining (0: never), and why refinement rests.
   double noise = std::numeric_limits<double>::quiet_NaN();
@@ -82,6 +83,10 @@ class ExplorerSession {
   // A proxy burst stops at this many points per voxel inside the mesh: enough for a smooth coarse
   // picture, few enough to take tens of milliseconds.
   static constexpr double kProxyPointsPerVoxel = 24.0;
+  // The memory a session on this grid holds with the live view that shows it: the inside mask,
+  // the accumulator, the packed volume being filled and the one being shown, the renderer's
+  // textures, the proxy's share and the shadows. What the grid slider shows beside it.
+  static std::size_t estimatedBytes(const core::GridGeometry& grid);
   // The mesh of a shape that became current since the last call (for the renderer), else empty.
   std::optional<core::TriangleMesh> takeNewMesh();
   // The grid of the current shape (for the camera), or empty before the first shape is ready.

@@ -1002,9 +1002,17 @@ void meshSection(ExplorerState& state) {
                    static_cast<int>(grid.ui.max), std::string(grid.ui.format).c_str(), ImGuiSliderFlags_AlwaysClamp);
   probe(state, "mesh/grid");
   if (ImGui::IsItemDeactivatedAfterEdit()) state.scene.gridResolution = draft;
-  // Cells, snapshot, packed copies: what pipeline::checkGridFitsInMemory counts, for a cube.
-  const double voxels = std::pow(static_cast<double>(draft), 3.0);
-  ImGui::TextColored(kDimColor, "at most %s of memory", formatBytes(voxels * 33.0).c_str());
+  // What a session on the grid over this mesh holds (a cube before the first shape is ready).
+  core::GridGeometry draftGrid;
+  try {
+    const core::Box box =
+        state.session.hasShape ? state.session.grid.box() : core::Box{glm::dvec3(0.0), glm::dvec3(1.0)};
+    draftGrid = core::gridOverBox(box, std::clamp(draft, core::kMinGridResolution, core::kMaxGridResolution));
+  } catch (const core::Error&) {
+    draftGrid.size = glm::ivec3(std::max(draft, 1));
+  }
+  ImGui::TextColored(kDimColor, "about %s of memory",
+                     formatBytes(static_cast<double>(ExplorerSession::estimatedBytes(draftGrid))).c_str());
 
   core::RenderSettingsDoc& render = state.scene.render;
   fieldWidget(state, "mesh/", render, core::renderFields(), "mesh");

@@ -256,6 +256,8 @@ void benchExplorer(const BenchOptions& options) {
                      {"mean_frame_ms_refining", refiningAfter.mean()},
                      {"worst_frame_ms_refining", refiningAfter.worst},
                      {"memory_mb", memory},
+                     {"estimated_memory_mb",
+                      static_cast<double>(app::ExplorerSession::estimatedBytes(session.status().grid)) / 1e6},
                      {"peak_resident_mb", peakResidentMegabytes()},
                      {"frames_during_export", exporting.frames},
                      {"mean_frame_ms_during_export", exporting.mean()},

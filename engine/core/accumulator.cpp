@@ -745,7 +745,8 @@ std::size_t accumulatorBytes(const GridGeometry& grid) {
   const ColourLayout colour = ColourLayout::of(grid);
   const std::size_t bricks =
       static_cast<std::size_t>((grid.size.x + 3) / 4) * ((grid.size.y + 3) / 4) * ((grid.size.z + 3) / 4);
-  return grid.voxelCount() * sizeof(std::uint32_t) + colour.cellCount() * sizeof(detail::ColourCell) + bricks / 8;
+  const std::size_t hits = colour.shift == 0 ? 0 : grid.voxelCount() * sizeof(std::uint32_t);
+  return hits + colour.cellCount() * sizeof(detail::ColourCell) + bricks / 8;
 }
 
 namespace detail {
@@ -774,8 +775,10 @@ Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : 
   const std::size_t voxels = g.voxelCount();
   if (voxels == 0 || voxels >= (std::size_t{1} << 31)) throw Error("the accumulation grid must have 1 to 2^31 voxels");
   colour_ = ColourLayout::of(g);
-  hits_.allocate(voxels);
+  if (colour_.shift > 0) hits_.allocate(voxels);
   colours_.allocate(colour_.cellCount());
+  std::uint32_t* hits = hitsData();
+  const auto stride = static_cast<std::size_t>(hitsStride());
   {
     const int bx = (g.size.x + 3) / 4, by = (g.size.y + 3) / 4, bz = (g.size.z + 3) / 4;
     brickBits_.assign((static_cast<std::size_t>(bx) * by * bz + 63) / 64 + 1, 0);
@@ -788,7 +791,7 @@ Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : 
             brickBits_[brick / 64] |= std::uint64_t{1} << (brick % 64);
             ++insideVoxels_;
           } else {
-            hits_[v] = kOutsideBit;  // the flag stays for the grid's life; clears keep it
+            hits[v * stride] = kOutsideBit;  // the flag stays for the grid's life; clears keep it
           }
         }
   }
@@ -861,6 +864,10 @@ void Accumulator::notifyWorkChanged() {
   doneSignal_.notify_all();
 }
 
+std::uint32_t* Accumulator::hitsData() const {
+  return colour_.shift == 0 ? &colours_.data()->count : hits_.data();
+}
+
 int Accumulator::slabFirstZ(std::size_t slab) const {
   return std::min(mask_->geometry.size.z, static_cast<int>(slab << slabShift_) << colour_.shift);
 }
@@ -879,13 +886,19 @@ void Accumulator::clearCells() {
 void Accumulator::clearSlab(std::size_t slab) {
   const GridGeometry& g = mask_->geometry;
   const std::size_t first = g.index(0, 0, slabFirstZ(slab));
-  const std::size_t end = slab + 1 < slabCount_ ? g.index(0, 0, slabEndZ(slab)) : hits_.size();
-  std::uint32_t* hits = hits_.data();
-  for (std::size_t v = first; v < end; ++v) hits[v] &= kOutsideBit;  // zero hits, the inside flag kept
+  const std::size_t end = slab + 1 < slabCount_ ? g.index(0, 0, slabEndZ(slab)) : g.voxelCount();
   const std::size_t sliceCells = static_cast<std::size_t>(colour_.size.x) * colour_.size.y;
   const std::size_t firstCell = (slab << slabShift_) * sliceCells;
   const std::size_t endCell = std::min(colours_.size(), ((slab + 1) << slabShift_) * sliceCells);
-  std::fill(colours_.data() + firstCell, colours_.data() + endCell, detail::ColourCell{});
+  detail::ColourCell* colours = colours_.data();
+  if (colour_.shift == 0) {
+    // The hits are the cells' counts: zeroed with the inside flag kept.
+    for (std::size_t c = firstCell; c < endCell; ++c) colours[c] = {0, 0, 0, colours[c].count & kOutsideBit};
+    return;
+  }
+  std::uint32_t* hits = hits_.data();
+  for (std::size_t v = first; v < end; ++v) hits[v] &= kOutsideBit;  // zero hits, the inside flag kept
+  std::fill(colours + firstCell, colours + endCell, detail::ColourCell{});
 }
 
 void Accumulator::makeSlabCurrent(std::size_t slab) {
@@ -963,7 +976,8 @@ void Accumulator::readSlabsImpl(GridReading& reading, void (*visit)(const GridSl
     view.endZ = slabEndZ(slab);
     view.firstColourZ = static_cast<int>(slab << slabShift_);
     view.endColourZ = std::min(colour_.size.z, static_cast<int>((slab + 1) << slabShift_));
-    view.hits = hits_.data() + g.index(0, 0, view.firstZ);
+    view.hitsStride = hitsStride();
+    view.hits = hitsData() + g.index(0, 0, view.firstZ) * static_cast<std::size_t>(view.hitsStride);
     view.colours = colours_.data() + static_cast<std::size_t>(view.firstColourZ) * sliceCells;
     // A slab nobody has written since the pattern changed still holds the old sums: it is empty.
     view.empty = slabGeneration_[slab] != reading.generation;
@@ -981,7 +995,7 @@ void Accumulator::snapshot(VolumeSnapshot& out) const {
   readSlabs(reading, [&](const GridSlabView& slab) {
     for (int k = slab.firstZ; k < slab.endZ; ++k)
       for (int j = 0; j < g.size.y; ++j) {
-        const std::uint32_t* hits = slab.hits + g.index(0, j, k - slab.firstZ);
+        const std::uint32_t* hits = slab.hits + g.index(0, j, k - slab.firstZ) * slab.hitsStride;
         const detail::ColourCell* cells =
             slab.colours + static_cast<std::size_t>(colour.size.x) *
                                ((j >> colour.shift) +
@@ -989,16 +1003,17 @@ void Accumulator::snapshot(VolumeSnapshot& out) const {
         float* density = &out.density[g.index(0, j, k)];
         std::uint8_t* rgba = &out.rgba[4 * g.index(0, j, k)];
         for (int i = 0; i < g.size.x; ++i, rgba += 4) {
-          const std::uint32_t count = slab.empty ? 0u : hits[i] & ~kOutsideBit;
+          const std::uint32_t count = slab.empty ? 0u : hits[i * slab.hitsStride] & ~kOutsideBit;
           density[i] = static_cast<float>(count);
           maxDensity = std::max(maxDensity, density[i]);
           const detail::ColourCell& cell = cells[i >> colour.shift];
-          if (count == 0 || cell.count == 0) {
+          const std::uint32_t colourPoints = detail::colourPoints(cell);
+          if (count == 0 || colourPoints == 0) {
             rgba[0] = rgba[1] = rgba[2] = 0;
           } else {
-            rgba[0] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.red / cell.count));
-            rgba[1] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.green / cell.count));
-            rgba[2] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.blue / cell.count));
+            rgba[0] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.red / colourPoints));
+            rgba[1] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.green / colourPoints));
+            rgba[2] = static_cast<std::uint8_t>(std::min<std::uint32_t>(255u, cell.blue / colourPoints));
           }
           rgba[3] = 255;
         }
@@ -1016,8 +1031,10 @@ void Accumulator::sampleDensity(DensitySample& out) const {
   waitForPatternChange();
   std::shared_lock lock(gridMutex_);
   const GridGeometry& g = mask_->geometry;
-  const std::size_t voxels = hits_.size();
+  const std::size_t voxels = g.voxelCount();
   const std::size_t stride = convergenceSampleStride(voxels);
+  const std::uint32_t* hits = hitsData();
+  const auto hitsStride = static_cast<std::size_t>(this->hitsStride());
   out.generation = generation_.load(std::memory_order_acquire);
   out.points = points_.load();
   out.hits.clear();
@@ -1029,7 +1046,7 @@ void Accumulator::sampleDensity(DensitySample& out) const {
     std::lock_guard slabLock(slabMutexes_[slab]);
     // A slab not yet written in this generation holds an older pattern's hits: it is empty.
     const std::uint32_t keep = slabGeneration_[slab] == out.generation ? ~kOutsideBit : 0u;
-    for (; v < end; v += stride) out.hits.push_back(hits_[v] & keep);
+    for (; v < end; v += stride) out.hits.push_back(hits[v * hitsStride] & keep);
   }
 }
 
@@ -1082,13 +1099,18 @@ std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {
   for (std::size_t e = 0; e < count; ++e) sorted[start[entries[e].rgbSlab >> 24]++] = entries[e];
   // start[slab] is now the end of that slab's run (and the beginning of the next one's).
 
+  return colour_.shift == 0 ? addSplats<true>(sorted, start) : addSplats<false>(sorted, start);
+}
+
+template <bool kHitsInCells>
+std::uint64_t Accumulator::addSplats(const Splat* sorted, const std::size_t* slabEnd) {
   constexpr std::size_t kPrefetchDistance = 32;
   std::uint32_t* hits = hits_.data();
   detail::ColourCell* colours = colours_.data();
   std::uint64_t inside = 0;
   std::size_t begin = 0;
   for (std::size_t slab = 0; slab < slabCount_; ++slab) {
-    const std::size_t end = start[slab];
+    const std::size_t end = slabEnd[slab];
     if (end == begin) continue;
     std::lock_guard lock(slabMutexes_[slab]);
     makeSlabCurrent(slab);
@@ -1096,21 +1118,22 @@ std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {
       // The adds are independent plain stores, so the CPU overlaps their cache misses;
       // prefetching a few entries ahead hides most of the rest.
       if (e + kPrefetchDistance < end) {
-        __builtin_prefetch(&hits[sorted[e + kPrefetchDistance].voxel], 1);
         __builtin_prefetch(&colours[sorted[e + kPrefetchDistance].cell], 1);
+        if constexpr (!kHitsInCells) __builtin_prefetch(&hits[sorted[e + kPrefetchDistance].voxel], 1);
       }
       const Splat splat = sorted[e];
-      std::uint32_t& voxelHits = hits[splat.voxel];
       detail::ColourCell& cell = colours[splat.cell];
-      // Branch-free: a voxel outside the mask (flag set) gets zero added, and a colour cell whose
-      // count reached the limit keeps its (long converged) mean.
+      std::uint32_t& voxelHits = kHitsInCells ? cell.count : hits[splat.voxel];
+      // Branch-free: a voxel outside the mask (flag set) gets zero added, and a colour cell that
+      // holds kColourCountLimit points keeps its (long converged) mean.
       const std::uint32_t in = (~voxelHits) >> 31;
-      const std::uint32_t room = in & ((cell.count - kColourCountLimit) >> 31);
+      const std::uint32_t colourPoints = kHitsInCells ? voxelHits & ~kOutsideBit : cell.count;
+      const std::uint32_t room = in & ((colourPoints - kColourCountLimit) >> 31);
       voxelHits += in;
       cell.red += room * (splat.rgbSlab & 0xffu);
       cell.green += room * ((splat.rgbSlab >> 8) & 0xffu);
       cell.blue += room * ((splat.rgbSlab >> 16) & 0xffu);
-      cell.count += room;
+      if constexpr (!kHitsInCells) cell.count += room;
       inside += in;
     }
     begin = end;

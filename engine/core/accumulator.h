@@ -16,6 +16,7 @@
 // accumulator never touches GL. Threads are std::jthreads owned here and joined in the destructor.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <condition_variable>
@@ -173,14 +174,20 @@ std::size_t accumulatorBytes(const GridGeometry& grid);
 
 namespace detail {
 // A colour cell's sums of the palette colours of the points that landed in it, and how many they
-// were. The count stops at kColourCountLimit (the sums then stay below 2^32, and the mean colour,
-// long converged, stays put) while the voxels' hit counts go on.
+// were. Colour stops being added at kColourCountLimit points (the sums then stay below 2^32, and
+// the mean colour, long converged, stays put) while the voxels' hit counts go on. Where a colour
+// cell is one voxel, `count` is that voxel's hit count itself (flag included), so a splat touches
+// a single 16-byte slot; the points its colour holds are then min(hits, kColourCountLimit).
 struct ColourCell {
   std::uint32_t red = 0, green = 0, blue = 0, count = 0;
 };
 inline constexpr std::uint32_t kColourCountLimit = std::uint32_t{1} << 24;
 // Hit counts carry a voxel's outside-the-mask flag in their top bit (never counted).
 inline constexpr std::uint32_t kOutsideBit = 0x80000000u;
+// The points whose colours a cell's sums hold (either layout).
+inline std::uint32_t colourPoints(const ColourCell& cell) {
+  return std::min(cell.count & ~kOutsideBit, kColourCountLimit);
+}
 
 // Memory for the grid on 2 MiB pages where the OS offers them: splats land at random across
 // hundreds of megabytes, and with 4 KiB pages nearly every one would also miss the TLB.
@@ -210,6 +217,7 @@ class HugePageArray {
 struct GridSlabView {
   int firstZ = 0, endZ = 0;                     // voxel slices [firstZ, endZ)
   const std::uint32_t* hits = nullptr;          // from voxel (0, 0, firstZ) on; the top bit flags outside voxels
+  int hitsStride = 1;                           // in uint32s: 4 where the hits live in the colour cells
   int firstColourZ = 0, endColourZ = 0;         // colour cell slices [firstColourZ, endColourZ)
   const detail::ColourCell* colours = nullptr;  // from colour cell (0, 0, firstColourZ) on
   bool empty = false;  // nothing of the current generation has landed here: treat every hit count as 0
@@ -285,6 +293,8 @@ class Accumulator {
   bool allStreamsDone(std::uint64_t target) const;
   // Adds a thread's collected splats to the grid; returns how many landed inside the mask.
   std::uint64_t flushSplats(struct SplatBuffer& splats);
+  template <bool kHitsInCells>
+  std::uint64_t addSplats(const struct Splat* sorted, const std::size_t* slabEnd);
   void readSlabsImpl(GridReading& reading, void (*visit)(const GridSlabView&, void*), void* context) const;
   std::size_t slabOfColourSlice(int colourZ) const { return static_cast<std::size_t>(colourZ >> slabShift_); }
   int slabFirstZ(std::size_t slab) const;  // the first voxel slice of a slab
@@ -299,8 +309,10 @@ class Accumulator {
 
   // The grid, guarded per slab by slabMutexes_. A slab is a run of whole colour slices (and the
   // voxel slices under them), so a colour cell and all its voxels share one slab and one lock.
-  detail::HugePageArray<std::uint32_t> hits_;          // per voxel
-  detail::HugePageArray<detail::ColourCell> colours_;  // per colour cell
+  detail::HugePageArray<std::uint32_t> hits_;          // per voxel, where colour cells span 2³ voxels
+  detail::HugePageArray<detail::ColourCell> colours_;  // per colour cell (with the hits, where one a voxel)
+  std::uint32_t* hitsData() const;                     // hit counts, hitsStride() uint32s apart
+  int hitsStride() const { return colour_.shift == 0 ? 4 : 1; }
   ColourLayout colour_;
   std::uint64_t insideVoxels_ = 0;
   std::vector<std::uint64_t> brickBits_;  // per 4×4×4 brick: does any voxel lie inside the mask

@@ -148,7 +148,7 @@ void packVolume(const Accumulator& accumulator, PackedVolume& out) {
     cellWeights.assign(sliceCells * static_cast<std::size_t>(cellSlices), 0.0f);
     for (int k = slab.firstZ; k < slab.endZ; ++k)
       for (int j = 0; j < g.size.y; ++j) {
-        const std::uint32_t* hits = slab.hits + g.index(0, j, k - slab.firstZ);
+        const std::uint32_t* hits = slab.hits + g.index(0, j, k - slab.firstZ) * slab.hitsStride;
         std::uint16_t* density = &out.density[g.index(0, j, k)];
         float* weights = &cellWeights[static_cast<std::size_t>(colour.size.x) *
                                       ((j >> colour.shift) + static_cast<std::size_t>(colour.size.y) *
@@ -158,7 +158,7 @@ void packVolume(const Accumulator& accumulator, PackedVolume& out) {
           continue;
         }
         for (int i = 0; i < g.size.x; ++i) {
-          const std::uint32_t count = hits[i] & ~detail::kOutsideBit;
+          const std::uint32_t count = hits[i * slab.hitsStride] & ~detail::kOutsideBit;
           if (count == 0) {
             density[i] = 0;
             continue;
@@ -178,11 +178,12 @@ void packVolume(const Accumulator& accumulator, PackedVolume& out) {
       // The cell's weight is its voxels' mean density: what the trilinear blend between
       // neighbouring cells weighs their colours by.
       const float weight = std::min(cellWeights[c] * inverseCellVoxels, kLargestHalf);
-      if (weight <= 0.0f || cell.count == 0) {
+      const std::uint32_t points = detail::colourPoints(cell);
+      if (weight <= 0.0f || points == 0) {
         std::fill(texels + 4 * c, texels + 4 * c + 4, std::uint16_t{0});
         continue;
       }
-      const float toMean = kByte / static_cast<float>(cell.count);
+      const float toMean = kByte / static_cast<float>(points);
       writeColour(texels + 4 * c, weight, static_cast<float>(cell.red) * toMean,
                   static_cast<float>(cell.green) * toMean, static_cast<float>(cell.blue) * toMean);
     }

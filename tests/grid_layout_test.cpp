@@ -1,0 +1,173 @@
+// The accumulator's memory layout: hit counts per voxel, colour sums per colour cell (2×2×2 voxels
+// above 256³), colour that stays right however many points a voxel gets, packing straight from the
+// grid, and a snapshot thread that cycles two packed volumes instead of allocating more.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <thread>
+#include <vector>
+
+#include "core/accumulator.h"
+#include "core/attractor.h"
+#include "core/color.h"
+#include "core/inside_mask.h"
+#include "core/packed_volume.h"
+#include "core/scene_io.h"
+#include "core/snapshot_publisher.h"
+
+using namespace voxflame::core;
+
+namespace {
+
+std::shared_ptr<const InsideMask> fullMask(glm::ivec3 size) {
+  auto mask = std::make_shared<InsideMask>();
+  mask->geometry.size = size;
+  mask->inside.assign(mask->geometry.voxelCount(), 1);
+  return mask;
+}
+
+// x' = -x, y' = -y, z' = -z (Sprott's quadratic map reduced): every orbit alternates between two
+// points, which a locked fit puts at gridCenter ± (1, 1, 1) voxels.
+PatternLayer twoPointLayer(const InsideMask& mask, glm::dvec3 gridCenter, glm::vec3 colour) {
+  const AttractorInfo& info = attractorOrThrow("sprott_quadratic");
+  PatternLayer layer;
+  layer.attractor = info.id;
+  layer.step = info.defaultStep;
+  layer.integrator = info.defaultIntegrator;
+  layer.params.assign(30, 0.0);
+  layer.params[1] = layer.params[15] = layer.params[28] = -1.0;
+  layer.transform.lockFit = true;
+  layer.transform.lockedCenter = glm::dvec3(0.0);
+  layer.transform.lockedScale = 10.0;
+  const glm::dvec3 size(mask.geometry.size);
+  layer.transform.offset = (gridCenter - 0.5 * size) / std::max({size.x, size.y, size.z});
+  layer.color.palette.clear();
+  layer.color.gradient = {GradientStop{0.0f, colour}, GradientStop{1.0f, colour}};
+  return layer;
+}
+
+struct Accumulated {
+  VolumeSnapshot snapshot;
+  PackedVolume packed;
+};
+
+Accumulated accumulate(const std::shared_ptr<const InsideMask>& mask, const std::vector<PatternLayer>& layers,
+                       std::uint64_t points, int threads) {
+  Accumulator accumulator(mask, threads);
+  accumulator.setTargetPoints(points);
+  accumulator.setPattern(layers, 3);
+  EXPECT_TRUE(accumulator.waitUntilDone(120.0));
+  Accumulated result;
+  accumulator.snapshot(result.snapshot);
+  packVolume(accumulator, result.packed);
+  return result;
+}
+
+}  // namespace
+
+TEST(ColourLayout, CellsSpanTwoVoxelsOnlyAbove256Cubed) {
+  GridGeometry grid;
+  grid.size = {256, 256, 256};
+  EXPECT_EQ(ColourLayout::of(grid).shift, 0);
+  EXPECT_EQ(ColourLayout::of(grid).size, grid.size);
+  grid.size = {257, 256, 256};
+  const ColourLayout coarse = ColourLayout::of(grid);
+  EXPECT_EQ(coarse.shift, 1);
+  EXPECT_EQ(coarse.size, glm::ivec3(129, 128, 128));
+  // 512³: 4 bytes of hits a voxel and 16 per 8 voxels, a third of the 16 bytes a voxel it was.
+  grid.size = glm::ivec3(512);
+  EXPECT_LE(accumulatorBytes(grid), 6 * grid.voxelCount() + (1u << 20));
+  EXPECT_LE(packedVolumeBytes(grid), 3 * grid.voxelCount() + grid.voxelCount() / 64);
+}
+
+// 2^24 points of a colour fill a voxel's colour count; more must neither overflow the sums (255 ×
+// 2^24 is past 2^32) nor change the mean. Two voxels get half of 40 million points each.
+TEST(GridLayout, AVoxelKeepsItsColourPastTwoToThe24Points) {
+  const auto mask = fullMask(glm::ivec3(6));
+  const glm::vec3 colour(0.9f, 0.35f, 0.7f);
+  const Accumulated few = accumulate(mask, {twoPointLayer(*mask, {3.5, 3.5, 3.5}, colour)}, 100'000, 2);
+  const Accumulated many = accumulate(mask, {twoPointLayer(*mask, {3.5, 3.5, 3.5}, colour)}, 40'000'000, 2);
+  const GridGeometry& g = many.snapshot.geometry;
+  for (const std::size_t v : {g.index(4, 4, 4), g.index(2, 2, 2)}) {
+    ASSERT_GT(many.snapshot.density[v], 17'000'000.0f);
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_EQ(many.snapshot.rgba[4 * v + c], few.snapshot.rgba[4 * v + c]) << "channel " << c;
+      const float packed = halfToFloat(many.packed.colours[4 * v + c]) / halfToFloat(many.packed.colours[4 * v + 3]);
+      EXPECT_NEAR(packed * 255.0f, static_cast<float>(few.snapshot.rgba[4 * v + c]), 0.6f) << "channel " << c;
+    }
+  }
+}
+
+// Above 256³ colour cells span 2×2×2 voxels: the grid is still the same for a seed on any number
+// of threads, the density keeps every voxel, and packing straight from the accumulator agrees
+// with packing its snapshot.
+TEST(GridLayout, ACoarseColourGridIsDeterministicAndPacksLikeItsSnapshot) {
+  const auto mask = fullMask(glm::ivec3(258));
+  ASSERT_EQ(ColourLayout::of(mask->geometry).shift, 1);
+  const std::vector<PatternLayer> layers = defaultScene().layers;
+  const Accumulated one = accumulate(mask, layers, 2'000'000, 1);
+  const Accumulated two = accumulate(mask, layers, 2'000'000, 2);
+  EXPECT_TRUE(one.snapshot.density == two.snapshot.density);
+  EXPECT_TRUE(one.snapshot.rgba == two.snapshot.rgba);
+  EXPECT_TRUE(one.packed.density == two.packed.density);
+  EXPECT_TRUE(one.packed.colours == two.packed.colours);
+
+  const GridGeometry& g = one.snapshot.geometry;
+  const PackedVolume& packed = one.packed;
+  ASSERT_EQ(packed.colour.shift, 1);
+  ASSERT_EQ(packed.colours.size(), 4 * static_cast<std::size_t>(129 * 129 * 129));
+  PackedVolume fromSnapshot;
+  packVolume(one.snapshot, fromSnapshot);
+  EXPECT_DOUBLE_EQ(packed.referenceDensity, fromSnapshot.referenceDensity);
+  EXPECT_TRUE(packed.density == fromSnapshot.density);
+  EXPECT_TRUE(packed.occupancy == fromSnapshot.occupancy);
+  std::size_t checked = 0;
+  for (int k = 0; k < g.size.z; k += 3)
+    for (int j = 0; j < g.size.y; j += 3)
+      for (int i = 0; i < g.size.x; i += 3) {
+        const std::size_t v = g.index(i, j, k);
+        if (one.snapshot.density[v] <= 0.0f) continue;
+        const std::size_t cell = static_cast<std::size_t>(i / 2) +
+                                 129 * (static_cast<std::size_t>(j / 2) + 129 * static_cast<std::size_t>(k / 2));
+        const float weight = halfToFloat(packed.colours[4 * cell + 3]);
+        ASSERT_GT(weight, 0.0f);
+        for (int c = 0; c < 3; ++c)
+          ASSERT_NEAR(halfToFloat(packed.colours[4 * cell + c]) / weight * 255.0f,
+                      static_cast<float>(one.snapshot.rgba[4 * v + c]), 1.5f)
+              << "voxel " << i << " " << j << " " << k << " channel " << c;
+        ++checked;
+      }
+  EXPECT_GT(checked, 1000u);
+}
+
+// The snapshot thread packs into the buffer the taker handed back: two volumes' worth of memory
+// cycle between them, never a third.
+TEST(SnapshotPublisher, TwoPackedVolumesCycleBetweenThePublisherAndItsTaker) {
+  const auto mask = fullMask(glm::ivec3(32));
+  Accumulator accumulator(mask, 1);
+  accumulator.setPattern(defaultScene().layers, 1);  // refines without end
+  SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(2));
+  auto takeNext = [&](PackedVolume& out) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (!publisher.takeIfNewer(out)) {
+      if (std::chrono::steady_clock::now() > deadline) return false;
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    return true;
+  };
+  PackedVolume shown;
+  ASSERT_TRUE(takeNext(shown));
+  const std::uint16_t* first = shown.density.data();
+  ASSERT_TRUE(takeNext(shown));
+  const std::uint16_t* second = shown.density.data();
+  EXPECT_NE(first, second);
+  std::uint64_t version = shown.version;
+  for (int round = 0; round < 4; ++round) {
+    ASSERT_TRUE(takeNext(shown));
+    EXPECT_EQ(shown.density.data(), round % 2 == 0 ? first : second);
+    EXPECT_GT(shown.version, version);
+    version = shown.version;
+  }
+}
