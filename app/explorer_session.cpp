@@ -51,9 +51,11 @@ struct ExplorerSession::Proxy {
   Proxy(std::shared_ptr<const core::InsideMask> insideMask, int threads)
       : mask(std::move(insideMask)), accumulator(mask, threads), publisher(accumulator, kInterval) {
     const auto inside = std::count(mask->inside.begin(), mask->inside.end(), std::uint8_t{1});
-    accumulator.setTargetPoints(
-        static_cast<std::uint64_t>(kProxyPointsPerVoxel * static_cast<double>(std::max<std::ptrdiff_t>(inside, 1))));
+    targetPoints =
+        static_cast<std::uint64_t>(kProxyPointsPerVoxel * static_cast<double>(std::max<std::ptrdiff_t>(inside, 1)));
+    accumulator.setTargetPoints(targetPoints);
   }
+  std::uint64_t targetPoints = 0;
   std::shared_ptr<const core::InsideMask> mask;
   core::Accumulator accumulator;
   core::SnapshotPublisher publisher;
@@ -70,6 +72,9 @@ struct ExplorerSession::Engine {
         accumulator(mask, threads),
         publisher(accumulator, interval) {
     accumulator.setTargetPoints(kExplorerTargetPoints);
+    // The live view shows the large grid of a pattern once it holds as many points as the proxy;
+    // packing it before then is wasted.
+    if (proxy) publisher.setMinimumPoints(proxy->targetPoints);
   }
   std::string shapeKey;
   std::shared_ptr<const core::InsideMask> mask;
@@ -170,12 +175,13 @@ bool ExplorerSession::waitUntilApplied(double timeoutSeconds) {
                                  [&] { return applied_ == requested_ && !working_; });
 }
 
-void ExplorerSession::setRefinement(double noiseTarget, bool paused) {
+void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool interacting) {
   {
     std::lock_guard lock(mutex_);
-    if (noiseTarget == noiseTarget_ && paused == paused_) return;
+    if (noiseTarget == noiseTarget_ && paused == paused_ && interacting == interacting_) return;
     noiseTarget_ = noiseTarget;
     paused_ = paused;
+    interacting_ = interacting;
     steerRequested_ = true;
   }
   wake_.notify_all();
@@ -183,24 +189,27 @@ void ExplorerSession::setRefinement(double noiseTarget, bool paused) {
 
 void ExplorerSession::steer(Engine& engine) {
   double target = 0.0;
-  bool paused = false;
+  bool paused = false, interacting = false;
   {
     std::lock_guard lock(mutex_);
     target = noiseTarget_;
     paused = paused_;
+    // Only a grid with a proxy holds while the user interacts: the proxy shows the edits.
+    interacting = interacting_ && engine.proxy;
   }
   engine.accumulator.sampleDensity(engine.sample);
   const double noise = engine.meter.update(engine.sample);
   const bool converged = target > 0.0 && noise <= target;  // false while the noise is NaN
   std::uint64_t wanted = kExplorerTargetPoints;
-  if (converged || paused) {
+  if (converged || paused || interacting) {
     // A target already held stays: raising it to the points counted now would send the streams
     // that are behind on another batch each time, and the workers would never quite rest.
     const std::uint64_t points = engine.accumulator.stats().points;
     wanted = engine.target != kExplorerTargetPoints ? engine.target
-             : converged                            ? std::max<std::uint64_t>(points, 1)
-                                                    : std::max(points, kPausedPreviewPoints);
+             : paused && !converged                 ? std::max(points, kPausedPreviewPoints)
+                                                    : std::max<std::uint64_t>(points, 1);
   }
+  engine.publisher.setHeld(interacting);
   if (wanted != engine.target) {
     engine.target = wanted;
     engine.accumulator.setTargetPoints(wanted);

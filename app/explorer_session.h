@@ -101,7 +101,10 @@ class ExplorerSession {
   // cores; a pattern edited meanwhile still refines to a small preview). A stopped or held
   // accumulator's workers sleep; a new pattern or a lower target starts them again. Cheap when
   // nothing changed: the explorer calls it every frame.
-  void setRefinement(double noiseTarget, bool paused);
+  // `interacting`: the user is dragging a slider or orbiting. The large grid then holds too (its
+  // work would be thrown away by the next edit, and the cores are the renderer's): the proxy shows
+  // each edit, and the large grid refines the pattern the user stops on.
+  void setRefinement(double noiseTarget, bool paused, bool interacting = false);
 
   // How often the noise is measured while the volume refines.
   static constexpr std::chrono::milliseconds kMeterInterval{250};
@@ -132,6 +135,7 @@ class ExplorerSession {
   std::string error_;
   double noiseTarget_ = 0.0;
   bool paused_ = false;
+  bool interacting_ = false;
   bool steerRequested_ = false;  // setRefinement changed something for the control thread
   double noise_ = std::numeric_limits<double>::quiet_NaN();
   bool converged_ = false;

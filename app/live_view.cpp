@@ -17,8 +17,10 @@ namespace {
 
 // Shadows are smooth: a cell of 2³ voxels keeps them sharp enough at an eighth of the work.
 constexpr int kShadowDownsample = 2;
-// Keeps a frame's share of a volume upload to a few milliseconds.
+// Keeps a frame's share of a volume upload to a few milliseconds while the user interacts; a
+// still view does not march while a volume streams in, so its frames can take more of it.
 constexpr std::size_t kUploadBytesPerFrame = 48u << 20;
+constexpr std::size_t kStillUploadBytesPerFrame = 160u << 20;
 // A proxy is shown once it holds this many points per voxel inside the mesh.
 constexpr double kMinProxyPointsPerVoxel = 2.0;
 
@@ -67,12 +69,20 @@ void LiveView::takeVolume() {
     std::shared_ptr<core::PackedVolume> next = shown_.use_count() > 1 ? std::make_shared<core::PackedVolume>() : shown_;
     if (session_.takeVolumeIfNewer(*next, &reflects)) {
       shown_ = std::move(next);
-      renderer_.beginUpload(*shown_);
-      uploadInProgress_ = true;
-      uploadingPost_ = reflects;
+      // A volume of the proxy's pattern with fewer points than the proxy would not be shown
+      // (see the takeover below): at 512³ its upload alone would cost several frames.
+      const bool behindProxy = reflects != 0 && reflects == proxyPost_ && proxyShown_ &&
+                               renderer_.marchedSource() == gl::VolumeRenderer::Source::Proxy &&
+                               shown_->points < proxyShown_->points;
+      if (!behindProxy) {
+        renderer_.beginUpload(*shown_);
+        uploadInProgress_ = true;
+        uploadingPost_ = reflects;
+      }
     }
   }
-  if (uploadInProgress_ && renderer_.continueUpload(kUploadBytesPerFrame)) {
+  const bool still = !changedLastFrame_ && target_.samples > 0;
+  if (uploadInProgress_ && renderer_.continueUpload(still ? kStillUploadBytesPerFrame : kUploadBytesPerFrame)) {
     uploadInProgress_ = false;
     mainGeneration_ = shown_->generation;
     // 0 means an older post than the newest applied one: older than any proxy shown since.
@@ -141,9 +151,6 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
                      lastMarched_);
   lastFrameStart_ = frameStart;
   lastMarched_ = false;
-  // Refinement rests at the user's noise target and while an export uses the cores.
-  session_.setRefinement(0.01 * state.settings.refineUntilNoisePercent,
-                         state.exportStatus.state == ExportState::Running);
   if (session_.postIfPatternChanged(state.scene)) {
     result.patternPosted = true;
     waitingPost_ = session_.status().requestedGeneration;
@@ -164,6 +171,7 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   const std::optional<core::GridGeometry> grid = session_.geometry();
+  bool changed = false;
   if (grid && renderer_.hasVolume()) {
     gl::RenderSettings settings;
     settings.camera =
@@ -191,13 +199,17 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
       lastRenderScale_ = scale;
     }
     // A main grid half of one pattern and half of another is not drawn: the last picture stays
-    // until it is whole, unless the view moves.
-    if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged)) {
+    // until it is whole, unless the view moves. Nor does a still picture refine while a volume
+    // streams in: the upload then has the frame to itself, and the new volume restarts the
+    // samples anyway.
+    const bool waitForUpload = uploadInProgress_ && target_.samples > 0 && !viewChanged;
+    if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged) && !waitForUpload) {
       renderer_.march(target_, settings, static_cast<int>(frame_));
       lastMarched_ = true;
       lastMarchScale_ = scale;
     }
     state.samples = target_.samples;
+    changed = viewChanged;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     renderer_.resolve(target_, settings, glm::ivec4(0, 0, width, height), false);
     result.volumeDrawn = true;
@@ -226,6 +238,13 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
       waitingFullPost_ = 0;
     }
   }
+  // Refinement rests at the user's noise target and while an export uses the cores; the large
+  // grid also holds while the user drags or orbits (a change in this frame and the last: a single
+  // edit refines at once), until the first frame without one.
+  changed = changed || result.patternPosted;
+  session_.setRefinement(0.01 * state.settings.refineUntilNoisePercent,
+                         state.exportStatus.state == ExportState::Running, changed && changedLastFrame_);
+  changedLastFrame_ = changed;
   ++frame_;
   return result;
 }

@@ -72,6 +72,7 @@ class LiveView {
   // volume is swapped into it once uploaded (or into a fresh one while a shadow job holds it).
   std::shared_ptr<core::PackedVolume> shown_ = std::make_shared<core::PackedVolume>();
   bool uploadInProgress_ = false;
+  bool changedLastFrame_ = false;  // the view or pattern changed in the previous frame
   std::uint64_t uploadingPost_ = 0;
   bool newVolumeShown_ = false;
   std::uint64_t shownPost_ = 0;  // the post of the volume drawn (main grid or proxy)

@@ -831,6 +831,32 @@ TEST_F(ExplorerUi, RefinementPausesWhileAnExportRuns) {
   EXPECT_FALSE(session.status().paused);
 }
 
+// While the user drags a slider (edits in consecutive frames) the large grid holds: the proxy shows
+// each edit and gets the cores; the grid refines the pattern the user stops on.
+TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
+  state.scene.gridResolution = 128;  // above kProxyAbove: the grid has a proxy
+  app::ExplorerSession session(2);
+  session.setRefinement(0.0, false, true);
+  session.post(state.scene);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  core::PackedVolume proxy;
+  std::uint64_t reflects = 0;
+  const auto start = std::chrono::steady_clock::now();
+  while (!(session.takeProxyIfNewer(proxy, &reflects) && reflects == 1) &&
+         std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_EQ(reflects, 1u) << "the proxy shows the edit while the grid holds";
+  ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.stats.done; }));
+  const std::uint64_t held = session.status().stats.points;
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(session.status().stats.points, held) << "the large grid adds nothing while the user drags";
+  core::PackedVolume volume;
+  EXPECT_FALSE(session.takeVolumeIfNewer(volume)) << "nor is it packed for upload";
+  session.setRefinement(0.0, false, false);
+  ASSERT_TRUE(waitForSession(session, [&](const app::SessionStatus& s) { return s.stats.points > held + 1'000'000; }))
+      << "once the drag ends the grid refines";
+}
+
 // The Render panel has the setting; the window loop waits for input only when everything rests.
 TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) {
   EXPECT_DOUBLE_EQ(state.settings.refineUntilNoisePercent, app::kDefaultRefineUntilNoisePercent);

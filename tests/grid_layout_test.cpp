@@ -171,3 +171,67 @@ TEST(SnapshotPublisher, TwoPackedVolumesCycleBetweenThePublisherAndItsTaker) {
     version = shown.version;
   }
 }
+
+// A recycled buffer skips the rows its grid's mask leaves empty (they hold zeros from the last
+// pack); one last packed from another grid of the same size must not keep that grid's density there.
+TEST(GridLayout, ARecycledBufferPacksLikeAFreshOne) {
+  const auto full = fullMask(glm::ivec3(40));
+  auto lowerHalf = std::make_shared<InsideMask>(*full);
+  for (int k = 20; k < 40; ++k)
+    for (int j = 0; j < 40; ++j)
+      for (int i = 0; i < 40; ++i) lowerHalf->inside[lowerHalf->geometry.index(i, j, k)] = 0;
+  Accumulator everywhere(full, 2), below(lowerHalf, 2);
+  for (Accumulator* accumulator : {&everywhere, &below}) {
+    accumulator->setTargetPoints(300'000);
+    accumulator->setPattern(defaultScene().layers, 2);
+    ASSERT_TRUE(accumulator->waitUntilDone(60.0));
+  }
+  PackedVolume recycled;
+  packVolume(everywhere, recycled);
+  std::size_t upperDensity = 0;
+  for (std::size_t v = full->geometry.index(0, 0, 20); v < recycled.density.size(); ++v)
+    upperDensity += recycled.density[v] != 0;
+  ASSERT_GT(upperDensity, 100u);  // the full grid has density where the other mask has none
+  for (int round = 0; round < 2; ++round) {
+    packVolume(below, recycled);  // first from the other grid's pack, then from its own
+    PackedVolume fresh;
+    packVolume(below, fresh);
+    EXPECT_TRUE(recycled.density == fresh.density) << "round " << round;
+    EXPECT_TRUE(recycled.colours == fresh.colours) << "round " << round;
+    EXPECT_TRUE(recycled.occupancy == fresh.occupancy) << "round " << round;
+  }
+}
+
+// A volume that would not be shown is not packed: one below the minimum while its grid still
+// refines, and none while the publisher is held; a grid that stopped below the minimum still is.
+TEST(SnapshotPublisher, PacksNothingBelowTheMinimumWhileRefiningNorWhileHeld) {
+  const auto mask = fullMask(glm::ivec3(32));
+  Accumulator accumulator(mask, 1);
+  accumulator.setTargetPoints(200'000);
+  SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(2));
+  publisher.setHeld(true);
+  accumulator.setPattern(defaultScene().layers, 1);
+  ASSERT_TRUE(accumulator.waitUntilDone(60.0));
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  PackedVolume volume;
+  EXPECT_FALSE(publisher.takeIfNewer(volume)) << "held";
+  publisher.setMinimumPoints(1'000'000'000);
+  publisher.setHeld(false);
+  auto takeWithin = [&](std::chrono::milliseconds limit) {
+    const auto deadline = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < deadline) {
+      if (publisher.takeIfNewer(volume)) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    }
+    return false;
+  };
+  ASSERT_TRUE(takeWithin(std::chrono::seconds(30))) << "a grid that stopped below the minimum is packed";
+  EXPECT_GE(volume.points, 200'000u);
+
+  accumulator.setTargetPoints(0);  // refine without end, far below the minimum for a long while
+  accumulator.setPattern(defaultScene().layers, 2);
+  EXPECT_FALSE(takeWithin(std::chrono::milliseconds(300))) << "a refining grid below the minimum is not packed";
+  publisher.setMinimumPoints(1);
+  EXPECT_TRUE(takeWithin(std::chrono::seconds(30)));
+  EXPECT_EQ(volume.generation, accumulator.generation());
+}

@@ -775,6 +775,9 @@ Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : 
   const std::size_t voxels = g.voxelCount();
   if (voxels == 0 || voxels >= (std::size_t{1} << 31)) throw Error("the accumulation grid must have 1 to 2^31 voxels");
   colour_ = ColourLayout::of(g);
+  static std::atomic<std::uint64_t> lastGridId{0};
+  gridId_ = ++lastGridId;
+  rowInside_.assign(static_cast<std::size_t>(g.size.y) * g.size.z, 0);
   if (colour_.shift > 0) hits_.allocate(voxels);
   colours_.allocate(colour_.cellCount());
   std::uint32_t* hits = hitsData();
@@ -790,6 +793,7 @@ Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : 
             const auto brick = static_cast<std::size_t>((i / 4) + bx * ((j / 4) + by * (k / 4)));
             brickBits_[brick / 64] |= std::uint64_t{1} << (brick % 64);
             ++insideVoxels_;
+            rowInside_[static_cast<std::size_t>(j) + static_cast<std::size_t>(g.size.y) * k] = 1;
           } else {
             hits[v * stride] = kOutsideBit;  // the flag stays for the grid's life; clears keep it
           }
@@ -967,6 +971,7 @@ void Accumulator::readSlabsImpl(GridReading& reading, void (*visit)(const GridSl
   reading.generation = generation_.load(std::memory_order_acquire);
   reading.points = points_.load();
   reading.insideVoxels = insideVoxels_;
+  reading.gridId = gridId_;
   const std::size_t sliceCells = static_cast<std::size_t>(colour_.size.x) * colour_.size.y;
   for (std::size_t slab = 0; slab < slabCount_; ++slab) {
     // Workers add into a slab only under its mutex, so each slab is seen consistently.
@@ -981,6 +986,7 @@ void Accumulator::readSlabsImpl(GridReading& reading, void (*visit)(const GridSl
     view.colours = colours_.data() + static_cast<std::size_t>(view.firstColourZ) * sliceCells;
     // A slab nobody has written since the pattern changed still holds the old sums: it is empty.
     view.empty = slabGeneration_[slab] != reading.generation;
+    view.rowInside = rowInside_.data() + static_cast<std::size_t>(g.size.y) * view.firstZ;
     visit(view, context);
   }
 }

@@ -221,6 +221,7 @@ struct GridSlabView {
   int firstColourZ = 0, endColourZ = 0;         // colour cell slices [firstColourZ, endColourZ)
   const detail::ColourCell* colours = nullptr;  // from colour cell (0, 0, firstColourZ) on
   bool empty = false;  // nothing of the current generation has landed here: treat every hit count as 0
+  const std::uint8_t* rowInside = nullptr;  // per row of voxels from (0, 0, firstZ) on: does any lie inside
 };
 
 // What readSlabs read: the grid and its state when it began.
@@ -231,6 +232,7 @@ struct GridReading {
   std::uint64_t generation = 0;
   std::uint64_t points = 0;
   std::uint64_t insideVoxels = 0;
+  std::uint64_t gridId = 0;  // which accumulator (and so which mask) was read: unique in the process
 };
 
 class Accumulator {
@@ -315,6 +317,8 @@ class Accumulator {
   int hitsStride() const { return colour_.shift == 0 ? 4 : 1; }
   ColourLayout colour_;
   std::uint64_t insideVoxels_ = 0;
+  std::vector<std::uint8_t> rowInside_;  // per row of voxels (j, k): does any lie inside the mask
+  std::uint64_t gridId_ = 0;
   std::vector<std::uint64_t> brickBits_;  // per 4×4×4 brick: does any voxel lie inside the mask
   int slabShift_ = 0;                     // colour slice >> slabShift_ = its slab
   std::unique_ptr<std::mutex[]> slabMutexes_;

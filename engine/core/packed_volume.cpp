@@ -79,6 +79,7 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
   ColourLayout perVoxel;
   perVoxel.size = g.size;
   prepare(out, g, perVoxel);
+  out.packedFromGrid = 0;
   out.version = snapshot.version;
   out.generation = snapshot.generation;
   out.points = snapshot.points;
@@ -121,6 +122,8 @@ void packVolume(const Accumulator& accumulator, PackedVolume& out) {
   const GridGeometry& g = accumulator.mask().geometry;
   const ColourLayout& colour = accumulator.colourLayout();
   prepare(out, g, colour);
+  const std::uint64_t packedBefore = out.packedFromGrid;
+  out.packedFromGrid = 0;  // until this pack is complete
   GridReading reading;
   float inverseScale = 1.0f;
   bool first = true;
@@ -144,6 +147,9 @@ void packVolume(const Accumulator& accumulator, PackedVolume& out) {
       inverseScale = 1.0f / out.texelDensity;
       first = false;
     }
+    // Rows with no voxel inside the mesh never hold density; a buffer this grid packed before
+    // holds their zeros already.
+    const bool outsideRowsAreZero = packedBefore == reading.gridId;
     const int cellSlices = slab.endColourZ - slab.firstColourZ;
     cellWeights.assign(sliceCells * static_cast<std::size_t>(cellSlices), 0.0f);
     for (int k = slab.firstZ; k < slab.endZ; ++k)
@@ -153,7 +159,10 @@ void packVolume(const Accumulator& accumulator, PackedVolume& out) {
         float* weights = &cellWeights[static_cast<std::size_t>(colour.size.x) *
                                       ((j >> colour.shift) + static_cast<std::size_t>(colour.size.y) *
                                                                  ((k >> colour.shift) - slab.firstColourZ))];
-        if (slab.empty) {
+        const bool inside =
+            slab.rowInside[static_cast<std::size_t>(j) + static_cast<std::size_t>(g.size.y) * (k - slab.firstZ)] != 0;
+        if (!inside && outsideRowsAreZero) continue;
+        if (slab.empty || !inside) {
           std::fill(density, density + g.size.x, std::uint16_t{0});
           continue;
         }
@@ -191,6 +200,7 @@ void packVolume(const Accumulator& accumulator, PackedVolume& out) {
   out.version = reading.version;
   out.generation = reading.generation;
   out.points = reading.points;
+  out.packedFromGrid = reading.gridId;
   out.maxDensity = maxDensity;
   out.meanDensity = occupied ? static_cast<float>(densitySum / static_cast<double>(occupied)) : 0.0f;
   finishOccupancy(out);

@@ -44,6 +44,9 @@ struct PackedVolume {
   std::uint64_t version = 0;
   std::uint64_t generation = 0;
   std::uint64_t points = 0;
+  // The accumulator last packed into this buffer (GridReading::gridId; 0: none): a buffer it
+  // packed before already holds zeros wherever its mask has no voxel, so those rows are skipped.
+  std::uint64_t packedFromGrid = 0;
 };
 
 // From a snapshot (stills, tests): a colour cell per voxel.

@@ -1,5 +1,6 @@
 #include "snapshot_publisher.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace voxflame::core {
@@ -34,17 +35,37 @@ bool SnapshotPublisher::caughtUp() {
   return lock.owns_lock() && !readyFresh_ && publishedVersion_.load() == accumulator_.version();
 }
 
+void SnapshotPublisher::setMinimumPoints(std::uint64_t points) {
+  minimumPoints_ = points;
+}
+
+void SnapshotPublisher::setHeld(bool held) {
+  if (held_.exchange(held) && !held) requestNow();
+}
+
 void SnapshotPublisher::loop(std::stop_token stop) {
+  bool waitingForPoints = false;
   while (!stop.stop_requested()) {
     {
+      // Waiting for a new generation to reach the minimum: look again soon, not an interval later.
+      const auto wait = waitingForPoints ? std::min(interval_, std::chrono::milliseconds(10)) : interval_;
       std::unique_lock lock(wakeMutex_);
-      wake_.wait_for(lock, stop, interval_, [&] { return wakeRequested_; });
+      wake_.wait_for(lock, stop, wait, [&] { return wakeRequested_; });
       wakeRequested_ = false;
     }
     if (stop.stop_requested()) break;
+    waitingForPoints = false;
+    if (held_) continue;
     const std::uint64_t version = accumulator_.version();
     // An accumulator at rest adds nothing: the wake-up costs a load and a compare.
     if (version == publishedVersion_.load()) continue;
+    if (const std::uint64_t minimum = minimumPoints_.load(); minimum > 0) {
+      const AccumulatorStats stats = accumulator_.stats();
+      if (stats.points < minimum && !stats.done && stats.problem.empty()) {
+        waitingForPoints = true;
+        continue;
+      }
+    }
     // Packed in place, under the lock: a second buffer to pack into while the last one waits
     // would cost a whole volume of memory (400 MB at 512³), and a taker that finds the lock held
     // simply takes the volume on a later frame. What it hands back in the swap is packed into next.

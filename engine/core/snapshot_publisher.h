@@ -26,6 +26,11 @@ class SnapshotPublisher {
   // progress (it returns false then). Returns whether `out` changed.
   bool takeIfNewer(PackedVolume& out);
   void requestNow();  // take the next snapshot without waiting for the interval
+  // A volume of a generation still refining is not packed before it holds this many points (0:
+  // any): one that would not be shown is not worth a pack (hundreds of milliseconds at 512³).
+  void setMinimumPoints(std::uint64_t points);
+  // While held nothing is packed (the user drags: each generation is thrown away at once).
+  void setHeld(bool held);
   // Everything the accumulator holds has been published and taken: nothing new will come until
   // the accumulator adds points again.
   bool caughtUp();
@@ -39,6 +44,8 @@ class SnapshotPublisher {
   PackedVolume ready_;
   bool readyFresh_ = false;
   std::atomic<std::uint64_t> publishedVersion_{~std::uint64_t{0}};
+  std::atomic<std::uint64_t> minimumPoints_{0};
+  std::atomic<bool> held_{false};
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;
   bool wakeRequested_ = false;  // guarded by wakeMutex_
