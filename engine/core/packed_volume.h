@@ -25,7 +25,8 @@ struct PackedVolume {
   std::vector<std::uint16_t> density;  // a half float per voxel, x fastest: the march tests it first,
                                        // and one channel filters far faster than four in software GL
   ColourLayout colour;                 // how colour cells divide the voxels
-  std::vector<std::uint16_t> colours;  // 4 half floats per colour cell: rgb premultiplied by a
+  std::vector<std::uint16_t> colours;  // 4 half floats per colour cell: its mean colour times a,
+                                       // a = its voxels' mean density (what blends neighbours)
   glm::ivec3 brickCount{0};
   std::vector<std::uint8_t> occupancy;        // 1 where a brick, grown by one voxel, holds density
   glm::ivec3 coarseCount{0};                  // bricks of kCoarseBricks³ bricks: long empty stretches
