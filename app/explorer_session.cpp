@@ -201,7 +201,7 @@ void ExplorerSession::steer(Engine& engine) {
   const double noise = engine.meter.update(engine.sample);
   const bool converged = target > 0.0 && noise <= target;  // false while the noise is NaN
   std::uint64_t wanted = kExplorerTargetPoints;
-  if (converged || paused || interacting) {
+  if (converged || paused) {
     // A target already held stays: raising it to the points counted now would send the streams
     // that are behind on another batch each time, and the workers would never quite rest.
     const std::uint64_t points = engine.accumulator.stats().points;
@@ -209,6 +209,7 @@ void ExplorerSession::steer(Engine& engine) {
              : paused && !converged                 ? std::max(points, kPausedPreviewPoints)
                                                     : std::max<std::uint64_t>(points, 1);
   }
+  engine.accumulator.setHeld(interacting);
   engine.publisher.setHeld(interacting);
   if (wanted != engine.target) {
     engine.target = wanted;
@@ -314,6 +315,12 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
           proxy->patternPost = post;
         }
         // A new pattern refines afresh: a held target would stop it at the old generation's count.
+        // While the user drags, the grid of a shape with a proxy is held before the pattern is
+        // set: its workers would otherwise add a batch of every stream before steer() holds them.
+        {
+          std::lock_guard lock(mutex_);
+          if (interacting_ && current->proxy) current->accumulator.setHeld(true);
+        }
         current->target = kExplorerTargetPoints;
         current->accumulator.setTargetPoints(kExplorerTargetPoints);
         current->accumulator.setPattern(scene.layers, scene.seed);

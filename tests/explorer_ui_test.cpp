@@ -846,10 +846,9 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
          std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   EXPECT_EQ(reflects, 1u) << "the proxy shows the edit while the grid holds";
-  ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.stats.done; }));
-  const std::uint64_t held = session.status().stats.points;
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  EXPECT_EQ(session.status().stats.points, held) << "the large grid adds nothing while the user drags";
+  const std::uint64_t held = session.status().stats.points;
+  EXPECT_EQ(held, 0u) << "the large grid adds nothing while the user drags";
   core::PackedVolume volume;
   EXPECT_FALSE(session.takeVolumeIfNewer(volume)) << "nor is it packed for upload";
   session.setRefinement(0.0, false, false);

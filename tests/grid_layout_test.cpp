@@ -235,3 +235,18 @@ TEST(SnapshotPublisher, PacksNothingBelowTheMinimumWhileRefiningNorWhileHeld) {
   EXPECT_TRUE(takeWithin(std::chrono::seconds(30)));
   EXPECT_EQ(volume.generation, accumulator.generation());
 }
+
+// A held accumulator starts no batch, even for a pattern set while it is held; released, it refines.
+TEST(Accumulator, AHeldAccumulatorAddsNothingUntilReleased) {
+  const auto mask = fullMask(glm::ivec3(24));
+  Accumulator accumulator(mask, 2);
+  accumulator.setHeld(true);
+  accumulator.setPattern(defaultScene().layers, 1);
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_EQ(accumulator.stats().points, 0u);
+  EXPECT_EQ(accumulator.stats().iterations, 0u);
+  accumulator.setTargetPoints(100'000);
+  accumulator.setHeld(false);
+  ASSERT_TRUE(accumulator.waitUntilDone(60.0));
+  EXPECT_GE(accumulator.stats().points, 100'000u);
+}

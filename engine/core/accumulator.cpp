@@ -923,6 +923,11 @@ void Accumulator::setPointSink(PointSink* sink) {
   requestedSink_ = sink;
 }
 
+void Accumulator::setHeld(bool held) {
+  held_ = held;
+  notifyWorkChanged();
+}
+
 void Accumulator::setTargetPoints(std::uint64_t target) {
   targetPoints_ = target;
   notifyWorkChanged();
@@ -1076,14 +1081,14 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
     return -1;
   };
   while (!stop.stop_requested()) {
-    const int stream = active_.load() && !owned.empty() ? nextStream(targetPoints_.load()) : -1;
+    const int stream = active_.load() && !held_.load() && !owned.empty() ? nextStream(targetPoints_.load()) : -1;
     if (stream < 0) {
       // Nothing left for this thread: say so to waitUntilDone, then sleep until setPattern,
       // setTargetPoints or the stop request wakes it (all notify under wakeMutex_).
       std::unique_lock lock(wakeMutex_);
       doneSignal_.notify_all();
       wake_.wait(lock, stop, [&] {
-        if (!active_.load() || owned.empty()) return false;
+        if (!active_.load() || held_.load() || owned.empty()) return false;
         const auto target = targetPoints_.load();
         return std::any_of(owned.begin(), owned.end(), [&](int s) { return !streamDone(s, target); });
       });

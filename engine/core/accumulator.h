@@ -256,6 +256,9 @@ class Accumulator {
   void setPointSink(PointSink* sink);
   // Stop once this many points are inside (0 = refine forever).
   void setTargetPoints(std::uint64_t target);
+  // While held the workers start no batch (and sleep), whatever the target; the grid keeps what
+  // it has, and a new pattern set meanwhile waits, cleared, until the hold ends.
+  void setHeld(bool held);
   // Waits until the target is reached or the pattern cannot accumulate; false on timeout.
   bool waitUntilDone(double timeoutSeconds);
 
@@ -344,6 +347,7 @@ class Accumulator {
   std::atomic<std::uint64_t> escapes_{0};
   std::atomic<std::uint64_t> targetPoints_{0};
   std::atomic<bool> active_{false};  // a pattern is set and can accumulate
+  std::atomic<bool> held_{false};    // setHeld
   std::atomic<double> generationStart_{0.0};
   // Guarded by its own mutex, not gridMutex_: stats() is read every UI frame and must not wait
   // while a generation change clears a large grid.
