@@ -86,6 +86,9 @@ struct ExplorerSession::Engine {
   core::ConvergenceMeter meter;         // control thread only, like the two below
   core::DensitySample sample;
   std::uint64_t target = kExplorerTargetPoints;  // what the accumulator was last told
+  // The pattern posted while the user dragged, set once the drag ends (control thread only).
+  std::optional<core::Scene> deferredScene;
+  std::uint64_t deferredPost = 0;
 };
 
 ExplorerSession::ExplorerSession(int threads, std::chrono::milliseconds snapshotInterval)
@@ -187,6 +190,18 @@ void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool intera
   wake_.notify_all();
 }
 
+void ExplorerSession::applyPattern(Engine& engine, const core::Scene& scene, std::uint64_t post) {
+  // A new pattern refines afresh: a held target would stop it at the old generation's count.
+  engine.target = kExplorerTargetPoints;
+  engine.accumulator.setTargetPoints(kExplorerTargetPoints);
+  engine.accumulator.setPattern(scene.layers, scene.seed);
+  steer(engine);  // a pause still holds the new pattern (at a preview)
+  engine.publisher.requestNow();
+  std::lock_guard lock(mutex_);
+  engine.patternGeneration = engine.accumulator.generation();
+  engine.patternPost = post;
+}
+
 void ExplorerSession::steer(Engine& engine) {
   double target = 0.0;
   bool paused = false, interacting = false;
@@ -241,7 +256,24 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
       if (!pending_) {
         Engine* engine = engine_.get();  // only this thread replaces it
         lock.unlock();
-        if (engine) steer(*engine);
+        if (engine) {
+          bool interacting = false;
+          {
+            std::lock_guard relock(mutex_);
+            interacting = interacting_;
+          }
+          if (engine->deferredScene && !interacting) {
+            const core::Scene deferred = *std::exchange(engine->deferredScene, std::nullopt);
+            try {
+              applyPattern(*engine, deferred, engine->deferredPost);
+            } catch (const core::Error& e) {
+              std::lock_guard relock(mutex_);
+              error_ = e.what();
+            }
+          } else {
+            steer(*engine);
+          }
+        }
         continue;
       }
       scene = std::move(*pending_);
@@ -314,21 +346,23 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
           proxy->patternGeneration = proxy->accumulator.generation();
           proxy->patternPost = post;
         }
-        // A new pattern refines afresh: a held target would stop it at the old generation's count.
-        // While the user drags, the grid of a shape with a proxy is held before the pattern is
-        // set: its workers would otherwise add a batch of every stream before steer() holds them.
+        // While the user drags, the large grid of a shape with a proxy holds, and only the last
+        // pattern is set on it once the drag ends (steer): each edit's would be thrown away, and
+        // setting one costs a probe of the pattern on this thread.
+        bool interacting = false;
         {
           std::lock_guard lock(mutex_);
-          if (interacting_ && current->proxy) current->accumulator.setHeld(true);
+          interacting = interacting_ && current->proxy;
         }
-        current->target = kExplorerTargetPoints;
-        current->accumulator.setTargetPoints(kExplorerTargetPoints);
-        current->accumulator.setPattern(scene.layers, scene.seed);
-        steer(*current);  // a pause still holds the new pattern (at a preview)
-        current->publisher.requestNow();
-        std::lock_guard lock(mutex_);
-        current->patternGeneration = current->accumulator.generation();
-        current->patternPost = post;
+        if (interacting) {
+          current->accumulator.setHeld(true);
+          current->publisher.setHeld(true);
+          current->deferredScene = std::move(scene);
+          current->deferredPost = post;
+        } else {
+          current->deferredScene.reset();
+          applyPattern(*current, scene, post);
+        }
       }
     } catch (const core::Error& e) {
       error = e.what();

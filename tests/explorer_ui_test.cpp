@@ -854,6 +854,12 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
   session.setRefinement(0.0, false, false);
   ASSERT_TRUE(waitForSession(session, [&](const app::SessionStatus& s) { return s.stats.points > held + 1'000'000; }))
       << "once the drag ends the grid refines";
+  std::uint64_t mainReflects = 0;
+  const auto shown = std::chrono::steady_clock::now();
+  while (!(session.takeVolumeIfNewer(volume, &mainReflects) && mainReflects == 1) &&
+         std::chrono::steady_clock::now() - shown < std::chrono::seconds(30))
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_EQ(mainReflects, 1u) << "the pattern the drag stopped on, set on the grid after the drag";
 }
 
 // The Render panel has the setting; the window loop waits for input only when everything rests.
