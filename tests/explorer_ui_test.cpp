@@ -839,27 +839,27 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
   session.setRefinement(0.0, false, true);
   session.post(state.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
-  core::PackedVolume proxy;
-  std::uint64_t reflects = 0;
-  const auto start = std::chrono::steady_clock::now();
-  while (!(session.takeProxyIfNewer(proxy, &reflects) && reflects == 1) &&
-         std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  EXPECT_EQ(reflects, 1u) << "the proxy shows the edit while the grid holds";
+  // Takes volumes (the proxy's or the large grid's) until one shows post 1; the post it last saw.
+  using Take = bool (app::ExplorerSession::*)(core::PackedVolume&, std::uint64_t*);
+  core::PackedVolume volume;
+  auto postShown = [&](Take take) {
+    std::uint64_t reflects = 0;
+    const auto start = std::chrono::steady_clock::now();
+    while (!((session.*take)(volume, &reflects) && reflects == 1) &&
+           std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    return reflects;
+  };
+  EXPECT_EQ(postShown(&app::ExplorerSession::takeProxyIfNewer), 1u) << "the proxy shows the edit while the grid holds";
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   const std::uint64_t held = session.status().stats.points;
   EXPECT_EQ(held, 0u) << "the large grid adds nothing while the user drags";
-  core::PackedVolume volume;
   EXPECT_FALSE(session.takeVolumeIfNewer(volume)) << "nor is it packed for upload";
   session.setRefinement(0.0, false, false);
   ASSERT_TRUE(waitForSession(session, [&](const app::SessionStatus& s) { return s.stats.points > held + 1'000'000; }))
       << "once the drag ends the grid refines";
-  std::uint64_t mainReflects = 0;
-  const auto shown = std::chrono::steady_clock::now();
-  while (!(session.takeVolumeIfNewer(volume, &mainReflects) && mainReflects == 1) &&
-         std::chrono::steady_clock::now() - shown < std::chrono::seconds(30))
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  EXPECT_EQ(mainReflects, 1u) << "the pattern the drag stopped on, set on the grid after the drag";
+  EXPECT_EQ(postShown(&app::ExplorerSession::takeVolumeIfNewer), 1u)
+      << "the pattern the drag stopped on, set on the grid after the drag";
 }
 
 // The Render panel has the setting; the window loop waits for input only when everything rests.
