@@ -50,9 +50,8 @@ struct ExplorerSession::Proxy {
   static constexpr std::chrono::milliseconds kInterval{15};
   Proxy(std::shared_ptr<const core::InsideMask> insideMask, int threads)
       : mask(std::move(insideMask)), accumulator(mask, threads), publisher(accumulator, kInterval) {
-    const auto inside = std::count(mask->inside.begin(), mask->inside.end(), std::uint8_t{1});
-    targetPoints =
-        static_cast<std::uint64_t>(kProxyPointsPerVoxel * static_cast<double>(std::max<std::ptrdiff_t>(inside, 1)));
+    targetPoints = static_cast<std::uint64_t>(
+        kProxyPointsPerVoxel * static_cast<double>(std::max<std::uint64_t>(accumulator.insideVoxels(), 1)));
     accumulator.setTargetPoints(targetPoints);
   }
   std::uint64_t targetPoints = 0;
@@ -190,6 +189,11 @@ void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool intera
   wake_.notify_all();
 }
 
+bool ExplorerSession::holdsForInteraction(const Engine& engine) const {
+  std::lock_guard lock(mutex_);
+  return interacting_ && engine.proxy;
+}
+
 void ExplorerSession::applyPattern(Engine& engine, const core::Scene& scene, std::uint64_t post) {
   // A new pattern refines afresh: a held target would stop it at the old generation's count.
   engine.target = kExplorerTargetPoints;
@@ -203,14 +207,13 @@ void ExplorerSession::applyPattern(Engine& engine, const core::Scene& scene, std
 }
 
 void ExplorerSession::steer(Engine& engine) {
+  const bool interacting = holdsForInteraction(engine);
   double target = 0.0;
-  bool paused = false, interacting = false;
+  bool paused = false;
   {
     std::lock_guard lock(mutex_);
     target = noiseTarget_;
     paused = paused_;
-    // Only a grid with a proxy holds while the user interacts: the proxy shows the edits.
-    interacting = interacting_ && engine.proxy;
   }
   engine.accumulator.sampleDensity(engine.sample);
   const double noise = engine.meter.update(engine.sample);
@@ -257,12 +260,7 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
         Engine* engine = engine_.get();  // only this thread replaces it
         lock.unlock();
         if (engine) {
-          bool interacting = false;
-          {
-            std::lock_guard relock(mutex_);
-            interacting = interacting_;
-          }
-          if (engine->deferredScene && !interacting) {
+          if (engine->deferredScene && !holdsForInteraction(*engine)) {
             const core::Scene deferred = *std::exchange(engine->deferredScene, std::nullopt);
             try {
               applyPattern(*engine, deferred, engine->deferredPost);
@@ -349,12 +347,7 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
         // While the user drags, the large grid of a shape with a proxy holds, and only the last
         // pattern is set on it once the drag ends (steer): each edit's would be thrown away, and
         // setting one costs a probe of the pattern on this thread.
-        bool interacting = false;
-        {
-          std::lock_guard lock(mutex_);
-          interacting = interacting_ && current->proxy;
-        }
-        if (interacting) {
+        if (holdsForInteraction(*current)) {
           current->accumulator.setHeld(true);
           current->publisher.setHeld(true);
           current->deferredScene = std::move(scene);

@@ -115,10 +115,11 @@ class ExplorerSession {
   struct Engine;  // the shape plus the Accumulator and publisher running on it
   struct Proxy;   // the small Accumulator that runs each pattern first
   void controlLoop(std::stop_token stop);
-  void steer(Engine& engine);
+  void steer(Engine& engine);  // control thread: measures the noise, holds or releases the workers
   // Control thread: sets a posted pattern on the large grid and steers it.
-  void applyPattern(Engine& engine, const core::Scene& scene,
-                    std::uint64_t post);  // control thread: measures the noise, holds or releases the workers
+  void applyPattern(Engine& engine, const core::Scene& scene, std::uint64_t post);
+  // Whether the engine's large grid holds for a drag: the user interacts and a proxy shows the edits.
+  bool holdsForInteraction(const Engine& engine) const;
 
   const int threads_;
   const std::chrono::milliseconds snapshotInterval_;

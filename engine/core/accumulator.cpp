@@ -924,8 +924,7 @@ void Accumulator::setPointSink(PointSink* sink) {
 }
 
 void Accumulator::setHeld(bool held) {
-  held_ = held;
-  notifyWorkChanged();
+  if (held_.exchange(held) != held) notifyWorkChanged();  // steer() repeats it every few frames
 }
 
 void Accumulator::setTargetPoints(std::uint64_t target) {

@@ -283,6 +283,7 @@ class Accumulator {
         const_cast<void*>(static_cast<const void*>(&visit)));
   }
   const ColourLayout& colourLayout() const { return colour_; }
+  std::uint64_t insideVoxels() const { return insideVoxels_; }  // voxels inside the mask
   // The hit counts of every convergenceSampleStride()-th voxel, for a ConvergenceMeter: a few
   // milliseconds at any grid size, safe to call while the workers run.
   void sampleDensity(DensitySample& out) const;
