@@ -35,13 +35,16 @@ std::size_t litPixels(const std::filesystem::path& png) {
   return lit;
 }
 
-// Renders the preset small, without the mesh's outline, so only the flame can light pixels.
+// Renders the preset small, without the mesh's outline, so only the flame can light pixels. The
+// copy sits beside the preset: a mesh path in it is relative to the preset's folder.
 std::size_t renderLitPixels(const TemporaryFolder& folder, const std::string& preset) {
   nlohmann::json document;
   std::ifstream(folder / preset) >> document;
   document["render"]["mesh"] = "off";
-  std::ofstream(folder / "bare.json") << document.dump();
-  const auto result = runVoxflame("render bare.json -o bare.png --width 96 --height 64 --points 400000", folder.path());
+  const std::filesystem::path bare = (folder / preset).parent_path() / "bare.json";
+  std::ofstream(bare) << document.dump();
+  const auto result = runVoxflame("render '" + bare.string() + "' -o bare.png --width 96 --height 64 --points 400000",
+                                  folder.path());
   EXPECT_EQ(result.exitStatus, 0) << result.output;
   return litPixels(folder / "bare.png");
 }
