@@ -13,6 +13,7 @@ struct BenchOptions {
   bool json = false;
   std::string meshFolder;  // where bunny.obj, dragon.ply, ... are
   std::string method;      // --method volume|points (export), empty: the benchmark's default
+  std::vector<int> grids;  // --grid N...: the grids `explorer` runs at, empty: 192, 256 and 512
 };
 
 struct Benchmark {

@@ -188,7 +188,8 @@ void benchExplorer(const BenchOptions& options) {
   gl::HeadlessContext context;
   // As the explorer does: software GL refines a still view at a quarter of the pixels.
   const bool software = context.renderer().find("llvmpipe") != std::string::npos;
-  for (int resolution : {192, 256, 512}) {
+  const std::vector<int> grids = options.grids.empty() ? std::vector<int>{192, 256, 512} : options.grids;
+  for (int resolution : grids) {
     const double baseline = residentMegabytes();
     core::Scene initial = core::defaultScene();
     initial.gridResolution = resolution;

@@ -329,6 +329,8 @@ Run defineBench(CLI::App& command) {
   command.add_option("benchmark", *which, "The benchmark to run (default: all)")->check(CLI::IsMember(names));
   command.add_option("--method", options->method, "The render method of `export` and `quality` (default: both)")
       ->check(CLI::IsMember(renderMethodNames()));
+  command.add_option("--grid", options->grids, "The grids `explorer` runs at (default: 192 256 512)")
+      ->check(within(16, 2048));
   command.add_flag("--json", options->json, "One JSON object a line");
   command.footer("Measure performance (Release build). The benchmarks:" + list);
   return [options, which] { return bench::runBenchmarks(*options, *which); };

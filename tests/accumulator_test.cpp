@@ -239,35 +239,34 @@ TEST(Fit, OnePercentParameterChangeMovesTheFitSmoothly) {
 // for flat boxes); stretch: each attractor axis matches the shape's box on its own.
 TEST(Fit, CoverAndStretchReachTheShapesBoxOnEveryAxis) {
   const auto mask = bunnyMask(48);
-  glm::dvec3 maskLow, maskHigh;
-  insideBounds(*mask, maskLow, maskHigh);
-  const glm::dvec3 maskSize = maskHigh - maskLow;
+  const InsideBox inside = insideBox(*mask);
+  const glm::dvec3 maskSize = inside.high - inside.low;
   const glm::dvec3 low(-1.0, -2.0, -1.5), high(1.0, 2.0, 1.5), median(0.1, 0.0, -0.1);
   const glm::dvec3 ratios = maskSize / (high - low);
   std::array<double, 3> sorted{ratios.x, ratios.y, ratios.z};
   std::sort(sorted.begin(), sorted.end());
 
-  const AutomaticFit contain = automaticFit(low, median, high, *mask, FitMode::Contain);
+  const AutomaticFit contain = automaticFit(low, median, high, inside, FitMode::Contain);
   EXPECT_NEAR(contain.scale, std::min(sorted[1], 2.5 * sorted[0]), 1e-12);
   EXPECT_EQ(contain.axisScale, glm::dvec3(1.0));
   EXPECT_EQ(contain.center, median);
 
-  const AutomaticFit cover = automaticFit(low, median, high, *mask, FitMode::Cover);
+  const AutomaticFit cover = automaticFit(low, median, high, inside, FitMode::Cover);
   EXPECT_NEAR(cover.scale, sorted[2], 1e-12);  // this box is not flat: no cap
   EXPECT_GE(cover.scale, contain.scale);
   for (int axis = 0; axis < 3; ++axis) EXPECT_GE((high - low)[axis] * cover.scale, maskSize[axis] - 1e-9);
 
-  const AutomaticFit stretch = automaticFit(low, median, high, *mask, FitMode::Stretch);
+  const AutomaticFit stretch = automaticFit(low, median, high, inside, FitMode::Stretch);
   for (int axis = 0; axis < 3; ++axis)
     EXPECT_NEAR((high - low)[axis] * stretch.scale * stretch.axisScale[axis], maskSize[axis], 1e-9) << axis;
   EXPECT_NEAR(stretch.axisScale.x * stretch.axisScale.y * stretch.axisScale.z, 1.0, 1e-9);
 
   // A flat box (a sheet a hundredth as thick as wide) is not blown up a hundredfold.
   const glm::dvec3 flatHigh(1.0, 2.0, -1.48);
-  const AutomaticFit flatCover = automaticFit(low, median, flatHigh, *mask, FitMode::Cover);
-  const AutomaticFit flatContain = automaticFit(low, median, flatHigh, *mask, FitMode::Contain);
+  const AutomaticFit flatCover = automaticFit(low, median, flatHigh, inside, FitMode::Cover);
+  const AutomaticFit flatContain = automaticFit(low, median, flatHigh, inside, FitMode::Contain);
   EXPECT_LE(flatCover.scale, 3.0 * 2.5 * flatContain.scale + 1e-9);
-  const AutomaticFit flatStretch = automaticFit(low, median, flatHigh, *mask, FitMode::Stretch);
+  const AutomaticFit flatStretch = automaticFit(low, median, flatHigh, inside, FitMode::Stretch);
   EXPECT_LE(flatStretch.axisScale.z, 8.0 + 1e-12);
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <iterator>
 #include <new>
 
 #if defined(__linux__)
@@ -19,6 +20,7 @@
 
 #include "cpu_features.h"
 #include "error.h"
+#include "order_statistics.h"
 #include "random.h"
 
 namespace voxflame::core {
@@ -48,21 +50,22 @@ bool isFiniteAndNear(double x, double y, double z, double radius) {
   return std::abs(x) < radius && std::abs(y) < radius && std::abs(z) < radius;  // false for NaN
 }
 
-// The value below which `fraction` of `values` lie (values is reordered).
-double percentile(std::vector<double>& values, double fraction) {
-  const auto index = static_cast<std::size_t>(fraction * static_cast<double>(values.size() - 1));
-  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(index), values.end());
-  return values[index];
+double percentile(const std::vector<double>& values, double fraction) {
+  return percentiles(values, std::array<double, 1>{fraction})[0];
 }
 
-// Robust bounds: a fraction of outliers on each side is ignored so a rare excursion does not
-// shrink the whole pattern, and a small parameter change moves the fit only a little.
-void percentileBounds(const std::vector<glm::dvec3>& samples, double fraction, glm::dvec3& low, glm::dvec3& high) {
+// Robust bounds and centre: the low and high percentiles ignore a fraction of outliers on each
+// side, so a rare excursion does not shrink the whole pattern and a small parameter change moves
+// the fit only a little; the median is the robust centre.
+void robustBounds(const std::vector<glm::dvec3>& samples, double fraction, glm::dvec3& low, glm::dvec3& median,
+                  glm::dvec3& high) {
   std::vector<double> axis(samples.size());
   for (int a = 0; a < 3; ++a) {
     for (std::size_t i = 0; i < samples.size(); ++i) axis[i] = samples[i][a];
-    low[a] = percentile(axis, fraction);
-    high[a] = percentile(axis, 1.0 - fraction);
+    const auto [lowValue, medianValue, highValue] = percentiles(axis, std::array{fraction, 0.5, 1.0 - fraction});
+    low[a] = lowValue;
+    median[a] = medianValue;
+    high[a] = highValue;
   }
 }
 
@@ -123,34 +126,34 @@ void validateLayer(const PatternLayer& layer) {
 
 }  // namespace
 
-void insideBounds(const InsideMask& mask, glm::dvec3& low, glm::dvec3& high) {
+InsideBox insideBox(const InsideMask& mask) {
   const GridGeometry& g = mask.geometry;
   glm::ivec3 lo = g.size, hi(-1);
   for (int k = 0; k < g.size.z; ++k)
-    for (int j = 0; j < g.size.y; ++j)
-      for (int i = 0; i < g.size.x; ++i)
-        if (mask.inside[g.index(i, j, k)]) {
-          lo = glm::min(lo, glm::ivec3(i, j, k));
-          hi = glm::max(hi, glm::ivec3(i, j, k));
-        }
-  if (hi.x < 0) {
-    low = glm::dvec3(0.0);
-    high = glm::dvec3(g.size);
-    return;
-  }
-  low = glm::dvec3(lo);
-  high = glm::dvec3(hi) + 1.0;
+    for (int j = 0; j < g.size.y; ++j) {
+      // A row's first and last inside voxel: the box needs nothing in between.
+      const std::uint8_t* row = &mask.inside[g.index(0, j, k)];
+      const std::uint8_t* end = row + g.size.x;
+      const std::uint8_t* first = std::find_if(row, end, [](std::uint8_t v) { return v != 0; });
+      if (first == end) continue;
+      const std::uint8_t* last = std::find_if(std::make_reverse_iterator(end), std::make_reverse_iterator(first),
+                                              [](std::uint8_t v) { return v != 0; })
+                                     .base() -
+                                 1;
+      lo = glm::min(lo, glm::ivec3(static_cast<int>(first - row), j, k));
+      hi = glm::max(hi, glm::ivec3(static_cast<int>(last - row), j, k));
+    }
+  if (hi.x < 0) return {glm::dvec3(0.0), glm::dvec3(g.size)};
+  return {glm::dvec3(lo), glm::dvec3(hi) + 1.0};
 }
 
 AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const glm::dvec3& high,
-                          const InsideMask& mask, FitMode mode) {
+                          const InsideBox& inside, FitMode mode) {
   // Scale from the percentile box, centre on the median: for lopsided attractors (Rössler's flat
   // disc with rare spikes) the dense part then sits in the middle of the shape, not at its edge.
   // (Both are smooth in the samples; a max() of the two half-boxes would jump between sides.)
   const glm::dvec3 extent = glm::max(high - low, glm::dvec3(1e-9));
-  glm::dvec3 maskLow, maskHigh;
-  insideBounds(mask, maskLow, maskHigh);
-  const glm::dvec3 ratiosVector = (maskHigh - maskLow) / extent;
+  const glm::dvec3 ratiosVector = (inside.high - inside.low) / extent;
   std::array<double, 3> ratios{ratiosVector.x, ratiosVector.y, ratiosVector.z};
   std::sort(ratios.begin(), ratios.end());
   switch (mode) {
@@ -197,7 +200,8 @@ std::vector<PatternLayer> expandCopies(const std::vector<PatternLayer>& layers) 
 namespace {
 
 PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3>& samples, std::vector<double>& speeds,
-                                  std::vector<double>& turns, const InsideMask& mask, SplitMix64& rng);
+                                  std::vector<double>& turns, const InsideMask& mask, const InsideBox& inside,
+                                  SplitMix64& rng);
 
 constexpr std::size_t kChaosProbeLanes = 256;
 constexpr int kChaosProbeTransient = 40;
@@ -248,6 +252,11 @@ std::size_t probeChaosGame(const ChaosGame& game, SplitMix64& rng, std::vector<g
 }  // namespace
 
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, std::uint64_t seed) {
+  return prepareLayer(layer, mask, insideBox(mask), seed);
+}
+
+PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, const InsideBox& inside,
+                           std::uint64_t seed) {
   PreparedLayer prepared;
   prepared.layer = layer;
   validateLayer(layer);
@@ -263,7 +272,7 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
       prepared.emptyView = settled >= kChaosProbeLanes * kChaosProbeSteps / 20;
       return prepared;  // bounded stays false
     }
-    return finishPreparedLayer(std::move(prepared), samples, speeds, turns, mask, rng);
+    return finishPreparedLayer(std::move(prepared), samples, speeds, turns, mask, inside, rng);
   }
   prepared.info = &attractorOrThrow(layer.attractor);
   const AttractorInfo& info = *prepared.info;
@@ -319,35 +328,33 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, st
   // A few probe orbits leaving (a basin boundary nearby) is tolerated as long as most stay.
   const auto survivors = static_cast<std::size_t>(std::count(alive.begin(), alive.end(), std::uint8_t{1}));
   if (survivors < kProbeOrbits / 2 || samples.empty()) return prepared;  // bounded stays false
-  return finishPreparedLayer(std::move(prepared), samples, speeds, turns, mask, rng);
+  return finishPreparedLayer(std::move(prepared), samples, speeds, turns, mask, inside, rng);
 }
 
 namespace {
 
 // The fit, the colour references and the palette, from a probe's samples (any kind of layer).
 PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3>& samples, std::vector<double>& speeds,
-                                  std::vector<double>& turns, const InsideMask& mask, SplitMix64& rng) {
+                                  std::vector<double>& turns, const InsideMask& mask, const InsideBox& inside,
+                                  SplitMix64& rng) {
   const PatternLayer& layer = prepared.layer;
-  glm::dvec3 low, high;
+  glm::dvec3 low, median, high;
   // 5%..95%: the bulk of the density decides the fit, not rare excursions (Rössler's z spikes
   // would otherwise push its dense spiral out of the grid), and a small sample noise moves it little.
-  percentileBounds(samples, 0.05, low, high);
+  robustBounds(samples, 0.05, low, median, high);
   const glm::dvec3 extent = high - low;
   if (std::max({extent.x, extent.y, extent.z}) < 1e-6) return prepared;  // collapsed to a point
-  glm::dvec3 median, unused;
-  percentileBounds(samples, 0.5, median, unused);
   prepared.center = median;
-  prepared.automaticFit = automaticFit(low, median, high, mask, layer.transform.fit);
+  prepared.automaticFit = automaticFit(low, median, high, inside, layer.transform.fit);
 
-  glm::dvec3 maskLow, maskHigh;
-  insideBounds(mask, maskLow, maskHigh);
   const LayerTransform& t = layer.transform;
   prepared.fit.attractorCenter = t.lockFit ? t.lockedCenter : prepared.automaticFit.center;
   prepared.fit.scale = (t.lockFit ? t.lockedScale : prepared.automaticFit.scale) * t.scale;
   prepared.fit.axisScale = t.lockFit ? t.lockedAxisScale : prepared.automaticFit.axisScale;
   prepared.fit.rotation = rotationFromDegrees(t.rotationDeg);
   const glm::dvec3 gridSize(mask.geometry.size);
-  prepared.fit.gridCenter = 0.5 * (maskLow + maskHigh) + t.offset * std::max({gridSize.x, gridSize.y, gridSize.z});
+  prepared.fit.gridCenter =
+      0.5 * (inside.low + inside.high) + t.offset * std::max({gridSize.x, gridSize.y, gridSize.z});
   prepared.escapeRadius = 1e3 * (std::max({std::abs(low.x), std::abs(low.y), std::abs(low.z), std::abs(high.x),
                                            std::abs(high.y), std::abs(high.z)}) +
                                  1.0);
@@ -367,8 +374,9 @@ PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3
     along[i] = glm::dot(samples[i], axis);
   }
   prepared.distanceReference = std::max(percentile(distances, 0.95), 1e-12);
-  prepared.axisLow = percentile(along, 0.01);
-  prepared.axisHigh = std::max(percentile(along, 0.99), prepared.axisLow + 1e-12);
+  const auto [alongLow, alongHigh] = percentiles(along, std::array{0.01, 0.99});
+  prepared.axisLow = alongLow;
+  prepared.axisHigh = std::max(alongHigh, prepared.axisLow + 1e-12);
   prepared.curvatureReference = turns.empty() ? 1.0 : std::max(percentile(turns, 0.95), 1e-12);
 
   const Gradient gradient(layer.color.gradient);
@@ -385,13 +393,18 @@ PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3
 
 std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers, const InsideMask& mask,
                                          std::uint64_t seed) {
+  return prepareLayers(layers, mask, insideBox(mask), seed);
+}
+
+std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers, const InsideMask& mask,
+                                         const InsideBox& inside, std::uint64_t seed) {
   std::vector<PreparedLayer> prepared;
   std::size_t source = 0;
   const std::vector<PatternLayer> expanded = expandCopies(layers);
   for (const PatternLayer& layer : layers) {
     // The probe and the automatic fit come before the rotation, so one probe serves the original
     // and all its copies: only the rotation differs.
-    const PreparedLayer original = prepareLayer(expanded[source++], mask, seed);
+    const PreparedLayer original = prepareLayer(expanded[source++], mask, inside, seed);
     prepared.push_back(original);
     for (std::size_t c = 0; c < layer.transform.copies.size(); ++c) {
       PreparedLayer copy = original;
@@ -799,6 +812,7 @@ Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : 
           }
         }
   }
+  insideBox_ = insideBox(*mask_);
   while (((colour_.size.z - 1) >> slabShift_) + 1 > kMaxSlabs) ++slabShift_;
   slabCount_ = static_cast<std::size_t>(((colour_.size.z - 1) >> slabShift_) + 1);
   slabMutexes_ = std::make_unique<std::mutex[]>(slabCount_);
@@ -819,7 +833,7 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
   // Probe outside the lock so running batches are not held up by it.
   std::vector<PreparedLayer> prepared;
   std::string problem;
-  for (const PreparedLayer& layer : prepareLayers(layers, *mask_, seed)) {
+  for (const PreparedLayer& layer : prepareLayers(layers, *mask_, insideBox_, seed)) {
     prepared.push_back(layer);
     if (!prepared.back().bounded)
       problem =
