@@ -50,11 +50,14 @@ struct ExplorerSession::Proxy {
   static constexpr std::chrono::milliseconds kInterval{15};
   Proxy(std::shared_ptr<const core::InsideMask> insideMask, int threads)
       : mask(std::move(insideMask)), accumulator(mask, threads), publisher(accumulator, kInterval) {
-    targetPoints = static_cast<std::uint64_t>(
-        kProxyPointsPerVoxel * static_cast<double>(std::max<std::uint64_t>(accumulator.insideVoxels(), 1)));
+    const auto inside = static_cast<double>(std::max<std::uint64_t>(accumulator.insideVoxels(), 1));
+    targetPoints = static_cast<std::uint64_t>(kProxyPointsPerVoxel * inside);
+    dragTargetPoints = static_cast<std::uint64_t>(kProxyDragPointsPerVoxel * inside);
     accumulator.setTargetPoints(targetPoints);
   }
-  std::uint64_t targetPoints = 0;
+  // The burst of each pattern, and the smaller one while the user drags.
+  std::uint64_t targetPoints = 0, dragTargetPoints = 0;
+  void setDragging(bool dragging) { accumulator.setTargetPoints(dragging ? dragTargetPoints : targetPoints); }
   std::shared_ptr<const core::InsideMask> mask;
   core::Accumulator accumulator;
   core::SnapshotPublisher publisher;
@@ -229,6 +232,7 @@ void ExplorerSession::steer(Engine& engine) {
   }
   engine.accumulator.setHeld(interacting);
   engine.publisher.setHeld(interacting);
+  if (engine.proxy) engine.proxy->setDragging(interacting);
   if (wanted != engine.target) {
     engine.target = wanted;
     engine.accumulator.setTargetPoints(wanted);
@@ -338,6 +342,7 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
         // The proxy first: its grid clears in no time and its burst runs while the large grid is
         // cleared, so the edit is on screen long before the large grid has anything to show.
         if (Proxy* proxy = current->proxy.get()) {
+          proxy->setDragging(holdsForInteraction(*current));
           proxy->accumulator.setPattern(scene.layers, scene.seed);
           proxy->publisher.requestNow();
           std::lock_guard lock(mutex_);

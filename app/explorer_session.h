@@ -83,6 +83,10 @@ class ExplorerSession {
   // A proxy burst stops at this many points per voxel inside the mesh: enough for a smooth coarse
   // picture, few enough to take tens of milliseconds.
   static constexpr double kProxyPointsPerVoxel = 24.0;
+  // While the user drags, a third of that: each burst is thrown away by the next edit, and its
+  // workers take the cores the frame needs (a full burst made drag frames half as long again as
+  // orbit frames). When the drag ends the last pattern's burst goes on to the full count.
+  static constexpr double kProxyDragPointsPerVoxel = 8.0;
   // The memory a session on this grid holds with the live view that shows it: the inside mask,
   // the accumulator, the packed volume being filled and the one being shown, the renderer's
   // textures, the proxy's share and the shadows. What the grid slider shows beside it.

@@ -28,6 +28,11 @@ void FrameBudget::measured(double frameMs, float scale, bool marched) {
   lastScale_ = scale;
 }
 
+float FrameBudget::stepStretch(float scale, float ceiling) {
+  if (!(scale > 0.0f) || !(ceiling > scale)) return 1.0f;
+  return std::min(ceiling / scale, kMaxStepStretch);
+}
+
 float FrameBudget::next(bool changing, float ceiling) {
   const float top = std::max(floor_, std::min(1.0f, ceiling));
   if (!changing) {

@@ -29,6 +29,14 @@ class FrameBudget {
   // picture refines at). `changing`: the view or pattern changed in this frame.
   float next(bool changing, float ceiling);
 
+  // How many times longer than the scene's a ray step is when marching at `scale` under a still
+  // picture's `ceiling`: pixels ceiling/scale times wider than a still picture's are not worth
+  // sampling finer along the ray than across it, so the step grows with them, up to
+  // kMaxStepStretch (the march's cost is then about halved again at the floor). A still picture
+  // marches at the scene's step.
+  static float stepStretch(float scale, float ceiling);
+  static constexpr float kMaxStepStretch = 2.0f;
+
   // The scale interaction settled on; the next change starts from it (not from the full scale).
   float interactiveScale() const { return interactive_; }
   bool quiet() const { return quietFrames_ >= kQuietFrames; }

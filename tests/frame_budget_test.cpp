@@ -70,6 +70,17 @@ TEST(FrameBudgetTest, TheScaleStaysBetweenTheFloorAndTheCeiling) {
   EXPECT_EQ(budget.budgetMs(), 1000.0);
 }
 
+// Steps lengthen with the pixels while the scale is lowered, never beyond the stretch's limit, and
+// a picture at its ceiling marches at the scene's step.
+TEST(FrameBudgetTest, RayStepsGrowWithThePixelsUpToALimit) {
+  EXPECT_EQ(FrameBudget::stepStretch(0.5f, 0.5f), 1.0f);
+  EXPECT_EQ(FrameBudget::stepStretch(1.0f, 0.5f), 1.0f) << "a scale above the ceiling never shortens a step";
+  EXPECT_FLOAT_EQ(FrameBudget::stepStretch(0.75f, 1.0f), 4.0f / 3.0f);
+  EXPECT_EQ(FrameBudget::stepStretch(0.25f, 0.5f), 2.0f);
+  EXPECT_EQ(FrameBudget::stepStretch(0.25f, 1.0f), FrameBudget::kMaxStepStretch);
+  EXPECT_EQ(FrameBudget::stepStretch(0.0f, 1.0f), 1.0f);
+}
+
 TEST(FrameBudgetTest, StallsOfSecondsAreNotTakenForTheMarch) {
   FrameBudget budget(33.0);
   budget.next(true, 1.0f);
