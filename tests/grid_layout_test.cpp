@@ -202,6 +202,35 @@ TEST(GridLayout, ARecycledBufferPacksLikeAFreshOne) {
   }
 }
 
+// A cancelled pack says so, and leaves a buffer that the next pack still fills completely: one last
+// packed from another grid keeps that grid's density nowhere, one of its own grid skips its empty
+// rows as before.
+TEST(GridLayout, ACancelledPackIsNotAVolumeAndTheNextPackIsWhole) {
+  const auto full = fullMask(glm::ivec3(40));
+  auto lowerHalf = std::make_shared<InsideMask>(*full);
+  for (int k = 20; k < 40; ++k)
+    for (int j = 0; j < 40; ++j)
+      for (int i = 0; i < 40; ++i) lowerHalf->inside[lowerHalf->geometry.index(i, j, k)] = 0;
+  Accumulator everywhere(full, 2), below(lowerHalf, 2);
+  for (Accumulator* accumulator : {&everywhere, &below}) {
+    accumulator->setTargetPoints(300'000);
+    accumulator->setPattern(defaultScene().layers, 2);
+    ASSERT_TRUE(accumulator->waitUntilDone(60.0));
+  }
+  PackedVolume fresh;
+  ASSERT_TRUE(packVolume(below, fresh));
+  const std::atomic<bool> cancel{true}, goOn{false};
+  for (Accumulator* before : {&everywhere, &below}) {
+    PackedVolume recycled;
+    ASSERT_TRUE(packVolume(*before, recycled, &goOn));
+    EXPECT_FALSE(packVolume(below, recycled, &cancel)) << "a cancelled pack is no volume";
+    ASSERT_TRUE(packVolume(below, recycled));
+    EXPECT_TRUE(recycled.density == fresh.density);
+    EXPECT_TRUE(recycled.colours == fresh.colours);
+    EXPECT_EQ(recycled.version, fresh.version);
+  }
+}
+
 // A volume that would not be shown is not packed: one below the minimum while its grid still
 // refines, and none while the publisher is held; a grid that stopped below the minimum still is.
 TEST(SnapshotPublisher, PacksNothingBelowTheMinimumWhileRefiningNorWhileHeld) {

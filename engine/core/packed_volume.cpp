@@ -118,7 +118,7 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
   finishOccupancy(out);
 }
 
-void packVolume(const Accumulator& accumulator, PackedVolume& out) {
+bool packVolume(const Accumulator& accumulator, PackedVolume& out, const std::atomic<bool>* cancel) {
   const GridGeometry& g = accumulator.mask().geometry;
   const ColourLayout& colour = accumulator.colourLayout();
   prepare(out, g, colour);
@@ -135,7 +135,12 @@ void packVolume(const Accumulator& accumulator, PackedVolume& out) {
   const int span = 1 << colour.shift;
   const float inverseCellVoxels = 1.0f / static_cast<float>(span * span * span);
   constexpr float kByte = 1.0f / 255.0f;
+  bool cancelled = false;
   accumulator.readSlabs(reading, [&](const GridSlabView& slab) {
+    if (cancelled || (cancel && cancel->load(std::memory_order_relaxed))) {
+      cancelled = true;
+      return;
+    }
     if (first) {
       // Texels hold density relative to the mesh's mean: the hits the grid holds (its points
       // when the reading began; the few added while it runs change the picture by a hair) over
@@ -197,6 +202,12 @@ void packVolume(const Accumulator& accumulator, PackedVolume& out) {
                   static_cast<float>(cell.green) * toMean, static_cast<float>(cell.blue) * toMean);
     }
   });
+  if (cancelled) {
+    // The rows this grid leaves outside its mask are only ever zeros, so a buffer it packed
+    // before still holds zeros there; any other buffer holds, in the slabs skipped, another grid's.
+    out.packedFromGrid = packedBefore == reading.gridId ? packedBefore : 0;
+    return false;
+  }
   out.version = reading.version;
   out.generation = reading.generation;
   out.points = reading.points;
@@ -204,6 +215,7 @@ void packVolume(const Accumulator& accumulator, PackedVolume& out) {
   out.maxDensity = maxDensity;
   out.meanDensity = occupied ? static_cast<float>(densitySum / static_cast<double>(occupied)) : 0.0f;
   finishOccupancy(out);
+  return true;
 }
 
 }  // namespace voxflame::core

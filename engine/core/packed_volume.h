@@ -7,6 +7,7 @@
 // whichever thread reads the grid, so the main thread only uploads.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <vector>
 
@@ -53,8 +54,11 @@ struct PackedVolume {
 // From a snapshot (stills, tests): a colour cell per voxel.
 void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out);
 // Straight from a running accumulator, slab by slab, in its colour layout: no full-size copy of the
-// grid exists in between (what the explorer's snapshot thread does).
-void packVolume(const Accumulator& accumulator, PackedVolume& out);
+// grid exists in between (what the explorer's snapshot thread does). Once `cancel` (when given)
+// reads true the remaining slabs are skipped and false is returned: `out` is then not a volume to
+// show (its packedFromGrid still says whether its outside rows are zero). A pack at 512³ takes
+// half a second of a core, which the frames of a drag that began meanwhile need more.
+bool packVolume(const Accumulator& accumulator, PackedVolume& out, const std::atomic<bool>* cancel = nullptr);
 
 // The bytes a packed volume of this grid holds (and the renderer's textures, which mirror it).
 std::size_t packedVolumeBytes(const GridGeometry& grid);

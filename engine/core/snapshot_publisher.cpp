@@ -69,10 +69,10 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     // Packed in place, under the lock: a second buffer to pack into while the last one waits
     // would cost a whole volume of memory (400 MB at 512³), and a taker that finds the lock held
     // simply takes the volume on a later frame. What it hands back in the swap is packed into next.
+    // A hold that begins meanwhile (the user starts dragging) stops the pack at the next slab.
     std::lock_guard lock(mutex_);
-    packVolume(accumulator_, ready_);
-    publishedVersion_ = ready_.version;
-    readyFresh_ = true;
+    readyFresh_ = packVolume(accumulator_, ready_, &held_);
+    if (readyFresh_) publishedVersion_ = ready_.version;
   }
 }
 

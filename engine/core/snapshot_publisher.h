@@ -29,7 +29,8 @@ class SnapshotPublisher {
   // A volume of a generation still refining is not packed before it holds this many points (0:
   // any): one that would not be shown is not worth a pack (hundreds of milliseconds at 512³).
   void setMinimumPoints(std::uint64_t points);
-  // While held nothing is packed (the user drags: each generation is thrown away at once).
+  // While held nothing is packed (the user drags: each generation is thrown away at once), and a
+  // pack under way stops.
   void setHeld(bool held);
   // Everything the accumulator holds has been published and taken: nothing new will come until
   // the accumulator adds points again.
