@@ -43,8 +43,8 @@ std::size_t renderLitPixels(const TemporaryFolder& folder, const std::string& pr
   document["render"]["mesh"] = "off";
   const std::filesystem::path bare = (folder / preset).parent_path() / "bare.json";
   std::ofstream(bare) << document.dump();
-  const auto result = runVoxflame("render '" + bare.string() + "' -o bare.png --width 96 --height 64 --points 400000",
-                                  folder.path());
+  const auto result =
+      runVoxflame("render '" + bare.string() + "' -o bare.png --width 96 --height 64 --points 400000", folder.path());
   EXPECT_EQ(result.exitStatus, 0) << result.output;
   return litPixels(folder / "bare.png");
 }
