@@ -172,20 +172,35 @@ TEST(SnapshotPublisher, TwoPackedVolumesCycleBetweenThePublisherAndItsTaker) {
   }
 }
 
+// A 40³ grid inside everywhere, and one inside only in its lower half, both filled alike.
+struct TwoGrids {
+  std::shared_ptr<const InsideMask> full = fullMask(glm::ivec3(40));
+  std::shared_ptr<const InsideMask> lowerHalf = lowerHalfOf(*full);
+  Accumulator everywhere{full, 2}, below{lowerHalf, 2};
+  static std::shared_ptr<const InsideMask> lowerHalfOf(const InsideMask& mask) {
+    auto half = std::make_shared<InsideMask>(mask);
+    for (int k = mask.geometry.size.z / 2; k < mask.geometry.size.z; ++k)
+      for (int j = 0; j < mask.geometry.size.y; ++j)
+        for (int i = 0; i < mask.geometry.size.x; ++i) half->inside[half->geometry.index(i, j, k)] = 0;
+    return half;
+  }
+  bool fill() {
+    for (Accumulator* accumulator : {&everywhere, &below}) {
+      accumulator->setTargetPoints(300'000);
+      accumulator->setPattern(defaultScene().layers, 2);
+      if (!accumulator->waitUntilDone(60.0)) return false;
+    }
+    return true;
+  }
+};
+
 // A recycled buffer skips the rows its grid's mask leaves empty (they hold zeros from the last
 // pack); one last packed from another grid of the same size must not keep that grid's density there.
 TEST(GridLayout, ARecycledBufferPacksLikeAFreshOne) {
-  const auto full = fullMask(glm::ivec3(40));
-  auto lowerHalf = std::make_shared<InsideMask>(*full);
-  for (int k = 20; k < 40; ++k)
-    for (int j = 0; j < 40; ++j)
-      for (int i = 0; i < 40; ++i) lowerHalf->inside[lowerHalf->geometry.index(i, j, k)] = 0;
-  Accumulator everywhere(full, 2), below(lowerHalf, 2);
-  for (Accumulator* accumulator : {&everywhere, &below}) {
-    accumulator->setTargetPoints(300'000);
-    accumulator->setPattern(defaultScene().layers, 2);
-    ASSERT_TRUE(accumulator->waitUntilDone(60.0));
-  }
+  TwoGrids grids;
+  ASSERT_TRUE(grids.fill());
+  const InsideMask* full = grids.full.get();
+  Accumulator &everywhere = grids.everywhere, &below = grids.below;
   PackedVolume recycled;
   packVolume(everywhere, recycled);
   std::size_t upperDensity = 0;
@@ -206,21 +221,13 @@ TEST(GridLayout, ARecycledBufferPacksLikeAFreshOne) {
 // packed from another grid keeps that grid's density nowhere, one of its own grid skips its empty
 // rows as before.
 TEST(GridLayout, ACancelledPackIsNotAVolumeAndTheNextPackIsWhole) {
-  const auto full = fullMask(glm::ivec3(40));
-  auto lowerHalf = std::make_shared<InsideMask>(*full);
-  for (int k = 20; k < 40; ++k)
-    for (int j = 0; j < 40; ++j)
-      for (int i = 0; i < 40; ++i) lowerHalf->inside[lowerHalf->geometry.index(i, j, k)] = 0;
-  Accumulator everywhere(full, 2), below(lowerHalf, 2);
-  for (Accumulator* accumulator : {&everywhere, &below}) {
-    accumulator->setTargetPoints(300'000);
-    accumulator->setPattern(defaultScene().layers, 2);
-    ASSERT_TRUE(accumulator->waitUntilDone(60.0));
-  }
+  TwoGrids grids;
+  ASSERT_TRUE(grids.fill());
+  Accumulator& below = grids.below;
   PackedVolume fresh;
   ASSERT_TRUE(packVolume(below, fresh));
   const std::atomic<bool> cancel{true}, goOn{false};
-  for (Accumulator* before : {&everywhere, &below}) {
+  for (Accumulator* before : {&grids.everywhere, &below}) {
     PackedVolume recycled;
     ASSERT_TRUE(packVolume(*before, recycled, &goOn));
     EXPECT_FALSE(packVolume(below, recycled, &cancel)) << "a cancelled pack is no volume";
