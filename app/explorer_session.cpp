@@ -341,8 +341,9 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
       if (current) {
         // The proxy first: its grid clears in no time and its burst runs while the large grid is
         // cleared, so the edit is on screen long before the large grid has anything to show.
+        const bool dragging = holdsForInteraction(*current);
         if (Proxy* proxy = current->proxy.get()) {
-          proxy->setDragging(holdsForInteraction(*current));
+          proxy->setDragging(dragging);
           proxy->accumulator.setPattern(scene.layers, scene.seed);
           proxy->publisher.requestNow();
           std::lock_guard lock(mutex_);
@@ -352,7 +353,7 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
         // While the user drags, the large grid of a shape with a proxy holds, and only the last
         // pattern is set on it once the drag ends (steer): each edit's would be thrown away, and
         // setting one costs a probe of the pattern on this thread.
-        if (holdsForInteraction(*current)) {
+        if (dragging) {
           current->accumulator.setHeld(true);
           current->publisher.setHeld(true);
           current->deferredScene = std::move(scene);

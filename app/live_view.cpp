@@ -188,10 +188,9 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     budget_.setBudget(state.frameBudgetMs);
     const float scale = budget_.next(viewChanged || result.patternPosted, state.renderScale);
     state.metrics.marchScale = scale;
-    // Coarser pixels, coarser steps along the ray. A change of scale restarts the samples, so a
-    // still picture's samples are all of the scene's own step.
-    if (!budget_.quiet())
-      settings.render.stepVoxels *= FrameBudget::stepStretch(scale, std::min(1.0f, state.renderScale));
+    // Coarser pixels, coarser steps along the ray. A still view marches at its ceiling (stretch
+    // 1), and a change of scale restarts the samples, so its samples are all of the scene's step.
+    settings.render.stepVoxels *= FrameBudget::stepStretch(scale, std::min(1.0f, state.renderScale));
     target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * scale)),
                    std::max(1, static_cast<int>(static_cast<float>(height) * scale)));
     if (viewChanged || scale != lastRenderScale_) {

@@ -330,7 +330,7 @@ Run defineBench(CLI::App& command) {
   command.add_option("--method", options->method, "The render method of `export` and `quality` (default: both)")
       ->check(CLI::IsMember(renderMethodNames()));
   command.add_option("--grid", options->grids, "The grids `explorer` runs at (default: 192 256 512)")
-      ->check(within(16, 2048));
+      ->check(within(core::kMinGridResolution, core::kMaxGridResolution));
   command.add_flag("--json", options->json, "One JSON object a line");
   command.footer("Measure performance (Release build). The benchmarks:" + list);
   return [options, which] { return bench::runBenchmarks(*options, *which); };

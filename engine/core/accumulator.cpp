@@ -942,7 +942,8 @@ void Accumulator::setHeld(bool held) {
 }
 
 void Accumulator::setTargetPoints(std::uint64_t target) {
-  targetPoints_ = target;
+  // The explorer repeats its targets every time it steers; only a change has workers to wake.
+  if (targetPoints_.exchange(target) == target) return;
   notifyWorkChanged();
 }
 
