@@ -105,19 +105,23 @@ ExplorerSession::~ExplorerSession() {
   // The engine's destructor joins the accumulation and snapshot threads.
 }
 
-void ExplorerSession::post(const core::Scene& scene) {
+void ExplorerSession::post(const core::Scene& scene, bool interacting) {
   {
     std::lock_guard lock(mutex_);
     pending_ = scene;
     ++requested_;
+    if (interacting && !interacting_) {
+      interacting_ = true;
+      steerRequested_ = true;
+    }
   }
   wake_.notify_all();
 }
 
-bool ExplorerSession::postIfPatternChanged(const core::Scene& scene) {
+bool ExplorerSession::postIfPatternChanged(const core::Scene& scene, bool interacting) {
   if (postedPattern_ && !core::diff(*postedPattern_, scene).pattern()) return false;
   postedPattern_ = scene;
-  post(scene);
+  post(scene, interacting);
   return true;
 }
 

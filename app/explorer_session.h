@@ -61,13 +61,16 @@ class ExplorerSession {
 
   // Posts the scene being edited. Returns at once; only the newest posted scene is applied. A new
   // mesh or grid resolution rebuilds the shape in the background (the old volume stays on screen
-  // meanwhile); any other change to the pattern starts a new generation.
-  void post(const core::Scene& scene);
+  // meanwhile); any other change to the pattern starts a new generation. `interacting` begins the
+  // hold of setRefinement's `interacting` with the post (only setRefinement ends it), so the edit
+  // that starts a drag already finds the large grid held: set after the post, the control thread
+  // could have applied the edit to the large grid first.
+  void post(const core::Scene& scene, bool interacting = false);
 
   // Posts the scene when its pattern (what core::diff() classes as Affects::Pattern: mesh, grid,
   // layers, seed) differs from the last one posted this way; returns whether it did. The explorer
   // calls it every frame.
-  bool postIfPatternChanged(const core::Scene& scene);
+  bool postIfPatternChanged(const core::Scene& scene, bool interacting = false);
 
   // Swaps the newest packed volume into `out` when one newer than it is ready. Never waits.
   // `reflectsPost` gets the number of the post (counting from 1) whose pattern the volume shows,

@@ -1534,6 +1534,9 @@ void explorerUiFrame(ExplorerState& state) {
   recoveryWindow(state, scale);
   statusBar(state, scale);
   noticeWindow(state, scale);
+  // Read after the panels, which make a widget active on the frame it is pressed: an edit on that
+  // very frame is already part of a drag.
+  state.interacting = ImGui::IsAnyItemActive() || state.orbiting || state.panning;
 }
 
 void applyUiScale(float scale) {

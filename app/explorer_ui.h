@@ -75,6 +75,9 @@ struct ExplorerState {
 
   // Camera dragging.
   bool orbiting = false, panning = false;
+  // The user holds a widget (a slider being dragged, a field being typed in) or drags the view:
+  // an edit made now is one of a run of them, so the large grid holds from the first (LiveView).
+  bool interacting = false;
 
   // Pattern panel.
   char attractorFilter[64] = "";

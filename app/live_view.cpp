@@ -119,6 +119,14 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
     }
   }
   const bool proxy = renderer_.marchedSource() == gl::VolumeRenderer::Source::Proxy;
+  // A job for the volume no longer marched is stopped: the main grid's, started as its image
+  // showed, when the user then drags and the proxy is marched, would take hundreds of milliseconds
+  // of a core the drag's frames need (at 512³) for a shadow thrown away, and keep the proxy's
+  // waiting.
+  if (shadowJob_.busy() && !shadowJob_.ready() && shadowShown_ && shadowShown_->proxy != proxy) {
+    shadowJob_.cancel();
+    shadowShown_.reset();
+  }
   const std::shared_ptr<core::PackedVolume>& volume = proxy ? proxyShown_ : shown_;
   const ShadowInputs wanted{proxy, proxy ? volume->version : renderer_.uploadedVersion(), render.lightAzimuthDeg,
                             render.lightElevationDeg};
@@ -127,10 +135,10 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
     const glm::dvec3 light = core::lightDirection(render.lightAzimuthDeg, render.lightElevationDeg);
     // The proxy is small: full-resolution shadows cost little there.
     const int downsample = proxy ? 1 : kShadowDownsample;
-    shadowJob_.start([volume, light, downsample](std::stop_token) {
+    shadowJob_.start([volume, light, downsample](std::stop_token stop) {
       core::ShadowVolume shadow;
-      core::computeShadowVolume(*volume, light, core::kAbsorptionPerDensity, downsample, shadow);
-      return shadow;
+      core::computeShadowVolume(*volume, light, core::kAbsorptionPerDensity, downsample, shadow, stop);
+      return shadow;  // a stopped one is dropped by the cancel
     });
     shadowShown_ = wanted;
     shadowSourceSize_ = volume->geometry.size;
@@ -151,7 +159,9 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
                      lastMarched_);
   lastFrameStart_ = frameStart;
   lastMarched_ = false;
-  if (session_.postIfPatternChanged(state.scene)) {
+  // An edit while the user holds a widget or the view, or right after a frame that changed, is one
+  // of a drag's: posted with the hold, so the large grid never starts on it.
+  if (session_.postIfPatternChanged(state.scene, state.interacting || changedLastFrame_)) {
     result.patternPosted = true;
     waitingPost_ = session_.status().requestedGeneration;
     waitingFullPost_ = waitingPost_;
@@ -242,11 +252,13 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     }
   }
   // Refinement rests at the user's noise target and while an export uses the cores; the large
-  // grid also holds while the user drags or orbits (a change in this frame and the last: a single
-  // edit refines at once), until the first frame without one.
+  // grid also holds while the user drags or orbits (a change while a widget or the view is held,
+  // or in this frame and the last: a single edit refines at once), until the first frame without
+  // one.
   changed = changed || result.patternPosted;
   session_.setRefinement(0.01 * state.settings.refineUntilNoisePercent,
-                         state.exportStatus.state == ExportState::Running, changed && changedLastFrame_);
+                         state.exportStatus.state == ExportState::Running,
+                         changed && (changedLastFrame_ || state.interacting));
   changedLastFrame_ = changed;
   ++frame_;
   return result;

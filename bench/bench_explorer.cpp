@@ -208,10 +208,12 @@ void benchExplorer(const BenchOptions& options) {
     // Pattern edits one at a time, each waited for.
     const EditLatencies edits = measureEdits(loop, session, 7);
     // A slider drag: a small edit every frame; then the camera orbiting; then the still view
-    // refining again.
+    // refining again. The slider (then the view) is held throughout, as the panels tell the view.
+    loop.state.interacting = true;
     const FrameTimes dragging =
         timeFrames(loop, 40, 20'000.0, [&](int i) { nudgePattern(scene, i % 2 ? 1.0 / 1.002 : 1.002); });
     const FrameTimes orbiting = timeFrames(loop, 40, 20'000.0, [&](int) { scene.camera.azimuthDeg += 2.0; });
+    loop.state.interacting = false;
     const FrameTimes refiningAfter = timeFrames(loop, 1 << 30, 3000.0, [](int) {});
 
     // A still exported from the Export panel runs in a child process; the window's frames go on.

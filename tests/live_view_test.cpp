@@ -256,6 +256,33 @@ TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBr
   EXPECT_FALSE(*editFirstWasFull);
 }
 
+// The first edit of a slider drag (the panels say a widget is held) already finds the large grid
+// held: only the proxy runs it, and the large grid gets the pattern the drag ends on.
+TEST_F(LiveViewTest, TheFirstEditOfADragLeavesTheLargeGridHeld) {
+  state.scene.gridResolution = 2 * app::ExplorerSession::kProxyAbove;
+  app::LiveView view(session, nullptr, nullptr);
+  frame(view);
+  ASSERT_TRUE(session.waitUntilApplied(120.0));
+  ASSERT_TRUE(runUntilShown(view));
+  const std::uint64_t generation = session.status().stats.generation;
+
+  state.interacting = true;  // the slider is pressed on this frame and moves at once
+  state.scene.layers[0].params[0] *= 1.02;
+  ASSERT_TRUE(frame(view).patternPosted);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_EQ(session.status().stats.generation, generation) << "the large grid never started on the drag's edit";
+
+  // The next frame without an edit ends the drag, and the large grid takes the pattern.
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (session.status().stats.generation == generation && std::chrono::steady_clock::now() < deadline) {
+    frame(view);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_GT(session.status().stats.generation, generation) << "the grid refines the pattern the drag stopped on";
+  EXPECT_TRUE(runUntilShown(view));
+}
+
 TEST_F(LiveViewTest, SlowFramesWhileTheCameraMovesLowerTheMarchScale) {
   state.renderScale = 1.0f;
   state.frameBudgetMs = 10.0f;

@@ -46,3 +46,16 @@ TEST(ShadowVolume, DiagonalLightDarkensAwayFromTheLight) {
   EXPECT_GT(at(11, 11, 11), at(6, 6, 6));
   EXPECT_GT(at(6, 6, 6), at(0, 0, 0));
 }
+
+// A shadow job for a volume no longer shown is stopped (the user began to drag): the work ends at
+// the next slice and says so, and an unstopped one says it finished.
+TEST(ShadowVolume, AStopEndsTheWorkAndIsReported) {
+  const PackedVolume volume = uniformVolume(16);
+  ShadowVolume shadow;
+  std::stop_source source;
+  EXPECT_TRUE(computeShadowVolume(volume, {0.0, 1.0, 0.0}, 0.1, 1, shadow, source.get_token()));
+  EXPECT_EQ(shadow.transmittance.size(), 16u * 16u * 16u);
+  source.request_stop();
+  ShadowVolume stopped;
+  EXPECT_FALSE(computeShadowVolume(volume, {0.0, 1.0, 0.0}, 0.1, 1, stopped, source.get_token()));
+}

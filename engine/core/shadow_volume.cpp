@@ -11,8 +11,8 @@ glm::dvec3 lightDirection(double azimuthDeg, double elevationDeg) {
   return {std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth)};
 }
 
-void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, double extinctionScale, int downsample,
-                         ShadowVolume& out) {
+bool computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, double extinctionScale, int downsample,
+                         ShadowVolume& out, std::stop_token stop) {
   const GridGeometry& g = volume.geometry;
   downsample = std::max(1, downsample);
   out.size = (g.size + (downsample - 1)) / downsample;
@@ -29,7 +29,8 @@ void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, dou
   const float perVoxel = static_cast<float>(extinctionScale / std::max({g.size.x, g.size.y, g.size.z, 1}));
   const float cellVoxels = static_cast<float>(downsample);
   const float voxelsPerCell = cellVoxels * cellVoxels * cellVoxels;
-  for (int k = 0; k < g.size.z; ++k)
+  for (int k = 0; k < g.size.z; ++k) {
+    if (stop.stop_requested()) return false;
     for (int j = 0; j < g.size.y; ++j)
       for (int i = 0; i < g.size.x; ++i) {
         const float normalised = halfToFloat(volume.density[g.index(i, j, k)]);
@@ -37,6 +38,7 @@ void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, dou
         sigma[cellIndex(i / downsample, j / downsample, k / downsample)] +=
             normalised * toRelative * perVoxel * cellVoxels / voxelsPerCell;
       }
+  }
 
   // Sweep along the axis the light is most aligned with, from the light's side.
   const glm::dvec3 light =
@@ -52,6 +54,7 @@ void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, dou
   std::vector<float> depth(cells, 0.0f);
   const int slices = out.size[axis];
   for (int step = 0; step < slices; ++step) {
+    if (stop.stop_requested()) return false;
     const int a = towardLightStep > 0 ? slices - 1 - step : step;
     const int previous = a + towardLightStep;
     for (int q = 0; q < out.size[v]; ++q)
@@ -89,6 +92,7 @@ void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, dou
   out.transmittance.resize(cells);
   for (std::size_t i = 0; i < cells; ++i)
     out.transmittance[i] = static_cast<std::uint8_t>(std::lround(255.0f * std::exp(-depth[i])));
+  return true;
 }
 
 }  // namespace voxflame::core

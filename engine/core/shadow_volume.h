@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <stop_token>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -20,9 +21,10 @@ struct ShadowVolume {
 
 // `towardLight` need not be normalised. `extinctionScale` is the extinction per unit of
 // normalised column density (flame_image.h: density relative to the mesh's mean, lengths in grid
-// sides), as the renderer absorbs.
-void computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, double extinctionScale, int downsample,
-                         ShadowVolume& out);
+// sides), as the renderer absorbs. A stop requested through `stop` ends the work within a slice
+// (a millisecond or so at 512³) and returns false, `out` then being no shadow; true otherwise.
+bool computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, double extinctionScale, int downsample,
+                         ShadowVolume& out, std::stop_token stop = {});
 
 // The unit vector toward a light at these angles, in the camera's orbit convention (Y up).
 glm::dvec3 lightDirection(double azimuthDeg, double elevationDeg);
