@@ -70,10 +70,12 @@ void LiveView::takeVolume() {
     if (session_.takeVolumeIfNewer(*next, &reflects)) {
       shown_ = std::move(next);
       // A volume of the proxy's pattern with fewer points than the proxy would not be shown
-      // (see the takeover below): at 512³ its upload alone would cost several frames.
-      const bool behindProxy = reflects != 0 && reflects == proxyPost_ && proxyShown_ &&
-                               renderer_.marchedSource() == gl::VolumeRenderer::Source::Proxy &&
-                               shown_->points < proxyShown_->points;
+      // (see the takeover below), nor would one of an older pattern (reflects 0) while the proxy
+      // shows a newer one: at 512³ the upload alone would cost several frames.
+      const bool marchingProxy = proxyShown_ && renderer_.marchedSource() == gl::VolumeRenderer::Source::Proxy;
+      const bool behindProxy =
+          marchingProxy &&
+          (reflects != 0 ? reflects == proxyPost_ && shown_->points < takeoverPoints() : proxyPost_ > mainPost_);
       if (!behindProxy) {
         renderer_.beginUpload(*shown_);
         uploadInProgress_ = true;
@@ -93,7 +95,7 @@ void LiveView::takeVolume() {
     const bool proxyAhead = renderer_.hasVolume(gl::VolumeRenderer::Source::Proxy) &&
                             (uploadingPost_ == 0 ? proxyPost_ > mainPost_ : proxyPost_ > uploadingPost_);
     const bool caughtUp = uploadingPost_ != 0 && uploadingPost_ >= proxyPost_ &&
-                          (uploadingPost_ > proxyPost_ || !proxyShown_ || shown_->points >= proxyShown_->points);
+                          (uploadingPost_ > proxyPost_ || !proxyShown_ || shown_->points >= takeoverPoints());
     if (!proxyAhead && (caughtUp || proxyPost_ == 0 || uploadingPost_ == 0)) {
       renderer_.marchFrom(gl::VolumeRenderer::Source::Main);
       newVolumeShown_ = true;
@@ -103,6 +105,15 @@ void LiveView::takeVolume() {
   }
   // While a volume of another pattern streams into the main grid, its slabs are of two patterns.
   mainMixed_ = uploadInProgress_ && shown_->generation != mainGeneration_;
+}
+
+std::uint64_t LiveView::takeoverPoints() const {
+  // The proxy's count, but no more than its burst asks for: the last batches of its streams go
+  // past that by up to a third, and the large grid's first volume, packed as soon as it holds the
+  // burst's count, would otherwise be dropped (hundreds of milliseconds at 512³) for a difference
+  // in noise nobody sees.
+  const auto burst = static_cast<std::uint64_t>(ExplorerSession::kProxyPointsPerVoxel * proxyShown_->insideVoxels);
+  return std::min(proxyShown_->points, burst);
 }
 
 void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {

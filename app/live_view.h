@@ -60,6 +60,8 @@ class LiveView {
 
  private:
   void takeVolume();
+  // The points a main grid volume of the proxy's pattern needs to replace the proxy on screen.
+  std::uint64_t takeoverPoints() const;
   void keepShadowInStep(const core::RenderSettingsDoc& render);
   void serveRequests(ExplorerState& state, int width, int height, unsigned framebuffer);
 

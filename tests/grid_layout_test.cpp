@@ -172,6 +172,34 @@ TEST(SnapshotPublisher, TwoPackedVolumesCycleBetweenThePublisherAndItsTaker) {
   }
 }
 
+// A volume packed and not yet taken is not packed over while its pattern refines, so a taker that
+// comes once a frame finds it, not a pack in progress; a new pattern's volume replaces it.
+TEST(SnapshotPublisher, AFreshVolumeWaitsForItsTakerUntilThePatternChanges) {
+  const auto mask = fullMask(glm::ivec3(96));  // a pack of some milliseconds, against a 1 ms interval
+  Accumulator accumulator(mask, 1);
+  accumulator.setPattern(defaultScene().layers, 1);  // refines without end
+  SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(1));
+  PackedVolume volume;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!publisher.takeIfNewer(volume) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ASSERT_GT(volume.points, 0u);
+  // Frames far apart next to a pack (even a sanitizer's), so a fresh volume is always ready.
+  for (int frame = 0; frame < 10; ++frame) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    const std::uint64_t before = volume.version;
+    ASSERT_TRUE(publisher.takeIfNewer(volume)) << "frame " << frame << ": the taker found a pack under way";
+    EXPECT_GT(volume.version, before);
+  }
+  std::this_thread::sleep_for(std::chrono::milliseconds(40));  // a fresh volume of pattern 1 waits
+  accumulator.setPattern(defaultScene().layers, 2);
+  const auto patternDeadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!(publisher.takeIfNewer(volume) && volume.generation == accumulator.generation()) &&
+         std::chrono::steady_clock::now() < patternDeadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_EQ(volume.generation, accumulator.generation()) << "the new pattern's volume replaces the waiting one";
+}
+
 // A 40³ grid inside everywhere, and one inside only in its lower half, both filled alike.
 struct TwoGrids {
   std::shared_ptr<const InsideMask> full = fullMask(glm::ivec3(40));

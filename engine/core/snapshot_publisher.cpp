@@ -66,12 +66,23 @@ void SnapshotPublisher::loop(std::stop_token stop) {
         continue;
       }
     }
+    if (lastPack_ > interval_ / 10) {
+      // A fresh volume of the pattern refining now waits for its taker when packs are slow: packed
+      // over, the lock the taker needs would be held most of the time (at 512³ a pack takes longer
+      // than the interval), and a taker that comes once a frame would rarely find a volume (the
+      // first full image of an edit came up to a second late). Quick packs (the proxy's) go on, so
+      // the taker gets the newest. One of an older pattern is always packed over.
+      std::lock_guard lock(mutex_);
+      if (readyFresh_ && ready_.generation == accumulator_.generation()) continue;
+    }
     // Packed in place, under the lock: a second buffer to pack into while the last one waits
     // would cost a whole volume of memory (400 MB at 512³), and a taker that finds the lock held
     // simply takes the volume on a later frame. What it hands back in the swap is packed into next.
     // A hold that begins meanwhile (the user starts dragging) stops the pack at the next slab.
     std::lock_guard lock(mutex_);
+    const auto packStart = std::chrono::steady_clock::now();
     readyFresh_ = packVolume(accumulator_, ready_, &held_);
+    lastPack_ = std::chrono::steady_clock::now() - packStart;
     if (readyFresh_) publishedVersion_ = ready_.version;
   }
 }

@@ -23,7 +23,9 @@ class SnapshotPublisher {
   ~SnapshotPublisher();  // joins the thread
 
   // Swaps the newest volume into `out` when a fresh one is ready; never waits for a pack in
-  // progress (it returns false then). Returns whether `out` changed.
+  // progress (it returns false then). Returns whether `out` changed. Where packs are slow next to
+  // the interval, a fresh volume waits for its taker (it is not packed over, so the lock is free)
+  // unless the accumulator's pattern changed.
   bool takeIfNewer(PackedVolume& out);
   void requestNow();  // take the next snapshot without waiting for the interval
   // A volume of a generation still refining is not packed before it holds this many points (0:
@@ -44,6 +46,7 @@ class SnapshotPublisher {
   std::mutex mutex_;  // guards ready_ and readyFresh_; held while packing
   PackedVolume ready_;
   bool readyFresh_ = false;
+  std::chrono::steady_clock::duration lastPack_{};  // how long the last pack held the lock (this thread only)
   std::atomic<std::uint64_t> publishedVersion_{~std::uint64_t{0}};
   std::atomic<std::uint64_t> minimumPoints_{0};
   std::atomic<bool> held_{false};
