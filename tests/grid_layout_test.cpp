@@ -184,9 +184,14 @@ TEST(SnapshotPublisher, AFreshVolumeWaitsForItsTakerUntilThePatternChanges) {
   while (!publisher.takeIfNewer(volume) && std::chrono::steady_clock::now() < deadline)
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   ASSERT_GT(volume.points, 0u);
-  // Frames far apart next to a pack (even a sanitizer's), so a fresh volume is always ready.
+  // Frames far apart next to a pack (timed here, so a sanitizer's slow one too), so a fresh volume
+  // is always ready by the next.
+  PackedVolume timed;
+  const auto packStart = std::chrono::steady_clock::now();
+  packVolume(accumulator, timed);
+  const auto frameInterval = 4 * (std::chrono::steady_clock::now() - packStart) + std::chrono::milliseconds(50);
   for (int frame = 0; frame < 10; ++frame) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    std::this_thread::sleep_for(frameInterval);
     const std::uint64_t before = volume.version;
     ASSERT_TRUE(publisher.takeIfNewer(volume)) << "frame " << frame << ": the taker found a pack under way";
     EXPECT_GT(volume.version, before);
