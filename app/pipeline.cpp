@@ -133,7 +133,20 @@ AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& s
         break;
       }
     }
-    if (second || !halfway || !result.warning.empty()) break;
+    if (reached && result.warning.empty()) {
+      // The measurement once the workers have stopped is the one reported: when it is a fresh one
+      // above the target (the estimate moves a little between measurements), refining goes on, so
+      // the render never reports more noise than it was asked to stop at.
+      const double stopped = measure();
+      const core::AccumulatorStats stats = accumulator.stats();
+      if (std::isfinite(stopped) && stopped > options.untilNoise && stats.points < target) {
+        reached = false;
+        accumulator.setTargetPoints(target);
+        continue;  // (as the second pass: the count, if one was given, is then the limit)
+      }
+    }
+    // A noise target reached in the first third stops there: the count is only its limit.
+    if (second || !halfway || reached || !result.warning.empty()) break;
     measure();
     accumulator.setTargetPoints(target);
   }

@@ -415,6 +415,11 @@ TEST(Cli, RenderUntilNoiseStopsAtTheNoiseAndStatsReportIt) {
   EXPECT_EQ(voxflame::core::sceneFromJson(png.text.at("voxflame:preset"), "png").points,
             tight["points"].get<std::uint64_t>());
 
+  const auto withCount = statsOf("--until-noise 8 --points 50000000");
+  EXPECT_LT(withCount["points"].get<std::uint64_t>(), 10'000'000u)
+      << "a noise target reached first stops the render, however far the count";
+  EXPECT_LE(withCount["noise"].get<double>(), 0.08);
+
   const auto capped = statsOf("--until-noise 0.01 --points 2000000");
   EXPECT_LT(capped["points"].get<std::uint64_t>(), 3'000'000u) << "--points caps an unreachable noise target";
   ASSERT_TRUE(capped.contains("noise")) << capped.dump();
