@@ -114,6 +114,10 @@ void ExplorerSession::post(const core::Scene& scene, bool interacting) {
       interacting_ = true;
       steerRequested_ = true;
     }
+    if (viewMoving_) {
+      viewMoving_ = false;  // the pattern changes too: a grid without a proxy must show it
+      steerRequested_ = true;
+    }
   }
   wake_.notify_all();
 }
@@ -184,13 +188,15 @@ bool ExplorerSession::waitUntilApplied(double timeoutSeconds) {
                                  [&] { return applied_ == requested_ && !working_; });
 }
 
-void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool interacting) {
+void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool interacting, bool viewMoving) {
   {
     std::lock_guard lock(mutex_);
-    if (noiseTarget == noiseTarget_ && paused == paused_ && interacting == interacting_) return;
+    if (noiseTarget == noiseTarget_ && paused == paused_ && interacting == interacting_ && viewMoving == viewMoving_)
+      return;
     noiseTarget_ = noiseTarget;
     paused_ = paused;
     interacting_ = interacting;
+    viewMoving_ = viewMoving;
     steerRequested_ = true;
   }
   wake_.notify_all();
@@ -198,7 +204,7 @@ void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool intera
 
 bool ExplorerSession::holdsForInteraction(const Engine& engine) const {
   std::lock_guard lock(mutex_);
-  return interacting_ && engine.proxy;
+  return (interacting_ && engine.proxy) || viewMoving_;
 }
 
 void ExplorerSession::applyPattern(Engine& engine, const core::Scene& scene, std::uint64_t post) {

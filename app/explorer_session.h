@@ -110,8 +110,10 @@ class ExplorerSession {
   // nothing changed: the explorer calls it every frame.
   // `interacting`: the user is dragging a slider or orbiting. The large grid then holds too (its
   // work would be thrown away by the next edit, and the cores are the renderer's): the proxy shows
-  // each edit, and the large grid refines the pattern the user stops on.
-  void setRefinement(double noiseTarget, bool paused, bool interacting = false);
+  // each edit, and the large grid refines the pattern the user stops on. `viewMoving`: only the
+  // view changes (an orbit, a pan), so any grid, one without a proxy too, holds: the pattern
+  // stays, and the cores are the frame's until the view is still (a post ends it).
+  void setRefinement(double noiseTarget, bool paused, bool interacting = false, bool viewMoving = false);
 
   // How often the noise is measured while the volume refines.
   static constexpr std::chrono::milliseconds kMeterInterval{250};
@@ -147,6 +149,7 @@ class ExplorerSession {
   double noiseTarget_ = 0.0;
   bool paused_ = false;
   bool interacting_ = false;
+  bool viewMoving_ = false;
   bool steerRequested_ = false;  // setRefinement changed something for the control thread
   double noise_ = std::numeric_limits<double>::quiet_NaN();
   bool converged_ = false;

@@ -266,10 +266,13 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
   // grid also holds while the user drags or orbits (a change while a widget or the view is held,
   // or in this frame and the last: a single edit refines at once), until the first frame without
   // one.
+  // While only the view moves (an orbit, the light's slider) every grid holds, one without a
+  // proxy too: at 64³ its refinement took the cores the orbit's frames needed.
+  const bool viewOnly = changed && !result.patternPosted;
   changed = changed || result.patternPosted;
+  const bool held = changed && (changedLastFrame_ || state.interacting);
   session_.setRefinement(0.01 * state.settings.refineUntilNoisePercent,
-                         state.exportStatus.state == ExportState::Running,
-                         changed && (changedLastFrame_ || state.interacting));
+                         state.exportStatus.state == ExportState::Running, held, held && viewOnly);
   changedLastFrame_ = changed;
   ++frame_;
   return result;

@@ -900,6 +900,31 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
       << "once the drag ends the proxy's burst goes on to the full count";
 }
 
+// While only the view moves (an orbit) even a grid without a proxy holds: the frames get the cores.
+// A pattern edit ends the hold, since that grid is then the only one to show it.
+TEST_F(ExplorerUi, AnOrbitHoldsEvenAGridWithoutAProxyAndAnEditEndsIt) {
+  state.scene.gridResolution = 48;  // no proxy
+  app::ExplorerSession session(2);
+  session.setRefinement(0.0, false);
+  session.post(state.scene);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.stats.points > 100'000; }));
+  session.setRefinement(0.0, false, true, true);
+  // The batches under way finish; then nothing more is added.
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  const std::uint64_t held = session.status().stats.points;
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(session.status().stats.points, held) << "the grid adds nothing while the view moves";
+
+  const std::uint64_t generation = session.status().stats.generation;
+  state.scene.layers[0].params[0] *= 1.01;
+  session.post(state.scene, true);  // an edit in the middle of the orbit
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  ASSERT_TRUE(waitForSession(session, [&](const app::SessionStatus& s) {
+    return s.stats.generation > generation && s.stats.points > 10'000;
+  })) << "the edit refines at once on a grid without a proxy";
+}
+
 // The Render panel has the setting; the window loop waits for input only when everything rests.
 TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) {
   EXPECT_DOUBLE_EQ(state.settings.refineUntilNoisePercent, app::kDefaultRefineUntilNoisePercent);
