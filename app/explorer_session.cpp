@@ -54,6 +54,7 @@ struct ExplorerSession::Proxy {
     targetPoints = static_cast<std::uint64_t>(kProxyPointsPerVoxel * inside);
     dragTargetPoints = static_cast<std::uint64_t>(kProxyDragPointsPerVoxel * inside);
     accumulator.setTargetPoints(targetPoints);
+    publisher.setMinimumPoints(static_cast<std::uint64_t>(kProxyShownPointsPerVoxel * inside));
   }
   // The burst of each pattern, and the smaller one while the user drags.
   std::uint64_t targetPoints = 0, dragTargetPoints = 0;

@@ -90,6 +90,9 @@ class ExplorerSession {
   // workers take the cores the frame needs (a full burst made drag frames half as long again as
   // orbit frames). When the drag ends the last pattern's burst goes on to the full count.
   static constexpr double kProxyDragPointsPerVoxel = 8.0;
+  // A proxy is shown once it holds this many; its publisher packs none with fewer (one of nearly
+  // no points, packed the moment a pattern is set, would only keep the next one waiting).
+  static constexpr double kProxyShownPointsPerVoxel = 2.0;
   // The memory a session on this grid holds with the live view that shows it: the inside mask,
   // the accumulator, the packed volume being filled and the one being shown, the renderer's
   // textures, the proxy's share and the shadows. What the grid slider shows beside it.

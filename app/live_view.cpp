@@ -21,8 +21,6 @@ constexpr int kShadowDownsample = 2;
 // still view does not march while a volume streams in, so its frames can take more of it.
 constexpr std::size_t kUploadBytesPerFrame = 48u << 20;
 constexpr std::size_t kStillUploadBytesPerFrame = 160u << 20;
-// A proxy is shown once it holds this many points per voxel inside the mesh.
-constexpr double kMinProxyPointsPerVoxel = 2.0;
 
 // The framebuffer's picture as a thumbnail (rows top to bottom, opaque).
 Thumbnail readThumbnail(unsigned framebuffer, int width, int height) {
@@ -51,7 +49,8 @@ void LiveView::takeVolume() {
   if (proxySpare_.use_count() > 1) proxySpare_ = std::make_shared<core::PackedVolume>();
   std::uint64_t proxyReflects = 0;
   if (session_.takeProxyIfNewer(*proxySpare_, &proxyReflects) && proxyReflects > mainPost_ &&
-      static_cast<double>(proxySpare_->points) >= kMinProxyPointsPerVoxel * proxySpare_->insideVoxels) {
+      static_cast<double>(proxySpare_->points) >=
+          ExplorerSession::kProxyShownPointsPerVoxel * proxySpare_->insideVoxels) {
     std::swap(proxySpare_, proxyShown_);
     renderer_.uploadProxy(*proxyShown_);
     proxyPost_ = proxyReflects;

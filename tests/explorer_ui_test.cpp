@@ -871,6 +871,8 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
   // needs smoothness): it reaches the drag's count (however slow the build, a sanitizer's say) and
   // then stops well short of the full burst.
   const double insideVoxels = volume.insideVoxels;
+  EXPECT_GE(static_cast<double>(volume.points), app::ExplorerSession::kProxyShownPointsPerVoxel * insideVoxels)
+      << "no proxy volume is packed with too few points to be shown";
   const double dragBurst = app::ExplorerSession::kProxyDragPointsPerVoxel * insideVoxels * 0.9;
   const auto burstStart = std::chrono::steady_clock::now();
   while (static_cast<double>(volume.points) < dragBurst &&
