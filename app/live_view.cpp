@@ -264,8 +264,7 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
   // Refinement rests at the user's noise target and while an export uses the cores; the large
   // grid also holds while the user drags or orbits (a change while a widget or the view is held,
   // or in this frame and the last: a single edit refines at once), until the first frame without
-  // one.
-  // While only the view moves (an orbit, the light's slider) every grid holds, one without a
+  // one. While only the view moves (an orbit, the light's slider) every grid holds, one without a
   // proxy too: at 64³ its refinement took the cores the orbit's frames needed.
   const bool viewOnly = changed && !result.patternPosted;
   changed = changed || result.patternPosted;

@@ -137,9 +137,9 @@ AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& s
       // The measurement once the workers have stopped is the one reported: when it is a fresh one
       // above the target (the estimate moves a little between measurements), refining goes on, so
       // the render never reports more noise than it was asked to stop at.
-      const double stopped = measure();
+      result.noise = measure();
       const core::AccumulatorStats stats = accumulator.stats();
-      if (std::isfinite(stopped) && stopped > options.untilNoise && stats.points < target) {
+      if (std::isfinite(result.noise) && result.noise > options.untilNoise && stats.points < target) {
         reached = false;
         accumulator.setTargetPoints(target);
         continue;  // (as the second pass: the count, if one was given, is then the limit)
@@ -151,7 +151,7 @@ AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& s
     accumulator.setTargetPoints(target);
   }
   result.stats = accumulator.stats();
-  result.noise = measure();
+  if (!reached || !result.warning.empty()) result.noise = measure();  // else measured once stopped, above
   report(result.stats, result.noise);
   if (!result.stats.problem.empty()) throw core::Error(result.stats.problem);
   accumulator.snapshot(result.snapshot);
