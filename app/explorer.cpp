@@ -133,6 +133,36 @@ void openInto(ExplorerState& state, const std::filesystem::path& path, GLFWwindo
   glfwSetWindowTitle(window, title.c_str());
 }
 
+// What, besides input, calls for a new frame while the explorer rests: work on other threads that
+// finished (a volume, a search, an analysis, an export, preset thumbnails) or a resize. While it
+// stays the same and no input arrives, the resting loop wakes only to compare it, and draws nothing.
+struct RestSignature {
+  bool sessionResting = false;
+  std::uint64_t requested = 0, applied = 0;
+  std::string error;
+  bool searchBusy = false, analysisBusy = false;
+  ExportState exportState = ExportState::Idle;
+  std::uint64_t presetsVersion = 0;
+  int width = 0, height = 0;
+  bool operator==(const RestSignature&) const = default;
+};
+
+RestSignature restSignature(const ExplorerSession& session, const ExplorerState& state, const PresetLibrary& presets,
+                            GLFWwindow* window) {
+  const SessionStatus status = session.status();
+  RestSignature signature;
+  signature.sessionResting = status.resting;
+  signature.requested = status.requestedGeneration;
+  signature.applied = status.appliedGeneration;
+  signature.error = status.error;
+  signature.searchBusy = state.search.busy();
+  signature.analysisBusy = state.analysis.busy();
+  signature.exportState = state.exportStatus.state;
+  signature.presetsVersion = presets.version();
+  glfwGetFramebufferSize(window, &signature.width, &signature.height);
+  return signature;
+}
+
 }  // namespace
 
 int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options) {
@@ -201,11 +231,13 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     // the view under them (app::LiveView), the panels' drawing on top, swap. Once the window is
     // gone (x11.windowGone()), what GLFW read from it is garbage: each read is checked before use.
     int restingFrames = 0;
+    std::optional<RestSignature> drawnAtRest;  // what the last frame drawn at rest showed
     while (!glfwWindowShouldClose(window)) {
       x11.rearm();
       // Frames are drawn only while something moves; at rest the loop sleeps in GLFW until input
-      // arrives (or a short timeout, for what other threads finish), so an idle explorer whose
-      // volume has converged uses almost no CPU. Scripted runs always draw.
+      // arrives, waking now and then (other threads do not wake GLFW) only to see whether a job
+      // finished: it draws again for input, a resize or a finished job, so an idle explorer whose
+      // volume rests uses almost no CPU. Scripted runs always draw.
       const double wait = scriptedRun ? 0.0 : frameWaitSeconds(state, view.resting(), restingFrames);
       if (wait > 0.0)
         glfwWaitEventsTimeout(wait);
@@ -214,8 +246,18 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       const bool iconified = glfwGetWindowAttrib(window, GLFW_ICONIFIED) != 0;
       if (x11.windowGone()) break;
       if (iconified) {
-        glfwWaitEventsTimeout(0.1);
+        glfwWaitEventsTimeout(0.5);
         continue;
+      }
+      // (An export's progress is polled by the frames themselves: they go on, throttled.)
+      const bool restingWait = wait > 0.0 && state.exportStatus.state != ExportState::Running;
+      if (restingWait && input.queue.pending() == 0 && dropped.empty() && !glfwWindowShouldClose(window)) {
+        const RestSignature now = restSignature(session, state, presets, window);
+        if (x11.windowGone()) break;
+        if (drawnAtRest == now) continue;  // nothing new to show
+        drawnAtRest = now;
+      } else if (!restingWait) {
+        drawnAtRest.reset();
       }
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();  // display size, time, pointer; then the queued input over it

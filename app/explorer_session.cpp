@@ -14,7 +14,7 @@ namespace voxflame::app {
 
 namespace {
 
-// The explorer refines until the user changes something; this is "forever" in practice.
+// The most points any grid refines to (the hit counts of a voxel have 31 bits).
 constexpr std::uint64_t kExplorerTargetPoints = 4'000'000'000;
 
 // What decides the shape: the mesh file and the grid over it.
@@ -74,7 +74,13 @@ struct ExplorerSession::Engine {
         proxy(proxyMask ? std::make_unique<Proxy>(std::move(proxyMask), threads) : nullptr),
         accumulator(mask, threads),
         publisher(accumulator, interval) {
-    accumulator.setTargetPoints(kExplorerTargetPoints);
+    initialCapPoints = std::clamp<std::uint64_t>(
+        static_cast<std::uint64_t>(restCapPointsPerVoxel(mask->geometry) *
+                                   static_cast<double>(std::max<std::uint64_t>(accumulator.insideVoxels(), 1))),
+        1, kExplorerTargetPoints);
+    capPoints = initialCapPoints;
+    target = capPoints;
+    accumulator.setTargetPoints(capPoints);
     // The live view shows the large grid of a pattern once it holds as many points as the proxy;
     // packing it before then is wasted.
     if (proxy) publisher.setMinimumPoints(proxy->targetPoints);
@@ -89,6 +95,12 @@ struct ExplorerSession::Engine {
   core::ConvergenceMeter meter;         // control thread only, like the two below
   core::DensitySample sample;
   std::uint64_t target = kExplorerTargetPoints;  // what the accumulator was last told
+  bool held = false;                             // ... and it was a held target (converged or paused)
+  // Refinement rests here whatever the noise (restCapPointsPerVoxel); "refine further" raises it,
+  // and until `furtherPoints` the noise target does not stop it either.
+  std::uint64_t initialCapPoints = kExplorerTargetPoints;
+  std::uint64_t capPoints = kExplorerTargetPoints;
+  std::uint64_t furtherPoints = 0;
   // The pattern posted while the user dragged, set once the drag ends (control thread only).
   std::optional<core::Scene> deferredScene;
   std::uint64_t deferredPost = 0;
@@ -172,7 +184,12 @@ SessionStatus ExplorerSession::status() const {
   status.noise = noise_;
   status.noiseTarget = noiseTarget_;
   status.converged = converged_;
-  status.paused = paused_ && holding_;
+  status.capped = capped_;
+  status.lastMeasurement = lastMeasurement_;
+  status.previousMeasurement = previousMeasurement_;
+  status.pointsPerVoxel = pointsPerVoxel_;
+  status.capPointsPerVoxel = capPointsPerVoxel_;
+  status.paused = paused_ && holding_ && !capped_ && !converged_;
   status.resting = engine_ && holding_ && status.stats.done && !buildingShape_ && !pending_ && !working_ &&
                    !steerRequested_ && engine_->publisher.caughtUp();
   return status;
@@ -203,15 +220,33 @@ void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool intera
   wake_.notify_all();
 }
 
+double ExplorerSession::restCapPointsPerVoxel(const core::GridGeometry& grid) {
+  const double side = std::max({grid.size.x, grid.size.y, grid.size.z, 1});
+  return std::clamp(kRestCapPointsPerVoxel * (192.0 / side) * (192.0 / side), kRestCapMinimum, kRestCapMaximum);
+}
+
+void ExplorerSession::refineFurther() {
+  {
+    std::lock_guard lock(mutex_);
+    refineFurtherRequested_ = true;
+    steerRequested_ = true;
+  }
+  wake_.notify_all();
+}
+
 bool ExplorerSession::holdsForInteraction(const Engine& engine) const {
   std::lock_guard lock(mutex_);
   return (interacting_ && engine.proxy) || viewMoving_;
 }
 
 void ExplorerSession::applyPattern(Engine& engine, const core::Scene& scene, std::uint64_t post) {
-  // A new pattern refines afresh: a held target would stop it at the old generation's count.
-  engine.target = kExplorerTargetPoints;
-  engine.accumulator.setTargetPoints(kExplorerTargetPoints);
+  // A new pattern refines afresh: a held target would stop it at the old generation's count, and
+  // points asked for by "refine further" were the old pattern's.
+  engine.capPoints = engine.initialCapPoints;
+  engine.furtherPoints = 0;
+  engine.target = engine.capPoints;
+  engine.held = false;
+  engine.accumulator.setTargetPoints(engine.target);
   engine.accumulator.setPattern(scene.layers, scene.seed);
   steer(engine);  // a pause still holds the new pattern (at a preview)
   engine.publisher.requestNow();
@@ -223,24 +258,38 @@ void ExplorerSession::applyPattern(Engine& engine, const core::Scene& scene, std
 void ExplorerSession::steer(Engine& engine) {
   const bool interacting = holdsForInteraction(engine);
   double target = 0.0;
-  bool paused = false;
+  bool paused = false, further = false;
   {
     std::lock_guard lock(mutex_);
     target = noiseTarget_;
     paused = paused_;
+    further = std::exchange(refineFurtherRequested_, false);
+  }
+  std::uint64_t points = engine.accumulator.stats().points;
+  if (further) {
+    // From the points already there to twice as many: neither the noise target nor the cap
+    // stops it before then (the meter goes on measuring the same generation).
+    engine.furtherPoints = std::min(kExplorerTargetPoints, 2 * std::max<std::uint64_t>(points, 1));
+    engine.capPoints = std::max(engine.capPoints, engine.furtherPoints);
+    engine.held = false;
   }
   engine.accumulator.sampleDensity(engine.sample);
   const double noise = engine.meter.update(engine.sample);
-  const bool converged = target > 0.0 && noise <= target;  // false while the noise is NaN
-  std::uint64_t wanted = kExplorerTargetPoints;
+  // The target is reached when two measurements in a row are at or under it (false while either
+  // is NaN): a single one may dip under it by chance, or while a flow's orbits dwell in one part
+  // of the attractor between two samples.
+  const bool converged = target > 0.0 && engine.meter.twoMeasurementsWithin(target) && points >= engine.furtherPoints;
+  const bool capped = points >= engine.capPoints;
+  std::uint64_t wanted = engine.capPoints;
   if (converged || paused) {
     // A target already held stays: raising it to the points counted now would send the streams
     // that are behind on another batch each time, and the workers would never quite rest.
-    const std::uint64_t points = engine.accumulator.stats().points;
-    wanted = engine.target != kExplorerTargetPoints ? engine.target
-             : paused && !converged                 ? std::max(points, kPausedPreviewPoints)
-                                                    : std::max<std::uint64_t>(points, 1);
+    wanted = engine.held            ? engine.target
+             : paused && !converged ? std::max(points, kPausedPreviewPoints)
+                                    : std::max<std::uint64_t>(points, 1);
+    wanted = std::min(wanted, engine.capPoints);
   }
+  engine.held = converged || paused;
   engine.accumulator.setHeld(interacting);
   engine.publisher.setHeld(interacting);
   if (engine.proxy) engine.proxy->setDragging(interacting);
@@ -249,10 +298,17 @@ void ExplorerSession::steer(Engine& engine) {
     engine.accumulator.setTargetPoints(wanted);
     engine.publisher.requestNow();  // the last points before the workers stop, or the first after
   }
+  const double inside = static_cast<double>(std::max<std::uint64_t>(engine.accumulator.insideVoxels(), 1));
   std::lock_guard lock(mutex_);
   noise_ = noise;
   converged_ = converged;
-  holding_ = wanted != kExplorerTargetPoints;
+  capped_ = capped && !converged;
+  pointsPerVoxel_ = static_cast<double>(points) / inside;
+  lastMeasurement_ = engine.meter.lastMeasurement();
+  previousMeasurement_ = engine.meter.previousMeasurement();
+  capPointsPerVoxel_ = static_cast<double>(engine.capPoints) / inside;
+  // The control thread sleeps until it is asked for something once refinement will add nothing.
+  holding_ = converged || paused || capped;
 }
 
 void ExplorerSession::controlLoop(std::stop_token stop) {

@@ -42,8 +42,15 @@ struct SessionStatus {
   // until measured), the target that stops refining (0: never), and why refinement rests.
   double noise = std::numeric_limits<double>::quiet_NaN();
   double noiseTarget = 0.0;
+  // The last two measurements themselves, newest first (ConvergenceMeter), NaN until taken.
+  double lastMeasurement = std::numeric_limits<double>::quiet_NaN();
+  double previousMeasurement = std::numeric_limits<double>::quiet_NaN();
   bool converged = false;  // the noise reached the target: the workers sleep until the next edit
+  bool capped = false;     // the points reached the grid's cap (restCapPointsPerVoxel) first
   bool paused = false;     // refinement is held while an export runs
+  // Points per voxel inside the mask now, and the cap that ends refinement whatever the noise.
+  double pointsPerVoxel = 0.0;
+  double capPointsPerVoxel = 0.0;
   // Nothing will change until the user does something: refinement is held and finished, and the
   // last volume has been taken. The window loop may then wait for events instead of drawing.
   bool resting = false;
@@ -120,6 +127,22 @@ class ExplorerSession {
 
   // How often the noise is measured while the volume refines.
   static constexpr std::chrono::milliseconds kMeterInterval{250};
+
+  // Refinement ends at this many points per voxel inside the mask even when the noise never
+  // reaches its target (a flow whose estimate levels off above it, or a target of "never"), so
+  // the explorer always comes to rest. What the picture shows is points per pixel: a pixel sees a
+  // column of about `resolution` voxels through a footprint of about (resolution / pixels)²
+  // voxel faces, so points per voxel need not stay the same on a finer grid; the cap falls with
+  // the square of the grid's longest side from kRestCapPointsPerVoxel at 192 (the default grid,
+  // reached in about half a minute on two cores), within [kRestCapMinimum, kRestCapMaximum].
+  static constexpr double kRestCapPointsPerVoxel = 256.0;
+  static constexpr double kRestCapMinimum = 32.0;
+  static constexpr double kRestCapMaximum = 2048.0;
+  static double restCapPointsPerVoxel(const core::GridGeometry& grid);
+
+  // "Refine further": refinement goes on from the points already there to twice as many, past
+  // the noise target and the cap (the cap doubles with it). Returns at once.
+  void refineFurther();
   // The points a pattern edited during an export refines to before it is held.
   static constexpr std::uint64_t kPausedPreviewPoints = 5'000'000;
 
@@ -156,7 +179,11 @@ class ExplorerSession {
   bool steerRequested_ = false;  // setRefinement changed something for the control thread
   double noise_ = std::numeric_limits<double>::quiet_NaN();
   bool converged_ = false;
-  bool holding_ = false;  // the accumulator's target is held (converged or paused)
+  bool capped_ = false;
+  double pointsPerVoxel_ = 0.0, capPointsPerVoxel_ = 0.0;
+  double lastMeasurement_ = std::numeric_limits<double>::quiet_NaN(), previousMeasurement_ = lastMeasurement_;
+  bool refineFurtherRequested_ = false;
+  bool holding_ = false;  // the accumulator's target is held (converged, capped or paused)
   std::jthread control_;  // last: started after everything it uses exists
 };
 

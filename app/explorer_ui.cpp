@@ -1047,11 +1047,14 @@ void renderSection(ExplorerState& state) {
   double& stopAt = state.settings.refineUntilNoisePercent;
   const double low = 0.0, high = 10.0;
   ImGui::SliderScalar("stop refining at noise", ImGuiDataType_Double, &stopAt, &low, &high,
-                      stopAt <= 0.0 ? "never" : "%.2f%%", ImGuiSliderFlags_Logarithmic);
+                      stopAt <= 0.0 ? "at the cap" : "%.2f%%", ImGuiSliderFlags_Logarithmic);
   probe(state, "render/stop_refining_at_noise");
   stopAt = std::clamp(stopAt, 0.0, 100.0);
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("the volume stops refining (and the explorer rests) once its estimated noise is this low");
+    ImGui::SetTooltip(
+        "the volume stops refining (and the explorer rests) once two measurements of its noise in a row are this\n"
+        "low, or at the grid's cap of points per voxel, whichever comes first; a lower target refines on from\n"
+        "the points already there");
 }
 
 void cameraSection(ExplorerState& state) {
@@ -1250,12 +1253,15 @@ void viewWindow(ExplorerState& state, float scale) {
 
 std::string convergenceText(const SessionStatus& status) {
   if (!status.hasShape) return "";
-  char text[96];
+  char text[160];
   const double noise = 100.0 * status.noise, target = 100.0 * status.noiseTarget;
   if (status.paused)
     std::snprintf(text, sizeof text, "refining paused for the export");
   else if (status.converged)
-    std::snprintf(text, sizeof text, "converged (noise %.2g%%)", noise);
+    std::snprintf(text, sizeof text, "at rest: the noise reached its target (%.2g%% ≤ %.2g%%)", noise, target);
+  else if (status.capped)
+    std::snprintf(text, sizeof text, "at rest: the cap of %.0f points per voxel (noise %.2g%%)",
+                  status.capPointsPerVoxel, noise);
   else if (!std::isfinite(noise))
     std::snprintf(text, sizeof text, "noise …");
   else if (status.noiseTarget > 0.0)
@@ -1296,6 +1302,14 @@ void statusBar(ExplorerState& state, float scale) {
   if (const std::string convergence = convergenceText(state.session); !convergence.empty()) {
     ImGui::SameLine();
     ImGui::Text(" |  %s", convergence.c_str());
+  }
+  if ((state.session.converged || state.session.capped) && !state.session.buildingShape) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Refine further")) state.requests.refineFurther = true;
+    probe(state, "status/refine_further");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("go on from the %.0f points per voxel already there to twice as many",
+                        state.session.pointsPerVoxel);
   }
   ImGui::SameLine();
   ImGui::TextColored(kDimColor, " |  %.0f fps  %.1f ms (worst %.0f)  upload %.1f ms  %d samples", m.fps, m.frameMs,

@@ -41,6 +41,7 @@ struct UiRequests {
   std::optional<std::filesystem::path> open;  // a preset, a voxflame PNG or a mesh
   std::optional<std::string> saveAs;          // save the scene as a user preset with this name
   std::optional<ExportRequest> exportStill;   // render a still in a child process (the Export panel)
+  bool refineFurther = false;                 // refine a resting volume on to twice its points
   bool quit = false;
 };
 

@@ -277,6 +277,7 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
 }
 
 void LiveView::serveRequests(ExplorerState& state, int width, int height, unsigned framebuffer) {
+  if (std::exchange(state.requests.refineFurther, false)) session_.refineFurther();
   if (state.requests.saveAs) {
     // Saved whatever is on screen: the volume, or the background while a shape builds or after a
     // bad mesh. The preset is what matters; the thumbnail is the view as it is now.

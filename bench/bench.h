@@ -11,9 +11,10 @@ namespace voxflame::bench {
 
 struct BenchOptions {
   bool json = false;
-  std::string meshFolder;  // where bunny.obj, dragon.ply, ... are
-  std::string method;      // --method volume|points (export), empty: the benchmark's default
-  std::vector<int> grids;  // --grid N...: the grids `explorer` runs at, empty: 192, 256 and 512
+  std::string meshFolder;            // where bunny.obj, dragon.ply, ... are
+  std::string method;                // --method volume|points (export), empty: the benchmark's default
+  std::vector<int> grids;            // --grid N...: the grids `explorer` runs at, empty: 192, 256 and 512
+  std::vector<std::string> presets;  // `rest`'s presets (files or shipped names), empty: every shipped one
 };
 
 struct Benchmark {
@@ -42,5 +43,6 @@ void benchMask(const BenchOptions& options);        // bench_mask.cpp
 void benchExplorer(const BenchOptions& options);    // bench_explorer.cpp
 void benchQuality(const BenchOptions& options);     // bench_quality.cpp
 void benchFlame(const BenchOptions& options);       // bench_flame.cpp
+void benchRest(const BenchOptions& options);        // bench_rest.cpp
 
 }  // namespace voxflame::bench

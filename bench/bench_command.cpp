@@ -30,6 +30,10 @@ const std::vector<Benchmark>& benchmarks() {
        "chaos-game samples per second on 2 threads against flam3-render (when installed) on the same 4-transform "
        "genome",
        &benchFlame},
+      {"rest",
+       "the live view on each shipped preset (or the ones named) at its own grid: seconds until it rests and why, "
+       "then CPU and context switches per second at rest",
+       &benchRest},
   };
   return table;
 }

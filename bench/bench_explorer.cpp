@@ -19,6 +19,7 @@
 #include "explorer_session.h"
 #include "export_job.h"
 #include "gl/headless_context.h"
+#include "headless_frame_loop.h"
 #include "live_view.h"
 
 namespace voxflame::bench {
@@ -38,35 +39,12 @@ double residentMegabytes() {
   return static_cast<double>(resident) * static_cast<double>(sysconf(_SC_PAGESIZE)) / 1e6;
 }
 
-// One explorer frame without the window: app::LiveView, the very frame body the explorer runs
-// under its panels.
-// A headless context has no window: the frame goes to a 1280×720 colour buffer standing in for it.
-struct FrameLoop {
+// One explorer frame without the window (headless_frame_loop.h). Refines until told otherwise
+// (cpuAtRest sets the target).
+struct FrameLoop : HeadlessFrameLoop {
   FrameLoop(app::ExplorerSession& session, const core::Scene& scene, float renderScale)
-      : view(session, nullptr, nullptr) {
-    app::resetExplorerState(state, scene);
-    state.renderScale = renderScale;
-    state.settings.refineUntilNoisePercent = 0.0;  // refine until told otherwise (cpuAtRest)
-    glGenRenderbuffers(1, &colour);
-    glBindRenderbuffer(GL_RENDERBUFFER, colour);
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, 1280, 720);
-    glGenFramebuffers(1, &window);
-    glBindFramebuffer(GL_FRAMEBUFFER, window);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour);
-  }
-  ~FrameLoop() {
-    glDeleteFramebuffers(1, &window);
-    glDeleteRenderbuffers(1, &colour);
-  }
-  app::ExplorerState state;
-  app::LiveView view;
-  GLuint colour = 0, window = 0;
-
-  // Runs one frame and waits for the GL, so the time is the frame's real cost.
-  app::LiveFrame run() {
-    const app::LiveFrame frame = view.frame(state, 1280, 720, window);
-    glFinish();
-    return frame;
+      : HeadlessFrameLoop(session, scene, renderScale) {
+    state.settings.refineUntilNoisePercent = 0.0;
   }
 };
 

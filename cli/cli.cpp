@@ -331,6 +331,9 @@ Run defineBench(CLI::App& command) {
       ->check(CLI::IsMember(renderMethodNames()));
   command.add_option("--grid", options->grids, "The grids `explorer` runs at (default: 192 256 512)")
       ->check(within(core::kMinGridResolution, core::kMaxGridResolution));
+  command.add_option("presets", options->presets,
+                     "`rest`: the presets to open (files, or shipped names such as default); default: every shipped "
+                     "preset");
   command.add_flag("--json", options->json, "One JSON object a line");
   command.footer("Measure performance (Release build). The benchmarks:" + list);
   return [options, which] { return bench::runBenchmarks(*options, *which); };

@@ -816,7 +816,8 @@ TEST_F(ExplorerUi, RefinementStopsAtTheNoiseTargetAndTheWorkersSleep) {
   const app::SessionStatus rested = session.status();
   EXPECT_LE(rested.noise, 0.05);
   EXPECT_TRUE(rested.stats.done);
-  EXPECT_EQ(app::convergenceText(rested).rfind("converged", 0), 0u) << app::convergenceText(rested);
+  EXPECT_EQ(app::convergenceText(rested).rfind("at rest: the noise reached its target", 0), 0u)
+      << app::convergenceText(rested);
   const long long ticks = processThreadTicks();
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
   EXPECT_EQ(session.status().stats.points, rested.stats.points) << "no points are added at rest";
@@ -829,6 +830,91 @@ TEST_F(ExplorerUi, RefinementStopsAtTheNoiseTargetAndTheWorkersSleep) {
   })) << "a lower target starts refining again";
   EXPECT_FALSE(session.status().converged);
   EXPECT_EQ(app::convergenceText(session.status()).rfind("noise ", 0), 0u) << app::convergenceText(session.status());
+}
+
+// The default preset, on a small grid and with the explorer's default noise target, comes to rest
+// by itself: the noise target or the grid's cap, whichever is first, and the status line says so.
+TEST_F(ExplorerUi, TheDefaultPresetComesToRest) {
+  state.scene.gridResolution = 48;
+  app::ExplorerSession session(2);
+  session.setRefinement(0.01 * app::kDefaultRefineUntilNoisePercent, false);
+  session.post(state.scene);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  ASSERT_TRUE(waitForSession(
+      session, [](const app::SessionStatus& s) { return s.resting; }, 240.0))
+      << "points per voxel " << session.status().pointsPerVoxel << " of " << session.status().capPointsPerVoxel;
+  const app::SessionStatus rested = session.status();
+  EXPECT_TRUE(rested.converged || rested.capped);
+  EXPECT_EQ(app::convergenceText(rested).rfind("at rest: ", 0), 0u) << app::convergenceText(rested);
+  EXPECT_LE(rested.pointsPerVoxel, rested.capPointsPerVoxel * 1.05);
+}
+
+// A target the noise never reaches (here far below what any flow's estimate gets to) still ends:
+// refinement stops at the grid's cap of points per voxel, adds nothing after, and the threads sleep.
+// "Refine further" then goes on from those points to twice as many, in the same generation.
+TEST_F(ExplorerUi, TheCapEndsAFlowThatNeverReachesItsTargetAndRefineFurtherKeepsItsPoints) {
+  state.scene.gridResolution = 40;
+  app::ExplorerSession session(2);
+  session.setRefinement(1e-6, false);
+  session.post(state.scene);
+  ASSERT_TRUE(session.waitUntilApplied(60.0));
+  ASSERT_TRUE(waitForSession(
+      session, [](const app::SessionStatus& s) { return s.resting; }, 240.0))
+      << "points per voxel " << session.status().pointsPerVoxel << " of " << session.status().capPointsPerVoxel;
+  const app::SessionStatus capped = session.status();
+  EXPECT_TRUE(capped.capped);
+  EXPECT_FALSE(capped.converged);
+  EXPECT_NEAR(capped.capPointsPerVoxel, app::ExplorerSession::restCapPointsPerVoxel(capped.grid),
+              0.01 * capped.capPointsPerVoxel);
+  EXPECT_GE(capped.pointsPerVoxel, capped.capPointsPerVoxel);
+  EXPECT_LE(capped.pointsPerVoxel, capped.capPointsPerVoxel * 1.05) << "it stops at the cap";
+  EXPECT_EQ(app::convergenceText(capped).rfind("at rest: the cap of ", 0), 0u) << app::convergenceText(capped);
+  const long long ticks = processThreadTicks();
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
+  EXPECT_EQ(session.status().stats.points, capped.stats.points) << "no points are added at rest";
+  EXPECT_LE(processThreadTicks() - ticks, 3) << "the threads sleep at the cap";
+
+  session.refineFurther();
+  std::uint64_t fewest = capped.stats.points;
+  ASSERT_TRUE(waitForSession(
+      session,
+      [&](const app::SessionStatus& s) {
+        fewest = std::min(fewest, s.stats.points);
+        return s.resting && s.stats.points >= 2 * capped.stats.points;
+      },
+      240.0));
+  const app::SessionStatus further = session.status();
+  EXPECT_EQ(fewest, capped.stats.points) << "refining further never starts from zero";
+  EXPECT_EQ(further.stats.generation, capped.stats.generation) << "the same accumulation goes on";
+  EXPECT_LE(further.stats.points, 2 * capped.stats.points * 105 / 100);
+  EXPECT_TRUE(further.capped) << "it rests again at the raised cap";
+}
+
+// The rule needs two measurements in a row under the target: one alone may dip under it by chance.
+TEST(ConvergenceRule, TwoMeasurementsInARowAreNeeded) {
+  core::ConvergenceMeter meter;
+  EXPECT_FALSE(meter.twoMeasurementsWithin(1.0));
+  core::DensitySample sample;
+  sample.generation = 1;
+  sample.hits.assign(4096, 0);
+  std::uint64_t points = 0;
+  // Counts that grow in proportion: every measurement is (nearly) 0.
+  for (int round = 1; round <= 3; ++round) {
+    for (std::size_t v = 0; v < sample.hits.size(); ++v)
+      sample.hits[v] = static_cast<std::uint32_t>((4 << round) * (v % 7 + 1));
+    points = 0;
+    for (std::uint32_t h : sample.hits) points += h;
+    sample.points = points;
+    meter.update(sample);
+    if (round == 2) {
+      EXPECT_EQ(meter.measurements(), 1);
+      EXPECT_FALSE(meter.twoMeasurementsWithin(0.01)) << "one measurement is not enough";
+    }
+  }
+  EXPECT_EQ(meter.measurements(), 2);
+  EXPECT_TRUE(meter.twoMeasurementsWithin(0.01));
+  meter.reset();
+  EXPECT_FALSE(meter.twoMeasurementsWithin(0.01));
 }
 
 // While an export runs refinement is held (the two would fight over the cores); it resumes after.

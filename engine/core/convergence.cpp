@@ -52,8 +52,10 @@ double ConvergenceMeter::update(const DensitySample& sample) {
   if (!sameRun) {
     reset();
   } else if (farEnough(hits)) {
+    previous_ = measured_;
     measured_ = estimateNoise(reference_.hits, sample.hits);
     measuredPoints_ = sample.points;
+    ++measurements_;
   }
   // The newer sample is the next reference unless it is too close to the old one to measure from:
   // a reference that moves a little each time would never be far enough behind.
@@ -73,6 +75,8 @@ void ConvergenceMeter::reset() {
   referenceHits_ = 0;
   haveReference_ = false;
   measured_ = std::numeric_limits<double>::quiet_NaN();
+  previous_ = measured_;
+  measurements_ = 0;
   measuredPoints_ = 0;
   noise_ = measured_;
 }

@@ -50,6 +50,15 @@ class ConvergenceMeter {
   double update(const DensitySample& sample);
   // The latest estimate, scaled to the latest sample's point count; NaN when there is none.
   double noise() const { return noise_; }
+  // The last two measurements themselves (not scaled on to later point counts), newest first;
+  // NaN until taken. A picture has stopped changing when both are at or under a target: one
+  // measurement alone can fall under it by chance, or while an orbit dwells in one part of a flow
+  // between two samples, and the estimate between measurements is only an extrapolation.
+  double lastMeasurement() const { return measured_; }
+  double previousMeasurement() const { return previous_; }
+  bool twoMeasurementsWithin(double target) const { return measured_ <= target && previous_ <= target; }
+  // Measurements taken since the last reset.
+  int measurements() const { return measurements_; }
   void reset();
 
   // At least this many hits in a sample, and this many added since the reference, for a measure.
@@ -61,6 +70,8 @@ class ConvergenceMeter {
   std::uint64_t referenceHits_ = 0;
   bool haveReference_ = false;
   double measured_ = std::numeric_limits<double>::quiet_NaN();  // at measuredPoints_
+  double previous_ = std::numeric_limits<double>::quiet_NaN();  // the measurement before it
+  int measurements_ = 0;
   std::uint64_t measuredPoints_ = 0;
   double noise_ = std::numeric_limits<double>::quiet_NaN();
 };
