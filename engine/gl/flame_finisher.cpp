@@ -1,6 +1,7 @@
 #include "flame_finisher.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -31,7 +32,7 @@ struct KernelTable {
   int maxRadius() const { return kernels.empty() ? 0 : static_cast<int>(kernels[2]); }
 };
 
-KernelTable kernelTable(const core::ToneMapSettings& tone, int oversample) {
+KernelTable makeKernelTable(const core::ToneMapSettings& tone, int oversample) {
   KernelTable table;
   if (tone.estimatorRadius <= 0.0) return table;
   table.maxWidth = tone.estimatorRadius * oversample + 1.0;
@@ -54,6 +55,20 @@ KernelTable kernelTable(const core::ToneMapSettings& tone, int oversample) {
       }
     table.kernels.insert(table.kernels.end(), {static_cast<float>(1.0 / width), static_cast<float>(1.0 / sum),
                                                static_cast<float>(radius), static_cast<float>(largest)});
+  }
+  return table;
+}
+
+// The table of the last settings: a live frame finishes with the same ones as the frame before,
+// and a wide table (radius 20 at oversample 4) costs milliseconds to build.
+const KernelTable& kernelTable(const core::ToneMapSettings& tone, int oversample) {
+  thread_local KernelTable table;
+  thread_local std::array<double, 4> key{-1.0, -1.0, -1.0, -1.0};
+  const std::array<double, 4> wanted{tone.estimatorRadius, tone.estimatorMinimum, tone.estimatorCurve,
+                                     static_cast<double>(oversample)};
+  if (wanted != key) {
+    table = makeKernelTable(tone, oversample);
+    key = wanted;
   }
   return table;
 }
@@ -109,6 +124,34 @@ ShaderSource withCommon(const ShaderSource& shader) {
   return {shader.file, "#version 430 core\n" + common.text + "\n#line 1\n" + shader.text};
 }
 
+// A compute program; compile and link errors become core::Error naming the file, as
+// ShaderProgram's do.
+GLuint computeProgram(const ShaderSource& source) {
+  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  const char* text = source.text.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  std::string log(4096, '\0');
+  if (!ok) {
+    glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    glDeleteShader(shader);
+    throw core::Error(source.file + ": compute shader failed to compile: " + log.c_str());
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glLinkProgram(program);
+  glDeleteShader(shader);
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    glDeleteProgram(program);
+    throw core::Error(source.file + ": failed to link: " + log.c_str());
+  }
+  return program;
+}
+
 glm::vec3 displayEncode(glm::vec3 linear, double gamma) {
   return glm::pow(glm::max(linear, glm::vec3(0.0f)), glm::vec3(static_cast<float>(1.0 / gamma)));
 }
@@ -128,6 +171,10 @@ FlameFinisher::FlameFinisher()
                       embeddedShader("finish_scatter.frag.glsl")),
       foldProgram_(embeddedShader("fullscreen.vert.glsl"), withCommon(embeddedShader("finish_fold.frag.glsl"))),
       toneProgram_(embeddedShader("fullscreen.vert.glsl"), withCommon(embeddedShader("finish_tone.frag.glsl"))) {
+  compactProgram_ = computeProgram(withCommon(embeddedShader("finish_compact.comp.glsl")));
+  glGenBuffers(1, &command_);
+  glGenBuffers(1, &sprites_);
+  glGenTextures(1, &spritesTexture_);
   glGenVertexArrays(1, &vertexArray_);
   GLfloat range[2] = {1.0f, 1.0f};
   glGetFloatv(GL_POINT_SIZE_RANGE, range);
@@ -138,6 +185,10 @@ FlameFinisher::FlameFinisher()
 }
 
 FlameFinisher::~FlameFinisher() {
+  glDeleteProgram(compactProgram_);
+  glDeleteBuffers(1, &command_);
+  glDeleteBuffers(1, &sprites_);
+  glDeleteTextures(1, &spritesTexture_);
   glDeleteVertexArrays(1, &vertexArray_);
   glDeleteFramebuffers(1, &scatterFramebuffer_);
   glDeleteFramebuffers(1, &logFramebuffer_);
@@ -148,8 +199,7 @@ FlameFinisher::~FlameFinisher() {
 
 int FlameFinisher::apron(const core::FinishSettings& settings) {
   const int oversample = std::max(1, settings.oversample);
-  const KernelTable kernels = kernelTable(settings.tone, oversample);
-  return kernels.maxRadius() + filterTaps(oversample, settings.filterRadius).taps;
+  return kernelTable(settings.tone, oversample).maxRadius() + filterTaps(oversample, settings.filterRadius).taps;
 }
 
 void FlameFinisher::ensureTarget(GLuint& texture, GLuint& framebuffer, glm::ivec2& allocated, glm::ivec2 size) {
@@ -174,7 +224,7 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
                            GLuint framebuffer) {
   const int oversample = std::max(1, settings.oversample);
   const core::ToneMapSettings& tone = settings.tone;
-  const KernelTable kernels = kernelTable(tone, oversample);
+  const KernelTable& kernels = kernelTable(tone, oversample);
   const bool estimate = kernels.count() > 0;
   const int pad = kernels.maxRadius();
   glDisable(GL_DEPTH_TEST);
@@ -199,22 +249,54 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
     glViewport(0, 0, padded.x, padded.y);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
+    const bool quads = forceQuads_ || static_cast<float>(2 * pad + 1) > maxPointSize_;
+    // The sprite list: room for every pixel, grown only.
+    const std::size_t pixels = static_cast<std::size_t>(source.size.x) * static_cast<std::size_t>(source.size.y);
+    if (pixels > spriteCapacity_) {
+      spriteCapacity_ = pixels;
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, sprites_);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(8 * pixels), nullptr, GL_DYNAMIC_COPY);
+      glBindTexture(GL_TEXTURE_BUFFER, spritesTexture_);
+      glTexBuffer(GL_TEXTURE_BUFFER, GL_RG32UI, sprites_);
+    }
+    const GLuint command[4] = {0, 1, 0, 0};  // no vertices yet, one instance
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, command_);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(command), command, GL_DYNAMIC_COPY);
+    glUseProgram(compactProgram_);
+    glUniform1f(glGetUniformLocation(compactProgram_, "uMaxWidth"), static_cast<float>(kernels.maxWidth));
+    glUniform1f(glGetUniformLocation(compactProgram_, "uMinWidth"), static_cast<float>(kernels.minWidth));
+    glUniform1f(glGetUniformLocation(compactProgram_, "uCurve"), static_cast<float>(kernels.curve));
+    glUniform1i(glGetUniformLocation(compactProgram_, "uKernelCount"), kernels.count());
+    glUniform4fv(glGetUniformLocation(compactProgram_, "uKernels"), kernels.count(), kernels.kernels.data());
+    glUniform1f(glGetUniformLocation(compactProgram_, "uHitsPerUnit"), static_cast<float>(source.hitsPerUnitDensity));
+    glUniform2i(glGetUniformLocation(compactProgram_, "uSize"), source.size.x, source.size.y);
+    glUniform1ui(glGetUniformLocation(compactProgram_, "uVerticesPerSprite"), quads ? 6u : 1u);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, source.density);
+    glUniform1i(glGetUniformLocation(compactProgram_, "uDensity"), 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, command_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, sprites_);
+    glDispatchCompute(static_cast<GLuint>((source.size.x + 7) / 8), static_cast<GLuint>((source.size.y + 7) / 8), 1);
+    // The draw reads the count as its command and the list through a buffer texture.
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+
     const ShaderProgram& p = scatterProgram_;
     glUseProgram(p.id());
     setKernelUniforms(p);
     glUniform2i(p.uniform("uSize"), source.size.x, source.size.y);
-    const bool quads = forceQuads_ || static_cast<float>(2 * pad + 1) > maxPointSize_;
     glUniform1i(p.uniform("uQuads"), quads ? 1 : 0);
     bindTexture(p, "uDensity", 0, source.density);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_BUFFER, spritesTexture_);
+    glUniform1i(p.uniform("uSprites"), 1);
     glEnable(GL_BLEND);
     glBlendEquation(GL_FUNC_ADD);
     glBlendFunc(GL_ONE, GL_ONE);
     glEnable(GL_PROGRAM_POINT_SIZE);
-    const GLsizei pixels = source.size.x * source.size.y;
-    if (quads)
-      glDrawArrays(GL_TRIANGLES, 0, 6 * pixels);
-    else
-      glDrawArrays(GL_POINTS, 0, pixels);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_);
+    glDrawArraysIndirect(quads ? GL_TRIANGLES : GL_POINTS, nullptr);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
     glDisable(GL_PROGRAM_POINT_SIZE);
     glDisable(GL_BLEND);
   }

@@ -1,9 +1,11 @@
 // flam3's finish (core/flame_image.h) on the GPU, so neither the explorer nor an export reads the
 // marched sums back to finish them on the CPU. Three passes, each giving what core::finishImage
 // gives to within float rounding:
-//   1. scatter: density estimation as additive point sprites, one per non-empty pixel whose kernel
-//      is wider than a pixel, into a float target padded by the widest kernel's radius (quads of
-//      six vertices where a kernel is wider than the driver's largest point);
+//   1. scatter: a compute pass lists the non-empty pixels whose kernel is wider than a pixel and
+//      counts them into an indirect draw (so only those reach the vertex stage, and nothing is
+//      read back); density estimation draws them as additive point sprites into a float target
+//      padded by the widest kernel's radius (quads of six vertices where a kernel is wider than
+//      the driver's largest point);
 //   2. fold: the log image, the padding folded onto the image's edge pixels (core piles weight
 //      that falls outside the image on the edge pixel), one-pixel kernels added in place;
 //   3. tone: the spatial filter from the supersampled log image, gamma, vibrancy, highlight power,
@@ -69,6 +71,10 @@ class FlameFinisher {
   ShaderProgram scatterProgram_;
   ShaderProgram foldProgram_;
   ShaderProgram toneProgram_;
+  GLuint compactProgram_ = 0;  // compute: the sprite list and the indirect draw's count
+  GLuint command_ = 0;         // DrawArraysIndirectCommand
+  GLuint sprites_ = 0, spritesTexture_ = 0;
+  std::size_t spriteCapacity_ = 0;  // pixels the sprite list holds
   GLuint vertexArray_ = 0;
   GLuint scatter_ = 0, scatterFramebuffer_ = 0;
   glm::ivec2 scatterSize_{0};

@@ -1,13 +1,12 @@
-// Density estimation, scattered (flame_finisher.h): one vertex per pixel of the density image
-// (from gl_VertexID, no vertex buffer), drawn as a point sprite (or, where the kernel is wider
-// than the driver's points, a quad of six vertices) the size of its kernel, centred on the pixel
-// in a target padded by the widest kernel's radius. Empty pixels and one-pixel kernels are
-// culled: the fold pass adds the latter itself, so most pixels of a dense image cost no sprite.
+// Density estimation, scattered (flame_finisher.h): one sprite per entry of the list that
+// finish_compact.comp.glsl made (pixels whose kernel is wider than a pixel), drawn as a point
+// (or, where the kernel is wider than the driver's points, a quad of six vertices) the size of its
+// kernel, centred on the pixel in a target padded by the widest kernel's radius.
 
 uniform sampler2D uDensity;  // sums: red·D, green·D, blue·D, D
-uniform ivec2 uSize;         // of the density image
-uniform int uPad;            // the widest kernel's radius
-uniform float uHitsPerUnit;
+uniform usamplerBuffer uSprites;
+uniform ivec2 uSize;  // of the density image
+uniform int uPad;     // the widest kernel's radius
 uniform float uBrightness;
 uniform bool uQuads;
 // Per kernel: 1 / width, 1 / (sum of its weights), radius, largest dx² + dy² inside it.
@@ -18,25 +17,12 @@ flat out vec4 vValue;
 flat out vec2 vCentre;
 flat out vec3 vKernel;
 
-void cull() {
-  gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume
-  gl_PointSize = 1.0;
-}
-
 void main() {
-  int id = uQuads ? gl_VertexID / 6 : gl_VertexID;
-  ivec2 p = ivec2(id % uSize.x, id / uSize.x);
+  uvec2 sprite = texelFetch(uSprites, uQuads ? gl_VertexID / 6 : gl_VertexID).xy;
+  ivec2 p = ivec2(int(sprite.x) % uSize.x, int(sprite.x) / uSize.x);
   vec4 sums = texelFetch(uDensity, p, 0);
-  if (sums.a <= 0.0) {
-    cull();
-    return;
-  }
-  vec4 kernel = uKernels[kernelIndex(sums.a * uHitsPerUnit)];
+  vec4 kernel = uKernels[sprite.y];
   int radius = int(kernel.z);
-  if (radius == 0) {
-    cull();
-    return;
-  }
   vValue = sums * logScale(sums.a, uBrightness);
   vKernel = vec3(kernel.x, kernel.y, kernel.w);
   vCentre = vec2(p + uPad) + 0.5;

@@ -102,9 +102,15 @@ void main() {
   float g = 1.0 / uGamma;
   vec3 c = max(v.rgb, vec3(0.0)) * uExposure;
   float density = max(0.0, v.a * uExposure);
-  float alpha = gammaAlpha(density, g, uGammaThreshold);
-  float ls = density > 0.0 ? uVibrancy * alpha / density : 0.0;
-  vec3 color = scaledColor(c, ls, uHighlightPower) + (1.0 - uVibrancy) * pow(c, vec3(g));
+  // An empty pixel (most of a typical frame) is the background: the tone's math gives 0 for it.
+  float alpha = 0.0;
+  vec3 color = vec3(0.0);
+  if (density > 0.0 || any(greaterThan(c, vec3(0.0)))) {
+    alpha = gammaAlpha(density, g, uGammaThreshold);
+    float ls = density > 0.0 ? uVibrancy * alpha / density : 0.0;
+    color = scaledColor(c, ls, uHighlightPower);
+    if (uVibrancy != 1.0) color += (1.0 - uVibrancy) * pow(c, vec3(g));
+  }
   color += (1.0 - min(alpha, 1.0)) * uBackground;
   if (uOverlayMode == 1) {
     color += uOverlayStrength * overlayAt(pixel).rgb;
