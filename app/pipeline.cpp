@@ -168,10 +168,15 @@ struct FrameRenderer::Impl {
   bool meshUploaded = false;
   std::uint64_t points = 0;
   int threads = 0;
+  bool keepSums = false;
 };
 
 FrameRenderer::FrameRenderer() : impl_(std::make_unique<Impl>()) {}
 FrameRenderer::~FrameRenderer() = default;
+
+void FrameRenderer::keepSums(bool keep) {
+  impl_->keepSums = keep;
+}
 
 const std::string& FrameRenderer::rendererName() const {
   return impl_->name;
@@ -238,8 +243,12 @@ FrameRenderer::Rendered FrameRenderer::renderWithStats(const core::Scene& scene,
   finish.oversample = oversample;
   finish.filterRadius = scene.render.filterRadius;
   finish.linearOutput = linearOutput;
-  core::FinishedImage finished = core::finishImage(density, finish, &mesh);
+  core::FinishedImage finished = gl::finishImageOnGpu(d.renderer.finisher(), density, finish, &mesh);
   Rendered result;
+  if (d.keepSums) {
+    result.density = density;
+    result.mesh = mesh;
+  }
   result.coverage = core::silhouetteCoverage(finished, mesh);
   result.pointsProjected = pointsProjected;
   result.image = std::move(finished.image);

@@ -12,6 +12,7 @@
 
 #include "core/accumulator.h"
 #include "core/error.h"
+#include "core/flame_image.h"
 #include "core/image_io.h"
 #include "core/inside_mask.h"
 #include "core/packed_volume.h"
@@ -114,7 +115,12 @@ class FrameRenderer {
     core::ImageRGBA image;
     double coverage = 0.0;              // share of the mesh's silhouette where the pattern shows
     std::uint64_t pointsProjected = 0;  // points method: the points drawn (the grid pass took fewer)
+    // With keepSums(true): what the image was finished from (the supersampled sums and the mesh
+    // layer at the output size), so tests can hold the GPU's finish to core::finishImage.
+    core::DensityImage density;
+    core::MeshOverlay mesh;
   };
+  void keepSums(bool keep);
   Rendered renderWithStats(const core::Scene& scene, int width, int height, bool linearOutput,
                            const std::function<void(double)>& progress = {});
   core::ImageRGBA render(const core::Scene& scene, int width, int height, bool linearOutput,

@@ -140,6 +140,27 @@ TEST_F(LiveViewTest, AnEditReachesTheScreenTaggedWithItsPost) {
   EXPECT_FALSE(frame(view).patternPosted);
 }
 
+TEST_F(LiveViewTest, LiveFramesReadNothingBack) {
+  // The finish runs on the GPU: a frame that marches, finishes and draws (with the mesh ghost and
+  // silhouette, and after a tone edit) never waits for the GPU to hand pixels back.
+  app::LiveView view(session, nullptr, nullptr);
+  frame(view);
+  ASSERT_TRUE(runUntilShown(view));
+  const std::uint64_t before = gl::readBackCount();
+  int drawn = 0;
+  for (int i = 0; i < 12; ++i) {
+    if (i == 4) state.scene.render.meshDisplay = core::MeshDisplay::Ghost;
+    if (i == 8) state.scene.render.meshDisplay = core::MeshDisplay::Silhouette;
+    if (i == 10) state.scene.tone.gamma += 0.3;
+    drawn += frame(view).volumeDrawn ? 1 : 0;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  EXPECT_GT(drawn, 0);
+  EXPECT_EQ(gl::readBackCount(), before) << "a live frame read pixels back";
+  EXPECT_GT(canvas.brightest(), 0);
+  EXPECT_EQ(gl::readBackCount(), before + 1) << "the counter counts a read-back";
+}
+
 TEST_F(LiveViewTest, SamplesRestartForTheCameraButNotForTheTone) {
   app::LiveView view(session, nullptr, nullptr);
   frame(view);

@@ -1,14 +1,18 @@
 #include "read_back.h"
 
 #include <algorithm>
+#include <atomic>
 
 namespace voxflame::gl {
 
 namespace {
 
+std::atomic<std::uint64_t> readBacks{0};
+
 template <typename T>
 std::vector<T> readRgba(GLuint framebuffer, PixelRegion region, GLenum type, T opaque, ReadAlpha alpha) {
   if (region.width <= 0 || region.height <= 0) return {};
+  readBacks.fetch_add(1, std::memory_order_relaxed);
   const std::size_t row = 4 * static_cast<std::size_t>(region.width);
   std::vector<T> pixels(row * static_cast<std::size_t>(region.height));
   GLint previousFramebuffer = 0, previousAlignment = 4;
@@ -37,6 +41,10 @@ std::vector<float> readRgbaFloat(GLuint framebuffer, PixelRegion region, ReadAlp
 
 std::vector<std::uint8_t> readRgba8(GLuint framebuffer, PixelRegion region, ReadAlpha alpha) {
   return readRgba<std::uint8_t>(framebuffer, region, GL_UNSIGNED_BYTE, 255, alpha);
+}
+
+std::uint64_t readBackCount() {
+  return readBacks.load(std::memory_order_relaxed);
 }
 
 }  // namespace voxflame::gl

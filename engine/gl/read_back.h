@@ -1,6 +1,7 @@
 // Reading pixels back from GL. GL numbers rows from the bottom; everything else in voxflame
 // (core::ImageRGBA, core::DensityImage, thumbnails, image files) runs top to bottom, so this is
-// the one place that reads a framebuffer and turns its rows over.
+// the one place that reads a framebuffer and turns its rows over. Every read-back in engine/gl
+// and app goes through it, so readBackCount() tells a test whether a path stalls on one.
 #pragma once
 
 #include <epoxy/gl.h>
@@ -30,5 +31,9 @@ enum class ReadAlpha {
 // GL_PACK_ALIGNMENT it found; must run on the thread that owns the context.
 std::vector<float> readRgbaFloat(GLuint framebuffer, PixelRegion region, ReadAlpha alpha = ReadAlpha::Keep);
 std::vector<std::uint8_t> readRgba8(GLuint framebuffer, PixelRegion region, ReadAlpha alpha = ReadAlpha::Keep);
+
+// Read-backs made so far in this process (each readRgbaFloat or readRgba8 of a non-empty region).
+// A read-back waits for the GPU to finish: the explorer's frames must make none.
+std::uint64_t readBackCount();
 
 }  // namespace voxflame::gl

@@ -73,6 +73,7 @@ FrameTarget::~FrameTarget() {
   glDeleteTextures(1, &meshLayer_);
   glDeleteRenderbuffers(1, &meshDepth_);
   glDeleteTextures(1, &finished_);
+  glDeleteFramebuffers(1, &finishedFramebuffer_);
 }
 
 core::DensityImage FrameTarget::readDensity() const {
@@ -131,7 +132,8 @@ void FrameTarget::resize(int width, int height) {
 VolumeRenderer::VolumeRenderer()
     : marchProgram_(embeddedShader("fullscreen.vert.glsl"), embeddedShader("march.frag.glsl")),
       blitProgram_(embeddedShader("fullscreen.vert.glsl"), embeddedShader("blit.frag.glsl")),
-      meshProgram_(embeddedShader("mesh.vert.glsl"), embeddedShader("mesh.frag.glsl")) {
+      meshProgram_(embeddedShader("mesh.vert.glsl"), embeddedShader("mesh.frag.glsl")),
+      finisher_() {
   glGenVertexArrays(1, &vertexArray_);
   for (Slot& slot : slots_) {
     slot.volume = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
@@ -414,27 +416,38 @@ core::FinishSettings finishSettings(const RenderSettings& settings, bool linearO
 void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& settings, glm::ivec4 viewport,
                              bool linearOutput) {
   // The picture goes to the framebuffer bound on entry (the window's, or an offscreen one); the
-  // read-backs below bind others.
+  // finish below binds others.
   GLint output = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &output);
   const bool withMesh = meshIndexCount_ > 0 && settings.render.meshDisplay != core::MeshDisplay::Off;
   const std::string key = finishKey(settings, linearOutput, withMesh);
-  if (!target.finished_) target.finished_ = makeTexture(GL_TEXTURE_2D, GL_LINEAR);
-  if (target.finishedRevision_ != target.revision_ || target.finishedKey_ != key) {
-    const core::DensityImage density = target.readDensity();
-    core::MeshOverlay overlay;
-    if (withMesh) overlay = target.readMeshOverlay(settings);
-    const core::FinishedImage finished =
-        core::finishImage(density, finishSettings(settings, linearOutput, 1), withMesh ? &overlay : nullptr);
-    // Rows back to GL's bottom-to-top order.
-    std::vector<float> rows(finished.image.pixels.size());
-    const std::size_t row = 4 * static_cast<std::size_t>(finished.image.width);
-    for (int y = 0; y < finished.image.height; ++y)
-      std::copy_n(finished.image.at(0, finished.image.height - 1 - y), row, &rows[static_cast<std::size_t>(y) * row]);
+  const glm::ivec2 size(target.width_, target.height_);
+  if (!target.finished_ || target.finishedSize_ != size) {
+    if (!target.finished_) {
+      target.finished_ = makeTexture(GL_TEXTURE_2D, GL_LINEAR);
+      glGenFramebuffers(1, &target.finishedFramebuffer_);
+    }
     glBindTexture(GL_TEXTURE_2D, target.finished_);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, finished.image.width, finished.image.height, 0, GL_RGBA, GL_FLOAT,
-                 rows.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+    glBindFramebuffer(GL_FRAMEBUFFER, target.finishedFramebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.finished_, 0);
+    target.finishedSize_ = size;
+    target.finishedRevision_ = ~std::uint64_t{0};
+  }
+  if (target.finishedRevision_ != target.revision_ || target.finishedKey_ != key) {
+    // Straight from the target's textures: the whole image, no apron needed.
+    FinishSource source;
+    source.density = target.radiance_;
+    source.size = size;
+    source.fullSize = size;
+    source.hitsPerUnitDensity = target.hitsPerUnitDensity_;
+    OverlayStyle style;
+    if (withMesh) {
+      source.overlay = target.meshLayer_;
+      style = {settings.render.meshDisplay, settings.render.meshColor, settings.render.meshStrength};
+    }
+    finisher_.finish(source, finishSettings(settings, linearOutput, 1), style, glm::ivec2(0), size,
+                     target.finishedFramebuffer_);
     target.finishedRevision_ = target.revision_;
     target.finishedKey_ = key;
   }
@@ -573,7 +586,7 @@ core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& se
                               bool linearOutput, int maxTile, const std::function<void(double)>& progress) {
   const MarchedImage marched = marchImage(renderer, settings, width, height, maxTile, progress);
   core::FinishSettings finish = finishSettings(settings, linearOutput, std::clamp(settings.render.oversample, 1, 4));
-  return core::finishImage(marched.density, finish, &marched.mesh).image;
+  return finishImageOnGpu(renderer.finisher(), marched.density, finish, &marched.mesh, maxTile).image;
 }
 
 }  // namespace voxflame::gl

@@ -1,13 +1,15 @@
 // Ray-marches the accumulated voxel grid in a fragment shader, then finishes each pixel the way
-// flam3 does, in two passes:
+// flam3 does, in two passes, both on the GPU:
 //   1. march: emission–absorption on raw density between the ray's entry into and exit from the
 //      grid box: each pixel sums the density it sees (D) and the colour it carries, dimmed by the
 //      density in front of it. A jittered start per pixel, early termination and leaps over empty
 //      bricks. Sub-samples (jittered rays) are averaged into a float FrameTarget, so the explorer
 //      refines its image over frames and exports average S samples.
-//   2. resolve: the target's sums go through flame_image.h (log density, density estimation,
-//      spatial filter, gamma, vibrancy, highlight power, background, mesh overlay) and the result
-//      is drawn into whatever framebuffer is bound. Changing tone never re-marches.
+//   2. resolve: the target's sums are finished by FlameFinisher (flame_finisher.h: log density,
+//      density estimation, spatial filter, gamma, vibrancy, highlight power, background, mesh
+//      overlay) straight from the target's textures, and the result is drawn into whatever
+//      framebuffer is bound. Nothing is read back, so a live frame never waits for the GPU.
+//      Changing tone never re-marches.
 // The same code draws the explorer window and offline exports. Main (GL) thread only.
 #pragma once
 
@@ -24,6 +26,7 @@
 #include "core/packed_volume.h"
 #include "core/scene.h"
 #include "core/shadow_volume.h"
+#include "flame_finisher.h"
 #include "shader_program.h"
 
 namespace voxflame::gl {
@@ -49,7 +52,7 @@ class FrameTarget {
   int height() const { return height_; }
   int samples = 0;  // sub-samples accumulated so far
 
-  // The sums read back (rows top to bottom), for tests and exports.
+  // The sums read back (rows top to bottom), for tests and exports (gl/read_back.h counts it).
   core::DensityImage readDensity() const;
   // The mesh layer read back as an overlay at this target's size.
   core::MeshOverlay readMeshOverlay(const RenderSettings& settings) const;
@@ -62,7 +65,8 @@ class FrameTarget {
   std::uint64_t revision_ = 0;       // bumped by every march, mesh draw and resize
   double hitsPerUnitDensity_ = 1.0;  // of the last march
   // The finished image last resolved, and what it was made from, so an unchanged frame is only drawn.
-  mutable GLuint finished_ = 0;
+  mutable GLuint finished_ = 0, finishedFramebuffer_ = 0;
+  mutable glm::ivec2 finishedSize_{0};
   mutable std::uint64_t finishedRevision_ = ~std::uint64_t{0};
   mutable std::string finishedKey_;
 };
@@ -108,11 +112,14 @@ class VolumeRenderer {
   // `always` draws it even when the settings show no mesh (for the silhouette coverage).
   void drawMesh(FrameTarget& target, const RenderSettings& settings, glm::ivec4 tile = glm::ivec4(0, 0, 0, 0),
                 bool always = false);
-  // Finishes `target` (flame_image.h, with the settings' tone and filter; no supersampling) and
-  // draws it into the bound framebuffer's viewport (x, y, w, h). `linearOutput` skips the display
-  // encoding and clamping (for EXR). An unchanged target and settings are only drawn again.
+  // Finishes `target` on the GPU (flame_finisher.h, with the settings' tone and filter; no
+  // supersampling) and draws it into the bound framebuffer's viewport (x, y, w, h). `linearOutput`
+  // skips the display encoding and clamping (for EXR). An unchanged target and settings are only
+  // drawn again. Reads nothing back.
   void resolve(const FrameTarget& target, const RenderSettings& settings, glm::ivec4 viewport, bool linearOutput);
   bool hasMesh() const { return meshIndexCount_ > 0; }
+  // The GPU finish this renderer resolves with, for the still methods' sums (finishImageOnGpu).
+  FlameFinisher& finisher() { return finisher_; }
 
  private:
   glm::dmat4 tileProjection(const RenderSettings& settings, glm::ivec4 tile, int width, int height,
@@ -142,6 +149,7 @@ class VolumeRenderer {
   ShaderProgram marchProgram_;
   ShaderProgram blitProgram_;
   ShaderProgram meshProgram_;
+  FlameFinisher finisher_;
   GLuint vertexArray_ = 0;
   Slot slots_[2];
   int marched_ = kMain;
@@ -175,8 +183,9 @@ MarchedImage marchImage(VolumeRenderer& renderer, const RenderSettings& settings
 core::MeshOverlay renderMeshOverlay(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
                                     int maxTile = kDefaultMaxTile);
 
-// marchImage, then flame_image.h's finish with the settings' tone, oversample and filter. Rows top
-// to bottom; display-encoded in [0, 1], or linear light when `linearOutput`.
+// marchImage, then flame_image.h's finish on the GPU (finishImageOnGpu) with the settings' tone,
+// oversample and filter. Rows top to bottom; display-encoded in [0, 1], or linear light when
+// `linearOutput`.
 core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
                               bool linearOutput = false, int maxTile = kDefaultMaxTile,
                               const std::function<void(double)>& progress = {});

@@ -1,0 +1,459 @@
+#include "flame_finisher.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "read_back.h"
+
+namespace voxflame::gl {
+
+namespace {
+
+// Must match the shaders' array sizes.
+constexpr int kMaxKernels = 192;
+constexpr int kMaxTaps = 128;
+constexpr double kGaussianSupport = 1.5;  // flam3's Gaussian support (core/flame_image.cpp)
+constexpr double kKernelStep = 1.04;      // the estimator's width quantisation (core/flame_image.cpp)
+
+double gaussian(double x) {
+  return std::exp(-2.0 * x * x);
+}
+
+// The estimator's kernel table as core::estimateDensity's KernelTable builds it: per kernel
+// (1 / width, 1 / sum of weights, radius, largest dx² + dy² inside the disc).
+struct KernelTable {
+  double maxWidth = 1.0, minWidth = 1.0, curve = 1.0;
+  std::vector<float> kernels;  // 4 per kernel
+  int count() const { return static_cast<int>(kernels.size() / 4); }
+  int maxRadius() const { return kernels.empty() ? 0 : static_cast<int>(kernels[2]); }
+};
+
+KernelTable makeKernelTable(const core::ToneMapSettings& tone, int oversample) {
+  KernelTable table;
+  if (tone.estimatorRadius <= 0.0) return table;
+  table.maxWidth = tone.estimatorRadius * oversample + 1.0;
+  table.minWidth = std::min(tone.estimatorMinimum * oversample + 1.0, table.maxWidth);
+  table.curve = std::max(tone.estimatorCurve, 1e-3);
+  const int count =
+      std::min(kMaxKernels,
+               static_cast<int>(std::lround(std::log(table.maxWidth / table.minWidth) / std::log(kKernelStep))) + 1);
+  for (int i = 0; i < count; ++i) {
+    const double width = table.maxWidth / std::pow(kKernelStep, i);
+    const int radius = static_cast<int>(std::floor(width));
+    double sum = 0.0;
+    int largest = 0;
+    for (int dy = -radius; dy <= radius; ++dy)
+      for (int dx = -radius; dx <= radius; ++dx) {
+        const double d = std::sqrt(static_cast<double>(dx * dx + dy * dy)) / width;
+        if (d > 1.0) continue;
+        sum += gaussian(kGaussianSupport * d);
+        largest = std::max(largest, dx * dx + dy * dy);
+      }
+    table.kernels.insert(table.kernels.end(), {static_cast<float>(1.0 / width), static_cast<float>(1.0 / sum),
+                                               static_cast<float>(radius), static_cast<float>(largest)});
+  }
+  return table;
+}
+
+// The table of the last settings: a live frame finishes with the same ones as the frame before,
+// and a wide table (radius 20 at oversample 4) costs milliseconds to build.
+const KernelTable& kernelTable(const core::ToneMapSettings& tone, int oversample) {
+  thread_local KernelTable table;
+  thread_local std::array<double, 4> key{-1.0, -1.0, -1.0, -1.0};
+  const std::array<double, 4> wanted{tone.estimatorRadius, tone.estimatorMinimum, tone.estimatorCurve,
+                                     static_cast<double>(oversample)};
+  if (wanted != key) {
+    table = makeKernelTable(tone, oversample);
+    key = wanted;
+  }
+  return table;
+}
+
+// flam3's spatial filter as core::spatialFilter builds it, as 1D weights whose products are its
+// normalised 2D ones (the 2D Gaussian is separable and so is its sum).
+struct FilterTaps {
+  int taps = 1;
+  int offset = 0;
+  std::vector<float> weights;
+};
+
+FilterTaps filterTaps(int oversample, double radius) {
+  FilterTaps f;
+  const double fw = 2.0 * kGaussianSupport * oversample * std::max(0.0, radius);
+  f.taps = static_cast<int>(fw) + 1;
+  if ((f.taps ^ oversample) & 1) ++f.taps;
+  if (f.taps > kMaxTaps) throw core::Error("the spatial filter is too wide: lower filter_radius or the oversample");
+  const double adjust = fw > 0.0 ? kGaussianSupport * f.taps / fw : 1.0;
+  double sum = 0.0;
+  std::vector<double> w(static_cast<std::size_t>(f.taps));
+  for (int i = 0; i < f.taps; ++i) {
+    const double x = ((2.0 * i + 1.0) / f.taps - 1.0) * adjust;
+    w[static_cast<std::size_t>(i)] = fw > 0.0 ? gaussian(x) : 1.0;
+    sum += w[static_cast<std::size_t>(i)];
+  }
+  for (double v : w) f.weights.push_back(static_cast<float>(v / sum));
+  f.offset = (f.taps - oversample) / 2;
+  return f;
+}
+
+GLuint makeTexture() {
+  GLuint texture = 0;
+  glGenTextures(1, &texture);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  // texelFetch only, but the texture must be complete: no mipmaps.
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return texture;
+}
+
+void bindTexture(const ShaderProgram& program, const char* name, int unit, GLuint texture) {
+  glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glUniform1i(program.uniform(name), unit);
+}
+
+// The finishing shaders share finish_common.glsl, put after the version line.
+ShaderSource withCommon(const ShaderSource& shader) {
+  const ShaderSource common = embeddedShader("finish_common.glsl");
+  return {shader.file, "#version 430 core\n" + common.text + "\n#line 1\n" + shader.text};
+}
+
+// A compute program; compile and link errors become core::Error naming the file, as
+// ShaderProgram's do.
+GLuint computeProgram(const ShaderSource& source) {
+  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  const char* text = source.text.c_str();
+  glShaderSource(shader, 1, &text, nullptr);
+  glCompileShader(shader);
+  GLint ok = GL_FALSE;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  std::string log(4096, '\0');
+  if (!ok) {
+    glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    glDeleteShader(shader);
+    throw core::Error(source.file + ": compute shader failed to compile: " + log.c_str());
+  }
+  const GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glLinkProgram(program);
+  glDeleteShader(shader);
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    glDeleteProgram(program);
+    throw core::Error(source.file + ": failed to link: " + log.c_str());
+  }
+  return program;
+}
+
+glm::vec3 displayEncode(glm::vec3 linear, double gamma) {
+  return glm::pow(glm::max(linear, glm::vec3(0.0f)), glm::vec3(static_cast<float>(1.0 / gamma)));
+}
+
+int glImageLimit() {
+  GLint maxTexture = 0, maxRenderbuffer = 0, maxViewport[2] = {0, 0};
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, maxViewport);
+  return std::min({maxTexture, maxRenderbuffer, maxViewport[0], maxViewport[1]});
+}
+
+}  // namespace
+
+FlameFinisher::FlameFinisher()
+    : scatterProgram_(withCommon(embeddedShader("finish_scatter.vert.glsl")),
+                      embeddedShader("finish_scatter.frag.glsl")),
+      foldProgram_(embeddedShader("fullscreen.vert.glsl"), withCommon(embeddedShader("finish_fold.frag.glsl"))),
+      toneProgram_(embeddedShader("fullscreen.vert.glsl"), withCommon(embeddedShader("finish_tone.frag.glsl"))) {
+  compactProgram_ = computeProgram(withCommon(embeddedShader("finish_compact.comp.glsl")));
+  glGenBuffers(1, &command_);
+  glGenBuffers(1, &sprites_);
+  glGenTextures(1, &spritesTexture_);
+  glGenVertexArrays(1, &vertexArray_);
+  GLfloat range[2] = {1.0f, 1.0f};
+  glGetFloatv(GL_POINT_SIZE_RANGE, range);
+  maxPointSize_ = range[1];
+  emptyOverlay_ = makeTexture();
+  const float nothing[4] = {0.0f, 0.0f, 0.0f, 0.0f};
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 1, 1, 0, GL_RGBA, GL_FLOAT, nothing);
+}
+
+FlameFinisher::~FlameFinisher() {
+  glDeleteProgram(compactProgram_);
+  glDeleteBuffers(1, &command_);
+  glDeleteBuffers(1, &sprites_);
+  glDeleteTextures(1, &spritesTexture_);
+  glDeleteVertexArrays(1, &vertexArray_);
+  glDeleteFramebuffers(1, &scatterFramebuffer_);
+  glDeleteFramebuffers(1, &logFramebuffer_);
+  glDeleteTextures(1, &scatter_);
+  glDeleteTextures(1, &log_);
+  glDeleteTextures(1, &emptyOverlay_);
+}
+
+int FlameFinisher::apron(const core::FinishSettings& settings) {
+  const int oversample = std::max(1, settings.oversample);
+  return kernelTable(settings.tone, oversample).maxRadius() + filterTaps(oversample, settings.filterRadius).taps;
+}
+
+void FlameFinisher::ensureTarget(GLuint& texture, GLuint& framebuffer, glm::ivec2& allocated, glm::ivec2 size) {
+  if (texture && allocated == size) return;
+  if (!texture) {
+    texture = makeTexture();
+    glGenFramebuffers(1, &framebuffer);
+  }
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+  const bool complete = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+  allocated = size;
+  if (!complete)
+    throw core::Error("could not make a float image of " + std::to_string(size.x) + "×" + std::to_string(size.y) +
+                      " pixels to finish the picture in");
+}
+
+void FlameFinisher::finish(const FinishSource& source, const core::FinishSettings& settings,
+                           const OverlayStyle& overlay, glm::ivec2 outputOrigin, glm::ivec2 outputSize,
+                           GLuint framebuffer) {
+  const int oversample = std::max(1, settings.oversample);
+  const core::ToneMapSettings& tone = settings.tone;
+  const KernelTable& kernels = kernelTable(tone, oversample);
+  const bool estimate = kernels.count() > 0;
+  const int pad = kernels.maxRadius();
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
+  glBindVertexArray(vertexArray_);
+
+  // 1. Scatter.
+  auto setKernelUniforms = [&](const ShaderProgram& p) {
+    glUniform1f(p.uniform("uMaxWidth"), static_cast<float>(kernels.maxWidth));
+    glUniform1f(p.uniform("uMinWidth"), static_cast<float>(kernels.minWidth));
+    glUniform1f(p.uniform("uCurve"), static_cast<float>(kernels.curve));
+    glUniform1i(p.uniform("uKernelCount"), std::max(kernels.count(), 1));
+    if (estimate) glUniform4fv(p.uniform("uKernels"), kernels.count(), kernels.kernels.data());
+    glUniform1f(p.uniform("uHitsPerUnit"), static_cast<float>(source.hitsPerUnitDensity));
+    glUniform1f(p.uniform("uBrightness"), static_cast<float>(tone.brightness));
+    glUniform1i(p.uniform("uPad"), pad);
+  };
+  if (estimate) {
+    const glm::ivec2 padded = source.size + 2 * pad;
+    ensureTarget(scatter_, scatterFramebuffer_, scatterSize_, padded);
+    glBindFramebuffer(GL_FRAMEBUFFER, scatterFramebuffer_);
+    glViewport(0, 0, padded.x, padded.y);
+    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    const bool quads = forceQuads_ || static_cast<float>(2 * pad + 1) > maxPointSize_;
+    // The sprite list: room for every pixel, grown only.
+    const std::size_t pixels = static_cast<std::size_t>(source.size.x) * static_cast<std::size_t>(source.size.y);
+    if (pixels > spriteCapacity_) {
+      spriteCapacity_ = pixels;
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, sprites_);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(8 * pixels), nullptr, GL_DYNAMIC_COPY);
+      glBindTexture(GL_TEXTURE_BUFFER, spritesTexture_);
+      glTexBuffer(GL_TEXTURE_BUFFER, GL_RG32UI, sprites_);
+    }
+    const GLuint command[4] = {0, 1, 0, 0};  // no vertices yet, one instance
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, command_);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(command), command, GL_DYNAMIC_COPY);
+    glUseProgram(compactProgram_);
+    glUniform1f(glGetUniformLocation(compactProgram_, "uMaxWidth"), static_cast<float>(kernels.maxWidth));
+    glUniform1f(glGetUniformLocation(compactProgram_, "uMinWidth"), static_cast<float>(kernels.minWidth));
+    glUniform1f(glGetUniformLocation(compactProgram_, "uCurve"), static_cast<float>(kernels.curve));
+    glUniform1i(glGetUniformLocation(compactProgram_, "uKernelCount"), kernels.count());
+    glUniform4fv(glGetUniformLocation(compactProgram_, "uKernels"), kernels.count(), kernels.kernels.data());
+    glUniform1f(glGetUniformLocation(compactProgram_, "uHitsPerUnit"), static_cast<float>(source.hitsPerUnitDensity));
+    glUniform2i(glGetUniformLocation(compactProgram_, "uSize"), source.size.x, source.size.y);
+    glUniform1ui(glGetUniformLocation(compactProgram_, "uVerticesPerSprite"), quads ? 6u : 1u);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, source.density);
+    glUniform1i(glGetUniformLocation(compactProgram_, "uDensity"), 0);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, command_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, sprites_);
+    glDispatchCompute(static_cast<GLuint>((source.size.x + 7) / 8), static_cast<GLuint>((source.size.y + 7) / 8), 1);
+    // The draw reads the count as its command and the list through a buffer texture.
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+
+    const ShaderProgram& p = scatterProgram_;
+    glUseProgram(p.id());
+    setKernelUniforms(p);
+    glUniform2i(p.uniform("uSize"), source.size.x, source.size.y);
+    glUniform1i(p.uniform("uQuads"), quads ? 1 : 0);
+    bindTexture(p, "uDensity", 0, source.density);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_BUFFER, spritesTexture_);
+    glUniform1i(p.uniform("uSprites"), 1);
+    glEnable(GL_BLEND);
+    glBlendEquation(GL_FUNC_ADD);
+    glBlendFunc(GL_ONE, GL_ONE);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, command_);
+    glDrawArraysIndirect(quads ? GL_TRIANGLES : GL_POINTS, nullptr);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    glDisable(GL_PROGRAM_POINT_SIZE);
+    glDisable(GL_BLEND);
+  }
+
+  // 2. Fold: the log image of the whole source region.
+  {
+    ensureTarget(log_, logFramebuffer_, logSize_, source.size);
+    glBindFramebuffer(GL_FRAMEBUFFER, logFramebuffer_);
+    glViewport(0, 0, source.size.x, source.size.y);
+    const ShaderProgram& p = foldProgram_;
+    glUseProgram(p.id());
+    setKernelUniforms(p);
+    glUniform1i(p.uniform("uEstimate"), estimate ? 1 : 0);
+    glUniform2i(p.uniform("uOrigin"), source.origin.x, source.origin.y);
+    glUniform2i(p.uniform("uFullSize"), source.fullSize.x, source.fullSize.y);
+    bindTexture(p, "uDensity", 0, source.density);
+    bindTexture(p, "uScatter", 1, estimate ? scatter_ : emptyOverlay_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+
+  // 3. Filter and tone into the caller's framebuffer.
+  {
+    const FilterTaps filter = filterTaps(oversample, settings.filterRadius);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    glViewport(0, 0, outputSize.x, outputSize.y);
+    const ShaderProgram& p = toneProgram_;
+    glUseProgram(p.id());
+    bindTexture(p, "uLog", 1, log_);
+    glUniform2i(p.uniform("uLogOrigin"), source.origin.x, source.origin.y);
+    glUniform2i(p.uniform("uFullSize"), source.fullSize.x, source.fullSize.y);
+    glUniform2i(p.uniform("uOutOrigin"), outputOrigin.x, outputOrigin.y);
+    glUniform2i(p.uniform("uOutFullSize"), source.fullSize.x / oversample, source.fullSize.y / oversample);
+    glUniform1i(p.uniform("uOversample"), oversample);
+    glUniform1i(p.uniform("uTaps"), filter.taps);
+    glUniform1i(p.uniform("uTapOffset"), filter.offset);
+    glUniform1fv(p.uniform("uFilter"), filter.taps, filter.weights.data());
+    glUniform1f(p.uniform("uGamma"), static_cast<float>(tone.gamma));
+    glUniform1f(p.uniform("uGammaThreshold"), static_cast<float>(tone.gammaThreshold));
+    glUniform1f(p.uniform("uVibrancy"), static_cast<float>(tone.vibrancy));
+    glUniform1f(p.uniform("uHighlightPower"), static_cast<float>(tone.highlightPower));
+    glUniform1f(p.uniform("uExposure"), static_cast<float>(std::exp2(tone.exposure)));
+    glUniform1f(p.uniform("uContrast"), static_cast<float>(tone.contrast));
+    const glm::vec3 background = displayEncode(glm::vec3(tone.background), tone.gamma);
+    glUniform3f(p.uniform("uBackground"), background.r, background.g, background.b);
+    glUniform1i(p.uniform("uLinearOutput"), settings.linearOutput ? 1 : 0);
+    const bool withOverlay = source.overlay != 0 && overlay.mode != core::MeshDisplay::Off;
+    glUniform1i(p.uniform("uOverlayMode"), !withOverlay ? 0 : overlay.mode == core::MeshDisplay::Ghost ? 1 : 2);
+    bindTexture(p, "uOverlay", 2, withOverlay ? source.overlay : emptyOverlay_);
+    glUniform2i(p.uniform("uOverlayOrigin"), source.overlayOrigin.x, source.overlayOrigin.y);
+    glUniform1f(p.uniform("uOverlayStrength"), static_cast<float>(overlay.strength));
+    const glm::vec3 line = displayEncode(overlay.color, tone.gamma);
+    glUniform3f(p.uniform("uLineColor"), line.r, line.g, line.b);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+  }
+  glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE0);
+}
+
+core::FinishedImage finishImageOnGpu(FlameFinisher& finisher, const core::DensityImage& density,
+                                     const core::FinishSettings& settings, const core::MeshOverlay* overlay,
+                                     int maxTile) {
+  const int oversample = std::max(1, settings.oversample);
+  if (density.width % oversample || density.height % oversample)
+    throw core::Error("the density image is not a whole number of supersampled pixels");
+  const int width = density.width / oversample, height = density.height / oversample;
+  core::FinishedImage result;
+  result.image.width = width;
+  result.image.height = height;
+  result.image.pixels.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 1.0f);
+  result.alpha.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
+  if (width == 0 || height == 0) return result;
+  const bool useOverlay = overlay && overlay->mode != core::MeshDisplay::Off && overlay->width == width &&
+                          overlay->height == height && !overlay->rgba.empty();
+  OverlayStyle style;
+  if (useOverlay) style = {overlay->mode, overlay->color, overlay->strength};
+
+  // Output tiles whose sources (the tile, its apron and the scatter's padding) fit the GL's limits.
+  const int apron = FlameFinisher::apron(settings);
+  const int limit = glImageLimit();
+  const int pad = apron;  // the scatter pads by the widest kernel, less than the apron
+  int tile = std::max(16, (std::min(maxTile, limit) - 2 * apron) / oversample);
+  tile = std::max(1, std::min(tile, (limit - 2 * apron - 2 * pad) / oversample));
+
+  GLuint densityTexture = 0, overlayTexture = 0, outputTexture = 0, outputFramebuffer = 0;
+  std::vector<float> rows;
+  auto upload = [&rows](GLuint& texture, const float* pixels, int imageWidth, int imageHeight, glm::ivec2 lo,
+                        glm::ivec2 hi) {
+    // GL's rows run bottom to top: GL row y is the image's row imageHeight - 1 - y.
+    const int w = hi.x - lo.x, h = hi.y - lo.y;
+    rows.resize(4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+    for (int y = 0; y < h; ++y)
+      std::copy_n(pixels + 4 * (static_cast<std::size_t>(imageHeight - 1 - (lo.y + y)) * imageWidth + lo.x),
+                  4 * static_cast<std::size_t>(w), &rows[4 * static_cast<std::size_t>(y) * w]);
+    if (!texture) texture = makeTexture();
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, rows.data());
+  };
+  try {
+    for (int oy = 0; oy < height; oy += tile)
+      for (int ox = 0; ox < width; ox += tile) {
+        const glm::ivec2 outLo(ox, oy), outHi(std::min(width, ox + tile), std::min(height, oy + tile));
+        const glm::ivec2 outSize = outHi - outLo;
+        FinishSource source;
+        const glm::ivec2 lo = glm::max(outLo * oversample - apron, glm::ivec2(0));
+        const glm::ivec2 hi = glm::min(outHi * oversample + apron, glm::ivec2(density.width, density.height));
+        upload(densityTexture, density.values.data(), density.width, density.height, lo, hi);
+        source.density = densityTexture;
+        source.origin = lo;
+        source.size = hi - lo;
+        source.fullSize = glm::ivec2(density.width, density.height);
+        source.hitsPerUnitDensity = density.hitsPerUnitDensity;
+        if (useOverlay) {
+          // The silhouette's edge looks one pixel around.
+          const glm::ivec2 overlayLo = glm::max(outLo - 1, glm::ivec2(0));
+          const glm::ivec2 overlayHi = glm::min(outHi + 1, glm::ivec2(width, height));
+          upload(overlayTexture, overlay->rgba.data(), width, height, overlayLo, overlayHi);
+          source.overlay = overlayTexture;
+          source.overlayOrigin = overlayLo;
+        }
+        if (!outputTexture) {
+          outputTexture = makeTexture();
+          glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, std::min(tile, width), std::min(tile, height), 0, GL_RGBA,
+                       GL_FLOAT, nullptr);
+          glGenFramebuffers(1, &outputFramebuffer);
+          glBindFramebuffer(GL_FRAMEBUFFER, outputFramebuffer);
+          glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, outputTexture, 0);
+          if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw core::Error("could not make a float image to finish the picture in");
+        }
+        finisher.finish(source, settings, style, outLo, outSize, outputFramebuffer);
+        const std::vector<float> pixels = readRgbaFloat(outputFramebuffer, {0, 0, outSize.x, outSize.y});
+        // Tile row t (top first) is GL row outHi.y - 1 - t: the image's row height - outHi.y + t.
+        for (int t = 0; t < outSize.y; ++t) {
+          const int y = height - outHi.y + t;
+          for (int x = 0; x < outSize.x; ++x) {
+            const float* p = &pixels[4 * (static_cast<std::size_t>(t) * outSize.x + x)];
+            float* o = result.image.at(ox + x, y);
+            std::copy_n(p, 3, o);
+            o[3] = 1.0f;
+            result.alpha[static_cast<std::size_t>(y) * width + ox + x] = p[3];
+          }
+        }
+      }
+  } catch (...) {
+    glDeleteTextures(1, &densityTexture);
+    glDeleteTextures(1, &overlayTexture);
+    glDeleteTextures(1, &outputTexture);
+    glDeleteFramebuffers(1, &outputFramebuffer);
+    throw;
+  }
+  glDeleteTextures(1, &densityTexture);
+  glDeleteTextures(1, &overlayTexture);
+  glDeleteTextures(1, &outputTexture);
+  glDeleteFramebuffers(1, &outputFramebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  return result;
+}
+
+}  // namespace voxflame::gl
