@@ -877,9 +877,12 @@ void Accumulator::notifyWorkChanged() {
   // Under the mutex the sleepers check their conditions with: a worker that has just found
   // nothing to do is either not yet waiting (and will see the change) or already asleep (and
   // gets this notification). No wake-up is lost, so nobody needs to poll.
-  std::lock_guard lock(wakeMutex_);
-  wake_.notify_all();
-  doneSignal_.notify_all();
+  {
+    std::lock_guard lock(wakeMutex_);
+    wake_.notify_all();
+    doneSignal_.notify_all();
+  }
+  progress_.notify();
 }
 
 std::uint32_t* Accumulator::hitsData() const {
@@ -1358,6 +1361,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
   outside_.fetch_add(outside, std::memory_order_relaxed);
   escapes_.fetch_add(escapes, std::memory_order_relaxed);
   version_.fetch_add(1, std::memory_order_release);
+  progress_.notify();  // once a batch, not a point: nearly free while nobody waits
 }
 
 }  // namespace voxflame::core

@@ -37,6 +37,7 @@
 #include "chaos_game.h"
 #include "convergence.h"
 #include "inside_mask.h"
+#include "progress_signal.h"
 #include "scene.h"
 
 namespace voxflame::core {
@@ -274,6 +275,10 @@ class Accumulator {
 
   AccumulatorStats stats() const;
   std::uint64_t version() const { return version_.load(std::memory_order_acquire); }
+  // Notified after every batch that lands (version() moved) and every change of pattern, hold or
+  // target: what a reader following the grid waits on instead of a timer. Silent while the
+  // workers rest.
+  ProgressSignal& progress() const { return progress_; }
   std::uint64_t generation() const { return generation_.load(std::memory_order_acquire); }
   int threadCount() const { return static_cast<int>(threads_.size()); }
   const InsideMask& mask() const { return *mask_; }
@@ -366,7 +371,8 @@ class Accumulator {
   mutable std::mutex problemMutex_;
   std::string problem_;  // guarded by problemMutex_
 
-  void notifyWorkChanged();  // wakes idle workers and waitUntilDone, under wakeMutex_
+  void notifyWorkChanged();  // wakes idle workers and waitUntilDone, under wakeMutex_, and progress_
+  mutable ProgressSignal progress_;
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;  // workers sleep here when idle
   std::condition_variable doneSignal_;

@@ -9,16 +9,16 @@ SnapshotPublisher::SnapshotPublisher(const Accumulator& accumulator, std::chrono
     : accumulator_(accumulator), interval_(interval), thread_([this](std::stop_token stop) { loop(stop); }) {}
 
 SnapshotPublisher::~SnapshotPublisher() {
+  // The jthread's stop request wakes either wait (both take the stop token).
   thread_.request_stop();
-  wake_.notify_all();
+  thread_.join();
 }
 
 void SnapshotPublisher::requestNow() {
-  {
-    std::lock_guard lock(wakeMutex_);
-    wakeRequested_ = true;
-  }
+  requested_ = true;
+  { std::lock_guard lock(wakeMutex_); }
   wake_.notify_all();
+  accumulator_.progress().notify();
 }
 
 bool SnapshotPublisher::takeIfNewer(PackedVolume& out) {
@@ -26,6 +26,13 @@ bool SnapshotPublisher::takeIfNewer(PackedVolume& out) {
   if (!lock.owns_lock() || !readyFresh_) return false;
   std::swap(out, ready_);
   readyFresh_ = false;
+  lock.unlock();
+  // A fresh volume may have held back the pack of newer points (slow packs wait for their taker);
+  // with the accumulator at rest no batch would wake the thread for them.
+  if (publishedVersion_.load() != accumulator_.version()) {
+    taken_ = true;
+    accumulator_.progress().notify();
+  }
   return true;
 }
 
@@ -45,20 +52,29 @@ void SnapshotPublisher::setHeld(bool held) {
 
 void SnapshotPublisher::loop(std::stop_token stop) {
   bool waitingForPoints = false;
+  std::uint64_t seen = ~std::uint64_t{0};  // the accumulator's version when the thread last looked
+  std::chrono::steady_clock::time_point lastLook{};
   while (!stop.stop_requested()) {
-    {
-      // Waiting for a new generation to reach the minimum: look again soon, not an interval later.
-      const auto wait = waitingForPoints ? std::min(interval_, std::chrono::milliseconds(10)) : interval_;
+    // Sleep until there is something to look at: no timer runs while the accumulator rests.
+    if (!accumulator_.progress().wait(
+            stop, [&] { return requested_.load() || taken_.load() || accumulator_.version() != seen; }))
+      break;
+    // Points keep coming (a notification a batch): pace the looks by the interval, or more often
+    // while a new generation is waiting for its minimum. A request cuts the pause short.
+    if (!requested_.load()) {
+      const auto pace = waitingForPoints ? std::min(interval_, std::chrono::milliseconds(10)) : interval_;
       std::unique_lock lock(wakeMutex_);
-      wake_.wait_for(lock, stop, wait, [&] { return wakeRequested_; });
-      wakeRequested_ = false;
+      wake_.wait_until(lock, stop, lastLook + pace, [&] { return requested_.load(); });
     }
+    requested_ = false;
+    taken_ = false;
+    ++wakeUps_;
+    lastLook = std::chrono::steady_clock::now();
+    seen = accumulator_.version();
     if (stop.stop_requested()) break;
     waitingForPoints = false;
     if (held_) continue;
-    const std::uint64_t version = accumulator_.version();
-    // An accumulator at rest adds nothing: the wake-up costs a load and a compare.
-    if (version == publishedVersion_.load()) continue;
+    if (seen == publishedVersion_.load()) continue;
     if (const std::uint64_t minimum = minimumPoints_.load(); minimum > 0) {
       const AccumulatorStats stats = accumulator_.stats();
       if (stats.points < minimum && !stats.done && stats.problem.empty()) {
