@@ -92,6 +92,9 @@ class RunnableThreadSampler {
  public:
   RunnableThreadSampler() : thread_([this](std::stop_token stop) { run(stop); }) {}
   int max() const { return max_.load(); }
+  // Runnable threads of the GL driver (Mesa's llvmpipe-N rasterisers), at most at once: software
+  // GL standing in for a GPU, counted apart from the process's own.
+  int maxDriver() const { return maxDriver_.load(); }
   // Samples only while on (the phases that refine), and sleeps without a timer while off, so the
   // CPU measured at rest does not include the sampler.
   void setOn(bool on) {
@@ -103,8 +106,8 @@ class RunnableThreadSampler {
   }
 
  private:
-  static int countRunnable(const std::string& self) {
-    int runnable = 0;
+  void sample(const std::string& self) {
+    int runnable = 0, driver = 0;
     std::error_code ec;
     for (const auto& task : std::filesystem::directory_iterator("/proc/self/task", ec)) {
       if (task.path().filename() == self) continue;
@@ -112,10 +115,16 @@ class RunnableThreadSampler {
       std::string line;
       if (!std::getline(stat, line)) continue;
       // "tid (name) S ...": a name may hold spaces and parentheses; the state follows the last ')'.
-      const std::size_t close = line.rfind(')');
-      if (close != std::string::npos && close + 2 < line.size() && line[close + 2] == 'R') ++runnable;
+      const std::size_t open = line.find('('), close = line.rfind(')');
+      if (open == std::string::npos || close == std::string::npos || close + 2 >= line.size()) continue;
+      if (line[close + 2] != 'R') continue;
+      if (line.compare(open + 1, 9, "llvmpipe-") == 0)
+        ++driver;
+      else
+        ++runnable;
     }
-    return runnable;
+    max_ = std::max(max_.load(), runnable);
+    maxDriver_ = std::max(maxDriver_.load(), driver);
   }
   void run(std::stop_token stop) {
     const std::string self = std::to_string(::syscall(SYS_gettid));
@@ -126,13 +135,13 @@ class RunnableThreadSampler {
         continue;
       }
       lock.unlock();
-      max_ = std::max(max_.load(), countRunnable(self));
+      sample(self);
       lock.lock();
       // A measurement, not an event to wait for: sampling is periodic by nature.
       wake_.wait_for(lock, stop, std::chrono::milliseconds(5), [&] { return !on_; });
     }
   }
-  std::atomic<int> max_{0};
+  std::atomic<int> max_{0}, maxDriver_{0};
   std::mutex mutex_;
   std::condition_variable_any wake_;
   bool on_ = false;      // guarded by mutex_
@@ -332,7 +341,8 @@ void benchExplorer(const BenchOptions& options) {
                      {"noise_converged", restNoise},
                      {"cpu_percent_converged", cpuPercent},
                      {"cores", std::max(1u, std::thread::hardware_concurrency())},
-                     {"max_runnable_threads", runnable.max()}});
+                     {"max_runnable_threads", runnable.max()},
+                     {"max_runnable_gl_driver_threads", runnable.maxDriver()}});
   }
 }
 

@@ -387,3 +387,31 @@ TEST(SnapshotPublisher, PicksUpABatchPromptlyWithoutATimer) {
   EXPECT_GT(volume.points, 0u);
   EXPECT_LT(std::chrono::steady_clock::now() - landed, interval / 2) << "the batch waited for a timer";
 }
+
+// Two accumulators sharing one core (the explorer's grid and its proxy) both refine to their
+// targets, a publisher's packs taking the core in turn with them, and the core is free again after.
+TEST(Accumulator, AccumulatorsSharingACoreBudgetBothFinish) {
+  const auto cores = std::make_shared<CoreBudget>(1);
+  const auto mask = fullMask(glm::ivec3(24));
+  Accumulator first(mask, 2, cores), second(mask, 2, cores);
+  EXPECT_EQ(first.coreBudget(), cores.get());
+  SnapshotPublisher publisher(first, std::chrono::milliseconds(1));
+  for (Accumulator* accumulator : {&first, &second}) {
+    accumulator->setTargetPoints(200'000);
+    accumulator->setPattern(defaultScene().layers, 3);
+  }
+  ASSERT_TRUE(first.waitUntilDone(60.0));
+  ASSERT_TRUE(second.waitUntilDone(60.0));
+  EXPECT_GE(first.stats().points, 200'000u);
+  EXPECT_GE(second.stats().points, 200'000u);
+  PackedVolume volume;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!publisher.caughtUp() && std::chrono::steady_clock::now() < deadline) {
+    publisher.takeIfNewer(volume);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_TRUE(publisher.caughtUp());
+  ASSERT_TRUE(cores->try_acquire()) << "a batch or a pack kept its core";
+  EXPECT_FALSE(cores->try_acquire());
+  cores->release();
+}

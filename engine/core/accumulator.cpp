@@ -782,7 +782,8 @@ void* allocateHugePages(std::size_t bytes) {
 
 }  // namespace detail
 
-Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads) : mask_(std::move(mask)) {
+Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads, std::shared_ptr<CoreBudget> cores)
+    : mask_(std::move(mask)), cores_(std::move(cores)) {
   if (!mask_) throw Error("the accumulator needs an inside mask");
   const GridGeometry& g = mask_->geometry;
   const std::size_t voxels = g.voxelCount();
@@ -1111,7 +1112,9 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
       });
       continue;
     }
+    if (cores_) cores_->acquire();  // held for one batch: the other accumulator gets its turn between
     runBatch(threadIndex, stream, generation_.load(), batches[static_cast<std::size_t>(stream)], splats);
+    if (cores_) cores_->release();
   }
 }
 

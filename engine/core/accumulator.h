@@ -24,6 +24,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <semaphore>
 #include <shared_mutex>
 #include <string>
 #include <thread>
@@ -246,10 +247,16 @@ struct GridReading {
   std::uint64_t gridId = 0;  // which accumulator (and so which mask) was read: unique in the process
 };
 
+// Cores that several accumulators running at once share (the explorer's grid and its proxy): a
+// worker holds one for each batch, so together they keep no more threads runnable than there are
+// cores, instead of each accumulator's workers queueing for the same cores.
+using CoreBudget = std::counting_semaphore<>;
+
 class Accumulator {
  public:
-  // threads == 0 means one per hardware thread.
-  Accumulator(std::shared_ptr<const InsideMask> mask, int threads = 0);
+  // threads == 0 means one per hardware thread. `cores`: a budget shared with other accumulators
+  // (null: none, the workers run whenever they have work).
+  Accumulator(std::shared_ptr<const InsideMask> mask, int threads = 0, std::shared_ptr<CoreBudget> cores = nullptr);
   ~Accumulator();
   Accumulator(const Accumulator&) = delete;
   Accumulator& operator=(const Accumulator&) = delete;
@@ -279,6 +286,9 @@ class Accumulator {
   // target: what a reader following the grid waits on instead of a timer. Silent while the
   // workers rest.
   ProgressSignal& progress() const { return progress_; }
+  // The budget its workers share (null: none); a reader that works as hard as a worker (a pack)
+  // holds a core of it too.
+  CoreBudget* coreBudget() const { return cores_.get(); }
   std::uint64_t generation() const { return generation_.load(std::memory_order_acquire); }
   int threadCount() const { return static_cast<int>(threads_.size()); }
   const InsideMask& mask() const { return *mask_; }
@@ -327,6 +337,7 @@ class Accumulator {
   void waitForPatternChange() const;  // readers step aside while setPattern waits for the grid
 
   std::shared_ptr<const InsideMask> mask_;
+  std::shared_ptr<CoreBudget> cores_;  // set before the workers start
 
   // The grid, guarded per slab by slabMutexes_. A slab is a run of whole colour slices (and the
   // voxel slices under them), so a colour cell and all its voxels share one slab and one lock.

@@ -52,7 +52,9 @@ void SnapshotPublisher::setHeld(bool held) {
 
 void SnapshotPublisher::loop(std::stop_token stop) {
   bool waitingForPoints = false;
-  std::uint64_t seen = ~std::uint64_t{0};  // the accumulator's version when the thread last looked
+  // The accumulator's version when the thread last looked. Version 0 is an accumulator that never
+  // had a pattern: nothing to pack until it moves (one that has one is looked at straight away).
+  std::uint64_t seen = 0;
   std::chrono::steady_clock::time_point lastLook{};
   while (!stop.stop_requested()) {
     // Sleep until there is something to look at: no timer runs while the accumulator rests.
@@ -96,6 +98,17 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     // simply takes the volume on a later frame. What it hands back in the swap is packed into next.
     // A hold that begins meanwhile (the user starts dragging) stops the pack at the next slab.
     std::lock_guard lock(mutex_);
+    // A pack keeps a core busy like a worker: where the workers share a budget it takes a core of
+    // it, so a pack does not add a runnable thread beside every worker's.
+    struct HeldCore {
+      CoreBudget* cores;
+      explicit HeldCore(CoreBudget* c) : cores(c) {
+        if (cores) cores->acquire();
+      }
+      ~HeldCore() {
+        if (cores) cores->release();
+      }
+    } core(accumulator_.coreBudget());
     const auto packStart = std::chrono::steady_clock::now();
     readyFresh_ = packVolume(accumulator_, ready_, &held_);
     lastPack_ = std::chrono::steady_clock::now() - packStart;
