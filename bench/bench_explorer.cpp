@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 #include <sys/resource.h>
@@ -95,6 +96,11 @@ class RunnableThreadSampler {
   // Runnable threads of the GL driver (Mesa's llvmpipe-N rasterisers), at most at once: software
   // GL standing in for a GPU, counted apart from the process's own.
   int maxDriver() const { return maxDriver_.load(); }
+  // Which threads were runnable when the most were, by name ("vf-accumulate×2 voxflame×1").
+  std::string atMax() {
+    std::lock_guard lock(mutex_);
+    return atMax_;
+  }
   // Samples only while on (the phases that refine), and sleeps without a timer while off, so the
   // CPU measured at rest does not include the sampler.
   void setOn(bool on) {
@@ -108,6 +114,7 @@ class RunnableThreadSampler {
  private:
   void sample(const std::string& self) {
     int runnable = 0, driver = 0;
+    std::map<std::string, int> names;  // the process's own runnable threads by name
     std::error_code ec;
     for (const auto& task : std::filesystem::directory_iterator("/proc/self/task", ec)) {
       if (task.path().filename() == self) continue;
@@ -118,10 +125,18 @@ class RunnableThreadSampler {
       const std::size_t open = line.find('('), close = line.rfind(')');
       if (open == std::string::npos || close == std::string::npos || close + 2 >= line.size()) continue;
       if (line[close + 2] != 'R') continue;
-      if (line.compare(open + 1, 9, "llvmpipe-") == 0)
+      if (line.compare(open + 1, 9, "llvmpipe-") == 0) {
         ++driver;
-      else
+      } else {
         ++runnable;
+        ++names[line.substr(open + 1, close - open - 1)];
+      }
+    }
+    if (runnable > max_.load()) {
+      std::string text;
+      for (const auto& [name, count] : names) text += (text.empty() ? "" : " ") + name + "×" + std::to_string(count);
+      std::lock_guard lock(mutex_);
+      atMax_ = text;
     }
     max_ = std::max(max_.load(), runnable);
     maxDriver_ = std::max(maxDriver_.load(), driver);
@@ -145,6 +160,7 @@ class RunnableThreadSampler {
   std::mutex mutex_;
   std::condition_variable_any wake_;
   bool on_ = false;      // guarded by mutex_
+  std::string atMax_;    // guarded by mutex_
   std::jthread thread_;  // last: started after everything it uses
 };
 
@@ -342,7 +358,8 @@ void benchExplorer(const BenchOptions& options) {
                      {"cpu_percent_converged", cpuPercent},
                      {"cores", std::max(1u, std::thread::hardware_concurrency())},
                      {"max_runnable_threads", runnable.max()},
-                     {"max_runnable_gl_driver_threads", runnable.maxDriver()}});
+                     {"max_runnable_gl_driver_threads", runnable.maxDriver()},
+                     {"runnable_threads_at_max", runnable.atMax()}});
   }
 }
 

@@ -1,5 +1,6 @@
 #include "accumulator.h"
 
+#include <pthread.h>
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -1080,6 +1081,8 @@ void Accumulator::sampleDensity(DensitySample& out) const {
 }
 
 void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
+  // Named for top, perf and the runnable-thread count of `bench explorer`.
+  pthread_setname_np(pthread_self(), "vf-accumulate");
   const int threadCount = threadCount_;
   std::vector<int> owned;
   for (int stream = threadIndex; stream < kStreams; stream += threadCount) owned.push_back(stream);

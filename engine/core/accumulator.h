@@ -24,7 +24,6 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
-#include <semaphore>
 #include <shared_mutex>
 #include <string>
 #include <thread>
@@ -37,6 +36,7 @@
 
 #include "chaos_game.h"
 #include "convergence.h"
+#include "core_budget.h"
 #include "inside_mask.h"
 #include "progress_signal.h"
 #include "scene.h"
@@ -246,11 +246,6 @@ struct GridReading {
   std::uint64_t insideVoxels = 0;
   std::uint64_t gridId = 0;  // which accumulator (and so which mask) was read: unique in the process
 };
-
-// Cores that several accumulators running at once share (the explorer's grid and its proxy): a
-// worker holds one for each batch, so together they keep no more threads runnable than there are
-// cores, instead of each accumulator's workers queueing for the same cores.
-using CoreBudget = std::counting_semaphore<>;
 
 class Accumulator {
  public:
