@@ -1,7 +1,9 @@
 #include "explorer_session.h"
 
+#include <pthread.h>
 #include <algorithm>
 #include <new>
+#include <thread>
 #include <utility>
 
 #include "core/error.h"
@@ -27,6 +29,10 @@ std::string gridText(const core::GridGeometry& grid) {
   return std::to_string(grid.size.x) + "×" + std::to_string(grid.size.y) + "×" + std::to_string(grid.size.z);
 }
 
+int resolvedThreads(int threads) {
+  return threads > 0 ? threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 }  // namespace
 
 std::size_t ExplorerSession::estimatedBytes(const core::GridGeometry& grid) {
@@ -48,8 +54,8 @@ std::size_t ExplorerSession::estimatedBytes(const core::GridGeometry& grid) {
 struct ExplorerSession::Proxy {
   // Snapshots of the proxy come quickly: each costs well under a millisecond at 64³.
   static constexpr std::chrono::milliseconds kInterval{15};
-  Proxy(std::shared_ptr<const core::InsideMask> insideMask, int threads)
-      : mask(std::move(insideMask)), accumulator(mask, threads), publisher(accumulator, kInterval) {
+  Proxy(std::shared_ptr<const core::InsideMask> insideMask, int threads, std::shared_ptr<core::CoreBudget> cores)
+      : mask(std::move(insideMask)), accumulator(mask, threads, std::move(cores)), publisher(accumulator, kInterval) {
     const auto inside = static_cast<double>(std::max<std::uint64_t>(accumulator.insideVoxels(), 1));
     targetPoints = static_cast<std::uint64_t>(kProxyPointsPerVoxel * inside);
     dragTargetPoints = static_cast<std::uint64_t>(kProxyDragPointsPerVoxel * inside);
@@ -71,8 +77,11 @@ struct ExplorerSession::Engine {
          std::shared_ptr<const core::InsideMask> proxyMask, int threads, std::chrono::milliseconds interval)
       : shapeKey(std::move(key)),
         mask(std::move(insideMask)),
-        proxy(proxyMask ? std::make_unique<Proxy>(std::move(proxyMask), threads) : nullptr),
-        accumulator(mask, threads),
+        // The proxy's burst and the large grid run at once after each edit: they share the cores
+        // rather than each keeping a worker runnable per core (twice the cores queueing).
+        cores(proxyMask ? std::make_shared<core::CoreBudget>(resolvedThreads(threads)) : nullptr),
+        proxy(proxyMask ? std::make_unique<Proxy>(std::move(proxyMask), threads, cores) : nullptr),
+        accumulator(mask, threads, cores),
         publisher(accumulator, interval) {
     initialCapPoints = std::clamp<std::uint64_t>(
         static_cast<std::uint64_t>(restCapPointsPerVoxel(mask->geometry) *
@@ -87,7 +96,8 @@ struct ExplorerSession::Engine {
   }
   std::string shapeKey;
   std::shared_ptr<const core::InsideMask> mask;
-  std::unique_ptr<Proxy> proxy;  // null for grids no larger than a proxy
+  std::shared_ptr<core::CoreBudget> cores;  // shared by the two accumulators; null without a proxy
+  std::unique_ptr<Proxy> proxy;             // null for grids no larger than a proxy
   core::Accumulator accumulator;
   core::SnapshotPublisher publisher;    // after the accumulator it reads, so it is destroyed first
   std::uint64_t patternGeneration = 0;  // the Accumulator generation of the latest applied post
@@ -312,6 +322,8 @@ void ExplorerSession::steer(Engine& engine) {
 }
 
 void ExplorerSession::controlLoop(std::stop_token stop) {
+  // Named for top, perf and the runnable-thread count of `bench explorer`.
+  pthread_setname_np(pthread_self(), "vf-session");
   std::string failedShapeKey;  // a mesh that failed to load is not retried on every edit
   while (!stop.stop_requested()) {
     core::Scene scene;

@@ -2,7 +2,9 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <poll.h>
 #include <spawn.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -13,7 +15,6 @@
 #include <cstring>
 #include <optional>
 #include <sstream>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -153,8 +154,12 @@ ExportJob::~ExportJob() {
     const auto deadline = std::chrono::steady_clock::now() + kDestructorGrace;
     int waitStatus = 0;
     pid_t reaped = 0;
-    while ((reaped = ::waitpid(pid_, &waitStatus, WNOHANG)) == 0 && std::chrono::steady_clock::now() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    while ((reaped = ::waitpid(pid_, &waitStatus, WNOHANG)) == 0) {
+      const auto left =
+          std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+      if (left.count() <= 0) break;
+      waitForExit(left);
+    }
     if (reaped == 0) {
       ::kill(pid_, SIGKILL);
       while (::waitpid(pid_, &waitStatus, 0) < 0 && errno == EINTR) {
@@ -167,7 +172,32 @@ ExportJob::~ExportJob() {
   closeAll();
 }
 
+void ExportJob::waitForExit(std::chrono::milliseconds timeout) {
+  if (pidFd_ < 0) {
+    // No pidfd (a kernel before 5.3): nothing to wait on but time. The pipes are no help: they
+    // read as closed (ready) for good once the child has shut them.
+    ::poll(nullptr, 0, static_cast<int>(std::min<long long>(timeout.count(), 10)));
+    return;
+  }
+  pollfd exit{pidFd_, POLLIN, 0};
+  while (::poll(&exit, 1, static_cast<int>(timeout.count())) < 0 && errno == EINTR) {
+  }
+}
+
+bool ExportJob::waitForChange(std::chrono::milliseconds timeout) {
+  if (pid_ <= 0) return false;
+  std::array<pollfd, 3> fds{};
+  nfds_t count = 0;
+  for (const int fd : {pidFd_, progressFd_, outputFd_})
+    if (fd >= 0) fds[count++] = pollfd{fd, POLLIN, 0};
+  int ready = 0;
+  while ((ready = ::poll(fds.data(), count, static_cast<int>(timeout.count()))) < 0 && errno == EINTR) {
+  }
+  return ready > 0;
+}
+
 void ExportJob::closeAll() {
+  closeFd(pidFd_);
   closeFd(progressFd_);
   closeFd(outputFd_);
   if (!presetFile_.empty()) {
@@ -298,6 +328,8 @@ void ExportJob::start(const ExportRequest& request) {
     throw core::Error("cannot start the export with '" + executable.string() + "': " + std::strerror(spawned));
   }
   pid_ = pid;
+  // Our own child, not yet reaped: its pid cannot have been reused.
+  pidFd_ = static_cast<int>(::syscall(SYS_pidfd_open, pid, 0));  // close-on-exec by itself
   progressFd_ = progressPipe[0];
   outputFd_ = outputPipe[0];
   ::fcntl(progressFd_, F_SETFL, ::fcntl(progressFd_, F_GETFL) | O_NONBLOCK);

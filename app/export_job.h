@@ -82,6 +82,12 @@ class ExportJob {
   // Done: its file is complete. One that ignores the signal is killed after a grace period.
   void cancel();
 
+  // Blocks up to `timeout` until the child writes something or ends; returns whether it did (then
+  // poll() has news). The child's end is seen through its pidfd, so it wakes at once even while a
+  // grandchild keeps the pipes open. For callers with nothing else to wait for; the UI thread calls
+  // poll() once a frame instead.
+  bool waitForChange(std::chrono::milliseconds timeout);
+
   bool running() const { return pid_ > 0; }
   pid_t processId() const { return pid_; }  // the child's, while running; for diagnostics and tests
 
@@ -89,8 +95,10 @@ class ExportJob {
   void readPipes();
   void finish(std::optional<int> waitStatus);  // nullopt: the exit status is unknown
   void closeAll();
+  void waitForExit(std::chrono::milliseconds timeout);  // the pidfd, up to `timeout`
 
   pid_t pid_ = -1;
+  int pidFd_ = -1;  // readable once the child has ended (pidfd_open); -1 on kernels before 5.3
   int progressFd_ = -1;
   int outputFd_ = -1;
   std::filesystem::path presetFile_;

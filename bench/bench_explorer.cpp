@@ -5,13 +5,19 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 #include <sys/resource.h>
 #include <unistd.h>
 
 #include <array>
+#include <atomic>
+#include <condition_variable>
+#include <mutex>
+#include <stop_token>
 #include <thread>
+#include <sys/syscall.h>
 
 #include "bench.h"
 #include "core/camera.h"
@@ -56,6 +62,85 @@ double peakResidentMegabytes() {
     if (line.rfind("VmHWM:", 0) == 0) return std::stod(line.substr(6)) / 1e3;  // kB
   return 0.0;
 }
+
+// The most threads of this process found runnable (state 'R' in /proc/self/task/*/stat: running
+// or waiting for a core) at once, sampled every few milliseconds on a thread of its own (which
+// does not count itself). While the explorer refines this must stay within the cores plus two:
+// more runnable threads than cores only queue for them, and the frame's thread queues with them.
+class RunnableThreadSampler {
+ public:
+  RunnableThreadSampler() : thread_([this](std::stop_token stop) { run(stop); }) {}
+  int max() const { return max_.load(); }
+  // Runnable threads of the GL driver (Mesa's llvmpipe-N rasterisers), at most at once: software
+  // GL standing in for a GPU, counted apart from the process's own.
+  int maxDriver() const { return maxDriver_.load(); }
+  // Which threads were runnable when the most were, by name ("vf-accumulate×2 voxflame×1").
+  std::string atMax() {
+    std::lock_guard lock(mutex_);
+    return atMax_;
+  }
+  // Samples only while on (the phases that refine), and sleeps without a timer while off, so the
+  // CPU measured at rest does not include the sampler.
+  void setOn(bool on) {
+    {
+      std::lock_guard lock(mutex_);
+      on_ = on;
+    }
+    wake_.notify_all();
+  }
+
+ private:
+  void sample(const std::string& self) {
+    int runnable = 0, driver = 0;
+    std::map<std::string, int> names;  // the process's own runnable threads by name
+    std::error_code ec;
+    for (const auto& task : std::filesystem::directory_iterator("/proc/self/task", ec)) {
+      if (task.path().filename() == self) continue;
+      std::ifstream stat(task.path() / "stat");
+      std::string line;
+      if (!std::getline(stat, line)) continue;
+      // "tid (name) S ...": a name may hold spaces and parentheses; the state follows the last ')'.
+      const std::size_t open = line.find('('), close = line.rfind(')');
+      if (open == std::string::npos || close == std::string::npos || close + 2 >= line.size()) continue;
+      if (line[close + 2] != 'R') continue;
+      if (line.compare(open + 1, 9, "llvmpipe-") == 0) {
+        ++driver;
+      } else {
+        ++runnable;
+        ++names[line.substr(open + 1, close - open - 1)];
+      }
+    }
+    if (runnable > max_.load()) {
+      std::string text;
+      for (const auto& [name, count] : names) text += (text.empty() ? "" : " ") + name + "×" + std::to_string(count);
+      std::lock_guard lock(mutex_);
+      atMax_ = text;
+    }
+    max_ = std::max(max_.load(), runnable);
+    maxDriver_ = std::max(maxDriver_.load(), driver);
+  }
+  void run(std::stop_token stop) {
+    const std::string self = std::to_string(::syscall(SYS_gettid));
+    std::unique_lock lock(mutex_);
+    while (!stop.stop_requested()) {
+      if (!on_) {
+        wake_.wait(lock, stop, [&] { return on_; });
+        continue;
+      }
+      lock.unlock();
+      sample(self);
+      lock.lock();
+      // A measurement, not an event to wait for: sampling is periodic by nature.
+      wake_.wait_for(lock, stop, std::chrono::milliseconds(5), [&] { return !on_; });
+    }
+  }
+  std::atomic<int> max_{0}, maxDriver_{0};
+  std::mutex mutex_;
+  std::condition_variable_any wake_;
+  bool on_ = false;      // guarded by mutex_
+  std::string atMax_;    // guarded by mutex_
+  std::jthread thread_;  // last: started after everything it uses
+};
 
 // Mean and worst frame over a run of frames.
 struct FrameTimes {
@@ -172,12 +257,14 @@ void benchExplorer(const BenchOptions& options) {
     core::Scene initial = core::defaultScene();
     initial.gridResolution = resolution;
     app::ExplorerSession session;
+    RunnableThreadSampler runnable;
     FrameLoop loop(session, initial, software ? 0.5f : 1.0f);
     core::Scene& scene = loop.state.scene;
     loop.run();  // posts the scene
     session.waitUntilApplied(600.0);
     // Wait for the full grid, then refine for a while as a user watching would.
     const auto start = Clock::now();
+    runnable.setOn(true);
     while (millisecondsSince(start) < 120'000 && !loop.run().fullShown) {
     }
     const FrameTimes refining = timeFrames(loop, 1 << 30, 4000.0, [](int) {});
@@ -216,6 +303,7 @@ void benchExplorer(const BenchOptions& options) {
     }
     auto median = [](const std::vector<double>& sorted) { return sorted[sorted.size() / 2]; };
     loop.state.exportStatus = app::ExportStatus{};
+    runnable.setOn(false);  // sampling costs CPU, which the rest's figure must not include
     const auto [convergeSeconds, cpuPercent, restNoise] = cpuAtRest(session, loop);
     report(options, {{"bench", "explorer"},
                      {"grid", resolution},
@@ -245,7 +333,11 @@ void benchExplorer(const BenchOptions& options) {
                      {"worst_frame_ms_during_export", exporting.worst},
                      {"seconds_to_converge", convergeSeconds},
                      {"noise_converged", restNoise},
-                     {"cpu_percent_converged", cpuPercent}});
+                     {"cpu_percent_converged", cpuPercent},
+                     {"cores", std::max(1u, std::thread::hardware_concurrency())},
+                     {"max_runnable_threads", runnable.max()},
+                     {"max_runnable_gl_driver_threads", runnable.maxDriver()},
+                     {"runnable_threads_at_max", runnable.atMax()}});
   }
 }
 

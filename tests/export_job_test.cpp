@@ -259,3 +259,46 @@ TEST(ExportJob, RenderProgressFdWritesStagesInOrder) {
   EXPECT_EQ(bad.exitStatus, 2);
   EXPECT_NE(bad.output.find("--progress-fd 77"), std::string::npos) << bad.output;
 }
+
+// The job waits on its child's pidfd, not on a timer nor on the pipes: a child that ends while a
+// grandchild keeps the pipes open is noticed at once.
+TEST(ExportJob, NoticesItsChildsExitWhileItsPipesStayOpen) {
+  TemporaryFolder folder;
+  const std::filesystem::path script = folder / "ends-early.sh";
+  {
+    std::ofstream out(script);
+    // The background sleep inherits stdout, stderr and the progress descriptor (3).
+    out << "#!/bin/sh\nsleep 3 &\nexit 3\n";
+  }
+  std::filesystem::permissions(script, std::filesystem::perms::owner_all);
+  ExportJob job;
+  auto request = tinyRequest(folder / "out.png");
+  request.executable = script;
+  const auto start = std::chrono::steady_clock::now();
+  job.start(request);
+  int wakeUps = 0;
+  ExportStatus status;
+  while ((status = job.poll()).state == ExportState::Running && wakeUps < 100) {
+    job.waitForChange(std::chrono::seconds(10));
+    ++wakeUps;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(status.state, ExportState::Failed);
+  EXPECT_NE(status.error.find("status 3"), std::string::npos) << status.error;
+  EXPECT_LT(seconds, 2.0) << "the exit waited for the pipes to close";
+  EXPECT_LE(wakeUps, 3);
+}
+
+// A real export followed by waiting alone (no sleeps between polls) ends with the child's result.
+TEST(ExportJob, WaitingForChangesFollowsAnExportToItsEnd) {
+  TemporaryFolder folder;
+  ExportJob job;
+  job.start(tinyRequest(folder / "out.png"));
+  ExportStatus status;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while ((status = job.poll()).state == ExportState::Running && std::chrono::steady_clock::now() < deadline)
+    job.waitForChange(std::chrono::seconds(10));
+  EXPECT_EQ(status.state, ExportState::Done) << status.error;
+  EXPECT_TRUE(std::filesystem::exists(folder / "out.png"));
+  EXPECT_FALSE(job.waitForChange(std::chrono::seconds(10))) << "nothing to wait for once it has ended";
+}

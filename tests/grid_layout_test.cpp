@@ -319,3 +319,99 @@ TEST(Accumulator, AHeldAccumulatorAddsNothingUntilReleased) {
   ASSERT_TRUE(accumulator.waitUntilDone(60.0));
   EXPECT_GE(accumulator.stats().points, 100'000u);
 }
+
+// An accumulator that rests (its target reached, or held) never wakes its publisher: no timer
+// runs. Progress wakes it, a request too.
+TEST(SnapshotPublisher, MakesNoWakeUpsWhileItsAccumulatorRests) {
+  const auto mask = fullMask(glm::ivec3(32));
+  Accumulator accumulator(mask, 2);
+  accumulator.setTargetPoints(100'000);
+  SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(1));
+  accumulator.setPattern(defaultScene().layers, 1);
+  ASSERT_TRUE(accumulator.waitUntilDone(60.0));
+  PackedVolume volume;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!publisher.caughtUp() && std::chrono::steady_clock::now() < deadline) {
+    publisher.takeIfNewer(volume);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(publisher.caughtUp());
+  EXPECT_GE(volume.points, 100'000u);
+  const std::uint64_t atRest = publisher.wakeUps();
+  EXPECT_GT(atRest, 0u);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(publisher.wakeUps(), atRest) << "woken while the accumulator had reached its target";
+
+  // Held with work left: the hold itself is news (a wake-up or two), then nothing.
+  accumulator.setHeld(true);
+  accumulator.setTargetPoints(0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const std::uint64_t held = publisher.wakeUps();
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_EQ(publisher.wakeUps(), held) << "woken while the accumulator was held";
+
+  publisher.requestNow();
+  const auto requestDeadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  while (publisher.wakeUps() == held && std::chrono::steady_clock::now() < requestDeadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  EXPECT_GT(publisher.wakeUps(), held) << "a request wakes it";
+}
+
+// The first batch after a pause is packed as soon as it lands, not when a timer next fires: the
+// interval (long here) only spaces packs while points keep coming.
+TEST(SnapshotPublisher, PicksUpABatchPromptlyWithoutATimer) {
+  using namespace std::chrono_literals;
+  const auto mask = fullMask(glm::ivec3(32));
+  Accumulator accumulator(mask, 1);
+  accumulator.setHeld(true);
+  accumulator.setTargetPoints(50'000);
+  accumulator.setPattern(defaultScene().layers, 1);
+  const auto interval = 2s;
+  SnapshotPublisher publisher(accumulator, interval);
+  PackedVolume volume;
+  auto deadline = std::chrono::steady_clock::now() + 30s;
+  while (!publisher.takeIfNewer(volume) && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(1ms);
+  ASSERT_EQ(volume.points, 0u) << "the held grid, packed once";
+  std::this_thread::sleep_for(interval + 100ms);  // a timer of the interval would fire well after the release
+
+  const std::uint64_t before = accumulator.version();
+  accumulator.setHeld(false);
+  deadline = std::chrono::steady_clock::now() + 30s;
+  while (accumulator.stats().points == 0 && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(100us);
+  const auto landed = std::chrono::steady_clock::now();
+  ASSERT_GT(accumulator.version(), before);
+  while (!publisher.takeIfNewer(volume) && std::chrono::steady_clock::now() < landed + interval)
+    std::this_thread::sleep_for(1ms);
+  EXPECT_GT(volume.points, 0u);
+  EXPECT_LT(std::chrono::steady_clock::now() - landed, interval / 2) << "the batch waited for a timer";
+}
+
+// Two accumulators sharing one core (the explorer's grid and its proxy) both refine to their
+// targets, a publisher's packs taking the core in turn with them, and the core is free again after.
+TEST(Accumulator, AccumulatorsSharingACoreBudgetBothFinish) {
+  const auto cores = std::make_shared<CoreBudget>(1);
+  const auto mask = fullMask(glm::ivec3(24));
+  Accumulator first(mask, 2, cores), second(mask, 2, cores);
+  EXPECT_EQ(first.coreBudget(), cores.get());
+  SnapshotPublisher publisher(first, std::chrono::milliseconds(1));
+  for (Accumulator* accumulator : {&first, &second}) {
+    accumulator->setTargetPoints(200'000);
+    accumulator->setPattern(defaultScene().layers, 3);
+  }
+  ASSERT_TRUE(first.waitUntilDone(60.0));
+  ASSERT_TRUE(second.waitUntilDone(60.0));
+  EXPECT_GE(first.stats().points, 200'000u);
+  EXPECT_GE(second.stats().points, 200'000u);
+  PackedVolume volume;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (!publisher.caughtUp() && std::chrono::steady_clock::now() < deadline) {
+    publisher.takeIfNewer(volume);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_TRUE(publisher.caughtUp());
+  ASSERT_TRUE(cores->try_acquire()) << "a batch or a pack kept its core";
+  EXPECT_FALSE(cores->try_acquire());
+  cores->release();
+}

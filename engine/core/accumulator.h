@@ -36,7 +36,9 @@
 
 #include "chaos_game.h"
 #include "convergence.h"
+#include "core_budget.h"
 #include "inside_mask.h"
+#include "progress_signal.h"
 #include "scene.h"
 
 namespace voxflame::core {
@@ -247,8 +249,9 @@ struct GridReading {
 
 class Accumulator {
  public:
-  // threads == 0 means one per hardware thread.
-  Accumulator(std::shared_ptr<const InsideMask> mask, int threads = 0);
+  // threads == 0 means one per hardware thread. `cores`: a budget shared with other accumulators
+  // (null: none, the workers run whenever they have work).
+  Accumulator(std::shared_ptr<const InsideMask> mask, int threads = 0, std::shared_ptr<CoreBudget> cores = nullptr);
   ~Accumulator();
   Accumulator(const Accumulator&) = delete;
   Accumulator& operator=(const Accumulator&) = delete;
@@ -274,6 +277,13 @@ class Accumulator {
 
   AccumulatorStats stats() const;
   std::uint64_t version() const { return version_.load(std::memory_order_acquire); }
+  // Notified after every batch that lands (version() moved) and every change of pattern, hold or
+  // target: what a reader following the grid waits on instead of a timer. Silent while the
+  // workers rest.
+  ProgressSignal& progress() const { return progress_; }
+  // The budget its workers share (null: none); a reader that works as hard as a worker (a pack)
+  // holds a core of it too.
+  CoreBudget* coreBudget() const { return cores_.get(); }
   std::uint64_t generation() const { return generation_.load(std::memory_order_acquire); }
   int threadCount() const { return static_cast<int>(threads_.size()); }
   const InsideMask& mask() const { return *mask_; }
@@ -322,6 +332,7 @@ class Accumulator {
   void waitForPatternChange() const;  // readers step aside while setPattern waits for the grid
 
   std::shared_ptr<const InsideMask> mask_;
+  std::shared_ptr<CoreBudget> cores_;  // set before the workers start
 
   // The grid, guarded per slab by slabMutexes_. A slab is a run of whole colour slices (and the
   // voxel slices under them), so a colour cell and all its voxels share one slab and one lock.
@@ -366,7 +377,8 @@ class Accumulator {
   mutable std::mutex problemMutex_;
   std::string problem_;  // guarded by problemMutex_
 
-  void notifyWorkChanged();  // wakes idle workers and waitUntilDone, under wakeMutex_
+  void notifyWorkChanged();  // wakes idle workers and waitUntilDone, under wakeMutex_, and progress_
+  mutable ProgressSignal progress_;
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;  // workers sleep here when idle
   std::condition_variable doneSignal_;

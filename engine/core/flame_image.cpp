@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <thread>
 
 #include "error.h"
+#include "task_scheduler.h"
 
 namespace voxflame::core {
 
@@ -21,23 +21,11 @@ double gaussian(double x) {
   return std::exp(-2.0 * x * x);
 }
 
-int workerCount() {
-  return static_cast<int>(std::clamp(std::thread::hardware_concurrency(), 1u, 16u));
-}
-
-// Runs fn(begin, end) over [0, count) split among the hardware threads.
+// Runs fn(begin, end) over [0, count) on the shared task scheduler, at least 16 items (rows or
+// bands) a task: fewer cost more to hand off than to do.
 void parallelRanges(int count, const std::function<void(int, int)>& fn) {
-  const int threads = std::min(workerCount(), std::max(1, count / 16));
-  if (threads <= 1) {
-    fn(0, count);
-    return;
-  }
-  std::vector<std::jthread> pool;
-  pool.reserve(static_cast<std::size_t>(threads));
-  for (int t = 0; t < threads; ++t) {
-    const int begin = count * t / threads, end = count * (t + 1) / threads;
-    pool.emplace_back([&fn, begin, end] { fn(begin, end); });
-  }
+  parallelFor(static_cast<std::size_t>(std::max(0, count)), 16,
+              [&](std::size_t begin, std::size_t end) { fn(static_cast<int>(begin), static_cast<int>(end)); });
 }
 
 // One density-estimation kernel: normalised weights over (2r+1)² pixels.

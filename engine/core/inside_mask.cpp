@@ -10,6 +10,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "task_scheduler.h"
+
 namespace voxflame::core {
 
 double InsideMask::insideFraction() const {
@@ -37,12 +39,14 @@ int resolveThreads(int threads) {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
-// Runs work(threadIndex) on `threads` threads (the calling one included) and joins them.
+// Runs work(0) … work(threads - 1) as tasks on the shared scheduler and returns when all are done.
+// Each index has its own slot in what the work writes (per-thread lists); several may run one after
+// the other on one thread, which is harmless: each drains a shared ChunkQueue, never waits for another.
 template <class Work>
 void onThreads(int threads, const Work& work) {
-  std::vector<std::jthread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back([&work, t] { work(t); });
-  work(0);
+  parallelFor(static_cast<std::size_t>(std::max(1, threads)), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t t = begin; t < end; ++t) work(static_cast<int>(t));
+  });
 }
 
 // Hands out [begin, end) chunks of [0, count) to whichever thread asks next, so uneven work
@@ -607,10 +611,14 @@ WindingNumberTree::WindingNumberTree(const TriangleMesh& mesh, int threads) : me
   std::vector<Node> leftNodes, rightNodes;
   leftNodes.reserve(2 * count / kLeafTriangles + 4);
   rightNodes.reserve(2 * count / kLeafTriangles + 4);
-  {
-    std::jthread right([&] { build(build, rightNodes, middle, total); });
-    build(build, leftNodes, 0, middle);
-  }
+  // The two halves as two tasks: the left one on this thread, the right one wherever one is free.
+  parallelFor(2, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t half = begin; half < end; ++half)
+      if (half == 0)
+        build(build, leftNodes, 0, middle);
+      else
+        build(build, rightNodes, middle, total);
+  });
   // Root, then the left subtree (offset 1), then the right one: shift the child links.
   const auto rightOffset = static_cast<std::uint32_t>(1 + leftNodes.size());
   nodes_.reserve(1 + leftNodes.size() + rightNodes.size());

@@ -10,6 +10,7 @@
 
 #include "error.h"
 #include "random.h"
+#include "task_scheduler.h"
 
 namespace voxflame::core {
 
@@ -42,17 +43,6 @@ float trilinear(const std::vector<float>& field, const GridGeometry& g, glm::dve
 // View depth of a world point (the camera looks down -z in view space).
 double viewDepth(const CameraFrame& camera, glm::dvec3 world) {
   return -(camera.view * glm::dvec4(world, 1.0)).z;
-}
-
-void parallelFor(int count, int threads, const std::function<void(int, int)>& fn) {
-  threads = std::clamp(threads, 1, std::max(1, count));
-  if (threads == 1) {
-    fn(0, count);
-    return;
-  }
-  std::vector<std::jthread> pool;
-  for (int t = 0; t < threads; ++t)
-    pool.emplace_back([&fn, count, threads, t] { fn(count * t / threads, count * (t + 1) / threads); });
 }
 
 }  // namespace
@@ -93,8 +83,9 @@ ViewTransmittance buildViewTransmittance(const PackedVolume& volume, const Camer
   const double sliceDepth = (t.farDepth - t.nearDepth) / t.depth;
   // Sub-steps per slice so no voxel is skipped.
   const int subSteps = std::max(1, static_cast<int>(std::ceil(sliceDepth / (0.5 * g.voxelSize))));
-  parallelFor(t.height, static_cast<int>(std::max(1u, std::thread::hardware_concurrency())), [&](int begin, int end) {
-    for (int y = begin; y < end; ++y)
+  // A row of rays is thousands of trilinear samples: worth a task of its own.
+  parallelFor(static_cast<std::size_t>(t.height), 1, [&](std::size_t begin, std::size_t end) {
+    for (int y = static_cast<int>(begin); y < static_cast<int>(end); ++y)
       for (int x = 0; x < t.width; ++x) {
         const double ndcX = (x + 0.5) / t.width * 2.0 - 1.0, ndcY = 1.0 - (y + 0.5) / t.height * 2.0;
         glm::dvec4 a = inverse * glm::dvec4(ndcX, ndcY, ndcNear, 1.0);

@@ -1,5 +1,6 @@
 #include "snapshot_publisher.h"
 
+#include <pthread.h>
 #include <algorithm>
 #include <utility>
 
@@ -9,16 +10,16 @@ SnapshotPublisher::SnapshotPublisher(const Accumulator& accumulator, std::chrono
     : accumulator_(accumulator), interval_(interval), thread_([this](std::stop_token stop) { loop(stop); }) {}
 
 SnapshotPublisher::~SnapshotPublisher() {
+  // The jthread's stop request wakes either wait (both take the stop token).
   thread_.request_stop();
-  wake_.notify_all();
+  thread_.join();
 }
 
 void SnapshotPublisher::requestNow() {
-  {
-    std::lock_guard lock(wakeMutex_);
-    wakeRequested_ = true;
-  }
+  requested_ = true;
+  { std::lock_guard lock(wakeMutex_); }
   wake_.notify_all();
+  accumulator_.progress().notify();
 }
 
 bool SnapshotPublisher::takeIfNewer(PackedVolume& out) {
@@ -26,6 +27,13 @@ bool SnapshotPublisher::takeIfNewer(PackedVolume& out) {
   if (!lock.owns_lock() || !readyFresh_) return false;
   std::swap(out, ready_);
   readyFresh_ = false;
+  lock.unlock();
+  // A fresh volume may have held back the pack of newer points (slow packs wait for their taker);
+  // with the accumulator at rest no batch would wake the thread for them.
+  if (publishedVersion_.load() != accumulator_.version()) {
+    taken_ = true;
+    accumulator_.progress().notify();
+  }
   return true;
 }
 
@@ -44,21 +52,34 @@ void SnapshotPublisher::setHeld(bool held) {
 }
 
 void SnapshotPublisher::loop(std::stop_token stop) {
+  // Named for top, perf and the runnable-thread count of `bench explorer`.
+  pthread_setname_np(pthread_self(), "vf-publish");
   bool waitingForPoints = false;
+  // The accumulator's version when the thread last looked. Version 0 is an accumulator that never
+  // had a pattern: nothing to pack until it moves (one that has one is looked at straight away).
+  std::uint64_t seen = 0;
+  std::chrono::steady_clock::time_point lastLook{};
   while (!stop.stop_requested()) {
-    {
-      // Waiting for a new generation to reach the minimum: look again soon, not an interval later.
-      const auto wait = waitingForPoints ? std::min(interval_, std::chrono::milliseconds(10)) : interval_;
+    // Sleep until there is something to look at: no timer runs while the accumulator rests.
+    if (!accumulator_.progress().wait(
+            stop, [&] { return requested_.load() || taken_.load() || accumulator_.version() != seen; }))
+      break;
+    // Points keep coming (a notification a batch): pace the looks by the interval, or more often
+    // while a new generation is waiting for its minimum. A request cuts the pause short.
+    if (!requested_.load()) {
+      const auto pace = waitingForPoints ? std::min(interval_, std::chrono::milliseconds(10)) : interval_;
       std::unique_lock lock(wakeMutex_);
-      wake_.wait_for(lock, stop, wait, [&] { return wakeRequested_; });
-      wakeRequested_ = false;
+      wake_.wait_until(lock, stop, lastLook + pace, [&] { return requested_.load(); });
     }
+    requested_ = false;
+    taken_ = false;
+    ++wakeUps_;
+    lastLook = std::chrono::steady_clock::now();
+    seen = accumulator_.version();
     if (stop.stop_requested()) break;
     waitingForPoints = false;
     if (held_) continue;
-    const std::uint64_t version = accumulator_.version();
-    // An accumulator at rest adds nothing: the wake-up costs a load and a compare.
-    if (version == publishedVersion_.load()) continue;
+    if (seen == publishedVersion_.load()) continue;
     if (const std::uint64_t minimum = minimumPoints_.load(); minimum > 0) {
       const AccumulatorStats stats = accumulator_.stats();
       if (stats.points < minimum && !stats.done && stats.problem.empty()) {
@@ -79,6 +100,18 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     // would cost a whole volume of memory (400 MB at 512³), and a taker that finds the lock held
     // simply takes the volume on a later frame. What it hands back in the swap is packed into next.
     // A hold that begins meanwhile (the user starts dragging) stops the pack at the next slab.
+    // A pack keeps a core busy like a worker: where the workers share a budget it takes a core of
+    // it, so a pack does not add a runnable thread beside every worker's. Taken before the lock, so
+    // a taker never finds the lock held by a pack that waits for a core.
+    struct HeldCore {
+      CoreBudget* cores;
+      explicit HeldCore(CoreBudget* c) : cores(c) {
+        if (cores) cores->acquire();
+      }
+      ~HeldCore() {
+        if (cores) cores->release();
+      }
+    } core(accumulator_.coreBudget());
     std::lock_guard lock(mutex_);
     const auto packStart = std::chrono::steady_clock::now();
     readyFresh_ = packVolume(accumulator_, ready_, &held_);

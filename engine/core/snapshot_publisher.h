@@ -2,6 +2,12 @@
 // the main thread never spends a frame copying the grid: it only swaps in the newest finished
 // volume, handing back the one it had (which the next pack reuses). One buffer here and one with
 // the taker: no other copy of the grid exists.
+//
+// The thread runs on events, not a timer: it sleeps on the accumulator's progress signal until a
+// batch lands (or the pattern, hold or target changes), a taker asks, or a volume is taken while
+// newer points wait. An accumulator at rest (converged, held, stopped) therefore never wakes it.
+// The interval only paces packs while points keep coming: a pack follows the last one by at least
+// that long.
 #pragma once
 
 #include <atomic>
@@ -27,7 +33,7 @@ class SnapshotPublisher {
   // the interval, a fresh volume waits for its taker (it is not packed over, so the lock is free)
   // unless the accumulator's pattern changed.
   bool takeIfNewer(PackedVolume& out);
-  void requestNow();  // take the next snapshot without waiting for the interval
+  void requestNow();  // look at the accumulator now, without waiting for progress or the interval
   // A volume of a generation still refining is not packed before it holds this many points (0:
   // any): one that would not be shown is not worth a pack (hundreds of milliseconds at 512³).
   void setMinimumPoints(std::uint64_t points);
@@ -37,6 +43,8 @@ class SnapshotPublisher {
   // Everything the accumulator holds has been published and taken: nothing new will come until
   // the accumulator adds points again.
   bool caughtUp();
+  // How often the thread has woken to look at the accumulator (tests: none while it rests).
+  std::uint64_t wakeUps() const { return wakeUps_.load(); }
 
  private:
   void loop(std::stop_token stop);
@@ -50,9 +58,13 @@ class SnapshotPublisher {
   std::atomic<std::uint64_t> publishedVersion_{~std::uint64_t{0}};
   std::atomic<std::uint64_t> minimumPoints_{0};
   std::atomic<bool> held_{false};
+  // Set, then announced on the accumulator's progress signal (which the thread waits on for
+  // events) and on wake_ (which it waits on while pacing packs).
+  std::atomic<bool> requested_{false};  // requestNow
+  std::atomic<bool> taken_{false};      // a volume was taken while the accumulator had moved on
+  std::atomic<std::uint64_t> wakeUps_{0};
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;
-  bool wakeRequested_ = false;  // guarded by wakeMutex_
   std::jthread thread_;
 };
 

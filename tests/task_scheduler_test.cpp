@@ -1,0 +1,64 @@
+// The shared task scheduler: every index once, no task too small, the caller taking part, a cap on the threads one
+// loop uses, loops nested in loops, exceptions carried to the caller.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "core/task_scheduler.h"
+
+using voxflame::core::parallelFor;
+using voxflame::core::setTaskConcurrency;
+using voxflame::core::taskConcurrency;
+
+TEST(TaskScheduler, VisitsEveryIndexOnceInRangesNoSmallerThanHalfTheGrain) {
+  for (const std::size_t count :
+       {std::size_t{0}, std::size_t{1}, std::size_t{7}, std::size_t{1000}, std::size_t{100'003}}) {
+    std::vector<std::atomic<int>> visits(count);
+    std::atomic<std::size_t> smallest{count};
+    parallelFor(count, 64, [&](std::size_t begin, std::size_t end) {
+      ASSERT_LT(begin, end);
+      std::size_t seen = smallest.load();
+      while (end - begin < seen && !smallest.compare_exchange_weak(seen, end - begin)) {
+      }
+      for (std::size_t i = begin; i < end; ++i) visits[i].fetch_add(1);
+    });
+    for (std::size_t i = 0; i < count; ++i) ASSERT_EQ(visits[i].load(), 1) << "count " << count << " index " << i;
+    EXPECT_GE(smallest.load(), std::min<std::size_t>(count, 32));
+  }
+}
+
+TEST(TaskScheduler, ACapLimitsTheThreadsOfOneLoop) {
+  setTaskConcurrency(2);
+  EXPECT_EQ(taskConcurrency(), 2);
+  std::atomic<int> running{0}, most{0};
+  parallelFor(64, 1, [&](std::size_t, std::size_t) {
+    const int now = running.fetch_add(1) + 1;
+    int seen = most.load();
+    while (now > seen && !most.compare_exchange_weak(seen, now)) {
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));  // long enough for others to start
+    running.fetch_sub(1);
+  });
+  EXPECT_LE(most.load(), 2);
+  setTaskConcurrency(0);
+  EXPECT_EQ(taskConcurrency(), static_cast<int>(std::max(1u, std::thread::hardware_concurrency())));
+}
+
+TEST(TaskScheduler, LoopsNestAndExceptionsReachTheCaller) {
+  std::atomic<int> inner{0};
+  parallelFor(8, 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      parallelFor(100, 10, [&](std::size_t b, std::size_t e) { inner.fetch_add(static_cast<int>(e - b)); });
+  });
+  EXPECT_EQ(inner.load(), 800);
+  EXPECT_THROW(parallelFor(100, 1,
+                           [](std::size_t begin, std::size_t) {
+                             if (begin == 42) throw std::runtime_error("task 42");
+                           }),
+               std::runtime_error);
+}
