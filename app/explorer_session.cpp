@@ -56,6 +56,7 @@ struct ExplorerSession::Proxy {
   static constexpr std::chrono::milliseconds kInterval{15};
   Proxy(std::shared_ptr<const core::InsideMask> insideMask, int threads, std::shared_ptr<core::CoreBudget> cores)
       : mask(std::move(insideMask)), accumulator(mask, threads, std::move(cores)), publisher(accumulator, kInterval) {
+    accumulator.setCoresFirst(true);  // its burst is what the next frame shows
     const auto inside = static_cast<double>(std::max<std::uint64_t>(accumulator.insideVoxels(), 1));
     targetPoints = static_cast<std::uint64_t>(kProxyPointsPerVoxel * inside);
     dragTargetPoints = static_cast<std::uint64_t>(kProxyDragPointsPerVoxel * inside);

@@ -9,6 +9,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/core_budget.h"
 #include "core/task_scheduler.h"
 
 using voxflame::core::parallelFor;
@@ -61,4 +62,30 @@ TEST(TaskScheduler, LoopsNestAndExceptionsReachTheCaller) {
                              if (begin == 42) throw std::runtime_error("task 42");
                            }),
                std::runtime_error);
+}
+
+// A core freed while a thread that goes first (the proxy's) and another wait is the first one's,
+// whichever came first.
+TEST(CoreBudget, AFreedCoreGoesToTheThreadThatGoesFirst) {
+  voxflame::core::CoreBudget budget(1);
+  budget.acquire();
+  std::atomic<int> order{0};
+  int normalTurn = 0, firstTurn = 0;
+  std::jthread normal([&] {
+    budget.acquire();
+    normalTurn = ++order;
+    budget.release();
+  });
+  while (budget.waiting() < 1) std::this_thread::yield();
+  std::jthread first([&] {
+    budget.acquire(true);
+    firstTurn = ++order;
+    budget.release();
+  });
+  while (budget.waiting() < 2) std::this_thread::yield();
+  budget.release();
+  normal.join();
+  first.join();
+  EXPECT_EQ(firstTurn, 1);
+  EXPECT_EQ(normalTurn, 2);
 }

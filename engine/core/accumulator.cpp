@@ -1115,7 +1115,9 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
       });
       continue;
     }
-    if (cores_) cores_->acquire();  // held for one batch: the other accumulator gets its turn between
+    if (cores_)
+      cores_->acquire(coresFirst_.load(
+          std::memory_order_relaxed));  // held for one batch: the other accumulator gets its turn between
     runBatch(threadIndex, stream, generation_.load(), batches[static_cast<std::size_t>(stream)], splats);
     if (cores_) cores_->release();
   }

@@ -284,6 +284,9 @@ class Accumulator {
   // The budget its workers share (null: none); a reader that works as hard as a worker (a pack)
   // holds a core of it too.
   CoreBudget* coreBudget() const { return cores_.get(); }
+  // Its workers take a freed core of the budget before the other accumulator's (the proxy's, so
+  // an edit shows within two frames while the large grid refines).
+  void setCoresFirst(bool first) { coresFirst_.store(first, std::memory_order_relaxed); }
   std::uint64_t generation() const { return generation_.load(std::memory_order_acquire); }
   int threadCount() const { return static_cast<int>(threads_.size()); }
   const InsideMask& mask() const { return *mask_; }
@@ -333,6 +336,7 @@ class Accumulator {
 
   std::shared_ptr<const InsideMask> mask_;
   std::shared_ptr<CoreBudget> cores_;  // set before the workers start
+  std::atomic<bool> coresFirst_{false};
 
   // The grid, guarded per slab by slabMutexes_. A slab is a run of whole colour slices (and the
   // voxel slices under them), so a colour cell and all its voxels share one slab and one lock.

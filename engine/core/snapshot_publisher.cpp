@@ -80,7 +80,9 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     waitingForPoints = false;
     if (held_) continue;
     if (seen == publishedVersion_.load()) continue;
-    if (const std::uint64_t minimum = minimumPoints_.load(); minimum > 0) {
+    // A pattern just set has no points yet: a volume of none would only show nothing (and keep a
+    // taker from the first real one until the next look), so at least one point is waited for.
+    if (const std::uint64_t minimum = std::max<std::uint64_t>(minimumPoints_.load(), 1); minimum > 0) {
       const AccumulatorStats stats = accumulator_.stats();
       if (stats.points < minimum && !stats.done && stats.problem.empty()) {
         waitingForPoints = true;
