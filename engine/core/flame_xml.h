@@ -51,6 +51,10 @@ struct ImportedFlame {
   ToneMapSettings tone;               // flam3's defaults, then the file's keys
   bool depthAdded = false;            // addFlameDepth changed the genome
   std::vector<std::string> warnings;  // what was left out or replaced, for the user
+  // What the file asks for that the import could not keep, one short name each, sorted
+  // ("variation crackle", "xaos", "<motion>"): empty when the flame was imported whole. The
+  // corpus tally counts these; `warnings` says the same in sentences.
+  std::vector<std::string> leftOut;
 };
 
 struct FlameFileContents {
@@ -72,7 +76,8 @@ bool isFlameFilePath(const std::filesystem::path& path);
 // genome iterates in the plane z = const.
 bool isFlatFlame(const FlameGenome& genome);
 
-// Gives a flat genome depth as described above (depth ≥ 0; 0 collapses it onto z = 0). Returns
+// Gives a flat genome depth as described above (depth ≥ 0; 0 collapses it onto z = 0); with depth
+// > 0 it drops flatten terms, which would set z back to 0. Returns
 // false, changing nothing, for a genome that is not flat.
 bool addFlameDepth(FlameGenome& genome, double depth);
 
