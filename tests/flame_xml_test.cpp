@@ -699,3 +699,17 @@ TEST(FlameXml, PrePostFormsCapitalisedNamesAndBareParameters) {
   ASSERT_EQ(deep.flame.genome.xforms.at(0).variations.size(), 1u);
   EXPECT_EQ(deep.flame.genome.xforms[0].variations[0].name, "linear");
 }
+
+TEST(FlameXml, JwildfireLayeredFlamesReadTheirFirstLayer) {
+  const std::string layer = "<layer weight=\"1\">" + kTwoXforms + hexPaletteBlock() + "</layer>\n";
+  const std::string text = "<jwf-flame name=\"layered\" brightness=\"3\">\n" + layer +
+                           "<layer weight=\"0.4\"><xform weight=\"1\" coefs=\"1 0 0 1 0 0\" linear=\"1\"/>" +
+                           hexPaletteBlock() + "</layer></jwf-flame>\n";
+  const FlameFileContents contents = readFlameXml(text, "layers.flame");
+  EXPECT_EQ(contents.names, (std::vector<std::string>{"layered"}));
+  EXPECT_EQ(contents.flame.genome.xforms.size(), 2u);
+  EXPECT_DOUBLE_EQ(contents.flame.tone.brightness, 3.0);
+  expectColorNear(srgb255(contents.flame, 200), {200, 55, 128});
+  EXPECT_EQ(contents.flame.leftOut, (std::vector<std::string>{"JWildfire layers after the first"}));
+  EXPECT_NE(errorOf("<jwf-flame name=\"empty\"></jwf-flame>").find("<layer>"), std::string::npos);
+}

@@ -1450,6 +1450,29 @@ VOXFLAME_VARIATION_TARGETS void sineblur(const VariationInput& in, double* __res
   }
 }
 
+// Michael Faber's glynnia (JWildfire's): a random one of two square-root branches, mirrored
+// inside the unit circle. A point where a root is 0 (flam3-style plugins skip it) is carried
+// through unmapped.
+VOXFLAME_VARIATION_2D(glynnia, {
+  const double half = w * std::sqrt(2.0) / 2.0;
+  const double r = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+  const double side = r >= 1.0 ? 1.0 : -1.0;
+  if (laneUniform(rnd[i]) > 0.5) {
+    const double d = std::sqrt(r + x[i]);
+    if (d != 0.0) {
+      outX[i] += side * half * d;
+      outY[i] -= half / d * y[i];
+    }
+  } else {
+    const double d = r + x[i];
+    const double dx = std::sqrt(r * (y[i] * y[i] + d * d));
+    if (dx != 0.0) {
+      outX[i] += side * w / dx * d;
+      outY[i] += w / dx * y[i];
+    }
+  }
+})
+
 // Apophysis 3D's flatten: the transform's z is 0. It adds nothing itself; the chaos game sets z to
 // 0 after a transform's variations (before them for pre_flatten, after the post_ ones for
 // post_flatten) when one of them is flatten.
@@ -1736,6 +1759,10 @@ std::vector<VariationInfo> buildCatalogue() {
   add("unpolar", "e^y (sin x, cos x) / 2π, z (polar's inverse)", k2D, kFixed, &unpolar);
   add("sineblur", "(acos(2Ψ₂^power − 1)/π) (cos 2πΨ₁, sin 2πΨ₁), z (power ≥ 0)", k2D, kRandom, &sineblur,
       {{"power", 1.0, 0.0, 10.0}});
+  add("glynnia",
+      "one of two branches at random (Ψ > ½): ±(w√2/2)(√(r + x), −y/√(r + x)), or w (±(r + x), y) / √(r (y² + "
+      "(r + x)²)); + outside the unit circle, − inside (w the weight)",
+      k2D, kRandom, &glynnia);
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
   for (VariationInfo& info : c)

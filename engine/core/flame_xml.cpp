@@ -924,8 +924,22 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
   reader.setRenamed(&renamed);
   ImportedFlame flame;
   flame.name = name;
+  // JWildfire's layered flames (<jwf-flame>) keep their transforms and palette in <layer>
+  // children; the first layer is read, the others are named as left out.
+  pugi::xml_node body = node;
+  if (std::string_view(node.name()) == "jwf-flame") {
+    body = node.child("layer");
+    if (!body) reader.fail("", "is a JWildfire <jwf-flame> without a <layer>; there is nothing to draw");
+    std::size_t layers = 0;
+    for (const pugi::xml_node& layer : node.children("layer")) layers += layer ? 1 : 0;
+    if (layers > 1) {
+      reader.lose("JWildfire layers after the first");
+      reader.warn("the flame has " + std::to_string(layers) +
+                  " JWildfire layers; voxflame reads the first and leaves the others out");
+    }
+  }
   std::size_t index = 0;
-  for (const pugi::xml_node& child : node.children("xform")) {
+  for (const pugi::xml_node& child : body.children("xform")) {
     if (index >= kMaxFlameXforms)
       reader.fail("", "has more than " + std::to_string(kMaxFlameXforms) + " transforms; voxflame takes at most " +
                           std::to_string(kMaxFlameXforms));
@@ -949,7 +963,7 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
   double total = 0.0;
   for (const FlameXform& x : flame.genome.xforms) total += x.weight;
   if (!(total > 0.0)) reader.fail("", "has only transforms of weight 0; at least one needs a positive weight");
-  if (const pugi::xml_node finalNode = node.child("finalxform")) {
+  if (const pugi::xml_node finalNode = body.child("finalxform")) {
     flame.genome.hasFinal = true;
     flame.genome.finalXform = reader.xform(finalNode, "final transform", true);
   }
@@ -960,7 +974,7 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
       reader.fail("", "<symmetry> needs a kind attribute (flam3: N-fold, negative adds a mirror)");
     flame.genome.symmetry = symmetryOfKind(reader.number(symmetry.attribute("kind"), "<symmetry>", -1e6, 1e6), reader);
   }
-  const Palette palette = readPalette(node, reader);
+  const Palette palette = readPalette(body, reader);
   flame.palette.reserve(kFlamePaletteSize);
   for (std::size_t i = 0; i < kFlamePaletteSize; ++i)
     flame.palette.push_back(
@@ -973,8 +987,8 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
   return flame;
 }
 
-// Every <flame> element, in document order, at any depth (explicit stack: a deeply nested file
-// must not exhaust the call stack).
+// Every <flame> (or JWildfire <jwf-flame>) element, in document order, at any depth (explicit stack: a deeply nested
+// file must not exhaust the call stack).
 std::vector<pugi::xml_node> flameElements(const pugi::xml_document& document) {
   std::vector<pugi::xml_node> flames;
   std::vector<pugi::xml_node> stack;
@@ -983,7 +997,7 @@ std::vector<pugi::xml_node> flameElements(const pugi::xml_document& document) {
     const pugi::xml_node node = stack.back();
     stack.pop_back();
     if (node.type() != pugi::node_element) continue;
-    if (std::string_view(node.name()) == "flame") {
+    if (std::string_view(node.name()) == "flame" || std::string_view(node.name()) == "jwf-flame") {
       flames.push_back(node);
       continue;  // flames do not nest
     }
