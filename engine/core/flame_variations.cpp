@@ -1279,11 +1279,12 @@ VOXFLAME_VARIATION_TARGETS void whorl(const VariationInput& in, double* __restri
 VOXFLAME_VARIATION_TARGETS void waves2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double freqX = P[0], scaleX = P[1], freqY = P[2], scaleY = P[3];
+  const double freqX = P[0], scaleX = P[1], freqY = P[2], scaleY = P[3], freqZ = P[4], scaleZ = P[5];
   for (std::size_t i = 0; i < n; ++i) {
     outX[i] += w * (x[i] + scaleX * std::sin(y[i] * freqX));
     outY[i] += w * (y[i] + scaleY * std::sin(x[i] * freqY));
-    outZ[i] += w * z[i];
+    // Apophysis 7X's z part (waves2_freqz, waves2_scalez); 0 carries z through.
+    outZ[i] += w * (z[i] + scaleZ * std::sin(std::sqrt(x[i] * x[i] + y[i] * y[i]) * freqZ));
   }
 }
 
@@ -1472,6 +1473,22 @@ VOXFLAME_VARIATION_2D(glynnia, {
     }
   }
 })
+
+// cyberxaos' epispiral (the Apophysis plugin; JWildfire's differs only at thickness 0, where it
+// uses 1/cos(nφ) − holes).
+VOXFLAME_VARIATION_TARGETS void epispiral(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double waves = P[0], thickness = P[1], holes = P[2];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double theta = std::atan2(y[i], x[i]);
+    const double c = std::cos(waves * theta);
+    const double t = laneUniform(rnd[i]) * thickness / (c == 0.0 ? kEpsilon : c) - holes;
+    outX[i] += w * t * std::cos(theta);
+    outY[i] += w * t * std::sin(theta);
+    outZ[i] += w * z[i];
+  }
+}
 
 // Apophysis 3D's flatten: the transform's z is 0. It adds nothing itself; the chaos game sets z to
 // 0 after a transform's variations (before them for pre_flatten, after the post_ ones for
@@ -1709,11 +1726,15 @@ std::vector<VariationInfo> buildCatalogue() {
       {{"angle", 0.0, -kPi, kPi}, count("count", 1.0, 1.0, 12.0), {"hole", 0.0, -1.0, 1.0}, {"swirl", 0.0, -2.0, 2.0}});
   add("whorl", "r (cos α, sin α), z; α = φ + (r < w ? inside : outside)/(w − r) (w the weight)", k2D, kFixed, &whorl,
       {{"inside", 0.0, -2.0, 2.0}, {"outside", 0.0, -2.0, 2.0}});
-  add("waves2", "(x + scalex sin(freqx y), y + scaley sin(freqy x), z)", k2D, kFixed, &waves2,
+  add("waves2",
+      "(x + scalex sin(freqx y), y + scaley sin(freqy x), z + scalez sin(freqz r)) (the z part is Apophysis 7X's)", k2D,
+      kFixed, &waves2,
       {{"freqx", 1.0, -10.0, 10.0},
        {"scalex", 0.0, -2.0, 2.0},
        {"freqy", 1.0, -10.0, 10.0},
-       {"scaley", 0.0, -2.0, 2.0}});
+       {"scaley", 0.0, -2.0, 2.0},
+       {"freqz", 0.0, -10.0, 10.0},
+       {"scalez", 0.0, -2.0, 2.0}});
   add("exp", "e^x (cos y, sin y), z: the complex exponential of x + iy", k2D, kFixed, &complexExp);
   add("log", "(log_base r, φ, z): the complex logarithm (base e, flam3's, unless JWildfire's base is set)", k2D, kFixed,
       &complexLog, {{"base", std::numbers::e, 1.1, 10.0}});
@@ -1763,6 +1784,8 @@ std::vector<VariationInfo> buildCatalogue() {
       "one of two branches at random (Ψ > ½): ±(w√2/2)(√(r + x), −y/√(r + x)), or w (±(r + x), y) / √(r (y² + "
       "(r + x)²)); + outside the unit circle, − inside (w the weight)",
       k2D, kRandom, &glynnia);
+  add("epispiral", "(Ψ·thickness / cos(n φ) − holes)(cos φ, sin φ), z", k2D, kRandom, &epispiral,
+      {{"n", 6.0, 0.0, 20.0}, {"thickness", 0.0, -2.5, 2.5}, {"holes", 1.0, -5.0, 5.0}});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
   for (VariationInfo& info : c)
