@@ -443,6 +443,37 @@ TEST(ChaosGame, PreAndPostVariationsWrapTheTransformsOwn) {
   EXPECT_NEAR(run.z[0], 0.5 + 0.3, 1e-12);
 }
 
+// flam3's pre_blur moves the point before the transform's other variations see it: with
+// spherical after it, the result is spherical of the blurred point, not spherical plus a blur
+// (the lane's random draws are replayed).
+TEST(ChaosGame, Flam3sPreBlurActsBeforeTheOtherVariations) {
+  FlameGenome genome;
+  FlameXform x = xform(1.0, Affine3{});
+  x.variations = {{"spherical", 1.0, {}}, {"pre_blur", 0.5, {}}};
+  genome.xforms = {x};
+  const ChaosGame game(flameLayer(genome), "test");
+  LaneRun run(game);
+  std::vector<std::uint32_t> states(kLanes);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    run.lanes.x[i] = 0.3;
+    run.lanes.y[i] = -0.7;
+    run.lanes.z[i] = 0.5;
+    states[i] = run.lanes.random[i];
+  }
+  run.step(game);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    // The lane's draws: one for the transform, then pre_blur's four for G and one for the angle.
+    std::uint32_t r = laneNext(states[i]);
+    const double a = laneUniform(r), b = laneUniform(r), c = laneUniform(r), d = laneUniform(r);
+    const double g = 0.5 * (a + b + c + d - 2.0), angle = 2.0 * std::numbers::pi * laneUniform(r);
+    const double qx = 0.3 + g * std::cos(angle), qy = -0.7 + g * std::sin(angle);
+    const double q2 = qx * qx + qy * qy;
+    EXPECT_NEAR(run.x[i], qx / q2, 1e-12);
+    EXPECT_NEAR(run.y[i], qy / q2, 1e-12);
+    EXPECT_NEAR(run.z[i], 0.5, 1e-12);  // a 2D pre_ term keeps z; spherical carries it
+  }
+}
+
 TEST(ChaosGame, FlattenSetsTheTransformsDepthToZero) {
   FlameGenome genome;
   FlameXform x = xform(1.0, affine({0.5, 0, 0, 0.1, 0, 0.5, 0, 0, 0, 0, 0.5, 0.4}));

@@ -566,7 +566,8 @@ TEST(VariationCatalogue, HasAllOfFlam3sVariations) {
   EXPECT_EQ(findVariation("post_mobius"), findVariation("mobius"));
   EXPECT_EQ(variationStage("pre_spherical"), VariationStage::Pre);
   EXPECT_EQ(variationStage("post_spherical"), VariationStage::Post);
-  EXPECT_EQ(variationStage("pre_blur"), VariationStage::Normal);  // flam3's own
+  EXPECT_EQ(variationStage("pre_blur"), VariationStage::Pre);  // flam3's own, applied first
+  EXPECT_EQ(findVariation("pre_blur")->name, "pre_blur");
   EXPECT_EQ(variationStage("spherical"), VariationStage::Normal);
   EXPECT_EQ(findVariation("pre_nothing"), nullptr);
   // A variation whose result ignores the point adds in its pre_/post_ form; the others replace.

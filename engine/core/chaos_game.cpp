@@ -12,9 +12,8 @@ namespace voxflame::core {
 
 namespace {
 
-constexpr double kBadValue = 1e10;
-static_assert(kMaxFlameXforms + kMaxFlameSymmetry < 256,
-              "ChaosLanes::choice holds a transform index in a byte");  // flam3's limit: a state beyond it has escaped
+constexpr double kBadValue = 1e10;  // flam3's limit: a state beyond it has escaped
+static_assert(kMaxFlameXforms + kMaxFlameSymmetry < 256, "ChaosLanes::choice holds a transform index in a byte");
 
 // The step's loops as functions of restrict-qualified parameters (GCC vectorises loops over
 // those, not over restrict locals), each built for AVX2 and for any x86-64 and picked when the
@@ -53,9 +52,9 @@ void drawTransformsAfter(std::uint32_t* __restrict random, std::uint8_t* __restr
 }
 
 // Fills one row of the pick table: entry e covers draws in [e, e + 1) / size; each transform owns
-// a run of entries in proportion to its weight (flam3's xform_distrib, finer). A transform of
-// positive weight below one entry's share still gets the entry its cumulative weight lands in.
-// All weights 0: the row is left to the caller.
+// a run of entries in proportion to its weight (flam3's xform_distrib); the last transform of
+// positive weight takes the rounding remainder, so one of weight 0 is never drawn. All weights 0:
+// false, and the row is left to the caller.
 bool fillPickRow(std::uint8_t* row, std::size_t size, const std::vector<double>& weights) {
   double total = 0.0;
   for (const double w : weights) total += w;

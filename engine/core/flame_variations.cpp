@@ -1858,7 +1858,8 @@ constexpr std::string_view kPrePrefix = "pre_", kPostPrefix = "post_";
 }  // namespace
 
 VariationStage variationStage(std::string_view name) {
-  if (catalogueEntry(name)) return VariationStage::Normal;
+  // flam3's pre_blur is an entry of its own that acts before the others.
+  if (catalogueEntry(name)) return name.starts_with(kPrePrefix) ? VariationStage::Pre : VariationStage::Normal;
   if (name.starts_with(kPrePrefix) && catalogueEntry(name.substr(kPrePrefix.size()))) return VariationStage::Pre;
   if (name.starts_with(kPostPrefix) && catalogueEntry(name.substr(kPostPrefix.size()))) return VariationStage::Post;
   return VariationStage::Normal;

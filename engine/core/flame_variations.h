@@ -86,8 +86,8 @@ struct VariationInfo {
   std::vector<double> defaultParams() const;
 };
 
-// Where in its transform a variation term acts: its name's pre_/post_ prefix (see above). A name
-// the catalogue holds itself (pre_blur) is Normal.
+// Where in its transform a variation term acts: its name's pre_/post_ prefix (see above); the
+// catalogue's own pre_blur acts at the pre_ stage too.
 enum class VariationStage { Pre, Normal, Post };
 VariationStage variationStage(std::string_view name);
 

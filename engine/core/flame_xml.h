@@ -7,10 +7,13 @@
 // flam3 writes an affine map as coefs="a d b e c f", meaning x' = a x + b y + c, y' = d x + e y + f;
 // the reader puts a, b, c, d, e, f into Affine3's first two rows (flame.h). Variations are the
 // attributes of an <xform> that name a variation of the catalogue (flame_variations.h), their
-// parameters `<variation>_<parameter>` attributes (julian_power, ngon_sides). What voxflame does not
-// know (a variation, xaos) is left out and reported as a warning; what would make the flame
-// meaningless (no transforms, only zero weights, coefficients that are not finite or beyond ±1e6)
-// is a core::Error naming the file and the transform.
+// parameters `<variation>_<parameter>` attributes (julian_power, ngon_sides); `chaos` is the
+// transform's xaos. Files that are not well-formed XML (JWildfire's attribute names with spaces or
+// `#`, stray closing tags) are read again tolerantly. What voxflame does not know (a variation,
+// flam3's <motion>, JWildfire's motion curves) is left out, reported as a warning and listed in
+// ImportedFlame::leftOut; what would make the flame meaningless (no transforms, only zero
+// weights, coefficients that are not finite or beyond ±1e6) is a core::Error naming the file and
+// the transform.
 //
 // Flames are 2D. A flat one (no 3D variation, no z coefficient) gains depth on import
 // (addFlameDepth): the z row of every transform becomes z' = ½ z + depth · s, with s from −1 for
