@@ -97,3 +97,48 @@ TEST(Flam3Oracle, DeterministicVariationsMatchLibflam3) {
   // flam3's 99 less the random ones (julia, blur, noise, pie, arch, ...): about 80 variations.
   EXPECT_GE(compared, 4u * 75u);
 }
+
+// Xaos as flam3 means it: row i of `chaos` scales the weights of the transform chosen right after
+// transform i. Each transform here sends every point to its own spot (x = 1, 2, 3), so the
+// sequence flam3_iterate draws is read off its points; the shares of each transition are those
+// voxflame's chaos game is tested for (chaos_game_test.cpp, ChaosGame.XaosForbids...).
+TEST(Flam3Oracle, XaosRowsScaleTheNextTransformsWeight) {
+  std::string xml = "<flame size=\"10 10\">";
+  const char* chaos[] = {"0 1 1", "1 1 3", "2 1 1"};
+  for (int k = 0; k < 3; ++k)
+    xml += "<xform weight=\"1\" coefs=\"0 0 0 0 " + std::to_string(k + 1) + " 0\" linear=\"1\" chaos=\"" + chaos[k] +
+           "\"/>";
+  xml += "</flame>";
+  int count = 0;
+  flam3_genome* genome = flam3_parse_xml2(xml.data(), const_cast<char*>("xaos"), flam3_defaults_on, &count);
+  ASSERT_NE(genome, nullptr);
+  prepare_precalc_flags(genome);
+  for (int k = 0; k < genome->num_xforms; ++k) xform_precalc(genome, k);
+  genome->chaos_enable = !flam3_check_unity_chaos(genome);
+  ASSERT_TRUE(genome->chaos_enable);
+  unsigned short* distrib = flam3_create_xform_distrib(genome);
+  ASSERT_NE(distrib, nullptr);
+  randctx rc{};
+  irandinit(&rc, 1);
+  constexpr int kSamples = 60000;
+  std::vector<double> samples(4 * kSamples, 0.0);
+  flam3_iterate(genome, kSamples, 0, samples.data(), distrib, &rc);
+  double transitions[3][3] = {};
+  for (int i = 1; i < kSamples; ++i) {
+    const auto from = static_cast<int>(std::lround(samples[4 * (i - 1)])) - 1;
+    const auto to = static_cast<int>(std::lround(samples[4 * i])) - 1;
+    ASSERT_TRUE(from >= 0 && from < 3 && to >= 0 && to < 3);
+    transitions[from][to] += 1.0;
+  }
+  const auto share = [&](int from, int to) {
+    return transitions[from][to] / (transitions[from][0] + transitions[from][1] + transitions[from][2]);
+  };
+  EXPECT_EQ(transitions[0][0], 0.0);
+  EXPECT_NEAR(share(0, 1), 0.5, 0.02);
+  EXPECT_NEAR(share(1, 2), 0.6, 0.02);
+  EXPECT_NEAR(share(1, 0), 0.2, 0.02);
+  EXPECT_NEAR(share(2, 0), 0.5, 0.02);
+  EXPECT_NEAR(share(2, 1), 0.25, 0.02);
+  flam3_free(distrib);
+  flam3_free(genome);
+}
