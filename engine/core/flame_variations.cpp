@@ -1490,6 +1490,50 @@ VOXFLAME_VARIATION_TARGETS void epispiral(const VariationInput& in, double* __re
   }
 }
 
+// Xyrus02's falloff2 (Apophysis 7X): a blur that grows with the distance from a centre, linear
+// (type 0), in spherical coordinates (1; its z is sin σ without the radius, as the plugin has it)
+// or Gaussian (2). The plugin's colour shift (mul_c) is not applied: a variation here moves
+// points, not colours.
+VOXFLAME_VARIATION_TARGETS void falloff2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double scale = 0.04 * std::max(P[0], 1e-6), mindist = std::max(P[1], 0.0);
+  const double mulX = std::clamp(P[2], 0.0, 1.0), mulY = std::clamp(P[3], 0.0, 1.0);
+  const double mulZ = std::clamp(P[4], 0.0, 1.0);
+  const double x0 = P[6], y0 = P[7], z0 = P[8];
+  const bool invert = std::round(P[9]) >= 1.0;
+  const double type = std::round(P[10]);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dx = x[i] - x0, dy = y[i] - y0, dz = z[i] - z0;
+    double d = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if (invert) d = 1.0 - d;
+    d = std::max(0.0, (std::max(d, 0.0) - mindist) * scale);
+    const double a = laneUniform(rnd[i]), b = laneUniform(rnd[i]), c = laneUniform(rnd[i]);
+    double px, py, pz;
+    if (type == 1.0) {
+      const double rIn = std::sqrt(x[i] * x[i] + y[i] * y[i] + z[i] * z[i]) + 1e-6;
+      const double sigma = std::asin(std::clamp(z[i] / rIn, -1.0, 1.0)) + mulZ * a * d;
+      const double phi = std::atan2(y[i], x[i]) + mulY * b * d;
+      const double r = rIn + mulX * c * d;
+      px = r * std::cos(sigma) * std::cos(phi);
+      py = r * std::cos(sigma) * std::sin(phi);
+      pz = std::sin(sigma);
+    } else if (type >= 2.0) {
+      const double sigma = d * a * kTwoPi, phi = d * b * kPi, r = d * c;
+      px = x[i] + mulX * r * std::cos(sigma) * std::cos(phi);
+      py = y[i] + mulY * r * std::cos(sigma) * std::sin(phi);
+      pz = z[i] + mulZ * r * std::sin(sigma);
+    } else {
+      px = x[i] + mulX * a * d;
+      py = y[i] + mulY * b * d;
+      pz = z[i] + mulZ * c * d;
+    }
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * pz;
+  }
+}
+
 // Apophysis 3D's flatten: the transform's z is 0. It adds nothing itself; the chaos game sets z to
 // 0 after a transform's variations (before them for pre_flatten, after the post_ ones for
 // post_flatten) when one of them is flatten.
@@ -1786,6 +1830,24 @@ std::vector<VariationInfo> buildCatalogue() {
       k2D, kRandom, &glynnia);
   add("epispiral", "(Ψ·thickness / cos(n φ) − holes)(cos φ, sin φ), z", k2D, kRandom, &epispiral,
       {{"n", 6.0, 0.0, 20.0}, {"thickness", 0.0, -2.5, 2.5}, {"holes", 1.0, -5.0, 5.0}});
+  add("falloff2",
+      "p + blur growing with D = max(0, (|p − (x0, y0, z0)| − mindist)) · 0.04 scatter (|…| as 1 − |…| with invert): "
+      "type 0 (mul_x Ψ₁, mul_y Ψ₂, mul_z Ψ₃) D; type 1 r (cos σ cos φ, cos σ sin φ), sin σ with σ = asin(z/r) + "
+      "mul_z Ψ₁ D, φ = atan2(y, x) + mul_y Ψ₂ D, r = |p| + mul_x Ψ₃ D; type 2 a Gaussian-like offset D Ψ₃ in a "
+      "random direction (2πΨ₁, πΨ₂) scaled by mul_x, mul_y, mul_z (Apophysis 7X's; mul_c, its colour shift, is not "
+      "applied)",
+      k3D, kRandom, &falloff2,
+      {{"scatter", 1.0, 0.0, 20.0},
+       {"mindist", 0.5, 0.0, 3.0},
+       {"mul_x", 1.0, 0.0, 1.0},
+       {"mul_y", 1.0, 0.0, 1.0},
+       {"mul_z", 0.0, 0.0, 1.0},
+       {"mul_c", 0.0, 0.0, 1.0},
+       {"x0", 0.0, -3.0, 3.0},
+       {"y0", 0.0, -3.0, 3.0},
+       {"z0", 0.0, -3.0, 3.0},
+       {"invert", 0.0, 0.0, 1.0},
+       {"type", 0.0, 0.0, 2.0}});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
   for (VariationInfo& info : c)

@@ -515,6 +515,11 @@ class FlameReader {
           consumed.insert(param->second.first);
           break;
         }
+      // falloff2's colour shift is not applied (flame_variations.cpp).
+      if (info->name == "falloff2" && term.params.at(5) != 0.0) {
+        lose("colour shift of " + withoutCopyMark(name));
+        warn(context + " has " + name + " with a colour shift (mul_c), which voxflame does not apply");
+      }
       x.variations.push_back(std::move(term));
     }
     // ...then everything else: parameters, JWildfire's own keys, and what voxflame does not know.
