@@ -1534,6 +1534,29 @@ VOXFLAME_VARIATION_TARGETS void falloff2(const VariationInput& in, double* __res
   }
 }
 
+// Apophysis 7X's crop: points outside the rectangle are moved back into it, onto a band of
+// scatter_area of its half-size inside the crossed edge at random (or to the origin with zero).
+// The pre_/post_ forms (crop the point before or after the other variations) are the usual use.
+VOXFLAME_VARIATION_TARGETS void crop(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                     double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double x0 = std::min(P[0], P[2]), x1 = std::max(P[0], P[2]);
+  const double y0 = std::min(P[1], P[3]), y1 = std::max(P[1], P[3]);
+  const double scatter = std::clamp(P[4], -1.0, 1.0);
+  const double bandX = (x1 - x0) * 0.5 * scatter, bandY = (y1 - y0) * 0.5 * scatter;
+  const bool zero = std::round(P[5]) >= 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = laneUniform(rnd[i]), b = laneUniform(rnd[i]);
+    const bool outside = x[i] < x0 || x[i] > x1 || y[i] < y0 || y[i] > y1;
+    double px = x[i] < x0 ? x0 + a * bandX : x[i] > x1 ? x1 - a * bandX : x[i];
+    double py = y[i] < y0 ? y0 + b * bandY : y[i] > y1 ? y1 - b * bandY : y[i];
+    if (outside && zero) px = py = 0.0;
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * z[i];
+  }
+}
+
 // Apophysis 3D's flatten: the transform's z is 0. It adds nothing itself; the chaos game sets z to
 // 0 after a transform's variations (before them for pre_flatten, after the post_ ones for
 // post_flatten) when one of them is flatten.
@@ -1848,6 +1871,16 @@ std::vector<VariationInfo> buildCatalogue() {
        {"z0", 0.0, -3.0, 3.0},
        {"invert", 0.0, 0.0, 1.0},
        {"type", 0.0, 0.0, 2.0}});
+  add("crop",
+      "(x, y) clamped into [left, right] × [top, bottom]: a coordinate beyond an edge lands Ψ · scatter_area · half "
+      "the side inside it; with zero, a point outside goes to the origin instead; z",
+      k2D, kRandom, &crop,
+      {{"left", -1.0, -5.0, 5.0},
+       {"top", -1.0, -5.0, 5.0},
+       {"right", 1.0, -5.0, 5.0},
+       {"bottom", 1.0, -5.0, 5.0},
+       {"scatter_area", 0.0, -1.0, 1.0},
+       {"zero", 0.0, 0.0, 1.0}});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
   for (VariationInfo& info : c)
