@@ -444,6 +444,13 @@ const std::vector<PointCase>& pointCases() {
       {"unpolar", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.018684916573602748, 0.060403255671402166, 0.4}},
       {"sineblur", {1.7}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.34445218116155524, -0.3256421774802092, 0.4}},
       {"flatten", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.0, 0.0, 0.0}},
+      // julian2: power −5, second affine map; Ψ = 0.879466 picks root 4.
+      {"julian2",
+       {-5.0, 1.4, 0.9, 0.3, -0.2, 1.1, 0.15, -0.1},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.03599907988438836, 0.8099580219849262, 0.4}},
       // crop: beyond the right and top edges, back inside by Ψ · scatter · half the side; with zero to the
       // origin; inside, unchanged.
       {"crop",

@@ -1557,6 +1557,24 @@ VOXFLAME_VARIATION_TARGETS void crop(const VariationInput& in, double* __restric
   }
 }
 
+// Xyrus02's julian2 (Apophysis plugin, JWildfire): julian of the point after a second affine map
+// (a b e / c d f).
+VOXFLAME_VARIATION_TARGETS void julian2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double powerN = countParam(P[0]), exponent = P[1] / powerN * 0.5, rootCount = std::abs(powerN);
+  const double a = P[2], b = P[3], c = P[4], d = P[5], e = P[6], f = P[7];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double px = a * x[i] + b * y[i] + e, py = c * x[i] + d * y[i] + f;
+    const double root = std::trunc(rootCount * laneUniform(rnd[i]));
+    const double angle = (std::atan2(py, px) + kTwoPi * root) / powerN;
+    const double r = w * std::pow(px * px + py * py, exponent);
+    outX[i] += r * std::cos(angle);
+    outY[i] += r * std::sin(angle);
+    outZ[i] += w * z[i];
+  }
+}
+
 // Apophysis 3D's flatten: the transform's z is 0. It adds nothing itself; the chaos game sets z to
 // 0 after a transform's variations (before them for pre_flatten, after the post_ ones for
 // post_flatten) when one of them is flatten.
@@ -1881,6 +1899,18 @@ std::vector<VariationInfo> buildCatalogue() {
        {"bottom", 1.0, -5.0, 5.0},
        {"scatter_area", 0.0, -1.0, 1.0},
        {"zero", 0.0, 0.0, 1.0}});
+  add("julian2",
+      "julian of q = (a x + b y + e, c x + d y + f): |q|^(dist/power) (cos α, sin α), z; α = (∠q + 2πk)/power, "
+      "k = trunc(|power|·Ψ)",
+      k2D, kRandom, &julian2,
+      {count("power", 3.0, -12.0, 12.0),
+       {"dist", 1.0, -3.0, 3.0},
+       {"a", 1.0, -2.0, 2.0},
+       {"b", 0.0, -2.0, 2.0},
+       {"c", 0.0, -2.0, 2.0},
+       {"d", 1.0, -2.0, 2.0},
+       {"e", 0.0, -2.0, 2.0},
+       {"f", 0.0, -2.0, 2.0}});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
   for (VariationInfo& info : c)
