@@ -698,9 +698,30 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
   ImGui::EndDisabled();
 }
 
+// The xaos of one transform (flam3's chaos): a slider per transform that may follow it, scaling
+// that transform's weight; 1 everywhere is no xaos. `count` is the flame's transform count.
+void xaosEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform, std::size_t count) {
+  const bool open = ImGui::TreeNode("xaos");
+  probe(state, scope + "xaos");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("how likely each transform is to follow this one: its weight times this factor (0 never)");
+  if (!open) return;
+  for (std::size_t j = 0; j < count; ++j) {
+    double value = j < xform.xaos.size() ? xform.xaos[j] : 1.0;
+    const std::string label = "to " + std::to_string(j + 1);
+    if (slider(state, scope + "xaos ", label.c_str(), value, 0.0, 5.0)) {
+      if (xform.xaos.size() <= j) xform.xaos.resize(j + 1, 1.0);
+      xform.xaos[j] = value;
+    }
+  }
+  if (button(state, scope, "Reset xaos")) xform.xaos.clear();
+  ImGui::TreePop();
+}
+
 // One transform: weight (not for the final one), colour, colour speed, opacity, the affine map
-// and an optional post map, the variations.
-void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform, bool isFinal) {
+// and an optional post map, the variations, the xaos (`count` is the flame's transform count).
+void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform, bool isFinal,
+                 std::size_t count) {
   if (!isFinal) fieldWidget(state, scope, xform, core::xformFields(), "weight");
   fieldWidget(state, scope, xform, core::xformFields(), "color");
   fieldWidget(state, scope, xform, core::xformFields(), "color_speed");
@@ -719,6 +740,7 @@ void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXfor
   ImGui::Separator();
   ImGui::TextColored(kDimColor, "variations");
   variationsEditor(state, scope, xform);
+  if (!isFinal && count > 1) xaosEditor(state, scope, xform, count);
 }
 
 void flameEditor(ExplorerState& state, std::size_t index, const std::string& scope, core::FlameGenome& flame) {
@@ -726,8 +748,10 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
   if (selected >= static_cast<int>(flame.xforms.size()) || (selected < 0 && !flame.hasFinal)) selected = 0;
   // The transform selector: one button per transform, then the final one.
   ImGui::TextColored(kDimColor, "transform");
+  // Up to 128 transforms: 16 buttons a row.
+  constexpr std::size_t kButtonsPerRow = 16;
   for (std::size_t i = 0; i < flame.xforms.size(); ++i) {
-    ImGui::SameLine();
+    if (i == 0 || i % kButtonsPerRow != 0) ImGui::SameLine();
     const std::string label = std::to_string(i + 1);
     if (ImGui::Selectable(label.c_str(), selected == static_cast<int>(i), 0, ImVec2(ImGui::GetFrameHeight(), 0)))
       selected = static_cast<int>(i);
@@ -747,7 +771,11 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
   }
   ImGui::SameLine();
   if (button(state, scope, "Duplicate") && selected >= 0) {
-    flame.xforms.insert(flame.xforms.begin() + selected + 1, flame.xforms[static_cast<std::size_t>(selected)]);
+    const auto at = static_cast<std::size_t>(selected);
+    flame.xforms.insert(flame.xforms.begin() + selected + 1, flame.xforms[at]);
+    // Xaos columns follow the transforms: the copy is followed as often as its original.
+    for (core::FlameXform& x : flame.xforms)
+      if (x.xaos.size() > at) x.xaos.insert(x.xaos.begin() + selected + 1, x.xaos[at]);
     ++selected;
   }
   ImGui::EndDisabled();
@@ -759,6 +787,8 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
       selected = 0;
     } else if (flame.xforms.size() > 1) {
       flame.xforms.erase(flame.xforms.begin() + selected);
+      for (core::FlameXform& x : flame.xforms)
+        if (x.xaos.size() > static_cast<std::size_t>(selected)) x.xaos.erase(x.xaos.begin() + selected);
       selected = std::min(selected, static_cast<int>(flame.xforms.size()) - 1);
     }
   }
@@ -777,7 +807,7 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
   const std::string xscope = scope + (selected < 0 ? "final/" : "xform/");
   ImGui::PushID(selected);
   core::FlameXform& xform = selected < 0 ? flame.finalXform : flame.xforms[static_cast<std::size_t>(selected)];
-  xformEditor(state, xscope, xform, selected < 0);
+  xformEditor(state, xscope, xform, selected < 0, flame.xforms.size());
   ImGui::PopID();
 
   if (ImGui::TreeNode("Symmetry")) {

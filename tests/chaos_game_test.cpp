@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <set>
@@ -277,7 +278,7 @@ TEST(ChaosGame, BadGenomesAreRefusedWithClearMessages) {
   EXPECT_NE(messageOf(unknown).find("spherical"), std::string::npos);  // suggests the close name
   FlameGenome tooMany = sierpinskiTetrahedron();
   while (tooMany.xforms.size() <= kMaxFlameXforms) tooMany.xforms.push_back(tooMany.xforms.front());
-  EXPECT_NE(messageOf(tooMany).find("1 to 16"), std::string::npos);
+  EXPECT_NE(messageOf(tooMany).find("1 to 128"), std::string::npos);
 }
 
 TEST(FlamePreset, FlameAndQuaternionLayersRoundTripThroughJson) {
@@ -316,7 +317,7 @@ TEST(FlamePreset, BadFlameLayersNameTheKeyAndTheReason) {
   EXPECT_EQ(presetErrorOf(preset(good)), "");
   EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame"})")).find("'layers[0].flame' is missing"), std::string::npos);
   EXPECT_NE(presetErrorOf(preset(R"({"kind": "flames"})")).find("known kinds"), std::string::npos);
-  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": []}})")).find("1 to 16"), std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": []}})")).find("1 to 128"), std::string::npos);
   EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{"weight": 0}]}})")).find("weight"),
             std::string::npos);
   EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{"affine": [1, 2]}]}})"))
@@ -340,4 +341,147 @@ TEST(FlamePreset, BadFlameLayersNameTheKeyAndTheReason) {
             std::string::npos);
   EXPECT_NE(presetErrorOf(preset(R"({"kind": "quaternion_julia", "julia": {"view": "cut"}})")).find("'slice'"),
             std::string::npos);
+}
+
+// Issue 25: xaos (flam3's chaos) in the chaos game. Two transforms of equal weight; transform 0
+// may never be followed by itself. Counting each lane's successive choices: 0 → 0 never happens,
+// 0 → 1 always follows a 0, and after a 1 both come equally often (its row is the plain weights).
+TEST(ChaosGame, XaosForbidsATransitionAndWeighsTheOthers) {
+  FlameGenome genome = sierpinskiTetrahedron();
+  genome.xforms.resize(3);
+  genome.xforms[0].xaos = {0.0, 1.0, 1.0};
+  genome.xforms[1].xaos = {1.0, 1.0, 3.0};  // after 1: 2 is three times as likely as 0 or 1
+  genome.xforms[2].xaos = {0.0, 0.0, 0.0};  // a dead end: the plain weights choose after 2
+  const ChaosGame game(flameLayer(genome), "test");
+  LaneRun run(game);
+  std::array<std::array<std::size_t, 3>, 3> transitions{};
+  std::vector<int> previous(kLanes, -1);
+  for (int s = 0; s < 400; ++s) {
+    run.step(game);
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      const int now = run.lanes.choice[i];
+      ASSERT_LT(now, 3);
+      if (previous[i] >= 0) ++transitions[static_cast<std::size_t>(previous[i])][static_cast<std::size_t>(now)];
+      previous[i] = now;
+    }
+  }
+  EXPECT_EQ(transitions[0][0], 0u);
+  EXPECT_GT(transitions[0][1], 1000u);
+  EXPECT_GT(transitions[0][2], 1000u);
+  const auto share = [&](std::size_t from, std::size_t to) {
+    const double total = static_cast<double>(transitions[from][0] + transitions[from][1] + transitions[from][2]);
+    return static_cast<double>(transitions[from][to]) / total;
+  };
+  EXPECT_NEAR(share(0, 1), 0.5, 0.03);
+  EXPECT_NEAR(share(1, 2), 0.6, 0.03);
+  EXPECT_NEAR(share(1, 0), 0.2, 0.03);
+  EXPECT_NEAR(share(2, 0), 1.0 / 3.0, 0.03);
+  EXPECT_NEAR(share(2, 2), 1.0 / 3.0, 0.03);
+  // A fresh lane's first choice is the plain weights: reseeding forgets the previous transform.
+  SplitMix64 rng(9);
+  game.seedLane(run.lanes, 0, rng);
+  EXPECT_EQ(run.lanes.previous[0], 0);
+}
+
+TEST(ChaosGame, XaosOfAllOnesChangesNothing) {
+  FlameGenome plain = sierpinskiTetrahedron();
+  FlameGenome ones = plain;
+  for (FlameXform& x : ones.xforms) x.xaos = {1.0, 1.0, 1.0, 1.0};
+  const ChaosGame a(flameLayer(plain), "a"), b(flameLayer(ones), "b");
+  LaneRun runA(a), runB(b);
+  for (int s = 0; s < 50; ++s) {
+    runA.step(a);
+    runB.step(b);
+  }
+  EXPECT_EQ(runA.x, runB.x);
+  EXPECT_EQ(runA.color, runB.color);
+}
+
+TEST(FlamePreset, XaosIsCheckedAndRoundTrips) {
+  const auto preset = [](const std::string& layer) {
+    return R"({"mesh": {"path": "m.obj"}, "layers": [)" + layer + "]}";
+  };
+  Scene scene;
+  scene.meshPath = "mesh.obj";
+  const std::string good =
+      R"({"kind": "flame", "flame": {"xforms": [{"xaos": [0, 2]}, {"affine": [0.5,0,0,0, 0,0.5,0,0, 0,0,0.5,0]}]}})";
+  EXPECT_EQ(presetErrorOf(preset(good)), "");
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{"xaos": [-1]}]}})")).find("xaos"),
+            std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{"xaos": 1}]}})")).find("xaos"),
+            std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{}], "final": {"xaos": [1]}}})")), "");
+  FlameGenome genome = sierpinskiTetrahedron();
+  genome.xforms[1].xaos = {0.5, 0.0, 2.0};
+  scene.layers = {flameLayer(genome)};
+  scene.layers[0].color.gradient = {{0.0f, {0.0f, 0.0f, 0.0f}}, {1.0f, {1.0f, 1.0f, 1.0f}}};
+  const Scene back = sceneFromJson(sceneToJson(scene), "back.json");
+  EXPECT_EQ(back.layers.at(0).flame.xforms[1].xaos, genome.xforms[1].xaos);
+  EXPECT_TRUE(back.layers.at(0).flame.xforms[0].xaos.empty());
+}
+
+// Issue 25: pre_ and post_ forms. One transform (identity affine) with pre_spherical 0.5, linear 1
+// and post_sinusoidal 2: the point is mapped by 0.5·spherical (z kept), then linearly, then by
+// 2·sinusoidal (z kept). post_ztranslate, a variation whose result ignores the point, adds to it.
+TEST(ChaosGame, PreAndPostVariationsWrapTheTransformsOwn) {
+  FlameGenome genome;
+  FlameXform x = xform(1.0, Affine3{});
+  x.variations = {
+      {"post_sinusoidal", 2.0, {}}, {"linear", 1.0, {}}, {"pre_spherical", 0.5, {}}, {"post_ztranslate", 0.3, {}}};
+  genome.xforms = {x};
+  const ChaosGame game(flameLayer(genome), "test");
+  LaneRun run(game);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    run.lanes.x[i] = 0.3;
+    run.lanes.y[i] = -0.7;
+    run.lanes.z[i] = 0.5;
+  }
+  run.step(game);
+  const double r2 = 0.3 * 0.3 + 0.7 * 0.7;
+  EXPECT_NEAR(run.x[0], 2.0 * std::sin(0.5 * 0.3 / r2), 1e-12);
+  EXPECT_NEAR(run.y[0], 2.0 * std::sin(0.5 * -0.7 / r2), 1e-12);
+  EXPECT_NEAR(run.z[0], 0.5 + 0.3, 1e-12);
+}
+
+// flam3's pre_blur moves the point before the transform's other variations see it: with
+// spherical after it, the result is spherical of the blurred point, not spherical plus a blur
+// (the lane's random draws are replayed).
+TEST(ChaosGame, Flam3sPreBlurActsBeforeTheOtherVariations) {
+  FlameGenome genome;
+  FlameXform x = xform(1.0, Affine3{});
+  x.variations = {{"spherical", 1.0, {}}, {"pre_blur", 0.5, {}}};
+  genome.xforms = {x};
+  const ChaosGame game(flameLayer(genome), "test");
+  LaneRun run(game);
+  std::vector<std::uint32_t> states(kLanes);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    run.lanes.x[i] = 0.3;
+    run.lanes.y[i] = -0.7;
+    run.lanes.z[i] = 0.5;
+    states[i] = run.lanes.random[i];
+  }
+  run.step(game);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    // The lane's draws: one for the transform, then pre_blur's four for G and one for the angle.
+    std::uint32_t r = laneNext(states[i]);
+    const double a = laneUniform(r), b = laneUniform(r), c = laneUniform(r), d = laneUniform(r);
+    const double g = 0.5 * (a + b + c + d - 2.0), angle = 2.0 * std::numbers::pi * laneUniform(r);
+    const double qx = 0.3 + g * std::cos(angle), qy = -0.7 + g * std::sin(angle);
+    const double q2 = qx * qx + qy * qy;
+    EXPECT_NEAR(run.x[i], qx / q2, 1e-12);
+    EXPECT_NEAR(run.y[i], qy / q2, 1e-12);
+    EXPECT_NEAR(run.z[i], 0.5, 1e-12);  // a 2D pre_ term keeps z; spherical carries it
+  }
+}
+
+TEST(ChaosGame, FlattenSetsTheTransformsDepthToZero) {
+  FlameGenome genome;
+  FlameXform x = xform(1.0, affine({0.5, 0, 0, 0.1, 0, 0.5, 0, 0, 0, 0, 0.5, 0.4}));
+  x.variations = {{"linear", 1.0, {}}, {"flatten", 1.0, {}}};
+  genome.xforms = {x};
+  const ChaosGame game(flameLayer(genome), "test");
+  LaneRun run(game);
+  for (int s = 0; s < 5; ++s) run.step(game);
+  for (std::size_t i = 0; i < kLanes; ++i) EXPECT_EQ(run.z[i], 0.0);
+  EXPECT_NE(run.x[0], 0.0);
 }

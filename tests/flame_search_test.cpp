@@ -115,6 +115,23 @@ TEST(FlameSearch, MutateWithStrengthZeroChangesNothingAndStaysValid) {
   EXPECT_GT(largeChange, 5.0 * smallChange) << "the change scales with the strength";
 }
 
+// Issue 25: a flame with xaos keeps it through mutations (factors move, columns follow removed
+// transforms); one without xaos is never given any.
+TEST(FlameSearch, MutationKeepsXaosConsistentAndGivesNoneToFlamesWithout) {
+  core::FlameGenome base = core::defaultFlame();
+  EXPECT_FALSE(core::hasXaos(core::mutateFlame(base, 0.8, 3)));
+  base.xforms[0].xaos = {0.0, 2.0, 1.0};
+  base.xforms[1].xaos = {1.0, 0.5};
+  bool moved = false;
+  for (std::uint64_t seed = 1; seed <= 40; ++seed) {
+    const core::FlameGenome mutated = core::mutateFlame(base, 0.8, seed);
+    EXPECT_NO_THROW(core::validateFlame(mutated, "mutation"));
+    for (const core::FlameXform& x : mutated.xforms) EXPECT_LE(x.xaos.size(), mutated.xforms.size());
+    moved = moved || mutated.xforms[0].xaos != base.xforms[0].xaos;
+  }
+  EXPECT_TRUE(moved);
+}
+
 TEST(FlameSearch, SearchReturnsTheBestCandidatesThatPassTheFillTest) {
   core::FlameSearchOptions options;
   options.seed = 11;

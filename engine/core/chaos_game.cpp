@@ -13,6 +13,7 @@ namespace voxflame::core {
 namespace {
 
 constexpr double kBadValue = 1e10;  // flam3's limit: a state beyond it has escaped
+static_assert(kMaxFlameXforms + kMaxFlameSymmetry < 256, "ChaosLanes::choice holds a transform index in a byte");
 
 // The step's loops as functions of restrict-qualified parameters (GCC vectorises loops over
 // those, not over restrict locals), each built for AVX2 and for any x86-64 and picked when the
@@ -35,6 +36,44 @@ constexpr double kBadValue = 1e10;  // flam3's limit: a state beyond it has esca
 VOXFLAME_CHAOS_TARGETS void drawTransforms(std::uint32_t* random, std::uint8_t* choice, const std::uint8_t* pick,
                                            int shift, std::size_t count) {
   drawBody(random, choice, pick, shift, count);
+}
+
+// With xaos: each lane draws from the row of the transform it took last, then remembers its choice.
+void drawTransformsAfter(std::uint32_t* __restrict random, std::uint8_t* __restrict choice,
+                         std::uint8_t* __restrict previous, const std::uint8_t* __restrict pick, int shift, int rowBits,
+                         std::size_t count) {
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::uint32_t r = laneNext(random[i]);
+    random[i] = r;
+    const std::uint8_t k = pick[(static_cast<std::size_t>(previous[i]) << rowBits) | (r >> shift)];
+    choice[i] = k;
+    previous[i] = static_cast<std::uint8_t>(k + 1);
+  }
+}
+
+// Fills one row of the pick table: entry e covers draws in [e, e + 1) / size; each transform owns
+// a run of entries in proportion to its weight (flam3's xform_distrib); the last transform of
+// positive weight takes the rounding remainder, so one of weight 0 is never drawn. All weights 0:
+// false, and the row is left to the caller.
+bool fillPickRow(std::uint8_t* row, std::size_t size, const std::vector<double>& weights) {
+  double total = 0.0;
+  for (const double w : weights) total += w;
+  if (!(total > 0.0)) return false;
+  double cumulative = 0.0;
+  std::size_t entry = 0;
+  std::size_t last = 0;
+  for (std::size_t k = 0; k < weights.size(); ++k)
+    if (weights[k] > 0.0) last = k;
+  for (std::size_t k = 0; k < weights.size(); ++k) {
+    cumulative += weights[k];
+    const auto end =
+        k == last
+            ? size
+            : std::min(size, static_cast<std::size_t>(std::llround(cumulative / total * static_cast<double>(size))));
+    for (; entry < end; ++entry) row[entry] = static_cast<std::uint8_t>(k);
+    if (k == last) break;
+  }
+  return true;
 }
 
 // The lanes of one group gathered through the affine map into contiguous arrays.
@@ -133,6 +172,7 @@ void ChaosLanes::resize(std::size_t lanes) {
   groupRandom.assign(lanes, 1u);
   visible.assign(lanes, 1);
   choice.assign(lanes, 0);
+  previous.assign(lanes, 0);
   order.assign(lanes, 0);
 }
 
@@ -144,10 +184,14 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
   c.color = xform.color;
   c.colorSpeed = xform.colorSpeed;
   c.opacity = xform.opacity;
-  for (const VariationTerm& term : xform.variations) {
-    if (term.weight == 0.0) continue;
-    c.terms.push_back({variationOrThrow(term.name).apply, term.weight, term.params});
-  }
+  for (const VariationStage stage : {VariationStage::Pre, VariationStage::Normal, VariationStage::Post})
+    for (const VariationTerm& term : xform.variations) {
+      if (term.weight == 0.0 || variationStage(term.name) != stage) continue;
+      const VariationInfo& info = variationOrThrow(term.name);
+      c.terms.push_back({info.apply, term.weight, term.params, stage, info.mapsXY, info.threeD, info.additive,
+                         info.name == "flatten"});
+      c.hasNormalTerms = c.hasNormalTerms || stage == VariationStage::Normal;
+    }
   return c;
 }
 
@@ -165,24 +209,25 @@ ChaosGame::ChaosGame(const PatternLayer& layer, const std::string& where) {
   if (layer.kind != PatternKind::Flame) throw Error(where + " is not a chaos-game layer");
   validateFlame(layer.flame, where);
   const std::vector<FlameXform> xforms = expandSymmetry(layer.flame);
-  double total = 0.0;
+  std::vector<double> weights;
   for (const FlameXform& x : xforms) {
     xforms_.push_back(compile(x));
-    total += x.weight;
+    weights.push_back(x.weight);
   }
-  // The pick table: entry e covers draws in [e, e + 1) / size; each transform owns a run of entries
-  // in proportion to its weight (flam3's xform_distrib, finer). A transform of positive weight
-  // below one entry's share still gets the entry its cumulative weight lands in.
-  const std::size_t size = pick_.size();
-  double cumulative = 0.0;
-  std::size_t entry = 0;
-  for (std::size_t k = 0; k < xforms.size(); ++k) {
-    cumulative += xforms[k].weight;
-    const auto end =
-        k + 1 == xforms.size()
-            ? size
-            : std::min(size, static_cast<std::size_t>(std::llround(cumulative / total * static_cast<double>(size))));
-    for (; entry < end; ++entry) pick_[entry] = static_cast<std::uint8_t>(k);
+  xaos_ = hasXaos(layer.flame);
+  const std::size_t rows = xaos_ ? xforms.size() + 1 : 1;
+  pick_.assign(rows * kPickSize, 0);
+  fillPickRow(pick_.data(), kPickSize, weights);  // validateFlame saw a positive total
+  // Row k + 1: after transform k. Symmetry transforms (past the genome's) neither have nor get
+  // factors other than 1, as in flam3, where they are transforms with default xaos.
+  for (std::size_t k = 0; k + 1 < rows; ++k) {
+    std::vector<double> after = weights;
+    if (k < layer.flame.xforms.size()) {
+      const std::vector<double>& factors = layer.flame.xforms[k].xaos;
+      for (std::size_t j = 0; j < std::min(factors.size(), layer.flame.xforms.size()); ++j) after[j] *= factors[j];
+    }
+    std::uint8_t* row = pick_.data() + (k + 1) * kPickSize;
+    if (!fillPickRow(row, kPickSize, after)) std::copy_n(pick_.data(), kPickSize, row);  // a dead end: plain weights
   }
   if (layer.flame.symmetry.rotational > 1 || layer.flame.symmetry.mirror)
     for (const Affine3& g : symmetryGroup(layer.flame.symmetry)) group_.push_back(g.m);
@@ -200,6 +245,7 @@ void ChaosGame::seedLane(ChaosLanes& lanes, std::size_t i, SplitMix64& rng) cons
   lanes.color[i] = rng.uniform();
   lanes.random[i] = static_cast<std::uint32_t>(rng.next() >> 32) | 1u;
   lanes.visible[i] = 0;
+  lanes.previous[i] = 0;
 }
 
 void ChaosGame::step(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
@@ -210,6 +256,25 @@ void ChaosGame::step(ChaosLanes& lanes, double* outX, double* outY, double* outZ
     stepFlame(lanes, outX, outY, outZ, outColor, count);
 }
 
+namespace {
+
+// A pre_ or post_ term's result into the point p: each coordinate the variation maps is replaced
+// by the result (or, for an additive variation, has it added); the others are kept.
+void combineStage(double* __restrict px, double* __restrict py, double* __restrict pz, const double* __restrict rx,
+                  const double* __restrict ry, const double* __restrict rz, bool mapsXY, bool mapsZ, bool additive,
+                  std::size_t count) {
+  const double keep = additive ? 1.0 : 0.0;
+  if (mapsXY)
+    for (std::size_t j = 0; j < count; ++j) {
+      px[j] = keep * px[j] + rx[j];
+      py[j] = keep * py[j] + ry[j];
+    }
+  if (mapsZ)
+    for (std::size_t j = 0; j < count; ++j) pz[j] = keep * pz[j] + rz[j];
+}
+
+}  // namespace
+
 void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const {
   double* __restrict tx = lanes.tx.data();
   double* __restrict ty = lanes.ty.data();
@@ -217,26 +282,54 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   double* __restrict ox = lanes.ox.data();
   double* __restrict oy = lanes.oy.data();
   double* __restrict oz = lanes.oz.data();
-  for (std::size_t j = 0; j < count; ++j) ox[j] = oy[j] = oz[j] = 0.0;
-  if (xform.terms.empty()) {
-    // No variation acts as linear: the affine map alone.
+  const auto clear = [&](double* a, double* b, double* c) {
+    for (std::size_t j = 0; j < count; ++j) a[j] = b[j] = c[j] = 0.0;
+  };
+  VariationInput in;
+  in.random = lanes.groupRandom.data();
+  in.count = count;
+  in.affine = xform.affine.data();
+  const auto run = [&](const Term& term, const double* x, const double* y, const double* z, double* rx, double* ry,
+                       double* rz) {
+    in.x = x;
+    in.y = y;
+    in.z = z;
+    in.weight = term.weight;
+    in.params = term.params.data();
+    term.apply(in, rx, ry, rz);
+  };
+  std::size_t k = 0;
+  // pre_ terms: each maps the affine point t in place (o is their scratch).
+  for (; k < xform.terms.size() && xform.terms[k].stage == VariationStage::Pre; ++k) {
+    clear(ox, oy, oz);
+    run(xform.terms[k], tx, ty, tz, ox, oy, oz);
+    combineStage(tx, ty, tz, ox, oy, oz, xform.terms[k].mapsXY, xform.terms[k].mapsZ, xform.terms[k].additive, count);
+    if (xform.terms[k].flattens)
+      for (std::size_t j = 0; j < count; ++j) tz[j] = 0.0;
+  }
+  clear(ox, oy, oz);
+  if (!xform.hasNormalTerms) {
+    // No variation acts as linear: the affine map (and pre_ terms) alone.
     for (std::size_t j = 0; j < count; ++j) {
       ox[j] = tx[j];
       oy[j] = ty[j];
       oz[j] = tz[j];
     }
   }
-  VariationInput in;
-  in.x = tx;
-  in.y = ty;
-  in.z = tz;
-  in.random = lanes.groupRandom.data();
-  in.count = count;
-  in.affine = xform.affine.data();
-  for (const Term& term : xform.terms) {
-    in.weight = term.weight;
-    in.params = term.params.data();
-    term.apply(in, ox, oy, oz);
+  bool flatten = false;
+  for (; k < xform.terms.size() && xform.terms[k].stage == VariationStage::Normal; ++k) {
+    run(xform.terms[k], tx, ty, tz, ox, oy, oz);
+    flatten = flatten || xform.terms[k].flattens;
+  }
+  if (flatten)
+    for (std::size_t j = 0; j < count; ++j) oz[j] = 0.0;
+  // post_ terms: each maps the sum o in place (t, no longer needed, is their scratch).
+  for (; k < xform.terms.size(); ++k) {
+    clear(tx, ty, tz);
+    run(xform.terms[k], ox, oy, oz, tx, ty, tz);
+    combineStage(ox, oy, oz, tx, ty, tz, xform.terms[k].mapsXY, xform.terms[k].mapsZ, xform.terms[k].additive, count);
+    if (xform.terms[k].flattens)
+      for (std::size_t j = 0; j < count; ++j) oz[j] = 0.0;
   }
   if (xform.hasPost) affineInPlace(ox, oy, oz, xform.post.data(), count);
 }
@@ -246,7 +339,10 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
   // 1. Every lane draws its transform.
   std::uint32_t* random = lanes.random.data();
   std::uint8_t* choice = lanes.choice.data();
-  drawTransforms(random, choice, pick_.data(), 32 - kPickBits, count);
+  if (xaos_)
+    drawTransformsAfter(random, choice, lanes.previous.data(), pick_.data(), 32 - kPickBits, kPickBits, count);
+  else
+    drawTransforms(random, choice, pick_.data(), 32 - kPickBits, count);
   // 2. Counting sort of the lanes by transform.
   std::array<std::uint32_t, kMaxFlameXforms + kMaxFlameSymmetry + 2> start{};
   for (std::size_t i = 0; i < count; ++i) ++start[choice[i] + 1u];

@@ -29,7 +29,10 @@ struct ChaosLanes {
   std::vector<std::uint32_t> random;  // each lane's xorshift32 state (never 0)
   std::vector<std::int32_t> visible;  // 1 when this step's point is drawn (opacity, slice)
   // Scratch for one step.
-  std::vector<std::uint8_t> choice;
+  std::vector<std::uint8_t> choice;  // a transform index: the genome's and symmetry's fit in a byte
+  // With xaos: 1 + the transform each lane took last (0 before its first step), which picks the
+  // row of the pick table its next choice is drawn from.
+  std::vector<std::uint8_t> previous;
   std::vector<std::uint32_t> order;
   std::vector<double> tx, ty, tz, ox, oy, oz;
   std::vector<std::uint32_t> groupRandom;
@@ -63,12 +66,16 @@ class ChaosGame {
     VariationFn apply = nullptr;
     double weight = 1.0;
     std::vector<double> params;
+    VariationStage stage = VariationStage::Normal;
+    bool mapsXY = true, mapsZ = false, additive = false;  // how a pre_/post_ form combines
+    bool flattens = false;                                // flatten: z is 0 after this stage
   };
   struct Compiled {
     std::array<double, 12> affine{};
     bool hasPost = false;
     std::array<double, 12> post{};
-    std::vector<Term> terms;
+    std::vector<Term> terms;  // pre_ terms first, then the others, then post_ ones (each in file order)
+    bool hasNormalTerms = false;
     double color = 0.0, colorSpeed = 0.5, opacity = 1.0;
   };
   static Compiled compile(const FlameXform& xform);
@@ -86,7 +93,12 @@ class ChaosGame {
   bool hasFinal_ = false;
   Compiled final_;
   static constexpr int kPickBits = 12;
-  std::array<std::uint8_t, std::size_t{1} << kPickBits> pick_{};  // top bits of a draw → transform
+  static constexpr std::size_t kPickSize = std::size_t{1} << kPickBits;
+  // Top bits of a draw → transform. Without xaos one row of kPickSize entries; with xaos (flam3's
+  // chaos) one row for a lane's first step (the plain weights) and one after each transform k (row
+  // k + 1: the weights times transform k's xaos factors).
+  std::vector<std::uint8_t> pick_;
+  bool xaos_ = false;
   std::vector<std::array<double, 12>> group_;  // the symmetry group each drawn point goes through (flame.h)
   QuaternionJuliaSettings juliaSettings_;
   double turnCos_ = 1.0, turnSin_ = 0.0;

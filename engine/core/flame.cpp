@@ -61,6 +61,11 @@ void validateXform(const FlameXform& xform, const std::string& where) {
   if (!finite(xform.colorSpeed) || xform.colorSpeed < 0.0 || xform.colorSpeed > 1.0)
     fail("has a colour speed outside [0, 1]");
   if (!finite(xform.opacity) || xform.opacity < 0.0 || xform.opacity > 1.0) fail("has an opacity outside [0, 1]");
+  if (xform.xaos.size() > kMaxFlameXforms)
+    fail("has " + std::to_string(xform.xaos.size()) + " xaos factors; at most one per transform (" +
+         std::to_string(kMaxFlameXforms) + ")");
+  for (const double v : xform.xaos)
+    if (!finite(v) || v < 0.0 || v > kCoefficientLimit) fail("has a xaos factor that is not a number from 0 to 1e6");
   if (xform.variations.size() > kMaxXformVariations)
     fail("has " + std::to_string(xform.variations.size()) + " variations; at most " +
          std::to_string(kMaxXformVariations) + " are allowed");
@@ -86,6 +91,13 @@ void validateXform(const FlameXform& xform, const std::string& where) {
 }
 
 }  // namespace
+
+bool hasXaos(const FlameGenome& genome) {
+  for (const FlameXform& x : genome.xforms)
+    for (const double v : x.xaos)
+      if (v != 1.0) return true;
+  return false;
+}
 
 std::vector<FlameXform> expandSymmetry(const FlameGenome& genome) {
   std::vector<FlameXform> xforms = genome.xforms;
@@ -137,9 +149,10 @@ std::vector<Affine3> symmetryGroup(const FlameSymmetry& s) {
 }
 
 void validateFlame(const FlameGenome& genome, const std::string& where) {
-  if (genome.xforms.empty()) throw Error(where + " is a flame without transforms; it needs 1 to 16");
+  const std::string allowed = "1 to " + std::to_string(kMaxFlameXforms);
+  if (genome.xforms.empty()) throw Error(where + " is a flame without transforms; it needs " + allowed);
   if (genome.xforms.size() > kMaxFlameXforms)
-    throw Error(where + " has " + std::to_string(genome.xforms.size()) + " transforms; a flame takes 1 to 16");
+    throw Error(where + " has " + std::to_string(genome.xforms.size()) + " transforms; a flame takes " + allowed);
   double total = 0.0;
   for (std::size_t i = 0; i < genome.xforms.size(); ++i) {
     validateXform(genome.xforms[i], where + " transform " + std::to_string(i));

@@ -23,7 +23,7 @@
 
 namespace voxflame::core {
 
-inline constexpr std::size_t kMaxFlameXforms = 16;
+inline constexpr std::size_t kMaxFlameXforms = 128;
 inline constexpr std::size_t kMaxXformVariations = 16;
 inline constexpr int kMaxFlameSymmetry = 24;
 
@@ -56,6 +56,12 @@ struct FlameXform {
   double color = 0.0;       // the colour index this transform pulls points towards, 0–1
   double colorSpeed = 0.5;  // how far each step moves a point's colour towards `color`, 0–1
   double opacity = 1.0;     // the chance that a point this transform makes is drawn, 0–1
+  // Xaos (flam3's and Apophysis' `chaos`): xaos[j] multiplies transform j's weight when the next
+  // transform is chosen right after this one, so 0 forbids the step from this transform to j.
+  // Entries past the end (and an empty list) are 1; the final transform's list is unused. When
+  // every transform's weight times its factor is 0, the plain weights choose instead (flam3 would
+  // refuse to render such a flame; a dead end must not stop the chaos game).
+  std::vector<double> xaos;
   bool operator==(const FlameXform&) const = default;
 };
 
@@ -92,6 +98,9 @@ struct QuaternionJuliaSettings {
   bool operator==(const QuaternionJuliaSettings&) const = default;
 };
 
+// Whether any transform's xaos factor differs from 1 (the chaos game then picks by previous transform).
+bool hasXaos(const FlameGenome& genome);
+
 // The transforms that are actually iterated: the genome's own, then the symmetry transforms
 // (N − 1 turns about the axis and, with mirror, a reflection), whose weights together equal the
 // genome's total so the symmetry is as dense as the pattern itself.
@@ -104,9 +113,10 @@ std::vector<FlameXform> expandSymmetry(const FlameGenome& genome);
 std::vector<Affine3> symmetryGroup(const FlameSymmetry& symmetry);
 
 // Checks a genome for what would make the chaos game meaningless or unsafe, naming the transform
-// (`where`: the layer, e.g. "layers[0]"): 1–16 transforms, finite coefficients within ±1e6, known
+// (`where`: the layer, e.g. "layers[0]"): 1–128 transforms, finite coefficients within ±1e6, known
 // variations with the right number of finite parameters, weights ≥ 0 with a positive sum, colour,
-// colour speed and opacity in [0, 1]. Throws core::Error.
+// colour speed and opacity in [0, 1], at most one xaos factor per transform, each finite, 0–1e6.
+// Throws core::Error.
 void validateFlame(const FlameGenome& genome, const std::string& where);
 void validateQuaternionJulia(const QuaternionJuliaSettings& settings, const std::string& where);
 

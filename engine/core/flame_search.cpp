@@ -261,9 +261,29 @@ void structuralChange(FlameGenome& g, SplitMix64& rng, const RandomFlameOptions&
         g.xforms.push_back(randomXform(rng, options, rng.uniform()));
       break;
     default:
-      if (g.xforms.size() > 2)
-        g.xforms.erase(g.xforms.begin() + static_cast<std::ptrdiff_t>(rng.next() % g.xforms.size()));
+      if (g.xforms.size() > 2) {
+        const std::size_t k = rng.next() % g.xforms.size();
+        g.xforms.erase(g.xforms.begin() + static_cast<std::ptrdiff_t>(k));
+        // Xaos columns follow the transforms.
+        for (FlameXform& other : g.xforms)
+          if (other.xaos.size() > k) other.xaos.erase(other.xaos.begin() + static_cast<std::ptrdiff_t>(k));
+      }
       break;
+  }
+}
+
+// A flame that already has xaos keeps exploring it: each factor moves by up to e^±strength (a
+// forbidden step stays forbidden), and sometimes one step is forbidden or allowed again. A flame
+// without xaos is not given any, so its mutations are what they were before xaos existed.
+void nudgeXaos(FlameGenome& g, SplitMix64& rng, double strength) {
+  if (!hasXaos(g)) return;
+  for (FlameXform& x : g.xforms)
+    for (double& factor : x.xaos) factor = std::clamp(factor * std::exp(strength * rng.symmetric()), 0.0, 1e3);
+  if (rng.uniform() < std::min(0.5, strength)) {
+    FlameXform& x = g.xforms[rng.next() % g.xforms.size()];
+    const std::size_t j = rng.next() % g.xforms.size();
+    if (x.xaos.size() <= j) x.xaos.resize(j + 1, 1.0);
+    x.xaos[j] = x.xaos[j] == 0.0 ? 1.0 : 0.0;
   }
 }
 
@@ -422,6 +442,7 @@ FlameGenome mutateFlame(const FlameGenome& genome, double strength, std::uint64_
   for (FlameXform& x : g.xforms) nudgeXform(x, rng, strength, false);
   if (g.hasFinal) nudgeXform(g.finalXform, rng, 0.5 * strength, true);
   if (rng.uniform() < std::min(0.9, strength)) structuralChange(g, rng, RandomFlameOptions{});
+  nudgeXaos(g, rng, strength);
   return g;
 }
 

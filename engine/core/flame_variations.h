@@ -14,6 +14,15 @@
 // ε is flam3's 1e-10, added exactly where flam3 adds it, so imported flames draw as in flam3; where
 // flam3 divides by r unguarded (sin θ = x / r), a far smaller guard keeps the origin finite.
 // presets/VARIATIONS.md lists every variation with its formula (variationsMarkdown below).
+//
+// Every variation also has a pre_ and a post_ form (`pre_spherical`, `post_curl`), as Apophysis 7X,
+// JWildfire and Fractorium have them: a transform applies its pre_ terms in order to the point
+// after its affine map, before its other variations, and its post_ terms in order to their sum,
+// before its post-affine. Such a term replaces the coordinates its variation maps (x and y for a 2D
+// one, z too for a 3D one, z alone for zscale/zcone/zblur/ztranslate/flatten) by weight · V(p)
+// and keeps the others, except that a variation whose result does not depend on the point (blur,
+// noise-like ones: `additive`) adds weight · V(p) instead, which is Fractorium's rule ("assign" vs
+// "sum"). The catalogue's own pre_blur (flam3's) is such an additive Gaussian blur.
 #pragma once
 
 #include <cstddef>
@@ -67,14 +76,25 @@ struct VariationInfo {
   std::string formula;  // V(p) in the notation above, for the docs and the UI's tooltip
   bool threeD = false;  // acts on z itself (not only carried through)
   bool random = false;  // draws random numbers (Ψ)
+  bool mapsXY = true;   // false for the variations that act on z alone (zscale, zcone, ...)
+  // Its result does not depend on the point (blurs, ztranslate): a pre_/post_ form adds to the
+  // point instead of replacing it. Worked out from the function when the catalogue is built.
+  bool additive = false;
   VariationFn apply = nullptr;
 
   int paramIndex(std::string_view paramName) const;  // -1 when absent
   std::vector<double> defaultParams() const;
 };
 
+// Where in its transform a variation term acts: its name's pre_/post_ prefix (see above); the
+// catalogue's own pre_blur acts at the pre_ stage too.
+enum class VariationStage { Pre, Normal, Post };
+VariationStage variationStage(std::string_view name);
+
 const std::vector<VariationInfo>& variationCatalogue();
-const VariationInfo* findVariation(std::string_view name);     // nullptr when unknown
+// The entry a term's name means: the catalogue's own, or for pre_X and post_X that of X. nullptr
+// when unknown.
+const VariationInfo* findVariation(std::string_view name);
 const VariationInfo& variationOrThrow(std::string_view name);  // core::Error naming close matches
 
 // presets/VARIATIONS.md: the catalogue as a Markdown table (name, 2D/3D, parameters with defaults

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -67,13 +68,50 @@ const std::set<std::string, std::less<>>& knownXformAttributes() {
   return names;
 }
 
-// The catalogue entry a flame file's variation name means. Apophysis and JWildfire write
-// "linear3D" for the linear map that carries z along, which is exactly voxflame's "linear"; the
-// alias stands only while the catalogue has no entry of that name itself.
+std::string lowered(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// The catalogue entry a flame file's variation name means (pre_ and post_ forms included).
+// Apophysis and JWildfire write "linear3D" for the linear map that carries z along, which is
+// exactly voxflame's "linear"; the alias stands only while the catalogue has no entry of that name
+// itself. Some editors capitalise names ("Spherical3D", "Mobius"): a name found only when case is
+// ignored means that entry.
 const VariationInfo* variationNamed(std::string_view name) {
   if (const VariationInfo* info = findVariation(name)) return info;
   if (name == "linear3D") return findVariation("linear");
+  const std::string wanted = lowered(name);
+  for (const VariationInfo& info : variationCatalogue())
+    if (lowered(info.name) == wanted) return &info;
   return nullptr;
+}
+
+// Where a flame file keeps a variation's parameter when not at `<variation>_<parameter>`: flam3's
+// auger_weight is the catalogue's auger `strength` (a preset writes parameters beside "weight"),
+// and Apophysis' Mobius plugin (and FLAM3H after it) writes mobius' parameters bare and
+// capitalised (Re_A … Im_D).
+std::vector<std::string> fileParamNames(const std::string& termAttribute, const VariationInfo& info,
+                                        const std::string& param) {
+  std::vector<std::string> names = {termAttribute + "_" + param};
+  if (info.name == "auger" && param == "strength") names.push_back(termAttribute + "_weight");
+  if (info.name == "mobius" && param.size() == 4) {
+    std::string bare = param;
+    bare[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(bare[0])));
+    bare[3] = static_cast<char>(std::toupper(static_cast<unsigned char>(bare[3])));
+    names.push_back(bare);
+  }
+  return names;
+}
+
+// The name a term keeps: the catalogue's spelling, with the file's pre_/post_ prefix.
+std::string termName(std::string_view fileName, const VariationInfo& info) {
+  if (findVariation(fileName) == &info && fileName != info.name) {
+    if (fileName.starts_with("pre_")) return "pre_" + info.name;
+    if (fileName.starts_with("post_")) return "post_" + info.name;
+  }
+  return info.name;
 }
 
 std::string trimmed(std::string_view text) {
@@ -118,6 +156,215 @@ std::string formatted(double v) {
   std::ostringstream out;
   out << v;
   return out.str();
+}
+
+// A name as XML spells one (ASCII letters, digits, "_", ":", ".", "-"; not starting with a digit,
+// "." or "-"), which is what pugixml accepts. Non-ASCII bytes are accepted as pugixml does.
+bool isXmlName(std::string_view name) {
+  if (name.empty()) return false;
+  const auto start = [](unsigned char c) { return std::isalpha(c) || c == '_' || c == ':' || c >= 0x80; };
+  const auto inner = [&](unsigned char c) { return start(c) || std::isdigit(c) || c == '.' || c == '-'; };
+  if (!start(static_cast<unsigned char>(name.front()))) return false;
+  return std::all_of(name.begin(), name.end(), [&](char c) { return inner(static_cast<unsigned char>(c)); });
+}
+
+// JWildfire's mark of a variation's second copy on one transform: "julian2#1#" → "julian2".
+std::string withoutCopyMark(std::string_view name) {
+  if (name.size() >= 3 && name.back() == '#') {
+    const std::size_t open = name.rfind('#', name.size() - 2);
+    if (open != std::string_view::npos && open > 0 && open + 1 < name.size() - 1 &&
+        std::all_of(name.begin() + static_cast<std::ptrdiff_t>(open) + 1, name.end() - 1,
+                    [](char c) { return c >= '0' && c <= '9'; }))
+      return std::string(name.substr(0, open));
+  }
+  return std::string(name);
+}
+
+// JWildfire stores a motion curve beside any variation parameter (`<variation>_<parameter>_enabled`,
+// `_view_xmin`, `_x0`, ...) and a variation's order as `<variation>_fx_priority`; pugixml sees
+// these as parameters of the variation. They carry no value a still image uses.
+bool isJwildfireParamCurve(std::string_view param) {
+  if (param == "fx_priority") return true;
+  static const std::array<std::string_view, 10> suffixes = {
+      "_enabled",   "_interpolation", "_selected_idx", "_locked",    "_point_count",
+      "_view_xmin", "_view_xmax",     "_view_ymin",    "_view_ymax", "_selected_pt"};
+  if (std::any_of(suffixes.begin(), suffixes.end(), [&](std::string_view s) { return param.ends_with(s); }))
+    return true;
+  // Curve points: _x0, _y0, _x1, ...
+  std::size_t digits = 0;
+  while (digits < param.size() && std::isdigit(static_cast<unsigned char>(param[param.size() - 1 - digits]))) ++digits;
+  if (digits == 0 || param.size() < digits + 2) return false;
+  const char axis = param[param.size() - 1 - digits], underscore = param[param.size() - 2 - digits];
+  return underscore == '_' && (axis == 'x' || axis == 'y');
+}
+
+// Real flame files are not always well-formed XML: JWildfire writes attribute names such as
+// `julian2#1#` or `crop_trapezoid_Base Sup.` (with a space) or `dc_booleans_^/&/|`, and old
+// Apophysis files end with a stray `</Flames>`. tolerantXml rewrites such text into XML that
+// pugixml reads: every attribute name that is not an XML name gets a stand-in
+// (`voxflame-attribute-N`, never used by a flame editor) that `renamed` maps back to the file's
+// own name; a raw `<` or `&` in a value is escaped; a closing tag that closes nothing is dropped,
+// one that closes an outer element first closes the ones left open inside it, and elements still
+// open at the end are closed. `fixes` says what was done, for the warnings.
+struct TolerantXml {
+  std::string text;
+  std::map<std::string, std::string> renamed;
+  std::vector<std::string> fixes;
+};
+
+TolerantXml tolerantXml(std::string_view in) {
+  TolerantXml result;
+  std::string& out = result.text;
+  out.reserve(in.size() + in.size() / 8);
+  std::vector<std::string> open;
+  std::size_t strayClosings = 0, unclosed = 0;
+  const auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
+  const auto isNameChar = [](char c) {
+    const auto u = static_cast<unsigned char>(c);
+    return std::isalnum(u) || c == '_' || c == ':' || c == '.' || c == '-' || u >= 0x80;
+  };
+  // Copies `in` from i through the end of `terminator` (or to the end of the text).
+  const auto copyThrough = [&](std::size_t& i, std::string_view terminator) {
+    const std::size_t end = in.find(terminator, i);
+    const std::size_t stop = end == std::string_view::npos ? in.size() : end + terminator.size();
+    out.append(in.substr(i, stop - i));
+    i = stop;
+  };
+  const auto appendEscaped = [&](std::string_view value) {
+    for (std::size_t k = 0; k < value.size(); ++k) {
+      const char c = value[k];
+      if (c == '<') {
+        out += "&lt;";
+      } else if (c == '&') {
+        // An entity (&amp; &#38; &#x26;) stays; a bare & is escaped.
+        std::size_t e = k + 1;
+        if (e < value.size() && value[e] == '#') ++e;
+        while (e < value.size() && std::isalnum(static_cast<unsigned char>(value[e]))) ++e;
+        out += e < value.size() && value[e] == ';' && e > k + 1 ? "&" : "&amp;";
+      } else {
+        out += c;
+      }
+    }
+  };
+  std::size_t i = 0;
+  while (i < in.size()) {
+    const char c = in[i];
+    if (c != '<') {
+      out += c;
+      ++i;
+      continue;
+    }
+    const std::string_view rest = in.substr(i);
+    if (rest.starts_with("<!--")) {
+      copyThrough(i, "-->");
+    } else if (rest.starts_with("<![CDATA[")) {
+      copyThrough(i, "]]>");
+    } else if (rest.starts_with("<?")) {
+      copyThrough(i, "?>");
+    } else if (rest.starts_with("<!")) {
+      copyThrough(i, ">");
+    } else if (rest.starts_with("</")) {
+      const std::size_t end = in.find('>', i);
+      const std::size_t stop = end == std::string_view::npos ? in.size() : end;
+      const std::string name = trimmed(in.substr(i + 2, stop - i - 2));
+      i = end == std::string_view::npos ? in.size() : end + 1;
+      const auto found = std::find(open.rbegin(), open.rend(), name);
+      if (found == open.rend()) {
+        ++strayClosings;
+        continue;
+      }
+      while (open.back() != name) {
+        out += "</" + open.back() + ">";
+        open.pop_back();
+        ++unclosed;
+      }
+      out += "</" + name + ">";
+      open.pop_back();
+    } else if (i + 1 < in.size() && (std::isalpha(static_cast<unsigned char>(in[i + 1])) || in[i + 1] == '_')) {
+      std::size_t k = i + 1;
+      while (k < in.size() && isNameChar(in[k])) ++k;
+      const std::string element(in.substr(i + 1, k - i - 1));
+      out += "<" + element;
+      bool closed = false;
+      while (k < in.size()) {
+        while (k < in.size() && isSpace(in[k])) ++k;
+        if (k >= in.size()) break;
+        if (in[k] == '>') {
+          out += '>';
+          ++k;
+          open.push_back(element);
+          closed = true;
+          break;
+        }
+        if (in.substr(k).starts_with("/>")) {
+          out += "/>";
+          k += 2;
+          closed = true;
+          break;
+        }
+        // An attribute: its name runs to the "=" (it may hold spaces), then a quoted value.
+        const std::size_t equals = in.find_first_of("=>", k);
+        if (equals == std::string_view::npos || in[equals] == '>') {
+          k = equals == std::string_view::npos ? in.size() : equals;  // junk without a value: dropped
+          continue;
+        }
+        std::string name = trimmed(in.substr(k, equals - k));
+        std::size_t v = equals + 1;
+        while (v < in.size() && isSpace(in[v])) ++v;
+        std::string_view value;
+        if (v < in.size() && (in[v] == '"' || in[v] == '\'')) {
+          const std::size_t close = in.find(in[v], v + 1);
+          const std::size_t stop = close == std::string_view::npos ? in.size() : close;
+          value = in.substr(v + 1, stop - v - 1);
+          k = close == std::string_view::npos ? in.size() : close + 1;
+        } else {
+          std::size_t stop = v;
+          while (stop < in.size() && !isSpace(in[stop]) && in[stop] != '>' && !in.substr(stop).starts_with("/>"))
+            ++stop;
+          value = in.substr(v, stop - v);
+          k = stop;
+        }
+        if (name.empty()) continue;
+        if (!isXmlName(name)) {
+          const std::string standIn = "voxflame-attribute-" + std::to_string(result.renamed.size());
+          result.renamed.emplace(standIn, name);
+          name = standIn;
+        }
+        out += " " + name + "=\"";
+        std::string quoted;
+        for (const char ch : value) {
+          if (ch == '"')
+            quoted += "&quot;";
+          else
+            quoted += ch;
+        }
+        appendEscaped(quoted);
+        out += '"';
+      }
+      if (!closed) {
+        out += "/>";  // a tag cut off by the end of the file
+      }
+      i = k;
+    } else {
+      out += "&lt;";
+      ++i;
+    }
+  }
+  unclosed += open.size();
+  while (!open.empty()) {
+    out += "</" + open.back() + ">";
+    open.pop_back();
+  }
+  if (!result.renamed.empty())
+    result.fixes.push_back(std::to_string(result.renamed.size()) + " attribute name" +
+                           (result.renamed.size() == 1 ? " is" : "s are") + " not XML names");
+  if (strayClosings > 0)
+    result.fixes.push_back(std::to_string(strayClosings) + " closing tag" + (strayClosings == 1 ? "" : "s") +
+                           " without an opening one");
+  if (unclosed > 0)
+    result.fixes.push_back(std::to_string(unclosed) + " element" + (unclosed == 1 ? " was" : "s were") +
+                           " never closed");
+  return result;
 }
 
 // Builds the messages of one flame: "FILE, flame 'NAME'".
@@ -204,53 +451,109 @@ class FlameReader {
     if (const pugi::xml_attribute plotmode = node.attribute("plotmode");
         plotmode && std::string_view(plotmode.value()) == "off")
       x.opacity = 0.0;  // Apophysis' invisible transform
-    if (const pugi::xml_attribute chaos = node.attribute("chaos")) {
+    // flam3's and Apophysis' xaos: factors for the transforms that may follow this one, in order;
+    // readFlame trims the list to the transform count once it is known.
+    if (const pugi::xml_attribute chaos = node.attribute("chaos"); chaos && !isFinal) {
       const auto values = parseNumbers(chaos.value());
-      const bool trivial = values && std::all_of(values->begin(), values->end(), [](double v) { return v == 1.0; });
-      if (!trivial) xaos_ = true;
+      if (!values)
+        fail(context, std::string("attribute chaos=\"") + std::string(chaos.value()).substr(0, 80) +
+                          "\" must be numbers (xaos factors)");
+      for (double v : *values) {
+        if (!std::isfinite(v) || v < 0.0 || v > kCoefficientLimit) {
+          warn(context + " has a xaos factor " + formatted(v) + " outside 0–1e6; " + (v > 0.0 ? "1e6" : "0") +
+               " is used");
+          v = v > 0.0 ? kCoefficientLimit : 0.0;  // NaN and negatives forbid the step
+        }
+        x.xaos.push_back(v);
+      }
     }
-    if (node.attribute("var") || node.attribute("var1"))
+    if (node.attribute("var") || node.attribute("var1")) {
+      lose("var= lists");
       warn(context + " uses flam3's old var=/var1= variation lists, which voxflame does not read; it acts as linear");
+    }
+
+    for (const pugi::xml_node& motion : node.children("motion")) {
+      (void)motion;
+      lose("<motion>");
+      warn(context +
+           " has flam3 <motion> elements (the transform animated over time), which voxflame does not "
+           "read; it is drawn as it stands");
+      break;
+    }
 
     // Variations: attributes naming a catalogue entry. Their parameters follow as
-    // `<variation>_<parameter>`; an unknown variation's parameters are dropped with it.
-    std::set<std::string> present;
-    for (const pugi::xml_attribute& attribute : node.attributes()) present.insert(attribute.name());
+    // `<variation>_<parameter>`; an unknown variation's parameters are dropped with it. JWildfire
+    // writes a second copy of a variation on one transform as `<variation>#N#` (parameters
+    // `<variation>#N#_<parameter>`): each copy is its own entry.
+    std::map<std::string, pugi::xml_attribute, std::less<>> byName;
+    std::map<std::string, std::pair<std::string, pugi::xml_attribute>> byLowerName;  // lower-case → name, attribute
+    for (const pugi::xml_attribute& attribute : node.attributes()) {
+      byName.emplace(nameOf(attribute), attribute);
+      byLowerName.emplace(lowered(nameOf(attribute)), std::make_pair(nameOf(attribute), attribute));
+    }
     double droppedWeight = 0.0;
     std::string dropped;
+    std::set<std::string> consumed;  // attributes read as some term's parameters
+    // First the variations (so parameters are known before anything is called unknown)...
     for (const pugi::xml_attribute& attribute : node.attributes()) {
-      const std::string name = attribute.name();
+      const std::string name = nameOf(attribute);
       if (knownXformAttributes().contains(name)) continue;
-      if (const VariationInfo* info = variationNamed(name)) {
-        VariationTerm term;
-        term.name = info->name;
-        term.weight = number(attribute, context, -kCoefficientLimit, kCoefficientLimit);
-        if (term.weight == 0.0) continue;
-        term.params = info->defaultParams();
-        for (std::size_t i = 0; i < info->params.size(); ++i) {
-          const std::string key = name + "_" + info->params[i].name;
-          if (const pugi::xml_attribute param = node.attribute(key.c_str()))
-            term.params[i] = number(param, context, -kCoefficientLimit, kCoefficientLimit);
+      const VariationInfo* info = variationNamed(withoutCopyMark(name));
+      if (!info) continue;
+      consumed.insert(name);
+      VariationTerm term;
+      term.name = termName(withoutCopyMark(name), *info);
+      term.weight = number(attribute, context, -kCoefficientLimit, kCoefficientLimit);
+      if (term.weight == 0.0) continue;
+      term.params = info->defaultParams();
+      for (std::size_t i = 0; i < info->params.size(); ++i)
+        for (const std::string& key : fileParamNames(name, *info, info->params[i].name)) {
+          // Editors that capitalise a variation capitalise its parameters too (Mobius_Re_A).
+          const auto param = byLowerName.find(lowered(key));
+          if (param == byLowerName.end()) continue;
+          term.params[i] = number(param->second.second, context, -kCoefficientLimit, kCoefficientLimit);
+          consumed.insert(param->second.first);
+          break;
         }
-        x.variations.push_back(std::move(term));
-        continue;
+      // falloff2's colour shift is not applied (flame_variations.cpp).
+      if (info->name == "falloff2" && term.params.at(5) != 0.0) {
+        lose("colour shift of " + withoutCopyMark(name));
+        warn(context + " has " + name + " with a colour shift (mul_c), which voxflame does not apply");
       }
-      // A parameter: the longest present attribute (or catalogue variation) it extends with "_".
+      x.variations.push_back(std::move(term));
+    }
+    // ...then everything else: parameters, JWildfire's own keys, and what voxflame does not know.
+    for (const pugi::xml_attribute& attribute : node.attributes()) {
+      const std::string name = nameOf(attribute);
+      if (knownXformAttributes().contains(name) || consumed.contains(name)) continue;
+      if (isJwildfireExtra(name, attribute.value(), context)) continue;
+      // A parameter: the longest attribute present that it extends with "_".
       std::string owner;
       for (std::size_t cut = name.rfind('_'); cut != std::string::npos && cut > 0; cut = name.rfind('_', cut - 1)) {
         const std::string prefix = name.substr(0, cut);
-        if (present.contains(prefix) || variationNamed(prefix)) {
+        const VariationInfo* info = variationNamed(withoutCopyMark(prefix));
+        // A known variation's own parameter counts even when the variation is absent (weight 0).
+        const std::string rest = name.substr(cut + 1);
+        if (byName.contains(prefix) || (info && (info->paramIndex(rest) >= 0 || isJwildfireParamCurve(rest)))) {
           owner = prefix;
           break;
         }
       }
       if (!owner.empty()) {
-        const VariationInfo* info = variationNamed(owner);
-        if (info && present.contains(owner) && info->paramIndex(name.substr(owner.size() + 1)) < 0)
-          warn(context + " sets '" + name + "', which voxflame's '" + owner + "' does not have; it was left out");
+        const VariationInfo* info = variationNamed(withoutCopyMark(owner));
+        const std::string param = name.substr(owner.size() + 1);
+        if (info && info->paramIndex(param) < 0 && !isJwildfireParamCurve(param)) {
+          lose("parameter " + withoutCopyMark(owner) + "_" + param);
+          warn(context + " sets '" + name + "', which voxflame's '" + info->name + "' does not have; it was left out");
+        }
         continue;
       }
-      unknownVariations_.insert(name);
+      if (!isXmlName(withoutCopyMark(name))) {
+        lose("attribute '" + name + "'");
+        warn(context + " has an attribute named '" + name + "', which is not an XML name; it was skipped");
+        continue;
+      }
+      unknownVariations_.insert(withoutCopyMark(name));
       if (const auto weight = parseNumber(attribute.value()); weight && std::isfinite(*weight)) {
         droppedWeight += std::abs(*weight);
         dropped += (dropped.empty() ? "" : ", ") + name;
@@ -272,6 +575,53 @@ class FlameReader {
 
   void warn(std::string text) { warnings_.push_back(std::move(text)); }
 
+  // The file's own name of an attribute: tolerantXml may have put a stand-in in its place.
+  std::string nameOf(const pugi::xml_attribute& attribute) const {
+    const auto found = renamed_.find(attribute.name());
+    return found == renamed_.end() ? std::string(attribute.name()) : found->second;
+  }
+  void setRenamed(const std::map<std::string, std::string>* renamed) {
+    renamed_ = renamed ? *renamed : decltype(renamed_){};
+  }
+
+  // JWildfire's keys that are not variations: motion curves of a transform's values
+  // (`colorCurve_*`, `weightCurve_*`, `xyCoeff01Curve_*`, ...) and mirrored translations. Disabled
+  // curves change nothing and pass silently; enabled ones and the mirror are named as unsupported.
+  bool isJwildfireExtra(const std::string& name, std::string_view value, const std::string& context) {
+    if (name == "mirror_pre_post_translations") {
+      if (value != "0" && value != "false") {
+        lose(name);
+        warn(context + " has JWildfire's mirror_pre_post_translations, which voxflame does not support");
+      }
+      return true;
+    }
+    // JWildfire's weighting fields (a noise that scales variation weights or colour per point).
+    if (name.starts_with("wfield_")) {
+      if (name == "wfield_type" && value != "0" && value != "NONE") {
+        lose("JWildfire weighting field");
+        warn(context + " has a JWildfire weighting field, which voxflame does not support");
+      }
+      return true;
+    }
+    const std::size_t curve = name.find("Curve_");
+    if (curve == std::string::npos || curve == 0) return false;
+    if (name.ends_with("Curve_enabled") && value == "true") {
+      lose("JWildfire motion curve " + name.substr(0, curve + 5));
+      warn(context + " animates " + name.substr(0, curve) +
+           " with a JWildfire motion curve, which voxflame does not "
+           "support; the value as it stands is used");
+    }
+    return true;
+  }
+  // Records something of the file that the import does not keep (ImportedFlame::leftOut).
+  void lose(std::string what) { lost_.insert(std::move(what)); }
+
+  std::vector<std::string> finishLeftOut() const {
+    std::set<std::string> all = lost_;
+    for (const std::string& name : unknownVariations_) all.insert("variation " + name);
+    return {all.begin(), all.end()};
+  }
+
   std::vector<std::string> finishWarnings() {
     std::vector<std::string> out;
     if (!unknownVariations_.empty()) {
@@ -279,7 +629,6 @@ class FlameReader {
       for (const std::string& name : unknownVariations_) list += (list.empty() ? "" : ", ") + name;
       out.push_back("variations voxflame does not know were left out: " + list);
     }
-    if (xaos_) out.push_back("xaos (chaos=) is not supported: every transform follows every other by weight alone");
     out.insert(out.end(), warnings_.begin(), warnings_.end());
     return out;
   }
@@ -291,7 +640,8 @@ class FlameReader {
   std::string where_;
   const FlameImportOptions& options_;
   std::set<std::string> unknownVariations_;
-  bool xaos_ = false;
+  std::set<std::string> lost_;
+  std::map<std::string, std::string> renamed_;
   std::vector<std::string> warnings_;
 };
 
@@ -315,16 +665,20 @@ constexpr HexLayout kHexRgb{6, 0};     // RRGGBB (Apophysis, Fractorium, JWildfi
 constexpr HexLayout kHexRgba{8, 0};    // RRGGBBAA (format="RGBA"; the alpha is not used)
 constexpr HexLayout kHexPadded{8, 2};  // 00RRGGBB (flam3's palette table and its <colors data=>)
 
-// A hex block of 256 colours in `layout`, whitespace anywhere; nullopt when it is not exactly that.
+// A hex block of colours in `layout`, whitespace anywhere, resampled to kFlamePaletteSize: a file may
+// hold any number of colours (JWildfire and Fractorium write fewer or more than 256); colour i of
+// the gradient is the block's colours interpolated at i/255 of the way through them. nullopt when
+// the block is not whole colours of hex digits.
 std::optional<Palette> parseHexPalette(std::string_view text, HexLayout layout) {
   const std::size_t digits = layout.digits;
   std::string hex;
   hex.reserve(text.size());
   for (const char c : text)
     if (c != ' ' && c != '\t' && c != '\n' && c != '\r') hex.push_back(c);
-  if (hex.size() != digits * kFlamePaletteSize) return std::nullopt;
-  Palette palette;
-  for (std::size_t i = 0; i < kFlamePaletteSize; ++i) {
+  if (hex.empty() || hex.size() % digits != 0) return std::nullopt;
+  const std::size_t count = hex.size() / digits;
+  std::vector<glm::vec3> colors(count);
+  for (std::size_t i = 0; i < count; ++i) {
     const std::size_t start = i * digits + layout.redAt;
     int rgb[3];
     for (int k = 0; k < 3; ++k) {
@@ -333,7 +687,20 @@ std::optional<Palette> parseHexPalette(std::string_view text, HexLayout layout) 
       if (high < 0 || low < 0) return std::nullopt;
       rgb[k] = high * 16 + low;
     }
-    palette[i] = glm::vec3(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2])) / 255.0f;
+    colors[i] = glm::vec3(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]), static_cast<float>(rgb[2])) / 255.0f;
+  }
+  Palette palette;
+  for (std::size_t i = 0; i < kFlamePaletteSize; ++i) {
+    if (count == kFlamePaletteSize) {
+      palette[i] = colors[i];
+      continue;
+    }
+    const double at =
+        static_cast<double>(i) / static_cast<double>(kFlamePaletteSize - 1) * static_cast<double>(count - 1);
+    const auto low = static_cast<std::size_t>(std::floor(at));
+    const std::size_t high = std::min(low + 1, count - 1);
+    const auto t = static_cast<float>(at - static_cast<double>(low));
+    palette[i] = glm::mix(colors[low], colors[high], t);
   }
   return palette;
 }
@@ -463,8 +830,8 @@ Palette readPalette(const pugi::xml_node& flame, FlameReader& reader) {
     std::optional<Palette> parsed = parseHexPalette(data, layout);
     if (!parsed && format.empty()) parsed = parseHexPalette(data, layout.digits == 6 ? kHexPadded : kHexRgb);
     if (!parsed)
-      reader.fail("", std::string("<") + element + "> must hold 256 colours as hex (" + std::to_string(layout.digits) +
-                          " digits each)");
+      reader.fail("", std::string("<") + element + "> must hold colours as hex digits (" +
+                          std::to_string(layout.digits) + " each)");
     return *parsed;
   }
   // flam3's built-in palettes by number, turned by the flame's hue.
@@ -473,9 +840,11 @@ Palette readPalette(const pugi::xml_node& flame, FlameReader& reader) {
     const PaletteTable& table = paletteTable(reader.options().paletteTable);
     const auto found = table.palettes.find(static_cast<int>(index));
     if (!table.error.empty()) {
+      reader.lose("palette " + std::to_string(static_cast<int>(index)));
       reader.warn(table.error + "; palette " + std::to_string(static_cast<int>(index)) +
                   " was replaced by voxflame's '" + namedPalettes().front().name + "'");
     } else if (found == table.palettes.end()) {
+      reader.lose("palette " + std::to_string(static_cast<int>(index)));
       reader.warn("flam3 has no palette " + std::to_string(static_cast<int>(index)) + "; voxflame's '" +
                   namedPalettes().front().name + "' stands in");
     } else {
@@ -555,12 +924,27 @@ FlameSymmetry symmetryOfKind(double kind, FlameReader& reader) {
 }
 
 ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, const std::string& name,
-                        const FlameImportOptions& options) {
+                        const FlameImportOptions& options, const std::map<std::string, std::string>& renamed) {
   FlameReader reader(where, options);
+  reader.setRenamed(&renamed);
   ImportedFlame flame;
   flame.name = name;
+  // JWildfire's layered flames (<jwf-flame>) keep their transforms and palette in <layer>
+  // children; the first layer is read, the others are named as left out.
+  pugi::xml_node body = node;
+  if (std::string_view(node.name()) == "jwf-flame") {
+    body = node.child("layer");
+    if (!body) reader.fail("", "is a JWildfire <jwf-flame> without a <layer>; there is nothing to draw");
+    std::size_t layers = 0;
+    for (const pugi::xml_node& layer : node.children("layer")) layers += layer ? 1 : 0;
+    if (layers > 1) {
+      reader.lose("JWildfire layers after the first");
+      reader.warn("the flame has " + std::to_string(layers) +
+                  " JWildfire layers; voxflame reads the first and leaves the others out");
+    }
+  }
   std::size_t index = 0;
-  for (const pugi::xml_node& child : node.children("xform")) {
+  for (const pugi::xml_node& child : body.children("xform")) {
     if (index >= kMaxFlameXforms)
       reader.fail("", "has more than " + std::to_string(kMaxFlameXforms) + " transforms; voxflame takes at most " +
                           std::to_string(kMaxFlameXforms));
@@ -568,10 +952,23 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
     ++index;
   }
   if (flame.genome.xforms.empty()) reader.fail("", "has no transforms (<xform> elements); there is nothing to draw");
+  // Xaos lists longer than the transforms (Fr0st writes trailing ones) are trimmed; a list of 1s
+  // is no xaos at all.
+  for (std::size_t i = 0; i < flame.genome.xforms.size(); ++i) {
+    std::vector<double>& xaos = flame.genome.xforms[i].xaos;
+    if (xaos.size() > flame.genome.xforms.size()) {
+      if (std::any_of(xaos.begin() + static_cast<std::ptrdiff_t>(flame.genome.xforms.size()), xaos.end(),
+                      [](double v) { return v != 1.0; }))
+        reader.warn("transform " + std::to_string(i) + " has more xaos factors than the flame has transforms; the " +
+                    "extra ones were left out");
+      xaos.resize(flame.genome.xforms.size());
+    }
+    if (std::all_of(xaos.begin(), xaos.end(), [](double v) { return v == 1.0; })) xaos.clear();
+  }
   double total = 0.0;
   for (const FlameXform& x : flame.genome.xforms) total += x.weight;
   if (!(total > 0.0)) reader.fail("", "has only transforms of weight 0; at least one needs a positive weight");
-  if (const pugi::xml_node finalNode = node.child("finalxform")) {
+  if (const pugi::xml_node finalNode = body.child("finalxform")) {
     flame.genome.hasFinal = true;
     flame.genome.finalXform = reader.xform(finalNode, "final transform", true);
   }
@@ -582,7 +979,7 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
       reader.fail("", "<symmetry> needs a kind attribute (flam3: N-fold, negative adds a mirror)");
     flame.genome.symmetry = symmetryOfKind(reader.number(symmetry.attribute("kind"), "<symmetry>", -1e6, 1e6), reader);
   }
-  const Palette palette = readPalette(node, reader);
+  const Palette palette = readPalette(body, reader);
   flame.palette.reserve(kFlamePaletteSize);
   for (std::size_t i = 0; i < kFlamePaletteSize; ++i)
     flame.palette.push_back(
@@ -591,11 +988,12 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
   flame.depthAdded = addFlameDepth(flame.genome, options.depth);
   validateFlame(flame.genome, where);
   flame.warnings = reader.finishWarnings();
+  flame.leftOut = reader.finishLeftOut();
   return flame;
 }
 
-// Every <flame> element, in document order, at any depth (explicit stack: a deeply nested file
-// must not exhaust the call stack).
+// Every <flame> (or JWildfire <jwf-flame>) element, in document order, at any depth (explicit stack: a deeply nested
+// file must not exhaust the call stack).
 std::vector<pugi::xml_node> flameElements(const pugi::xml_document& document) {
   std::vector<pugi::xml_node> flames;
   std::vector<pugi::xml_node> stack;
@@ -604,7 +1002,7 @@ std::vector<pugi::xml_node> flameElements(const pugi::xml_document& document) {
     const pugi::xml_node node = stack.back();
     stack.pop_back();
     if (node.type() != pugi::node_element) continue;
-    if (std::string_view(node.name()) == "flame") {
+    if (std::string_view(node.name()) == "flame" || std::string_view(node.name()) == "jwf-flame") {
       flames.push_back(node);
       continue;  // flames do not nest
     }
@@ -630,7 +1028,8 @@ bool isFlatFlame(const FlameGenome& genome) {
     if (!flatAffine(x.affine) || (x.hasPost && !flatAffine(x.post))) return false;
     for (const VariationTerm& term : x.variations) {
       const VariationInfo* info = findVariation(term.name);
-      if (!info || info->threeD) return false;
+      // flatten keeps z at 0: flat.
+      if (!info || (info->threeD && info->name != "flatten")) return false;
     }
     return true;
   };
@@ -640,6 +1039,15 @@ bool isFlatFlame(const FlameGenome& genome) {
 
 bool addFlameDepth(FlameGenome& genome, double depth) {
   if (!isFlatFlame(genome)) return false;
+  // flatten would set the depth back to 0 (Apophysis 3D flames use it to stay flat).
+  const auto isFlatten = [](const VariationTerm& term) {
+    const VariationInfo* info = findVariation(term.name);
+    return info && info->name == "flatten";
+  };
+  if (depth > 0.0) {
+    for (FlameXform& x : genome.xforms) std::erase_if(x.variations, isFlatten);
+    if (genome.hasFinal) std::erase_if(genome.finalXform.variations, isFlatten);
+  }
   // A transform's place in colour order (ties by position) sets its layer: s from −1 to +1.
   const std::size_t n = genome.xforms.size();
   std::vector<std::size_t> order(n);
@@ -669,9 +1077,18 @@ FlameFileContents readFlameXml(std::string_view text, const std::string& sourceN
   pugi::xml_document document;
   const pugi::xml_parse_result result =
       document.load_buffer(text.data(), text.size(), pugi::parse_default, pugi::encoding_auto);
-  if (!result)
-    throw Error(sourceName + " is not flame XML: " + result.description() + " at byte " +
-                std::to_string(result.offset));
+  // Not well-formed: read again tolerantly (tolerantXml); a file that is still not XML is refused
+  // with the first reading's error.
+  TolerantXml tolerant;
+  if (!result) {
+    tolerant = tolerantXml(text);
+    pugi::xml_document again;
+    if (!again.load_buffer(tolerant.text.data(), tolerant.text.size(), pugi::parse_default, pugi::encoding_auto) ||
+        flameElements(again).empty())
+      throw Error(sourceName + " is not flame XML: " + result.description() + " at byte " +
+                  std::to_string(result.offset));
+    document.reset(again);
+  }
   const std::vector<pugi::xml_node> flames = flameElements(document);
   if (flames.empty())
     throw Error(sourceName +
@@ -701,7 +1118,13 @@ FlameFileContents readFlameXml(std::string_view text, const std::string& sourceN
     if (flames.size() > 1) title += " " + std::to_string(contents.index + 1);
   }
   const std::string where = sourceName + ", flame '" + contents.names[contents.index] + "'";
-  contents.flame = readFlame(chosen, where, title, options);
+  contents.flame = readFlame(chosen, where, title, options, tolerant.renamed);
+  if (!tolerant.fixes.empty()) {
+    std::string fixes;
+    for (const std::string& fix : tolerant.fixes) fixes += (fixes.empty() ? "" : "; ") + fix;
+    contents.flame.warnings.insert(contents.flame.warnings.begin(),
+                                   "the file is not well-formed XML (" + fixes + "); it was read tolerantly");
+  }
   return contents;
 }
 

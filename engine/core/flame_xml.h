@@ -7,10 +7,13 @@
 // flam3 writes an affine map as coefs="a d b e c f", meaning x' = a x + b y + c, y' = d x + e y + f;
 // the reader puts a, b, c, d, e, f into Affine3's first two rows (flame.h). Variations are the
 // attributes of an <xform> that name a variation of the catalogue (flame_variations.h), their
-// parameters `<variation>_<parameter>` attributes (julian_power, ngon_sides). What voxflame does not
-// know (a variation, xaos) is left out and reported as a warning; what would make the flame
-// meaningless (no transforms, only zero weights, coefficients that are not finite or beyond ±1e6)
-// is a core::Error naming the file and the transform.
+// parameters `<variation>_<parameter>` attributes (julian_power, ngon_sides); `chaos` is the
+// transform's xaos. Files that are not well-formed XML (JWildfire's attribute names with spaces or
+// `#`, stray closing tags) are read again tolerantly. What voxflame does not know (a variation,
+// flam3's <motion>, JWildfire's motion curves) is left out, reported as a warning and listed in
+// ImportedFlame::leftOut; what would make the flame meaningless (no transforms, only zero
+// weights, coefficients that are not finite or beyond ±1e6) is a core::Error naming the file and
+// the transform.
 //
 // Flames are 2D. A flat one (no 3D variation, no z coefficient) gains depth on import
 // (addFlameDepth): the z row of every transform becomes z' = ½ z + depth · s, with s from −1 for
@@ -51,6 +54,10 @@ struct ImportedFlame {
   ToneMapSettings tone;               // flam3's defaults, then the file's keys
   bool depthAdded = false;            // addFlameDepth changed the genome
   std::vector<std::string> warnings;  // what was left out or replaced, for the user
+  // What the file asks for that the import could not keep, one short name each, sorted
+  // ("variation crackle", "xaos", "<motion>"): empty when the flame was imported whole. The
+  // corpus tally counts these; `warnings` says the same in sentences.
+  std::vector<std::string> leftOut;
 };
 
 struct FlameFileContents {
@@ -72,7 +79,8 @@ bool isFlameFilePath(const std::filesystem::path& path);
 // genome iterates in the plane z = const.
 bool isFlatFlame(const FlameGenome& genome);
 
-// Gives a flat genome depth as described above (depth ≥ 0; 0 collapses it onto z = 0). Returns
+// Gives a flat genome depth as described above (depth ≥ 0; 0 collapses it onto z = 0); with depth
+// > 0 it drops flatten terms, which would set z back to 0. Returns
 // false, changing nothing, for a genome that is not flat.
 bool addFlameDepth(FlameGenome& genome, double depth);
 

@@ -272,7 +272,7 @@ const FF kFlameFields[] = {
      .help = "the transforms; at least one with a positive weight",
      .affects = kPattern,
      .typeText = "array",
-     .rangeText = "1–16 transforms",
+     .rangeText = "1–128 transforms",
      .defaultText = "required"},
     {.key = "final",
      .help = "applied to what is drawn, never fed back",
@@ -305,6 +305,13 @@ const XF kXformFields[] = {
      .typeText = "array",
      .rangeText = "0–16",
      .defaultText = "`[{\"name\": \"linear\"}]`"},
+    {.key = "xaos",
+     .help = "flam3's and Apophysis' xaos (`chaos`): entry j multiplies transform j's weight when the transform "
+             "after this one is chosen (0 forbids that step); entries left out are 1; not in `final`",
+     .affects = kPattern,
+     .typeText = "array of numbers",
+     .rangeText = "each 0–10⁶, at most 128",
+     .defaultText = "all 1"},
     {.key = "post",
      .help = "a second affine map after the variations",
      .affects = kPattern,
@@ -966,6 +973,11 @@ FlameXform readXform(const json& value, const std::string& source, const std::st
   } else {
     xform.variations = {{"linear", 1.0, {}}};
   }
+  if (const json* xaos = isFinal ? nullptr : reader.find("xaos")) {
+    if (!xaos->is_array() || xaos->size() > kMaxFlameXforms)
+      reader.fail("must be an array of at most " + std::to_string(kMaxFlameXforms) + " numbers", "xaos");
+    for (const json& factor : *xaos) xform.xaos.push_back(reader.checkNumber(factor, "xaos", 0.0, 1e6));
+  }
   reader.finish();
   return xform;
 }
@@ -1106,6 +1118,7 @@ json xformJson(const FlameXform& xform, bool isFinal, bool complete) {
     variations.push_back(v);
   }
   out["variations"] = variations;
+  if (!isFinal && !xform.xaos.empty()) out["xaos"] = json(xform.xaos);
   return out;
 }
 
@@ -1764,6 +1777,7 @@ void diffXform(const FlameXform& a, const FlameXform& b, const std::string& base
   if (a.affine != b.affine) note(d, base + "/affine", kPattern);
   if (a.hasPost != b.hasPost || a.post != b.post) note(d, base + "/post", kPattern);
   if (a.variations != b.variations) note(d, base + "/variations", kPattern);
+  if (a.xaos != b.xaos) note(d, base + "/xaos", kPattern);
 }
 
 void diffLayer(const PatternLayer& a, const PatternLayer& b, const std::string& base, SceneDiff& d) {

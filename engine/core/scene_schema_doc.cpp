@@ -225,13 +225,15 @@ move or resize the pattern (`voxflame animate` locks every layer this way, `axis
 ### Flame layers (`"kind": "flame"`)
 
 A 3D fractal flame (Draves & Reckase's algorithm lifted into 3D), iterated by the chaos game: at
-every step each point picks one transform with probability proportional to its `weight`, goes
-through its `affine` map, then the weighted sum of its variations (`presets/VARIATIONS.md` lists
-them with their formulas; `voxflame list --variations`), then its optional `post` map. Its colour
-index moves towards the transform's `color` by `color_speed` (flam3's blend
-`c ← (1 − color_speed) · c + color_speed · color`) and indexes the layer's gradient (`color.mode`
-`index`). The `final` transform bends what is drawn without feeding back. The layer's `color`,
-`weight` and `transform` (fit, copies) work as for attractors.
+every step each point picks one transform with probability proportional to its `weight` (times
+the `xaos` factor the transform it took last gives it, as flam3's and Apophysis' xaos), goes
+through its `affine` map, then its `pre_` variations one after the other, the weighted sum of its
+other variations (`presets/VARIATIONS.md` lists them with their formulas and the rules of the
+`pre_`/`post_` forms; `voxflame list --variations`), its `post_` variations, then its optional
+`post` map. Its colour index moves towards the transform's `color` by `color_speed` (flam3's
+blend `c ← (1 − color_speed) · c + color_speed · color`) and indexes the layer's gradient
+(`color.mode` `index`). The `final` transform bends what is drawn without feeding back. The
+layer's `color`, `weight` and `transform` (fit, copies) work as for attractors.
 
 )md";
   out += table(flameRows());

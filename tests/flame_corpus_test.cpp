@@ -1,0 +1,161 @@
+// The corpus tally (issue 25): every flame of every real flame file in ../shared/data/flames
+// (56 files from flam3, Electric Sheep, Apophysis, Fractorium, Fr0st, JWildfire and FLAM3H; see
+// its SOURCES.md) goes through the importer, and the test prints how many were imported whole,
+// how many lost something (naming what, most common first) and how many were refused (why).
+//
+// The issue's goal is at least 95% of the flames imported whole, nothing refused except truly
+// broken XML. The thresholds below are what the importer reaches today; raise them as it gets
+// better, never lower them. Before issue 25: 155 of 268 whole (57.8%), 98 lost something (xaos
+// in 50, flatten in 36), 15 refused (more than 16 transforms, attribute names that are not XML
+// names, a stray closing tag, JWildfire's layered <jwf-flame> files).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/chaos_game.h"
+#include "core/error.h"
+#include "core/flame_xml.h"
+#include "core/random.h"
+#include "core/scene.h"
+
+using namespace voxflame::core;
+
+namespace {
+
+// At least this many flames of the corpus import whole, and at most this many are refused.
+constexpr double kWholeShareGoal = 0.95;        // the issue's goal, reported beside the threshold
+constexpr double kWholeShareThreshold = 0.794;  // 213 of 268
+constexpr std::size_t kRefusedLimit = 0;
+
+const std::filesystem::path kCorpus = VOXFLAME_TEST_FLAMES;
+
+std::string readText(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream out;
+  out << in.rdbuf();
+  return out.str();
+}
+
+// How many <flame> elements a file that the importer refuses outright seems to hold, so a refused
+// file counts as many flames as it has.
+std::size_t roughFlameCount(const std::string& text) {
+  static const std::regex flameTag("<flame[\\s>]");
+  const auto begin = std::sregex_iterator(text.begin(), text.end(), flameTag);
+  return std::max<std::size_t>(1, static_cast<std::size_t>(std::distance(begin, std::sregex_iterator())));
+}
+
+struct Tally {
+  std::size_t whole = 0, lost = 0, refused = 0;
+  std::map<std::string, std::size_t> lostThings;  // what → in how many flames
+  std::map<std::string, std::size_t> refusals;    // file: reason → flames
+  std::size_t total() const { return whole + lost + refused; }
+};
+
+// An imported flame must also run: a short chaos game, whose points are finite or marked as
+// escaped (NaN), never anything else.
+void runBriefly(const ImportedFlame& flame, const std::string& file) {
+  Scene base;
+  base.meshPath = "mesh.obj";
+  const Scene scene = sceneFromImportedFlame(flame, base);
+  const ChaosGame game(scene.layers.at(0), file);
+  constexpr std::size_t kLanes = 64;
+  ChaosLanes lanes;
+  lanes.resize(kLanes);
+  SplitMix64 rng(7);
+  for (std::size_t i = 0; i < kLanes; ++i) game.seedLane(lanes, i, rng);
+  std::vector<double> x(kLanes), y(kLanes), z(kLanes), color(kLanes);
+  for (int step = 0; step < 40; ++step) {
+    game.step(lanes, x.data(), y.data(), z.data(), color.data(), kLanes);
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      if (std::isnan(x[i])) {
+        game.seedLane(lanes, i, rng);
+        continue;
+      }
+      if (!std::isfinite(y[i]) || !std::isfinite(z[i]) || !(color[i] >= 0.0 && color[i] <= 1.0))
+        throw Error(file + ": the chaos game made a point that is neither finite nor marked as escaped");
+    }
+  }
+}
+
+void importFile(const std::filesystem::path& path, Tally& tally) {
+  const std::string text = readText(path);
+  const std::string file = path.filename().string();
+  std::size_t count = 0;
+  try {
+    count = readFlameXml(text, file).names.size();
+  } catch (const Error&) {
+    // The first flame may be refused on its own: find the count without importing it.
+    FlameImportOptions probe;
+    probe.index = 1u << 30;
+    try {
+      readFlameXml(text, file, probe);
+    } catch (const Error& e) {
+      const std::string message = e.what();
+      const auto holds = message.find(" holds ");
+      if (holds != std::string::npos && message.find("there is no flame") != std::string::npos)
+        count = std::stoul(message.substr(holds + 7));
+      else {
+        const std::size_t flames = roughFlameCount(text);
+        tally.refused += flames;
+        tally.refusals[message.substr(0, 200)] += flames;
+        return;
+      }
+    }
+  }
+  for (std::size_t i = 0; i < count; ++i) {
+    FlameImportOptions options;
+    options.index = i;
+    try {
+      const FlameFileContents contents = readFlameXml(text, file, options);
+      runBriefly(contents.flame, file);
+      if (contents.flame.leftOut.empty()) {
+        ++tally.whole;
+      } else {
+        ++tally.lost;
+        for (const std::string& thing : contents.flame.leftOut) ++tally.lostThings[thing];
+      }
+    } catch (const Error& e) {
+      ++tally.refused;
+      ++tally.refusals[std::string(e.what()).substr(0, 200)];
+    }
+  }
+}
+
+TEST(FlameCorpus, TallyOfEveryFlameInTheSharedCorpus) {
+  if (!std::filesystem::is_directory(kCorpus)) GTEST_SKIP() << kCorpus << " is missing";
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(kCorpus))
+    if (isFlameFilePath(entry.path())) files.push_back(entry.path());
+  std::sort(files.begin(), files.end());
+  ASSERT_FALSE(files.empty());
+  Tally tally;
+  for (const auto& path : files) importFile(path, tally);
+
+  std::vector<std::pair<std::size_t, std::string>> lostByCount;
+  for (const auto& [thing, flames] : tally.lostThings) lostByCount.emplace_back(flames, thing);
+  std::sort(lostByCount.begin(), lostByCount.end(),
+            [](const auto& a, const auto& b) { return a.first != b.first ? a.first > b.first : a.second < b.second; });
+  const double share = static_cast<double>(tally.whole) / static_cast<double>(tally.total());
+  std::printf(
+      "flame corpus: %zu files, %zu flames: %zu imported whole (%.1f%%; goal %.0f%%), %zu lost something, "
+      "%zu refused\n",
+      files.size(), tally.total(), tally.whole, 100.0 * share, 100.0 * kWholeShareGoal, tally.lost, tally.refused);
+  std::printf("lost (in how many flames):\n");
+  for (const auto& [flames, thing] : lostByCount) std::printf("  %4zu  %s\n", flames, thing.c_str());
+  std::printf("refused:\n");
+  for (const auto& [reason, flames] : tally.refusals) std::printf("  %4zu  %s\n", flames, reason.c_str());
+
+  EXPECT_GE(share, kWholeShareThreshold) << "fewer flames import whole than before";
+  EXPECT_LE(tally.refused, kRefusedLimit) << "more flames are refused than before";
+}
+
+}  // namespace
