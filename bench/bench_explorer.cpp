@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -79,16 +80,27 @@ double peakResidentMegabytes() {
   return 0.0;
 }
 
-// Mean and worst frame over a run of frames.
+// Mean, 95th percentile and worst frame over a run of frames: a mean hides a few long frames
+// that a user feels as stutter.
 struct FrameTimes {
   double total = 0.0, worst = 0.0;
   int frames = 0;
+  std::vector<double> all;
   void add(double ms) {
     total += ms;
     worst = std::max(worst, ms);
     ++frames;
+    all.push_back(ms);
   }
   double mean() const { return total / std::max(1, frames); }
+  // The frame time 95% of the frames stay at or under (nearest rank).
+  double p95() const {
+    if (all.empty()) return 0.0;
+    std::vector<double> sorted = all;
+    std::sort(sorted.begin(), sorted.end());
+    const auto rank = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(sorted.size())));
+    return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
+  }
 };
 
 template <typename Each>
@@ -245,6 +257,7 @@ void benchExplorer(const BenchOptions& options) {
                      {"render_scale", loop.state.renderScale},
                      {"frame_budget_ms", loop.state.frameBudgetMs},
                      {"mean_frame_ms", refining.mean()},
+                     {"p95_frame_ms", refining.p95()},
                      {"worst_frame_ms", refining.worst},
                      {"change_to_frame_ms_median", median(edits.ms)},
                      {"change_to_frame_ms_worst", edits.ms.back()},
@@ -253,10 +266,13 @@ void benchExplorer(const BenchOptions& options) {
                      {"change_to_full_ms_median", median(edits.fullMs)},
                      {"change_to_full_ms_worst", edits.fullMs.back()},
                      {"mean_frame_ms_dragging", dragging.mean()},
+                     {"p95_frame_ms_dragging", dragging.p95()},
                      {"worst_frame_ms_dragging", dragging.worst},
                      {"mean_frame_ms_orbiting", orbiting.mean()},
+                     {"p95_frame_ms_orbiting", orbiting.p95()},
                      {"worst_frame_ms_orbiting", orbiting.worst},
                      {"mean_frame_ms_refining", refiningAfter.mean()},
+                     {"p95_frame_ms_refining", refiningAfter.p95()},
                      {"worst_frame_ms_refining", refiningAfter.worst},
                      {"memory_mb", memory},
                      {"estimated_memory_mb",
@@ -264,6 +280,7 @@ void benchExplorer(const BenchOptions& options) {
                      {"peak_resident_mb", peakResidentMegabytes()},
                      {"frames_during_export", exporting.frames},
                      {"mean_frame_ms_during_export", exporting.mean()},
+                     {"p95_frame_ms_during_export", exporting.p95()},
                      {"worst_frame_ms_during_export", exporting.worst},
                      {"seconds_to_converge", convergeSeconds},
                      {"noise_converged", restNoise},
