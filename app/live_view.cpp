@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <thread>
 #include <utility>
 
 #include "core/camera.h"
@@ -57,7 +58,7 @@ void LiveView::takeVolume() {
     renderer_.marchFrom(gl::VolumeRenderer::Source::Proxy);
     newVolumeShown_ = true;
     shownPost_ = proxyPost_;
-    target_.samples = 0;
+    restartSamples();
   }
 
   // The volume on screen is in the textures once uploaded, so its buffer goes back to the session
@@ -99,7 +100,7 @@ void LiveView::takeVolume() {
       renderer_.marchFrom(gl::VolumeRenderer::Source::Main);
       newVolumeShown_ = true;
       shownPost_ = uploadingPost_;
-      target_.samples = 0;  // new content: start refining the image afresh
+      restartSamples();  // new content: start refining the image afresh
     }
   }
   // While a volume of another pattern streams into the main grid, its slabs are of two patterns.
@@ -123,7 +124,7 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
     try {
       renderer_.uploadShadow(*shadowJob_.take(), shadowShown_ && shadowShown_->proxy ? 1 : kShadowDownsample,
                              shadowSourceSize_);
-      target_.samples = 0;
+      restartSamples();
     } catch (const core::Error&) {
       shadowShown_.reset();  // try again next frame
     }
@@ -155,6 +156,37 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
   }
 }
 
+void LiveView::restartSamples() {
+  target_.samples = 0;
+  bandsRestart_ = true;
+}
+
+void LiveView::marchBands(const gl::RenderSettings& settings, bool still, double budgetMs) {
+  if (bandsRestart_) {
+    bands_.restart(target_.width(), target_.height());
+    sampleBase_ = static_cast<int>(frame_);
+    bandsRestart_ = false;
+  }
+  const RefineBands::Span span = still ? bands_.next(budgetMs) : bands_.rest();
+  const auto start = std::chrono::steady_clock::now();
+  // Every band's n-th sample has the same index, so once all bands have their samples each pixel
+  // holds what an untiled march would have given it.
+  renderer_.marchRows(target_, settings, sampleBase_ + span.samples, span.firstRow, span.rows, span.samples);
+  marchMs_ = -1.0;
+  if (still) {
+    // The budget needs the march's own cost. The resolve that follows reads the picture back and
+    // would wait for the march anyway.
+    if (testMsPerRow_ > 0.0)
+      std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(testMsPerRow_ * span.rows));
+    glFinish();
+    marchMs_ = millisecondsSince(start);
+  }
+  bands_.marched(span, marchMs_);
+  marchedRows_ = span.rows;
+  target_.samples = bands_.samples();
+  if (span.endsPass) shownTarget_.copyFrom(target_);
+}
+
 bool LiveView::resting() const {
   return target_.samples >= kMaxSamples && !uploadInProgress_ && !shadowJob_.busy() && !shadowJob_.ready();
 }
@@ -164,11 +196,23 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
   width = std::max(1, width);
   height = std::max(1, height);
   const auto frameStart = std::chrono::steady_clock::now();
-  if (lastFrameStart_)
-    budget_.measured(std::chrono::duration<double, std::milli>(frameStart - *lastFrameStart_).count(), lastMarchScale_,
-                     lastMarched_);
+  if (lastFrameStart_) {
+    const double lastFrameMs = std::chrono::duration<double, std::milli>(frameStart - *lastFrameStart_).count();
+    if (lastInBands_) {
+      bands_.frameMeasured(lastFrameMs, std::max(0.0, marchMs_), lastFinishMs_);
+      // A frame that marched a few bands says little of what a drag's first frame, which marches
+      // the whole target, may afford: the bands' estimate of a whole pass does.
+      budget_.measured(bands_.otherMs() + bands_.passMs() + bands_.finishMs(), lastMarchScale_, true);
+    } else {
+      budget_.measured(lastFrameMs, lastMarchScale_, lastMarched_);
+    }
+  }
   lastFrameStart_ = frameStart;
   lastMarched_ = false;
+  lastInBands_ = false;
+  lastFinishMs_ = 0.0;
+  marchedRows_ = 0;
+  marchMs_ = -1.0;
   // An edit while the user holds a widget or the view, or right after a frame that changed, is one
   // of a drag's: posted with the hold, so the large grid never starts on it.
   if (session_.postIfPatternChanged(state.scene, state.interacting || changedLastFrame_)) {
@@ -214,7 +258,7 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * scale)),
                    std::max(1, static_cast<int>(static_cast<float>(height) * scale)));
     if (viewChanged || scale != lastRenderScale_) {
-      target_.samples = 0;
+      restartSamples();
       renderer_.drawMesh(target_, settings);
       lastView_ = state.scene;
       lastWidth_ = width;
@@ -226,15 +270,28 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     // streams in: the upload then has the frame to itself, and the new volume restarts the
     // samples anyway.
     const bool waitForUpload = uploadInProgress_ && target_.samples > 0 && !viewChanged;
+    // A still view (one the budget has let go back to its full scale) refines in bands, as many
+    // a frame as its budget allows; while something changes each frame marches a whole pass at
+    // the budget's lowered scale.
+    const bool still = budget_.quiet() && !viewChanged && !result.patternPosted;
+    bool newPicture = false;
     if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged) && !waitForUpload) {
-      renderer_.march(target_, settings, static_cast<int>(frame_));
+      const int passesBefore = bands_.samples();
+      marchBands(settings, still, budget_.budgetMs());
+      newPicture = bands_.samples() != passesBefore;
       lastMarched_ = true;
       lastMarchScale_ = scale;
+      lastInBands_ = still;
     }
     state.samples = target_.samples;
     changed = viewChanged;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    renderer_.resolve(target_, settings, glm::ivec4(0, 0, width, height), false);
+    // Until the first pass over a new view or volume is whole, the last whole picture stays up.
+    const gl::FrameTarget& shown = shownTarget_.samples > 0 ? shownTarget_ : target_;
+    const auto resolveStart = std::chrono::steady_clock::now();
+    renderer_.resolve(shown, settings, glm::ivec4(0, 0, width, height), false);
+    resolveMs_ = millisecondsSince(resolveStart);
+    if (newPicture) lastFinishMs_ = resolveMs_;
     result.volumeDrawn = true;
   } else {
     const glm::vec3 background = core::linearToSrgb(state.scene.tone.background);
