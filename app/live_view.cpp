@@ -161,7 +161,7 @@ void LiveView::restartSamples() {
   bandsRestart_ = true;
 }
 
-void LiveView::marchBands(const gl::RenderSettings& settings, bool still, double budgetMs) {
+bool LiveView::marchBands(const gl::RenderSettings& settings, bool still, double budgetMs) {
   if (bandsRestart_) {
     bands_.restart(target_.width(), target_.height());
     sampleBase_ = static_cast<int>(frame_);
@@ -184,7 +184,13 @@ void LiveView::marchBands(const gl::RenderSettings& settings, bool still, double
   bands_.marched(span, marchMs_);
   marchedRows_ = span.rows;
   target_.samples = bands_.samples();
-  if (span.endsPass) shownTarget_.copyFrom(target_);
+  if (span.endsPass && still) {
+    shownTarget_.copyFrom(target_);
+    shownHasPicture_ = true;
+  }
+  // A whole pass marched while something changes is shown from the target itself: no copy.
+  if (span.endsPass) showingTarget_ = !still;
+  return span.endsPass;
 }
 
 bool LiveView::resting() const {
@@ -255,6 +261,16 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     // Coarser pixels, coarser steps along the ray. A still view marches at its ceiling (stretch
     // 1), and a change of scale restarts the samples, so its samples are all of the scene's step.
     settings.render.stepVoxels *= FrameBudget::stepStretch(scale, std::min(1.0f, state.renderScale));
+    // A still view (one the budget has let go back to its full scale) refines in bands, as many
+    // a frame as its budget allows; while something changes each frame marches a whole pass at
+    // the budget's lowered scale, shown straight from the target. The first still frame keeps
+    // that picture up (before a new size clears the target) while its bands' first pass builds.
+    const bool still = budget_.quiet() && !viewChanged && !result.patternPosted;
+    if (still && showingTarget_) {
+      shownTarget_.copyFrom(target_);  // whole, even when new content has just restarted its samples
+      shownHasPicture_ = true;
+      showingTarget_ = false;
+    }
     target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * scale)),
                    std::max(1, static_cast<int>(static_cast<float>(height) * scale)));
     if (viewChanged || scale != lastRenderScale_) {
@@ -270,15 +286,9 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     // streams in: the upload then has the frame to itself, and the new volume restarts the
     // samples anyway.
     const bool waitForUpload = uploadInProgress_ && target_.samples > 0 && !viewChanged;
-    // A still view (one the budget has let go back to its full scale) refines in bands, as many
-    // a frame as its budget allows; while something changes each frame marches a whole pass at
-    // the budget's lowered scale.
-    const bool still = budget_.quiet() && !viewChanged && !result.patternPosted;
     bool newPicture = false;
     if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged) && !waitForUpload) {
-      const int passesBefore = bands_.samples();
-      marchBands(settings, still, budget_.budgetMs());
-      newPicture = bands_.samples() != passesBefore;
+      newPicture = marchBands(settings, still, budget_.budgetMs());
       lastMarched_ = true;
       lastMarchScale_ = scale;
       lastInBands_ = still;
@@ -287,7 +297,7 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     changed = viewChanged;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     // Until the first pass over a new view or volume is whole, the last whole picture stays up.
-    const gl::FrameTarget& shown = shownTarget_.samples > 0 ? shownTarget_ : target_;
+    const gl::FrameTarget& shown = showingTarget_ || !shownHasPicture_ ? target_ : shownTarget_;
     const auto resolveStart = std::chrono::steady_clock::now();
     renderer_.resolve(shown, settings, glm::ivec4(0, 0, width, height), false);
     resolveMs_ = millisecondsSince(resolveStart);

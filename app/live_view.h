@@ -75,8 +75,9 @@ class LiveView {
   // New content or a new view: the sample average starts over, band by band.
   void restartSamples();
   // Marches the next bands of the target (all that are left of the pass while something
-  // changes; as many as the budget allows while the view is still).
-  void marchBands(const gl::RenderSettings& settings, bool still, double budgetMs);
+  // changes; as many as the budget allows while the view is still); true when that ended a pass,
+  // whose picture is then the one shown.
+  bool marchBands(const gl::RenderSettings& settings, bool still, double budgetMs);
   // The points a main grid volume of the proxy's pattern needs to replace the proxy on screen.
   std::uint64_t takeoverPoints() const;
   void keepShadowInStep(const core::RenderSettingsDoc& render);
@@ -91,6 +92,8 @@ class LiveView {
   // the last whole pass, copied here, so a frame never shows one band a sample ahead of the next
   // (nor a half-marched first pass) and the finish runs once a pass, not once a frame.
   gl::FrameTarget shownTarget_;
+  bool showingTarget_ = false;    // target_ itself is shown (its last pass, marched while something changed, is whole)
+  bool shownHasPicture_ = false;  // shownTarget_ holds a whole pass
   RefineBands bands_;
   bool bandsRestart_ = true;
   int sampleBase_ = 0;  // the sample index of a pass-0 march: a band's pass n uses sampleBase_ + n

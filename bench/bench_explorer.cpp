@@ -86,13 +86,26 @@ struct FrameTimes {
   double total = 0.0, worst = 0.0;
   int frames = 0;
   std::vector<double> all;
-  void add(double ms) {
+  // The resolve (finishing the picture on the CPU and drawing it) within those frames, and the
+  // rows marched: the resolve's share shows what moving the finish to the GPU would save.
+  double resolveTotal = 0.0, uploadTotal = 0.0;
+  double rowsTotal = 0.0, targetRowsTotal = 0.0;
+  void add(double ms, const app::LiveView& view, const app::ExplorerState& state) {
+    uploadTotal += state.metrics.uploadMs;
     total += ms;
     worst = std::max(worst, ms);
     ++frames;
     all.push_back(ms);
+    resolveTotal += view.resolveMs();
+    rowsTotal += view.marchedRows();
+    targetRowsTotal += view.targetRows();
   }
   double mean() const { return total / std::max(1, frames); }
+  double meanResolve() const { return resolveTotal / std::max(1, frames); }
+  double meanUpload() const { return uploadTotal / std::max(1, frames); }
+  double resolveShare() const { return total > 0.0 ? resolveTotal / total : 0.0; }
+  // The share of the march target's rows a frame marched, on average.
+  double marchedShare() const { return targetRowsTotal > 0.0 ? rowsTotal / targetRowsTotal : 0.0; }
   // The frame time 95% of the frames stay at or under (nearest rank).
   double p95() const {
     if (all.empty()) return 0.0;
@@ -111,7 +124,7 @@ FrameTimes timeFrames(FrameLoop& loop, int frames, double maxMs, Each each) {
     each(i);
     const auto frameStart = Clock::now();
     loop.run();
-    times.add(millisecondsSince(frameStart));
+    times.add(millisecondsSince(frameStart), loop.view, loop.state);
   }
   return times;
 }
@@ -244,13 +257,29 @@ void benchExplorer(const BenchOptions& options) {
       while ((loop.state.exportStatus = job.poll()).state == app::ExportState::Running) {
         const auto frameStart = Clock::now();
         loop.run();
-        exporting.add(millisecondsSince(frameStart));
+        exporting.add(millisecondsSince(frameStart), loop.view, loop.state);
       }
       std::filesystem::remove(output);
     }
     auto median = [](const std::vector<double>& sorted) { return sorted[sorted.size() / 2]; };
     loop.state.exportStatus = app::ExportStatus{};
     const auto [convergeSeconds, cpuPercent, restNoise] = cpuAtRest(session, loop);
+    // Each phase's mean, 95th percentile and worst frame, and its resolve's mean and share.
+    nlohmann::json phases = nlohmann::json::object();
+    for (const auto& [name, times] : {std::pair<const char*, const FrameTimes*>{"refining_first", &refining},
+                                      {"dragging", &dragging},
+                                      {"orbiting", &orbiting},
+                                      {"refining", &refiningAfter},
+                                      {"during_export", &exporting}}) {
+      phases[name] = {{"frames", times->frames},
+                      {"mean_ms", times->mean()},
+                      {"p95_ms", times->p95()},
+                      {"worst_ms", times->worst},
+                      {"mean_resolve_ms", times->meanResolve()},
+                      {"resolve_share", times->resolveShare()},
+                      {"mean_upload_ms", times->meanUpload()},
+                      {"marched_rows_share", times->marchedShare()}};
+    }
     report(options, {{"bench", "explorer"},
                      {"grid", resolution},
                      {"renderer", context.renderer()},
@@ -284,7 +313,8 @@ void benchExplorer(const BenchOptions& options) {
                      {"worst_frame_ms_during_export", exporting.worst},
                      {"seconds_to_converge", convergeSeconds},
                      {"noise_converged", restNoise},
-                     {"cpu_percent_converged", cpuPercent}});
+                     {"cpu_percent_converged", cpuPercent},
+                     {"phases", phases}});
   }
 }
 

@@ -99,6 +99,15 @@ class LiveViewTest : public ::testing::Test {
     app::resetExplorerState(state, scene);
   }
   app::LiveFrame frame(app::LiveView& view) { return view.frame(state, kWidth, kHeight, canvas.framebuffer()); }
+  // Runs a few frames, then on until the picture shown is a whole pass at the full scale (a
+  // still view's first pass takes a few frames of bands, and a view change, such as the mesh
+  // arriving, shows a lowered-scale picture until then).
+  void refineAtFullScale(app::LiveView& view) {
+    for (int i = 0; i < 400; ++i) {
+      frame(view);
+      if (i >= 6 && state.metrics.marchScale == state.renderScale && state.samples >= 1) return;
+    }
+  }
   // Runs frames until a volume of the newest post is on screen; false after 60 s.
   bool runUntilShown(app::LiveView& view) {
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
@@ -226,7 +235,7 @@ TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBr
     if (!firstWasFull) firstWasFull = shown.fullShown;
     if (!shown.fullShown) {
       // Refine the proxy's picture a little, as a user would see it before the handover.
-      for (int i = 0; i < 6; ++i) frame(view);
+      refineAtFullScale(view);
       proxyBrightness = canvas.meanBrightness();
       canvas.save("proxy");
       continue;
@@ -236,7 +245,7 @@ TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBr
   ASSERT_TRUE(firstWasFull.has_value()) << "nothing was shown";
   EXPECT_FALSE(*firstWasFull) << "the first image after the edit comes from the proxy";
   ASSERT_TRUE(fullShown) << "the full grid replaces the proxy";
-  for (int i = 0; i < 6; ++i) frame(view);
+  refineAtFullScale(view);
   const double fullBrightness = canvas.meanBrightness();
   canvas.save("full");
   ASSERT_GT(proxyBrightness, 2.0) << "the proxy drew the pattern";
