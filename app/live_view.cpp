@@ -22,6 +22,9 @@ constexpr int kShadowDownsample = 2;
 // still view does not march while a volume streams in, so its frames can take more of it.
 constexpr std::size_t kUploadBytesPerFrame = 48u << 20;
 constexpr std::size_t kStillUploadBytesPerFrame = 160u << 20;
+// ... at most: a still frame uploads what its budget leaves room for at the rate uploads have
+// gone (the march waits meanwhile, but the frame still has its budget to keep).
+constexpr double kStillUploadShareOfBudget = 0.6;
 
 // The framebuffer's picture as a thumbnail (rows top to bottom, opaque).
 Thumbnail readThumbnail(unsigned framebuffer, int width, int height) {
@@ -79,12 +82,31 @@ void LiveView::takeVolume() {
       if (!behindProxy) {
         renderer_.beginUpload(*shown_);
         uploadInProgress_ = true;
+        uploadedBytes_ = 0;
         uploadingPost_ = reflects;
       }
     }
   }
   const bool still = !changedLastFrame_ && target_.samples > 0;
-  if (uploadInProgress_ && renderer_.continueUpload(still ? kStillUploadBytesPerFrame : kUploadBytesPerFrame)) {
+  std::size_t uploadBytes = still ? kStillUploadBytesPerFrame : kUploadBytesPerFrame;
+  if (still && uploadMsPerByte_ > 0.0)
+    uploadBytes =
+        std::clamp(static_cast<std::size_t>(kStillUploadShareOfBudget * budget_.budgetMs() / uploadMsPerByte_),
+                   kUploadBytesPerFrame / 4, kStillUploadBytesPerFrame);
+  const auto uploadStart = std::chrono::steady_clock::now();
+  const bool uploaded = uploadInProgress_ && renderer_.continueUpload(uploadBytes);
+  if (uploadInProgress_) {
+    // The bytes the slabs held: the budget, or what was left of the volume.
+    const std::size_t total = (shown_->density.size() + shown_->colours.size()) * sizeof(std::uint16_t);
+    const std::size_t bytes = std::min(uploadBytes, total - std::min(total, uploadedBytes_));
+    uploadedBytes_ += bytes;
+    if (bytes >= kUploadBytesPerFrame / 8) {
+      const double msPerByte = millisecondsSince(uploadStart) / static_cast<double>(bytes);
+      uploadMsPerByte_ = uploadMsPerByte_ > 0.0 ? 0.5 * (uploadMsPerByte_ + msPerByte) : msPerByte;
+    }
+  }
+  if (uploaded) {
+    uploadedBytes_ = 0;
     uploadInProgress_ = false;
     mainGeneration_ = shown_->generation;
     // 0 means an older post than the newest applied one: older than any proxy shown since.

@@ -106,6 +106,8 @@ class LiveView {
   // volume is swapped into it once uploaded (or into a fresh one while a shadow job holds it).
   std::shared_ptr<core::PackedVolume> shown_ = std::make_shared<core::PackedVolume>();
   bool uploadInProgress_ = false;
+  std::size_t uploadedBytes_ = 0;  // of the volume uploading
+  double uploadMsPerByte_ = -1.0;  // what uploads have cost (negative: none measured yet)
   bool changedLastFrame_ = false;  // the view or pattern changed in the previous frame
   std::uint64_t uploadingPost_ = 0;
   bool newVolumeShown_ = false;

@@ -88,10 +88,11 @@ struct FrameTimes {
   std::vector<double> all;
   // The resolve (finishing the picture on the CPU and drawing it) within those frames, and the
   // rows marched: the resolve's share shows what moving the finish to the GPU would save.
-  double resolveTotal = 0.0, uploadTotal = 0.0;
+  double resolveTotal = 0.0, uploadTotal = 0.0, scaleTotal = 0.0;
   double rowsTotal = 0.0, targetRowsTotal = 0.0;
   void add(double ms, const app::LiveView& view, const app::ExplorerState& state) {
     uploadTotal += state.metrics.uploadMs;
+    scaleTotal += state.metrics.marchScale;
     total += ms;
     worst = std::max(worst, ms);
     ++frames;
@@ -103,6 +104,7 @@ struct FrameTimes {
   double mean() const { return total / std::max(1, frames); }
   double meanResolve() const { return resolveTotal / std::max(1, frames); }
   double meanUpload() const { return uploadTotal / std::max(1, frames); }
+  double meanScale() const { return scaleTotal / std::max(1, frames); }
   double resolveShare() const { return total > 0.0 ? resolveTotal / total : 0.0; }
   // The share of the march target's rows a frame marched, on average.
   double marchedShare() const { return targetRowsTotal > 0.0 ? rowsTotal / targetRowsTotal : 0.0; }
@@ -278,6 +280,7 @@ void benchExplorer(const BenchOptions& options) {
                       {"mean_resolve_ms", times->meanResolve()},
                       {"resolve_share", times->resolveShare()},
                       {"mean_upload_ms", times->meanUpload()},
+                      {"mean_march_scale", times->meanScale()},
                       {"marched_rows_share", times->marchedShare()}};
     }
     report(options, {{"bench", "explorer"},
