@@ -308,8 +308,12 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     // streams in: the upload then has the frame to itself, and the new volume restarts the
     // samples anyway.
     const bool waitForUpload = uploadInProgress_ && target_.samples > 0 && !viewChanged;
+    // A view that has just stopped changing keeps its last whole picture until the budget lets
+    // the scale back up: samples marched at the lowered scale meanwhile would be thrown away then.
+    const bool settling = !still && !viewChanged && !result.patternPosted &&
+                          scale < std::min(1.0f, state.renderScale) && target_.samples >= 1;
     bool newPicture = false;
-    if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged) && !waitForUpload) {
+    if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged) && !waitForUpload && !settling) {
       newPicture = marchBands(settings, still, budget_.budgetMs());
       lastMarched_ = true;
       lastMarchScale_ = scale;
