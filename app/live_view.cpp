@@ -108,6 +108,10 @@ void LiveView::takeVolume() {
   if (uploaded) {
     uploadedBytes_ = 0;
     uploadInProgress_ = false;
+    // A fresher volume of the pattern the main grid already shows.
+    const bool refined = shown_->generation == mainGeneration_ &&
+                         renderer_.marchedSource() == gl::VolumeRenderer::Source::Main &&
+                         renderer_.hasVolume(gl::VolumeRenderer::Source::Main);
     mainGeneration_ = shown_->generation;
     // 0 means an older post than the newest applied one: older than any proxy shown since.
     if (uploadingPost_ != 0) mainPost_ = uploadingPost_;
@@ -122,7 +126,7 @@ void LiveView::takeVolume() {
       renderer_.marchFrom(gl::VolumeRenderer::Source::Main);
       newVolumeShown_ = true;
       shownPost_ = uploadingPost_;
-      restartSamples();  // new content: start refining the image afresh
+      restartSamples(refined);  // new content: start refining the image afresh
     }
   }
   // While a volume of another pattern streams into the main grid, its slabs are of two patterns.
@@ -144,9 +148,10 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
   // grid box, so one made from the proxy lights the main grid well enough until its own is ready.
   if (shadowJob_.ready()) {
     try {
+      const bool hadShadow = renderer_.hasShadow();
       renderer_.uploadShadow(*shadowJob_.take(), shadowShown_ && shadowShown_->proxy ? 1 : kShadowDownsample,
                              shadowSourceSize_);
-      restartSamples();
+      restartSamples(hadShadow);
     } catch (const core::Error&) {
       shadowShown_.reset();  // try again next frame
     }
@@ -178,9 +183,18 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
   }
 }
 
-void LiveView::restartSamples() {
+void LiveView::restartSamples(bool refinedContent) {
   target_.samples = 0;
+  // A fresher volume (or shadow) of what is already marched does not throw away a first pass
+  // under way: the pass finishes on it and is shown, then the samples start over. The grid's
+  // refinement brings one every few frames, faster than a slow GL marches a pass in bands, and
+  // the picture would otherwise never change until the grid rests.
+  if (refinedContent && !bandsRestart_ && bands_.samples() == 0 && bands_.nextBand() > 0) {
+    restartAfterPass_ = true;
+    return;
+  }
   bandsRestart_ = true;
+  restartAfterPass_ = false;
 }
 
 bool LiveView::marchBands(const gl::RenderSettings& settings, bool still, double budgetMs) {
@@ -212,6 +226,11 @@ bool LiveView::marchBands(const gl::RenderSettings& settings, bool still, double
   }
   // A whole pass marched while something changes is shown from the target itself: no copy.
   if (span.endsPass) showingTarget_ = !still;
+  if (span.endsPass && restartAfterPass_) {
+    target_.samples = 0;
+    bandsRestart_ = true;
+    restartAfterPass_ = false;
+  }
   return span.endsPass;
 }
 

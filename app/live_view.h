@@ -72,8 +72,9 @@ class LiveView {
 
  private:
   void takeVolume();
-  // New content or a new view: the sample average starts over, band by band.
-  void restartSamples();
+  // New content or a new view: the sample average starts over, band by band. `refinedContent`:
+  // only a fresher volume or shadow of what is marched (see the .cpp).
+  void restartSamples(bool refinedContent = false);
   // Marches the next bands of the target (all that are left of the pass while something
   // changes; as many as the budget allows while the view is still); true when that ended a pass,
   // whose picture is then the one shown.
@@ -96,7 +97,8 @@ class LiveView {
   bool shownHasPicture_ = false;  // shownTarget_ holds a whole pass
   RefineBands bands_;
   bool bandsRestart_ = true;
-  int sampleBase_ = 0;  // the sample index of a pass-0 march: a band's pass n uses sampleBase_ + n
+  bool restartAfterPass_ = false;  // the samples start over once the pass under way is whole
+  int sampleBase_ = 0;             // the sample index of a pass-0 march: a band's pass n uses sampleBase_ + n
   int marchedRows_ = 0;
   double marchMs_ = -1.0, resolveMs_ = 0.0;
   bool lastInBands_ = false;   // the last frame refined a still view in bands

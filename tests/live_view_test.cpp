@@ -358,4 +358,30 @@ TEST_F(LiveViewTest, ASlowStillViewRefinesInBandsWithinItsBudgetUntilEveryBandHa
   canvas.save("live-view-bands-converged");
 }
 
+TEST_F(LiveViewTest, FresherVolumesComingFasterThanAPassStillGetShown) {
+  // A march of 12 ms a row: a pass over the 96 rows takes longer than the session's 500 ms between
+  // snapshots of the refining grid. Each fresher volume lets the pass under way finish (and be
+  // shown) before the samples start over, so the picture keeps up with the grid.
+  state.renderScale = 1.0f;
+  state.frameBudgetMs = 20.0f;
+  state.settings.refineUntilNoisePercent = 0.0;  // refine on: a fresh volume every snapshot
+  app::LiveView view(session, nullptr, nullptr);
+  view.addMarchCostForTesting(12.0);
+  frame(view);
+  ASSERT_TRUE(runUntilShown(view));
+  int passesShown = 0, freshVolumes = 0;
+  const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(8);
+  while (std::chrono::steady_clock::now() < end) {
+    const int before = view.refineBands().samples();
+    const app::LiveFrame shown = frame(view);
+    freshVolumes += shown.newVolumeShown ? 1 : 0;
+    if (view.marchMs() >= 0.0 && view.refineBands().samples() != before) ++passesShown;
+    if (view.marchMs() >= 0.0) {
+      EXPECT_LT(view.marchedRows(), kHeight) << "a still frame marches bands";
+    }
+  }
+  ASSERT_GE(freshVolumes, 3) << "the grid refined on";
+  EXPECT_GE(passesShown, 3) << "whole passes were shown while fresher volumes kept coming (" << freshVolumes << ")";
+}
+
 }  // namespace
