@@ -1,8 +1,10 @@
 // The explorer's frame body without a window: everything between "the UI has decided what the
 // scene is" and "ImGui draws its panels on top". It posts pattern edits to the session, takes
 // each new mesh and volume, uploads volumes a slice per frame, keeps the shadow volume in step on
-// a background job, restarts the sample average when what a ray sees changes, marches one sample
-// and resolves it into the output framebuffer, and answers the panels' save-as and export
+// a background job, restarts the sample average when what a ray sees changes, marches the next
+// bands of a sample (a whole pass while something changes, as many bands as the frame budget
+// allows while the view is still), resolves the last whole pass into the output framebuffer,
+// and answers the panels' save-as and export
 // requests whether or not a volume is shown yet. The explorer's window loop, `voxflame bench
 // explorer` and the headless tests all run this very code, so the benchmark measures what users
 // get. GL is touched only from the thread that calls frame() (the one whose context is current).
