@@ -5,6 +5,9 @@
 // the frame times it is told, without GL or a clock of its own, so tests can drive it.
 #pragma once
 
+#include <algorithm>
+#include <vector>
+
 namespace voxflame::app {
 
 class FrameBudget {
@@ -48,6 +51,84 @@ class FrameBudget {
   int quietFrames_ = kQuietFrames;
   double lastMs_ = 0.0;  // the newest marching frame's time and scale, not yet acted on
   float lastScale_ = 0.0f;
+};
+
+}  // namespace voxflame::app
+
+namespace voxflame::app {
+
+// Splits a still view's refinement into horizontal bands of the march target, so that a frame
+// marches only the bands that fit its budget instead of the whole target (hundreds of
+// milliseconds on software GL). Bands are marched in order, bottom to top; a pass ends at the top
+// band, so every pixel holds n or n + 1 samples and the running average stays right per pixel.
+// Once every band has the cap, each pixel has had exactly the samples (and sample indices) an
+// untiled march would give it. What a band costs is learnt from the march times it is told, per
+// band (a picture's middle costs more than its empty edges). Plain arithmetic on the times it is
+// told, without GL or a clock, so tests can drive it.
+class RefineBands {
+ public:
+  // Fine enough that one band is a small share of any budget, coarse enough that a frame issues
+  // only a few draws.
+  static constexpr int kBandRows = 8;
+  // A frame aims this far under the budget: the estimates are of frames that have gone.
+  static constexpr double kAim = 0.85;
+
+  // Consecutive rows [firstRow, firstRow + rows) of the target (GL's rows, bottom up) to march
+  // next, each pixel holding `samples` samples before; `endsPass`: the top band is in it, so after
+  // it every pixel holds samples + 1.
+  struct Span {
+    int firstRow = 0, rows = 0, samples = 0;
+    bool endsPass = false;
+    bool operator==(const Span&) const = default;
+  };
+
+  // The target, `width` × `height` pixels, starts its samples over (a new view, volume or size).
+  // What each band cost is kept for the size it was learnt at (a similar picture costs about the
+  // same, and a still view returns to its size after a drag); at another size it is predicted
+  // from the cost per pixel seen so far until relearnt.
+  void restart(int width, int height);
+
+  // The bands to march in a frame of `budgetMs`: as many as fit the budget after the rest of the
+  // frame (the finish too, when the span ends a pass), always at least one band, never past the
+  // pass's end.
+  Span next(double budgetMs) const;
+  // All that is left of the pass (for a frame that marches the whole target while something changes).
+  Span rest() const;
+  // `span` (as next() gave it) was marched, in `marchMs` (negative: not timed, e.g. a drag's
+  // frame at a coarser step, whose cost says nothing of a still view's).
+  void marched(const Span& span, double marchMs);
+  // A whole frame that marched bands took `frameMs`, of which `marchMs` was the march and
+  // `finishMs` the finish (resolve) of a new image (0: none was made, the one shown was only drawn
+  // again): the rest is what a frame costs anyway.
+  void frameMeasured(double frameMs, double marchMs, double finishMs);
+
+  // The fewest samples a pixel holds: the picture's count. A pass in progress adds no sample.
+  int samples() const { return pass_; }
+  int bandCount() const { return (height_ + kBandRows - 1) / kBandRows; }
+  // The band the next span starts at (0 at the start of a pass).
+  int nextBand() const { return nextBand_; }
+  int samplesOfRow(int row) const { return row / kBandRows < nextBand_ ? pass_ + 1 : pass_; }
+  // The predicted cost of marching the whole target once (0 while nothing is known).
+  double passMs() const;
+  double otherMs() const { return std::max(0.0, otherMs_); }
+  double finishMs() const { return finishMs_; }
+
+ private:
+  double bandEstimate(int band) const;
+  int rowsOfBand(int band) const;
+
+  int width_ = 0, height_ = 0;
+  int pass_ = 0, nextBand_ = 0;
+  int costWidth_ = 0, costHeight_ = 0;  // the size bandMs_ was learnt at
+  std::vector<double> bandMs_;          // per band; negative while unknown
+  double msPerPixel_ = -1.0;            // of any band marched so far (negative: none yet)
+  // While a size's bands are learnt, the unknown ones are predicted at the costliest rate seen
+  // at that size, and a frame takes at most twice as many of them as the last frame marched: a
+  // picture's empty bottom rows would otherwise make its middle look cheap.
+  double peakMsPerPixel_ = -1.0;
+  int lastSpanBands_ = 0;
+  double otherMs_ = -1.0;  // the rest of a frame that marched (negative: not measured yet)
+  double finishMs_ = 0.0;  // the finish a pass's end brings
 };
 
 }  // namespace voxflame::app

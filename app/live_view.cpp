@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <thread>
 #include <utility>
 
 #include "core/camera.h"
@@ -21,6 +22,9 @@ constexpr int kShadowDownsample = 2;
 // still view does not march while a volume streams in, so its frames can take more of it.
 constexpr std::size_t kUploadBytesPerFrame = 48u << 20;
 constexpr std::size_t kStillUploadBytesPerFrame = 160u << 20;
+// ... at most: a still frame uploads what its budget leaves room for at the rate uploads have
+// gone (the march waits meanwhile, but the frame still has its budget to keep).
+constexpr double kStillUploadShareOfBudget = 0.6;
 
 // The framebuffer's picture as a thumbnail (rows top to bottom, opaque).
 Thumbnail readThumbnail(unsigned framebuffer, int width, int height) {
@@ -57,7 +61,7 @@ void LiveView::takeVolume() {
     renderer_.marchFrom(gl::VolumeRenderer::Source::Proxy);
     newVolumeShown_ = true;
     shownPost_ = proxyPost_;
-    target_.samples = 0;
+    restartSamples();
   }
 
   // The volume on screen is in the textures once uploaded, so its buffer goes back to the session
@@ -78,13 +82,36 @@ void LiveView::takeVolume() {
       if (!behindProxy) {
         renderer_.beginUpload(*shown_);
         uploadInProgress_ = true;
+        uploadedBytes_ = 0;
         uploadingPost_ = reflects;
       }
     }
   }
   const bool still = !changedLastFrame_ && target_.samples > 0;
-  if (uploadInProgress_ && renderer_.continueUpload(still ? kStillUploadBytesPerFrame : kUploadBytesPerFrame)) {
+  std::size_t uploadBytes = still ? kStillUploadBytesPerFrame : kUploadBytesPerFrame;
+  if (still && uploadMsPerByte_ > 0.0)
+    uploadBytes =
+        std::clamp(static_cast<std::size_t>(kStillUploadShareOfBudget * budget_.budgetMs() / uploadMsPerByte_),
+                   kUploadBytesPerFrame / 4, kStillUploadBytesPerFrame);
+  const auto uploadStart = std::chrono::steady_clock::now();
+  const bool uploaded = uploadInProgress_ && renderer_.continueUpload(uploadBytes);
+  if (uploadInProgress_) {
+    // The bytes the slabs held: the budget, or what was left of the volume.
+    const std::size_t total = (shown_->density.size() + shown_->colours.size()) * sizeof(std::uint16_t);
+    const std::size_t bytes = std::min(uploadBytes, total - std::min(total, uploadedBytes_));
+    uploadedBytes_ += bytes;
+    if (bytes >= kUploadBytesPerFrame / 8) {
+      const double msPerByte = millisecondsSince(uploadStart) / static_cast<double>(bytes);
+      uploadMsPerByte_ = uploadMsPerByte_ > 0.0 ? 0.5 * (uploadMsPerByte_ + msPerByte) : msPerByte;
+    }
+  }
+  if (uploaded) {
+    uploadedBytes_ = 0;
     uploadInProgress_ = false;
+    // A fresher volume of the pattern the main grid already shows.
+    const bool refined = shown_->generation == mainGeneration_ &&
+                         renderer_.marchedSource() == gl::VolumeRenderer::Source::Main &&
+                         renderer_.hasVolume(gl::VolumeRenderer::Source::Main);
     mainGeneration_ = shown_->generation;
     // 0 means an older post than the newest applied one: older than any proxy shown since.
     if (uploadingPost_ != 0) mainPost_ = uploadingPost_;
@@ -99,7 +126,7 @@ void LiveView::takeVolume() {
       renderer_.marchFrom(gl::VolumeRenderer::Source::Main);
       newVolumeShown_ = true;
       shownPost_ = uploadingPost_;
-      target_.samples = 0;  // new content: start refining the image afresh
+      restartSamples(refined);  // new content: start refining the image afresh
     }
   }
   // While a volume of another pattern streams into the main grid, its slabs are of two patterns.
@@ -121,9 +148,10 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
   // grid box, so one made from the proxy lights the main grid well enough until its own is ready.
   if (shadowJob_.ready()) {
     try {
+      const bool hadShadow = renderer_.hasShadow();
       renderer_.uploadShadow(*shadowJob_.take(), shadowShown_ && shadowShown_->proxy ? 1 : kShadowDownsample,
                              shadowSourceSize_);
-      target_.samples = 0;
+      restartSamples(hadShadow);
     } catch (const core::Error&) {
       shadowShown_.reset();  // try again next frame
     }
@@ -155,6 +183,57 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
   }
 }
 
+void LiveView::restartSamples(bool refinedContent) {
+  target_.samples = 0;
+  // A fresher volume (or shadow) of what is already marched does not throw away a first pass
+  // under way: the pass finishes on it and is shown, then the samples start over. The grid's
+  // refinement brings one every few frames, faster than a slow GL marches a pass in bands, and
+  // the picture would otherwise never change until the grid rests.
+  if (refinedContent && !bandsRestart_ && bands_.samples() == 0 && bands_.nextBand() > 0) {
+    restartAfterPass_ = true;
+    return;
+  }
+  bandsRestart_ = true;
+  restartAfterPass_ = false;
+}
+
+bool LiveView::marchBands(const gl::RenderSettings& settings, bool still, double budgetMs) {
+  if (bandsRestart_) {
+    bands_.restart(target_.width(), target_.height());
+    sampleBase_ = static_cast<int>(frame_);
+    bandsRestart_ = false;
+  }
+  const RefineBands::Span span = still ? bands_.next(budgetMs) : bands_.rest();
+  const auto start = std::chrono::steady_clock::now();
+  // Every band's n-th sample has the same index, so once all bands have their samples each pixel
+  // holds what an untiled march would have given it.
+  renderer_.marchRows(target_, settings, sampleBase_ + span.samples, span.firstRow, span.rows, span.samples);
+  marchMs_ = -1.0;
+  if (still) {
+    // The budget needs the march's own cost. The resolve that follows reads the picture back and
+    // would wait for the march anyway.
+    if (testMsPerRow_ > 0.0)
+      std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(testMsPerRow_ * span.rows));
+    glFinish();
+    marchMs_ = millisecondsSince(start);
+  }
+  bands_.marched(span, marchMs_);
+  marchedRows_ = span.rows;
+  target_.samples = bands_.samples();
+  if (span.endsPass && still) {
+    shownTarget_.copyFrom(target_);
+    shownHasPicture_ = true;
+  }
+  // A whole pass marched while something changes is shown from the target itself: no copy.
+  if (span.endsPass) showingTarget_ = !still;
+  if (span.endsPass && restartAfterPass_) {
+    target_.samples = 0;
+    bandsRestart_ = true;
+    restartAfterPass_ = false;
+  }
+  return span.endsPass;
+}
+
 bool LiveView::resting() const {
   return target_.samples >= kMaxSamples && !uploadInProgress_ && !shadowJob_.busy() && !shadowJob_.ready();
 }
@@ -164,11 +243,23 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
   width = std::max(1, width);
   height = std::max(1, height);
   const auto frameStart = std::chrono::steady_clock::now();
-  if (lastFrameStart_)
-    budget_.measured(std::chrono::duration<double, std::milli>(frameStart - *lastFrameStart_).count(), lastMarchScale_,
-                     lastMarched_);
+  if (lastFrameStart_) {
+    const double lastFrameMs = std::chrono::duration<double, std::milli>(frameStart - *lastFrameStart_).count();
+    if (lastInBands_) {
+      bands_.frameMeasured(lastFrameMs, std::max(0.0, marchMs_), lastFinishMs_);
+      // A frame that marched a few bands says little of what a drag's first frame, which marches
+      // the whole target, may afford: the bands' estimate of a whole pass does.
+      budget_.measured(bands_.otherMs() + bands_.passMs() + bands_.finishMs(), lastMarchScale_, true);
+    } else {
+      budget_.measured(lastFrameMs, lastMarchScale_, lastMarched_);
+    }
+  }
   lastFrameStart_ = frameStart;
   lastMarched_ = false;
+  lastInBands_ = false;
+  lastFinishMs_ = 0.0;
+  marchedRows_ = 0;
+  marchMs_ = -1.0;
   // An edit while the user holds a widget or the view, or right after a frame that changed, is one
   // of a drag's: posted with the hold, so the large grid never starts on it.
   if (session_.postIfPatternChanged(state.scene, state.interacting || changedLastFrame_)) {
@@ -211,10 +302,20 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     // Coarser pixels, coarser steps along the ray. A still view marches at its ceiling (stretch
     // 1), and a change of scale restarts the samples, so its samples are all of the scene's step.
     settings.render.stepVoxels *= FrameBudget::stepStretch(scale, std::min(1.0f, state.renderScale));
+    // A still view (one the budget has let go back to its full scale) refines in bands, as many
+    // a frame as its budget allows; while something changes each frame marches a whole pass at
+    // the budget's lowered scale, shown straight from the target. The first still frame keeps
+    // that picture up (before a new size clears the target) while its bands' first pass builds.
+    const bool still = budget_.quiet() && !viewChanged && !result.patternPosted;
+    if (still && showingTarget_) {
+      shownTarget_.copyFrom(target_);  // whole, even when new content has just restarted its samples
+      shownHasPicture_ = true;
+      showingTarget_ = false;
+    }
     target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * scale)),
                    std::max(1, static_cast<int>(static_cast<float>(height) * scale)));
     if (viewChanged || scale != lastRenderScale_) {
-      target_.samples = 0;
+      restartSamples();
       renderer_.drawMesh(target_, settings);
       lastView_ = state.scene;
       lastWidth_ = width;
@@ -226,15 +327,26 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     // streams in: the upload then has the frame to itself, and the new volume restarts the
     // samples anyway.
     const bool waitForUpload = uploadInProgress_ && target_.samples > 0 && !viewChanged;
-    if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged) && !waitForUpload) {
-      renderer_.march(target_, settings, static_cast<int>(frame_));
+    // A view that has just stopped changing keeps its last whole picture until the budget lets
+    // the scale back up: samples marched at the lowered scale meanwhile would be thrown away then.
+    const bool settling = !still && !viewChanged && !result.patternPosted &&
+                          scale < std::min(1.0f, state.renderScale) && target_.samples >= 1;
+    bool newPicture = false;
+    if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged) && !waitForUpload && !settling) {
+      newPicture = marchBands(settings, still, budget_.budgetMs());
       lastMarched_ = true;
       lastMarchScale_ = scale;
+      lastInBands_ = still;
     }
     state.samples = target_.samples;
     changed = viewChanged;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    renderer_.resolve(target_, settings, glm::ivec4(0, 0, width, height), false);
+    // Until the first pass over a new view or volume is whole, the last whole picture stays up.
+    const gl::FrameTarget& shown = showingTarget_ || !shownHasPicture_ ? target_ : shownTarget_;
+    const auto resolveStart = std::chrono::steady_clock::now();
+    renderer_.resolve(shown, settings, glm::ivec4(0, 0, width, height), false);
+    resolveMs_ = millisecondsSince(resolveStart);
+    if (newPicture) lastFinishMs_ = resolveMs_;
     result.volumeDrawn = true;
   } else {
     const glm::vec3 background = core::linearToSrgb(state.scene.tone.background);

@@ -1,8 +1,10 @@
 // The explorer's frame body without a window: everything between "the UI has decided what the
 // scene is" and "ImGui draws its panels on top". It posts pattern edits to the session, takes
 // each new mesh and volume, uploads volumes a slice per frame, keeps the shadow volume in step on
-// a background job, restarts the sample average when what a ray sees changes, marches one sample
-// and resolves it into the output framebuffer, and answers the panels' save-as and export
+// a background job, restarts the sample average when what a ray sees changes, marches the next
+// bands of a sample (a whole pass while something changes, as many bands as the frame budget
+// allows while the view is still), resolves the last whole pass into the output framebuffer,
+// and answers the panels' save-as and export
 // requests whether or not a volume is shown yet. The explorer's window loop, `voxflame bench
 // explorer` and the headless tests all run this very code, so the benchmark measures what users
 // get. GL is touched only from the thread that calls frame() (the one whose context is current).
@@ -50,16 +52,35 @@ class LiveView {
   LiveFrame frame(ExplorerState& state, int width, int height, unsigned framebuffer = 0);
 
   bool hasVolume() const { return renderer_.hasVolume(); }
-  // The picture is finished: every sample marched, no upload or shadow under way. With the
-  // session resting too, another frame would draw the same pixels.
+  // The picture is finished: every band of it marched kMaxSamples times, no upload or shadow
+  // under way. With the session resting too, another frame would draw the same pixels.
   bool resting() const;
   std::uint32_t frameCount() const { return frame_; }
 
   // Refining stops after this many samples of an unchanged view (the picture no longer improves).
   static constexpr int kMaxSamples = 64;
 
+  // What the last frame marched and what it cost, for the benchmark and the tests: the rows of
+  // the march target it marched (0: none) of how many, the march's time (measured only for a
+  // still view refining in bands, else negative) and the resolve's (finishing and drawing the
+  // picture shown).
+  int marchedRows() const { return marchedRows_; }
+  int targetRows() const { return target_.height(); }
+  double marchMs() const { return marchMs_; }
+  double resolveMs() const { return resolveMs_; }
+  const RefineBands& refineBands() const { return bands_; }
+  // Tests play a slow GPU with this: each row marched in bands costs this much more time.
+  void addMarchCostForTesting(double msPerRow) { testMsPerRow_ = msPerRow; }
+
  private:
   void takeVolume();
+  // New content or a new view: the sample average starts over, band by band. `refinedContent`:
+  // only a fresher volume or shadow of what is marched (see the .cpp).
+  void restartSamples(bool refinedContent = false);
+  // Marches the next bands of the target (all that are left of the pass while something
+  // changes; as many as the budget allows while the view is still); true when that ended a pass,
+  // whose picture is then the one shown.
+  bool marchBands(const gl::RenderSettings& settings, bool still, double budgetMs);
   // The points a main grid volume of the proxy's pattern needs to replace the proxy on screen.
   std::uint64_t takeoverPoints() const;
   void keepShadowInStep(const core::RenderSettingsDoc& render);
@@ -70,10 +91,27 @@ class LiveView {
   ExportJob* exportJob_;
   gl::VolumeRenderer renderer_;
   gl::FrameTarget target_;
+  // A still view refines target_ in bands over several frames; what is shown is the picture of
+  // the last whole pass, copied here, so a frame never shows one band a sample ahead of the next
+  // (nor a half-marched first pass) and the finish runs once a pass, not once a frame.
+  gl::FrameTarget shownTarget_;
+  bool showingTarget_ = false;    // target_ itself is shown (its last pass, marched while something changed, is whole)
+  bool shownHasPicture_ = false;  // shownTarget_ holds a whole pass
+  RefineBands bands_;
+  bool bandsRestart_ = true;
+  bool restartAfterPass_ = false;  // the samples start over once the pass under way is whole
+  int sampleBase_ = 0;             // the sample index of a pass-0 march: a band's pass n uses sampleBase_ + n
+  int marchedRows_ = 0;
+  double marchMs_ = -1.0, resolveMs_ = 0.0;
+  bool lastInBands_ = false;   // the last frame refined a still view in bands
+  double lastFinishMs_ = 0.0;  // ... and the finish of a new picture it ran (0: none)
+  double testMsPerRow_ = 0.0;
   // The volume being uploaded or shown, shared with a shadow job that may still read it; the next
   // volume is swapped into it once uploaded (or into a fresh one while a shadow job holds it).
   std::shared_ptr<core::PackedVolume> shown_ = std::make_shared<core::PackedVolume>();
   bool uploadInProgress_ = false;
+  std::size_t uploadedBytes_ = 0;  // of the volume uploading
+  double uploadMsPerByte_ = -1.0;  // what uploads have cost (negative: none measured yet)
   bool changedLastFrame_ = false;  // the view or pattern changed in the previous frame
   std::uint64_t uploadingPost_ = 0;
   bool newVolumeShown_ = false;

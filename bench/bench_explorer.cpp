@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -142,16 +143,42 @@ class RunnableThreadSampler {
   std::jthread thread_;  // last: started after everything it uses
 };
 
-// Mean and worst frame over a run of frames.
+// Mean, 95th percentile and worst frame over a run of frames: a mean hides a few long frames
+// that a user feels as stutter.
 struct FrameTimes {
   double total = 0.0, worst = 0.0;
   int frames = 0;
-  void add(double ms) {
+  std::vector<double> all;
+  // The resolve (finishing the picture on the CPU and drawing it) within those frames, and the
+  // rows marched: the resolve's share shows what moving the finish to the GPU would save.
+  double resolveTotal = 0.0, uploadTotal = 0.0, scaleTotal = 0.0;
+  double rowsTotal = 0.0, targetRowsTotal = 0.0;
+  void add(double ms, const app::LiveView& view, const app::ExplorerState& state) {
+    uploadTotal += state.metrics.uploadMs;
+    scaleTotal += state.metrics.marchScale;
     total += ms;
     worst = std::max(worst, ms);
     ++frames;
+    all.push_back(ms);
+    resolveTotal += view.resolveMs();
+    rowsTotal += view.marchedRows();
+    targetRowsTotal += view.targetRows();
   }
   double mean() const { return total / std::max(1, frames); }
+  double meanResolve() const { return resolveTotal / std::max(1, frames); }
+  double meanUpload() const { return uploadTotal / std::max(1, frames); }
+  double meanScale() const { return scaleTotal / std::max(1, frames); }
+  double resolveShare() const { return total > 0.0 ? resolveTotal / total : 0.0; }
+  // The share of the march target's rows a frame marched, on average.
+  double marchedShare() const { return targetRowsTotal > 0.0 ? rowsTotal / targetRowsTotal : 0.0; }
+  // The frame time 95% of the frames stay at or under (nearest rank).
+  double p95() const {
+    if (all.empty()) return 0.0;
+    std::vector<double> sorted = all;
+    std::sort(sorted.begin(), sorted.end());
+    const auto rank = static_cast<std::size_t>(std::ceil(0.95 * static_cast<double>(sorted.size())));
+    return sorted[std::clamp<std::size_t>(rank, 1, sorted.size()) - 1];
+  }
 };
 
 template <typename Each>
@@ -162,7 +189,7 @@ FrameTimes timeFrames(FrameLoop& loop, int frames, double maxMs, Each each) {
     each(i);
     const auto frameStart = Clock::now();
     loop.run();
-    times.add(millisecondsSince(frameStart));
+    times.add(millisecondsSince(frameStart), loop.view, loop.state);
   }
   return times;
 }
@@ -297,7 +324,7 @@ void benchExplorer(const BenchOptions& options) {
       while ((loop.state.exportStatus = job.poll()).state == app::ExportState::Running) {
         const auto frameStart = Clock::now();
         loop.run();
-        exporting.add(millisecondsSince(frameStart));
+        exporting.add(millisecondsSince(frameStart), loop.view, loop.state);
       }
       std::filesystem::remove(output);
     }
@@ -305,12 +332,30 @@ void benchExplorer(const BenchOptions& options) {
     loop.state.exportStatus = app::ExportStatus{};
     runnable.setOn(false);  // sampling costs CPU, which the rest's figure must not include
     const auto [convergeSeconds, cpuPercent, restNoise] = cpuAtRest(session, loop);
+    // Each phase's mean, 95th percentile and worst frame, and its resolve's mean and share.
+    nlohmann::json phases = nlohmann::json::object();
+    for (const auto& [name, times] : {std::pair<const char*, const FrameTimes*>{"refining_first", &refining},
+                                      {"dragging", &dragging},
+                                      {"orbiting", &orbiting},
+                                      {"refining", &refiningAfter},
+                                      {"during_export", &exporting}}) {
+      phases[name] = {{"frames", times->frames},
+                      {"mean_ms", times->mean()},
+                      {"p95_ms", times->p95()},
+                      {"worst_ms", times->worst},
+                      {"mean_resolve_ms", times->meanResolve()},
+                      {"resolve_share", times->resolveShare()},
+                      {"mean_upload_ms", times->meanUpload()},
+                      {"mean_march_scale", times->meanScale()},
+                      {"marched_rows_share", times->marchedShare()}};
+    }
     report(options, {{"bench", "explorer"},
                      {"grid", resolution},
                      {"renderer", context.renderer()},
                      {"render_scale", loop.state.renderScale},
                      {"frame_budget_ms", loop.state.frameBudgetMs},
                      {"mean_frame_ms", refining.mean()},
+                     {"p95_frame_ms", refining.p95()},
                      {"worst_frame_ms", refining.worst},
                      {"change_to_frame_ms_median", median(edits.ms)},
                      {"change_to_frame_ms_worst", edits.ms.back()},
@@ -319,10 +364,13 @@ void benchExplorer(const BenchOptions& options) {
                      {"change_to_full_ms_median", median(edits.fullMs)},
                      {"change_to_full_ms_worst", edits.fullMs.back()},
                      {"mean_frame_ms_dragging", dragging.mean()},
+                     {"p95_frame_ms_dragging", dragging.p95()},
                      {"worst_frame_ms_dragging", dragging.worst},
                      {"mean_frame_ms_orbiting", orbiting.mean()},
+                     {"p95_frame_ms_orbiting", orbiting.p95()},
                      {"worst_frame_ms_orbiting", orbiting.worst},
                      {"mean_frame_ms_refining", refiningAfter.mean()},
+                     {"p95_frame_ms_refining", refiningAfter.p95()},
                      {"worst_frame_ms_refining", refiningAfter.worst},
                      {"memory_mb", memory},
                      {"estimated_memory_mb",
@@ -330,6 +378,7 @@ void benchExplorer(const BenchOptions& options) {
                      {"peak_resident_mb", peakResidentMegabytes()},
                      {"frames_during_export", exporting.frames},
                      {"mean_frame_ms_during_export", exporting.mean()},
+                     {"p95_frame_ms_during_export", exporting.p95()},
                      {"worst_frame_ms_during_export", exporting.worst},
                      {"seconds_to_converge", convergeSeconds},
                      {"noise_converged", restNoise},
@@ -337,7 +386,8 @@ void benchExplorer(const BenchOptions& options) {
                      {"cores", std::max(1u, std::thread::hardware_concurrency())},
                      {"max_runnable_threads", runnable.max()},
                      {"max_runnable_gl_driver_threads", runnable.maxDriver()},
-                     {"runnable_threads_at_max", runnable.atMax()}});
+                     {"runnable_threads_at_max", runnable.atMax()},
+                     {"phases", phases}});
   }
 }
 

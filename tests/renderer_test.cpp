@@ -355,3 +355,61 @@ TEST_F(Renderer, ShadersComeFromEmbeddedFilesAndErrorsNameTheFile) {
     EXPECT_NE(std::string(e.what()).find("fragment shader"), std::string::npos) << e.what();
   }
 }
+
+TEST_F(Renderer, MarchingInBandsOfRowsConvergesToTheUntiledMarch) {
+  // The explorer's still view refines in bands of rows (app::RefineBands), each band keeping its
+  // own sample count: once every band has its samples each pixel must hold exactly what an
+  // untiled march gives it, whatever the bands and the order passes reach them in.
+  const core::PackedVolume cube = uniformCube(200, 120, 255);
+  renderer.upload(cube);
+  core::CameraSettings camera;
+  camera.azimuthDeg = 35.0;
+  camera.elevationDeg = 20.0;
+  gl::RenderSettings settings;
+  settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.5);
+  settings.tone = neutralTone(0.5);
+  constexpr int kWidth = 45, kHeight = 31, kSamples = 5, kFirstIndex = 17;
+  gl::FrameTarget whole;
+  whole.resize(kWidth, kHeight);
+  for (int s = 0; s < kSamples; ++s) renderer.march(whole, settings, kFirstIndex + s);
+  EXPECT_EQ(whole.samples, kSamples);
+
+  gl::FrameTarget banded;
+  banded.resize(kWidth, kHeight);
+  const int bands[] = {0, 7, 8, 20, 31};  // uneven bands, the last one short
+  for (int s = 0; s < kSamples; ++s) {
+    // A later pass runs through the bands in another grouping, as the budget may change it.
+    if (s % 2 == 0) {
+      for (int b = 0; b + 1 < static_cast<int>(std::size(bands)); ++b)
+        renderer.marchRows(banded, settings, kFirstIndex + s, bands[b], bands[b + 1] - bands[b], s);
+    } else {
+      renderer.marchRows(banded, settings, kFirstIndex + s, 0, 12, s);
+      renderer.marchRows(banded, settings, kFirstIndex + s, 12, kHeight - 12, s);
+    }
+    EXPECT_EQ(banded.samples, 0) << "the caller counts samples per band";
+  }
+  const core::DensityImage expected = whole.readDensity();
+  const core::DensityImage actual = banded.readDensity();
+  ASSERT_EQ(expected.values.size(), actual.values.size());
+  EXPECT_EQ(expected.values, actual.values) << "bit for bit";
+  EXPECT_EQ(expected.hitsPerUnitDensity, actual.hitsPerUnitDensity);
+
+  // A band marched alone writes its rows and no others.
+  gl::FrameTarget one;
+  one.resize(kWidth, kHeight);
+  renderer.marchRows(one, settings, kFirstIndex, 8, 12, 0);
+  const core::DensityImage band = one.readDensity();  // rows top to bottom
+  double outside = 0.0, inside = 0.0;
+  for (int y = 0; y < kHeight; ++y) {
+    const int glRow = kHeight - 1 - y;
+    for (int x = 0; x < kWidth; ++x) (glRow >= 8 && glRow < 20 ? inside : outside) += band.at(x, y)[3];
+  }
+  EXPECT_GT(inside, 0.0);
+  EXPECT_EQ(outside, 0.0);
+
+  // A copy shows the same sums.
+  gl::FrameTarget shown;
+  shown.copyFrom(whole);
+  EXPECT_EQ(shown.samples, kSamples);
+  EXPECT_EQ(shown.readDensity().values, expected.values);
+}

@@ -93,6 +93,17 @@ core::MeshOverlay FrameTarget::readMeshOverlay(const RenderSettings& settings) c
   return overlay;
 }
 
+void FrameTarget::copyFrom(const FrameTarget& other) {
+  resize(other.width_, other.height_);
+  glCopyImageSubData(other.radiance_, GL_TEXTURE_2D, 0, 0, 0, 0, radiance_, GL_TEXTURE_2D, 0, 0, 0, 0, width_, height_,
+                     1);
+  glCopyImageSubData(other.meshLayer_, GL_TEXTURE_2D, 0, 0, 0, 0, meshLayer_, GL_TEXTURE_2D, 0, 0, 0, 0, width_,
+                     height_, 1);
+  samples = other.samples;
+  hitsPerUnitDensity_ = other.hitsPerUnitDensity_;
+  ++revision_;
+}
+
 void FrameTarget::resize(int width, int height) {
   if (width == width_ && height == height_ && framebuffer_) return;
   ++revision_;
@@ -284,21 +295,42 @@ glm::dmat4 VolumeRenderer::tileProjection(const RenderSettings& settings, glm::i
 }
 
 void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, int sampleIndex, glm::ivec4 tile) {
+  marchPixels(target, settings, sampleIndex, tile, glm::ivec4(0), target.samples);
+  target.samples = hasVolume() ? target.samples + 1 : 1;
+}
+
+void VolumeRenderer::marchRows(FrameTarget& target, const RenderSettings& settings, int sampleIndex, int firstRow,
+                               int rowCount, int samplesBefore) {
+  firstRow = std::clamp(firstRow, 0, target.height());
+  rowCount = std::clamp(rowCount, 0, target.height() - firstRow);
+  if (rowCount == 0) return;
+  marchPixels(target, settings, sampleIndex, glm::ivec4(0), glm::ivec4(0, firstRow, target.width(), rowCount),
+              samplesBefore);
+}
+
+void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& settings, int sampleIndex, glm::ivec4 tile,
+                                 glm::ivec4 scissor, int samplesBefore) {
   const int width = target.width(), height = target.height();
   glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer_);
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
+  // The projection and the jitter stay those of the whole target; only the pixels written are
+  // limited, so a pixel's value does not depend on the scissor.
+  if (scissor.z > 0) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(scissor.x, scissor.y, scissor.z, scissor.w);
+  }
   if (!hasVolume()) {
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    target.samples = 1;
+    glDisable(GL_SCISSOR_TEST);
     ++target.revision_;
     return;
   }
   // A running average: sample n replaces 1/(n+1) of what is there.
   glEnable(GL_BLEND);
   glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
-  glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(target.samples + 1));
+  glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(samplesBefore + 1));
 
   const ShaderProgram& p = marchProgram_;
   glUseProgram(p.id());
@@ -348,8 +380,8 @@ void VolumeRenderer::march(FrameTarget& target, const RenderSettings& settings, 
   glBindVertexArray(0);
   glActiveTexture(GL_TEXTURE0);
   glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
-  ++target.samples;
   ++target.revision_;
   const int fullHeight = tile.w > 0 ? tile.w : height;
   target.hitsPerUnitDensity_ =

@@ -52,6 +52,10 @@ class FrameTarget {
   int height() const { return height_; }
   int samples = 0;  // sub-samples accumulated so far
 
+  // Takes `other`'s sums, mesh layer and sample count (resized to its size), so that this copy
+  // can be shown while `other` refines on in bands (a part-refined image would show their seams).
+  void copyFrom(const FrameTarget& other);
+
   // The sums read back (rows top to bottom), for tests and exports (gl/read_back.h counts it).
   core::DensityImage readDensity() const;
   // The mesh layer read back as an overlay at this target's size.
@@ -108,6 +112,13 @@ class VolumeRenderer {
   // picks the jitter; `tile` selects part of a larger image (x, y, full width, full height).
   void march(FrameTarget& target, const RenderSettings& settings, int sampleIndex,
              glm::ivec4 tile = glm::ivec4(0, 0, 0, 0));
+  // The same sub-sample for rows [firstRow, firstRow + rowCount) of `target` alone (GL's rows,
+  // bottom up), whose pixels hold `samplesBefore` samples; the rest of the target is untouched.
+  // Each pixel gets exactly what march() would give it, so a target marched in bands of rows
+  // converges to the picture an untiled march makes. target.samples is left to the caller, who
+  // counts samples per band (app/frame_budget.h's RefineBands).
+  void marchRows(FrameTarget& target, const RenderSettings& settings, int sampleIndex, int firstRow, int rowCount,
+                 int samplesBefore);
   // Draws the mesh overlay layer of `target` (when settings ask for one).
   // `always` draws it even when the settings show no mesh (for the silhouette coverage).
   void drawMesh(FrameTarget& target, const RenderSettings& settings, glm::ivec4 tile = glm::ivec4(0, 0, 0, 0),
@@ -122,6 +133,9 @@ class VolumeRenderer {
   FlameFinisher& finisher() { return finisher_; }
 
  private:
+  // One sub-sample into the pixels of `scissor` (x, y, w, h; all of the target when w is 0).
+  void marchPixels(FrameTarget& target, const RenderSettings& settings, int sampleIndex, glm::ivec4 tile,
+                   glm::ivec4 scissor, int samplesBefore);
   glm::dmat4 tileProjection(const RenderSettings& settings, glm::ivec4 tile, int width, int height,
                             glm::dvec2 pixelJitter) const;
   // One uploaded volume: its textures and what the march needs to know about it.
