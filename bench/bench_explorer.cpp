@@ -149,8 +149,8 @@ struct FrameTimes {
   double total = 0.0, worst = 0.0;
   int frames = 0;
   std::vector<double> all;
-  // The resolve (finishing the picture on the CPU and drawing it) within those frames, and the
-  // rows marched: the resolve's share shows what moving the finish to the GPU would save.
+  // The resolve (finishing the picture on the GPU and drawing it) within those frames, and the
+  // rows marched: how much of a frame the finish takes beside the march.
   double resolveTotal = 0.0, uploadTotal = 0.0, scaleTotal = 0.0;
   double rowsTotal = 0.0, targetRowsTotal = 0.0;
   void add(double ms, const app::LiveView& view, const app::ExplorerState& state) {
