@@ -134,8 +134,9 @@ class ExplorerSession {
   // column of about `resolution` voxels through a footprint of about (resolution / pixels)²
   // voxel faces, so points per voxel need not stay the same on a finer grid; the cap falls with
   // the square of the grid's longest side from kRestCapPointsPerVoxel at 192 (the default grid,
-  // reached in about half a minute on two cores), within [kRestCapMinimum, kRestCapMaximum].
-  static constexpr double kRestCapPointsPerVoxel = 256.0;
+  // reached in about twenty seconds on two cores; a mesh that fills its box, in about a minute), within
+  // [kRestCapMinimum, kRestCapMaximum].
+  static constexpr double kRestCapPointsPerVoxel = 192.0;
   static constexpr double kRestCapMinimum = 32.0;
   static constexpr double kRestCapMaximum = 2048.0;
   static double restCapPointsPerVoxel(const core::GridGeometry& grid);
