@@ -127,18 +127,9 @@ ShaderSource withCommon(const ShaderSource& shader) {
 // A compute program; compile and link errors become core::Error naming the file, as
 // ShaderProgram's do.
 GLuint computeProgram(const ShaderSource& source) {
-  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-  const char* text = source.text.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
-  glCompileShader(shader);
+  const GLuint shader = compileShader(GL_COMPUTE_SHADER, source);
   GLint ok = GL_FALSE;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
   std::string log(4096, '\0');
-  if (!ok) {
-    glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    glDeleteShader(shader);
-    throw core::Error(source.file + ": compute shader failed to compile: " + log.c_str());
-  }
   const GLuint program = glCreateProgram();
   glAttachShader(program, shader);
   glLinkProgram(program);
@@ -259,7 +250,9 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
       glBindTexture(GL_TEXTURE_BUFFER, spritesTexture_);
       glTexBuffer(GL_TEXTURE_BUFFER, GL_RG32UI, sprites_);
     }
-    const GLuint command[4] = {0, 1, 0, 0};  // no vertices yet, one instance
+    // Every pixel's slot is drawn (in pixel order, so the sums add up alike every time); those
+    // that scatter nothing are dropped by the vertex stage.
+    const GLuint command[4] = {static_cast<GLuint>(pixels) * (quads ? 6u : 1u), 1, 0, 0};
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, command_);
     glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(command), command, GL_DYNAMIC_COPY);
     glUseProgram(compactProgram_);
@@ -270,7 +263,6 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
     glUniform4fv(glGetUniformLocation(compactProgram_, "uKernels"), kernels.count(), kernels.kernels.data());
     glUniform1f(glGetUniformLocation(compactProgram_, "uHitsPerUnit"), static_cast<float>(source.hitsPerUnitDensity));
     glUniform2i(glGetUniformLocation(compactProgram_, "uSize"), source.size.x, source.size.y);
-    glUniform1ui(glGetUniformLocation(compactProgram_, "uVerticesPerSprite"), quads ? 6u : 1u);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, source.density);
     glUniform1i(glGetUniformLocation(compactProgram_, "uDensity"), 0);

@@ -8,9 +8,7 @@
 
 namespace voxflame::gl {
 
-namespace {
-
-GLuint compile(GLenum stage, const ShaderSource& source) {
+GLuint compileShader(GLenum stage, const ShaderSource& source) {
   const GLuint shader = glCreateShader(stage);
   const char* text = source.text.c_str();
   glShaderSource(shader, 1, &text, nullptr);
@@ -23,13 +21,11 @@ GLuint compile(GLenum stage, const ShaderSource& source) {
     std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
     glGetShaderInfoLog(shader, length, nullptr, log.data());
     glDeleteShader(shader);
-    throw core::Error(source.file + ": " + (stage == GL_VERTEX_SHADER ? "vertex" : "fragment") +
-                      " shader failed to compile: " + log);
+    const char* kind = stage == GL_VERTEX_SHADER ? "vertex" : stage == GL_COMPUTE_SHADER ? "compute" : "fragment";
+    throw core::Error(source.file + ": " + kind + " shader failed to compile: " + log);
   }
   return shader;
 }
-
-}  // namespace
 
 ShaderSource embeddedShader(std::string_view name) {
   const std::string file = "engine/gl/shaders/" + std::string(name);
@@ -39,10 +35,10 @@ ShaderSource embeddedShader(std::string_view name) {
 }
 
 ShaderProgram::ShaderProgram(const ShaderSource& vertexSource, const ShaderSource& fragmentSource) {
-  const GLuint vertex = compile(GL_VERTEX_SHADER, vertexSource);
+  const GLuint vertex = compileShader(GL_VERTEX_SHADER, vertexSource);
   GLuint fragment = 0;
   try {
-    fragment = compile(GL_FRAGMENT_SHADER, fragmentSource);
+    fragment = compileShader(GL_FRAGMENT_SHADER, fragmentSource);
   } catch (...) {
     glDeleteShader(vertex);
     throw;

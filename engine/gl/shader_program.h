@@ -19,6 +19,10 @@ struct ShaderSource {
 // when no such shader was embedded.
 ShaderSource embeddedShader(std::string_view name);
 
+// One compiled shader of `stage`; a compile error becomes core::Error naming the file. The caller
+// attaches and deletes it (ShaderProgram does for its two; the finisher for its compute pass).
+GLuint compileShader(GLenum stage, const ShaderSource& source);
+
 class ShaderProgram {
  public:
   ShaderProgram() = default;

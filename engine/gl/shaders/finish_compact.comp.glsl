@@ -1,13 +1,11 @@
-// Density estimation's list of sprites (flame_finisher.h): every pixel whose kernel is wider than a
-// pixel appends (its index, its kernel) to a list and counts itself into the indirect draw's vertex
-// count, so the scatter's vertex stage (one thread on llvmpipe) runs only for the pixels it draws,
-// and nothing is read back to size the draw.
+// Density estimation's table of sprites (flame_finisher.h): every pixel writes (its index, its
+// kernel) into its own slot, or marks it empty when its kernel is one pixel wide or it holds
+// nothing, so the scatter needs no read-back to size its draw and adds its floats in pixel order.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 uniform sampler2D uDensity;
 uniform ivec2 uSize;
 uniform float uHitsPerUnit;
-uniform uint uVerticesPerSprite;  // 1 for a point, 6 for a quad
 const int kMaxKernels = 192;
 uniform vec4 uKernels[kMaxKernels];
 
@@ -17,6 +15,7 @@ layout(std430, binding = 0) buffer Command {
   uint first;
   uint baseInstance;
 };
+const uint kNoSprite = 0xFFFFFFFFu;
 layout(std430, binding = 1) writeonly buffer Sprites {
   uvec2 sprites[];  // pixel index (x + y · width), kernel index
 };
@@ -24,10 +23,13 @@ layout(std430, binding = 1) writeonly buffer Sprites {
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= uSize.x || p.y >= uSize.y) return;
+  // Each pixel has its own slot, in pixel order: an appended list's order would change from run
+  // to run, and with it the order the scatter adds floats in, so two finishes of the same sums
+  // would differ in their last bits. Pixels that scatter nothing are marked for the vertex stage
+  // to drop.
+  uint slot = uint(p.y * uSize.x + p.x);
   float density = texelFetch(uDensity, p, 0).a;
-  if (density <= 0.0) return;
-  int kernel = kernelIndex(density * uHitsPerUnit);
-  if (uKernels[kernel].z == 0.0) return;  // one pixel: the fold pass adds it in place
-  uint slot = atomicAdd(vertexCount, uVerticesPerSprite) / uVerticesPerSprite;
-  sprites[slot] = uvec2(uint(p.y * uSize.x + p.x), uint(kernel));
+  int kernel = density > 0.0 ? kernelIndex(density * uHitsPerUnit) : 0;
+  bool drawn = density > 0.0 && uKernels[kernel].z != 0.0;  // one pixel: the fold pass adds it in place
+  sprites[slot] = uvec2(slot, drawn ? uint(kernel) : kNoSprite);
 }

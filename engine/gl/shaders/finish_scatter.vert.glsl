@@ -19,6 +19,11 @@ flat out vec3 vKernel;
 
 void main() {
   uvec2 sprite = texelFetch(uSprites, uQuads ? gl_VertexID / 6 : gl_VertexID).xy;
+  if (sprite.y == 0xFFFFFFFFu) {  // a pixel that scatters nothing: outside the clip volume
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);
+    gl_PointSize = 1.0;
+    return;
+  }
   ivec2 p = ivec2(int(sprite.x) % uSize.x, int(sprite.x) / uSize.x);
   vec4 sums = texelFetch(uDensity, p, 0);
   vec4 kernel = uKernels[sprite.y];
