@@ -89,3 +89,29 @@ TEST(CoreBudget, AFreedCoreGoesToTheThreadThatGoesFirst) {
   EXPECT_EQ(firstTurn, 1);
   EXPECT_EQ(normalTurn, 2);
 }
+
+// Two cores freed at once while a first thread and another wait: the first takes one and the other
+// must be woken for the second (both releases may signal the first one before it runs), not sleep
+// beside a free core.
+TEST(CoreBudget, CoresFreedAtOnceReachEveryKindOfWaiter) {
+  for (int round = 0; round < 200; ++round) {
+    voxflame::core::CoreBudget budget(2);
+    budget.acquire();
+    budget.acquire();
+    std::atomic<int> inside{0};
+    std::jthread normal([&] {
+      budget.acquire();
+      ++inside;
+    });
+    std::jthread first([&] {
+      budget.acquire(true);
+      ++inside;
+    });
+    while (budget.waiting() < 2) std::this_thread::yield();
+    budget.release();
+    budget.release();
+    normal.join();
+    first.join();
+    EXPECT_EQ(inside.load(), 2);
+  }
+}

@@ -3,9 +3,9 @@
 // for one, asleep, otherwise, so together they keep no more threads runnable than the budget.
 //
 // Not std::counting_semaphore: libstdc++'s release() wakes every waiter, and on a busy machine
-// all of them then queue for a core just to find the one token taken. Here a release wakes one,
-// unless a thread that goes first (the proxy's, whose burst is what the next frame shows) waits:
-// a freed core is then its own before any other waiter's.
+// all of them then queue for a core just to find the one token taken. Here a release wakes one:
+// a thread that goes first (the proxy's, whose burst is what the next frame shows) if one waits,
+// for a freed core is then its own before any other waiter's; otherwise one of the others.
 #pragma once
 
 #include <condition_variable>
@@ -22,13 +22,16 @@ class CoreBudget {
     ++waiting_;
     if (first) {
       ++firstWaiting_;
-      freed_.wait(lock, [&] { return free_ > 0; });
+      firstFreed_.wait(lock, [&] { return free_ > 0; });
       --firstWaiting_;
     } else {
-      freed_.wait(lock, [&] { return free_ > 0 && firstWaiting_ == 0; });
+      othersFreed_.wait(lock, [&] { return free_ > 0 && firstWaiting_ == 0; });
     }
     --waiting_;
     --free_;
+    // A core is still free (several were released at once): pass it on, or the next waiter of the
+    // other kind would sleep beside an idle core.
+    if (free_ > 0) wakeOne();
   }
   // Threads in acquire() now (for tests).
   int waiting() {
@@ -42,25 +45,29 @@ class CoreBudget {
     return true;
   }
   void release() {
-    bool firstWaits = false;
-    {
-      std::lock_guard lock(mutex_);
-      ++free_;
-      firstWaits = firstWaiting_ > 0;
-    }
-    // One woken at random could be a waiter that must let a first one go, and would sleep again.
-    if (firstWaits)
-      freed_.notify_all();
-    else
-      freed_.notify_one();
+    std::lock_guard lock(mutex_);
+    ++free_;
+    wakeOne();
   }
 
  private:
+  // Wakes the one waiter the freed core is for: a first one if any waits, else another. Each kind
+  // sleeps on its own condition, so a release never wakes a thread that would only sleep again
+  // (with one condition and notify_all, every waiter became runnable on each release while a
+  // proxy waited: four accumulator threads queued for two cores). Called with mutex_ held.
+  void wakeOne() {
+    if (firstWaiting_ > 0)
+      firstFreed_.notify_one();
+    else if (waiting_ > 0)
+      othersFreed_.notify_one();
+  }
+
   std::mutex mutex_;
-  std::condition_variable freed_;
-  int free_;              // guarded by mutex_, like the count below
-  int firstWaiting_ = 0;  // threads waiting that go first
-  int waiting_ = 0;       // all threads waiting
+  std::condition_variable firstFreed_;   // waited on by the threads that go first
+  std::condition_variable othersFreed_;  // by all the others
+  int free_;                             // guarded by mutex_, like the count below
+  int firstWaiting_ = 0;                 // threads waiting that go first
+  int waiting_ = 0;                      // all threads waiting
 };
 
 }  // namespace voxflame::core
