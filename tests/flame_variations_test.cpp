@@ -20,6 +20,7 @@
 
 #include "core/chaos_game.h"
 #include "core/error.h"
+#include "core/flame_noise.h"
 #include "core/flame_variations.h"
 #include "core/random.h"
 #include "core/scene.h"
@@ -494,6 +495,46 @@ const std::vector<PointCase>& pointCases() {
       // glynnia: Ψ = 0.879466 > ½ takes the square-root branch; inside the unit circle it is mirrored.
       {"glynnia", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.5828419506072339, 0.3843237429403043, 0.4}},
       {"glynnia", {}, {1.2, 0.5, 0.5}, 0.8, 0x2545F491u, {0.8944271909999161, -0.1788854381999832, 0.4}},
+      // JWildfire / Apophysis / Fractorium plugins, worked out with a separate implementation of the
+      // plugins' published algorithms (the simplex noise with the plugin's tables for crackle).
+      // crackle: Ψ = 0.879466, 0.545326, 0.394069, 0.000355 put U at (0.00153, 0.68591), in cell (0, 2)
+      // of side 0.3, already the nearest centre; L = 0.156682. Seed 0x0BADF00D: U = (−0.49485, −0.21169),
+      // nearest centre in the block's fifth cell, so the block is re-centred on cell (−4, −1).
+      {"crackle",
+       {0.6, 0.35, 0.7, 1.2, 0.4},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.004901611293635042, 0.5664901996346233, 0.4}},
+      {"crackle",
+       {0.25, -0.4, 1.5, 0.9, -1.3},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x0BADF00Du,
+       {-0.3998397608345449, -0.1170023198915457, 0.4}},
+      // smartcrop: a rounded pentagon of radius 0.5 (edge jittered: 0.596426 at φ) crops |p| = 0.76158 back to
+      // 0.596426 + c (Ψ·0.2 + 0.05), turned by 0.25·2π/5; a sector of 1.5π (the point at 5.35571 lies
+      // outside) turns it by Ψ < ½ to −(Ψ·0.3 + 0.05 + jitter)π; inside, the point stays; a negative radius
+      // crops the inside, to the origin with cropmode 0.
+      {"smartcrop",
+       {5.0, 0.5, 0.3, 1.5, 0.8, 0.1, 0.2, 0.05, 0.25, 1.0, 2.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.4072074049875384, -0.4651723604864474, 0.4}},
+      {"smartcrop",
+       {1.5, 1.0, 0.0, 1.0, 1.0, 0.1, 0.3, 0.05, 0.0, 1.0, 2.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.3675974028338066, -0.48587256501045634, 0.4}},
+      {"smartcrop", {}, {0.1, 0.2, 0.5}, 0.8, 0x2545F491u, {0.08000000000000002, 0.16000000000000003, 0.4}},
+      {"smartcrop",
+       {4.0, -0.5, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0},
+       {0.1, 0.2, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.0, 0.0, 0.0}},
   };
   return cases;
 }
@@ -832,6 +873,15 @@ TEST(VariationCatalogue, CommittedMarkdownMatchesTheCatalogue) {
   text << file.rdbuf();
   EXPECT_TRUE(text.str() == variationsMarkdown()) << "presets/VARIATIONS.md is out of date: regenerate it with "
                                                      "`voxflame list --variations --markdown > presets/VARIATIONS.md`";
+}
+
+// slobo777's simplex noise (crackle's cell centres), at points worked out with a separate
+// implementation of the plugin's algorithm and tables; 0 at lattice points.
+TEST(SimplexNoise, MatchesThePluginsNoise) {
+  EXPECT_NEAR(simplexNoise3D(0.3, -1.2, 2.7), -0.3462575582378816, 1e-13);
+  EXPECT_NEAR(simplexNoise3D(5.1, 2.2, -3.3), -0.024981563299535242, 1e-13);
+  EXPECT_EQ(simplexNoise3D(0.0, 0.0, 0.0), 0.0);
+  EXPECT_TRUE(std::isfinite(simplexNoise3D(1e300, -1e300, std::numeric_limits<double>::quiet_NaN())));
 }
 
 }  // namespace

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "error.h"
+#include "flame_noise.h"
 
 namespace voxflame::core {
 
@@ -1575,6 +1577,159 @@ VOXFLAME_VARIATION_TARGETS void julian2(const VariationInput& in, double* __rest
   }
 }
 
+// ---- JWildfire / Apophysis / Fractorium plugins (issue 25: what real flame files use) -------------
+
+// slobo777's crackle (Apophysis plugin, JWildfire's CrackleFunc): a Voronoi cell pattern. Each
+// point is a fresh random one on a blurred unit disc, pulled towards the centre of its cell by
+// L^power · scale / L, L the point's Voronoi distance (0 at the centre, 1 at the edge). The cells
+// form a square grid of side cellsize/2 whose centres move by distort · simplex noise of the cell's
+// coordinates (slice z of the noise), as in the plugin; the plugin caches the centres near the
+// origin, which changes nothing but speed, so they are worked out here each time.
+struct CrackleCells {
+  double halfSize, distort, slice;
+  void centre(double cx, double cy, double* out) const {
+    const double nx = simplexNoise3D(cx * 2.5, cy * 2.5, slice * 2.5);
+    // Cross-over of x and y as in the plugin, so the two noises do not correlate.
+    const double ny = simplexNoise3D(cy * 2.5 + 30.2, cx * 2.5 - 12.1, slice * 2.5 + 19.8);
+    out[0] = (cx + distort * nx) * halfSize;
+    out[1] = (cy + distort * ny) * halfSize;
+  }
+  // The 3×3 block of centres around cell (cx, cy), column by column (x outer, y inner).
+  void block(double cx, double cy, double (*centres)[2]) const {
+    int k = 0;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj) centre(cx + di, cy + dj, centres[k++]);
+  }
+};
+
+// Java's (int) floor(v), which saturates, as a double.
+inline double javaFloorToInt(double v) {
+  const double f = std::floor(v);
+  if (!(f == f)) return 0.0;
+  return std::clamp(f, -2147483648.0, 2147483647.0);
+}
+
+VOXFLAME_VARIATION_TARGETS void crackle(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double cellsize = P[0], power = P[1], scale = P[3];
+  const CrackleCells cells{cellsize / 2.0, P[2], P[4]};
+  for (std::size_t i = 0; i < n; ++i) {
+    outZ[i] += w * z[i];
+    if (cellsize == 0.0) continue;  // the plugin's guard: no cells, nothing drawn
+    const double a = laneUniform(rnd[i]), b = laneUniform(rnd[i]), c = laneUniform(rnd[i]);
+    const double blurred = (a + b) / 2.0 + (c - 0.5) / 4.0;
+    const double theta = kTwoPi * laneUniform(rnd[i]);
+    const double ux = blurred * std::sin(theta), uy = blurred * std::cos(theta);
+    double cx = javaFloorToInt(ux / cells.halfSize), cy = javaFloorToInt(uy / cells.halfSize);
+    double centres[9][2];
+    cells.block(cx, cy, centres);
+    // Re-centre the block on the nearest centre, so that its cell is surrounded on all sides.
+    int nearest = 0;
+    double nearestD2 = 1.0e100;
+    for (int k = 0; k < 9; ++k) {
+      const double dx = centres[k][0] - ux, dy = centres[k][1] - uy, d2 = dx * dx + dy * dy;
+      if (d2 < nearestD2) nearestD2 = d2, nearest = k;
+    }
+    if (nearest != 4) {
+      cx += nearest / 3 - 1;
+      cy += nearest % 3 - 1;
+      cells.block(cx, cy, centres);
+    }
+    // Voronoi distance from centre 4: the largest ratio over its neighbours (1 on a shared edge).
+    double distance = -1.0e100;
+    for (int k = 0; k < 9; ++k) {
+      if (k == 4) continue;
+      const double px = centres[k][0] - centres[4][0], py = centres[k][1] - centres[4][1];
+      const double ratio = px == 0.0 && py == 0.0
+                               ? 1.0
+                               : 2.0 * ((ux - centres[4][0]) * px + (uy - centres[4][1]) * py) / (px * px + py * py);
+      distance = std::max(distance, ratio);
+    }
+    const double pull = std::pow(distance + 1e-100, power) * scale / (distance + 1e-100);
+    outX[i] += w * ((ux - centres[4][0]) * pull + centres[4][0]);
+    outY[i] += w * ((uy - centres[4][1]) * pull + centres[4][1]);
+  }
+}
+
+// Zy0rg's post_smartcrop (Fractorium's, which the corpus's flames come from; JWildfire's lacks the
+// rotation): keeps the point inside a rounded polygon of `power` sides and radius `radius` (a
+// sector of power·π when |power| < 2) and moves what lies outside back onto its edge, or beyond it
+// by scatter and offset (cropmode 1), to the origin (0), or keeps the radius and turns it
+// (cropmode −1). A negative radius or power keeps the outside instead. Its input is the point
+// itself (static 2, the usual post_ use); static 0, 1 and 3 and cropmode 2 (the last kept point)
+// read the transform's state, which a stateless variation has not: the importer reports them.
+// cropmode 2 drops the point here, which draws what the plugin draws apart from a repeated point.
+VOXFLAME_VARIATION_TARGETS void smartcrop(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double power = P[0], radius = P[1], roundstr = P[2], roundwidth = P[3], distortion = P[4];
+  const double edge = P[5], scatter = P[6], offset = P[7], rotation = P[8];
+  const double cropmode = std::round(P[9]);
+  const bool keepInside = (power > 0.0) == (radius > 0.0);
+  const double workRadius = std::abs(radius);
+  double workPower = power == 0.0 ? 1e-20 : std::abs(power);  // Fractorium's Zeps
+  const bool radial = workPower < 2.0;
+  if (radial) workPower *= kPi;
+  const double alpha = kTwoPi / workPower;
+  const double halfSin = std::sin(alpha / 2.0);
+  const double roundCoeff = roundstr / (halfSin == 0.0 ? 1e-20 : halfSin) / workPower * 2.0;
+  const double turn = rotation * alpha;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle = std::atan2(y[i], x[i]);
+    const double rad = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    double px = x[i], py = y[i], pz = z[i];
+    // The plugin draws only what a branch uses; drawing all of them, in its order, gives the same
+    // numbers to the branch taken and keeps the loop free of data-dependent draws.
+    const double a = laneUniform(rnd[i]), b = laneUniform(rnd[i]), c = laneUniform(rnd[i]);
+    if (radial) {
+      const double jitter = edge * (a - 0.5);
+      double sector = angle / kTwoPi + 1.0 + jitter;
+      sector = (sector - std::trunc(sector)) * kTwoPi;
+      if ((sector > workPower) == keepInside) {
+        if (cropmode == 2.0) {
+          px = py = pz = kNaN;
+        } else {
+          const double spread = (c * scatter + offset + jitter) * kPi;
+          const double turned = std::trunc(b * 2.0) > 0.0 ? workPower + spread : -spread;
+          px = rad * std::cos(turned);
+          py = rad * std::sin(turned);
+        }
+      }
+    } else {
+      double coeff = 1.0;
+      if (distortion != 0.0) {
+        double side = (angle + kPi) / alpha;
+        side -= std::trunc(side);
+        side = side < 0.5 ? side : 1.0 - side;
+        coeff = 1.0 / std::cos(side * alpha);
+        if (roundstr != 0.0) {
+          const double width =
+              (roundwidth != 1.0 ? std::exp(std::log(side * 2.0) * roundwidth) : side * 2.0) * roundCoeff;
+          coeff = std::abs((1.0 - width) * coeff + width);
+        }
+        if (distortion != 1.0) coeff = std::exp(std::log(coeff) * distortion);
+      }
+      const double reach = coeff * (edge != 0.0 ? workRadius + edge * (a - 0.5) : workRadius);
+      if ((rad > reach) == keepInside) {
+        if (cropmode == 2.0) {
+          px = py = pz = kNaN;
+        } else if (cropmode == 0.0) {
+          px = py = pz = 0.0;
+        } else {
+          const double r = cropmode == -1.0 ? rad : reach + coeff * ((edge != 0.0 ? b : a) * scatter + offset);
+          px = r * std::cos(angle + turn);
+          py = r * std::sin(angle + turn);
+        }
+      }
+    }
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * pz;
+  }
+}
+
 // Apophysis 3D's flatten: the transform's z is 0. It adds nothing itself; the chaos game sets z to
 // 0 after a transform's variations (before them for pre_flatten, after the post_ ones for
 // post_flatten) when one of them is flatten.
@@ -1911,6 +2066,37 @@ std::vector<VariationInfo> buildCatalogue() {
        {"d", 1.0, -2.0, 2.0},
        {"e", 0.0, -2.0, 2.0},
        {"f", 0.0, -2.0, 2.0}});
+  // JWildfire, Apophysis and Fractorium plugins that the corpus's flames use (issue 25).
+  add("crackle",
+      "C + (U − C) L^power·scale / L, z: U = b (sin 2πΨ₄, cos 2πΨ₄) with b = (Ψ₁ + Ψ₂)/2 + (Ψ₃ − ½)/4, C the "
+      "centre of U's cell on a square grid of side cellsize/2 whose centres move by distort · simplex noise of "
+      "the cell (noise slice z), L the Voronoi distance of U from C (0 at C, 1 on the edge); nothing for "
+      "cellsize 0 (slobo777's plugin, JWildfire's)",
+      k2D, kRandom, &crackle,
+      {{"cellsize", 1.0, 0.0, 5.0},
+       {"power", 0.2, -2.0, 2.0},
+       {"distort", 0.0, -2.0, 2.0},
+       {"scale", 1.0, -2.0, 2.0},
+       {"z", 0.0, -5.0, 5.0}});
+  add("smartcrop",
+      "p inside the polygon of |power| sides (corners at radius |radius| · c(φ), c from distortion, roundstr and "
+      "roundwidth; the edge jittered by edge · (Ψ − ½)); outside: r (cos(φ + rotation·2π/power), sin(…)), z "
+      "with r = edge + c (Ψ scatter + offset) (cropmode 1), |p| (−1), or the origin (0); for |power| < 2 the "
+      "sector |power|·π instead, outside turned to a random side of it; power < 0 or radius < 0 (not both) "
+      "keeps the outside; cropmode 2 drops the point (Zy0rg's post_smartcrop as Fractorium has it; only "
+      "static 2, the point itself, is supported)",
+      k3D, kRandom, &smartcrop,
+      {{"power", 4.0, -10.0, 10.0},
+       {"radius", 1.0, -3.0, 3.0},
+       {"roundstr", 0.0, -1.0, 1.0},
+       {"roundwidth", 1.0, 0.0, 5.0},
+       {"distortion", 1.0, 0.0, 2.0},
+       {"edge", 0.0, -0.5, 0.5},
+       {"scatter", 0.0, -1.0, 1.0},
+       {"offset", 0.0, -1.0, 1.0},
+       {"rotation", 0.0, -1.0, 1.0},
+       count("cropmode", 1.0, -1.0, 2.0),
+       count("static", 2.0, -1.0, 3.0)});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
   for (VariationInfo& info : c)

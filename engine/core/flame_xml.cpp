@@ -520,6 +520,15 @@ class FlameReader {
         lose("colour shift of " + withoutCopyMark(name));
         warn(context + " has " + name + " with a colour shift (mul_c), which voxflame does not apply");
       }
+      // smartcrop reads the point itself (static 2) and cannot keep the last point it let through
+      // (cropmode 2), which the plugin's other modes need (flame_variations.cpp).
+      if (info->name == "smartcrop" &&
+          (std::round(term.params.at(10)) != 2.0 || std::round(term.params.at(9)) == 2.0)) {
+        lose("static or cropmode 2 of " + withoutCopyMark(name));
+        warn(context + " has " + name +
+             " reading the transform's state (static other than 2, or cropmode 2), which voxflame does not keep; "
+             "it crops the point itself and drops what cropmode 2 would replace");
+      }
       x.variations.push_back(std::move(term));
     }
     // ...then everything else: parameters, JWildfire's own keys, and what voxflame does not know.
