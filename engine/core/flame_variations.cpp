@@ -1055,16 +1055,47 @@ VOXFLAME_VARIATION_2D(edisc, {
   outY[i] += ww * std::sinh(a2) * snv;
 })
 
-VOXFLAME_VARIATION_2D(elliptic, {
-  const double t = x[i] * x[i] + y[i] * y[i] + 1.0, x2 = 2.0 * x[i];
-  const double xmax = 0.5 * (std::sqrt(t + x2) + std::sqrt(t - x2));
-  const double a = x[i] / xmax;
-  const double b = std::sqrt(std::max(0.0, 1.0 - a * a));
-  const double ssx = std::sqrt(std::max(0.0, xmax - 1.0));
+// √(1 + v) − 1 without the cancellation near v = 0 (Claude Heiland-Allen's [4,4] Padé approximant
+// there, as JWildfire's elliptic mode 2 has it).
+inline double sqrt1pm1(double v) {
+  if (-0.0625 < v && v < 0.0625) {
+    const double num = (((1.0 / 32.0 * v + 5.0 / 16.0) * v + 3.0 / 4.0) * v + 1.0 / 2.0) * v;
+    const double den = (((1.0 / 256.0 * v + 5.0 / 32.0) * v + 15.0 / 16.0) * v + 7.0 / 4.0) * v + 1.0;
+    return num / den;
+  }
+  return std::sqrt(1.0 + v) - 1.0;
+}
+
+// flam3's elliptic (mode 0), and JWildfire's modes: 1 takes the sign of y at random (JWildfire's
+// default, mirroring the picture in y), 2 is Heiland-Allen's more precise form. The uniform is drawn
+// in every mode, so the lane's draws do not depend on a parameter.
+VOXFLAME_VARIATION_TARGETS void elliptic(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double mode = std::round(P[0]);
   const double ww = w / (kPi / 2.0);
-  outX[i] += ww * std::atan2(a, b);
-  outY[i] += (y[i] > 0.0 ? ww : -ww) * std::log(xmax + ssx);
-})
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = laneUniform(rnd[i]);
+    const double sq = x[i] * x[i] + y[i] * y[i], x2 = 2.0 * x[i];
+    if (mode == 2.0) {
+      const double xmaxm1 = 0.5 * (sqrt1pm1(sq + x2) + sqrt1pm1(sq - x2));
+      const double ssx = xmaxm1 < 0.0 ? 0.0 : std::sqrt(xmaxm1);
+      const double a = x[i] / (1.0 + xmaxm1);
+      outX[i] += ww * std::asin(std::clamp(a, -1.0, 1.0));
+      outY[i] += (y[i] > 0.0 ? ww : -ww) * std::log1p(xmaxm1 + ssx);
+    } else {
+      const double t = sq + 1.0;
+      const double xmax = 0.5 * (std::sqrt(t + x2) + std::sqrt(t - x2));
+      const double a = x[i] / xmax;
+      const double b = std::sqrt(std::max(0.0, 1.0 - a * a));
+      const double ssx = std::sqrt(std::max(0.0, xmax - 1.0));
+      const bool up = mode == 1.0 ? u < 0.5 : y[i] > 0.0;
+      outX[i] += ww * std::atan2(a, b);
+      outY[i] += (up ? ww : -ww) * std::log(xmax + ssx);
+    }
+    outZ[i] += w * z[i];
+  }
+}
 
 VOXFLAME_VARIATION_TARGETS void escher(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                        double* __restrict oz) {
@@ -1730,6 +1761,219 @@ VOXFLAME_VARIATION_TARGETS void smartcrop(const VariationInput& in, double* __re
   }
 }
 
+// Michael Faber's epispiral as JWildfire's epispiral_wf has it: the curve r = ½ / cos(waves·θ).
+VOXFLAME_VARIATION_2D(epispiralWf, {
+  const double theta = std::atan2(x[i], y[i]);
+  const double d = std::cos(P[0] * theta);
+  if (d != 0.0) {  // JWildfire skips the point there
+    const double r = 0.5 / d;
+    outX[i] += w * r * std::sin(theta);
+    outY[i] += w * r * std::cos(theta);
+  }
+})
+
+// Its result ignores the point: a uniform square (2Ψ₁ − 1, 2Ψ₂ − 1) mapped onto the disc of the
+// same "radius" (the larger coordinate), keeping where along the square's perimeter it lay.
+VOXFLAME_VARIATION_2D(blurCircle, {
+  const double sx = 2.0 * laneUniform(rnd[i]) - 1.0, sy = 2.0 * laneUniform(rnd[i]) - 1.0;
+  const double ax = std::abs(sx), ay = std::abs(sy);
+  double perimeter, side;
+  if (ax >= ay) {
+    perimeter = sx >= ay ? ax + sy : 5.0 * ax - sy;
+    side = ax;
+  } else {
+    perimeter = sy >= ax ? 3.0 * ay - sx : 7.0 * ay + sx;
+    side = ay;
+  }
+  const double a = kPi / 4.0 * perimeter / side - kPi / 4.0;
+  outX[i] += w * side * std::cos(a);
+  outY[i] += w * side * std::sin(a);
+})
+
+VOXFLAME_VARIATION_TARGETS void blurLinear(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double length = P[0], c = std::cos(P[1]), s = std::sin(P[1]);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = length * laneUniform(rnd[i]);
+    outX[i] += w * (x[i] + r * c);
+    outY[i] += w * (y[i] + r * s);
+    outZ[i] += w * z[i];
+  }
+}
+
+// Zephyrtronium's exblur (JWildfire's): a blur in spherical coordinates about an origin whose size
+// grows as |p − o|^(2·dist). The plugin sums the last four of its uniforms (one new per call); four
+// fresh ones here have the same distribution. Its y origin is added, not subtracted, as in JWildfire.
+VOXFLAME_VARIATION_TARGETS void exblur(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double dist = P[0], spread = P[1], x0 = P[2], y0 = P[3], z0 = P[4];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dx = x[i] - x0, dy = y[i] + y0, dz = z[i] - z0;
+    const double n2 = dx * dx + dy * dy + dz * dz;
+    const double u = laneUniform(rnd[i]) * kTwoPi, v = laneUniform(rnd[i]) * kTwoPi;
+    const double gauss = laneGauss(rnd[i]);
+    const double rr = w * std::pow(n2, dist) * gauss;
+    const double theta = std::atan2(dy, dx), phi = std::acos(dz / std::sqrt(n2));
+    const double sv = std::sin(phi), rsv = spread * std::sin(v);
+    outX[i] += rr * (sv * std::cos(theta) + rsv * std::cos(u));
+    outY[i] += rr * (sv * std::sin(theta) + rsv * std::sin(u));
+    outZ[i] += rr * (std::cos(phi) + spread * std::cos(v));
+  }
+}
+
+VOXFLAME_VARIATION_2D(twoface, {
+  const double r = x[i] > 0.0 ? w / (x[i] * x[i] + y[i] * y[i]) : w;
+  outX[i] += r * x[i];
+  outY[i] += r * y[i];
+})
+
+// Zueuk's hyperbolic tilings: a Möbius map of the disc that moves by one tile of the {p, q} tiling.
+// The distance of a tile's centre for p and q (both at least 3, whole, as JWildfire reads them).
+inline double hypertileDistance(double p, double q) {
+  const double cp = std::cos(kTwoPi / p);
+  const double r2 = 1.0 - (cp - 1.0) / (cp + std::cos(kTwoPi / q));
+  return r2 > 0.0 ? 1.0 / std::sqrt(r2) : 1.0;
+}
+inline double tilingCount(double value) {
+  return std::max(3.0, std::round(value));
+}
+
+// The plugins' move: (p + c̄) / (c p + 1) for p = x + iy and c = re + i·im, times the weight.
+[[gnu::always_inline]] inline void hypertileMap(double x, double y, double re, double im, double w, double& outX,
+                                                double& outY) {
+  const double a = x + re, b = y - im;
+  const double c = re * x - im * y + 1.0, d = re * y + im * x;
+  const double vr = w / (c * c + d * d);
+  outX += vr * (a * c + b * d);
+  outY += vr * (b * c - a * d);
+}
+
+VOXFLAME_VARIATION_TARGETS void hypertile(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double p = tilingCount(P[0]), q = tilingCount(P[1]);
+  const double a = std::round(P[2]) * kTwoPi / p, r = hypertileDistance(p, q);
+  const double re = r * std::cos(a), im = r * std::sin(a);
+  for (std::size_t i = 0; i < n; ++i) {
+    hypertileMap(x[i], y[i], re, im, w, outX[i], outY[i]);
+    outZ[i] += w * z[i];
+  }
+}
+
+// hypertile1: the move towards one of the p neighbours, picked at random (JWildfire draws an integer
+// and multiplies it by 2π/p, which is the same as a whole Ψ·p).
+VOXFLAME_VARIATION_TARGETS void hypertile1(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double p = tilingCount(P[0]), q = tilingCount(P[1]);
+  const double r = hypertileDistance(p, q);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = std::trunc(laneUniform(rnd[i]) * p) * kTwoPi / p;
+    hypertileMap(x[i], y[i], r * std::cos(a), r * std::sin(a), w, outX[i], outY[i]);
+    outZ[i] += w * z[i];
+  }
+}
+
+// hypertile2: the move along x, then a rotation by a random multiple of 2π/p.
+VOXFLAME_VARIATION_TARGETS void hypertile2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double p = tilingCount(P[0]), q = tilingCount(P[1]);
+  const double r = hypertileDistance(p, q);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = x[i] + r, b = y[i];
+    const double c = r * x[i] + 1.0, d = r * y[i];
+    const double mx = a * c + b * d, my = b * c - a * d;
+    const double vr = w / (c * c + d * d);
+    const double turn = std::trunc(laneUniform(rnd[i]) * p) * kTwoPi / p;
+    const double s = std::sin(turn), co = std::cos(turn);
+    outX[i] += vr * (mx * co + my * s);
+    outY[i] += vr * (my * co - mx * s);
+    outZ[i] += w * z[i];
+  }
+}
+
+// hypertile3D2: hypertile2's move along x in the unit ball (z scaled with y), then a rotation of x
+// and y by a random multiple of 2π/p, as the plugin has it.
+VOXFLAME_VARIATION_TARGETS void hypertile3D2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                             double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double p = tilingCount(P[0]), q = tilingCount(P[1]);
+  const double pa = kTwoPi / p, qa = kTwoPi / q;
+  const double t = -(std::cos(pa) - 1.0) / (std::cos(pa) + std::cos(qa));
+  const double cx = t > 0.0 ? 1.0 / std::sqrt(1.0 + t) : 1.0;
+  const double c2 = cx * cx, sx = 1.0 + c2, sy = 1.0 - c2;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r2 = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+    const double mx = x[i] * sx - cx * (-r2 - 1.0), my = y[i] * sy;
+    const double vr = w / (c2 * r2 + 2.0 * cx * x[i] + 1.0);
+    const double turn = std::trunc(laneUniform(rnd[i]) * p) * pa;
+    const double s = std::sin(turn), co = std::cos(turn);
+    outX[i] += vr * (mx * co + my * s);
+    outY[i] += vr * (my * co - mx * s);
+    outZ[i] += vr * z[i] * sy;
+  }
+}
+
+// Apophysis 7X's rotations (JWildfire's pre_/post_rotate_*, Fractorium's rotate_*): the point
+// turned about an axis by weight·π/2. The weight is the angle, not a scale, so these add the turned
+// point itself; their pre_ and post_ forms, the usual ones, replace the point by it.
+#define VOXFLAME_ROTATION(fn, ROTATE)                                                                        \
+  VOXFLAME_VARIATION_TARGETS void fn(const VariationInput& in, double* __restrict ox, double* __restrict oy, \
+                                     double* __restrict oz) {                                                \
+    VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)                                                                 \
+    const double s = std::sin(w * kPi / 2.0), c = std::cos(w * kPi / 2.0);                                   \
+    for (std::size_t i = 0; i < n; ++i) {                                                                    \
+      ROTATE                                                                                                 \
+    }                                                                                                        \
+  }
+VOXFLAME_ROTATION(rotateX, outX[i] += x[i]; outY[i] += s * z[i] + c * y[i]; outZ[i] += c * z[i] - s * y[i];)
+VOXFLAME_ROTATION(rotateY, outX[i] += c * x[i] - s * z[i]; outY[i] += y[i]; outZ[i] += s * x[i] + c * z[i];)
+VOXFLAME_ROTATION(rotateZ, outX[i] += s * y[i] + c * x[i]; outY[i] += c * y[i] - s * x[i]; outZ[i] += z[i];)
+#undef VOXFLAME_ROTATION
+
+// Larry Berlin's foci_3D: foci with z taking the role of a second angle (φ when z is 0).
+VOXFLAME_VARIATION_TARGETS void foci3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double expx = std::exp(x[i]) * 0.5, expnx = 0.25 / expx;
+    const double boot = z[i] == 0.0 ? std::atan2(y[i], x[i]) : z[i];
+    const double t = w / (expx + expnx - std::cos(y[i]) * std::cos(boot));
+    outX[i] += (expx - expnx) * t;
+    outY[i] += std::sin(y[i]) * t;
+    outZ[i] += std::sin(boot) * t;
+  }
+}
+
+// Xyrus02's circlecrop: points outside the circle go to its edge, scattered outwards by
+// Ψ·scatter_area/2 (at most one), or with zero to the origin; the centre is not scaled by the weight.
+// JWildfire also hides a point it sends to the origin; Fractorium, which most of the corpus's flames
+// with it come from, draws it there, as here.
+VOXFLAME_VARIATION_TARGETS void circlecrop(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double radius = P[0], x0 = P[1], y0 = P[2], scatter = std::clamp(P[3], -1.0, 1.0);
+  const bool zero = std::round(P[4]) == 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dx = x[i] - x0, dy = y[i] - y0;
+    const double edge = radius + laneUniform(rnd[i]) * 0.5 * scatter;
+    if (std::sqrt(dx * dx + dy * dy) > radius) {
+      if (!zero) {
+        const double a = std::atan2(dy, dx);
+        outX[i] += w * edge * std::cos(a) + x0;
+        outY[i] += w * edge * std::sin(a) + y0;
+      }
+    } else {
+      outX[i] += w * dx + x0;
+      outY[i] += w * dy + y0;
+    }
+    outZ[i] += w * z[i];
+  }
+}
+
 // Apophysis 3D's flatten: the transform's z is 0. It adds nothing itself; the chaos game sets z to
 // 0 after a transform's variations (before them for pre_flatten, after the post_ ones for
 // post_flatten) when one of them is flatten.
@@ -1914,8 +2158,10 @@ std::vector<VariationInfo> buildCatalogue() {
       "1)), "
       "a₂ = −acos(x/m); − for y > 0",
       k2D, kFixed, &edisc);
-  add("elliptic", "(2/π)(atan2(a, √(1 − a²)), ± ln(m + √(m − 1))), z; m as edisc, a = x/m; + for y > 0", k2D, kFixed,
-      &elliptic);
+  add("elliptic",
+      "(2/π)(atan2(a, √(1 − a²)), ± ln(m + √(m − 1))), z; m as edisc, a = x/m; + for y > 0 (mode 0, flam3's), + for "
+      "Ψ < ½ (mode 1, JWildfire's default), or mode 2: Heiland-Allen's precise form of mode 0 (JWildfire's)",
+      k2D, kRandom, &elliptic, {count("mode", 0.0, 0.0, 2.0)});
   add("escher",
       "e^(c ln r − d φ) (cos(c φ + d ln r), sin(c φ + d ln r)), z; c = (1 + cos β)/2, d = (sin β)/2, β = beta", k2D,
       kFixed, &escher, {{"beta", 0.0, -kPi, kPi}});
@@ -2097,6 +2343,56 @@ std::vector<VariationInfo> buildCatalogue() {
        {"rotation", 0.0, -1.0, 1.0},
        count("cropmode", 1.0, -1.0, 2.0),
        count("static", 2.0, -1.0, 3.0)});
+  add("epispiral_wf", "(½ / cos(waves·θ)) (sin θ, cos θ), z; nothing where the cosine is 0 (JWildfire's)", k2D, kFixed,
+      &epispiralWf, {{"waves", 4.0, -20.0, 20.0}});
+  add("blur_circle",
+      "s (cos α, sin α), z: (u, v) = (2Ψ₁ − 1, 2Ψ₂ − 1), s = max(|u|, |v|), α = (π/4)·(position of (u, v) along "
+      "the square's perimeter, 0–8)/s − π/4: a uniform square folded onto the unit disc",
+      k2D, kRandom, &blurCircle);
+  add("blur_linear", "(x + Ψ·length·cos angle, y + Ψ·length·sin angle, z) (Joel Faber's)", k2D, kRandom, &blurLinear,
+      {{"length", 1.0, 0.0, 3.0}, {"angle", 0.5, -kPi, kPi}});
+  add("exblur",
+      "G |q|^(2 dist) ((sin β cos α, sin β sin α, cos β) + r (sin v cos u, sin v sin u, cos v)); q = (x − x_origin, "
+      "y + y_origin, z − z_origin), α = atan2(q_y, q_x), β = acos(q_z/|q|), u = 2πΨ₁, v = 2πΨ₂, G = Ψ + Ψ + Ψ + Ψ − 2 "
+      "(Zephyrtronium's, as JWildfire has it)",
+      k3D, kRandom, &exblur,
+      {{"dist", 0.5, -2.0, 2.0},
+       {"r", 0.25, -2.0, 2.0},
+       {"x_origin", 0.0, -2.0, 2.0},
+       {"y_origin", 0.0, -2.0, 2.0},
+       {"z_origin", 0.0, -2.0, 2.0}});
+  add("twoface", "(x, y)/r² for x > 0, else (x, y); z", k2D, kFixed, &twoface);
+  add("hypertile",
+      "(p + c̄)/(c p + 1) with p = x + iy, c = ρ e^(2πi·n/p), ρ = 1/√(1 + (1 − cos 2π/p)/(cos 2π/p + cos 2π/q)); z "
+      "(Zueuk's: one tile of the {p, q} hyperbolic tiling; p, q at least 3)",
+      k2D, kFixed, &hypertile, {count("p", 3.0, 3.0, 10.0), count("q", 7.0, 3.0, 10.0), count("n", 1.0, 0.0, 10.0)});
+  add("hypertile1", "hypertile with n = trunc(Ψ·p): a random neighbouring tile", k2D, kRandom, &hypertile1,
+      {count("p", 3.0, 3.0, 10.0), count("q", 7.0, 3.0, 10.0)});
+  add("hypertile2", "(p + ρ)/(ρ p + 1) turned by −2π·trunc(Ψ·p)/p, p = x + iy, ρ as hypertile; z (Zueuk's)", k2D,
+      kRandom, &hypertile2, {count("p", 3.0, 3.0, 10.0), count("q", 7.0, 3.0, 10.0)});
+  add("hypertile3D2",
+      "(x (1 + c²) + c (|p|² + 1), y (1 − c²), z (1 − c²)) / (c² |p|² + 2cx + 1), x and y turned by −2π·trunc(Ψ·p)/p; "
+      "c = 1/√(1 + (1 − cos 2π/p)/(cos 2π/p + cos 2π/q)) (Zueuk's)",
+      k3D, kRandom, &hypertile3D2, {count("p", 3.0, 3.0, 10.0), count("q", 7.0, 3.0, 10.0)});
+  add("rotate_x",
+      "(x, y cos α + z sin α, z cos α − y sin α), α = weight·π/2: the weight is the angle, so this adds the turned "
+      "point itself (Apophysis 7X's; pre_ and post_ forms turn the point)",
+      k3D, kFixed, &rotateX);
+  add("rotate_y", "(x cos α − z sin α, y, x sin α + z cos α), α = weight·π/2 (as rotate_x)", k3D, kFixed, &rotateY);
+  add("rotate_z", "(x cos α + y sin α, y cos α − x sin α, z), α = weight·π/2 (as rotate_x)", k3D, kFixed, &rotateZ);
+  add("foci_3D",
+      "(e − 1/(4e), sin y, sin b) / (e + 1/(4e) − cos y cos b); e = eˣ/2, b = z, or φ where z is 0 (Larry Berlin's)",
+      k3D, kFixed, &foci3D);
+  add("circlecrop",
+      "inside the circle of radius about (x, y): the point; outside: the origin with zero, else the circle's "
+      "edge pushed out by Ψ·scatter_area/2 in the point's direction (the centre not scaled by the weight); z "
+      "(Xyrus02's)",
+      k2D, kRandom, &circlecrop,
+      {{"radius", 1.0, 0.0, 5.0},
+       {"x", 0.0, -3.0, 3.0},
+       {"y", 0.0, -3.0, 3.0},
+       {"scatter_area", 0.0, -1.0, 1.0},
+       count("zero", 1.0, 0.0, 1.0)});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
   for (VariationInfo& info : c)

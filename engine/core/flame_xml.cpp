@@ -180,6 +180,12 @@ std::string withoutCopyMark(std::string_view name) {
   return std::string(name);
 }
 
+// Values an editor works out from a variation's parameters and writes beside them: Fractorium
+// writes auger's half_scale (scale / 2). They carry nothing of their own.
+bool isDerivedParam(const VariationInfo& info, std::string_view param) {
+  return info.name == "auger" && param == "half_scale";
+}
+
 // JWildfire stores a motion curve beside any variation parameter (`<variation>_<parameter>_enabled`,
 // `_view_xmin`, `_x0`, ...) and a variation's order as `<variation>_fx_priority`; pugixml sees
 // these as parameters of the variation. They carry no value a still image uses.
@@ -551,7 +557,7 @@ class FlameReader {
       if (!owner.empty()) {
         const VariationInfo* info = variationNamed(withoutCopyMark(owner));
         const std::string param = name.substr(owner.size() + 1);
-        if (info && info->paramIndex(param) < 0 && !isJwildfireParamCurve(param)) {
+        if (info && info->paramIndex(param) < 0 && !isJwildfireParamCurve(param) && !isDerivedParam(*info, param)) {
           lose("parameter " + withoutCopyMark(owner) + "_" + param);
           warn(context + " sets '" + name + "', which voxflame's '" + info->name + "' does not have; it was left out");
         }
