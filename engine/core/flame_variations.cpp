@@ -1067,15 +1067,14 @@ inline double sqrt1pm1(double v) {
 }
 
 // flam3's elliptic (mode 0), and JWildfire's modes: 1 takes the sign of y at random (JWildfire's
-// default, mirroring the picture in y), 2 is Heiland-Allen's more precise form. The uniform is drawn
-// in every mode, so the lane's draws do not depend on a parameter.
+// default, mirroring the picture in y), 2 is Heiland-Allen's more precise form. Only mode 1 draws a
+// uniform: flam3's mode stays deterministic (and is listed as such, so the flam3 oracle checks it).
 VOXFLAME_VARIATION_TARGETS void elliptic(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                          double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double mode = std::round(P[0]);
   const double ww = w / (kPi / 2.0);
   for (std::size_t i = 0; i < n; ++i) {
-    const double u = laneUniform(rnd[i]);
     const double sq = x[i] * x[i] + y[i] * y[i], x2 = 2.0 * x[i];
     if (mode == 2.0) {
       const double xmaxm1 = 0.5 * (sqrt1pm1(sq + x2) + sqrt1pm1(sq - x2));
@@ -1089,7 +1088,7 @@ VOXFLAME_VARIATION_TARGETS void elliptic(const VariationInput& in, double* __res
       const double a = x[i] / xmax;
       const double b = std::sqrt(std::max(0.0, 1.0 - a * a));
       const double ssx = std::sqrt(std::max(0.0, xmax - 1.0));
-      const bool up = mode == 1.0 ? u < 0.5 : y[i] > 0.0;
+      const bool up = mode == 1.0 ? laneUniform(rnd[i]) < 0.5 : y[i] > 0.0;
       outX[i] += ww * std::atan2(a, b);
       outY[i] += (up ? ww : -ww) * std::log(xmax + ssx);
     }
@@ -2160,8 +2159,9 @@ std::vector<VariationInfo> buildCatalogue() {
       k2D, kFixed, &edisc);
   add("elliptic",
       "(2/π)(atan2(a, √(1 − a²)), ± ln(m + √(m − 1))), z; m as edisc, a = x/m; + for y > 0 (mode 0, flam3's), + for "
-      "Ψ < ½ (mode 1, JWildfire's default), or mode 2: Heiland-Allen's precise form of mode 0 (JWildfire's)",
-      k2D, kRandom, &elliptic, {count("mode", 0.0, 0.0, 2.0)});
+      "Ψ < ½ (mode 1, JWildfire's default; the one mode that draws Ψ), or mode 2: Heiland-Allen's precise form of mode "
+      "0 (JWildfire's)",
+      k2D, kFixed, &elliptic, {count("mode", 0.0, 0.0, 2.0)});
   add("escher",
       "e^(c ln r − d φ) (cos(c φ + d ln r), sin(c φ + d ln r)), z; c = (1 + cos β)/2, d = (sin β)/2, β = beta", k2D,
       kFixed, &escher, {{"beta", 0.0, -kPi, kPi}});
