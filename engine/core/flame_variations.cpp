@@ -1632,6 +1632,9 @@ struct CrackleCells {
   }
 };
 
+// Fractorium's stand-in for a zero divisor (its Zeps: the machine epsilon).
+constexpr double kFractoriumEps = std::numeric_limits<double>::epsilon();
+
 // Java's (int) floor(v), which saturates, as a double.
 inline double javaFloorToInt(double v) {
   const double f = std::floor(v);
@@ -1698,12 +1701,12 @@ VOXFLAME_VARIATION_TARGETS void smartcrop(const VariationInput& in, double* __re
   const double cropmode = std::round(P[9]);
   const bool keepInside = (power > 0.0) == (radius > 0.0);
   const double workRadius = std::abs(radius);
-  double workPower = power == 0.0 ? 1e-20 : std::abs(power);  // Fractorium's Zeps
+  double workPower = power == 0.0 ? kFractoriumEps : std::abs(power);
   const bool radial = workPower < 2.0;
   if (radial) workPower *= kPi;
   const double alpha = kTwoPi / workPower;
   const double halfSin = std::sin(alpha / 2.0);
-  const double roundCoeff = roundstr / (halfSin == 0.0 ? 1e-20 : halfSin) / workPower * 2.0;
+  const double roundCoeff = roundstr / (halfSin == 0.0 ? kFractoriumEps : halfSin) / workPower * 2.0;
   const double turn = rotation * alpha;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < n; ++i) {
@@ -1970,6 +1973,77 @@ VOXFLAME_VARIATION_TARGETS void circlecrop(const VariationInput& in, double* __r
       outY[i] += w * dy + y0;
     }
     outZ[i] += w * z[i];
+  }
+}
+
+// Xyrus02's bwraps (as Fractorium has it): the plane cut into square cells of side cellsize, each
+// holding a bubble of radius cellsize/(2(1 + space²)) that magnifies by gain and twists from
+// inner_twist at its centre to outer_twist at its rim; outside the bubbles the point stays.
+VOXFLAME_VARIATION_TARGETS void bwraps(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double cellsize = P[0], space = P[1], gain = P[2], innerTwist = P[3], outerTwist = P[4];
+  const double radius = 0.5 * (cellsize / (1.0 + space * space));
+  const double g2 = gain * gain + 1e-6;
+  double maxBubble = g2 * radius;
+  maxBubble = maxBubble > 2.0 ? 1.0 : maxBubble / (maxBubble * maxBubble / 4.0 + 1.0);
+  const double r2 = radius * radius == 0.0 ? kFractoriumEps : radius * radius;
+  const double rfactor = radius / maxBubble;
+  for (std::size_t i = 0; i < n; ++i) {
+    double px = x[i], py = y[i];
+    if (cellsize != 0.0) {
+      const double cx = (std::floor(x[i] / cellsize) + 0.5) * cellsize;
+      const double cy = (std::floor(y[i] / cellsize) + 0.5) * cellsize;
+      double lx = x[i] - cx, ly = y[i] - cy;
+      if (lx * lx + ly * ly <= r2) {
+        lx *= g2;
+        ly *= g2;
+        const double d = (lx * lx + ly * ly) / 4.0 + 1.0;
+        const double r = rfactor / (d == 0.0 ? kFractoriumEps : d);
+        lx *= r;
+        ly *= r;
+        const double t = (lx * lx + ly * ly) / r2;
+        const double theta = innerTwist * (1.0 - t) + outerTwist * t;
+        const double s = std::sin(theta), c = std::cos(theta);
+        px = cx + c * lx + s * ly;
+        py = cy - s * lx + c * ly;
+      }
+    }
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * z[i];
+  }
+}
+
+// Joel Faber's juni (Apophysis 7X plugin): julian3Dz-like roots of the point inside the circle of
+// radius weight (outside it with invert), the angle taken after the transform's own affine map once
+// more (the plugin's a–f, as flam3 names them here); elsewhere the point times the weight. z is
+// scaled as in julian3Dz. The plugin draws the root only where it uses it; here it is always drawn.
+VOXFLAME_VARIATION_TARGETS void juni(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                     double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double power = countParam(P[0]), absn = std::abs(power);
+  const bool invert = std::round(P[1]) >= 1.0;
+  const double cn = (P[2] / power - 1.0) / 2.0;
+  const double* m = in.affine;
+  const double a = m[0], b = m[kAffineB], c = m[kAffineC], d = m[4], e = m[kAffineE], f = m[kAffineF];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double zz = z[i] / absn;
+    const double r2 = x[i] * x[i] + y[i] * y[i];
+    const double r = w * std::pow(r2 + zz * zz, cn);
+    const double root = std::trunc(laneUniform(rnd[i]) * absn);
+    outZ[i] += r * zz;
+    const bool plain = invert ? (r2 < w * w && r2 != 0.0) : (r2 > w * w || r2 == 0.0);
+    if (plain) {
+      outX[i] += w * x[i];
+      outY[i] += w * y[i];
+      continue;
+    }
+    const double xx = a * x[i] + b * y[i] + c, yy = d * x[i] + e * y[i] + f;
+    const double alpha = (std::atan2(yy, xx) + kTwoPi * root) / power;
+    const double gamma = r * std::sqrt(r2);
+    outX[i] += gamma * std::cos(alpha);
+    outY[i] += gamma * std::sin(alpha);
   }
 }
 
@@ -2393,6 +2467,22 @@ std::vector<VariationInfo> buildCatalogue() {
        {"y", 0.0, -3.0, 3.0},
        {"scatter_area", 0.0, -1.0, 1.0},
        count("zero", 1.0, 0.0, 1.0)});
+  add("bwraps",
+      "in the bubble of radius ρ = cellsize/(2(1 + space²)) at the centre C of the point's cell: C + R(θ)·q, q = "
+      "(p − C)·g·k/(|p − C|²g²/4 + 1), g = gain² + 10⁻⁶, k = ρ/b, b = gρ/((gρ)²/4 + 1) (1 when gρ > 2), θ = "
+      "inner_twist (1 − |q|²/ρ²) + outer_twist |q|²/ρ²; elsewhere p; z (Xyrus02's, as Fractorium has it)",
+      k2D, kFixed, &bwraps,
+      {{"cellsize", 1.0, 0.0, 5.0},
+       {"space", 0.0, -2.0, 2.0},
+       {"gain", 1.0, -5.0, 5.0},
+       {"inner_twist", 0.0, -kPi, kPi},
+       {"outer_twist", 0.0, -kPi, kPi}});
+  add("juni",
+      "where 0 < r² ≤ w² (with invert: r² ≥ w² or r² = 0): |p′|^(stretch/power − 1)·r (cos α, sin α), α = (∠A(p) + "
+      "2πk)/power, k = trunc(|power|·Ψ), A the transform's affine map, p′ = (x, y, z/|power|); elsewhere (x, y); "
+      "z: |p′|^(stretch/power − 1)·z/|power| (w the weight; Joel Faber's plugin)",
+      k3D, kRandom, &juni,
+      {count("power", 2.0, -10.0, 10.0), count("invert", 0.0, 0.0, 1.0), {"stretch", 1.0, -3.0, 3.0}});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
   for (VariationInfo& info : c)
