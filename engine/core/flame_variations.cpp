@@ -2047,6 +2047,212 @@ VOXFLAME_VARIATION_TARGETS void juni(const VariationInput& in, double* __restric
   }
 }
 
+// Whittaker Courtney's acoth (JWildfire's): the complex inverse hyperbolic cotangent, ½ log((1 + 1/p)
+// / (1 − 1/p)), with its real and imaginary parts swapped, times 2/π. JWildfire's complex helpers
+// guard 1/|q|² by treating |q|² < 1e-100 as 1 and add 1e-20 to |q|² inside the logarithm.
+inline double guardedInverseNorm(double re, double im) {
+  const double m2 = re * re + im * im;
+  return m2 < 1e-100 ? 1.0 : 1.0 / m2;
+}
+VOXFLAME_VARIATION_2D(acoth, {
+  const double inv = guardedInverseNorm(x[i], y[i]);
+  const double re = x[i] * inv, im = -y[i] * inv;  // 1/p
+  // (1 + q) / (1 − q) for q = 1/p, as JWildfire divides.
+  const double nre = re + 1.0, nim = im, dre = -(re - 1.0), dim = -im;
+  const double dinv = guardedInverseNorm(dre, dim);
+  const double qre = (nim * dim + nre * dre) * dinv, qim = (nim * dre - nre * dim) * dinv;
+  const double logRe = 0.5 * std::log(qre * qre + qim * qim + 1e-20), logIm = std::atan2(qim, qre);
+  const double s = w * 2.0 / kPi * 0.5;
+  outX[i] += s * logIm;
+  outY[i] += s * logRe;
+})
+
+VOXFLAME_VARIATION_2D(biLinear, {
+  outX[i] += w * y[i];
+  outY[i] += w * x[i];
+})
+
+// Apophysis 7X's blur_zoom: a zoom blur towards (x, −y) of the parameters, as the plugin has the
+// signs: the point's offset from the centre grows by 1 + Ψ·length.
+VOXFLAME_VARIATION_TARGETS void blurZoom(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double length = P[0], cx = P[1], cy = P[2];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double zoom = 1.0 + length * laneUniform(rnd[i]);
+    outX[i] += w * ((x[i] - cx) * zoom + cx);
+    outY[i] += w * ((y[i] + cy) * zoom - cy);
+    outZ[i] += w * z[i];
+  }
+}
+
+// Larry Berlin's inflateZ_3: adds a z of 0.2 (π − φ) cos(3φ + y − x); x and y untouched.
+VOXFLAME_VARIATION_TARGETS void inflateZ3(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle = std::atan2(y[i], x[i]);
+    outZ[i] += w * 0.2 * (kPi - angle) * std::cos(3.0 * angle + (y[i] - x[i]));
+  }
+}
+
+// Michael Faber's eSeries work in elliptic coordinates (μ, ν): p = (cosh μ cos ν, sinh μ sin ν).
+// JWildfire's acosh is log(√(v² − 1) + v).
+struct Elliptic {
+  double mu, nu;
+};
+inline Elliptic toElliptic(double x, double y, double r2) {
+  const double t = r2 + 1.0, x2 = 2.0 * x;
+  const auto safeSqrt = [](double v) { return v <= 0.0 ? 0.0 : std::sqrt(v); };
+  const double xmax = std::max(1.0, (safeSqrt(t + x2) + safeSqrt(t - x2)) * 0.5);
+  const double mu = std::log(std::sqrt(xmax * xmax - 1.0) + xmax);
+  const double nu = std::acos(std::clamp(x / xmax, -1.0, 1.0));
+  return {mu, y < 0.0 ? -nu : nu};
+}
+
+// eJulia: the power-th roots in elliptic coordinates (μ/power, ν/power + 2πk/power, k =
+// ⌊Ψ·power⌋); a negative power inverts the point first (x/r² with r² → 1/r²).
+VOXFLAME_VARIATION_TARGETS void eJulia(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double power = countParam(P[0]);
+  for (std::size_t i = 0; i < n; ++i) {
+    double r2 = x[i] * x[i] + y[i] * y[i], px = x[i];
+    if (power < 0.0) {
+      r2 = 1.0 / r2;
+      px = x[i] * r2;
+    }
+    Elliptic e = toElliptic(px, y[i], r2);
+    e.nu = e.nu / power + kTwoPi / power * std::floor(laneUniform(rnd[i]) * power);
+    e.mu /= power;
+    outX[i] += w * std::cosh(e.mu) * std::cos(e.nu);
+    outY[i] += w * std::sinh(e.mu) * std::sin(e.nu);
+    outZ[i] += w * z[i];
+  }
+}
+
+// eMotion: μ moved by ∓move (towards the focus on ν's side), reflected through 0, ν turned by rotate.
+VOXFLAME_VARIATION_TARGETS void eMotion(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double move = P[0], rotate = P[1];
+  for (std::size_t i = 0; i < n; ++i) {
+    Elliptic e = toElliptic(x[i], y[i], x[i] * x[i] + y[i] * y[i]);
+    e.mu += e.nu < 0.0 ? move : -move;
+    if (e.mu <= 0.0) {
+      e.mu = -e.mu;
+      e.nu = -e.nu;
+    }
+    e.nu += rotate;
+    outX[i] += w * std::cosh(e.mu) * std::cos(e.nu);
+    outY[i] += w * std::sinh(e.mu) * std::sin(e.nu);
+    outZ[i] += w * z[i];
+  }
+}
+
+// The Voronoi distance of (ux, uy) from centre q among `count` centres: the largest ratio over the
+// others, 0 at q and 1 on a shared edge (slobo777's plugins).
+inline double voronoiDistance(const double (*centres)[2], int count, int q, double ux, double uy) {
+  double distance = -1.0e100;
+  for (int k = 0; k < count; ++k) {
+    if (k == q) continue;
+    const double px = centres[k][0] - centres[q][0], py = centres[k][1] - centres[q][1];
+    const double ratio = px == 0.0 && py == 0.0
+                             ? 1.0
+                             : 2.0 * ((ux - centres[q][0]) * px + (uy - centres[q][1]) * py) / (px * px + py * py);
+    distance = std::max(distance, ratio);
+  }
+  return distance;
+}
+
+// slobo777's hexes: the plane cut into hexagons of size cellsize; within its cell the point is
+// turned by rotate·2π about the centre and its Voronoi distance L mapped to L^power·scale, blending
+// the distance before and after the turn between 0.5 and 0.8 to hide the corners' "rosette".
+VOXFLAME_VARIATION_TARGETS void hexes(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                      double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double s = P[0], power = P[1], scale = P[3];
+  const double rotSin = std::sin(P[2] * kTwoPi), rotCos = std::cos(P[2] * kTwoPi);
+  constexpr double kRoot3 = 1.7320508075688772935;
+  const auto centre = [s](double hx, double hy, double* out) {
+    out[0] = (1.5 * hx - 1.5 * hy) * s;
+    out[1] = (kRoot3 / 2.0 * hx + kRoot3 / 2.0 * hy) * s;
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    outZ[i] += w * z[i];
+    if (s == 0.0) continue;  // the plugin's guard
+    const double ux = x[i], uy = y[i];
+    double hx = javaFloorToInt((ux / 3.0 + kRoot3 / 3.0 * uy) / s);
+    double hy = javaFloorToInt((-ux / 3.0 + kRoot3 / 3.0 * uy) / s);
+    double centres[9][2];
+    int k = 0;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj) centre(hx + di, hy + dj, centres[k++]);
+    int nearest = 0;
+    double nearestD2 = 1.0e100;
+    for (k = 0; k < 9; ++k) {
+      const double dx = centres[k][0] - ux, dy = centres[k][1] - uy, d2 = dx * dx + dy * dy;
+      if (d2 < nearestD2) nearestD2 = d2, nearest = k;
+    }
+    hx += nearest / 3 - 1;
+    hy += nearest % 3 - 1;
+    // The chosen hexagon first, then its six neighbours.
+    const double around[7][2] = {{0, 0}, {0, 1}, {1, 1}, {1, 0}, {0, -1}, {-1, -1}, {-1, 0}};
+    for (k = 0; k < 7; ++k) centre(hx + around[k][0], hy + around[k][1], centres[k]);
+    const double l1 = voronoiDistance(centres, 7, 0, ux, uy);
+    const double dx = ux - centres[0][0], dy = uy - centres[0][1];
+    const double target = std::pow(l1 + 1e-100, power) * scale;
+    double vx = dx * rotCos + dy * rotSin, vy = -dx * rotSin + dy * rotCos;
+    const double l2 = voronoiDistance(centres, 7, 0, vx + centres[0][0], vy + centres[0][1]);
+    const double l = std::max(l1, l2);
+    const double r = l < 0.5   ? target / l1
+                     : l > 0.8 ? target / l2
+                               : ((target / l1) * (0.8 - l) + (target / l2) * (l - 0.5)) / 0.3;
+    vx = vx * r + centres[0][0];
+    vy = vy * r + centres[0][1];
+    outX[i] += w * vx;
+    outY[i] += w * vy;
+  }
+}
+
+// eralex61's GlynnSim1: inside the circle of `radius`, and inside a small circle of radius1 at angle
+// phi1 (degrees) on its rim, points are replaced by random ones on a ring of that small circle
+// (thickness its inner share); outside, a point is mirrored into the circle with probability
+// contrast·(radius/r)^|pow| first.
+VOXFLAME_VARIATION_TARGETS void glynnSim1(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double radius = P[0], radius1 = P[1], thickness = P[3], absPow = std::abs(P[4]), contrast = P[5];
+  const double phi1 = kPi * P[2] / 180.0;
+  const double x1 = radius * std::cos(phi1), y1 = radius * std::sin(phi1);
+  for (std::size_t i = 0; i < n; ++i) {
+    // The plugin draws only what a branch uses; all three are drawn here, in its order.
+    const double pick = laneUniform(rnd[i]), ringU = laneUniform(rnd[i]), ringA = laneUniform(rnd[i]);
+    const double r = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    const double alpha = radius / r;
+    bool onRing = r < radius;
+    double px = x[i], py = y[i];
+    double u = pick, a = ringU;
+    if (!onRing) {
+      if (pick <= contrast * std::pow(alpha, absPow)) {
+        px = alpha * alpha * x[i];
+        py = alpha * alpha * y[i];
+      }
+      onRing = (px - x1) * (px - x1) + (py - y1) * (py - y1) < radius1 * radius1;
+      u = ringU;
+      a = ringA;
+    }
+    if (onRing) {
+      const double ring = radius1 * (thickness + (1.0 - thickness) * u);
+      px = ring * std::cos(kTwoPi * a) + x1;
+      py = ring * std::sin(kTwoPi * a) + y1;
+    }
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * z[i];
+  }
+}
+
 // Apophysis 3D's flatten: the transform's z is 0. It adds nothing itself; the chaos game sets z to
 // 0 after a transform's variations (before them for pre_flatten, after the post_ ones for
 // post_flatten) when one of them is flatten.
@@ -2483,11 +2689,47 @@ std::vector<VariationInfo> buildCatalogue() {
       "z: |p′|^(stretch/power − 1)·z/|power| (w the weight; Joel Faber's plugin)",
       k3D, kRandom, &juni,
       {count("power", 2.0, -10.0, 10.0), count("invert", 0.0, 0.0, 1.0), {"stretch", 1.0, -3.0, 3.0}});
+  add("acoth",
+      "(2/π)(Im w, Re w), z for w = acoth(x + iy) = ½ log((1 + 1/p)/(1 − 1/p)): real and imaginary parts swapped "
+      "(Whittaker Courtney's, JWildfire's)",
+      k2D, kFixed, &acoth);
+  add("bi_linear", "(y, x, z)", k2D, kFixed, &biLinear);
+  add("blur_zoom", "((x − cx)(1 + Ψ·length) + cx, (y + cy)(1 + Ψ·length) − cy, z), (cx, cy) = (x, y) of the parameters",
+      k2D, kRandom, &blurZoom, {{"length", 0.24, 0.0, 2.0}, {"x", 0.2, -2.0, 2.0}, {"y", -0.1, -2.0, 2.0}});
+  add("inflateZ_3", "(0, 0, 0.2 (π − φ) cos(3φ + y − x)): adds to z only (Larry Berlin's)", k3D, kFixed, &inflateZ3);
+  add("eJulia",
+      "(cosh μ′ cos ν′, sinh μ′ sin ν′), z; (μ, ν) the elliptic coordinates of p (of p/r² for a negative power), "
+      "μ′ = μ/power, ν′ = (ν + 2π⌊Ψ·power⌋)/power (Michael Faber's)",
+      k2D, kRandom, &eJulia, {count("power", 2.0, -10.0, 10.0)});
+  add("eMotion",
+      "(cosh μ′ cos ν′, sinh μ′ sin ν′), z; (μ, ν) the elliptic coordinates of p, μ′ = μ + move for ν < 0 else μ − "
+      "move, reflected (μ′, ν) → (−μ′, −ν) where μ′ ≤ 0, then ν′ = ν + rotate (Michael Faber's)",
+      k2D, kFixed, &eMotion, {{"move", 0.0, -2.0, 2.0}, {"rotate", 0.0, -kPi, kPi}});
+  add("hexes",
+      "C + R(−2π·rotate)(p − C)·L^power·scale/L, z: C the centre of p's hexagon (size cellsize), L its Voronoi "
+      "distance (blended with that after the turn between 0.5 and 0.8); nothing for cellsize 0 (slobo777's)",
+      k2D, kFixed, &hexes,
+      {{"cellsize", 1.0, 0.0, 5.0},
+       {"power", 1.0, -2.0, 2.0},
+       {"rotate", 0.166, -1.0, 1.0},
+       {"scale", 1.0, -2.0, 2.0}});
+  add("glynnSim1",
+      "inside the circle of radius, and where p (mirrored into it, p·radius²/r², with chance "
+      "contrast·(radius/r)^|pow|) "
+      "falls in the circle of radius1 at angle phi1° on its rim: a random point of that circle's ring (inner share "
+      "thickness); elsewhere p (or its mirror); z (eralex61's)",
+      k2D, kRandom, &glynnSim1,
+      {{"radius", 1.0, 0.0, 3.0},
+       {"radius1", 0.1, 0.0, 1.0},
+       {"phi1", 110.0, -360.0, 360.0},
+       {"thickness", 0.1, 0.0, 1.0},
+       {"pow", 1.5, -5.0, 5.0},
+       {"contrast", 0.5, 0.0, 1.0}});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
-        info.name == "flatten")
+        info.name == "flatten" || info.name == "inflateZ_3")
       info.mapsXY = false;
   return c;
 }
@@ -2664,7 +2906,8 @@ std::string variationsMarkdown() {
         "7X,\nJWildfire and Fractorium: a transform applies its `pre_` terms one after the other to the point after "
         "its\naffine map, then sums its other variations, then applies its `post_` terms to the sum, before its "
         "post map.\nSuch a term replaces the coordinates its variation maps (x and y for a 2D one, z too for a 3D "
-        "one, z alone\nfor zscale, zcone, zblur, ztranslate and flatten) by weight · V(p) and keeps the others; a "
+        "one, z alone\nfor zscale, zcone, zblur, ztranslate, inflateZ_3 and flatten) by weight · V(p) and keeps the "
+        "others; a "
         "variation whose\nresult does not depend on the point (the blurs, ztranslate) adds weight · V(p) instead. "
         "`pre_blur` is\nflam3's own: a Gaussian blur added to the point first.\n\n"
      << "| name | kind | parameters (default, slider range) | formula |\n"
