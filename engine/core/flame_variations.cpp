@@ -2253,6 +2253,54 @@ VOXFLAME_VARIATION_TARGETS void glynnSim1(const VariationInput& in, double* __re
   }
 }
 
+// cropn (Fractorium's, as its default, non-flam3-compatible mode draws it): keeps the point inside
+// a regular polygon of |power| sides (at least 2) and circumradius-like radius, and moves what lies
+// outside onto the polygon's edge, pushed out by Ψ·scatterdist, or with zero 0 to the origin; a
+// negative power keeps the outside instead. Fractorium's flam3-compatible mode swaps zero's meaning.
+VOXFLAME_VARIATION_TARGETS void cropn(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                      double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double power = P[0], radius = P[1], scatter = P[2];
+  const bool zero = P[3] == 0.0;
+  const double alpha = kTwoPi / std::max(2.0, std::abs(power)), half = alpha / 2.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = laneUniform(rnd[i]);
+    const double r2 = x[i] * x[i] + y[i] * y[i];
+    const double around = std::fmod(std::atan2(y[i], x[i]) + kPi, alpha);
+    const double c = std::cos(around < half ? around : alpha - around);
+    const double reach = c > 0.0 ? radius / c : 1.0;
+    double s = w;
+    if ((r2 > reach * reach) == (power > 0.0)) {
+      const double r = std::sqrt(r2);
+      s = zero ? 0.0 : (reach + u * scatter) * w / (r == 0.0 ? kFractoriumEps : r);
+    }
+    outX[i] += s * x[i];
+    outY[i] += s * y[i];
+    outZ[i] += w * z[i];
+  }
+}
+
+// Xyrus02's julian3Dx (Apophysis plugin, Fractorium): julian3Dz whose angle is taken after a second
+// affine map (a b e / c d f), as julian2 does.
+VOXFLAME_VARIATION_TARGETS void julian3Dx(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double power = countParam(P[1]), absn = std::abs(power), cn = (P[0] / power - 1.0) / 2.0;
+  const double a = P[2], b = P[3], c = P[4], d = P[5], e = P[6], f = P[7];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double zz = z[i] / absn;
+    const double r2 = x[i] * x[i] + y[i] * y[i];
+    const double radius = w * std::pow(r2 + zz * zz, cn);
+    const double px = a * x[i] + b * y[i] + e, py = c * x[i] + d * y[i] + f;
+    const double root = std::trunc(laneUniform(rnd[i]) * absn);
+    const double alpha = (std::atan2(py, px) + kTwoPi * root) / power;
+    const double gamma = radius * std::sqrt(r2);
+    outX[i] += gamma * std::cos(alpha);
+    outY[i] += gamma * std::sin(alpha);
+    outZ[i] += radius * zz;
+  }
+}
+
 // Apophysis 3D's flatten: the transform's z is 0. It adds nothing itself; the chaos game sets z to
 // 0 after a transform's variations (before them for pre_flatten, after the post_ ones for
 // post_flatten) when one of them is flatten.
@@ -2725,6 +2773,27 @@ std::vector<VariationInfo> buildCatalogue() {
        {"thickness", 0.1, 0.0, 1.0},
        {"pow", 1.5, -5.0, 5.0},
        {"contrast", 0.5, 0.0, 1.0}});
+  add("cropn",
+      "p inside the polygon of |power| sides (at least 2) reaching radius at its edges' middles; outside: p·(e + "
+      "Ψ·scatterdist)/|p| with e the edge's distance in p's direction, or the origin with zero 0; power < 0 keeps "
+      "the outside; z (Fractorium's default mode)",
+      k2D, kRandom, &cropn,
+      {{"power", 5.0, -10.0, 10.0},
+       {"radius", 1.0, 0.0, 5.0},
+       {"scatterdist", 0.0, -1.0, 1.0},
+       count("zero", 0.0, 0.0, 1.0)});
+  add("julian3Dx",
+      "ρ^(dist/power − 1)·(r cos α, r sin α, z/|power|), ρ = |(x, y, z/|power|)|, α = (∠q + 2πk)/power, q = (a x + b y "
+      "+ e, c x + d y + f), k = trunc(|power|·Ψ) (Xyrus02's)",
+      k3D, kRandom, &julian3Dx,
+      {{"dist", 1.0, -3.0, 3.0},
+       count("power", 2.0, -10.0, 10.0),
+       {"a", 1.0, -2.0, 2.0},
+       {"b", 0.0, -2.0, 2.0},
+       {"c", 0.0, -2.0, 2.0},
+       {"d", 1.0, -2.0, 2.0},
+       {"e", 0.0, -2.0, 2.0},
+       {"f", 0.0, -2.0, 2.0}});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
   for (VariationInfo& info : c)
