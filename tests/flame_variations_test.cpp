@@ -696,6 +696,16 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        0x2545F491u,
        {-0.7256467298286722, 0.49391683824705784, 0.19209933917593336}},
+      // The hypertiles read p and q as any real, as Fractorium does: p = 3.15 with n = 3, q = 0.5 (the corpus's
+      // values; ρ = 0.5), and a p that is not whole, whose random turn is then any angle, 2πΨ.
+      {"hypertile",
+       {3.15, 7.0, 3.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.5832628343865393, -0.3061578314256303, 0.4}},
+      {"hypertile2", {3.0, 0.5}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.07077462312147847, 0.7039001220256725, 0.4}},
+      {"hypertile2", {3.5, 5.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.6551667666022087, 0.015881484045137277, 0.4}},
   };
   return cases;
 }

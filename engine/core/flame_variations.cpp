@@ -1832,14 +1832,22 @@ VOXFLAME_VARIATION_2D(twoface, {
 })
 
 // Zueuk's hyperbolic tilings: a Möbius map of the disc that moves by one tile of the {p, q} tiling.
-// The distance of a tile's centre for p and q (both at least 3, whole, as JWildfire reads them).
+// p and q are read as Fractorium reads them, any real number (0 as its epsilon): the corpus's
+// Fractorium flames use q = 0.5. JWildfire rounds them and takes at least 3, so its files hold
+// such values already.
+inline double tilingValue(double value) {
+  return value == 0.0 ? kFractoriumEps : value;
+}
+// The distance of a tile's centre for p and q.
 inline double hypertileDistance(double p, double q) {
   const double cp = std::cos(kTwoPi / p);
   const double r2 = 1.0 - (cp - 1.0) / (cp + std::cos(kTwoPi / q));
   return r2 > 0.0 ? 1.0 / std::sqrt(r2) : 1.0;
 }
-inline double tilingCount(double value) {
-  return std::max(3.0, std::round(value));
+// The plugins' random turn, a random whole multiple of 2π/p: one of |p| directions for a whole p;
+// for another p the plugins' huge random multiple (a 32-bit integer) amounts to any angle.
+inline double tilingTurn(double u, double p) {
+  return p == std::round(p) ? std::trunc(u * std::abs(p)) * kTwoPi / p : kTwoPi * u;
 }
 
 // The plugins' move: (p + c̄) / (c p + 1) for p = x + iy and c = re + i·im, times the weight.
@@ -1855,8 +1863,8 @@ inline double tilingCount(double value) {
 VOXFLAME_VARIATION_TARGETS void hypertile(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                           double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double p = tilingCount(P[0]), q = tilingCount(P[1]);
-  const double a = std::round(P[2]) * kTwoPi / p, r = hypertileDistance(p, q);
+  const double p = tilingValue(P[0]), q = tilingValue(P[1]);
+  const double a = P[2] * kTwoPi / p, r = hypertileDistance(p, q);
   const double re = r * std::cos(a), im = r * std::sin(a);
   for (std::size_t i = 0; i < n; ++i) {
     hypertileMap(x[i], y[i], re, im, w, outX[i], outY[i]);
@@ -1864,15 +1872,16 @@ VOXFLAME_VARIATION_TARGETS void hypertile(const VariationInput& in, double* __re
   }
 }
 
-// hypertile1: the move towards one of the p neighbours, picked at random (JWildfire draws an integer
-// and multiplies it by 2π/p, which is the same as a whole Ψ·p).
+// hypertile1: the move towards one of the p neighbours, picked at random: ⌊Ψ·trunc(p)⌋·2π/p as
+// Fractorium's default mode draws it (JWildfire's random integer times 2π/p is the same for its
+// whole p).
 VOXFLAME_VARIATION_TARGETS void hypertile1(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                            double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double p = tilingCount(P[0]), q = tilingCount(P[1]);
-  const double r = hypertileDistance(p, q);
+  const double p = tilingValue(P[0]), q = tilingValue(P[1]);
+  const double r = hypertileDistance(p, q), whole = std::trunc(p);
   for (std::size_t i = 0; i < n; ++i) {
-    const double a = std::trunc(laneUniform(rnd[i]) * p) * kTwoPi / p;
+    const double a = std::floor(laneUniform(rnd[i]) * whole) * kTwoPi / p;
     hypertileMap(x[i], y[i], r * std::cos(a), r * std::sin(a), w, outX[i], outY[i]);
     outZ[i] += w * z[i];
   }
@@ -1882,14 +1891,14 @@ VOXFLAME_VARIATION_TARGETS void hypertile1(const VariationInput& in, double* __r
 VOXFLAME_VARIATION_TARGETS void hypertile2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                            double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double p = tilingCount(P[0]), q = tilingCount(P[1]);
+  const double p = tilingValue(P[0]), q = tilingValue(P[1]);
   const double r = hypertileDistance(p, q);
   for (std::size_t i = 0; i < n; ++i) {
     const double a = x[i] + r, b = y[i];
     const double c = r * x[i] + 1.0, d = r * y[i];
     const double mx = a * c + b * d, my = b * c - a * d;
     const double vr = w / (c * c + d * d);
-    const double turn = std::trunc(laneUniform(rnd[i]) * p) * kTwoPi / p;
+    const double turn = tilingTurn(laneUniform(rnd[i]), p);
     const double s = std::sin(turn), co = std::cos(turn);
     outX[i] += vr * (mx * co + my * s);
     outY[i] += vr * (my * co - mx * s);
@@ -1902,7 +1911,7 @@ VOXFLAME_VARIATION_TARGETS void hypertile2(const VariationInput& in, double* __r
 VOXFLAME_VARIATION_TARGETS void hypertile3D2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                              double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double p = tilingCount(P[0]), q = tilingCount(P[1]);
+  const double p = tilingValue(P[0]), q = tilingValue(P[1]);
   const double pa = kTwoPi / p, qa = kTwoPi / q;
   const double t = -(std::cos(pa) - 1.0) / (std::cos(pa) + std::cos(qa));
   const double cx = t > 0.0 ? 1.0 / std::sqrt(1.0 + t) : 1.0;
@@ -1911,7 +1920,7 @@ VOXFLAME_VARIATION_TARGETS void hypertile3D2(const VariationInput& in, double* _
     const double r2 = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
     const double mx = x[i] * sx - cx * (-r2 - 1.0), my = y[i] * sy;
     const double vr = w / (c2 * r2 + 2.0 * cx * x[i] + 1.0);
-    const double turn = std::trunc(laneUniform(rnd[i]) * p) * pa;
+    const double turn = tilingTurn(laneUniform(rnd[i]), p);
     const double s = std::sin(turn), co = std::cos(turn);
     outX[i] += vr * (mx * co + my * s);
     outY[i] += vr * (my * co - mx * s);
@@ -2692,16 +2701,18 @@ std::vector<VariationInfo> buildCatalogue() {
   add("twoface", "(x, y)/r² for x > 0, else (x, y); z", k2D, kFixed, &twoface);
   add("hypertile",
       "(p + c̄)/(c p + 1) with p = x + iy, c = ρ e^(2πi·n/p), ρ = 1/√(1 + (1 − cos 2π/p)/(cos 2π/p + cos 2π/q)); z "
-      "(Zueuk's: one tile of the {p, q} hyperbolic tiling; p, q at least 3)",
-      k2D, kFixed, &hypertile, {count("p", 3.0, 3.0, 10.0), count("q", 7.0, 3.0, 10.0), count("n", 1.0, 0.0, 10.0)});
-  add("hypertile1", "hypertile with n = trunc(Ψ·p): a random neighbouring tile", k2D, kRandom, &hypertile1,
-      {count("p", 3.0, 3.0, 10.0), count("q", 7.0, 3.0, 10.0)});
-  add("hypertile2", "(p + ρ)/(ρ p + 1) turned by −2π·trunc(Ψ·p)/p, p = x + iy, ρ as hypertile; z (Zueuk's)", k2D,
-      kRandom, &hypertile2, {count("p", 3.0, 3.0, 10.0), count("q", 7.0, 3.0, 10.0)});
+      "(Zueuk's: one tile of the {p, q} hyperbolic tiling; p, q and n real, as Fractorium reads them)",
+      k2D, kFixed, &hypertile, {{"p", 3.0, 3.0, 10.0}, {"q", 7.0, 3.0, 10.0}, {"n", 1.0, 0.0, 10.0}});
+  add("hypertile1", "hypertile with n = ⌊Ψ·trunc(p)⌋: a random neighbouring tile", k2D, kRandom, &hypertile1,
+      {{"p", 3.0, 3.0, 10.0}, {"q", 7.0, 3.0, 10.0}});
+  add("hypertile2",
+      "(p + ρ)/(ρ p + 1) turned by −2π·trunc(Ψ·|p|)/p (by −2πΨ for a p that is not whole), p = x + iy, ρ as "
+      "hypertile; z (Zueuk's)",
+      k2D, kRandom, &hypertile2, {{"p", 3.0, 3.0, 10.0}, {"q", 7.0, 3.0, 10.0}});
   add("hypertile3D2",
-      "(x (1 + c²) + c (|p|² + 1), y (1 − c²), z (1 − c²)) / (c² |p|² + 2cx + 1), x and y turned by −2π·trunc(Ψ·p)/p; "
+      "(x (1 + c²) + c (|p|² + 1), y (1 − c²), z (1 − c²)) / (c² |p|² + 2cx + 1), x and y turned as hypertile2; "
       "c = 1/√(1 + (1 − cos 2π/p)/(cos 2π/p + cos 2π/q)) (Zueuk's)",
-      k3D, kRandom, &hypertile3D2, {count("p", 3.0, 3.0, 10.0), count("q", 7.0, 3.0, 10.0)});
+      k3D, kRandom, &hypertile3D2, {{"p", 3.0, 3.0, 10.0}, {"q", 7.0, 3.0, 10.0}});
   add("rotate_x",
       "(x, y cos α + z sin α, z cos α − y sin α), α = weight·π/2: the weight is the angle, so this adds the turned "
       "point itself (Apophysis 7X's; pre_ and post_ forms turn the point)",
