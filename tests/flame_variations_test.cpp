@@ -20,6 +20,7 @@
 
 #include "core/chaos_game.h"
 #include "core/error.h"
+#include "core/flame_noise.h"
 #include "core/flame_variations.h"
 #include "core/random.h"
 #include "core/scene.h"
@@ -494,6 +495,217 @@ const std::vector<PointCase>& pointCases() {
       // glynnia: Ψ = 0.879466 > ½ takes the square-root branch; inside the unit circle it is mirrored.
       {"glynnia", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.5828419506072339, 0.3843237429403043, 0.4}},
       {"glynnia", {}, {1.2, 0.5, 0.5}, 0.8, 0x2545F491u, {0.8944271909999161, -0.1788854381999832, 0.4}},
+      // JWildfire / Apophysis / Fractorium plugins, worked out with a separate implementation of the
+      // plugins' published algorithms (the simplex noise with the plugin's tables for crackle).
+      // crackle: Ψ = 0.879466, 0.545326, 0.394069, 0.000355 put U at (0.00153, 0.68591), in cell (0, 2)
+      // of side 0.3, already the nearest centre; L = 0.156682. Seed 0x0BADF00D: U = (−0.49485, −0.21169),
+      // nearest centre in the block's fifth cell, so the block is re-centred on cell (−4, −1).
+      {"crackle",
+       {0.6, 0.35, 0.7, 1.2, 0.4},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.004901611293635042, 0.5664901996346233, 0.4}},
+      {"crackle",
+       {0.25, -0.4, 1.5, 0.9, -1.3},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x0BADF00Du,
+       {-0.3998397608345449, -0.1170023198915457, 0.4}},
+      // smartcrop: a rounded pentagon of radius 0.5 (edge jittered: 0.596426 at φ) crops |p| = 0.76158 back to
+      // 0.596426 + c (Ψ·0.2 + 0.05), turned by 0.25·2π/5; a sector of 1.5π (the point at 5.35571 lies
+      // outside) turns it by Ψ < ½ to −(Ψ·0.3 + 0.05 + jitter)π; inside, the point stays; a negative radius
+      // crops the inside, to the origin with cropmode 0.
+      {"smartcrop",
+       {5.0, 0.5, 0.3, 1.5, 0.8, 0.1, 0.2, 0.05, 0.25, 1.0, 2.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.4072074049875384, -0.4651723604864474, 0.4}},
+      {"smartcrop",
+       {1.5, 1.0, 0.0, 1.0, 1.0, 0.1, 0.3, 0.05, 0.0, 1.0, 2.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.3675974028338066, -0.48587256501045634, 0.4}},
+      {"smartcrop", {}, {0.1, 0.2, 0.5}, 0.8, 0x2545F491u, {0.08000000000000002, 0.16000000000000003, 0.4}},
+      {"smartcrop",
+       {4.0, -0.5, 0.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 2.0},
+       {0.1, 0.2, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.0, 0.0, 0.0}},
+      // epispiral_wf, blur_circle, blur_linear, exblur, twoface, the hypertiles, the rotations, foci_3D,
+      // circlecrop and elliptic's modes, from JWildfire's formulas worked out separately; Ψ as above (seed
+      // 0x0BADF00D: 0.000691, ...). Hypertile1, 2 and 3D2 take tile trunc(Ψ·p) = 4 of 5; elliptic mode 1 takes
+      // the sign at random (− for Ψ = 0.879466, + for 0.000691), mode 2 is mode 0 computed without cancellation.
+      {"epispiral_wf", {3.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.45194805194805127, 1.054545454545453, 0.4}},
+      {"blur_circle", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.6044765572349056, 0.0568742171561342, 0.4}},
+      {"blur_circle", {}, {0.3, -0.7, 0.5}, 0.8, 0x0BADF00Du, {-0.6373129713636246, 0.4817294141316366, 0.4}},
+      {"blur_linear", {1.7, -0.6}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {1.227162737390796, -1.2353543644723874, 0.4}},
+      {"exblur",
+       {0.3, 0.4, 0.1, 0.2, -0.3},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.03325039924262233, -0.11670179056050381, 0.11786596820161038}},
+      {"twoface", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.41379310344827586, -0.9655172413793104, 0.4}},
+      {"twoface", {}, {-0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.24, -0.5599999999999999, 0.4}},
+      {"hypertile",
+       {4.0, 6.0, 2.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {-0.4838346073060228, -0.4408113341984156, 0.4}},
+      {"hypertile1", {5.0, 4.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.5449061538269068, 0.021860090720345202, 0.4}},
+      {"hypertile2", {5.0, 4.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.45097812516045593, 0.5602137803897976, 0.4}},
+      {"hypertile3D2",
+       {5.0, 4.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.4506737885775983, 0.5994951957858619, 0.17383002843298692}},
+      {"rotate_x", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.3, 0.25921636208511356, 0.8202480585940811}},
+      {"rotate_y", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.3828231598350925, -0.7, 0.43982545207601975}},
+      {"rotate_z", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.5730344630941232, -0.5016288509510092, 0.5}},
+      {"foci_3D",
+       {},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.6511603261294825, -1.3775403752948536, 1.0251628439551042}},
+      {"foci_3D",
+       {},
+       {0.3, -0.7, 0.0},
+       0.8,
+       0x2545F491u,
+       {0.3274181085321618, -0.6926583915004032, -0.9882583646186008}},
+      {"circlecrop",
+       {0.5, 0.1, -0.1, 0.6, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.2932379142936634, -0.6797137428809902, 0.4}},
+      {"circlecrop", {0.5, 0.1, -0.1, 0.6, 1.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.0, 0.0, 0.4}},
+      {"circlecrop", {1.5, 0.1, -0.1, 0.6, 1.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.26, -0.58, 0.4}},
+      {"elliptic", {1.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.12515028302999878, -0.27505931981614523, 0.4}},
+      {"elliptic", {2.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.1251502830299988, -0.2750593198161452, 0.4}},
+      {"elliptic", {2.0}, {0.01, 0.02, 0.5}, 0.8, 0x2545F491u, {0.005092024626556218, 0.007252504813388207, 0.4}},
+      {"elliptic", {1.0}, {0.3, -0.7, 0.5}, 0.8, 0x0BADF00Du, {0.12515028302999878, 0.27505931981614523, 0.4}},
+      // bwraps: (0.3, −0.7) lies in the bubble of its cell of side 1 (centre (0.5, −0.5)), not in that of side
+      // 0.5; juni: power −3, the angle after the affine map above, root trunc(3Ψ) = 2; outside the circle of
+      // radius 0.8 (or inside it with invert) the point stays, and z is scaled either way.
+      {"bwraps",
+       {1.0, 0.2, 1.3, 0.7, -0.4},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.18711953726307662, -0.5298810222027049, 0.4}},
+      {"bwraps",
+       {0.5, 0.2, 1.3, 0.7, -0.4},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.2576603463098028, -0.5890385355508926, 0.4}},
+      {"juni",
+       {-3.0, 0.0, 0.7},
+       {0.9, 0.1, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.7200000000000001, 0.08000000000000002, 0.1476266684691846}},
+      {"juni",
+       {-3.0, 0.0, 0.7},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {-0.6542170877066572, 0.5079347945187149, 0.18125754751495843}},
+      {"juni", {-3.0, 1.0, 0.7}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.24, -0.5599999999999999, 0.18125754751495843}},
+      // acoth, bi_linear, blur_zoom, inflateZ_3 (z alone), eJulia and eMotion (elliptic coordinates), hexes
+      // (first case: nearest the block's centre hexagon, L between 0.8 and 1; second: re-centred, L blended)
+      // and glynnSim1 (inside the circle: on the small circle's ring; outside: kept or mirrored, then the ring
+      // where it falls in the small circle), from JWildfire's formulas worked out separately.
+      {"acoth", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.4742188632621939, 0.1017990137206265, 0.4}},
+      {"bi_linear", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.5599999999999999, 0.24, 0.4}},
+      {"blur_zoom",
+       {0.5, 0.1, 0.4},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.3103573131561279, -0.6655359697341918, 0.4}},
+      {"inflateZ_3", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.0, 0.0, -0.14682035288794443}},
+      {"eJulia", {3.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.6742587660201982, -0.10259355437551256, 0.4}},
+      {"eJulia", {-2.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.7436082438654984, -0.25968438336838834, 0.4}},
+      {"eMotion", {0.3, 0.4}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.7264217540024673, -0.7219490322388475, 0.4}},
+      {"eMotion", {0.9, -0.2}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.09172914592426841, -1.8381928841612785, 0.4}},
+      {"hexes",
+       {0.7, 0.6, 0.1, 1.2},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.4869503110297677, -0.756662276556673, 0.4}},
+      {"hexes",
+       {0.3, 1.4, -0.2, 0.8},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.2932063530153508, -0.6882645215381803, 0.4}},
+      {"glynnSim1",
+       {1.0, 0.3, -60.0, 0.2, 1.5, 0.5},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.19187724063948283, -0.7537474492616099, 0.4}},
+      {"glynnSim1",
+       {0.5, 0.3, -60.0, 0.2, 1.5, 0.5},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.07989095970011549, -0.25211343962968086, 0.4}},
+      {"glynnSim1",
+       {0.5, 0.1, -60.0, 0.2, 1.5, 0.5},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x0BADF00Du,
+       {0.10344827586206898, -0.24137931034482762, 0.4}},
+      {"glynnSim1",
+       {0.6, 0.3, -65.0, 0.2, 1.5, 0.99},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.08274772533565118, -0.3407310158934973, 0.4}},
+      // cropn (Fractorium's default mode): outside the pentagon (edge 0.582108 in p's direction) onto the edge
+      // pushed out by Ψ·0.3, or to the origin with zero 0; power −3 keeps the outside; julian3Dx: power −3,
+      // the angle after its own affine map, root trunc(3Ψ) = 2.
+      {"cropn",
+       {5.0, 0.5, 0.3, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.2665881355009755, -0.6220389828356094, 0.4}},
+      {"cropn", {5.0, 0.5, 0.3, 0.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.0, 0.0, 0.4}},
+      {"cropn", {-3.0, 0.5, 0.3, 1.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.24, -0.5599999999999999, 0.4}},
+      {"cropn",
+       {-3.0, 0.5, 0.3, 1.0},
+       {0.1, 0.2, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.27360163115064207, 0.5472032623012841, 0.4}},
+      {"julian3Dx",
+       {1.4, -3.0, 0.9, 0.3, -0.2, 1.1, 0.15, -0.1},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {-0.7256467298286722, 0.49391683824705784, 0.19209933917593336}},
+      // The hypertiles read p and q as any real, as Fractorium does: p = 3.15 with n = 3, q = 0.5 (the corpus's
+      // values; ρ = 0.5), and a p that is not whole, whose random turn is then any angle, 2πΨ.
+      {"hypertile",
+       {3.15, 7.0, 3.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.5832628343865393, -0.3061578314256303, 0.4}},
+      {"hypertile2", {3.0, 0.5}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.07077462312147847, 0.7039001220256725, 0.4}},
+      {"hypertile2", {3.5, 5.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.6551667666022087, 0.015881484045137277, 0.4}},
   };
   return cases;
 }
@@ -832,6 +1044,15 @@ TEST(VariationCatalogue, CommittedMarkdownMatchesTheCatalogue) {
   text << file.rdbuf();
   EXPECT_TRUE(text.str() == variationsMarkdown()) << "presets/VARIATIONS.md is out of date: regenerate it with "
                                                      "`voxflame list --variations --markdown > presets/VARIATIONS.md`";
+}
+
+// slobo777's simplex noise (crackle's cell centres), at points worked out with a separate
+// implementation of the plugin's algorithm and tables; 0 at lattice points.
+TEST(SimplexNoise, MatchesThePluginsNoise) {
+  EXPECT_NEAR(simplexNoise3D(0.3, -1.2, 2.7), -0.3462575582378816, 1e-13);
+  EXPECT_NEAR(simplexNoise3D(5.1, 2.2, -3.3), -0.024981563299535242, 1e-13);
+  EXPECT_EQ(simplexNoise3D(0.0, 0.0, 0.0), 0.0);
+  EXPECT_TRUE(std::isfinite(simplexNoise3D(1e300, -1e300, std::numeric_limits<double>::quiet_NaN())));
 }
 
 }  // namespace

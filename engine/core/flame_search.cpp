@@ -34,11 +34,14 @@ constexpr std::array<std::string_view, 40> kFavourites = {
     "disc",    "spiral",    "horseshoe", "polar",   "handkerchief", "heart",       "hyperbolic", "diamond",
     "ex",      "bubble",    "eyefish",   "fisheye", "ngon",         "perspective", "rectangles", "pie",
     "popcorn", "waves",     "power",     "cosine",  "exponential",  "bent",        "cylinder",   "linear3D"};
-// Variations that smear points (noise, blurs) or only act on depth: fine as a second term, but
-// alone they make a formless cloud or flatten the pattern, so they are never a transform's only term.
-constexpr std::array<std::string_view, 16> kNeverAlone = {
-    "noise",      "blur",  "gaussian_blur", "pre_blur",    "square",    "blur3D",        "radial_blur", "zscale",
-    "ztranslate", "zcone", "zblur",         "blur_circle", "blur_zoom", "blur_pixelize", "crackle",     "pre_zscale"};
+// Variations that smear points (noise, blurs), only act on depth, only turn the point (rotate_*,
+// whose weight is an angle) or only crop it: fine as a second term, but alone they make a formless
+// cloud, flatten the pattern or leave the affine map bare, so they are never a transform's only term.
+constexpr std::array<std::string_view, 25> kNeverAlone = {
+    "noise",    "blur",       "gaussian_blur", "pre_blur", "square",      "blur3D",    "radial_blur",
+    "zscale",   "ztranslate", "zcone",         "zblur",    "blur_circle", "blur_zoom", "blur_pixelize",
+    "crackle",  "pre_zscale", "blur_linear",   "exblur",   "inflateZ_3",  "rotate_x",  "rotate_y",
+    "rotate_z", "smartcrop",  "circlecrop",    "cropn"};
 
 bool contains(const auto& list, std::string_view name) {
   return std::find(list.begin(), list.end(), name) != list.end();

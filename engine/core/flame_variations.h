@@ -19,7 +19,7 @@
 // JWildfire and Fractorium have them: a transform applies its pre_ terms in order to the point
 // after its affine map, before its other variations, and its post_ terms in order to their sum,
 // before its post-affine. Such a term replaces the coordinates its variation maps (x and y for a 2D
-// one, z too for a 3D one, z alone for zscale/zcone/zblur/ztranslate/flatten) by weight · V(p)
+// one, z too for a 3D one, z alone for zscale/zcone/zblur/ztranslate/inflateZ_3/flatten) by weight · V(p)
 // and keeps the others, except that a variation whose result does not depend on the point (blur,
 // noise-like ones: `additive`) adds weight · V(p) instead, which is Fractorium's rule ("assign" vs
 // "sum"). The catalogue's own pre_blur (flam3's) is such an additive Gaussian blur.

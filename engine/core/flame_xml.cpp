@@ -180,6 +180,12 @@ std::string withoutCopyMark(std::string_view name) {
   return std::string(name);
 }
 
+// Values an editor works out from a variation's parameters and writes beside them: Fractorium
+// writes auger's half_scale (scale / 2). They carry nothing of their own.
+bool isDerivedParam(const VariationInfo& info, std::string_view param) {
+  return info.name == "auger" && param == "half_scale";
+}
+
 // JWildfire stores a motion curve beside any variation parameter (`<variation>_<parameter>_enabled`,
 // `_view_xmin`, `_x0`, ...) and a variation's order as `<variation>_fx_priority`; pugixml sees
 // these as parameters of the variation. They carry no value a still image uses.
@@ -520,6 +526,15 @@ class FlameReader {
         lose("colour shift of " + withoutCopyMark(name));
         warn(context + " has " + name + " with a colour shift (mul_c), which voxflame does not apply");
       }
+      // smartcrop reads the point itself (static 2) and cannot keep the last point it let through
+      // (cropmode 2), which the plugin's other modes need (flame_variations.cpp).
+      if (info->name == "smartcrop" &&
+          (std::round(term.params.at(10)) != 2.0 || std::round(term.params.at(9)) == 2.0)) {
+        lose("static or cropmode 2 of " + withoutCopyMark(name));
+        warn(context + " has " + name +
+             " reading the transform's state (static other than 2, or cropmode 2), which voxflame does not keep; "
+             "it crops the point itself and drops what cropmode 2 would replace");
+      }
       x.variations.push_back(std::move(term));
     }
     // ...then everything else: parameters, JWildfire's own keys, and what voxflame does not know.
@@ -542,7 +557,7 @@ class FlameReader {
       if (!owner.empty()) {
         const VariationInfo* info = variationNamed(withoutCopyMark(owner));
         const std::string param = name.substr(owner.size() + 1);
-        if (info && info->paramIndex(param) < 0 && !isJwildfireParamCurve(param)) {
+        if (info && info->paramIndex(param) < 0 && !isJwildfireParamCurve(param) && !isDerivedParam(*info, param)) {
           lose("parameter " + withoutCopyMark(owner) + "_" + param);
           warn(context + " sets '" + name + "', which voxflame's '" + info->name + "' does not have; it was left out");
         }
