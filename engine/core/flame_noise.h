@@ -1,7 +1,6 @@
-// Noise that flame variations share: slobo777's simplex noise (Perlin's simplex noise as Stefan
-// Gustavson describes it, with the plugin's own hash and gradient tables), which the Crackle plugin
-// uses to jitter its cell centres. A variation that uses it must get the plugin's exact values, or
-// its cells fall elsewhere than in the flame's author's picture.
+// Noise that flame variations share: 3D simplex noise (Perlin's, as Stefan Gustavson describes it,
+// hashed as slobo777's Hexes and Crackle plugins hash it), which crackle uses to jitter its cell
+// centres. Its tables are voxflame's own (flame_noise.cpp says why).
 #pragma once
 
 namespace voxflame::core {
