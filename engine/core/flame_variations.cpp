@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "error.h"
+#include "flame_variations_more.h"
 
 namespace voxflame::core {
 
@@ -1913,6 +1914,7 @@ std::vector<VariationInfo> buildCatalogue() {
        {"f", 0.0, -2.0, 2.0}});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
+  addMoreVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten")

@@ -1,0 +1,259 @@
+// The variations of flame_variations_more.cpp, each at points whose expected values were worked
+// out from the published formulas (JWildfire's and Fractorium's variation classes), independently
+// of the code under test, in double precision. The main point is (0.3, −0.7, 0.5) with weight 0.8,
+// as in flame_variations_test.cpp: r² = 0.58, φ = atan2(−0.7, 0.3) = −1.16590454, and a 2D
+// variation's z is 0.8 · 0.5 = 0.4. Random variations are replayed from the lane's seed: xorshift32
+// gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594 first from 0x9E3779B9.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <set>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/flame_variations.h"
+#include "core/flame_variations_more.h"
+#include "core/flame_xml.h"
+
+using namespace voxflame::core;
+
+namespace {
+
+constexpr double kAffine[12] = {0.9, 0.2, 0.0, 0.3, -0.1, 0.8, 0.0, -0.4, 0.0, 0.0, 1.0, 0.0};
+constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
+constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
+
+struct PointCase {
+  std::string name;
+  std::vector<double> params;  // empty: the catalogue's defaults
+  glm::dvec3 point;
+  double weight;
+  std::uint32_t seed;
+  glm::dvec3 expected;  // weight · V(point)
+};
+
+const std::vector<PointCase>& pointCases() {
+  static const std::vector<PointCase> cases = {
+      // mirror: Ψ ≥ ½ keeps the sign of |x|; Ψ < ½ negates it. The weight is not applied.
+      {"mirror_x", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.3, -0.7, 0.5}},
+      {"mirror_x", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.3, -0.7, 0.5}},
+      {"mirror_y", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.3, 0.7, 0.5}},
+      {"mirror_y", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {0.3, -0.7, 0.5}},
+      {"mirror_z", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {0.3, -0.7, -0.5}},
+      // axis x, centre (0.25, 0.5), 30°: Ψ ≥ ½ mirrors x to 0.25 − 0.05 − 0.4 = −0.2, then turns
+      // (−0.45, −1.2) by −30°: (0.25 − 0.45 cos 30° + 1.2 sin 30°, 0.5 − 1.2 cos 30° − 0.45 sin 30°).
+      {"axis_symmetry_wf", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.46028856829700243, -0.7642304845413265, 0.5}},
+      // Ψ < ½ keeps the side: x = 0.7, (0.45, −1.2) turned by +30°.
+      {"axis_symmetry_wf", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {0.03971143170299751, -0.7642304845413265, 0.5}},
+      // axis y without rotation: y = 2·0.42 + 0.7 − 0.4 = 1.14, or −0.7 + 0.4 = −0.3.
+      {"axis_symmetry_wf",
+       {1.0, 0.41, 0.42, 0.5, 0.0, 0, 0, 0, 0, 0, 0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.3, 1.14, 0.5}},
+      {"axis_symmetry_wf",
+       {1.0, 0.41, 0.42, 0.5, 0.0, 0, 0, 0, 0, 0, 0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.3, -0.3, 0.5}},
+      // axis z, centre (0.1, 0.2, −0.3), 40°: z mirrored to −0.3 − 0.8 − 0.4 = −1.5, then (0.2, −1.2)
+      // turned in the x–z plane, about z = centre_y as JWildfire does.
+      {"axis_symmetry_wf",
+       {2.0, 0.1, 0.2, -0.3, 40.0, 0, 0, 0, 0, 0, 0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {1.0245540202476426, -0.7, -0.5906958098054658}},
+      {"axis_symmetry_wf",
+       {2.0, 0.1, 0.2, -0.3, 40.0, 0, 0, 0, 0, 0, 0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {1.0245540202476426, -0.7, 0.9906958098054657}},
+      // octagon: x⁴ + y⁴ + 2z² = 0.7982, so s = 1/(0.7982 + 1e-8) (w s ≈ 1.0023 < 2); t = 1/(0.3 + 0.7
+      // + 2√0.5); plus w p.
+      {"octagon", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.6601810979048697, -1.5404225617780294, 1.1003018298414495}},
+      // Near the origin w s ≥ 2, so s = 1; the offsets push each coordinate away from 0.
+      {"octagon",
+       {0.164, 0.04, 0.1},
+       {0.05, -0.1, 0.2},
+       0.8,
+       kHighSeed,
+       {0.24949850463651727, -0.26859700927303454, 0.5531940185460691}},
+      // Below z = 0, √z counts as 0: t = 1/(0.3 + 0.7).
+      {"octagon", {}, {0.3, -0.7, -0.5}, 0.8, kHighSeed, {0.8007698409471018, -1.8684629622099043, -1.334616401578503}},
+      {"bcircle", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.24, -0.56, 0.4}},
+      // Scaled by 2 the point is outside: radius 0.2·0.5·Ψ + 1 = 1.0879466 along its angle.
+      {"bcircle", {2.0, 0.5}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.3428505423117109, -0.7999845987273255, 0.4}},
+      {"bcircle", {2.0, 0.0}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.4}},
+      // waves23: 7·(−0.7)/2π = −0.779859 → 0.220141; 13·0.3/2π = 0.620704 → 0.5 − 0.620704.
+      {"waves23", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.2488056311539885, -0.5648281711223356, 0.4}},
+      // wdisc: φ/π = −0.371118, a = π/(r + 1); with y > 0, φ > 0 and a = π − π/(r + 1).
+      {"wdisc", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.06264584669280625, -0.29021066474019597, 0.4}},
+      {"wdisc", {}, {0.3, 0.7, 0.5}, 0.8, kHighSeed, {0.06264584669280629, 0.29021066474019597, 0.4}},
+      // pow_block: q = 3/2, a = 3 (φ + 2π⌊2Ψ⌋)/2; Ψ = 0.879 takes root 1, Ψ = 0.317 root 0.
+      {"pow_block", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.09417403487604283, 0.523286488307155, 0.4}},
+      {"pow_block", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.09417403487604287, -0.523286488307155, 0.4}},
+      // correctd −1.5: q = 4/(2·1/−1.5) = −3.
+      {"pow_block",
+       {4.0, 2.0, 1.0, 1.0, -1.5},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {-1.2490504909367197, -1.3115030154835543, 0.4}},
+      // depth: 1 + |z| = 1.5; with power 2.5, 1 + 0.5^2.5 = 1.1767767.
+      {"depth", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.36, -0.84, 0.6}},
+      {"depth",
+       {2.5},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.28242640687119286, -0.6589949493661167, 0.4707106781186548}},
+      // poincare3D with r = 0 is the identity; r = 0.4, a = 0.3, b = −0.6 moves the centre to c =
+      // (−0.4 cos 0.15π cos 0.3π, 0.4 sin 0.15π cos 0.3π, 0.4 sin 0.3π).
+      {"poincare3D", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.24, -0.56, 0.4}},
+      {"poincare3D",
+       {0.4, 0.3, -0.6},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.46127110635659024, -0.5741166807671129, -0.11547311064267012}},
+  };
+  return cases;
+}
+
+[[maybe_unused]] void PrintTo(const PointCase& c, std::ostream* os) {
+  *os << c.name;
+}
+
+std::string caseLabel(const testing::TestParamInfo<PointCase>& info) {
+  return info.param.name + "_" + std::to_string(info.index);
+}
+
+class MoreVariationAtPoint : public testing::TestWithParam<PointCase> {};
+
+// Every lane starts from a non-zero sum, so a variation that assigns instead of adding is caught;
+// 37 lanes, so a vectorised body and a scalar remainder must agree.
+TEST_P(MoreVariationAtPoint, MatchesTheHandComputedValue) {
+  const PointCase& c = GetParam();
+  const VariationInfo& info = variationOrThrow(c.name);
+  const std::vector<double> params = c.params.empty() ? info.defaultParams() : c.params;
+  ASSERT_EQ(params.size(), info.params.size());
+  constexpr std::size_t kLanes = 37;
+  constexpr double kStartX = 0.125, kStartY = -0.25, kStartZ = 0.5;
+  std::vector<double> xs(kLanes, c.point.x), ys(kLanes, c.point.y), zs(kLanes, c.point.z);
+  std::vector<double> ox(kLanes, kStartX), oy(kLanes, kStartY), oz(kLanes, kStartZ);
+  std::vector<std::uint32_t> random(kLanes, c.seed);
+  VariationInput in;
+  in.x = xs.data();
+  in.y = ys.data();
+  in.z = zs.data();
+  in.random = random.data();
+  in.count = kLanes;
+  in.weight = c.weight;
+  in.params = params.data();
+  in.affine = kAffine;
+  info.apply(in, ox.data(), oy.data(), oz.data());
+  const auto near = [](double expected) { return 1e-12 * std::max(1.0, std::abs(expected)); };
+  for (std::size_t lane = 0; lane < kLanes; ++lane) {
+    SCOPED_TRACE("lane " + std::to_string(lane));
+    EXPECT_NEAR(ox[lane] - kStartX, c.expected.x, near(c.expected.x));
+    EXPECT_NEAR(oy[lane] - kStartY, c.expected.y, near(c.expected.y));
+    EXPECT_NEAR(oz[lane] - kStartZ, c.expected.z, near(c.expected.z));
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(More, MoreVariationAtPoint, testing::ValuesIn(pointCases()), caseLabel);
+
+TEST(FlameVariationMore, EveryEntryHasAHandCheckedPointAndIsInTheCatalogue) {
+  std::set<std::string> checked;
+  for (const PointCase& c : pointCases()) checked.insert(c.name);
+  std::vector<VariationInfo> more;
+  addMoreVariations(more);
+  EXPECT_FALSE(more.empty());
+  for (const VariationInfo& info : more) {
+    EXPECT_TRUE(checked.count(info.name)) << info.name << " has no hand-checked point";
+    const VariationInfo* entry = findVariation(info.name);
+    ASSERT_NE(entry, nullptr) << info.name;
+    EXPECT_EQ(entry->apply, info.apply) << info.name;
+  }
+}
+
+// The pre_/post_ forms of a variation that ignores its weight replace the point by its own result.
+TEST(FlameVariationMore, MirrorsAndAxisSymmetryReplaceThePointInTheirPrePostForms) {
+  for (const char* name : {"pre_mirror_x", "post_mirror_y", "post_axis_symmetry_wf"}) {
+    const VariationInfo* info = findVariation(name);
+    ASSERT_NE(info, nullptr) << name;
+    EXPECT_FALSE(info->additive) << name;
+  }
+  EXPECT_EQ(variationStage("post_axis_symmetry_wf"), VariationStage::Post);
+  EXPECT_EQ(variationStage("pre_mirror_x"), VariationStage::Pre);
+}
+
+// One flame of one transform whose attributes are `xform`, as a flame file writes it.
+ImportedFlame importXform(const std::string& xform) {
+  const std::string text = "<flames><flame name=\"t\" size=\"64 64\"><xform weight=\"1\" color=\"0\" " + xform +
+                           "/><color index=\"0\" rgb=\"255 255 255\"/></flame></flames>";
+  return readFlameXml(text, "t.flame").flame;
+}
+
+// Apophysis writes FracFx's octagon offsets as octa_x, octa_y, octa_z.
+TEST(FlameVariationMore, OctagonReadsApophysisOffsetNames) {
+  const ImportedFlame flame = importXform(R"(octagon="1" coefs="1 0 0 1 0 0" octa_x="0.124" octa_y="0.04" octa_z="0")");
+  EXPECT_TRUE(flame.leftOut.empty()) << flame.leftOut.front();
+  const VariationTerm& term = flame.genome.xforms.at(0).variations.at(0);
+  EXPECT_EQ(term.name, "octagon");
+  EXPECT_EQ(term.params, (std::vector<double>{0.124, 0.04, 0.0}));
+}
+
+// JWildfire's zxCoefs and yzCoefs compose with coefs into one 3D affine map: (x, y, z) = (1, 2, 3)
+// goes through coefs (x' = 2x, y' = x + y; its translation (0.5, −1) waits for the end) to
+// (2, 3, 3), the y–z map (y' = y − z, z' = 2z) to (2, 0, 6), the z–x map (x' = x + z, z' = 0.5x +
+// 3z; each written "00 01 10 11 20 21") to (8, 0, 19), and then all the translations are added.
+TEST(FlameVariationMore, JwildfirePlaneCoefficientsBecomeOneAffineMap) {
+  const ImportedFlame flame =
+      importXform(R"(linear3D="1" coefs="2 1 0 1 0.5 -1" yzCoefs="1 0 -1 2 0.25 0.75" zxCoefs="1 0.5 1 3 0.1 0.2" )"
+                  R"(zxPost="1 0 0 2 0 0.3")");
+  EXPECT_TRUE(flame.leftOut.empty()) << flame.leftOut.front();
+  const FlameXform& x = flame.genome.xforms.at(0);
+  // + (0.5 + 0.1, −1 + 0.25, 0.75 + 0.2).
+  const glm::dvec3 p = x.affine.apply({1.0, 2.0, 3.0});
+  EXPECT_NEAR(p.x, 8.6, 1e-12);
+  EXPECT_NEAR(p.y, -0.75, 1e-12);
+  EXPECT_NEAR(p.z, 19.95, 1e-12);
+  // zxPost alone: x' = x, z' = 2z, then z + 0.3.
+  ASSERT_TRUE(x.hasPost);
+  const glm::dvec3 q = x.post.apply({1.0, 2.0, 3.0});
+  EXPECT_NEAR(q.x, 1.0, 1e-12);
+  EXPECT_NEAR(q.y, 2.0, 1e-12);
+  EXPECT_NEAR(q.z, 6.3, 1e-12);
+}
+
+// Fractorium's post_depth needs the point from before the variations: left out, and said so.
+TEST(FlameVariationMore, PostDepthIsLeftOutAndPreDepthKept) {
+  const ImportedFlame post = importXform(R"(linear="1" post_depth="1" post_depth_power="1" coefs="1 0 0 1 0 0")");
+  EXPECT_EQ(post.leftOut, (std::vector<std::string>{"variation post_depth"}));
+  EXPECT_EQ(post.genome.xforms.at(0).variations.size(), 1u);
+  const ImportedFlame pre = importXform(R"(linear="1" pre_depth="1.06" pre_depth_power="1" coefs="1 0 0 1 0 0")");
+  EXPECT_TRUE(pre.leftOut.empty());
+  const auto& terms = pre.genome.xforms.at(0).variations;
+  EXPECT_TRUE(std::any_of(terms.begin(), terms.end(), [](const VariationTerm& t) { return t.name == "pre_depth"; }));
+}
+
+// axis_symmetry_wf's colour shifts are not applied: a file that sets one loses it.
+TEST(FlameVariationMore, AxisSymmetryColourShiftIsReportedAsLost) {
+  const ImportedFlame plain =
+      importXform(R"(linear3D="1" post_axis_symmetry_wf="0.36" post_axis_symmetry_wf_axis="1" coefs="1 0 0 1 0 0")");
+  EXPECT_TRUE(plain.leftOut.empty()) << plain.leftOut.front();
+  const ImportedFlame shifted = importXform(
+      R"(linear3D="1" post_axis_symmetry_wf="0.36" post_axis_symmetry_wf_x2colorshift="0.2" coefs="1 0 0 1 0 0")");
+  EXPECT_EQ(shifted.leftOut, (std::vector<std::string>{"colour shift of post_axis_symmetry_wf"}));
+}
+
+}  // namespace
