@@ -268,6 +268,283 @@ void poincare3D(const VariationInput& in, double* __restrict ox, double* __restr
   }
 }
 
+// ---- Fractorium's parameter rules --------------------------------------------------------------
+
+// Fractorium rounds an integer parameter (⌊v + ½⌋) and clamps it into its range when it is set.
+inline double fractoriumInteger(double value, double low, double high) {
+  return std::clamp(std::floor(value + 0.5), low, high);
+}
+
+// Apophysis' log map and log scale (Fractorium's VarFuncs), used by falloff3's third blur.
+inline double signNz(double value) {
+  return value < 0.0 ? -1.0 : 1.0;
+}
+inline double logMap(double value) {
+  return value == 0.0 ? 0.0 : (std::numbers::e + std::log(value * std::numbers::e)) * 0.25 * signNz(value);
+}
+inline double logScale(double value) {
+  return value == 0.0 ? 0.0 : std::log((std::abs(value) + 1.0) * std::numbers::e) * signNz(value) / std::numbers::e;
+}
+
+// ---- blurs that grow with the distance from a centre ------------------------------------------
+
+// Fractorium's falloff: the point blurred by D = max(0, (|p − (x0, y0, z0)| (or 1 − that, at
+// least 0, with invert) − mindist) · 0.04 scatter), the blur's shape by type. Its box blur adds
+// the mul · a^boxpow · D / scale term without the weight, as Fractorium does.
+void falloff(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const double scatter = 0.04 * std::max(P[0], std::numeric_limits<double>::epsilon());
+  const double minDist = std::max(P[1], 0.0);
+  const double mulX = std::clamp(P[2], 0.0, 1.0), mulY = std::clamp(P[3], 0.0, 1.0), mulZ = std::clamp(P[4], 0.0, 1.0);
+  const double x0 = P[5], y0 = P[6], z0 = P[7];
+  const bool invert = fractoriumInteger(P[8], 0.0, 1.0) != 0.0;
+  const double type = fractoriumInteger(P[9], 0.0, 2.0);
+  const double boxPow = fractoriumInteger(P[10], 2.0, 32.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ax = laneUniform(rnd[i]) - 0.5, ay = laneUniform(rnd[i]) - 0.5, az = laneUniform(rnd[i]) - 0.5;
+    const double dx = x[i] - x0, dy = y[i] - y0, dz = z[i] - z0;
+    const double r = std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double rs = std::max(((invert ? std::max(1.0 - r, 0.0) : std::max(r, 0.0)) - minDist) * scatter, 0.0);
+    if (type == 0.0) {
+      outX[i] += w * (x[i] + mulX * ax * rs);
+      outY[i] += w * (y[i] + mulY * ay * rs);
+      outZ[i] += w * (z[i] + mulZ * az * rs);
+    } else if (type == 1.0) {
+      const double radius = r + mulX * ax * rs;
+      const double phi = std::atan2(y[i], x[i]) + mulY * ay * rs;
+      const double sigma = std::asin(r == 0.0 ? 0.0 : z[i] / r) + mulZ * az * rs;
+      outX[i] += radius * std::cos(sigma) * w * std::cos(phi);
+      outY[i] += radius * std::cos(sigma) * w * std::sin(phi);
+      outZ[i] += radius * std::sin(sigma) * w;
+    } else {
+      const double scale = std::clamp(rs, 0.0, 0.9) + 0.1, denom = 1.0 / scale;
+      const auto box = [&](double v, double a, double mul) {
+        const double target = std::floor(v * denom) + scale * a;
+        return w * (v + (target - v) * mul * rs) + mul * std::pow(a, boxPow) * rs * denom;
+      };
+      outX[i] += box(x[i], ax, mulX);
+      outY[i] += box(y[i], ay, mulY);
+      outZ[i] += box(z[i], az, mulZ);
+    }
+  }
+}
+
+// Fractorium's falloff3: like falloff, with the distance measured round (blur_shape 0) or square
+// (1), and a Gaussian (0), radial (1) or logarithmic (2, 3) blur. Its colour shift (mul_c) is not
+// applied; the importer says so when a file sets it.
+void falloff3(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const double type = fractoriumInteger(P[0], 0.0, 3.0);
+  const bool square = fractoriumInteger(P[1], 0.0, 1.0) != 0.0;
+  const double rMax = 0.04 * std::max(P[2], std::numeric_limits<double>::epsilon());
+  const double minDist = std::max(P[3], 0.0);
+  const bool invert = fractoriumInteger(P[4], 0.0, 1.0) != 0.0;
+  const double mulX = std::clamp(P[5], 0.0, 1.0), mulY = std::clamp(P[6], 0.0, 1.0), mulZ = std::clamp(P[7], 0.0, 1.0);
+  const double cx = P[9], cy = P[10], cz = P[11], alpha = P[12];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double rx = laneUniform(rnd[i]) - 0.5, ry = laneUniform(rnd[i]) - 0.5, rz = laneUniform(rnd[i]) - 0.5;
+    (void)laneUniform(rnd[i]);  // Fractorium's fourth draw shifts the colour
+    const double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
+    const double radius =
+        square ? std::max(std::abs(dx), std::max(std::abs(dy), std::abs(dz))) : std::sqrt(dx * dx + dy * dy + dz * dz);
+    const double dist =
+        std::max(((invert ? std::max(1.0 - radius, 0.0) : std::max(radius, 0.0)) - minDist) * rMax, 0.0);
+    if (type == 0.0) {
+      const double sigma = dist * ry * kTwoPi, phi = dist * rz * kPi, rad = dist * rx;
+      outX[i] += (x[i] + mulX * rad * std::cos(sigma) * std::cos(phi)) * w;
+      outY[i] += (y[i] + mulY * rad * std::cos(sigma) * std::sin(phi)) * w;
+      outZ[i] += (z[i] + mulZ * rad * std::sin(sigma)) * w;
+    } else if (type == 1.0) {
+      if (x[i] == 0.0 && y[i] == 0.0 && z[i] == 0.0) continue;  // adds w·0
+      const double rIn = std::sqrt(x[i] * x[i] + y[i] * y[i] + z[i] * z[i]);
+      const double r = rIn + mulX * rx * dist;
+      const double phi = std::atan2(y[i], x[i]) + mulY * ry * dist;
+      const double sigma = std::asin(z[i] / rIn) + mulZ * rz * dist;
+      outX[i] += r * std::cos(sigma) * w * std::cos(phi);
+      outY[i] += r * std::cos(sigma) * w * std::sin(phi);
+      outZ[i] += r * std::sin(sigma) * w;
+    } else {
+      const double coeff = rMax <= std::numeric_limits<double>::epsilon() ? dist : dist + alpha * (logMap(dist) - dist);
+      outX[i] += (x[i] + logMap(mulX) * logScale(rx) * coeff) * w;
+      outY[i] += (y[i] + logMap(mulY) * logScale(ry) * coeff) * w;
+      outZ[i] += (z[i] + logMap(mulZ) * logScale(rz) * coeff) * w;
+    }
+  }
+}
+
+// ---- cells and polygons ------------------------------------------------------------------------
+
+// Fractorium's Voron: cells of side Step, each holding 1 to Num seed points placed by a hash of
+// the cell; the point is pulled towards the nearest seed of its own and the eight neighbouring
+// cells: K (p − s) + s. The hash is Hugo Elias' integer noise with 32-bit wrap-around.
+inline double voronNoise(std::int64_t value) {
+  auto v = static_cast<std::uint32_t>(value);
+  v = (v << 13) ^ v;
+  const std::uint32_t mixed = v * (v * v * 15731u + 789221u) + 1376312589u;
+  return static_cast<double>(mixed & 0x7fffffffu) * (1.0 / 2147483647.0);
+}
+
+void voron(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const double k = P[0];
+  const double step = std::abs(P[1]) < 1e-6 ? std::numeric_limits<double>::epsilon() * (P[1] < 0.0 ? -1.0 : 1.0) : P[1];
+  const double count = fractoriumInteger(P[2], 1.0, 25.0);
+  // Seeds past ±2³¹ would overflow Fractorium's int too; they are held there.
+  const double seedX = std::clamp(std::floor(P[3] + 0.5), -2147483648.0, 2147483647.0);
+  const double seedY = std::clamp(std::floor(P[4] + 0.5), -2147483648.0, 2147483647.0);
+  // Cell numbers stay well inside Fractorium's int arithmetic; a point beyond ±2²⁰ cells (far
+  // outside any flame) escapes instead.
+  constexpr double kCellLimit = 1048576.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double cellX = std::floor(x[i] / step), cellY = std::floor(y[i] / step);
+    if (!(std::abs(cellX) < kCellLimit && std::abs(cellY) < kCellLimit)) {
+      outX[i] += std::numeric_limits<double>::quiet_NaN();
+      outY[i] += std::numeric_limits<double>::quiet_NaN();
+      outZ[i] += w * z[i];
+      continue;
+    }
+    const auto m = static_cast<std::int64_t>(cellX), nn = static_cast<std::int64_t>(cellY);
+    double best = 20.0, bestX = 0.0, bestY = 0.0;
+    for (std::int64_t di = -1; di < 2; ++di)
+      for (std::int64_t dj = -1; dj < 2; ++dj) {
+        const std::int64_t m1 = m + di, n1 = nn + dj;
+        const auto seeds = static_cast<std::int64_t>(
+            1.0 +
+            std::floor(count * voronNoise(static_cast<std::int64_t>(static_cast<double>(19 * m1 + 257 * n1) + seedX))));
+        for (std::int64_t l = 0; l < seeds; ++l) {
+          const double sx = (voronNoise(static_cast<std::int64_t>(static_cast<double>(l + 64 * m1 + 15 * n1) + seedX)) +
+                             static_cast<double>(m1)) *
+                            step;
+          const double sy = (voronNoise(static_cast<std::int64_t>(static_cast<double>(l + 21 * m1 + 33 * n1) + seedY)) +
+                             static_cast<double>(n1)) *
+                            step;
+          const double ddx = x[i] - sx, ddy = y[i] - sy;
+          const double r = std::sqrt(ddx * ddx + ddy * ddy);
+          if (r < best) {
+            best = r;
+            bestX = sx;
+            bestY = sy;
+          }
+        }
+      }
+    outX[i] += w * (k * (x[i] - bestX) + bestX);
+    outY[i] += w * (k * (y[i] - bestY) + bestY);
+    outZ[i] += w * z[i];
+  }
+}
+
+// Fractorium's smartshape: the plane bent into a regular polygon of `power` sides (at least 2),
+// its corners rounded by roundstr and roundwidth, distortion the exponent of the bending.
+void smartshape(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const double power = std::max(P[0], 2.0), roundStr = P[1], roundWidth = P[2], distortion = P[3];
+  const bool compensate = std::clamp(P[4], 0.0, 1.0) > 0.0;
+  const double alpha = kTwoPi / power;
+  const double alphaCoeff = std::tan(alpha * 0.5) * 2.0;
+  const double roundCoeff = roundStr / std::sin(alpha * 0.5) / power * 2.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double dang = (std::atan2(y[i], x[i]) + kPi) / alpha;
+    const double rad = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    const double zang1 = std::floor(dang), xang1 = dang - zang1;
+    const double xang2 = xang1 > 0.5 ? 1.0 - xang1 : xang1;
+    const double zang = xang1 > 0.5 ? zang1 + 1.0 : zang1;
+    const double sign = xang1 > 0.5 ? -1.0 : 1.0;
+    const double xang = compensate && distortion >= 1.0 ? std::atan(xang2 * alphaCoeff) / alpha : xang2;
+    double coeff1 = 1.0;
+    if (distortion != 0.0) {
+      const double coeff0 = 1.0 / std::cos(xang * alpha);
+      if (roundStr != 0.0) {
+        const double width =
+            roundWidth != 1.0 ? std::exp(std::log(xang * 2.0) * roundWidth) * roundCoeff : xang * 2.0 * roundCoeff;
+        coeff1 = std::abs((1.0 - width) * coeff0 + width);
+      } else {
+        coeff1 = coeff0;
+      }
+    }
+    const double coeff = distortion != 1.0 ? std::exp(std::log(coeff1) * distortion) : coeff1;
+    const double ang = (zang + sign * xang) * alpha - kPi;
+    const double t = w * coeff * rad;
+    outX[i] += std::cos(ang) * t;
+    outY[i] += std::sin(ang) * t;
+    outZ[i] += w * z[i];
+  }
+}
+
+// lazyTravis (Michael Faber's, as JWildfire has it): the square of half-side s = max(|x|, |y|)
+// walked round by its perimeter position plus a spin; outside the weight's square (s > w) it is
+// also pushed out by `space`. At the origin, where s = 0, JWildfire's result is NaN.
+void lazyTravis(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const double spinIn = 4.0 * P[0], spinOut = 4.0 * P[1], space = P[2];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double ax = std::abs(x[i]), ay = std::abs(y[i]);
+    const bool outside = ax > w || ay > w;
+    const double spin = outside ? spinOut : spinIn;
+    double s, p;
+    if (ax > ay) {
+      s = ax;
+      p = x[i] > 0.0 ? s + y[i] + s * spin : 5.0 * s - y[i] + s * spin;
+    } else {
+      s = ay;
+      p = y[i] > 0.0 ? 3.0 * s - x[i] + s * spin : 7.0 * s + x[i] + s * spin;
+    }
+    p = std::fmod(p, s * 8.0);
+    double px, py;
+    if (outside) {
+      if (p <= 2.0 * s) {
+        px = s + space;
+        py = -(s - p);
+        py = py + py / s * space;
+      } else if (p <= 4.0 * s) {
+        py = s + space;
+        px = 3.0 * s - p;
+        px = px + px / s * space;
+      } else if (p <= 6.0 * s) {
+        px = -(s + space);
+        py = 5.0 * s - p;
+        py = py + py / s * space;
+      } else {
+        py = -(s + space);
+        px = -(7.0 * s - p);
+        px = px + px / s * space;
+      }
+    } else if (p <= 2.0 * s) {
+      px = s;
+      py = -(s - p);
+    } else if (p <= 4.0 * s) {
+      px = 3.0 * s - p;
+      py = s;
+    } else if (p <= 6.0 * s) {
+      px = -s;
+      py = 5.0 * s - p;
+    } else {
+      px = -(7.0 * s - p);
+      py = -s;
+    }
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * z[i];
+  }
+}
+
+// waves4_wf (JWildfire's): waves2 with sin·cos·sin (or cos·sin·cos) waves, both terms scaled by
+// e^damp (1 when |damp| < 10⁻⁸).
+void waves4Wf(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const double scaleX = P[0], scaleY = P[1], freqX = P[2], freqY = P[3];
+  const bool cosX = std::round(P[4]) == 1.0, cosY = std::round(P[5]) == 1.0;
+  const double dampX = std::abs(P[6]) < kJwfEpsilon ? 1.0 : std::exp(P[6]);
+  const double dampY = std::abs(P[7]) < kJwfEpsilon ? 1.0 : std::exp(P[7]);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double sx = std::sin(y[i] * freqX), cx = std::cos(y[i] * freqX);
+    const double sy = std::sin(x[i] * freqY), cy = std::cos(x[i] * freqY);
+    const double waveX = cosX ? cx * sx * cx : sx * cx * sx, waveY = cosY ? cy * sy * cy : sy * cy * sy;
+    outX[i] += w * (x[i] + dampX * scaleX * waveX) * dampX;
+    outY[i] += w * (y[i] + dampY * scaleY * waveY) * dampY;
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void addMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -343,6 +620,79 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
       "(p (1 + 2c_i² − |c|²) + c (2 c·p − 2c_i p_i − |p|² − 1)) / (|c|²|p|² − 2 c·p + 1) per coordinate i; c = r (−cos "
       "a' cos b', sin a' cos b', −sin b'), a' = aπ/2, b' = bπ/2",
       k3D, kFixed, &poincare3D, {{"r", 0.0, -1.0, 1.0}, {"a", 0.0, -2.0, 2.0}, {"b", 0.0, -2.0, 2.0}});
+  add("falloff",
+      "p blurred by D = max(0, (|p − (x0, y0, z0)| − mindist) · 0.04 scatter) (|…| as max(0, 1 − |…|) with invert), "
+      "a = (Ψ₁, Ψ₂, Ψ₃) − ½: type 0 p + mul·a D; type 1 ρ (cos σ cos φ', cos σ sin φ', sin σ) with ρ = |p| + mul_x "
+      "a₁ D, φ' = φ + mul_y a₂ D, σ = asin(z/|p|) + mul_z a₃ D; type 2 per coordinate v + (⌊v/s⌋ + s a − v) mul D, "
+      "s = min(D, 0.9) + 0.1, plus mul a^boxpow D/s outside the weight (Fractorium's)",
+      k3D, kRandom, &falloff,
+      {{"scatter", 1.0, 0.0, 20.0},
+       {"mindist", 0.5, 0.0, 3.0},
+       {"mul_x", 1.0, 0.0, 1.0},
+       {"mul_y", 1.0, 0.0, 1.0},
+       {"mul_z", 0.0, 0.0, 1.0},
+       {"x0", 0.0, -3.0, 3.0},
+       {"y0", 0.0, -3.0, 3.0},
+       {"z0", 0.0, -3.0, 3.0},
+       count("invert", 0.0, 0.0, 1.0),
+       count("type", 0.0, 0.0, 2.0),
+       count("boxpow", 2.0, 2.0, 32.0)});
+  add("falloff3",
+      "p blurred by D = max(0, (d − min_distance) · 0.04 blur_strength), d = |p − centre| (blur_shape 0) or its "
+      "largest coordinate (1), as max(0, 1 − d) with invert_distance; a = (Ψ₁, Ψ₂, Ψ₃) − ½: blur_type 0 p + D a₁ "
+      "(mul_x cos σ cos φ', mul_y cos σ sin φ', mul_z sin σ), σ = 2π a₂ D, φ' = π a₃ D; 1 as falloff's type 1; 2 "
+      "and 3 p + L(mul) S(a) (D + alpha (L(D) − D)), L(v) = (e + ln(e v))/4, S(v) = ln(e (|v| + 1))/e, signed "
+      "(Fractorium's; the colour shift mul_c is not applied)",
+      k3D, kRandom, &falloff3,
+      {count("blur_type", 0.0, 0.0, 3.0),
+       count("blur_shape", 0.0, 0.0, 1.0),
+       {"blur_strength", 1.0, 0.0, 20.0},
+       {"min_distance", 0.5, 0.0, 3.0},
+       count("invert_distance", 0.0, 0.0, 1.0),
+       {"mul_x", 1.0, 0.0, 1.0},
+       {"mul_y", 1.0, 0.0, 1.0},
+       {"mul_z", 0.0, 0.0, 1.0},
+       {"mul_c", 0.0, 0.0, 1.0},
+       {"center_x", 0.0, -3.0, 3.0},
+       {"center_y", 0.0, -3.0, 3.0},
+       {"center_z", 0.0, -3.0, 3.0},
+       {"alpha", 0.0, -1.0, 1.0}});
+  add("Voron",
+      "K (x, y) + (1 − K) s, z; s the nearest of the seed points of the 3×3 cells of side Step around p, 1 to Num "
+      "per cell, placed by Hugo Elias' integer hash of the cell and XSeed, YSeed (Fractorium's)",
+      k2D, kFixed, &voron,
+      {{"K", 0.99, -2.0, 2.0},
+       {"Step", 0.25, 0.01, 2.0},
+       count("Num", 1.0, 1.0, 25.0),
+       count("XSeed", 3.0, 0.0, 100.0),
+       count("YSeed", 7.0, 0.0, 100.0)});
+  add("smartshape",
+      "r c (cos α', sin α'), z: the angle φ + π in sectors of 2π/power, α' its sector's middle ± x' where x' is the "
+      "offset in the sector (tan-compensated with compensation); c = (1/cos x', its corners blended by roundstr "
+      "and roundwidth)^distortion (Fractorium's)",
+      k2D, kFixed, &smartshape,
+      {{"power", 4.0, 2.0, 12.0},
+       {"roundstr", 0.0, -1.0, 1.0},
+       {"roundwidth", 1.0, 0.0, 4.0},
+       {"distortion", 1.0, -2.0, 4.0},
+       {"compensation", 0.0, 0.0, 1.0}});
+  add("lazyTravis",
+      "the point on the square of half-side s = max(|x|, |y|) at perimeter position (its own + 4 s·spin) mod 8s; "
+      "outside the weight's square (s > w) spin_out and pushed out by space, inside spin_in; z (w the weight)",
+      k2D, kFixed, &lazyTravis,
+      {{"spin_in", 1.0, -2.0, 2.0}, {"spin_out", 0.5, -2.0, 2.0}, {"space", kPi / 2.0, -2.0, 2.0}});
+  add("waves4_wf",
+      "(x + dx scalex W(freqx y), y + dy scaley W'(freqy x)) scaled by (dx, dy), z; W = cos·sin·cos with use_cos_x, "
+      "else sin·cos·sin (likewise W'), dx = e^dampx, dy = e^dampy",
+      k2D, kFixed, &waves4Wf,
+      {{"scalex", 0.25, -2.0, 2.0},
+       {"scaley", 0.5, -2.0, 2.0},
+       {"freqx", kPi / 2.0, -10.0, 10.0},
+       {"freqy", kPi / 4.0, -10.0, 10.0},
+       count("use_cos_x", 1.0, 0.0, 1.0),
+       count("use_cos_y", 0.0, 0.0, 1.0),
+       {"dampx", 0.0, -2.0, 2.0},
+       {"dampy", 0.0, -2.0, 2.0}});
 }
 
 }  // namespace voxflame::core

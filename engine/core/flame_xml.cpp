@@ -549,9 +549,11 @@ class FlameReader {
           consumed.insert(param->second.first);
           break;
         }
-      // falloff2's colour shift is not applied (flame_variations.cpp), nor axis_symmetry_wf's.
+      // falloff2's colour shift is not applied (flame_variations.cpp), nor falloff3's or
+      // axis_symmetry_wf's.
       const bool shiftsColour =
           (info->name == "falloff2" && term.params.at(5) != 0.0) ||
+          (info->name == "falloff3" && term.params.at(8) != 0.0) ||
           (info->name == "axis_symmetry_wf" &&
            std::any_of(term.params.begin() + 5, term.params.end(), [](double v) { return v != 0.0; }));
       if (shiftsColour) {
