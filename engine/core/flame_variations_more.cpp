@@ -545,6 +545,46 @@ void waves4Wf(const VariationInput& in, double* __restrict ox, double* __restric
   }
 }
 
+// Fractorium's y: the point's direction kept, its distance r replaced by w·T²/r, T the sum of four
+// shapes' radii at its angle a = φ: a hypergon, a star, a lituus and a superformula curve.
+void yShapes(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const double hypergon = P[0], hypergonN = std::max(std::floor(P[1] + 0.5), 3.0), hypergonR = P[2];
+  const double star = P[3], starN = std::max(std::floor(P[4] + 0.5), 3.0);
+  const double starSlope = std::clamp(P[5], std::numeric_limits<double>::epsilon(), kPi / 2.0);
+  const double lituus = P[6], lituusA = P[7];
+  const double super = P[8], superM = P[9], superN1 = P[10], superN2 = P[11], superN3 = P[12];
+  const double hypergonD = std::sqrt(1.0 + hypergonR * hypergonR), hd2 = hypergonD * hypergonD;
+  // Fractorium steps back from tan(π/2), which is undefined.
+  const double tanStarSlope = std::abs(starSlope - kPi / 2.0) < 1e-6 ? std::tan(starSlope - 0.05) : std::tan(starSlope);
+  const double oneOverN1 = -1.0 / fractoriumZeps(superN1);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = std::atan2(y[i], x[i]);
+    double total = 0.0;
+    if (hypergon != 0.0) {
+      const double t1 = std::fmod(std::abs(a), kTwoPi / hypergonN) - kPi / hypergonN;
+      const double t2 = std::tan(t1) * std::tan(t1) + 1.0;
+      total += t2 >= hd2 ? hypergon : hypergon * (hypergonD - std::sqrt(hd2 - t2)) / std::sqrt(t2);
+    }
+    if (star != 0.0) {
+      const double t1 = std::tan(std::abs(std::fmod(std::abs(a), kTwoPi / starN) - kPi / starN));
+      total +=
+          star * std::sqrt(tanStarSlope * tanStarSlope * (1.0 + t1 * t1) / ((t1 + tanStarSlope) * (t1 + tanStarSlope)));
+    }
+    if (lituus != 0.0) total += lituus * std::pow(std::abs(a / kPi + 1.0), -lituusA);
+    if (super != 0.0) {
+      const double t4 = a * superM / 4.0;
+      total += super * std::pow(std::pow(std::abs(std::cos(t4)), superN2) + std::pow(std::abs(std::sin(t4)), superN3),
+                                oneOverN1);
+    }
+    // Fractorium divides by r unguarded; the tiny guard keeps the origin finite (0 when T is 0).
+    const double r = w * total * total / (std::sqrt(x[i] * x[i] + y[i] * y[i]) + 1e-300);
+    outX[i] += r * std::cos(a);
+    outY[i] += r * std::sin(a);
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void addMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -693,6 +733,25 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
        count("use_cos_y", 0.0, 0.0, 1.0),
        {"dampx", 0.0, -2.0, 2.0},
        {"dampy", 0.0, -2.0, 2.0}});
+  add("y",
+      "(T²/r)(cos φ, sin φ), z; T = hypergon H + star S + lituus (|φ/π + 1|)^(−lituus_a) + super (|cos(φ "
+      "super_m/4)|^super_n2 + |sin(φ super_m/4)|^super_n3)^(−1/super_n1); H = 1, or (d − √(d² − u))/√u where u = tan² "
+      "t + 1 < d², d² = 1 + hypergon_r², t = (|φ| mod 2π/hypergon_n) − π/hypergon_n; S = √(k²(1 + v²))/(v + k), v = "
+      "|tan t| with star_n, k = tan star_slope (Fractorium's)",
+      k2D, kFixed, &yShapes,
+      {{"hypergon", 0.0, -3.0, 3.0},
+       count("hypergon_n", 4.0, 3.0, 12.0),
+       {"hypergon_r", 1.0, 0.0, 3.0},
+       {"star", 0.0, -3.0, 3.0},
+       count("star_n", 5.0, 3.0, 12.0),
+       {"star_slope", 2.0, 0.0, 2.0},
+       {"lituus", 0.0, -3.0, 3.0},
+       {"lituus_a", 1.0, -3.0, 3.0},
+       {"super", 0.0, -3.0, 3.0},
+       {"super_m", 1.0, 0.0, 12.0},
+       {"super_n1", 1.0, 0.1, 10.0},
+       {"super_n2", 1.0, 0.0, 10.0},
+       {"super_n3", 1.0, 0.0, 10.0}});
 }
 
 }  // namespace voxflame::core
