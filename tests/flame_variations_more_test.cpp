@@ -227,6 +227,21 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kHighSeed,
        {0.3719518707120569, -0.8678876983281326, 0.4}},
+      // pixel_flow: Ψ⁴ = 0.879466⁴ fades the streak; blocks (60, −140) at width 200 shift by the
+      // hash; then the corpus flame's parameters, and a point left of the y axis with another seed.
+      {"pixel_flow", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {9.306663919239146e-12, 0.005185069273106876, 0.4}},
+      {"pixel_flow",
+       {130.0, 1.2, 100.0, 42.0, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.18182395695878292, 0.21668935506624784, 0.4}},
+      {"pixel_flow",
+       {-30.0, 2.0, 37.5, 977.0, 0.0},
+       {-0.61, 0.43, 0.5},
+       0.8,
+       kHighSeed,
+       {0.4316432019523141, -0.24920931849670502, 0.4}},
   };
   return cases;
 }
@@ -313,6 +328,20 @@ TEST(FlameVariationMore, OctagonReadsApophysisOffsetNames) {
   const VariationTerm& term = flame.genome.xforms.at(0).variations.at(0);
   EXPECT_EQ(term.name, "octagon");
   EXPECT_EQ(term.params, (std::vector<double>{0.124, 0.04, 0.0}));
+}
+
+// bezo97's pixel_flow plugin writes its parameters without the variation's name.
+TEST(FlameVariationMore, PixelFlowReadsItsBareParameterNames) {
+  const ImportedFlame flame = importXform(
+      R"(linear="1" pixel_flow="0.096" coefs="1 0 0 1 0 0" angle="130" len="1.2" width="100" seed="42" enable_dc="0")");
+  EXPECT_TRUE(flame.leftOut.empty()) << flame.leftOut.front();
+  const auto& terms = flame.genome.xforms.at(0).variations;
+  const auto term =
+      std::find_if(terms.begin(), terms.end(), [](const VariationTerm& t) { return t.name == "pixel_flow"; });
+  ASSERT_NE(term, terms.end());
+  EXPECT_EQ(term->params, (std::vector<double>{130.0, 1.2, 100.0, 42.0, 0.0}));
+  const ImportedFlame direct = importXform(R"(linear="1" pixel_flow="0.096" coefs="1 0 0 1 0 0" enable_dc="1")");
+  EXPECT_EQ(direct.leftOut, (std::vector<std::string>{"direct colour of pixel_flow"}));
 }
 
 // JWildfire's zxCoefs and yzCoefs compose with coefs into one 3D affine map: (x, y, z) = (1, 2, 3)

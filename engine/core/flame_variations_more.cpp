@@ -585,6 +585,60 @@ void yShapes(const VariationInput& in, double* __restrict ox, double* __restrict
   }
 }
 
+// ---- Java's integer arithmetic -------------------------------------------------------------------
+
+// Java's (int) of a double: truncation towards 0, saturating at the int range, NaN as 0.
+inline std::int32_t javaInt(double value) {
+  if (std::isnan(value)) return 0;
+  if (value >= 2147483647.0) return std::numeric_limits<std::int32_t>::max();
+  if (value <= -2147483648.0) return std::numeric_limits<std::int32_t>::min();
+  return static_cast<std::int32_t>(value);
+}
+// Java's int + and ×, which wrap around.
+inline std::int32_t wrapAdd(std::int32_t a, std::int32_t b) {
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(a) + static_cast<std::uint32_t>(b));
+}
+inline std::int32_t wrapMul(std::int32_t a, std::int32_t b) {
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(a) * static_cast<std::uint32_t>(b));
+}
+
+// Bob Jenkins' integer hash as bezo97's pixel_flow uses it, scaled to about [−1, 1].
+inline double pixelFlowHash(std::int32_t a) {
+  a = (a ^ 61) ^ (a >> 16);
+  a = wrapAdd(a, wrapMul(a, 8));
+  a = a ^ (a >> 4);
+  a = wrapMul(a, 0x27d4eb2d);
+  a = a ^ (a >> 15);
+  return static_cast<double>(a) / 2147483647.0;
+}
+
+// pixel_flow (bezo97's Apophysis plugin, as JWildfire ports it): a streak of length len in the
+// direction `angle` (degrees) from the origin, faded by Ψ⁴ and by a length hashed from the point's
+// block of a grid of 1/width cells (widths and lengths vary by `seed`). The point itself is not
+// added: with linear it draws streaks from every point. Its direct colour (enable_dc) is not
+// applied; the importer says so when a file sets it.
+void pixelFlow(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const double radians = P[0] * 0.0174532925;  // JWildfire's rounded π/180
+  const double len = P[1], width = P[2];
+  const std::int32_t seed = javaInt(std::floor(std::clamp(P[3], -2147483648.0, 2147483647.0) + 0.5));
+  const double dirX = w * len * std::cos(radians), dirY = w * len * std::sin(radians);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r01 = laneUniform(rnd[i]);
+    std::int32_t blockX = javaInt(std::floor(x[i] * width));
+    blockX = javaInt(static_cast<double>(blockX) + (2.0 - 4.0 * pixelFlowHash(wrapAdd(wrapMul(blockX, seed), 1))));
+    std::int32_t blockY = javaInt(std::floor(y[i] * width));
+    blockY = javaInt(static_cast<double>(blockY) + (2.0 - 4.0 * pixelFlowHash(wrapAdd(wrapMul(blockY, seed), 1))));
+    const double length = (pixelFlowHash(wrapAdd(blockY, wrapMul(blockX, wrapMul(seed, -1)))) +
+                           pixelFlowHash(wrapAdd(blockX, wrapMul(blockY, seed) / 2))) *
+                          0.5;
+    const double fade = length * r01 * r01 * r01 * r01;
+    outX[i] += dirX * fade;
+    outY[i] += dirY * fade;
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void addMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -752,6 +806,16 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
        {"super_n1", 1.0, 0.1, 10.0},
        {"super_n2", 1.0, 0.0, 10.0},
        {"super_n3", 1.0, 0.0, 10.0}});
+  add("pixel_flow",
+      "len · h Ψ⁴ (cos angle°, sin angle°), z: streaks, not the point; h the mean of two hashes (Bob Jenkins') of "
+      "the point's block ⌊(x, y)·width⌋, each block shifted by up to ±2 by a hash with seed (bezo97's; files write "
+      "the parameters bare: angle, len, width, seed, enable_dc; the direct colour enable_dc is not applied)",
+      k2D, kRandom, &pixelFlow,
+      {{"angle", 90.0, -360.0, 360.0},
+       {"len", 0.1, -5.0, 5.0},
+       {"width", 200.0, 1.0, 500.0},
+       count("seed", 42.0, 0.0, 1000000.0),
+       count("enable_dc", 0.0, 0.0, 1.0)});
 }
 
 }  // namespace voxflame::core

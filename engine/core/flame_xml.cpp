@@ -96,12 +96,14 @@ const VariationInfo* variationNamed(std::string_view name) {
 // auger_weight is the catalogue's auger `strength` (a preset writes parameters beside "weight"),
 // and Apophysis' Mobius plugin (and FLAM3H after it) writes mobius' parameters bare and
 // capitalised (Re_A … Im_D). FracFx's octagon plugin for Apophysis names its offsets octa_x,
-// octa_y and octa_z (JWildfire's octagon_x ...).
+// octa_y and octa_z (JWildfire's octagon_x ...); bezo97's pixel_flow plugin writes its parameters
+// bare (angle, len, ...).
 std::vector<std::string> fileParamNames(const std::string& termAttribute, const VariationInfo& info,
                                         const std::string& param) {
   std::vector<std::string> names = {termAttribute + "_" + param};
   if (info.name == "auger" && param == "strength") names.push_back(termAttribute + "_weight");
   if (info.name == "octagon" && param.size() == 1) names.push_back("octa_" + param);
+  if (info.name == "pixel_flow") names.push_back(param);
   if (info.name == "mobius" && param.size() == 4) {
     std::string bare = param;
     bare[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(bare[0])));
@@ -559,6 +561,11 @@ class FlameReader {
       if (shiftsColour) {
         lose("colour shift of " + withoutCopyMark(name));
         warn(context + " has " + name + " with a colour shift, which voxflame does not apply");
+      }
+      // pixel_flow's direct colour (its Ψ as the point's colour) is not applied either.
+      if (info->name == "pixel_flow" && term.params.at(4) != 0.0) {
+        lose("direct colour of " + withoutCopyMark(name));
+        warn(context + " has " + name + " with direct colour (enable_dc), which voxflame does not apply");
       }
       // Fractorium's post_depth adds the transform's affine point, which a post_ term does not see.
       if (info->name == "depth" && variationStage(term.name) == VariationStage::Post) {
