@@ -242,6 +242,16 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kHighSeed,
        {0.4316432019523141, -0.24920931849670502, 0.4}},
+      // vibration2 at its defaults (two unmodulated waves across x and y), then with every
+      // modulation set.
+      {"vibration2", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.04978757015123077, -0.3697900941156558, 0.4}},
+      {"vibration2",
+       {0.3, 1.1, 2.0, 0.4, 0.2, -0.7, 0.5, 1.5, 0.3, -0.1, 0.2, 0.5,  0.3,
+        0.7, 0.4, 0.9, 0.5, 0.3, -0.2, 0.6, 0.1, 0.4, -0.3, 0.8, 0.25, 0.35},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.08391366308572422, -0.5712179840009245, 0.4}},
   };
   return cases;
 }

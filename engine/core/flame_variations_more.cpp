@@ -639,6 +639,44 @@ void pixelFlow(const VariationInput& in, double* __restrict ox, double* __restri
   }
 }
 
+// vibration2 (FarDareisMai's Apophysis plugin, as JWildfire ports it): two sine waves across the
+// plane, each along direction dir (dir2) and displacing the point at angle + dir from it, their
+// direction, angle, phase and amplitude modulated by cosines along the wave (dm, tm, fm, am).
+struct VibrationWave {
+  double dir, angle, freq, amp, phase, dm, dmFreq, tm, tmFreq, fm, fmFreq, am, amFreq;
+};
+
+inline double vibrationModulate(double amp, double freq, double along) {
+  return amp * std::cos(along * freq * kTwoPi);
+}
+
+inline void addVibration(const VibrationWave& v, double x, double y, double& px, double& py) {
+  const double along = x * std::cos(v.dir) + y * std::sin(v.dir);
+  const double dirL = v.dir + vibrationModulate(v.dm, v.dmFreq, along);
+  const double angleL = v.angle + vibrationModulate(v.tm, v.tmFreq, along);
+  const double phaseL = vibrationModulate(v.fm, v.fmFreq, along) / v.freq;
+  const double ampL = v.amp + v.amp * vibrationModulate(v.am, v.amFreq, along);
+  const double total = angleL + dirL;
+  const double alongL = x * std::cos(dirL) + y * std::sin(dirL);
+  const double local = ampL * std::sin(alongL * v.freq * kTwoPi + phaseL + kTwoPi * v.phase / v.freq);
+  px += local * std::cos(total);
+  py += local * std::sin(total);
+}
+
+void vibration2(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const VibrationWave first{P[0], P[1], P[2], P[3], P[4], P[10], P[11], P[12], P[13], P[14], P[15], P[16], P[17]};
+  const VibrationWave second{P[5], P[6], P[7], P[8], P[9], P[18], P[19], P[20], P[21], P[22], P[23], P[24], P[25]};
+  for (std::size_t i = 0; i < n; ++i) {
+    double px = x[i], py = y[i];
+    addVibration(first, x[i], y[i], px, py);
+    addVibration(second, x[i], y[i], px, py);
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void addMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -816,6 +854,20 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
        {"width", 200.0, 1.0, 500.0},
        count("seed", 42.0, 0.0, 1000000.0),
        count("enable_dc", 0.0, 0.0, 1.0)});
+  add("vibration2",
+      "p + Σ over two waves a sin(2π freq d' + m_f/freq + 2π phase/freq) (cos(angle' + dir'), sin(angle' + dir')), z; "
+      "d = x cos dir + y sin dir, dir' = dir + m_d, angle' = angle + m_t, a = amp (1 + m_a), d' = x cos dir' + y sin "
+      "dir', each m = (dm, tm, fm, am) cos(2π d ·(dmfreq, …)); the second wave has the parameters ending in 2",
+      k2D, kFixed, &vibration2,
+      {{"dir", 0.0, -kPi, kPi},       {"angle", 1.5708, -kPi, kPi}, {"freq", 1.0, -5.0, 5.0},
+       {"amp", 0.25, -1.0, 1.0},      {"phase", 0.0, -1.0, 1.0},    {"dir2", 1.5708, -kPi, kPi},
+       {"angle2", 1.5708, -kPi, kPi}, {"freq2", 1.0, -5.0, 5.0},    {"amp2", 0.25, -1.0, 1.0},
+       {"phase2", 0.0, -1.0, 1.0},    {"dm", 0.0, -1.0, 1.0},       {"dmfreq", 0.1, -1.0, 1.0},
+       {"tm", 0.0, -1.0, 1.0},        {"tmfreq", 0.1, -1.0, 1.0},   {"fm", 0.0, -1.0, 1.0},
+       {"fmfreq", 0.1, -1.0, 1.0},    {"am", 0.0, -1.0, 1.0},       {"amfreq", 0.1, -1.0, 1.0},
+       {"d2m", 0.0, -1.0, 1.0},       {"d2mfreq", 0.1, -1.0, 1.0},  {"t2m", 0.0, -1.0, 1.0},
+       {"t2mfreq", 0.1, -1.0, 1.0},   {"f2m", 0.0, -1.0, 1.0},      {"f2mfreq", 0.1, -1.0, 1.0},
+       {"a2m", 0.0, -1.0, 1.0},       {"a2mfreq", 0.1, -1.0, 1.0}});
 }
 
 }  // namespace voxflame::core
