@@ -205,10 +205,16 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kHighSeed,
        {0.7514243908131175, -0.34916235295840825, 0.4}},
-      // y: with every shape at 0 the radius is 0; then the four shapes of a Fractorium flame (star_slope
-      // 1.5708 is within 10⁻⁶ of π/2, so tan(1.5208) is used), a hypergon alone, and a star with a
-      // lituus.
-      {"y", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.4}},
+      // y: the default square hypergon (d = √2: u = tan² t + 1 < 2, so (√2 − √(2 − u))/√u); with every
+      // shape at 0 the radius is 0; then the four shapes of a Fractorium flame (star_slope 1.5708 is
+      // within 10⁻⁶ of π/2, so tan(1.5208) is used), a hypergon alone, and a star with a lituus.
+      {"y", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.08836042353276663, -0.20617432157645546, 0.4}},
+      {"y",
+       {0.0, 4.0, 1.0, 0.0, 5.0, 2.0, 0.0, 1.0, 0.0, 1.0, 1.0, 1.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.0, 0.0, 0.4}},
       {"y",
        {-2.752, 5.0, 0.683, 0.473, 10.0, 1.5708, -0.302, 0.787, 0.178, 10.0, 10.0, 1.0, 5.0},
        {0.3, -0.7, 0.5},
@@ -252,6 +258,27 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kHighSeed,
        {0.08391366308572422, -0.5712179840009245, 0.4}},
+      // truchet: the point scaled by 1/w = 1.25 (rotation 0), its place in the unit cell; at the main
+      // point neither arc is near, so nothing is added; at (0.35, 0.12) the cell (0.4375, 0.15) is on
+      // the first arc only (tile 1.33 of the fast hash: arcs round (1, 0) and (0, 1)).
+      {"truchet", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.0}},
+      {"truchet", {}, {0.35, 0.12, 0.5}, 0.8, kHighSeed, {0.4375, 0.15, 0.0}},
+      {"truchet", {}, {-0.62, 0.41, 0.5}, 0.8, kHighSeed, {-0.775, 0.5125, 0.0}},
+      {"truchet", {0.0, 2.0, 0.5, 0.0, 1.0, 1.0, 0.0}, {0.35, 0.12, 0.5}, 0.8, kHighSeed, {0.4375, 0.15, 0.0}},
+      // Extended (the congruence iterated), exponent 1.5, arc_width 0.8, rotation 0.3, size 2,
+      // seed 37.6 (⌊⌋ = 37): the second arc adds z.
+      {"truchet",
+       {1.0, 1.5, 0.8, 0.3, 2.0, 37.6, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.9381425218402091, -0.18899921762715444, 0.4}},
+      {"truchet",
+       {1.0, 1.5, 0.8, 0.3, 2.0, 37.6, 0.0},
+       {2.4, -3.3, 0.5},
+       0.8,
+       kHighSeed,
+       {5.505140174721673, -6.3195677402423005, 0.4}},
   };
   return cases;
 }
@@ -320,6 +347,10 @@ TEST(FlameVariationMore, MirrorsAndAxisSymmetryReplaceThePointInTheirPrePostForm
     ASSERT_NE(info, nullptr) << name;
     EXPECT_FALSE(info->additive) << name;
   }
+  // None of these ignores the point, so every pre_/post_ form replaces it.
+  std::vector<VariationInfo> more;
+  addMoreVariations(more);
+  for (const VariationInfo& info : more) EXPECT_FALSE(findVariation(info.name)->additive) << info.name;
   EXPECT_EQ(variationStage("post_axis_symmetry_wf"), VariationStage::Post);
   EXPECT_EQ(variationStage("pre_mirror_x"), VariationStage::Pre);
 }

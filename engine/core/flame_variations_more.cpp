@@ -677,6 +677,70 @@ void vibration2(const VariationInput& in, double* __restrict ox, double* __restr
   }
 }
 
+// truchet (as JWildfire has it): a Truchet tiling of quarter-circle arcs (of the superellipse with
+// `exponent`) on the unit grid of the point scaled by (cos r − sin r)/w, r = −rotation; each
+// tile's orientation is hashed from the point's rounded cell and `seed` (a linear congruence,
+// iterated up to 1000 times when extended). A point on an arc is drawn at size · (its place in
+// the tile + ⌊p⌋), once per arc it lies on; the weight only scales the grid, and z is carried
+// (by the weight) only from the second arc, all as JWildfire does. Its direct colour is not
+// applied; the importer says so when a file sets it.
+inline double javaRound(double value) {
+  return std::floor(value + 0.5);
+}
+
+void truchet(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const bool extended = std::clamp(javaRound(P[0]), 0.0, 1.0) == 1.0;
+  const double exponent = std::clamp(P[1], 0.001, 2.0), width = std::clamp(P[2], 0.001, 1.0);
+  const double rotation = P[3], size = std::clamp(P[4], 0.001, 10.0);
+  const double seed = std::abs(P[5]);
+  const double seed2 = std::sqrt(seed + seed / 2.0 + 1e-300) / (seed * 0.5 + 1e-300) * 0.25;
+  const double rMax = 0.5 * (std::pow(2.0, 1.0 / exponent) - 1.0) * width;
+  const double scale = (std::cos(-rotation) - std::sin(-rotation)) / w;
+  constexpr double kModBase = 65535.0, kMultiplier = 32747.0, kOffset = 12345.0;
+  const auto norm = [&](double a, double b) {
+    return std::pow(std::pow(std::abs(a), exponent) + std::pow(std::abs(b), exponent), 1.0 / exponent);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    double tx = x[i] * scale, ty = y[i] * scale;
+    tx -= static_cast<double>(javaInt(javaRound(tx)));
+    ty -= static_cast<double>(javaInt(javaRound(ty)));
+    if (tx < 0.0) tx += 1.0;
+    if (ty < 0.0) ty += 1.0;
+    double tile = 0.0;
+    if (seed == 1.0) {
+      tile = 1.0;
+    } else if (seed != 0.0) {
+      double randint;
+      if (!extended) {
+        const double xr = javaRound(x[i]) * seed2, yr = javaRound(y[i]) * seed2;
+        randint = (xr + yr + xr * yr + seed) * seed2 / 2.0;
+        randint = std::fmod(randint * kMultiplier + kOffset, kModBase);
+      } else {
+        const std::int32_t xr = javaInt(javaRound(x[i])), yr = javaInt(javaRound(y[i]));
+        const double iterations =
+            std::min(std::abs(static_cast<double>(wrapAdd(wrapAdd(xr, yr), wrapMul(xr, yr)))), 1000.0);
+        randint = std::floor(seed) + iterations;
+        for (double k = 0.0; k < iterations; k += 1.0) randint = std::fmod(randint * kMultiplier + kOffset, kModBase);
+      }
+      tile = std::fmod(randint, 2.0);
+    }
+    const bool diagonal = extended ? tile == 1.0 : tile < 1.0;
+    const double r0 = diagonal ? norm(tx, ty) : norm(tx - 1.0, ty);
+    const double r1 = diagonal ? norm(tx - 1.0, ty - 1.0) : norm(tx, ty - 1.0);
+    const double px = size * (tx + std::floor(x[i])), py = size * (ty + std::floor(y[i]));
+    if (std::abs(r0 - 0.5) / rMax < 1.0) {
+      outX[i] += px;
+      outY[i] += py;
+    }
+    if (std::abs(r1 - 0.5) / rMax < 1.0) {
+      outX[i] += px;
+      outY[i] += py;
+      outZ[i] += w * z[i];
+    }
+  }
+}
+
 }  // namespace
 
 void addMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -829,9 +893,10 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
       "(T²/r)(cos φ, sin φ), z; T = hypergon H + star S + lituus (|φ/π + 1|)^(−lituus_a) + super (|cos(φ "
       "super_m/4)|^super_n2 + |sin(φ super_m/4)|^super_n3)^(−1/super_n1); H = 1, or (d − √(d² − u))/√u where u = tan² "
       "t + 1 < d², d² = 1 + hypergon_r², t = (|φ| mod 2π/hypergon_n) − π/hypergon_n; S = √(k²(1 + v²))/(v + k), v = "
-      "|tan t| with star_n, k = tan star_slope (Fractorium's)",
+      "|tan t| with star_n, k = tan star_slope (Fractorium's, whose hypergon is 0 unless set: Fractorium writes "
+      "every parameter, and at 0 the variation would draw nothing)",
       k2D, kFixed, &yShapes,
-      {{"hypergon", 0.0, -3.0, 3.0},
+      {{"hypergon", 1.0, -3.0, 3.0},
        count("hypergon_n", 4.0, 3.0, 12.0),
        {"hypergon_r", 1.0, 0.0, 3.0},
        {"star", 0.0, -3.0, 3.0},
@@ -868,6 +933,20 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
        {"d2m", 0.0, -1.0, 1.0},       {"d2mfreq", 0.1, -1.0, 1.0},  {"t2m", 0.0, -1.0, 1.0},
        {"t2mfreq", 0.1, -1.0, 1.0},   {"f2m", 0.0, -1.0, 1.0},      {"f2mfreq", 0.1, -1.0, 1.0},
        {"a2m", 0.0, -1.0, 1.0},       {"a2mfreq", 0.1, -1.0, 1.0}});
+  add("truchet",
+      "size (q + ⌊(x, y)⌋) once for each Truchet arc the point lies on (|‖q − corner‖_exponent − ½| < rmax), else "
+      "nothing; q the point's place in its unit cell after scaling by (cos r − sin r)/w (r = −rotation, w the "
+      "weight), the arcs round the corners (0, 0) and (1, 1) or (1, 0) and (0, 1) by a hash of the cell and seed, "
+      "rmax = (2^(1/exponent) − 1) arc_width/2; z (w z from the second arc only); the weight is not applied "
+      "otherwise (JWildfire's; direct_color is not applied)",
+      k2D, kFixed, &truchet,
+      {count("extended", 0.0, 0.0, 1.0),
+       {"exponent", 2.0, 0.001, 2.0},
+       {"arc_width", 0.5, 0.001, 1.0},
+       {"rotation", 0.0, -kPi, kPi},
+       {"size", 1.0, 0.001, 10.0},
+       {"seed", 50.0, 0.0, 1000.0},
+       count("direct_color", 0.0, 0.0, 1.0)});
 }
 
 }  // namespace voxflame::core

@@ -562,10 +562,12 @@ class FlameReader {
         lose("colour shift of " + withoutCopyMark(name));
         warn(context + " has " + name + " with a colour shift, which voxflame does not apply");
       }
-      // pixel_flow's direct colour (its Ψ as the point's colour) is not applied either.
-      if (info->name == "pixel_flow" && term.params.at(4) != 0.0) {
+      // pixel_flow's and truchet's direct colour (the point's colour set by the variation) is not
+      // applied either.
+      if ((info->name == "pixel_flow" && term.params.at(4) != 0.0) ||
+          (info->name == "truchet" && std::round(term.params.at(6)) == 1.0)) {
         lose("direct colour of " + withoutCopyMark(name));
-        warn(context + " has " + name + " with direct colour (enable_dc), which voxflame does not apply");
+        warn(context + " has " + name + " with direct colour, which voxflame does not apply");
       }
       // Fractorium's post_depth adds the transform's affine point, which a post_ term does not see.
       if (info->name == "depth" && variationStage(term.name) == VariationStage::Post) {
