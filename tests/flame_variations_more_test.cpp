@@ -279,6 +279,52 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kHighSeed,
        {5.505140174721673, -6.3195677402423005, 0.4}},
+      // nBlur replayed from the lane's draws: the default triangle; the corpus flame's 3 sides with
+      // −15 stripes and a hole; 4 stripes of ratio 0.6 on a pentagon; exactCalc on a hexagon with
+      // wide stripes; and the circumcircle of a square with −2 stripes.
+      {"nBlur", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.43745605638034324, 0.17780636306596492, 0.4}},
+      {"nBlur",
+       {3.0, -15.0, 0.45, 0.6, 0.0, 0.0, 0.0, 0.0, 0.1},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.33824696804133264, 0.10574729432217148, 0.4}},
+      {"nBlur",
+       {5.0, 4.0, 0.6, 0.3, 0.0, 1.0, 1.0, 0.0, 1.5},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.49188529518430196, -0.17066796213536645, 0.4}},
+      {"nBlur",
+       {5.0, 4.0, 0.6, 0.3, 0.0, 1.0, 1.0, 0.0, 1.5},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.40509341919178243, 0.284223212240704, 0.4}},
+      {"nBlur",
+       {6.0, 3.0, 1.6, 0.2, 0.0, 1.0, 0.0, 1.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.42222563921427075, 0.10976638156256624, 0.4}},
+      {"nBlur",
+       {6.0, 3.0, 1.6, 0.2, 0.0, 1.0, 0.0, 1.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.7002778646617289, 0.02007583911894626, 0.4}},
+      {"nBlur",
+       {4.0, -2.0, 0.5, 0.5, 1.0, 1.0, 1.0, 0.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.2789933584132139, -0.6531239498192722, 0.4}},
+      {"nBlur",
+       {4.0, -2.0, 0.5, 0.5, 1.0, 1.0, 1.0, 0.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.7646756130925147, 0.18410702872450752, 0.4}},
   };
   return cases;
 }
@@ -341,16 +387,17 @@ TEST(FlameVariationMore, EveryEntryHasAHandCheckedPointAndIsInTheCatalogue) {
 }
 
 // The pre_/post_ forms of a variation that ignores its weight replace the point by its own result.
-TEST(FlameVariationMore, MirrorsAndAxisSymmetryReplaceThePointInTheirPrePostForms) {
+TEST(FlameVariationMore, PrePostFormsReplaceThePointUnlessTheVariationIsABlur) {
   for (const char* name : {"pre_mirror_x", "post_mirror_y", "post_axis_symmetry_wf"}) {
     const VariationInfo* info = findVariation(name);
     ASSERT_NE(info, nullptr) << name;
     EXPECT_FALSE(info->additive) << name;
   }
-  // None of these ignores the point, so every pre_/post_ form replaces it.
+  // Only nBlur, a blur, ignores the point (its pre_/post_ forms add); every other form replaces it.
   std::vector<VariationInfo> more;
   addMoreVariations(more);
-  for (const VariationInfo& info : more) EXPECT_FALSE(findVariation(info.name)->additive) << info.name;
+  for (const VariationInfo& info : more)
+    EXPECT_EQ(findVariation(info.name)->additive, info.name == "nBlur") << info.name;
   EXPECT_EQ(variationStage("post_axis_symmetry_wf"), VariationStage::Post);
   EXPECT_EQ(variationStage("pre_mirror_x"), VariationStage::Pre);
 }

@@ -741,6 +741,168 @@ void truchet(const VariationInput& in, double* __restrict ox, double* __restrict
   }
 }
 
+// Fractorium's nBlur: a blur filling a regular polygon of numEdges sides (its corners favoured by
+// highlightEdges), optionally cut into numStripes stripes per side (negative: the other stripes)
+// whose widths ratioStripes sets, with a hole of ratioHole, or its circumcircle. Fractorium's
+// precomputed values are worked out per call; numEdges and numStripes are held within ±1000 here,
+// as Fractorium's loops run once per edge and stripe, and exactCalc's rejection of points outside
+// the ring gives up after 100 tries (keeping the last).
+struct NBlurSetup {
+  double numEdges, midAngle, angStart, angStripes, ratioStripes, ratioComplement, ratioHole, tan90m2, arcTan1, arcTan2,
+      speedCalc1, speedCalc2, maxStripes;
+  bool hasStripes, negStripes, circumCircle, equalBlur, exactCalc;
+};
+
+struct NBlurPoint {
+  double x, y, lenXY, lenInner, lenOuter;
+};
+
+inline NBlurPoint nBlurRandomPoint(const NBlurSetup& s, std::uint32_t& random) {
+  double angXY;
+  if (s.exactCalc) {
+    angXY = laneUniform(random) * kTwoPi;
+  } else {
+    const double t = laneUniform(random);
+    const double edge = std::floor(laneUniform(random) * s.numEdges);
+    angXY = (std::atan(s.arcTan1 * (t - 0.5)) / s.arcTan2 + 0.5 + edge) * s.midAngle;
+  }
+  double angMem = angXY;
+  double px = std::sin(angXY), py = std::cos(angXY);
+  while (angXY > s.midAngle) angXY -= s.midAngle;
+  if (s.hasStripes) {
+    int count = 0;
+    double angTmp = s.angStart;
+    while (angXY > angTmp) {
+      angTmp += s.angStripes;
+      if (angTmp > s.midAngle) angTmp = s.midAngle;
+      ++count;
+    }
+    if (angTmp != s.midAngle) angTmp -= s.angStart;
+    // The negative stripes are the positive ones' complement: the roles of odd and even stripes
+    // and of the two ratios swap.
+    const int drawn = s.negStripes ? 0 : 1;
+    const double ratio = s.negStripes ? s.ratioComplement : s.ratioStripes;
+    const double speed = s.negStripes ? s.speedCalc1 : s.speedCalc2;
+    const auto turnTo = [&](double angle) {
+      px = std::sin(angle);
+      py = std::cos(angle);
+    };
+    if ((count & 1) == drawn) {
+      if (angXY > angTmp && (!s.negStripes || count != s.maxStripes)) {
+        angXY += s.angStart;
+        angMem += s.angStart;
+        turnTo(angMem);
+        angTmp += s.angStripes;
+        ++count;
+      } else {
+        angXY -= s.angStart;
+        angMem -= s.angStart;
+        turnTo(angMem);
+        angTmp -= s.angStripes;
+        --count;
+      }
+    }
+    const int kept = 1 - drawn;
+    if ((count & 1) == kept && ratio > 1.0) {
+      if (angXY > angTmp && count != s.maxStripes) {
+        angMem = angMem - angXY + angTmp + (angXY - angTmp) / s.angStart * ratio * s.angStart;
+        angXY = angTmp + (angXY - angTmp) / s.angStart * ratio * s.angStart;
+      } else {
+        angMem = angMem - angXY + angTmp - (angTmp - angXY) / s.angStart * ratio * s.angStart;
+        angXY = angTmp + (angXY - angTmp) / s.angStart * ratio * s.angStart;
+      }
+      turnTo(angMem);
+    }
+    if ((count & 1) == kept && ratio < 1.0) {
+      const auto squeezeDown = [&] {
+        if (angTmp - angXY > speed) {
+          const double shift = (angTmp - speed - angXY) * speed / (s.angStart - speed);
+          turnTo(angMem - angXY + angTmp - shift);
+          angXY = angTmp - shift;
+        }
+      };
+      if (std::abs(angXY - angTmp) > speed && count != s.maxStripes) {
+        if (angXY - angTmp > speed) {
+          const double shift = (angXY - (angTmp + speed)) * speed / (s.angStart - speed);
+          turnTo(angMem - angXY + angTmp + shift);
+          angXY = angTmp + shift;
+        }
+        squeezeDown();
+      }
+      if (count == s.maxStripes) {
+        if (s.negStripes) angTmp = s.midAngle;
+        squeezeDown();
+      }
+    }
+  }
+  const double outerX = s.tan90m2 / (s.tan90m2 - std::tan(angXY)), outerY = outerX * std::tan(angXY);
+  NBlurPoint point{};
+  point.lenOuter = std::sqrt(outerX * outerX + outerY * outerY);
+  const auto draw = [&] { return s.equalBlur ? std::sqrt(laneUniform(random)) : laneUniform(random); };
+  double radius = draw();
+  if (!s.exactCalc && !s.circumCircle) radius *= point.lenOuter;
+  point.lenInner = s.ratioHole * point.lenOuter;
+  if (!s.exactCalc && radius < point.lenInner) {
+    const double span = s.circumCircle ? 1.0 - point.lenInner + std::numeric_limits<double>::epsilon()
+                                       : point.lenOuter - point.lenInner;
+    radius = draw() * span + point.lenInner;
+  }
+  point.x = px * radius;
+  point.y = py * radius;
+  point.lenXY = std::sqrt(point.x * point.x + point.y * point.y);
+  return point;
+}
+
+void nBlur(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  NBlurSetup s{};
+  s.numEdges = fractoriumInteger(P[0], 3.0, 1000.0);
+  const double numStripes = fractoriumInteger(P[1], -1000.0, 1000.0);
+  s.ratioStripes = std::clamp(P[2], 0.0, 2.0);
+  s.ratioHole = std::clamp(P[3], 0.0, 1.0);
+  s.circumCircle = fractoriumInteger(P[4], 0.0, 1.0) == 1.0;
+  const bool adjustToLinear = fractoriumInteger(P[5], 0.0, 1.0) == 1.0;
+  s.equalBlur = fractoriumInteger(P[6], 0.0, 1.0) == 1.0;
+  s.exactCalc = fractoriumInteger(P[7], 0.0, 1.0) == 1.0;
+  double highlight = P[8];
+  s.hasStripes = numStripes != 0.0;
+  s.negStripes = numStripes < 0.0;
+  const double absStripes = std::abs(numStripes);
+  s.midAngle = kTwoPi / s.numEdges;
+  if (s.hasStripes) {
+    s.angStripes = s.midAngle / (2.0 * absStripes);
+    s.angStart = s.angStripes / 2.0;
+    s.ratioComplement = 2.0 - s.ratioStripes;
+  }
+  if (s.ratioHole > 0.95 && s.exactCalc && !s.circumCircle) s.ratioHole = 0.95;
+  s.tan90m2 = std::tan(kPi / 2.0 + s.midAngle / 2.0);
+  const double sinA = std::sin(s.midAngle / 2.0), cosA = std::cos(s.midAngle / 2.0);
+  if (!(highlight > 0.1)) highlight = 0.1;
+  double adjusted = w;
+  if (adjustToLinear) {
+    const double turns = std::fmod(s.numEdges, 4.0) == 0.0 ? s.numEdges / 2.0 - 1.0 : std::floor(s.numEdges / 2.0);
+    adjusted = w / fractoriumZeps(std::sqrt(2.0 - 2.0 * std::cos(s.midAngle * turns)) / 2.0);
+  }
+  if (s.circumCircle) {
+    s.exactCalc = false;
+    highlight = 0.1;
+  }
+  s.speedCalc1 = s.ratioComplement * s.angStart;
+  s.speedCalc2 = s.ratioStripes * s.angStart;
+  s.maxStripes = 2.0 * absStripes;
+  s.arcTan1 = (s.negStripes ? 7.5 : 13.0) / std::pow(s.numEdges, 1.3) * highlight;
+  s.arcTan2 = 2.0 * std::atan(s.arcTan1 / -2.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    NBlurPoint point = nBlurRandomPoint(s, rnd[i]);
+    for (int tries = 1; s.exactCalc && tries < 100 && (point.lenXY < point.lenInner || point.lenXY > point.lenOuter);
+         ++tries)
+      point = nBlurRandomPoint(s, rnd[i]);
+    outX[i] += adjusted * (cosA * point.x - sinA * point.y);
+    outY[i] += adjusted * (sinA * point.x + cosA * point.y);
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void addMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -947,6 +1109,21 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
        {"size", 1.0, 0.001, 10.0},
        {"seed", 50.0, 0.0, 1000.0},
        count("direct_color", 0.0, 0.0, 1.0)});
+  add("nBlur",
+      "a random point of a regular numEdges-gon (corners favoured by highlightEdges; its stripes with numStripes, "
+      "their widths by ratioStripes; a hole of ratioHole; its circumcircle with circumCircle; uniform with "
+      "equalBlur; exact rejection with exactCalc), turned by half a side's angle and scaled to linear's size with "
+      "adjustToLinear, z (Fractorium's; numEdges and numStripes held within ±1000)",
+      k2D, kRandom, &nBlur,
+      {count("numEdges", 3.0, 3.0, 12.0),
+       count("numStripes", 0.0, -20.0, 20.0),
+       {"ratioStripes", 1.0, 0.0, 2.0},
+       {"ratioHole", 0.0, 0.0, 1.0},
+       count("circumCircle", 0.0, 0.0, 1.0),
+       count("adjustToLinear", 1.0, 0.0, 1.0),
+       count("equalBlur", 1.0, 0.0, 1.0),
+       count("exactCalc", 0.0, 0.0, 1.0),
+       {"highlightEdges", 1.0, 0.1, 4.0}});
 }
 
 }  // namespace voxflame::core
