@@ -325,6 +325,10 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kLowSeed,
        {-0.7646756130925147, 0.18410702872450752, 0.4}},
+      // shredlin: 0.3 is in strip 0, narrowed to half about 0.5 → 0.4; −0.7 → −0.6. Then strips of
+      // 0.3 and 0.45 with a negative width.
+      {"shredlin", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.32, -0.48, 0.4}},
+      {"shredlin", {0.3, 0.2, 0.45, -0.6}, {1.37, -2.21, 0.5}, 0.8, kHighSeed, {1.0832, -1.5312, 0.4}},
   };
   return cases;
 }
@@ -430,6 +434,14 @@ TEST(FlameVariationMore, PixelFlowReadsItsBareParameterNames) {
   EXPECT_EQ(term->params, (std::vector<double>{130.0, 1.2, 100.0, 42.0, 0.0}));
   const ImportedFlame direct = importXform(R"(linear="1" pixel_flow="0.096" coefs="1 0 0 1 0 0" enable_dc="1")");
   EXPECT_EQ(direct.leftOut, (std::vector<std::string>{"direct colour of pixel_flow"}));
+}
+
+// JWildfire's shredlin replaces the x and y of the ordinary terms before it: said when there are any.
+TEST(FlameVariationMore, ShredlinAfterOtherVariationsIsNamed) {
+  const ImportedFlame first = importXform(R"(shredlin="1" linear="0.5" coefs="1 0 0 1 0 0")");
+  EXPECT_TRUE(first.leftOut.empty()) << first.leftOut.front();
+  const ImportedFlame after = importXform(R"(poincare3D="1.5" shredlin="3.7" coefs="1 0 0 1 0 0")");
+  EXPECT_EQ(after.leftOut, (std::vector<std::string>{"terms before shredlin"}));
 }
 
 // JWildfire's zxCoefs and yzCoefs compose with coefs into one 3D affine map: (x, y, z) = (1, 2, 3)

@@ -903,6 +903,27 @@ void nBlur(const VariationInput& in, double* __restrict ox, double* __restrict o
   }
 }
 
+// shredlin (as JWildfire has it): each axis cut into strips of width distance, each strip narrowed
+// to `width` of itself about its middle. JWildfire assigns its x and y instead of adding them,
+// which discards the terms before it on the same transform; alone or first it is this sum (the
+// importer says so when it is not).
+void shredlin(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  const double xDistance = P[0], xWidth = std::clamp(P[1], -1.0, 1.0);
+  const double yDistance = P[2], yWidth = std::clamp(P[3], -1.0, 1.0);
+  const auto shred = [](double v, double distance, double width) {
+    const double range = v / distance;
+    const double whole = static_cast<double>(javaInt(range));
+    const double side = v < 0.0 ? 1.0 : 0.0;
+    return distance * ((range - whole) * width + whole + (0.5 - side) * (1.0 - width));
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    outX[i] += w * shred(x[i], xDistance, xWidth);
+    outY[i] += w * shred(y[i], yDistance, yWidth);
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void addMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -1124,6 +1145,14 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
        count("equalBlur", 1.0, 0.0, 1.0),
        count("exactCalc", 0.0, 0.0, 1.0),
        {"highlightEdges", 1.0, 0.1, 4.0}});
+  add("shredlin",
+      "(xdistance ((u − [u]) xwidth + [u] + (½ − [x < 0])(1 − xwidth)), the same for y, z); u = x/xdistance, [u] "
+      "its integer part (JWildfire's, which replaces the sum of the terms before it; the importer names that case)",
+      k2D, kFixed, &shredlin,
+      {{"xdistance", 1.0, 0.05, 4.0},
+       {"xwidth", 0.5, -1.0, 1.0},
+       {"ydistance", 1.0, 0.05, 4.0},
+       {"ywidth", 0.5, -1.0, 1.0}});
 }
 
 }  // namespace voxflame::core
