@@ -437,11 +437,16 @@ TEST(FlameVariationMore, PixelFlowReadsItsBareParameterNames) {
 }
 
 // JWildfire's shredlin replaces the x and y of the ordinary terms before it: said when there are any.
-TEST(FlameVariationMore, ShredlinAfterOtherVariationsIsNamed) {
+TEST(FlameVariationMore, ShredlinAndMirrorsAfterOtherVariationsAreNamed) {
   const ImportedFlame first = importXform(R"(shredlin="1" linear="0.5" coefs="1 0 0 1 0 0")");
   EXPECT_TRUE(first.leftOut.empty()) << first.leftOut.front();
   const ImportedFlame after = importXform(R"(poincare3D="1.5" shredlin="3.7" coefs="1 0 0 1 0 0")");
   EXPECT_EQ(after.leftOut, (std::vector<std::string>{"terms before shredlin"}));
+  // Fractorium's mirror_x as an ordinary term discards the sum before it; as a pre_ term it does not.
+  const ImportedFlame mirror = importXform(R"(linear="1" mirror_x="1" coefs="1 0 0 1 0 0")");
+  EXPECT_EQ(mirror.leftOut, (std::vector<std::string>{"terms before mirror_x"}));
+  const ImportedFlame pre = importXform(R"(linear="1" pre_mirror_x="0.05" coefs="1 0 0 1 0 0")");
+  EXPECT_TRUE(pre.leftOut.empty()) << pre.leftOut.front();
 }
 
 // JWildfire's zxCoefs and yzCoefs compose with coefs into one 3D affine map: (x, y, z) = (1, 2, 3)

@@ -51,7 +51,7 @@ inline double fractoriumZeps(double value) {
 // Fractorium's mirror_x/y/z: one coordinate's absolute value, negated half the time (Ψ < ½); the
 // weight is not applied (Fractorium ignores it). Fractorium meant them as pre_/post_ terms; as an
 // ordinary term Fractorium also discards the terms summed before it, which a sum cannot do, so
-// here it simply adds its point.
+// here it simply adds its point (and the importer names a file's mirror after other terms).
 void mirrorX(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {

@@ -569,13 +569,16 @@ class FlameReader {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
       }
-      // JWildfire's shredlin assigns its x and y, discarding those of the ordinary terms before it.
-      if (info->name == "shredlin" && variationStage(term.name) == VariationStage::Normal &&
+      // JWildfire's shredlin assigns its x and y, discarding those of the ordinary terms before it;
+      // Fractorium's mirror_x/y/z as an ordinary term discards their whole sum.
+      const bool discardsEarlierTerms =
+          info->name == "shredlin" || info->name == "mirror_x" || info->name == "mirror_y" || info->name == "mirror_z";
+      if (discardsEarlierTerms && variationStage(term.name) == VariationStage::Normal &&
           std::any_of(x.variations.begin(), x.variations.end(),
                       [](const VariationTerm& t) { return variationStage(t.name) == VariationStage::Normal; })) {
         lose("terms before " + withoutCopyMark(name));
-        warn(context + " has " + name + " after other variations, whose x and y JWildfire's " + name +
-             " discards; voxflame adds them");
+        warn(context + " has " + name + " after other variations, whose results " + name +
+             " discards where it comes from; voxflame adds them");
       }
       // Fractorium's post_depth adds the transform's affine point, which a post_ term does not see.
       if (info->name == "depth" && variationStage(term.name) == VariationStage::Post) {
