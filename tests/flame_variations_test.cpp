@@ -22,6 +22,7 @@
 #include "core/error.h"
 #include "core/flame_noise.h"
 #include "core/flame_variations.h"
+#include "core/flame_variations_more.h"
 #include "core/random.h"
 #include "core/scene.h"
 
@@ -772,6 +773,10 @@ TEST(VariationCatalogue, EveryVariationHasAHandCheckedPoint) {
     EXPECT_NE(findVariation(c.name), nullptr) << c.name << " is in the table but not in the catalogue";
     checked.insert(c.name);
   }
+  // flame_variations_more_test.cpp checks the entries of flame_variations_more.cpp.
+  std::vector<VariationInfo> more;
+  addMoreVariations(more);
+  for (const VariationInfo& info : more) checked.insert(info.name);
   for (const VariationInfo& info : variationCatalogue())
     EXPECT_TRUE(checked.count(info.name)) << info.name << " has no hand-checked point in pointCases()";
 }

@@ -391,8 +391,11 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
     EXPECT_DOUBLE_EQ(term.weight, 0.7);
     ASSERT_EQ(term.params.size(), expected.size()) << info.name;
     for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_DOUBLE_EQ(term.params[i], expected[i]) << info.name;
-    if (info.name == "falloff2")  // its colour shift, set here, is the one parameter not applied
-      EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour shift of falloff2"}));
+    // Their colour shifts, set here, are the parameters not applied.
+    if (info.name == "falloff2" || info.name == "falloff3" || info.name == "axis_symmetry_wf")
+      EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour shift of " + info.name}));
+    else if (info.name == "pixel_flow" || info.name == "truchet")
+      EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"direct colour of " + info.name}));
     else if (info.name == "smartcrop")  // static −1 reads the transform's state, which is not kept
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"static or cropmode 2 of smartcrop"}));
     else

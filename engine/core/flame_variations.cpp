@@ -11,6 +11,7 @@
 
 #include "error.h"
 #include "flame_noise.h"
+#include "flame_variations_more.h"
 
 namespace voxflame::core {
 
@@ -2807,6 +2808,7 @@ std::vector<VariationInfo> buildCatalogue() {
        {"f", 0.0, -2.0, 2.0}});
   add("flatten", "(0, 0, 0), and the transform's z is 0 after its variations (Apophysis 3D's flatten)", k3D, kFixed,
       &flatten);
+  addMoreVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3")

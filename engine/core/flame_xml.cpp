@@ -64,7 +64,11 @@ const std::set<std::string, std::less<>>& knownXformAttributes() {
                                                            "enabled",
                                                            "var",
                                                            "var1",
-                                                           "opacity_speed"};
+                                                           "opacity_speed",
+                                                           "yzCoefs",
+                                                           "zxCoefs",
+                                                           "yzPost",
+                                                           "zxPost"};
   return names;
 }
 
@@ -91,11 +95,15 @@ const VariationInfo* variationNamed(std::string_view name) {
 // Where a flame file keeps a variation's parameter when not at `<variation>_<parameter>`: flam3's
 // auger_weight is the catalogue's auger `strength` (a preset writes parameters beside "weight"),
 // and Apophysis' Mobius plugin (and FLAM3H after it) writes mobius' parameters bare and
-// capitalised (Re_A … Im_D).
+// capitalised (Re_A … Im_D). FracFx's octagon plugin for Apophysis names its offsets octa_x,
+// octa_y and octa_z (JWildfire's octagon_x ...); bezo97's pixel_flow plugin writes its parameters
+// bare (angle, len, ...).
 std::vector<std::string> fileParamNames(const std::string& termAttribute, const VariationInfo& info,
                                         const std::string& param) {
   std::vector<std::string> names = {termAttribute + "_" + param};
   if (info.name == "auger" && param == "strength") names.push_back(termAttribute + "_weight");
+  if (info.name == "octagon" && param.size() == 1) names.push_back("octa_" + param);
+  if (info.name == "pixel_flow") names.push_back(param);
   if (info.name == "mobius" && param.size() == 4) {
     std::string bare = param;
     bare[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(bare[0])));
@@ -420,6 +428,34 @@ class FlameReader {
     return a;
   }
 
+  // JWildfire's 3D affine maps: after the x–y map of coefs (or post), a 2D map of the y–z plane
+  // (yzCoefs, yzPost) and then one of the z–x plane (zxCoefs, zxPost), each written like coefs
+  // ("00 01 10 11 20 21", u' = 00 u + 10 v, v' = 01 u + 11 v for the plane's (u, v)), whose
+  // translations JWildfire adds only at the end. All of it is one affine map of 3D space.
+  void addJwildfirePlanes(Affine3& a, const pugi::xml_attribute& yzAttribute, const pugi::xml_attribute& zxAttribute,
+                          const std::string& context) const {
+    if (!yzAttribute && !zxAttribute) return;
+    const Affine3 yz = yzAttribute ? affine(yzAttribute, context) : Affine3{};
+    const Affine3 zx = zxAttribute ? affine(zxAttribute, context) : Affine3{};
+    // The linear parts as 3×3 matrices (row-major), applied x–y first.
+    const std::array<double, 9> xyLinear = {a.m[0], a.m[1], a.m[2], a.m[4], a.m[5], a.m[6], a.m[8], a.m[9], a.m[10]};
+    const std::array<double, 9> yzLinear = {1.0, 0.0, 0.0, 0.0, yz.m[0], yz.m[1], 0.0, yz.m[4], yz.m[5]};
+    const std::array<double, 9> zxLinear = {zx.m[0], 0.0, zx.m[1], 0.0, 1.0, 0.0, zx.m[4], 0.0, zx.m[5]};
+    const auto times = [](const std::array<double, 9>& l, const std::array<double, 9>& r) {
+      std::array<double, 9> out{};
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+          for (int k = 0; k < 3; ++k) out[3 * i + j] += l[3 * i + k] * r[3 * k + j];
+      return out;
+    };
+    const std::array<double, 9> linear = times(zxLinear, times(yzLinear, xyLinear));
+    const std::array<double, 3> translation = {a.m[3] + zx.m[3], a.m[7] + yz.m[3], a.m[11] + yz.m[7] + zx.m[7]};
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) a.m[4 * i + j] = linear[3 * i + j];
+      a.m[4 * i + 3] = translation[i];
+    }
+  }
+
   FlameXform xform(const pugi::xml_node& node, const std::string& context, bool isFinal) {
     FlameXform x;
     x.variations.clear();
@@ -433,10 +469,10 @@ class FlameReader {
     const pugi::xml_attribute coefs = node.attribute("coefs");
     if (!coefs) fail(context, "has no coefs attribute (its affine map \"a d b e c f\")");
     x.affine = affine(coefs, context);
-    if (const pugi::xml_attribute post = node.attribute("post")) {
-      x.post = affine(post, context);
-      x.hasPost = !x.post.isIdentity();
-    }
+    addJwildfirePlanes(x.affine, node.attribute("yzCoefs"), node.attribute("zxCoefs"), context);
+    if (const pugi::xml_attribute post = node.attribute("post")) x.post = affine(post, context);
+    addJwildfirePlanes(x.post, node.attribute("yzPost"), node.attribute("zxPost"), context);
+    x.hasPost = !x.post.isIdentity();
     if (const pugi::xml_attribute color = node.attribute("color")) {
       // Apophysis writes "color" as one number; flam3's old files as two ("c1 c2"): the first counts.
       const auto values = parseNumbers(color.value());
@@ -521,10 +557,42 @@ class FlameReader {
           consumed.insert(param->second.first);
           break;
         }
-      // falloff2's colour shift is not applied (flame_variations.cpp).
-      if (info->name == "falloff2" && term.params.at(5) != 0.0) {
+      // falloff2's colour shift is not applied (flame_variations.cpp), nor falloff3's or
+      // axis_symmetry_wf's.
+      const bool shiftsColour =
+          (info->name == "falloff2" && term.params.at(5) != 0.0) ||
+          (info->name == "falloff3" && term.params.at(8) != 0.0) ||
+          (info->name == "axis_symmetry_wf" &&
+           std::any_of(term.params.begin() + 5, term.params.end(), [](double v) { return v != 0.0; }));
+      if (shiftsColour) {
         lose("colour shift of " + withoutCopyMark(name));
-        warn(context + " has " + name + " with a colour shift (mul_c), which voxflame does not apply");
+        warn(context + " has " + name + " with a colour shift, which voxflame does not apply");
+      }
+      // pixel_flow's and truchet's direct colour (the point's colour set by the variation) is not
+      // applied either.
+      if ((info->name == "pixel_flow" && term.params.at(4) != 0.0) ||
+          (info->name == "truchet" && std::round(term.params.at(6)) == 1.0)) {
+        lose("direct colour of " + withoutCopyMark(name));
+        warn(context + " has " + name + " with direct colour, which voxflame does not apply");
+      }
+      // JWildfire's shredlin assigns its x and y, discarding those of the ordinary terms before it;
+      // Fractorium's mirror_x/y/z as an ordinary term discards their whole sum.
+      const bool discardsEarlierTerms =
+          info->name == "shredlin" || info->name == "mirror_x" || info->name == "mirror_y" || info->name == "mirror_z";
+      if (discardsEarlierTerms && variationStage(term.name) == VariationStage::Normal &&
+          std::any_of(x.variations.begin(), x.variations.end(),
+                      [](const VariationTerm& t) { return variationStage(t.name) == VariationStage::Normal; })) {
+        lose("terms before " + withoutCopyMark(name));
+        warn(context + " has " + name + " after other variations, whose results " + name +
+             " discards where it comes from; voxflame adds them");
+      }
+      // Fractorium's post_depth adds the transform's affine point, which a post_ term does not see.
+      if (info->name == "depth" && variationStage(term.name) == VariationStage::Post) {
+        unknownVariations_.insert(withoutCopyMark(name));
+        warn(context +
+             " has Fractorium's post_depth, which needs the point from before the variations; it was "
+             "left out");
+        continue;
       }
       // smartcrop reads the point itself (static 2) and cannot keep the last point it let through
       // (cropmode 2), which the plugin's other modes need (flame_variations.cpp).
