@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 #include <algorithm>
+#include <cmath>
 #include <new>
 #include <thread>
 #include <utility>
@@ -85,7 +86,7 @@ struct ExplorerSession::Engine {
         accumulator(mask, threads, cores),
         publisher(accumulator, interval) {
     initialCapPoints = std::clamp<std::uint64_t>(
-        static_cast<std::uint64_t>(restCapPointsPerVoxel(mask->geometry) *
+        static_cast<std::uint64_t>(restCapPointsPerVoxel(mask->geometry, accumulator.insideVoxels()) *
                                    static_cast<double>(std::max<std::uint64_t>(accumulator.insideVoxels(), 1))),
         1, kExplorerTargetPoints);
     capPoints = initialCapPoints;
@@ -199,6 +200,7 @@ SessionStatus ExplorerSession::status() const {
   status.lastMeasurement = lastMeasurement_;
   status.previousMeasurement = previousMeasurement_;
   status.pointsPerVoxel = pointsPerVoxel_;
+  status.insideVoxels = insideVoxels_;
   status.capPointsPerVoxel = capPointsPerVoxel_;
   status.paused = paused_ && holding_ && !capped_ && !converged_;
   status.resting = engine_ && holding_ && status.stats.done && !buildingShape_ && !pending_ && !working_ &&
@@ -231,9 +233,12 @@ void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool intera
   wake_.notify_all();
 }
 
-double ExplorerSession::restCapPointsPerVoxel(const core::GridGeometry& grid) {
+double ExplorerSession::restCapPointsPerVoxel(const core::GridGeometry& grid, std::uint64_t insideVoxels) {
   const double side = std::max({grid.size.x, grid.size.y, grid.size.z, 1});
-  return std::clamp(kRestCapPointsPerVoxel * (192.0 / side) * (192.0 / side), kRestCapMinimum, kRestCapMaximum);
+  const double thickness = std::cbrt(static_cast<double>(std::max<std::uint64_t>(insideVoxels, 1)));
+  const double thicknessFactor = std::clamp(kReferenceThicknessAt192 * (side / 192.0) / thickness, 0.5, 2.0);
+  return std::clamp(kRestCapPointsPerVoxel * (192.0 / side) * (192.0 / side) * thicknessFactor, kRestCapMinimum,
+                    kRestCapMaximum);
 }
 
 void ExplorerSession::refineFurther() {
@@ -315,6 +320,7 @@ void ExplorerSession::steer(Engine& engine) {
   converged_ = converged;
   capped_ = capped && !converged;
   pointsPerVoxel_ = static_cast<double>(points) / inside;
+  insideVoxels_ = engine.accumulator.insideVoxels();
   lastMeasurement_ = engine.meter.lastMeasurement();
   previousMeasurement_ = engine.meter.previousMeasurement();
   capPointsPerVoxel_ = static_cast<double>(engine.capPoints) / inside;

@@ -51,6 +51,7 @@ struct SessionStatus {
   // Points per voxel inside the mask now, and the cap that ends refinement whatever the noise.
   double pointsPerVoxel = 0.0;
   double capPointsPerVoxel = 0.0;
+  std::uint64_t insideVoxels = 0;  // of the refining grid's mask
   // Nothing will change until the user does something: refinement is held and finished, and the
   // last volume has been taken. The window loop may then wait for events instead of drawing.
   bool resting = false;
@@ -130,16 +131,19 @@ class ExplorerSession {
 
   // Refinement ends at this many points per voxel inside the mask even when the noise never
   // reaches its target (a flow whose estimate levels off above it, or a target of "never"), so
-  // the explorer always comes to rest. What the picture shows is points per pixel: a pixel sees a
-  // column of about `resolution` voxels through a footprint of about (resolution / pixels)²
-  // voxel faces, so points per voxel need not stay the same on a finer grid; the cap falls with
-  // the square of the grid's longest side from kRestCapPointsPerVoxel at 192 (the default grid,
-  // reached in about twenty seconds on two cores; a mesh that fills its box, in about a minute), within
-  // [kRestCapMinimum, kRestCapMaximum].
+  // the explorer always comes to rest. What the picture shows is points per pixel: a pixel sums a
+  // column through the mesh, about as many voxels long as the mesh is thick, through a footprint
+  // of about (resolution / pixels)² voxel faces. So the cap falls with the square of the grid's
+  // longest side from kRestCapPointsPerVoxel at 192 (the default grid), and with the mesh's
+  // thickness (the cube root of its inside voxels) against the bunny's at the same grid: a sphere,
+  // thicker, needs fewer points per voxel for the same picture, a thin dragon more. Within
+  // [kRestCapMinimum, kRestCapMaximum], the thickness factor within [½, 2].
   static constexpr double kRestCapPointsPerVoxel = 192.0;
   static constexpr double kRestCapMinimum = 32.0;
   static constexpr double kRestCapMaximum = 2048.0;
-  static double restCapPointsPerVoxel(const core::GridGeometry& grid);
+  // The bunny's thickness in voxels at 192: the cube root of its 1.37 M inside voxels.
+  static constexpr double kReferenceThicknessAt192 = 111.0;
+  static double restCapPointsPerVoxel(const core::GridGeometry& grid, std::uint64_t insideVoxels);
 
   // "Refine further": refinement goes on from the points already there to twice as many, past
   // the noise target and the cap (the cap doubles with it). Returns at once.
@@ -182,6 +186,7 @@ class ExplorerSession {
   bool converged_ = false;
   bool capped_ = false;
   double pointsPerVoxel_ = 0.0, capPointsPerVoxel_ = 0.0;
+  std::uint64_t insideVoxels_ = 0;
   double lastMeasurement_ = std::numeric_limits<double>::quiet_NaN(), previousMeasurement_ = lastMeasurement_;
   bool refineFurtherRequested_ = false;
   bool holding_ = false;  // the accumulator's target is held (converged, capped or paused)

@@ -849,6 +849,21 @@ TEST_F(ExplorerUi, TheDefaultPresetComesToRest) {
   EXPECT_LE(rested.pointsPerVoxel, rested.capPointsPerVoxel * 1.05);
 }
 
+// The cap is points per pixel in disguise: it falls with the square of the grid's side, and a mesh
+// twice as thick (eight times the inside voxels) needs half the points per voxel, within [½, 2].
+TEST(RestCap, FallsWithTheGridAndTheMeshesThickness) {
+  core::GridGeometry grid192, grid384;
+  grid192.size = {192, 192, 192};
+  grid384.size = {384, 384, 384};
+  const std::uint64_t bunny = 1'367'631;  // 111³: the reference thickness at 192
+  const auto cap = app::ExplorerSession::restCapPointsPerVoxel;
+  EXPECT_NEAR(cap(grid192, bunny), app::ExplorerSession::kRestCapPointsPerVoxel, 0.5);
+  EXPECT_NEAR(cap(grid192, bunny * 8), cap(grid192, bunny) / 2.0, 0.5);
+  EXPECT_NEAR(cap(grid192, bunny / 8), cap(grid192, bunny) * 2.0, 1.0);
+  EXPECT_NEAR(cap(grid192, bunny / 1000), cap(grid192, bunny) * 2.0, 1.0) << "the factor stops at 2";
+  EXPECT_NEAR(cap(grid384, bunny * 8), cap(grid192, bunny) / 4.0, 0.5) << "the same mesh on a grid twice as fine";
+}
+
 // A target the noise never reaches (here far below what any flow's estimate gets to) still ends:
 // refinement stops at the grid's cap of points per voxel, adds nothing after, and the threads sleep.
 // "Refine further" then goes on from those points to twice as many, in the same generation.
@@ -864,7 +879,7 @@ TEST_F(ExplorerUi, TheCapEndsAFlowThatNeverReachesItsTargetAndRefineFurtherKeeps
   const app::SessionStatus capped = session.status();
   EXPECT_TRUE(capped.capped);
   EXPECT_FALSE(capped.converged);
-  EXPECT_NEAR(capped.capPointsPerVoxel, app::ExplorerSession::restCapPointsPerVoxel(capped.grid),
+  EXPECT_NEAR(capped.capPointsPerVoxel, app::ExplorerSession::restCapPointsPerVoxel(capped.grid, capped.insideVoxels),
               0.01 * capped.capPointsPerVoxel);
   EXPECT_GE(capped.pointsPerVoxel, capped.capPointsPerVoxel);
   EXPECT_LE(capped.pointsPerVoxel, capped.capPointsPerVoxel * 1.05) << "it stops at the cap";
