@@ -4,8 +4,9 @@
 // a preset and loads back unchanged, as the explorer's import does.
 //
 // The input's last byte also picks the import options, so the fuzzer explores them with the same
-// mutations that change the XML; the byte stays in the text (in real files it is a newline or the
-// root's closing '>', which the XML reading needs).
+// mutations that change the XML; the byte stays in the text. Real files end in a newline or the
+// root's closing '>': those bytes mean the default options, so every seed imports as the user's
+// file would.
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -46,7 +47,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   if (size == 0) return 0;
   static const Scene base = defaultScene();
   const std::string_view text(reinterpret_cast<const char*>(data), size);
-  const FlameImportOptions options = optionsFrom(data[size - 1]);
+  const std::uint8_t last = data[size - 1];
+  const bool plainEnd = last == '\n' || last == '\r' || last == ' ' || last == '\t' || last == '>';
+  const FlameImportOptions options = optionsFrom(plainEnd ? 0 : last);
   FlameFileContents contents;
   try {
     contents = readFlameXml(text, "fuzz.flame", options);

@@ -721,3 +721,24 @@ TEST(FlameXml, JwildfireLayeredFlamesReadTheirFirstLayer) {
   EXPECT_EQ(contents.flame.leftOut, (std::vector<std::string>{"JWildfire layers after the first"}));
   EXPECT_NE(errorOf("<jwf-flame name=\"empty\"></jwf-flame>").find("<layer>"), std::string::npos);
 }
+
+// Regressions found by fuzz/flame_xml_fuzzer (scripts/fuzz.sh): each input is the minimised one.
+
+TEST(FlameXml, NamesThatAreNotUtf8AreReadAsLatin1AndSaveAsAPreset) {
+  // A Latin-1 name without an encoding declaration ("été"): the import kept the raw bytes, and
+  // saving the imported scene threw nlohmann's type_error 316 (JSON is UTF-8 only).
+  const std::string text = "<flame name=\"\xe9t\xe9\"><xform weight=\"1\" coefs=\"1 0 0 1 0 0\"/></flame>\n";
+  const FlameFileContents contents = readFlameXml(text, "latin1.flame");
+  EXPECT_EQ(contents.flame.name, "\xc3\xa9t\xc3\xa9");
+  EXPECT_EQ(contents.names, std::vector<std::string>{"\xc3\xa9t\xc3\xa9"});
+  ASSERT_FALSE(contents.flame.warnings.empty());
+  EXPECT_NE(contents.flame.warnings.front().find("Latin-1"), std::string::npos);
+  const Scene scene = sceneFromImportedFlame(contents.flame, defaultScene());
+  EXPECT_EQ(sceneFromJson(sceneToJson(scene), "latin1.json").name, "\xc3\xa9t\xc3\xa9");
+  // UTF-8 that is valid stays as it is, and a flame is found by its name as the user types it.
+  FlameImportOptions byName;
+  byName.name = "\xc3\xa9t\xc3\xa9";
+  EXPECT_EQ(readFlameXml(text, "latin1.flame", byName).flame.name, "\xc3\xa9t\xc3\xa9");
+  const std::string utf8 = "<flame name=\"\xc3\xa9t\xc3\xa9\"><xform weight=\"1\" coefs=\"1 0 0 1 0 0\"/></flame>";
+  EXPECT_EQ(readFlameXml(utf8, "utf8.flame").flame.name, "\xc3\xa9t\xc3\xa9");
+}

@@ -4,6 +4,7 @@
 #include <array>
 #include <cctype>
 #include <charconv>
+#include <cstdint>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -154,6 +155,58 @@ std::optional<std::vector<double>> parseNumbers(std::string_view text) {
     values.push_back(*value);
   }
   return values;
+}
+
+// The length of the UTF-8 sequence at `at` (1–4), or 0 where the bytes there are not UTF-8 as
+// JSON requires it: no overlong forms, no surrogates, nothing beyond U+10FFFF.
+std::size_t utf8SequenceAt(std::string_view text, std::size_t at) {
+  const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
+  const unsigned char lead = byte(at);
+  if (lead < 0x80) return 1;
+  std::size_t length = 0;
+  std::uint32_t code = 0;
+  if (lead >= 0xC2 && lead <= 0xDF) {
+    length = 2;
+    code = lead & 0x1Fu;
+  } else if (lead >= 0xE0 && lead <= 0xEF) {
+    length = 3;
+    code = lead & 0x0Fu;
+  } else if (lead >= 0xF0 && lead <= 0xF4) {
+    length = 4;
+    code = lead & 0x07u;
+  } else {
+    return 0;
+  }
+  if (at + length > text.size()) return 0;
+  for (std::size_t k = 1; k < length; ++k) {
+    if ((byte(at + k) & 0xC0u) != 0x80u) return 0;
+    code = (code << 6) | (byte(at + k) & 0x3Fu);
+  }
+  if (length == 3 && (code < 0x800 || (code >= 0xD800 && code <= 0xDFFF))) return 0;
+  if (length == 4 && (code < 0x10000 || code > 0x10FFFF)) return 0;
+  return length;
+}
+
+// A flame's name goes into the preset, and JSON holds only UTF-8: saving an imported flame whose
+// name was not UTF-8 threw (found by fuzz/flame_xml_fuzzer). pugixml converts files that declare
+// their encoding; old Windows editors wrote Latin-1 names without saying so, so a byte that is
+// not part of a UTF-8 sequence is read as the Latin-1 character it is there. `changed` says
+// whether any was.
+std::string asUtf8(std::string_view text, bool& changed) {
+  std::string out;
+  out.reserve(text.size());
+  for (std::size_t i = 0; i < text.size();) {
+    if (const std::size_t length = utf8SequenceAt(text, i)) {
+      out.append(text.substr(i, length));
+      i += length;
+      continue;
+    }
+    const auto latin1 = static_cast<unsigned char>(text[i++]);
+    out += static_cast<char>(0xC0u | (latin1 >> 6));
+    out += static_cast<char>(0x80u | (latin1 & 0x3Fu));
+    changed = true;
+  }
+  return out;
 }
 
 bool finiteWithin(double v, double limit) {
@@ -1178,8 +1231,9 @@ FlameFileContents readFlameXml(std::string_view text, const std::string& sourceN
                 " holds no <flame> element; it is XML but not a flame file (flam3, Apophysis, "
                 "Fractorium or JWildfire)");
   FlameFileContents contents;
+  bool latin1Names = false;
   for (std::size_t i = 0; i < flames.size(); ++i) {
-    const std::string name = flames[i].attribute("name").value();
+    const std::string name = asUtf8(flames[i].attribute("name").value(), latin1Names);
     contents.names.push_back(name.empty() ? "flame " + std::to_string(i + 1) : name);
   }
   if (!options.name.empty()) {
@@ -1195,13 +1249,17 @@ FlameFileContents readFlameXml(std::string_view text, const std::string& sourceN
     contents.index = options.index;
   }
   const pugi::xml_node chosen = flames[contents.index];
-  std::string title = chosen.attribute("name").value();
+  std::string title = chosen.attribute("name").value()[0] ? contents.names[contents.index] : "";
   if (title.empty()) {
-    title = std::filesystem::path(sourceName).stem().string();
+    bool changed = false;
+    title = asUtf8(std::filesystem::path(sourceName).stem().string(), changed);
     if (flames.size() > 1) title += " " + std::to_string(contents.index + 1);
   }
   const std::string where = sourceName + ", flame '" + contents.names[contents.index] + "'";
   contents.flame = readFlame(chosen, where, title, options, tolerant.renamed);
+  if (latin1Names)
+    contents.flame.warnings.insert(contents.flame.warnings.begin(),
+                                   "flame names of the file are not UTF-8; they were read as Latin-1");
   if (!tolerant.fixes.empty()) {
     std::string fixes;
     for (const std::string& fix : tolerant.fixes) fixes += (fixes.empty() ? "" : "; ") + fix;
