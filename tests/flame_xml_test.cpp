@@ -742,3 +742,44 @@ TEST(FlameXml, NamesThatAreNotUtf8AreReadAsLatin1AndSaveAsAPreset) {
   const std::string utf8 = "<flame name=\"\xc3\xa9t\xc3\xa9\"><xform weight=\"1\" coefs=\"1 0 0 1 0 0\"/></flame>";
   EXPECT_EQ(readFlameXml(utf8, "utf8.flame").flame.name, "\xc3\xa9t\xc3\xa9");
 }
+
+// Found while fuzzing, by reading what the fuzzer's 16 kB inputs could not reach: two loops of the
+// importer were quadratic in the file's size, so a flame file of a few hundred kilobytes (the
+// importer takes up to 64 MiB) hung it for hours. Both inputs below take milliseconds now.
+
+TEST(FlameXml, ManyUnclosedElementsAndStrayClosingTagsReadInLinearTime) {
+  // Every stray closing tag searched the stack of open elements: 200 000 of each took hours.
+  constexpr std::size_t kCount = 200'000;
+  std::string text = "<flame><xform weight=\"1\" coefs=\"1 0 0 1 0 0\"/>";
+  for (std::size_t i = 0; i < kCount; ++i) text += "<a>";
+  for (std::size_t i = 0; i < kCount; ++i) text += "</b>";
+  const FlameFileContents contents = readFlameXml(text, "unclosed.flame");
+  ASSERT_FALSE(contents.flame.warnings.empty());
+  const std::string& fixes = contents.flame.warnings.front();
+  EXPECT_NE(fixes.find("200000 closing tags without an opening one"), std::string::npos) << fixes;
+  EXPECT_NE(fixes.find("200001 elements were never closed"), std::string::npos) << fixes;
+  // An outer closing tag still closes the elements left open inside it.
+  const FlameFileContents nested =
+      readFlameXml("<flames><flame><xform weight=\"1\" coefs=\"1 0 0 1 0 0\"/><a><b></flames>", "nested.flame");
+  EXPECT_NE(nested.flame.warnings.front().find("3 elements were never closed"), std::string::npos)
+      << nested.flame.warnings.front();
+}
+
+TEST(FlameXml, LongAttributeNamesOfManyUnderscoresReadInLinearTime) {
+  // Every "_" of an attribute name was tried as the end of a variation's name, copying and looking
+  // up the whole prefix each time: a 40 kB name took 20 s, a 400 kB one hours.
+  std::string name;
+  for (int i = 0; i < 200'000; ++i) name += "a_";
+  name += "b";
+  const std::string text = "<flame><xform weight=\"1\" coefs=\"1 0 0 1 0 0\" linear=\"1\" " + name + "=\"1\"/></flame>";
+  const FlameFileContents contents = readFlameXml(text, "underscores.flame");
+  EXPECT_EQ(contents.flame.leftOut, std::vector<std::string>{"variation " + name});
+  // Parameters are still found at the end of a name, JWildfire's curve suffixes included.
+  const FlameFileContents params = readFlameXml(
+      "<flame><xform weight=\"1\" coefs=\"1 0 0 1 0 0\" julian=\"1\" julian_power=\"3\" "
+      "julian_power_view_xmin=\"0\"/></flame>",
+      "params.flame");
+  EXPECT_TRUE(params.flame.leftOut.empty());
+  ASSERT_EQ(params.flame.genome.xforms.front().variations.size(), 1u);
+  EXPECT_EQ(params.flame.genome.xforms.front().variations.front().params.front(), 3.0);
+}

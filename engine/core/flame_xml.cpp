@@ -26,6 +26,9 @@ namespace voxflame::core {
 namespace {
 
 constexpr double kCoefficientLimit = 1e6;
+// The longest "_<parameter>" a variation's parameter attribute ends with that the importer looks
+// for, JWildfire's motion-curve suffixes included ("_power_view_xmin").
+constexpr std::size_t kMaxParameterSuffix = 64;
 // Flame files are a few kilobytes; the largest real ones (animations with hundreds of keyframe
 // genomes) stay well below this. A larger file is almost certainly something else.
 constexpr std::uintmax_t kMaxFlameFileBytes = 64u << 20;
@@ -284,6 +287,10 @@ TolerantXml tolerantXml(std::string_view in) {
   std::string& out = result.text;
   out.reserve(in.size() + in.size() / 8);
   std::vector<std::string> open;
+  // How many elements of each name are open: whether a closing tag closes anything is looked up
+  // here, not by searching `open`, which made a file of many unclosed elements and stray closing
+  // tags quadratic (a 700 kB one took hours).
+  std::map<std::string, std::size_t, std::less<>> openCount;
   std::size_t strayClosings = 0, unclosed = 0;
   const auto isSpace = [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; };
   const auto isNameChar = [](char c) {
@@ -335,17 +342,19 @@ TolerantXml tolerantXml(std::string_view in) {
       const std::size_t stop = end == std::string_view::npos ? in.size() : end;
       const std::string name = trimmed(in.substr(i + 2, stop - i - 2));
       i = end == std::string_view::npos ? in.size() : end + 1;
-      const auto found = std::find(open.rbegin(), open.rend(), name);
-      if (found == open.rend()) {
+      const auto found = openCount.find(name);
+      if (found == openCount.end() || found->second == 0) {
         ++strayClosings;
         continue;
       }
       while (open.back() != name) {
         out += "</" + open.back() + ">";
+        --openCount[open.back()];
         open.pop_back();
         ++unclosed;
       }
       out += "</" + name + ">";
+      --found->second;
       open.pop_back();
     } else if (i + 1 < in.size() && (std::isalpha(static_cast<unsigned char>(in[i + 1])) || in[i + 1] == '_')) {
       std::size_t k = i + 1;
@@ -360,6 +369,7 @@ TolerantXml tolerantXml(std::string_view in) {
           out += '>';
           ++k;
           open.push_back(element);
+          ++openCount[element];
           closed = true;
           break;
         }
@@ -663,9 +673,15 @@ class FlameReader {
       const std::string name = nameOf(attribute);
       if (knownXformAttributes().contains(name) || consumed.contains(name)) continue;
       if (isJwildfireExtra(name, attribute.value(), context)) continue;
-      // A parameter: the longest attribute present that it extends with "_".
+      // A parameter: the longest attribute present that it extends with "_". Parameter names are
+      // short (the catalogue's, perhaps with a JWildfire curve suffix), so the cut is looked for
+      // only among the last kMaxParameterSuffix characters: each cut copies and looks up the
+      // prefix, and trying every "_" of a long name was quadratic (a 40 kB name of "a_a_..." took
+      // 20 s).
       std::string owner;
-      for (std::size_t cut = name.rfind('_'); cut != std::string::npos && cut > 0; cut = name.rfind('_', cut - 1)) {
+      for (std::size_t cut = name.rfind('_');
+           cut != std::string::npos && cut > 0 && name.size() - cut <= kMaxParameterSuffix;
+           cut = name.rfind('_', cut - 1)) {
         const std::string prefix = name.substr(0, cut);
         const VariationInfo* info = variationNamed(withoutCopyMark(prefix));
         // A known variation's own parameter counts even when the variation is absent (weight 0).
