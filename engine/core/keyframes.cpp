@@ -93,8 +93,7 @@ class KeyLine {
 
 // A track's keys laid out on their time line once, then evaluated at any time in O(log keys).
 // Building the line for every evaluation made checking a track of n keys (at each key, and between
-// them) O(n²): a preset of 5000 keys took a minute to load, one of 100 000 hours (found while
-// fuzzing the preset reader).
+// them) O(n²): a preset of 5000 keys took a minute to load, one of 100 000 hours.
 class TrackCurve {
  public:
   TrackCurve(const KeyframeTrack& track, double duration, bool loop)
