@@ -722,7 +722,7 @@ TEST(FlameXml, JwildfireLayeredFlamesReadTheirFirstLayer) {
   EXPECT_NE(errorOf("<jwf-flame name=\"empty\"></jwf-flame>").find("<layer>"), std::string::npos);
 }
 
-// Regressions found by fuzz/flame_xml_fuzzer (scripts/fuzz.sh): each input is the minimised one.
+// Regressions found while fuzzing the importer (scripts/fuzz.sh); each input is the smallest that shows it.
 
 TEST(FlameXml, NamesThatAreNotUtf8AreReadAsLatin1AndSaveAsAPreset) {
   // A Latin-1 name without an encoding declaration ("été"): the import kept the raw bytes, and
