@@ -191,10 +191,10 @@ std::size_t utf8SequenceAt(std::string_view text, std::size_t at) {
 }
 
 // A flame's name goes into the preset, and JSON holds only UTF-8: saving an imported flame whose
-// name was not UTF-8 threw (flame_xml_fuzzer checks that it does not). pugixml converts files that declare
-// their encoding; old Windows editors wrote Latin-1 names without saying so, so a byte that is
-// not part of a UTF-8 sequence is read as the Latin-1 character it is there. `changed` says
-// whether any was.
+// name was not UTF-8 threw (flame_xml_fuzzer checks that it does not). pugixml converts files
+// that declare their encoding; old Windows editors wrote Latin-1 names without saying so, so a
+// byte that is not part of a UTF-8 sequence is read as the Latin-1 character it is there.
+// `changed` says whether any was.
 std::string asUtf8(std::string_view text, bool& changed) {
   std::string out;
   out.reserve(text.size());
