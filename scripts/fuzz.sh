@@ -57,15 +57,15 @@ run() {
   echo
   echo "=== $name: $seconds s from $seeds seed files"
   local status=0
-  # shellcheck disable=SC2086 # $options holds zero or more flags
   # Leaks are checked after every input (LeakSanitizer through libFuzzer); UBSan's first report
   # stops the run (the targets are built with -fno-sanitize-recover).
+  # shellcheck disable=SC2086 # $options holds zero or more flags
   ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=1" \
     UBSAN_OPTIONS="${UBSAN_OPTIONS:+$UBSAN_OPTIONS:}print_stacktrace=1:halt_on_error=1" \
     "$build/fuzz/$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len="$max_len" \
     -dict="$root/fuzz/${name%_fuzzer}.dict" -use_value_profile=1 -print_final_stats=1 $options \
     -artifact_prefix="$artifacts/" "$corpus" >"$log" 2>&1 || status=$?
-  grep -E '^#[0-9]+ +DONE|^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb|new_units_added)' "$log" || true
+  grep -E '^#[0-9]+[[:space:]]+DONE|^stat::(number_of_executed_units|average_exec_per_sec|peak_rss_mb|new_units_added)' "$log" || true
   local found=("$artifacts"/*)
   if [ "$status" -ne 0 ] || [ -e "${found[0]}" ]; then
     tail -n 60 "$log"
