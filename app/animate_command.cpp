@@ -60,6 +60,15 @@ void lockFits(core::Scene& scene) {
   for (std::size_t i = 0; i < scene.layers.size(); ++i) {
     core::LayerTransform& transform = scene.layers[i].transform;
     if (transform.lockFit) continue;
+    if (transform.fit == core::FitMode::Previous && i > 0) {
+      // Locked with the layer before, so the layers stay in register in every frame.
+      const core::LayerTransform& previous = scene.layers[i - 1].transform;
+      transform.lockFit = true;
+      transform.lockedCenter = previous.lockedCenter;
+      transform.lockedScale = previous.lockedScale;
+      transform.lockedAxisScale = previous.lockedAxisScale;
+      continue;
+    }
     const core::PreparedLayer prepared = core::prepareLayer(first.layers[i], *shape.mask, first.seed);
     transform.lockFit = true;
     transform.lockedCenter = prepared.automaticFit.center;

@@ -82,6 +82,9 @@ int importCommand(const ImportArguments& arguments) {
   std::printf("imported flame '%s' (%zu of %zu in %s; %zu transform%s%s%s) into %s\n", contents.flame.name.c_str(),
               contents.index + 1, count, input.string().c_str(), transforms, transforms == 1 ? "" : "s",
               contents.flame.genome.hasFinal ? " and a final one" : "", depth, output.c_str());
+  if (!contents.flame.otherLayers.empty())
+    std::printf("with %zu more JWildfire layer%s, each a flame layer placed with the first\n",
+                contents.flame.otherLayers.size(), contents.flame.otherLayers.size() == 1 ? "" : "s");
   if (count > 1 && !arguments.index && !arguments.name)
     std::printf("the file holds %zu flames; --index N or --name NAME picks another\n", count);
   return 0;

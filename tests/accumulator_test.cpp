@@ -289,6 +289,34 @@ TEST(Fit, ALockedStretchFitKeepsItsShape) {
   EXPECT_NEAR(glm::length(locked.fit.apply(p) - stretched.fit.apply(p)), 0.0, 1e-9);
 }
 
+// A `previous` layer is placed with the layer before it (JWildfire's layers share one set of
+// coordinates): the same centre and scale, times its own transform scale, whatever its own extent.
+TEST(Fit, APreviousFitPlacesTheLayerWithTheOneBefore) {
+  const auto mask = bunnyMask(48);
+  const PatternLayer first = layerFor("lorenz84");
+  PatternLayer second = layerFor("rossler");
+  const PreparedLayer alone = prepareLayer(second, *mask, 1);
+  second.transform.fit = FitMode::Previous;
+  second.transform.scale = 2.0;
+  const std::vector<PreparedLayer> prepared = prepareLayers({first, second}, *mask, 1);
+  ASSERT_EQ(prepared.size(), 2u);
+  ASSERT_TRUE(prepared[0].bounded && prepared[1].bounded);
+  EXPECT_EQ(prepared[1].fit.attractorCenter, prepared[0].fit.attractorCenter);
+  EXPECT_NEAR(prepared[1].fit.scale, 2.0 * prepared[0].fit.scale, 1e-12);
+  EXPECT_NE(prepared[1].fit.attractorCenter, alone.fit.attractorCenter);
+  // A first layer has nothing before it: it is contained like any other.
+  const std::vector<PreparedLayer> single = prepareLayers({second}, *mask, 1);
+  EXPECT_EQ(single[0].fit.attractorCenter, alone.fit.attractorCenter);
+  // A locked layer passes its locked fit on.
+  PatternLayer locked = first;
+  locked.transform.lockFit = true;
+  locked.transform.lockedCenter = {1.0, 2.0, 3.0};
+  locked.transform.lockedScale = 5.0;
+  const std::vector<PreparedLayer> afterLocked = prepareLayers({locked, second}, *mask, 1);
+  EXPECT_EQ(afterLocked[1].fit.attractorCenter, glm::dvec3(1.0, 2.0, 3.0));
+  EXPECT_NEAR(afterLocked[1].fit.scale, 10.0, 1e-12);
+}
+
 // A layer's copies run as layers of their own, turned by their angles, sharing its weight; and
 // the pattern they make together lights more of the mesh than the original alone.
 TEST(Fit, CopiesAreTurnedLayersThatShareTheWeightAndFillMore) {

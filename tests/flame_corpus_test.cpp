@@ -33,7 +33,7 @@ namespace {
 
 // At least this many flames of the corpus import whole, and at most this many are refused.
 constexpr double kWholeShareGoal = 0.95;        // the goal, reported beside the threshold
-constexpr double kWholeShareThreshold = 0.932;  // 250 of 268
+constexpr double kWholeShareThreshold = 0.936;  // 251 of 268
 constexpr std::size_t kRefusedLimit = 0;
 
 const std::filesystem::path kCorpus = VOXFLAME_TEST_FLAMES;
@@ -60,13 +60,8 @@ struct Tally {
   std::size_t total() const { return whole + lost + refused; }
 };
 
-// An imported flame must also run: a short chaos game, whose points are finite or marked as
-// escaped (NaN), never anything else.
-void runBriefly(const ImportedFlame& flame, const std::string& file) {
-  Scene base;
-  base.meshPath = "mesh.obj";
-  const Scene scene = sceneFromImportedFlame(flame, base);
-  const ChaosGame game(scene.layers.at(0), file);
+void runLayerBriefly(const PatternLayer& layer, const std::string& file) {
+  const ChaosGame game(layer, file);
   constexpr std::size_t kLanes = 64;
   ChaosLanes lanes;
   lanes.resize(kLanes);
@@ -84,6 +79,15 @@ void runBriefly(const ImportedFlame& flame, const std::string& file) {
         throw Error(file + ": the chaos game made a point that is neither finite nor marked as escaped");
     }
   }
+}
+
+// An imported flame must also run: a short chaos game on each of its layers, whose points are
+// finite or marked as escaped (NaN), never anything else.
+void runBriefly(const ImportedFlame& flame, const std::string& file) {
+  Scene base;
+  base.meshPath = "mesh.obj";
+  const Scene scene = sceneFromImportedFlame(flame, base);
+  for (const PatternLayer& layer : scene.layers) runLayerBriefly(layer, file);
 }
 
 void importFile(const std::filesystem::path& path, Tally& tally) {

@@ -708,18 +708,74 @@ TEST(FlameXml, PrePostFormsCapitalisedNamesAndBareParameters) {
   EXPECT_EQ(deep.flame.genome.xforms[0].variations[0].name, "linear");
 }
 
-TEST(FlameXml, JwildfireLayeredFlamesReadTheirFirstLayer) {
-  const std::string layer = "<layer weight=\"1\">" + kTwoXforms + hexPaletteBlock() + "</layer>\n";
-  const std::string text = "<jwf-flame name=\"layered\" brightness=\"3\">\n" + layer +
-                           "<layer weight=\"0.4\"><xform weight=\"1\" coefs=\"1 0 0 1 0 0\" linear=\"1\"/>" +
-                           hexPaletteBlock() + "</layer></jwf-flame>\n";
+TEST(FlameXml, JwildfireLayersBecomeFlameLayersWithTheirOwnTransformsPalettesAndWeights) {
+  // A second palette, every colour (10, 20, 30), tells the layers' palettes apart.
+  std::string grey;
+  for (std::size_t i = 0; i < kFlamePaletteSize; ++i) grey += "0A141E";
+  const std::string greyPalette = "<palette count=\"256\" format=\"RGB\">" + grey + "</palette>";
+  const std::string text =
+      "<jwf-flame name=\"layered\" brightness=\"3\">\n"
+      "<layer weight=\"1\" visible=\"1\">" +
+      kTwoXforms + hexPaletteBlock() +
+      "</layer>\n"
+      "<layer weight=\"0.4\" density=\"0.5\"><xform weight=\"1\" color=\"0.25\" coefs=\"1 0 0 1 0.5 0\" "
+      "linear=\"1\"/><finalxform color=\"0\" coefs=\"2 0 0 2 0 0\" spherical=\"1\"/>" +
+      greyPalette +
+      "</layer>\n"
+      "<layer weight=\"3\" visible=\"0\"><xform weight=\"1\" coefs=\"1 0 0 1 0 0\" julia=\"1\"/>" +
+      hexPaletteBlock() + "</layer></jwf-flame>\n";
   const FlameFileContents contents = readFlameXml(text, "layers.flame");
+  const ImportedFlame& flame = contents.flame;
   EXPECT_EQ(contents.names, (std::vector<std::string>{"layered"}));
-  EXPECT_EQ(contents.flame.genome.xforms.size(), 2u);
-  EXPECT_DOUBLE_EQ(contents.flame.tone.brightness, 3.0);
-  expectColorNear(srgb255(contents.flame, 200), {200, 55, 128});
-  EXPECT_EQ(contents.flame.leftOut, (std::vector<std::string>{"JWildfire layers after the first"}));
+  EXPECT_TRUE(flame.leftOut.empty());
+  EXPECT_DOUBLE_EQ(flame.tone.brightness, 3.0);
+  // The first layer: its two transforms, its palette, weight 1.
+  EXPECT_EQ(flame.genome.xforms.size(), 2u);
+  EXPECT_FALSE(flame.genome.hasFinal);
+  expectColorNear(srgb255(flame, 200), {200, 55, 128});
+  EXPECT_DOUBLE_EQ(flame.weight, 1.0);
+  // The second: one transform and its final, its own palette, weight 0.4 × density 0.5².
+  ASSERT_EQ(flame.otherLayers.size(), 1u);
+  const ImportedFlameLayer& second = flame.otherLayers[0];
+  ASSERT_EQ(second.genome.xforms.size(), 1u);
+  EXPECT_DOUBLE_EQ(second.genome.xforms[0].color, 0.25);
+  EXPECT_DOUBLE_EQ(second.genome.xforms[0].affine.m[3], 0.5);
+  ASSERT_TRUE(second.genome.hasFinal);
+  EXPECT_EQ(second.genome.finalXform.variations.at(0).name, "spherical");
+  ASSERT_EQ(second.palette.size(), kFlamePaletteSize);
+  const glm::vec3 secondColour = linearToSrgb(second.palette[200].color) * 255.0f;
+  expectColorNear(secondColour, {10, 20, 30});
+  EXPECT_DOUBLE_EQ(second.weight, 0.4 * 0.25);
+  // The hidden third layer is named in a warning, not imported (JWildfire does not draw it).
+  EXPECT_TRUE(hasWarningContaining(flame, "layer 3 is hidden"));
+
+  // The scene: two flame layers, the second placed with the first, and back through a preset.
+  Scene base;
+  base.meshPath = "mesh.obj";
+  const Scene scene = sceneFromImportedFlame(flame, base);
+  ASSERT_EQ(scene.layers.size(), 2u);
+  EXPECT_EQ(scene.layers[0].kind, PatternKind::Flame);
+  EXPECT_EQ(scene.layers[0].flame, flame.genome);
+  EXPECT_DOUBLE_EQ(scene.layers[0].weight, 1.0);
+  EXPECT_EQ(scene.layers[0].transform.fit, FitMode::Contain);
+  EXPECT_EQ(scene.layers[1].flame, second.genome);
+  EXPECT_EQ(scene.layers[1].color.mode, ColorMode::Index);
+  EXPECT_EQ(scene.layers[1].color.gradient.size(), kFlamePaletteSize);
+  EXPECT_DOUBLE_EQ(scene.layers[1].weight, 0.1);
+  EXPECT_EQ(scene.layers[1].transform.fit, FitMode::Previous);
+  const Scene again = sceneFromJson(sceneToJson(scene), "layers.json");
+  ASSERT_EQ(again.layers.size(), 2u);
+  EXPECT_EQ(again.layers[1].transform.fit, FitMode::Previous);
+  EXPECT_DOUBLE_EQ(again.layers[1].weight, 0.1);
+  EXPECT_EQ(again.layers[1].flame.xforms.size(), 1u);
+  EXPECT_TRUE(again.layers[1].flame.hasFinal);
+  EXPECT_EQ(again.layers[0].flame.xforms.size(), 2u);
+
+  // Nothing visible to draw is an error, as before.
   EXPECT_NE(errorOf("<jwf-flame name=\"empty\"></jwf-flame>").find("<layer>"), std::string::npos);
+  EXPECT_NE(
+      errorOf("<jwf-flame name=\"hidden\"><layer visible=\"0\">" + kTwoXforms + "</layer></jwf-flame>").find("<layer>"),
+      std::string::npos);
 }
 
 // Regressions found while fuzzing the importer (scripts/fuzz.sh); each input is the smallest that shows it.

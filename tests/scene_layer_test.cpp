@@ -66,7 +66,7 @@ TEST(Scene, BadColourAndTransformValuesAreNamed) {
   EXPECT_NE(errorOf(layer(R"("transform":{"scale":-1})")).find("transform.scale"), std::string::npos);
   EXPECT_NE(errorOf(layer(R"("transform":{"rotation_deg":[1,2]})")).find("three numbers"), std::string::npos);
   EXPECT_NE(errorOf(layer(R"("transform":{"locked_fit":{"center":[0,0,0]}})")).find("scale"), std::string::npos);
-  EXPECT_NE(errorOf(layer(R"("transform":{"fit":"squeeze"})")).find("'contain', 'cover' or 'stretch'"),
+  EXPECT_NE(errorOf(layer(R"("transform":{"fit":"squeeze"})")).find("'contain', 'cover', 'stretch' or 'previous'"),
             std::string::npos);
   EXPECT_NE(errorOf(layer(R"("transform":{"copies":[[0,90]]})")).find("transform.copies[0]"), std::string::npos);
   EXPECT_NE(errorOf(layer(R"("transform":{"copies":[[0,1e9,0]]})")).find("transform.copies[0]"), std::string::npos);

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <iterator>
 #include <new>
+#include <optional>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -158,6 +159,7 @@ AutomaticFit automaticFit(const glm::dvec3& low, const glm::dvec3& median, const
   std::array<double, 3> ratios{ratiosVector.x, ratiosVector.y, ratiosVector.z};
   std::sort(ratios.begin(), ratios.end());
   switch (mode) {
+    case FitMode::Previous:  // prepareLayers puts the previous layer's fit in its place
     case FitMode::Contain:
       // Scale so the attractor covers the shape along its middle axis (at most 2.5× over along its
       // widest); what spills over the surface is cut away by the mask, which is what makes the
@@ -402,10 +404,29 @@ std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers
   std::vector<PreparedLayer> prepared;
   std::size_t source = 0;
   const std::vector<PatternLayer> expanded = expandCopies(layers);
+  // The fit a `previous` layer takes: that of the last original before it, if that one is bounded.
+  std::optional<AutomaticFit> previousFit;
   for (const PatternLayer& layer : layers) {
     // The probe and the automatic fit come before the rotation, so one probe serves the original
     // and all its copies: only the rotation differs.
-    const PreparedLayer original = prepareLayer(expanded[source++], mask, inside, seed);
+    PreparedLayer original = prepareLayer(expanded[source++], mask, inside, seed);
+    if (layer.transform.fit == FitMode::Previous && previousFit && original.bounded) {
+      const AutomaticFit& previous = *previousFit;
+      const LayerTransform& t = original.layer.transform;
+      original.automaticFit = previous;
+      if (!t.lockFit) {
+        original.fit.attractorCenter = previous.center;
+        original.fit.scale = previous.scale * t.scale;
+        original.fit.axisScale = previous.axisScale;
+      }
+    }
+    // A locked layer passes on its locked fit: what places it is what places the next.
+    const LayerTransform& placed = original.layer.transform;
+    previousFit.reset();
+    if (placed.lockFit)
+      previousFit = AutomaticFit{placed.lockedCenter, placed.lockedScale, placed.lockedAxisScale};
+    else if (original.bounded)
+      previousFit = original.automaticFit;
     prepared.push_back(original);
     for (std::size_t c = 0; c < layer.transform.copies.size(); ++c) {
       PreparedLayer copy = original;

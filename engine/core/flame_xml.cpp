@@ -1075,70 +1075,140 @@ FlameSymmetry symmetryOfKind(double kind, FlameReader& reader) {
   return symmetry;
 }
 
+// The transforms and final transform of one genome: a <flame>, or one <layer> of a JWildfire
+// <jwf-flame> (`context` then names the layer in messages: "layer 2, transform 0").
+FlameGenome readGenome(const pugi::xml_node& body, const std::string& context, FlameReader& reader) {
+  FlameGenome genome;
+  const std::string prefix = context.empty() ? "" : context + ", ";
+  std::size_t index = 0;
+  for (const pugi::xml_node& child : body.children("xform")) {
+    if (index >= kMaxFlameXforms)
+      reader.fail(context, "has more than " + std::to_string(kMaxFlameXforms) + " transforms; voxflame takes at most " +
+                               std::to_string(kMaxFlameXforms));
+    genome.xforms.push_back(reader.xform(child, prefix + "transform " + std::to_string(index), false));
+    ++index;
+  }
+  if (genome.xforms.empty()) reader.fail(context, "has no transforms (<xform> elements); there is nothing to draw");
+  // Xaos lists longer than the transforms (Fr0st writes trailing ones) are trimmed; a list of 1s
+  // is no xaos at all.
+  for (std::size_t i = 0; i < genome.xforms.size(); ++i) {
+    std::vector<double>& xaos = genome.xforms[i].xaos;
+    if (xaos.size() > genome.xforms.size()) {
+      if (std::any_of(xaos.begin() + static_cast<std::ptrdiff_t>(genome.xforms.size()), xaos.end(),
+                      [](double v) { return v != 1.0; }))
+        reader.warn(prefix + "transform " + std::to_string(i) +
+                    " has more xaos factors than the flame has transforms; the extra ones were left out");
+      xaos.resize(genome.xforms.size());
+    }
+    if (std::all_of(xaos.begin(), xaos.end(), [](double v) { return v == 1.0; })) xaos.clear();
+  }
+  double total = 0.0;
+  for (const FlameXform& x : genome.xforms) total += x.weight;
+  if (!(total > 0.0)) reader.fail(context, "has only transforms of weight 0; at least one needs a positive weight");
+  if (const pugi::xml_node finalNode = body.child("finalxform")) {
+    genome.hasFinal = true;
+    genome.finalXform = reader.xform(finalNode, prefix + "final transform", true);
+  }
+  return genome;
+}
+
+std::vector<GradientStop> gradientOf(const Palette& palette) {
+  std::vector<GradientStop> gradient;
+  gradient.reserve(kFlamePaletteSize);
+  for (std::size_t i = 0; i < kFlamePaletteSize; ++i)
+    gradient.push_back({static_cast<float>(i) / static_cast<float>(kFlamePaletteSize - 1), srgbToLinear(palette[i])});
+  return gradient;
+}
+
+// JWildfire's layer weight and density as voxflame's layer weight. JWildfire iterates every
+// visible layer equally often into one histogram, each point's colour scaled by its layer's
+// weight, and skips a layer's iteration with probability 1 − density² when density < 1. voxflame's
+// weight is a layer's share of the iterations, whose colours are summed per voxel: where layers
+// overlap, both blend the colours in proportion to weight × hits, and a heavier layer is brighter.
+double jwildfireLayerWeight(const pugi::xml_node& layer, const std::string& context, FlameReader& reader) {
+  double weight = 1.0;
+  if (const pugi::xml_attribute attribute = layer.attribute("weight"))
+    weight = reader.number(attribute, context, 0.0, kCoefficientLimit);
+  if (const pugi::xml_attribute attribute = layer.attribute("density")) {
+    const double density = reader.number(attribute, context, 0.0, kCoefficientLimit);
+    if (density < 1.0) weight *= density * density;
+  }
+  return weight;
+}
+
 ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, const std::string& name,
                         const FlameImportOptions& options, const std::map<std::string, std::string>& renamed) {
   FlameReader reader(where, options);
   reader.setRenamed(&renamed);
   ImportedFlame flame;
   flame.name = name;
-  // JWildfire's layered flames (<jwf-flame>) keep their transforms and palette in <layer>
-  // children; the first layer is read, the others are named as left out.
-  pugi::xml_node body = node;
-  if (std::string_view(node.name()) == "jwf-flame") {
-    body = node.child("layer");
-    if (!body) reader.fail("", "is a JWildfire <jwf-flame> without a <layer>; there is nothing to draw");
-    std::size_t layers = 0;
-    for (const pugi::xml_node& layer : node.children("layer")) layers += layer ? 1 : 0;
-    if (layers > 1) {
-      reader.lose("JWildfire layers after the first");
-      reader.warn("the flame has " + std::to_string(layers) +
-                  " JWildfire layers; voxflame reads the first and leaves the others out");
-    }
-  }
-  std::size_t index = 0;
-  for (const pugi::xml_node& child : body.children("xform")) {
-    if (index >= kMaxFlameXforms)
-      reader.fail("", "has more than " + std::to_string(kMaxFlameXforms) + " transforms; voxflame takes at most " +
-                          std::to_string(kMaxFlameXforms));
-    flame.genome.xforms.push_back(reader.xform(child, "transform " + std::to_string(index), false));
-    ++index;
-  }
-  if (flame.genome.xforms.empty()) reader.fail("", "has no transforms (<xform> elements); there is nothing to draw");
-  // Xaos lists longer than the transforms (Fr0st writes trailing ones) are trimmed; a list of 1s
-  // is no xaos at all.
-  for (std::size_t i = 0; i < flame.genome.xforms.size(); ++i) {
-    std::vector<double>& xaos = flame.genome.xforms[i].xaos;
-    if (xaos.size() > flame.genome.xforms.size()) {
-      if (std::any_of(xaos.begin() + static_cast<std::ptrdiff_t>(flame.genome.xforms.size()), xaos.end(),
-                      [](double v) { return v != 1.0; }))
-        reader.warn("transform " + std::to_string(i) + " has more xaos factors than the flame has transforms; the " +
-                    "extra ones were left out");
-      xaos.resize(flame.genome.xforms.size());
-    }
-    if (std::all_of(xaos.begin(), xaos.end(), [](double v) { return v == 1.0; })) xaos.clear();
-  }
-  double total = 0.0;
-  for (const FlameXform& x : flame.genome.xforms) total += x.weight;
-  if (!(total > 0.0)) reader.fail("", "has only transforms of weight 0; at least one needs a positive weight");
-  if (const pugi::xml_node finalNode = body.child("finalxform")) {
-    flame.genome.hasFinal = true;
-    flame.genome.finalXform = reader.xform(finalNode, "final transform", true);
-  }
-  if (const pugi::xml_attribute symmetry = node.attribute("symmetry"))
-    flame.genome.symmetry = symmetryOfKind(reader.number(symmetry, "", -1e6, 1e6), reader);
-  if (const pugi::xml_node symmetry = node.child("symmetry")) {
-    if (!symmetry.attribute("kind"))
+  FlameSymmetry symmetry;
+  if (const pugi::xml_attribute kind = node.attribute("symmetry"))
+    symmetry = symmetryOfKind(reader.number(kind, "", -1e6, 1e6), reader);
+  if (const pugi::xml_node element = node.child("symmetry")) {
+    if (!element.attribute("kind"))
       reader.fail("", "<symmetry> needs a kind attribute (flam3: N-fold, negative adds a mirror)");
-    flame.genome.symmetry = symmetryOfKind(reader.number(symmetry.attribute("kind"), "<symmetry>", -1e6, 1e6), reader);
+    symmetry = symmetryOfKind(reader.number(element.attribute("kind"), "<symmetry>", -1e6, 1e6), reader);
   }
-  const Palette palette = readPalette(body, reader);
-  flame.palette.reserve(kFlamePaletteSize);
-  for (std::size_t i = 0; i < kFlamePaletteSize; ++i)
-    flame.palette.push_back(
-        {static_cast<float>(i) / static_cast<float>(kFlamePaletteSize - 1), srgbToLinear(palette[i])});
+  const auto finishGenome = [&](FlameGenome& genome, const std::string& context) {
+    genome.symmetry = symmetry;
+    const bool depthAdded = addFlameDepth(genome, options.depth);
+    validateFlame(genome, context.empty() ? where : where + ", " + context);
+    return depthAdded;
+  };
+  if (std::string_view(node.name()) == "jwf-flame") {
+    // JWildfire's layered flames keep their transforms and palette in <layer> children, drawn
+    // together into one image: each visible layer becomes a voxflame flame layer, the first one
+    // the flame's own genome and palette, the others in otherLayers, all placed with the first.
+    std::size_t number = 0;
+    bool first = true;
+    // A single-layer flame names its transforms plainly, as a <flame> does.
+    const bool layered = std::distance(node.children("layer").begin(), node.children("layer").end()) > 1;
+    for (const pugi::xml_node& layer : node.children("layer")) {
+      const std::string context = "layer " + std::to_string(++number);
+      if (const pugi::xml_attribute visible = layer.attribute("visible"); visible && !visible.as_bool(true)) {
+        reader.warn("JWildfire " + context +
+                    " is hidden (visible=\"0\"); JWildfire does not draw it, so it was "
+                    "left out");
+        continue;
+      }
+      if (!layer.child("xform")) {
+        // JWildfire skips a layer without transforms as well.
+        reader.warn("JWildfire " + context + " has no transforms; it was left out");
+        continue;
+      }
+      const std::string layerContext = layered ? context : "";
+      FlameGenome genome = readGenome(layer, layerContext, reader);
+      const double weight = jwildfireLayerWeight(layer, layerContext, reader);
+      const std::vector<GradientStop> palette = gradientOf(readPalette(layer, reader));
+      const bool depthAdded = finishGenome(genome, layerContext);
+      if (first) {
+        flame.genome = std::move(genome);
+        flame.palette = palette;
+        flame.weight = weight;
+        flame.depthAdded = depthAdded;
+        first = false;
+      } else {
+        flame.otherLayers.push_back({std::move(genome), palette, weight, depthAdded});
+      }
+    }
+    if (first)
+      reader.fail("",
+                  "is a JWildfire <jwf-flame> without a visible <layer> with transforms; there is "
+                  "nothing to draw");
+    // voxflame's weights reach 1000; only the ratios matter, so larger ones are scaled down together.
+    double heaviest = flame.weight;
+    for (const ImportedFlameLayer& layer : flame.otherLayers) heaviest = std::max(heaviest, layer.weight);
+    if (heaviest > kMaxImportedLayerWeight) {
+      flame.weight *= kMaxImportedLayerWeight / heaviest;
+      for (ImportedFlameLayer& layer : flame.otherLayers) layer.weight *= kMaxImportedLayerWeight / heaviest;
+    }
+  } else {
+    flame.genome = readGenome(node, "", reader);
+    flame.palette = gradientOf(readPalette(node, reader));
+    flame.depthAdded = finishGenome(flame.genome, "");
+  }
   flame.tone = readTone(node, reader);
-  flame.depthAdded = addFlameDepth(flame.genome, options.depth);
-  validateFlame(flame.genome, where);
   flame.warnings = reader.finishWarnings();
   flame.leftOut = reader.finishLeftOut();
   return flame;
@@ -1301,15 +1371,24 @@ FlameFileContents loadFlameFile(const std::filesystem::path& path, const FlameIm
 Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base) {
   Scene scene = base;
   scene.name = flame.name;
-  PatternLayer layer;
-  layer.kind = PatternKind::Flame;
-  layer.attractor.clear();
-  layer.params.clear();
-  layer.flame = flame.genome;
-  layer.color.mode = ColorMode::Index;
-  layer.color.palette.clear();
-  layer.color.gradient = flame.palette;
-  scene.layers = {layer};
+  const auto flameLayer = [](const FlameGenome& genome, const std::vector<GradientStop>& palette, double weight) {
+    PatternLayer layer;
+    layer.kind = PatternKind::Flame;
+    layer.attractor.clear();
+    layer.params.clear();
+    layer.flame = genome;
+    layer.weight = weight;
+    layer.color.mode = ColorMode::Index;
+    layer.color.palette.clear();
+    layer.color.gradient = palette;
+    return layer;
+  };
+  scene.layers = {flameLayer(flame.genome, flame.palette, flame.weight)};
+  for (const ImportedFlameLayer& other : flame.otherLayers) {
+    // Drawn in the first layer's coordinates, as JWildfire draws them into one image.
+    scene.layers.push_back(flameLayer(other.genome, other.palette, other.weight));
+    scene.layers.back().transform.fit = FitMode::Previous;
+  }
   scene.tone = flame.tone;
   scene.animation = AnimationSettings{};
   scene.keyframes.clear();

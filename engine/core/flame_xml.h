@@ -39,6 +39,7 @@ inline constexpr const char* kFlam3PaletteTable = "/usr/share/flam3/flam3-palett
 inline constexpr double kDefaultFlameDepth = 0.5;
 inline constexpr double kMaxFlameDepth = 10.0;
 inline constexpr std::size_t kFlamePaletteSize = 256;
+inline constexpr double kMaxImportedLayerWeight = 1000.0;  // a scene layer's largest weight
 
 struct FlameImportOptions {
   std::filesystem::path paletteTable = kFlam3PaletteTable;
@@ -47,10 +48,22 @@ struct FlameImportOptions {
   std::string name;                   // pick the flame with this name attribute instead
 };
 
+// One more layer of a layered flame (JWildfire's <layer>s after the first visible one).
+struct ImportedFlameLayer {
+  FlameGenome genome;
+  std::vector<GradientStop> palette;  // as ImportedFlame::palette
+  double weight = 1.0;                // relative to ImportedFlame::weight
+  bool depthAdded = false;
+};
+
 struct ImportedFlame {
   std::string name;
+  // The flame's genome and palette; for a JWildfire flame of several layers, its first visible
+  // layer's, the others in otherLayers.
   FlameGenome genome;
   std::vector<GradientStop> palette;  // kFlamePaletteSize stops at i/255, linear RGB
+  double weight = 1.0;                // the layer weight (JWildfire's layer weight × density²)
+  std::vector<ImportedFlameLayer> otherLayers;
   ToneMapSettings tone;               // flam3's defaults, then the file's keys
   bool depthAdded = false;            // addFlameDepth changed the genome
   std::vector<std::string> warnings;  // what was left out or replaced, for the user
@@ -85,7 +98,9 @@ bool isFlatFlame(const FlameGenome& genome);
 bool addFlameDepth(FlameGenome& genome, double depth);
 
 // A complete scene showing the imported flame: `base` with its layers replaced by one flame layer
-// (colour index mode over the flame's palette), the flame's tone keys, its name, no animation.
+// (colour index mode over the flame's palette) and one more per layer of otherLayers, each with
+// its weight, the others fitted with the first (FitMode::Previous) so they stay in register; the
+// flame's tone keys, its name, no animation.
 Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base);
 
 }  // namespace voxflame::core

@@ -70,14 +70,16 @@ std::string_view toString(FitMode mode) {
       return "cover";
     case FitMode::Stretch:
       return "stretch";
+    case FitMode::Previous:
+      return "previous";
   }
   return "contain";
 }
 
 FitMode fitModeFromString(std::string_view name) {
-  for (FitMode mode : {FitMode::Contain, FitMode::Cover, FitMode::Stretch})
+  for (FitMode mode : {FitMode::Contain, FitMode::Cover, FitMode::Stretch, FitMode::Previous})
     if (toString(mode) == name) return mode;
-  throw Error("is '" + std::string(name) + "'; the known fit modes are: contain, cover, stretch");
+  throw Error("is '" + std::string(name) + "'; the known fit modes are: contain, cover, stretch, previous");
 }
 
 }  // namespace voxflame::core

@@ -57,6 +57,10 @@ enum class FitMode {
   Contain,  // uniform scale: covers the shape along its middle axis, at most 2.5× over along the widest
   Cover,    // uniform scale: covers the shape along every axis (the largest ratio); the mask carves it
   Stretch,  // a scale per axis: the box matches the shape's on each axis (before the user's rotation)
+  // The automatic fit of the layer before it (contain for the first layer), so layers drawn in
+  // one coordinate system (a JWildfire flame's layers) stay in register instead of each filling
+  // the mesh on its own.
+  Previous,
 };
 std::string_view toString(FitMode mode);
 FitMode fitModeFromString(std::string_view name);  // throws core::Error listing the modes

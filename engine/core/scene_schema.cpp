@@ -57,7 +57,7 @@ constexpr double kTwo53 = 9007199254740992.0;
 constexpr double kTwo40 = 1099511627776.0;
 
 constexpr std::string_view kColorModes[] = {"speed", "curvature", "time", "axis", "distance", "index"};
-constexpr std::string_view kFitModes[] = {"contain", "cover", "stretch"};
+constexpr std::string_view kFitModes[] = {"contain", "cover", "stretch", "previous"};
 constexpr std::string_view kIntegrators[] = {"euler", "rk4"};
 constexpr std::string_view kProjections[] = {"perspective", "orthographic"};
 constexpr std::string_view kMeshDisplays[] = {"off", "ghost", "silhouette"};
@@ -237,7 +237,8 @@ const TF kTransformFields[] = {
      .member = choice<&LayerTransform::fit>(kFitModes, "fit mode"),
      .ui = {"fit"},
      .help = "how the automatic fit sizes the attractor (below): `contain` fits the shape's middle axis, `cover` "
-             "fills every axis (the mesh carves it), `stretch` scales each axis to the shape",
+             "fills every axis (the mesh carves it), `stretch` scales each axis to the shape, `previous` takes the fit "
+             "of the layer before (imported JWildfire layers stay in register)",
      .affects = kPattern,
      .write = Write::UnlessDefault},
 };

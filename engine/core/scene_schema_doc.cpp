@@ -214,6 +214,9 @@ the box of the mesh's inside voxels:
 * `stretch`: a scale per attractor axis, so the robust box matches the shape's box on each axis
   (before `rotation_deg`); the pattern's proportions change. No axis is stretched more than 8×
   the geometric mean of the three.
+* `previous`: the fit of the layer before it (its original, not a copy; `contain` for the first
+  layer), so layers drawn in one coordinate system stay in register: the layers of a JWildfire
+  flame are imported this way, the first one fitted and the others placed with it.
 
 A ribbon or a sheet covers more of its mesh with `copies`: the same pattern again, turned, with
 one set of parameters for all (the shipped presets do this). Each copy is fitted like the original
