@@ -52,6 +52,7 @@ struct ImportedFlame {
   FlameGenome genome;
   std::vector<GradientStop> palette;  // kFlamePaletteSize stops at i/255, linear RGB
   ToneMapSettings tone;               // flam3's defaults, then the file's keys
+  FlatViewSettings flat;              // flam3's 2D framing: size, center, scale, zoom, quality, ...
   bool depthAdded = false;            // addFlameDepth changed the genome
   std::vector<std::string> warnings;  // what was left out or replaced, for the user
   // What the file asks for that the import could not keep, one short name each, sorted
@@ -85,7 +86,8 @@ bool isFlatFlame(const FlameGenome& genome);
 bool addFlameDepth(FlameGenome& genome, double depth);
 
 // A complete scene showing the imported flame: `base` with its layers replaced by one flame layer
-// (colour index mode over the flame's palette), the flame's tone keys, its name, no animation.
+// (colour index mode over the flame's palette), the flame's tone keys and 2D framing, its name, no
+// animation.
 Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base);
 
 }  // namespace voxflame::core
