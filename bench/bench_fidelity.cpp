@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -59,7 +60,11 @@ std::optional<std::string> firstFlameXml(const std::filesystem::path& path) {
   std::stringstream text;
   text << in.rdbuf();
   const std::string xml = text.str();
-  const std::size_t start = xml.find("<flame");
+  // "<flame" followed by a space or ">": not the "<flames>" root many files have.
+  std::size_t start = xml.find("<flame");
+  while (start != std::string::npos && start + 6 < xml.size() && xml[start + 6] != '>' &&
+         !std::isspace(static_cast<unsigned char>(xml[start + 6])))
+    start = xml.find("<flame", start + 6);
   if (start == std::string::npos) return std::nullopt;
   const std::size_t end = xml.find("</flame>", start);
   const std::size_t selfClosing = xml.find("/>", start);
