@@ -39,6 +39,13 @@ constexpr double kQuality = 400.0;
 constexpr std::size_t kMaxDefaultFlames = 20;
 constexpr const char* kFlam3Test = "/usr/share/flam3/test.flam3";
 
+std::string fileBytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
 std::vector<std::filesystem::path> defaultFlames() {
   std::vector<std::filesystem::path> files;
   if (std::filesystem::exists(kFlam3Test)) files.emplace_back(kFlam3Test);
@@ -49,17 +56,17 @@ std::vector<std::filesystem::path> defaultFlames() {
   for (const auto& entry : std::filesystem::directory_iterator(corpus, error))
     if (core::isFlameFilePath(entry.path())) found.push_back(entry.path());
   std::sort(found.begin(), found.end());
-  files.insert(files.end(), found.begin(), found.end());
+  // The corpus holds a copy of test.flam3: each flame file once.
+  const std::string test = files.empty() ? std::string() : fileBytes(files.front());
+  for (const std::filesystem::path& file : found)
+    if (test.empty() || fileBytes(file) != test) files.push_back(file);
   return files;
 }
 
 // The first <flame> element of a flame file as its own document: flam3-render would render every
 // flame of a file. Flames do not nest, so the text up to the first </flame> is the element.
 std::optional<std::string> firstFlameXml(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string xml = text.str();
+  const std::string xml = fileBytes(path);
   // "<flame" followed by a space or ">": not the "<flames>" root many files have.
   std::size_t start = xml.find("<flame");
   while (start != std::string::npos && start + 6 < xml.size() && xml[start + 6] != '>' &&
