@@ -52,9 +52,9 @@ Kernel makeKernel(double width) {
   return k;
 }
 
-// Kernel widths follow flam3 (filters.c): (radius · oversample + 1) / (hits + 1)^curve, never
-// below minimum · oversample + 1. Widths are quantised in steps of 4% so a table of kernels serves
-// every pixel.
+// Kernel widths follow flam3 (filters.c): (radius · oversample + 1) / count^curve (the count of
+// DensityImage::wholeHits), never below minimum · oversample + 1. Widths are quantised in steps of
+// 4% so a table of kernels serves every pixel.
 class KernelTable {
  public:
   KernelTable(const ToneMapSettings& tone, int oversample)
@@ -65,8 +65,9 @@ class KernelTable {
     kernels_.reserve(static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i) kernels_.push_back(makeKernel(maxWidth_ / std::pow(kStep, i)));
   }
-  const Kernel& forHits(double hits) const {
-    const double width = std::max(minWidth_, maxWidth_ / std::pow(hits + 1.0, curve_));
+  const Kernel& forHits(double hits, bool wholeHits) const {
+    const double count = wholeHits ? std::max(1.0, std::ceil(hits)) : hits + 1.0;
+    const double width = std::max(minWidth_, maxWidth_ / std::pow(count, curve_));
     return kernels_[static_cast<std::size_t>(std::min<int>(index(width), static_cast<int>(kernels_.size()) - 1))];
   }
   int maxRadius() const { return kernels_.front().radius; }
@@ -198,7 +199,7 @@ void estimateDensity(const DensityImage& in, const ToneMapSettings& tone, int ov
             if (v[3] <= 0.0f) continue;
             const float scale = logScale(v[3]);
             const float value[4] = {v[0] * scale, v[1] * scale, v[2] * scale, v[3] * scale};
-            const Kernel& k = kernels.forHits(static_cast<double>(v[3]) * hitsPerUnit);
+            const Kernel& k = kernels.forHits(static_cast<double>(v[3]) * hitsPerUnit, in.wholeHits);
             const int r = k.radius, side = 2 * r + 1;
             if (r == 0) {
               float* o = out.at(x, y);

@@ -205,6 +205,7 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
       }
   });
   sum.hitsPerUnitDensity = kFinisherDensityScale / k2;
+  sum.wholeHits = true;
 
   FinishSettings finish;
   finish.tone = sceneTone;
