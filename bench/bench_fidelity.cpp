@@ -13,6 +13,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -80,6 +81,14 @@ std::optional<std::string> firstFlameXml(const std::filesystem::path& path) {
   return "<flames>\n" + xml.substr(start, end + 8 - start) + "\n</flames>\n";
 }
 
+// A number as flam3-render reads it back exactly (std::to_string keeps 6 decimals: a size scale of
+// 1/3 would shrink the framing by 0.2% more than the size).
+std::string exactNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
 // Renders `genome` with flam3-render at the size scale and quality scale given; nothing when it
 // fails (a variation it does not know, a flame it refuses).
 std::optional<core::ImageRGBA> flam3Render(const std::filesystem::path& genome, const std::filesystem::path& out,
@@ -92,8 +101,8 @@ std::optional<core::ImageRGBA> flam3Render(const std::filesystem::path& genome, 
                                             "in=" + genome.string(),
                                             "out=" + out.string(),
                                             "format=png",
-                                            "ss=" + std::to_string(sizeScale),
-                                            "qs=" + std::to_string(qualityScale),
+                                            "ss=" + exactNumber(sizeScale),
+                                            "qs=" + exactNumber(qualityScale),
                                             "isaac_seed=" + std::to_string(seed),
                                             "verbose=0",
                                             "flam3-render"};
@@ -144,7 +153,8 @@ void benchFidelity(const BenchOptions& options) {
     std::ofstream(genome) << *xml;
     // flam3-render's ss scales the size and truncates it (flam3-render.c); voxflame renders the
     // size that comes out, with the framing scaled by the same factor.
-    const double sizeScale = std::min(1.0, static_cast<double>(kMaxWidth) / scene.flat.width);
+    // A hair over the exact ratio, so flam3's truncation of width · ss keeps the width it aims at.
+    const double sizeScale = std::min(1.0, (kMaxWidth + 1e-6) / scene.flat.width);
     const double qualityScale = kQuality / scene.flat.quality;
     auto start = std::chrono::steady_clock::now();
     const std::optional<core::ImageRGBA> reference =
