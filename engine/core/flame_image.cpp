@@ -138,6 +138,19 @@ glm::dvec3 displayEncode(glm::dvec3 linear, double gamma) {
   return glm::pow(glm::max(linear, glm::dvec3(0.0)), glm::dvec3(1.0 / gamma));
 }
 
+// flam3's count for a supersampled pixel's kernel (rect.c): the points of the block of
+// (2⌊oversample / 2⌋ + 1)² pixels around it, scaled by (oversample / (oversample + 1))² for an
+// even oversample, so the kernel narrows with the density of the output pixel, not of one sample.
+double blockDensity(const DensityImage& in, int x, int y, int oversample) {
+  const int half = oversample / 2;
+  double sum = 0.0;
+  for (int dy = -half; dy <= half; ++dy)
+    for (int dx = -half; dx <= half; ++dx)
+      sum += in.at(std::clamp(x + dx, 0, in.width - 1), std::clamp(y + dy, 0, in.height - 1))[3];
+  if (oversample % 2 == 0) sum *= std::pow(oversample / (oversample + 1.0), 2.0);
+  return sum;
+}
+
 }  // namespace
 
 void DensityImage::resize(int w, int h) {
@@ -199,7 +212,8 @@ void estimateDensity(const DensityImage& in, const ToneMapSettings& tone, int ov
             if (v[3] <= 0.0f) continue;
             const float scale = logScale(v[3]);
             const float value[4] = {v[0] * scale, v[1] * scale, v[2] * scale, v[3] * scale};
-            const Kernel& k = kernels.forHits(static_cast<double>(v[3]) * hitsPerUnit, in.wholeHits);
+            const double density = in.wholeHits && oversample > 1 ? blockDensity(in, x, y, oversample) : v[3];
+            const Kernel& k = kernels.forHits(density * hitsPerUnit, in.wholeHits);
             const int r = k.radius, side = 2 * r + 1;
             if (r == 0) {
               float* o = out.at(x, y);
