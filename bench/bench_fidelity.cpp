@@ -189,10 +189,12 @@ void benchFidelity(const BenchOptions& options) {
     const double ssim = core::ssimLuma(ours.image, *reference);
     const double ceiling = again ? core::ssimLuma(*again, *reference) : 1.0;
     const double referenceLuminance = core::meanLinearLuminance(*reference);
-    const double ratio = referenceLuminance > 0.0 ? core::meanLinearLuminance(ours.image) / referenceLuminance : 0.0;
+    // flam3 renders some flames black (one without a palette has a black one in flam3): no ratio then.
+    const nlohmann::json ratio =
+        referenceLuminance > 0.0 ? nlohmann::json(core::meanLinearLuminance(ours.image) / referenceLuminance) : nullptr;
     ssimGapSum += ceiling - ssim;
     metSsim += ceiling - ssim <= 0.05;
-    metLuminance += ratio >= 0.9 && ratio <= 1.1;
+    metLuminance += ratio.is_number() && ratio.get<double>() >= 0.9 && ratio.get<double>() <= 1.1;
     report(options, {{"bench", "fidelity"},
                      {"flame", name},
                      {"size", std::to_string(reference->width) + "x" + std::to_string(reference->height)},
