@@ -33,6 +33,12 @@ struct RenderArguments {
   int progressFd = -1;  // -1: no progress lines
   std::optional<core::RenderMethod> method;
   bool stats = false;
+  // --flat: the flame layer in 2D as flam3 frames it (flat_render.h); the size defaults to the
+  // flame's, so the command line says whether --width and --height were given.
+  bool flat = false;
+  bool widthGiven = false, heightGiven = false;
+  std::optional<double> quality;  // --flat: samples per pixel (default: the flame's)
+  std::uint64_t seed = 1;         // --flat: the chaos game's seed
 };
 int renderCommand(const RenderArguments& arguments);  // render_command.cpp
 

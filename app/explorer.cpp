@@ -84,6 +84,28 @@ unsigned uploadThumbnail(const Thumbnail& thumbnail) {
   return texture;
 }
 
+// The flat view's newest image into its texture (made on first use, replaced in place after).
+void uploadFlatView(ExplorerState& state) {
+  state.flatImagePending = false;
+  const core::ImageRGBA& image = state.flatImage;
+  if (image.width <= 0 || image.height <= 0) return;
+  std::vector<std::uint8_t> rgba(image.pixels.size());
+  for (std::size_t i = 0; i < rgba.size(); ++i)
+    rgba[i] = static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(image.pixels[i], 0.0f, 1.0f)));
+  if (!state.flatTexture) {
+    GLuint texture = 0;
+    glGenTextures(1, &texture);
+    state.flatTexture = texture;
+  }
+  glBindTexture(GL_TEXTURE_2D, state.flatTexture);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  state.flatTextureWidth = image.width;
+  state.flatTextureHeight = image.height;
+}
+
 static_assert(kKeyLeftShift == GLFW_KEY_LEFT_SHIFT && kKeyLeftControl == GLFW_KEY_LEFT_CONTROL &&
               kKeyLeftAlt == GLFW_KEY_LEFT_ALT && kKeyLeftSuper == GLFW_KEY_LEFT_SUPER &&
               kKeyRightShift == GLFW_KEY_RIGHT_SHIFT && kKeyRightControl == GLFW_KEY_RIGHT_CONTROL &&
@@ -265,6 +287,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       input.queue.applyTo(ImGui::GetIO());
       ImGui::NewFrame();
       state.session = session.status();
+      if (state.flatImagePending) uploadFlatView(state);
       explorerUiFrame(state);
       ImGui::Render();
 
@@ -329,6 +352,10 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     }
   }
   for (const auto& [path, texture] : state.thumbnailTextures) glDeleteTextures(1, &texture);
+  if (state.flatTexture) {
+    const GLuint texture = state.flatTexture;
+    glDeleteTextures(1, &texture);
+  }
   // The window's size for next time (a window that is gone keeps last time's); a failure to save
   // settings is only worth a line.
   if (!x11.windowGone()) {

@@ -17,6 +17,7 @@
 #include "core/flame_search.h"
 #include "core/flame_variations.h"
 #include "core/flame_xml.h"
+#include "core/flat_render.h"
 #include "core/grid.h"
 #include "core/keyframes.h"
 #include "core/scene_schema.h"
@@ -129,6 +130,89 @@ core::OrbitSpec layerSpec(const core::PatternLayer& layer) {
 }
 
 // ---------------------------------------------------------------------------------------------
+// The flat view: rendered off the main thread when what it shows changed, drawn behind the panels.
+namespace {
+
+// At most this wide and this quality, so an edit shows within about a second.
+constexpr int kFlatViewMaxWidth = 640;
+constexpr double kFlatViewMaxQuality = 50.0;
+
+const core::PatternLayer* firstFlameLayer(const core::Scene& scene) {
+  for (const core::PatternLayer& layer : scene.layers)
+    if (layer.kind == core::PatternKind::Flame) return &layer;
+  return nullptr;
+}
+
+// The part of the scene the flat view shows: the first flame layer, the tone and the framing.
+core::Scene flatViewScene(const core::Scene& scene) {
+  core::Scene shown;
+  shown.name = scene.name;
+  if (const core::PatternLayer* layer = firstFlameLayer(scene)) shown.layers = {*layer};
+  shown.tone = scene.tone;
+  shown.flat = scene.flat;
+  return shown;
+}
+
+void updateFlatView(ExplorerState& state) {
+  if (!state.flatView) {
+    state.flatRender.cancel();
+    state.flatRendered = core::Scene{};
+    return;
+  }
+  if (state.flatRender.ready()) {
+    try {
+      state.flatImage = *state.flatRender.take();
+      state.flatImagePending = true;
+      state.flatMessage.clear();
+    } catch (const std::exception& e) {
+      state.flatMessage = e.what();
+    }
+  }
+  const core::Scene shown = flatViewScene(state.scene);
+  if (shown.layers.empty()) {
+    state.flatMessage = "the flat view shows flame layers; this scene has none";
+    return;
+  }
+  if (shown == state.flatRendered) return;
+  state.flatRendered = shown;
+  core::FlatRenderOptions options;
+  options.width = std::min(shown.flat.width, kFlatViewMaxWidth);
+  options.quality = std::min(shown.flat.quality, kFlatViewMaxQuality);
+  state.flatRender.start([shown, options](std::stop_token stop) mutable {
+    std::atomic<bool> cancel{false};
+    const std::stop_callback onStop(stop, [&cancel] { cancel = true; });
+    options.cancel = &cancel;
+    try {
+      return core::renderFlat(shown, options).image;
+    } catch (const core::FlatRenderCancelled&) {
+      return core::ImageRGBA{};
+    }
+  });
+}
+
+// The flat image over the whole window behind the panels, letterboxed to its aspect.
+void drawFlatView(const ExplorerState& state) {
+  if (!state.flatView) return;
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  draw->AddRectFilled(ImVec2(0.0f, 0.0f), display, IM_COL32(0, 0, 0, 255));
+  if (state.flatTexture && state.flatTextureWidth > 0 && state.flatTextureHeight > 0) {
+    const float fit = std::min(display.x / static_cast<float>(state.flatTextureWidth),
+                               display.y / static_cast<float>(state.flatTextureHeight));
+    const ImVec2 size(fit * static_cast<float>(state.flatTextureWidth),
+                      fit * static_cast<float>(state.flatTextureHeight));
+    const ImVec2 corner(0.5f * (display.x - size.x), 0.5f * (display.y - size.y));
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(state.flatTexture)), corner,
+                   ImVec2(corner.x + size.x, corner.y + size.y));
+  }
+  const char* text = !state.flatMessage.empty() ? state.flatMessage.c_str()
+                     : state.flatRender.busy()  ? "flat view: rendering…"
+                                                : "flat view (as flam3 renders it)";
+  draw->AddText(ImVec2(12.0f, display.y - 48.0f), IM_COL32(220, 220, 220, 255), text);
+}
+
+}  // namespace
+
 // Background analysis, search and the search history.
 
 std::string analysisKey(const core::PatternLayer& layer) {
@@ -874,6 +958,11 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
       attractorEditor(state, scope, layer);
       break;
     case core::PatternKind::Flame:
+      ImGui::Checkbox("flat view (as flam3 renders it)", &state.flatView);
+      if (ImGui::IsItemHovered())
+        ImGui::SetTooltip(
+            "The flame in 2D at its own framing (the flame file's size, centre, scale, zoom) with\n"
+            "flam3's tone: what the flame's author saw. `voxflame render --flat` renders it too.");
       flameEditor(state, index, scope, layer.flame);
       break;
     case core::PatternKind::QuaternionJulia:
@@ -1303,7 +1392,8 @@ std::string convergenceText(const SessionStatus& status) {
 
 double frameWaitSeconds(const ExplorerState& state, bool viewResting, int restingFrames) {
   if (state.exportStatus.state == ExportState::Running) return 0.1;
-  const bool busy = state.playing || state.search.busy() || state.analysis.busy() || state.orbiting || state.panning;
+  const bool busy = state.playing || state.search.busy() || state.analysis.busy() || state.flatRender.busy() ||
+                    state.flatImagePending || state.orbiting || state.panning;
   if (busy || !viewResting || !state.session.resting || restingFrames < 3) return 0.0;
   // Other threads do not wake the loop; this bounds how late it notices one that finished.
   return 0.5;
@@ -1571,6 +1661,8 @@ void explorerUiFrame(ExplorerState& state) {
   handleHistory(state);
   collectSearch(state);
   updateAnalysis(state);
+  updateFlatView(state);
+  drawFlatView(state);
   advancePlayback(state);
   patternWindow(state, scale);
   viewWindow(state, scale);

@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "core/image_io.h"
 #include "core/lyapunov.h"
 #include "core/scene.h"
 #include "explorer_session.h"
@@ -128,6 +129,19 @@ struct ExplorerState {
 
   // Autosaves of sessions that crashed or were killed, offered back at start.
   std::vector<Recoverable> recoverable;
+
+  // The flat view (issue 25): the first flame layer rendered in 2D as flam3 frames it
+  // (core/flat_render.h), shown over the viewport while `flatView` is on. It renders off the main
+  // thread whenever the layer, the tone or the framing change; the window loop uploads each new
+  // image into `flatTexture` (flatImagePending) before the next UI frame draws it.
+  bool flatView = false;
+  BackgroundJob<core::ImageRGBA> flatRender;
+  core::Scene flatRendered;  // what the job renders or rendered: the flame layer, tone and framing
+  core::ImageRGBA flatImage;
+  bool flatImagePending = false;
+  unsigned flatTexture = 0;
+  int flatTextureWidth = 0, flatTextureHeight = 0;
+  std::string flatMessage;
 
   // Timeline: the shown scene is the animation at scene.animation.time.
   bool playing = false;

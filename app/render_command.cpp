@@ -15,6 +15,8 @@
 
 #include "commands.h"
 #include "core/error.h"
+#include "core/flat_render.h"
+#include "core/image_io.h"
 #include "core/keyframes.h"
 #include "core/scene_io.h"
 #include "core/volume_export.h"
@@ -92,11 +94,45 @@ int writeVolume(const core::Scene& scene, const StillOptions& options, const std
   return 0;
 }
 
+// `render --flat`: the flame layer in 2D, framed as flam3 frames it (core/flat_render.h).
+int renderFlatCommand(const RenderArguments& arguments, const std::string& output) {
+  if (std::filesystem::path(output).extension() != ".png")
+    throw UsageError("render --flat writes a PNG: -o OUT.png, not '" + output + "'");
+  if (arguments.method || arguments.samples || arguments.grid || arguments.points || arguments.untilNoisePercent ||
+      arguments.oversample || arguments.cameraAzimuthDeg || arguments.cameraElevationDeg)
+    throw UsageError(
+        "render --flat has no mesh, camera or grid: leave out --method, --samples, --points, --grid, --until-noise, "
+        "--oversample and the camera options");
+  core::Scene scene = sceneFromArgument(arguments.preset);
+  scene = core::sceneAtTime(scene, arguments.time.value_or(scene.animation.time));
+  core::FlatRenderOptions options;
+  options.width = arguments.widthGiven ? arguments.width : 0;
+  options.height = arguments.heightGiven ? arguments.height : 0;
+  options.quality = arguments.quality;
+  options.seed = arguments.seed;
+  options.cancel = &catchInterrupts();
+  const auto start = std::chrono::steady_clock::now();
+  core::FlatRenderResult result;
+  try {
+    result = core::renderFlat(scene, options);
+  } catch (const core::FlatRenderCancelled&) {
+    std::cerr << "voxflame: interrupted; nothing was written\n";
+    return 130;
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  core::writePng(output, result.image, arguments.bitDepth, {{kPresetChunkKey, core::sceneToJson(scene)}});
+  std::printf("wrote %s (%d×%d, flat, quality %g, %llu samples, %.2f s)\n", output.c_str(), result.image.width,
+              result.image.height, result.quality, static_cast<unsigned long long>(result.samples), seconds);
+  return 0;
+}
+
 }  // namespace
 
 int renderCommand(const RenderArguments& arguments) {
   checkProgressFd(arguments.progressFd);
   if (!arguments.output) throw UsageError("render needs an output file: -o OUT.png, OUT.exr, OUT.vdb or OUT.nrrd");
+  if (arguments.flat) return renderFlatCommand(arguments, *arguments.output);
+  if (arguments.quality) throw UsageError("--quality is an option of render --flat");
   const std::string& output = *arguments.output;
   const std::string extension = std::filesystem::path(output).extension().string();
   const bool volumeOutput = extension == ".vdb" || extension == ".nrrd";

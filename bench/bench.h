@@ -14,7 +14,8 @@ struct BenchOptions {
   std::string meshFolder;            // where bunny.obj, dragon.ply, ... are
   std::string method;                // --method volume|points (export), empty: the benchmark's default
   std::vector<int> grids;            // --grid N...: the grids `explorer` runs at, empty: 192, 256 and 512
-  std::vector<std::string> presets;  // `rest`'s presets (files or shipped names), empty: every shipped one
+  std::vector<std::string> presets;  // `rest`'s presets (files or shipped names), empty: every shipped one;
+                                     // `fidelity`'s flame files, empty: its default set
 };
 
 struct Benchmark {
@@ -44,5 +45,6 @@ void benchExplorer(const BenchOptions& options);    // bench_explorer.cpp
 void benchQuality(const BenchOptions& options);     // bench_quality.cpp
 void benchFlame(const BenchOptions& options);       // bench_flame.cpp
 void benchRest(const BenchOptions& options);        // bench_rest.cpp
+void benchFidelity(const BenchOptions& options);    // bench_fidelity.cpp
 
 }  // namespace voxflame::bench

@@ -34,6 +34,11 @@ const std::vector<Benchmark>& benchmarks() {
        "the live view on each shipped preset (or the ones named) at its own grid: seconds until it rests and why, "
        "then CPU and context switches per second at rest",
        &benchRest},
+      {"fidelity",
+       "the flat view against flam3-render at quality 400, at most 640 pixels wide: SSIM of the luma (and flam3 "
+       "against itself with another seed as the ceiling), ratio of mean luminance; flam3's test.flam3 and up to 19 "
+       "corpus flames, or the flame files named",
+       &benchFidelity},
   };
   return table;
 }

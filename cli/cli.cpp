@@ -129,8 +129,18 @@ Run defineRender(CLI::App& command) {
       .add_option("-o,--output", a->output,
                   "The file to write (required): OUT.png or OUT.exr (an image), OUT.vdb or OUT.nrrd (the volume)")
       ->type_name("OUT");
-  command.add_option("--width", a->width, "Image width in pixels")->check(within(1, 65536))->capture_default_str();
-  command.add_option("--height", a->height, "Image height in pixels")->check(within(1, 65536))->capture_default_str();
+  CLI::Option* width = command.add_option("--width", a->width, "Image width in pixels (--flat: the flame's)")
+                           ->check(within(1, 65536))
+                           ->capture_default_str();
+  CLI::Option* height = command.add_option("--height", a->height, "Image height in pixels (--flat: the flame's)")
+                            ->check(within(1, 65536))
+                            ->capture_default_str();
+  command.add_flag("--flat", a->flat,
+                   "Render the flame layer in 2D as flam3 frames it (the flame file's size, centre, scale, zoom, "
+                   "rotate, quality, filter and tone): no mesh, no depth; for comparing with flam3-render");
+  command.add_option("--quality", a->quality, "--flat: samples per output pixel (default: the flame's quality)")
+      ->check(within(1e-3, 1e6));
+  command.add_option("--seed", a->seed, "--flat: the chaos game's seed")->capture_default_str();
   command.add_option("--samples", a->samples, "Jittered sub-samples per pixel (default: the preset's)")
       ->check(within(1, 1024));
   command.add_option("--points", a->points, "Points to accumulate (0: the preset's)")
@@ -172,7 +182,11 @@ Run defineRender(CLI::App& command) {
       "Renders headless (no display needed). A PNG carries its preset: rendering it again reproduces it.\n"
       "EXR is linear 32-bit float. VDB and NRRD hold the volume itself (normalised density and colour, in\n"
       "the mesh's coordinates) for other renderers. Ctrl-C stops cleanly and writes nothing.");
-  return [a] { return app::renderCommand(*a); };
+  return [a, width, height] {
+    a->widthGiven = width->count() > 0;
+    a->heightGiven = height->count() > 0;
+    return app::renderCommand(*a);
+  };
 }
 
 Run defineAnimate(CLI::App& command) {
@@ -333,7 +347,7 @@ Run defineBench(CLI::App& command) {
       ->check(within(core::kMinGridResolution, core::kMaxGridResolution));
   command.add_option("presets", options->presets,
                      "`rest`: the presets to open (files, or shipped names such as default); default: every shipped "
-                     "preset");
+                     "preset. `fidelity`: the flame files to compare with flam3-render");
   command.add_flag("--json", options->json, "One JSON object a line");
   command.footer("Measure performance (Release build). The benchmarks:" + list);
   return [options, which] { return bench::runBenchmarks(*options, *which); };

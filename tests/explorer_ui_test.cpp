@@ -1059,3 +1059,37 @@ TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) 
   state.exportStatus.state = app::ExportState::Running;
   EXPECT_GT(app::frameWaitSeconds(state, false, 0), 0.0) << "an export's frames are throttled";
 }
+
+// The flat view (issue 25): the checkbox's state renders the flame layer in 2D off the main thread,
+// at the flame's framing (at most 640 wide), again after an edit, and stops when turned off.
+TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerAndFollowsEdits) {
+  useFlameLayer();
+  state.scene.flat.width = 80;
+  state.scene.flat.height = 60;
+  state.scene.flat.scale = 20.0;
+  state.scene.flat.quality = 2.0;
+  state.flatView = true;
+  const auto waitForImage = [&] {
+    for (int i = 0; i < 1500 && !state.flatImagePending; ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      frame();
+    }
+  };
+  frame();
+  waitForImage();
+  ASSERT_TRUE(state.flatImagePending) << state.flatMessage;
+  EXPECT_EQ(state.flatImage.width, 80);
+  EXPECT_EQ(state.flatImage.height, 60);
+  EXPECT_EQ(app::frameWaitSeconds(state, true, 10), 0.0) << "the window loop must upload the new image";
+  state.flatImagePending = false;  // as the window loop's upload does
+
+  state.scene.flat.width = 40;
+  frame();
+  waitForImage();
+  ASSERT_TRUE(state.flatImagePending) << state.flatMessage;
+  EXPECT_EQ(state.flatImage.width, 40);
+
+  state.flatView = false;
+  frame();
+  EXPECT_FALSE(state.flatRender.busy());
+}

@@ -134,3 +134,37 @@ TEST(ImportCli, BadFlameFilesFailNamingTheFile) {
   EXPECT_NE(result.output.find("missing.flame"), std::string::npos) << result.output;
   EXPECT_FALSE(std::filesystem::exists(folder / "out.json"));
 }
+
+// `render --flat` (issue 25): the flame in 2D at the flame's own framing, from a flame file or the
+// preset an import wrote; what it cannot do is a clear error.
+TEST(ImportCli, RenderFlatDrawsTheFlameAtItsOwnFraming) {
+  TemporaryFolder folder;
+  std::ofstream(folder / "hand.flame") << R"(<flame name="framed" size="120 80" scale="30" quality="5">)" +
+                                              std::string(kHandFlame).substr(std::string(kHandFlame).find('\n'));
+  auto result = runVoxflame("render hand.flame --flat -o flat.png", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  auto image = voxflame::core::readPng(folder / "flat.png").image;
+  EXPECT_EQ(image.width, 120);
+  EXPECT_EQ(image.height, 80);
+  EXPECT_GT(litPixels(folder / "flat.png"), 500u);
+
+  result = runVoxflame("import hand.flame -o hand.json", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  result = runVoxflame("render hand.json --flat -o half.png --width 60 --quality 2 --seed 3", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  image = voxflame::core::readPng(folder / "half.png").image;
+  EXPECT_EQ(image.width, 60);
+  EXPECT_EQ(image.height, 40);
+
+  result = runVoxflame("render hand.flame --flat -o flat.exr", folder.path());
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_NE(result.output.find("PNG"), std::string::npos) << result.output;
+  result = runVoxflame("render --flat -o none.png", folder.path());  // the built-in preset: attractors
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_NE(result.output.find("no flame layer"), std::string::npos) << result.output;
+  result = runVoxflame("render hand.flame --flat -o flat.png --quality 0", folder.path());
+  EXPECT_NE(result.exitStatus, 0);
+  result = runVoxflame("render hand.flame -o still.png --quality 10", folder.path());
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_NE(result.output.find("--flat"), std::string::npos) << result.output;
+}

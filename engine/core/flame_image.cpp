@@ -52,9 +52,9 @@ Kernel makeKernel(double width) {
   return k;
 }
 
-// Kernel widths follow flam3 (filters.c): (radius · oversample + 1) / (hits + 1)^curve, never
-// below minimum · oversample + 1. Widths are quantised in steps of 4% so a table of kernels serves
-// every pixel.
+// Kernel widths follow flam3 (filters.c): (radius · oversample + 1) / count^curve (the count of
+// DensityImage::wholeHits), never below minimum · oversample + 1. Widths are quantised in steps of
+// 4% so a table of kernels serves every pixel.
 class KernelTable {
  public:
   KernelTable(const ToneMapSettings& tone, int oversample)
@@ -65,8 +65,9 @@ class KernelTable {
     kernels_.reserve(static_cast<std::size_t>(count));
     for (int i = 0; i < count; ++i) kernels_.push_back(makeKernel(maxWidth_ / std::pow(kStep, i)));
   }
-  const Kernel& forHits(double hits) const {
-    const double width = std::max(minWidth_, maxWidth_ / std::pow(hits + 1.0, curve_));
+  const Kernel& forHits(double hits, bool wholeHits) const {
+    const double count = wholeHits ? std::max(1.0, std::ceil(hits)) : hits + 1.0;
+    const double width = std::max(minWidth_, maxWidth_ / std::pow(count, curve_));
     return kernels_[static_cast<std::size_t>(std::min<int>(index(width), static_cast<int>(kernels_.size()) - 1))];
   }
   int maxRadius() const { return kernels_.front().radius; }
@@ -137,6 +138,19 @@ glm::dvec3 displayEncode(glm::dvec3 linear, double gamma) {
   return glm::pow(glm::max(linear, glm::dvec3(0.0)), glm::dvec3(1.0 / gamma));
 }
 
+// flam3's count for a supersampled pixel's kernel (rect.c): the points of the block of
+// (2⌊oversample / 2⌋ + 1)² pixels around it, scaled by (oversample / (oversample + 1))² for an
+// even oversample, so the kernel narrows with the density of the output pixel, not of one sample.
+double blockDensity(const DensityImage& in, int x, int y, int oversample) {
+  const int half = oversample / 2;
+  double sum = 0.0;
+  for (int dy = -half; dy <= half; ++dy)
+    for (int dx = -half; dx <= half; ++dx)
+      sum += in.at(std::clamp(x + dx, 0, in.width - 1), std::clamp(y + dy, 0, in.height - 1))[3];
+  if (oversample % 2 == 0) sum *= std::pow(oversample / (oversample + 1.0), 2.0);
+  return sum;
+}
+
 }  // namespace
 
 void DensityImage::resize(int w, int h) {
@@ -198,7 +212,8 @@ void estimateDensity(const DensityImage& in, const ToneMapSettings& tone, int ov
             if (v[3] <= 0.0f) continue;
             const float scale = logScale(v[3]);
             const float value[4] = {v[0] * scale, v[1] * scale, v[2] * scale, v[3] * scale};
-            const Kernel& k = kernels.forHits(static_cast<double>(v[3]) * hitsPerUnit);
+            const double density = in.wholeHits && oversample > 1 ? blockDensity(in, x, y, oversample) : v[3];
+            const Kernel& k = kernels.forHits(density * hitsPerUnit, in.wholeHits);
             const int r = k.radius, side = 2 * r + 1;
             if (r == 0) {
               float* o = out.at(x, y);

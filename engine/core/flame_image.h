@@ -38,6 +38,11 @@ struct DensityImage {
   int width = 0, height = 0;        // pixels (supersampled)
   std::vector<float> values;        // 4 per pixel, rows top to bottom: red·D, green·D, blue·D, D (linear)
   double hitsPerUnitDensity = 1.0;  // points that a pixel with D = 1 holds
+  // How density estimation counts a pixel's points when it picks the pixel's kernel. The renders
+  // of the volume (fractional sums along rays): hits + 1. The flat view (whole points, as flam3's
+  // filters.c counts them): ⌈hits⌉, so a pixel with one point gets the widest kernel, and with
+  // an oversample above 1 the hits of the block of supersampled pixels around it (rect.c).
+  bool wholeHits = false;
 
   void resize(int w, int h);  // zero-filled
   float* at(int x, int y) {

@@ -1062,6 +1062,71 @@ ToneMapSettings readTone(const pugi::xml_node& flame, FlameReader& reader) {
   return tone;
 }
 
+// --- the 2D framing -------------------------------------------------------------------------
+
+// flam3's framing of the flame (FlatViewSettings' defaults are flam3's). Values outside the
+// preset's ranges are brought into them with a warning, as the tone keys are.
+FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader) {
+  FlatViewSettings flat;
+  const auto clamped = [&](const char* name, double value, double low, double high) {
+    const double kept = std::clamp(value, low, high);
+    if (kept != value)
+      reader.warn(std::string(name) + " " + formatted(value) + " is outside voxflame's range; " + formatted(kept) +
+                  " is used");
+    return kept;
+  };
+  // The framing only matters to the flat view: a value that is not a number (real files have
+  // center="nan nan") keeps flam3's default with a warning instead of refusing the flame.
+  const auto unusable = [&](const pugi::xml_attribute& attribute, const char* what) {
+    reader.warn(std::string(attribute.name()) + "=\"" + attribute.value() + "\" is not " + what +
+                "; the flat view uses flam3's default");
+  };
+  const auto key = [&](const char* name, double& target, double low, double high) {
+    const pugi::xml_attribute attribute = flame.attribute(name);
+    if (!attribute) return false;
+    const auto value = parseNumbers(attribute.value());
+    if (!value || value->size() != 1 || !finiteWithin(value->front(), kCoefficientLimit)) {
+      unusable(attribute, "a number");
+      return false;
+    }
+    target = clamped(name, value->front(), low, high);
+    return true;
+  };
+  const auto pair = [&](const char* name) -> std::optional<std::array<double, 2>> {
+    const pugi::xml_attribute attribute = flame.attribute(name);
+    if (!attribute) return std::nullopt;
+    const auto values = parseNumbers(attribute.value());
+    if (!values || values->size() < 2 || !finiteWithin((*values)[0], kCoefficientLimit) ||
+        !finiteWithin((*values)[1], kCoefficientLimit)) {
+      unusable(attribute, "two numbers");
+      return std::nullopt;
+    }
+    return std::array<double, 2>{(*values)[0], (*values)[1]};
+  };
+  if (const auto size = pair("size")) {
+    flat.width = static_cast<int>(std::lround(clamped("width", (*size)[0], 1.0, 65536.0)));
+    flat.height = static_cast<int>(std::lround(clamped("height", (*size)[1], 1.0, 65536.0)));
+  }
+  if (const auto center = pair("center")) {
+    flat.centerX = clamped("center x", (*center)[0], -1e6, 1e6);
+    flat.centerY = clamped("center y", (*center)[1], -1e6, 1e6);
+  }
+  key("scale", flat.scale, 1e-6, 1e6);
+  key("zoom", flat.zoom, -30.0, 30.0);
+  key("rotate", flat.rotateDeg, -3600.0, 3600.0);
+  double oversample = flat.oversample;
+  // Old flam3 files say supersample; Apophysis writes oversample.
+  if (key("supersample", oversample, 1.0, 4.0) || key("oversample", oversample, 1.0, 4.0))
+    flat.oversample = static_cast<int>(std::lround(oversample));
+  key("filter", flat.filterRadius, 0.0, 10.0);
+  key("quality", flat.quality, 1e-3, 1e6);
+  if (const pugi::xml_attribute shape = flame.attribute("filter_shape");
+      shape && std::string_view(shape.value()) != "gaussian") {
+    reader.warn(std::string("the spatial filter '") + shape.value() + "' is drawn as flam3's gaussian");
+  }
+  return flat;
+}
+
 // --- the flame ------------------------------------------------------------------------------
 
 FlameSymmetry symmetryOfKind(double kind, FlameReader& reader) {
@@ -1209,6 +1274,7 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
     flame.depthAdded = finishGenome(flame.genome, "");
   }
   flame.tone = readTone(node, reader);
+  flame.flat = readFlat(node, reader);
   flame.warnings = reader.finishWarnings();
   flame.leftOut = reader.finishLeftOut();
   return flame;
@@ -1390,6 +1456,7 @@ Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base) {
     scene.layers.back().transform.fit = FitMode::Previous;
   }
   scene.tone = flame.tone;
+  scene.flat = flame.flat;
   scene.animation = AnimationSettings{};
   scene.keyframes.clear();
   return scene;

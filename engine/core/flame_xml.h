@@ -65,6 +65,7 @@ struct ImportedFlame {
   double weight = 1.0;                // the layer weight (JWildfire's layer weight × density²)
   std::vector<ImportedFlameLayer> otherLayers;
   ToneMapSettings tone;               // flam3's defaults, then the file's keys
+  FlatViewSettings flat;              // flam3's 2D framing: size, center, scale, zoom, quality, ...
   bool depthAdded = false;            // addFlameDepth changed the genome
   std::vector<std::string> warnings;  // what was left out or replaced, for the user
   // What the file asks for that the import could not keep, one short name each, sorted
@@ -100,7 +101,7 @@ bool addFlameDepth(FlameGenome& genome, double depth);
 // A complete scene showing the imported flame: `base` with its layers replaced by one flame layer
 // (colour index mode over the flame's palette) and one more per layer of otherLayers, each with
 // its weight, the others fitted with the first (FitMode::Previous) so they stay in register; the
-// flame's tone keys, its name, no animation.
+// flame's tone keys and 2D framing, its name, no animation.
 Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base);
 
 }  // namespace voxflame::core

@@ -131,6 +131,21 @@ struct ToneMapSettings {
   bool operator==(const ToneMapSettings&) const = default;
 };
 
+// How flam3 frames a flame in 2D (its <flame> attributes), kept on import so the flame can be
+// shown as its author saw it (`voxflame render --flat`, flat_render.h). Defaults are flam3's own
+// (clear_cp in flam3.c). The tone of the flat view is the scene's `tone`.
+struct FlatViewSettings {
+  int width = 100, height = 100;  // flam3's size, pixels
+  double centerX = 0.0, centerY = 0.0;
+  double scale = 50.0;        // pixels per flame unit at zoom 0
+  double zoom = 0.0;          // pixels per unit = scale · 2^zoom; samples per pixel grow by 4^zoom
+  double rotateDeg = 0.0;     // the picture turns by this about the center
+  int oversample = 1;         // supersampled pixels per output pixel along each axis
+  double filterRadius = 0.5;  // Gaussian spatial filter, in output pixels
+  double quality = 1.0;       // samples per output pixel (flam3's sample_density)
+  bool operator==(const FlatViewSettings&) const = default;
+};
+
 enum class Projection { Perspective, Orthographic };
 
 // The camera orbits `target` (an offset from the grid's centre, in bounding-sphere radii) at
@@ -226,6 +241,7 @@ struct Scene {
   std::uint64_t points = 20'000'000;  // points accumulated for a still
   AnimationSettings animation;
   std::vector<KeyframeTrack> keyframes;  // applied by sceneAtTime (keyframes.h)
+  FlatViewSettings flat;                 // flam3's 2D framing of an imported flame
 
   std::filesystem::path resolvedMeshPath() const;
   bool operator==(const Scene&) const = default;

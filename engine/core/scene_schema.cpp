@@ -103,6 +103,10 @@ const SF kSceneFields[] = {
      .help = "points a still accumulates inside the mesh",
      .affects = kStill},
     {.key = "animation", .help = "duration, frame rate, loop (version 2)", .typeText = "object"},
+    {.key = "flat",
+     .help = "flam3's 2D framing of an imported flame, for `voxflame render --flat`",
+     .typeText = "object",
+     .defaultText = "flam3's"},
     {.key = "keyframes",
      .help = "animated values (version 2)",
      .typeText = "array",
@@ -652,6 +656,65 @@ const RF kRenderFields[] = {
      .max = 100.0,
      .ui = {"fog", 0.0, 5.0},
      .help = "points method: dims points by exp(−fog × depth behind the grid's front, in grid sides)",
+     .affects = kStill},
+};
+
+using FV = Field<FlatViewSettings>;
+const FV kFlatFields[] = {
+    {.key = "width",
+     .member = &FlatViewSettings::width,
+     .min = 1,
+     .max = 65536,
+     .help = "flam3's size: image width in pixels",
+     .affects = kStill},
+    {.key = "height",
+     .member = &FlatViewSettings::height,
+     .min = 1,
+     .max = 65536,
+     .help = "image height in pixels",
+     .affects = kStill},
+    {.key = "center_x",
+     .member = &FlatViewSettings::centerX,
+     .min = -1e6,
+     .max = 1e6,
+     .help = "the flame point at the image's centre",
+     .affects = kStill},
+    {.key = "center_y", .member = &FlatViewSettings::centerY, .min = -1e6, .max = 1e6, .affects = kStill},
+    {.key = "scale",
+     .member = &FlatViewSettings::scale,
+     .min = 1e-6,
+     .max = 1e6,
+     .help = "pixels per flame unit at zoom 0",
+     .affects = kStill},
+    {.key = "zoom",
+     .member = &FlatViewSettings::zoom,
+     .min = -30.0,
+     .max = 30.0,
+     .help = "pixels per unit = scale · 2^zoom (flam3 draws 4^zoom times the samples)",
+     .affects = kStill},
+    {.key = "rotate",
+     .member = &FlatViewSettings::rotateDeg,
+     .min = -3600.0,
+     .max = 3600.0,
+     .help = "degrees the picture turns about the centre",
+     .affects = kStill},
+    {.key = "oversample",
+     .member = &FlatViewSettings::oversample,
+     .min = 1,
+     .max = 4,
+     .help = "supersampled pixels per output pixel along each axis",
+     .affects = kStill},
+    {.key = "filter_radius",
+     .member = &FlatViewSettings::filterRadius,
+     .min = 0.0,
+     .max = 10.0,
+     .help = "Gaussian spatial filter, in output pixels",
+     .affects = kStill},
+    {.key = "quality",
+     .member = &FlatViewSettings::quality,
+     .min = 1e-3,
+     .max = 1e6,
+     .help = "samples per output pixel (flam3's quality)",
      .affects = kStill},
 };
 
@@ -1227,6 +1290,9 @@ Table<RenderSettingsDoc> renderFields() {
 Table<AnimationSettings> animationFields() {
   return kAnimationFields;
 }
+Table<FlatViewSettings> flatFields() {
+  return kFlatFields;
+}
 
 Scene sceneFromDocument(const json& document, std::string_view sourceName,
                         std::span<const std::string_view> readElsewhere) {
@@ -1250,6 +1316,7 @@ Scene sceneFromDocument(const json& document, std::string_view sourceName,
   readBlock(root, "camera", cameraFields(), scene.camera, &cameraFailure);
   readBlock(root, "render", renderFields(), scene.render);
   readBlock(root, "animation", animationFields(), scene.animation);
+  readBlock(root, "flat", flatFields(), scene.flat);
   root.finish();
   return scene;
 }
@@ -1268,6 +1335,8 @@ json sceneDocument(const Scene& scene, bool complete) {
   // A still's document has no animation block; one with keyframes always has it.
   if (complete || !scene.keyframes.empty() || scene.animation != AnimationSettings{})
     writeFields(root["animation"], animationFields(), scene.animation, complete);
+  // Only imported flames have a framing of their own; other presets leave the block out.
+  if (complete || scene.flat != FlatViewSettings{}) writeFields(root["flat"], flatFields(), scene.flat, complete);
   return root;
 }
 
@@ -1591,10 +1660,11 @@ ValueRef sceneAt(Walk& w, Scene& scene) {
     if (!index || *index >= scene.layers.size()) return missing();
     return layerAt(w, scene.layers[*index], "layers[" + std::to_string(*index) + "]");
   }
-  if (key == "tone" || key == "camera" || key == "render") {
+  if (key == "tone" || key == "camera" || key == "render" || key == "flat") {
     const std::string object = w.next();
     if (object == "tone") return objectAt(w, toneFields(), scene.tone, object);
     if (object == "camera") return objectAt(w, cameraFields(), scene.camera, object);
+    if (object == "flat") return objectAt(w, flatFields(), scene.flat, object);
     return objectAt(w, renderFields(), scene.render, object);
   }
   if (auto ref = fromTable(w, sceneFields(), scene, "")) return *ref;
@@ -1715,6 +1785,7 @@ std::vector<std::string> animatablePaths(const Scene& scene) {
   tablePaths(toneFields(), scene.tone, "/tone", out);
   tablePaths(cameraFields(), scene.camera, "/camera", out);
   tablePaths(renderFields(), scene.render, "/render", out);
+  tablePaths(flatFields(), scene.flat, "/flat", out);
   for (std::size_t i = 0; i < scene.layers.size(); ++i) {
     const PatternLayer& layer = scene.layers[i];
     const std::string base = "/layers/" + std::to_string(i);
@@ -1844,6 +1915,7 @@ SceneDiff diff(const Scene& a, const Scene& b) {
   diffTable(a.camera, b.camera, cameraFields(), "/camera", d);
   diffTable(a.render, b.render, renderFields(), "/render", d);
   diffTable(a.animation, b.animation, animationFields(), "/animation", d);
+  diffTable(a.flat, b.flat, flatFields(), "/flat", d);
   if (a.keyframes != b.keyframes) note(d, "/keyframes", kNothing);
   return d;
 }

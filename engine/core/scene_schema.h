@@ -113,6 +113,7 @@ Table<ToneMapSettings> toneFields();           // tone
 Table<CameraSettings> cameraFields();          // camera
 Table<RenderSettingsDoc> renderFields();       // render
 Table<AnimationSettings> animationFields();    // animation
+Table<FlatViewSettings> flatFields();          // flat
 
 // The row of `table` with this key; throws std::out_of_range for a key it does not have (a
 // programming error: the UI and tests name keys that exist).

@@ -283,6 +283,17 @@ the oversample or the samples.
 )md";
   out += table(rows(renderFields()));
   out += R"md(
+## `flat`
+
+How flam3 frames the flame in 2D, kept by `voxflame import` from the flame file's `size`, `center`,
+`scale`, `zoom`, `rotate`, `oversample` (`supersample`), `filter` and `quality`, so `voxflame
+render --flat` shows the flame as flam3 renders it. The flat view's tone is `tone` (flam3's
+brightness, gamma, vibrancy, highlight power, density estimation, background). A preset without
+the block has flam3's defaults.
+
+)md";
+  out += table(rows(flatFields()));
+  out += R"md(
 ## `animation` (version 2)
 
 )md";

@@ -1,0 +1,216 @@
+// `voxflame bench fidelity [FILE...]`: how close voxflame's flat view (core/flat_render.h) comes to
+// flam3-render on the same flames. Each flame (the first of its file) is rendered at the same size
+// (its own, shrunk to at most 640 pixels wide) and quality 400 by both, then compared: SSIM of the
+// luma against flam3's render, and the ratio of mean linear luminance. flam3-render against itself
+// with another seed is the ceiling: the SSIM two renders of one flame reach when only the noise of
+// the chaos game differs. Goals: SSIM within 0.05 of the ceiling, luminance ratio 0.9–1.1.
+//
+// Without FILEs: flam3's own test.flam3 and the corpus flames beside the repository (or in
+// $VOXFLAME_FLAMES) that flam3-render renders, up to 20 in all.
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "bench.h"
+#include "core/error.h"
+#include "core/flame_xml.h"
+#include "core/flat_render.h"
+#include "core/image_io.h"
+#include "core/image_metrics.h"
+#include "programs.h"
+
+namespace voxflame::bench {
+
+namespace {
+
+constexpr int kMaxWidth = 640;
+constexpr double kQuality = 400.0;
+constexpr std::size_t kMaxDefaultFlames = 20;
+constexpr const char* kFlam3Test = "/usr/share/flam3/test.flam3";
+
+std::string fileBytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::filesystem::path> defaultFlames() {
+  std::vector<std::filesystem::path> files;
+  if (std::filesystem::exists(kFlam3Test)) files.emplace_back(kFlam3Test);
+  std::filesystem::path corpus = std::filesystem::path(VOXFLAME_SOURCE_DIR) / "../shared/data/flames";
+  if (const char* env = std::getenv("VOXFLAME_FLAMES")) corpus = env;
+  std::vector<std::filesystem::path> found;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(corpus, error))
+    if (core::isFlameFilePath(entry.path())) found.push_back(entry.path());
+  std::sort(found.begin(), found.end());
+  // The corpus holds a copy of test.flam3: each flame file once.
+  const std::string test = files.empty() ? std::string() : fileBytes(files.front());
+  for (const std::filesystem::path& file : found)
+    if (test.empty() || fileBytes(file) != test) files.push_back(file);
+  return files;
+}
+
+// The first <flame> element of a flame file as its own document: flam3-render would render every
+// flame of a file. Flames do not nest, so the text up to the first </flame> is the element.
+std::optional<std::string> firstFlameXml(const std::filesystem::path& path) {
+  const std::string xml = fileBytes(path);
+  // "<flame" followed by a space or ">": not the "<flames>" root many files have.
+  std::size_t start = xml.find("<flame");
+  while (start != std::string::npos && start + 6 < xml.size() && xml[start + 6] != '>' &&
+         !std::isspace(static_cast<unsigned char>(xml[start + 6])))
+    start = xml.find("<flame", start + 6);
+  if (start == std::string::npos) return std::nullopt;
+  const std::size_t end = xml.find("</flame>", start);
+  const std::size_t selfClosing = xml.find("/>", start);
+  if (end == std::string::npos) return std::nullopt;
+  if (selfClosing != std::string::npos && selfClosing < xml.find('>', start)) return std::nullopt;  // no transforms
+  return "<flames>\n" + xml.substr(start, end + 8 - start) + "\n</flames>\n";
+}
+
+// A number as flam3-render reads it back exactly (std::to_string keeps 6 decimals: a size scale of
+// 1/3 would shrink the framing by 0.2% more than the size).
+std::string exactNumber(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+// Renders `genome` with flam3-render at the size scale and quality scale given; nothing when it
+// fails (a variation it does not know, a flame it refuses).
+std::optional<core::ImageRGBA> flam3Render(const std::filesystem::path& genome, const std::filesystem::path& out,
+                                           double sizeScale, double qualityScale, int seed) {
+  const std::optional<std::string> env = app::findOnPath("env");
+  if (!env) return std::nullopt;
+  std::error_code ignored;
+  std::filesystem::remove(out, ignored);
+  const std::vector<std::string> command = {"env",
+                                            "in=" + genome.string(),
+                                            "out=" + out.string(),
+                                            "format=png",
+                                            "ss=" + exactNumber(sizeScale),
+                                            "qs=" + exactNumber(qualityScale),
+                                            "isaac_seed=" + std::to_string(seed),
+                                            "verbose=0",
+                                            "flam3-render"};
+  std::string ignoredOutput;
+  try {
+    if (app::runProgram(*env, command, &ignoredOutput) != 0 || !std::filesystem::exists(out)) return std::nullopt;
+    return core::readPng(out).image;
+  } catch (const core::Error&) {
+    return std::nullopt;
+  }
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+void benchFidelity(const BenchOptions& options) {
+  if (!app::findOnPath("flam3-render")) {
+    report(options, {{"bench", "fidelity"}, {"skipped", "flam3-render is not installed"}});
+    return;
+  }
+  const bool chosen = !options.presets.empty();
+  std::vector<std::filesystem::path> files;
+  for (const std::string& file : options.presets) files.emplace_back(file);
+  if (!chosen) files = defaultFlames();
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("voxflame-bench-fidelity-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  std::size_t rendered = 0, metSsim = 0, metLuminance = 0;
+  double ssimGapSum = 0.0;
+  for (const std::filesystem::path& file : files) {
+    if (!chosen && rendered >= kMaxDefaultFlames) break;
+    const std::string name = file.filename().string();
+    core::Scene scene;
+    try {
+      core::FlameImportOptions import;
+      import.depth = 0.0;
+      scene = core::sceneFromImportedFlame(core::loadFlameFile(file, import).flame, core::Scene{});
+    } catch (const core::Error& e) {
+      if (chosen) report(options, {{"bench", "fidelity"}, {"flame", name}, {"skipped", e.what()}});
+      continue;
+    }
+    const std::optional<std::string> xml = firstFlameXml(file);
+    if (!xml) continue;
+    const std::filesystem::path genome = folder / "genome.flam3";
+    std::ofstream(genome) << *xml;
+    // flam3-render's ss scales the size and truncates it (flam3-render.c); voxflame renders the
+    // size that comes out, with the framing scaled by the same factor.
+    // A hair over the exact ratio, so flam3's truncation of width · ss keeps the width it aims at.
+    const double sizeScale = std::min(1.0, (kMaxWidth + 1e-6) / scene.flat.width);
+    const double qualityScale = kQuality / scene.flat.quality;
+    auto start = std::chrono::steady_clock::now();
+    const std::optional<core::ImageRGBA> reference =
+        flam3Render(genome, folder / "flam3-a.png", sizeScale, qualityScale, 1);
+    const double flam3Seconds = secondsSince(start);
+    if (!reference) {
+      if (chosen) report(options, {{"bench", "fidelity"}, {"flame", name}, {"skipped", "flam3-render failed"}});
+      continue;
+    }
+    const std::optional<core::ImageRGBA> again =
+        flam3Render(genome, folder / "flam3-b.png", sizeScale, qualityScale, 2);
+    core::FlatRenderOptions flat;
+    flat.width = reference->width;
+    flat.height = reference->height;
+    flat.quality = kQuality;
+    start = std::chrono::steady_clock::now();
+    core::FlatRenderResult ours;
+    try {
+      ours = core::renderFlat(scene, flat);
+    } catch (const core::Error& e) {
+      report(options, {{"bench", "fidelity"}, {"flame", name}, {"skipped", e.what()}});
+      continue;
+    }
+    const double voxflameSeconds = secondsSince(start);
+    if (const char* keep = std::getenv("VOXFLAME_FIDELITY_KEEP")) {
+      // For looking at the pairs side by side.
+      const std::filesystem::path stem = std::filesystem::path(keep) / file.stem();
+      core::writePng(stem.string() + "-voxflame.png", ours.image, 8, {});
+      core::writePng(stem.string() + "-flam3.png", *reference, 8, {});
+    }
+    ++rendered;
+    const double ssim = core::ssimLuma(ours.image, *reference);
+    const double ceiling = again ? core::ssimLuma(*again, *reference) : 1.0;
+    const double referenceLuminance = core::meanLinearLuminance(*reference);
+    // flam3 renders some flames black (one without a palette has a black one in flam3): no ratio then.
+    const nlohmann::json ratio =
+        referenceLuminance > 0.0 ? nlohmann::json(core::meanLinearLuminance(ours.image) / referenceLuminance) : nullptr;
+    ssimGapSum += ceiling - ssim;
+    metSsim += ceiling - ssim <= 0.05;
+    metLuminance += ratio.is_number() && ratio.get<double>() >= 0.9 && ratio.get<double>() <= 1.1;
+    report(options, {{"bench", "fidelity"},
+                     {"flame", name},
+                     {"size", std::to_string(reference->width) + "x" + std::to_string(reference->height)},
+                     {"ssim", ssim},
+                     {"ssim_ceiling", ceiling},
+                     {"luminance_ratio", ratio},
+                     {"voxflame_seconds", voxflameSeconds},
+                     {"flam3_seconds", flam3Seconds}});
+  }
+  std::error_code ignored;
+  std::filesystem::remove_all(folder, ignored);
+  report(options, {{"bench", "fidelity"},
+                   {"flames", rendered},
+                   {"ssim_within_0.05_of_ceiling", metSsim},
+                   {"luminance_ratio_0.9_to_1.1", metLuminance},
+                   {"mean_ssim_gap", rendered ? ssimGapSum / static_cast<double>(rendered) : 0.0}});
+}
+
+}  // namespace voxflame::bench

@@ -1,0 +1,231 @@
+#include "flat_render.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/exponential.hpp>
+
+#include "chaos_game.h"
+#include "color.h"
+#include "error.h"
+#include "flame_image.h"
+#include "random.h"
+#include "task_scheduler.h"
+
+namespace voxflame::core {
+
+namespace {
+
+constexpr double kMaxSide = 65536.0;
+constexpr double kMaxSamples = 1e12;
+constexpr std::size_t kLanes = 1024;
+// Steps a freshly seeded lane runs before it draws (flam3 discards 15–20 per orbit it starts).
+constexpr int kFuse = 20;
+// The histograms of all chaos-game tasks together stay below this, whatever the core count.
+constexpr double kMaxHistogramBytes = 1.5e9;
+// flam3's k1 carries 268/256 (rect.c): flam3 brightness 4 is 4 · 268/256 on the log curve.
+constexpr double kFlam3BrightnessFactor = 268.0 / 256.0;
+// The finisher's log is brightness · log(1 + kFinisherDensityScale · D) (flame_image.cpp's k2).
+constexpr double kFinisherDensityScale = 1.5;
+
+const PatternLayer& flameLayer(const Scene& scene) {
+  for (const PatternLayer& layer : scene.layers)
+    if (layer.kind == PatternKind::Flame) return layer;
+  throw Error("the scene '" + scene.name + "' has no flame layer; the flat view shows flame layers only");
+}
+
+// The layer made planar: the z row of every affine map becomes 0, so the depth an import adds
+// (flame_xml.h) and any z coefficient drop out and the variations see z = 0, as in flam3.
+PatternLayer planarLayer(const PatternLayer& layer) {
+  PatternLayer planar = layer;
+  const auto flatten = [](FlameXform& x) {
+    for (int i = 8; i < 12; ++i) {
+      x.affine.m[static_cast<std::size_t>(i)] = 0.0;
+      x.post.m[static_cast<std::size_t>(i)] = 0.0;
+    }
+  };
+  for (FlameXform& x : planar.flame.xforms) flatten(x);
+  flatten(planar.flame.finalXform);
+  return planar;
+}
+
+// flam3's palette as the file has it: 256 entries of the values the file wrote (the import keeps
+// them as linear RGB; flam3 averages the written values as they are).
+std::array<glm::vec3, 256> filePalette(const ColorSettings& color) {
+  const std::vector<GradientStop> stops =
+      color.gradient.empty() && !color.palette.empty() ? paletteStops(color.palette) : color.gradient;
+  if (stops.empty()) throw Error("the flame layer has no colours (an empty gradient)");
+  const Gradient gradient(stops);
+  std::array<glm::vec3, 256> palette;
+  for (std::size_t i = 0; i < palette.size(); ++i)
+    palette[i] = glm::clamp(linearToSrgb(gradient.at(static_cast<float>(i) / 255.0f)), 0.0f, 1.0f);
+  return palette;
+}
+
+bool finitePositive(double v) {
+  return std::isfinite(v) && v > 0.0;
+}
+
+}  // namespace
+
+void flatRenderSize(const FlatViewSettings& flat, const FlatRenderOptions& options, int& width, int& height) {
+  if (options.width < 0 || options.height < 0)
+    throw Error("the flat view's size must be positive, not " + std::to_string(options.width) + "×" +
+                std::to_string(options.height));
+  if (flat.width < 1 || flat.height < 1) throw Error("the flame's size (flat.width, flat.height) must be positive");
+  const double aspect = static_cast<double>(flat.height) / flat.width;
+  width = options.width ? options.width
+                        : (options.height ? static_cast<int>(std::lround(options.height / aspect)) : flat.width);
+  height =
+      options.height ? options.height : (options.width ? static_cast<int>(std::lround(width * aspect)) : flat.height);
+  width = std::max(width, 1);
+  height = std::max(height, 1);
+  if (width > kMaxSide || height > kMaxSide)
+    throw Error("the flat view of " + std::to_string(width) + "×" + std::to_string(height) +
+                " pixels is too large (at most 65536 a side)");
+}
+
+FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options) {
+  const FlatViewSettings& flat = scene.flat;
+  int width = 0, height = 0;
+  flatRenderSize(flat, options, width, height);
+  const double quality = options.quality.value_or(flat.quality);
+  if (!finitePositive(quality)) throw Error("the flat view's quality must be a positive number");
+  if (!finitePositive(flat.scale) || !std::isfinite(flat.zoom) || !std::isfinite(flat.centerX) ||
+      !std::isfinite(flat.centerY) || !std::isfinite(flat.rotateDeg) || !(flat.filterRadius >= 0.0))
+    throw Error("the flame's framing (flat) holds a value that is not a finite number");
+  const PatternLayer layer = planarLayer(flameLayer(scene));
+  const ChaosGame game(layer, "the flame layer");
+  const std::array<glm::vec3, 256> palette = filePalette(layer.color);
+
+  // flam3's camera (rect.c): pixels per unit scale · 2^zoom, scaled with the image when its size
+  // differs from the flame's (as flam3-render's ss does); samples quality · 4^zoom per pixel.
+  const double sizeScale = options.width || !options.height ? static_cast<double>(width) / flat.width
+                                                            : static_cast<double>(height) / flat.height;
+  const double zoomScale = std::exp2(flat.zoom);
+  const double pixelsPerUnit = flat.scale * zoomScale * sizeScale;
+  const double sampleDensity = quality * zoomScale * zoomScale;
+  const double samples = sampleDensity * width * height;
+  if (!(samples <= kMaxSamples))
+    throw Error("the flat view would draw " + std::to_string(samples) + " samples; at most 10¹² are allowed");
+  const int oversample = std::clamp(flat.oversample, 1, 4);
+  const ToneMapSettings& sceneTone = scene.tone;
+  // A gutter around the image, as flam3 has: points just outside still spread into it through
+  // density estimation and the filter.
+  const int gutter = static_cast<int>(std::ceil(sceneTone.estimatorRadius + 1.5 * flat.filterRadius)) + 1;
+  const int histWidth = (width + 2 * gutter) * oversample, histHeight = (height + 2 * gutter) * oversample;
+  const double bucketsPerUnit = pixelsPerUnit * oversample;
+  const double left = flat.centerX - (0.5 * width + gutter) / pixelsPerUnit;
+  const double top = flat.centerY - (0.5 * height + gutter) / pixelsPerUnit;
+  const double turn = flat.rotateDeg * std::numbers::pi / 180.0;
+  const double cosTurn = std::cos(turn), sinTurn = std::sin(turn);
+  const bool turned = flat.rotateDeg != 0.0;
+
+  // The chaos game in independent tasks, each into its own histogram (hits, then red, green and
+  // blue weighted by hits), summed afterwards; the task count is fixed by the core count and a
+  // memory cap, so a render is the same on every run of one machine.
+  const double histogramBytes = 16.0 * histWidth * histHeight;
+  const int tasks = static_cast<int>(std::clamp(std::floor(kMaxHistogramBytes / histogramBytes), 1.0,
+                                                static_cast<double>(std::max(1, taskConcurrency()))));
+  std::vector<DensityImage> histograms(static_cast<std::size_t>(tasks));
+  const auto total = static_cast<std::uint64_t>(std::llround(samples));
+  std::atomic<bool> cancelled{false};
+  parallelFor(static_cast<std::size_t>(tasks), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t task = begin; task < end; ++task) {
+      DensityImage& histogram = histograms[task];
+      histogram.resize(histWidth, histHeight);
+      const std::uint64_t quota = total / tasks + (task < total % tasks ? 1 : 0);
+      SplitMix64 rng(options.seed * 0x9e3779b97f4a7c15ULL + task + 1);
+      ChaosLanes lanes;
+      lanes.resize(kLanes);
+      std::vector<int> fuse(kLanes, kFuse);
+      for (std::size_t i = 0; i < kLanes; ++i) game.seedLane(lanes, i, rng);
+      std::vector<double> outX(kLanes), outY(kLanes), outZ(kLanes), outColor(kLanes);
+      std::uint64_t drawn = 0;
+      std::uint64_t steps = 0;
+      while (drawn < quota) {
+        if ((++steps & 255) == 0 &&
+            (cancelled.load(std::memory_order_relaxed) || (options.cancel && options.cancel->load()))) {
+          cancelled = true;
+          return;
+        }
+        game.step(lanes, outX.data(), outY.data(), outZ.data(), outColor.data(), kLanes);
+        for (std::size_t i = 0; i < kLanes && drawn < quota; ++i) {
+          if (std::isnan(outX[i])) {  // escaped: a fresh start, as flam3 does with a bad value
+            game.seedLane(lanes, i, rng);
+            fuse[i] = kFuse;
+            ++drawn;
+            continue;
+          }
+          if (fuse[i] > 0) {
+            --fuse[i];
+            continue;
+          }
+          ++drawn;
+          if (!lanes.visible[i]) continue;
+          double px = outX[i], py = outY[i];
+          if (turned) {
+            const double dx = px - flat.centerX, dy = py - flat.centerY;
+            px = dx * cosTurn - dy * sinTurn + flat.centerX;
+            py = dx * sinTurn + dy * cosTurn + flat.centerY;
+          }
+          const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
+          if (!(bx >= 0.0 && by >= 0.0 && bx < histWidth && by < histHeight)) continue;
+          // flam3's palette lookup in its default step mode: entry ⌊index · 256⌋.
+          const auto entry = static_cast<std::size_t>(std::clamp(outColor[i] * 256.0, 0.0, 255.0));
+          const glm::vec3& c = palette[entry];
+          float* v = histogram.at(static_cast<int>(bx), static_cast<int>(by));
+          v[0] += c.r;
+          v[1] += c.g;
+          v[2] += c.b;
+          v[3] += 1.0f;
+        }
+      }
+    }
+  });
+  if (cancelled) throw FlatRenderCancelled{};
+
+  // flam3's k2 (rect.c): log(1 + k2 · hits) with k2 = oversample² / (area · sample density), the
+  // area in flame units². The finisher's log takes D = k2 · hits / its own density scale.
+  const double area = static_cast<double>(width) * height / (pixelsPerUnit * pixelsPerUnit);
+  const double k2 = static_cast<double>(oversample * oversample) / (area * sampleDensity);
+  DensityImage& sum = histograms.front();
+  const auto toDensity = static_cast<float>(k2 / kFinisherDensityScale);
+  parallelFor(static_cast<std::size_t>(histHeight), 16, [&](std::size_t begin, std::size_t end) {
+    const std::size_t row = 4 * static_cast<std::size_t>(histWidth);
+    for (std::size_t y = begin; y < end; ++y)
+      for (std::size_t p = y * row; p < (y + 1) * row; ++p) {
+        float value = sum.values[p];
+        for (std::size_t t = 1; t < histograms.size(); ++t) value += histograms[t].values[p];
+        sum.values[p] = value * toDensity;
+      }
+  });
+  sum.hitsPerUnitDensity = kFinisherDensityScale / k2;
+  sum.wholeHits = true;
+
+  FinishSettings finish;
+  finish.tone = sceneTone;
+  finish.tone.brightness *= kFlam3BrightnessFactor;
+  // flam3 adds the background as written; the finisher encodes it with the gamma first.
+  finish.tone.background = glm::pow(glm::clamp(linearToSrgb(sceneTone.background), 0.0f, 1.0f),
+                                    glm::vec3(static_cast<float>(finish.tone.gamma)));
+  finish.oversample = oversample;
+  finish.filterRadius = flat.filterRadius;
+  const FinishedImage finished = finishImage(sum, finish);
+
+  FlatRenderResult result;
+  result.samples = total;
+  result.quality = quality;
+  result.image.width = width;
+  result.image.height = height;
+  result.image.pixels.resize(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  for (int y = 0; y < height; ++y)
+    std::copy_n(finished.image.at(gutter, y + gutter), 4 * static_cast<std::size_t>(width), result.image.at(0, y));
+  return result;
+}
+
+}  // namespace voxflame::core

@@ -1,0 +1,50 @@
+// The flat view: a scene's flame layer rendered in 2D the way flam3 frames and renders it
+// (flam3's rect.c), so an imported flame can be compared with what its author saw. No mesh, no
+// depth: the chaos game runs over the genome's transforms in the plane (x, y); the camera maps
+// flame units to pixels at scale · 2^zoom pixels per unit, turned by `rotate` about the centre;
+// points fall into an oversampled histogram with a gutter around the image; the sample count is
+// flam3's: quality · 4^zoom per output pixel. The histogram is then finished by the same flam3
+// finisher the 3D renders use (flame_image.h): density estimation, log density, the spatial
+// filter, gamma, vibrancy, highlight power and the background.
+//
+// The palette and the background are used as flam3 uses them: the file's colour values averaged
+// as they are (the import stored them as linear RGB; they are encoded back), with gamma applied
+// to the density only.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <optional>
+
+#include "image_io.h"
+#include "scene.h"
+
+namespace voxflame::core {
+
+struct FlatRenderOptions {
+  // The output size; 0 takes the flat view's. One side alone keeps the flame's aspect ratio, and
+  // the framing scales with the image, as flam3-render's size scale (ss) does.
+  int width = 0, height = 0;
+  std::optional<double> quality;  // samples per output pixel; none: the flat view's
+  std::uint64_t seed = 1;
+  const std::atomic<bool>* cancel = nullptr;  // when set to true, renderFlat throws RenderCancelled
+};
+
+struct FlatRenderResult {
+  ImageRGBA image;  // display-encoded, rows top to bottom
+  std::uint64_t samples = 0;
+  double quality = 0.0;
+};
+
+struct FlatRenderCancelled {};
+
+// The output size for these options: the flat view's, or as asked (see FlatRenderOptions).
+// Throws core::Error for a size that is not positive or too large.
+void flatRenderSize(const FlatViewSettings& flat, const FlatRenderOptions& options, int& width, int& height);
+
+// Renders the scene's first flame layer flat. Throws core::Error when the scene has none, or for a
+// size or quality out of range (not positive, not finite, beyond 65536 pixels a side or 10¹²
+// samples).
+FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options = {});
+
+}  // namespace voxflame::core

@@ -1,0 +1,212 @@
+// The flat view (core/flat_render.h): flam3's framing kept on import and through presets, the
+// image metrics it is judged with, and a golden image made by flam3-render itself.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include "core/error.h"
+#include "core/flame_xml.h"
+#include "core/flat_render.h"
+#include "core/image_io.h"
+#include "core/image_metrics.h"
+#include "core/scene.h"
+#include "core/scene_io.h"
+#include "test_support.h"
+
+using namespace voxflame;
+
+namespace {
+
+const std::filesystem::path kTestFlame = std::filesystem::path(VOXFLAME_TEST_FLAMES) / "scottdraves__flam3__test.flam3";
+
+core::ImageRGBA pattern(int width, int height, double phase) {
+  core::ImageRGBA image;
+  image.width = width;
+  image.height = height;
+  image.pixels.resize(4 * static_cast<std::size_t>(width) * height);
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float v = static_cast<float>(0.5 + 0.4 * std::sin(0.3 * x + phase) * std::cos(0.2 * y));
+      float* p = image.at(x, y);
+      p[0] = p[1] = p[2] = v;
+      p[3] = 1.0f;
+    }
+  return image;
+}
+
+// Imported as `voxflame import` does, with the depth it adds: the flat view must not see it.
+core::Scene importedTestFlame() {
+  return core::sceneFromImportedFlame(core::loadFlameFile(kTestFlame).flame, core::Scene{});
+}
+
+}  // namespace
+
+TEST(ImageMetrics, SsimIsOneForIdenticalImagesAndFallsWithDifferences) {
+  const core::ImageRGBA a = pattern(64, 48, 0.0);
+  EXPECT_NEAR(core::ssimLuma(a, a), 1.0, 1e-12);
+  const double shifted = core::ssimLuma(a, pattern(64, 48, 1.5));
+  EXPECT_LT(shifted, 0.8);
+  core::ImageRGBA flat = a;
+  for (std::size_t p = 0; p < flat.pixels.size(); p += 4)
+    flat.pixels[p] = flat.pixels[p + 1] = flat.pixels[p + 2] = 0.5f;
+  EXPECT_LT(core::ssimLuma(a, flat), 0.2);
+  EXPECT_THROW(core::ssimLuma(a, pattern(32, 48, 0.0)), core::Error);
+  EXPECT_THROW(core::ssimLuma(core::ImageRGBA{}, core::ImageRGBA{}), core::Error);
+  // An image smaller than the window still compares.
+  EXPECT_NEAR(core::ssimLuma(pattern(4, 4, 0.0), pattern(4, 4, 0.0)), 1.0, 1e-12);
+}
+
+TEST(ImageMetrics, MeanLuminanceAndColour) {
+  core::ImageRGBA image = pattern(8, 8, 0.0);
+  for (std::size_t p = 0; p < image.pixels.size(); p += 4) {
+    image.pixels[p] = 1.0f;
+    image.pixels[p + 1] = 0.0f;
+    image.pixels[p + 2] = 0.5f;
+  }
+  const glm::dvec3 mean = core::meanColor(image);
+  EXPECT_NEAR(mean.r, 1.0, 1e-6);
+  EXPECT_NEAR(mean.g, 0.0, 1e-6);
+  EXPECT_NEAR(mean.b, 0.5, 1e-6);
+  EXPECT_NEAR(core::meanLinearLuminance(image), 0.2126 + 0.0722 * 0.214, 1e-3);
+}
+
+TEST(FlatView, ImportKeepsFlam3sFraming) {
+  const core::Scene scene = importedTestFlame();
+  EXPECT_EQ(scene.flat.width, 640);
+  EXPECT_EQ(scene.flat.height, 480);
+  EXPECT_EQ(scene.flat.scale, 240.0);
+  EXPECT_EQ(scene.flat.quality, 10.0);
+  EXPECT_EQ(scene.flat.filterRadius, 1.0);
+  EXPECT_EQ(scene.flat.oversample, 1);
+  EXPECT_EQ(scene.tone.gamma, 4.0);
+
+  const char* xml = R"(<flame size="300 200" center="0.5 -1" scale="80" zoom="1.5" rotate="30" supersample="2"
+      filter="0.8" quality="50" estimator_radius="5" palette="0">
+    <xform weight="1" color="0" linear="1" coefs="0.5 0 0 0.5 0 0"/></flame>)";
+  const core::ImportedFlame flame = core::readFlameXml(xml, "framing.flame").flame;
+  EXPECT_EQ(flame.flat.width, 300);
+  EXPECT_EQ(flame.flat.height, 200);
+  EXPECT_EQ(flame.flat.centerX, 0.5);
+  EXPECT_EQ(flame.flat.centerY, -1.0);
+  EXPECT_EQ(flame.flat.scale, 80.0);
+  EXPECT_EQ(flame.flat.zoom, 1.5);
+  EXPECT_EQ(flame.flat.rotateDeg, 30.0);
+  EXPECT_EQ(flame.flat.oversample, 2);
+  EXPECT_EQ(flame.flat.filterRadius, 0.8);
+  EXPECT_EQ(flame.flat.quality, 50.0);
+  EXPECT_EQ(flame.tone.estimatorRadius, 5.0);
+  // Framing that is not numbers (real files have center="nan nan") keeps flam3's defaults.
+  const core::ImportedFlame odd =
+      core::readFlameXml(
+          R"(<flame size="big" center="nan nan" scale="inf"><xform weight="1" linear="1" coefs="1 0 0 1 0 0"/></flame>)",
+          "odd.flame")
+          .flame;
+  EXPECT_EQ(odd.flat, core::FlatViewSettings{});
+  EXPECT_EQ(std::count_if(odd.warnings.begin(), odd.warnings.end(),
+                          [](const std::string& w) { return w.find("the flat view uses flam3's default") != w.npos; }),
+            3);
+}
+
+TEST(FlatView, FramingRoundTripsThroughPresetsAndDefaultsToFlam3s) {
+  core::Scene scene = core::defaultScene();
+  EXPECT_EQ(scene.flat, core::FlatViewSettings{});
+  EXPECT_EQ(core::sceneToJson(scene).find("\"flat\""), std::string::npos) << "presets without framing leave it out";
+  scene.flat.width = 320;
+  scene.flat.centerX = -0.25;
+  scene.flat.zoom = 2.0;
+  scene.flat.quality = 123.0;
+  const core::Scene loaded = core::sceneFromJson(core::sceneToJson(scene), "round trip");
+  EXPECT_EQ(loaded.flat, scene.flat);
+  const core::FlatViewSettings flam3;
+  EXPECT_EQ(flam3.width, 100);
+  EXPECT_EQ(flam3.scale, 50.0);
+  EXPECT_EQ(flam3.filterRadius, 0.5);
+  EXPECT_NE(voxflame::test::presetErrorOf(R"({"mesh": {"path": "m.obj"}, "layers": [{"attractor": "lorenz"}],
+      "flat": {"width": 0}})"),
+            "");
+}
+
+TEST(FlatView, RefusesWhatItCannotDraw) {
+  core::Scene scene = core::defaultScene();  // attractor layers only
+  EXPECT_THROW(core::renderFlat(scene), core::Error);
+  scene = importedTestFlame();
+  core::FlatRenderOptions options;
+  options.width = -3;
+  EXPECT_THROW(core::renderFlat(scene, options), core::Error);
+  options.width = 16;
+  options.quality = std::nan("");
+  EXPECT_THROW(core::renderFlat(scene, options), core::Error);
+  options.quality = 1.0;
+  const core::FlatRenderResult small = core::renderFlat(scene, options);
+  EXPECT_EQ(small.image.width, 16);
+  EXPECT_EQ(small.image.height, 12);  // the flame's 4:3
+}
+
+// The golden image is flam3-render's own render of the first flame of flam3's test.flam3, made with
+//   prefix=tests/golden/flat-flam3-test- format=png ss=0.25 qs=20 isaac_seed=1 in=test.flam3 flam3-render
+// (Debian's flam3-utils 3.1.1; it writes flat-flam3-test-00000.png for the first flame, renamed to
+// flat-flam3-test.png): 160×120 pixels at quality 200. The tolerance is what voxflame's flat view
+// and flam3 reach with different random numbers and a margin; a wrong palette, a wrong variation
+// or a wrong brightness is far outside it (the tests below check that).
+namespace {
+
+struct Comparison {
+  double ssim = 0.0, luminanceRatio = 0.0, colorDistance = 0.0;
+};
+
+Comparison compareWithGolden(const core::Scene& scene) {
+  core::FlatRenderOptions options;
+  options.width = 160;
+  options.height = 120;
+  options.quality = 200.0;
+  const core::ImageRGBA image = core::renderFlat(scene, options).image;
+  const core::ImageRGBA golden = core::readPng(voxflame::test::sourcePath("tests/golden/flat-flam3-test.png")).image;
+  Comparison c;
+  c.ssim = core::ssimLuma(image, golden);
+  c.luminanceRatio = core::meanLinearLuminance(image) / core::meanLinearLuminance(golden);
+  const glm::dvec3 d = core::meanColor(image) - core::meanColor(golden);
+  c.colorDistance = std::max({std::abs(d.r), std::abs(d.g), std::abs(d.b)});
+  return c;
+}
+
+constexpr double kMinSsim = 0.90;
+constexpr double kLuminanceTolerance = 0.1;
+constexpr double kColorTolerance = 0.008;
+
+bool matches(const Comparison& c) {
+  return c.ssim >= kMinSsim && std::abs(c.luminanceRatio - 1.0) <= kLuminanceTolerance &&
+         c.colorDistance <= kColorTolerance;
+}
+
+}  // namespace
+
+TEST(FlatView, MatchesFlam3RendersOwnImage) {
+  if (!std::filesystem::exists(kTestFlame)) GTEST_SKIP() << kTestFlame << " is missing";
+  const Comparison c = compareWithGolden(importedTestFlame());
+  EXPECT_GE(c.ssim, kMinSsim);
+  EXPECT_NEAR(c.luminanceRatio, 1.0, kLuminanceTolerance);
+  EXPECT_LE(c.colorDistance, kColorTolerance);
+}
+
+TEST(FlatView, TheGoldenComparisonCatchesAWrongPaletteOrVariation) {
+  if (!std::filesystem::exists(kTestFlame)) GTEST_SKIP() << kTestFlame << " is missing";
+  core::Scene palette = importedTestFlame();
+  std::vector<core::GradientStop>& stops = palette.layers[0].color.gradient;
+  std::reverse(stops.begin(), stops.end());
+  for (std::size_t i = 0; i < stops.size(); ++i)
+    stops[i].position = static_cast<float>(i) / static_cast<float>(stops.size() - 1);
+  const Comparison wrongPalette = compareWithGolden(palette);
+  EXPECT_FALSE(matches(wrongPalette)) << "ssim " << wrongPalette.ssim << ", colour " << wrongPalette.colorDistance;
+
+  core::Scene variation = importedTestFlame();
+  variation.layers[0].flame.xforms[1].variations = {{"linear", 1.0, {}}};
+  const Comparison wrongVariation = compareWithGolden(variation);
+  EXPECT_FALSE(matches(wrongVariation)) << "ssim " << wrongVariation.ssim;
+
+  core::Scene brightness = importedTestFlame();
+  brightness.tone.brightness *= 2.0;
+  const Comparison tooBright = compareWithGolden(brightness);
+  EXPECT_FALSE(matches(tooBright)) << "luminance ratio " << tooBright.luminanceRatio;
+}
