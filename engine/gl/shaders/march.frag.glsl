@@ -72,36 +72,32 @@ void main() {
     vec3 toVoxel = vec3(1.0 / uVoxelSize);
     vec3 toTexture = 1.0 / vec3(uGridSize);
     vec3 exitSide = step(vec3(0.0), direction);
-    // Where the ray leaves the occupied brick it is in: until then no step asks the occupancy
-    // textures again (two fetches a step, the march's dearest part on a software rasteriser
-    // where most steps fall in occupied bricks). It stops a hundredth of a step short of the
-    // brick's side, so a step that rounding puts on the side is still tested as before.
-    float tOccupiedUntil = -1.0;
     while (t < tExit) {
       vec3 position = origin + t * direction;
       vec3 voxel = (position - uGridOrigin) * toVoxel;
-      if (t >= tOccupiedUntil) {
-        ivec3 voxelIndex = ivec3(floor(voxel));
-        // Two levels of empty space: a coarse brick, then a brick; either leaps to the first step
-        // past its far side, staying on the jittered step lattice.
-        ivec3 coarse = clamp(voxelIndex / uCoarseSize, ivec3(0), uCoarseCount - 1);
-        int cellVoxels = uCoarseSize;
-        ivec3 cell = coarse;
-        bool empty = texelFetch(uCoarseOccupancy, coarse, 0).r == 0u;
-        if (!empty) {
-          cellVoxels = uBrickSize;
-          cell = clamp(voxelIndex / uBrickSize, ivec3(0), uBrickCount - 1);
-          empty = texelFetch(uOccupancy, cell, 0).r == 0u;
+      ivec3 voxelIndex = ivec3(floor(voxel));
+      // Two levels of empty space: a coarse brick, then a brick; either leaps to the first step
+      // past its far side, staying on the jittered step lattice.
+      ivec3 coarse = clamp(voxelIndex / uCoarseSize, ivec3(0), uCoarseCount - 1);
+      int leapVoxels = 0;
+      ivec3 leapCell;
+      if (texelFetch(uCoarseOccupancy, coarse, 0).r == 0u) {
+        leapVoxels = uCoarseSize;
+        leapCell = coarse;
+      } else {
+        ivec3 brick = clamp(voxelIndex / uBrickSize, ivec3(0), uBrickCount - 1);
+        if (texelFetch(uOccupancy, brick, 0).r == 0u) {
+          leapVoxels = uBrickSize;
+          leapCell = brick;
         }
-        float cellLength = float(cellVoxels) * uVoxelSize;
-        vec3 cellMin = uGridOrigin + vec3(cell) * cellLength;
+      }
+      if (leapVoxels > 0) {
+        float cellLength = float(leapVoxels) * uVoxelSize;
+        vec3 cellMin = uGridOrigin + vec3(leapCell) * cellLength;
         vec3 tCell = (cellMin + exitSide * cellLength - origin) * inverseDirection;
         float tLeave = min(tCell.x, min(tCell.y, tCell.z));
-        if (empty) {
-          t += max(ceil((tLeave - t) / stepLength), 1.0) * stepLength;
-          continue;
-        }
-        tOccupiedUntil = tLeave - 0.01 * stepLength;
+        t += max(ceil((tLeave - t) / stepLength), 1.0) * stepLength;
+        continue;
       }
       // Explicit LOD: there are no mipmaps, and implicit derivatives are undefined in this loop.
       float density = textureLod(uDensity, voxel * toTexture, 0.0).r;
