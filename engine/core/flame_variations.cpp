@@ -11,14 +11,15 @@
 
 #include "error.h"
 #include "flame_noise.h"
+#include "flame_variation_kernels.h"
 #include "flame_variations_more.h"
 
 namespace voxflame::core {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using namespace variation_kernels;
+
 // Our own guard where flam3 divides by r unguarded (sin θ = x / r at the origin would be 0/0): small
 // enough to change no result away from the origin.
 constexpr double kEpsilon = 1e-300;
@@ -38,38 +39,6 @@ constexpr std::size_t kAffineB = 1;  // m01
 constexpr std::size_t kAffineC = 3;  // t0
 constexpr std::size_t kAffineE = 5;  // m11
 constexpr std::size_t kAffineF = 7;  // t1
-
-// The arrays of a variation call as restrict-qualified locals: GCC vectorises loops over arrays it
-// knows do not alias. The outputs must carry `__restrict` in the function's own parameters too:
-// GCC 12 does not vectorise stores through a restrict local copied from an unqualified parameter
-// (it left even `linear` scalar). Loops that call sin, cos, atan2 or pow stay scalar, as libm has
-// no vector variants without -ffast-math; those without such calls vectorise.
-#define VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz) \
-  const double* __restrict x = (in).x;           \
-  const double* __restrict y = (in).y;           \
-  const double* __restrict z = (in).z;           \
-  std::uint32_t* __restrict rnd = (in).random;   \
-  double* __restrict outX = (ox);                \
-  double* __restrict outY = (oy);                \
-  double* __restrict outZ = (oz);                \
-  const std::size_t n = (in).count;              \
-  const double w = (in).weight;                  \
-  const double* __restrict P = (in).params;      \
-  (void)x;                                       \
-  (void)y;                                       \
-  (void)z;                                       \
-  (void)rnd;                                     \
-  (void)outX;                                    \
-  (void)outY;                                    \
-  (void)P;
-
-// Each variation is built for AVX2 and for any x86-64, picked when the program loads: with AVX2
-// the loops that vectorise run four lanes at a time.
-#if defined(__x86_64__) && !defined(__AVX2__) && !defined(__SANITIZE_THREAD__)
-#define VOXFLAME_VARIATION_TARGETS [[gnu::target_clones("avx2", "default")]]
-#else
-#define VOXFLAME_VARIATION_TARGETS
-#endif
 
 // ---- flam3's classics: x and y mapped, z carried through -------------------------------------
 
@@ -1633,9 +1602,6 @@ struct CrackleCells {
   }
 };
 
-// Fractorium's stand-in for a zero divisor (its Zeps: the machine epsilon).
-constexpr double kFractoriumEps = std::numeric_limits<double>::epsilon();
-
 // Java's (int) floor(v), which saturates, as a double.
 inline double javaFloorToInt(double v) {
   const double f = std::floor(v);
@@ -1836,9 +1802,6 @@ VOXFLAME_VARIATION_2D(twoface, {
 // p and q are read as Fractorium reads them, any real number (0 as its epsilon): the corpus's
 // Fractorium flames use q = 0.5. JWildfire rounds them and takes at least 3, so its files hold
 // such values already.
-inline double tilingValue(double value) {
-  return value == 0.0 ? kFractoriumEps : value;
-}
 // The distance of a tile's centre for p and q.
 inline double hypertileDistance(double p, double q) {
   const double cp = std::cos(kTwoPi / p);
@@ -1864,7 +1827,7 @@ inline double tilingTurn(double u, double p) {
 VOXFLAME_VARIATION_TARGETS void hypertile(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                           double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double p = tilingValue(P[0]), q = tilingValue(P[1]);
+  const double p = fractoriumZeps(P[0]), q = fractoriumZeps(P[1]);
   const double a = P[2] * kTwoPi / p, r = hypertileDistance(p, q);
   const double re = r * std::cos(a), im = r * std::sin(a);
   for (std::size_t i = 0; i < n; ++i) {
@@ -1879,7 +1842,7 @@ VOXFLAME_VARIATION_TARGETS void hypertile(const VariationInput& in, double* __re
 VOXFLAME_VARIATION_TARGETS void hypertile1(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                            double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double p = tilingValue(P[0]), q = tilingValue(P[1]);
+  const double p = fractoriumZeps(P[0]), q = fractoriumZeps(P[1]);
   const double r = hypertileDistance(p, q), whole = std::trunc(p);
   for (std::size_t i = 0; i < n; ++i) {
     const double a = std::floor(laneUniform(rnd[i]) * whole) * kTwoPi / p;
@@ -1892,7 +1855,7 @@ VOXFLAME_VARIATION_TARGETS void hypertile1(const VariationInput& in, double* __r
 VOXFLAME_VARIATION_TARGETS void hypertile2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                            double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double p = tilingValue(P[0]), q = tilingValue(P[1]);
+  const double p = fractoriumZeps(P[0]), q = fractoriumZeps(P[1]);
   const double r = hypertileDistance(p, q);
   for (std::size_t i = 0; i < n; ++i) {
     const double a = x[i] + r, b = y[i];
@@ -1912,7 +1875,7 @@ VOXFLAME_VARIATION_TARGETS void hypertile2(const VariationInput& in, double* __r
 VOXFLAME_VARIATION_TARGETS void hypertile3D2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                              double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double p = tilingValue(P[0]), q = tilingValue(P[1]);
+  const double p = fractoriumZeps(P[0]), q = fractoriumZeps(P[1]);
   const double pa = kTwoPi / p, qa = kTwoPi / q;
   const double t = -(std::cos(pa) - 1.0) / (std::cos(pa) + std::cos(qa));
   const double cx = t > 0.0 ? 1.0 / std::sqrt(1.0 + t) : 1.0;
@@ -2328,21 +2291,10 @@ VOXFLAME_VARIATION_TARGETS void flatten(const VariationInput& in, double* __rest
 
 std::vector<VariationInfo> buildCatalogue() {
   std::vector<VariationInfo> c;
-  const auto add = [&](std::string name, std::string formula, bool threeD, bool random, VariationFn fn,
-                       std::vector<VariationParam> params = {}) {
-    VariationInfo info;
-    info.name = std::move(name);
-    info.formula = std::move(formula);
-    info.threeD = threeD;
-    info.random = random;
-    info.apply = fn;
-    info.params = std::move(params);
-    c.push_back(std::move(info));
-  };
-  constexpr bool k2D = false, k3D = true, kRandom = true, kFixed = false;
-  const auto count = [](std::string name, double value, double low, double high) {
-    return VariationParam{std::move(name), value, low, high, true};
-  };
+  const CatalogueAdder add(c);
+  constexpr bool k2D = CatalogueAdder::k2D, k3D = CatalogueAdder::k3D, kRandom = CatalogueAdder::kRandom,
+                 kFixed = CatalogueAdder::kFixed;
+  const auto count = &CatalogueAdder::count;
 
   // flam3's classics (variations.c), in flam3's order.
   add("linear", "(x, y, z)", k2D, kFixed, &linear);

@@ -5,6 +5,8 @@
 // variations are stateless.
 #include "flame_variations_more.h"
 
+#include "flame_variation_kernels.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -17,34 +19,10 @@ namespace voxflame::core {
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-constexpr double kTwoPi = 2.0 * std::numbers::pi;
+using namespace variation_kernels;
+
 // JWildfire's MathLib.EPSILON, used exactly where JWildfire adds or compares with it.
 constexpr double kJwfEpsilon = 1e-8;
-// Fractorium's Zeps(): a zero divisor becomes the double's machine epsilon.
-inline double fractoriumZeps(double value) {
-  return value == 0.0 ? std::numeric_limits<double>::epsilon() : value;
-}
-
-// The arrays of one call as restrict-qualified locals (see flame_variations.cpp: GCC vectorises
-// only loops over arrays it knows do not alias).
-#define VOXFLAME_MORE_BEGIN(in, ox, oy, oz)    \
-  const double* __restrict x = (in).x;         \
-  const double* __restrict y = (in).y;         \
-  const double* __restrict z = (in).z;         \
-  std::uint32_t* __restrict rnd = (in).random; \
-  double* __restrict outX = (ox);              \
-  double* __restrict outY = (oy);              \
-  double* __restrict outZ = (oz);              \
-  const std::size_t n = (in).count;            \
-  const double w = (in).weight;                \
-  const double* __restrict P = (in).params;    \
-  (void)x;                                     \
-  (void)y;                                     \
-  (void)z;                                     \
-  (void)rnd;                                   \
-  (void)w;                                     \
-  (void)P;
 
 // ---- mirrors and symmetries ----------------------------------------------------------------
 
@@ -53,7 +31,7 @@ inline double fractoriumZeps(double value) {
 // ordinary term Fractorium also discards the terms summed before it, which a sum cannot do, so
 // here it simply adds its point (and the importer names a file's mirror after other terms).
 void mirrorX(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double flip = laneUniform(rnd[i]) < 0.5 ? -1.0 : 1.0;
     outX[i] += flip * std::abs(x[i]);
@@ -63,7 +41,7 @@ void mirrorX(const VariationInput& in, double* __restrict ox, double* __restrict
 }
 
 void mirrorY(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double flip = laneUniform(rnd[i]) < 0.5 ? -1.0 : 1.0;
     outX[i] += x[i];
@@ -73,7 +51,7 @@ void mirrorY(const VariationInput& in, double* __restrict ox, double* __restrict
 }
 
 void mirrorZ(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double flip = laneUniform(rnd[i]) < 0.5 ? -1.0 : 1.0;
     outX[i] += x[i];
@@ -88,7 +66,7 @@ void mirrorZ(const VariationInput& in, double* __restrict ox, double* __restrict
 // Its axis-z branch turns about (centre_x, centre_y) in the x–z plane, as JWildfire's does. The
 // colour shifts are not applied (the importer says so when a file sets them).
 void axisSymmetryWf(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double axis = std::clamp(std::round(P[0]), 0.0, 2.0);
   const double cx = P[1], cy = P[2], cz = P[3];
   const double half = P[4] * kTwoPi / 180.0 / 2.0;
@@ -138,7 +116,7 @@ void axisSymmetryWf(const VariationInput& in, double* __restrict ox, double* __r
 // octagon (FracFx's Apophysis plugin, as JWildfire ports it): three terms summed. JWildfire takes
 // √z, which is NaN below the plane z = 0; here √z is 0 there, so 3D points stay finite.
 void octagon(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double offX = P[0], offY = P[1], offZ = P[2];
   for (std::size_t i = 0; i < n; ++i) {
     const double x2 = x[i] * x[i], y2 = y[i] * y[i], z2 = z[i] * z[i];
@@ -163,7 +141,7 @@ void octagon(const VariationInput& in, double* __restrict ox, double* __restrict
 // Fractorium's bcircle: inside the unit circle (after scaling) the scaled point; outside, a ring
 // 0.2·|borderwidth| wide just beyond it, or the origin when borderwidth is 0.
 void bcircle(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double scale = P[0], border = std::abs(P[1]);
   for (std::size_t i = 0; i < n; ++i) {
     const double u = laneUniform(rnd[i]);
@@ -189,7 +167,7 @@ void bcircle(const VariationInput& in, double* __restrict ox, double* __restrict
 // waves23 (Tatyana Zabanova's, as JWildfire has it): a sawtooth of each coordinate added to the
 // other, folded at ½.
 void waves23(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double scaleX = P[0], scaleY = P[1], freqX = P[2], freqY = P[3];
   for (std::size_t i = 0; i < n; ++i) {
     const double mx = y[i] * freqX / kTwoPi, my = x[i] * freqY / kTwoPi;
@@ -203,7 +181,7 @@ void waves23(const VariationInput& in, double* __restrict ox, double* __restrict
 }
 
 void wdisc(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     double a = kPi / (std::sqrt(x[i] * x[i] + y[i] * y[i]) + 1.0);
     const double r = std::atan2(y[i], x[i]) / kPi;
@@ -219,7 +197,7 @@ void wdisc(const VariationInput& in, double* __restrict ox, double* __restrict o
 // Fractorium's pow_block: r^(numerator / (denominator · correctn / correctd)) with the angle
 // divided by the denominator, plus one of its roots at random.
 void powBlock(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double numerator = P[0], denominator = P[1], root = P[2], correctN = P[3], correctD = P[4];
   const double power = numerator / fractoriumZeps(denominator * correctN * (1.0 / correctD));
   const double divisor = fractoriumZeps(denominator);
@@ -237,7 +215,7 @@ void powBlock(const VariationInput& in, double* __restrict ox, double* __restric
 // affine point, which for ordinary and pre_ terms is the point itself; a post_ term would need the
 // point from before the variations, which the importer therefore refuses to fake.
 void depth(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double power = P[0];
   for (std::size_t i = 0; i < n; ++i) {
     double coeff = std::abs(z[i]);
@@ -251,7 +229,7 @@ void depth(const VariationInput& in, double* __restrict ox, double* __restrict o
 // poincare3D (Zueuk's, as JWildfire has it): the Möbius map of 3D space that moves the unit
 // ball's centre to c = r (−cos a' cos b', sin a' cos b', −sin b'), a' = aπ/2, b' = bπ/2.
 void poincare3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double radius = P[0], a = P[1] * kPi / 2.0, b = P[2] * kPi / 2.0;
   const double cx = -radius * std::cos(a) * std::cos(b), cy = radius * std::sin(a) * std::cos(b);
   const double cz = -radius * std::sin(b);
@@ -292,7 +270,7 @@ inline double logScale(double value) {
 // least 0, with invert) − mindist) · 0.04 scatter), the blur's shape by type. Its box blur adds
 // the mul · a^boxpow · D / scale term without the weight, as Fractorium does.
 void falloff(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double scatter = 0.04 * std::max(P[0], std::numeric_limits<double>::epsilon());
   const double minDist = std::max(P[1], 0.0);
   const double mulX = std::clamp(P[2], 0.0, 1.0), mulY = std::clamp(P[3], 0.0, 1.0), mulZ = std::clamp(P[4], 0.0, 1.0);
@@ -333,7 +311,7 @@ void falloff(const VariationInput& in, double* __restrict ox, double* __restrict
 // (1), and a Gaussian (0), radial (1) or logarithmic (2, 3) blur. Its colour shift (mul_c) is not
 // applied; the importer says so when a file sets it.
 void falloff3(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double type = fractoriumInteger(P[0], 0.0, 3.0);
   const bool square = fractoriumInteger(P[1], 0.0, 1.0) != 0.0;
   const double rMax = 0.04 * std::max(P[2], std::numeric_limits<double>::epsilon());
@@ -385,7 +363,7 @@ inline double voronNoise(std::int64_t value) {
 }
 
 void voron(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double k = P[0];
   const double step = std::abs(P[1]) < 1e-6 ? std::numeric_limits<double>::epsilon() * (P[1] < 0.0 ? -1.0 : 1.0) : P[1];
   const double count = fractoriumInteger(P[2], 1.0, 25.0);
@@ -436,7 +414,7 @@ void voron(const VariationInput& in, double* __restrict ox, double* __restrict o
 // Fractorium's smartshape: the plane bent into a regular polygon of `power` sides (at least 2),
 // its corners rounded by roundstr and roundwidth, distortion the exponent of the bending.
 void smartshape(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double power = std::max(P[0], 2.0), roundStr = P[1], roundWidth = P[2], distortion = P[3];
   const bool compensate = std::clamp(P[4], 0.0, 1.0) > 0.0;
   const double alpha = kTwoPi / power;
@@ -474,7 +452,7 @@ void smartshape(const VariationInput& in, double* __restrict ox, double* __restr
 // walked round by its perimeter position plus a spin; outside the weight's square (s > w) it is
 // also pushed out by `space`. At the origin, where s = 0, JWildfire's result is NaN.
 void lazyTravis(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double spinIn = 4.0 * P[0], spinOut = 4.0 * P[1], space = P[2];
   for (std::size_t i = 0; i < n; ++i) {
     const double ax = std::abs(x[i]), ay = std::abs(y[i]);
@@ -530,7 +508,7 @@ void lazyTravis(const VariationInput& in, double* __restrict ox, double* __restr
 // waves4_wf (JWildfire's): waves2 with sin·cos·sin (or cos·sin·cos) waves, both terms scaled by
 // e^damp (1 when |damp| < 10⁻⁸).
 void waves4Wf(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double scaleX = P[0], scaleY = P[1], freqX = P[2], freqY = P[3];
   const bool cosX = std::round(P[4]) == 1.0, cosY = std::round(P[5]) == 1.0;
   const double dampX = std::abs(P[6]) < kJwfEpsilon ? 1.0 : std::exp(P[6]);
@@ -548,7 +526,7 @@ void waves4Wf(const VariationInput& in, double* __restrict ox, double* __restric
 // Fractorium's y: the point's direction kept, its distance r replaced by w·T²/r, T the sum of four
 // shapes' radii at its angle a = φ: a hypergon, a star, a lituus and a superformula curve.
 void yShapes(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double hypergon = P[0], hypergonN = std::max(std::floor(P[1] + 0.5), 3.0), hypergonR = P[2];
   const double star = P[3], starN = std::max(std::floor(P[4] + 0.5), 3.0);
   const double starSlope = std::clamp(P[5], std::numeric_limits<double>::epsilon(), kPi / 2.0);
@@ -618,7 +596,7 @@ inline double pixelFlowHash(std::int32_t a) {
 // added: with linear it draws streaks from every point. Its direct colour (enable_dc) is not
 // applied; the importer says so when a file sets it.
 void pixelFlow(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double radians = P[0] * 0.0174532925;  // JWildfire's rounded π/180
   const double len = P[1], width = P[2];
   const std::int32_t seed = javaInt(std::floor(std::clamp(P[3], -2147483648.0, 2147483647.0) + 0.5));
@@ -664,7 +642,7 @@ inline void addVibration(const VibrationWave& v, double x, double y, double& px,
 }
 
 void vibration2(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const VibrationWave first{P[0], P[1], P[2], P[3], P[4], P[10], P[11], P[12], P[13], P[14], P[15], P[16], P[17]};
   const VibrationWave second{P[5], P[6], P[7], P[8], P[9], P[18], P[19], P[20], P[21], P[22], P[23], P[24], P[25]};
   for (std::size_t i = 0; i < n; ++i) {
@@ -689,7 +667,7 @@ inline double javaRound(double value) {
 }
 
 void truchet(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const bool extended = std::clamp(javaRound(P[0]), 0.0, 1.0) == 1.0;
   const double exponent = std::clamp(P[1], 0.001, 2.0), width = std::clamp(P[2], 0.001, 1.0);
   const double rotation = P[3], size = std::clamp(P[4], 0.001, 10.0);
@@ -854,7 +832,7 @@ inline NBlurPoint nBlurRandomPoint(const NBlurSetup& s, std::uint32_t& random) {
 }
 
 void nBlur(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   NBlurSetup s{};
   s.numEdges = fractoriumInteger(P[0], 3.0, 1000.0);
   const double numStripes = fractoriumInteger(P[1], -1000.0, 1000.0);
@@ -908,7 +886,7 @@ void nBlur(const VariationInput& in, double* __restrict ox, double* __restrict o
 // which discards the terms before it on the same transform; alone or first it is this sum (the
 // importer says so when it is not).
 void shredlin(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
-  VOXFLAME_MORE_BEGIN(in, ox, oy, oz)
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double xDistance = P[0], xWidth = std::clamp(P[1], -1.0, 1.0);
   const double yDistance = P[2], yWidth = std::clamp(P[3], -1.0, 1.0);
   const auto shred = [](double v, double distance, double width) {
@@ -927,21 +905,10 @@ void shredlin(const VariationInput& in, double* __restrict ox, double* __restric
 }  // namespace
 
 void addMoreVariations(std::vector<VariationInfo>& catalogue) {
-  const auto add = [&](std::string name, std::string formula, bool threeD, bool random, VariationFn fn,
-                       std::vector<VariationParam> params = {}) {
-    VariationInfo info;
-    info.name = std::move(name);
-    info.formula = std::move(formula);
-    info.threeD = threeD;
-    info.random = random;
-    info.apply = fn;
-    info.params = std::move(params);
-    catalogue.push_back(std::move(info));
-  };
-  constexpr bool k2D = false, k3D = true, kRandom = true, kFixed = false;
-  const auto count = [](std::string name, double value, double low, double high) {
-    return VariationParam{std::move(name), value, low, high, true};
-  };
+  const CatalogueAdder add(catalogue);
+  constexpr bool k2D = CatalogueAdder::k2D, k3D = CatalogueAdder::k3D, kRandom = CatalogueAdder::kRandom,
+                 kFixed = CatalogueAdder::kFixed;
+  const auto count = &CatalogueAdder::count;
 
   add("mirror_x", "(±|x|, y, z), − when Ψ < ½ (Fractorium's; the weight is not applied)", k2D, kRandom, &mirrorX);
   add("mirror_y", "(x, ±|y|, z), − when Ψ < ½ (Fractorium's; the weight is not applied)", k2D, kRandom, &mirrorY);
