@@ -18,23 +18,16 @@
 #include "core/flame_variations.h"
 #include "core/flame_variations_more.h"
 #include "core/flame_xml.h"
+#include "variation_point_case.h"
 
 using namespace voxflame::core;
 
 namespace {
 
-constexpr double kAffine[12] = {0.9, 0.2, 0.0, 0.3, -0.1, 0.8, 0.0, -0.4, 0.0, 0.0, 1.0, 0.0};
+using namespace voxflame::test;
+
 constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
 constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
-
-struct PointCase {
-  std::string name;
-  std::vector<double> params;  // empty: the catalogue's defaults
-  glm::dvec3 point;
-  double weight;
-  std::uint32_t seed;
-  glm::dvec3 expected;  // weight · V(point)
-};
 
 const std::vector<PointCase>& pointCases() {
   static const std::vector<PointCase> cases = {
@@ -333,45 +326,10 @@ const std::vector<PointCase>& pointCases() {
   return cases;
 }
 
-[[maybe_unused]] void PrintTo(const PointCase& c, std::ostream* os) {
-  *os << c.name;
-}
-
-std::string caseLabel(const testing::TestParamInfo<PointCase>& info) {
-  return info.param.name + "_" + std::to_string(info.index);
-}
-
 class MoreVariationAtPoint : public testing::TestWithParam<PointCase> {};
 
-// Every lane starts from a non-zero sum, so a variation that assigns instead of adding is caught;
-// 37 lanes, so a vectorised body and a scalar remainder must agree.
 TEST_P(MoreVariationAtPoint, MatchesTheHandComputedValue) {
-  const PointCase& c = GetParam();
-  const VariationInfo& info = variationOrThrow(c.name);
-  const std::vector<double> params = c.params.empty() ? info.defaultParams() : c.params;
-  ASSERT_EQ(params.size(), info.params.size());
-  constexpr std::size_t kLanes = 37;
-  constexpr double kStartX = 0.125, kStartY = -0.25, kStartZ = 0.5;
-  std::vector<double> xs(kLanes, c.point.x), ys(kLanes, c.point.y), zs(kLanes, c.point.z);
-  std::vector<double> ox(kLanes, kStartX), oy(kLanes, kStartY), oz(kLanes, kStartZ);
-  std::vector<std::uint32_t> random(kLanes, c.seed);
-  VariationInput in;
-  in.x = xs.data();
-  in.y = ys.data();
-  in.z = zs.data();
-  in.random = random.data();
-  in.count = kLanes;
-  in.weight = c.weight;
-  in.params = params.data();
-  in.affine = kAffine;
-  info.apply(in, ox.data(), oy.data(), oz.data());
-  const auto near = [](double expected) { return 1e-12 * std::max(1.0, std::abs(expected)); };
-  for (std::size_t lane = 0; lane < kLanes; ++lane) {
-    SCOPED_TRACE("lane " + std::to_string(lane));
-    EXPECT_NEAR(ox[lane] - kStartX, c.expected.x, near(c.expected.x));
-    EXPECT_NEAR(oy[lane] - kStartY, c.expected.y, near(c.expected.y));
-    EXPECT_NEAR(oz[lane] - kStartZ, c.expected.z, near(c.expected.z));
-  }
+  expectMatchesTheHandComputedValue(GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(More, MoreVariationAtPoint, testing::ValuesIn(pointCases()), caseLabel);

@@ -25,22 +25,13 @@
 #include "core/flame_variations_more.h"
 #include "core/random.h"
 #include "core/scene.h"
+#include "variation_point_case.h"
 
 using namespace voxflame::core;
 
 namespace {
 
-// Row-major 3×4: a = 0.9, b = 0.2, c = 0.3 / d = −0.1, e = 0.8, f = −0.4.
-constexpr double kAffine[12] = {0.9, 0.2, 0.0, 0.3, -0.1, 0.8, 0.0, -0.4, 0.0, 0.0, 1.0, 0.0};
-
-struct PointCase {
-  std::string name;
-  std::vector<double> params;  // empty: the catalogue's defaults
-  glm::dvec3 point;
-  double weight;
-  std::uint32_t seed;
-  glm::dvec3 expected;  // weight · V(point)
-};
+using namespace voxflame::test;
 
 // Every variation at (0.3, −0.7, 0.5) with weight 0.8 and default parameters, then second points
 // where a branch, a parameter or a guard matters. At the first point r² = 0.58, r = 0.76157731,
@@ -713,56 +704,10 @@ const std::vector<PointCase>& pointCases() {
 }
 
 // gtest names a failing case by this instead of dumping its bytes.
-[[maybe_unused]] void PrintTo(const PointCase& c, std::ostream* os) {
-  *os << c.name;
-}
-
-std::string caseLabel(const testing::TestParamInfo<PointCase>& info) {
-  return info.param.name + "_" + std::to_string(info.index);
-}
-
-// Runs `info` over `lanes` copies of one point, each lane seeded alike, adding to a non-zero start
-// so that a variation that assigns instead of adding is caught; returns the outputs.
-struct Outputs {
-  std::vector<double> x, y, z;
-  std::vector<std::uint32_t> random;
-};
-constexpr double kStartX = 0.125, kStartY = -0.25, kStartZ = 0.5;
-
-Outputs run(const VariationInfo& info, const std::vector<double>& params, glm::dvec3 p, double weight,
-            std::uint32_t seed, std::size_t lanes) {
-  std::vector<double> xs(lanes, p.x), ys(lanes, p.y), zs(lanes, p.z);
-  Outputs out{std::vector<double>(lanes, kStartX), std::vector<double>(lanes, kStartY),
-              std::vector<double>(lanes, kStartZ), std::vector<std::uint32_t>(lanes, seed)};
-  VariationInput in;
-  in.x = xs.data();
-  in.y = ys.data();
-  in.z = zs.data();
-  in.random = out.random.data();
-  in.count = lanes;
-  in.weight = weight;
-  in.params = params.data();
-  in.affine = kAffine;
-  info.apply(in, out.x.data(), out.y.data(), out.z.data());
-  return out;
-}
-
 class VariationAtPoint : public testing::TestWithParam<PointCase> {};
 
 TEST_P(VariationAtPoint, MatchesTheHandComputedValue) {
-  const PointCase& c = GetParam();
-  const VariationInfo& info = variationOrThrow(c.name);
-  const std::vector<double> params = c.params.empty() ? info.defaultParams() : c.params;
-  ASSERT_EQ(params.size(), info.params.size());
-  // 37 lanes: a vectorised body and a scalar remainder must agree lane for lane.
-  const Outputs out = run(info, params, c.point, c.weight, c.seed, 37);
-  const auto near = [](double expected) { return 1e-12 * std::max(1.0, std::abs(expected)); };
-  for (std::size_t lane = 0; lane < out.x.size(); ++lane) {
-    SCOPED_TRACE("lane " + std::to_string(lane));
-    EXPECT_NEAR(out.x[lane] - kStartX, c.expected.x, near(c.expected.x));
-    EXPECT_NEAR(out.y[lane] - kStartY, c.expected.y, near(c.expected.y));
-    EXPECT_NEAR(out.z[lane] - kStartZ, c.expected.z, near(c.expected.z));
-  }
+  expectMatchesTheHandComputedValue(GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Catalogue, VariationAtPoint, testing::ValuesIn(pointCases()), caseLabel);
