@@ -155,8 +155,9 @@ core::Scene flatViewScene(const core::Scene& scene) {
 
 void updateFlatView(ExplorerState& state) {
   if (!state.flatView) {
-    state.flatRender.cancel();
-    state.flatRendered = core::Scene{};
+    // Runs every frame while the view is off: costs nothing unless a render was under way or kept.
+    if (state.flatRender.busy()) state.flatRender.cancel();
+    state.flatRendered.layers.clear();  // so that turning the view on renders afresh
     return;
   }
   if (state.flatRender.ready()) {
