@@ -30,7 +30,8 @@ constexpr double kJwfEpsilon = 1e-8;
 // weight is not applied (Fractorium ignores it). Fractorium meant them as pre_/post_ terms; as an
 // ordinary term Fractorium also discards the terms summed before it, which a sum cannot do, so
 // here it simply adds its point (and the importer names a file's mirror after other terms).
-void mirrorX(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void mirrorX(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double flip = laneUniform(rnd[i]) < 0.5 ? -1.0 : 1.0;
@@ -40,7 +41,8 @@ void mirrorX(const VariationInput& in, double* __restrict ox, double* __restrict
   }
 }
 
-void mirrorY(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void mirrorY(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double flip = laneUniform(rnd[i]) < 0.5 ? -1.0 : 1.0;
@@ -50,7 +52,8 @@ void mirrorY(const VariationInput& in, double* __restrict ox, double* __restrict
   }
 }
 
-void mirrorZ(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void mirrorZ(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     const double flip = laneUniform(rnd[i]) < 0.5 ? -1.0 : 1.0;
@@ -65,7 +68,8 @@ void mirrorZ(const VariationInput& in, double* __restrict ox, double* __restrict
 // degrees about the centre. The weight is the distance, not a factor: the result is the point itself.
 // Its axis-z branch turns about (centre_x, centre_y) in the x–z plane, as JWildfire's does. The
 // colour shifts are not applied (the importer says so when a file sets them).
-void axisSymmetryWf(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void axisSymmetryWf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                               double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double axis = std::clamp(std::round(P[0]), 0.0, 2.0);
   const double cx = P[1], cy = P[2], cz = P[3];
@@ -115,7 +119,8 @@ void axisSymmetryWf(const VariationInput& in, double* __restrict ox, double* __r
 
 // octagon (FracFx's Apophysis plugin, as JWildfire ports it): three terms summed. JWildfire takes
 // √z, which is NaN below the plane z = 0; here √z is 0 there, so 3D points stay finite.
-void octagon(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void octagon(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double offX = P[0], offY = P[1], offZ = P[2];
   for (std::size_t i = 0; i < n; ++i) {
@@ -140,7 +145,8 @@ void octagon(const VariationInput& in, double* __restrict ox, double* __restrict
 
 // Fractorium's bcircle: inside the unit circle (after scaling) the scaled point; outside, a ring
 // 0.2·|borderwidth| wide just beyond it, or the origin when borderwidth is 0.
-void bcircle(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void bcircle(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double scale = P[0], border = std::abs(P[1]);
   for (std::size_t i = 0; i < n; ++i) {
@@ -166,7 +172,8 @@ void bcircle(const VariationInput& in, double* __restrict ox, double* __restrict
 
 // waves23 (Tatyana Zabanova's, as JWildfire has it): a sawtooth of each coordinate added to the
 // other, folded at ½.
-void waves23(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void waves23(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double scaleX = P[0], scaleY = P[1], freqX = P[2], freqY = P[3];
   for (std::size_t i = 0; i < n; ++i) {
@@ -180,7 +187,8 @@ void waves23(const VariationInput& in, double* __restrict ox, double* __restrict
   }
 }
 
-void wdisc(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void wdisc(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                      double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   for (std::size_t i = 0; i < n; ++i) {
     double a = kPi / (std::sqrt(x[i] * x[i] + y[i] * y[i]) + 1.0);
@@ -196,7 +204,8 @@ void wdisc(const VariationInput& in, double* __restrict ox, double* __restrict o
 
 // Fractorium's pow_block: r^(numerator / (denominator · correctn / correctd)) with the angle
 // divided by the denominator, plus one of its roots at random.
-void powBlock(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void powBlock(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double numerator = P[0], denominator = P[1], root = P[2], correctN = P[3], correctD = P[4];
   const double power = numerator / fractoriumZeps(denominator * correctN * (1.0 / correctD));
@@ -214,7 +223,8 @@ void powBlock(const VariationInput& in, double* __restrict ox, double* __restric
 // Fractorium's depth: the point plus itself scaled by |z|^power. Fractorium adds the transform's
 // affine point, which for ordinary and pre_ terms is the point itself; a post_ term would need the
 // point from before the variations, which the importer therefore refuses to fake.
-void depth(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void depth(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                      double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double power = P[0];
   for (std::size_t i = 0; i < n; ++i) {
@@ -228,7 +238,8 @@ void depth(const VariationInput& in, double* __restrict ox, double* __restrict o
 
 // poincare3D (Zueuk's, as JWildfire has it): the Möbius map of 3D space that moves the unit
 // ball's centre to c = r (−cos a' cos b', sin a' cos b', −sin b'), a' = aπ/2, b' = bπ/2.
-void poincare3D(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void poincare3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double radius = P[0], a = P[1] * kPi / 2.0, b = P[2] * kPi / 2.0;
   const double cx = -radius * std::cos(a) * std::cos(b), cy = radius * std::sin(a) * std::cos(b);
@@ -269,7 +280,8 @@ inline double logScale(double value) {
 // Fractorium's falloff: the point blurred by D = max(0, (|p − (x0, y0, z0)| (or 1 − that, at
 // least 0, with invert) − mindist) · 0.04 scatter), the blur's shape by type. Its box blur adds
 // the mul · a^boxpow · D / scale term without the weight, as Fractorium does.
-void falloff(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void falloff(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double scatter = 0.04 * std::max(P[0], std::numeric_limits<double>::epsilon());
   const double minDist = std::max(P[1], 0.0);
@@ -310,7 +322,8 @@ void falloff(const VariationInput& in, double* __restrict ox, double* __restrict
 // Fractorium's falloff3: like falloff, with the distance measured round (blur_shape 0) or square
 // (1), and a Gaussian (0), radial (1) or logarithmic (2, 3) blur. Its colour shift (mul_c) is not
 // applied; the importer says so when a file sets it.
-void falloff3(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void falloff3(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double type = fractoriumInteger(P[0], 0.0, 3.0);
   const bool square = fractoriumInteger(P[1], 0.0, 1.0) != 0.0;
@@ -362,7 +375,8 @@ inline double voronNoise(std::int64_t value) {
   return static_cast<double>(mixed & 0x7fffffffu) * (1.0 / 2147483647.0);
 }
 
-void voron(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void voron(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                      double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double k = P[0];
   const double step = std::abs(P[1]) < 1e-6 ? std::numeric_limits<double>::epsilon() * (P[1] < 0.0 ? -1.0 : 1.0) : P[1];
@@ -413,7 +427,8 @@ void voron(const VariationInput& in, double* __restrict ox, double* __restrict o
 
 // Fractorium's smartshape: the plane bent into a regular polygon of `power` sides (at least 2),
 // its corners rounded by roundstr and roundwidth, distortion the exponent of the bending.
-void smartshape(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void smartshape(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double power = std::max(P[0], 2.0), roundStr = P[1], roundWidth = P[2], distortion = P[3];
   const bool compensate = std::clamp(P[4], 0.0, 1.0) > 0.0;
@@ -451,7 +466,8 @@ void smartshape(const VariationInput& in, double* __restrict ox, double* __restr
 // lazyTravis (Michael Faber's, as JWildfire has it): the square of half-side s = max(|x|, |y|)
 // walked round by its perimeter position plus a spin; outside the weight's square (s > w) it is
 // also pushed out by `space`. At the origin, where s = 0, JWildfire's result is NaN.
-void lazyTravis(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void lazyTravis(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double spinIn = 4.0 * P[0], spinOut = 4.0 * P[1], space = P[2];
   for (std::size_t i = 0; i < n; ++i) {
@@ -507,7 +523,8 @@ void lazyTravis(const VariationInput& in, double* __restrict ox, double* __restr
 
 // waves4_wf (JWildfire's): waves2 with sin·cos·sin (or cos·sin·cos) waves, both terms scaled by
 // e^damp (1 when |damp| < 10⁻⁸).
-void waves4Wf(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void waves4Wf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double scaleX = P[0], scaleY = P[1], freqX = P[2], freqY = P[3];
   const bool cosX = std::round(P[4]) == 1.0, cosY = std::round(P[5]) == 1.0;
@@ -525,7 +542,8 @@ void waves4Wf(const VariationInput& in, double* __restrict ox, double* __restric
 
 // Fractorium's y: the point's direction kept, its distance r replaced by w·T²/r, T the sum of four
 // shapes' radii at its angle a = φ: a hypergon, a star, a lituus and a superformula curve.
-void yShapes(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void yShapes(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double hypergon = P[0], hypergonN = std::max(std::floor(P[1] + 0.5), 3.0), hypergonR = P[2];
   const double star = P[3], starN = std::max(std::floor(P[4] + 0.5), 3.0);
@@ -595,7 +613,8 @@ inline double pixelFlowHash(std::int32_t a) {
 // block of a grid of 1/width cells (widths and lengths vary by `seed`). The point itself is not
 // added: with linear it draws streaks from every point. Its direct colour (enable_dc) is not
 // applied; the importer says so when a file sets it.
-void pixelFlow(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void pixelFlow(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double radians = P[0] * 0.0174532925;  // JWildfire's rounded π/180
   const double len = P[1], width = P[2];
@@ -641,7 +660,8 @@ inline void addVibration(const VibrationWave& v, double x, double y, double& px,
   py += local * std::sin(total);
 }
 
-void vibration2(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void vibration2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const VibrationWave first{P[0], P[1], P[2], P[3], P[4], P[10], P[11], P[12], P[13], P[14], P[15], P[16], P[17]};
   const VibrationWave second{P[5], P[6], P[7], P[8], P[9], P[18], P[19], P[20], P[21], P[22], P[23], P[24], P[25]};
@@ -666,7 +686,8 @@ inline double javaRound(double value) {
   return std::floor(value + 0.5);
 }
 
-void truchet(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void truchet(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const bool extended = std::clamp(javaRound(P[0]), 0.0, 1.0) == 1.0;
   const double exponent = std::clamp(P[1], 0.001, 2.0), width = std::clamp(P[2], 0.001, 1.0);
@@ -831,7 +852,8 @@ inline NBlurPoint nBlurRandomPoint(const NBlurSetup& s, std::uint32_t& random) {
   return point;
 }
 
-void nBlur(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void nBlur(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                      double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   NBlurSetup s{};
   s.numEdges = fractoriumInteger(P[0], 3.0, 1000.0);
@@ -885,7 +907,8 @@ void nBlur(const VariationInput& in, double* __restrict ox, double* __restrict o
 // to `width` of itself about its middle. JWildfire assigns its x and y instead of adding them,
 // which discards the terms before it on the same transform; alone or first it is this sum (the
 // importer says so when it is not).
-void shredlin(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+VOXFLAME_VARIATION_TARGETS void shredlin(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double xDistance = P[0], xWidth = std::clamp(P[1], -1.0, 1.0);
   const double yDistance = P[2], yWidth = std::clamp(P[3], -1.0, 1.0);
