@@ -9,6 +9,7 @@
 #include <exception>
 #include <memory>
 #include <optional>
+#include <pthread.h>
 #include <stop_token>
 #include <thread>
 #include <utility>
@@ -31,6 +32,7 @@ class BackgroundJob {
     auto slot = std::make_shared<Slot>();
     slot_ = slot;
     thread_ = std::jthread([slot, work = std::move(work)](std::stop_token stop) mutable {
+      pthread_setname_np(pthread_self(), "vf-job");  // for top, perf and bench explorer's thread count
       try {
         slot->result.emplace(work(stop));
       } catch (...) {

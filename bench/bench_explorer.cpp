@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 #include <sys/resource.h>
@@ -70,10 +71,28 @@ double peakResidentMegabytes() {
 // more runnable threads than cores only queue for them, and the frame's thread queues with them.
 class RunnableThreadSampler {
  public:
-  RunnableThreadSampler() : thread_([this](std::stop_token stop) { run(stop); }) {}
+  // `foreign`: the ids of threads that libraries started (Mesa's queues, a logging pool), counted
+  // with the GL driver's and not as the process's own.
+  explicit RunnableThreadSampler(std::set<std::string> foreign)
+      : foreign_(std::move(foreign)), thread_([this](std::stop_token stop) { run(stop); }) {}
+  // The threads now, but the calling one: taken before the explorer starts any, they are the
+  // libraries' (the GL context's, and those started as libraries load).
+  static std::set<std::string> threadsBut(const std::string& caller) {
+    std::set<std::string> ids;
+    std::error_code ec;
+    for (const auto& task : std::filesystem::directory_iterator("/proc/self/task", ec))
+      if (task.path().filename() != caller) ids.insert(task.path().filename().string());
+    return ids;
+  }
   int max() const { return max_.load(); }
-  // Runnable threads of the GL driver (Mesa's llvmpipe-N rasterisers), at most at once: software
-  // GL standing in for a GPU, counted apart from the process's own.
+  // The most runnable at once since the last call, and which they were: the phase just ended.
+  std::pair<int, std::string> endPhase() {
+    std::lock_guard lock(mutex_);
+    return {std::exchange(phaseMax_, 0), std::exchange(phaseAtMax_, std::string())};
+  }
+  // Runnable threads of the GL driver (Mesa's llvmpipe-N rasterisers and its queues) and other
+  // libraries, at most at once: software GL standing in for a GPU, counted apart from the
+  // process's own.
   int maxDriver() const { return maxDriver_.load(); }
   // Which threads were runnable when the most were, by name ("vf-accumulate×2 voxflame×1").
   std::string atMax() {
@@ -104,18 +123,24 @@ class RunnableThreadSampler {
       const std::size_t open = line.find('('), close = line.rfind(')');
       if (open == std::string::npos || close == std::string::npos || close + 2 >= line.size()) continue;
       if (line[close + 2] != 'R') continue;
-      if (line.compare(open + 1, 9, "llvmpipe-") == 0) {
+      if (line.compare(open + 1, 9, "llvmpipe-") == 0 || foreign_.count(task.path().filename().string()) != 0) {
         ++driver;
       } else {
         ++runnable;
         ++names[line.substr(open + 1, close - open - 1)];
       }
     }
-    if (runnable > max_.load()) {
-      std::string text;
-      for (const auto& [name, count] : names) text += (text.empty() ? "" : " ") + name + "×" + std::to_string(count);
+    {
       std::lock_guard lock(mutex_);
-      atMax_ = text;
+      if (runnable > max_.load() || runnable > phaseMax_) {
+        std::string text;
+        for (const auto& [name, count] : names) text += (text.empty() ? "" : " ") + name + "×" + std::to_string(count);
+        if (runnable > max_.load()) atMax_ = text;
+        if (runnable > phaseMax_) {
+          phaseMax_ = runnable;
+          phaseAtMax_ = text;
+        }
+      }
     }
     max_ = std::max(max_.load(), runnable);
     maxDriver_ = std::max(maxDriver_.load(), driver);
@@ -135,11 +160,14 @@ class RunnableThreadSampler {
       wake_.wait_for(lock, stop, std::chrono::milliseconds(5), [&] { return !on_; });
     }
   }
+  const std::set<std::string> foreign_;
   std::atomic<int> max_{0}, maxDriver_{0};
   std::mutex mutex_;
   std::condition_variable_any wake_;
-  bool on_ = false;      // guarded by mutex_
-  std::string atMax_;    // guarded by mutex_
+  bool on_ = false;    // guarded by mutex_
+  std::string atMax_;  // guarded by mutex_
+  int phaseMax_ = 0;   // guarded by mutex_, like the names below
+  std::string phaseAtMax_;
   std::jthread thread_;  // last: started after everything it uses
 };
 
@@ -276,6 +304,7 @@ std::array<double, 3> cpuAtRest(app::ExplorerSession& session, FrameLoop& loop) 
 // camera orbits and while a still view refines, and the memory the session holds.
 void benchExplorer(const BenchOptions& options) {
   gl::HeadlessContext context;
+  const std::set<std::string> libraryThreads = RunnableThreadSampler::threadsBut(std::to_string(::syscall(SYS_gettid)));
   // As the explorer does: software GL refines a still view at a quarter of the pixels.
   const bool software = context.renderer().find("llvmpipe") != std::string::npos;
   const std::vector<int> grids = options.grids.empty() ? std::vector<int>{192, 256, 512} : options.grids;
@@ -284,7 +313,7 @@ void benchExplorer(const BenchOptions& options) {
     core::Scene initial = core::defaultScene();
     initial.gridResolution = resolution;
     app::ExplorerSession session;
-    RunnableThreadSampler runnable;
+    RunnableThreadSampler runnable(libraryThreads);
     FrameLoop loop(session, initial, software ? 0.5f : 1.0f);
     core::Scene& scene = loop.state.scene;
     loop.run();  // posts the scene
@@ -296,17 +325,28 @@ void benchExplorer(const BenchOptions& options) {
     }
     const FrameTimes refining = timeFrames(loop, 1 << 30, 4000.0, [](int) {});
     const double memory = residentMegabytes() - baseline;
+    // Each phase's most runnable threads at once, and which they were.
+    nlohmann::json runnableByPhase = nlohmann::json::object();
+    const auto endPhase = [&](const char* name) {
+      const auto [most, which] = runnable.endPhase();
+      runnableByPhase[name] = {{"max_runnable_threads", most}, {"runnable_threads_at_max", which}};
+    };
+    endPhase("refining_first");
 
     // Pattern edits one at a time, each waited for.
     const EditLatencies edits = measureEdits(loop, session, 7);
+    endPhase("edits");
     // A slider drag: a small edit every frame; then the camera orbiting; then the still view
     // refining again. The slider (then the view) is held throughout, as the panels tell the view.
     loop.state.interacting = true;
     const FrameTimes dragging =
         timeFrames(loop, 40, 20'000.0, [&](int i) { nudgePattern(scene, i % 2 ? 1.0 / 1.002 : 1.002); });
+    endPhase("dragging");
     const FrameTimes orbiting = timeFrames(loop, 40, 20'000.0, [&](int) { scene.camera.azimuthDeg += 2.0; });
+    endPhase("orbiting");
     loop.state.interacting = false;
     const FrameTimes refiningAfter = timeFrames(loop, 1 << 30, 3000.0, [](int) {});
+    endPhase("refining");
 
     // A still exported from the Export panel runs in a child process; the window's frames go on.
     FrameTimes exporting;
@@ -328,6 +368,7 @@ void benchExplorer(const BenchOptions& options) {
       }
       std::filesystem::remove(output);
     }
+    if (resolution == 256) endPhase("during_export");
     auto median = [](const std::vector<double>& sorted) { return sorted[sorted.size() / 2]; };
     loop.state.exportStatus = app::ExportStatus{};
     runnable.setOn(false);  // sampling costs CPU, which the rest's figure must not include
@@ -348,7 +389,9 @@ void benchExplorer(const BenchOptions& options) {
                       {"mean_upload_ms", times->meanUpload()},
                       {"mean_march_scale", times->meanScale()},
                       {"marched_rows_share", times->marchedShare()}};
+      if (runnableByPhase.contains(name)) phases[name].update(runnableByPhase[name]);
     }
+    phases["edits"] = runnableByPhase["edits"];
     report(options, {{"bench", "explorer"},
                      {"grid", resolution},
                      {"renderer", context.renderer()},

@@ -115,3 +115,37 @@ TEST(CoreBudget, CoresFreedAtOnceReachEveryKindOfWaiter) {
     EXPECT_EQ(inside.load(), 2);
   }
 }
+
+// A thread that holds a core and passes it on between pieces of work keeps it while nobody that
+// goes before it waits, and hands it over, then waits for the next one, when one does.
+TEST(CoreBudget, PassingOnHandsTheCoreOnlyToAWaiterThatGoesBefore) {
+  voxflame::core::CoreBudget budget(1);
+  budget.acquire(true);
+  budget.passOn(true);  // nobody waits: kept
+  std::atomic<bool> normalIn{false};
+  std::jthread normal([&] {
+    budget.acquire();
+    normalIn = true;
+    budget.release();
+  });
+  while (budget.waiting() < 1) std::this_thread::yield();
+  budget.passOn(true);  // only a thread that does not go first waits: kept
+  EXPECT_FALSE(normalIn.load());
+  std::atomic<bool> firstIn{false};
+  std::jthread first([&] {
+    budget.acquire(true);
+    firstIn = true;
+    budget.release();
+  });
+  while (budget.waiting() < 2) std::this_thread::yield();
+  budget.passOn(true);  // handed to the waiting first thread; back once it releases
+  first.join();
+  EXPECT_TRUE(firstIn.load());
+  EXPECT_FALSE(normalIn.load()) << "the first thread's release handed the core back to the passer";
+  budget.passOn(false);  // a thread that does not go first hands over to any waiter
+  normal.join();
+  EXPECT_TRUE(normalIn.load());
+  budget.release();
+  EXPECT_TRUE(budget.try_acquire());
+  EXPECT_FALSE(budget.try_acquire());
+}

@@ -2,6 +2,7 @@
 
 #include <pthread.h>
 #include <algorithm>
+#include <utility>
 #include <array>
 #include <chrono>
 #include <cmath>
@@ -842,13 +843,15 @@ Accumulator::Accumulator(std::shared_ptr<const InsideMask> mask, int threads, st
   slabGeneration_ = std::make_unique<std::uint64_t[]>(slabCount_);  // generation 0: freshly zeroed
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   threadCount_ = threads;
+  workerWake_ = std::make_unique<std::condition_variable_any[]>(static_cast<std::size_t>(threads));
+  wakeAsked_ = std::make_unique<std::atomic<bool>[]>(static_cast<std::size_t>(threads));
   threads_.reserve(static_cast<std::size_t>(threads));
   for (int t = 0; t < threads; ++t) threads_.emplace_back([this, t](std::stop_token stop) { workerLoop(stop, t); });
 }
 
 Accumulator::~Accumulator() {
+  // Each worker's wait takes its stop token, and the stop request wakes it.
   for (auto& thread : threads_) thread.request_stop();
-  wake_.notify_all();
   threads_.clear();  // joins
 }
 
@@ -902,7 +905,8 @@ void Accumulator::notifyWorkChanged() {
   // gets this notification). No wake-up is lost, so nobody needs to poll.
   {
     std::lock_guard lock(wakeMutex_);
-    wake_.notify_all();
+    wakeAsked_[0] = true;
+    workerWake_[0].notify_one();
     doneSignal_.notify_all();
   }
   progress_.notify();
@@ -1122,26 +1126,54 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
     }
     return -1;
   };
+  // A core of the shared budget is held from one batch to the next while this thread has work, and
+  // passed on between batches only to a waiter that goes before it: releasing and taking it again
+  // each batch woke a waiter that then found it taken again.
+  bool holdingCore = false;
+  auto letGoOfCore = [&] {
+    if (holdingCore) cores_->release();
+    holdingCore = false;
+  };
+  // A wake-up for the workers after this one, passed on once this one holds a core or has found
+  // nothing to do (see workerWake_).
+  bool passWakeUp = false;
+  auto passWakeUpOn = [&] {
+    if (!std::exchange(passWakeUp, false) || threadIndex + 1 >= threadCount) return;
+    std::lock_guard lock(wakeMutex_);
+    wakeAsked_[threadIndex + 1] = true;
+    workerWake_[threadIndex + 1].notify_one();
+  };
   while (!stop.stop_requested()) {
+    if (wakeAsked_[threadIndex].exchange(false)) passWakeUp = true;
     const int stream = active_.load() && !held_.load() && !owned.empty() ? nextStream(targetPoints_.load()) : -1;
     if (stream < 0) {
+      letGoOfCore();
+      passWakeUpOn();
       // Nothing left for this thread: say so to waitUntilDone, then sleep until setPattern,
       // setTargetPoints or the stop request wakes it (all notify under wakeMutex_).
       std::unique_lock lock(wakeMutex_);
       doneSignal_.notify_all();
-      wake_.wait(lock, stop, [&] {
+      workerWake_[threadIndex].wait(lock, stop, [&] {
+        if (wakeAsked_[threadIndex].load()) return true;
         if (!active_.load() || held_.load() || owned.empty()) return false;
         const auto target = targetPoints_.load();
         return std::any_of(owned.begin(), owned.end(), [&](int s) { return !streamDone(s, target); });
       });
       continue;
     }
-    if (cores_)
-      cores_->acquire(coresFirst_.load(
-          std::memory_order_relaxed));  // held for one batch: the other accumulator gets its turn between
+    if (cores_) {
+      // The other accumulator's threads get their turn between batches, when they go first.
+      const bool first = coresFirst_.load(std::memory_order_relaxed);
+      if (holdingCore)
+        cores_->passOn(first);
+      else
+        cores_->acquire(first);
+      holdingCore = true;
+    }
+    passWakeUpOn();
     runBatch(threadIndex, stream, generation_.load(), batches[static_cast<std::size_t>(stream)], splats);
-    if (cores_) cores_->release();
   }
+  letGoOfCore();
 }
 
 std::uint64_t Accumulator::flushSplats(SplatBuffer& splats) {

@@ -287,6 +287,7 @@ class Accumulator {
   // Its workers take a freed core of the budget before the other accumulator's (the proxy's, so
   // an edit shows within two frames while the large grid refines).
   void setCoresFirst(bool first) { coresFirst_.store(first, std::memory_order_relaxed); }
+  bool coresFirst() const { return coresFirst_.load(std::memory_order_relaxed); }
   std::uint64_t generation() const { return generation_.load(std::memory_order_acquire); }
   int threadCount() const { return static_cast<int>(threads_.size()); }
   const InsideMask& mask() const { return *mask_; }
@@ -384,7 +385,11 @@ class Accumulator {
   void notifyWorkChanged();  // wakes idle workers and waitUntilDone, under wakeMutex_, and progress_
   mutable ProgressSignal progress_;
   std::mutex wakeMutex_;
-  std::condition_variable_any wake_;  // workers sleep here when idle
+  // Workers sleep here when idle, each on its own condition. A change of work wakes the first, and
+  // each passes the wake-up on to the next once it holds a core of the budget (or finds it has no
+  // work): all woken at once, they would queue together for the cores as runnable threads.
+  std::unique_ptr<std::condition_variable_any[]> workerWake_;
+  std::unique_ptr<std::atomic<bool>[]> wakeAsked_;  // set under wakeMutex_, taken by its worker
   std::condition_variable doneSignal_;
 
   // The work is cut into a fixed number of streams, each with its own orbits and random numbers and

@@ -3,12 +3,13 @@
 // for one, asleep, otherwise, so together they keep no more threads runnable than the budget.
 //
 // Not std::counting_semaphore: libstdc++'s release() wakes every waiter, and on a busy machine
-// all of them then queue for a core just to find the one token taken. Here a release wakes one:
-// a thread that goes first (the proxy's, whose burst is what the next frame shows) if one waits,
-// for a freed core is then its own before any other waiter's; otherwise one of the others.
+// all of them then queue for a core just to find the one token taken. Here a release hands the
+// core to one waiter, which wakes owning it: a thread that goes first (the proxy's, whose burst is
+// what the next frame shows) if one waits; otherwise one of the others.
 #pragma once
 
 #include <condition_variable>
+#include <deque>
 #include <mutex>
 
 namespace voxflame::core {
@@ -19,24 +20,27 @@ class CoreBudget {
   // `first`: this thread's work is wanted sooner than the others' (the proxy's burst).
   void acquire(bool first = false) {
     std::unique_lock lock(mutex_);
-    ++waiting_;
-    if (first) {
-      ++firstWaiting_;
-      firstFreed_.wait(lock, [&] { return free_ > 0; });
-      --firstWaiting_;
-    } else {
-      othersFreed_.wait(lock, [&] { return free_ > 0 && firstWaiting_ == 0; });
+    // A free core means nobody waits (a release hands its core to a waiter instead of freeing it).
+    if (free_ > 0) {
+      --free_;
+      return;
     }
-    --waiting_;
-    --free_;
-    // A core is still free (several were released at once): pass it on, or the next waiter of the
-    // other kind would sleep beside an idle core.
-    if (free_ > 0) wakeOne();
+    waitForHandOff(lock, first);
   }
-  // Threads in acquire() now (for tests).
+  // Between two pieces of work of a thread holding a core: the core goes to a waiter that goes
+  // before this thread (one that goes first, or any waiter when this one does not), and this thread
+  // waits in line for a core handed on. Otherwise it keeps its core and returns at once, so a thread
+  // that goes first keeps the cores through its burst.
+  void passOn(bool first = false) {
+    std::unique_lock lock(mutex_);
+    if (firstWaiting_.empty() && (first || othersWaiting_.empty())) return;
+    handOn();
+    waitForHandOff(lock, first);
+  }
+  // Threads in acquire() or passOn() now, waiting for a core (for tests).
   int waiting() {
     std::lock_guard lock(mutex_);
-    return waiting_;
+    return static_cast<int>(firstWaiting_.size() + othersWaiting_.size());
   }
   bool try_acquire() {
     std::lock_guard lock(mutex_);
@@ -46,28 +50,41 @@ class CoreBudget {
   }
   void release() {
     std::lock_guard lock(mutex_);
-    ++free_;
-    wakeOne();
+    handOn();
   }
 
  private:
-  // Wakes the one waiter the freed core is for: a first one if any waits, else another. Each kind
-  // sleeps on its own condition, so a release never wakes a thread that would only sleep again
-  // (with one condition and notify_all, every waiter became runnable on each release while a
-  // proxy waited: four accumulator threads queued for two cores). Called with mutex_ held.
-  void wakeOne() {
-    if (firstWaiting_ > 0)
-      firstFreed_.notify_one();
-    else if (waiting_ > 0)
-      othersFreed_.notify_one();
+  struct Waiter {
+    std::condition_variable handedOn;
+    bool hasCore = false;  // guarded by mutex_
+  };
+  // Gives the core being let go to the longest waiter (one that goes first before the others), or
+  // frees it when nobody waits. Handed on, not freed: a freed core would go to whichever thread
+  // asks next, most often the releasing thread itself coming back for its next batch before the
+  // woken waiter runs; the waiter would then wake only to sleep again, and while it queued for a
+  // core it counted as one more runnable thread. Each waiter sleeps on a condition of its own, so
+  // only the thread the core is for wakes. Called with mutex_ held.
+  void handOn() {
+    std::deque<Waiter*>& line = !firstWaiting_.empty() ? firstWaiting_ : othersWaiting_;
+    if (line.empty()) {
+      ++free_;
+      return;
+    }
+    Waiter* next = line.front();
+    line.pop_front();
+    next->hasCore = true;
+    next->handedOn.notify_one();
+  }
+  void waitForHandOff(std::unique_lock<std::mutex>& lock, bool first) {
+    Waiter self;
+    (first ? firstWaiting_ : othersWaiting_).push_back(&self);
+    self.handedOn.wait(lock, [&] { return self.hasCore; });
   }
 
   std::mutex mutex_;
-  std::condition_variable firstFreed_;   // waited on by the threads that go first
-  std::condition_variable othersFreed_;  // by all the others
-  int free_;                             // guarded by mutex_, like the count below
-  int firstWaiting_ = 0;                 // threads waiting that go first
-  int waiting_ = 0;                      // all threads waiting
+  int free_;                           // guarded by mutex_, like the lines below
+  std::deque<Waiter*> firstWaiting_;   // threads that go first, in the order they came
+  std::deque<Waiter*> othersWaiting_;  // all the others
 };
 
 }  // namespace voxflame::core

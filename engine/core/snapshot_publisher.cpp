@@ -104,16 +104,17 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     // A hold that begins meanwhile (the user starts dragging) stops the pack at the next slab.
     // A pack keeps a core busy like a worker: where the workers share a budget it takes a core of
     // it, so a pack does not add a runnable thread beside every worker's. Taken before the lock, so
-    // a taker never finds the lock held by a pack that waits for a core.
+    // a taker never finds the lock held by a pack that waits for a core. It goes when its
+    // accumulator's workers would: the proxy's burst shows through its packs.
     struct HeldCore {
       CoreBudget* cores;
-      explicit HeldCore(CoreBudget* c) : cores(c) {
-        if (cores) cores->acquire();
+      HeldCore(CoreBudget* c, bool first) : cores(c) {
+        if (cores) cores->acquire(first);
       }
       ~HeldCore() {
         if (cores) cores->release();
       }
-    } core(accumulator_.coreBudget());
+    } core(accumulator_.coreBudget(), accumulator_.coresFirst());
     std::lock_guard lock(mutex_);
     const auto packStart = std::chrono::steady_clock::now();
     readyFresh_ = packVolume(accumulator_, ready_, &held_);

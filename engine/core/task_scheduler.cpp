@@ -11,6 +11,8 @@
 #include <oneapi/tbb/blocked_range.h>
 #include <oneapi/tbb/parallel_for.h>
 #include <oneapi/tbb/task_arena.h>
+#include <oneapi/tbb/task_scheduler_observer.h>
+#include <pthread.h>
 
 namespace voxflame::core {
 
@@ -20,11 +22,23 @@ int hardwareThreads() {
   return static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
 }
 
+// Names oneTBB's workers as they join an arena, so that top, perf and the runnable-thread count
+// of `bench explorer` tell them from the process's other threads.
+class WorkerNamer : public tbb::task_scheduler_observer {
+ public:
+  explicit WorkerNamer(tbb::task_arena& arena) : tbb::task_scheduler_observer(arena) { observe(true); }
+  ~WorkerNamer() override { observe(false); }
+  void on_scheduler_entry(bool isWorker) override {
+    if (isWorker) pthread_setname_np(pthread_self(), "vf-task");
+  }
+};
+
 // The arena is replaced, never changed in place, when the cap changes: a loop running on the old
 // one keeps it alive through its shared_ptr until it returns.
 struct Arena {
   std::mutex mutex;
   std::shared_ptr<tbb::task_arena> arena;
+  std::shared_ptr<WorkerNamer> namer;  // observes `arena`
   int threads = 0;
 };
 
@@ -39,6 +53,8 @@ Arena& arena() {
   if (!a.arena) {
     if (a.threads <= 0) a.threads = hardwareThreads();
     a.arena = std::make_shared<tbb::task_arena>(a.threads);
+    a.arena->initialize();
+    a.namer = std::make_shared<WorkerNamer>(*a.arena);
   }
   return a.arena;
 }
@@ -101,6 +117,7 @@ void setTaskConcurrency(int threads) {
   const int wanted = threads > 0 ? threads : hardwareThreads();
   if (wanted == a.threads && a.arena) return;
   a.threads = wanted;
+  a.namer.reset();  // stops observing before its arena may go
   a.arena.reset();  // made afresh with the new cap on the next call
 }
 
