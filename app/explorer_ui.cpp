@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cfloat>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "core/attractor.h"
 #include "core/camera.h"
@@ -783,30 +785,131 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
   ImGui::EndDisabled();
 }
 
-// The xaos of one transform (flam3's chaos): a slider per transform that may follow it, scaling
-// that transform's weight; 1 everywhere is no xaos. `count` is the flame's transform count.
-void xaosEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform, std::size_t count) {
-  const bool open = ImGui::TreeNode("xaos");
-  probe(state, scope + "xaos");
-  if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("how likely each transform is to follow this one: its weight times this factor (0 never)");
-  if (!open) return;
-  for (std::size_t j = 0; j < count; ++j) {
-    double value = j < xform.xaos.size() ? xform.xaos[j] : 1.0;
-    const std::string label = "to " + std::to_string(j + 1);
-    if (slider(state, scope + "xaos ", label.c_str(), value, 0.0, 5.0)) {
-      if (xform.xaos.size() <= j) xform.xaos.resize(j + 1, 1.0);
-      xform.xaos[j] = value;
+// Xaos (flam3's chaos) as a matrix: row i is transform i's xaos, and its cell in column j scales
+// transform j's weight when the transform after i is chosen (1 is no xaos, 0 forbids the step). A
+// missing factor is 1. The final transform has no row or column: flam3 gives it no xaos. Each
+// cell is an ordinary ImGui item, so handleHistory records a whole drag as one undo step.
+//
+// ImGui 1.86 tables hold at most 64 columns (IMGUI_TABLE_MAX_COLUMNS) and a flame up to 128
+// transforms, so wide flames show their "to" columns a page at a time.
+constexpr std::size_t kXaosColumnsPerPage = 32;
+constexpr std::size_t kXaosVisibleRows = 8;  // taller matrices scroll, their header row frozen
+constexpr double kXaosMin = 0.0, kXaosMax = 5.0;
+
+double xaosFactor(const core::FlameXform& from, std::size_t to) {
+  return to < from.xaos.size() ? from.xaos[to] : 1.0;
+}
+
+// A cell's tint: red where the step is forbidden, blue where it is less likely, amber where it is
+// more likely; none at 1, so a flame without xaos shows a plain matrix.
+ImU32 xaosCellColor(double factor) {
+  if (factor == 0.0) return IM_COL32(180, 50, 40, 120);
+  return factor < 1.0 ? IM_COL32(50, 100, 190, 110) : IM_COL32(200, 150, 30, 110);
+}
+
+// The "to" columns shown: all of them, or for flames wider than a page the page chosen in a combo.
+std::pair<std::size_t, std::size_t> xaosColumnPage(ExplorerState& state, std::size_t index, const std::string& scope,
+                                                   std::size_t count) {
+  if (count <= kXaosColumnsPerPage) return {0, count};
+  const auto pageLabel = [count](std::size_t page) {
+    const std::size_t first = page * kXaosColumnsPerPage;
+    return "to " + std::to_string(first + 1) + "–" + std::to_string(std::min(count, first + kXaosColumnsPerPage));
+  };
+  const std::size_t pages = (count + kXaosColumnsPerPage - 1) / kXaosColumnsPerPage;
+  std::size_t& page = state.xaosColumnPage[index];
+  page = std::min(page, pages - 1);  // the flame may have lost transforms since
+  if (ImGui::BeginCombo("columns", pageLabel(page).c_str())) {
+    for (std::size_t p = 0; p < pages; ++p) {
+      const std::string label = pageLabel(p);
+      if (ImGui::Selectable(label.c_str(), p == page)) page = p;
+      probe(state, scope + "xaos columns/" + label);
     }
+    ImGui::EndCombo();
   }
-  if (button(state, scope, "Reset xaos")) xform.xaos.clear();
+  probe(state, scope + "xaos columns");
+  const std::size_t first = page * kXaosColumnsPerPage;
+  return {first, std::min(count, first + kXaosColumnsPerPage)};
+}
+
+// The matrix under an "Xaos" tree node: a row per transform (named by number, as the transform
+// buttons name them, the selected one highlighted) with its reset button, a column per transform,
+// and a reset for the whole matrix. Cells are probed as "xaos <from> to <to>", both 1-based.
+void xaosMatrix(ExplorerState& state, std::size_t index, const std::string& scope, core::FlameGenome& flame,
+                int selected) {
+  const bool open = ImGui::TreeNode("Xaos");
+  probe(state, scope + "Xaos");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("row: the transform just applied; column: the next one, chosen by its weight times this factor");
+  if (!open) return;
+  const std::size_t count = flame.xforms.size();
+  const auto [firstColumn, endColumn] = xaosColumnPage(state, index, scope, count);
+
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float cellWidth = ImGui::CalcTextSize("0.000").x + 2.0f * style.FramePadding.x;
+  const float rowHeight = ImGui::GetFrameHeight() + 2.0f * style.CellPadding.y;
+  // Room for the header, up to kXaosVisibleRows rows and a horizontal scroll bar.
+  const float height = ImGui::GetTextLineHeight() + 2.0f * style.CellPadding.y +
+                       rowHeight * static_cast<float>(std::min(count, kXaosVisibleRows)) + style.ScrollbarSize;
+  constexpr ImGuiTableFlags kFlags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY;
+  // The transform's number and its reset button stay in view while the factors scroll.
+  constexpr int kFrozenColumns = 2;
+  const int columns = kFrozenColumns + static_cast<int>(endColumn - firstColumn);
+  if (ImGui::BeginTable("xaos matrix", columns, kFlags, ImVec2(0.0f, height))) {
+    ImGui::TableSetupScrollFreeze(kFrozenColumns, 1);
+    ImGui::TableSetupColumn("from\\to");
+    ImGui::TableSetupColumn("##reset");
+    for (std::size_t to = firstColumn; to < endColumn; ++to)
+      ImGui::TableSetupColumn(std::to_string(to + 1).c_str(), ImGuiTableColumnFlags_WidthFixed, cellWidth);
+    ImGui::TableHeadersRow();
+    for (std::size_t from = 0; from < count; ++from) {
+      core::FlameXform& row = flame.xforms[from];
+      const std::string fromName = std::to_string(from + 1);
+      ImGui::PushID(static_cast<int>(from));
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::AlignTextToFramePadding();
+      ImGui::TextUnformatted(fromName.c_str());
+      if (static_cast<int>(from) == selected)
+        ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, ImGui::GetColorU32(ImGuiCol_Header));
+      ImGui::TableNextColumn();
+      ImGui::BeginDisabled(row.xaos.empty());
+      if (ImGui::SmallButton("reset")) row.xaos.clear();
+      probe(state, scope + "xaos reset " + fromName);
+      ImGui::EndDisabled();
+      for (std::size_t to = firstColumn; to < endColumn; ++to) {
+        ImGui::TableNextColumn();
+        ImGui::PushID(static_cast<int>(to));
+        double factor = xaosFactor(row, to);
+        ImGui::SetNextItemWidth(-FLT_MIN);
+        if (ImGui::DragScalar("##factor", ImGuiDataType_Double, &factor, 0.01f, &kXaosMin, &kXaosMax, "%.2f", kClamp)) {
+          if (row.xaos.size() <= to) row.xaos.resize(to + 1, 1.0);
+          row.xaos[to] = factor;
+        }
+        const std::string toName = std::to_string(to + 1);
+        probe(state, scope + "xaos " + fromName + " to " + toName);
+        if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+          ImGui::SetTooltip("after %s, %s's weight × %.3f (0: never) — drag, or double-click to type", fromName.c_str(),
+                            toName.c_str(), factor);
+        if (factor != 1.0) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, xaosCellColor(factor));
+        ImGui::PopID();
+      }
+      ImGui::PopID();
+    }
+    ImGui::EndTable();
+  }
+  const bool anyXaos =
+      std::any_of(flame.xforms.begin(), flame.xforms.end(), [](const core::FlameXform& x) { return !x.xaos.empty(); });
+  ImGui::BeginDisabled(!anyXaos);
+  if (button(state, scope, "Reset xaos"))
+    for (core::FlameXform& x : flame.xforms) x.xaos.clear();
+  ImGui::EndDisabled();
   ImGui::TreePop();
 }
 
 // One transform: weight (not for the final one), colour, colour speed, opacity, the affine map
-// and an optional post map, the variations, the xaos (`count` is the flame's transform count).
-void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform, bool isFinal,
-                 std::size_t count) {
+// and an optional post map, the variations. Its xaos is a row of the flame's xaos matrix.
+void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform, bool isFinal) {
   if (!isFinal) fieldWidget(state, scope, xform, core::xformFields(), "weight");
   fieldWidget(state, scope, xform, core::xformFields(), "color");
   fieldWidget(state, scope, xform, core::xformFields(), "color_speed");
@@ -825,7 +928,6 @@ void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXfor
   ImGui::Separator();
   ImGui::TextColored(kDimColor, "variations");
   variationsEditor(state, scope, xform);
-  if (!isFinal && count > 1) xaosEditor(state, scope, xform, count);
 }
 
 void flameEditor(ExplorerState& state, std::size_t index, const std::string& scope, core::FlameGenome& flame) {
@@ -892,8 +994,10 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
   const std::string xscope = scope + (selected < 0 ? "final/" : "xform/");
   ImGui::PushID(selected);
   core::FlameXform& xform = selected < 0 ? flame.finalXform : flame.xforms[static_cast<std::size_t>(selected)];
-  xformEditor(state, xscope, xform, selected < 0, flame.xforms.size());
+  xformEditor(state, xscope, xform, selected < 0);
   ImGui::PopID();
+  // With one transform every factor leads back to it (a 0 falls back to the plain weights).
+  if (flame.xforms.size() > 1) xaosMatrix(state, index, scope, flame, selected);
 
   if (ImGui::TreeNode("Symmetry")) {
     core::FlameSymmetry& symmetry = flame.symmetry;

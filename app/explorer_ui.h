@@ -85,6 +85,8 @@ struct ExplorerState {
   char attractorFilter[64] = "";
   char variationFilter[64] = "";             // the "add variation" list's filter (one list is open at a time)
   std::map<std::size_t, int> selectedXform;  // per layer: the flame transform being edited (-1: the final one)
+  // Per layer: the page of "to" columns the xaos matrix shows (ImGui tables hold 64 columns at most).
+  std::map<std::size_t, std::size_t> xaosColumnPage;
   // A rotate handle turns the matrix it was pressed on by the angles dragged so far, so the
   // angles start at 0 on every press and the drag never accumulates rounding.
   std::string rotatingId;

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <functional>
 #include <fstream>
@@ -617,6 +618,74 @@ TEST_F(ExplorerFlameUi, DraggingATransformWeightIsOneUndoStep) {
   EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern()) << "a genome edit restarts the accumulation";
   pressKey('Z', true);
   EXPECT_EQ(flame(), before) << "the whole drag is one undo step";
+}
+
+// The xaos matrix (issue 25): row = the transform just applied, column = the next one. Dragging
+// one cell sets that one factor (the rest of its row filled with 1, the others untouched), and the
+// whole drag is one undo step; the row's and the matrix's resets are one step each.
+TEST_F(ExplorerFlameUi, DraggingAnXaosMatrixCellSetsThatPairAndIsOneUndoStep) {
+  useFlameLayer();
+  ASSERT_EQ(flame().xforms.size(), 3u);
+  ASSERT_FALSE(core::hasXaos(flame()));
+  click("layer0/Xaos");
+  const core::FlameGenome before = flame();
+  const std::size_t stepsBefore = state.history->size();
+  const auto cell = item("layer0/xaos 2 to 3");
+  drag(cell.centerX(), cell.centerY(), 40, 0);
+  ASSERT_EQ(flame().xforms[1].xaos.size(), 3u);
+  EXPECT_GT(flame().xforms[1].xaos[2], 1.0) << "dragging right raises transform 3's factor after transform 2";
+  EXPECT_LE(flame().xforms[1].xaos[2], 5.0);
+  EXPECT_EQ(flame().xforms[1].xaos[0], 1.0);
+  EXPECT_EQ(flame().xforms[1].xaos[1], 1.0);
+  EXPECT_TRUE(flame().xforms[0].xaos.empty()) << "other rows are untouched";
+  EXPECT_TRUE(flame().xforms[2].xaos.empty());
+  EXPECT_NO_THROW(core::validateFlame(flame(), "xaos edited"));
+  EXPECT_EQ(state.history->size(), stepsBefore + 1) << "the whole drag is one undo step";
+  const core::FlameGenome dragged = flame();
+
+  pressKey('Z', true);
+  EXPECT_EQ(flame(), before) << "undo restores the matrix";
+  pressKey('Z', true, true);
+  EXPECT_EQ(flame(), dragged) << "redo brings the drag back";
+
+  // Dragged far left, a cell stops at 0 (the step is forbidden), never below.
+  const auto forbid = item("layer0/xaos 1 to 1");
+  drag(forbid.centerX(), forbid.centerY(), -400, 0);
+  ASSERT_EQ(flame().xforms[0].xaos.size(), 1u);
+  EXPECT_EQ(flame().xforms[0].xaos[0], 0.0);
+
+  click("layer0/xaos reset 2");
+  EXPECT_TRUE(flame().xforms[1].xaos.empty()) << "a row resets alone";
+  EXPECT_FALSE(flame().xforms[0].xaos.empty());
+  pressKey('Z', true);
+  EXPECT_EQ(flame().xforms[1].xaos, dragged.xforms[1].xaos) << "a row reset is one undo step";
+  click("layer0/Reset xaos");
+  EXPECT_FALSE(core::hasXaos(flame()));
+  for (const core::FlameXform& x : flame().xforms) EXPECT_TRUE(x.xaos.empty());
+}
+
+// ImGui tables hold at most 64 columns and a flame up to 128 transforms: a wide flame's matrix
+// shows its columns a page at a time, and a cell of a later page edits its own column.
+TEST_F(ExplorerFlameUi, AWideFlamesXaosMatrixPagesItsColumns) {
+  useFlameLayer();
+  core::Scene scene = state.scene;
+  scene.layers[0].flame.xforms.resize(40, scene.layers[0].flame.xforms[0]);
+  app::resetExplorerState(state, scene);
+  frame(2);
+  click("layer0/Xaos");
+  EXPECT_NO_THROW(item("layer0/xaos 1 to 32"));
+  EXPECT_THROW(item("layer0/xaos 1 to 33"), std::runtime_error) << "the first page holds 32 columns";
+  click("layer0/xaos columns");
+  click("layer0/xaos columns/to 33–40");
+  probe.items.clear();
+  frame();
+  EXPECT_THROW(item("layer0/xaos 1 to 32"), std::runtime_error);
+  const auto cell = item("layer0/xaos 1 to 35");
+  drag(cell.centerX(), cell.centerY(), 40, 0);
+  ASSERT_EQ(flame().xforms[0].xaos.size(), 35u);
+  EXPECT_GT(flame().xforms[0].xaos[34], 1.0);
+  EXPECT_EQ(std::count(flame().xforms[0].xaos.begin(), flame().xforms[0].xaos.end(), 1.0), 34);
+  EXPECT_NO_THROW(core::validateFlame(flame(), "wide xaos"));
 }
 
 TEST_F(ExplorerFlameUi, TheRotateHandleTurnsTheMapAndBumpsTheGeneration) {
