@@ -6,6 +6,7 @@
 #include <memory>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 #include <oneapi/tbb/blocked_range.h>
@@ -40,11 +41,16 @@ struct Arena {
   std::shared_ptr<tbb::task_arena> arena;
   std::shared_ptr<WorkerNamer> namer;  // observes `arena`
   int threads = 0;
+  // Arenas replaced by a new cap, kept with their namers still observing. oneTBB frees an
+  // observer's record only once no worker is looking at it, which may be after the process has
+  // exited; kept observing, the record stays reachable instead of showing up as a leak.
+  std::vector<std::pair<std::shared_ptr<tbb::task_arena>, std::shared_ptr<WorkerNamer>>> retired;
 };
 
+// Never destroyed, for the same reason: its namer would stop observing during the process's exit.
 Arena& arena() {
-  static Arena instance;
-  return instance;
+  static Arena* const instance = new Arena;
+  return *instance;
 }
 
 [[maybe_unused]] std::shared_ptr<tbb::task_arena> currentArena() {
@@ -117,8 +123,9 @@ void setTaskConcurrency(int threads) {
   const int wanted = threads > 0 ? threads : hardwareThreads();
   if (wanted == a.threads && a.arena) return;
   a.threads = wanted;
-  a.namer.reset();  // stops observing before its arena may go
+  if (a.arena) a.retired.emplace_back(std::move(a.arena), std::move(a.namer));
   a.arena.reset();  // made afresh with the new cap on the next call
+  a.namer.reset();
 }
 
 int taskConcurrency() {
