@@ -34,7 +34,7 @@ namespace {
 
 // At least this many flames of the corpus import whole, and at most this many are refused.
 constexpr double kWholeShareGoal = 0.95;        // the goal, reported beside the threshold
-constexpr double kWholeShareThreshold = 0.936;  // 251 of 268
+constexpr double kWholeShareThreshold = 0.951;  // 255 of 268
 constexpr std::size_t kRefusedLimit = 0;
 
 const std::filesystem::path kCorpus = VOXFLAME_TEST_FLAMES;
