@@ -485,3 +485,81 @@ TEST(ChaosGame, FlattenSetsTheTransformsDepthToZero) {
   for (std::size_t i = 0; i < kLanes; ++i) EXPECT_EQ(run.z[i], 0.0);
   EXPECT_NE(run.x[0], 0.0);
 }
+
+// JWildfire's shredlin assigns its x and y: the terms before it on the transform are discarded in
+// x and y (their z is kept and shredlin adds its own), those after it add as usual. (0.3, −0.7, 0.5)
+// through shredlin's default strips goes to (0.32, −0.48) at weight 0.8 (see its point case).
+TEST(ChaosGame, AnAssigningTermDiscardsTheSumBeforeIt) {
+  FlameGenome genome;
+  FlameXform x = xform(1.0, Affine3{});
+  x.variations = {{"linear3D", 2.0, {}}, {"shredlin", 0.8, {1.0, 0.5, 1.0, 0.5}}, {"linear", 0.5, {}}};
+  genome.xforms = {x};
+  const ChaosGame game(flameLayer(genome), "test");
+  LaneRun run(game);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    run.lanes.x[i] = 0.3;
+    run.lanes.y[i] = -0.7;
+    run.lanes.z[i] = 0.5;
+  }
+  run.step(game);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    EXPECT_NEAR(run.x[i], 0.32 + 0.5 * 0.3, 1e-12);
+    EXPECT_NEAR(run.y[i], -0.48 + 0.5 * -0.7, 1e-12);
+    EXPECT_NEAR(run.z[i], (2.0 + 0.8 + 0.5) * 0.5, 1e-12);
+  }
+  // Fractorium's mirror_x discards all three coordinates of the sum before it.
+  x.variations = {{"linear3D", 2.0, {}}, {"mirror_x", 1.0, {}}};
+  genome.xforms = {x};
+  const ChaosGame mirrored(flameLayer(genome), "test");
+  LaneRun again(mirrored);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    again.lanes.x[i] = 0.3;
+    again.lanes.y[i] = -0.7;
+    again.lanes.z[i] = 0.5;
+  }
+  again.step(mirrored);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    EXPECT_NEAR(std::abs(again.x[i]), 0.3, 1e-12);
+    EXPECT_NEAR(again.y[i], -0.7, 1e-12);
+    EXPECT_NEAR(again.z[i], 0.5, 1e-12);
+  }
+}
+
+// Fractorium's post_depth adds the transform's affine point t, not the sum it maps: with the
+// identity map t = (0.3, −0.7, 0.5), linear at 0.5 sums to s = t/2, |s_z| = 0.25, and post_depth
+// (weight 1, power 1) gives t + 0.25 s = 1.125 t. A pre_ term before it moves t for both.
+TEST(ChaosGame, PostDepthAddsTheTransformsAffinePoint) {
+  FlameGenome genome;
+  FlameXform x = xform(1.0, Affine3{});
+  x.variations = {{"linear", 0.5, {}}, {"post_depth", 1.0, {1.0}}};
+  genome.xforms = {x};
+  const ChaosGame game(flameLayer(genome), "test");
+  LaneRun run(game);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    run.lanes.x[i] = 0.3;
+    run.lanes.y[i] = -0.7;
+    run.lanes.z[i] = 0.5;
+  }
+  run.step(game);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    EXPECT_NEAR(run.x[i], 1.125 * 0.3, 1e-12);
+    EXPECT_NEAR(run.y[i], 1.125 * -0.7, 1e-12);
+    EXPECT_NEAR(run.z[i], 1.125 * 0.5, 1e-12);
+  }
+  // pre_ztranslate 0.3 first: t = (0.3, −0.7, 0.8), s = t/2, |s_z| = 0.4: t + 0.4 s = 1.2 t.
+  x.variations = {{"pre_ztranslate", 0.3, {}}, {"linear", 0.5, {}}, {"post_depth", 1.0, {1.0}}};
+  genome.xforms = {x};
+  const ChaosGame moved(flameLayer(genome), "test");
+  LaneRun again(moved);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    again.lanes.x[i] = 0.3;
+    again.lanes.y[i] = -0.7;
+    again.lanes.z[i] = 0.5;
+  }
+  again.step(moved);
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    EXPECT_NEAR(again.x[i], 1.2 * 0.3, 1e-12);
+    EXPECT_NEAR(again.y[i], 1.2 * -0.7, 1e-12);
+    EXPECT_NEAR(again.z[i], 1.2 * 0.8, 1e-12);
+  }
+}

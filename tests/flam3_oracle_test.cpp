@@ -95,6 +95,9 @@ TEST(Flam3Oracle, DeterministicVariationsMatchLibflam3) {
       in.weight = 0.8;
       in.params = params.data();
       in.affine = identity;
+      in.tx = &x;
+      in.ty = &y;
+      in.tz = &z;
       info.apply(in, &outX, &outY, &outZ);
       const double tolerance = 1e-9 * std::max(1.0, std::abs(q[0]) + std::abs(q[1]));
       EXPECT_NEAR(outX, q[0], tolerance) << "at (" << point[0] << ", " << point[1] << ")";

@@ -322,6 +322,13 @@ const std::vector<PointCase>& pointCases() {
       // 0.3 and 0.45 with a negative width.
       {"shredlin", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.32, -0.48, 0.4}},
       {"shredlin", {0.3, 0.2, 0.45, -0.6}, {1.37, -2.21, 0.5}, 0.8, kHighSeed, {1.0832, -1.5312, 0.4}},
+      // crop_trapezoid's default trapezoid is 0.5 wide each side at y = −0.5 and 0.2 at y = 0.5, so
+      // 0.35 − 0.3y at height y: at y = −0.2 it reaches 0.41 > 0.3 and the point is kept, w·p.
+      {"crop_trapezoid", {}, {0.3, -0.2, 0.5}, 0.8, kHighSeed, {0.24, -0.16, 0.4}},
+      // At y = 0.2 it reaches only 0.29 < 0.3: the point is outside, which invert keeps.
+      {"crop_trapezoid", {0.5, 0.2, 0.5, 1.0}, {0.3, 0.2, 0.5}, 0.8, kHighSeed, {0.24, 0.16, 0.4}},
+      // Bases 1 and 0.6, height 0.25: at y = 0.1 the width is 0.8 − 0.8·0.1 = 0.72 > |−0.7|.
+      {"crop_trapezoid", {1.0, 0.6, 0.25, 0.0}, {-0.7, 0.1, 0.5}, 0.8, kHighSeed, {-0.56, 0.08, 0.4}},
   };
   return cases;
 }
@@ -364,6 +371,22 @@ TEST(FlameVariationMore, PrePostFormsReplaceThePointUnlessTheVariationIsABlur) {
   EXPECT_EQ(variationStage("pre_mirror_x"), VariationStage::Pre);
 }
 
+// crop_trapezoid drops what lies outside its trapezoid (NaN, the chaos game's escape, where
+// JWildfire hides the point): beside the slanted side at y = 0.2 (width 0.29), above the top
+// (|y| > height) and beyond the wide base; invert drops the inside instead.
+TEST(FlameVariationMore, CropTrapezoidDropsThePointsItCrops) {
+  const VariationInfo& info = variationOrThrow("crop_trapezoid");
+  const std::vector<double> defaults = info.defaultParams(), inverted = {0.5, 0.2, 0.5, 1.0};
+  for (const glm::dvec3 p : {glm::dvec3{0.3, 0.2, 0.5}, glm::dvec3{0.0, 0.7, 0.5}, glm::dvec3{-0.52, -0.45, 0.5}}) {
+    const Outputs out = run(info, defaults, p, 0.8, kHighSeed, 5);
+    for (std::size_t lane = 0; lane < out.x.size(); ++lane) {
+      EXPECT_TRUE(std::isnan(out.x[lane]) && std::isnan(out.y[lane]) && std::isnan(out.z[lane])) << p.x << ", " << p.y;
+    }
+  }
+  const Outputs inside = run(info, inverted, {0.3, -0.2, 0.5}, 0.8, kHighSeed, 5);
+  EXPECT_TRUE(std::isnan(inside.x[0]));
+}
+
 // One flame of one transform whose attributes are `xform`, as a flame file writes it.
 ImportedFlame importXform(const std::string& xform) {
   const std::string text = "<flames><flame name=\"t\" size=\"64 64\"><xform weight=\"1\" color=\"0\" " + xform +
@@ -394,17 +417,33 @@ TEST(FlameVariationMore, PixelFlowReadsItsBareParameterNames) {
   EXPECT_EQ(direct.leftOut, (std::vector<std::string>{"direct colour of pixel_flow"}));
 }
 
-// JWildfire's shredlin replaces the x and y of the ordinary terms before it: said when there are any.
-TEST(FlameVariationMore, ShredlinAndMirrorsAfterOtherVariationsAreNamed) {
+// JWildfire's shredlin and crop_trapezoid replace the x and y of the ordinary terms before them,
+// Fractorium's mirror_x all of the sum: the chaos game does so (chaos_game_test.cpp), so nothing
+// is lost wherever they come.
+TEST(FlameVariationMore, ShredlinAndMirrorsAfterOtherVariationsAreWhole) {
   const ImportedFlame first = importXform(R"(shredlin="1" linear="0.5" coefs="1 0 0 1 0 0")");
   EXPECT_TRUE(first.leftOut.empty()) << first.leftOut.front();
   const ImportedFlame after = importXform(R"(poincare3D="1.5" shredlin="3.7" coefs="1 0 0 1 0 0")");
-  EXPECT_EQ(after.leftOut, (std::vector<std::string>{"terms before shredlin"}));
-  // Fractorium's mirror_x as an ordinary term discards the sum before it; as a pre_ term it does not.
+  EXPECT_TRUE(after.leftOut.empty()) << after.leftOut.front();
   const ImportedFlame mirror = importXform(R"(linear="1" mirror_x="1" coefs="1 0 0 1 0 0")");
-  EXPECT_EQ(mirror.leftOut, (std::vector<std::string>{"terms before mirror_x"}));
-  const ImportedFlame pre = importXform(R"(linear="1" pre_mirror_x="0.05" coefs="1 0 0 1 0 0")");
-  EXPECT_TRUE(pre.leftOut.empty()) << pre.leftOut.front();
+  EXPECT_TRUE(mirror.leftOut.empty()) << mirror.leftOut.front();
+  EXPECT_EQ(variationOrThrow("shredlin").replaces, VariationInfo::Replaces::XY);
+  EXPECT_EQ(variationOrThrow("crop_trapezoid").replaces, VariationInfo::Replaces::XY);
+  EXPECT_EQ(variationOrThrow("mirror_x").replaces, VariationInfo::Replaces::XYZ);
+  EXPECT_EQ(variationOrThrow("linear").replaces, VariationInfo::Replaces::Nothing);
+}
+
+// JWildfire writes crop_trapezoid's bases as "Base Sup." and "Base Inf.", which are not XML names:
+// they are read into base_sup and base_inf.
+TEST(FlameVariationMore, CropTrapezoidReadsJwildfiresBaseNames) {
+  const ImportedFlame flame = importXform(
+      R"(crop_trapezoid="0.2" crop_trapezoid_fx_priority="0" crop_trapezoid_Base Sup.="0.7" )"
+      R"(crop_trapezoid_Base Inf.="0.3" crop_trapezoid_height="0.4" crop_trapezoid_invert="1" coefs="1 0 0 1 0 0")");
+  EXPECT_TRUE(flame.leftOut.empty()) << flame.leftOut.front();
+  const auto& terms = flame.genome.xforms.at(0).variations;
+  ASSERT_EQ(terms.size(), 1u);
+  EXPECT_EQ(terms[0].name, "crop_trapezoid");
+  EXPECT_EQ(terms[0].params, (std::vector<double>{0.7, 0.3, 0.4, 1.0}));
 }
 
 // JWildfire's zxCoefs and yzCoefs compose with coefs into one 3D affine map: (x, y, z) = (1, 2, 3)
@@ -430,11 +469,14 @@ TEST(FlameVariationMore, JwildfirePlaneCoefficientsBecomeOneAffineMap) {
   EXPECT_NEAR(q.z, 6.3, 1e-12);
 }
 
-// Fractorium's post_depth needs the point from before the variations: left out, and said so.
-TEST(FlameVariationMore, PostDepthIsLeftOutAndPreDepthKept) {
+// Fractorium's post_depth adds the transform's affine point (chaos_game_test.cpp): kept, as is
+// pre_depth.
+TEST(FlameVariationMore, PostAndPreDepthAreKept) {
   const ImportedFlame post = importXform(R"(linear="1" post_depth="1" post_depth_power="1" coefs="1 0 0 1 0 0")");
-  EXPECT_EQ(post.leftOut, (std::vector<std::string>{"variation post_depth"}));
-  EXPECT_EQ(post.genome.xforms.at(0).variations.size(), 1u);
+  EXPECT_TRUE(post.leftOut.empty()) << post.leftOut.front();
+  const auto& postTerms = post.genome.xforms.at(0).variations;
+  EXPECT_TRUE(
+      std::any_of(postTerms.begin(), postTerms.end(), [](const VariationTerm& t) { return t.name == "post_depth"; }));
   const ImportedFlame pre = importXform(R"(linear="1" pre_depth="1.06" pre_depth_power="1" coefs="1 0 0 1 0 0")");
   EXPECT_TRUE(pre.leftOut.empty());
   const auto& terms = pre.genome.xforms.at(0).variations;

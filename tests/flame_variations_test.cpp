@@ -552,6 +552,22 @@ const std::vector<PointCase>& pointCases() {
        {-0.4838346073060228, -0.4408113341984156, 0.4}},
       {"hypertile1", {5.0, 4.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.5449061538269068, 0.021860090720345202, 0.4}},
       {"hypertile2", {5.0, 4.0}, {0.3, -0.7, 0.5}, 0.8, 0x2545F491u, {0.45097812516045593, 0.5602137803897976, 0.4}},
+      // hypertile3D1 at p = 5, q = 4: Ψ = 0.879466 picks neighbour ⌊5Ψ⌋ = 4, a = 8π/5; the tile
+      // distance r = 1/√(1 + (1 − cos 72°)/cos 72°) = 0.5559; c = r (cos a, sin a), |p|² = 0.83,
+      // d = 0.8/(r²|p|² + 2 cx x − 2 cy y + 1), then d (x (1 + cx² − cy²) − cx (2 cy y − |p|² − 1), …).
+      {"hypertile3D1",
+       {5.0, 4.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x2545F491u,
+       {0.5324096493122965, 0.18984460871076292, 0.4462327626152746}},
+      // JWildfire's example208 uses p = 3, q = 8; Ψ = 0.316594 picks neighbour 0, c = (r, 0).
+      {"hypertile3D1",
+       {3.0, 8.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       0x9E3779B9u,
+       {0.594834139478227, -0.3757098998181334, 0.2683642141558096}},
       {"hypertile3D2",
        {5.0, 4.0},
        {0.3, -0.7, 0.5},
@@ -877,6 +893,9 @@ TEST(VariationCatalogue, OddInputsNeverTrapOrDisturbOtherLanes) {
       in.weight = 0.7;
       in.params = params.data();
       in.affine = kAffine;
+      in.tx = xs.data();
+      in.ty = ys.data();
+      in.tz = zs.data();
       info.apply(in, ox.data(), oy.data(), oz.data());
       for (std::size_t i = 0; i < lanes; ++i) EXPECT_NE(random[i], 0u) << "lane " << i;
       for (std::size_t i = 1; i < lanes; i += 2) {
@@ -896,7 +915,8 @@ TEST(VariationCatalogue, OddInputsNeverTrapOrDisturbOtherLanes) {
 }
 
 // Ordinary points (inside the unit cube, away from the origin) give finite results for every
-// variation at its default parameters: no variation is NaN by construction.
+// variation at its default parameters: no variation is NaN by construction, but for
+// crop_trapezoid's dropped points.
 TEST(VariationCatalogue, DefaultsGiveFiniteResultsInTheUnitCube) {
   std::uint32_t state = 12345u;
   const std::size_t lanes = 4096;
@@ -920,10 +940,17 @@ TEST(VariationCatalogue, DefaultsGiveFiniteResultsInTheUnitCube) {
     in.weight = 1.0;
     in.params = params.data();
     in.affine = kAffine;
+    in.tx = xs.data();
+    in.ty = ys.data();
+    in.tz = zs.data();
     info.apply(in, ox.data(), oy.data(), oz.data());
+    // crop_trapezoid drops what it crops (NaN in all three, the chaos game's escape) by design.
+    const bool drops = info.name == "crop_trapezoid";
     std::size_t bad = 0;
-    for (std::size_t i = 0; i < lanes; ++i)
+    for (std::size_t i = 0; i < lanes; ++i) {
+      if (drops && std::isnan(ox[i]) && std::isnan(oy[i]) && std::isnan(oz[i])) continue;
       if (!std::isfinite(ox[i]) || !std::isfinite(oy[i]) || !std::isfinite(oz[i])) ++bad;
+    }
     EXPECT_EQ(bad, 0u) << info.name;
   }
 }
@@ -981,7 +1008,8 @@ ChaosRun runInTheChaosGame(const std::string& name, double weight) {
 TEST(VariationCatalogue, EveryVariationRunsInTheChaosGameAndEscapesReseed) {
   for (const VariationInfo& info : variationCatalogue()) {
     const ChaosRun normal = runInTheChaosGame(info.name, 1.0);
-    EXPECT_GT(normal.finiteShare, 0.5) << info.name;
+    // crop_trapezoid drops whatever leaves its small default trapezoid (over half the points here).
+    EXPECT_GT(normal.finiteShare, info.name == "crop_trapezoid" ? 0.2 : 0.5) << info.name;
     EXPECT_TRUE(normal.statesStayUsable) << info.name;
     const ChaosRun wild = runInTheChaosGame(info.name, 1e6);
     EXPECT_TRUE(wild.statesStayUsable) << info.name << " at weight 1e6";

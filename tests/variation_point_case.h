@@ -60,6 +60,9 @@ inline Outputs run(const core::VariationInfo& info, const std::vector<double>& p
   in.weight = weight;
   in.params = params.data();
   in.affine = kAffine;
+  in.tx = xs.data();
+  in.ty = ys.data();
+  in.tz = zs.data();
   info.apply(in, out.x.data(), out.y.data(), out.z.data());
   return out;
 }

@@ -167,7 +167,7 @@ VOXFLAME_CHAOS_TARGETS void emitPoints(const double* x, const double* y, const d
 }  // namespace
 
 void ChaosLanes::resize(std::size_t lanes) {
-  for (auto* v : {&x, &y, &z, &w, &color, &tx, &ty, &tz, &ox, &oy, &oz}) v->assign(lanes, 0.0);
+  for (auto* v : {&x, &y, &z, &w, &color, &tx, &ty, &tz, &ox, &oy, &oz, &sx, &sy, &sz}) v->assign(lanes, 0.0);
   random.assign(lanes, 1u);
   groupRandom.assign(lanes, 1u);
   visible.assign(lanes, 1);
@@ -189,7 +189,7 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
       if (term.weight == 0.0 || variationStage(term.name) != stage) continue;
       const VariationInfo& info = variationOrThrow(term.name);
       c.terms.push_back({info.apply, term.weight, term.params, stage, info.mapsXY, info.threeD, info.additive,
-                         info.name == "flatten"});
+                         info.name == "flatten", info.replaces});
       c.hasNormalTerms = c.hasNormalTerms || stage == VariationStage::Normal;
     }
   return c;
@@ -282,6 +282,9 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   double* __restrict ox = lanes.ox.data();
   double* __restrict oy = lanes.oy.data();
   double* __restrict oz = lanes.oz.data();
+  double* __restrict sx = lanes.sx.data();
+  double* __restrict sy = lanes.sy.data();
+  double* __restrict sz = lanes.sz.data();
   const auto clear = [&](double* a, double* b, double* c) {
     for (std::size_t j = 0; j < count; ++j) a[j] = b[j] = c[j] = 0.0;
   };
@@ -289,6 +292,9 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   in.random = lanes.groupRandom.data();
   in.count = count;
   in.affine = xform.affine.data();
+  in.tx = tx;
+  in.ty = ty;
+  in.tz = tz;
   const auto run = [&](const Term& term, const double* x, const double* y, const double* z, double* rx, double* ry,
                        double* rz) {
     in.x = x;
@@ -318,16 +324,26 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   }
   bool flatten = false;
   for (; k < xform.terms.size() && xform.terms[k].stage == VariationStage::Normal; ++k) {
+    // A term that assigns instead of adding (JWildfire's shredlin, Fractorium's mirror_x) discards
+    // the sum so far.
+    if (xform.terms[k].replaces != VariationInfo::Replaces::Nothing) {
+      const bool all = xform.terms[k].replaces == VariationInfo::Replaces::XYZ;
+      for (std::size_t j = 0; j < count; ++j) {
+        ox[j] = 0.0;
+        oy[j] = 0.0;
+        oz[j] = all ? 0.0 : oz[j];
+      }
+    }
     run(xform.terms[k], tx, ty, tz, ox, oy, oz);
     flatten = flatten || xform.terms[k].flattens;
   }
   if (flatten)
     for (std::size_t j = 0; j < count; ++j) oz[j] = 0.0;
-  // post_ terms: each maps the sum o in place (t, no longer needed, is their scratch).
+  // post_ terms: each maps the sum o in place (s is their scratch; t stays for those that read it).
   for (; k < xform.terms.size(); ++k) {
-    clear(tx, ty, tz);
-    run(xform.terms[k], ox, oy, oz, tx, ty, tz);
-    combineStage(ox, oy, oz, tx, ty, tz, xform.terms[k].mapsXY, xform.terms[k].mapsZ, xform.terms[k].additive, count);
+    clear(sx, sy, sz);
+    run(xform.terms[k], ox, oy, oz, sx, sy, sz);
+    combineStage(ox, oy, oz, sx, sy, sz, xform.terms[k].mapsXY, xform.terms[k].mapsZ, xform.terms[k].additive, count);
     if (xform.terms[k].flattens)
       for (std::size_t j = 0; j < count; ++j) oz[j] = 0.0;
   }

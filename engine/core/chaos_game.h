@@ -35,6 +35,7 @@ struct ChaosLanes {
   std::vector<std::uint8_t> previous;
   std::vector<std::uint32_t> order;
   std::vector<double> tx, ty, tz, ox, oy, oz;
+  std::vector<double> sx, sy, sz;  // a post_ term's result (t is still read then)
   std::vector<std::uint32_t> groupRandom;
   void resize(std::size_t lanes);
   std::size_t size() const { return x.size(); }
@@ -67,8 +68,9 @@ class ChaosGame {
     double weight = 1.0;
     std::vector<double> params;
     VariationStage stage = VariationStage::Normal;
-    bool mapsXY = true, mapsZ = false, additive = false;  // how a pre_/post_ form combines
-    bool flattens = false;                                // flatten: z is 0 after this stage
+    bool mapsXY = true, mapsZ = false, additive = false;                  // how a pre_/post_ form combines
+    bool flattens = false;                                                // flatten: z is 0 after this stage
+    VariationInfo::Replaces replaces = VariationInfo::Replaces::Nothing;  // as an ordinary term
   };
   struct Compiled {
     std::array<double, 12> affine{};

@@ -1892,6 +1892,30 @@ VOXFLAME_VARIATION_TARGETS void hypertile3D2(const VariationInput& in, double* _
   }
 }
 
+// hypertile3D1: hypertile1's move towards one of the p neighbours, picked at random, in the unit
+// ball: the move c = r (cos a, sin a, 0) for a random multiple a of 2π/p, with z shrunk by 1 − r²
+// (Zueuk's plugin, as JWildfire and Fractorium have it).
+VOXFLAME_VARIATION_TARGETS void hypertile3D1(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                             double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double p = fractoriumZeps(P[0]), q = fractoriumZeps(P[1]);
+  const double pa = kTwoPi / p, qa = kTwoPi / q;
+  const double t = -(std::cos(pa) - 1.0) / (std::cos(pa) + std::cos(qa));
+  const double r = t > 0.0 ? 1.0 / std::sqrt(1.0 + t) : 1.0;
+  const double r2c = r * r, sz = 1.0 - r2c;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double turn = tilingTurn(laneUniform(rnd[i]), p);
+    const double cx = r * std::cos(turn), cy = r * std::sin(turn);
+    const double sx = 1.0 + cx * cx - cy * cy, sy = 1.0 + cy * cy - cx * cx;
+    const double r2 = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+    const double tx = 2.0 * cx * x[i], ty = 2.0 * cy * y[i];
+    const double d = w / fractoriumZeps(r2c * r2 + tx - ty + 1.0);
+    outX[i] += d * (x[i] * sx - cx * (ty - r2 - 1.0));
+    outY[i] += d * (y[i] * sy + cy * (-tx - r2 - 1.0));
+    outZ[i] += d * z[i] * sz;
+  }
+}
+
 // Apophysis 7X's rotations (JWildfire's pre_/post_rotate_*, Fractorium's rotate_*): the point
 // turned about an axis by weight·π/2. The weight is the angle, not a scale, so these add the turned
 // point itself; their pre_ and post_ forms, the usual ones, replace the point by it.
@@ -2662,6 +2686,11 @@ std::vector<VariationInfo> buildCatalogue() {
       "(p + ρ)/(ρ p + 1) turned by −2π·trunc(Ψ·|p|)/p (by −2πΨ for a p that is not whole), p = x + iy, ρ as "
       "hypertile; z (Zueuk's)",
       k2D, kRandom, &hypertile2, {{"p", 3.0, 3.0, 10.0}, {"q", 7.0, 3.0, 10.0}});
+  add("hypertile3D1",
+      "d (x (1 + cx² − cy²) − cx (2 cy y − |p|² − 1), y (1 + cy² − cx²) − cy (2 cx x + |p|² + 1), z (1 − r²)), "
+      "d = 1/(r² |p|² + 2 cx x − 2 cy y + 1); (cx, cy) = r (cos a, sin a), a = ⌊Ψ·p⌋·2π/p a random neighbouring "
+      "tile (2πΨ for a p that is not whole), r = 1/√(1 + (1 − cos 2π/p)/(cos 2π/p + cos 2π/q)) (Zueuk's)",
+      k3D, kRandom, &hypertile3D1, {{"p", 3.0, 3.0, 10.0}, {"q", 7.0, 3.0, 10.0}});
   add("hypertile3D2",
       "(x (1 + c²) + c (|p|² + 1), y (1 − c²), z (1 − c²)) / (c² |p|² + 2cx + 1), x and y turned as hypertile2; "
       "c = 1/√(1 + (1 − cos 2π/p)/(cos 2π/p + cos 2π/q)) (Zueuk's)",
@@ -2801,6 +2830,9 @@ bool resultIgnoresThePoint(const VariationInfo& info) {
     in.count = 1;
     in.params = params.data();
     in.affine = kAffine;
+    in.tx = &x;
+    in.ty = &y;
+    in.tz = &z;
     info.apply(in, &ox, &oy, &oz);
     return std::array<double, 3>{info.mapsXY ? ox : 0.0, info.mapsXY ? oy : 0.0, info.threeD ? oz : 0.0};
   };

@@ -57,6 +57,12 @@ struct VariationInput {
   double weight = 1.0;
   const double* params = nullptr;  // the variation's parameters, in the catalogue's order
   const double* affine = nullptr;  // the transform's pre-affine, row-major 3×4 (see flame.h)
+  // The transform's point after its affine map and pre_ terms, which its ordinary terms map: for
+  // pre_ and ordinary terms the same arrays as x, y, z; for a post_ term the point that the sum it
+  // maps came from (Fractorium's depth adds it).
+  const double* tx = nullptr;
+  const double* ty = nullptr;
+  const double* tz = nullptr;
 };
 
 // Adds weight · V(p) to (outX, outY, outZ) for every lane of `in`.
@@ -80,6 +86,11 @@ struct VariationInfo {
   // Its result does not depend on the point (blurs, ztranslate): a pre_/post_ form adds to the
   // point instead of replacing it. Worked out from the function when the catalogue is built.
   bool additive = false;
+  // What of the sum of the ordinary terms before it an ordinary term of this variation discards:
+  // JWildfire's shredlin and crop_trapezoid assign x and y where others add them, Fractorium's
+  // mirror_x/y/z clear all three. The chaos game clears those coordinates before the term adds.
+  enum class Replaces { Nothing, XY, XYZ };
+  Replaces replaces = Replaces::Nothing;
   VariationFn apply = nullptr;
 
   int paramIndex(std::string_view paramName) const;  // -1 when absent

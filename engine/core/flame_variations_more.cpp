@@ -28,8 +28,8 @@ constexpr double kJwfEpsilon = 1e-8;
 
 // Fractorium's mirror_x/y/z: one coordinate's absolute value, negated half the time (Ψ < ½); the
 // weight is not applied (Fractorium ignores it). Fractorium meant them as pre_/post_ terms; as an
-// ordinary term Fractorium also discards the terms summed before it, which a sum cannot do, so
-// here it simply adds its point (and the importer names a file's mirror after other terms).
+// ordinary term Fractorium also discards the terms summed before it, and so does the chaos game
+// here (VariationInfo::replaces).
 VOXFLAME_VARIATION_TARGETS void mirrorX(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                         double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
@@ -220,19 +220,22 @@ VOXFLAME_VARIATION_TARGETS void powBlock(const VariationInput& in, double* __res
   }
 }
 
-// Fractorium's depth: the point plus itself scaled by |z|^power. Fractorium adds the transform's
-// affine point, which for ordinary and pre_ terms is the point itself; a post_ term would need the
-// point from before the variations, which the importer therefore refuses to fake.
+// Fractorium's depth: the point scaled by |z|^power, plus the transform's affine point t (in.tx),
+// which for ordinary and pre_ terms is the point itself; for post_depth, the point the transform's
+// variations summed from.
 VOXFLAME_VARIATION_TARGETS void depth(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                       double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double* __restrict tx = in.tx;
+  const double* __restrict ty = in.ty;
+  const double* __restrict tz = in.tz;
   const double power = P[0];
   for (std::size_t i = 0; i < n; ++i) {
     double coeff = std::abs(z[i]);
     if (coeff != 0.0 && power != 1.0) coeff = std::exp(std::log(coeff) * power);
-    outX[i] += w * (x[i] + x[i] * coeff);
-    outY[i] += w * (y[i] + y[i] * coeff);
-    outZ[i] += w * (z[i] + z[i] * coeff);
+    outX[i] += w * (tx[i] + x[i] * coeff);
+    outY[i] += w * (ty[i] + y[i] * coeff);
+    outZ[i] += w * (tz[i] + z[i] * coeff);
   }
 }
 
@@ -905,8 +908,8 @@ VOXFLAME_VARIATION_TARGETS void nBlur(const VariationInput& in, double* __restri
 
 // shredlin (as JWildfire has it): each axis cut into strips of width distance, each strip narrowed
 // to `width` of itself about its middle. JWildfire assigns its x and y instead of adding them,
-// which discards the terms before it on the same transform; alone or first it is this sum (the
-// importer says so when it is not).
+// which discards the terms before it on the same transform: the chaos game clears them first
+// (VariationInfo::replaces), and the function adds to what is left.
 VOXFLAME_VARIATION_TARGETS void shredlin(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                          double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
@@ -925,6 +928,36 @@ VOXFLAME_VARIATION_TARGETS void shredlin(const VariationInput& in, double* __res
   }
 }
 
+// ---- crops ----------------------------------------------------------------------------------
+
+// crop_trapezoid (Jesus Sosa's, as JWildfire has it): keeps the point inside the trapezoid of
+// half-width base_sup at y = −height, base_inf at y = +height (its sides straight between), and
+// drops the rest (NaN: JWildfire hides it); invert keeps the outside instead. Inside or outside is
+// the sign of Inigo Quilez' signed distance to the trapezoid, the test JWildfire makes. JWildfire
+// assigns x and y (VariationInfo::replaces); z is carried.
+VOXFLAME_VARIATION_TARGETS void cropTrapezoid(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                              double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double r1 = P[0], r2 = P[1], he = P[2];
+  const bool invert = std::clamp(P[3], 0.0, 1.0) >= 1.0;  // JWildfire's (int) of the clamped value
+  // The slanted side from (r2, he) towards (r1, −he), as the vector k2 = (r2 − r1, 2 he).
+  const double k2x = r2 - r1, k2y = 2.0 * he, k2k2 = k2x * k2x + k2y * k2y;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double px = std::abs(x[i]), py = y[i];
+    // Beyond the flat sides (ca) and beyond the slanted one (cb).
+    const double cax = std::max(0.0, px - (py < 0.0 ? r1 : r2)), cay = std::abs(py) - he;
+    const double along = std::clamp(((r2 - px) * k2x + (he - py) * k2y) / k2k2, 0.0, 1.0);
+    const double cbx = px - r2 + k2x * along, cby = py - he + k2y * along;
+    const double sign = cbx < 0.0 && cay < 0.0 ? -1.0 : 1.0;
+    const double d = sign * std::sqrt(std::min(cax * cax + cay * cay, cbx * cbx + cby * cby));
+    const bool drop = invert ? d <= 0.0 : d > 0.0;
+    outX[i] += drop ? kNaN : w * x[i];
+    outY[i] += drop ? kNaN : w * y[i];
+    outZ[i] += drop ? kNaN : w * z[i];
+  }
+}
+
 }  // namespace
 
 void addMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -933,9 +966,18 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
                  kFixed = CatalogueAdder::kFixed;
   const auto count = &CatalogueAdder::count;
 
-  add("mirror_x", "(±|x|, y, z), − when Ψ < ½ (Fractorium's; the weight is not applied)", k2D, kRandom, &mirrorX);
-  add("mirror_y", "(x, ±|y|, z), − when Ψ < ½ (Fractorium's; the weight is not applied)", k2D, kRandom, &mirrorY);
-  add("mirror_z", "(x, y, ±|z|), − when Ψ < ½ (Fractorium's; the weight is not applied)", k3D, kRandom, &mirrorZ);
+  add("mirror_x",
+      "(±|x|, y, z), − when Ψ < ½ (Fractorium's; the weight is not applied, and the terms before it are discarded)",
+      k2D, kRandom, &mirrorX);
+  catalogue.back().replaces = VariationInfo::Replaces::XYZ;
+  add("mirror_y",
+      "(x, ±|y|, z), − when Ψ < ½ (Fractorium's; the weight is not applied, and the terms before it are discarded)",
+      k2D, kRandom, &mirrorY);
+  catalogue.back().replaces = VariationInfo::Replaces::XYZ;
+  add("mirror_z",
+      "(x, y, ±|z|), − when Ψ < ½ (Fractorium's; the weight is not applied, and the terms before it are discarded)",
+      k3D, kRandom, &mirrorZ);
+  catalogue.back().replaces = VariationInfo::Replaces::XYZ;
   add("axis_symmetry_wf",
       "the point with one coordinate u (x, y or z by axis) mirrored about the centre's and moved w/2 outward: "
       "u' = u + w/2 when Ψ < ½, else 2cu − u − w/2; then turned about the centre by ±rotation "
@@ -982,8 +1024,8 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
        {"correctn", 1.0, -4.0, 4.0},
        {"correctd", 1.0, -4.0, 4.0}});
   add("depth",
-      "p (1 + |z|^power) (Fractorium's; its post_ form, which adds the transform's affine point instead of p, is not "
-      "imported)",
+      "t + p |z|^power; t the transform's affine point: p itself, but for post_depth the point that the transform's "
+      "variations summed from (Fractorium's)",
       k3D, kFixed, &depth, {{"power", 1.0, -4.0, 4.0}});
   add("poincare3D",
       "(p (1 + 2c_i² − |c|²) + c (2 c·p − 2c_i p_i − |p|² − 1)) / (|c|²|p|² − 2 c·p + 1) per coordinate i; c = r (−cos "
@@ -1137,12 +1179,24 @@ void addMoreVariations(std::vector<VariationInfo>& catalogue) {
        {"highlightEdges", 1.0, 0.1, 4.0}});
   add("shredlin",
       "(xdistance ((u − [u]) xwidth + [u] + (½ − [x < 0])(1 − xwidth)), the same for y, z); u = x/xdistance, [u] "
-      "its integer part (JWildfire's, which replaces the sum of the terms before it; the importer names that case)",
+      "its integer part (JWildfire's, whose x and y replace those of the terms before it)",
       k2D, kFixed, &shredlin,
       {{"xdistance", 1.0, 0.05, 4.0},
        {"xwidth", 0.5, -1.0, 1.0},
        {"ydistance", 1.0, 0.05, 4.0},
        {"ywidth", 0.5, -1.0, 1.0}});
+  catalogue.back().replaces = VariationInfo::Replaces::XY;
+  add("crop_trapezoid",
+      "p where it lies inside the trapezoid of half-widths base_sup at y = −height and base_inf at y = height "
+      "(outside with invert), else nothing (the point is dropped, as JWildfire hides it); x and y replace those of "
+      "the terms before it (Jesus Sosa's, as JWildfire has it; files write base_sup as \"Base Sup.\" and base_inf "
+      "as \"Base Inf.\")",
+      k2D, kFixed, &cropTrapezoid,
+      {{"base_sup", 0.5, 0.0, 2.0},
+       {"base_inf", 0.2, 0.0, 2.0},
+       {"height", 0.5, 0.0, 2.0},
+       count("invert", 0.0, 0.0, 1.0)});
+  catalogue.back().replaces = VariationInfo::Replaces::XY;
 }
 
 }  // namespace voxflame::core

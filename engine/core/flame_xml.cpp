@@ -101,13 +101,16 @@ const VariationInfo* variationNamed(std::string_view name) {
 // and Apophysis' Mobius plugin (and FLAM3H after it) writes mobius' parameters bare and
 // capitalised (Re_A … Im_D). FracFx's octagon plugin for Apophysis names its offsets octa_x,
 // octa_y and octa_z (JWildfire's octagon_x ...); bezo97's pixel_flow plugin writes its parameters
-// bare (angle, len, ...).
+// bare (angle, len, ...). JWildfire's crop_trapezoid names two parameters "Base Sup." and
+// "Base Inf." (not XML names; tolerantXml keeps them), the catalogue's base_sup and base_inf.
 std::vector<std::string> fileParamNames(const std::string& termAttribute, const VariationInfo& info,
                                         const std::string& param) {
   std::vector<std::string> names = {termAttribute + "_" + param};
   if (info.name == "auger" && param == "strength") names.push_back(termAttribute + "_weight");
   if (info.name == "octagon" && param.size() == 1) names.push_back("octa_" + param);
   if (info.name == "pixel_flow") names.push_back(param);
+  if (info.name == "crop_trapezoid" && param == "base_sup") names.push_back(termAttribute + "_Base Sup.");
+  if (info.name == "crop_trapezoid" && param == "base_inf") names.push_back(termAttribute + "_Base Inf.");
   if (info.name == "mobius" && param.size() == 4) {
     std::string bare = param;
     bare[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(bare[0])));
@@ -637,25 +640,6 @@ class FlameReader {
           (info->name == "truchet" && std::round(term.params.at(6)) == 1.0)) {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
-      }
-      // JWildfire's shredlin assigns its x and y, discarding those of the ordinary terms before it;
-      // Fractorium's mirror_x/y/z as an ordinary term discards their whole sum.
-      const bool discardsEarlierTerms =
-          info->name == "shredlin" || info->name == "mirror_x" || info->name == "mirror_y" || info->name == "mirror_z";
-      if (discardsEarlierTerms && variationStage(term.name) == VariationStage::Normal &&
-          std::any_of(x.variations.begin(), x.variations.end(),
-                      [](const VariationTerm& t) { return variationStage(t.name) == VariationStage::Normal; })) {
-        lose("terms before " + withoutCopyMark(name));
-        warn(context + " has " + name + " after other variations, whose results " + name +
-             " discards where it comes from; voxflame adds them");
-      }
-      // Fractorium's post_depth adds the transform's affine point, which a post_ term does not see.
-      if (info->name == "depth" && variationStage(term.name) == VariationStage::Post) {
-        unknownVariations_.insert(withoutCopyMark(name));
-        warn(context +
-             " has Fractorium's post_depth, which needs the point from before the variations; it was "
-             "left out");
-        continue;
       }
       // smartcrop reads the point itself (static 2) and cannot keep the last point it let through
       // (cropmode 2), which the plugin's other modes need (flame_variations.cpp).
