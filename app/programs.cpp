@@ -36,7 +36,8 @@ std::optional<std::string> findOnPath(const std::string& program) {
   return std::nullopt;
 }
 
-int runProgram(const std::string& program, const std::vector<std::string>& arguments, std::string* output) {
+int runProgram(const std::string& program, const std::vector<std::string>& arguments, std::string* output,
+               bool collectErrors) {
   std::vector<char*> argv;
   for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
@@ -49,6 +50,7 @@ int runProgram(const std::string& program, const std::vector<std::string>& argum
     if (pipe(pipeEnds) != 0) throw core::Error("cannot start " + program + ": no pipe");
     posix_spawn_file_actions_addclose(&actions, pipeEnds[0]);
     posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDOUT_FILENO);
+    if (collectErrors) posix_spawn_file_actions_adddup2(&actions, pipeEnds[1], STDERR_FILENO);
     posix_spawn_file_actions_addclose(&actions, pipeEnds[1]);
   }
   pid_t child = 0;

@@ -13,8 +13,10 @@ std::optional<std::string> findOnPath(const std::string& program);
 
 // Runs the program with these arguments (argv[0] included; no shell, so no quoting) and returns
 // its exit status (128 + the signal when a signal ended it). With `output`, its standard output
-// is collected there instead of passing through; its standard error always passes through.
-int runProgram(const std::string& program, const std::vector<std::string>& arguments, std::string* output = nullptr);
+// is collected there instead of passing through; its standard error passes through, or with
+// `collectErrors` is collected there too.
+int runProgram(const std::string& program, const std::vector<std::string>& arguments, std::string* output = nullptr,
+               bool collectErrors = false);
 
 // The arguments as one shell command line, quoting those that need it.
 std::string shellQuoted(const std::vector<std::string>& arguments);

@@ -27,8 +27,8 @@ const std::vector<Benchmark>& benchmarks() {
        "10× the points, and seconds",
        &benchQuality},
       {"flame",
-       "chaos-game samples per second on 2 threads against flam3-render (when installed) on the same 4-transform "
-       "genome",
+       "chaos-game samples per second on 2 threads against flam3-render (when installed) on the same genomes: "
+       "flam3's 4-transform sample and the heaviest corpus flame flam3-render renders",
        &benchFlame},
       {"rest",
        "the live view on each shipped preset (or the ones named) at its own grid: seconds until it rests and why, "

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "bench.h"
+#include "flam3_runs.h"
 #include "core/error.h"
 #include "core/flame_xml.h"
 #include "core/flat_render.h"
@@ -40,23 +41,10 @@ constexpr double kQuality = 400.0;
 constexpr std::size_t kMaxDefaultFlames = 20;
 constexpr const char* kFlam3Test = "/usr/share/flam3/test.flam3";
 
-std::string fileBytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::vector<std::filesystem::path> defaultFlames() {
   std::vector<std::filesystem::path> files;
   if (std::filesystem::exists(kFlam3Test)) files.emplace_back(kFlam3Test);
-  std::filesystem::path corpus = std::filesystem::path(VOXFLAME_SOURCE_DIR) / "../shared/data/flames";
-  if (const char* env = std::getenv("VOXFLAME_FLAMES")) corpus = env;
-  std::vector<std::filesystem::path> found;
-  std::error_code error;
-  for (const auto& entry : std::filesystem::directory_iterator(corpus, error))
-    if (core::isFlameFilePath(entry.path())) found.push_back(entry.path());
-  std::sort(found.begin(), found.end());
+  const std::vector<std::filesystem::path> found = corpusFlameFiles();
   // The corpus holds a copy of test.flam3: each flame file once.
   const std::string test = files.empty() ? std::string() : fileBytes(files.front());
   for (const std::filesystem::path& file : found)
@@ -64,51 +52,12 @@ std::vector<std::filesystem::path> defaultFlames() {
   return files;
 }
 
-// The first <flame> element of a flame file as its own document: flam3-render would render every
-// flame of a file. Flames do not nest, so the text up to the first </flame> is the element.
-std::optional<std::string> firstFlameXml(const std::filesystem::path& path) {
-  const std::string xml = fileBytes(path);
-  // "<flame" followed by a space or ">": not the "<flames>" root many files have.
-  std::size_t start = xml.find("<flame");
-  while (start != std::string::npos && start + 6 < xml.size() && xml[start + 6] != '>' &&
-         !std::isspace(static_cast<unsigned char>(xml[start + 6])))
-    start = xml.find("<flame", start + 6);
-  if (start == std::string::npos) return std::nullopt;
-  const std::size_t end = xml.find("</flame>", start);
-  const std::size_t selfClosing = xml.find("/>", start);
-  if (end == std::string::npos) return std::nullopt;
-  if (selfClosing != std::string::npos && selfClosing < xml.find('>', start)) return std::nullopt;  // no transforms
-  return "<flames>\n" + xml.substr(start, end + 8 - start) + "\n</flames>\n";
-}
-
-// A number as flam3-render reads it back exactly (std::to_string keeps 6 decimals: a size scale of
-// 1/3 would shrink the framing by 0.2% more than the size).
-std::string exactNumber(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
-// Renders `genome` with flam3-render at the size scale and quality scale given; nothing when it
-// fails (a variation it does not know, a flame it refuses).
-std::optional<core::ImageRGBA> flam3Render(const std::filesystem::path& genome, const std::filesystem::path& out,
-                                           double sizeScale, double qualityScale, int seed) {
-  const std::optional<std::string> env = app::findOnPath("env");
-  if (!env) return std::nullopt;
-  std::error_code ignored;
-  std::filesystem::remove(out, ignored);
-  const std::vector<std::string> command = {"env",
-                                            "in=" + genome.string(),
-                                            "out=" + out.string(),
-                                            "format=png",
-                                            "ss=" + exactNumber(sizeScale),
-                                            "qs=" + exactNumber(qualityScale),
-                                            "isaac_seed=" + std::to_string(seed),
-                                            "verbose=0",
-                                            "flam3-render"};
-  std::string ignoredOutput;
+// flam3-render's picture of `genome`; nothing when it fails (a variation it does not know, a flame
+// it refuses).
+std::optional<core::ImageRGBA> flam3Image(const std::filesystem::path& genome, const std::filesystem::path& out,
+                                          double sizeScale, double qualityScale, int seed) {
+  if (!runFlam3(genome, out, sizeScale, qualityScale, seed, 2).ok) return std::nullopt;
   try {
-    if (app::runProgram(*env, command, &ignoredOutput) != 0 || !std::filesystem::exists(out)) return std::nullopt;
     return core::readPng(out).image;
   } catch (const core::Error&) {
     return std::nullopt;
@@ -147,7 +96,7 @@ void benchFidelity(const BenchOptions& options) {
       if (chosen) report(options, {{"bench", "fidelity"}, {"flame", name}, {"skipped", e.what()}});
       continue;
     }
-    const std::optional<std::string> xml = firstFlameXml(file);
+    const std::optional<std::string> xml = flameXmlAt(file, 0);
     if (!xml) continue;
     const std::filesystem::path genome = folder / "genome.flam3";
     std::ofstream(genome) << *xml;
@@ -158,14 +107,13 @@ void benchFidelity(const BenchOptions& options) {
     const double qualityScale = kQuality / scene.flat.quality;
     auto start = std::chrono::steady_clock::now();
     const std::optional<core::ImageRGBA> reference =
-        flam3Render(genome, folder / "flam3-a.png", sizeScale, qualityScale, 1);
+        flam3Image(genome, folder / "flam3-a.png", sizeScale, qualityScale, 1);
     const double flam3Seconds = secondsSince(start);
     if (!reference) {
       if (chosen) report(options, {{"bench", "fidelity"}, {"flame", name}, {"skipped", "flam3-render failed"}});
       continue;
     }
-    const std::optional<core::ImageRGBA> again =
-        flam3Render(genome, folder / "flam3-b.png", sizeScale, qualityScale, 2);
+    const std::optional<core::ImageRGBA> again = flam3Image(genome, folder / "flam3-b.png", sizeScale, qualityScale, 2);
     core::FlatRenderOptions flat;
     flat.width = reference->width;
     flat.height = reference->height;

@@ -13,6 +13,7 @@
 #include "flame_noise.h"
 #include "flame_variation_kernels.h"
 #include "flame_variations_more.h"
+#include "vector_math.h"
 
 namespace voxflame::core {
 

@@ -6,6 +6,7 @@
 #include "flame_variations_more.h"
 
 #include "flame_variation_kernels.h"
+#include "vector_math.h"
 
 #include <algorithm>
 #include <cmath>
