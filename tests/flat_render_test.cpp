@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 
@@ -97,6 +98,18 @@ TEST(FlatView, ImportKeepsFlam3sFraming) {
   EXPECT_EQ(flame.flat.filterRadius, 0.8);
   EXPECT_EQ(flame.flat.quality, 50.0);
   EXPECT_EQ(flame.tone.estimatorRadius, 5.0);
+  EXPECT_EQ(flame.flat.paletteMode, core::PaletteMode::Step) << "flam3's default";
+  const auto paletteModeOf = [](const std::string& mode) {
+    const std::string text =
+        "<flame palette_mode=\"" + mode + "\"><xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/></flame>";
+    return core::readFlameXml(text, "mode.flame").flame;
+  };
+  EXPECT_EQ(paletteModeOf("linear").flat.paletteMode, core::PaletteMode::Linear);
+  EXPECT_EQ(paletteModeOf("step").flat.paletteMode, core::PaletteMode::Step);
+  const core::ImportedFlame unknownMode = paletteModeOf("cubic");
+  EXPECT_EQ(unknownMode.flat.paletteMode, core::PaletteMode::Step);
+  EXPECT_TRUE(std::any_of(unknownMode.warnings.begin(), unknownMode.warnings.end(),
+                          [](const std::string& w) { return w.find("palette_mode 'cubic'") != w.npos; }));
   // Framing that is not numbers (real files have center="nan nan") keeps flam3's defaults.
   const core::ImportedFlame odd =
       core::readFlameXml(
@@ -117,6 +130,8 @@ TEST(FlatView, FramingRoundTripsThroughPresetsAndDefaultsToFlam3s) {
   scene.flat.centerX = -0.25;
   scene.flat.zoom = 2.0;
   scene.flat.quality = 123.0;
+  scene.flat.paletteMode = core::PaletteMode::Linear;
+  EXPECT_NE(core::sceneToJson(scene).find("\"palette_mode\": \"linear\""), std::string::npos);
   const core::Scene loaded = core::sceneFromJson(core::sceneToJson(scene), "round trip");
   EXPECT_EQ(loaded.flat, scene.flat);
   const core::FlatViewSettings flam3;
@@ -126,6 +141,26 @@ TEST(FlatView, FramingRoundTripsThroughPresetsAndDefaultsToFlam3s) {
   EXPECT_NE(voxflame::test::presetErrorOf(R"({"mesh": {"path": "m.obj"}, "layers": [{"attractor": "lorenz"}],
       "flat": {"width": 0}})"),
             "");
+}
+
+// flam3's lookup (rect.c): step takes entry ⌊index · 256⌋; linear blends entries i and i + 1 by
+// the fraction of index · 256, and both clamp at the ends.
+TEST(FlatView, PaletteModesLookUpAsFlam3Does) {
+  std::array<glm::vec3, 256> palette{};
+  for (std::size_t i = 0; i < palette.size(); ++i) palette[i] = glm::vec3(static_cast<float>(i) / 255.0f, 0.0f, 1.0f);
+  using core::PaletteMode;
+  const auto red = [&](double index, PaletteMode mode) { return core::flatPaletteColour(palette, index, mode).r; };
+  const double between = (100.0 + 0.25) / 256.0;  // a quarter of the way from entry 100 to 101
+  EXPECT_FLOAT_EQ(red(between, PaletteMode::Step), 100.0f / 255.0f);
+  EXPECT_FLOAT_EQ(red(between, PaletteMode::Linear), (100.0f + 0.25f) / 255.0f);
+  EXPECT_FLOAT_EQ(core::flatPaletteColour(palette, between, PaletteMode::Linear).b, 1.0f);
+  for (const PaletteMode mode : {PaletteMode::Step, PaletteMode::Linear}) {
+    EXPECT_EQ(red(-0.5, mode), 0.0f);
+    EXPECT_EQ(red(std::nan(""), mode), 0.0f);
+    EXPECT_EQ(red(255.5 / 256.0, mode), 1.0f);
+    EXPECT_EQ(red(1.0, mode), 1.0f);
+    EXPECT_EQ(red(7.0, mode), 1.0f);
+  }
 }
 
 TEST(FlatView, RefusesWhatItCannotDraw) {

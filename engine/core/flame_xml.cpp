@@ -1104,6 +1104,14 @@ FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader) {
     flat.oversample = static_cast<int>(std::lround(oversample));
   key("filter", flat.filterRadius, 0.0, 10.0);
   key("quality", flat.quality, 1e-3, 1e6);
+  if (const pugi::xml_attribute mode = flame.attribute("palette_mode")) {
+    const std::string_view value = mode.value();
+    if (value == "linear")
+      flat.paletteMode = PaletteMode::Linear;
+    else if (value != "step")  // flam3 warns and steps
+      reader.warn("palette_mode '" + std::string(value) +
+                  "' is not step or linear; the flat view steps, as flam3 does");
+  }
   if (const pugi::xml_attribute shape = flame.attribute("filter_shape");
       shape && std::string_view(shape.value()) != "gaussian") {
     reader.warn(std::string("the spatial filter '") + shape.value() + "' is drawn as flam3's gaussian");

@@ -89,6 +89,16 @@ void flatRenderSize(const FlatViewSettings& flat, const FlatRenderOptions& optio
                 " pixels is too large (at most 65536 a side)");
 }
 
+glm::vec3 flatPaletteColour(const std::array<glm::vec3, 256>& palette, double index, PaletteMode mode) {
+  const double scaled = index * 256.0;
+  if (!(scaled > 0.0)) return palette[0];  // NaN too
+  if (scaled >= 255.0) return palette[255];
+  const auto entry = static_cast<std::size_t>(scaled);
+  if (mode == PaletteMode::Step) return palette[entry];
+  const auto fraction = static_cast<float>(scaled - static_cast<double>(entry));
+  return palette[entry] * (1.0f - fraction) + palette[entry + 1] * fraction;
+}
+
 FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options) {
   const FlatViewSettings& flat = scene.flat;
   int width = 0, height = 0;
@@ -175,9 +185,7 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
           }
           const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
           if (!(bx >= 0.0 && by >= 0.0 && bx < histWidth && by < histHeight)) continue;
-          // flam3's palette lookup in its default step mode: entry ⌊index · 256⌋.
-          const auto entry = static_cast<std::size_t>(std::clamp(outColor[i] * 256.0, 0.0, 255.0));
-          const glm::vec3& c = palette[entry];
+          const glm::vec3 c = flatPaletteColour(palette, outColor[i], flat.paletteMode);
           float* v = histogram.at(static_cast<int>(bx), static_cast<int>(by));
           v[0] += c.r;
           v[1] += c.g;

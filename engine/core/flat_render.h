@@ -12,9 +12,12 @@
 // to the density only.
 #pragma once
 
+#include <array>
 #include <atomic>
 #include <cstdint>
 #include <optional>
+
+#include <glm/vec3.hpp>
 
 #include "image_io.h"
 #include "scene.h"
@@ -45,6 +48,11 @@ void flatRenderSize(const FlatViewSettings& flat, const FlatRenderOptions& optio
 // Renders the scene's first flame layer flat. Throws core::Error when the scene has none, or for a
 // size or quality out of range (not positive, not finite, beyond 65536 pixels a side or 10¹²
 // samples).
+// The colour flam3 deposits for a colour index (rect.c): in step mode the entry ⌊index · 256⌋, in
+// linear mode entries i and i + 1 around index · 256 blended by its fraction; an index below 0
+// takes entry 0 and one at or past 255/256 entry 255 in both modes.
+glm::vec3 flatPaletteColour(const std::array<glm::vec3, 256>& palette, double index, PaletteMode mode);
+
 FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options = {});
 
 }  // namespace voxflame::core

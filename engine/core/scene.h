@@ -134,6 +134,12 @@ struct ToneMapSettings {
 // How flam3 frames a flame in 2D (its <flame> attributes), kept on import so the flame can be
 // shown as its author saw it (`voxflame render --flat`, flat_render.h). Defaults are flam3's own
 // (clear_cp in flam3.c). The tone of the flat view is the scene's `tone`.
+// flam3's palette_mode: how a colour index picks from the 256 palette entries.
+enum class PaletteMode {
+  Step,    // the entry ⌊index · 256⌋ (flam3's default)
+  Linear,  // the two entries around index · 256, blended by its fraction (Apophysis 7X writes this)
+};
+
 struct FlatViewSettings {
   int width = 100, height = 100;  // flam3's size, pixels
   double centerX = 0.0, centerY = 0.0;
@@ -143,6 +149,7 @@ struct FlatViewSettings {
   int oversample = 1;         // supersampled pixels per output pixel along each axis
   double filterRadius = 0.5;  // Gaussian spatial filter, in output pixels
   double quality = 1.0;       // samples per output pixel (flam3's sample_density)
+  PaletteMode paletteMode = PaletteMode::Step;
   bool operator==(const FlatViewSettings&) const = default;
 };
 

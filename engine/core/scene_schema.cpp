@@ -63,6 +63,7 @@ constexpr std::string_view kProjections[] = {"perspective", "orthographic"};
 constexpr std::string_view kMeshDisplays[] = {"off", "ghost", "silhouette"};
 constexpr std::string_view kRenderMethods[] = {"volume", "points"};
 constexpr std::string_view kQuaternionViews[] = {"project", "slice"};
+constexpr std::string_view kPaletteModes[] = {"step", "linear"};
 
 using SF = Field<Scene>;
 const SF kSceneFields[] = {
@@ -715,6 +716,10 @@ const FV kFlatFields[] = {
      .min = 1e-3,
      .max = 1e6,
      .help = "samples per output pixel (flam3's quality)",
+     .affects = kStill},
+    {.key = "palette_mode",
+     .member = choice<&FlatViewSettings::paletteMode>(kPaletteModes, "palette mode"),
+     .help = "flam3's colour lookup: step takes the palette entry ⌊index · 256⌋, linear blends the two around it",
      .affects = kStill},
 };
 
