@@ -6,7 +6,9 @@
 // the chaos game differs. Goals: SSIM within 0.05 of the ceiling, luminance ratio 0.9–1.1.
 //
 // Without FILEs: flam3's own test.flam3 and the corpus flames beside the repository (or in
-// $VOXFLAME_FLAMES) that flam3-render renders, up to 20 in all.
+// $VOXFLAME_FLAMES) that flam3-render renders, up to 20 in all. A flame with a variation flam3-render
+// does not know is skipped and named: flam3-render leaves the variation out, so its picture is of
+// another flame.
 #include <unistd.h>
 
 #include <algorithm>
@@ -52,11 +54,14 @@ std::vector<std::filesystem::path> defaultFlames() {
   return files;
 }
 
-// flam3-render's picture of `genome`; nothing when it fails (a variation it does not know, a flame
-// it refuses).
+// flam3-render's picture of `genome`; nothing when it fails (a flame it refuses). `skipped` gets the
+// variations it left out (Flam3Run::skippedVariations).
 std::optional<core::ImageRGBA> flam3Image(const std::filesystem::path& genome, const std::filesystem::path& out,
-                                          double sizeScale, double qualityScale, int seed) {
-  if (!runFlam3(genome, out, sizeScale, qualityScale, seed, 2).ok) return std::nullopt;
+                                          double sizeScale, double qualityScale, int seed,
+                                          std::vector<std::string>* skipped = nullptr) {
+  Flam3Run run = runFlam3(genome, out, sizeScale, qualityScale, seed, 2);
+  if (skipped) *skipped = std::move(run.skippedVariations);
+  if (!run.ok) return std::nullopt;
   try {
     return core::readPng(out).image;
   } catch (const core::Error&) {
@@ -106,11 +111,21 @@ void benchFidelity(const BenchOptions& options) {
     const double sizeScale = std::min(1.0, (kMaxWidth + 1e-6) / scene.flat.width);
     const double qualityScale = kQuality / scene.flat.quality;
     auto start = std::chrono::steady_clock::now();
+    std::vector<std::string> unknown;
     const std::optional<core::ImageRGBA> reference =
-        flam3Image(genome, folder / "flam3-a.png", sizeScale, qualityScale, 1);
+        flam3Image(genome, folder / "flam3-a.png", sizeScale, qualityScale, 1, &unknown);
     const double flam3Seconds = secondsSince(start);
     if (!reference) {
       if (chosen) report(options, {{"bench", "fidelity"}, {"flame", name}, {"skipped", "flam3-render failed"}});
+      continue;
+    }
+    if (!unknown.empty()) {
+      // flam3-render drew the flame without them: not the flame its author saw, so no reference.
+      std::string names;
+      for (const std::string& variation : unknown) names += (names.empty() ? "" : ", ") + variation;
+      report(options, {{"bench", "fidelity"},
+                       {"flame", name},
+                       {"skipped", "flam3-render does not know " + names + " and left it out"}});
       continue;
     }
     const std::optional<core::ImageRGBA> again = flam3Image(genome, folder / "flam3-b.png", sizeScale, qualityScale, 2);

@@ -156,7 +156,7 @@ std::optional<Genome> heaviestCorpusGenome(const std::filesystem::path& folder) 
     // A quick check that flam3-render takes the flame, every variation of it: a quarter of the
     // size, one sample per pixel.
     const Flam3Run check = runFlam3(probe, folder / "probe.png", 0.25, 1.0 / density, 1, kThreads);
-    if (!check.ok || check.skippedVariations) continue;
+    if (!check.ok || !check.skippedVariations.empty()) continue;
     Genome genome;
     genome.label = candidate.file.filename().string() + " #" + std::to_string(candidate.index + 1) + " \"" +
                    candidate.flame.name + "\" (" + std::to_string(std::get<1>(candidate.weight)) + " transforms, " +

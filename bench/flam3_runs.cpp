@@ -9,6 +9,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 
 #include "bench.h"
 #include "core/error.h"
@@ -91,7 +92,17 @@ Flam3Run runFlam3(const std::filesystem::path& genome, const std::filesystem::pa
   run.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   run.cpu = cpuSeconds(RUSAGE_CHILDREN) - cpuBefore;
   run.ok = status == 0 && std::filesystem::exists(out);
-  run.skippedVariations = messages.find("unrecognized variation") != std::string::npos;
+  // flam3's words: "Warning: unrecognized variation NAME.  Ignoring."
+  constexpr std::string_view kSkipped = "unrecognized variation ";
+  for (std::size_t at = messages.find(kSkipped); at != std::string::npos; at = messages.find(kSkipped, at + 1)) {
+    const std::size_t begin = at + kSkipped.size();
+    const std::size_t end = messages.find_first_of(". \n", begin);
+    const std::string name = messages.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
+    const bool drawsNothingIn2D = name == "name" || name == "var_color" || name == "flatten";
+    if (!drawsNothingIn2D &&
+        std::find(run.skippedVariations.begin(), run.skippedVariations.end(), name) == run.skippedVariations.end())
+      run.skippedVariations.push_back(name);
+  }
   return run;
 }
 

@@ -28,8 +28,10 @@ struct Flam3Run {
   bool ok = false;    // it exited with 0 and wrote `out`
   double wall = 0.0;  // seconds
   double cpu = 0.0;   // CPU seconds of the child, all its threads
-  // It skipped a variation it does not know ("unrecognized variation"): it rendered another flame.
-  bool skippedVariations = false;
+  // Variations it did not know and skipped ("unrecognized variation"), leaving out the ones that
+  // draw nothing in its 2D render: a transform's name attribute, Apophysis' var_color, flatten.
+  // With any left, it rendered another flame than the file's.
+  std::vector<std::string> skippedVariations;
 };
 
 // Runs flam3-render on `genome` writing the PNG `out`, with its size scale (ss), quality scale

@@ -35,6 +35,12 @@ inline double countParam(double value) {
   return rounded == 0.0 ? 1.0 : rounded;
 }
 
+// flam3's own count-like parameters (julian's power, pie's slices, ngon's sides) are real numbers
+// there, and files hold values such as 3.8967: used as they are, with 0 taken as 1 as above.
+inline double flam3Count(double value) {
+  return value == 0.0 ? 1.0 : value;
+}
+
 // flam3's affine coefficients inside the row-major 3×4 pre-affine (see flame.h).
 constexpr std::size_t kAffineB = 1;  // m01
 constexpr std::size_t kAffineC = 3;  // t0
@@ -437,7 +443,7 @@ VOXFLAME_VARIATION_TARGETS void noise(const VariationInput& in, double* __restri
 VOXFLAME_VARIATION_TARGETS void julian(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double powerN = countParam(P[0]);
+  const double powerN = flam3Count(P[0]);
   const double rootCount = std::abs(powerN);
   const double exponent = P[1] / powerN / 2.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -453,7 +459,7 @@ VOXFLAME_VARIATION_TARGETS void julian(const VariationInput& in, double* __restr
 VOXFLAME_VARIATION_TARGETS void juliascope(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                            double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double powerN = countParam(P[0]);
+  const double powerN = flam3Count(P[0]);
   const double rootCount = std::abs(powerN);
   const double exponent = P[1] / powerN / 2.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -518,7 +524,7 @@ VOXFLAME_VARIATION_TARGETS void radialBlur(const VariationInput& in, double* __r
 VOXFLAME_VARIATION_TARGETS void pie(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                     double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double slices = countParam(P[0]), rotation = P[1], thickness = P[2];
+  const double slices = flam3Count(P[0]), rotation = P[1], thickness = P[2];
   for (std::size_t i = 0; i < n; ++i) {
     const double slice = std::trunc(laneUniform(rnd[i]) * slices + 0.5);
     const double a = rotation + kTwoPi * (slice + laneUniform(rnd[i]) * thickness) / slices;
@@ -532,7 +538,7 @@ VOXFLAME_VARIATION_TARGETS void pie(const VariationInput& in, double* __restrict
 VOXFLAME_VARIATION_TARGETS void ngon(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                      double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double sides = countParam(P[0]), halfPower = P[1] / 2.0, circle = P[2], corners = P[3];
+  const double sides = flam3Count(P[0]), halfPower = P[1] / 2.0, circle = P[2], corners = P[3];
   const double b = kTwoPi / sides;
   for (std::size_t i = 0; i < n; ++i) {
     const double rFactor = std::pow(x[i] * x[i] + y[i] * y[i], halfPower);
@@ -2366,9 +2372,9 @@ std::vector<VariationInfo> buildCatalogue() {
       {{"angle", 0.5, -1.0, 1.0}, {"dist", 2.0, 0.5, 5.0}});
   add("noise", "Ψ₂ (x cos 2πΨ₁, y sin 2πΨ₁), z", k2D, kRandom, &noise);
   add("julian", "r^(dist/power)·(cos α, sin α), z; α = (φ + 2πk)/power, k = trunc(|power|·Ψ)", k2D, kRandom, &julian,
-      {count("power", 4.0, -12.0, 12.0), {"dist", 1.0, -3.0, 3.0}});
+      {{"power", 4.0, -12.0, 12.0}, {"dist", 1.0, -3.0, 3.0}});
   add("juliascope", "r^(dist/power)·(cos α, sin α), z; α = (2πk ± φ)/power, k = trunc(|power|·Ψ), − for odd k", k2D,
-      kRandom, &juliascope, {count("power", 4.0, -12.0, 12.0), {"dist", 1.0, -3.0, 3.0}});
+      kRandom, &juliascope, {{"power", 4.0, -12.0, 12.0}, {"dist", 1.0, -3.0, 3.0}});
   add("blur", "Ψ₂ (cos 2πΨ₁, sin 2πΨ₁), z", k2D, kRandom, &blur);
   add("gaussian_blur", "G (cos 2πΨ, sin 2πΨ), z; G = Ψ + Ψ + Ψ + Ψ − 2", k2D, kRandom, &gaussianBlur);
   add("radial_blur",
@@ -2376,13 +2382,10 @@ std::vector<VariationInfo> buildCatalogue() {
       "β = angle·π/2 (flam3's: weight scales the blur, not the point)",
       k2D, kRandom, &radialBlur, {{"angle", 0.5, -1.0, 1.0}});
   add("pie", "Ψ₃ (cos α, sin α), z; α = rotation + 2π(trunc(Ψ₁·slices + ½) + Ψ₂·thickness)/slices", k2D, kRandom, &pie,
-      {count("slices", 6.0, 1.0, 24.0), {"rotation", 0.0, -kPi, kPi}, {"thickness", 0.5, 0.0, 1.0}});
+      {{"slices", 6.0, 1.0, 24.0}, {"rotation", 0.0, -kPi, kPi}, {"thickness", 0.5, 0.0, 1.0}});
   add("ngon", "(x, y)(corners (1/(cos β + ε) − 1) + circle) / (r^power + ε), z; β = φ mod 2π/sides, in ±π/sides", k2D,
       kFixed, &ngon,
-      {count("sides", 5.0, 1.0, 12.0),
-       {"power", 3.0, 0.0, 6.0},
-       {"circle", 1.0, 0.0, 3.0},
-       {"corners", 2.0, 0.0, 6.0}});
+      {{"sides", 5.0, 1.0, 12.0}, {"power", 3.0, 0.0, 6.0}, {"circle", 1.0, 0.0, 3.0}, {"corners", 2.0, 0.0, 6.0}});
   add("curl", "(x·re + y·im, y·re − x·im) / (re² + im²), z; re = 1 + c1 x + c2(x² − y²), im = c1 y + 2 c2 xy", k2D,
       kFixed, &curl, {{"c1", 1.0, -2.0, 2.0}, {"c2", 0.0, -1.0, 1.0}});
   add("rectangles", "((2⌊x/x₀⌋ + 1) x₀ − x, (2⌊y/y₀⌋ + 1) y₀ − y, z); an axis with size 0 stays linear", k2D, kFixed,
