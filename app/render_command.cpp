@@ -110,6 +110,7 @@ int renderFlatCommand(const RenderArguments& arguments, const std::string& outpu
   options.height = arguments.heightGiven ? arguments.height : 0;
   options.quality = arguments.quality;
   options.seed = arguments.seed;
+  options.bitDepth = arguments.bitDepth;
   options.cancel = &catchInterrupts();
   const auto start = std::chrono::steady_clock::now();
   core::FlatRenderResult result;

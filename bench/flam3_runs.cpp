@@ -99,7 +99,10 @@ Flam3Run runFlam3(const std::filesystem::path& genome, const std::filesystem::pa
     const std::size_t end = messages.find_first_of(". \n", begin);
     const std::string name = messages.substr(begin, end == std::string::npos ? std::string::npos : end - begin);
     const bool drawsNothingIn2D = name == "name" || name == "var_color" || name == "flatten";
-    if (!drawsNothingIn2D &&
+    // Its parameters (crackle_cellsize) come as unrecognised variations of their own.
+    const bool parameterOfOne = std::any_of(run.skippedVariations.begin(), run.skippedVariations.end(),
+                                            [&](const std::string& v) { return name.rfind(v + "_", 0) == 0; });
+    if (!drawsNothingIn2D && !parameterOfOne &&
         std::find(run.skippedVariations.begin(), run.skippedVariations.end(), name) == run.skippedVariations.end())
       run.skippedVariations.push_back(name);
   }

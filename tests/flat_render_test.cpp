@@ -163,6 +163,21 @@ TEST(FlatView, PaletteModesLookUpAsFlam3Does) {
   }
 }
 
+// flam3 writes ⌊min(256 v, 255)⌋ (rect.c), not a rounded 255 v: the flat view's pixels are on
+// those levels, so a PNG writer's rounding keeps them.
+TEST(FlatView, PixelsTakeFlam3sTruncatedLevels) {
+  EXPECT_EQ(core::flatPixelLevel(5.9f / 256.0f, 8), 5.0f / 255.0f);
+  EXPECT_EQ(core::flatPixelLevel(6.0f / 256.0f, 8), 6.0f / 255.0f);
+  EXPECT_EQ(core::flatPixelLevel(0.999f, 8), 255.0f / 255.0f);
+  EXPECT_EQ(core::flatPixelLevel(3.0f, 8), 1.0f);
+  EXPECT_EQ(core::flatPixelLevel(-0.5f, 8), 0.0f);
+  EXPECT_EQ(core::flatPixelLevel(std::nanf(""), 8), 0.0f);
+  EXPECT_EQ(core::flatPixelLevel(5.9f / 256.0f, 16), std::floor(5.9f * 256.0f) / 65535.0f);
+  EXPECT_EQ(core::flatPixelLevel(1.0f, 16), 65280.0f / 65535.0f);
+  for (float v = 0.0f; v < 1.0f; v += 0.0137f)
+    EXPECT_EQ(std::lround(core::flatPixelLevel(v, 8) * 255.0f), static_cast<long>(std::min(255.0f, v * 256.0f)));
+}
+
 TEST(FlatView, RefusesWhatItCannotDraw) {
   core::Scene scene = core::defaultScene();  // attractor layers only
   EXPECT_THROW(core::renderFlat(scene), core::Error);

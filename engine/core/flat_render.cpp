@@ -99,6 +99,12 @@ glm::vec3 flatPaletteColour(const std::array<glm::vec3, 256>& palette, double in
   return palette[entry] * (1.0f - fraction) + palette[entry + 1] * fraction;
 }
 
+float flatPixelLevel(float value, int bitDepth) {
+  const float a = std::clamp(value * 256.0f, 0.0f, 255.0f);  // NaN: 0
+  if (!(a > 0.0f)) return 0.0f;
+  return bitDepth == 16 ? std::floor(a * 256.0f) / 65535.0f : std::floor(a) / 255.0f;
+}
+
 FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options) {
   const FlatViewSettings& flat = scene.flat;
   int width = 0, height = 0;
@@ -231,8 +237,13 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   result.image.width = width;
   result.image.height = height;
   result.image.pixels.resize(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
-  for (int y = 0; y < height; ++y)
+  for (int y = 0; y < height; ++y) {
     std::copy_n(finished.image.at(gutter, y + gutter), 4 * static_cast<std::size_t>(width), result.image.at(0, y));
+    for (int x = 0; x < width; ++x) {
+      float* pixel = result.image.at(x, y);
+      for (int channel = 0; channel < 3; ++channel) pixel[channel] = flatPixelLevel(pixel[channel], options.bitDepth);
+    }
+  }
   return result;
 }
 

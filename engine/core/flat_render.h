@@ -30,6 +30,9 @@ struct FlatRenderOptions {
   int width = 0, height = 0;
   std::optional<double> quality;  // samples per output pixel; none: the flat view's
   std::uint64_t seed = 1;
+  // The PNG bit depth the image is for (8 or 16): its values are put on flam3's levels for it
+  // (flatPixelLevel), so the file holds what flam3-render's would.
+  int bitDepth = 8;
   const std::atomic<bool>* cancel = nullptr;  // when set to true, renderFlat throws RenderCancelled
 };
 
@@ -52,6 +55,12 @@ void flatRenderSize(const FlatViewSettings& flat, const FlatRenderOptions& optio
 // linear mode entries i and i + 1 around index · 256 blended by its fraction; an index below 0
 // takes entry 0 and one at or past 255/256 entry 255 in both modes.
 glm::vec3 flatPaletteColour(const std::array<glm::vec3, 256>& palette, double index, PaletteMode mode);
+
+// flam3's output levels (rect.c): a channel value v (1 standing for its 256) becomes
+// a = min(256 v, 255), written as ⌊a⌋ in 8 bits and ⌊256 a⌋ in 16; returned as the fraction of
+// the largest value that a PNG writer rounds back to exactly that level. Truncating rather than
+// rounding makes a dim flame's mean half a level darker: a tenth at a mean of five levels.
+float flatPixelLevel(float value, int bitDepth);
 
 FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options = {});
 
