@@ -861,29 +861,34 @@ bool waitForSession(app::ExplorerSession& session, const std::function<bool(cons
 // stop growing and the process's threads use no CPU while nothing changes. A lower target or a
 // new pattern wakes them.
 TEST_F(ExplorerUi, RefinementStopsAtTheNoiseTargetAndTheWorkersSleep) {
-  state.scene.gridResolution = 48;
-  // Pickover's estimate falls from its first measurements. The default Lorenz-84's (and
+  state.scene.gridResolution = 64;
+  // Pickover's estimate falls within a few measurements. The default Lorenz-84's (and
   // polynomial_a's) rises for hundreds of millions of points on this small grid before it falls,
   // so with it whether the estimate halves within a minute depended on when it was first measured.
+  // One worker on a 64³ grid: Pickover (its sines vectorised) reached the 48³ grid's cap on two
+  // cores within a second, a measurement after the first, before the estimate could halve or the
+  // target be met twice.
   core::PatternLayer& layer = state.scene.layers[0];
   layer.attractor = "pickover";
   layer.params = core::attractorOrThrow(layer.attractor).defaultParams();
-  app::ExplorerSession session(2);
+  app::ExplorerSession session(1);
   session.setRefinement(0.0, false);
   session.post(state.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
-  double first = 0.0;
+  // The estimate may rise over its first measurements (an orbit dwelling in one part of the
+  // attractor) before it falls: it must come to fall well under the highest it reached.
+  double highest = 0.0;
   ASSERT_TRUE(waitForSession(session, [&](const app::SessionStatus& s) {
-    if (std::isfinite(s.noise) && first == 0.0) first = s.noise;
-    return first > 0.0 && s.noise < 0.7 * first;
+    if (std::isfinite(s.noise)) highest = std::max(highest, s.noise);
+    return highest > 0.0 && s.noise < 0.7 * highest;
   })) << "the noise estimate falls while the volume refines";
   EXPECT_FALSE(session.status().converged) << "\"never\" never stops";
 
-  session.setRefinement(0.05, false);
+  session.setRefinement(0.08, false);
   ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.converged && s.resting; }))
       << "noise " << session.status().noise;
   const app::SessionStatus rested = session.status();
-  EXPECT_LE(rested.noise, 0.05);
+  EXPECT_LE(rested.noise, 0.08);
   EXPECT_TRUE(rested.stats.done);
   EXPECT_EQ(app::convergenceText(rested).rfind("at rest: the noise reached its target", 0), 0u)
       << app::convergenceText(rested);
@@ -894,9 +899,10 @@ TEST_F(ExplorerUi, RefinementStopsAtTheNoiseTargetAndTheWorkersSleep) {
   EXPECT_LE(processThreadTicks() - ticks, 3) << "the threads sleep once the target is reached";
 
   session.setRefinement(0.0001, false);
-  ASSERT_TRUE(waitForSession(session, [&](const app::SessionStatus& s) {
-    return s.stats.points > rested.stats.points;
-  })) << "a lower target starts refining again";
+  ASSERT_TRUE(
+      waitForSession(session, [&](const app::SessionStatus& s) { return s.stats.points > rested.stats.points; }))
+      << "a lower target starts refining again (rested at " << rested.pointsPerVoxel << " of "
+      << rested.capPointsPerVoxel << " points per voxel)";
   EXPECT_FALSE(session.status().converged);
   EXPECT_EQ(app::convergenceText(session.status()).rfind("noise ", 0), 0u) << app::convergenceText(session.status());
 }

@@ -5,6 +5,7 @@
 
 #include "cpu_features.h"
 #include "error.h"
+#include "vector_math.h"
 
 namespace voxflame::core {
 

@@ -35,6 +35,17 @@ inline double countParam(double value) {
   return rounded == 0.0 ? 1.0 : rounded;
 }
 
+// std::fmod(a, m) in a form GCC vectorises: libm's fmod has no vector variant (vector_math.h), and
+// one scalar call keeps the whole loop scalar. a − m·trunc(a/m), moved back into fmod's range (the
+// sign of a, magnitude below |m|) when the rounded quotient is one off; it differs from the exact
+// fmod by at most an ulp of a. NaN where fmod is NaN (an infinite a, a zero m).
+inline double laneFmod(double a, double m) {
+  const double am = std::abs(m);
+  double r = a - std::trunc(a / m) * m;
+  r = a >= 0.0 ? (r < 0.0 ? r + am : r) : (r > 0.0 ? r - am : r);
+  return a >= 0.0 ? (r >= am ? r - am : r) : (r <= -am ? r + am : r);
+}
+
 // flam3's own count-like parameters (julian's power, pie's slices, ngon's sides) are real numbers
 // there, and files hold values such as 3.8967: used as they are, with 0 taken as 1 as above.
 inline double flam3Count(double value) {
@@ -303,7 +314,7 @@ VOXFLAME_VARIATION_TARGETS void rings(const VariationInput& in, double* __restri
   for (std::size_t i = 0; i < n; ++i) {
     const double r = std::sqrt(x[i] * x[i] + y[i] * y[i]);
     const double sinTheta = x[i] / (r + kEpsilon), cosTheta = y[i] / (r + kEpsilon);
-    const double s = w * (std::fmod(r + dx, 2.0 * dx) - dx + r * (1.0 - dx));
+    const double s = w * (laneFmod(r + dx, 2.0 * dx) - dx + r * (1.0 - dx));
     outX[i] += s * cosTheta;
     outY[i] += s * sinTheta;
     outZ[i] += w * z[i];
@@ -318,7 +329,7 @@ VOXFLAME_VARIATION_TARGETS void fan(const VariationInput& in, double* __restrict
   const double half = 0.5 * dx;
   for (std::size_t i = 0; i < n; ++i) {
     const double theta = std::atan2(x[i], y[i]);
-    const double a = theta + (std::fmod(theta + f, dx) > half ? -half : half);
+    const double a = theta + (laneFmod(theta + f, dx) > half ? -half : half);
     const double r = w * std::sqrt(x[i] * x[i] + y[i] * y[i]);
     outX[i] += r * std::cos(a);
     outY[i] += r * std::sin(a);

@@ -1,4 +1,4 @@
-// Vector variants of libm's functions for the variation loops. glibc's libmvec holds 2- and 4-lane
+// Vector variants of libm's functions for the variation and attractor loops. glibc's libmvec holds 2- and 4-lane
 // versions of sin, cos, atan2, pow, ... (at most 4 ULP from the exact result, special values as
 // libm), but math.h declares them only under -ffast-math, whose finite-math assumption would break
 // the variations' NaN and infinity tests. Declaring the functions here as `simd` lets GCC
