@@ -189,7 +189,9 @@ TEST(SnapshotPublisher, AFreshVolumeWaitsForItsTakerUntilThePatternChanges) {
   PackedVolume timed;
   const auto packStart = std::chrono::steady_clock::now();
   packVolume(accumulator, timed);
-  const auto frameInterval = 4 * (std::chrono::steady_clock::now() - packStart) + std::chrono::milliseconds(50);
+  // The publisher waits kPackShare packs' time after a pack before it looks again.
+  const auto frameInterval = (SnapshotPublisher::kPackShare + 3) * (std::chrono::steady_clock::now() - packStart) +
+                             std::chrono::milliseconds(50);
   for (int frame = 0; frame < 10; ++frame) {
     std::this_thread::sleep_for(frameInterval);
     const std::uint64_t before = volume.version;

@@ -39,9 +39,11 @@ double estimateNoise(const std::vector<std::uint32_t>& earlier, const std::vecto
 }
 
 bool ConvergenceMeter::farEnough(std::uint64_t hits) const {
-  // Half as many hits again as the reference: the change is then twice the remaining variance's
-  // share, not a small difference of two nearly equal sums.
-  return referenceHits_ >= kMinimumHits && hits >= referenceHits_ + std::max(kMinimumHits, referenceHits_ / 2);
+  // A quarter as many hits again as the reference: the change is then four times the remaining
+  // variance's share, summed over the sample's hundred thousand voxels, not a small difference of
+  // two nearly equal sums. Measurements half as far apart (×1.5) let the second one under a target
+  // come when refinement was already near its cap, which then stopped it instead.
+  return referenceHits_ >= kMinimumHits && hits >= referenceHits_ + std::max(kMinimumHits, referenceHits_ / 4);
 }
 
 double ConvergenceMeter::update(const DensitySample& sample) {

@@ -44,7 +44,7 @@ std::size_t convergenceSampleStride(std::size_t voxels);
 class ConvergenceMeter {
  public:
   // Takes a new sample and returns the estimate for it (NaN while there is none yet). A sample of
-  // another generation, grid or an earlier moment starts over; one that has not added half as many
+  // another generation, grid or an earlier moment starts over; one that has not added a quarter as many
   // hits again since the reference sample (and at least kMinimumHits) keeps the last estimate, scaled by
   // 1/sqrt(points).
   double update(const DensitySample& sample);

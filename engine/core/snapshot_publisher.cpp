@@ -59,6 +59,7 @@ void SnapshotPublisher::loop(std::stop_token stop) {
   // had a pattern: nothing to pack until it moves (one that has one is looked at straight away).
   std::uint64_t seen = 0;
   std::chrono::steady_clock::time_point lastLook{};
+  std::uint64_t packedGeneration = 0;  // the generation of the last pack
   while (!stop.stop_requested()) {
     // Sleep until there is something to look at: no timer runs while the accumulator rests.
     if (!accumulator_.progress().wait(
@@ -67,7 +68,12 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     // Points keep coming (a notification a batch): pace the looks by the interval, or more often
     // while a new generation is waiting for its minimum. A request cuts the pause short.
     if (!requested_.load()) {
-      const auto pace = waitingForPoints ? std::min(interval_, std::chrono::milliseconds(10)) : interval_;
+      std::chrono::steady_clock::duration pace =
+          waitingForPoints ? std::min(interval_, std::chrono::milliseconds(10)) : interval_;
+      // Packs of the pattern that refines now take at most a fifth of a core: at 256³ a pack takes
+      // tens of milliseconds, and packing every interval took the cores the refinement needs (with
+      // the shadow volume recomputed for each volume). A new pattern's first pack is not held back.
+      if (packedGeneration == accumulator_.generation()) pace = std::max(pace, kPackShare * lastPack_);
       std::unique_lock lock(wakeMutex_);
       wake_.wait_until(lock, stop, lastLook + pace, [&] { return requested_.load(); });
     }
@@ -119,6 +125,7 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     const auto packStart = std::chrono::steady_clock::now();
     readyFresh_ = packVolume(accumulator_, ready_, &held_);
     lastPack_ = std::chrono::steady_clock::now() - packStart;
+    packedGeneration = ready_.generation;
     if (readyFresh_) publishedVersion_ = ready_.version;
   }
 }

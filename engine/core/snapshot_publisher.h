@@ -46,6 +46,10 @@ class SnapshotPublisher {
   // How often the thread has woken to look at the accumulator (tests: none while it rests).
   std::uint64_t wakeUps() const { return wakeUps_.load(); }
 
+  // After a pack of the pattern refining now, the next waits this many times as long as it took
+  // (at least the interval): packs take at most a fifth of a core.
+  static constexpr int kPackShare = 5;
+
  private:
   void loop(std::stop_token stop);
 
