@@ -1,10 +1,10 @@
 #include "chaos_game.h"
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <utility>
 
 #include "error.h"
 #include "scene.h"
