@@ -86,6 +86,8 @@ float luminance(const float* p) {
 
 class Renderer : public ::testing::Test {
  protected:
+  void marchInBandsOfRows();
+
   gl::HeadlessContext context;
   gl::VolumeRenderer renderer;
 };
@@ -344,7 +346,8 @@ TEST_F(Renderer, ReadBackReturnsRowsTopToBottom) {
 TEST_F(Renderer, ShadersComeFromEmbeddedFilesAndErrorsNameTheFile) {
   const gl::ShaderSource march = gl::embeddedShader("march.frag.glsl");
   EXPECT_EQ(march.file, "engine/gl/shaders/march.frag.glsl");
-  EXPECT_EQ(march.text.rfind("#version 430 core\n", 0), 0u);
+  EXPECT_NE(march.text.find("marchRay("), std::string::npos);  // the stage; the body is march_common.glsl
+  EXPECT_EQ(gl::embeddedShader("blit.frag.glsl").text.rfind("#version 430 core\n", 0), 0u);
   EXPECT_THROW(gl::embeddedShader("no-such.frag.glsl"), core::Error);
   try {
     gl::ShaderProgram program(gl::embeddedShader("fullscreen.vert.glsl"),
@@ -354,9 +357,56 @@ TEST_F(Renderer, ShadersComeFromEmbeddedFilesAndErrorsNameTheFile) {
     EXPECT_NE(std::string(e.what()).find("broken.frag.glsl"), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("fragment shader"), std::string::npos) << e.what();
   }
+  try {
+    gl::ShaderProgram program(
+        gl::ShaderSource{"engine/gl/shaders/broken.comp.glsl",
+                         "#version 430 core\nlayout(local_size_x = 1) in;\nvoid main() { oops }\n"});
+    FAIL() << "compiled";
+  } catch (const core::Error& e) {
+    EXPECT_NE(std::string(e.what()).find("broken.comp.glsl"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(Renderer, ComputeAndFragmentMarchesGiveTheSameSums) {
+  // Both stages run the same body (march_common.glsl) and keep the same running average, the
+  // fragment stage by blending and the compute stage in the shader.
+  const core::PackedVolume cube = uniformCube(200, 120, 255);
+  renderer.upload(cube);
+  core::CameraSettings camera;
+  camera.azimuthDeg = 35.0;
+  camera.elevationDeg = 20.0;
+  gl::RenderSettings settings;
+  settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.5);
+  settings.tone = neutralTone(0.5);
+  constexpr int kWidth = 45, kHeight = 31, kSamples = 4;
+  core::DensityImage sums[2];
+  for (int i = 0; i < 2; ++i) {
+    renderer.setMarchStage(i == 0 ? gl::VolumeRenderer::MarchStage::Compute : gl::VolumeRenderer::MarchStage::Fragment);
+    gl::FrameTarget target;
+    target.resize(kWidth, kHeight);
+    for (int s = 0; s < kSamples; ++s) renderer.march(target, settings, 3 + s);
+    sums[i] = target.readDensity();
+  }
+  ASSERT_EQ(sums[0].values.size(), sums[1].values.size());
+  double worst = 0.0, column = 0.0;
+  for (std::size_t i = 0; i < sums[0].values.size(); ++i) {
+    const double a = sums[0].values[i], b = sums[1].values[i];
+    worst = std::max(worst, std::abs(a - b) / std::max(1e-3, std::abs(b)));
+    column += b;
+  }
+  EXPECT_LE(worst, 1e-5);
+  EXPECT_GT(column, 0.0);
 }
 
 TEST_F(Renderer, MarchingInBandsOfRowsConvergesToTheUntiledMarch) {
+  for (const auto stage : {gl::VolumeRenderer::MarchStage::Compute, gl::VolumeRenderer::MarchStage::Fragment}) {
+    SCOPED_TRACE(stage == gl::VolumeRenderer::MarchStage::Compute ? "compute" : "fragment");
+    renderer.setMarchStage(stage);
+    marchInBandsOfRows();
+  }
+}
+
+void Renderer::marchInBandsOfRows() {
   // The explorer's still view refines in bands of rows (app::RefineBands), each band keeping its
   // own sample count: once every band has its samples each pixel must hold exactly what an
   // untiled march gives it, whatever the bands and the order passes reach them in.

@@ -65,14 +65,35 @@ class FlameFinisher {
   // Draws the scatter as quads even where points would do (so tests reach the fallback).
   void forceQuads(bool force) { forceQuads_ = force; }
 
+  // How density estimation adds the wide kernels up: sprites drawn with additive blending, or a
+  // compute pass in which each pixel gathers the kernels that reach it. Both give the same floats.
+  // Gathering is many times faster on a compute GPU and slower on a software rasteriser, so the
+  // default follows the renderer (defaultEstimation).
+  enum class Estimation { Scatter, Gather };
+  void setEstimation(Estimation estimation) { estimation_ = estimation; }
+  Estimation estimation() const { return estimation_; }
+
+  // GPU time of each pass of the last finish, measured with timestamp queries when timing is on
+  // (bench raymarch). Timing waits for the GPU at the end of every finish, so it stays off in the
+  // explorer.
+  struct PassTimes {
+    double scatterMs = 0.0;  // the sprite list and density estimation (scattered or gathered)
+    double foldMs = 0.0;
+    double toneMs = 0.0;
+  };
+  void setTimed(bool timed);
+  const PassTimes& lastPassTimes() const { return passTimes_; }
+
  private:
   void ensureTarget(GLuint& texture, GLuint& framebuffer, glm::ivec2& allocated, glm::ivec2 size);
 
   ShaderProgram scatterProgram_;
   ShaderProgram foldProgram_;
   ShaderProgram toneProgram_;
-  GLuint compactProgram_ = 0;  // compute: the sprite list and the indirect draw's count
-  GLuint command_ = 0;         // DrawArraysIndirectCommand
+  ShaderProgram compactProgram_;  // compute: the sprite list and the indirect draw's count
+  ShaderProgram gatherProgram_;   // compute: density estimation gathered
+  Estimation estimation_ = Estimation::Scatter;
+  GLuint command_ = 0;  // DrawArraysIndirectCommand
   GLuint sprites_ = 0, spritesTexture_ = 0;
   std::size_t spriteCapacity_ = 0;  // pixels the sprite list holds
   GLuint vertexArray_ = 0;
@@ -83,6 +104,8 @@ class FlameFinisher {
   GLuint emptyOverlay_ = 0;
   float maxPointSize_ = 1.0f;
   bool forceQuads_ = false;
+  GLuint timestamps_[4] = {0, 0, 0, 0};  // queries: before the scatter, the fold, the tone, after it
+  PassTimes passTimes_;
 };
 
 // core::finishImage on the GPU for an image in memory (rows top to bottom), in tiles no larger

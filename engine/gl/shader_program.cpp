@@ -1,6 +1,8 @@
 #include "shader_program.h"
 
 #include <algorithm>
+#include <initializer_list>
+#include <string>
 #include <utility>
 
 #include "core/error.h"
@@ -34,6 +36,30 @@ ShaderSource embeddedShader(std::string_view name) {
   return {file, std::string(reinterpret_cast<const char*>(bytes->data()), bytes->size())};
 }
 
+namespace {
+
+// Links the compiled `shaders` (deleting them) into a program; a link error becomes core::Error
+// naming `files`.
+GLuint linkProgram(std::initializer_list<GLuint> shaders, const std::string& files) {
+  const GLuint program = glCreateProgram();
+  for (GLuint shader : shaders) glAttachShader(program, shader);
+  glLinkProgram(program);
+  for (GLuint shader : shaders) glDeleteShader(shader);
+  GLint ok = GL_FALSE;
+  glGetProgramiv(program, GL_LINK_STATUS, &ok);
+  if (!ok) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program, length, nullptr, log.data());
+    glDeleteProgram(program);
+    throw core::Error("shader program (" + files + ") failed to link: " + log);
+  }
+  return program;
+}
+
+}  // namespace
+
 ShaderProgram::ShaderProgram(const ShaderSource& vertexSource, const ShaderSource& fragmentSource) {
   const GLuint vertex = compileShader(GL_VERTEX_SHADER, vertexSource);
   GLuint fragment = 0;
@@ -43,23 +69,11 @@ ShaderProgram::ShaderProgram(const ShaderSource& vertexSource, const ShaderSourc
     glDeleteShader(vertex);
     throw;
   }
-  program_ = glCreateProgram();
-  glAttachShader(program_, vertex);
-  glAttachShader(program_, fragment);
-  glLinkProgram(program_);
-  glDeleteShader(vertex);
-  glDeleteShader(fragment);
-  GLint ok = GL_FALSE;
-  glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-  if (!ok) {
-    GLint length = 0;
-    glGetProgramiv(program_, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    glGetProgramInfoLog(program_, length, nullptr, log.data());
-    glDeleteProgram(program_);
-    program_ = 0;
-    throw core::Error("shader program (" + vertexSource.file + ", " + fragmentSource.file + ") failed to link: " + log);
-  }
+  program_ = linkProgram({vertex, fragment}, vertexSource.file + ", " + fragmentSource.file);
+}
+
+ShaderProgram::ShaderProgram(const ShaderSource& computeSource) {
+  program_ = linkProgram({compileShader(GL_COMPUTE_SHADER, computeSource)}, computeSource.file);
 }
 
 ShaderProgram::~ShaderProgram() {

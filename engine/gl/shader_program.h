@@ -20,13 +20,14 @@ struct ShaderSource {
 ShaderSource embeddedShader(std::string_view name);
 
 // One compiled shader of `stage`; a compile error becomes core::Error naming the file. The caller
-// attaches and deletes it (ShaderProgram does for its two; the finisher for its compute pass).
+// attaches and deletes it (ShaderProgram does).
 GLuint compileShader(GLenum stage, const ShaderSource& source);
 
 class ShaderProgram {
  public:
   ShaderProgram() = default;
   ShaderProgram(const ShaderSource& vertex, const ShaderSource& fragment);
+  explicit ShaderProgram(const ShaderSource& compute);  // a compute program
   ~ShaderProgram();
   ShaderProgram(ShaderProgram&& other) noexcept;
   ShaderProgram& operator=(ShaderProgram&& other) noexcept;

@@ -12,6 +12,7 @@
 
 #include "core/error.h"
 #include "read_back.h"
+#include "renderer_kind.h"
 
 namespace voxflame::gl {
 
@@ -140,11 +141,25 @@ void FrameTarget::resize(int width, int height) {
                       " pixels");
 }
 
+namespace {
+
+// A march stage's source behind the version line and the body both stages share.
+ShaderSource withMarchBody(const ShaderSource& stage) {
+  return {stage.file, "#version 430 core\n" + embeddedShader("march_common.glsl").text + "\n#line 1\n" + stage.text};
+}
+
+}  // namespace
+
 VolumeRenderer::VolumeRenderer()
-    : marchProgram_(embeddedShader("fullscreen.vert.glsl"), embeddedShader("march.frag.glsl")),
+    : marchProgram_(embeddedShader("fullscreen.vert.glsl"), withMarchBody(embeddedShader("march.frag.glsl"))),
+      marchComputeProgram_(withMarchBody(embeddedShader("march.comp.glsl"))),
       blitProgram_(embeddedShader("fullscreen.vert.glsl"), embeddedShader("blit.frag.glsl")),
       meshProgram_(embeddedShader("mesh.vert.glsl"), embeddedShader("mesh.frag.glsl")),
       finisher_() {
+  // The fragment stage is the faster one on a software rasteriser (llvmpipe: 0.5 against 0.66 s a
+  // 1280×720 sample at 256³); compute, many times faster on a compute GPU (H200: 0.9 against
+  // 24 ms at 1920×1080 and 512³).
+  marchStage_ = softwareRasteriser() ? MarchStage::Fragment : MarchStage::Compute;
   glGenVertexArrays(1, &vertexArray_);
   for (Slot& slot : slots_) {
     slot.volume = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
@@ -327,12 +342,15 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
     ++target.revision_;
     return;
   }
-  // A running average: sample n replaces 1/(n+1) of what is there.
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
-  glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(samplesBefore + 1));
+  const bool compute = marchStage_ == MarchStage::Compute;
+  if (!compute) {
+    // A running average: sample n replaces 1/(n+1) of what is there.
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+    glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(samplesBefore + 1));
+  }
 
-  const ShaderProgram& p = marchProgram_;
+  const ShaderProgram& p = compute ? marchComputeProgram_ : marchProgram_;
   glUseProgram(p.id());
   const glm::dmat4 projection = tileProjection(settings, tile, width, height, samplePixelOffset(sampleIndex));
   const glm::mat4 inverseViewProjection(glm::inverse(projection * settings.camera.view));
@@ -375,9 +393,22 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
   bindSampler(p, "uShadow", 2, GL_TEXTURE_3D, shadowTexture_);
   bindSampler(p, "uDensity", 3, GL_TEXTURE_3D, slot.density);
   bindSampler(p, "uCoarseOccupancy", 4, GL_TEXTURE_3D, slot.coarse);
-  glBindVertexArray(vertexArray_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  if (compute) {
+    const glm::ivec4 region = scissor.z > 0 ? scissor : glm::ivec4(0, 0, width, height);
+    glBindImageTexture(0, target.radiance_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glUniform1i(p.uniform("uTarget"), 0);
+    glUniform4i(p.uniform("uRegion"), region.x, region.y, region.z, region.w);
+    glUniform1f(p.uniform("uWeight"), 1.0f / static_cast<float>(samplesBefore + 1));
+    glDispatchCompute(static_cast<GLuint>((region.z + 7) / 8), static_cast<GLuint>((region.w + 7) / 8), 1);
+    // What reads the target next (the finish, a read-back, the next sample) sees these writes.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                    GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+    glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+  } else {
+    glBindVertexArray(vertexArray_);
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glBindVertexArray(0);
+  }
   glActiveTexture(GL_TEXTURE0);
   glDisable(GL_BLEND);
   glDisable(GL_SCISSOR_TEST);

@@ -108,6 +108,14 @@ class VolumeRenderer {
   void uploadShadow(const core::ShadowVolume& shadow, int downsample, glm::ivec3 sourceSize = glm::ivec3(0));
   bool hasShadow() const { return shadowDownsample_ > 0; }
 
+  // How a sample is marched: by a compute program (the default), or a fragment program drawn over
+  // the target. Both give the same sums. Compute is much faster on GPUs that run fragment work on
+  // a few of their multiprocessors only (NVIDIA's H100 and H200); the fragment stage stays for
+  // comparison (bench raymarch) and for drivers where it is the faster of the two.
+  enum class MarchStage { Compute, Fragment };
+  void setMarchStage(MarchStage stage) { marchStage_ = stage; }
+  MarchStage marchStage() const { return marchStage_; }
+
   // Adds one jittered sub-sample of the view to `target` (a running average). `sampleIndex`
   // picks the jitter; `tile` selects part of a larger image (x, y, full width, full height).
   void march(FrameTarget& target, const RenderSettings& settings, int sampleIndex,
@@ -161,6 +169,8 @@ class VolumeRenderer {
   void finishUpload(Slot& slot, const core::PackedVolume& volume);
 
   ShaderProgram marchProgram_;
+  ShaderProgram marchComputeProgram_;
+  MarchStage marchStage_ = MarchStage::Compute;
   ShaderProgram blitProgram_;
   ShaderProgram meshProgram_;
   FlameFinisher finisher_;
