@@ -176,8 +176,10 @@ TEST_F(GpuFinish, TilesWithApronsAndTheQuadFallbackMatchTheReference) {
   for (int oversample : {1, 3})
     for (const auto estimation : kEstimations) {
       SCOPED_TRACE(oversample);
-      SCOPED_TRACE(estimation == gl::FlameFinisher::Estimation::Gather ? "gather" : "scatter");
+      SCOPED_TRACE(estimation == gl::FlameFinisher::Estimation::Gather ? "gather, compute passes" : "scatter, drawn");
+      // The GPU's way (gathered, compute passes) and the software rasteriser's (sprites, drawn).
       finisher.setEstimation(estimation);
+      finisher.setComputePasses(estimation == gl::FlameFinisher::Estimation::Gather);
       const core::DensityImage density = syntheticDensity(90 * oversample, 70 * oversample, 40.0);
       core::FinishSettings finish;
       finish.tone.estimatorRadius = 6.0;
@@ -222,6 +224,7 @@ TEST_F(GpuFinish, WideKernelsPileTheirWeightOnTheEdges) {
   for (const auto estimation : kEstimations) {
     SCOPED_TRACE(estimation == gl::FlameFinisher::Estimation::Gather ? "gather" : "scatter");
     finisher.setEstimation(estimation);
+    finisher.setComputePasses(estimation == gl::FlameFinisher::Estimation::Scatter);  // the other pairing
     double worst = 0.0;
     EXPECT_GE(shareWithin(gl::finishImageOnGpu(finisher, density, finish, nullptr), reference, &worst), kShareWithin)
         << worst;
@@ -234,7 +237,8 @@ TEST_F(GpuFinish, WideKernelsPileTheirWeightOnTheEdges) {
 TEST_F(GpuFinish, GatheringGivesTheFloatsScatteringGives) {
   // The gather adds each pixel's shares in the order the sprites' blending adds them and computes
   // each share alike, so the two estimations agree to the float's last bits, or very nearly
-  // where a driver contracts a multiply-add differently in the two stages.
+  // where a driver contracts a multiply-add differently in the two stages; and so do the fold
+  // and the tone as compute passes and drawn.
   const core::DensityImage density = syntheticDensity(2 * 120, 2 * 80, 25.0);
   core::FinishSettings finish;
   finish.tone.estimatorRadius = 9.0;
@@ -243,8 +247,10 @@ TEST_F(GpuFinish, GatheringGivesTheFloatsScatteringGives) {
   finish.filterRadius = 1.0;
   finish.linearOutput = true;
   finisher.setEstimation(gl::FlameFinisher::Estimation::Scatter);
+  finisher.setComputePasses(false);
   const core::FinishedImage scattered = gl::finishImageOnGpu(finisher, density, finish, nullptr);
   finisher.setEstimation(gl::FlameFinisher::Estimation::Gather);
+  finisher.setComputePasses(true);
   const core::FinishedImage gathered = gl::finishImageOnGpu(finisher, density, finish, nullptr);
   ASSERT_EQ(scattered.image.pixels.size(), gathered.image.pixels.size());
   double worst = 0.0, lit = 0.0;

@@ -119,10 +119,25 @@ void bindTexture(const ShaderProgram& program, const char* name, int unit, GLuin
   glUniform1i(program.uniform(name), unit);
 }
 
-// The finishing shaders share finish_common.glsl, put after the version line.
-ShaderSource withCommon(const ShaderSource& shader) {
+// The finishing shaders share finish_common.glsl, put after the version line. The fold and the
+// tone are built as either stage; `compute` defines COMPUTE_STAGE for them.
+ShaderSource withCommon(const ShaderSource& shader, bool compute = false) {
   const ShaderSource common = embeddedShader("finish_common.glsl");
-  return {shader.file, "#version 430 core\n" + common.text + "\n#line 1\n" + shader.text};
+  return {shader.file, std::string("#version 430 core\n") + (compute ? "#define COMPUTE_STAGE\n" : "") + common.text +
+                           "\n#line 1\n" + shader.text};
+}
+
+// Runs `program`, a compute stage of the fold or the tone, over `size` pixels of `output`
+// (RGBA32F), and makes its writes visible to what reads the output next (a pass, a read-back, a
+// draw that samples it).
+void dispatchOver(const ShaderProgram& program, GLuint output, glm::ivec2 size) {
+  glBindImageTexture(0, output, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glUniform1i(program.uniform("uOutput"), 0);
+  glUniform2i(program.uniform("uOutputSize"), size.x, size.y);
+  glDispatchCompute(static_cast<GLuint>((size.x + 7) / 8), static_cast<GLuint>((size.y + 7) / 8), 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                  GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
 }
 
 glm::vec3 displayEncode(glm::vec3 linear, double gamma) {
@@ -142,13 +157,18 @@ int glImageLimit() {
 FlameFinisher::FlameFinisher()
     : scatterProgram_(withCommon(embeddedShader("finish_scatter.vert.glsl")),
                       embeddedShader("finish_scatter.frag.glsl")),
-      foldProgram_(embeddedShader("fullscreen.vert.glsl"), withCommon(embeddedShader("finish_fold.frag.glsl"))),
-      toneProgram_(embeddedShader("fullscreen.vert.glsl"), withCommon(embeddedShader("finish_tone.frag.glsl"))),
+      foldProgram_(embeddedShader("fullscreen.vert.glsl"), withCommon(embeddedShader("finish_fold.glsl"))),
+      toneProgram_(embeddedShader("fullscreen.vert.glsl"), withCommon(embeddedShader("finish_tone.glsl"))),
+      foldComputeProgram_(withCommon(embeddedShader("finish_fold.glsl"), true)),
+      toneComputeProgram_(withCommon(embeddedShader("finish_tone.glsl"), true)),
       compactProgram_(withCommon(embeddedShader("finish_compact.comp.glsl"))),
       gatherProgram_(withCommon(embeddedShader("finish_gather.comp.glsl"))) {
   // Sprites are the faster on a software rasteriser, gathering on a GPU (H200: 0.7 against 27 ms
-  // at 1920×1080), where rasterising and blending run on a few multiprocessors.
-  estimation_ = softwareRasteriser() ? Estimation::Scatter : Estimation::Gather;
+  // at 1920×1080), where rasterising and blending run on a few multiprocessors; so are the fold
+  // and the tone as compute passes there.
+  const bool software = softwareRasteriser();
+  estimation_ = software ? Estimation::Scatter : Estimation::Gather;
+  computePasses_ = !software;
   glGenBuffers(1, &command_);
   glGenBuffers(1, &sprites_);
   glGenTextures(1, &spritesTexture_);
@@ -206,7 +226,7 @@ void FlameFinisher::setTimed(bool timed) {
 
 void FlameFinisher::finish(const FinishSource& source, const core::FinishSettings& settings,
                            const OverlayStyle& overlay, glm::ivec2 outputOrigin, glm::ivec2 outputSize,
-                           GLuint framebuffer) {
+                           GLuint framebuffer, GLuint outputTexture) {
   const int oversample = std::max(1, settings.oversample);
   const core::ToneMapSettings& tone = settings.tone;
   const KernelTable& kernels = kernelTable(tone, oversample);
@@ -312,9 +332,7 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
   if (timed) glQueryCounter(timestamps_[1], GL_TIMESTAMP);
   {
     ensureTarget(log_, logFramebuffer_, logSize_, source.size);
-    glBindFramebuffer(GL_FRAMEBUFFER, logFramebuffer_);
-    glViewport(0, 0, source.size.x, source.size.y);
-    const ShaderProgram& p = foldProgram_;
+    const ShaderProgram& p = computePasses_ ? foldComputeProgram_ : foldProgram_;
     glUseProgram(p.id());
     setKernelUniforms(p);
     glUniform1i(p.uniform("uEstimate"), estimate ? 1 : 0);
@@ -322,16 +340,25 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
     glUniform2i(p.uniform("uFullSize"), source.fullSize.x, source.fullSize.y);
     bindTexture(p, "uDensity", 0, source.density);
     bindTexture(p, "uScatter", 1, estimate ? scatter_ : emptyOverlay_);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (computePasses_) {
+      dispatchOver(p, log_, source.size);
+    } else {
+      glBindFramebuffer(GL_FRAMEBUFFER, logFramebuffer_);
+      glViewport(0, 0, source.size.x, source.size.y);
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
   }
 
   // 3. Filter and tone into the caller's framebuffer.
   if (timed) glQueryCounter(timestamps_[2], GL_TIMESTAMP);
   {
     const FilterTaps filter = filterTaps(oversample, settings.filterRadius);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    glViewport(0, 0, outputSize.x, outputSize.y);
-    const ShaderProgram& p = toneProgram_;
+    const bool compute = computePasses_ && outputTexture != 0;
+    if (!compute) {
+      glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+      glViewport(0, 0, outputSize.x, outputSize.y);
+    }
+    const ShaderProgram& p = compute ? toneComputeProgram_ : toneProgram_;
     glUseProgram(p.id());
     bindTexture(p, "uLog", 1, log_);
     glUniform2i(p.uniform("uLogOrigin"), source.origin.x, source.origin.y);
@@ -358,7 +385,12 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
     glUniform1f(p.uniform("uOverlayStrength"), static_cast<float>(overlay.strength));
     const glm::vec3 line = displayEncode(overlay.color, tone.gamma);
     glUniform3f(p.uniform("uLineColor"), line.r, line.g, line.b);
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    if (compute) {
+      dispatchOver(p, outputTexture, outputSize);
+      glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);  // as the fragment stage leaves it
+    } else {
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
   }
   glBindVertexArray(0);
   glActiveTexture(GL_TEXTURE0);
@@ -443,7 +475,7 @@ core::FinishedImage finishImageOnGpu(FlameFinisher& finisher, const core::Densit
           if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw core::Error("could not make a float image to finish the picture in");
         }
-        finisher.finish(source, settings, style, outLo, outSize, outputFramebuffer);
+        finisher.finish(source, settings, style, outLo, outSize, outputFramebuffer, outputTexture);
         const std::vector<float> pixels = readRgbaFloat(outputFramebuffer, {0, 0, outSize.x, outSize.y});
         // Tile row t (top first) is GL row outHi.y - 1 - t: the image's row height - outHi.y + t.
         for (int t = 0; t < outSize.y; ++t) {

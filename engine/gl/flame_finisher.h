@@ -55,8 +55,10 @@ class FlameFinisher {
   // core::finishImage makes it, alpha the pattern's opacity (core::FinishedImage::alpha). The
   // source must hold every pixel those outputs depend on (apron(): kernels and filter taps),
   // clipped to the image. Leaves blending and the program state changed; binds `framebuffer`.
+  // `outputTexture`, when given, is the RGBA32F texture attached to `framebuffer`: the compute
+  // passes write it directly (a window's framebuffer has none, and is drawn into).
   void finish(const FinishSource& source, const core::FinishSettings& settings, const OverlayStyle& overlay,
-              glm::ivec2 outputOrigin, glm::ivec2 outputSize, GLuint framebuffer);
+              glm::ivec2 outputOrigin, glm::ivec2 outputSize, GLuint framebuffer, GLuint outputTexture = 0);
 
   // Supersampled pixels a region must reach beyond the pixels its outputs cover: the widest
   // density-estimation kernel's radius plus the spatial filter's reach.
@@ -72,6 +74,10 @@ class FlameFinisher {
   enum class Estimation { Scatter, Gather };
   void setEstimation(Estimation estimation) { estimation_ = estimation; }
   Estimation estimation() const { return estimation_; }
+  // The fold and the tone as compute passes (the default on a GPU) or drawn as fragments (on a
+  // software rasteriser); the same floats either way.
+  void setComputePasses(bool compute) { computePasses_ = compute; }
+  bool computePasses() const { return computePasses_; }
 
   // GPU time of each pass of the last finish, measured with timestamp queries when timing is on
   // (bench raymarch). Timing waits for the GPU at the end of every finish, so it stays off in the
@@ -90,9 +96,12 @@ class FlameFinisher {
   ShaderProgram scatterProgram_;
   ShaderProgram foldProgram_;
   ShaderProgram toneProgram_;
+  ShaderProgram foldComputeProgram_;
+  ShaderProgram toneComputeProgram_;
   ShaderProgram compactProgram_;  // compute: the sprite list and the indirect draw's count
   ShaderProgram gatherProgram_;   // compute: density estimation gathered
   Estimation estimation_ = Estimation::Scatter;
+  bool computePasses_ = false;
   GLuint command_ = 0;  // DrawArraysIndirectCommand
   GLuint sprites_ = 0, spritesTexture_ = 0;
   std::size_t spriteCapacity_ = 0;  // pixels the sprite list holds

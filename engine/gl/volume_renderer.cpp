@@ -510,7 +510,7 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
       style = {settings.render.meshDisplay, settings.render.meshColor, settings.render.meshStrength};
     }
     finisher_.finish(source, finishSettings(settings, linearOutput, 1), style, glm::ivec2(0), size,
-                     target.finishedFramebuffer_);
+                     target.finishedFramebuffer_, target.finished_);
     target.finishedRevision_ = target.revision_;
     target.finishedKey_ = key;
   }

@@ -1,7 +1,8 @@
 // The log image (flame_finisher.h), one pixel per density pixel: with density estimation on, the
 // scattered target's pixel, plus its padding folded onto the image's edge pixels (core's
 // estimator piles weight that falls outside the image on the edge pixel), plus the pixel's own
-// value when its kernel is one pixel (not scattered); with it off, the pixel's log value.
+// value when its kernel is one pixel (not scattered); with it off, the pixel's log value. Built
+// as a fragment or a compute stage (COMPUTE_STAGE).
 
 uniform sampler2D uDensity;
 uniform sampler2D uScatter;  // padded by uPad on every side
@@ -13,14 +14,20 @@ uniform float uHitsPerUnit;
 uniform float uBrightness;
 const int kMaxKernels = 192;
 uniform vec4 uKernels[kMaxKernels];
+#ifdef COMPUTE_STAGE
+// As a compute pass (flame_finisher.h's computePasses): one invocation per pixel of uOutput.
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(rgba32f) writeonly uniform image2D uOutput;
+uniform ivec2 uOutputSize;
+#else
 out vec4 fragColor;
+#endif
 
-void main() {
-  ivec2 q = ivec2(gl_FragCoord.xy);
+// The log image's pixel q (of the region, bottom-left origin).
+vec4 foldPixel(ivec2 q) {
   vec4 own = texelFetch(uDensity, q, 0);
   if (!uEstimate) {
-    fragColor = own * logScale(own.a, uBrightness);
-    return;
+    return own * logScale(own.a, uBrightness);
   }
   vec4 sum = vec4(0.0);
   if (own.a > 0.0 && uKernels[kernelIndex(own.a * uHitsPerUnit)].z == 0.0) sum = own * logScale(own.a, uBrightness);
@@ -32,5 +39,15 @@ void main() {
   if (full.y == uFullSize.y - 1) hi.y += uPad;
   for (int y = lo.y; y <= hi.y; ++y)
     for (int x = lo.x; x <= hi.x; ++x) sum += texelFetch(uScatter, ivec2(x, y), 0);
-  fragColor = sum;
+  return sum;
+}
+
+void main() {
+#ifdef COMPUTE_STAGE
+  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+  if (pixel.x >= uOutputSize.x || pixel.y >= uOutputSize.y) return;
+  imageStore(uOutput, pixel, foldPixel(pixel));
+#else
+  fragColor = foldPixel(ivec2(gl_FragCoord.xy));
+#endif
 }
