@@ -114,7 +114,9 @@ PointProjector::PointProjector(const PointProjection& projection, int threads) :
   if (p_.width <= 0 || p_.height <= 0) throw Error("the points image must have a positive size");
   threads = std::max(1, threads);
   const std::size_t pixels = static_cast<std::size_t>(p_.width) * static_cast<std::size_t>(p_.height);
-  histograms_.assign(static_cast<std::size_t>(threads), std::vector<float>(4 * pixels, 0.0f));
+  // Each made in place: assign(n, value) would hold one more full-size histogram while it copies.
+  histograms_.resize(static_cast<std::size_t>(threads));
+  for (std::vector<float>& histogram : histograms_) histogram.assign(4 * pixels, 0.0f);
   rngStates_.resize(static_cast<std::size_t>(threads));
   scratch_.resize(static_cast<std::size_t>(threads));
   for (int t = 0; t < threads; ++t) rngStates_[static_cast<std::size_t>(t)] = mixSeed(p_.seed, 0x6c656e73ULL + t);
@@ -230,12 +232,22 @@ void PointProjector::consume(int thread, const AcceptedPoints& points) {
   projected_.fetch_add(batch.size(), std::memory_order_relaxed);
 }
 
-DensityImage PointProjector::merge() const {
+DensityImage PointProjector::merge() {
   DensityImage image;
-  image.resize(p_.width, p_.height);
+  image.width = p_.width;
+  image.height = p_.height;
   image.hitsPerUnitDensity = hitsPerUnitDensity(p_.camera, p_.grid, p_.totalPoints, p_.insideVoxels, p_.height);
-  for (const auto& histogram : histograms_)
+  // The first thread's histogram becomes the image and the others are added to it and freed one
+  // by one, so a 16K print never holds a third full-size histogram (the sums and their order are
+  // those of adding every histogram to zeros).
+  image.values = std::move(histograms_.front());
+  image.values.resize(4 * static_cast<std::size_t>(p_.width) * static_cast<std::size_t>(p_.height), 0.0f);
+  for (std::size_t t = 1; t < histograms_.size(); ++t) {
+    const std::vector<float>& histogram = histograms_[t];
     for (std::size_t i = 0; i < histogram.size(); ++i) image.values[i] += histogram[i];
+    std::vector<float>().swap(histograms_[t]);
+  }
+  histograms_.clear();
   return image;
 }
 

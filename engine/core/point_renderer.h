@@ -85,8 +85,9 @@ class PointProjector : public PointSink {
  public:
   PointProjector(const PointProjection& projection, int threads);
   void consume(int thread, const AcceptedPoints& points) override;
-  // Sums the threads' histograms. Call when no more points arrive.
-  DensityImage merge() const;
+  // Sums the threads' histograms into the image, giving up their memory as it goes. Call once,
+  // when no more points arrive.
+  DensityImage merge();
   std::uint64_t projected() const { return projected_.load(); }
 
  private:
