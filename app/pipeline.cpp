@@ -243,13 +243,19 @@ FrameRenderer::Rendered FrameRenderer::renderWithStats(const core::Scene& scene,
   finish.oversample = oversample;
   finish.filterRadius = scene.render.filterRadius;
   finish.linearOutput = linearOutput;
-  core::FinishedImage finished = gl::finishImageOnGpu(d.renderer.finisher(), density, finish, &mesh);
+  // Large images finish in smaller tiles (the GL's copies of a tile and its aprons are a few of
+  // them), and the opacity rides in the image's fourth channel until the coverage is taken: a 16K
+  // print holds neither a separate opacity plane nor 2048² tiles.
+  const bool large = static_cast<std::size_t>(width) * static_cast<std::size_t>(height) > std::size_t{64} << 20;
+  core::FinishedImage finished =
+      gl::finishImageOnGpu(d.renderer.finisher(), density, finish, &mesh, large ? 1024 : gl::kDefaultMaxTile, true);
   Rendered result;
   if (d.keepSums) {
-    result.density = density;
+    result.density = std::move(density);
     result.mesh = mesh;
   }
-  result.coverage = core::silhouetteCoverage(finished, mesh);
+  std::vector<float>().swap(density.values);  // a 16K print's sums go before its PNG is made
+  result.coverage = core::takeSilhouetteCoverage(finished.image, mesh);
   result.pointsProjected = pointsProjected;
   result.image = std::move(finished.image);
   return result;

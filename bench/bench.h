@@ -14,6 +14,7 @@ struct BenchOptions {
   std::string meshFolder;            // where bunny.obj, dragon.ply, ... are
   std::string method;                // --method volume|points (export), empty: the benchmark's default
   std::vector<int> grids;            // --grid N...: the grids `explorer` runs at, empty: 192, 256 and 512
+  bool print = false;                // --print: `export` renders the 16K print instead of the 4K stills
   std::vector<std::string> presets;  // `rest`'s presets (files or shipped names), empty: every shipped one;
                                      // `fidelity`'s flame files, empty: its default set
 };

@@ -244,3 +244,27 @@ TEST(PointRenderer, PointsAndVolumeShareTheDensityScale) {
   // And a pixel with D = 1 holds the hits it was given (64 along its column).
   EXPECT_NEAR(density.hitsPerUnitDensity, 64.0, 1e-6 * 64.0);
 }
+
+TEST(FlameImage, CoverageFromTheImagesFourthChannelIsTheCoverageFromItsAlpha) {
+  // A 16K print carries its opacity in the image (finishImageOnGpu's alphaInImage): the coverage
+  // taken there is the one silhouetteCoverage gives, and the image is left opaque.
+  constexpr int kWidth = 7, kHeight = 5;
+  core::FinishedImage finished;
+  finished.image.width = kWidth;
+  finished.image.height = kHeight;
+  finished.image.pixels.assign(4 * kWidth * kHeight, 0.5f);
+  core::MeshOverlay silhouette;
+  silhouette.width = kWidth;
+  silhouette.height = kHeight;
+  silhouette.rgba.assign(4 * kWidth * kHeight, 0);
+  for (int p = 0; p < kWidth * kHeight; ++p) {
+    const float alpha = static_cast<float>(p % 4) / 10.0f;  // 0, 0.1, 0.2, 0.3: three of four covered
+    finished.alpha.push_back(alpha);
+    finished.image.pixels[4 * p + 3] = alpha;
+    silhouette.rgba[4 * p + 3] = p < 20 ? 255 : 0;
+  }
+  const double expected = core::silhouetteCoverage(finished, silhouette);
+  EXPECT_NEAR(expected, 15.0 / 20.0, 1e-12);
+  EXPECT_EQ(core::takeSilhouetteCoverage(finished.image, silhouette), expected);
+  for (int p = 0; p < kWidth * kHeight; ++p) EXPECT_EQ(finished.image.pixels[4 * p + 3], 1.0f);
+}

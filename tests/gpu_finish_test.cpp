@@ -194,9 +194,9 @@ TEST_F(GpuFinish, TilesWithApronsAndTheQuadFallbackMatchTheReference) {
       overlay.color = glm::vec3(0.2f, 0.9f, 0.4f);
       overlay.width = 90;
       overlay.height = 70;
-      overlay.rgba.assign(4 * 90 * 70, 0.0f);
+      overlay.rgba.assign(4 * 90 * 70, 0);
       for (int y = 20; y < 50; ++y)
-        for (int x = 10; x < 60; ++x) overlay.rgba[4 * (static_cast<std::size_t>(y) * 90 + x) + 3] = 1.0f;
+        for (int x = 10; x < 60; ++x) overlay.rgba[4 * (static_cast<std::size_t>(y) * 90 + x) + 3] = 255;
       const core::FinishedImage reference = core::finishImage(density, finish, &overlay);
       // One tile, then tiles much smaller than the aprons, then quads instead of point sprites.
       for (int maxTile : {4096, 16}) {

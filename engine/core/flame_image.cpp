@@ -305,7 +305,7 @@ FinishedImage finishImage(const DensityImage& in, const FinishSettings& settings
   auto overlayAlpha = [&](int x, int y) {
     x = std::clamp(x, 0, width - 1);
     y = std::clamp(y, 0, height - 1);
-    return static_cast<double>(overlay->rgba[4 * (static_cast<std::size_t>(y) * width + x) + 3]);
+    return static_cast<double>(overlay->at(static_cast<std::size_t>(y) * width + x, 3));
   };
   parallelRanges(height, [&](int begin, int end) {
     for (int y = begin; y < end; ++y)
@@ -320,8 +320,7 @@ FinishedImage finishImage(const DensityImage& in, const FinishSettings& settings
         if (useOverlay) {
           const std::size_t p = static_cast<std::size_t>(y) * width + x;
           if (overlay->mode == MeshDisplay::Ghost) {
-            color += overlay->strength *
-                     glm::dvec3(overlay->rgba[4 * p], overlay->rgba[4 * p + 1], overlay->rgba[4 * p + 2]);
+            color += overlay->strength * glm::dvec3(overlay->at(p, 0), overlay->at(p, 1), overlay->at(p, 2));
           } else {
             const double centre = overlayAlpha(x, y);
             double edge = 0.0;
@@ -350,9 +349,24 @@ double silhouetteCoverage(const FinishedImage& image, const MeshOverlay& silhoue
   if (silhouette.width != image.image.width || silhouette.height != image.image.height) return 0.0;
   std::size_t inside = 0, covered = 0;
   for (std::size_t p = 0; p < image.alpha.size(); ++p) {
-    if (silhouette.rgba[4 * p + 3] <= 0.5f) continue;
+    if (silhouette.rgba[4 * p + 3] <= 127) continue;  // 0.5 in bytes
     ++inside;
     if (image.alpha[p] >= threshold) ++covered;
+  }
+  return inside ? static_cast<double>(covered) / static_cast<double>(inside) : 0.0;
+}
+
+double takeSilhouetteCoverage(ImageRGBA& image, const MeshOverlay& silhouette, double threshold) {
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+  const bool matches = silhouette.width == image.width && silhouette.height == image.height;
+  std::size_t inside = 0, covered = 0;
+  for (std::size_t p = 0; p < pixels; ++p) {
+    float& alpha = image.pixels[4 * p + 3];
+    if (matches && silhouette.rgba[4 * p + 3] > 127) {
+      ++inside;
+      if (alpha >= threshold) ++covered;
+    }
+    alpha = 1.0f;
   }
   return inside ? static_cast<double>(covered) / static_cast<double>(inside) : 0.0;
 }

@@ -60,7 +60,11 @@ struct MeshOverlay {
   glm::vec3 color{1.0f};  // linear RGB of a silhouette line
   double strength = 0.35;
   int width = 0, height = 0;
-  std::vector<float> rgba;
+  // 4 bytes per pixel, rows top to bottom: the layer is drawn into an 8-bit target, so bytes hold
+  // it exactly (a supersampled one averaged down is rounded to them), at a quarter of the memory
+  // of floats, which a 16K print needs.
+  std::vector<std::uint8_t> rgba;
+  float at(std::size_t pixel, int channel) const { return static_cast<float>(rgba[4 * pixel + channel]) / 255.0f; }
 };
 
 struct FinishSettings {
@@ -97,6 +101,9 @@ FinishedImage finishImage(const DensityImage& in, const FinishSettings& settings
 // The share of the mesh's silhouette (overlay alpha > 0.5) where the pattern shows (alpha at
 // least `threshold`); 0 when the mesh covers no pixel.
 double silhouetteCoverage(const FinishedImage& image, const MeshOverlay& silhouette, double threshold = 0.1);
+// The same for an image that carries the opacity in its fourth channel (finishImageOnGpu's
+// alphaInImage), which then becomes opaque (1).
+double takeSilhouetteCoverage(ImageRGBA& imageWithAlpha, const MeshOverlay& silhouette, double threshold = 0.1);
 
 // Mean linear luminance (Rec. 709) of a display-encoded image with this gamma.
 double meanLuminance(const ImageRGBA& image, double gamma);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -405,7 +406,7 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
 
 core::FinishedImage finishImageOnGpu(FlameFinisher& finisher, const core::DensityImage& density,
                                      const core::FinishSettings& settings, const core::MeshOverlay* overlay,
-                                     int maxTile) {
+                                     int maxTile, bool alphaInImage) {
   const int oversample = std::max(1, settings.oversample);
   if (density.width % oversample || density.height % oversample)
     throw core::Error("the density image is not a whole number of supersampled pixels");
@@ -414,7 +415,7 @@ core::FinishedImage finishImageOnGpu(FlameFinisher& finisher, const core::Densit
   result.image.width = width;
   result.image.height = height;
   result.image.pixels.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 1.0f);
-  result.alpha.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
+  if (!alphaInImage) result.alpha.assign(static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
   if (width == 0 || height == 0) return result;
   const bool useOverlay = overlay && overlay->mode != core::MeshDisplay::Off && overlay->width == width &&
                           overlay->height == height && !overlay->rgba.empty();
@@ -430,18 +431,32 @@ core::FinishedImage finishImageOnGpu(FlameFinisher& finisher, const core::Densit
 
   GLuint densityTexture = 0, overlayTexture = 0, outputTexture = 0, outputFramebuffer = 0;
   std::vector<float> rows;
-  auto upload = [&rows](GLuint& texture, const float* pixels, int imageWidth, int imageHeight, glm::ivec2 lo,
-                        glm::ivec2 hi) {
-    // GL's rows run bottom to top: GL row y is the image's row imageHeight - 1 - y.
+  std::vector<std::uint8_t> byteRows;
+  // A region [lo, hi) of an image in memory (rows top to bottom) into `texture`. GL's rows run
+  // bottom to top: GL row y is the image's row imageHeight - 1 - y.
+  auto flipRegion = [](auto& into, const auto* pixels, int imageWidth, int imageHeight, glm::ivec2 lo, glm::ivec2 hi) {
     const int w = hi.x - lo.x, h = hi.y - lo.y;
-    rows.resize(4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
+    into.resize(4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
     for (int y = 0; y < h; ++y)
       std::copy_n(pixels + 4 * (static_cast<std::size_t>(imageHeight - 1 - (lo.y + y)) * imageWidth + lo.x),
-                  4 * static_cast<std::size_t>(w), &rows[4 * static_cast<std::size_t>(y) * w]);
+                  4 * static_cast<std::size_t>(w), &into[4 * static_cast<std::size_t>(y) * w]);
+  };
+  auto upload = [&](GLuint& texture, const float* pixels, int imageWidth, int imageHeight, glm::ivec2 lo,
+                    glm::ivec2 hi) {
+    flipRegion(rows, pixels, imageWidth, imageHeight, lo, hi);
     if (!texture) texture = makeTexture();
     glBindTexture(GL_TEXTURE_2D, texture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, w, h, 0, GL_RGBA, GL_FLOAT, rows.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, hi.x - lo.x, hi.y - lo.y, 0, GL_RGBA, GL_FLOAT, rows.data());
+  };
+  // The mesh layer's bytes, which the shader reads as byte / 255 as core::finishImage does.
+  auto uploadBytes = [&](GLuint& texture, const std::uint8_t* pixels, int imageWidth, int imageHeight, glm::ivec2 lo,
+                         glm::ivec2 hi) {
+    flipRegion(byteRows, pixels, imageWidth, imageHeight, lo, hi);
+    if (!texture) texture = makeTexture();
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, hi.x - lo.x, hi.y - lo.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, byteRows.data());
   };
   try {
     for (int oy = 0; oy < height; oy += tile)
@@ -461,7 +476,7 @@ core::FinishedImage finishImageOnGpu(FlameFinisher& finisher, const core::Densit
           // The silhouette's edge looks one pixel around.
           const glm::ivec2 overlayLo = glm::max(outLo - 1, glm::ivec2(0));
           const glm::ivec2 overlayHi = glm::min(outHi + 1, glm::ivec2(width, height));
-          upload(overlayTexture, overlay->rgba.data(), width, height, overlayLo, overlayHi);
+          uploadBytes(overlayTexture, overlay->rgba.data(), width, height, overlayLo, overlayHi);
           source.overlay = overlayTexture;
           source.overlayOrigin = overlayLo;
         }
@@ -484,8 +499,12 @@ core::FinishedImage finishImageOnGpu(FlameFinisher& finisher, const core::Densit
             const float* p = &pixels[4 * (static_cast<std::size_t>(t) * outSize.x + x)];
             float* o = result.image.at(ox + x, y);
             std::copy_n(p, 3, o);
-            o[3] = 1.0f;
-            result.alpha[static_cast<std::size_t>(y) * width + ox + x] = p[3];
+            if (alphaInImage) {
+              o[3] = p[3];
+            } else {
+              o[3] = 1.0f;
+              result.alpha[static_cast<std::size_t>(y) * width + ox + x] = p[3];
+            }
           }
         }
       }

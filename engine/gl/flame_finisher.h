@@ -120,8 +120,10 @@ class FlameFinisher {
 // core::finishImage on the GPU for an image in memory (rows top to bottom), in tiles no larger
 // than `maxTile` (and the GL's limits) with aprons: for the still methods, whose sums come from
 // tiled marches or from the points histogram.
+// With `alphaInImage` the opacity goes into the image's fourth channel and `alpha` stays empty
+// (core::takeSilhouetteCoverage reads it there): a 16K print then holds no separate plane of it.
 core::FinishedImage finishImageOnGpu(FlameFinisher& finisher, const core::DensityImage& density,
                                      const core::FinishSettings& settings, const core::MeshOverlay* overlay,
-                                     int maxTile = 2048);
+                                     int maxTile = 2048, bool alphaInImage = false);
 
 }  // namespace voxflame::gl

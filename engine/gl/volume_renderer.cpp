@@ -26,7 +26,7 @@ core::MeshOverlay emptyOverlay(const RenderSettings& settings, int width, int he
   mesh.strength = settings.render.meshStrength;
   mesh.width = width;
   mesh.height = height;
-  mesh.rgba.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0.0f);
+  mesh.rgba.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
   return mesh;
 }
 
@@ -87,10 +87,10 @@ core::DensityImage FrameTarget::readDensity() const {
 }
 
 core::MeshOverlay FrameTarget::readMeshOverlay(const RenderSettings& settings) const {
-  core::MeshOverlay overlay = emptyOverlay(settings, width_, height_);
-  const std::vector<std::uint8_t> bytes = readRgba8(meshFramebuffer_, {0, 0, width_, height_});
-  std::transform(bytes.begin(), bytes.end(), overlay.rgba.begin(),
-                 [](std::uint8_t v) { return static_cast<float>(v) * (1.0f / 255.0f); });
+  core::MeshOverlay overlay = emptyOverlay(settings, 0, 0);
+  overlay.width = width_;
+  overlay.height = height_;
+  overlay.rgba = readRgba8(meshFramebuffer_, {0, 0, width_, height_});
   return overlay;
 }
 
@@ -537,22 +537,28 @@ int tileSizeFor(int maxTile) {
   return std::max(16, std::min({maxTile, static_cast<int>(maxRenderbuffer), maxViewport[0], maxViewport[1]}));
 }
 
-// Averages a supersampled overlay down to the output size.
-core::MeshOverlay downsampleOverlay(const core::MeshOverlay& full, int oversample) {
+// Averages a supersampled overlay down to the output size, rounded to bytes. Taken by value: at
+// oversample 1 it is moved through, not copied (a second full-size layer at 16K).
+core::MeshOverlay downsampleOverlay(core::MeshOverlay full, int oversample) {
   if (oversample <= 1) return full;
-  core::MeshOverlay out = full;
+  core::MeshOverlay out;
+  out.mode = full.mode;
+  out.color = full.color;
+  out.strength = full.strength;
   out.width = full.width / oversample;
   out.height = full.height / oversample;
-  out.rgba.assign(4 * static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height), 0.0f);
-  const float weight = 1.0f / static_cast<float>(oversample * oversample);
+  out.rgba.assign(4 * static_cast<std::size_t>(out.width) * static_cast<std::size_t>(out.height), 0);
+  const int samples = oversample * oversample;
   for (int y = 0; y < out.height; ++y)
     for (int x = 0; x < out.width; ++x)
-      for (int j = 0; j < oversample; ++j)
-        for (int i = 0; i < oversample; ++i)
-          for (int c = 0; c < 4; ++c)
-            out.rgba[4 * (static_cast<std::size_t>(y) * out.width + x) + c] +=
-                weight *
-                full.rgba[4 * (static_cast<std::size_t>(y * oversample + j) * full.width + x * oversample + i) + c];
+      for (int c = 0; c < 4; ++c) {
+        int sum = 0;
+        for (int j = 0; j < oversample; ++j)
+          for (int i = 0; i < oversample; ++i)
+            sum += full.rgba[4 * (static_cast<std::size_t>(y * oversample + j) * full.width + x * oversample + i) + c];
+        out.rgba[4 * (static_cast<std::size_t>(y) * out.width + x) + c] =
+            static_cast<std::uint8_t>((sum + samples / 2) / samples);
+      }
   return out;
 }
 
@@ -616,7 +622,7 @@ MarchedImage marchImage(VolumeRenderer& renderer, const RenderSettings& settings
       }
     }
   }
-  result.mesh = downsampleOverlay(mesh, oversample);
+  result.mesh = downsampleOverlay(std::move(mesh), oversample);
   return result;
 }
 
@@ -642,7 +648,7 @@ core::MeshOverlay renderMeshOverlay(VolumeRenderer& renderer, const RenderSettin
                       4 * static_cast<std::size_t>(tileWidth),
                       &mesh.rgba[4 * (static_cast<std::size_t>(tileY + y) * fullWidth + tileX)]);
       }
-  return downsampleOverlay(mesh, oversample);
+  return downsampleOverlay(std::move(mesh), oversample);
 }
 
 core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
