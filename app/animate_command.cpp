@@ -1,5 +1,5 @@
 // `voxflame animate`: renders a preset's keyframed animation to numbered PNG frames, optionally
-// encoded to a video by ffmpeg.
+// encoded to a video by ffmpeg, or writes each frame's accumulated volume (.vdb or .nrrd frames).
 //
 // Temporal stability comes from two choices. The fit of every layer into the mesh is locked to
 // the one of time 0 — of the whole animation, not of the rendered range — so a parameter change
@@ -38,6 +38,7 @@
 #include "core/file_output.h"
 #include "core/keyframes.h"
 #include "core/packed_volume.h"
+#include "core/volume_export.h"
 #include "farm_job.h"
 #include "frame_pattern.h"
 #include "pipeline.h"
@@ -241,6 +242,11 @@ int animateCommand(const AnimateArguments& arguments) {
   if (!output) throw UsageError("animate needs an output pattern: -o frames/%04d.png");
   checkFramePattern(*output);
   if (video && video->empty()) throw UsageError("--video needs a file name such as out.mp4");
+  const FrameKind kind = frameKind(*output);
+  if (kind != FrameKind::Png && video)
+    throw UsageError("--video encodes PNG frames; volume frames (" + *output + ") are not a video");
+  if (kind != FrameKind::Png && arguments.motionBlur > 1)
+    throw UsageError("--motion-blur averages PNG frames; a volume frame holds one moment of the animation");
 
   core::Scene scene = sceneFromArgument(arguments.preset);
   if (arguments.points) scene.points = arguments.points;
@@ -310,6 +316,41 @@ int animateCommand(const AnimateArguments& arguments) {
       const double time = frame / fps;
       StillResult result;
       double accumulateSeconds = 0.0;
+      const std::string path = framePath(*output, frame);
+      auto reportFrame = [&] {
+        const double frameSeconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
+        const int done = frame - range.first + 1;
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        std::fprintf(stderr, "%sframe %d (%d of %d, %.3f s): wrote %s in %.2f s, %s left\n", interactive ? "\r" : "",
+                     frame, done, total, time, path.c_str(), frameSeconds,
+                     formatDuration(elapsed / done * (total - done)).c_str());
+      };
+      if (kind != FrameKind::Png) {
+        // The frame's accumulated volume, with the same locked fit and seed as its PNG would have:
+        // a volume that does not change between frames (a camera move) is written again as it is.
+        const core::Scene moment = core::sceneAtTime(scene, time);
+        if (needsNewVolume(volumeScene, moment)) {
+          if (moment.gridResolution != shapeResolution) {
+            shape = buildSceneShape(moment);
+            shapeResolution = moment.gridResolution;
+          }
+          accumulated = accumulateVolume(moment, shape, options);
+          if (!accumulated.warning.empty())
+            std::cerr << "\nvoxflame: warning: frame " << frame << ": " << accumulated.warning << "\n";
+          volumeScene = moment;
+        }
+        if (interrupted) throw RenderCancelled();
+        result.stats = accumulated.stats;
+        // No times in the file: a frame rendered again, here or on a farm, holds the same preset.
+        const std::string preset = stillMetadata(moment, result, false).at(kPresetChunkKey);
+        if (kind == FrameKind::Vdb)
+          core::writeVdbVolume(path, accumulated.snapshot, preset);
+        else
+          core::writeNrrdVolume(path, accumulated.snapshot, preset);
+        reportFrame();
+        continue;
+      }
       std::vector<double> sum;
       for (int sub = 0; sub < arguments.motionBlur; ++sub) {
         // Sub-frames spread evenly over the shutter interval, centred on the frame's time.
@@ -342,16 +383,11 @@ int animateCommand(const AnimateArguments& arguments) {
       result.stats = accumulated.stats;
       result.accumulateSeconds = accumulateSeconds;
       result.renderer = renderer->rendererName();
-      const double frameSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
-      result.renderSeconds = frameSeconds - accumulateSeconds;
-      const std::string path = framePath(*output, frame);
+      result.renderSeconds =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count() - accumulateSeconds;
       // No times in the frame: a frame rendered again, here or on a farm, is the same file.
       core::writePng(path, result.image, 8, stillMetadata(core::sceneAtTime(scene, time), result, false));
-      const int done = frame - range.first + 1;
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::fprintf(stderr, "%sframe %d (%d of %d, %.3f s): wrote %s in %.2f s, %s left\n", interactive ? "\r" : "",
-                   frame, done, total, time, path.c_str(), frameSeconds,
-                   formatDuration(elapsed / done * (total - done)).c_str());
+      reportFrame();
     }
   } catch (const RenderCancelled&) {
     std::cerr << (interactive ? "\n" : "") << "voxflame: interrupted; frame " << current << " was not written";

@@ -37,9 +37,17 @@ void checkFramePattern(const std::string& pattern) {
   if (conversions > 1)
     throw UsageError("-o '" + pattern + "' has " + std::to_string(conversions) +
                      " conversions; it needs exactly one frame number such as %04d");
+  frameKind(pattern);  // throws for any other extension
+}
+
+FrameKind frameKind(const std::string& pattern) {
   std::string extension = std::filesystem::path(pattern).extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  if (extension != ".png") throw UsageError("-o '" + pattern + "' must end in .png (frames are PNG images)");
+  if (extension == ".png") return FrameKind::Png;
+  if (extension == ".vdb") return FrameKind::Vdb;
+  if (extension == ".nrrd") return FrameKind::Nrrd;
+  throw UsageError("-o '" + pattern +
+                   "' must end in .png (PNG images) or .vdb or .nrrd (the accumulated volume of each frame)");
 }
 
 std::string framePath(const std::string& pattern, int frame) {
@@ -102,8 +110,15 @@ bool frameExists(const std::string& pattern, int frame) {
   std::ifstream in(framePath(pattern, frame), std::ios::binary);
   std::array<char, 8> head{};
   if (!in.read(head.data(), head.size())) return false;
+  // PNG's signature; OpenVDB's magic number (" BDV", a little-endian 64-bit integer); NRRD's.
   constexpr std::array<unsigned char, 8> kPngSignature{0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
-  return std::equal(head.begin(), head.end(), kPngSignature.begin(),
+  constexpr std::array<unsigned char, 8> kVdbMagic{' ', 'B', 'D', 'V', 0, 0, 0, 0};
+  constexpr std::array<unsigned char, 8> kNrrdMagic{'N', 'R', 'R', 'D', '0', '0', '0', '0'};
+  const std::array<unsigned char, 8>& expected = frameKind(pattern) == FrameKind::Png   ? kPngSignature
+                                                 : frameKind(pattern) == FrameKind::Vdb ? kVdbMagic
+                                                                                        : kNrrdMagic;
+  const std::size_t compared = frameKind(pattern) == FrameKind::Nrrd ? 4 : 8;  // NRRD0004, NRRD0005, ...
+  return std::equal(head.begin(), head.begin() + static_cast<std::ptrdiff_t>(compared), expected.begin(),
                     [](char a, unsigned char b) { return static_cast<unsigned char>(a) == b; });
 }
 

@@ -16,9 +16,14 @@ struct FrameRange {
 };
 
 // Throws UsageError unless the pattern holds exactly one integer conversion (%d, with an optional
-// 0 flag and width; %% is a literal percent sign) and ends in .png, so snprintf with the frame
-// number is safe and ffmpeg reads the same pattern.
+// 0 flag and width; %% is a literal percent sign) and ends in .png, .vdb or .nrrd, so snprintf
+// with the frame number is safe and ffmpeg reads the same pattern.
 void checkFramePattern(const std::string& pattern);
+
+// What the frames are: PNG images, or the accumulated volume of each frame (OpenVDB or NRRD, as
+// `render -o OUT.vdb|OUT.nrrd` writes a still's). Throws UsageError for any other extension.
+enum class FrameKind { Png, Vdb, Nrrd };
+FrameKind frameKind(const std::string& pattern);
 
 // The file of one frame; the pattern must have passed checkFramePattern.
 std::string framePath(const std::string& pattern, int frame);
@@ -33,8 +38,8 @@ FrameRange parseFrameRange(const std::string& text, int frameCount, double fps);
 // "2-3, 7" for the frames 2, 3 and 7 (sorted, without repeats).
 std::string describeFrames(const std::vector<int>& frames);
 
-// True when the frame's file is there and starts like a PNG. Frames are written to a temporary
-// file and moved into place, so a file that is there is complete.
+// True when the frame's file is there and starts like its kind (PNG, VDB or NRRD). Frames are
+// written to a temporary file and moved into place, so a file that is there is complete.
 bool frameExists(const std::string& pattern, int frame);
 
 }  // namespace voxflame::app

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -198,4 +199,40 @@ TEST(Animate, RenderShowsThePresetsMoment) {
   const auto scene = voxflame::core::sceneFromJson(frame(folder / "still.png").text.at("voxflame:preset"), "still");
   EXPECT_DOUBLE_EQ(scene.animation.time, 1.0);
   EXPECT_NEAR(scene.layers[0].transform.rotationDeg.y, 30.0, 1e-9);
+}
+
+TEST(Animate, VolumeFramesHoldEachMomentsVolume) {
+  // `-o frames/%04d.vdb|.nrrd`: each frame's accumulated volume, with the locked fit and the
+  // preset's seed of the PNG frames: a frame rendered alone is the same file as in the whole run.
+  TemporaryFolder folder;
+  writeTinyPreset(folder);
+  auto result = runVoxflame("animate tiny.json -o 'vol/%02d.nrrd' --frames 0-3", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  ASSERT_EQ(runVoxflame("animate tiny.json -o 'one/%02d.nrrd' --frames 2", folder.path()).exitStatus, 0);
+  auto bytes = [&](const std::filesystem::path& path) {
+    std::ifstream in(folder / path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  };
+  for (int f = 0; f <= 3; ++f) {
+    const std::string frame = bytes("vol/0" + std::to_string(f) + ".nrrd");
+    EXPECT_EQ(frame.rfind("NRRD", 0), 0u) << f;
+    EXPECT_NE(frame.find("voxflame_preset"), std::string::npos) << "the frame's preset rides along";
+  }
+  EXPECT_EQ(bytes("one/02.nrrd"), bytes("vol/02.nrrd")) << "the same frame, the same file";
+  EXPECT_NE(bytes("vol/00.nrrd"), bytes("vol/03.nrrd")) << "the layer turns between them";
+  EXPECT_EQ(runVoxflame("animate tiny.json --status 'vol/%02d.nrrd' --frames 0-3", folder.path()).exitStatus, 0);
+
+  result = runVoxflame("animate tiny.json -o 'vdb/%d.vdb' --frames 0-1", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  EXPECT_EQ(bytes("vdb/0.vdb").substr(0, 4), " BDV");
+  const auto status = runVoxflame("animate tiny.json --status 'vdb/%d.vdb' --frames 0-2", folder.path());
+  EXPECT_NE(status.exitStatus, 0);
+  EXPECT_NE(status.output.find("missing 1: 2"), std::string::npos) << status.output;
+
+  // A volume is one moment, not a picture.
+  EXPECT_NE(runVoxflame("animate tiny.json -o 'x/%d.vdb' --video out.mp4", folder.path()).output.find("not a video"),
+            std::string::npos);
+  EXPECT_NE(runVoxflame("animate tiny.json -o 'x/%d.vdb' --motion-blur 3", folder.path()).output.find("one moment"),
+            std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(folder / "x"));
 }

@@ -258,3 +258,26 @@ TEST_F(Farm, BadFlagsGiveMessages) {
       << result.output;
   EXPECT_TRUE(std::filesystem::exists(folder / "f/farm-render.sbatch")) << "the scripts are still written";
 }
+
+TEST_F(Farm, VolumeFramesSplitAcrossTasksAreTheFilesOfOneLocalRun) {
+  // `-o frames/%02d.nrrd` on the farm: each task writes its frames' volumes, the same files a
+  // local run writes (the locked fit and the preset's seed), and --status and the finish job know
+  // the frames by their kind.
+  ASSERT_EQ(runVoxflame("animate tiny.json -o 'vfarm/%02d.nrrd' --farm slurm --tasks 2 --frames 0-3", folder.path())
+                .exitStatus,
+            0);
+  for (int task : {1, 0}) {
+    const auto result =
+        runShell("SLURM_ARRAY_TASK_ID=" + std::to_string(task) + " bash vfarm/farm-render.sbatch", folder.path());
+    ASSERT_EQ(result.exitStatus, 0) << result.output;
+  }
+  ASSERT_EQ(runVoxflame("animate tiny.json -o 'vlocal/%02d.nrrd' --frames 0-3", folder.path()).exitStatus, 0);
+  for (int frame = 0; frame <= 3; ++frame) {
+    const std::string name = "0" + std::to_string(frame) + ".nrrd";
+    ASSERT_TRUE(std::filesystem::exists(folder / "vfarm" / name)) << name;
+    EXPECT_EQ(readBytes(folder / "vfarm" / name), readBytes(folder / "vlocal" / name)) << "frame " << frame;
+  }
+  const auto status = runVoxflame("animate --status 'vfarm/%02d.nrrd'", folder.path());
+  EXPECT_TRUE(contains(status.output, "all 4 frames (0-3) are there")) << status.output;
+  EXPECT_EQ(runShell("bash vfarm/farm-finish.sbatch", folder.path()).exitStatus, 0);
+}
