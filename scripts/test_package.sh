@@ -22,7 +22,8 @@ DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y --no-install-recommends 
 [ "$(command -v voxflame)" = /usr/bin/voxflame ] || { echo "voxflame is not /usr/bin/voxflame" >&2; exit 1; }
 for file in /usr/share/applications/voxflame.desktop /usr/share/icons/hicolor/256x256/apps/voxflame.png \
   /usr/share/mime/packages/voxflame.xml /usr/share/voxflame/presets/lorenz-heart.json \
-  /usr/share/voxflame/presets/meshes/sphere.obj /usr/share/voxflame/presets/gallery/lorenz-heart.png; do
+  /usr/share/voxflame/presets/meshes/sphere.obj /usr/share/voxflame/presets/gallery/lorenz-heart.png \
+  /usr/share/voxflame/blender/voxflame_blender.zip /usr/share/voxflame/blender/voxflame_import.py; do
   [ -f "$file" ] || { echo "the package lacks $file" >&2; exit 1; }
 done
 cd "$work"
