@@ -689,4 +689,62 @@ InsideMask buildInsideMask(const TriangleMesh& mesh, const GridGeometry& grid, M
   return voteOverAxes(mesh, grid, threads);
 }
 
+std::vector<std::uint8_t> maskSurfaceCodes(const InsideMask& mask) {
+  // A voxel is on the boundary when its 3×3×3 neighbourhood holds both an inside and an outside
+  // centre (beyond the grid counts as outside): two dilations, each one axis at a time.
+  const glm::ivec3 n = mask.geometry.size;
+  const std::size_t count = mask.inside.size();
+  std::vector<std::uint8_t> anyIn(count), anyOut(count), scratch(count);
+  for (std::size_t v = 0; v < count; ++v) {
+    anyIn[v] = mask.inside[v] ? 1 : 0;
+    anyOut[v] = mask.inside[v] ? 0 : 1;
+  }
+  const std::size_t strides[3] = {1, static_cast<std::size_t>(n.x), static_cast<std::size_t>(n.x) * n.y};
+  const int sizes[3] = {n.x, n.y, n.z};
+  for (int axis = 0; axis < 3; ++axis)
+    for (std::vector<std::uint8_t>* field : {&anyIn, &anyOut}) {
+      const bool outsideCounts = field == &anyOut;  // past the grid's faces lies outside
+      for (int k = 0; k < n.z; ++k)
+        for (int j = 0; j < n.y; ++j)
+          for (int i = 0; i < n.x; ++i) {
+            const int at[3] = {i, j, k};
+            const std::size_t v = mask.geometry.index(i, j, k);
+            std::uint8_t value = (*field)[v];
+            if (at[axis] > 0)
+              value |= (*field)[v - strides[axis]];
+            else
+              value |= outsideCounts ? 1 : 0;
+            if (at[axis] + 1 < sizes[axis])
+              value |= (*field)[v + strides[axis]];
+            else
+              value |= outsideCounts ? 1 : 0;
+            scratch[v] = value;
+          }
+      field->swap(scratch);
+    }
+  std::vector<std::uint8_t> codes(count);
+  for (std::size_t v = 0; v < count; ++v)
+    codes[v] = anyIn[v] && anyOut[v] ? kMaskBoundary : mask.inside[v] ? kMaskInside : kMaskOutside;
+  return codes;
+}
+
+bool insideSmoothly(const InsideMask& mask, float x, float y, float z) {
+  const glm::ivec3 n = mask.geometry.size;
+  // Centres sit at i + ½: the blend between the centres below and above the position.
+  const float u = x - 0.5f, v = y - 0.5f, w = z - 0.5f;
+  const int i0 = static_cast<int>(std::floor(u)), j0 = static_cast<int>(std::floor(v)),
+            k0 = static_cast<int>(std::floor(w));
+  const float fu = u - static_cast<float>(i0), fv = v - static_cast<float>(j0), fw = w - static_cast<float>(k0);
+  auto flag = [&](int i, int j, int k) {
+    return i >= 0 && j >= 0 && k >= 0 && i < n.x && j < n.y && k < n.z && mask.at(i, j, k) ? 1.0f : 0.0f;
+  };
+  float sum = 0.0f;
+  for (int c = 0; c < 8; ++c) {
+    const int di = c & 1, dj = (c >> 1) & 1, dk = (c >> 2) & 1;
+    const float weight = (di ? fu : 1.0f - fu) * (dj ? fv : 1.0f - fv) * (dk ? fw : 1.0f - fw);
+    sum += weight * flag(i0 + di, j0 + dj, k0 + dk);
+  }
+  return sum >= 0.5f;
+}
+
 }  // namespace voxflame::core
