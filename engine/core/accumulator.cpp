@@ -881,7 +881,6 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     seed_ = seed;
     deposit_ = requestedDeposit_.load();
     sink_ = requestedSink_.load();
-    if (sink_ && surfaceCodes_.empty()) surfaceCodes_ = maskSurfaceCodes(*mask_);
     {
       std::lock_guard problemLock(problemMutex_);
       problem_ = problem;
@@ -1329,11 +1328,9 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
       iterations += kOrbitsPerBatch;
       std::int32_t escapedHere = 0;
       if (sink_) {
-        // Points for the sink: the exact test here, since no grid cell is fetched later. Inside and
-        // outside voxels away from the mesh's surface decide by their code, branch-free like the
-        // grid's append below; a voxel at the surface blends the flags around the point, so the
-        // edge of a large points render is smooth, not the voxels' steps (inside_mask.h).
-        const std::uint8_t* codes = surfaceCodes_.data();
+        // Points for the sink: the exact test (the voxel's mask flag) here, since no grid cell is
+        // fetched later; branch-free like the grid's append below.
+        const std::uint8_t* inside = mask_->inside.data();
         float* outX = splats.x.data();
         float* outY = splats.y.data();
         float* outZ = splats.z.data();
@@ -1348,10 +1345,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
           // Integer arithmetic for the same reason as the grid's append below: no branch to mispredict.
           const std::uint64_t valid = (static_cast<std::uint32_t>(v) >> 31) ^ 1u;        // v >= 0
           const std::uint64_t settled = (static_cast<std::uint32_t>(v + 1) >> 31) ^ 1u;  // v >= -1
-          const std::uint8_t code = codes[v >= 0 ? v : 0];
-          std::uint64_t keep = valid & static_cast<std::uint64_t>(code == kMaskInside);
-          if (code == kMaskBoundary && valid) [[unlikely]]
-            keep = insideSmoothly(*mask_, b.gx[i], b.gy[i], b.gz[i]) ? 1u : 0u;
+          const std::uint64_t keep = valid & static_cast<std::uint64_t>(inside[v >= 0 ? v : 0] != 0);
           n += keep;
           outside += settled & (keep ^ 1u);
           escapedHere += b.escaped[i];

@@ -264,9 +264,8 @@ class Accumulator {
   // When a sink is set, accepted points go to it instead of the grid (they still count as points
   // towards the target and in stats). Set it before setPattern; nullptr restores grid deposits.
   // The sink must outlive the pattern's generation. Positions are exact (never jittered) and the
-  // inside test is the voxel's mask flag, or at the mesh's surface the blend of the flags around
-  // the point (insideSmoothly), so the edge is smooth. The same seed gives the same set of points
-  // whatever the number of threads (their order and batching may differ).
+  // inside test is the voxel's mask flag. The same seed gives the same set of points whatever the
+  // number of threads (their order and batching may differ).
   void setPointSink(PointSink* sink);
   // Stop once this many points are inside (0 = refine forever).
   void setTargetPoints(std::uint64_t target);
@@ -351,9 +350,8 @@ class Accumulator {
   InsideBox insideBox_;                  // of mask_, for every pattern's fit
   std::vector<std::uint8_t> rowInside_;  // per row of voxels (j, k): does any lie inside the mask
   std::uint64_t gridId_ = 0;
-  std::vector<std::uint64_t> brickBits_;    // per 4×4×4 brick: does any voxel lie inside the mask
-  std::vector<std::uint8_t> surfaceCodes_;  // maskSurfaceCodes, made when a point sink first needs them
-  int slabShift_ = 0;                       // colour slice >> slabShift_ = its slab
+  std::vector<std::uint64_t> brickBits_;  // per 4×4×4 brick: does any voxel lie inside the mask
+  int slabShift_ = 0;                     // colour slice >> slabShift_ = its slab
   std::unique_ptr<std::mutex[]> slabMutexes_;
   std::unique_ptr<std::uint64_t[]> slabGeneration_;  // per slab, under its mutex: the generation its cells hold
   std::size_t slabCount_ = 0;

@@ -43,18 +43,6 @@ struct InsideMask {
   double insideFraction() const;
 };
 
-// The mask as a smooth surface, for tests of exact positions (the points method): each voxel's
-// code says whether the trilinear blend of the flags at the voxel centres around a point in it
-// can cross ½ there (kMaskBoundary: its 26 neighbours do not all agree with it), and if not, the
-// answer (kMaskInside or kMaskOutside). Deciding at ½ of that blend, not by the voxel's flag, puts
-// the edge between inside and outside centres: a print many pixels a voxel shows a smooth edge,
-// not the voxels' steps.
-inline constexpr std::uint8_t kMaskOutside = 0, kMaskInside = 1, kMaskBoundary = 2;
-std::vector<std::uint8_t> maskSurfaceCodes(const InsideMask& mask);
-// The blend of the flags at grid position (x, y, z) (voxel units: voxel i spans [i, i + 1)) is at
-// least ½; centres outside the grid count as outside.
-bool insideSmoothly(const InsideMask& mask, float x, float y, float z);
-
 // threads: 0 means every hardware thread.
 InsideMask buildInsideMask(const TriangleMesh& mesh, const GridGeometry& grid,
                            MaskMethod method = MaskMethod::WindingNumber, int threads = 0);
