@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <cmath>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/error.h"
@@ -120,12 +121,19 @@ void bindTexture(const ShaderProgram& program, const char* name, int unit, GLuin
   glUniform1i(program.uniform(name), unit);
 }
 
-// The finishing shaders share finish_common.glsl, put after the version line. The fold and the
-// tone are built as either stage; `compute` defines COMPUTE_STAGE for them.
-ShaderSource withCommon(const ShaderSource& shader, bool compute = false) {
+// The finishing shaders share finish_common.glsl, put after the version line.
+ShaderSource withCommon(const ShaderSource& shader) {
   const ShaderSource common = embeddedShader("finish_common.glsl");
-  return {shader.file, std::string("#version 430 core\n") + (compute ? "#define COMPUTE_STAGE\n" : "") + common.text +
-                           "\n#line 1\n" + shader.text};
+  return {shader.file, "#version 430 core\n" + common.text + "\n#line 1\n" + shader.text};
+}
+
+// The fold or the tone (`pass`, whose function `pixelFunction` gives one pixel) as a compute or a
+// fragment stage: finish_stage.glsl after it.
+ShaderSource withStage(const char* pass, const char* pixelFunction, bool compute) {
+  const ShaderSource body = withCommon(embeddedShader(pass));
+  return {body.file, std::string("#version 430 core\n") + (compute ? "#define COMPUTE_STAGE\n" : "") +
+                         "#define FINISH_PIXEL " + pixelFunction + "\n" + body.text.substr(body.text.find('\n') + 1) +
+                         "\n" + embeddedShader("finish_stage.glsl").text};
 }
 
 // Runs `program`, a compute stage of the fold or the tone, over `size` pixels of `output`
@@ -158,10 +166,10 @@ int glImageLimit() {
 FlameFinisher::FlameFinisher()
     : scatterProgram_(withCommon(embeddedShader("finish_scatter.vert.glsl")),
                       embeddedShader("finish_scatter.frag.glsl")),
-      foldProgram_(embeddedShader("fullscreen.vert.glsl"), withCommon(embeddedShader("finish_fold.glsl"))),
-      toneProgram_(embeddedShader("fullscreen.vert.glsl"), withCommon(embeddedShader("finish_tone.glsl"))),
-      foldComputeProgram_(withCommon(embeddedShader("finish_fold.glsl"), true)),
-      toneComputeProgram_(withCommon(embeddedShader("finish_tone.glsl"), true)),
+      foldProgram_(embeddedShader("fullscreen.vert.glsl"), withStage("finish_fold.glsl", "foldPixel", false)),
+      toneProgram_(embeddedShader("fullscreen.vert.glsl"), withStage("finish_tone.glsl", "tonePixel", false)),
+      foldComputeProgram_(withStage("finish_fold.glsl", "foldPixel", true)),
+      toneComputeProgram_(withStage("finish_tone.glsl", "tonePixel", true)),
       compactProgram_(withCommon(embeddedShader("finish_compact.comp.glsl"))),
       gatherProgram_(withCommon(embeddedShader("finish_gather.comp.glsl"))) {
   // Sprites are the faster on a software rasteriser, gathering on a GPU (H200: 0.7 against 27 ms
@@ -432,31 +440,29 @@ core::FinishedImage finishImageOnGpu(FlameFinisher& finisher, const core::Densit
   GLuint densityTexture = 0, overlayTexture = 0, outputTexture = 0, outputFramebuffer = 0;
   std::vector<float> rows;
   std::vector<std::uint8_t> byteRows;
-  // A region [lo, hi) of an image in memory (rows top to bottom) into `texture`. GL's rows run
-  // bottom to top: GL row y is the image's row imageHeight - 1 - y.
-  auto flipRegion = [](auto& into, const auto* pixels, int imageWidth, int imageHeight, glm::ivec2 lo, glm::ivec2 hi) {
+  // A region [lo, hi) of an image in memory (rows top to bottom) into `texture`: float sums as
+  // RGBA32F, the mesh layer's bytes as RGBA8 (the shader reads byte / 255, as core::finishImage
+  // does). GL's rows run bottom to top: GL row y is the image's row imageHeight - 1 - y.
+  auto upload = [&](GLuint& texture, const auto* pixels, int imageWidth, int imageHeight, glm::ivec2 lo,
+                    glm::ivec2 hi) {
+    constexpr bool kFloats = std::is_same_v<std::remove_cv_t<std::remove_pointer_t<decltype(pixels)>>, float>;
+    auto& into = [&]() -> auto& {
+      if constexpr (kFloats)
+        return rows;
+      else
+        return byteRows;
+    }
+    ();
     const int w = hi.x - lo.x, h = hi.y - lo.y;
     into.resize(4 * static_cast<std::size_t>(w) * static_cast<std::size_t>(h));
     for (int y = 0; y < h; ++y)
       std::copy_n(pixels + 4 * (static_cast<std::size_t>(imageHeight - 1 - (lo.y + y)) * imageWidth + lo.x),
                   4 * static_cast<std::size_t>(w), &into[4 * static_cast<std::size_t>(y) * w]);
-  };
-  auto upload = [&](GLuint& texture, const float* pixels, int imageWidth, int imageHeight, glm::ivec2 lo,
-                    glm::ivec2 hi) {
-    flipRegion(rows, pixels, imageWidth, imageHeight, lo, hi);
     if (!texture) texture = makeTexture();
     glBindTexture(GL_TEXTURE_2D, texture);
     glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, hi.x - lo.x, hi.y - lo.y, 0, GL_RGBA, GL_FLOAT, rows.data());
-  };
-  // The mesh layer's bytes, which the shader reads as byte / 255 as core::finishImage does.
-  auto uploadBytes = [&](GLuint& texture, const std::uint8_t* pixels, int imageWidth, int imageHeight, glm::ivec2 lo,
-                         glm::ivec2 hi) {
-    flipRegion(byteRows, pixels, imageWidth, imageHeight, lo, hi);
-    if (!texture) texture = makeTexture();
-    glBindTexture(GL_TEXTURE_2D, texture);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, hi.x - lo.x, hi.y - lo.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, byteRows.data());
+    glTexImage2D(GL_TEXTURE_2D, 0, kFloats ? GL_RGBA32F : GL_RGBA8, w, h, 0, GL_RGBA,
+                 kFloats ? GL_FLOAT : GL_UNSIGNED_BYTE, into.data());
   };
   try {
     for (int oy = 0; oy < height; oy += tile)
@@ -476,7 +482,7 @@ core::FinishedImage finishImageOnGpu(FlameFinisher& finisher, const core::Densit
           // The silhouette's edge looks one pixel around.
           const glm::ivec2 overlayLo = glm::max(outLo - 1, glm::ivec2(0));
           const glm::ivec2 overlayHi = glm::min(outHi + 1, glm::ivec2(width, height));
-          uploadBytes(overlayTexture, overlay->rgba.data(), width, height, overlayLo, overlayHi);
+          upload(overlayTexture, overlay->rgba.data(), width, height, overlayLo, overlayHi);
           source.overlay = overlayTexture;
           source.overlayOrigin = overlayLo;
         }

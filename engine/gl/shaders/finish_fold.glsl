@@ -1,8 +1,8 @@
 // The log image (flame_finisher.h), one pixel per density pixel: with density estimation on, the
 // scattered target's pixel, plus its padding folded onto the image's edge pixels (core's
 // estimator piles weight that falls outside the image on the edge pixel), plus the pixel's own
-// value when its kernel is one pixel (not scattered); with it off, the pixel's log value. Built
-// as a fragment or a compute stage (COMPUTE_STAGE).
+// value when its kernel is one pixel (not scattered); with it off, the pixel's log value. Its
+// stage (fragment or compute) comes from finish_stage.glsl, which calls foldPixel.
 
 uniform sampler2D uDensity;
 uniform sampler2D uScatter;  // padded by uPad on every side
@@ -14,14 +14,6 @@ uniform float uHitsPerUnit;
 uniform float uBrightness;
 const int kMaxKernels = 192;
 uniform vec4 uKernels[kMaxKernels];
-#ifdef COMPUTE_STAGE
-// As a compute pass (flame_finisher.h's computePasses): one invocation per pixel of uOutput.
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f) writeonly uniform image2D uOutput;
-uniform ivec2 uOutputSize;
-#else
-out vec4 fragColor;
-#endif
 
 // The log image's pixel q (of the region, bottom-left origin).
 vec4 foldPixel(ivec2 q) {
@@ -40,14 +32,4 @@ vec4 foldPixel(ivec2 q) {
   for (int y = lo.y; y <= hi.y; ++y)
     for (int x = lo.x; x <= hi.x; ++x) sum += texelFetch(uScatter, ivec2(x, y), 0);
   return sum;
-}
-
-void main() {
-#ifdef COMPUTE_STAGE
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (pixel.x >= uOutputSize.x || pixel.y >= uOutputSize.y) return;
-  imageStore(uOutput, pixel, foldPixel(pixel));
-#else
-  fragColor = foldPixel(ivec2(gl_FragCoord.xy));
-#endif
 }

@@ -1,8 +1,8 @@
 // The rest of the finish (flame_finisher.h), one output pixel each: flam3's spatial filter from the
 // supersampled log image, gamma with a linear threshold, vibrancy, highlight power, background,
 // the mesh overlay (ghost or silhouette), contrast, exposure, and the display encoding or linear
-// light. A port of core::finishImage's per-pixel code; alpha carries the pattern's opacity. Built
-// as a fragment or a compute stage (COMPUTE_STAGE).
+// light. A port of core::finishImage's per-pixel code; alpha carries the pattern's opacity. Its
+// stage (fragment or compute) comes from finish_stage.glsl, which calls tonePixel.
 
 uniform sampler2D uLog;      // log image of a region of the supersampled image
 uniform ivec2 uLogOrigin;    // its lower-left pixel in the full supersampled image
@@ -29,14 +29,6 @@ uniform sampler2D uOverlay;
 uniform ivec2 uOverlayOrigin;  // of the overlay region in the full output image
 uniform float uOverlayStrength;
 uniform vec3 uLineColor;  // display-encoded
-#ifdef COMPUTE_STAGE
-// As a compute pass (flame_finisher.h's computePasses): one invocation per pixel of uOutput.
-layout(local_size_x = 8, local_size_y = 8) in;
-layout(rgba32f) writeonly uniform image2D uOutput;
-uniform ivec2 uOutputSize;
-#else
-out vec4 fragColor;
-#endif
 
 float gammaAlpha(float density, float g, float threshold) {
   if (density <= 0.0) return 0.0;
@@ -133,14 +125,4 @@ vec4 tonePixel(ivec2 local) {
   color = (color - 0.5) * uContrast + 0.5;
   color = uLinearOutput ? pow(max(color, vec3(0.0)), vec3(uGamma)) : clamp(color, 0.0, 1.0);
   return vec4(color, min(alpha, 1.0));
-}
-
-void main() {
-#ifdef COMPUTE_STAGE
-  ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-  if (pixel.x >= uOutputSize.x || pixel.y >= uOutputSize.y) return;
-  imageStore(uOutput, pixel, tonePixel(pixel));
-#else
-  fragColor = tonePixel(ivec2(gl_FragCoord.xy));
-#endif
 }
