@@ -87,6 +87,19 @@ float luminance(const float* p) {
 class Renderer : public ::testing::Test {
  protected:
   void marchInBandsOfRows();
+  // Uploads a tinted uniform cube and returns settings that look at it from above and aside
+  // (35°, 20°) with a neutral tone: rays of every length cross it.
+  gl::RenderSettings uploadObliqueCube() {
+    const core::PackedVolume cube = uniformCube(200, 120, 255);
+    renderer.upload(cube);
+    core::CameraSettings camera;
+    camera.azimuthDeg = 35.0;
+    camera.elevationDeg = 20.0;
+    gl::RenderSettings settings;
+    settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.5);
+    settings.tone = neutralTone(0.5);
+    return settings;
+  }
 
   gl::HeadlessContext context;
   gl::VolumeRenderer renderer;
@@ -195,14 +208,7 @@ TEST_F(Renderer, HighlightPowerDesaturatesOverexposedColour) {
 }
 
 TEST_F(Renderer, TiledAndSampledRendersMatchOneTile) {
-  const core::PackedVolume cube = uniformCube(200, 120, 255);
-  renderer.upload(cube);
-  core::CameraSettings camera;
-  camera.azimuthDeg = 35.0;
-  camera.elevationDeg = 20.0;
-  gl::RenderSettings settings;
-  settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.5);
-  settings.tone = neutralTone(0.5);
+  gl::RenderSettings settings = uploadObliqueCube();
   settings.tone.gamma = 2.2;
   settings.tone.estimatorRadius = 9.0;  // density estimation must not see tile seams either
   settings.render.samples = 3;
@@ -370,14 +376,7 @@ TEST_F(Renderer, ShadersComeFromEmbeddedFilesAndErrorsNameTheFile) {
 TEST_F(Renderer, ComputeAndFragmentMarchesGiveTheSameSums) {
   // Both stages run the same body (march_common.glsl) and keep the same running average, the
   // fragment stage by blending and the compute stage in the shader.
-  const core::PackedVolume cube = uniformCube(200, 120, 255);
-  renderer.upload(cube);
-  core::CameraSettings camera;
-  camera.azimuthDeg = 35.0;
-  camera.elevationDeg = 20.0;
-  gl::RenderSettings settings;
-  settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.5);
-  settings.tone = neutralTone(0.5);
+  gl::RenderSettings settings = uploadObliqueCube();
   constexpr int kWidth = 45, kHeight = 31, kSamples = 4;
   core::DensityImage sums[2];
   for (int i = 0; i < 2; ++i) {
@@ -410,14 +409,7 @@ void Renderer::marchInBandsOfRows() {
   // The explorer's still view refines in bands of rows (app::RefineBands), each band keeping its
   // own sample count: once every band has its samples each pixel must hold exactly what an
   // untiled march gives it, whatever the bands and the order passes reach them in.
-  const core::PackedVolume cube = uniformCube(200, 120, 255);
-  renderer.upload(cube);
-  core::CameraSettings camera;
-  camera.azimuthDeg = 35.0;
-  camera.elevationDeg = 20.0;
-  gl::RenderSettings settings;
-  settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.5);
-  settings.tone = neutralTone(0.5);
+  gl::RenderSettings settings = uploadObliqueCube();
   constexpr int kWidth = 45, kHeight = 31, kSamples = 5, kFirstIndex = 17;
   gl::FrameTarget whole;
   whole.resize(kWidth, kHeight);
