@@ -317,6 +317,20 @@ int animateCommand(const AnimateArguments& arguments) {
       StillResult result;
       double accumulateSeconds = 0.0;
       const std::string path = framePath(*output, frame);
+      // Accumulates the moment's volume unless the last one shows it already; true when it did.
+      auto accumulateFor = [&](const core::Scene& moment) {
+        if (!needsNewVolume(volumeScene, moment)) return false;
+        if (moment.gridResolution != shapeResolution) {
+          shape = buildSceneShape(moment);
+          shapeResolution = moment.gridResolution;
+        }
+        accumulated = accumulateVolume(moment, shape, options);
+        accumulateSeconds += accumulated.seconds;
+        if (!accumulated.warning.empty())
+          std::cerr << "\nvoxflame: warning: frame " << frame << ": " << accumulated.warning << "\n";
+        volumeScene = moment;
+        return true;
+      };
       auto reportFrame = [&] {
         const double frameSeconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - frameStart).count();
@@ -330,16 +344,7 @@ int animateCommand(const AnimateArguments& arguments) {
         // The frame's accumulated volume, with the same locked fit and seed as its PNG would have:
         // a volume that does not change between frames (a camera move) is written again as it is.
         const core::Scene moment = core::sceneAtTime(scene, time);
-        if (needsNewVolume(volumeScene, moment)) {
-          if (moment.gridResolution != shapeResolution) {
-            shape = buildSceneShape(moment);
-            shapeResolution = moment.gridResolution;
-          }
-          accumulated = accumulateVolume(moment, shape, options);
-          if (!accumulated.warning.empty())
-            std::cerr << "\nvoxflame: warning: frame " << frame << ": " << accumulated.warning << "\n";
-          volumeScene = moment;
-        }
+        accumulateFor(moment);
         if (interrupted) throw RenderCancelled();
         result.stats = accumulated.stats;
         // No times in the file: a frame rendered again, here or on a farm, holds the same preset.
@@ -357,19 +362,10 @@ int animateCommand(const AnimateArguments& arguments) {
         const double offset =
             arguments.motionBlur > 1 ? ((sub + 0.5) / arguments.motionBlur - 0.5) * arguments.shutter / fps : 0.0;
         const core::Scene moment = core::sceneAtTime(scene, std::max(0.0, time + offset));
-        if (needsNewVolume(volumeScene, moment)) {
-          if (moment.gridResolution != shapeResolution) {
-            shape = buildSceneShape(moment);
-            shapeResolution = moment.gridResolution;
-          }
-          accumulated = accumulateVolume(moment, shape, options);
-          accumulateSeconds += accumulated.seconds;
-          if (!accumulated.warning.empty())
-            std::cerr << "\nvoxflame: warning: frame " << frame << ": " << accumulated.warning << "\n";
+        if (accumulateFor(moment)) {
           core::packVolume(accumulated.snapshot, volume);
           if (!renderer) renderer.emplace();
           renderer->setVolume(volume, shape);
-          volumeScene = moment;
         }
         if (interrupted) throw RenderCancelled();
         const core::ImageRGBA image = renderer->render(moment, arguments.width, arguments.height, false);
