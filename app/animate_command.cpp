@@ -164,67 +164,6 @@ int frameStatus(const std::string& pattern, const std::optional<std::string>& fr
   return 1;
 }
 
-// A partition name goes into a #SBATCH line: one word of the characters Slurm allows.
-void checkPartition(const std::string& partition) {
-  const bool plain = !partition.empty() && std::all_of(partition.begin(), partition.end(), [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '_' || c == '-' || c == '.' || c == ',';
-  });
-  if (!plain)
-    throw UsageError("--partition '" + partition + "' is not a Slurm partition name (letters, digits, _ - . ,)");
-}
-
-// Submits the render job, then the finish job to start when every render task has ended; returns
-// the job ids. Throws core::Error when sbatch refuses.
-std::pair<std::string, std::string> submitFarmJob(const std::string& sbatch, const FarmJob& job) {
-  const auto submit = [&](std::vector<std::string> arguments) {
-    std::string output;
-    const int status = runProgram(sbatch, arguments, &output);
-    std::string id = output.substr(0, output.find_first_of(";\n"));
-    if (status != 0 || id.empty() ||
-        !std::all_of(id.begin(), id.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
-      throw core::Error("sbatch failed (exit status " + std::to_string(status) + ") submitting '" + arguments.back() +
-                        "'" + (output.empty() ? "" : ": " + output));
-    return id;
-  };
-  const std::string render = submit({"sbatch", "--parsable", renderScriptPath(job).string()});
-  const std::string finish =
-      submit({"sbatch", "--parsable", "--dependency=afterany:" + render, finishScriptPath(job).string()});
-  return {render, finish};
-}
-
-int writeFarmJob(const FarmJob& job, bool submit) {
-  const std::vector<FrameRange> ranges = splitFrames(job.frames, job.tasks);
-  const std::filesystem::path render = renderScriptPath(job);
-  const std::filesystem::path finish = finishScriptPath(job);
-  const core::AtomicWriteOptions script{.mode = 0755, .createFolder = true, .what = "cannot write the job script"};
-  core::writeFileAtomically(render, renderJobScript(job), script);
-  core::writeFileAtomically(finish, finishJobScript(job), script);
-  std::string split;
-  for (const FrameRange& range : ranges)
-    split += (split.empty() ? "" : ", ") + std::to_string(range.first) + "-" + std::to_string(range.last);
-  std::printf("wrote %s (%zu tasks: frames %s) and %s\n", render.c_str(), ranges.size(), split.c_str(), finish.c_str());
-  if (static_cast<int>(ranges.size()) < job.tasks)
-    std::printf("(%d frames make %zu tasks, not %d)\n", job.frames.count(), ranges.size(), job.tasks);
-  const std::string by = "job=$(sbatch --parsable " + shellQuoted({render.string()}) +
-                         ") && sbatch --dependency=afterany:${job%%;*} " + shellQuoted({finish.string()});
-  if (!submit) {
-    std::printf("submit them with:\n  %s\n", by.c_str());
-    return 0;
-  }
-  const auto sbatch = findOnPath("sbatch");
-  if (!sbatch) {
-    std::cerr << "voxflame: --submit: sbatch is not installed (not found on PATH), so nothing was submitted; the job "
-                 "scripts are written. On a machine of the cluster run:\n  "
-              << by << "\n";
-    return kNoVideoStatus;
-  }
-  const auto [renderId, finishId] = submitFarmJob(*sbatch, job);
-  std::printf("submitted job %s (%zu tasks) and job %s (after every task of %s has ended); logs go beside the frames\n",
-              renderId.c_str(), ranges.size(), finishId.c_str(), renderId.c_str());
-  std::printf("see what is missing with: voxflame animate --status %s\n", shellQuoted({job.pattern}).c_str());
-  return 0;
-}
-
 }  // namespace
 
 int animateCommand(const AnimateArguments& arguments) {
@@ -290,6 +229,9 @@ int animateCommand(const AnimateArguments& arguments) {
   const bool interactive = isatty(fileno(stderr));
   StillOptions options;
   options.threads = arguments.threads;
+  // Split into chunks as `render` splits a still (its default K), so `voxflame render FRAME.png`
+  // makes the frame again, byte for byte.
+  options.chunks = ChunkPlan{};
   options.cancel = &interrupted;
   int current = range.first;
   options.progress = [&](const core::AccumulatorStats& stats, std::uint64_t target) {

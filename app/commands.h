@@ -39,6 +39,18 @@ struct RenderArguments {
   bool widthGiven = false, heightGiven = false;
   std::optional<double> quality;  // --flat: samples per pixel (default: the flame's)
   std::uint64_t seed = 1;         // --flat: the chaos game's seed
+  // A still split into chunks (pipeline.h ChunkPlan): how many, a checkpoint folder that keeps
+  // each finished chunk, and for a farm task the range of chunks it renders (no image).
+  std::optional<int> chunks;
+  std::optional<std::string> checkpoint;
+  std::optional<std::string> chunkRange;  // "A-B"
+  std::optional<std::string> farm;        // "slurm"
+  std::optional<int> tasks;
+  std::optional<std::string> partition;
+  bool submit = false;
+  std::optional<std::string> statusOutput;  // --status OUT: list the chunks still missing
+  // The render options as given ("--width", "640", ...): a farm task passes them on unchanged.
+  std::vector<std::string> taskOptions;
 };
 int renderCommand(const RenderArguments& arguments);  // render_command.cpp
 

@@ -32,7 +32,26 @@ struct FarmJob {
   std::string partition;                  // "" for the cluster's default
   std::vector<std::string> options;       // further animate options for each task (--width 640 ...)
   std::vector<std::string> videoCommand;  // the ffmpeg command of --video; empty without --video
+  // A still split into chunks (`render --farm slurm`) instead of frames: the tasks run
+  // `voxflame render ... --chunk-range A-B` into the checkpoint folder, which holds the scripts.
+  std::string subcommand = "animate";
+  std::string rangeOption = "--frames";
+  std::string what = "frames";
+  std::filesystem::path folder;              // the scripts' and logs' folder (empty: the frames')
+  std::vector<std::string> statusArguments;  // the finish job's check after the subcommand (empty: frames')
+  std::vector<std::string> finishCommand;    // the finish job's last command (a still: the sum), or empty
 };
+
+// Exit status when the farm's job scripts were written but could not be submitted (no sbatch).
+inline constexpr int kFarmNotSubmittedStatus = 3;
+
+// A partition name goes into a #SBATCH line: throws UsageError unless it is one word of the
+// characters Slurm allows.
+void checkPartition(const std::string& partition);
+
+// Writes the job scripts (and submits them with sbatch when `submit`): the render array job, then
+// the finish job to start when every task has ended. Returns the command's exit status.
+int writeFarmJob(const FarmJob& job, bool submit);
 
 // The job scripts' paths: in the folder of the frames (of frame 0, should the folder hold the number).
 std::filesystem::path renderScriptPath(const FarmJob& job);

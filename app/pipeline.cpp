@@ -77,9 +77,103 @@ void reportAccumulation(const StillOptions& options, const core::AccumulatorStat
                   target ? static_cast<double>(std::min(stats.points, target)) / static_cast<double>(target) : 1.0);
 }
 
+// The volume method split into chunks (ChunkPlan): chunk by chunk into one grid, or with
+// gridDone, each chunk into a cleared grid whose sums are handed over and added up.
+AccumulatedVolume accumulateChunks(const core::Scene& scene, const SceneShape& shape, const StillOptions& options) {
+  const ChunkPlan& plan = *options.chunks;
+  AccumulatedVolume result;
+  const std::uint64_t target = options.points ? options.points : scene.points;
+  const int chunks = std::max(1, plan.chunks);
+  std::vector<int> list;
+  if (plan.render)
+    list = *plan.render;
+  else
+    for (int chunk = 0; chunk < chunks; ++chunk) list.push_back(chunk);
+  const bool perChunk = static_cast<bool>(plan.gridDone);
+  const auto start = std::chrono::steady_clock::now();
+  core::Accumulator accumulator(shape.mask, options.threads);
+  core::GridSums total;
+  if (perChunk) {
+    if (plan.earlierGrid)
+      total = *plan.earlierGrid;
+    else
+      total.reset(shape.mask->geometry, accumulator.colourLayout());
+    if (total.geometry.size != shape.mask->geometry.size || total.colour.shift != accumulator.colourLayout().shift)
+      throw core::Error("the chunks rendered earlier are of another grid");
+  }
+  core::ConvergenceMeter meter;
+  core::DensitySample sample;
+  accumulator.setHeld(true);  // nothing runs until the first chunk's streams are set
+  accumulator.setTargetPoints(1);
+  accumulator.setPattern(scene.layers, scene.seed);
+  const std::uint64_t iterationLimit = 40 * (target / static_cast<std::uint64_t>(chunks)) + 50'000'000;
+  std::uint64_t pointsDone = perChunk ? total.points : 0, iterationsDone = perChunk ? total.iterations : 0;
+  const std::uint64_t reportedTarget = pointsDone + [&] {
+    std::uint64_t sum = 0;
+    for (int chunk : list) sum += core::chunkPoints(target, chunks, chunk);
+    return sum;
+  }();
+  int chunksDone = 0;
+  for (const int chunk : list) {
+    const std::uint64_t chunkTarget = core::chunkPoints(target, chunks, chunk);
+    const core::AccumulatorStats before = accumulator.stats();
+    accumulator.setChunk(static_cast<std::uint64_t>(chunk), perChunk);
+    accumulator.setTargetPoints(std::max<std::uint64_t>(chunkTarget, 1));
+    accumulator.setHeld(false);
+    const std::uint64_t pointsBefore = perChunk ? 0 : before.points;
+    const std::uint64_t iterationsBefore = perChunk ? 0 : before.iterations;
+    while (!accumulator.waitUntilDone(0.25)) {
+      if (options.cancel && options.cancel->load()) throw RenderCancelled();
+      core::AccumulatorStats stats = accumulator.stats();
+      if (!stats.problem.empty()) break;
+      if (stats.iterations - iterationsBefore > iterationLimit) {
+        result.warning = "only " + std::to_string(stats.points - pointsBefore) + " of " + std::to_string(chunkTarget) +
+                         " points of chunk " + std::to_string(chunk) +
+                         " landed inside the mesh; the pattern barely overlaps it";
+        break;
+      }
+      if (perChunk) stats.points += pointsDone;
+      reportAccumulation(options, stats, reportedTarget);
+    }
+    accumulator.setHeld(true);
+    const core::AccumulatorStats stats = accumulator.stats();
+    if (!stats.problem.empty()) throw core::Error(stats.problem);
+    if (!result.warning.empty()) throw core::Error(result.warning);
+    ++chunksDone;
+    if (perChunk) {
+      core::GridSums sums = core::readGridSums(accumulator, stats);
+      plan.gridDone(chunk, sums);
+      pointsDone += sums.points;
+      iterationsDone += sums.iterations;
+      if (plan.finish) total.add(sums);
+    } else if (chunksDone == std::max(1, static_cast<int>(list.size()) / 3)) {
+      // The noise of the final grid is measured against a third of it, as for an unchunked still.
+      accumulator.sampleDensity(sample);
+      meter.update(sample);
+    }
+    if (plan.progress) plan.progress(chunksDone);
+  }
+  if (perChunk) {
+    result.stats.points = pointsDone;
+    result.stats.iterations = iterationsDone;
+    result.stats.done = true;
+    if (plan.finish) core::snapshotFromSums(total, result.snapshot);
+  } else {
+    result.stats = accumulator.stats();
+    accumulator.sampleDensity(sample);
+    result.noise = meter.update(sample);
+    accumulator.snapshot(result.snapshot);
+  }
+  reportAccumulation(options, result.stats, reportedTarget);
+  result.seconds = secondsSince(start);
+  return result;
+}
+
 }  // namespace
 
 AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& shape, const StillOptions& options) {
+  if (options.chunks && options.untilNoise <= 0.0 && scene.render.method != core::RenderMethod::Points)
+    return accumulateChunks(scene, shape, options);
   AccumulatedVolume result;
   const bool untilNoise = options.untilNoise > 0.0;
   std::uint64_t target = options.points ? options.points : untilNoise ? kUntilNoisePointCap : scene.points;
@@ -168,6 +262,7 @@ struct FrameRenderer::Impl {
   bool meshUploaded = false;
   std::uint64_t points = 0;
   int threads = 0;
+  const ChunkPlan* chunks = nullptr;
   bool keepSums = false;
 };
 
@@ -189,9 +284,10 @@ void FrameRenderer::setVolume(const core::PackedVolume& volume, const SceneShape
   impl_->shape = &shape;
 }
 
-void FrameRenderer::setPointsPass(std::uint64_t points, int threads) {
+void FrameRenderer::setPointsPass(std::uint64_t points, int threads, const ChunkPlan* chunks) {
   impl_->points = points;
   impl_->threads = threads;
+  impl_->chunks = chunks;
 }
 
 core::ImageRGBA FrameRenderer::render(const core::Scene& scene, int width, int height, bool linearOutput,
@@ -230,8 +326,17 @@ FrameRenderer::Rendered FrameRenderer::renderWithStats(const core::Scene& scene,
     points.threads = d.threads;
     points.progress = progress;
     points.pointsInside = &pointsProjected;
+    if (d.chunks) {
+      points.chunks = d.chunks->chunks;
+      points.chunkList = d.chunks->render;
+      if (d.chunks->imageDone) points.chunkDone = d.chunks->imageDone;
+      points.earlierSums = d.chunks->earlierImage;
+      points.makeImage = d.chunks->finish;
+      points.chunkFinished = d.chunks->progress;
+    }
     density = core::projectScenePoints(scene, d.shape->mask, *d.volume, settings.camera, width * oversample,
                                        height * oversample, points);
+    if (d.chunks && !d.chunks->finish) return {};  // a farm task: its chunks' sums are all it makes
     mesh = gl::renderMeshOverlay(d.renderer, settings, width, height);
   } else {
     gl::MarchedImage marched = gl::marchImage(d.renderer, settings, width, height, gl::kDefaultMaxTile, progress);
@@ -272,6 +377,8 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
     result.warning = accumulated.warning;
     result.accumulateSeconds = accumulated.seconds;
     result.noise = accumulated.noise;
+    // A farm task's chunks of the volume method are all it renders.
+    if (options.chunks && !options.chunks->finish && scene.render.method != core::RenderMethod::Points) return result;
     core::packVolume(accumulated.snapshot, volume);
   }
   if (options.cancel && options.cancel->load()) throw RenderCancelled();
@@ -279,7 +386,7 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   FrameRenderer renderer;
   result.renderer = renderer.rendererName();
   renderer.setVolume(volume, shape);
-  renderer.setPointsPass(options.points, options.threads);
+  renderer.setPointsPass(options.points, options.threads, options.chunks ? &*options.chunks : nullptr);
   // Between sub-samples a cancelled render stops and a progress bar moves.
   std::function<void(double)> renderProgress;
   if (options.cancel || options.stage)

@@ -8,9 +8,12 @@
 #include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "core/accumulator.h"
+#include "core/chunk_sums.h"
 #include "core/error.h"
 #include "core/flame_image.h"
 #include "core/image_io.h"
@@ -38,6 +41,22 @@ void checkGridFitsInMemory(const core::GridGeometry& grid);
 enum class StillStage { Loading, Accumulating, Rendering };
 const char* toString(StillStage stage);  // "loading", "accumulating", "rendering"
 
+// A still's points split into chunks, each iterating its own seed streams (core/chunk_sums.h): the
+// image depends only on the scene, the size and the number of chunks, so a render resumed from a
+// checkpoint, or spread over a farm, gives the same file as one run.
+struct ChunkPlan {
+  int chunks = 64;
+  std::optional<std::vector<int>> render;  // the chunks to render here, in this order (none: all)
+  // When set, each rendered chunk's own sums go here as it finishes (a checkpoint writes them) and
+  // the image is made from them plus those of `earlier` (chunks finished before, read back).
+  std::function<void(int chunk, const core::GridSums& sums)> gridDone;    // volume method
+  std::function<void(int chunk, const core::ImageSums& sums)> imageDone;  // points method
+  const core::GridSums* earlierGrid = nullptr;
+  const core::ImageSums* earlierImage = nullptr;
+  bool finish = true;                            // false: only render the chunks (a farm task): no image is made
+  std::function<void(int chunksDone)> progress;  // after each chunk rendered here (may be empty)
+};
+
 struct StillOptions {
   int width = 1280;
   int height = 720;
@@ -49,6 +68,10 @@ struct StillOptions {
   bool linearOutput = false;                  // linear light (for EXR) instead of display-encoded
   const std::atomic<bool>* cancel = nullptr;  // when set and raised, renderStill throws RenderCancelled
   std::function<void(const core::AccumulatorStats&, std::uint64_t target)> progress;  // may be empty
+  // Set: the points are split into chunks (the volume method's grid, or the points method's
+  // screen histogram; the points method's depth grid is not). None: one set of seed streams,
+  // as a noise target needs.
+  std::optional<ChunkPlan> chunks;
   // Every stage with its fraction done in [0, 1]: Loading once at 0, Accumulating about every
   // quarter second, Rendering after each tile's sub-sample. May be empty.
   std::function<void(StillStage, double fraction)> stage;
@@ -107,7 +130,7 @@ class FrameRenderer {
   // The volume (and the shape it was accumulated in) later render() calls draw.
   void setVolume(const core::PackedVolume& volume, const SceneShape& shape);
   // For the points method: how many points to project (0: the scene's count) on how many threads.
-  void setPointsPass(std::uint64_t points, int threads);
+  void setPointsPass(std::uint64_t points, int threads, const ChunkPlan* chunks = nullptr);
   // `scene`'s camera, tone and render settings (method, samples, oversample, mesh overlay,
   // lighting). `progress` (may be empty) gets the fraction done (after each tile's sub-sample, or
   // as points are projected); it may throw to stop the render.

@@ -178,13 +178,50 @@ Run defineRender(CLI::App& command) {
       ->check(within(1, 4));
   command.add_flag("--stats", a->stats,
                    "Print the render statistics as JSON too (\"noise\": the final noise estimate, a fraction)");
+  command
+      .add_option("--chunks", a->chunks,
+                  "Split the points into K chunks, each with its own seed streams (default 64): the image depends "
+                  "only on the preset, the size and K, wherever and however the chunks are rendered")
+      ->type_name("K")
+      ->check(within(1, 100000));
+  command
+      .add_option("--checkpoint", a->checkpoint,
+                  "Keep each finished chunk in DIR (EXR or VDB); run the same command again to render only the "
+                  "missing chunks and finish")
+      ->type_name("DIR");
+  command
+      .add_option("--chunk-range", a->chunkRange,
+                  "Render only chunks A-B into the --checkpoint folder and make no image (a farm task)")
+      ->type_name("A-B");
+  command.add_option("--farm", a->farm, "Write a job for this scheduler instead of rendering")
+      ->check(CLI::IsMember({"slurm"}));
+  command.add_option("--tasks", a->tasks, "Tasks of the farm job, each rendering one contiguous range of chunks")
+      ->check(within(1, 100000));
+  command.add_option("--partition", a->partition, "Slurm partition of the farm job");
+  command.add_flag("--submit", a->submit, "Submit the farm job with sbatch");
+  command
+      .add_option("--status", a->statusOutput,
+                  "List the chunks of OUT still missing from its checkpoint folder (exit status 1 when any is) and "
+                  "the farm tasks that render them, instead of rendering")
+      ->type_name("OUT");
   command.footer(
       "Renders headless (no display needed). A PNG carries its preset: rendering it again reproduces it.\n"
       "EXR is linear 32-bit float. VDB and NRRD hold the volume itself (normalised density and colour, in\n"
-      "the mesh's coordinates) for other renderers. Ctrl-C stops cleanly and writes nothing.");
-  return [a, width, height] {
+      "the mesh's coordinates) for other renderers. Ctrl-C stops cleanly and writes nothing (with\n"
+      "--checkpoint, the finished chunks stay). With --farm slurm, writes a Slurm array job whose tasks\n"
+      "render ranges of chunks into OUT.chunks/ (or --checkpoint) and a job that sums them into OUT.");
+  // What a farm task renders with: the options that shape the image, as given.
+  const std::vector<std::string> passedOnNames = {
+      "--width", "--height",         "--samples",          "--points",  "--grid",   "--bit-depth",
+      "--time",  "--camera-azimuth", "--camera-elevation", "--threads", "--method", "--oversample"};
+  return [a, width, height, passedOnNames, &command] {
     a->widthGiven = width->count() > 0;
     a->heightGiven = height->count() > 0;
+    a->taskOptions.clear();
+    for (const std::string& name : passedOnNames) {
+      const CLI::Option* option = command.get_option_no_throw(name);
+      if (option && option->count() > 0) a->taskOptions.insert(a->taskOptions.end(), {name, option->results().back()});
+    }
     return app::renderCommand(*a);
   };
 }

@@ -5,7 +5,8 @@
 # 8 frames as 4 array tasks with `voxflame animate --farm slurm --submit`, waits for it, and checks
 # that the frames are byte for byte those of a local `voxflame animate` of the same range and that
 # the finish job made the video. Then it deletes a frame, re-runs only the task that renders it as
-# `voxflame animate --status` says, and checks again. Every daemon it started is stopped on exit,
+# `voxflame animate --status` says, and checks again. Then the same for a still split into 64 chunks
+# over 4 tasks (`voxflame render --farm slurm`), with each render method. Every daemon it started is stopped on exit,
 # also when a check fails. Usage: scripts/test_farm.sh [VOXFLAME_BINARY] (run as root).
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
@@ -44,7 +45,7 @@ cleanup() {
   # munged runs under runuser; should it outlive runuser, its pid file names it.
   if [ -s "$work/munge/munged.pid" ]; then kill "$(cat "$work/munge/munged.pid")" 2>/dev/null || true; fi
   if [ "$status" -ne 0 ]; then
-    for log in "$work"/*.log "$work"/job/frames/*.log; do
+    for log in "$work"/*.log "$work"/job/frames/*.log "$work"/job/*.chunks/*.log; do
       [ -f "$log" ] && { echo "--- $log"; tail -n 30 "$log"; }
     done
   fi
@@ -166,4 +167,50 @@ waitForJobs "${rerun_job%%;*}"
 "$voxflame" animate --status 'frames/%04d.png'
 cmp frames/0005.png local/0005.png
 say "task 2 re-run alone as job ${rerun_job%%;*} restored frame 5, byte-identical"
+
+# A still split over the farm, with each method: 4 tasks render 16 chunks each into the checkpoint
+# folder and the finish job sums them. The image must be byte-identical to a local render with the
+# same K; after a lost chunk, the task --status names re-renders it and the image is the same again.
+stillFarm() {
+  local method=$1 preset=$2
+  local still="still-$method.png"
+  local stillOptions=(--width 200 --height 120 --points 3000000 --grid 64 --method "$method" --chunks 64)
+  "$voxflame" render "$preset" -o "$still" "${stillOptions[@]}" --farm slurm --tasks 4 --partition ci --submit \
+    | tee "submit-$method.txt"
+  local render finish
+  render="$(sed -n 's/^submitted job \([0-9]*\) .*/\1/p' "submit-$method.txt")"
+  finish="$(sed -n 's/^submitted job [0-9]* (.*) and job \([0-9]*\) .*/\1/p' "submit-$method.txt")"
+  [ -n "$render" ] && [ -n "$finish" ] || { echo "test_farm.sh: no job ids for the $method still" >&2; exit 1; }
+  waitForJobs "$render,$finish"
+  cat "$still.chunks/farm-finish-$finish.log"
+  grep -q "all 64 chunks are in" "$still.chunks/farm-finish-$finish.log"
+  [ -s "$still" ] || { echo "test_farm.sh: the finish job wrote no $still" >&2; exit 1; }
+  "$voxflame" render "$preset" -o "local-$still" "${stillOptions[@]}" >/dev/null 2>&1
+  cmp "$still" "local-$still" || { echo "test_farm.sh: the $method still differs from the local render" >&2; exit 1; }
+  say "the $method still of 4 farm tasks is byte-identical to the local render"
+
+  local extension=vdb
+  [ "$method" = points ] && extension=exr
+  rm "$still.chunks/chunk-0037.$extension" "$still"
+  set +e
+  "$voxflame" render --status "$still" | tee "status-$method.txt"
+  local status=${PIPESTATUS[0]}
+  set -e
+  [ "$status" -eq 1 ] || { echo "test_farm.sh: render --status exited $status with a chunk missing" >&2; exit 1; }
+  grep -q "missing 1: 37" "status-$method.txt"
+  local advice
+  advice="$(sed -n 's/^render them again with: //p' "status-$method.txt")"
+  [ "$advice" = "sbatch --array=2 $still.chunks/farm-render.sbatch" ] ||
+    { echo "test_farm.sh: unexpected advice '$advice'" >&2; exit 1; }
+  local again
+  again="$(sbatch --parsable --array=2 "$still.chunks/farm-render.sbatch")"
+  waitForJobs "${again%%;*}"
+  local finishAgain
+  finishAgain="$(sbatch --parsable "$still.chunks/farm-finish.sbatch")"
+  waitForJobs "${finishAgain%%;*}"
+  cmp "$still" "local-$still" || { echo "test_farm.sh: the $method still differs after the re-run" >&2; exit 1; }
+  say "task 2 re-run alone restored chunk 37 of the $method still; the image is byte-identical again"
+}
+stillFarm points "$root/presets/flame-silk-bunny.json"
+stillFarm volume "$root/presets/aizawa-orb.json"
 say "passed"

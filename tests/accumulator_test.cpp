@@ -16,6 +16,7 @@
 #include <memory>
 
 #include "core/accumulator.h"
+#include "core/chunk_sums.h"
 #include "core/convergence.h"
 #include "core/error.h"
 #include "core/grid.h"
@@ -116,6 +117,90 @@ TEST(Accumulator, TheVolumeDoesNotDependOnTheNumberOfThreads) {
   EXPECT_EQ(one.rgba, five.rgba);
   const VolumeSnapshot otherSeed = accumulate(mask, layers, 300'000, 2, 12);
   EXPECT_NE(one.density, otherSeed.density);
+}
+
+namespace {
+
+// Runs `chunks` chunks of `perChunk` points each, one after another; `clear`: each chunk into a
+// cleared grid, its sums read and added up (a checkpoint), else all into one grid (a plain render).
+GridSums accumulateChunks(const std::shared_ptr<const InsideMask>& mask, int chunks, std::uint64_t perChunk,
+                          int threads, bool clear) {
+  Accumulator accumulator(mask, threads);
+  accumulator.setHeld(true);
+  accumulator.setTargetPoints(1);
+  accumulator.setPattern(defaultScene().layers, 7);
+  GridSums total;
+  total.reset(mask->geometry, accumulator.colourLayout());
+  for (int chunk = 0; chunk < chunks; ++chunk) {
+    accumulator.setChunk(static_cast<std::uint64_t>(chunk), clear);
+    accumulator.setTargetPoints(perChunk);
+    accumulator.setHeld(false);
+    EXPECT_TRUE(accumulator.waitUntilDone(60.0));
+    accumulator.setHeld(true);
+    if (clear) total.add(readGridSums(accumulator, accumulator.stats()));
+  }
+  return clear ? total : readGridSums(accumulator, accumulator.stats());
+}
+
+}  // namespace
+
+TEST(AccumulatorChunks, ChunksAddUpTheSameInOneGridOrInPartsOnAnyThreads) {
+  const auto mask = bunnyMask(40);
+  const GridSums together = accumulateChunks(mask, 4, 60'000, 2, false);
+  const GridSums parts = accumulateChunks(mask, 4, 60'000, 1, true);
+  EXPECT_GE(together.points, 240'000u);
+  EXPECT_LT(together.points, 300'000u) << "each chunk overshoots its share by little";
+  EXPECT_EQ(together.points, parts.points);
+  EXPECT_EQ(together.iterations, parts.iterations);
+  EXPECT_EQ(together.hits, parts.hits);
+  EXPECT_EQ(together.red, parts.red);
+  EXPECT_EQ(together.colourPoints, parts.colourPoints);
+  // The snapshot made from sums is the one the live grid gives.
+  Accumulator accumulator(mask, 2);
+  accumulator.setHeld(true);
+  accumulator.setTargetPoints(1);
+  accumulator.setPattern(defaultScene().layers, 7);
+  for (int chunk = 0; chunk < 4; ++chunk) {
+    accumulator.setChunk(static_cast<std::uint64_t>(chunk), false);
+    accumulator.setTargetPoints(60'000);
+    accumulator.setHeld(false);
+    ASSERT_TRUE(accumulator.waitUntilDone(60.0));
+    accumulator.setHeld(true);
+  }
+  VolumeSnapshot live, fromSums;
+  accumulator.snapshot(live);
+  snapshotFromSums(parts, fromSums);
+  EXPECT_EQ(live.density, fromSums.density);
+  EXPECT_EQ(live.rgba, fromSums.rgba);
+  EXPECT_EQ(live.maxDensity, fromSums.maxDensity);
+}
+
+TEST(AccumulatorChunks, EachChunkHasItsOwnStreams) {
+  const auto mask = bunnyMask(32);
+  Accumulator accumulator(mask, 2);
+  std::vector<std::vector<std::uint32_t>> grids;
+  for (std::uint64_t chunk : {0u, 1u, 0u}) {
+    accumulator.setHeld(true);
+    accumulator.setTargetPoints(1);
+    accumulator.setPattern(defaultScene().layers, 7);
+    accumulator.setChunk(chunk, true);
+    accumulator.setTargetPoints(50'000);
+    accumulator.setHeld(false);
+    ASSERT_TRUE(accumulator.waitUntilDone(60.0));
+    grids.push_back(readGridSums(accumulator, accumulator.stats()).hits);
+  }
+  EXPECT_NE(grids[0], grids[1]) << "chunks 0 and 1 drew the same points";
+  EXPECT_EQ(grids[0], grids[2]) << "chunk 0 is not reproducible";
+  // Chunk 0 is where a plain setPattern starts.
+  const VolumeSnapshot plain = accumulate(mask, defaultScene().layers, 50'000, 2);
+  VolumeSnapshot chunk0;
+  GridSums sums;
+  sums.reset(mask->geometry, accumulator.colourLayout());
+  sums.hits = grids[0];
+  std::size_t differing = 0;
+  for (std::size_t v = 0; v < plain.density.size(); ++v)
+    differing += plain.density[v] != static_cast<float>(sums.hits[v]);
+  EXPECT_EQ(differing, 0u);
 }
 
 TEST(Accumulator, EscapingAttractorIsReportedAndNeverSplatted) {

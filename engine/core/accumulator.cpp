@@ -454,6 +454,8 @@ struct OrbitBatch {
   std::vector<float> gx, gy, gz;     // this step's exact grid position (point sink only)
   std::vector<double> colorCoord;    // chaos games: this step's colour index (ColorMode::Index)
   ChaosLanes chaos;                  // chaos games: the iterated state behind x, y, z
+  std::uint64_t epoch = 0;           // Accumulator::orbitEpoch_ when the orbits were seeded
+  double pointsPerStep = 0.0;        // points a step of the stream's last batch yielded, past the transient
   SplitMix64 rng{0};
   std::uint64_t generation = ~std::uint64_t{0};
 };
@@ -899,6 +901,28 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
   notifyWorkChanged();
 }
 
+void Accumulator::setChunk(std::uint64_t chunk, bool clearGrid) {
+  {
+    patternWriters_.fetch_add(1, std::memory_order_acq_rel);
+    std::unique_lock lock(gridMutex_);  // no batch runs while the streams change
+    patternWriters_.fetch_sub(1, std::memory_order_acq_rel);
+    patternWriters_.notify_all();
+    chunk_ = chunk;
+    for (auto& streamPoints : streamPoints_) streamPoints = 0;
+    orbitEpoch_.fetch_add(1, std::memory_order_relaxed);
+    if (clearGrid) {
+      iterations_ = 0;  // the cells are cleared slab by slab as they are next touched
+      points_ = 0;
+      outside_ = 0;
+      escapes_ = 0;
+      generationStart_ = nowSeconds();
+      generation_.fetch_add(1, std::memory_order_acq_rel);
+    }
+    version_.fetch_add(1, std::memory_order_acq_rel);
+  }
+  notifyWorkChanged();
+}
+
 void Accumulator::notifyWorkChanged() {
   // Under the mutex the sleepers check their conditions with: a worker that has just found
   // nothing to do is either not yet waiting (and will see the change) or already asleep (and
@@ -1230,8 +1254,9 @@ std::uint64_t Accumulator::addSplats(const Splat* sorted, const std::size_t* sla
   return inside;
 }
 
-std::uint64_t Accumulator::flushPoints(int threadIndex, SplatBuffer& splats) {
+std::uint64_t Accumulator::flushPoints(int threadIndex, std::uint64_t streamId, SplatBuffer& splats) {
   AcceptedPoints points;
+  points.stream = streamId;
   points.x = splats.x.data();
   points.y = splats.y.data();
   points.z = splats.z.data();
@@ -1255,6 +1280,8 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
   std::shared_lock lock(gridMutex_);
   if (generation != generation_.load()) return;  // a new pattern arrived; pick it up next time
   const GridGeometry& grid = mask_->geometry;
+  // The stream's identity across chunks (setChunk): chunk 0's streams are 0..kStreams-1.
+  const std::uint64_t streamId = chunk_ * kStreams + static_cast<std::uint64_t>(stream);
 
   batches.resize(layers_.size());
 
@@ -1265,14 +1292,46 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
   const Output output = sink_ ? Output::Points : deposit_ == Deposit::Nearest ? Output::Nearest : Output::Jittered;
   if (sink_) splats.reservePoints();
 
+  // The last batch a stream needs is cut short in proportion, so a chunk's points overshoot its
+  // target by little: a full batch yields up to 32 K points, more than a small chunk's share of a
+  // stream. Every layer is cut alike (their weights hold), and the cut depends only on the
+  // stream's own history, so the points stay the same whatever the threads.
+  double stepFraction = 1.0;
+  {
+    const std::uint64_t target = targetPoints_.load();
+    const std::uint64_t quota = (target + kStreams - 1) / kStreams;
+    const std::uint64_t done = streamPoints_[static_cast<std::size_t>(stream)].load();
+    const double yield = batches.empty() ? 0.0 : batches.front().pointsPerStep * kStepsPerBatch;
+    const bool history = yield > 0.0 && batches.front().epoch == orbitEpoch_.load(std::memory_order_relaxed) &&
+                         batches.front().generation == generation;
+    if (target > 0 && quota > done) {
+      const auto remaining = static_cast<double>(quota - done);
+      // Without a batch of this chunk behind it, the stream's orbits are fresh: they take their
+      // transient first, then yield at most one point a step each.
+      // Every layer's orbits add points, each in proportion to its steps.
+      double layerShare = 0.0;
+      for (const auto& l : layers_)
+        if (l.bounded && l.layer.weight > 0.0 && maxWeight > 0.0) layerShare += l.layer.weight / maxWeight;
+      layerShare = std::max(layerShare, 1.0);
+      stepFraction =
+          history ? 1.1 * remaining / yield
+                  : (kTransientSteps + 1.1 * remaining / (static_cast<double>(kOrbitsPerBatch) * layerShare) + 1.0) /
+                        static_cast<double>(kStepsPerBatch);
+      stepFraction = std::clamp(stepFraction, 1.0 / kStepsPerBatch, 1.0);
+    }
+  }
+  bool freshOrbits = false;  // the orbits were (re)seeded this batch: their transient came first
   for (std::size_t li = 0; li < layers_.size(); ++li) {
     const PreparedLayer& layer = layers_[li];
     if (!layer.bounded || maxWeight <= 0.0 || layer.layer.weight <= 0.0) continue;
     OrbitBatch& b = batches[li];
-    if (b.generation != generation) {
-      // New generation: restart this thread's orbits from the seed pool, reproducibly.
+    const std::uint64_t epoch = orbitEpoch_.load(std::memory_order_relaxed);
+    if (b.generation != generation || b.epoch != epoch) {
+      // New generation or chunk: restart this thread's orbits from the seed pool, reproducibly.
+      freshOrbits = true;
       b.generation = generation;
-      b.rng = SplitMix64(mixSeed(seed_, (static_cast<std::uint64_t>(stream) << 8) + li));
+      b.epoch = epoch;
+      b.rng = SplitMix64(mixSeed(seed_, (streamId << 8) + li));
       for (auto* v : {&b.x, &b.y, &b.z, &b.px, &b.py, &b.pz, &b.sx, &b.sy, &b.sz}) v->assign(kOrbitsPerBatch, 0.0);
       b.age.assign(kOrbitsPerBatch, 0);
       b.voxel.assign(kOrbitsPerBatch, -1);
@@ -1282,7 +1341,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
       b.cell.assign(kOrbitsPerBatch, 0);
       b.slab.assign(kOrbitsPerBatch, 0);
       // The jitter has its own random numbers, so the orbits are the same whatever the deposit.
-      SplitMix64 noiseSeeds(mixSeed(mixSeed(seed_, 0x6a6974746572ULL), (static_cast<std::uint64_t>(stream) << 8) + li));
+      SplitMix64 noiseSeeds(mixSeed(mixSeed(seed_, 0x6a6974746572ULL), (streamId << 8) + li));
       b.noise.resize(kOrbitsPerBatch);
       for (auto& n : b.noise) n = static_cast<std::uint32_t>(noiseSeeds.next() >> 32) | 1u;
       for (auto* v : {&b.gx, &b.gy, &b.gz}) v->assign(kOrbitsPerBatch, 0.0f);
@@ -1305,7 +1364,8 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
     const double* params = layer.layer.params.data();
     const double h = layer.layer.step;
     // A layer's weight is its share of the iterations, hence of the density it adds.
-    const int steps = std::max(1, static_cast<int>(std::lround(kStepsPerBatch * layer.layer.weight / maxWeight)));
+    const int fullSteps = std::max(1, static_cast<int>(std::lround(kStepsPerBatch * layer.layer.weight / maxWeight)));
+    const int steps = std::max(1, static_cast<int>(std::ceil(fullSteps * stepFraction)));
     const LayerKernel kernel = makeKernel(layer, grid, colour_, slabShift_);
     const ClassifyFn classify = classifier(layer.layer.color.mode, output);
     std::uint32_t packedPalette[256];
@@ -1351,7 +1411,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
           escapedHere += b.escaped[i];
         }
         splats.pointCount = n;
-        if (n >= kFlushThreshold) points += flushPoints(threadIndex, splats);
+        if (n >= kFlushThreshold) points += flushPoints(threadIndex, streamId, splats);
       } else {
         // Branch-free append of every settled point in a brick that touches the mask (a 4×4×4-voxel
         // bitmap small enough to stay in L1/L2 drops most outside points here); the exact test
@@ -1409,12 +1469,17 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
       }
     }
   }
-  if (splats.pointCount > 0) points += flushPoints(threadIndex, splats);
+  if (splats.pointCount > 0) points += flushPoints(threadIndex, streamId, splats);
   if (splats.count > 0) {
     const std::uint64_t inside = flushSplats(splats);
     points += inside;
     outside += splats.count - inside;
     splats.count = 0;
+  }
+  // What a step of this stream yields now, its orbits past their transient.
+  if (!batches.empty()) {
+    const double steps = std::ceil(kStepsPerBatch * stepFraction) - (freshOrbits ? kTransientSteps : 0);
+    batches.front().pointsPerStep = steps > 0.0 ? static_cast<double>(points) / steps : 0.0;
   }
   iterations_.fetch_add(iterations, std::memory_order_relaxed);
   points_.fetch_add(points, std::memory_order_relaxed);

@@ -149,6 +149,10 @@ struct AcceptedPoints {
   const float* z = nullptr;
   const std::uint32_t* rgb = nullptr;  // linear RGB8 packed r | g << 8 | b << 16
   std::size_t count = 0;
+  // The seed stream they came from (Accumulator::setChunk): every call holds one stream's points
+  // in the order it made them, so a sink can draw its own random numbers per stream and stay
+  // independent of the threads.
+  std::uint64_t stream = 0;
 };
 
 // Receives every accepted point instead of the grid (a points-to-image renderer projects them).
@@ -269,6 +273,14 @@ class Accumulator {
   void setPointSink(PointSink* sink);
   // Stop once this many points are inside (0 = refine forever).
   void setTargetPoints(std::uint64_t target);
+  // Restarts every orbit in the seed streams of chunk `chunk` (streams chunk·kStreams onwards;
+  // chunk 0 is where setPattern starts), with the stream counts back at zero so the target counts
+  // the chunk's own points. `clearGrid`: the grid starts empty too (a new generation); otherwise
+  // the chunk adds to what is there and the statistics go on counting. A still's points split into
+  // chunks (chunk_sums.h) so it can be resumed or spread over a farm. Call when the workers are
+  // idle (the previous chunk reached its target) or held, then set the chunk's target.
+  void setChunk(std::uint64_t chunk, bool clearGrid);
+  static constexpr int streamsPerChunk() { return kStreams; }
   // While held the workers start no batch (and sleep), whatever the target; the grid keeps what
   // it has, and a new pattern set meanwhile waits, cleared, until the hold ends.
   void setHeld(bool held);
@@ -318,7 +330,7 @@ class Accumulator {
   void runBatch(int threadIndex, int stream, std::uint64_t generation, std::vector<struct OrbitBatch>& batches,
                 struct SplatBuffer& splats);
   // Hands a thread's collected points to the sink; returns how many there were.
-  std::uint64_t flushPoints(int threadIndex, struct SplatBuffer& splats);
+  std::uint64_t flushPoints(int threadIndex, std::uint64_t streamId, struct SplatBuffer& splats);
   bool streamDone(int stream, std::uint64_t target) const;
   bool allStreamsDone(std::uint64_t target) const;
   // Adds a thread's collected splats to the grid; returns how many landed inside the mask.
@@ -360,6 +372,8 @@ class Accumulator {
   mutable std::shared_mutex gridMutex_;  // shared: a batch writing; exclusive: a generation change
   std::vector<PreparedLayer> layers_;    // guarded by gridMutex_
   std::uint64_t seed_ = 1;
+  std::uint64_t chunk_ = 0;                   // guarded by gridMutex_ (setChunk)
+  std::atomic<std::uint64_t> orbitEpoch_{0};  // bumped by setChunk: orbits restart in the chunk's streams
   // What setDeposit / setPointSink asked for, and what the current generation uses (copied by
   // setPattern under gridMutex_, so a running batch never sees them change).
   std::atomic<Deposit> requestedDeposit_{Deposit::Jittered};

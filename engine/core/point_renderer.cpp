@@ -1,6 +1,7 @@
 #include "point_renderer.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <thread>
@@ -117,9 +118,8 @@ PointProjector::PointProjector(const PointProjection& projection, int threads) :
   // Each made in place: assign(n, value) would hold one more full-size histogram while it copies.
   histograms_.resize(static_cast<std::size_t>(threads));
   for (std::vector<float>& histogram : histograms_) histogram.assign(4 * pixels, 0.0f);
-  rngStates_.resize(static_cast<std::size_t>(threads));
+  streamRandom_.resize(static_cast<std::size_t>(Accumulator::streamsPerChunk()));
   scratch_.resize(static_cast<std::size_t>(threads));
-  for (int t = 0; t < threads; ++t) rngStates_[static_cast<std::size_t>(t)] = mixSeed(p_.seed, 0x6c656e73ULL + t);
   // One point's D in its pixel: (volume inside the mesh) / (points · pixel footprint), lengths in
   // grid sides (flame_image.h). The footprint grows with the view depth squared in perspective.
   const GridGeometry& g = p_.grid;
@@ -128,11 +128,35 @@ PointProjector::PointProjector(const PointProjection& projection, int threads) :
   const double pixelAtUnitDepth = 2.0 / (scale * p_.height) / side;
   const double volume = std::max(p_.insideVoxels, 1.0) * std::pow(g.voxelSize / side, 3.0);
   pointDensity_ = volume / (std::max(p_.totalPoints, 1.0) * pixelAtUnitDepth * pixelAtUnitDepth);
+  // A point at unit depth adds 4096 counts, so rounding to whole counts is noise far below the
+  // point's own, and a pixel holds a million such points before its count saturates.
+  unit_ = pointDensity_ / 4096.0;
 }
+
+namespace {
+
+// Histogram cells hold uint32 counts as bit patterns (see PointProjector::histograms_).
+inline void addCount(float& cell, std::uint32_t add) {
+  cell = std::bit_cast<float>(saturatingAdd(std::bit_cast<std::uint32_t>(cell), add));
+}
+
+// The fixed-point count of `value` counts: its whole part, plus one with the probability of its
+// fraction (dither uniform in [0, 1)), so the expected count is the value itself.
+inline std::uint32_t ditheredCount(float value, float dither) {
+  const float counted = std::clamp(value + dither, 0.0f, 4294967040.0f);  // the largest float below 2^32
+  return static_cast<std::uint32_t>(counted);
+}
+
+}  // namespace
 
 void PointProjector::consume(int thread, const AcceptedPoints& points) {
   std::vector<float>& histogram = histograms_[static_cast<std::size_t>(thread)];
-  std::uint64_t& rng = rngStates_[static_cast<std::size_t>(thread)];
+  StreamRandom& random = streamRandom_[points.stream % streamRandom_.size()];
+  if (random.stream != points.stream) {
+    random.stream = points.stream;
+    random.state = mixSeed(mixSeed(p_.seed, 0x6c656e73ULL), points.stream);
+  }
+  std::uint64_t& rng = random.state;
   const glm::mat4 view(p_.camera.view);
   const glm::mat4 projection(p_.camera.projection);
   const glm::vec3 origin(p_.grid.origin);
@@ -148,7 +172,7 @@ void PointProjector::consume(int thread, const AcceptedPoints& points) {
   const ShadowVolume* shadow = p_.shadow;
   const int shadowDownsample = std::max(1, p_.shadowDownsample);
   const auto lightStrength = static_cast<float>(p_.lightStrength);
-  const auto pointDensity = static_cast<float>(pointDensity_);
+  const auto pointDensity = static_cast<float>(pointDensity_ / unit_);  // in counts
   const ViewTransmittance* transmittance = p_.transmittance;
   std::vector<Projected>& batch = scratch_[static_cast<std::size_t>(thread)];
   batch.clear();
@@ -183,7 +207,11 @@ void PointProjector::consume(int thread, const AcceptedPoints& points) {
     };
     Projected entry{static_cast<std::uint32_t>(static_cast<std::size_t>(py) * static_cast<std::size_t>(p_.width) +
                                                static_cast<std::size_t>(px)),
-                    0.0f, ViewTransmittance::kNoLookup, 0.0f, points.rgb[i]};
+                    0.0f,
+                    ViewTransmittance::kNoLookup,
+                    0.0f,
+                    points.rgb[i],
+                    0.0f};
     if (transmittance) entry.transmittance = transmittance->lookup(u, v, depth, uniform(1), uniform(2), entry.fraction);
     if (shadow) {
       // Shadow cells hold the light's transmittance of shadowDownsample³ voxels each.
@@ -202,6 +230,8 @@ void PointProjector::consume(int thread, const AcceptedPoints& points) {
     }
     if (fogPerDepth > 0.0f) weight *= std::exp(-fogPerDepth * std::max(0.0f, depth - fogStart));
     entry.weight = weight;
+    rng = rng * 6364136223846793005ULL + 1442695040888963407ULL;
+    entry.dither = static_cast<float>(rng >> 40) * (1.0f / 16777216.0f);
     batch.push_back(entry);
   }
   // Second pass: the histogram (16 bytes a pixel, hundreds of MB at 4K) and the transmittance
@@ -224,10 +254,11 @@ void PointProjector::consume(int thread, const AcceptedPoints& points) {
     }
     const std::uint32_t rgb = entry.rgb;
     float* bucket = &histogram[4 * static_cast<std::size_t>(entry.pixel)];
-    bucket[0] += weight * static_cast<float>(rgb & 0xffu) * (1.0f / 255.0f);
-    bucket[1] += weight * static_cast<float>((rgb >> 8) & 0xffu) * (1.0f / 255.0f);
-    bucket[2] += weight * static_cast<float>((rgb >> 16) & 0xffu) * (1.0f / 255.0f);
-    bucket[3] += weight;
+    const float dither = entry.dither;
+    addCount(bucket[0], ditheredCount(weight * static_cast<float>(rgb & 0xffu) * (1.0f / 255.0f), dither));
+    addCount(bucket[1], ditheredCount(weight * static_cast<float>((rgb >> 8) & 0xffu) * (1.0f / 255.0f), dither));
+    addCount(bucket[2], ditheredCount(weight * static_cast<float>((rgb >> 16) & 0xffu) * (1.0f / 255.0f), dither));
+    addCount(bucket[3], ditheredCount(weight, dither));
   }
   projected_.fetch_add(batch.size(), std::memory_order_relaxed);
 }
@@ -238,17 +269,31 @@ DensityImage PointProjector::merge() {
   image.height = p_.height;
   image.hitsPerUnitDensity = hitsPerUnitDensity(p_.camera, p_.grid, p_.totalPoints, p_.insideVoxels, p_.height);
   // The first thread's histogram becomes the image and the others are added to it and freed one
-  // by one, so a 16K print never holds a third full-size histogram (the sums and their order are
-  // those of adding every histogram to zeros).
+  // by one, so a 16K print never holds a third full-size histogram; then its counts turn into
+  // densities in place.
   image.values = std::move(histograms_.front());
   image.values.resize(4 * static_cast<std::size_t>(p_.width) * static_cast<std::size_t>(p_.height), 0.0f);
   for (std::size_t t = 1; t < histograms_.size(); ++t) {
     const std::vector<float>& histogram = histograms_[t];
-    for (std::size_t i = 0; i < histogram.size(); ++i) image.values[i] += histogram[i];
+    for (std::size_t i = 0; i < histogram.size(); ++i)
+      addCount(image.values[i], std::bit_cast<std::uint32_t>(histogram[i]));
     std::vector<float>().swap(histograms_[t]);
   }
   histograms_.clear();
+  for (float& value : image.values) value = densityOfCount(std::bit_cast<std::uint32_t>(value), unit_);
   return image;
+}
+
+ImageSums PointProjector::takeSums() {
+  ImageSums sums;
+  sums.reset(p_.width, p_.height, unit_);
+  for (std::vector<float>& histogram : histograms_) {
+    for (std::size_t i = 0; i < histogram.size(); ++i) {
+      sums.counts[i] = saturatingAdd(sums.counts[i], std::bit_cast<std::uint32_t>(histogram[i]));
+      histogram[i] = 0.0f;
+    }
+  }
+  return sums;
 }
 
 DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const InsideMask> mask, const PackedVolume& volume,
@@ -293,33 +338,106 @@ DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const Inside
   projection.fogStart = transmittance.nearDepth;
   projection.seed = scene.seed;
   PointProjector projector(projection, threads);
+  const int chunks = std::max(1, options.chunks);
+  std::vector<int> chunkList;
+  if (options.chunkList)
+    chunkList = *options.chunkList;
+  else
+    for (int chunk = 0; chunk < chunks; ++chunk) chunkList.push_back(chunk);
+  // With chunkDone each chunk's sums are taken as it finishes and added here (with those of chunks
+  // rendered earlier); without, the projector's histograms hold every chunk's points.
+  ImageSums total;
+  const bool perChunk = static_cast<bool>(options.chunkDone);
+  if (perChunk) {
+    if (options.earlierSums) {
+      total = *options.earlierSums;
+      if (total.width != width || total.height != height || total.unit != projector.unit())
+        throw Error("the chunks rendered earlier are of another image");
+    } else {
+      total.reset(width, height, projector.unit());
+    }
+  }
   AccumulatorStats stats;
+  std::uint64_t pointsInside = perChunk ? total.points : 0, iterations = perChunk ? total.iterations : 0;
   {
     Accumulator accumulator(mask, threads);
     accumulator.setPointSink(&projector);
-    accumulator.setTargetPoints(target);
+    accumulator.setHeld(true);  // nothing runs until the first chunk's streams are set
+    accumulator.setTargetPoints(1);
     accumulator.setPattern(scene.layers, scene.seed);
     // A pattern that mostly misses the mesh would never reach its target: stop after as many
     // iterations as the grid pass allows.
     const std::uint64_t iterationLimit = 40 * target + 50'000'000;
-    while (!accumulator.waitUntilDone(0.25)) {
+    std::size_t chunksDone = 0;
+    for (const int chunk : chunkList) {
+      const std::uint64_t chunkTarget = chunkPoints(target, chunks, chunk);
+      const std::uint64_t iterationsBefore = accumulator.stats().iterations;
+      const std::uint64_t pointsBefore = accumulator.stats().points;
+      accumulator.setChunk(static_cast<std::uint64_t>(chunk), false);
+      accumulator.setTargetPoints(chunkTarget);
+      accumulator.setHeld(false);
+      while (!accumulator.waitUntilDone(0.25)) {
+        stats = accumulator.stats();
+        const double done = (static_cast<double>(chunksDone) +
+                             std::min(1.0, static_cast<double>(stats.points - pointsBefore) /
+                                               static_cast<double>(std::max<std::uint64_t>(chunkTarget, 1)))) /
+                            static_cast<double>(chunkList.size());
+        if (options.progress) options.progress(done);
+        if (stats.iterations - iterationsBefore > iterationLimit / static_cast<std::uint64_t>(chunks) + 50'000'000 ||
+            !stats.problem.empty())
+          break;
+      }
+      accumulator.setHeld(true);
       stats = accumulator.stats();
-      if (options.progress)
-        options.progress(target ? std::min(1.0, static_cast<double>(stats.points) / static_cast<double>(target)) : 1.0);
-      if (stats.iterations > iterationLimit || !stats.problem.empty()) break;
+      if (!stats.problem.empty()) break;
+      ++chunksDone;
+      if (perChunk) {
+        // Held, the workers finish the batch they are in before the next chunk's streams are set;
+        // the chunk reached its target, so there is none.
+        ImageSums sums = projector.takeSums();
+        sums.points = stats.points - pointsBefore;
+        sums.iterations = stats.iterations - iterationsBefore;
+        options.chunkDone(chunk, sums);
+        if (options.makeImage) total.add(sums);
+      }
+      if (options.chunkFinished) options.chunkFinished(static_cast<int>(chunksDone));
     }
     stats = accumulator.stats();
   }  // the workers are joined here: no point arrives after this
   if (!stats.problem.empty()) throw Error(stats.problem);
-  if (options.pointsInside) *options.pointsInside = stats.points;
-  DensityImage image = projector.merge();
+  if (!perChunk) {
+    pointsInside = stats.points;
+    iterations = stats.iterations;
+  } else {
+    pointsInside = total.points;
+    iterations = total.iterations;
+  }
+  if (options.pointsInside) *options.pointsInside = pointsInside;
+  if (options.iterations) *options.iterations = iterations;
+  if (!options.makeImage) return {};
+  DensityImage image;
+  if (perChunk) {
+    image.width = width;
+    image.height = height;
+    image.hitsPerUnitDensity =
+        hitsPerUnitDensity(camera, mask->geometry, projection.totalPoints, projection.insideVoxels, height);
+    image.values.resize(total.counts.size());
+    for (std::size_t i = 0; i < total.counts.size(); ++i) image.values[i] = densityOfCount(total.counts[i], total.unit);
+  } else {
+    image = projector.merge();
+  }
   // Each point's share of D assumed `target` points; the batches overshoot it a little (or a
   // pattern that barely meets the mesh falls short), so the image is scaled to what landed.
-  if (stats.points > 0 && stats.points != target) {
-    const float scale = static_cast<float>(static_cast<double>(target) / static_cast<double>(stats.points));
+  if (pointsInside > 0 && pointsInside != target) {
+    const float scale = static_cast<float>(static_cast<double>(target) / static_cast<double>(pointsInside));
     for (float& value : image.values) value *= scale;
   }
   return image;
+}
+
+std::uint64_t chunkPoints(std::uint64_t points, int chunks, int chunk) {
+  const auto k = static_cast<std::uint64_t>(std::max(1, chunks));
+  return points / k + (static_cast<std::uint64_t>(chunk) < points % k ? 1 : 0);
 }
 
 }  // namespace voxflame::core

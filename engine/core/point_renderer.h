@@ -14,9 +14,11 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <vector>
 
 #include "accumulator.h"
+#include "chunk_sums.h"
 #include "camera.h"
 #include "flame_image.h"
 #include "packed_volume.h"
@@ -80,7 +82,12 @@ struct PointProjection {
   std::uint64_t seed = 1;      // for the lens samples
 };
 
-// A PointSink that projects points into one histogram per worker thread.
+// A PointSink that projects points into one histogram per worker thread. The histograms count in
+// fixed-point units (unit(): a 4096th of what a point adds at unit view depth), each point's share
+// rounded up or down at random in proportion, so the rounding adds no bias. Integer sums are the
+// same in any order, and every random number a point draws (lens, jitters, rounding) comes from its
+// seed stream's own generator: the sums depend on the seed and the points alone, never on which
+// thread projected what. That is what lets a still be split into chunks (chunk_sums.h).
 class PointProjector : public PointSink {
  public:
   PointProjector(const PointProjection& projection, int threads);
@@ -88,26 +95,45 @@ class PointProjector : public PointSink {
   // Sums the threads' histograms into the image, giving up their memory as it goes. Call once,
   // when no more points arrive.
   DensityImage merge();
+  // The sums so far, and the histograms start again from zero: a finished chunk's own sums. Call
+  // when no points arrive.
+  ImageSums takeSums();
+  double unit() const { return unit_; }
   std::uint64_t projected() const { return projected_.load(); }
 
  private:
   PointProjection p_;
   double pointDensity_ = 1.0;  // D one point adds to its pixel at unit view depth (over depth² in perspective)
+  double unit_ = 1.0;          // D one count of the histogram stands for
+  // Fixed-point counts (uint32 bit patterns in float storage, so merge turns them into the image's
+  // floats in place: a 16K print has no room for a second full-size copy).
   std::vector<std::vector<float>> histograms_;
-  std::vector<std::uint64_t> rngStates_;
+  // A generator per seed stream, in the slot of its stream number modulo the streams of a chunk
+  // (a stream belongs to one thread at a time, and chunks run one after another).
+  struct StreamRandom {
+    std::uint64_t stream = ~std::uint64_t{0};
+    std::uint64_t state = 0;
+  };
+  std::vector<StreamRandom> streamRandom_;
   // Per thread, the points of one consume call after projection, before they touch the large
   // histogram and transmittance: a second pass reads them with prefetches running ahead, so the
   // cache misses of many points overlap instead of following one another.
   struct Projected {
     std::uint32_t pixel;        // index into the histogram (in pixels)
-    float weight;               // D the point adds, before the camera's transmittance
+    float weight;               // counts the point adds, before the camera's transmittance
     std::size_t transmittance;  // ViewTransmittance::lookup's index, kNoLookup for none
     float fraction;
     std::uint32_t rgb;
+    float dither;  // in [0, 1): where the fixed-point rounding goes up
   };
   std::vector<std::vector<Projected>> scratch_;
   std::atomic<std::uint64_t> projected_{0};
 };
+
+// The density the histogram's counts stand for, as merge and a chunked render's finish both make it.
+inline float densityOfCount(std::uint32_t count, double unit) {
+  return static_cast<float>(static_cast<double>(count) * unit);
+}
 
 // The whole points pass: the scene's layers iterated by an Accumulator over `mask` until
 // `points` lie inside, each projected. `volume` (the grid of the same scene) gives the camera's
@@ -119,7 +145,20 @@ struct PointsPassOptions {
   int transmittanceCells = 4;  // image pixels per transmittance cell along each axis
   std::function<void(double)> progress;
   std::uint64_t* pointsInside = nullptr;  // when set, receives how many points landed inside the mesh
+  std::uint64_t* iterations = nullptr;    // when set, receives the orbit steps taken
+  // The points split into `chunks` chunks (chunkPoints), each iterating its own seed streams
+  // (Accumulator::setChunk); the sums depend only on the scene, the size and `chunks`.
+  int chunks = 1;
+  std::optional<std::vector<int>> chunkList;  // the chunks to render, in this order (none: all)
+  // When set, each chunk's own sums are handed here as it finishes (a checkpoint keeps them), and
+  // the image is made from them plus earlierSums (chunks rendered before, in another run).
+  std::function<void(int chunk, const ImageSums& sums)> chunkDone;
+  const ImageSums* earlierSums = nullptr;
+  bool makeImage = true;  // false: only render the chunks (a farm task); the result is empty
+  std::function<void(int chunksDone)> chunkFinished;  // after each chunk (may be empty)
 };
+// Chunk `chunk`'s share of `points` split into `chunks` (the first points % chunks get one more).
+std::uint64_t chunkPoints(std::uint64_t points, int chunks, int chunk);
 DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const InsideMask> mask, const PackedVolume& volume,
                                 const CameraFrame& camera, int width, int height, const PointsPassOptions& options);
 
