@@ -128,9 +128,12 @@ PointProjector::PointProjector(const PointProjection& projection, int threads) :
   const double pixelAtUnitDepth = 2.0 / (scale * p_.height) / side;
   const double volume = std::max(p_.insideVoxels, 1.0) * std::pow(g.voxelSize / side, 3.0);
   pointDensity_ = volume / (std::max(p_.totalPoints, 1.0) * pixelAtUnitDepth * pixelAtUnitDepth);
-  // A point at unit depth adds 4096 counts, so rounding to whole counts is noise far below the
-  // point's own, and a pixel holds a million such points before its count saturates.
-  unit_ = pointDensity_ / 4096.0;
+  // A point at the depth of the grid's centre adds 1024 counts: rounding to whole counts is noise
+  // far below the point's own, and a pixel holds 4 million such points before its count saturates.
+  // (Depths are in world units, so the count must be set where the points are, not at unit depth.)
+  const double centreDepth =
+      p_.camera.orthographic ? 1.0 : std::max(viewDepth(p_.camera, p_.grid.box().center()), 1e-9);
+  unit_ = pointDensity_ / (1024.0 * (p_.camera.orthographic ? 1.0 : centreDepth * centreDepth));
 }
 
 namespace {
