@@ -105,6 +105,7 @@ AccumulatedVolume accumulateChunks(const core::Scene& scene, const SceneShape& s
   core::DensitySample sample;
   accumulator.setHeld(true);  // nothing runs until the first chunk's streams are set
   accumulator.setTargetPoints(1);
+  accumulator.setDeepSeeds(true);
   accumulator.setPattern(scene.layers, scene.seed);
   const std::uint64_t iterationLimit = 40 * (target / static_cast<std::uint64_t>(chunks)) + 50'000'000;
   std::uint64_t pointsDone = perChunk ? total.points : 0, iterationsDone = perChunk ? total.iterations : 0;

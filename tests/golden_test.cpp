@@ -42,6 +42,7 @@ TEST_P(GoldenImage, MatchesTheReference) {
   options.height = 125;
   options.points = 3'000'000;
   options.threads = 2;
+  options.chunks = app::ChunkPlan{};  // as `voxflame render` splits every still
   const core::ImageRGBA image = app::renderStill(scene, options).image;
   const std::filesystem::path reference =
       source / "tests" / "golden" /

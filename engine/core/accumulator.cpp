@@ -39,6 +39,8 @@ constexpr int kProbeTransient = 2'000;
 constexpr int kProbeSpacing = 250;  // steps between the probe orbits' seeds
 constexpr int kProbeSamplesPerOrbit = 2'000;
 constexpr std::size_t kSeedPoolSize = 1'024;
+constexpr int kDeepSeedSteps = 32'768;  // the probe orbits' run for a deep seed pool (prepareLayers)
+constexpr int kDeepSeedSpacing = 16;
 constexpr double kProbeEscape = 1e8;
 constexpr int kMaxSlabs = 64;                   // grid slabs, each with its own mutex
 constexpr std::size_t kFlushThreshold = 8'192;  // splats a thread collects before adding them to the grid
@@ -256,11 +258,11 @@ std::size_t probeChaosGame(const ChaosGame& game, SplitMix64& rng, std::vector<g
 }  // namespace
 
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, std::uint64_t seed) {
-  return prepareLayer(layer, mask, insideBox(mask), seed);
+  return prepareLayer(layer, mask, insideBox(mask), seed, false);
 }
 
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, const InsideBox& inside,
-                           std::uint64_t seed) {
+                           std::uint64_t seed, bool deepSeeds) {
   PreparedLayer prepared;
   prepared.layer = layer;
   validateLayer(layer);
@@ -332,7 +334,32 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, co
   // A few probe orbits leaving (a basin boundary nearby) is tolerated as long as most stay.
   const auto survivors = static_cast<std::size_t>(std::count(alive.begin(), alive.end(), std::uint8_t{1}));
   if (survivors < kProbeOrbits / 2 || samples.empty()) return prepared;  // bounded stays false
-  return finishPreparedLayer(std::move(prepared), samples, speeds, turns, mask, inside, rng);
+  if (!deepSeeds) return finishPreparedLayer(std::move(prepared), samples, speeds, turns, mask, inside, rng);
+  std::vector<glm::dvec3> deep;
+  {
+    // The probe's samples are 64 arcs of 2,000 steps: orbits started there and run long (a live
+    // view, one still) soon spread over the attractor, but short ones (a still's 64 chunks each
+    // start their own) stay near those arcs and thin out what the arcs miss, by up to a third of
+    // a sparse print's coverage. So the probe orbits go on much longer and drop a seed every
+    // kDeepSeedSpacing steps.
+    deep.reserve(kProbeOrbits * (kDeepSeedSteps / kDeepSeedSpacing));
+    for (int step = 1; step <= kDeepSeedSteps; ++step) {
+      advance(layer.params.data(), layer.step, x.data(), y.data(), z.data(), kProbeOrbits);
+      if (step % kDeepSeedSpacing != 0) continue;
+      for (std::size_t i = 0; i < kProbeOrbits; ++i) {
+        if (!alive[i]) continue;
+        if (!isFiniteAndNear(x[i], y[i], z[i], kProbeEscape)) {
+          alive[i] = 0;
+          x[i] = y[i] = z[i] = 0.0;
+          continue;
+        }
+        deep.emplace_back(x[i], y[i], z[i]);
+      }
+    }
+  }
+  PreparedLayer finished = finishPreparedLayer(std::move(prepared), samples, speeds, turns, mask, inside, rng);
+  if (!deep.empty() && !finished.seeds.empty()) finished.seeds = std::move(deep);
+  return finished;
 }
 
 namespace {
@@ -364,6 +391,7 @@ PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3
                                  1.0);
 
   // Attractor orbits restart from points on the attractor; a chaos-game lane restarts anywhere.
+  // (A still split into chunks replaces these with a deeper pool: prepareLayer's deepSeeds.)
   if (!prepared.game) prepared.seeds.reserve(kSeedPoolSize);
   for (std::size_t i = 0; !prepared.game && i < kSeedPoolSize; ++i)
     prepared.seeds.push_back(samples[static_cast<std::size_t>(rng.uniform() * static_cast<double>(samples.size()))]);
@@ -397,11 +425,11 @@ PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3
 
 std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers, const InsideMask& mask,
                                          std::uint64_t seed) {
-  return prepareLayers(layers, mask, insideBox(mask), seed);
+  return prepareLayers(layers, mask, insideBox(mask), seed, false);
 }
 
 std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers, const InsideMask& mask,
-                                         const InsideBox& inside, std::uint64_t seed) {
+                                         const InsideBox& inside, std::uint64_t seed, bool deepSeeds) {
   std::vector<PreparedLayer> prepared;
   std::size_t source = 0;
   const std::vector<PatternLayer> expanded = expandCopies(layers);
@@ -410,7 +438,7 @@ std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers
   for (const PatternLayer& layer : layers) {
     // The probe and the automatic fit come before the rotation, so one probe serves the original
     // and all its copies: only the rotation differs.
-    PreparedLayer original = prepareLayer(expanded[source++], mask, inside, seed);
+    PreparedLayer original = prepareLayer(expanded[source++], mask, inside, seed, deepSeeds);
     if (layer.transform.fit == FitMode::Previous && previousFit && original.bounded) {
       const AutomaticFit& previous = *previousFit;
       const LayerTransform& t = original.layer.transform;
@@ -861,7 +889,7 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
   // Probe outside the lock so running batches are not held up by it.
   std::vector<PreparedLayer> prepared;
   std::string problem;
-  for (const PreparedLayer& layer : prepareLayers(layers, *mask_, insideBox_, seed)) {
+  for (const PreparedLayer& layer : prepareLayers(layers, *mask_, insideBox_, seed, deepSeeds_.load())) {
     prepared.push_back(layer);
     if (!prepared.back().bounded)
       problem =

@@ -103,15 +103,18 @@ std::vector<PatternLayer> expandCopies(const std::vector<PatternLayer>& layers);
 // prepareLayer for each layer and its copies (one probe for all copies of a layer), in
 // expandCopies's order.
 // `inside` is insideBox(mask), when the caller has it already.
+// `deepSeeds`: attractor layers draw their orbits' starts from a pool of seeds spread over a long
+// run of the probe (tens of milliseconds), not only its first samples: what many short orbits (a
+// still's chunks) need to cover the attractor.
 std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers, const InsideMask& mask,
-                                         const InsideBox& inside, std::uint64_t seed);
+                                         const InsideBox& inside, std::uint64_t seed, bool deepSeeds = false);
 std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers, const InsideMask& mask,
                                          std::uint64_t seed);
 
 // Samples the layer's attractor and fits it into the mask's grid. Deterministic for a seed.
 // Throws core::Error on parameters that are not finite numbers, absurd steps or transforms.
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, const InsideBox& inside,
-                           std::uint64_t seed);
+                           std::uint64_t seed, bool deepSeeds = false);
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, std::uint64_t seed);
 
 // A copy of the grid for rendering: raw density (hits) and average colour per voxel.
@@ -280,6 +283,9 @@ class Accumulator {
   // chunks (chunk_sums.h) so it can be resumed or spread over a farm. Call when the workers are
   // idle (the previous chunk reached its target) or held, then set the chunk's target.
   void setChunk(std::uint64_t chunk, bool clearGrid);
+  // Prepare the next patterns with a deep seed pool (prepareLayers): set before setPattern when
+  // the points will be split into chunks.
+  void setDeepSeeds(bool deep) { deepSeeds_.store(deep); }
   static constexpr int streamsPerChunk() { return kStreams; }
   // While held the workers start no batch (and sleep), whatever the target; the grid keeps what
   // it has, and a new pattern set meanwhile waits, cleared, until the hold ends.
@@ -374,6 +380,7 @@ class Accumulator {
   std::uint64_t seed_ = 1;
   std::uint64_t chunk_ = 0;                   // guarded by gridMutex_ (setChunk)
   std::atomic<std::uint64_t> orbitEpoch_{0};  // bumped by setChunk: orbits restart in the chunk's streams
+  std::atomic<bool> deepSeeds_{false};        // setDeepSeeds
   // What setDeposit / setPointSink asked for, and what the current generation uses (copied by
   // setPattern under gridMutex_, so a running batch never sees them change).
   std::atomic<Deposit> requestedDeposit_{Deposit::Jittered};
