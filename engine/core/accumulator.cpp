@@ -1379,11 +1379,16 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
         b.chaos.resize(kOrbitsPerBatch);
         for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) layer.game->seedLane(b.chaos, i, b.rng);
       } else {
+        // Each orbit starts a hair off its seed: seeds lie along a few probe orbits, and a flow's
+        // orbits started on one trajectory would retrace it, phase-shifted, instead of filling the
+        // attractor (chaos pulls the hair apart in a few hundred steps).
+        // (A map jumps across its attractor at every step and needs no hair.)
+        const double hair = layer.info->kind == AttractorKind::Flow ? 1e-5 : 0.0;
         for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
           const glm::dvec3 s = layer.seeds[b.rng.next() % layer.seeds.size()];
-          b.x[i] = b.px[i] = s.x;
-          b.y[i] = b.py[i] = s.y;
-          b.z[i] = b.pz[i] = s.z;
+          b.x[i] = b.px[i] = s.x + hair * (1.0 + std::abs(s.x)) * b.rng.symmetric();
+          b.y[i] = b.py[i] = s.y + hair * (1.0 + std::abs(s.y)) * b.rng.symmetric();
+          b.z[i] = b.pz[i] = s.z + hair * (1.0 + std::abs(s.z)) * b.rng.symmetric();
         }
       }
     }

@@ -128,12 +128,15 @@ PointProjector::PointProjector(const PointProjection& projection, int threads) :
   const double pixelAtUnitDepth = 2.0 / (scale * p_.height) / side;
   const double volume = std::max(p_.insideVoxels, 1.0) * std::pow(g.voxelSize / side, 3.0);
   pointDensity_ = volume / (std::max(p_.totalPoints, 1.0) * pixelAtUnitDepth * pixelAtUnitDepth);
-  // A point at the depth of the grid's centre adds 1024 counts: rounding to whole counts is noise
-  // far below the point's own, and a pixel holds 4 million such points before its count saturates.
-  // (Depths are in world units, so the count must be set where the points are, not at unit depth.)
+  // A point at the depth of the grid's centre adds up to 1024 counts: rounding to whole counts is
+  // noise far below the point's own (a point is one sample: even 16 counts add under 0.1% to its
+  // variance). Fewer when the points are many, so that one pixel can hold 1% of them all before its
+  // count saturates: an attractor's slow spots gather millions of points in a pixel of a 16K print.
+  // (Depths are in world units, so the count is set where the points are, not at unit depth.)
   const double centreDepth =
       p_.camera.orthographic ? 1.0 : std::max(viewDepth(p_.camera, p_.grid.box().center()), 1e-9);
-  unit_ = pointDensity_ / (1024.0 * (p_.camera.orthographic ? 1.0 : centreDepth * centreDepth));
+  const double countsPerPoint = std::clamp(4294967295.0 / (0.01 * std::max(p_.totalPoints, 1.0)), 16.0, 1024.0);
+  unit_ = pointDensity_ / (countsPerPoint * (p_.camera.orthographic ? 1.0 : centreDepth * centreDepth));
 }
 
 namespace {

@@ -83,7 +83,7 @@ struct PointProjection {
 };
 
 // A PointSink that projects points into one histogram per worker thread. The histograms count in
-// fixed-point units (unit(): a 4096th of what a point adds at unit view depth), each point's share
+// fixed-point units (unit(): up to a 1024th of what a point adds at the grid centre's depth), each point's share
 // rounded up or down at random in proportion, so the rounding adds no bias. Integer sums are the
 // same in any order, and every random number a point draws (lens, jitters, rounding) comes from its
 // seed stream's own generator: the sums depend on the seed and the points alone, never on which
