@@ -191,7 +191,7 @@ TEST(SnapshotPublisher, AFreshVolumeWaitsForItsTakerUntilThePatternChanges) {
   packVolume(accumulator, timed);
   // The publisher waits kPackShare packs' time after a pack before it looks again.
   const auto frameInterval = (SnapshotPublisher::kPackShare + 3) * (std::chrono::steady_clock::now() - packStart) +
-                             std::chrono::milliseconds(50);
+                             std::chrono::milliseconds(250);  // a pack on a loaded machine (ctest -j) takes longer
   for (int frame = 0; frame < 10; ++frame) {
     std::this_thread::sleep_for(frameInterval);
     const std::uint64_t before = volume.version;
