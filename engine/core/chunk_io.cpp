@@ -2,6 +2,10 @@
 // (its headers are heavy): the two are the only ones.
 #include "chunk_io.h"
 
+// Header-only: the hash is compiled in, so the binary needs no libxxhash at run time.
+#define XXH_INLINE_ALL
+#include <xxhash.h>
+
 #include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
 
@@ -60,11 +64,11 @@ constexpr int kChunkFormat = 1;
 
 // ---- The trailer and its checksum -------------------------------------------------------------
 
-// XXH64 (Yann Collet's algorithm): fast enough that checking a file costs far less than reading
+// XXH64 (Debian's libxxhash, inlined): fast enough that checking a file costs far less than reading
 // it, and any damage short of a deliberate forgery changes it.
-constexpr std::uint64_t kPrime1 = 0x9E3779B185EBCA87ull, kPrime2 = 0xC2B2AE3D27D4EB4Full,
-                        kPrime3 = 0x165667B19E3779F9ull, kPrime4 = 0x85EBCA77C2B2AE63ull,
-                        kPrime5 = 0x27D4EB2F165667C5ull;
+std::uint64_t checksum(std::string_view bytes) {
+  return XXH64(bytes.data(), bytes.size(), 0);
+}
 
 std::uint64_t load64(const char* p) {
   std::uint64_t v;
@@ -78,46 +82,6 @@ std::uint32_t load32(const char* p) {
   if constexpr (std::endian::native == std::endian::big) v = __builtin_bswap32(v);
   return v;
 }
-std::uint64_t xxhRound(std::uint64_t acc, std::uint64_t input) {
-  acc += input * kPrime2;
-  return std::rotl(acc, 31) * kPrime1;
-}
-std::uint64_t xxhMerge(std::uint64_t acc, std::uint64_t lane) {
-  acc ^= xxhRound(0, lane);
-  return acc * kPrime1 + kPrime4;
-}
-
-std::uint64_t checksum(std::string_view bytes) {
-  const char* p = bytes.data();
-  const char* const end = p + bytes.size();
-  std::uint64_t h;
-  if (bytes.size() >= 32) {
-    std::uint64_t v1 = kPrime1 + kPrime2, v2 = kPrime2, v3 = 0, v4 = 0 - kPrime1;
-    for (; end - p >= 32; p += 32) {
-      v1 = xxhRound(v1, load64(p));
-      v2 = xxhRound(v2, load64(p + 8));
-      v3 = xxhRound(v3, load64(p + 16));
-      v4 = xxhRound(v4, load64(p + 24));
-    }
-    h = std::rotl(v1, 1) + std::rotl(v2, 7) + std::rotl(v3, 12) + std::rotl(v4, 18);
-    h = xxhMerge(xxhMerge(xxhMerge(xxhMerge(h, v1), v2), v3), v4);
-  } else {
-    h = kPrime5;
-  }
-  h += bytes.size();
-  for (; end - p >= 8; p += 8) h = std::rotl(h ^ xxhRound(0, load64(p)), 27) * kPrime1 + kPrime4;
-  if (end - p >= 4) {
-    h = std::rotl(h ^ (std::uint64_t{load32(p)} * kPrime1), 23) * kPrime2 + kPrime3;
-    p += 4;
-  }
-  for (; p < end; ++p) h = std::rotl(h ^ (std::uint64_t{static_cast<unsigned char>(*p)} * kPrime5), 11) * kPrime1;
-  h ^= h >> 33;
-  h *= kPrime2;
-  h ^= h >> 29;
-  h *= kPrime3;
-  return h ^ (h >> 32);
-}
-
 enum class ChunkKind : std::uint32_t { Grid = 1, Image = 2 };
 const char* describe(ChunkKind kind) {
   return kind == ChunkKind::Grid ? "a volume-method chunk (.vdb)" : "a points-method chunk (.exr)";
