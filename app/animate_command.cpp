@@ -147,20 +147,7 @@ int frameStatus(const std::string& pattern, const std::optional<std::string>& fr
   std::printf("%s: %d of %d frames (%s) are there; missing %zu: %s\n", pattern.c_str(),
               range.count() - static_cast<int>(missing.size()), range.count(), frameList.c_str(), missing.size(),
               describeFrames(missing).c_str());
-  if (record) {
-    // The tasks whose ranges hold a missing frame: running them again alone fills the gaps.
-    const std::vector<FrameRange> ranges = splitFrames(record->frames, record->tasks);
-    std::vector<int> tasks;
-    for (int frame : missing)
-      for (std::size_t task = 0; task < ranges.size(); ++task)
-        if (frame >= ranges[task].first && frame <= ranges[task].last) tasks.push_back(static_cast<int>(task));
-    if (!tasks.empty()) {
-      std::string taskList = describeFrames(tasks);
-      taskList.erase(std::remove(taskList.begin(), taskList.end(), ' '), taskList.end());
-      std::printf("render them again with: sbatch --array=%s %s\n", taskList.c_str(),
-                  shellQuoted({renderScript.string()}).c_str());
-    }
-  }
+  if (record) printRerunAdvice(*record, missing, renderScript);
   return 1;
 }
 

@@ -133,6 +133,21 @@ std::string finishJobScript(const FarmJob& job) {
   return s.str();
 }
 
+void printRerunAdvice(const FarmRecord& record, const std::vector<int>& missing,
+                      const std::filesystem::path& renderScript) {
+  // The tasks whose ranges hold a missing item: running them again alone fills the gaps.
+  const std::vector<FrameRange> ranges = splitFrames(record.frames, record.tasks);
+  std::vector<int> tasks;
+  for (int item : missing)
+    for (std::size_t task = 0; task < ranges.size(); ++task)
+      if (item >= ranges[task].first && item <= ranges[task].last) tasks.push_back(static_cast<int>(task));
+  if (tasks.empty()) return;
+  std::string taskList = describeFrames(tasks);
+  taskList.erase(std::remove(taskList.begin(), taskList.end(), ' '), taskList.end());
+  std::printf("render them again with: sbatch --array=%s %s\n", taskList.c_str(),
+              shellQuoted({renderScript.string()}).c_str());
+}
+
 std::optional<FarmRecord> readFarmRecord(const std::filesystem::path& renderScript) {
   std::ifstream in(renderScript);
   const std::string prefix = kRecordPrefix;

@@ -70,4 +70,9 @@ struct FarmRecord {
 // The record of the render script in the pattern's folder, if there is one that reads.
 std::optional<FarmRecord> readFarmRecord(const std::filesystem::path& renderScript);
 
+// Prints "render them again with: sbatch --array=TASKS SCRIPT" for the tasks of `record` whose
+// ranges hold one of `missing` (frames or chunks); nothing when none does.
+void printRerunAdvice(const FarmRecord& record, const std::vector<int>& missing,
+                      const std::filesystem::path& renderScript);
+
 }  // namespace voxflame::app

@@ -215,17 +215,7 @@ int chunkStatus(const RenderArguments& arguments) {
   std::printf("%s: %d of %d chunks are in %s; missing %zu: %s\n", output.c_str(),
               chunks - static_cast<int>(missing.size()), chunks, folder.c_str(), missing.size(),
               describeFrames(missing).c_str());
-  if (record) {
-    const std::vector<FrameRange> ranges = splitFrames(record->frames, record->tasks);
-    std::vector<int> tasks;
-    for (int chunk : missing)
-      for (std::size_t task = 0; task < ranges.size(); ++task)
-        if (chunk >= ranges[task].first && chunk <= ranges[task].last) tasks.push_back(static_cast<int>(task));
-    std::string taskList = describeFrames(tasks);
-    taskList.erase(std::remove(taskList.begin(), taskList.end(), ' '), taskList.end());
-    std::printf("render them again with: sbatch --array=%s %s\n", taskList.c_str(),
-                shellQuoted({renderScript.string()}).c_str());
-  }
+  if (record) printRerunAdvice(*record, missing, renderScript);
   return 1;
 }
 

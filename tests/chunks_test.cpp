@@ -13,6 +13,7 @@
 
 #include "test_support.h"
 
+using voxflame::test::runShell;
 using voxflame::test::runVoxflame;
 using voxflame::test::TemporaryFolder;
 
@@ -34,18 +35,6 @@ std::string readBytes(const std::filesystem::path& path) {
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
-}
-
-voxflame::test::CommandResult runShell(const std::string& command, const std::filesystem::path& folder) {
-  voxflame::test::CommandResult result;
-  FILE* pipe = popen(("cd '" + folder.string() + "' && " + command + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  char buffer[4096];
-  for (std::size_t count; (count = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
-    result.output.append(buffer, count);
-  const int status = pclose(pipe);
-  result.exitStatus = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
 }
 
 class Chunks : public ::testing::TestWithParam<const char*> {

@@ -17,6 +17,7 @@
 #include "test_support.h"
 
 using voxflame::app::FrameRange;
+using voxflame::test::runShell;
 using voxflame::test::runVoxflame;
 using voxflame::test::TemporaryFolder;
 
@@ -44,19 +45,6 @@ std::string readBytes(const std::filesystem::path& path) {
   std::ostringstream bytes;
   bytes << in.rdbuf();
   return bytes.str();
-}
-
-// Runs a shell command in `folder`; its exit status and what it printed.
-voxflame::test::CommandResult runShell(const std::string& command, const std::filesystem::path& folder) {
-  voxflame::test::CommandResult result;
-  FILE* pipe = popen(("cd '" + folder.string() + "' && " + command + " 2>&1").c_str(), "r");
-  if (!pipe) return result;
-  char buffer[4096];
-  for (std::size_t count; (count = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
-    result.output.append(buffer, count);
-  const int status = pclose(pipe);
-  result.exitStatus = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
 }
 
 bool contains(const std::string& text, const std::string& part) {

@@ -86,4 +86,16 @@ std::vector<std::string> filesStartingWith(const std::filesystem::path& folder, 
   return names;
 }
 
+CommandResult runShell(const std::string& command, const std::filesystem::path& folder) {
+  CommandResult result;
+  FILE* pipe = popen(("cd '" + folder.string() + "' && " + command + " 2>&1").c_str(), "r");
+  if (!pipe) return result;
+  char buffer[4096];
+  for (std::size_t count; (count = std::fread(buffer, 1, sizeof buffer, pipe)) > 0;)
+    result.output.append(buffer, count);
+  const int status = pclose(pipe);
+  result.exitStatus = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
 }  // namespace voxflame::test

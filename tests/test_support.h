@@ -37,5 +37,7 @@ struct CommandResult {
 // Runs the built voxflame binary with these arguments (a shell-quoted string) in `workingDir`.
 CommandResult runVoxflame(const std::string& arguments, const std::filesystem::path& workingDir = {},
                           const std::string& environment = "");
+// Runs a shell command in `folder` (a job script as a scheduler would run it).
+CommandResult runShell(const std::string& command, const std::filesystem::path& folder);
 
 }  // namespace voxflame::test
