@@ -2,6 +2,7 @@
 // test meshes and prints one line per measurement (a JSON object per line with --json).
 #pragma once
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,10 @@ double cpuSeconds(int who);
 
 // Prints one measurement: the JSON object as one line with --json, else "key=value" pairs.
 void report(const BenchOptions& options, const nlohmann::json& measurement);
+
+inline double secondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
 
 void benchAccumulate(const BenchOptions& options);  // bench_accumulate.cpp
 void benchRaymarch(const BenchOptions& options);    // bench_raymarch.cpp

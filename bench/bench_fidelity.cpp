@@ -69,10 +69,6 @@ std::optional<core::ImageRGBA> flam3Image(const std::filesystem::path& genome, c
   }
 }
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 }  // namespace
 
 void benchFidelity(const BenchOptions& options) {

@@ -24,10 +24,6 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double secondsSince(Clock::time_point start) {
-  return std::chrono::duration<double>(Clock::now() - start).count();
-}
-
 // Context switches of every thread of this process so far (voluntary and not), from each task's
 // /proc status: each is a thread that woke up or was made to wait. /proc/self/status alone counts
 // the main thread's only, and at rest the other threads are the ones that must sleep.

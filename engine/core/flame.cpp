@@ -12,8 +12,6 @@ namespace voxflame::core {
 
 namespace {
 
-constexpr double kCoefficientLimit = 1e6;
-
 bool finite(double v) {
   return std::isfinite(v);
 }
@@ -48,14 +46,14 @@ glm::dvec3 mirrorNormal(glm::dvec3 axis) {
 
 void validateXform(const FlameXform& xform, const std::string& where) {
   const auto fail = [&](const std::string& reason) { throw Error(where + " " + reason); };
-  if (!finite(xform.weight) || xform.weight < 0.0 || xform.weight > kCoefficientLimit)
+  if (!finite(xform.weight) || xform.weight < 0.0 || xform.weight > kFlameCoefficientLimit)
     fail("has weight " + std::to_string(xform.weight) + "; a weight must be a finite number from 0 to 1e6");
   for (const double v : xform.affine.m)
-    if (!finite(v) || std::abs(v) > kCoefficientLimit)
+    if (!finite(v) || std::abs(v) > kFlameCoefficientLimit)
       fail("has an affine coefficient that is not finite or beyond ±1e6");
   if (xform.hasPost)
     for (const double v : xform.post.m)
-      if (!finite(v) || std::abs(v) > kCoefficientLimit)
+      if (!finite(v) || std::abs(v) > kFlameCoefficientLimit)
         fail("has a post-affine coefficient that is not finite or beyond ±1e6");
   if (!finite(xform.color) || xform.color < 0.0 || xform.color > 1.0) fail("has a colour outside [0, 1]");
   if (!finite(xform.colorSpeed) || xform.colorSpeed < 0.0 || xform.colorSpeed > 1.0)
@@ -65,7 +63,8 @@ void validateXform(const FlameXform& xform, const std::string& where) {
     fail("has " + std::to_string(xform.xaos.size()) + " xaos factors; at most one per transform (" +
          std::to_string(kMaxFlameXforms) + ")");
   for (const double v : xform.xaos)
-    if (!finite(v) || v < 0.0 || v > kCoefficientLimit) fail("has a xaos factor that is not a number from 0 to 1e6");
+    if (!finite(v) || v < 0.0 || v > kFlameCoefficientLimit)
+      fail("has a xaos factor that is not a number from 0 to 1e6");
   if (xform.variations.size() > kMaxXformVariations)
     fail("has " + std::to_string(xform.variations.size()) + " variations; at most " +
          std::to_string(kMaxXformVariations) + " are allowed");
@@ -78,13 +77,13 @@ void validateXform(const FlameXform& xform, const std::string& where) {
         fail(std::string("uses ") + e.what());
       }
     }
-    if (!finite(term.weight) || std::abs(term.weight) > kCoefficientLimit)
+    if (!finite(term.weight) || std::abs(term.weight) > kFlameCoefficientLimit)
       fail("gives variation '" + term.name + "' a weight that is not finite or beyond ±1e6");
     if (term.params.size() != info->params.size())
       fail("gives variation '" + term.name + "' " + std::to_string(term.params.size()) + " parameters; it takes " +
            std::to_string(info->params.size()));
     for (std::size_t i = 0; i < term.params.size(); ++i)
-      if (!finite(term.params[i]) || std::abs(term.params[i]) > kCoefficientLimit)
+      if (!finite(term.params[i]) || std::abs(term.params[i]) > kFlameCoefficientLimit)
         fail("gives parameter '" + info->params[i].name + "' of variation '" + term.name +
              "' a value that is not finite or beyond ±1e6");
   }

@@ -26,6 +26,9 @@ namespace voxflame::core {
 inline constexpr std::size_t kMaxFlameXforms = 128;
 inline constexpr std::size_t kMaxXformVariations = 16;
 inline constexpr int kMaxFlameSymmetry = 24;
+// The largest magnitude a flame's numbers may have (affine and post coefficients, transform and variation weights,
+// xaos factors): the validator, the flame importer and the preset schema all refuse beyond it.
+inline constexpr double kFlameCoefficientLimit = 1e6;
 
 // p ↦ M p + t, stored row-major as a 3×4 matrix: [m00 m01 m02 t0, m10 m11 m12 t1, m20 m21 m22 t2].
 // flam3's 2D coefficients map onto it as a = m00, b = m01, c = t0, d = m10, e = m11, f = t1.

@@ -25,7 +25,6 @@ namespace voxflame::core {
 
 namespace {
 
-constexpr double kCoefficientLimit = 1e6;
 // The longest "_<parameter>" a variation's parameter attribute ends with that the importer looks
 // for, JWildfire's motion-curve suffixes included ("_power_view_xmin").
 constexpr std::size_t kMaxParameterSuffix = 64;
@@ -469,7 +468,7 @@ class FlameReader {
   // A number that the file may write slightly out of range (colour 1.0000001): clamped once finite.
   double clampedNumber(const pugi::xml_attribute& attribute, const std::string& context, double low,
                        double high) const {
-    return std::clamp(number(attribute, context, -kCoefficientLimit, kCoefficientLimit), low, high);
+    return std::clamp(number(attribute, context, -kFlameCoefficientLimit, kFlameCoefficientLimit), low, high);
   }
 
   // flam3's "a d b e c f" into Affine3's rows (x' = a x + b y + c, y' = d x + e y + f; z kept).
@@ -480,7 +479,7 @@ class FlameReader {
                         " must be 6 numbers \"a d b e c f\" (flam3's order), not \"" +
                         std::string(attribute.value()).substr(0, 80) + "\"");
     for (const double v : *values)
-      if (!finiteWithin(v, kCoefficientLimit))
+      if (!finiteWithin(v, kFlameCoefficientLimit))
         fail(context, std::string("attribute ") + attribute.name() +
                           " has a coefficient that is not finite or beyond ±1e6 (" + formatted(v) + ")");
     const auto& c = *values;
@@ -529,7 +528,7 @@ class FlameReader {
     bool haveColorSpeed = false;
     if (!isFinal) {
       const pugi::xml_attribute weight = node.attribute("weight");
-      x.weight = weight ? number(weight, context, 0.0, kCoefficientLimit) : 0.0;
+      x.weight = weight ? number(weight, context, 0.0, kFlameCoefficientLimit) : 0.0;
       if (!weight) warn(context + " has no weight attribute; it is never chosen");
     }
     const pugi::xml_attribute coefs = node.attribute("coefs");
@@ -542,7 +541,7 @@ class FlameReader {
     if (const pugi::xml_attribute color = node.attribute("color")) {
       // Apophysis writes "color" as one number; flam3's old files as two ("c1 c2"): the first counts.
       const auto values = parseNumbers(color.value());
-      if (!values || values->empty() || !finiteWithin(values->front(), kCoefficientLimit))
+      if (!values || values->empty() || !finiteWithin(values->front(), kFlameCoefficientLimit))
         fail(context, std::string("attribute color=\"") + color.value() + "\" is not a number");
       x.color = std::clamp(values->front(), 0.0, 1.0);
     }
@@ -552,8 +551,8 @@ class FlameReader {
     }
     // flam3 before 3.0 wrote symmetry = 1 − 2 · color_speed.
     if (const pugi::xml_attribute symmetry = node.attribute("symmetry"); symmetry && !haveColorSpeed)
-      x.colorSpeed =
-          std::clamp((1.0 - number(symmetry, context, -kCoefficientLimit, kCoefficientLimit)) / 2.0, 0.0, 1.0);
+      x.colorSpeed = std::clamp(
+          (1.0 - number(symmetry, context, -kFlameCoefficientLimit, kFlameCoefficientLimit)) / 2.0, 0.0, 1.0);
     if (const pugi::xml_attribute opacity = node.attribute("opacity"))
       x.opacity = clampedNumber(opacity, context, 0.0, 1.0);
     if (const pugi::xml_attribute plotmode = node.attribute("plotmode");
@@ -567,10 +566,10 @@ class FlameReader {
         fail(context, std::string("attribute chaos=\"") + std::string(chaos.value()).substr(0, 80) +
                           "\" must be numbers (xaos factors)");
       for (double v : *values) {
-        if (!std::isfinite(v) || v < 0.0 || v > kCoefficientLimit) {
+        if (!std::isfinite(v) || v < 0.0 || v > kFlameCoefficientLimit) {
           warn(context + " has a xaos factor " + formatted(v) + " outside 0–1e6; " + (v > 0.0 ? "1e6" : "0") +
                " is used");
-          v = v > 0.0 ? kCoefficientLimit : 0.0;  // NaN and negatives forbid the step
+          v = v > 0.0 ? kFlameCoefficientLimit : 0.0;  // NaN and negatives forbid the step
         }
         x.xaos.push_back(v);
       }
@@ -611,7 +610,7 @@ class FlameReader {
       consumed.insert(name);
       VariationTerm term;
       term.name = termName(withoutCopyMark(name), *info);
-      term.weight = number(attribute, context, -kCoefficientLimit, kCoefficientLimit);
+      term.weight = number(attribute, context, -kFlameCoefficientLimit, kFlameCoefficientLimit);
       if (term.weight == 0.0) continue;
       term.params = info->defaultParams();
       for (std::size_t i = 0; i < info->params.size(); ++i)
@@ -619,7 +618,7 @@ class FlameReader {
           // Editors that capitalise a variation capitalise its parameters too (Mobius_Re_A).
           const auto param = byLowerName.find(lowered(key));
           if (param == byLowerName.end()) continue;
-          term.params[i] = number(param->second.second, context, -kCoefficientLimit, kCoefficientLimit);
+          term.params[i] = number(param->second.second, context, -kFlameCoefficientLimit, kFlameCoefficientLimit);
           consumed.insert(param->second.first);
           break;
         }
@@ -987,7 +986,7 @@ Palette readPalette(const pugi::xml_node& flame, FlameReader& reader) {
       Palette turned = found->second;
       double hue = 0.0;
       if (const pugi::xml_attribute hueAttribute = flame.attribute("hue"))
-        hue = reader.number(hueAttribute, "", -kCoefficientLimit, kCoefficientLimit);
+        hue = reader.number(hueAttribute, "", -kFlameCoefficientLimit, kFlameCoefficientLimit);
       if (hue != 0.0)
         for (glm::vec3& c : turned) c = rotateHue(c, hue);
       return turned;
@@ -1016,7 +1015,7 @@ ToneMapSettings readTone(const pugi::xml_node& flame, FlameReader& reader) {
   const auto key = [&](const char* name, double& target, double low, double high) {
     const pugi::xml_attribute attribute = flame.attribute(name);
     if (!attribute) return;
-    const double value = reader.number(attribute, "", -kCoefficientLimit, kCoefficientLimit);
+    const double value = reader.number(attribute, "", -kFlameCoefficientLimit, kFlameCoefficientLimit);
     target = std::clamp(value, low, high);
     if (target != value)
       reader.warn(std::string(name) + " " + formatted(value) + " is outside voxflame's range; " + formatted(target) +
@@ -1069,7 +1068,7 @@ FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader) {
     const pugi::xml_attribute attribute = flame.attribute(name);
     if (!attribute) return false;
     const auto value = parseNumbers(attribute.value());
-    if (!value || value->size() != 1 || !finiteWithin(value->front(), kCoefficientLimit)) {
+    if (!value || value->size() != 1 || !finiteWithin(value->front(), kFlameCoefficientLimit)) {
       unusable(attribute, "a number");
       return false;
     }
@@ -1080,8 +1079,8 @@ FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader) {
     const pugi::xml_attribute attribute = flame.attribute(name);
     if (!attribute) return std::nullopt;
     const auto values = parseNumbers(attribute.value());
-    if (!values || values->size() < 2 || !finiteWithin((*values)[0], kCoefficientLimit) ||
-        !finiteWithin((*values)[1], kCoefficientLimit)) {
+    if (!values || values->size() < 2 || !finiteWithin((*values)[0], kFlameCoefficientLimit) ||
+        !finiteWithin((*values)[1], kFlameCoefficientLimit)) {
       unusable(attribute, "two numbers");
       return std::nullopt;
     }
@@ -1185,9 +1184,9 @@ std::vector<GradientStop> gradientOf(const Palette& palette) {
 double jwildfireLayerWeight(const pugi::xml_node& layer, const std::string& context, FlameReader& reader) {
   double weight = 1.0;
   if (const pugi::xml_attribute attribute = layer.attribute("weight"))
-    weight = reader.number(attribute, context, 0.0, kCoefficientLimit);
+    weight = reader.number(attribute, context, 0.0, kFlameCoefficientLimit);
   if (const pugi::xml_attribute attribute = layer.attribute("density")) {
-    const double density = reader.number(attribute, context, 0.0, kCoefficientLimit);
+    const double density = reader.number(attribute, context, 0.0, kFlameCoefficientLimit);
     if (density < 1.0) weight *= density * density;
   }
   return weight;

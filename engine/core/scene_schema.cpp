@@ -293,7 +293,7 @@ const XF kXformFields[] = {
     {.key = "weight",
      .member = &FlameXform::weight,
      .min = 0.0,
-     .max = 1e6,
+     .max = kFlameCoefficientLimit,
      .ui = {"transform weight", 0.01, 10.0, true},
      .help = "relative chance of being picked",
      .affects = kPattern},
@@ -358,7 +358,11 @@ const VF kVariationFields[] = {
      .typeText = "string",
      .rangeText = "a variation's name",
      .defaultText = "required"},
-    {.key = "weight", .member = &VariationTerm::weight, .min = -1e6, .max = 1e6, .affects = kPattern},
+    {.key = "weight",
+     .member = &VariationTerm::weight,
+     .min = -kFlameCoefficientLimit,
+     .max = kFlameCoefficientLimit,
+     .affects = kPattern},
 };
 
 using YF = Field<FlameSymmetry>;
