@@ -4,6 +4,7 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <thread>
 
 #include <glm/mat4x4.hpp>
@@ -135,7 +136,9 @@ PointProjector::PointProjector(const PointProjection& projection, int threads) :
   // (Depths are in world units, so the count is set where the points are, not at unit depth.)
   const double centreDepth =
       p_.camera.orthographic ? 1.0 : std::max(viewDepth(p_.camera, p_.grid.box().center()), 1e-9);
-  const double countsPerPoint = std::clamp(4294967295.0 / (0.01 * std::max(p_.totalPoints, 1.0)), 16.0, 1024.0);
+  const double countsPerPoint = std::clamp(
+      static_cast<double>(std::numeric_limits<std::uint32_t>::max()) / (0.01 * std::max(p_.totalPoints, 1.0)), 16.0,
+      1024.0);
   unit_ = pointDensity_ / (countsPerPoint * (p_.camera.orthographic ? 1.0 : centreDepth * centreDepth));
 }
 
