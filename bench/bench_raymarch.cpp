@@ -1,5 +1,6 @@
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 
@@ -45,6 +46,9 @@ void benchRaymarch(const BenchOptions& options) {
   std::shared_ptr<const core::InsideMask> mask;
   core::PackedVolume volume;
   for (const Case& c : {Case{256, 1280, 720}, Case{512, 1280, 720}, Case{512, 1920, 1080}}) {
+    if (!options.grids.empty() &&
+        std::find(options.grids.begin(), options.grids.end(), c.resolution) == options.grids.end())
+      continue;
     const int width = c.width, height = c.height;
     // One 512³ volume serves both sizes: filling it is the slow part of this bench on a CPU.
     if (c.resolution != builtResolution) {

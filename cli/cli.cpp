@@ -380,7 +380,10 @@ Run defineBench(CLI::App& command) {
   command.add_option("benchmark", *which, "The benchmark to run (default: all)")->check(CLI::IsMember(names));
   command.add_option("--method", options->method, "The render method of `export` and `quality` (default: both)")
       ->check(CLI::IsMember(renderMethodNames()));
-  command.add_option("--grid", options->grids, "The grids `explorer` runs at (default: 192 256 512)")
+  command
+      .add_option("--grid", options->grids,
+                  "The grids `explorer` runs at (default: 192 256 512); `raymarch` runs only its cases at these grids "
+                  "(256 and 512)")
       ->check(within(core::kMinGridResolution, core::kMaxGridResolution));
   command.add_option("presets", options->presets,
                      "`rest`: the presets to open (files, or shipped names such as default); default: every shipped "

@@ -3,6 +3,7 @@
 // grid, and a snapshot thread that cycles two packed volumes instead of allocating more.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
@@ -79,7 +80,9 @@ TEST(ColourLayout, CellsSpanTwoVoxelsOnlyAbove256Cubed) {
   // 512³: 4 bytes of hits a voxel and 16 per 8 voxels, a third of the 16 bytes a voxel it was.
   grid.size = glm::ivec3(512);
   EXPECT_LE(accumulatorBytes(grid), 6 * grid.voxelCount() + (1u << 20));
-  EXPECT_LE(packedVolumeBytes(grid), 3 * grid.voxelCount() + grid.voxelCount() / 64);
+  // Packed: a half float of density a voxel, 8 bytes of colour per 8 voxels, and per brick of 4³
+  // voxels its occupancy and empty distance.
+  EXPECT_LE(packedVolumeBytes(grid), 3 * grid.voxelCount() + grid.voxelCount() / 32);
 }
 
 // 2^24 points of a colour fill a voxel's colour count; more must neither overflow the sums (255 ×
@@ -416,4 +419,64 @@ TEST(Accumulator, AccumulatorsSharingACoreBudgetBothFinish) {
   ASSERT_TRUE(cores->try_acquire()) << "a batch or a pack kept its core";
   EXPECT_FALSE(cores->try_acquire());
   cores->release();
+}
+
+// The ray-marcher leaps a cube of empty bricks at once on the strength of the empty distances, so
+// every brick's distance must be exactly the Chebyshev distance (in bricks) to the nearest brick
+// the density reaches, grown by the one voxel trilinear filtering reads: a distance too large
+// would skip density, one too small only wastes steps. Checked against brute force on a grid whose
+// sides are not multiples of a brick, with density at its corners, edges and inside.
+TEST(PackedVolume, EmptyDistancesAreTheChebyshevDistanceToTheNearestOccupiedBrick) {
+  VolumeSnapshot snapshot;
+  snapshot.geometry.size = {41, 30, 37};
+  const GridGeometry& g = snapshot.geometry;
+  snapshot.density.assign(g.voxelCount(), 0.0f);
+  snapshot.rgba.assign(4 * g.voxelCount(), 255);
+  const glm::ivec3 dense[] = {{0, 0, 0}, {40, 29, 36}, {20, 3, 17}, {21, 3, 17}, {7, 29, 2}, {33, 12, 30}};
+  for (const glm::ivec3& v : dense) snapshot.density[g.index(v.x, v.y, v.z)] = 3.0f;
+  snapshot.points = 18;
+  PackedVolume packed;
+  packVolume(snapshot, packed);
+  const glm::ivec3 bricks = packed.brickCount;
+  ASSERT_EQ(bricks, (g.size + kBrickSize - 1) / kBrickSize);
+  auto brickIndex = [&](glm::ivec3 b) {
+    return static_cast<std::size_t>(b.x) +
+           static_cast<std::size_t>(bricks.x) * (b.y + static_cast<std::size_t>(bricks.y) * b.z);
+  };
+  // The occupied bricks: those within a voxel of a dense one.
+  std::vector<std::uint8_t> occupied(packed.occupancy.size(), 0);
+  for (const glm::ivec3& v : dense)
+    for (int dz = -1; dz <= 1; ++dz)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const glm::ivec3 w = glm::clamp(v + glm::ivec3(dx, dy, dz), glm::ivec3(0), g.size - 1);
+          occupied[brickIndex(w / kBrickSize)] = 1;
+        }
+  EXPECT_EQ(packed.occupancy, occupied);
+  ASSERT_EQ(packed.emptyDistance.size(), occupied.size());
+  int leaps = 0;
+  for (int z = 0; z < bricks.z; ++z)
+    for (int y = 0; y < bricks.y; ++y)
+      for (int x = 0; x < bricks.x; ++x) {
+        int nearest = kMaxEmptyDistance;
+        for (int k = 0; k < bricks.z; ++k)
+          for (int j = 0; j < bricks.y; ++j)
+            for (int i = 0; i < bricks.x; ++i)
+              if (occupied[brickIndex({i, j, k})])
+                nearest = std::min(nearest, std::max({std::abs(i - x), std::abs(j - y), std::abs(k - z)}));
+        ASSERT_EQ(packed.emptyDistance[brickIndex({x, y, z})], nearest) << "brick " << x << " " << y << " " << z;
+        leaps += nearest > 1;
+      }
+  EXPECT_GT(leaps, 0) << "some bricks leap further than themselves";
+}
+
+TEST(PackedVolume, AnEmptyGridIsEmptyAsFarAsTheDistancesReach) {
+  VolumeSnapshot snapshot;
+  snapshot.geometry.size = {16, 16, 16};
+  snapshot.density.assign(snapshot.geometry.voxelCount(), 0.0f);
+  snapshot.rgba.assign(4 * snapshot.geometry.voxelCount(), 0);
+  PackedVolume packed;
+  packVolume(snapshot, packed);
+  ASSERT_FALSE(packed.emptyDistance.empty());
+  for (const std::uint8_t distance : packed.emptyDistance) EXPECT_EQ(distance, kMaxEmptyDistance);
 }

@@ -253,6 +253,93 @@ TEST_F(Renderer, EmptyBricksAreSkippedWithoutChangingTheImage) {
   EXPECT_GT(brightest, 0.3f);
 }
 
+// Knots of density scattered through a grid whose sides are not multiples of a brick, with
+// colours that vary, marched from an oblique eye: rays cross wide empty stretches and graze bricks.
+core::PackedVolume scatteredKnots() {
+  core::VolumeSnapshot snapshot;
+  snapshot.geometry.size = {70, 57, 63};
+  snapshot.geometry.voxelSize = 1.0;
+  const core::GridGeometry& g = snapshot.geometry;
+  snapshot.density.assign(g.voxelCount(), 0.0f);
+  snapshot.rgba.assign(4 * g.voxelCount(), 255);
+  std::uint32_t state = 12345u;
+  auto next = [&state](int below) {
+    state = state * 1664525u + 1013904223u;
+    return static_cast<int>((state >> 8) % static_cast<std::uint32_t>(below));
+  };
+  for (int knot = 0; knot < 40; ++knot) {
+    const glm::ivec3 centre(next(g.size.x), next(g.size.y), next(g.size.z));
+    for (int voxel = 0; voxel < 30; ++voxel) {
+      const glm::ivec3 v =
+          glm::clamp(centre + glm::ivec3(next(5) - 2, next(5) - 2, next(5) - 2), glm::ivec3(0), g.size - 1);
+      const std::size_t i = g.index(v.x, v.y, v.z);
+      snapshot.density[i] += static_cast<float>(1 + next(40));
+      snapshot.rgba[4 * i] = static_cast<std::uint8_t>(next(256));
+      snapshot.rgba[4 * i + 1] = static_cast<std::uint8_t>(next(256));
+    }
+  }
+  snapshot.maxDensity = *std::max_element(snapshot.density.begin(), snapshot.density.end());
+  snapshot.points = 40 * 30 * 20;
+  snapshot.version = 1;
+  core::PackedVolume volume;
+  core::packVolume(snapshot, volume);
+  return volume;
+}
+
+core::DensityImage marchScattered(gl::VolumeRenderer& renderer, const core::PackedVolume& volume) {
+  renderer.upload(volume);
+  core::CameraSettings camera;
+  camera.azimuthDeg = 28.0;
+  camera.elevationDeg = 17.0;
+  gl::RenderSettings settings;
+  settings.camera = core::orbitCamera(camera, volume.geometry.box(), 1.3);
+  settings.tone = neutralTone(0.5);
+  gl::FrameTarget target;
+  target.resize(96, 80);
+  for (int s = 0; s < 3; ++s) renderer.march(target, settings, s);
+  return target.readDensity();
+}
+
+double worstRelativeDifference(const core::DensityImage& a, const core::DensityImage& b, double* total) {
+  double worst = 0.0;
+  *total = 0.0;
+  for (std::size_t i = 0; i < a.values.size(); ++i) {
+    worst = std::max(worst, std::abs(a.values[i] - b.values[i]) / std::max(1e-3, std::abs(double(b.values[i]))));
+    *total += b.values[i];
+  }
+  return worst;
+}
+
+// The march leaps whole cubes of empty bricks (core::PackedVolume::emptyDistance) on the step
+// lattice: it must see every step with density that a march without leaps sees.
+TEST_F(Renderer, EmptySpaceLeapsMissNoDensity) {
+  const core::PackedVolume knots = scatteredKnots();
+  ASSERT_GT(*std::max_element(knots.emptyDistance.begin(), knots.emptyDistance.end()), 3)
+      << "some leaps cross several bricks";
+  const core::DensityImage leaping = marchScattered(renderer, knots);
+  core::PackedVolume everyStep = knots;
+  std::fill(everyStep.emptyDistance.begin(), everyStep.emptyDistance.end(), std::uint8_t{0});
+  const core::DensityImage stepping = marchScattered(renderer, everyStep);
+  ASSERT_EQ(leaping.values.size(), stepping.values.size());
+  double total = 0.0;
+  EXPECT_LE(worstRelativeDifference(leaping, stepping, &total), 1e-4);
+  EXPECT_GT(total, 0.0);
+}
+
+// Where colour cells are voxels the density can come from the colour texel's alpha (one fetch a
+// step) or from the density texture first: both give the same sums.
+TEST_F(Renderer, DensityFromColourGivesTheSumsOfDensityFirst) {
+  const core::PackedVolume knots = scatteredKnots();
+  ASSERT_EQ(knots.colour.shift, 0);
+  renderer.setDensityFetch(gl::VolumeRenderer::DensityFetch::FromColour);
+  const core::DensityImage fromColour = marchScattered(renderer, knots);
+  renderer.setDensityFetch(gl::VolumeRenderer::DensityFetch::DensityFirst);
+  const core::DensityImage densityFirst = marchScattered(renderer, knots);
+  double total = 0.0;
+  EXPECT_LE(worstRelativeDifference(fromColour, densityFirst, &total), 1e-5);
+  EXPECT_GT(total, 0.0);
+}
+
 TEST(PackedVolume, HalfFloatConversionRoundTrips) {
   for (float value : {0.0f, 1.0f, -2.5f, 0.333f, 1e-5f, 6.1e-5f, 65504.0f, 1e-7f})
     EXPECT_NEAR(core::halfToFloat(core::floatToHalf(value)), value, std::abs(value) * 1e-3f + 6e-8f) << value;

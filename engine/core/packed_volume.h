@@ -3,8 +3,9 @@
 // holding the cell's mean colour premultiplied by its density, so trilinear filtering blends colour
 // by density and empty neighbours never darken an edge. Colour cells are voxels, or 2×2×2 voxels
 // on grids above 256³ (ColourLayout): there the colour takes an eighth of the memory and upload.
-// A coarse occupancy grid of bricks lets the ray-marcher leap over empty space. Packing runs on
-// whichever thread reads the grid, so the main thread only uploads.
+// Per brick of 4³ voxels, the distance to the nearest brick with density lets the ray-marcher leap
+// over empty space, far in one step where it is wide. Packing runs on whichever thread reads the
+// grid, so the main thread only uploads.
 #pragma once
 
 #include <atomic>
@@ -18,8 +19,13 @@
 
 namespace voxflame::core {
 
-inline constexpr int kBrickSize = 8;
-inline constexpr int kCoarseBricks = 4;
+// Small bricks skip more: at 256³ the default preset's rays sample 12 M steps in bricks with density
+// at 4³ against 20 M at 8³, of which 5 M see any.
+inline constexpr int kBrickShift = 2;
+inline constexpr int kBrickSize = 1 << kBrickShift;
+// Empty distances stop here (an R8UI texel): a ray in the middle of nothing leaps at most this
+// many bricks at once.
+inline constexpr int kMaxEmptyDistance = 255;
 
 struct PackedVolume {
   GridGeometry geometry;
@@ -29,9 +35,11 @@ struct PackedVolume {
   std::vector<std::uint16_t> colours;  // 4 half floats per colour cell: its mean colour times a,
                                        // a = its voxels' mean density (what blends neighbours)
   glm::ivec3 brickCount{0};
-  std::vector<std::uint8_t> occupancy;        // 1 where a brick, grown by one voxel, holds density
-  glm::ivec3 coarseCount{0};                  // bricks of kCoarseBricks³ bricks: long empty stretches
-  std::vector<std::uint8_t> coarseOccupancy;  // are crossed in a few leaps instead of dozens
+  std::vector<std::uint8_t> occupancy;  // 1 where a brick, grown by one voxel, holds density
+  // Per brick, 0 where it is occupied, else the Chebyshev distance in bricks to the nearest
+  // occupied one (at most kMaxEmptyDistance): the cube of bricks within distance − 1 of it is
+  // empty, so a ray inside it leaps to its far side in one step.
+  std::vector<std::uint8_t> emptyDistance;
   float maxDensity = 0.0f;
   // Hits one unit of texel density stands for: referenceDensity, so texels hold density relative
   // to the mesh's mean. Two snapshots of one pattern then agree voxel by voxel whatever their point

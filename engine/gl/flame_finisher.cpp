@@ -19,6 +19,7 @@ namespace {
 // Must match the shaders' array sizes.
 constexpr int kMaxKernels = 192;
 constexpr int kMaxTaps = 128;
+constexpr std::size_t kPackChunk = 64;    // finish_pack.comp.glsl's kChunk
 constexpr double kGaussianSupport = 1.5;  // flam3's Gaussian support (core/flame_image.cpp)
 constexpr double kKernelStep = 1.04;      // the estimator's width quantisation (core/flame_image.cpp)
 
@@ -27,7 +28,9 @@ double gaussian(double x) {
 }
 
 // The estimator's kernel table as core::estimateDensity's KernelTable builds it: per kernel
-// (1 / width, 1 / sum of weights, radius, largest dx² + dy² inside the disc).
+// (the Gaussian's exponent per squared pixel of distance, 1 / sum of weights, radius, largest
+// dx² + dy² inside the disc). The exponent −2 (1.5 d / width)² is −4.5 / width² times d², so the
+// shaders take no square root per pixel.
 struct KernelTable {
   double maxWidth = 1.0, minWidth = 1.0, curve = 1.0;
   std::vector<float> kernels;  // 4 per kernel
@@ -56,8 +59,10 @@ KernelTable makeKernelTable(const core::ToneMapSettings& tone, int oversample) {
         sum += gaussian(kGaussianSupport * d);
         largest = std::max(largest, dx * dx + dy * dy);
       }
-    table.kernels.insert(table.kernels.end(), {static_cast<float>(1.0 / width), static_cast<float>(1.0 / sum),
-                                               static_cast<float>(radius), static_cast<float>(largest)});
+    const double exponentPerSquaredPixel = -2.0 * kGaussianSupport * kGaussianSupport / (width * width);
+    table.kernels.insert(table.kernels.end(),
+                         {static_cast<float>(exponentPerSquaredPixel), static_cast<float>(1.0 / sum),
+                          static_cast<float>(radius), static_cast<float>(largest)});
   }
   return table;
 }
@@ -122,16 +127,20 @@ void bindTexture(const ShaderProgram& program, const char* name, int unit, GLuin
 }
 
 // The finishing shaders share finish_common.glsl, put after the version line.
+ShaderSource withDefine(const ShaderSource& shader, const char* define) {
+  return {shader.file, std::string("#version 430 core\n#define ") + define + "\n#line 1\n" + shader.text};
+}
+
 ShaderSource withCommon(const ShaderSource& shader) {
   const ShaderSource common = embeddedShader("finish_common.glsl");
   return {shader.file, "#version 430 core\n" + common.text + "\n#line 1\n" + shader.text};
 }
 
 // The fold or the tone (`pass`, whose function `pixelFunction` gives one pixel) as a compute or a
-// fragment stage: finish_stage.glsl after it.
-ShaderSource withStage(const char* pass, const char* pixelFunction, bool compute) {
+// fragment stage: finish_stage.glsl after it. `defines` are put first.
+ShaderSource withStage(const char* pass, const char* pixelFunction, bool compute, const std::string& defines = "") {
   const ShaderSource body = withCommon(embeddedShader(pass));
-  return {body.file, std::string("#version 430 core\n") + (compute ? "#define COMPUTE_STAGE\n" : "") +
+  return {body.file, std::string("#version 430 core\n") + defines + (compute ? "#define COMPUTE_STAGE\n" : "") +
                          "#define FINISH_PIXEL " + pixelFunction + "\n" + body.text.substr(body.text.find('\n') + 1) +
                          "\n" + embeddedShader("finish_stage.glsl").text};
 }
@@ -167,10 +176,11 @@ FlameFinisher::FlameFinisher()
     : scatterProgram_(withCommon(embeddedShader("finish_scatter.vert.glsl")),
                       embeddedShader("finish_scatter.frag.glsl")),
       foldProgram_(embeddedShader("fullscreen.vert.glsl"), withStage("finish_fold.glsl", "foldPixel", false)),
-      toneProgram_(embeddedShader("fullscreen.vert.glsl"), withStage("finish_tone.glsl", "tonePixel", false)),
       foldComputeProgram_(withStage("finish_fold.glsl", "foldPixel", true)),
-      toneComputeProgram_(withStage("finish_tone.glsl", "tonePixel", true)),
       compactProgram_(withCommon(embeddedShader("finish_compact.comp.glsl"))),
+      packPrograms_{ShaderProgram(withDefine(embeddedShader("finish_pack.comp.glsl"), "COUNT")),
+                    ShaderProgram(withDefine(embeddedShader("finish_pack.comp.glsl"), "OFFSETS")),
+                    ShaderProgram(withDefine(embeddedShader("finish_pack.comp.glsl"), "WRITE"))},
       gatherProgram_(withCommon(embeddedShader("finish_gather.comp.glsl"))) {
   // Sprites are the faster on a software rasteriser, gathering on a GPU (H200: 0.7 against 27 ms
   // at 1920×1080), where rasterising and blending run on a few multiprocessors; so are the fold
@@ -181,6 +191,9 @@ FlameFinisher::FlameFinisher()
   glGenBuffers(1, &command_);
   glGenBuffers(1, &sprites_);
   glGenTextures(1, &spritesTexture_);
+  glGenBuffers(1, &packedSprites_);
+  glGenTextures(1, &packedSpritesTexture_);
+  glGenBuffers(1, &chunks_);
   glGenVertexArrays(1, &vertexArray_);
   GLfloat range[2] = {1.0f, 1.0f};
   glGetFloatv(GL_POINT_SIZE_RANGE, range);
@@ -195,12 +208,25 @@ FlameFinisher::~FlameFinisher() {
   glDeleteBuffers(1, &command_);
   glDeleteBuffers(1, &sprites_);
   glDeleteTextures(1, &spritesTexture_);
+  glDeleteBuffers(1, &packedSprites_);
+  glDeleteTextures(1, &packedSpritesTexture_);
+  glDeleteBuffers(1, &chunks_);
   glDeleteVertexArrays(1, &vertexArray_);
   glDeleteFramebuffers(1, &scatterFramebuffer_);
   glDeleteFramebuffers(1, &logFramebuffer_);
   glDeleteTextures(1, &scatter_);
   glDeleteTextures(1, &log_);
   glDeleteTextures(1, &emptyOverlay_);
+}
+
+const ShaderProgram& FlameFinisher::toneProgram(bool compute, core::MeshDisplay overlay) {
+  const int mode = overlay == core::MeshDisplay::Ghost ? 1 : overlay == core::MeshDisplay::Silhouette ? 2 : 0;
+  ShaderProgram& program = tonePrograms_[2 * mode + (compute ? 1 : 0)];
+  if (program.id()) return program;
+  const std::string defines = mode == 1 ? "#define OVERLAY_GHOST\n" : mode == 2 ? "#define OVERLAY_SILHOUETTE\n" : "";
+  const ShaderSource source = withStage("finish_tone.glsl", "tonePixel", compute, defines);
+  program = compute ? ShaderProgram(source) : ShaderProgram(embeddedShader("fullscreen.vert.glsl"), source);
+  return program;
 }
 
 int FlameFinisher::apron(const core::FinishSettings& settings) {
@@ -277,9 +303,17 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
       glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(8 * pixels), nullptr, GL_DYNAMIC_COPY);
       glBindTexture(GL_TEXTURE_BUFFER, spritesTexture_);
       glTexBuffer(GL_TEXTURE_BUFFER, GL_RG32UI, sprites_);
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, packedSprites_);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(8 * pixels), nullptr, GL_DYNAMIC_COPY);
+      glBindTexture(GL_TEXTURE_BUFFER, packedSpritesTexture_);
+      glTexBuffer(GL_TEXTURE_BUFFER, GL_RG32UI, packedSprites_);
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, chunks_);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(4 * (pixels / kPackChunk + 1)), nullptr,
+                   GL_DYNAMIC_COPY);
     }
-    // Every pixel's slot is drawn (in pixel order, so the sums add up alike every time); those
-    // that scatter nothing are dropped by the vertex stage.
+    // Every pixel has a slot, in pixel order (so the sums add up alike every time): the gather
+    // reads them by pixel, and the scatter draws those that scatter something (its count is set
+    // on the GPU by finish_pack.comp.glsl).
     const GLuint command[4] = {static_cast<GLuint>(pixels) * (quads ? 6u : 1u), 1, 0, 0};
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, command_);
     glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(command), command, GL_DYNAMIC_COPY);
@@ -315,6 +349,19 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
       glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
       glBindTexture(GL_TEXTURE_BUFFER, 0);
     } else {
+      // Only the drawn sprites go to the vertex stage, packed to the front in pixel order.
+      const GLuint chunks = static_cast<GLuint>((pixels + kPackChunk - 1) / kPackChunk);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, chunks_);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, packedSprites_);
+      for (int pass = 0; pass < 3; ++pass) {
+        const ShaderProgram& pack = packPrograms_[pass];
+        glUseProgram(pack.id());
+        glUniform1ui(pack.uniform("uSlots"), static_cast<GLuint>(pixels));
+        glUniform1ui(pack.uniform("uChunks"), chunks);
+        glUniform1ui(pack.uniform("uVerticesPerSprite"), quads ? 6u : 1u);
+        glDispatchCompute(pass == 1 ? 1u : (chunks + 63) / 64, 1, 1);
+        glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
+      }
       const ShaderProgram& p = scatterProgram_;
       glUseProgram(p.id());
       setKernelUniforms(p);
@@ -322,7 +369,7 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
       glUniform1i(p.uniform("uQuads"), quads ? 1 : 0);
       bindTexture(p, "uDensity", 0, source.density);
       glActiveTexture(GL_TEXTURE1);
-      glBindTexture(GL_TEXTURE_BUFFER, spritesTexture_);
+      glBindTexture(GL_TEXTURE_BUFFER, packedSpritesTexture_);
       glUniform1i(p.uniform("uSprites"), 1);
       glEnable(GL_BLEND);
       glBlendEquation(GL_FUNC_ADD);
@@ -367,7 +414,9 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
       glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
       glViewport(0, 0, outputSize.x, outputSize.y);
     }
-    const ShaderProgram& p = compute ? toneComputeProgram_ : toneProgram_;
+    const bool withOverlay = source.overlay != 0 && overlay.mode != core::MeshDisplay::Off;
+    const core::MeshDisplay overlayMode = withOverlay ? overlay.mode : core::MeshDisplay::Off;
+    const ShaderProgram& p = toneProgram(compute, overlayMode);
     glUseProgram(p.id());
     bindTexture(p, "uLog", 1, log_);
     glUniform2i(p.uniform("uLogOrigin"), source.origin.x, source.origin.y);
@@ -387,8 +436,6 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
     const glm::vec3 background = displayEncode(glm::vec3(tone.background), tone.gamma);
     glUniform3f(p.uniform("uBackground"), background.r, background.g, background.b);
     glUniform1i(p.uniform("uLinearOutput"), settings.linearOutput ? 1 : 0);
-    const bool withOverlay = source.overlay != 0 && overlay.mode != core::MeshDisplay::Off;
-    glUniform1i(p.uniform("uOverlayMode"), !withOverlay ? 0 : overlay.mode == core::MeshDisplay::Ghost ? 1 : 2);
     bindTexture(p, "uOverlay", 2, withOverlay ? source.overlay : emptyOverlay_);
     glUniform2i(p.uniform("uOverlayOrigin"), source.overlayOrigin.x, source.overlayOrigin.y);
     glUniform1f(p.uniform("uOverlayStrength"), static_cast<float>(overlay.strength));

@@ -95,16 +95,20 @@ class FlameFinisher {
 
   ShaderProgram scatterProgram_;
   ShaderProgram foldProgram_;
-  ShaderProgram toneProgram_;
   ShaderProgram foldComputeProgram_;
-  ShaderProgram toneComputeProgram_;
-  ShaderProgram compactProgram_;  // compute: the sprite list and the indirect draw's count
-  ShaderProgram gatherProgram_;   // compute: density estimation gathered
+  // The tone per stage and overlay mode, built when first used: a software rasteriser runs the
+  // code of a branch on a uniform for every pixel, so the overlays it does not draw are left out.
+  const ShaderProgram& toneProgram(bool compute, core::MeshDisplay overlay);
+  ShaderProgram tonePrograms_[6];
+  ShaderProgram compactProgram_;   // compute: the sprite list and the indirect draw's count
+  ShaderProgram packPrograms_[3];  // compute: the scatter's drawn sprites moved to the front (count, offsets, write)
+  ShaderProgram gatherProgram_;    // compute: density estimation gathered
   Estimation estimation_ = Estimation::Scatter;
   bool computePasses_ = false;
   GLuint command_ = 0;  // DrawArraysIndirectCommand
   GLuint sprites_ = 0, spritesTexture_ = 0;
-  std::size_t spriteCapacity_ = 0;  // pixels the sprite list holds
+  std::size_t spriteCapacity_ = 0;                                    // pixels the sprite list holds
+  GLuint packedSprites_ = 0, packedSpritesTexture_ = 0, chunks_ = 0;  // the scatter's packed list
   GLuint vertexArray_ = 0;
   GLuint scatter_ = 0, scatterFramebuffer_ = 0;
   glm::ivec2 scatterSize_{0};

@@ -143,29 +143,29 @@ void FrameTarget::resize(int width, int height) {
 
 namespace {
 
-// A march stage's source behind the version line and the body both stages share.
-ShaderSource withMarchBody(const ShaderSource& stage) {
-  return {stage.file, "#version 430 core\n" + embeddedShader("march_common.glsl").text + "\n#line 1\n" + stage.text};
+// A march stage's source behind the version line, the variant's defines and the body both
+// stages share.
+ShaderSource withMarchBody(const ShaderSource& stage, const std::string& defines) {
+  return {stage.file,
+          "#version 430 core\n" + defines + embeddedShader("march_common.glsl").text + "\n#line 1\n" + stage.text};
 }
 
 }  // namespace
 
 VolumeRenderer::VolumeRenderer()
-    : marchProgram_(embeddedShader("fullscreen.vert.glsl"), withMarchBody(embeddedShader("march.frag.glsl"))),
-      marchComputeProgram_(withMarchBody(embeddedShader("march.comp.glsl"))),
-      blitProgram_(embeddedShader("fullscreen.vert.glsl"), embeddedShader("blit.frag.glsl")),
+    : blitProgram_(embeddedShader("fullscreen.vert.glsl"), embeddedShader("blit.frag.glsl")),
       meshProgram_(embeddedShader("mesh.vert.glsl"), embeddedShader("mesh.frag.glsl")),
       finisher_() {
   // The fragment stage is the faster one on a software rasteriser (llvmpipe: 0.5 against 0.66 s a
   // 1280×720 sample at 256³); compute, many times faster on a compute GPU (H200: 0.9 against
   // 24 ms at 1920×1080 and 512³).
-  marchStage_ = softwareRasteriser() ? MarchStage::Fragment : MarchStage::Compute;
+  softwareRasteriser_ = softwareRasteriser();
+  marchStage_ = softwareRasteriser_ ? MarchStage::Fragment : MarchStage::Compute;
   glGenVertexArrays(1, &vertexArray_);
   for (Slot& slot : slots_) {
     slot.volume = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
     slot.density = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
-    slot.occupancy = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
-    slot.coarse = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
+    slot.emptyDistance = makeTexture(GL_TEXTURE_3D, GL_NEAREST);
   }
   shadowTexture_ = makeTexture(GL_TEXTURE_3D, GL_LINEAR);
 }
@@ -174,14 +174,27 @@ VolumeRenderer::~VolumeRenderer() {
   for (Slot& slot : slots_) {
     glDeleteTextures(1, &slot.volume);
     glDeleteTextures(1, &slot.density);
-    glDeleteTextures(1, &slot.occupancy);
-    glDeleteTextures(1, &slot.coarse);
+    glDeleteTextures(1, &slot.emptyDistance);
   }
   glDeleteTextures(1, &shadowTexture_);
   glDeleteVertexArrays(1, &vertexArray_);
   glDeleteVertexArrays(1, &meshArray_);
   glDeleteBuffers(1, &meshVertices_);
   glDeleteBuffers(1, &meshIndices_);
+}
+
+const ShaderProgram& VolumeRenderer::marchProgram(unsigned variant) {
+  ShaderProgram& program = marchPrograms_[variant];
+  if (program.id()) return program;
+  std::string defines;
+  if (variant & kLighting) defines += "#define LIGHTING\n";
+  if (variant & kDensityInColour) defines += "#define DENSITY_IN_COLOUR\n";
+  if (variant & kComputeStage)
+    program = ShaderProgram(withMarchBody(embeddedShader("march.comp.glsl"), defines));
+  else
+    program = ShaderProgram(embeddedShader("fullscreen.vert.glsl"),
+                            withMarchBody(embeddedShader("march.frag.glsl"), defines));
+  return program;
 }
 
 void VolumeRenderer::upload(const core::PackedVolume& volume) {
@@ -246,17 +259,14 @@ bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
 }
 
 void VolumeRenderer::finishUpload(Slot& slot, const core::PackedVolume& volume) {
-  // The occupancy grid is small; it goes up whole, with the last slab, so it matches the volume.
+  // The empty distances are small (a byte per 4³ voxels); they go up whole, with the last slab, so
+  // they match the volume.
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glBindTexture(GL_TEXTURE_3D, slot.occupancy);
+  glBindTexture(GL_TEXTURE_3D, slot.emptyDistance);
   glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, volume.brickCount.x, volume.brickCount.y, volume.brickCount.z, 0,
-               GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.occupancy.data());
+               GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.emptyDistance.data());
   slot.geometry = volume.geometry;
   slot.brickCount = volume.brickCount;
-  glBindTexture(GL_TEXTURE_3D, slot.coarse);
-  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, volume.coarseCount.x, volume.coarseCount.y, volume.coarseCount.z, 0,
-               GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.coarseOccupancy.data());
-  slot.coarseCount = volume.coarseCount;
   slot.texelDensity = volume.texelDensity;
   slot.referenceDensity = volume.referenceDensity;
   slot.insideVoxels = volume.insideVoxels;
@@ -350,13 +360,22 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
     glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(samplesBefore + 1));
   }
 
-  const ShaderProgram& p = compute ? marchComputeProgram_ : marchProgram_;
+  const Slot& slot = slots_[marched_];
+  const bool lighting = settings.render.lighting && hasShadow();
+  // Where colour cells are voxels their alpha is the density: a software rasteriser then fetches
+  // one texel a step instead of two (it gains nothing from testing the density first, since it
+  // fetches the colour for all lanes whenever one needs it); a GPU skips the colour where a
+  // step sees no density, which most do.
+  const bool densityInColour =
+      slot.colour.shift == 0 &&
+      (densityFetch_ == DensityFetch::FromColour || (densityFetch_ == DensityFetch::Automatic && softwareRasteriser_));
+  const ShaderProgram& p = marchProgram((compute ? kComputeStage : 0u) | (lighting ? kLighting : 0u) |
+                                        (densityInColour ? kDensityInColour : 0u));
   glUseProgram(p.id());
   const glm::dmat4 projection = tileProjection(settings, tile, width, height, samplePixelOffset(sampleIndex));
   const glm::mat4 inverseViewProjection(glm::inverse(projection * settings.camera.view));
   glUniformMatrix4fv(p.uniform("uInverseViewProjection"), 1, GL_FALSE, glm::value_ptr(inverseViewProjection));
   glUniform2f(p.uniform("uTargetSize"), static_cast<float>(width), static_cast<float>(height));
-  const Slot& slot = slots_[marched_];
   const core::GridGeometry& geometry = slot.geometry;
   const core::Box box = geometry.box();
   setUniform(p, "uGridOrigin", glm::vec3(box.min));
@@ -368,9 +387,7 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
   setUniform(p, "uVoxelSize", geometry.voxelSize);
   setUniform(p, "uStepVoxels", std::clamp(settings.render.stepVoxels, 0.05, 4.0));
   glUniform3i(p.uniform("uBrickCount"), slot.brickCount.x, slot.brickCount.y, slot.brickCount.z);
-  glUniform1i(p.uniform("uBrickSize"), core::kBrickSize);
-  glUniform3i(p.uniform("uCoarseCount"), slot.coarseCount.x, slot.coarseCount.y, slot.coarseCount.z);
-  glUniform1i(p.uniform("uCoarseSize"), core::kBrickSize * core::kCoarseBricks);
+  glUniform1i(p.uniform("uBrickShift"), core::kBrickShift);
   // Density relative to the mesh's mean and lengths in grid sides make a pixel's sum independent
   // of the point count and the grid resolution (flame_image.h).
   glUniform1f(p.uniform("uToRelative"), static_cast<float>(slot.texelDensity / std::max(slot.referenceDensity, 1e-30)));
@@ -380,8 +397,6 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
   setUniform(p, "uAbsorption", std::max(0.0, settings.tone.opacity) * core::kAbsorptionPerDensity);
   glUniform1ui(p.uniform("uSample"), static_cast<GLuint>(sampleIndex));
   glUniform2i(p.uniform("uPixelOffset"), tile.x, tile.y);
-  const bool lighting = settings.render.lighting && hasShadow();
-  glUniform1i(p.uniform("uLighting"), lighting ? 1 : 0);
   // The shadow's cells cover its source grid; the marched grid spans the same box, perhaps at
   // another resolution (the proxy), so voxel coordinates are rescaled to the source's.
   if (lighting)
@@ -389,10 +404,9 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
                glm::vec3(shadowSource_) / glm::vec3(shadowSize_ * shadowDownsample_) / glm::vec3(geometry.size));
   setUniform(p, "uLightStrength", settings.render.lightStrength);
   bindSampler(p, "uVolume", 0, GL_TEXTURE_3D, slot.volume);
-  bindSampler(p, "uOccupancy", 1, GL_TEXTURE_3D, slot.occupancy);
+  bindSampler(p, "uEmptyDistance", 1, GL_TEXTURE_3D, slot.emptyDistance);
   bindSampler(p, "uShadow", 2, GL_TEXTURE_3D, shadowTexture_);
   bindSampler(p, "uDensity", 3, GL_TEXTURE_3D, slot.density);
-  bindSampler(p, "uCoarseOccupancy", 4, GL_TEXTURE_3D, slot.coarse);
   if (compute) {
     const glm::ivec4 region = scissor.z > 0 ? scissor : glm::ivec4(0, 0, width, height);
     glBindImageTexture(0, target.radiance_, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);

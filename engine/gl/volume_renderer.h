@@ -116,6 +116,14 @@ class VolumeRenderer {
   void setMarchStage(MarchStage stage) { marchStage_ = stage; }
   MarchStage marchStage() const { return marchStage_; }
 
+  // Where the march reads a step's density: from the density texture, fetching the colour only
+  // where there is some (what a GPU, which skips work per pixel, does best), or from the colour
+  // texel's alpha where colour cells are voxels (one fetch a step: what a software rasteriser,
+  // which runs both sides of every branch, does best). Automatic: by the renderer's kind. The
+  // sums are the same either way.
+  enum class DensityFetch { Automatic, DensityFirst, FromColour };
+  void setDensityFetch(DensityFetch fetch) { densityFetch_ = fetch; }
+
   // Adds one jittered sub-sample of the view to `target` (a running average). `sampleIndex`
   // picks the jitter; `tile` selects part of a larger image (x, y, full width, full height).
   void march(FrameTarget& target, const RenderSettings& settings, int sampleIndex,
@@ -148,11 +156,9 @@ class VolumeRenderer {
                             glm::dvec2 pixelJitter) const;
   // One uploaded volume: its textures and what the march needs to know about it.
   struct Slot {
-    GLuint volume = 0;     // RGBA16F per colour cell: premultiplied colour, relative density
-    GLuint density = 0;    // R16F: relative density alone
-    GLuint occupancy = 0;  // R8UI per brick
-    GLuint coarse = 0;     // R8UI per coarse brick
-    glm::ivec3 coarseCount{0};
+    GLuint volume = 0;         // RGBA16F per colour cell: premultiplied colour, relative density
+    GLuint density = 0;        // R16F: relative density alone
+    GLuint emptyDistance = 0;  // R8UI per brick (core::PackedVolume::emptyDistance)
     glm::ivec3 brickCount{0};
     core::GridGeometry geometry;
     glm::ivec3 allocated{0};    // the size the volume textures were last allocated at
@@ -168,8 +174,18 @@ class VolumeRenderer {
   void uploadSlab(Slot& slot, const core::PackedVolume& volume, int firstZ, int endZ);
   void finishUpload(Slot& slot, const core::PackedVolume& volume);
 
-  ShaderProgram marchProgram_;
-  ShaderProgram marchComputeProgram_;
+  // The march programs, built when first used, one per combination of the bits of MarchVariant:
+  // features a draw does not use are compiled out, since a software rasteriser runs both sides of
+  // every branch (and a branch on a uniform) for all of its lanes.
+  enum MarchVariant : unsigned {
+    kComputeStage = 1,     // the compute stage, else the fragment one
+    kLighting = 2,         // the shadow lookup
+    kDensityInColour = 4,  // colour cells are voxels: one fetch gives colour and density (software only)
+  };
+  const ShaderProgram& marchProgram(unsigned variant);
+  ShaderProgram marchPrograms_[8];
+  bool softwareRasteriser_ = false;
+  DensityFetch densityFetch_ = DensityFetch::Automatic;
   MarchStage marchStage_ = MarchStage::Compute;
   ShaderProgram blitProgram_;
   ShaderProgram meshProgram_;

@@ -13,7 +13,7 @@ uniform ivec2 uSize;             // of the density image
 uniform int uPad;                // the widest kernel's radius
 uniform float uBrightness;
 const int kMaxKernels = 192;
-uniform vec4 uKernels[kMaxKernels];  // 1 / width, 1 / sum of its weights, radius, largest dx² + dy² inside
+uniform vec4 uKernels[kMaxKernels];  // exponent per squared pixel, 1 / sum of its weights, radius, largest dx² + dy² inside
 layout(rgba32f) writeonly uniform image2D uTarget;  // padded by uPad on every side
 
 const uint kNoSprite = 0xFFFFFFFFu;
@@ -35,8 +35,7 @@ void main() {
       float d2 = dot(d, d);
       if (d2 > kernel.w) continue;  // outside the disc core::estimateDensity gives the kernel
       vec4 sums = texelFetch(uDensity, ivec2(x, y), 0);
-      float r = 1.5 * sqrt(d2) * kernel.x;
-      sum += (sums * logScale(sums.a, uBrightness)) * (exp(-2.0 * r * r) * kernel.y);
+      sum += (sums * logScale(sums.a, uBrightness)) * (exp(d2 * kernel.x) * kernel.y);
     }
   }
   imageStore(uTarget, q, sum);

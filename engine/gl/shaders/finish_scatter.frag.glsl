@@ -5,7 +5,7 @@
 
 flat in vec4 vValue;
 flat in vec2 vCentre;
-flat in vec3 vKernel;  // 1 / width, 1 / sum of weights, largest dx² + dy² inside
+flat in vec3 vKernel;  // the Gaussian's exponent per squared pixel, 1 / sum of weights, largest dx² + dy² inside
 out vec4 fragColor;
 
 void main() {
@@ -13,6 +13,5 @@ void main() {
   float d2 = dot(d, d);
   // Compared as integers so the disc has exactly the pixels core::estimateDensity gives it.
   if (d2 > vKernel.z) discard;
-  float x = 1.5 * sqrt(d2) * vKernel.x;
-  fragColor = vValue * (exp(-2.0 * x * x) * vKernel.y);
+  fragColor = vValue * (exp(d2 * vKernel.x) * vKernel.y);
 }

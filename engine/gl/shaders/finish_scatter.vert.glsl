@@ -1,7 +1,8 @@
 // Density estimation, scattered (flame_finisher.h): one sprite per entry of the list that
-// finish_compact.comp.glsl made (pixels whose kernel is wider than a pixel), drawn as a point
-// (or, where the kernel is wider than the driver's points, a quad of six vertices) the size of its
-// kernel, centred on the pixel in a target padded by the widest kernel's radius.
+// finish_compact.comp.glsl made and finish_pack.comp.glsl packed (pixels whose kernel is wider
+// than a pixel), drawn as a point (or, where the kernel is wider than the driver's points, a quad
+// of six vertices) the size of its kernel, centred on the pixel in a target padded by the widest
+// kernel's radius.
 
 uniform sampler2D uDensity;  // sums: red·D, green·D, blue·D, D
 uniform usamplerBuffer uSprites;
@@ -9,7 +10,8 @@ uniform ivec2 uSize;  // of the density image
 uniform int uPad;     // the widest kernel's radius
 uniform float uBrightness;
 uniform bool uQuads;
-// Per kernel: 1 / width, 1 / (sum of its weights), radius, largest dx² + dy² inside it.
+// Per kernel: the Gaussian's exponent per squared pixel, 1 / (sum of its weights), radius, largest
+// dx² + dy² inside it.
 const int kMaxKernels = 192;
 uniform vec4 uKernels[kMaxKernels];
 

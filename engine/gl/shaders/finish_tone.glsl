@@ -24,7 +24,7 @@ uniform float uContrast;
 uniform vec3 uBackground;  // display-encoded
 uniform bool uLinearOutput;
 
-uniform int uOverlayMode;  // 0 off, 1 ghost, 2 silhouette
+// The overlay is compiled in by OVERLAY_GHOST or OVERLAY_SILHOUETTE (FlameFinisher::toneProgram).
 uniform sampler2D uOverlay;
 uniform ivec2 uOverlayOrigin;  // of the overlay region in the full output image
 uniform float uOverlayStrength;
@@ -113,15 +113,17 @@ vec4 tonePixel(ivec2 local) {
     if (uVibrancy != 1.0) color += (1.0 - uVibrancy) * pow(c, vec3(g));
   }
   color += (1.0 - min(alpha, 1.0)) * uBackground;
-  if (uOverlayMode == 1) {
-    color += uOverlayStrength * overlayAt(pixel).rgb;
-  } else if (uOverlayMode == 2) {
+#if defined(OVERLAY_GHOST)
+  color += uOverlayStrength * overlayAt(pixel).rgb;
+#elif defined(OVERLAY_SILHOUETTE)
+  {
     float centre = overlayAt(pixel).a;
     float edge = 0.0;
     for (int dy = -1; dy <= 1; ++dy)
       for (int dx = -1; dx <= 1; ++dx) edge = max(edge, abs(overlayAt(pixel + ivec2(dx, dy)).a - centre));
     color = mix(color, uLineColor, clamp(edge * uOverlayStrength * 2.5, 0.0, 1.0));
   }
+#endif
   color = (color - 0.5) * uContrast + 0.5;
   color = uLinearOutput ? pow(max(color, vec3(0.0)), vec3(uGamma)) : clamp(color, 0.0, 1.0);
   return vec4(color, min(alpha, 1.0));

@@ -1,8 +1,10 @@
 // The ray marcher's body (VolumeRenderer::march), shared by its compute and fragment stages:
 // integrates emission–absorption through the density volume from the near plane to the far plane,
-// leaping over empty bricks, with an optional light-transmittance (shadow) lookup. Gives linear
+// leaping over empty space, with an optional light-transmittance (shadow) lookup. Gives linear
 // sums, not a picture: rgb = colour × absorbed density, a = column density; flame_image.h makes
-// the picture.
+// the picture. Defines pick the variant (VolumeRenderer::MarchVariant): LIGHTING adds the shadow
+// lookup; DENSITY_IN_COLOUR takes the density from the colour texel's alpha (where colour cells
+// are voxels) instead of testing the density texture first.
 
 uniform mat4 uInverseViewProjection;
 uniform vec2 uTargetSize;
@@ -14,19 +16,15 @@ uniform float uStepVoxels;
 uniform sampler3D uVolume;      // per colour cell: rgb = colour × normalised density, a = normalised density
 uniform vec3 uColourScale;      // voxel coordinates → uVolume's texture coordinates
 uniform sampler3D uDensity;     // normalised density alone, tested before the colour is fetched
-uniform usampler3D uOccupancy;  // 1 per brick that holds density
+uniform usampler3D uEmptyDistance;  // per brick: 0 if it holds density, else bricks to the nearest that does
 uniform ivec3 uBrickCount;
-uniform int uBrickSize;
-uniform usampler3D uCoarseOccupancy;  // 1 per group of kCoarseBricks³ bricks with any density
-uniform ivec3 uCoarseCount;
-uniform int uCoarseSize;              // voxels along a coarse brick
+uniform int uBrickShift;  // log2 of a brick's side in voxels (software GL scalarises integer division)
 uniform float uToRelative;      // texture density (a fraction of the densest voxel) → relative to the mesh's mean
 uniform float uStepUnits;       // one step's length in grid sides
 uniform float uAbsorption;      // extinction per unit of column density (tone.opacity × kAbsorptionPerDensity)
 uniform uint uSample;
 uniform ivec2 uPixelOffset;     // this tile's place in the whole image, so jitter ignores tiling
-uniform sampler3D uShadow;      // light transmittance, when lighting is on
-uniform bool uLighting;
+uniform sampler3D uShadow;      // light transmittance (LIGHTING)
 uniform vec3 uShadowScale;      // voxel coordinates to shadow texture coordinates
 uniform float uLightStrength;
 
@@ -68,42 +66,43 @@ vec4 marchRay(vec2 pixelCentre) {
   if (tExit > tEnter) {
     float stepLength = uStepVoxels * uVoxelSize;
     float t = tEnter + stepLength * hash(uvec3(uvec2(ivec2(pixelCentre) + uPixelOffset), uSample));
-    vec3 toVoxel = vec3(1.0 / uVoxelSize);
+    // The walk runs in voxel coordinates: a step is then one multiply-add to its voxel.
+    vec3 voxelOrigin = (origin - uGridOrigin) / uVoxelSize;
+    vec3 voxelDirection = direction / uVoxelSize;
+    vec3 inverseVoxelDirection = inverseDirection * uVoxelSize;
     vec3 toTexture = 1.0 / vec3(uGridSize);
     vec3 exitSide = step(vec3(0.0), direction);
+    float brickVoxels = float(1 << uBrickShift);
     while (t < tExit) {
-      vec3 position = origin + t * direction;
-      vec3 voxel = (position - uGridOrigin) * toVoxel;
-      ivec3 voxelIndex = ivec3(floor(voxel));
-      // Two levels of empty space: a coarse brick, then a brick; either leaps to the first step
-      // past its far side, staying on the jittered step lattice.
-      ivec3 coarse = clamp(voxelIndex / uCoarseSize, ivec3(0), uCoarseCount - 1);
-      int leapVoxels = 0;
-      ivec3 leapCell;
-      if (texelFetch(uCoarseOccupancy, coarse, 0).r == 0u) {
-        leapVoxels = uCoarseSize;
-        leapCell = coarse;
-      } else {
-        ivec3 brick = clamp(voxelIndex / uBrickSize, ivec3(0), uBrickCount - 1);
-        if (texelFetch(uOccupancy, brick, 0).r == 0u) {
-          leapVoxels = uBrickSize;
-          leapCell = brick;
-        }
-      }
-      if (leapVoxels > 0) {
-        float cellLength = float(leapVoxels) * uVoxelSize;
-        vec3 cellMin = uGridOrigin + vec3(leapCell) * cellLength;
-        vec3 tCell = (cellMin + exitSide * cellLength - origin) * inverseDirection;
-        float tLeave = min(tCell.x, min(tCell.y, tCell.z));
+      vec3 voxel = voxelOrigin + t * voxelDirection;
+      ivec3 brick = min(ivec3(max(voxel, 0.0)) >> uBrickShift, uBrickCount - 1);
+      uint emptyDistance = texelFetch(uEmptyDistance, brick, 0).r;
+      if (emptyDistance > 0u) {
+        // The cube of bricks within emptyDistance − 1 of this one holds no density: leap to the
+        // first step past its far side, staying on the jittered step lattice.
+        float reach = float(emptyDistance) - 1.0;
+        vec3 farSide = (vec3(brick) - reach + exitSide * (2.0 * reach + 1.0)) * brickVoxels;
+        vec3 tSide = (farSide - voxelOrigin) * inverseVoxelDirection;
+        float tLeave = min(tSide.x, min(tSide.y, tSide.z));
         t += max(ceil((tLeave - t) / stepLength), 1.0) * stepLength;
         continue;
       }
       // Explicit LOD: there are no mipmaps, and implicit derivatives are undefined in this loop.
+#ifdef DENSITY_IN_COLOUR
+      vec4 texel = textureLod(uVolume, voxel * uColourScale, 0.0);
+      float density = texel.a;
+      if (density > 0.0) {
+#else
       float density = textureLod(uDensity, voxel * toTexture, 0.0).r;
       if (density > 0.0) {
         vec4 texel = textureLod(uVolume, voxel * uColourScale, 0.0);
+#endif
         float dD = density * uToRelative * uStepUnits;
-        float lit = uLighting ? mix(1.0, textureLod(uShadow, voxel * uShadowScale, 0.0).r, uLightStrength) : 1.0;
+#ifdef LIGHTING
+        float lit = mix(1.0, textureLod(uShadow, voxel * uShadowScale, 0.0).r, uLightStrength);
+#else
+        float lit = 1.0;
+#endif
         // The step's exact integral for constant density: T (1 − e^(−a dD)) / a, or T dD without absorption.
         float passed = exp(-uAbsorption * dD);
         float emitted = (uAbsorption > 0.0 ? transmittance * (1.0 - passed) / uAbsorption : transmittance * dD) * lit;
