@@ -219,11 +219,12 @@ FlameFinisher::~FlameFinisher() {
   glDeleteTextures(1, &emptyOverlay_);
 }
 
-const ShaderProgram& FlameFinisher::toneProgram(bool compute, core::MeshDisplay overlay) {
+const ShaderProgram& FlameFinisher::toneProgram(bool compute, core::MeshDisplay overlay, bool linearOutput) {
   const int mode = overlay == core::MeshDisplay::Ghost ? 1 : overlay == core::MeshDisplay::Silhouette ? 2 : 0;
-  ShaderProgram& program = tonePrograms_[2 * mode + (compute ? 1 : 0)];
+  ShaderProgram& program = tonePrograms_[4 * mode + (linearOutput ? 2 : 0) + (compute ? 1 : 0)];
   if (program.id()) return program;
-  const std::string defines = mode == 1 ? "#define OVERLAY_GHOST\n" : mode == 2 ? "#define OVERLAY_SILHOUETTE\n" : "";
+  std::string defines = mode == 1 ? "#define OVERLAY_GHOST\n" : mode == 2 ? "#define OVERLAY_SILHOUETTE\n" : "";
+  if (linearOutput) defines += "#define LINEAR_OUTPUT\n";
   const ShaderSource source = withStage("finish_tone.glsl", "tonePixel", compute, defines);
   program = compute ? ShaderProgram(source) : ShaderProgram(embeddedShader("fullscreen.vert.glsl"), source);
   return program;
@@ -416,7 +417,7 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
     }
     const bool withOverlay = source.overlay != 0 && overlay.mode != core::MeshDisplay::Off;
     const core::MeshDisplay overlayMode = withOverlay ? overlay.mode : core::MeshDisplay::Off;
-    const ShaderProgram& p = toneProgram(compute, overlayMode);
+    const ShaderProgram& p = toneProgram(compute, overlayMode, settings.linearOutput);
     glUseProgram(p.id());
     bindTexture(p, "uLog", 1, log_);
     glUniform2i(p.uniform("uLogOrigin"), source.origin.x, source.origin.y);
@@ -435,7 +436,6 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
     glUniform1f(p.uniform("uContrast"), static_cast<float>(tone.contrast));
     const glm::vec3 background = displayEncode(glm::vec3(tone.background), tone.gamma);
     glUniform3f(p.uniform("uBackground"), background.r, background.g, background.b);
-    glUniform1i(p.uniform("uLinearOutput"), settings.linearOutput ? 1 : 0);
     bindTexture(p, "uOverlay", 2, withOverlay ? source.overlay : emptyOverlay_);
     glUniform2i(p.uniform("uOverlayOrigin"), source.overlayOrigin.x, source.overlayOrigin.y);
     glUniform1f(p.uniform("uOverlayStrength"), static_cast<float>(overlay.strength));

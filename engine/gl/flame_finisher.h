@@ -96,10 +96,11 @@ class FlameFinisher {
   ShaderProgram scatterProgram_;
   ShaderProgram foldProgram_;
   ShaderProgram foldComputeProgram_;
-  // The tone per stage and overlay mode, built when first used: a software rasteriser runs the
-  // code of a branch on a uniform for every pixel, so the overlays it does not draw are left out.
-  const ShaderProgram& toneProgram(bool compute, core::MeshDisplay overlay);
-  ShaderProgram tonePrograms_[6];
+  // The tone per stage, overlay mode and output (display or linear), built when first used: a
+  // software rasteriser runs the code of a branch on a uniform for every pixel, so what a finish
+  // does not do is left out.
+  const ShaderProgram& toneProgram(bool compute, core::MeshDisplay overlay, bool linearOutput);
+  ShaderProgram tonePrograms_[12];
   ShaderProgram compactProgram_;   // compute: the sprite list and the indirect draw's count
   ShaderProgram packPrograms_[3];  // compute: the scatter's drawn sprites moved to the front (count, offsets, write)
   ShaderProgram gatherProgram_;    // compute: density estimation gathered

@@ -22,7 +22,7 @@ uniform float uHighlightPower;
 uniform float uExposure;  // linear factor
 uniform float uContrast;
 uniform vec3 uBackground;  // display-encoded
-uniform bool uLinearOutput;
+// LINEAR_OUTPUT: linear light (for EXR), else display-encoded and clamped.
 
 // The overlay is compiled in by OVERLAY_GHOST or OVERLAY_SILHOUETTE (FlameFinisher::toneProgram).
 uniform sampler2D uOverlay;
@@ -125,6 +125,10 @@ vec4 tonePixel(ivec2 local) {
   }
 #endif
   color = (color - 0.5) * uContrast + 0.5;
-  color = uLinearOutput ? pow(max(color, vec3(0.0)), vec3(uGamma)) : clamp(color, 0.0, 1.0);
+#ifdef LINEAR_OUTPUT
+  color = pow(max(color, vec3(0.0)), vec3(uGamma));
+#else
+  color = clamp(color, 0.0, 1.0);
+#endif
   return vec4(color, min(alpha, 1.0));
 }
