@@ -499,16 +499,25 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
   const bool withMesh = meshIndexCount_ > 0 && settings.render.meshDisplay != core::MeshDisplay::Off;
   const std::string key = finishKey(settings, linearOutput, withMesh);
   const glm::ivec2 size(target.width_, target.height_);
-  if (!target.finished_ || target.finishedSize_ != size) {
+  // A picture for the screen is display-encoded and clamped, so bytes hold all of it: where the
+  // tone is drawn as fragments (a software rasteriser) it writes and the blit reads a quarter of
+  // the float image's bytes. Linear light (EXR) stays float, and so does the compute tone's image.
+  const bool computeTone = finisher_.computePasses();
+  const GLenum format = linearOutput || computeTone ? GL_RGBA32F : GL_RGBA8;
+  if (!target.finished_ || target.finishedSize_ != size || target.finishedFormat_ != format) {
     if (!target.finished_) {
       target.finished_ = makeTexture(GL_TEXTURE_2D, GL_LINEAR);
       glGenFramebuffers(1, &target.finishedFramebuffer_);
     }
     glBindTexture(GL_TEXTURE_2D, target.finished_);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+    if (format == GL_RGBA8)
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    else
+      glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
     glBindFramebuffer(GL_FRAMEBUFFER, target.finishedFramebuffer_);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.finished_, 0);
     target.finishedSize_ = size;
+    target.finishedFormat_ = format;
     target.finishedRevision_ = ~std::uint64_t{0};
   }
   if (target.finishedRevision_ != target.revision_ || target.finishedKey_ != key) {
