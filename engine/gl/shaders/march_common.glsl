@@ -65,6 +65,10 @@ vec4 marchRay(vec2 pixelCentre) {
   float transmittance = 1.0;
   if (tExit > tEnter) {
     float stepLength = uStepVoxels * uVoxelSize;
+    // Divisions hoisted out of the loop (a software rasteriser divides each lane slowly).
+    float inverseStep = 1.0 / stepLength;
+    float densityToStep = uToRelative * uStepUnits;
+    float inverseAbsorption = uAbsorption > 0.0 ? 1.0 / uAbsorption : 0.0;
     float t = tEnter + stepLength * hash(uvec3(uvec2(ivec2(pixelCentre) + uPixelOffset), uSample));
     // The walk runs in voxel coordinates: a step is then one multiply-add to its voxel.
     vec3 voxelOrigin = (origin - uGridOrigin) / uVoxelSize;
@@ -84,7 +88,7 @@ vec4 marchRay(vec2 pixelCentre) {
         vec3 farSide = (vec3(brick) - reach + exitSide * (2.0 * reach + 1.0)) * brickVoxels;
         vec3 tSide = (farSide - voxelOrigin) * inverseVoxelDirection;
         float tLeave = min(tSide.x, min(tSide.y, tSide.z));
-        t += max(ceil((tLeave - t) / stepLength), 1.0) * stepLength;
+        t += max(ceil((tLeave - t) * inverseStep), 1.0) * stepLength;
         continue;
       }
       // Explicit LOD: there are no mipmaps, and implicit derivatives are undefined in this loop.
@@ -97,7 +101,7 @@ vec4 marchRay(vec2 pixelCentre) {
       if (density > 0.0) {
         vec4 texel = textureLod(uVolume, voxel * uColourScale, 0.0);
 #endif
-        float dD = density * uToRelative * uStepUnits;
+        float dD = density * densityToStep;
 #ifdef LIGHTING
         float lit = mix(1.0, textureLod(uShadow, voxel * uShadowScale, 0.0).r, uLightStrength);
 #else
@@ -105,9 +109,9 @@ vec4 marchRay(vec2 pixelCentre) {
 #endif
         // The step's exact integral for constant density: T (1 − e^(−a dD)) / a, or T dD without absorption.
         float passed = exp(-uAbsorption * dD);
-        float emitted = (uAbsorption > 0.0 ? transmittance * (1.0 - passed) / uAbsorption : transmittance * dD) * lit;
+        float emitted = (uAbsorption > 0.0 ? transmittance * (1.0 - passed) * inverseAbsorption : transmittance * dD) * lit;
         columnDensity += emitted;
-        radiance += emitted * (texel.rgb / max(texel.a, 1e-8));
+        radiance += (emitted / max(texel.a, 1e-8)) * texel.rgb;
         transmittance *= passed;
         if (transmittance < 0.002) break;
       }
