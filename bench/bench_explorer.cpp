@@ -85,10 +85,17 @@ class RunnableThreadSampler {
     return ids;
   }
   int max() const { return max_.load(); }
+  // The most runnable at once in two readings a millisecond apart (sample()).
+  int maxSustained() const { return maxSustained_.load(); }
   // The most runnable at once since the last call, and which they were: the phase just ended.
-  std::pair<int, std::string> endPhase() {
+  struct Phase {
+    int most = 0, mostSustained = 0;
+    std::string which;
+  };
+  Phase endPhase() {
     std::lock_guard lock(mutex_);
-    return {std::exchange(phaseMax_, 0), std::exchange(phaseAtMax_, std::string())};
+    return {std::exchange(phaseMax_, 0), std::exchange(phaseMaxSustained_, 0),
+            std::exchange(phaseAtMax_, std::string())};
   }
   // Runnable threads of the GL driver (Mesa's llvmpipe-N rasterisers and its queues) and other
   // libraries, at most at once: software GL standing in for a GPU, counted apart from the
@@ -110,9 +117,9 @@ class RunnableThreadSampler {
   }
 
  private:
-  void sample(const std::string& self) {
-    int runnable = 0, driver = 0;
-    std::map<std::string, int> names;  // the process's own runnable threads by name
+  // The process's own threads (not the driver's) that are runnable now, by id, with their names.
+  std::map<std::string, std::string> runnableNow(const std::string& self, int& driver) {
+    std::map<std::string, std::string> runnable;
     std::error_code ec;
     for (const auto& task : std::filesystem::directory_iterator("/proc/self/task", ec)) {
       if (task.path().filename() == self) continue;
@@ -123,12 +130,31 @@ class RunnableThreadSampler {
       const std::size_t open = line.find('('), close = line.rfind(')');
       if (open == std::string::npos || close == std::string::npos || close + 2 >= line.size()) continue;
       if (line[close + 2] != 'R') continue;
-      if (line.compare(open + 1, 9, "llvmpipe-") == 0 || foreign_.count(task.path().filename().string()) != 0) {
+      const std::string id = task.path().filename().string();
+      if (line.compare(open + 1, 9, "llvmpipe-") == 0 || foreign_.count(id) != 0)
         ++driver;
-      } else {
-        ++runnable;
-        ++names[line.substr(open + 1, close - open - 1)];
-      }
+      else
+        runnable[id] = line.substr(open + 1, close - open - 1);
+    }
+    return runnable;
+  }
+  void sample(const std::string& self) {
+    int driver = 0, driverLater = 0;
+    const std::map<std::string, std::string> first = runnableNow(self, driver);
+    // The tasks are read one after another, not at one instant: a core handed from one worker to
+    // another (CoreBudget) can show both as runnable. A thread runnable in two readings a
+    // millisecond apart is one that competes for a core, and those are counted apart.
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    const std::map<std::string, std::string> second = runnableNow(self, driverLater);
+    int sustained = 0;
+    for (const auto& [id, name] : first) sustained += second.count(id) != 0;
+    maxSustained_ = std::max(maxSustained_.load(), sustained);
+    const int runnable = static_cast<int>(first.size());
+    std::map<std::string, int> names;  // the process's own runnable threads by name
+    for (const auto& [id, name] : first) ++names[name];
+    {
+      std::lock_guard lock(mutex_);
+      phaseMaxSustained_ = std::max(phaseMaxSustained_, sustained);
     }
     {
       std::lock_guard lock(mutex_);
@@ -161,12 +187,13 @@ class RunnableThreadSampler {
     }
   }
   const std::set<std::string> foreign_;
-  std::atomic<int> max_{0}, maxDriver_{0};
+  std::atomic<int> max_{0}, maxDriver_{0}, maxSustained_{0};
   std::mutex mutex_;
   std::condition_variable_any wake_;
   bool on_ = false;    // guarded by mutex_
   std::string atMax_;  // guarded by mutex_
-  int phaseMax_ = 0;   // guarded by mutex_, like the names below
+  int phaseMax_ = 0;   // guarded by mutex_, like the two below
+  int phaseMaxSustained_ = 0;
   std::string phaseAtMax_;
   std::jthread thread_;  // last: started after everything it uses
 };
@@ -328,8 +355,10 @@ void benchExplorer(const BenchOptions& options) {
     // Each phase's most runnable threads at once, and which they were.
     nlohmann::json runnableByPhase = nlohmann::json::object();
     const auto endPhase = [&](const char* name) {
-      const auto [most, which] = runnable.endPhase();
-      runnableByPhase[name] = {{"max_runnable_threads", most}, {"runnable_threads_at_max", which}};
+      const auto phase = runnable.endPhase();
+      runnableByPhase[name] = {{"max_runnable_threads", phase.most},
+                               {"max_sustained_runnable_threads", phase.mostSustained},
+                               {"runnable_threads_at_max", phase.which}};
     };
     endPhase("refining_first");
 
@@ -428,6 +457,7 @@ void benchExplorer(const BenchOptions& options) {
                      {"cpu_percent_converged", cpuPercent},
                      {"cores", std::max(1u, std::thread::hardware_concurrency())},
                      {"max_runnable_threads", runnable.max()},
+                     {"max_sustained_runnable_threads", runnable.maxSustained()},
                      {"max_runnable_gl_driver_threads", runnable.maxDriver()},
                      {"runnable_threads_at_max", runnable.atMax()},
                      {"phases", phases}});
