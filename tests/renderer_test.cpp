@@ -1,6 +1,7 @@
 // The ray-marcher and tone mapping against analytic expectations, headless through EGL.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -255,7 +256,8 @@ TEST_F(Renderer, EmptyBricksAreSkippedWithoutChangingTheImage) {
 
 // Knots of density scattered through a grid whose sides are not multiples of a brick, with
 // colours that vary, marched from an oblique eye: rays cross wide empty stretches and graze bricks.
-core::PackedVolume scatteredKnots() {
+// With `corners`, dense voxels at the grid's eight corners too, which reach its outline on screen.
+core::PackedVolume scatteredKnots(bool corners = false) {
   core::VolumeSnapshot snapshot;
   snapshot.geometry.size = {70, 57, 63};
   snapshot.geometry.voxelSize = 1.0;
@@ -278,6 +280,10 @@ core::PackedVolume scatteredKnots() {
       snapshot.rgba[4 * i + 1] = static_cast<std::uint8_t>(next(256));
     }
   }
+  if (corners)
+    for (int corner = 0; corner < 8; ++corner)
+      snapshot.density[g.index((corner & 1) ? g.size.x - 1 : 0, (corner & 2) ? g.size.y - 1 : 0,
+                               (corner & 4) ? g.size.z - 1 : 0)] = 200.0f;
   snapshot.maxDensity = *std::max_element(snapshot.density.begin(), snapshot.density.end());
   snapshot.points = 40 * 30 * 20;
   snapshot.version = 1;
@@ -338,6 +344,60 @@ TEST_F(Renderer, DensityFromColourGivesTheSumsOfDensityFirst) {
   double total = 0.0;
   EXPECT_LE(worstRelativeDifference(fromColour, densityFirst, &total), 1e-5);
   EXPECT_GT(total, 0.0);
+}
+
+// A live frame finishes only around the grid box's outline on the screen and fills the rest with
+// the empty pixel's colour (FinishSource::content): the picture must be the one a still of the
+// same view makes, which finishes every pixel, background, contrast and edges included.
+TEST_F(Renderer, ALiveFrameFinishedAroundTheBoxIsTheStillOfTheView) {
+  const core::PackedVolume knots = scatteredKnots(true);
+  renderer.upload(knots);
+  core::CameraSettings camera;
+  camera.azimuthDeg = 28.0;
+  camera.elevationDeg = 17.0;
+  gl::RenderSettings settings;
+  camera.distance = 4.0;  // the box far from the eye: most of the picture lies outside its outline
+  settings.camera = core::orbitCamera(camera, knots.geometry.box(), 160.0 / 90.0);
+  settings.tone = neutralTone(20.0);
+  settings.tone.background = glm::vec3(0.3f, 0.05f, 0.1f);
+  settings.tone.contrast = 1.3;
+  settings.render.samples = 1;
+  constexpr int kWidth = 160, kHeight = 90;
+  const core::ImageRGBA still = gl::renderToImage(renderer, settings, kWidth, kHeight);
+
+  gl::FrameTarget target;
+  target.resize(kWidth, kHeight);
+  renderer.march(target, settings, 0);
+  GLuint picture = 0, framebuffer = 0;
+  glGenTextures(1, &picture);
+  glBindTexture(GL_TEXTURE_2D, picture);
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, kWidth, kHeight);
+  glGenFramebuffers(1, &framebuffer);
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, picture, 0);
+  renderer.resolve(target, settings, glm::ivec4(0, 0, kWidth, kHeight), false);
+  const std::vector<std::uint8_t> live = gl::readRgba8(framebuffer, {0, 0, kWidth, kHeight});
+  glDeleteFramebuffers(1, &framebuffer);
+  glDeleteTextures(1, &picture);
+
+  int close = 0, lit = 0;
+  for (int y = 0; y < kHeight; ++y)
+    for (int x = 0; x < kWidth; ++x) {
+      const float* expected = still.at(x, y);
+      const std::uint8_t* got = &live[4 * (static_cast<std::size_t>(y) * kWidth + x)];
+      float worst = 0.0f;
+      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(got[c] / 255.0f - expected[c]));
+      close += worst <= 1.5f / 255.0f;
+      lit += std::abs(expected[0] - still.at(0, 0)[0]) > 0.02f;
+    }
+
+  EXPECT_GE(close, kWidth * kHeight - 4);  // all but a few pixels rounded the other way
+  EXPECT_GT(lit, 50) << "the knots show";
+  EXPECT_LT(lit, kWidth * kHeight / 3) << "most of the picture is outside the box";
+  // The corner is the background with the contrast applied, as the tone makes it.
+  const float expectedRed =
+      std::clamp((std::pow(0.3f, 1.0f / static_cast<float>(settings.tone.gamma)) - 0.5f) * 1.3f + 0.5f, 0.0f, 1.0f);
+  EXPECT_NEAR(live[0] / 255.0f, expectedRed, 1.0f / 255.0f);
 }
 
 TEST(PackedVolume, HalfFloatConversionRoundTrips) {

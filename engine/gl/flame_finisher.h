@@ -34,6 +34,11 @@ struct FinishSource {
   double hitsPerUnitDensity = 1.0;
   GLuint overlay = 0;  // RGBA mesh layer of a region of the full output image (0: none)
   glm::ivec2 overlayOrigin{0};
+  // The region's pixels that may hold density (x, y, width, height), when known: the grid box's
+  // outline on the screen. A finish drawn as fragments folds and tones only around it and clears
+  // the rest to the empty pixel's colour, since a software rasteriser shades every pixel it
+  // draws in full. A negative width: unknown, all of them.
+  glm::ivec4 content{0, 0, -1, -1};
 };
 
 // How the mesh layer is drawn over the pattern (core::MeshOverlay without its pixels).
@@ -104,6 +109,7 @@ class FlameFinisher {
   ShaderProgram compactProgram_;   // compute: the sprite list and the indirect draw's count
   ShaderProgram packPrograms_[3];  // compute: the scatter's drawn sprites moved to the front (count, offsets, write)
   ShaderProgram gatherProgram_;    // compute: density estimation gathered
+  ShaderProgram fillProgram_;      // one colour: the empty pixels around a bounded finish
   Estimation estimation_ = Estimation::Scatter;
   bool computePasses_ = false;
   GLuint command_ = 0;  // DrawArraysIndirectCommand

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,34 @@ core::MeshOverlay emptyOverlay(const RenderSettings& settings, int width, int he
   mesh.height = height;
   mesh.rgba.assign(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height), 0);
   return mesh;
+}
+
+// The pixels of a width × height target that the box can cover under viewProjection (x, y,
+// width, height), with two pixels to spare for the sub-pixel jitter and rounding; all of them
+// when a corner lies behind the eye.
+glm::ivec4 screenOutline(const core::Box& box, const glm::dmat4& viewProjection, int width, int height) {
+  glm::dvec2 low(std::numeric_limits<double>::max()), high(std::numeric_limits<double>::lowest());
+  for (int corner = 0; corner < 8; ++corner) {
+    const glm::dvec3 p((corner & 1) ? box.max.x : box.min.x, (corner & 2) ? box.max.y : box.min.y,
+                       (corner & 4) ? box.max.z : box.min.z);
+    const glm::dvec4 clip = viewProjection * glm::dvec4(p, 1.0);
+    if (clip.w <= 1e-9) return glm::ivec4(0, 0, width, height);
+    const glm::dvec2 ndc = glm::dvec2(clip) / clip.w;
+    low = glm::min(low, ndc);
+    high = glm::max(high, ndc);
+  }
+  const glm::dvec2 size(width, height);
+  const glm::ivec2 first = glm::ivec2(glm::clamp(glm::floor((low * 0.5 + 0.5) * size) - 2.0, glm::dvec2(0.0), size));
+  const glm::ivec2 last = glm::ivec2(glm::clamp(glm::ceil((high * 0.5 + 0.5) * size) + 2.0, glm::dvec2(0.0), size));
+  return glm::ivec4(first, glm::max(last - first, glm::ivec2(0)));
+}
+
+glm::ivec4 unite(glm::ivec4 a, glm::ivec4 b) {
+  if (a.z <= 0 || a.w <= 0) return b;
+  if (b.z <= 0 || b.w <= 0) return a;
+  const glm::ivec2 low = glm::min(glm::ivec2(a.x, a.y), glm::ivec2(b.x, b.y));
+  const glm::ivec2 high = glm::max(glm::ivec2(a.x + a.z, a.y + a.w), glm::ivec2(b.x + b.z, b.y + b.w));
+  return glm::ivec4(low, high - low);
 }
 
 GLuint makeTexture(GLenum target, GLint filter) {
@@ -102,6 +131,7 @@ void FrameTarget::copyFrom(const FrameTarget& other) {
                      height_, 1);
   samples = other.samples;
   hitsPerUnitDensity_ = other.hitsPerUnitDensity_;
+  content_ = other.content_;
   ++revision_;
 }
 
@@ -111,6 +141,7 @@ void FrameTarget::resize(int width, int height) {
   width_ = std::max(1, width);
   height_ = std::max(1, height);
   samples = 0;
+  content_ = glm::ivec4(0);  // cleared below
   if (!framebuffer_) {
     glGenFramebuffers(1, &framebuffer_);
     glGenFramebuffers(1, &meshFramebuffer_);
@@ -349,6 +380,7 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
     glDisable(GL_SCISSOR_TEST);
+    if (scissor.z == 0) target.content_ = glm::ivec4(0);
     ++target.revision_;
     return;
   }
@@ -428,6 +460,12 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
   glDisable(GL_SCISSOR_TEST);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   ++target.revision_;
+  // A sample that replaced every pixel (the first, unscissored) leaves only its own outline.
+  const glm::ivec4 outline = screenOutline(geometry.box(), projection * settings.camera.view, width, height);
+  if (samplesBefore == 0 && scissor.z == 0)
+    target.content_ = outline;
+  else
+    target.content_ = unite(target.content_, outline);
   const int fullHeight = tile.w > 0 ? tile.w : height;
   target.hitsPerUnitDensity_ =
       core::hitsPerUnitDensity(settings.camera, geometry, slot.points, slot.insideVoxels, fullHeight);
@@ -527,6 +565,7 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
     source.size = size;
     source.fullSize = size;
     source.hitsPerUnitDensity = target.hitsPerUnitDensity_;
+    source.content = target.content_;
     OverlayStyle style;
     if (withMesh) {
       source.overlay = target.meshLayer_;

@@ -71,6 +71,9 @@ class FrameTarget {
   // The finished image last resolved, and what it was made from, so an unchanged frame is only drawn.
   mutable GLuint finished_ = 0, finishedFramebuffer_ = 0;
   mutable glm::ivec2 finishedSize_{0};
+  // The pixels that may hold density (x, y, width, height): the union of the grid box's outlines
+  // marched into the target since a sample replaced all of it (FinishSource::content).
+  glm::ivec4 content_{0, 0, 0, 0};
   mutable GLenum finishedFormat_ = 0;  // RGBA8 for a display drawn by fragments, else RGBA32F
   mutable std::uint64_t finishedRevision_ = ~std::uint64_t{0};
   mutable std::string finishedKey_;
