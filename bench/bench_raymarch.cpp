@@ -12,6 +12,7 @@
 #include "core/mesh.h"
 #include "core/packed_volume.h"
 #include "core/scene_io.h"
+#include "gl/canvas.h"
 #include "gl/headless_context.h"
 #include "gl/volume_renderer.h"
 
@@ -86,13 +87,7 @@ void benchRaymarch(const BenchOptions& options) {
       // finish on the GPU and the draw). Each half waits for the GPU, so it is timed alone.
       gl::FrameTarget target;
       target.resize(width, height);
-      GLuint canvas = 0, canvasFramebuffer = 0;
-      glGenTextures(1, &canvas);
-      glBindTexture(GL_TEXTURE_2D, canvas);
-      glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, width, height);
-      glGenFramebuffers(1, &canvasFramebuffer);
-      glBindFramebuffer(GL_FRAMEBUFFER, canvasFramebuffer);
-      glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, canvas, 0);
+      const gl::Canvas canvas(width, height);
       double marchMs = 0.0, finishMs = 0.0;
       gl::FlameFinisher::PassTimes passes;
       bool timing = true;
@@ -102,7 +97,7 @@ void benchRaymarch(const BenchOptions& options) {
         renderer.march(target, settings, index);
         glFinish();
         const auto marched = std::chrono::steady_clock::now();
-        glBindFramebuffer(GL_FRAMEBUFFER, canvasFramebuffer);
+        glBindFramebuffer(GL_FRAMEBUFFER, canvas.framebuffer());
         renderer.resolve(target, settings, glm::ivec4(0, 0, width, height), false);
         glFinish();
         const auto finished = std::chrono::steady_clock::now();
@@ -127,8 +122,6 @@ void benchRaymarch(const BenchOptions& options) {
       // At least 5 frames, and on a fast GPU enough of them to fill half a second.
       int frames = 0;
       while (frames < 5 || (marchMs + finishMs < 500.0 && frames < 1000)) frame(++frames);
-      glDeleteFramebuffers(1, &canvasFramebuffer);
-      glDeleteTextures(1, &canvas);
       const double total = (marchMs + finishMs) / frames;
       report(options, {{"bench", "raymarch"},
                        {"grid", c.resolution},

@@ -15,6 +15,7 @@
 #include "core/scene_io.h"
 #include "explorer_session.h"
 #include "export_job.h"
+#include "gl/canvas.h"
 #include "gl/headless_context.h"
 #include "gl/read_back.h"
 #include "live_view.h"
@@ -29,24 +30,9 @@ namespace {
 constexpr int kWidth = 160, kHeight = 96;
 
 // An offscreen colour buffer standing in for the window's, so the picture can be read back.
-class Canvas {
+class Canvas : public gl::Canvas {
  public:
-  Canvas() {
-    glGenTextures(1, &texture_);
-    glBindTexture(GL_TEXTURE_2D, texture_);
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, kWidth, kHeight);
-    glGenFramebuffers(1, &framebuffer_);
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer_);
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture_, 0);
-    complete_ = glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-  }
-  bool complete() const { return complete_; }
-  ~Canvas() {
-    glDeleteFramebuffers(1, &framebuffer_);
-    glDeleteTextures(1, &texture_);
-  }
-  unsigned framebuffer() const { return framebuffer_; }
-  std::vector<std::uint8_t> pixels() const { return gl::readRgba8(framebuffer_, {0, 0, kWidth, kHeight}); }
+  Canvas() : gl::Canvas(kWidth, kHeight) {}
   // The mean of all channels over the picture, 0–255.
   double meanBrightness() const {
     const std::vector<std::uint8_t> rgba = pixels();
@@ -71,16 +57,12 @@ class Canvas {
   }
   // The brightest channel value in the picture.
   int brightest() const {
-    const std::vector<std::uint8_t> pixels = gl::readRgba8(framebuffer_, {0, 0, kWidth, kHeight});
+    const std::vector<std::uint8_t> rgba = pixels();
     int most = 0;
-    for (std::size_t i = 0; i < pixels.size(); i += 4)
-      most = std::max({most, int(pixels[i]), int(pixels[i + 1]), int(pixels[i + 2])});
+    for (std::size_t i = 0; i < rgba.size(); i += 4)
+      most = std::max({most, int(rgba[i]), int(rgba[i + 1]), int(rgba[i + 2])});
     return most;
   }
-
- private:
-  GLuint texture_ = 0, framebuffer_ = 0;
-  bool complete_ = false;
 };
 
 class LiveViewTest : public ::testing::Test {

@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/flame_image.h"
 #include "core/packed_volume.h"
+#include "gl/canvas.h"
 #include "gl/headless_context.h"
 #include "gl/read_back.h"
 #include "gl/shader_program.h"
@@ -368,17 +369,10 @@ TEST_F(Renderer, ALiveFrameFinishedAroundTheBoxIsTheStillOfTheView) {
   gl::FrameTarget target;
   target.resize(kWidth, kHeight);
   renderer.march(target, settings, 0);
-  GLuint picture = 0, framebuffer = 0;
-  glGenTextures(1, &picture);
-  glBindTexture(GL_TEXTURE_2D, picture);
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, kWidth, kHeight);
-  glGenFramebuffers(1, &framebuffer);
-  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, picture, 0);
+  const gl::Canvas canvas(kWidth, kHeight);
+  glBindFramebuffer(GL_FRAMEBUFFER, canvas.framebuffer());
   renderer.resolve(target, settings, glm::ivec4(0, 0, kWidth, kHeight), false);
-  const std::vector<std::uint8_t> live = gl::readRgba8(framebuffer, {0, 0, kWidth, kHeight});
-  glDeleteFramebuffers(1, &framebuffer);
-  glDeleteTextures(1, &picture);
+  const std::vector<std::uint8_t> live = canvas.pixels();
 
   int close = 0, lit = 0;
   for (int y = 0; y < kHeight; ++y)
