@@ -14,6 +14,7 @@
 #include "gl/read_back.h"
 #include "gl/shader_program.h"
 #include "gl/volume_renderer.h"
+#include "test_shapes.h"
 
 using namespace voxflame;
 
@@ -353,45 +354,54 @@ TEST_F(Renderer, DensityFromColourGivesTheSumsOfDensityFirst) {
 TEST_F(Renderer, ALiveFrameFinishedAroundTheBoxIsTheStillOfTheView) {
   const core::PackedVolume knots = scatteredKnots(true);
   renderer.upload(knots);
+  // A mesh inside the grid, as a pattern's mesh always is, for the overlays.
+  const core::Box box = knots.geometry.box();
+  renderer.setMesh(test::uvSphere(glm::vec3(box.center()), 0.45f * static_cast<float>(box.extent().y), 24, 12));
   core::CameraSettings camera;
   camera.azimuthDeg = 28.0;
   camera.elevationDeg = 17.0;
-  gl::RenderSettings settings;
   camera.distance = 4.0;  // the box far from the eye: most of the picture lies outside its outline
-  settings.camera = core::orbitCamera(camera, knots.geometry.box(), 160.0 / 90.0);
+  gl::RenderSettings settings;
+  settings.camera = core::orbitCamera(camera, box, 160.0 / 90.0);
   settings.tone = neutralTone(20.0);
   settings.tone.background = glm::vec3(0.3f, 0.05f, 0.1f);
   settings.tone.contrast = 1.3;
   settings.render.samples = 1;
+  settings.render.meshColor = glm::vec3(0.9f, 0.9f, 0.2f);
   constexpr int kWidth = 160, kHeight = 90;
-  const core::ImageRGBA still = gl::renderToImage(renderer, settings, kWidth, kHeight);
+  for (const core::MeshDisplay display :
+       {core::MeshDisplay::Off, core::MeshDisplay::Ghost, core::MeshDisplay::Silhouette}) {
+    SCOPED_TRACE(static_cast<int>(display));
+    settings.render.meshDisplay = display;
+    const core::ImageRGBA still = gl::renderToImage(renderer, settings, kWidth, kHeight);
 
-  gl::FrameTarget target;
-  target.resize(kWidth, kHeight);
-  renderer.march(target, settings, 0);
-  const gl::Canvas canvas(kWidth, kHeight);
-  glBindFramebuffer(GL_FRAMEBUFFER, canvas.framebuffer());
-  renderer.resolve(target, settings, glm::ivec4(0, 0, kWidth, kHeight), false);
-  const std::vector<std::uint8_t> live = canvas.pixels();
+    gl::FrameTarget target;
+    target.resize(kWidth, kHeight);
+    renderer.march(target, settings, 0);
+    renderer.drawMesh(target, settings);
+    const gl::Canvas canvas(kWidth, kHeight);
+    glBindFramebuffer(GL_FRAMEBUFFER, canvas.framebuffer());
+    renderer.resolve(target, settings, glm::ivec4(0, 0, kWidth, kHeight), false);
+    const std::vector<std::uint8_t> live = canvas.pixels();
 
-  int close = 0, lit = 0;
-  for (int y = 0; y < kHeight; ++y)
-    for (int x = 0; x < kWidth; ++x) {
-      const float* expected = still.at(x, y);
-      const std::uint8_t* got = &live[4 * (static_cast<std::size_t>(y) * kWidth + x)];
-      float worst = 0.0f;
-      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(got[c] / 255.0f - expected[c]));
-      close += worst <= 1.5f / 255.0f;
-      lit += std::abs(expected[0] - still.at(0, 0)[0]) > 0.02f;
-    }
-
-  EXPECT_GE(close, kWidth * kHeight - 4);  // all but a few pixels rounded the other way
-  EXPECT_GT(lit, 50) << "the knots show";
-  EXPECT_LT(lit, kWidth * kHeight / 3) << "most of the picture is outside the box";
-  // The corner is the background with the contrast applied, as the tone makes it.
-  const float expectedRed =
-      std::clamp((std::pow(0.3f, 1.0f / static_cast<float>(settings.tone.gamma)) - 0.5f) * 1.3f + 0.5f, 0.0f, 1.0f);
-  EXPECT_NEAR(live[0] / 255.0f, expectedRed, 1.0f / 255.0f);
+    int close = 0, lit = 0;
+    for (int y = 0; y < kHeight; ++y)
+      for (int x = 0; x < kWidth; ++x) {
+        const float* expected = still.at(x, y);
+        const std::uint8_t* got = &live[4 * (static_cast<std::size_t>(y) * kWidth + x)];
+        float worst = 0.0f;
+        for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(got[c] / 255.0f - expected[c]));
+        close += worst <= 1.5f / 255.0f;
+        lit += std::abs(expected[0] - still.at(0, 0)[0]) > 0.02f;
+      }
+    EXPECT_GE(close, kWidth * kHeight - 4);  // all but a few pixels rounded the other way
+    EXPECT_GT(lit, 50) << "the knots show";
+    EXPECT_LT(lit, kWidth * kHeight / 3) << "most of the picture is outside the box";
+    // The corner is the background with the contrast applied, as the tone makes it.
+    const float expectedRed =
+        std::clamp((std::pow(0.3f, 1.0f / static_cast<float>(settings.tone.gamma)) - 0.5f) * 1.3f + 0.5f, 0.0f, 1.0f);
+    EXPECT_NEAR(live[0] / 255.0f, expectedRed, 1.0f / 255.0f);
+  }
 }
 
 TEST(PackedVolume, HalfFloatConversionRoundTrips) {

@@ -408,8 +408,8 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
   // the density and the filter spreads it again. Beyond that a pixel is the empty pixel.
   const FilterTaps taps = filterTaps(oversample, settings.filterRadius);
   const bool withOverlay = source.overlay != 0 && overlay.mode != core::MeshDisplay::Off;
-  const bool bounded = !computePasses_ && source.content.z >= 0 && oversample == 1 && !withOverlay &&
-                       outputSize == source.size && outputOrigin == source.origin;
+  const bool bounded = !computePasses_ && source.content.z >= 0 && oversample == 1 && outputSize == source.size &&
+                       outputOrigin == source.origin;
   const glm::ivec4 foldRect = grownWithin(source.content, pad + 2 * taps.taps, source.size);
   const glm::ivec4 toneRect = grownWithin(source.content, pad + taps.taps, source.size);
 

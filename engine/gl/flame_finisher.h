@@ -34,8 +34,8 @@ struct FinishSource {
   double hitsPerUnitDensity = 1.0;
   GLuint overlay = 0;  // RGBA mesh layer of a region of the full output image (0: none)
   glm::ivec2 overlayOrigin{0};
-  // The region's pixels that may hold density (x, y, width, height), when known: the grid box's
-  // outline on the screen. A finish drawn as fragments folds and tones only around it and clears
+  // The region's pixels that may hold density or the overlay (x, y, width, height), when known:
+  // the grid box's and the mesh's outlines on the screen. A finish drawn as fragments folds and tones only around it and clears
   // the rest to the empty pixel's colour, since a software rasteriser shades every pixel it
   // draws in full. A negative width: unknown, all of them.
   glm::ivec4 content{0, 0, -1, -1};

@@ -332,6 +332,7 @@ void VolumeRenderer::setMesh(const core::TriangleMesh& mesh) {
                mesh.triangles.data(), GL_STATIC_DRAW);
   glBindVertexArray(0);
   meshIndexCount_ = static_cast<GLsizei>(3 * mesh.triangles.size());
+  meshBox_ = mesh.bounds();
 }
 
 glm::dmat4 VolumeRenderer::tileProjection(const RenderSettings& settings, glm::ivec4 tile, int width, int height,
@@ -568,6 +569,9 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
     source.content = target.content_;
     OverlayStyle style;
     if (withMesh) {
+      // The mesh layer (drawMesh, at the camera's own projection) shows within the mesh's outline.
+      source.content = unite(source.content, screenOutline(meshBox_, settings.camera.projection * settings.camera.view,
+                                                           size.x, size.y));
       source.overlay = target.meshLayer_;
       style = {settings.render.meshDisplay, settings.render.meshColor, settings.render.meshStrength};
     }

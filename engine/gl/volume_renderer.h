@@ -206,6 +206,7 @@ class VolumeRenderer {
 
   GLuint meshArray_ = 0, meshVertices_ = 0, meshIndices_ = 0;
   GLsizei meshIndexCount_ = 0;
+  core::Box meshBox_;  // the mesh's bounds: where its overlay can show
 };
 
 inline constexpr int kDefaultMaxTile = 2048;  // pixels along a tile's side, at most
