@@ -35,9 +35,9 @@ struct FinishSource {
   GLuint overlay = 0;  // RGBA mesh layer of a region of the full output image (0: none)
   glm::ivec2 overlayOrigin{0};
   // The region's pixels that may hold density or the overlay (x, y, width, height), when known:
-  // the grid box's and the mesh's outlines on the screen. A finish drawn as fragments folds and tones only around it and clears
-  // the rest to the empty pixel's colour, since a software rasteriser shades every pixel it
-  // draws in full. A negative width: unknown, all of them.
+  // the grid box's and the mesh's outlines on the screen. A finish drawn as fragments folds and
+  // tones only around them and fills the rest with the empty pixel's colour, since a software
+  // rasteriser shades every pixel it draws in full. A negative width: unknown, all of them.
   glm::ivec4 content{0, 0, -1, -1};
 };
 
