@@ -570,8 +570,8 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
     OverlayStyle style;
     if (withMesh) {
       // The mesh layer (drawMesh, at the camera's own projection) shows within the mesh's outline.
-      source.content = unite(source.content, screenOutline(meshBox_, settings.camera.projection * settings.camera.view,
-                                                           size.x, size.y));
+      source.content = unite(
+          source.content, screenOutline(meshBox_, settings.camera.projection * settings.camera.view, size.x, size.y));
       source.overlay = target.meshLayer_;
       style = {settings.render.meshDisplay, settings.render.meshColor, settings.render.meshStrength};
     }
