@@ -87,6 +87,20 @@ float luminance(const float* p) {
   return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
 }
 
+// Settings that look at `box` from azimuth and elevation (degrees) at `distance` radii, with a
+// neutral tone of `brightness`.
+gl::RenderSettings orbitView(const core::Box& box, double azimuthDeg, double elevationDeg, double aspect,
+                             double brightness = 0.5, double distance = core::CameraSettings{}.distance) {
+  core::CameraSettings camera;
+  camera.azimuthDeg = azimuthDeg;
+  camera.elevationDeg = elevationDeg;
+  camera.distance = distance;
+  gl::RenderSettings settings;
+  settings.camera = core::orbitCamera(camera, box, aspect);
+  settings.tone = neutralTone(brightness);
+  return settings;
+}
+
 class Renderer : public ::testing::Test {
  protected:
   void marchInBandsOfRows();
@@ -95,13 +109,7 @@ class Renderer : public ::testing::Test {
   gl::RenderSettings uploadObliqueCube() {
     const core::PackedVolume cube = uniformCube(200, 120, 255);
     renderer.upload(cube);
-    core::CameraSettings camera;
-    camera.azimuthDeg = 35.0;
-    camera.elevationDeg = 20.0;
-    gl::RenderSettings settings;
-    settings.camera = core::orbitCamera(camera, cube.geometry.box(), 1.5);
-    settings.tone = neutralTone(0.5);
-    return settings;
+    return orbitView(cube.geometry.box(), 35.0, 20.0, 1.5);
   }
 
   gl::HeadlessContext context;
@@ -296,12 +304,7 @@ core::PackedVolume scatteredKnots(bool corners = false) {
 
 core::DensityImage marchScattered(gl::VolumeRenderer& renderer, const core::PackedVolume& volume) {
   renderer.upload(volume);
-  core::CameraSettings camera;
-  camera.azimuthDeg = 28.0;
-  camera.elevationDeg = 17.0;
-  gl::RenderSettings settings;
-  settings.camera = core::orbitCamera(camera, volume.geometry.box(), 1.3);
-  settings.tone = neutralTone(0.5);
+  const gl::RenderSettings settings = orbitView(volume.geometry.box(), 28.0, 17.0, 1.3);
   gl::FrameTarget target;
   target.resize(96, 80);
   for (int s = 0; s < 3; ++s) renderer.march(target, settings, s);
@@ -357,13 +360,8 @@ TEST_F(Renderer, ALiveFrameFinishedAroundTheBoxIsTheStillOfTheView) {
   // A mesh inside the grid, as a pattern's mesh always is, for the overlays.
   const core::Box box = knots.geometry.box();
   renderer.setMesh(test::uvSphere(glm::vec3(box.center()), 0.45f * static_cast<float>(box.extent().y), 24, 12));
-  core::CameraSettings camera;
-  camera.azimuthDeg = 28.0;
-  camera.elevationDeg = 17.0;
-  camera.distance = 4.0;  // the box far from the eye: most of the picture lies outside its outline
-  gl::RenderSettings settings;
-  settings.camera = core::orbitCamera(camera, box, 160.0 / 90.0);
-  settings.tone = neutralTone(20.0);
+  // The box far from the eye (4 radii): most of the picture lies outside its outline.
+  gl::RenderSettings settings = orbitView(box, 28.0, 17.0, 160.0 / 90.0, 20.0, 4.0);
   settings.tone.background = glm::vec3(0.3f, 0.05f, 0.1f);
   settings.tone.contrast = 1.3;
   settings.render.samples = 1;

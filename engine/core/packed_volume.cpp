@@ -48,7 +48,7 @@ void markBricks(PackedVolume& out, int i, int j, int k) {
 // The empty distances from the occupancy: a forward and a backward raster pass over the bricks,
 // each taking one more than the least distance among the 13 neighbours it has already visited.
 // With every neighbour of the 3×3×3 block one step away, the two passes give the exact Chebyshev
-// distance (a chamfer transform), in time linear in the bricks: 128³ bricks at 512³ take ~10 ms.
+// distance (a chamfer transform), in time linear in the bricks (128³ of them at 512³).
 void finishOccupancy(PackedVolume& out) {
   const glm::ivec3 n = out.brickCount;
   const std::size_t count = out.occupancy.size();

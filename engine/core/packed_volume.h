@@ -19,8 +19,8 @@
 
 namespace voxflame::core {
 
-// Small bricks skip more: at 256³ the default preset's rays sample 12 M steps in bricks with density
-// at 4³ against 20 M at 8³, of which 5 M see any.
+// Small bricks skip more: in bench raymarch's 1280×720 frame of the default preset at 256³, rays
+// take 12 M steps in bricks with density at 4³ against 20 M at 8³, of which 5 M see any.
 inline constexpr int kBrickShift = 2;
 inline constexpr int kBrickSize = 1 << kBrickShift;
 // Empty distances stop here (an R8UI texel): a ray in the middle of nothing leaps at most this

@@ -195,11 +195,7 @@ FlameFinisher::FlameFinisher()
       foldProgram_(embeddedShader("fullscreen.vert.glsl"), withStage("finish_fold.glsl", "foldPixel", false)),
       foldComputeProgram_(withStage("finish_fold.glsl", "foldPixel", true)),
       compactProgram_(withCommon(embeddedShader("finish_compact.comp.glsl"))),
-      packPrograms_{ShaderProgram(withDefine(embeddedShader("finish_pack.comp.glsl"), "COUNT")),
-                    ShaderProgram(withDefine(embeddedShader("finish_pack.comp.glsl"), "OFFSETS")),
-                    ShaderProgram(withDefine(embeddedShader("finish_pack.comp.glsl"), "WRITE"))},
-      gatherProgram_(withCommon(embeddedShader("finish_gather.comp.glsl"))),
-      fillProgram_(embeddedShader("fullscreen.vert.glsl"), embeddedShader("fill.frag.glsl")) {
+      gatherProgram_(withCommon(embeddedShader("finish_gather.comp.glsl"))) {
   // Sprites are the faster on a software rasteriser, gathering on a GPU (H200: 0.7 against 27 ms
   // at 1920×1080), where rasterising and blending run on a few multiprocessors; so are the fold
   // and the tone as compute passes there.
@@ -235,6 +231,21 @@ FlameFinisher::~FlameFinisher() {
   glDeleteTextures(1, &scatter_);
   glDeleteTextures(1, &log_);
   glDeleteTextures(1, &emptyOverlay_);
+}
+
+// The pack's passes and the fill serve only the software rasteriser's way (scattered, drawn), so
+// they are built when first used rather than with the finisher.
+const ShaderProgram& FlameFinisher::packProgram(int pass) {
+  static constexpr const char* kPasses[3] = {"COUNT", "OFFSETS", "WRITE"};
+  ShaderProgram& program = packPrograms_[pass];
+  if (!program.id()) program = ShaderProgram(withDefine(embeddedShader("finish_pack.comp.glsl"), kPasses[pass]));
+  return program;
+}
+
+const ShaderProgram& FlameFinisher::fillProgram() {
+  if (!fillProgram_.id())
+    fillProgram_ = ShaderProgram(embeddedShader("fullscreen.vert.glsl"), embeddedShader("fill.frag.glsl"));
+  return fillProgram_;
 }
 
 const ShaderProgram& FlameFinisher::toneProgram(bool compute, core::MeshDisplay overlay, bool linearOutput) {
@@ -373,7 +384,7 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, chunks_);
       glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, packedSprites_);
       for (int pass = 0; pass < 3; ++pass) {
-        const ShaderProgram& pack = packPrograms_[pass];
+        const ShaderProgram& pack = packProgram(pass);
         glUseProgram(pack.id());
         glUniform1ui(pack.uniform("uSlots"), static_cast<GLuint>(pixels));
         glUniform1ui(pack.uniform("uChunks"), chunks);
@@ -406,12 +417,12 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
   // Where only part of the region can hold density, the fragment passes shade only around it:
   // the fold as far as the tone's filter reads, the tone as far as density estimation spreads
   // the density and the filter spreads it again. Beyond that a pixel is the empty pixel.
-  const FilterTaps taps = filterTaps(oversample, settings.filterRadius);
+  const FilterTaps filter = filterTaps(oversample, settings.filterRadius);
   const bool withOverlay = source.overlay != 0 && overlay.mode != core::MeshDisplay::Off;
   const bool bounded = !computePasses_ && source.content.z >= 0 && oversample == 1 && outputSize == source.size &&
                        outputOrigin == source.origin;
-  const glm::ivec4 foldRect = grownWithin(source.content, pad + 2 * taps.taps, source.size);
-  const glm::ivec4 toneRect = grownWithin(source.content, pad + taps.taps, source.size);
+  const glm::ivec4 foldRect = grownWithin(source.content, pad + 2 * filter.taps, source.size);
+  const glm::ivec4 toneRect = grownWithin(source.content, pad + filter.taps, source.size);
 
   // 2. Fold: the log image of the whole source region.
   if (timed) glQueryCounter(timestamps_[1], GL_TIMESTAMP);
@@ -442,7 +453,6 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
   // 3. Filter and tone into the caller's framebuffer.
   if (timed) glQueryCounter(timestamps_[2], GL_TIMESTAMP);
   {
-    const FilterTaps& filter = taps;
     const bool compute = computePasses_ && outputTexture != 0;
     if (!compute) {
       glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -482,8 +492,9 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
       glScissor(toneRect.x, toneRect.y, toneRect.z, toneRect.w);
       glDrawArrays(GL_TRIANGLES, 0, 3);
       // The rest of the viewport: the empty pixel, in up to four strips around the tone's rectangle.
-      glUseProgram(fillProgram_.id());
-      glUniform4f(fillProgram_.uniform("uColour"), empty.r, empty.g, empty.b, empty.a);
+      const ShaderProgram& fill = fillProgram();
+      glUseProgram(fill.id());
+      glUniform4f(fill.uniform("uColour"), empty.r, empty.g, empty.b, empty.a);
       const int right = toneRect.x + toneRect.z, top = toneRect.y + toneRect.w;
       for (const glm::ivec4 strip :
            {glm::ivec4(0, 0, outputSize.x, toneRect.y), glm::ivec4(0, top, outputSize.x, outputSize.y - top),

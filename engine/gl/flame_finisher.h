@@ -106,10 +106,14 @@ class FlameFinisher {
   // does not do is left out.
   const ShaderProgram& toneProgram(bool compute, core::MeshDisplay overlay, bool linearOutput);
   ShaderProgram tonePrograms_[12];
-  ShaderProgram compactProgram_;   // compute: the sprite list and the indirect draw's count
-  ShaderProgram packPrograms_[3];  // compute: the scatter's drawn sprites moved to the front (count, offsets, write)
-  ShaderProgram gatherProgram_;    // compute: density estimation gathered
-  ShaderProgram fillProgram_;      // one colour: the empty pixels around a bounded finish
+  ShaderProgram compactProgram_;  // compute: the sprite list and the indirect draw's count
+  // compute: the scatter's drawn sprites moved to the front (count, offsets, write); built when used
+  const ShaderProgram& packProgram(int pass);
+  ShaderProgram packPrograms_[3];
+  ShaderProgram gatherProgram_;  // compute: density estimation gathered
+  // one colour: the empty pixels around a bounded finish; built when used
+  const ShaderProgram& fillProgram();
+  ShaderProgram fillProgram_;
   Estimation estimation_ = Estimation::Scatter;
   bool computePasses_ = false;
   GLuint command_ = 0;  // DrawArraysIndirectCommand
