@@ -90,12 +90,12 @@ class RunnableThreadSampler {
   // The most runnable at once since the last call, and which they were: the phase just ended.
   struct Phase {
     int most = 0, mostSustained = 0;
-    std::string which;
+    std::string which, whichSustained;
   };
   Phase endPhase() {
     std::lock_guard lock(mutex_);
     return {std::exchange(phaseMax_, 0), std::exchange(phaseMaxSustained_, 0),
-            std::exchange(phaseAtMax_, std::string())};
+            std::exchange(phaseAtMax_, std::string()), std::exchange(phaseAtSustained_, std::string())};
   }
   // Runnable threads of the GL driver (Mesa's llvmpipe-N rasterisers and its queues) and other
   // libraries, at most at once: software GL standing in for a GPU, counted apart from the
@@ -105,6 +105,11 @@ class RunnableThreadSampler {
   std::string atMax() {
     std::lock_guard lock(mutex_);
     return atMax_;
+  }
+  // ... and those runnable all the while when the most were (maxSustained()).
+  std::string atSustainedMax() {
+    std::lock_guard lock(mutex_);
+    return atSustained_;
   }
   // Samples only while on (the phases that refine), and sleeps without a timer while off, so the
   // CPU measured at rest does not include the sampler.
@@ -117,50 +122,78 @@ class RunnableThreadSampler {
   }
 
  private:
+  struct Runnable {
+    std::string name;
+    long voluntarySwitches = -1;  // the times it went to sleep so far
+  };
   // The process's own threads (not the driver's) that are runnable now, by id, with their names.
-  std::map<std::string, std::string> runnableNow(const std::string& self, int& driver) {
-    std::map<std::string, std::string> runnable;
+  std::map<std::string, Runnable> runnableNow(const std::string& self, int& driver) {
+    std::map<std::string, Runnable> runnable;
     std::error_code ec;
     for (const auto& task : std::filesystem::directory_iterator("/proc/self/task", ec)) {
       if (task.path().filename() == self) continue;
-      std::ifstream stat(task.path() / "stat");
-      std::string line;
-      if (!std::getline(stat, line)) continue;
-      // "tid (name) S ...": a name may hold spaces and parentheses; the state follows the last ')'.
-      const std::size_t open = line.find('('), close = line.rfind(')');
-      if (open == std::string::npos || close == std::string::npos || close + 2 >= line.size()) continue;
-      if (line[close + 2] != 'R') continue;
+      // One read gives the name, the state and the count of sleeps together.
+      std::ifstream status(task.path() / "status");
+      std::string line, name;
+      bool isRunnable = false;
+      long voluntary = -1;
+      while (std::getline(status, line)) {
+        if (line.rfind("Name:\t", 0) == 0)
+          name = line.substr(6);
+        else if (line.rfind("State:\t", 0) == 0)
+          isRunnable = line.size() > 7 && line[7] == 'R';
+        else if (line.rfind("voluntary_ctxt_switches:", 0) == 0)
+          voluntary = std::stol(line.substr(24));
+      }
+      if (!isRunnable) continue;
       const std::string id = task.path().filename().string();
-      if (line.compare(open + 1, 9, "llvmpipe-") == 0 || foreign_.count(id) != 0)
+      if (name.rfind("llvmpipe-", 0) == 0 || foreign_.count(id) != 0)
         ++driver;
       else
-        runnable[id] = line.substr(open + 1, close - open - 1);
+        runnable[id] = {name, voluntary};
     }
     return runnable;
   }
   void sample(const std::string& self) {
     int driver = 0, driverLater = 0;
-    const std::map<std::string, std::string> first = runnableNow(self, driver);
-    // The tasks are read one after another, not at one instant: a core handed from one worker to
-    // another (CoreBudget) can show both as runnable. A thread runnable in two readings a
-    // millisecond apart is one that competes for a core, and those are counted apart.
+    const std::map<std::string, Runnable> first = runnableNow(self, driver);
+    // The tasks are read one after another, not at one instant, and this thread can be preempted
+    // between two reads: threads runnable in one reading were not always runnable at once (a core
+    // handed from one worker to another shows both). A thread runnable in two readings a
+    // millisecond apart that did not go to sleep between them (its count of voluntary switches
+    // is the same) was runnable all the while, so all those threads were runnable at once from
+    // the end of the first reading to the start of the second: at least a millisecond.
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    const std::map<std::string, std::string> second = runnableNow(self, driverLater);
+    const std::map<std::string, Runnable> second = runnableNow(self, driverLater);
     int sustained = 0;
-    for (const auto& [id, name] : first) sustained += second.count(id) != 0;
-    maxSustained_ = std::max(maxSustained_.load(), sustained);
+    std::map<std::string, int> names, sustainedNames;  // the process's own runnable threads by name
+    for (const auto& [id, thread] : first) {
+      ++names[thread.name];
+      const auto later = second.find(id);
+      if (later != second.end() && later->second.voluntarySwitches == thread.voluntarySwitches) {
+        ++sustained;
+        ++sustainedNames[thread.name];
+      }
+    }
     const int runnable = static_cast<int>(first.size());
-    std::map<std::string, int> names;  // the process's own runnable threads by name
-    for (const auto& [id, name] : first) ++names[name];
+    const auto describe = [](const std::map<std::string, int>& byName) {
+      std::string text;
+      for (const auto& [name, count] : byName) text += (text.empty() ? "" : " ") + name + "×" + std::to_string(count);
+      return text;
+    };
     {
       std::lock_guard lock(mutex_);
-      phaseMaxSustained_ = std::max(phaseMaxSustained_, sustained);
+      if (sustained > maxSustained_.load()) atSustained_ = describe(sustainedNames);
+      maxSustained_ = std::max(maxSustained_.load(), sustained);
+      if (sustained > phaseMaxSustained_) {
+        phaseMaxSustained_ = sustained;
+        phaseAtSustained_ = describe(sustainedNames);
+      }
     }
     {
       std::lock_guard lock(mutex_);
       if (runnable > max_.load() || runnable > phaseMax_) {
-        std::string text;
-        for (const auto& [name, count] : names) text += (text.empty() ? "" : " ") + name + "×" + std::to_string(count);
+        const std::string text = describe(names);
         if (runnable > max_.load()) atMax_ = text;
         if (runnable > phaseMax_) {
           phaseMax_ = runnable;
@@ -190,11 +223,11 @@ class RunnableThreadSampler {
   std::atomic<int> max_{0}, maxDriver_{0}, maxSustained_{0};
   std::mutex mutex_;
   std::condition_variable_any wake_;
-  bool on_ = false;    // guarded by mutex_
-  std::string atMax_;  // guarded by mutex_
-  int phaseMax_ = 0;   // guarded by mutex_, like the two below
+  bool on_ = false;                  // guarded by mutex_
+  std::string atMax_, atSustained_;  // guarded by mutex_
+  int phaseMax_ = 0;                 // guarded by mutex_, like the three below
   int phaseMaxSustained_ = 0;
-  std::string phaseAtMax_;
+  std::string phaseAtMax_, phaseAtSustained_;
   std::jthread thread_;  // last: started after everything it uses
 };
 
@@ -358,7 +391,8 @@ void benchExplorer(const BenchOptions& options) {
       const auto phase = runnable.endPhase();
       runnableByPhase[name] = {{"max_runnable_threads", phase.most},
                                {"max_sustained_runnable_threads", phase.mostSustained},
-                               {"runnable_threads_at_max", phase.which}};
+                               {"runnable_threads_at_max", phase.which},
+                               {"runnable_threads_at_sustained_max", phase.whichSustained}};
     };
     endPhase("refining_first");
 
@@ -460,6 +494,7 @@ void benchExplorer(const BenchOptions& options) {
                      {"max_sustained_runnable_threads", runnable.maxSustained()},
                      {"max_runnable_gl_driver_threads", runnable.maxDriver()},
                      {"runnable_threads_at_max", runnable.atMax()},
+                     {"runnable_threads_at_sustained_max", runnable.atSustainedMax()},
                      {"phases", phases}});
   }
 }

@@ -3,9 +3,16 @@
 // grid, and a snapshot thread that cycles two packed volumes instead of allocating more.
 #include <gtest/gtest.h>
 
+#include <sched.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
 #include <memory>
 #include <thread>
 #include <vector>
@@ -373,12 +380,13 @@ TEST(SnapshotPublisher, PicksUpABatchPromptlyWithoutATimer) {
   accumulator.setPattern(defaultScene().layers, 1);
   const auto interval = 2s;
   SnapshotPublisher publisher(accumulator, interval);
+  // The publisher looks once, finds a held pattern without points (nothing to pack), and sleeps.
   PackedVolume volume;
   auto deadline = std::chrono::steady_clock::now() + 30s;
-  while (!publisher.takeIfNewer(volume) && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(1ms);
-  ASSERT_EQ(volume.points, 0u) << "the held grid, packed once";
+  while (publisher.wakeUps() == 0 && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(1ms);
+  ASSERT_GT(publisher.wakeUps(), 0u);
   std::this_thread::sleep_for(interval + 100ms);  // a timer of the interval would fire well after the release
+  EXPECT_FALSE(publisher.takeIfNewer(volume)) << "a held grid without points was packed";
 
   const std::uint64_t before = accumulator.version();
   accumulator.setHeld(false);
@@ -419,6 +427,35 @@ TEST(Accumulator, AccumulatorsSharingACoreBudgetBothFinish) {
   ASSERT_TRUE(cores->try_acquire()) << "a batch or a pack kept its core";
   EXPECT_FALSE(cores->try_acquire());
   cores->release();
+}
+
+// The refinement's threads are batch work (SCHED_BATCH): a worker handed a core by another must not
+// preempt the giver before it sleeps, nor a pack the frame's thread. Read from /proc, as the
+// scheduler sees them.
+TEST(Accumulator, WorkersAndPacksRunAsBatchThreads) {
+  const auto mask = fullMask(glm::ivec3(24));
+  Accumulator accumulator(mask, 2);
+  SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(1));
+  accumulator.setTargetPoints(50'000);
+  accumulator.setPattern(defaultScene().layers, 3);
+  ASSERT_TRUE(accumulator.waitUntilDone(60.0));
+  std::map<std::string, std::vector<int>> policies;  // by thread name
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task")) {
+    std::ifstream stat(task.path() / "stat");
+    std::string line;
+    if (!std::getline(stat, line)) continue;
+    // "tid (name) state ...": the policy is the 41st field, the 39th after the name.
+    const std::size_t open = line.find('('), close = line.rfind(')');
+    std::istringstream rest(line.substr(close + 2));
+    std::string field;
+    for (int i = 3; i <= 41 && rest >> field; ++i) {
+    }
+    policies[line.substr(open + 1, close - open - 1)].push_back(std::stoi(field));
+  }
+  ASSERT_EQ(policies["vf-accumulate"].size(), 2u);
+  for (int policy : policies["vf-accumulate"]) EXPECT_EQ(policy, SCHED_BATCH);
+  ASSERT_EQ(policies["vf-publish"].size(), 1u);
+  EXPECT_EQ(policies["vf-publish"][0], SCHED_BATCH);
 }
 
 // The ray-marcher leaps a cube of empty bricks at once on the strength of the empty distances, so

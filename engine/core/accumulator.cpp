@@ -889,7 +889,15 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
   // Probe outside the lock so running batches are not held up by it.
   std::vector<PreparedLayer> prepared;
   std::string problem;
-  for (const PreparedLayer& layer : prepareLayers(layers, *mask_, insideBox_, seed, deepSeeds_.load())) {
+  // The probe is this pattern's first work, and tens of milliseconds of it: it takes a core of the
+  // shared budget like the workers' batches, ahead of them, instead of adding a runnable thread
+  // beside theirs. Let go before the grid lock, so the workers it waits for there can pass on.
+  std::vector<PreparedLayer> probed;
+  {
+    const HeldCore core(cores_.get(), true);
+    probed = prepareLayers(layers, *mask_, insideBox_, seed, deepSeeds_.load());
+  }
+  for (const PreparedLayer& layer : probed) {
     prepared.push_back(layer);
     if (!prepared.back().bounded)
       problem =
@@ -1160,6 +1168,7 @@ void Accumulator::sampleDensity(DensitySample& out) const {
 void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
   // Named for top, perf and the runnable-thread count of `bench explorer`.
   pthread_setname_np(pthread_self(), "vf-accumulate");
+  markBatchThread();
   const int threadCount = threadCount_;
   std::vector<int> owned;
   for (int stream = threadIndex; stream < kStreams; stream += threadCount) owned.push_back(stream);

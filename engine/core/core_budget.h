@@ -8,6 +8,9 @@
 // what the next frame shows) if one waits; otherwise one of the others.
 #pragma once
 
+#include <pthread.h>
+#include <sched.h>
+
 #include <condition_variable>
 #include <deque>
 #include <mutex>
@@ -85,6 +88,34 @@ class CoreBudget {
   int free_;                           // guarded by mutex_, like the lines below
   std::deque<Waiter*> firstWaiting_;   // threads that go first, in the order they came
   std::deque<Waiter*> othersWaiting_;  // all the others
+};
+
+// Marks the calling thread as batch work (SCHED_BATCH, which needs no privilege): the refinement's
+// workers and packs. A batch thread that wakes does not preempt the thread running on its core.
+// Handing a core on wakes the next holder, and as a normal thread it preempted the hand-giver
+// before that one reached its wait: on a busy machine the giver then queued for milliseconds only
+// to go to sleep, one more runnable thread than the budget. Batch threads also leave the frame's
+// thread, woken by the GL driver, to preempt them rather than queue behind them.
+inline void markBatchThread() {
+  sched_param param{};
+  param.sched_priority = 0;
+  pthread_setschedparam(pthread_self(), SCHED_BATCH, &param);  // best effort: a refusal changes nothing
+}
+
+// A core of a budget held for a scope (none without a budget).
+class HeldCore {
+ public:
+  HeldCore(CoreBudget* cores, bool first) : cores_(cores) {
+    if (cores_) cores_->acquire(first);
+  }
+  ~HeldCore() {
+    if (cores_) cores_->release();
+  }
+  HeldCore(const HeldCore&) = delete;
+  HeldCore& operator=(const HeldCore&) = delete;
+
+ private:
+  CoreBudget* cores_;
 };
 
 }  // namespace voxflame::core

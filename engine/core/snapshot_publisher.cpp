@@ -54,6 +54,7 @@ void SnapshotPublisher::setHeld(bool held) {
 void SnapshotPublisher::loop(std::stop_token stop) {
   // Named for top, perf and the runnable-thread count of `bench explorer`.
   pthread_setname_np(pthread_self(), "vf-publish");
+  markBatchThread();
   bool waitingForPoints = false;
   // The accumulator's version when the thread last looked. Version 0 is an accumulator that never
   // had a pattern: nothing to pack until it moves (one that has one is looked at straight away).
@@ -61,22 +62,27 @@ void SnapshotPublisher::loop(std::stop_token stop) {
   std::chrono::steady_clock::time_point lastLook{};
   std::uint64_t packedGeneration = 0;  // the generation of the last pack
   while (!stop.stop_requested()) {
-    // Sleep until there is something to look at: no timer runs while the accumulator rests.
-    if (!accumulator_.progress().wait(
-            stop, [&] { return requested_.load() || taken_.load() || accumulator_.version() != seen; }))
-      break;
-    // Points keep coming (a notification a batch): pace the looks by the interval, or more often
-    // while a new generation is waiting for its minimum. A request cuts the pause short.
+    // Points keep coming (a notification a batch): the looks are paced by the interval, or more
+    // often while a new generation is waiting for its minimum. The pause comes first, on a timer
+    // of this thread's own: a pause after a batch's notification has every batch wake the thread
+    // only to put it to sleep again, and on a busy machine each such wake-up queues for a core (a
+    // runnable thread beside the workers'). A request cuts the pause short.
     if (!requested_.load()) {
       std::chrono::steady_clock::duration pace =
           waitingForPoints ? std::min(interval_, std::chrono::milliseconds(10)) : interval_;
       // Packs of the pattern that refines now take at most a fifth of a core: at 256³ a pack takes
       // tens of milliseconds, and packing every interval took the cores the refinement needs (with
-      // the shadow volume recomputed for each volume). A new pattern's first pack is not held back.
+      // the shadow volume recomputed for each volume). A new pattern's first pack is not held back
+      // (its requestNow ends the pause).
       if (packedGeneration == accumulator_.generation()) pace = std::max(pace, kPackShare * lastPack_);
       std::unique_lock lock(wakeMutex_);
       wake_.wait_until(lock, stop, lastLook + pace, [&] { return requested_.load(); });
     }
+    // Then sleep until there is something to look at: no timer runs while the accumulator rests
+    // (the pause above ends once after the last look, then this waits without one).
+    if (!accumulator_.progress().wait(
+            stop, [&] { return requested_.load() || taken_.load() || accumulator_.version() != seen; }))
+      break;
     requested_ = false;
     taken_ = false;
     ++wakeUps_;
@@ -112,15 +118,7 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     // it, so a pack does not add a runnable thread beside every worker's. Taken before the lock, so
     // a taker never finds the lock held by a pack that waits for a core. It goes when its
     // accumulator's workers would: the proxy's burst shows through its packs.
-    struct HeldCore {
-      CoreBudget* cores;
-      HeldCore(CoreBudget* c, bool first) : cores(c) {
-        if (cores) cores->acquire(first);
-      }
-      ~HeldCore() {
-        if (cores) cores->release();
-      }
-    } core(accumulator_.coreBudget(), accumulator_.coresFirst());
+    const HeldCore core(accumulator_.coreBudget(), accumulator_.coresFirst());
     std::lock_guard lock(mutex_);
     const auto packStart = std::chrono::steady_clock::now();
     readyFresh_ = packVolume(accumulator_, ready_, &held_);
