@@ -233,15 +233,29 @@ void VolumeRenderer::upload(const core::PackedVolume& volume) {
   continueUpload(~std::size_t{0});
 }
 
+bool VolumeRenderer::densityInColour(const core::ColourLayout& colour) const {
+  // Where colour cells are voxels their alpha is the density: a software rasteriser then fetches
+  // one texel a step instead of two (it gains nothing from testing the density first, since it
+  // fetches the colour for all lanes whenever one needs it); a GPU skips the colour where a
+  // step sees no density, which most do.
+  return colour.shift == 0 &&
+         (densityFetch_ == DensityFetch::FromColour || (densityFetch_ == DensityFetch::Automatic && softwareRasteriser_));
+}
+
 void VolumeRenderer::allocate(Slot& slot, glm::ivec3 size, const core::ColourLayout& colour) {
-  if (size == slot.allocated && colour.size == slot.colour.size) return;
+  const bool withDensity = !densityInColour(colour);
+  if (size == slot.allocated && colour.size == slot.colour.size && withDensity == slot.hasDensity) return;
   glBindTexture(GL_TEXTURE_3D, slot.volume);
   glTexImage3D(GL_TEXTURE_3D, 0, GL_RGBA16F, colour.size.x, colour.size.y, colour.size.z, 0, GL_RGBA, GL_HALF_FLOAT,
                nullptr);
+  // Without its density the texture shrinks to a texel, so it holds no memory either.
+  const glm::ivec3 densitySize = withDensity ? size : glm::ivec3(1);
   glBindTexture(GL_TEXTURE_3D, slot.density);
-  glTexImage3D(GL_TEXTURE_3D, 0, GL_R16F, size.x, size.y, size.z, 0, GL_RED, GL_HALF_FLOAT, nullptr);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R16F, densitySize.x, densitySize.y, densitySize.z, 0, GL_RED, GL_HALF_FLOAT,
+               nullptr);
   slot.allocated = size;
   slot.colour = colour;
+  slot.hasDensity = withDensity;
   slot.version = 0;  // the old content is gone until an upload completes
 }
 
@@ -261,9 +275,12 @@ void VolumeRenderer::uploadProxy(const core::PackedVolume& volume) {
 void VolumeRenderer::uploadSlab(Slot& slot, const core::PackedVolume& volume, int firstZ, int endZ) {
   const glm::ivec3 size = volume.geometry.size;
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glBindTexture(GL_TEXTURE_3D, slot.density);
-  glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, firstZ, size.x, size.y, endZ - firstZ, GL_RED, GL_HALF_FLOAT,
-                  volume.density.data() + volume.geometry.index(0, 0, firstZ));
+  if (slot.hasDensity) {
+    glBindTexture(GL_TEXTURE_3D, slot.density);
+    glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, firstZ, size.x, size.y, endZ - firstZ, GL_RED, GL_HALF_FLOAT,
+                    volume.density.data() + volume.geometry.index(0, 0, firstZ));
+    uploadedBytes_ += sizeof(std::uint16_t) * static_cast<std::uint64_t>(size.x) * size.y * (endZ - firstZ);
+  }
   // The colour cells over these slices (a cell over two slabs goes up with both).
   const glm::ivec3 cells = volume.colour.size;
   const int firstCellZ = firstZ >> volume.colour.shift;
@@ -271,13 +288,15 @@ void VolumeRenderer::uploadSlab(Slot& slot, const core::PackedVolume& volume, in
   glBindTexture(GL_TEXTURE_3D, slot.volume);
   glTexSubImage3D(GL_TEXTURE_3D, 0, 0, 0, firstCellZ, cells.x, cells.y, endCellZ - firstCellZ, GL_RGBA, GL_HALF_FLOAT,
                   volume.colours.data() + 4 * static_cast<std::size_t>(cells.x) * cells.y * firstCellZ);
+  uploadedBytes_ += 4 * sizeof(std::uint16_t) * static_cast<std::uint64_t>(cells.x) * cells.y * (endCellZ - firstCellZ);
 }
 
 bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
   if (!pending_) return true;
   const core::PackedVolume& volume = *pending_;
+  const std::size_t densityValues = slots_[kMain].hasDensity ? volume.density.size() : 0;
   const std::size_t slabBytes =
-      (volume.density.size() + volume.colours.size()) * sizeof(std::uint16_t) / std::max(volume.geometry.size.z, 1);
+      (densityValues + volume.colours.size()) * sizeof(std::uint16_t) / std::max(volume.geometry.size.z, 1);
   const int slabs = static_cast<int>(std::clamp<std::size_t>(budgetBytes / std::max<std::size_t>(slabBytes, 1), 1,
                                                              static_cast<std::size_t>(volume.geometry.size.z)));
   const int endZ = std::min(volume.geometry.size.z, pendingZ_ + slabs);
@@ -296,6 +315,7 @@ void VolumeRenderer::finishUpload(Slot& slot, const core::PackedVolume& volume) 
   glBindTexture(GL_TEXTURE_3D, slot.emptyDistance);
   glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, volume.brickCount.x, volume.brickCount.y, volume.brickCount.z, 0,
                GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.emptyDistance.data());
+  uploadedBytes_ += volume.emptyDistance.size();
   slot.geometry = volume.geometry;
   slot.brickCount = volume.brickCount;
   slot.texelDensity = volume.texelDensity;
@@ -395,15 +415,11 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
 
   const Slot& slot = slots_[marched_];
   const bool lighting = settings.render.lighting && hasShadow();
-  // Where colour cells are voxels their alpha is the density: a software rasteriser then fetches
-  // one texel a step instead of two (it gains nothing from testing the density first, since it
-  // fetches the colour for all lanes whenever one needs it); a GPU skips the colour where a
-  // step sees no density, which most do.
-  const bool densityInColour =
-      slot.colour.shift == 0 &&
-      (densityFetch_ == DensityFetch::FromColour || (densityFetch_ == DensityFetch::Automatic && softwareRasteriser_));
+  // A volume uploaded without its density texture (the fetch order changed since) is marched
+  // from its colour texels all the same: their alpha is its density.
+  const bool fromColour = densityInColour(slot.colour) || !slot.hasDensity;
   const ShaderProgram& p = marchProgram((compute ? kComputeStage : 0u) | (lighting ? kLighting : 0u) |
-                                        (densityInColour ? kDensityInColour : 0u));
+                                        (fromColour ? kDensityInColour : 0u));
   glUseProgram(p.id());
   const glm::dmat4 projection = tileProjection(settings, tile, width, height, samplePixelOffset(sampleIndex));
   const glm::mat4 inverseViewProjection(glm::inverse(projection * settings.camera.view));
