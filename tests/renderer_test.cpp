@@ -357,8 +357,7 @@ TEST_F(Renderer, DensityFromColourGivesTheSumsOfDensityFirst) {
 TEST_F(Renderer, AVolumeMarchedFromItsColourGoesUpWithoutItsDensity) {
   const core::PackedVolume knots = scatteredKnots();
   ASSERT_EQ(knots.colour.shift, 0);
-  const std::uint64_t colourAndDistances =
-      knots.colours.size() * sizeof(std::uint16_t) + knots.emptyDistance.size();
+  const std::uint64_t colourAndDistances = knots.colours.size() * sizeof(std::uint16_t) + knots.emptyDistance.size();
   const std::uint64_t density = knots.density.size() * sizeof(std::uint16_t);
 
   renderer.setDensityFetch(gl::VolumeRenderer::DensityFetch::DensityFirst);

@@ -238,8 +238,8 @@ bool VolumeRenderer::densityInColour(const core::ColourLayout& colour) const {
   // one texel a step instead of two (it gains nothing from testing the density first, since it
   // fetches the colour for all lanes whenever one needs it); a GPU skips the colour where a
   // step sees no density, which most do.
-  return colour.shift == 0 &&
-         (densityFetch_ == DensityFetch::FromColour || (densityFetch_ == DensityFetch::Automatic && softwareRasteriser_));
+  return colour.shift == 0 && (densityFetch_ == DensityFetch::FromColour ||
+                               (densityFetch_ == DensityFetch::Automatic && softwareRasteriser_));
 }
 
 void VolumeRenderer::allocate(Slot& slot, glm::ivec3 size, const core::ColourLayout& colour) {
@@ -418,8 +418,8 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
   // A volume uploaded without its density texture (the fetch order changed since) is marched
   // from its colour texels all the same: their alpha is its density.
   const bool fromColour = densityInColour(slot.colour) || !slot.hasDensity;
-  const ShaderProgram& p = marchProgram((compute ? kComputeStage : 0u) | (lighting ? kLighting : 0u) |
-                                        (fromColour ? kDensityInColour : 0u));
+  const ShaderProgram& p =
+      marchProgram((compute ? kComputeStage : 0u) | (lighting ? kLighting : 0u) | (fromColour ? kDensityInColour : 0u));
   glUseProgram(p.id());
   const glm::dmat4 projection = tileProjection(settings, tile, width, height, samplePixelOffset(sampleIndex));
   const glm::mat4 inverseViewProjection(glm::inverse(projection * settings.camera.view));
