@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "core/camera.h"
+#include "core/color.h"
 #include "core/flame_image.h"
 #include "core/scene_io.h"
 #include "gl/headless_context.h"
@@ -81,6 +82,34 @@ TEST(HeadlessRender, DefaultPresetLightsTheBunnyAndLeavesBackgroundAround) {
   EXPECT_GT(litInside, insideCount / 10) << "too few lit pixels over the bunny";
   EXPECT_EQ(litOutside, 0) << "lit pixels far outside the bunny";
   EXPECT_GT(outsideCount, 0);
+}
+
+// The background swatch's colour is an empty pixel's colour whatever the gamma and the contrast,
+// with either still method: the colour is the one chosen, not the one the tone's gamma makes of it.
+TEST(HeadlessRender, AnEmptyPixelIsTheBackgroundAsChosenAtAnyGamma) {
+  core::Scene scene = core::defaultScene();
+  scene.gridResolution = 64;
+  scene.tone.background = core::parseHexColor("#05060a");
+  for (const core::RenderMethod method : {core::RenderMethod::Volume, core::RenderMethod::Points})
+    for (const double gamma : {1.0, 2.2, 4.0})
+      for (const double contrast : {1.0, 1.3}) {
+        SCOPED_TRACE(std::string(core::toString(method)) + " gamma " + std::to_string(gamma) + " contrast " +
+                     std::to_string(contrast));
+        scene.render.method = method;
+        scene.tone.gamma = gamma;
+        scene.tone.contrast = contrast;
+        app::StillOptions options;
+        options.width = 48;
+        options.height = 32;
+        options.points = 100'000;
+        const app::StillResult result = app::renderStill(scene, options);
+        for (const glm::ivec2 corner : {glm::ivec2(0, 0), glm::ivec2(47, 31)}) {
+          const float* p = result.image.at(corner.x, corner.y);
+          EXPECT_NEAR(p[0] * 255.0f, 5.0f, 1.0f);
+          EXPECT_NEAR(p[1] * 255.0f, 6.0f, 1.0f);
+          EXPECT_NEAR(p[2] * 255.0f, 10.0f, 1.0f);
+        }
+      }
 }
 
 TEST(HeadlessRender, LookingStraightDownIsNotBlack) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <functional>
 
+#include "color.h"
 #include "error.h"
 #include "task_scheduler.h"
 
@@ -132,10 +133,6 @@ glm::dvec3 scaledColor(glm::dvec3 c, double ls, double highlightPower) {
   }
   const double blend = maxScaled <= 1.0 ? 1.0 : std::min(1.0, -highlightPower);
   return ((1.0 - blend) + blend * ls) * c;
-}
-
-glm::dvec3 displayEncode(glm::dvec3 linear, double gamma) {
-  return glm::pow(glm::max(linear, glm::dvec3(0.0)), glm::dvec3(1.0 / gamma));
 }
 
 // flam3's count for a supersampled pixel's kernel (rect.c): the points of the block of
@@ -300,8 +297,9 @@ FinishedImage finishImage(const DensityImage& in, const FinishSettings& settings
                           overlay->height == height && !overlay->rgba.empty();
   const double g = 1.0 / tone.gamma;
   const double exposure = std::exp2(tone.exposure);
-  const glm::dvec3 background = displayEncode(glm::dvec3(tone.background), tone.gamma);
-  const glm::dvec3 lineColor = useOverlay ? displayEncode(glm::dvec3(overlay->color), tone.gamma) : glm::dvec3(0.0);
+  // The background and the outline are colours as chosen (sRGB), whatever the gamma.
+  const glm::dvec3 background(linearToSrgb(tone.background));
+  const glm::dvec3 lineColor = useOverlay ? glm::dvec3(linearToSrgb(overlay->color)) : glm::dvec3(0.0);
   auto overlayAlpha = [&](int x, int y) {
     x = std::clamp(x, 0, width - 1);
     y = std::clamp(y, 0, height - 1);
@@ -316,7 +314,11 @@ FinishedImage finishImage(const DensityImage& in, const FinishSettings& settings
         const double alpha = gammaAlpha(density, g, tone.gammaThreshold);
         const double ls = density > 0.0 ? tone.vibrancy * alpha / density : 0.0;
         glm::dvec3 color = scaledColor(c, ls, tone.highlightPower) + (1.0 - tone.vibrancy) * glm::pow(c, glm::dvec3(g));
-        color += (1.0 - std::min(alpha, 1.0)) * background;
+        // The contrast is the pattern's, where it covers the pixel; the background shows through
+        // where it does not, and the overlay goes on top (finish_tone.glsl).
+        const double covered = std::min(alpha, 1.0);
+        color = (color - 0.5 * covered) * tone.contrast + 0.5 * covered;
+        color += (1.0 - covered) * background;
         if (useOverlay) {
           const std::size_t p = static_cast<std::size_t>(y) * width + x;
           if (overlay->mode == MeshDisplay::Ghost) {
@@ -329,7 +331,6 @@ FinishedImage finishImage(const DensityImage& in, const FinishSettings& settings
             color = glm::mix(color, lineColor, std::clamp(edge * overlay->strength * 2.5, 0.0, 1.0));
           }
         }
-        color = (color - 0.5) * tone.contrast + 0.5;
         if (settings.linearOutput)
           color = glm::pow(glm::max(color, glm::dvec3(0.0)), glm::dvec3(tone.gamma));
         else

@@ -224,9 +224,6 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   FinishSettings finish;
   finish.tone = sceneTone;
   finish.tone.brightness *= kFlam3BrightnessFactor;
-  // flam3 adds the background as written; the finisher encodes it with the gamma first.
-  finish.tone.background = glm::pow(glm::clamp(linearToSrgb(sceneTone.background), 0.0f, 1.0f),
-                                    glm::vec3(static_cast<float>(finish.tone.gamma)));
   finish.oversample = oversample;
   finish.filterRadius = flat.filterRadius;
   const FinishedImage finished = finishImage(sum, finish);

@@ -8,6 +8,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "core/color.h"
 #include "core/error.h"
 #include "read_back.h"
 #include "renderer_kind.h"
@@ -158,15 +159,10 @@ void dispatchOver(const ShaderProgram& program, GLuint output, glm::ivec2 size) 
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
 }
 
-glm::vec3 displayEncode(glm::vec3 linear, double gamma) {
-  return glm::pow(glm::max(linear, glm::vec3(0.0f)), glm::vec3(static_cast<float>(1.0 / gamma)));
-}
-
-// What finish_tone.glsl makes of a pixel with no density and no overlay: the background, with
-// the contrast and the output encoding applied; alpha 0.
+// What finish_tone.glsl makes of a pixel with no density and no overlay: the background as
+// chosen (sRGB), with the output encoding applied; alpha 0.
 glm::vec4 emptyPixel(const core::ToneMapSettings& tone, bool linearOutput) {
-  glm::vec3 color = displayEncode(glm::vec3(tone.background), tone.gamma);
-  color = (color - 0.5f) * static_cast<float>(tone.contrast) + 0.5f;
+  glm::vec3 color = core::linearToSrgb(tone.background);
   color = linearOutput ? glm::pow(glm::max(color, glm::vec3(0.0f)), glm::vec3(static_cast<float>(tone.gamma)))
                        : glm::clamp(color, 0.0f, 1.0f);
   return glm::vec4(color, 0.0f);
@@ -476,12 +472,12 @@ void FlameFinisher::finish(const FinishSource& source, const core::FinishSetting
     glUniform1f(p.uniform("uHighlightPower"), static_cast<float>(tone.highlightPower));
     glUniform1f(p.uniform("uExposure"), static_cast<float>(std::exp2(tone.exposure)));
     glUniform1f(p.uniform("uContrast"), static_cast<float>(tone.contrast));
-    const glm::vec3 background = displayEncode(glm::vec3(tone.background), tone.gamma);
+    const glm::vec3 background = core::linearToSrgb(tone.background);
     glUniform3f(p.uniform("uBackground"), background.r, background.g, background.b);
     bindTexture(p, "uOverlay", 2, withOverlay ? source.overlay : emptyOverlay_);
     glUniform2i(p.uniform("uOverlayOrigin"), source.overlayOrigin.x, source.overlayOrigin.y);
     glUniform1f(p.uniform("uOverlayStrength"), static_cast<float>(overlay.strength));
-    const glm::vec3 line = displayEncode(overlay.color, tone.gamma);
+    const glm::vec3 line = core::linearToSrgb(overlay.color);
     glUniform3f(p.uniform("uLineColor"), line.r, line.g, line.b);
     if (compute) {
       dispatchOver(p, outputTexture, outputSize);

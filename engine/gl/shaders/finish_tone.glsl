@@ -112,7 +112,12 @@ vec4 tonePixel(ivec2 local) {
     color = scaledColor(c, ls, uHighlightPower);
     if (uVibrancy != 1.0) color += (1.0 - uVibrancy) * pow(c, vec3(g));
   }
-  color += (1.0 - min(alpha, 1.0)) * uBackground;
+  // The contrast is the pattern's, around mid grey where it covers the pixel; the background
+  // (as chosen, whatever the gamma) shows through where it does not, and the mesh's overlay goes
+  // on top: an empty pixel is exactly the background's colour.
+  float covered = min(alpha, 1.0);
+  color = (color - 0.5 * covered) * uContrast + 0.5 * covered;
+  color += (1.0 - covered) * uBackground;
 #if defined(OVERLAY_GHOST)
   color += uOverlayStrength * overlayAt(pixel).rgb;
 #elif defined(OVERLAY_SILHOUETTE)
@@ -124,7 +129,6 @@ vec4 tonePixel(ivec2 local) {
     color = mix(color, uLineColor, clamp(edge * uOverlayStrength * 2.5, 0.0, 1.0));
   }
 #endif
-  color = (color - 0.5) * uContrast + 0.5;
 #ifdef LINEAR_OUTPUT
   color = pow(max(color, vec3(0.0)), vec3(uGamma));
 #else
