@@ -8,8 +8,12 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <signal.h>
+
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <csignal>
 #include <chrono>
 #include <optional>
 #include <thread>
@@ -115,6 +119,43 @@ static_assert(kKeyLeftShift == GLFW_KEY_LEFT_SHIFT && kKeyLeftControl == GLFW_KE
 struct WindowInput {
   std::vector<std::string> dropped;  // files dropped onto the window: the loop opens the first
   InputQueue queue;                  // keys, buttons, characters, wheel, pointer: see input_queue.h
+  bool closeAsked = false;           // the window's close button: the loop asks first (askToQuit)
+};
+
+// SIGTERM, SIGINT or SIGHUP: an end the user did not choose in the window (a logout, a kill, Ctrl+C
+// in the terminal). The loop sees it within its longest wait and leaves the scene autosaved, as
+// when the window is destroyed from outside. A second signal ends the process at once.
+volatile std::sig_atomic_t quitSignal = 0;
+
+void onQuitSignal(int signal) {
+  if (quitSignal != 0) {
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+    return;
+  }
+  quitSignal = signal;
+}
+
+// Installs onQuitSignal for the explorer's lifetime and puts the previous handlers back after.
+class QuitSignals {
+ public:
+  QuitSignals() {
+    quitSignal = 0;
+    struct sigaction action {};
+    action.sa_handler = onQuitSignal;
+    sigemptyset(&action.sa_mask);
+    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &action, &previous_[i]);
+  }
+  ~QuitSignals() {
+    for (std::size_t i = 0; i < kSignals.size(); ++i) sigaction(kSignals[i], &previous_[i], nullptr);
+  }
+  QuitSignals(const QuitSignals&) = delete;
+  QuitSignals& operator=(const QuitSignals&) = delete;
+  static bool received() { return quitSignal != 0; }
+
+ private:
+  static constexpr std::array<int, 3> kSignals = {SIGTERM, SIGINT, SIGHUP};
+  std::array<struct sigaction, 3> previous_{};
 };
 
 WindowInput& inputOf(GLFWwindow* window) {
@@ -139,6 +180,11 @@ void installInputCallbacks(GLFWwindow* window) {
   glfwSetDropCallback(window, [](GLFWwindow* w, int count, const char** paths) {
     for (int i = 0; i < count; ++i) inputOf(w).dropped.emplace_back(paths[i]);
   });
+  // The close button does not close: the loop asks first when changes are unsaved.
+  glfwSetWindowCloseCallback(window, [](GLFWwindow* w) {
+    inputOf(w).closeAsked = true;
+    glfwSetWindowShouldClose(w, GLFW_FALSE);
+  });
 }
 
 // The window's content scale (DPI), unless the user chose one.
@@ -147,12 +193,6 @@ float uiScaleFor(GLFWwindow* window, float requested) {
   float x = 1.0f, y = 1.0f;
   glfwGetWindowContentScale(window, &x, &y);
   return std::clamp(std::max(x, y), 1.0f, 4.0f);
-}
-
-void openInto(ExplorerState& state, const std::filesystem::path& path, GLFWwindow* window) {
-  if (!openFile(state, path)) return;
-  const std::string title = "voxflame — " + state.scene.name;
-  glfwSetWindowTitle(window, title.c_str());
 }
 
 // What, besides input, calls for a new frame while the explorer rests: work on other threads that
@@ -197,7 +237,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SCALE_TO_MONITOR, GLFW_TRUE);
-  const std::string title = "voxflame — " + initialScene.name;
+  std::string title = "voxflame — " + initialScene.name;
   // Settings never stop the explorer: a bad file gives defaults and a message in the window.
   SettingsLoad settingsLoad = loadSettings();
   // Scripted runs (screenshots) get a fixed size, so their pictures compare across machines.
@@ -235,6 +275,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   glfwSetWindowUserPointer(window, &input);
   installInputCallbacks(window);
   std::vector<std::string>& dropped = input.dropped;
+  const QuitSignals quitSignals;
   {
     ExplorerSession session;
     PresetLibrary presets(findShippedPresetFolder(), state.settings.presetFolder());
@@ -266,14 +307,19 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       else
         glfwPollEvents();
       const bool iconified = glfwGetWindowAttrib(window, GLFW_ICONIFIED) != 0;
-      if (x11.windowGone()) break;
+      if (x11.windowGone() || QuitSignals::received()) break;
+      // The close button quits at once with nothing unsaved, else asks (drawn on this frame).
+      const bool closeAsked = std::exchange(input.closeAsked, false);
+      if (closeAsked && !hasUnsavedChanges(state)) break;
+      if (closeAsked) state.quitPrompt = true;
       if (iconified) {
         glfwWaitEventsTimeout(0.5);
         continue;
       }
       // (An export's progress is polled by the frames themselves: they go on, throttled.)
       const bool restingWait = wait > 0.0 && state.exportStatus.state != ExportState::Running;
-      if (restingWait && input.queue.pending() == 0 && dropped.empty() && !glfwWindowShouldClose(window)) {
+      if (restingWait && !closeAsked && input.queue.pending() == 0 && dropped.empty() &&
+          !glfwWindowShouldClose(window)) {
         const RestSignature now = restSignature(session, state, presets, window);
         if (x11.windowGone()) break;
         if (drawnAtRest == now) continue;  // nothing new to show
@@ -292,7 +338,13 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       ImGui::Render();
 
       if (state.requests.quit) glfwSetWindowShouldClose(window, GLFW_TRUE);
-      if (state.requests.open) openInto(state, *state.requests.open, window);
+      // The title follows the document: its name (after an open, a save-as, an undo) and whether
+      // it has unsaved changes.
+      if (std::string now = windowTitle(state); now != title) {
+        title = std::move(now);
+        glfwSetWindowTitle(window, title.c_str());
+      }
+      if (state.requests.open) openFile(state, *state.requests.open);
       if (autosave) autosave->update(state.scene);
       // Thumbnails arrive decoded from the library's thread; only their upload happens here.
       if (presets.version() != thumbnailsVersion) {
@@ -303,7 +355,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
               state.thumbnailTextures[entry.path] = uploadThumbnail(*entry.thumbnail);
       }
       if (!dropped.empty()) {
-        openInto(state, dropped.front(), window);
+        openFile(state, dropped.front());
         dropped.clear();
       }
 
@@ -311,6 +363,8 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       glfwGetFramebufferSize(window, &width, &height);
       if (x11.windowGone()) break;
       view.frame(state, width, height);
+      // Save, chosen in the quit prompt, has been served by the frame: quit once it worked.
+      if (state.quitAfterSave && !hasUnsavedChanges(state)) glfwSetWindowShouldClose(window, GLFW_TRUE);
       // Input gets a few frames of its own: ImGui settles hover and layout a frame late.
       const ImGuiIO& io = ImGui::GetIO();
       const bool userActive = input.queue.pending() > 0 || io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f ||
@@ -338,7 +392,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       if (frame > 2) metrics.worstFrameMs = std::max(metrics.worstFrameMs, metrics.frameMs);
       lastFrame = now;
     }
-    if (autosave && x11.windowGone()) {
+    if (autosave && (x11.windowGone() || QuitSignals::received())) {
       // Not the user's choice: the scene as it is now stays recoverable at the next start.
       if (const std::string error = autosave->saveNow(state.scene); !error.empty())
         std::cerr << "voxflame: " << error << "\n";

@@ -31,7 +31,7 @@ namespace voxflame::app {
 namespace {
 
 // The window backend fills io.KeysDown by GLFW key code; letters are their ASCII capitals.
-constexpr int kKeyRight = 262, kKeyLeft = 263, kKeyF3 = 292;
+constexpr int kKeyEscape = 256, kKeyRight = 262, kKeyLeft = 263, kKeyF3 = 292;
 constexpr int kKeyLeftAlt = 342, kKeyRightAlt = 346;
 
 const ImVec4 kErrorColor(1.0f, 0.45f, 0.35f, 1.0f);
@@ -459,7 +459,7 @@ void handleCamera(ExplorerState& state) {
 
 void handleShortcuts(ExplorerState& state) {
   const ImGuiIO& io = ImGui::GetIO();
-  if (io.KeyCtrl && ImGui::IsKeyPressed('Q', false)) state.requests.quit = true;
+  if (io.KeyCtrl && ImGui::IsKeyPressed('Q', false)) askToQuit(state);
   if (io.WantTextInput) return;
   if (ImGui::IsKeyPressed(kKeyF3, false)) startSearch(state, 0.1, true);
   const bool alt = io.KeyAlt || keyDown(kKeyLeftAlt) || keyDown(kKeyRightAlt);
@@ -1453,6 +1453,44 @@ void recoveryWindow(ExplorerState& state, float scale) {
   ImGui::End();
 }
 
+// Quitting with unsaved changes: save them (as the user's preset of the document's name), throw
+// them away, or stay. S, D and Escape answer from the keyboard.
+void quitPromptWindow(ExplorerState& state, float scale) {
+  if (!state.quitPrompt) return;
+  constexpr const char* kTitle = "Unsaved changes";
+  if (!ImGui::IsPopupOpen(kTitle)) ImGui::OpenPopup(kTitle);
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.4f * io.DisplaySize.y), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(420 * scale, 0));
+  if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings)) return;
+  ImGui::TextWrapped("\"%s\" has changes that are not saved. Save them before quitting?", state.scene.name.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+  ImGui::TextWrapped(
+      "Save keeps them as your preset \"%s\", replacing one of that name. S saves, D discards, "
+      "Escape cancels.",
+      state.scene.name.c_str());
+  ImGui::PopStyleColor();
+  const bool typing = io.WantTextInput;
+  const bool save = button(state, "quit/", "Save") || (!typing && ImGui::IsKeyPressed('S', false));
+  ImGui::SameLine();
+  const bool discard = button(state, "quit/", "Discard") || (!typing && ImGui::IsKeyPressed('D', false));
+  ImGui::SameLine();
+  const bool cancel = button(state, "quit/", "Cancel") || ImGui::IsKeyPressed(kKeyEscape, false);
+  if (save) {
+    state.requests.saveAs = state.scene.name;
+    state.requests.saveReplacing = true;
+    state.quitAfterSave = true;
+  } else if (discard) {
+    state.requests.quit = true;
+  }
+  if (save || discard || cancel) {
+    state.quitPrompt = false;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
 void viewWindow(ExplorerState& state, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
   const float width = 320 * scale;
@@ -1711,8 +1749,24 @@ void timelineWindow(ExplorerState& state, float scale) {
 
 }  // namespace
 
+bool hasUnsavedChanges(const ExplorerState& state) {
+  return !(state.scene == state.savedScene);
+}
+
+void askToQuit(ExplorerState& state) {
+  if (hasUnsavedChanges(state))
+    state.quitPrompt = true;
+  else
+    state.requests.quit = true;
+}
+
+std::string windowTitle(const ExplorerState& state) {
+  return "voxflame — " + state.scene.name + (hasUnsavedChanges(state) ? " (unsaved)" : "");
+}
+
 void resetExplorerState(ExplorerState& state, const core::Scene& scene) {
   state.scene = scene;
+  state.savedScene = scene;
   state.keyBase = scene;
   state.initialCamera = scene.camera;
   state.history.emplace(scene);
@@ -1773,6 +1827,7 @@ void explorerUiFrame(ExplorerState& state) {
   viewWindow(state, scale);
   timelineWindow(state, scale);
   recoveryWindow(state, scale);
+  quitPromptWindow(state, scale);
   statusBar(state, scale);
   noticeWindow(state, scale);
   // Read after the panels, which make a widget active on the frame it is pressed: an edit on that

@@ -41,6 +41,7 @@ struct UiProbe {
 struct UiRequests {
   std::optional<std::filesystem::path> open;  // a preset, a voxflame PNG or a mesh
   std::optional<std::string> saveAs;          // save the scene as a user preset with this name
+  bool saveReplacing = false;                 // ... replacing a user preset of that name (Save)
   std::optional<ExportRequest> exportStill;   // render a still in a child process (the Export panel)
   bool refineFurther = false;                 // refine a resting volume on to twice its points
   bool quit = false;
@@ -132,6 +133,11 @@ struct ExplorerState {
   // Autosaves of sessions that crashed or were killed, offered back at start.
   std::vector<Recoverable> recoverable;
 
+  // The document as last opened or saved: quitting asks first while the scene differs from it.
+  core::Scene savedScene;
+  bool quitPrompt = false;     // the Save / Discard / Cancel prompt is open
+  bool quitAfterSave = false;  // Save was chosen there: quit once the save has worked
+
   // The flat view (issue 25): the first flame layer rendered in 2D as flam3 frames it
   // (core/flat_render.h), shown over the viewport while `flatView` is on. It renders off the main
   // thread whenever the layer, the tone or the framing change; the window loop uploads each new
@@ -157,6 +163,16 @@ void resetExplorerState(ExplorerState& state, const core::Scene& scene);
 
 // One UI frame between ImGui::NewFrame and ImGui::Render: input, panels, background jobs.
 void explorerUiFrame(ExplorerState& state);
+
+// Whether the scene has changes that were not saved (it differs from the last opened or saved).
+bool hasUnsavedChanges(const ExplorerState& state);
+
+// The user asked to quit (Ctrl+Q, the window's close button): quits at once when nothing is
+// unsaved, else opens the Save / Discard / Cancel prompt.
+void askToQuit(ExplorerState& state);
+
+// "voxflame — NAME", with a mark while changes are unsaved.
+std::string windowTitle(const ExplorerState& state);
 
 // Opens a preset, a voxflame PNG (a fresh scene and history) or a mesh (the pattern stays; one
 // undoable edit) and puts it first in the recent files. On failure the scene is untouched and

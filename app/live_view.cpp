@@ -399,11 +399,16 @@ void LiveView::serveRequests(ExplorerState& state, int width, int height, unsign
       try {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
         const std::filesystem::path saved =
-            presets_->saveAs(state.scene, *state.requests.saveAs, readThumbnail(framebuffer, width, height));
+            presets_->saveAs(state.scene, *state.requests.saveAs, readThumbnail(framebuffer, width, height),
+                             state.requests.saveReplacing);
         state.presetMessage = "saved " + saved.string();
         state.settings.addRecent(RecentKind::Preset, saved);
+        // The document is now the saved preset: its name (the window's title) and nothing unsaved.
+        state.scene.name = *state.requests.saveAs;
+        state.savedScene = state.scene;
       } catch (const core::Error& e) {
         state.notice = e.what();
+        state.quitAfterSave = false;  // the changes are not saved: stay
       }
     }
     state.requests.saveAs.reset();

@@ -17,6 +17,8 @@
 
 #include "autosave.h"
 #include "core/image_io.h"
+#include "core/scene.h"
+#include "core/scene_io.h"
 #include "test_support.h"
 
 extern char** environ;
@@ -115,6 +117,9 @@ class BackgroundExplorer {
     }
   }
   bool started() const { return pid_ > 0 || status_; }
+  void signal(int number) const {
+    if (pid_ > 0) kill(pid_, number);
+  }
 
   // Waits up to `limit` for the explorer to end: its exit status (128 + N for signal N), or none
   // while it is still running.
@@ -238,6 +243,87 @@ TEST(Explorer, LostXServerExitsCleanlyWithTheSceneAutosaved) {
   server.stop();
   const std::optional<int> status = explorer.exitStatus();
   ASSERT_TRUE(status) << "the explorer kept running without its X server\n" << explorer.output();
+  EXPECT_EQ(*status, 0) << explorer.output();
+  const auto recoverable = voxflame::app::findRecoverable(folder / "STATE" / "voxflame" / "autosave");
+  ASSERT_EQ(recoverable.size(), 1u) << explorer.output();
+  EXPECT_TRUE(recoverable.front().scene) << recoverable.front().error;
+}
+
+namespace {
+
+// An unsaved change as a user makes one: W held flies the camera forward.
+void flyForward(const XvfbServer& server) {
+  ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync keydown w sleep 0.8 keyup w"), 0);
+}
+
+// The windows whose title says the scene has unsaved changes (xdotool's search status: 0 found).
+bool titleSaysUnsaved(const XvfbServer& server) {
+  return server.xdotool("search --onlyvisible --name 'unsaved'") == 0;
+}
+
+}  // namespace
+
+// Ctrl+Q with unsaved changes asks instead of quitting. Escape stays; D then quits without saving,
+// and nothing is left to recover or saved.
+TEST(Explorer, QuittingWithUnsavedChangesAsksThenCancelOrDiscard) {
+  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
+  XvfbServer server;
+  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
+  TemporaryFolder folder;
+  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "50", "--width", "640", "--height", "480"});
+  ASSERT_TRUE(explorer.started());
+  flyForward(server);
+  ASSERT_TRUE(titleSaysUnsaved(server)) << explorer.output();
+  ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync key ctrl+q"), 0);
+  EXPECT_FALSE(explorer.exitStatus(std::chrono::seconds(3))) << "quit with unsaved changes without asking";
+  ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync key Escape"), 0);
+  EXPECT_FALSE(explorer.exitStatus(std::chrono::seconds(2))) << "Escape (Cancel) quit";
+  EXPECT_TRUE(titleSaysUnsaved(server)) << "Cancel kept the changes";
+  ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync key ctrl+q sleep 1 key d"), 0);
+  const std::optional<int> status = explorer.exitStatus();
+  ASSERT_TRUE(status) << "D (Discard) did not quit\n" << explorer.output();
+  EXPECT_EQ(*status, 0) << explorer.output();
+  EXPECT_TRUE(voxflame::app::findRecoverable(folder / "STATE" / "voxflame" / "autosave").empty());
+  EXPECT_FALSE(std::filesystem::exists(folder / "DATA" / "voxflame" / "presets")) << "Discard saved something";
+}
+
+// S in the prompt saves the scene as the user's preset of its name, then quits.
+TEST(Explorer, QuittingWithUnsavedChangesCanSaveThem) {
+  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
+  XvfbServer server;
+  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
+  TemporaryFolder folder;
+  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "50", "--width", "640", "--height", "480"});
+  ASSERT_TRUE(explorer.started());
+  flyForward(server);
+  ASSERT_TRUE(titleSaysUnsaved(server)) << explorer.output();
+  ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync key ctrl+q sleep 1 key s"), 0);
+  const std::optional<int> status = explorer.exitStatus();
+  ASSERT_TRUE(status) << "S (Save) did not quit\n" << explorer.output();
+  EXPECT_EQ(*status, 0) << explorer.output();
+  EXPECT_TRUE(voxflame::app::findRecoverable(folder / "STATE" / "voxflame" / "autosave").empty());
+  std::vector<std::filesystem::path> saved;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(folder / "DATA" / "voxflame" / "presets", ec))
+    if (entry.path().extension() == ".json") saved.push_back(entry.path());
+  ASSERT_EQ(saved.size(), 1u) << explorer.output();
+  const voxflame::core::Scene scene = voxflame::core::loadScene(saved.front());
+  EXPECT_NE(scene.camera.target, voxflame::core::defaultScene().camera.target) << "the flight was saved";
+}
+
+// A signal (a logout, kill, Ctrl+C in the terminal) is not the user's choice in the window: the
+// explorer ends normally and the scene stays recoverable.
+TEST(Explorer, ASignalEndsTheExplorerWithTheSceneAutosaved) {
+  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
+  XvfbServer server;
+  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
+  TemporaryFolder folder;
+  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "50", "--width", "640", "--height", "480"});
+  ASSERT_TRUE(explorer.started());
+  ASSERT_EQ(server.xdotool(kFindWindow), 0) << explorer.output();
+  explorer.signal(SIGTERM);
+  const std::optional<int> status = explorer.exitStatus();
+  ASSERT_TRUE(status) << "the explorer kept running after SIGTERM\n" << explorer.output();
   EXPECT_EQ(*status, 0) << explorer.output();
   const auto recoverable = voxflame::app::findRecoverable(folder / "STATE" / "voxflame" / "autosave");
   ASSERT_EQ(recoverable.size(), 1u) << explorer.output();

@@ -478,6 +478,80 @@ TEST_F(ExplorerUi, ExportPanelRendersInAChildWithProgressAndShowsThePath) {
   EXPECT_EQ(state.exportStatus.output, output);
 }
 
+// Quitting asks only when changes are unsaved: Save (the window loop saves, then quits), Discard
+// (quits) or Cancel (stays), by button or by S, D and Escape. The title says what is unsaved.
+TEST_F(ExplorerUi, QuittingWithUnsavedChangesAsksAndEachAnswerDoesWhatItSays) {
+  ImGuiIO& io = ImGui::GetIO();
+  // Ctrl+Q held for one frame: whether that frame asks to quit, or opens the prompt.
+  auto ctrlQ = [&] {
+    io.KeyCtrl = true;
+    io.KeysDown['Q'] = true;
+    frame();
+    const bool quit = state.requests.quit;
+    io.KeysDown['Q'] = false;
+    io.KeyCtrl = false;
+    frame();
+    return quit;
+  };
+  EXPECT_FALSE(app::hasUnsavedChanges(state)) << "a scene just opened";
+  EXPECT_EQ(app::windowTitle(state), "voxflame — " + state.scene.name);
+  EXPECT_TRUE(ctrlQ()) << "nothing unsaved: Ctrl+Q quits at once";
+  EXPECT_FALSE(state.quitPrompt);
+
+  state.scene.tone.gamma = 3.0;
+  frame();
+  EXPECT_TRUE(app::hasUnsavedChanges(state));
+  EXPECT_EQ(app::windowTitle(state), "voxflame — " + state.scene.name + " (unsaved)");
+  EXPECT_FALSE(ctrlQ()) << "unsaved changes: Ctrl+Q asks first";
+  EXPECT_TRUE(state.quitPrompt);
+  frame();
+  click("quit/Cancel");
+  EXPECT_FALSE(state.quitPrompt);
+  EXPECT_DOUBLE_EQ(state.scene.tone.gamma, 3.0) << "Cancel keeps the changes";
+
+  ctrlQ();
+  frame();
+  clickForRequest("quit/Discard");
+  EXPECT_TRUE(state.requests.quit) << "Discard quits";
+  EXPECT_FALSE(state.requests.saveAs);
+
+  state.quitPrompt = false;
+  frame();
+  ctrlQ();
+  frame();
+  clickForRequest("quit/Save");
+  ASSERT_TRUE(state.requests.saveAs) << "Save asks the window loop to save";
+  EXPECT_EQ(*state.requests.saveAs, state.scene.name);
+  EXPECT_TRUE(state.requests.saveReplacing) << "the user's preset of the document's name is replaced";
+  EXPECT_TRUE(state.quitAfterSave) << "and to quit once saved";
+  EXPECT_FALSE(state.requests.quit) << "not before";
+
+  // The keyboard answers: Escape stays, D discards.
+  state.quitAfterSave = false;
+  ctrlQ();
+  pressKey(256);  // Escape
+  EXPECT_FALSE(state.quitPrompt);
+  ctrlQ();
+  io.KeysDown['D'] = true;
+  frame();
+  EXPECT_TRUE(state.requests.quit) << "D discards";
+  io.KeysDown['D'] = false;
+  frame();
+  EXPECT_DOUBLE_EQ(state.scene.camera.target.x, core::defaultScene().camera.target.x)
+      << "keys the prompt answers do not fly the camera";
+}
+
+// The window's title is the document's: an undone change of name takes the title back with it.
+TEST_F(ExplorerUi, TheTitleFollowsTheDocumentThroughUndo) {
+  const std::string original = state.scene.name;
+  state.scene.name = "imported flame";
+  frame(3);
+  EXPECT_EQ(app::windowTitle(state), "voxflame — imported flame (unsaved)");
+  pressKey('Z', true);
+  EXPECT_EQ(state.scene.name, original);
+  EXPECT_EQ(app::windowTitle(state), "voxflame — " + original);
+}
+
 TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {
   app::Recoverable recoverable;
   core::Scene lost = core::defaultScene();
