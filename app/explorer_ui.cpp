@@ -34,6 +34,11 @@ namespace {
 constexpr int kKeyEscape = 256, kKeyRight = 262, kKeyLeft = 263, kKeyF3 = 292;
 constexpr int kKeyLeftAlt = 342, kKeyRightAlt = 346;
 
+// The status line's height: the docked panels end above it.
+float statusBarHeight(float scale) {
+  return ImGui::GetFrameHeightWithSpacing() + 6 * scale;
+}
+
 const ImVec4 kErrorColor(1.0f, 0.45f, 0.35f, 1.0f);
 const ImVec4 kDimColor(0.62f, 0.65f, 0.72f, 1.0f);
 
@@ -1121,10 +1126,14 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
 
 void patternWindow(ExplorerState& state, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos(ImVec2(8 * scale, 8 * scale), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(350 * scale, io.DisplaySize.y - 48 * scale), ImGuiCond_FirstUseEver);
+  // Docked at the left, full height above the status line; only its width is the user's.
+  const float height = io.DisplaySize.y - statusBarHeight(scale);
+  ImGui::SetNextWindowPos(ImVec2(0, 0), ImGuiCond_Always);
+  ImGui::SetNextWindowSize(ImVec2(350 * scale, height), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(260 * scale, height), ImVec2(0.4f * io.DisplaySize.x, height));
   // Side panels stay behind the notice and popups even when clicked.
-  ImGui::Begin("Pattern", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::Begin("Pattern", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoMove);
+  state.layout.left = ImGui::IsWindowCollapsed() ? 0.0f : ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
   ImGui::PushItemWidth(-110 * scale);
   std::size_t removeIndex = state.scene.layers.size();
   for (std::size_t li = 0; li < state.scene.layers.size(); ++li) {
@@ -1379,14 +1388,23 @@ void exportSection(ExplorerState& state) {
   int format = static_cast<int>(settings.format);
   if (ImGui::Combo("format", &format, "PNG 8-bit\0PNG 16-bit\0EXR (linear float)\0"))
     settings.format = static_cast<ExportFormat>(format);
-  if (state.exportPath[0] == '\0') {
+  // The file is named after the document, and follows it (a save-as renames it) until typed over.
+  if (state.exportPath[0] == '\0' || state.exportPathMade == state.exportPath) {
     const std::filesystem::path folder =
         state.settings.lastExportFolder.empty() ? std::filesystem::current_path() : state.settings.lastExportFolder;
     const std::string path = (folder / (sanitizePresetName(state.scene.name) + extensionOf(settings.format))).string();
     std::snprintf(state.exportPath, sizeof state.exportPath, "%s", path.c_str());
+    state.exportPathMade = state.exportPath;
   }
   ImGui::InputText("file", state.exportPath, sizeof state.exportPath);
   probe(state, "export/file");
+  if (state.viewRect.z > 0 && state.viewRect.w > 0) {
+    ImGui::SameLine();
+    if (button(state, "export/", "view size")) {
+      settings.width = std::clamp(state.viewRect.z, 16, 65536);
+      settings.height = std::clamp(state.viewRect.w, 16, 65536);
+    }
+  }
   const ExportStatus& status = state.exportStatus;
   if (status.state == ExportState::Running) {
     char overlay[64];
@@ -1399,11 +1417,28 @@ void exportSection(ExplorerState& state) {
   if (button(state, "export/", "Export now")) {  // not "Export": the header above has that id
     ExportRequest request;
     request.scene = state.scene;
+    request.scene.camera = exportCamera(state, settings.width, settings.height);
     request.settings = settings;
     request.output = withExtensionFor(state.exportPath, settings.format);
     request.executable = state.executable;
+    const bool madePath = state.exportPathMade == state.exportPath;
     std::snprintf(state.exportPath, sizeof state.exportPath, "%s", request.output.string().c_str());
-    state.requests.exportStill = std::move(request);
+    if (madePath) state.exportPathMade = state.exportPath;
+    std::error_code error;
+    if (std::filesystem::exists(request.output, error))
+      state.exportToConfirm = std::move(request);  // asked below first
+    else
+      state.requests.exportStill = std::move(request);
+  }
+  if (state.exportToConfirm) {
+    ImGui::TextColored(kErrorColor, "%s exists.", state.exportToConfirm->output.filename().string().c_str());
+    ImGui::SameLine();
+    if (button(state, "export/", "Replace it")) {
+      state.requests.exportStill = std::move(*state.exportToConfirm);
+      state.exportToConfirm.reset();
+    }
+    ImGui::SameLine();
+    if (state.exportToConfirm && button(state, "export/", "Keep it")) state.exportToConfirm.reset();
   }
   if (status.state == ExportState::Done) ImGui::TextWrapped("wrote %s", status.output.string().c_str());
   if (status.state == ExportState::Failed) ImGui::TextColored(kErrorColor, "%s", status.error.c_str());
@@ -1491,12 +1526,50 @@ void quitPromptWindow(ExplorerState& state, float scale) {
   ImGui::EndPopup();
 }
 
+// Where the export's picture lies in the view, when its aspect is not the view's: a thin frame.
+void drawExportFrame(const ExplorerState& state) {
+  const ExportSettings& settings = state.settings.lastExport;
+  if (state.viewRect.z <= 0 || state.viewRect.w <= 0 || settings.width <= 0 || settings.height <= 0) return;
+  const double viewAspect = static_cast<double>(state.viewRect.z) / state.viewRect.w;
+  const double aspect = static_cast<double>(settings.width) / settings.height;
+  if (std::abs(aspect / viewAspect - 1.0) < 0.005) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  const glm::dvec4 frame = core::exportFrame(glm::dvec2(state.viewRect.z, state.viewRect.w), aspect);
+  // Framebuffer pixels from the bottom to window coordinates from the top.
+  const ImVec2 scale = io.DisplayFramebufferScale;
+  const float left = static_cast<float>(state.viewRect.x + frame.x) / scale.x;
+  const float right = static_cast<float>(state.viewRect.x + frame.x + frame.z) / scale.x;
+  const float top = io.DisplaySize.y - static_cast<float>(state.viewRect.y + frame.y + frame.w) / scale.y;
+  const float bottom = io.DisplaySize.y - static_cast<float>(state.viewRect.y + frame.y) / scale.y;
+  ImGui::GetBackgroundDrawList()->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(255, 255, 255, 110));
+}
+
+// The picture's rectangle: between the side panels, above the Timeline, in framebuffer pixels.
+void placeView(ExplorerState& state, float scale) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float left = std::clamp(state.layout.left, 0.0f, io.DisplaySize.x);
+  const float right =
+      std::clamp(state.layout.right > left ? state.layout.right : io.DisplaySize.x, left, io.DisplaySize.x);
+  const float bottom =
+      std::clamp(state.layout.bottom > 0.0f ? state.layout.bottom : io.DisplaySize.y - statusBarHeight(scale), 0.0f,
+                 io.DisplaySize.y);
+  const ImVec2 toPixels = io.DisplayFramebufferScale;
+  const int x = static_cast<int>(std::lround(left * toPixels.x));
+  const int width = static_cast<int>(std::lround(right * toPixels.x)) - x;
+  const int height = static_cast<int>(std::lround(bottom * toPixels.y));
+  const int fromBottom = static_cast<int>(std::lround(io.DisplaySize.y * toPixels.y)) - height;
+  state.viewRect = width > 0 && height > 0 ? glm::ivec4(x, fromBottom, width, height) : glm::ivec4(0);
+}
+
 void viewWindow(ExplorerState& state, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
-  const float width = 320 * scale;
-  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - width - 8 * scale, 8 * scale), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(width, io.DisplaySize.y - 48 * scale), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Scene", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus);
+  // Docked at the right, full height above the status line; only its width is the user's.
+  const float height = io.DisplaySize.y - statusBarHeight(scale);
+  ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x, 0), ImGuiCond_Always, ImVec2(1.0f, 0.0f));
+  ImGui::SetNextWindowSize(ImVec2(320 * scale, height), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(260 * scale, height), ImVec2(0.4f * io.DisplaySize.x, height));
+  ImGui::Begin("Scene", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoMove);
+  state.layout.right = ImGui::IsWindowCollapsed() ? io.DisplaySize.x : ImGui::GetWindowPos().x;
   ImGui::PushItemWidth(-120 * scale);
   if (ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen)) meshSection(state);
   if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) renderSection(state);
@@ -1546,7 +1619,7 @@ namespace {
 
 void statusBar(ExplorerState& state, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
-  const float height = ImGui::GetFrameHeightWithSpacing() + 6 * scale;
+  const float height = statusBarHeight(scale);
   ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
   ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
   ImGui::SetNextWindowBgAlpha(0.75f);
@@ -1654,12 +1727,15 @@ void advancePlayback(ExplorerState& state) {
 
 void timelineWindow(ExplorerState& state, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
-  const float statusHeight = ImGui::GetFrameHeightWithSpacing() + 6 * scale;
-  const float left = 366 * scale, right = 336 * scale;
+  // Docked under the picture, between the side panels, above the status line.
+  const float statusHeight = statusBarHeight(scale);
+  const float left = state.layout.left, right = std::max(state.layout.right, left + 1.0f);
   const float height = 3 * ImGui::GetFrameHeightWithSpacing() + ImGui::GetTextLineHeightWithSpacing() + 14 * scale;
-  ImGui::SetNextWindowPos(ImVec2(left, io.DisplaySize.y - statusHeight - height - 4 * scale), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(std::max(300.0f, io.DisplaySize.x - left - right), height), ImGuiCond_FirstUseEver);
-  ImGui::Begin("Timeline", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus);
+  ImGui::SetNextWindowPos(ImVec2(left, io.DisplaySize.y - statusHeight), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+  ImGui::SetNextWindowSize(ImVec2(right - left, height), ImGuiCond_Always);
+  ImGui::Begin("Timeline", nullptr,
+               ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+  state.layout.bottom = ImGui::GetWindowPos().y;
   core::Scene& scene = state.scene;
   const double length = timelineLength(scene);
   if (button(state, "timeline/", state.playing ? "Pause" : "Play")) state.playing = !state.playing;
@@ -1760,6 +1836,12 @@ void askToQuit(ExplorerState& state) {
     state.requests.quit = true;
 }
 
+core::CameraSettings exportCamera(const ExplorerState& state, int width, int height) {
+  if (state.viewRect.z <= 0 || state.viewRect.w <= 0 || width <= 0 || height <= 0) return state.scene.camera;
+  return core::cameraForFrame(state.scene.camera, static_cast<double>(state.viewRect.z) / state.viewRect.w,
+                              static_cast<double>(width) / height);
+}
+
 std::string windowTitle(const ExplorerState& state) {
   return "voxflame — " + state.scene.name + (hasUnsavedChanges(state) ? " (unsaved)" : "");
 }
@@ -1828,6 +1910,8 @@ void explorerUiFrame(ExplorerState& state) {
   timelineWindow(state, scale);
   recoveryWindow(state, scale);
   quitPromptWindow(state, scale);
+  placeView(state, scale);
+  drawExportFrame(state);
   statusBar(state, scale);
   noticeWindow(state, scale);
   // Read after the panels, which make a widget active on the frame it is pressed: an edit on that

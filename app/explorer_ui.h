@@ -129,9 +129,23 @@ struct ExplorerState {
   std::filesystem::path executable;  // the voxflame binary exports run; empty: this process
   ExportStatus exportStatus;
   char exportPath[512] = "";
+  // The path the Export panel made for the document's name (it follows the name until typed over),
+  // and an export waiting for "replace the existing file?".
+  std::string exportPathMade;
+  std::optional<ExportRequest> exportToConfirm;
 
   // Autosaves of sessions that crashed or were killed, offered back at start.
   std::vector<Recoverable> recoverable;
+
+  // Where the picture goes: the space between the docked panels, in framebuffer pixels (x, y from
+  // the bottom, width, height), set by each UI frame; empty: the whole framebuffer. The live view
+  // frames its camera to it, and an export's framing is the view's (exportCamera).
+  glm::ivec4 viewRect{0};
+  // The docked panels' edges in window coordinates, from this frame's panels: the Pattern panel's
+  // right edge, the Scene panel's left one, the Timeline's top.
+  struct PanelEdges {
+    float left = 0.0f, right = 0.0f, bottom = 0.0f;
+  } layout;
 
   // The document as last opened or saved: quitting asks first while the scene differs from it.
   core::Scene savedScene;
@@ -173,6 +187,10 @@ void askToQuit(ExplorerState& state);
 
 // "voxflame — NAME", with a mark while changes are unsaved.
 std::string windowTitle(const ExplorerState& state);
+
+// The camera an export of width × height uses: the view's own, framed to what the export frame in
+// the view shows (core::cameraForFrame).
+core::CameraSettings exportCamera(const ExplorerState& state, int width, int height);
 
 // Opens a preset, a voxflame PNG (a fresh scene and history) or a mesh (the pattern stays; one
 // undoable edit) and puts it first in the recent files. On failure the scene is untouched and

@@ -27,12 +27,41 @@ constexpr std::size_t kStillUploadBytesPerFrame = 160u << 20;
 constexpr double kStillUploadShareOfBudget = 0.6;
 
 // The framebuffer's picture as a thumbnail (rows top to bottom, opaque).
-Thumbnail readThumbnail(unsigned framebuffer, int width, int height) {
+Thumbnail readThumbnail(unsigned framebuffer, glm::ivec4 place) {
   Thumbnail thumbnail;
-  thumbnail.width = width;
-  thumbnail.height = height;
-  thumbnail.rgba = gl::readRgba8(framebuffer, {0, 0, width, height}, gl::ReadAlpha::Opaque);
+  thumbnail.width = place.z;
+  thumbnail.height = place.w;
+  thumbnail.rgba = gl::readRgba8(framebuffer, {place.x, place.y, place.z, place.w}, gl::ReadAlpha::Opaque);
   return thumbnail;
+}
+
+// The view rectangle within a framebuffer of this size; an empty one is all of it.
+glm::ivec4 placeWithin(glm::ivec4 rect, int width, int height) {
+  if (rect.z <= 0 || rect.w <= 0) return {0, 0, width, height};
+  const int x = std::clamp(rect.x, 0, width - 1), y = std::clamp(rect.y, 0, height - 1);
+  return {x, y, std::clamp(rect.z, 1, width - x), std::clamp(rect.w, 1, height - y)};
+}
+
+// Clears the framebuffer outside `place` (all of it for an empty one) to the background: what the
+// panels' translucent backgrounds show. Strips with a scissor each, so the picture's pixels are
+// written once, by its own draw.
+void clearAround(glm::ivec4 place, int width, int height, glm::vec3 background) {
+  glClearColor(background.r, background.g, background.b, 1.0f);
+  if (place.z <= 0 || place.w <= 0) {
+    glClear(GL_COLOR_BUFFER_BIT);
+    return;
+  }
+  glEnable(GL_SCISSOR_TEST);
+  const glm::ivec4 strips[] = {{0, 0, place.x, height},
+                               {place.x + place.z, 0, width - place.x - place.z, height},
+                               {place.x, 0, place.z, place.y},
+                               {place.x, place.y + place.w, place.z, height - place.y - place.w}};
+  for (const glm::ivec4& strip : strips) {
+    if (strip.z <= 0 || strip.w <= 0) continue;
+    glScissor(strip.x, strip.y, strip.z, strip.w);
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  glDisable(GL_SCISSOR_TEST);
 }
 
 double millisecondsSince(std::chrono::steady_clock::time_point start) {
@@ -238,10 +267,13 @@ bool LiveView::resting() const {
   return target_.samples >= kMaxSamples && !uploadInProgress_ && !shadowJob_.busy() && !shadowJob_.ready();
 }
 
-LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned framebuffer) {
+LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int framebufferHeight, unsigned framebuffer) {
   LiveFrame result;
-  width = std::max(1, width);
-  height = std::max(1, height);
+  framebufferWidth = std::max(1, framebufferWidth);
+  framebufferHeight = std::max(1, framebufferHeight);
+  // The picture's place: the rectangle the docked panels leave (the whole framebuffer without one).
+  const glm::ivec4 place = placeWithin(state.viewRect, framebufferWidth, framebufferHeight);
+  const int width = place.z, height = place.w;
   const auto frameStart = std::chrono::steady_clock::now();
   if (lastFrameStart_) {
     const double lastFrameMs = std::chrono::duration<double, std::milli>(frameStart - *lastFrameStart_).count();
@@ -280,7 +312,10 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
   keepShadowInStep(state.scene.render);
 
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-  glViewport(0, 0, width, height);
+  glViewport(0, 0, framebufferWidth, framebufferHeight);
+  const glm::vec3 background = core::linearToSrgb(state.scene.tone.background);
+  clearAround(place, framebufferWidth, framebufferHeight, background);
+  glViewport(place.x, place.y, width, height);
   const std::optional<core::GridGeometry> grid = session_.geometry();
   bool changed = false;
   if (grid && renderer_.hasVolume()) {
@@ -344,18 +379,16 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
     // Until the first pass over a new view or volume is whole, the last whole picture stays up.
     const gl::FrameTarget& shown = showingTarget_ || !shownHasPicture_ ? target_ : shownTarget_;
     const auto resolveStart = std::chrono::steady_clock::now();
-    renderer_.resolve(shown, settings, glm::ivec4(0, 0, width, height), false);
+    renderer_.resolve(shown, settings, place, false);
     resolveMs_ = millisecondsSince(resolveStart);
     if (newPicture) lastFinishMs_ = resolveMs_;
     result.volumeDrawn = true;
   } else {
-    const glm::vec3 background = core::linearToSrgb(state.scene.tone.background);
-    glClearColor(background.r, background.g, background.b, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT);
+    clearAround(glm::ivec4(0), framebufferWidth, framebufferHeight, background);
   }
   // Requests are served after the picture is drawn and before the panels go over it, so a
   // thumbnail shows the view alone.
-  serveRequests(state, width, height, framebuffer);
+  serveRequests(state, place, framebuffer);
 
   result.fullShown = renderer_.hasVolume() && renderer_.marchedSource() == gl::VolumeRenderer::Source::Main;
   if (newVolumeShown_) {
@@ -388,7 +421,7 @@ LiveFrame LiveView::frame(ExplorerState& state, int width, int height, unsigned 
   return result;
 }
 
-void LiveView::serveRequests(ExplorerState& state, int width, int height, unsigned framebuffer) {
+void LiveView::serveRequests(ExplorerState& state, glm::ivec4 place, unsigned framebuffer) {
   if (std::exchange(state.requests.refineFurther, false)) session_.refineFurther();
   if (state.requests.saveAs) {
     // Saved whatever is on screen: the volume, or the background while a shape builds or after a
@@ -398,9 +431,8 @@ void LiveView::serveRequests(ExplorerState& state, int width, int height, unsign
     } else {
       try {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        const std::filesystem::path saved =
-            presets_->saveAs(state.scene, *state.requests.saveAs, readThumbnail(framebuffer, width, height),
-                             state.requests.saveReplacing);
+        const std::filesystem::path saved = presets_->saveAs(
+            state.scene, *state.requests.saveAs, readThumbnail(framebuffer, place), state.requests.saveReplacing);
         state.presetMessage = "saved " + saved.string();
         state.settings.addRecent(RecentKind::Preset, saved);
         // The document is now the saved preset: its name (the window's title) and nothing unsaved.

@@ -84,7 +84,7 @@ class LiveView {
   // The points a main grid volume of the proxy's pattern needs to replace the proxy on screen.
   std::uint64_t takeoverPoints() const;
   void keepShadowInStep(const core::RenderSettingsDoc& render);
-  void serveRequests(ExplorerState& state, int width, int height, unsigned framebuffer);
+  void serveRequests(ExplorerState& state, glm::ivec4 place, unsigned framebuffer);
 
   ExplorerSession& session_;
   PresetLibrary* presets_;

@@ -21,6 +21,7 @@
 #include "core/scene.h"
 #include "explorer_session.h"
 #include "explorer_ui.h"
+#include "preset_library.h"
 #include "test_support.h"
 
 using namespace voxflame;
@@ -550,6 +551,47 @@ TEST_F(ExplorerUi, TheTitleFollowsTheDocumentThroughUndo) {
   pressKey('Z', true);
   EXPECT_EQ(state.scene.name, original);
   EXPECT_EQ(app::windowTitle(state), "voxflame — " + original);
+}
+
+// The Export panel names the file after the document and follows a rename (save-as) until the
+// user types another name; it asks before replacing a file; "view size" exports the view's pixels.
+TEST_F(ExplorerUi, TheExportFileFollowsTheDocumentAndReplacingOneAsksFirst) {
+  TemporaryFolder folder;
+  app::ExportJob job;
+  state.exportJob = &job;
+  state.settings.lastExportFolder = folder.path();
+  click("header/Export");
+  EXPECT_EQ(std::filesystem::path(state.exportPath).filename(), app::sanitizePresetName(state.scene.name) + ".png");
+  state.scene.name = "Night bunny";  // what a save-as does to the document
+  frame();
+  EXPECT_EQ(std::filesystem::path(state.exportPath).filename(), app::sanitizePresetName("Night bunny") + ".png");
+
+  click("export/view size");
+  ASSERT_GT(state.viewRect.z, 0);
+  EXPECT_EQ(state.settings.lastExport.width, state.viewRect.z);
+  EXPECT_EQ(state.settings.lastExport.height, state.viewRect.w);
+
+  {
+    std::ofstream existing(state.exportPath);
+    existing << "an earlier export";
+  }
+  clickForRequest("export/Export now");
+  EXPECT_FALSE(state.requests.exportStill) << "an existing file is replaced without asking";
+  ASSERT_TRUE(state.exportToConfirm);
+  frame();
+  clickForRequest("export/Keep it");
+  EXPECT_FALSE(state.requests.exportStill);
+  EXPECT_FALSE(state.exportToConfirm);
+  clickForRequest("export/Export now");
+  frame();
+  clickForRequest("export/Replace it");
+  ASSERT_TRUE(state.requests.exportStill) << "Replace it exports";
+  EXPECT_EQ(state.requests.exportStill->output, std::filesystem::path(state.exportPath));
+
+  std::snprintf(state.exportPath, sizeof state.exportPath, "%s", (folder / "mine.png").c_str());
+  state.scene.name = "Renamed again";
+  frame();
+  EXPECT_EQ(std::filesystem::path(state.exportPath).filename(), "mine.png") << "a typed name stays";
 }
 
 TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {

@@ -10,6 +10,7 @@
 #include <fstream>
 #include <thread>
 
+#include "core/camera.h"
 #include "core/image_io.h"
 #include "core/scene.h"
 #include "core/scene_io.h"
@@ -19,6 +20,7 @@
 #include "gl/headless_context.h"
 #include "gl/read_back.h"
 #include "live_view.h"
+#include "pipeline.h"
 #include "preset_library.h"
 #include "test_support.h"
 
@@ -426,6 +428,89 @@ TEST_F(LiveViewTest, FresherVolumesComingFasterThanAPassStillGetShown) {
   }
   ASSERT_GE(freshVolumes, 3) << "the grid refined on";
   EXPECT_GE(passesShown, 3) << "whole passes were shown while fresher volumes kept coming (" << freshVolumes << ")";
+}
+
+// The lit pixels (any channel above `threshold` of 255) of an RGBA8 read-back (rows top down).
+std::vector<bool> litFromReadBack(const std::vector<std::uint8_t>& rgba, int width, int height, int threshold) {
+  std::vector<bool> lit(static_cast<std::size_t>(width) * height);
+  for (std::size_t i = 0; i < lit.size(); ++i)
+    lit[i] = std::max({rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]}) > threshold;
+  return lit;
+}
+
+double intersectionOverUnion(const std::vector<bool>& a, const std::vector<bool>& b) {
+  std::size_t both = 0, either = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    both += a[i] && b[i];
+    either += a[i] || b[i];
+  }
+  return either ? static_cast<double>(both) / static_cast<double>(either) : 0.0;
+}
+
+// An export uses the view's camera exactly (zoomed with the wheel, panned): at the view's size its
+// lit area is the view's, and at a wider aspect it is what the export frame in the view shows.
+TEST_F(LiveViewTest, AnExportFramesWhatTheViewShows) {
+  state.scene.camera.distance *= 0.8;  // what the wheel does
+  state.scene.camera.target = glm::dvec3(0.08, -0.05, 0.0);
+  state.viewRect = glm::ivec4(24, 12, 112, 72);  // the space the docked panels leave
+  app::LiveView view(session, nullptr, nullptr);
+  ASSERT_TRUE(runUntilShown(view));
+  while (!session.status().resting || session.status().stats.points < 2'000'000) {
+    frame(view);
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    if (session.status().stats.points > 20'000'000) break;
+  }
+  refineAtFullScale(view);
+  for (int i = 0; i < 60; ++i) frame(view);
+  const glm::ivec4 rect = state.viewRect;
+  const std::vector<std::uint8_t> shown =
+      gl::readRgba8(canvas.framebuffer(), {rect.x, rect.y, rect.z, rect.w}, gl::ReadAlpha::Opaque);
+  const std::vector<bool> viewLit = litFromReadBack(shown, rect.z, rect.w, 30);
+
+  auto exported = [&](int width, int height) {
+    core::Scene scene = state.scene;
+    scene.camera = app::exportCamera(state, width, height);
+    app::StillOptions options;
+    options.width = width;
+    options.height = height;
+    options.points = 4'000'000;
+    return app::renderStill(scene, options).image;
+  };
+  auto litOf = [](const core::ImageRGBA& image, int x0, int y0, int width, int height, double step) {
+    std::vector<bool> lit(static_cast<std::size_t>(width) * height);
+    for (int y = 0; y < height; ++y)
+      for (int x = 0; x < width; ++x) {
+        const float* p = image.at(std::min(image.width - 1, static_cast<int>((x - x0 + 0.5) * step)),
+                                  std::min(image.height - 1, static_cast<int>((y - y0 + 0.5) * step)));
+        lit[static_cast<std::size_t>(y) * width + x] = 255.0f * std::max({p[0], p[1], p[2]}) > 30.0f;
+      }
+    return lit;
+  };
+  const core::ImageRGBA same = exported(rect.z, rect.w);
+  if (const char* folder = std::getenv("VOXFLAME_TEST_IMAGES")) {
+    core::ImageRGBA picture = same;
+    for (int y = 0; y < rect.w; ++y)
+      for (int x = 0; x < rect.z; ++x)
+        for (int c = 0; c < 4; ++c)
+          picture.at(x, y)[c] = shown[4 * (static_cast<std::size_t>(y) * rect.z + x) + c] / 255.0f;
+    core::writePng(std::filesystem::path(folder) / "export-framing-view.png", picture, 8, {});
+    core::writePng(std::filesystem::path(folder) / "export-framing-still.png", same, 8, {});
+  }
+  const double sameIou = intersectionOverUnion(viewLit, litOf(same, 0, 0, rect.z, rect.w, 1.0));
+  EXPECT_GE(sameIou, 0.95) << "an export at the view's size frames another picture";
+
+  // Twice as wide as high: the frame spans the view's width and its middle rows.
+  const core::ImageRGBA wide = exported(2 * rect.z, rect.z);
+  const glm::dvec4 frameRect = core::exportFrame(glm::dvec2(rect.z, rect.w), 2.0);
+  const int top = static_cast<int>(std::lround(rect.w - frameRect.y - frameRect.w));
+  const int rows = static_cast<int>(std::lround(frameRect.w));
+  std::vector<bool> viewFramed, wideLit = litOf(wide, 0, 0, rect.z, rows, 2.0);
+  for (int y = top; y < top + rows; ++y)
+    for (int x = 0; x < rect.z; ++x) viewFramed.push_back(viewLit[static_cast<std::size_t>(y) * rect.z + x]);
+  EXPECT_GE(intersectionOverUnion(viewFramed, wideLit), 0.9) << "a wider export shows what its frame in the view shows";
+  std::size_t litCount = 0;
+  for (bool lit : viewLit) litCount += lit;
+  EXPECT_GT(litCount, viewLit.size() / 10) << "the view shows the pattern";
 }
 
 }  // namespace

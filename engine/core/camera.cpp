@@ -46,4 +46,20 @@ CameraFrame orbitCamera(const CameraSettings& settings, const Box& box, double a
   return frame;
 }
 
+CameraSettings cameraForFrame(const CameraSettings& settings, double viewAspect, double aspect) {
+  CameraSettings framed = settings;
+  if (!(viewAspect > 0.0) || !(aspect > viewAspect)) return framed;
+  const double shrink = viewAspect / aspect;  // the frame's height as a share of the view's
+  framed.fovDeg = glm::degrees(2.0 * std::atan(std::tan(0.5 * glm::radians(settings.fovDeg)) * shrink));
+  framed.orthoHeight = settings.orthoHeight * shrink;
+  return framed;
+}
+
+glm::dvec4 exportFrame(glm::dvec2 viewSize, double aspect) {
+  if (!(aspect > 0.0) || viewSize.x <= 0.0 || viewSize.y <= 0.0) return {0.0, 0.0, viewSize.x, viewSize.y};
+  const double width = std::min(viewSize.x, viewSize.y * aspect);
+  const double height = width / aspect;
+  return {0.5 * (viewSize.x - width), 0.5 * (viewSize.y - height), width, height};
+}
+
 }  // namespace voxflame::core

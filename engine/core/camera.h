@@ -4,7 +4,9 @@
 #pragma once
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "grid.h"
 #include "scene.h"
@@ -25,5 +27,13 @@ struct CameraFrame {
 
 // The frame for a camera orbiting `box` (in world units), for an image of the given aspect.
 CameraFrame orbitCamera(const CameraSettings& settings, const Box& box, double aspect);
+
+// The camera that shows, at `aspect`, the largest rectangle of that aspect centred in a view of
+// `viewAspect` (exportFrame): a wider picture than the view narrows the vertical field (or the
+// orthographic height) so its width is the view's; a narrower one keeps the view's height.
+CameraSettings cameraForFrame(const CameraSettings& settings, double viewAspect, double aspect);
+
+// That rectangle within a view of `viewSize`: x, y (from the bottom), width, height.
+glm::dvec4 exportFrame(glm::dvec2 viewSize, double aspect);
 
 }  // namespace voxflame::core
