@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdarg>
 #include <cctype>
 #include <cfloat>
 #include <chrono>
@@ -41,6 +42,16 @@ float statusBarHeight(float scale) {
 
 const ImVec4 kErrorColor(1.0f, 0.45f, 0.35f, 1.0f);
 const ImVec4 kDimColor(0.62f, 0.65f, 0.72f, 1.0f);
+
+// A hint or a message in the dim colour, wrapped at the panel's edge rather than cut there.
+IM_FMTARGS(1) void dimText(const char* format, ...) {
+  ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+  va_list arguments;
+  va_start(arguments, format);
+  ImGui::TextWrappedV(format, arguments);
+  va_end(arguments);
+  ImGui::PopStyleColor();
+}
 
 void probe(ExplorerState& state, const std::string& name) {
   if (!state.probe) return;
@@ -107,10 +118,34 @@ bool fieldWidget(ExplorerState& state, const std::string& scope, Owner& owner, c
         }
       },
       f.member);
-  probe(state, probeName ? std::string(probeName) : scope + label);
-  if (!f.help.empty() && ImGui::IsItemHovered() && !ImGui::IsItemActive())
-    ImGui::SetTooltip("%.*s", static_cast<int>(f.help.size()), f.help.data());
-  return changed;
+  const std::string probed = probeName ? std::string(probeName) : scope + label;
+  probe(state, probed);
+  // Right-click: back to the default, as the pattern sliders do (a default-made owner holds it).
+  bool reset = false;
+  // A named popup: the last item of some widgets (a colour editor's label) has no id of its own.
+  if (ImGui::BeginPopupContextItem(("reset##" + probed).c_str())) {
+    reset = ImGui::Selectable("Reset to default");
+    probe(state, probed + "/reset");
+    ImGui::EndPopup();
+  }
+  if (reset) {
+    static const Owner defaults{};
+    std::visit(
+        [&]<class M>(const M& member) {
+          if constexpr (std::is_same_v<M, core::Choice<Owner>>)
+            member.set(owner, member.get(defaults));
+          else if constexpr (std::is_member_object_pointer_v<M>)
+            owner.*member = defaults.*member;
+        },
+        f.member);
+  }
+  if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
+    if (f.help.empty())
+      ImGui::SetTooltip("right-click to reset to the default");
+    else
+      ImGui::SetTooltip("%.*s\nright-click to reset to the default", static_cast<int>(f.help.size()), f.help.data());
+  }
+  return changed || reset;
 }
 
 bool button(ExplorerState& state, const std::string& scope, const char* label) {
@@ -931,7 +966,7 @@ void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXfor
     ImGui::PopID();
   }
   ImGui::Separator();
-  ImGui::TextColored(kDimColor, "variations");
+  dimText("variations");
   variationsEditor(state, scope, xform);
 }
 
@@ -939,7 +974,7 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
   int& selected = state.selectedXform[index];
   if (selected >= static_cast<int>(flame.xforms.size()) || (selected < 0 && !flame.hasFinal)) selected = 0;
   // The transform selector: one button per transform, then the final one.
-  ImGui::TextColored(kDimColor, "transform");
+  dimText("transform");
   // Up to 128 transforms: 16 buttons a row.
   constexpr std::size_t kButtonsPerRow = 16;
   for (std::size_t i = 0; i < flame.xforms.size(); ++i) {
@@ -1185,11 +1220,11 @@ void patternWindow(ExplorerState& state, float scale) {
     ImGui::EndDisabled();
     ImGui::SameLine();
     if (state.visited.empty())
-      ImGui::TextColored(kDimColor, "no history yet");
+      dimText("no history yet");
     else
-      ImGui::TextColored(kDimColor, "%zu of %zu (Alt+Left/Right)", state.visitedIndex + 1, state.visited.size());
+      dimText("%zu of %zu (Alt+Left/Right)", state.visitedIndex + 1, state.visited.size());
     if (state.search.busy())
-      ImGui::TextColored(kDimColor, "searching…");
+      dimText("searching…");
     else if (!state.searchMessage.empty())
       ImGui::TextWrapped("%s", state.searchMessage.c_str());
     if (!state.session.stats.problem.empty()) {
@@ -1225,7 +1260,7 @@ void meshSection(ExplorerState& state) {
     }
     ImGui::EndCombo();
   }
-  ImGui::TextColored(kDimColor, "or drop a mesh, preset or PNG onto the window");
+  dimText("or drop a mesh, preset or PNG onto the window");
 
   // The grid only changes when the slider is let go: each change rebuilds the mask.
   int& draft = state.gridDraft;
@@ -1244,8 +1279,7 @@ void meshSection(ExplorerState& state) {
   } catch (const core::Error&) {
     draftGrid.size = glm::ivec3(std::max(draft, 1));
   }
-  ImGui::TextColored(kDimColor, "about %s of memory",
-                     formatBytes(static_cast<double>(ExplorerSession::estimatedBytes(draftGrid))).c_str());
+  dimText("about %s of memory", formatBytes(static_cast<double>(ExplorerSession::estimatedBytes(draftGrid))).c_str());
 
   core::RenderSettingsDoc& render = state.scene.render;
   fieldWidget(state, "mesh/", render, core::renderFields(), "mesh");
@@ -1310,7 +1344,7 @@ void cameraSection(ExplorerState& state) {
   view("Top", 0.0, 90.0);
   ImGui::SameLine();
   if (button(state, "camera/", "Reset")) camera = state.initialCamera;
-  ImGui::TextColored(kDimColor, "drag: orbit · right/middle drag: pan · wheel: zoom · W/A/S/D/Q/E: fly");
+  dimText("drag: orbit · right/middle drag: pan · wheel: zoom · W/A/S/D/Q/E: fly");
 }
 
 void presetsSection(ExplorerState& state, float scale) {
@@ -1324,7 +1358,7 @@ void presetsSection(ExplorerState& state, float scale) {
   ImGui::SameLine();
   if (button(state, "preset/", "Refresh")) state.presets->refresh();
   if (!state.presetMessage.empty()) ImGui::TextWrapped("%s", state.presetMessage.c_str());
-  if (state.presets->busy()) ImGui::TextColored(kDimColor, "reading presets…");
+  if (state.presets->busy()) dimText("reading presets…");
   if (entries) {
     const float size = 92 * scale;
     const int columns = std::max(1, static_cast<int>(ImGui::GetContentRegionAvail().x / (size + 8 * scale)));
@@ -1333,8 +1367,8 @@ void presetsSection(ExplorerState& state, float scale) {
     for (std::size_t i = 0; i < entries->size(); ++i) {
       const PresetEntry& entry = (*entries)[i];
       if (i == 0 || entry.source != lastSource) {
-        ImGui::TextColored(kDimColor, entry.source == PresetSource::Shipped ? "shipped" : "yours (%s)",
-                           state.presets->userFolder().string().c_str());
+        dimText(entry.source == PresetSource::Shipped ? "shipped" : "yours (%s)",
+                state.presets->userFolder().string().c_str());
         column = 0;
       }
       lastSource = entry.source;
@@ -1383,8 +1417,7 @@ void exportSection(ExplorerState& state) {
   if (ImGui::SliderScalar("M points", ImGuiDataType_Double, &millions, &minPoints, &maxPoints, "%.1f",
                           ImGuiSliderFlags_Logarithmic))
     settings.points = static_cast<std::uint64_t>(millions * 1e6);
-  ImGui::TextColored(kDimColor, "method: %s (Render panel)",
-                     std::string(core::toString(state.scene.render.method)).c_str());
+  dimText("method: %s (Render panel)", std::string(core::toString(state.scene.render.method)).c_str());
   int format = static_cast<int>(settings.format);
   if (ImGui::Combo("format", &format, "PNG 8-bit\0PNG 16-bit\0EXR (linear float)\0"))
     settings.format = static_cast<ExportFormat>(format);
@@ -1442,7 +1475,7 @@ void exportSection(ExplorerState& state) {
   }
   if (status.state == ExportState::Done) ImGui::TextWrapped("wrote %s", status.output.string().c_str());
   if (status.state == ExportState::Failed) ImGui::TextColored(kErrorColor, "%s", status.error.c_str());
-  if (status.state == ExportState::Cancelled) ImGui::TextColored(kDimColor, "cancelled; nothing was written");
+  if (status.state == ExportState::Cancelled) dimText("cancelled; nothing was written");
 }
 
 }  // namespace
@@ -1588,21 +1621,22 @@ void viewWindow(ExplorerState& state, float scale) {
 
 std::string convergenceText(const SessionStatus& status) {
   if (!status.hasShape) return "";
-  char text[160];
+  char text[200];
   const double noise = 100.0 * status.noise, target = 100.0 * status.noiseTarget;
+  const double millions = static_cast<double>(status.stats.points) * 1e-6;
   if (status.paused)
     std::snprintf(text, sizeof text, "refining paused for the export");
   else if (status.converged)
-    std::snprintf(text, sizeof text, "at rest: the noise reached its target (%.2g%% ≤ %.2g%%)", noise, target);
+    std::snprintf(text, sizeof text, "at rest: the noise reached its target (%.2g%% of %.2g%%)", noise, target);
   else if (status.capped)
     std::snprintf(text, sizeof text, "at rest: the cap of %.0f points per voxel (noise %.2g%%)",
                   status.capPointsPerVoxel, noise);
   else if (!std::isfinite(noise))
-    std::snprintf(text, sizeof text, "noise …");
+    std::snprintf(text, sizeof text, "refining: %.0f M points, measuring the noise", millions);
   else if (status.noiseTarget > 0.0)
-    std::snprintf(text, sizeof text, "noise %.2g%% → %.2g%%", noise, target);
+    std::snprintf(text, sizeof text, "refining: %.0f M points, noise %.2g%% of %.2g%%", millions, noise, target);
   else
-    std::snprintf(text, sizeof text, "noise %.2g%%", noise);
+    std::snprintf(text, sizeof text, "refining: %.0f M points, noise %.2g%%", millions, noise);
   return text;
 }
 
@@ -1628,17 +1662,27 @@ void statusBar(ExplorerState& state, float scale) {
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
   const core::AccumulatorStats& stats = state.session.stats;
   const FrameMetrics& m = state.metrics;
+  // Words first: what is happening. The technical figures are one click (Stats) or a hover away.
   if (state.session.buildingShape)
     ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "%s %.1f s", state.session.shapeStage.c_str(),
                        state.session.shapeSeconds);
-  else
-    ImGui::Text("%.1f M points  %.1f M/s  inside %.1f%%  escapes %llu", static_cast<double>(stats.points) * 1e-6,
-                stats.pointsPerSecond * 1e-6, 100.0 * stats.insideFraction(),
-                static_cast<unsigned long long>(stats.escapes));
-  if (const std::string convergence = convergenceText(state.session); !convergence.empty()) {
-    ImGui::SameLine();
-    ImGui::Text(" |  %s", convergence.c_str());
+  else if (const std::string convergence = convergenceText(state.session); !convergence.empty())
+    ImGui::TextUnformatted(convergence.c_str());
+  char figures[400];
+  std::snprintf(figures, sizeof figures,
+                "%.1f M points  %.1f M/s  inside %.1f%%  escapes %llu  |  %.0f fps  %.1f ms (worst %.0f)  upload %.1f "
+                "ms  %d samples",
+                static_cast<double>(stats.points) * 1e-6, stats.pointsPerSecond * 1e-6, 100.0 * stats.insideFraction(),
+                static_cast<unsigned long long>(stats.escapes), m.fps, m.frameMs, m.worstFrameMs, m.uploadMs,
+                state.samples);
+  std::string details = figures;
+  if (m.changeToFrameMs >= 0.0) {
+    std::snprintf(figures, sizeof figures, "  |  edit→frame %.0f ms (%d frames)", m.changeToFrameMs,
+                  m.changeToFrameFrames);
+    details += figures;
   }
+  if (!state.lyapunovText.empty()) details += "  |  " + state.lyapunovText;
+  if (ImGui::IsItemHovered() && !state.showStats) ImGui::SetTooltip("%s", details.c_str());
   if ((state.session.converged || state.session.capped) && !state.session.buildingShape) {
     ImGui::SameLine();
     if (ImGui::SmallButton("Refine further")) state.requests.refineFurther = true;
@@ -1648,14 +1692,12 @@ void statusBar(ExplorerState& state, float scale) {
                         state.session.pointsPerVoxel);
   }
   ImGui::SameLine();
-  ImGui::TextColored(kDimColor, " |  %.0f fps  %.1f ms (worst %.0f)  upload %.1f ms  %d samples", m.fps, m.frameMs,
-                     m.worstFrameMs, m.uploadMs, state.samples);
-  if (m.changeToFrameMs >= 0.0) {
+  if (ImGui::SmallButton(state.showStats ? "Hide stats###stats" : "Stats###stats")) state.showStats = !state.showStats;
+  probe(state, "status/stats");
+  if (state.showStats) {
     ImGui::SameLine();
-    ImGui::TextColored(kDimColor, " |  edit→frame %.0f ms (%d frames)", m.changeToFrameMs, m.changeToFrameFrames);
+    ImGui::TextColored(kDimColor, "%s", details.c_str());
   }
-  ImGui::SameLine();
-  ImGui::TextColored(kDimColor, " |  %s", state.lyapunovText.c_str());
   ImGui::End();
 }
 
@@ -1816,10 +1858,10 @@ void timelineWindow(ExplorerState& state, float scale) {
                                                   ImVec2(x, max.y - 6 * scale), IM_COL32(255, 190, 90, 255));
   }
   if (scene.keyframes.empty())
-    ImGui::TextColored(kDimColor, "no keyframes: move the time, change something, press Key");
+    dimText("no keyframes: move the time, change something, press Key");
   else
-    ImGui::TextColored(kDimColor, "%zu animated values, %zu key times  %s", scene.keyframes.size(), times.size(),
-                       state.timelineMessage.c_str());
+    dimText("%zu animated values, %zu key times  %s", scene.keyframes.size(), times.size(),
+            state.timelineMessage.c_str());
   ImGui::End();
 }
 

@@ -147,6 +147,8 @@ struct ExplorerState {
     float left = 0.0f, right = 0.0f, bottom = 0.0f;
   } layout;
 
+  bool showStats = false;  // the status line shows its technical figures (else as a tooltip)
+
   // The document as last opened or saved: quitting asks first while the scene differs from it.
   core::Scene savedScene;
   bool quitPrompt = false;     // the Save / Discard / Cancel prompt is open
