@@ -363,8 +363,8 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       glfwGetFramebufferSize(window, &width, &height);
       if (x11.windowGone()) break;
       view.frame(state, width, height);
-      // Save, chosen in the quit prompt, has been served by the frame: quit once it worked.
-      if (state.quitAfterSave && !hasUnsavedChanges(state)) glfwSetWindowShouldClose(window, GLFW_TRUE);
+      // Save, chosen in the quit prompt, has been served by the frame: it asks to quit once it worked.
+      if (state.requests.quit) glfwSetWindowShouldClose(window, GLFW_TRUE);
       // Input gets a few frames of its own: ImGui settles hover and layout a frame late.
       const ImGuiIO& io = ImGui::GetIO();
       const bool userActive = input.queue.pending() > 0 || io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f ||

@@ -489,7 +489,8 @@ void handleCamera(ExplorerState& state) {
 
   // Free flight: W/S move along the view, A/D sideways, Q/E down and up; the orbit target moves
   // with the eye, so the camera turns about itself when dragged afterwards.
-  if (io.WantCaptureKeyboard || io.KeyCtrl) return;
+  // (Nor while the quit prompt is open: S and D answer it.)
+  if (io.WantCaptureKeyboard || io.KeyCtrl || state.quitPrompt) return;
   const double speed = 1.2 * camera.distance * std::min(0.1f, io.DeltaTime);
   auto held = [](int key) { return keyDown(key) ? 1.0 : 0.0; };
   const glm::dvec3 move = (held('W') - held('S')) * frame.forward + (held('D') - held('A')) * frame.right +

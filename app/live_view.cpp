@@ -438,6 +438,7 @@ void LiveView::serveRequests(ExplorerState& state, glm::ivec4 place, unsigned fr
         // The document is now the saved preset: its name (the window's title) and nothing unsaved.
         state.scene.name = *state.requests.saveAs;
         state.savedScene = state.scene;
+        if (state.quitAfterSave) state.requests.quit = true;  // Save in the quit prompt: now quit
       } catch (const core::Error& e) {
         state.notice = e.what();
         state.quitAfterSave = false;  // the changes are not saved: stay

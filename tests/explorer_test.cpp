@@ -256,16 +256,24 @@ void flyForward(const XvfbServer& server) {
   ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync keydown w sleep 0.8 keyup w"), 0);
 }
 
-// The windows whose title says the scene has unsaved changes (xdotool's search status: 0 found).
+// Whether the window's title comes to say the scene has unsaved changes within 30 s (the title
+// changes with the frame after the edit, which a loaded machine draws late).
 bool titleSaysUnsaved(const XvfbServer& server) {
-  return server.xdotool("search --onlyvisible --name 'unsaved'") == 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+  while (server.xdotool("search --onlyvisible --name 'unsaved'") != 0) {
+    if (std::chrono::steady_clock::now() > deadline) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  }
+  return true;
 }
 
-// Answers the quit prompt with `key` until the explorer ends (a key sent before a slow frame has
-// drawn the prompt only flies the camera); its exit status, or none.
-std::optional<int> answerUntilItEnds(const XvfbServer& server, BackgroundExplorer& explorer, const char* key) {
+// Asks to quit and answers the prompt with `key` until the explorer ends: a key sent before a slow
+// frame has drawn the prompt only flies the camera, and a Ctrl+Q tap is now and then lost under a
+// loaded suite (see CtrlQTappedFasterThanAFrameStillQuits); Ctrl+Q on an open prompt changes
+// nothing. Its exit status, or none.
+std::optional<int> askAndAnswerUntilItEnds(const XvfbServer& server, BackgroundExplorer& explorer, const char* key) {
   for (int attempt = 0; attempt < 8; ++attempt) {
-    if (server.xdotool(std::string(kFindWindow) + " windowfocus --sync key " + key) != 0) break;
+    if (server.xdotool(std::string(kFindWindow) + " windowfocus --sync key ctrl+q sleep 1 key " + key) != 0) break;
     if (const std::optional<int> status = explorer.exitStatus(std::chrono::seconds(5))) return status;
   }
   return explorer.exitStatus(std::chrono::seconds(30));
@@ -289,8 +297,7 @@ TEST(Explorer, QuittingWithUnsavedChangesAsksThenCancelOrDiscard) {
   ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync key Escape"), 0);
   EXPECT_FALSE(explorer.exitStatus(std::chrono::seconds(2))) << "Escape (Cancel) quit";
   EXPECT_TRUE(titleSaysUnsaved(server)) << "Cancel kept the changes";
-  ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync key ctrl+q"), 0);
-  const std::optional<int> status = answerUntilItEnds(server, explorer, "d");
+  const std::optional<int> status = askAndAnswerUntilItEnds(server, explorer, "d");
   ASSERT_TRUE(status) << "D (Discard) did not quit\n" << explorer.output();
   EXPECT_EQ(*status, 0) << explorer.output();
   EXPECT_TRUE(voxflame::app::findRecoverable(folder / "STATE" / "voxflame" / "autosave").empty());
@@ -307,8 +314,7 @@ TEST(Explorer, QuittingWithUnsavedChangesCanSaveThem) {
   ASSERT_TRUE(explorer.started());
   flyForward(server);
   ASSERT_TRUE(titleSaysUnsaved(server)) << explorer.output();
-  ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync key ctrl+q"), 0);
-  const std::optional<int> status = answerUntilItEnds(server, explorer, "s");
+  const std::optional<int> status = askAndAnswerUntilItEnds(server, explorer, "s");
   ASSERT_TRUE(status) << "S (Save) did not quit\n" << explorer.output();
   EXPECT_EQ(*status, 0) << explorer.output();
   EXPECT_TRUE(voxflame::app::findRecoverable(folder / "STATE" / "voxflame" / "autosave").empty());
