@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <sstream>
 #include <cstdarg>
 #include <cctype>
 #include <cfloat>
@@ -512,20 +513,51 @@ void handleShortcuts(ExplorerState& state) {
 // Panels.
 
 void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core::AttractorInfo& info) {
-  ImGui::InputTextWithHint("##filter", "filter attractors", state.attractorFilter, sizeof state.attractorFilter);
+  const bool enter = ImGui::InputTextWithHint("##filter", "filter attractors", state.attractorFilter,
+                                              sizeof state.attractorFilter, ImGuiInputTextFlags_EnterReturnsTrue);
+  probe(state, "attractor/filter");
+  const std::string filter = lowercase(state.attractorFilter);
+  // Every word of the filter, anywhere in the id or the name: "sprott quadratic" finds
+  // sprott_quadratic, "Sprott's 3D quadratic map".
+  std::vector<std::string> words;
+  {
+    std::istringstream split(filter);
+    for (std::string word; split >> word;) words.push_back(word);
+  }
+  auto matches = [&](const core::AttractorInfo& candidate) {
+    std::string haystack = lowercase(candidate.id + " " + candidate.name);
+    std::replace(haystack.begin(), haystack.end(), '_', ' ');
+    return std::all_of(words.begin(), words.end(),
+                       [&](const std::string& word) { return haystack.find(word) != std::string::npos; });
+  };
+  auto choose = [&](const core::AttractorInfo& candidate) {
+    if (candidate.id == layer.attractor) return;
+    layer.attractor = candidate.id;
+    layer.params = candidate.defaultParams();
+    layer.step = candidate.defaultStep;
+    layer.integrator = candidate.defaultIntegrator;
+  };
+  // Enter takes the first match, so typing a name and Enter is enough.
+  if (!filter.empty()) {
+    const auto& catalogue = core::attractorCatalogue();
+    const auto first = std::find_if(catalogue.begin(), catalogue.end(), matches);
+    if (first == catalogue.end()) {
+      dimText("no attractor matches");
+    } else {
+      dimText("Enter: %s", first->name.c_str());
+      if (enter) {
+        choose(*first);
+        state.attractorFilter[0] = '\0';
+      }
+    }
+  }
   if (!ImGui::BeginCombo("attractor", info.name.c_str())) {
     if (ImGui::IsItemHovered() && !info.citation.empty()) ImGui::SetTooltip("%s", info.citation.c_str());
     return;
   }
-  const std::string filter = lowercase(state.attractorFilter);
   for (const core::AttractorInfo& candidate : core::attractorCatalogue()) {
-    if (!filter.empty() && lowercase(candidate.id + " " + candidate.name).find(filter) == std::string::npos) continue;
-    if (ImGui::Selectable(candidate.name.c_str(), candidate.id == layer.attractor) && candidate.id != layer.attractor) {
-      layer.attractor = candidate.id;
-      layer.params = candidate.defaultParams();
-      layer.step = candidate.defaultStep;
-      layer.integrator = candidate.defaultIntegrator;
-    }
+    if (!matches(candidate)) continue;
+    if (ImGui::Selectable(candidate.name.c_str(), candidate.id == layer.attractor)) choose(candidate);
   }
   ImGui::EndCombo();
 }

@@ -42,20 +42,54 @@ void InputQueue::cursor(double x, double y) {
   events_.push_back({.kind = Kind::Cursor, .x = x, .y = y});
 }
 
+namespace {
+
+// GLFW's printable keys (space to grave accent: letters, digits, punctuation) type characters,
+// which arrive as events of their own; the others (Backspace, Enter, arrows, modifiers ...) edit
+// or combine, and their place among the characters and modifiers matters.
+bool typesCharacters(int code) {
+  return code >= 32 && code <= 96;
+}
+
+bool isModifier(int code) {
+  return code >= kKeyLeftShift && code <= kKeyRightSuper;
+}
+
+}  // namespace
+
 void InputQueue::applyTo(ImGuiIO& io) {
   std::bitset<kKeys> keysChanged;
   std::array<bool, kButtons> buttonsChanged{};
   bool anyButtonChanged = false;
+  // Typing: a printable key's second transition (its release, while the next letters come in the
+  // same frame) waits for the next frame without holding up what follows, so a fast typist's
+  // characters all arrive in a frame or two rather than one a frame. Its later events wait with
+  // it (a key's own events stay in order); anything whose order with them matters (a modifier, a
+  // button, the pointer, the wheel) ends the frame's share.
+  std::deque<Event> deferred;
+  std::bitset<kKeys> keysDeferred;
+  bool editingKeyChanged = false;
   while (!events_.empty()) {
     const Event& event = events_.front();
     const auto index = static_cast<std::size_t>(event.code);
     if (event.kind == Kind::Key) {
+      const bool printable = typesCharacters(event.code);
+      if (printable && (keysDeferred[index] || (keysChanged[index] && io.KeysDown[index] != event.down))) {
+        keysDeferred[index] = true;
+        deferred.push_back(event);
+        events_.pop_front();
+        continue;
+      }
+      // A modifier must not overtake a waiting release (Z down, Z up, Ctrl down is not Ctrl+Z).
+      if (isModifier(event.code) && !deferred.empty() && io.KeysDown[index] != event.down) break;
       if (io.KeysDown[index] != event.down) {
         if (keysChanged[index]) break;  // the second transition of this key: next frame
         keysChanged[index] = true;
         io.KeysDown[index] = event.down;
+        if (!printable && event.down) editingKeyChanged = true;  // a press edits; a release does not
       }
     } else if (event.kind == Kind::Button) {
+      if (!deferred.empty()) break;
       if (buttons_[index] != event.down) {
         if (buttonsChanged[index]) break;
         buttonsChanged[index] = anyButtonChanged = true;
@@ -64,16 +98,21 @@ void InputQueue::applyTo(ImGuiIO& io) {
     } else if (event.kind == Kind::Cursor) {
       // ImGui takes a click where the pointer is in the frame the button goes down: a move after
       // a press or release waits, so the click lands where it was made.
-      if (anyButtonChanged) break;
+      if (anyButtonChanged || !deferred.empty()) break;
       pointer_ = {static_cast<float>(event.x), static_cast<float>(event.y)};
     } else if (event.kind == Kind::Scroll) {
+      if (!deferred.empty()) break;
       io.MouseWheelH += static_cast<float>(event.x);
       io.MouseWheel += static_cast<float>(event.y);
     } else {
+      // ImGui applies a frame's characters before its keys: a character typed after Backspace or
+      // an arrow waits for the next frame, so the text is edited as typed.
+      if (editingKeyChanged) break;
       io.AddInputCharacter(static_cast<unsigned>(event.code));
     }
     events_.pop_front();
   }
+  events_.insert(events_.begin(), deferred.begin(), deferred.end());
   for (std::size_t i = 0; i < kButtons; ++i) io.MouseDown[i] = buttons_[i];
   if (pointer_ && io.MousePos.x != -FLT_MAX) io.MousePos = ImVec2((*pointer_)[0], (*pointer_)[1]);
   io.KeyCtrl = io.KeysDown[kKeyLeftControl] || io.KeysDown[kKeyRightControl];

@@ -625,6 +625,20 @@ TEST_F(ExplorerUi, WideRangeSlidersAreLogarithmicAndEverySliderResetsToItsDefaul
   EXPECT_DOUBLE_EQ(state.scene.tone.gamma, core::ToneMapSettings{}.gamma) << "the Render panel's sliders reset too";
 }
 
+// Typing words of a name into the attractor filter and pressing Enter picks the first match.
+TEST_F(ExplorerUi, TheAttractorFilterPicksItsFirstMatchOnEnter) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyMap[ImGuiKey_Enter] = 257;  // GLFW_KEY_ENTER, as the GLFW backend maps it
+  click("attractor/filter");
+  for (const char c : std::string("sprott quadratic")) io.AddInputCharacter(static_cast<unsigned>(c));
+  frame(2);
+  EXPECT_STREQ(state.attractorFilter, "sprott quadratic");
+  pressKey(257);
+  frame(2);
+  EXPECT_EQ(state.scene.layers[0].attractor, "sprott_quadratic") << "every word matches, in the id or the name";
+  EXPECT_STREQ(state.attractorFilter, "") << "the filter clears once it has picked";
+}
+
 TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {
   app::Recoverable recoverable;
   core::Scene lost = core::defaultScene();

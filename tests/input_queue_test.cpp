@@ -1,6 +1,9 @@
 // The explorer's input queue (app/input_queue.h) fed like GLFW's callbacks would between two
 // frames, and applied to a headless ImGui context running the explorer's panels.
 #include <gtest/gtest.h>
+
+#include <cctype>
+#include <string>
 #include <imgui.h>
 
 #include "core/scene.h"
@@ -12,7 +15,7 @@ using namespace voxflame;
 
 namespace {
 
-constexpr int kKeyQ = 'Q', kKeyBackspace = 259;  // GLFW_KEY_Q, GLFW_KEY_BACKSPACE
+constexpr int kKeyQ = 'Q', kKeyZ = 'Z', kKeyBackspace = 259;  // GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_BACKSPACE
 
 class InputQueueTest : public ::testing::Test {
  protected:
@@ -143,3 +146,60 @@ TEST_F(InputQueueTest, WheelStepsAndMovesAddUpWithoutFillingTheQueue) {
 }
 
 }  // namespace
+
+// What a fast typist (or xdotool) delivers between two frames: each letter's press, character and
+// release. The characters all reach a text field within a couple of frames, not one a frame, and
+// the text reads as typed, Backspace included.
+TEST_F(InputQueueTest, TypedTextArrivesInAFrameOrTwoAsTyped) {
+  // A bare text field with the keyboard focus, fed by the queue frame after frame.
+  char text[64] = "";
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyMap[ImGuiKey_Backspace] = kKeyBackspace;  // as the GLFW backend maps it
+  auto fieldFrame = [&](bool focus) {
+    queue.applyTo(io);
+    ImGui::NewFrame();
+    ImGui::Begin("typing");
+    if (focus) ImGui::SetKeyboardFocusHere();
+    ImGui::InputText("field", text, sizeof text);
+    ImGui::End();
+    ImGui::Render();
+  };
+  fieldFrame(true);
+  for (int i = 0; i < 3; ++i) fieldFrame(false);
+  ASSERT_TRUE(ImGui::IsAnyItemActive()) << "the field has the keyboard";
+
+  auto type = [&](const std::string& letters) {
+    for (const char c : letters) {
+      const int code = c == ' ' ? 32 : std::toupper(static_cast<unsigned char>(c));
+      queue.key(code, true);
+      queue.character(static_cast<unsigned>(c));
+      queue.key(code, false);
+    }
+  };
+  type("sprott quadratx");
+  queue.key(kKeyBackspace, true);
+  queue.key(kKeyBackspace, false);
+  type("ic");
+  int frames = 0;
+  for (; frames < 40 && std::string(text) != "sprott quadratic"; ++frames) fieldFrame(false);
+  EXPECT_STREQ(text, "sprott quadratic");
+  EXPECT_LE(frames, 3) << "one character a frame would take 18";
+  for (int i = 0; i < 40 && queue.pending() > 0; ++i) fieldFrame(false);  // the releases, a frame each
+  EXPECT_EQ(queue.pending(), 0u);
+  EXPECT_STREQ(text, "sprott quadratic");
+}
+
+// A letter's release waits for the next frame while typing goes on, but a modifier does not
+// overtake it: Z down, Z up, Ctrl down between two frames is not Ctrl+Z.
+TEST_F(InputQueueTest, AWaitingReleaseIsNotOvertakenByAModifier) {
+  ImGuiIO& io = ImGui::GetIO();
+  queue.key(kKeyZ, true);
+  queue.key(kKeyZ, false);
+  queue.key(app::kKeyLeftControl, true);
+  queue.applyTo(io);
+  EXPECT_TRUE(io.KeysDown[kKeyZ]);
+  EXPECT_FALSE(io.KeyCtrl) << "Ctrl went down after Z was released";
+  queue.applyTo(io);
+  EXPECT_FALSE(io.KeysDown[kKeyZ]);
+  EXPECT_TRUE(io.KeyCtrl);
+}
