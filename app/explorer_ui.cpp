@@ -1792,7 +1792,8 @@ void advancePlayback(ExplorerState& state) {
   const double length = timelineLength(state.scene);
   double next = state.scene.animation.time + static_cast<double>(ImGui::GetIO().DeltaTime);
   if (next > length) {
-    if (core::animationLoops(state.scene) || state.playLooping)
+    // Play stops at the end unless the animation loops (its loop box).
+    if (core::animationLoops(state.scene) && length > 0.0)
       next = std::fmod(next, length);
     else
       next = length, state.playing = false;
@@ -1800,12 +1801,56 @@ void advancePlayback(ExplorerState& state) {
   showTime(state, next);
 }
 
+// An animated value's name for people: "/layers/0/params/a" reads "layer 1 a",
+// "/camera/azimuth_deg" reads "camera azimuth deg".
+std::string trackName(const std::string& path) {
+  std::vector<std::string> parts;
+  std::istringstream split(path);
+  for (std::string part; std::getline(split, part, '/');)
+    if (!part.empty()) parts.push_back(part);
+  std::string name;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    std::string part = parts[i];
+    if (part == "params" || part == "tone" || part == "render") continue;
+    if (part == "layers" && i + 1 < parts.size() && std::all_of(parts[i + 1].begin(), parts[i + 1].end(), ::isdigit)) {
+      part = "layer " + std::to_string(std::stoi(parts[++i]) + 1);
+    }
+    std::replace(part.begin(), part.end(), '_', ' ');
+    name += (name.empty() ? "" : " ") + part;
+  }
+  return name.empty() ? path : name;
+}
+
+// What Key did: the values that got a key at `time` ("keyed layer 1 a, camera azimuth deg at 1.50 s").
+std::string keyedText(const std::vector<core::KeyframeTrack>& before, const std::vector<core::KeyframeTrack>& after,
+                      double time) {
+  std::vector<std::string> keyed;
+  for (const core::KeyframeTrack& track : after) {
+    const auto old =
+        std::find_if(before.begin(), before.end(), [&](const core::KeyframeTrack& t) { return t.path == track.path; });
+    const bool keyedNow = std::any_of(track.keys.begin(), track.keys.end(),
+                                      [&](const core::Keyframe& key) { return std::abs(key.time - time) < 1e-6; });
+    if (keyedNow && (old == before.end() || !(old->keys == track.keys))) keyed.push_back(trackName(track.path));
+  }
+  char at[32];
+  std::snprintf(at, sizeof at, " at %.2f s", time);
+  if (keyed.empty()) return std::string("nothing changed to key") + at;
+  std::string text = "keyed ";
+  for (std::size_t i = 0; i < keyed.size() && i < 4; ++i) text += (i ? ", " : "") + keyed[i];
+  if (keyed.size() > 4) text += " and " + std::to_string(keyed.size() - 4) + " more";
+  return text + at;
+}
+
 void timelineWindow(ExplorerState& state, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
   // Docked under the picture, between the side panels, above the status line.
   const float statusHeight = statusBarHeight(scale);
   const float left = state.layout.left, right = std::max(state.layout.right, left + 1.0f);
-  const float height = 3 * ImGui::GetFrameHeightWithSpacing() + ImGui::GetTextLineHeightWithSpacing() + 14 * scale;
+  // Room for up to four animated values' rows; more scroll.
+  const auto rows = static_cast<float>(std::min<std::size_t>(state.scene.keyframes.size(), 4) + 1);
+  const float height = 2 * ImGui::GetFrameHeightWithSpacing() + rows * ImGui::GetTextLineHeightWithSpacing() +
+                       ImGui::GetFrameHeight() + 2 * ImGui::GetStyle().WindowPadding.y +
+                       ImGui::GetTextLineHeightWithSpacing();
   ImGui::SetNextWindowPos(ImVec2(left, io.DisplaySize.y - statusHeight), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
   ImGui::SetNextWindowSize(ImVec2(right - left, height), ImGuiCond_Always);
   ImGui::Begin("Timeline", nullptr,
@@ -1813,7 +1858,11 @@ void timelineWindow(ExplorerState& state, float scale) {
   state.layout.bottom = ImGui::GetWindowPos().y;
   core::Scene& scene = state.scene;
   const double length = timelineLength(scene);
-  if (button(state, "timeline/", state.playing ? "Pause" : "Play")) state.playing = !state.playing;
+  if (button(state, "timeline/", state.playing ? "Pause" : "Play")) {
+    state.playing = !state.playing;
+    // Play at the end starts over.
+    if (state.playing && scene.animation.time >= length - 1e-9) showTime(state, 0.0);
+  }
   ImGui::SameLine();
   const std::vector<double> times = keyTimes(scene);
   const double now = scene.animation.time;
@@ -1837,11 +1886,10 @@ void timelineWindow(ExplorerState& state, float scale) {
       core::Scene animated = state.keyBase;
       animated.keyframes = scene.keyframes;
       animated.animation = scene.animation;
+      const std::vector<core::KeyframeTrack> before = scene.keyframes;
       scene = core::withKeyframeAt(animated, scene, now);
       state.keyBase = scene;
-      char text[64];
-      std::snprintf(text, sizeof text, "keyed at %.2f s", now);
-      state.timelineMessage = text;
+      state.timelineMessage = keyedText(before, scene.keyframes, now);
     } catch (const core::Error& e) {
       state.notice = e.what();
     }
@@ -1890,11 +1938,40 @@ void timelineWindow(ExplorerState& state, float scale) {
     ImGui::GetWindowDrawList()->AddTriangleFilled(ImVec2(x - 4 * scale, max.y), ImVec2(x + 4 * scale, max.y),
                                                   ImVec2(x, max.y - 6 * scale), IM_COL32(255, 190, 90, 255));
   }
-  if (scene.keyframes.empty())
+  if (scene.keyframes.empty()) {
     dimText("no keyframes: move the time, change something, press Key");
-  else
-    dimText("%zu animated values, %zu key times  %s", scene.keyframes.size(), times.size(),
-            state.timelineMessage.c_str());
+  } else {
+    if (!state.timelineMessage.empty()) dimText("%s", state.timelineMessage.c_str());
+    // One row per animated value: its name, then its keys as ticks over the animation's length
+    // (right of the names); a value with one key holds still.
+    const float nameWidth = 170 * scale;
+    for (const core::KeyframeTrack& track : scene.keyframes) {
+      const bool holds = track.keys.size() == 1;
+      const std::string name = trackName(track.path);
+      ImGui::TextUnformatted(name.c_str());
+      probe(state, "timeline/track/" + track.path);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", track.path.c_str());
+      if (holds) {
+        ImGui::SameLine();
+        ImGui::TextColored(kDimColor, "(one key: holds still)");
+        probe(state, "timeline/track/" + track.path + "/holds");
+      }
+      ImGui::SameLine(std::max(nameWidth, ImGui::GetCursorPosX()));
+      const ImVec2 row = ImGui::GetCursorScreenPos();
+      const float rowHeight = ImGui::GetTextLineHeight();
+      const float rowLeft = row.x + 6 * scale, rowRight = std::max(rowLeft + 1.0f, max.x - grab * 0.5f);
+      ImDrawList* draw = ImGui::GetWindowDrawList();
+      draw->AddLine(ImVec2(rowLeft, row.y + 0.5f * rowHeight), ImVec2(rowRight, row.y + 0.5f * rowHeight),
+                    IM_COL32(110, 115, 130, 255));
+      for (const core::Keyframe& key : track.keys) {
+        const float x = rowLeft + static_cast<float>(key.time / std::max(length, 1e-9)) * (rowRight - rowLeft);
+        draw->AddQuadFilled(ImVec2(x, row.y + 1), ImVec2(x + 4 * scale, row.y + 0.5f * rowHeight),
+                            ImVec2(x, row.y + rowHeight - 1), ImVec2(x - 4 * scale, row.y + 0.5f * rowHeight),
+                            IM_COL32(255, 190, 90, 255));
+      }
+      ImGui::Dummy(ImVec2(1, rowHeight));
+    }
+  }
   ImGui::End();
 }
 

@@ -169,8 +169,7 @@ struct ExplorerState {
 
   // Timeline: the shown scene is the animation at scene.animation.time.
   bool playing = false;
-  core::Scene keyBase;      // the scene when the time was last shown: "Key" records what differs from it
-  bool playLooping = true;  // the live preview starts over at the end, even when the preset does not loop
+  core::Scene keyBase;  // the scene when the time was last shown: "Key" records what differs from it
   std::string timelineMessage;
 };
 

@@ -387,6 +387,49 @@ TEST_F(ExplorerUi, TimelineKeysScrubsAndPlaysAnAnimation) {
   EXPECT_FALSE(state.playing);
 }
 
+// The Timeline lists its animated values by name with their keys; a value with one key says it
+// holds still; Key says what it keyed; Play stops at the end unless the animation loops.
+TEST_F(ExplorerUi, TheTimelineListsItsTracksAndPlayStopsAtTheEnd) {
+  state.scene.animation.duration = 0.5;
+  state.scene.layers[0].params[0] *= 1.02;
+  state.scene.camera.azimuthDeg += 10.0;
+  frame();
+  click("timeline/Key");
+  ASSERT_EQ(state.scene.keyframes.size(), 2u);
+  EXPECT_NE(state.timelineMessage.find("layer 1 a"), std::string::npos) << state.timelineMessage;
+  EXPECT_NE(state.timelineMessage.find("camera azimuth deg"), std::string::npos) << state.timelineMessage;
+  EXPECT_EQ(state.timelineMessage.find("animated values"), std::string::npos);
+  item("timeline/track//layers/0/params/a");
+  item("timeline/track//camera/azimuth_deg");
+  item("timeline/track//camera/azimuth_deg/holds");  // one key: it holds still
+  item("timeline/track//layers/0/params/a/holds");
+
+  // A second key at the end, after turning the camera: every animated value gets one there.
+  const auto& scrubber = item("timeline/time");
+  drag(scrubber.minX + 2, scrubber.centerY(), scrubber.maxX - scrubber.minX, 0);
+  state.scene.camera.azimuthDeg += 30.0;
+  frame();
+  click("timeline/Key");
+  EXPECT_NE(state.timelineMessage.find("camera azimuth deg"), std::string::npos) << state.timelineMessage;
+  EXPECT_NE(state.timelineMessage.find("at 0.50 s"), std::string::npos) << state.timelineMessage;
+  frame();
+  EXPECT_EQ(probe.items.count("timeline/track//camera/azimuth_deg/holds"), 0u) << "two keys: it moves";
+
+  // Play runs to the end and stops there with the loop off.
+  state.scene.animation.loop = false;
+  click("timeline/Play");  // at the end: starts over
+  EXPECT_LT(state.scene.animation.time, 0.1);
+  for (int i = 0; i < 120 && state.playing; ++i) frame();
+  EXPECT_FALSE(state.playing) << "played on past the end with the loop off";
+  EXPECT_DOUBLE_EQ(state.scene.animation.time, 0.5);
+  // With the loop on it goes round.
+  state.scene.animation.loop = true;
+  click("timeline/Play");
+  for (int i = 0; i < 60; ++i) frame();
+  EXPECT_TRUE(state.playing);
+  click("timeline/Pause");
+}
+
 TEST_F(ExplorerUi, KeyingAParameterAnimatesThePattern) {
   state.scene.animation.duration = 1.0;
   const double start = state.scene.layers[0].params[0];
