@@ -30,6 +30,10 @@
 
 namespace voxflame::app {
 
+// Puts a flame just imported from `path` in place of the pattern (openFile, flameChoiceWindow).
+void applyImportedFlame(ExplorerState& state, const std::filesystem::path& path,
+                        const core::FlameFileContents& contents, const core::Scene& scene);
+
 namespace {
 
 // The window backend fills io.KeysDown by GLFW key code; letters are their ASCII capitals.
@@ -595,19 +599,29 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
 
   // Palettes: a named one fills the stops; editing a stop makes the gradient custom.
   const char* current = color.palette.empty() ? "custom gradient" : color.palette.c_str();
-  if (ImGui::BeginCombo("palette", current)) {
-    for (const core::NamedPalette& palette : core::namedPalettes())
+  if (ImGui::BeginCombo("palette", current, ImGuiComboFlags_HeightLarge)) {
+    // Each choice with its gradient beside its name.
+    const float nameWidth = 7.0f * ImGui::GetFontSize();
+    for (const core::NamedPalette& palette : core::namedPalettes()) {
       if (ImGui::Selectable(palette.name.c_str(), palette.name == color.palette)) {
         color.palette = palette.name;
         color.gradient = core::paletteStops(palette.name);
       }
+      ImGui::SameLine(nameWidth);
+      gradientPreview(core::paletteStops(palette.name), std::max(20.0f, ImGui::GetContentRegionAvail().x),
+                      ImGui::GetTextLineHeight());
+    }
     ImGui::EndCombo();
   }
   probe(state, scope + "palette");
   gradientPreview(color.gradient, ImGui::CalcItemWidth(), ImGui::GetFrameHeight());
+  // A palette of many stops (a flame's 256 colours) shows as its strip; its stops open on demand.
+  const bool manyStops = color.gradient.size() > 16;
+  const bool stopsOpen = !manyStops || ImGui::TreeNode("stops", "edit the %zu stops", color.gradient.size());
+  if (manyStops) probe(state, scope + "edit stops");
   bool edited = false;
   int remove = -1;
-  for (std::size_t s = 0; s < color.gradient.size(); ++s) {
+  for (std::size_t s = 0; stopsOpen && s < color.gradient.size(); ++s) {
     core::GradientStop& stop = color.gradient[s];
     ImGui::PushID(static_cast<int>(s));
     const glm::vec3 srgb = core::linearToSrgb(stop.color);
@@ -624,11 +638,12 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
     if (color.gradient.size() > 1 && ImGui::SmallButton("x")) remove = static_cast<int>(s);
     ImGui::PopID();
   }
+  if (manyStops && stopsOpen) ImGui::TreePop();
   if (remove >= 0) {
     color.gradient.erase(color.gradient.begin() + remove);
     edited = true;
   }
-  if (button(state, scope, "Add stop") && color.gradient.size() < 16) {
+  if (!manyStops && button(state, scope, "Add stop") && color.gradient.size() < 16) {
     // A new stop goes into the widest gap, with the colour the gradient already has there.
     std::vector<core::GradientStop> sorted = color.gradient;
     std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.position < b.position; });
@@ -1554,6 +1569,56 @@ void recoveryWindow(ExplorerState& state, float scale) {
   ImGui::End();
 }
 
+// "Which flame?": the flames of a file opened with several, by name (filtered by words), to import
+// one; Escape or Cancel imports none.
+void flameChoiceWindow(ExplorerState& state, float scale) {
+  if (!state.flameChoice) return;
+  ExplorerState::FlameChoice& choice = *state.flameChoice;
+  constexpr const char* kTitle = "Which flame?";
+  if (!ImGui::IsPopupOpen(kTitle)) ImGui::OpenPopup(kTitle);
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.45f * io.DisplaySize.y), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(440 * scale, 0));
+  if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings)) return;
+  ImGui::TextWrapped("%s holds %zu flames. Import which one?", choice.path.filename().string().c_str(),
+                     choice.names.size());
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputTextWithHint("##flamefilter", "filter by name", choice.filter, sizeof choice.filter);
+  const std::string filter = lowercase(choice.filter);
+  std::optional<std::size_t> chosen;
+  ImGui::BeginChild("flames", ImVec2(0, std::min(12.0f, static_cast<float>(choice.names.size())) *
+                                                ImGui::GetTextLineHeightWithSpacing() +
+                                            8 * scale));
+  for (std::size_t i = 0; i < choice.names.size(); ++i) {
+    const std::string& name = choice.names[i];
+    if (!filter.empty() && lowercase(name).find(filter) == std::string::npos) continue;
+    std::string label = std::to_string(i + 1);
+    label += ". ";
+    label += name;
+    if (ImGui::Selectable(label.c_str())) chosen = i;
+    probe(state, "flame/" + name);
+  }
+  ImGui::EndChild();
+  const bool cancel = button(state, "flame/", "Cancel") || ImGui::IsKeyPressed(kKeyEscape, false);
+  if (chosen) {
+    try {
+      core::FlameImportOptions options;
+      options.index = *chosen;
+      core::Scene scene;
+      const core::FlameFileContents contents = importFlameScene(choice.path, state.scene, options, scene);
+      applyImportedFlame(state, choice.path, contents, scene);
+    } catch (const core::Error& e) {
+      state.notice = e.what();
+    }
+  }
+  if (chosen || cancel) {
+    state.flameChoice.reset();
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
 // Quitting with unsaved changes: save them (as the user's preset of the document's name), throw
 // them away, or stay. S, D and Escape answer from the keyboard.
 void quitPromptWindow(ExplorerState& state, float scale) {
@@ -1977,6 +2042,19 @@ void timelineWindow(ExplorerState& state, float scale) {
 
 }  // namespace
 
+void applyImportedFlame(ExplorerState& state, const std::filesystem::path& path,
+                        const core::FlameFileContents& contents, const core::Scene& scene) {
+  // A flame replaces the pattern and keeps the mesh and view: one undoable edit.
+  state.scene = scene;
+  state.notice.clear();
+  const std::string file = path.filename().string();
+  for (const std::string& warning : contents.flame.warnings) {
+    if (!state.notice.empty()) state.notice += '\n';
+    state.notice.append(file).append(": ").append(warning);
+  }
+  state.settings.addRecent(RecentKind::Preset, path);
+}
+
 bool hasUnsavedChanges(const ExplorerState& state) {
   return !(state.scene == state.savedScene);
 }
@@ -2017,14 +2095,17 @@ bool openFile(ExplorerState& state, const std::filesystem::path& path) {
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return std::tolower(c); });
     if (core::isFlameFilePath(path)) {
-      // A flame replaces the pattern and keeps the mesh and view: one undoable edit.
       core::Scene scene;
       const core::FlameFileContents contents = importFlameScene(path, state.scene, {}, scene);
-      state.scene = scene;
-      state.notice.clear();
-      for (const std::string& warning : contents.flame.warnings)
-        state.notice += (state.notice.empty() ? "" : "\n") + path.filename().string() + ": " + warning;
-      state.settings.addRecent(RecentKind::Preset, path);
+      // A file of several flames asks which one (flameChoiceWindow), as --index and --name do.
+      if (contents.names.size() > 1) {
+        state.flameChoice.emplace();
+        state.flameChoice->path = path;
+        state.flameChoice->names = contents.names;
+        state.notice.clear();
+        return true;
+      }
+      applyImportedFlame(state, path, contents, scene);
       return true;
     }
     const bool preset = extension == ".json" || extension == ".png";
@@ -2062,6 +2143,7 @@ void explorerUiFrame(ExplorerState& state) {
   timelineWindow(state, scale);
   recoveryWindow(state, scale);
   quitPromptWindow(state, scale);
+  flameChoiceWindow(state, scale);
   placeView(state, scale);
   drawExportFrame(state);
   statusBar(state, scale);

@@ -149,6 +149,14 @@ struct ExplorerState {
 
   bool showStats = false;  // the status line shows its technical figures (else as a tooltip)
 
+  // A flame file with several flames, opened: which one to import (the "Which flame?" list).
+  struct FlameChoice {
+    std::filesystem::path path;
+    std::vector<std::string> names;  // every flame of the file, in order
+    char filter[64] = "";
+  };
+  std::optional<FlameChoice> flameChoice;
+
   // The document as last opened or saved: quitting asks first while the scene differs from it.
   core::Scene savedScene;
   bool quitPrompt = false;     // the Save / Discard / Cancel prompt is open

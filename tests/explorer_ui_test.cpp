@@ -682,6 +682,40 @@ TEST_F(ExplorerUi, TheAttractorFilterPicksItsFirstMatchOnEnter) {
   EXPECT_STREQ(state.attractorFilter, "") << "the filter clears once it has picked";
 }
 
+// A flame file with several flames asks which one to import, by name, instead of taking the
+// first silently; Cancel imports none.
+TEST_F(ExplorerUi, OpeningAFileOfSeveralFlamesAsksWhichOne) {
+  const std::filesystem::path file = std::filesystem::path(VOXFLAME_TEST_FLAMES) /
+                                     "earthbound19__electric_sheep_genomes__electricsheep.242.01930.flam3";
+  const core::Scene before = state.scene;
+  ASSERT_TRUE(app::openFile(state, file)) << state.notice;
+  ASSERT_TRUE(state.flameChoice);
+  ASSERT_EQ(state.flameChoice->names.size(), 2u);
+  EXPECT_EQ(state.scene, before) << "nothing is imported before the choice";
+  frame(2);
+  click("flame/" + state.flameChoice->names[1]);
+  EXPECT_FALSE(state.flameChoice);
+  EXPECT_EQ(state.scene.layers[0].kind, core::PatternKind::Flame);
+  EXPECT_EQ(state.scene.name, "electricsheep.242.01826") << "the second flame, as chosen";
+  // Its 256-colour palette shows as one strip, its stops behind "edit the 256 stops".
+  frame(2);
+  ASSERT_GT(state.scene.layers[0].color.gradient.size(), 16u);
+  std::size_t stripsWithHiddenStops = 0, stopRows = 0;
+  for (const auto& [name, rect] : probe.items) {
+    stripsWithHiddenStops += name.ends_with("edit stops");
+    stopRows += name.starts_with("layer0/stop");
+  }
+  EXPECT_EQ(stripsWithHiddenStops, 1u);
+  EXPECT_EQ(stopRows, 0u) << "256 rows of stops";
+
+  ASSERT_TRUE(app::openFile(state, file));
+  frame(2);
+  const core::Scene imported = state.scene;
+  click("flame/Cancel");
+  EXPECT_FALSE(state.flameChoice);
+  EXPECT_EQ(state.scene, imported) << "Cancel imports nothing";
+}
+
 TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {
   app::Recoverable recoverable;
   core::Scene lost = core::defaultScene();
