@@ -348,6 +348,8 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
       options.count = 1;
       options.strength = strength;
       options.juliaView = layer.julia;
+      state.searchTried.reset();  // the flame and Julia searches count no tries
+      state.searchStrength.reset();
       state.searchMessage = "searching…";
       state.search.start([layer, options, fresh](std::stop_token stop) mutable {
         options.stop = stop;
@@ -382,20 +384,32 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
     options.seed = seed;
     options.count = 1;
     options.strength = strength;
+    // Nothing nearby: it widens by itself, a few hundred tries at each strength, before giving up.
+    options.widenTo = std::max(strength, 0.8);
+    options.maxCandidates = 200;
+    state.searchTried = std::make_shared<std::atomic<int>>(0);
+    state.searchStrength = std::make_shared<std::atomic<double>>(strength);
     state.searchMessage = "searching…";
-    state.search.start([layer, spec, options](std::stop_token stop) mutable {
+    state.search.start([layer, spec, options, tried = state.searchTried,
+                        strengthNow = state.searchStrength](std::stop_token stop) mutable {
       options.stop = stop;
+      options.tried = tried.get();
+      options.strengthNow = strengthNow.get();
       Outcome outcome;
       const auto results = core::searchChaos(spec, options);
       if (results.empty()) {
-        outcome.message = "no chaotic set found nearby; try a larger strength";
+        char text[160];
+        std::snprintf(text, sizeof text, "no chaotic set within strength %.2g–%.2g after %d tries", options.strength,
+                      options.widenTo, tried->load());
+        outcome.message = text;
         return outcome;
       }
       core::PatternLayer found = layer;
       found.params = results.front().params;
       outcome.found = found;
-      char text[96];
-      std::snprintf(text, sizeof text, "found: largest Lyapunov exponent %.3f", results.front().analysis.lyapunov[0]);
+      char text[128];
+      std::snprintf(text, sizeof text, "found: largest Lyapunov exponent %.3f (strength %.2g, %d tries)",
+                    results.front().analysis.lyapunov[0], strengthNow->load(), tried->load());
       outcome.message = text;
       return outcome;
     });
@@ -417,10 +431,15 @@ void collectSearch(ExplorerState& state) {
     }
     // The history keeps where the search started from, then each find; a find after going back
     // drops the forward part, as in a browser.
-    if (state.visited.empty()) state.visited.push_back(layer);
+    if (state.visited.empty()) {
+      state.visited.push_back(layer);
+      state.visitedMessages.assign(1, "where the search started");
+    }
     state.visited.resize(std::min(state.visited.size(), state.visitedIndex + 1));
+    state.visitedMessages.resize(state.visited.size());
     applyVisited(layer, *outcome.found);
     state.visited.push_back(layer);
+    state.visitedMessages.push_back(outcome.message);
     state.visitedIndex = state.visited.size() - 1;
   } catch (const core::Error& e) {
     state.searchMessage = e.what();
@@ -433,6 +452,9 @@ void goVisited(ExplorerState& state, int direction) {
   if (target < 0 || target >= static_cast<long long>(state.visited.size())) return;
   state.visitedIndex = static_cast<std::size_t>(target);
   applyVisited(state.scene.layers.front(), state.visited[state.visitedIndex]);
+  // The "found:" line is the one of the pattern now shown.
+  if (state.visitedIndex < state.visitedMessages.size())
+    state.searchMessage = state.visitedMessages[state.visitedIndex];
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -1271,9 +1293,18 @@ void patternWindow(ExplorerState& state, float scale) {
       dimText("no history yet");
     else
       dimText("%zu of %zu (Alt+Left/Right)", state.visitedIndex + 1, state.visited.size());
-    if (state.search.busy())
-      dimText("searching…");
-    else if (!state.searchMessage.empty())
+    if (state.search.busy()) {
+      if (state.searchTried && state.searchStrength)
+        dimText("searching at strength %.2g: %d tried", state.searchStrength->load(), state.searchTried->load());
+      else
+        dimText("searching…");
+      if (button(state, "explore/", "Cancel search")) {
+        state.search.cancel();
+        state.searchMessage = state.searchTried
+                                  ? "search cancelled after " + std::to_string(state.searchTried->load()) + " tries"
+                                  : std::string("search cancelled");
+      }
+    } else if (!state.searchMessage.empty())
       ImGui::TextWrapped("%s", state.searchMessage.c_str());
     if (!state.session.stats.problem.empty()) {
       ImGui::TextColored(kErrorColor, "This pattern escapes to infinity.");
@@ -2083,6 +2114,7 @@ void resetExplorerState(ExplorerState& state, const core::Scene& scene) {
   state.initialCamera = scene.camera;
   state.history.emplace(scene);
   state.visited.clear();
+  state.visitedMessages.clear();
   state.visitedIndex = 0;
   state.searchMessage.clear();
   state.analysedKey.clear();

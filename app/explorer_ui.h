@@ -8,6 +8,8 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <memory>
+#include <atomic>
 #include <map>
 #include <optional>
 #include <string>
@@ -110,6 +112,11 @@ struct ExplorerState {
   // entry is a whole layer, so it holds the kind and the genome or constant of chaos layers too.
   std::vector<core::PatternLayer> visited;
   std::size_t visitedIndex = 0;
+  std::vector<std::string> visitedMessages;  // what the search said of each, so it follows Back/Forward
+  // The running search's progress: candidates tried, and the strength it tries now (it widens by
+  // itself while it finds nothing).
+  std::shared_ptr<std::atomic<int>> searchTried;
+  std::shared_ptr<std::atomic<double>> searchStrength;
 
   // The Lyapunov spectrum of layer 0, analysed off the main thread whenever the pattern changes.
   BackgroundJob<core::OrbitAnalysis> analysis;

@@ -221,10 +221,35 @@ TEST_F(ExplorerUi, SearchFindsAChaoticSetAndTheHistoryGoesBackAndForward) {
   ASSERT_EQ(state.visited.size(), 2u) << state.searchMessage;
   const auto found = state.scene.layers[0].params;
   EXPECT_NE(found, start);
+  const std::string foundLine = state.searchMessage;
+  EXPECT_EQ(foundLine.rfind("found: ", 0), 0u) << foundLine;
+  EXPECT_NE(foundLine.find("tries"), std::string::npos) << "it says how many it tried";
   click("< Back");
   EXPECT_EQ(state.scene.layers[0].params, start);
+  EXPECT_EQ(state.searchMessage.rfind("found: ", 0), std::string::npos) << "the found line follows Back";
   click("Forward >");
   EXPECT_EQ(state.scene.layers[0].params, found);
+  EXPECT_EQ(state.searchMessage, foundLine) << "and Forward";
+}
+
+// A search shows what it has tried and can be cancelled: around a periodic Thomas nothing is
+// near, and it widens instead of running on in silence.
+TEST_F(ExplorerUi, ASearchShowsItsProgressAndCanBeCancelled) {
+  state.scene.layers[0].attractor = "thomas";
+  state.scene.layers[0].params = {0.32};
+  frame();
+  click("Search (F3)");
+  ASSERT_TRUE(state.search.busy());
+  for (int i = 0; i < 200 && state.searchTried->load() < 3; ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    frame();
+  }
+  EXPECT_GE(state.searchTried->load(), 3) << "its tries are counted";
+  frame();
+  click("explore/Cancel search");
+  EXPECT_FALSE(state.search.busy());
+  EXPECT_EQ(state.searchMessage.rfind("search cancelled after ", 0), 0u) << state.searchMessage;
+  EXPECT_DOUBLE_EQ(state.scene.layers[0].params[0], 0.32) << "nothing was applied";
 }
 
 TEST_F(ExplorerUi, OpeningFilesKeepsWorkSafe) {

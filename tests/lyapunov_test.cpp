@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <atomic>
+
 #include <cmath>
 #include <limits>
 
@@ -125,4 +127,32 @@ TEST(ChaosSearch, IsDeterministicPerSeedAndFindsChaoticVolumeFillingSets) {
   EXPECT_NE(other[0].params, first[0].params);
   options.strength = std::numeric_limits<double>::quiet_NaN();
   EXPECT_THROW(searchChaos(base, options), Error);
+}
+
+// Nothing chaotic near a periodic Thomas (b well above the onset of chaos at 0.208): the search
+// widens its strength by itself, reporting its tries and the strength, before giving up.
+TEST(ChaosSearch, WidensItsStrengthUntilItFindsChaos) {
+  const auto& info = attractorOrThrow("thomas");
+  OrbitSpec base = defaultOrbitSpec(info);
+  base.params = {0.32};
+  ASSERT_NE(analyseOrbit(base).verdict, OrbitVerdict::Chaotic);
+  SearchOptions options;
+  options.seed = 5;
+  options.count = 1;
+  options.strength = 0.05;
+  options.maxCandidates = 40;
+  std::atomic<int> tried{0};
+  std::atomic<double> strength{0.0};
+  options.tried = &tried;
+  options.strengthNow = &strength;
+  EXPECT_TRUE(searchChaos(base, options).empty()) << "a twentieth of the range holds no chaos";
+  EXPECT_EQ(tried.load(), 40);
+  tried = 0;
+  options.widenTo = 0.8;
+  const auto found = searchChaos(base, options);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_LT(found[0].params[0], 0.22);
+  EXPECT_GT(tried.load(), 40) << "it went on past the first strength";
+  EXPECT_GT(strength.load(), 0.1);
+  EXPECT_LE(strength.load(), 0.8);
 }

@@ -151,6 +151,7 @@ std::vector<SearchResult> searchChaos(const OrbitSpec& base, const SearchOptions
   if (!(options.strength > 0.0) || options.strength > 10.0) throw Error("the mutation strength must be in (0, 10]");
   if (options.count < 1 || options.count > 10'000) throw Error("the search count must be 1 to 10000");
   const AttractorInfo& info = *base.info;
+  if (options.strengthNow) options.strengthNow->store(options.strength);
   SplitMix64 rng(mixSeed(options.seed, 0x736561726368ULL));
   std::vector<SearchResult> found;
   for (int candidate = 0; candidate < options.maxCandidates && static_cast<int>(found.size()) < options.count &&
@@ -165,6 +166,7 @@ std::vector<SearchResult> searchChaos(const OrbitSpec& base, const SearchOptions
     // the parameters, and a nearby start often lands in the new one.
     const double jitter = (candidate % 2 == 0) ? 0.0 : 0.5;
     spec.start += jitter * glm::dvec3(rng.symmetric(), rng.symmetric(), rng.symmetric());
+    if (options.tried) options.tried->fetch_add(1, std::memory_order_relaxed);
     const OrbitAnalysis screen = analyseOrbit(spec, options.screen);
     if (screen.verdict != OrbitVerdict::Chaotic) continue;
     if (screen.smallestExtent() < options.minExtentRatio * screen.largestExtent()) continue;
@@ -172,6 +174,13 @@ std::vector<SearchResult> searchChaos(const OrbitSpec& base, const SearchOptions
     if (confirm.verdict != OrbitVerdict::Chaotic) continue;
     if (confirm.smallestExtent() < options.minExtentRatio * confirm.largestExtent()) continue;
     found.push_back({spec.params, spec.start, confirm});
+  }
+  if (found.empty() && options.widenTo > options.strength && !options.stop.stop_requested()) {
+    // Nothing this close: look further away.
+    SearchOptions wider = options;
+    wider.strength = std::min(options.widenTo, 2.0 * options.strength);
+    wider.seed = options.seed + 1;
+    return searchChaos(base, wider);
   }
   return found;
 }

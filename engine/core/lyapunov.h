@@ -6,6 +6,8 @@
 // the sets this verdict calls chaotic and volume-filling, as Sprott's and Chaoscope's searches do.
 #pragma once
 
+#include <atomic>
+
 #include <array>
 #include <cstdint>
 #include <stop_token>
@@ -70,6 +72,11 @@ struct SearchOptions {
   LyapunovOptions confirm{5'000, 40'000, 1e4};  // the full check a found set must pass
   double minExtentRatio = 0.05;                 // smallest box side over largest: rejects flat or thin sets
   std::stop_token stop;                         // a stop request ends the search early with what it found
+  // > strength: while nothing is found, the search starts over at twice the strength (a new
+  // seed), up to this, `maxCandidates` tries at each strength, before it gives up.
+  double widenTo = 0.0;
+  std::atomic<int>* tried = nullptr;           // counts the candidates as they are tried (progress), if set
+  std::atomic<double>* strengthNow = nullptr;  // the strength being tried now, if set
 };
 
 struct SearchResult {
