@@ -385,8 +385,8 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
     options.count = 1;
     options.strength = strength;
     // Nothing nearby: it widens by itself, a few hundred tries at each strength, before giving up.
-    options.widenTo = std::max(strength, 0.8);
-    options.maxCandidates = 200;
+    options.widenTo = std::max(strength, core::kSearchWidenTo);
+    options.maxCandidates = core::kSearchTriesPerStrength;
     state.searchTried = std::make_shared<std::atomic<int>>(0);
     state.searchStrength = std::make_shared<std::atomic<double>>(strength);
     state.searchMessage = "searching…";

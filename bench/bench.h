@@ -53,5 +53,6 @@ void benchQuality(const BenchOptions& options);     // bench_quality.cpp
 void benchFlame(const BenchOptions& options);       // bench_flame.cpp
 void benchRest(const BenchOptions& options);        // bench_rest.cpp
 void benchFidelity(const BenchOptions& options);    // bench_fidelity.cpp
+void benchSearch(const BenchOptions& options);      // bench_search.cpp
 
 }  // namespace voxflame::bench

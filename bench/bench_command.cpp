@@ -41,6 +41,10 @@ const std::vector<Benchmark>& benchmarks() {
        "against itself with another seed as the ceiling), ratio of mean luminance; flam3's test.flam3 and up to 19 "
        "corpus flames, or the flame files named",
        &benchFidelity},
+      {"search",
+       "the explorer's Search (F3) on each shipped attractor preset: seconds to the first chaotic candidate, tries "
+       "and the strength it widened to (goal: 5 s each)",
+       &benchSearch},
   };
   return table;
 }

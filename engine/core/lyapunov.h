@@ -63,6 +63,11 @@ OrbitAnalysis analyseOrbit(const OrbitSpec& spec, const LyapunovOptions& options
 // own units (per unit time for flows, per iteration for maps).
 double chaosThreshold(const AttractorInfo& info);
 
+// The explorer's search (and `bench search`'s): a few hundred tries at each strength, doubled
+// while nothing is found, up to this.
+inline constexpr double kSearchWidenTo = 0.8;
+inline constexpr int kSearchTriesPerStrength = 100;
+
 struct SearchOptions {
   std::uint64_t seed = 1;
   int count = 5;                                // parameter sets to find
