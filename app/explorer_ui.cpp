@@ -71,6 +71,29 @@ bool slider(ExplorerState& state, const std::string& scope, const char* label, d
   return changed;
 }
 
+// The JSON pointer of a panel value: a widget's scope names its object ("tone/", "camera/",
+// "layer2/" for /layers/2/), then the key.
+std::string valuePath(const std::string& scope, std::string_view key) {
+  if (scope.rfind("layer", 0) == 0 && scope.size() > 6 && std::isdigit(static_cast<unsigned char>(scope[5]))) {
+    const std::size_t slash = scope.find('/');
+    return "/layers/" + scope.substr(5, slash - 5) + "/" + std::string(key);
+  }
+  return "/" + scope + std::string(key);
+}
+
+// A value with keys on the Timeline carries a mark: a small key at the widget's top right corner.
+void markIfKeyed(ExplorerState& state, const std::string& path, const std::string& probeName) {
+  const auto& tracks = state.scene.keyframes;
+  if (std::none_of(tracks.begin(), tracks.end(), [&](const core::KeyframeTrack& t) { return t.path == path; })) return;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  const float size = 0.22f * (max.y - min.y);
+  const ImVec2 centre(max.x - size - 1.0f, min.y + size + 1.0f);
+  ImGui::GetWindowDrawList()->AddQuadFilled(ImVec2(centre.x, centre.y - size), ImVec2(centre.x + size, centre.y),
+                                            ImVec2(centre.x, centre.y + size), ImVec2(centre.x - size, centre.y),
+                                            IM_COL32(255, 190, 90, 255));
+  probe(state, probeName + "/keyed");
+}
+
 // The widget of one schema field (core/scene_schema.h): its label, slider range, format and help
 // come from the table. Sliders always clamp, Ctrl+click typing included, and every table's slider
 // range lies inside what the reader allows, so no value made here is one a preset refuses.
@@ -125,6 +148,7 @@ bool fieldWidget(ExplorerState& state, const std::string& scope, Owner& owner, c
       f.member);
   const std::string probed = probeName ? std::string(probeName) : scope + label;
   probe(state, probed);
+  markIfKeyed(state, valuePath(scope, key), probed);
   // Right-click: back to the default, as the pattern sliders do (a default-made owner holds it).
   bool reset = false;
   // A named popup: the last item of some widgets (a colour editor's label) has no id of its own.
@@ -1142,6 +1166,7 @@ void attractorEditor(ExplorerState& state, const std::string& scope, core::Patte
     if (slider(state, scope, param.name.c_str(), layer.params[p], param.sliderMin, param.sliderMax, 0, "%.4f"))
       layer.params[p] =
           std::isfinite(layer.params[p]) ? std::clamp(layer.params[p], -kParamLimit, kParamLimit) : param.defaultValue;
+    markIfKeyed(state, valuePath(scope, "params/" + param.name), scope + param.name);
     if (ImGui::BeginPopupContextItem()) {
       if (ImGui::Selectable("Reset to default")) layer.params[p] = param.defaultValue;
       ImGui::EndPopup();

@@ -440,6 +440,11 @@ TEST_F(ExplorerUi, TheTimelineListsItsTracksAndPlayStopsAtTheEnd) {
   frame();
   EXPECT_EQ(probe.items.count("timeline/track//camera/azimuth_deg/holds"), 0u) << "two keys: it moves";
 
+  // Keyed values carry a mark on their sliders.
+  item("layer0/a/keyed");
+  EXPECT_EQ(probe.items.count("layer0/b/keyed"), 0u) << "b has no keys";
+  EXPECT_EQ(probe.items.count("tone/gamma/keyed"), 0u);
+
   // Play runs to the end and stops there with the loop off.
   state.scene.animation.loop = false;
   click("timeline/Play");  // at the end: starts over
