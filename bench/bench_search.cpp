@@ -15,6 +15,31 @@
 
 namespace voxflame::bench {
 
+namespace {
+
+// The explorer's search from `spec`, as the panel runs it: whether it found a chaotic set, in
+// how many seconds, after how many tries, at what strength.
+nlohmann::json timeSearch(const core::OrbitSpec& spec) {
+  core::SearchOptions search;
+  search.seed = 1;
+  search.count = 1;
+  search.strength = 0.1;
+  search.widenTo = core::kSearchWidenTo;
+  search.maxCandidates = core::kSearchTriesPerStrength;
+  std::atomic<int> tried{0};
+  std::atomic<double> strength{0.0};
+  search.tried = &tried;
+  search.strengthNow = &strength;
+  const auto start = std::chrono::steady_clock::now();
+  const bool found = !core::searchChaos(spec, search).empty();
+  return {{"found", found},
+          {"seconds_to_first_chaotic", secondsSince(start)},
+          {"tried", tried.load()},
+          {"strength", strength.load()}};
+}
+
+}  // namespace
+
 void benchSearch(const BenchOptions& options) {
   std::vector<std::filesystem::path> presets;
   for (const auto& entry : std::filesystem::directory_iterator(app::findShippedPresetFolder()))
@@ -22,6 +47,14 @@ void benchSearch(const BenchOptions& options) {
   std::sort(presets.begin(), presets.end());
   double worst = 0.0;
   int searched = 0, foundCount = 0;
+  auto run = [&](const std::string& name, const std::string& attractor, const core::OrbitSpec& spec) {
+    nlohmann::json measurement = {{"bench", "search"}, {"preset", name}, {"attractor", attractor}};
+    measurement.update(timeSearch(spec));
+    worst = std::max(worst, measurement["seconds_to_first_chaotic"].get<double>());
+    foundCount += measurement["found"].get<bool>();
+    ++searched;
+    report(options, measurement);
+  };
   for (const std::filesystem::path& path : presets) {
     const core::Scene scene = core::loadScene(path);
     if (scene.layers.empty() || scene.layers.front().kind != core::PatternKind::Attractor) continue;
@@ -30,59 +63,15 @@ void benchSearch(const BenchOptions& options) {
     spec.params = layer.params;
     spec.integrator = layer.integrator;
     spec.step = layer.step;
-    core::SearchOptions search;
-    search.seed = 1;
-    search.count = 1;
-    search.strength = 0.1;
-    search.widenTo = core::kSearchWidenTo;
-    search.maxCandidates = core::kSearchTriesPerStrength;
-    std::atomic<int> tried{0};
-    std::atomic<double> strength{0.0};
-    search.tried = &tried;
-    search.strengthNow = &strength;
-    const auto start = std::chrono::steady_clock::now();
-    const bool found = !core::searchChaos(spec, search).empty();
-    const double seconds = secondsSince(start);
-    worst = std::max(worst, seconds);
-    ++searched;
-    foundCount += found;
-    report(options, {{"bench", "search"},
-                     {"preset", path.stem().string()},
-                     {"attractor", layer.attractor},
-                     {"found", found},
-                     {"seconds_to_first_chaotic", seconds},
-                     {"tried", tried.load()},
-                     {"strength", strength.load()}});
+    run(path.stem().string(), layer.attractor, spec);
   }
   // The hard case: a periodic Thomas (b above the onset of chaos at 0.208), where nothing chaotic
   // lies near and the search must widen.
-  {
-    core::OrbitSpec spec = core::defaultOrbitSpec(core::attractorOrThrow("thomas"));
-    spec.params = {0.32};
-    core::SearchOptions search;
-    search.seed = 1;
-    search.count = 1;
-    search.strength = 0.1;
-    search.widenTo = core::kSearchWidenTo;
-    search.maxCandidates = core::kSearchTriesPerStrength;
-    std::atomic<int> tried{0};
-    std::atomic<double> strength{0.0};
-    search.tried = &tried;
-    search.strengthNow = &strength;
-    const auto start = std::chrono::steady_clock::now();
-    const bool found = !core::searchChaos(spec, search).empty();
-    const double seconds = secondsSince(start);
-    worst = std::max(worst, seconds);
-    report(options, {{"bench", "search"},
-                     {"preset", "periodic thomas (b = 0.32)"},
-                     {"attractor", "thomas"},
-                     {"found", found},
-                     {"seconds_to_first_chaotic", seconds},
-                     {"tried", tried.load()},
-                     {"strength", strength.load()}});
-  }
+  core::OrbitSpec periodic = core::defaultOrbitSpec(core::attractorOrThrow("thomas"));
+  periodic.params = {0.32};
+  run("periodic thomas (b = 0.32)", "thomas", periodic);
   report(options, {{"bench", "search"},
-                   {"presets", searched},
+                   {"searches", searched},
                    {"found", foundCount},
                    {"worst_seconds", worst},
                    {"goal_seconds", 5.0}});
