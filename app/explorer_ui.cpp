@@ -1554,7 +1554,6 @@ void exportSection(ExplorerState& state) {
   if (button(state, "export/", "Export now")) {  // not "Export": the header above has that id
     ExportRequest request;
     request.scene = state.scene;
-    request.scene.camera = exportCamera(state, settings.width, settings.height);
     request.settings = settings;
     request.output = withExtensionFor(state.exportPath, settings.format);
     request.executable = state.executable;
@@ -2122,10 +2121,12 @@ void askToQuit(ExplorerState& state) {
     state.requests.quit = true;
 }
 
-core::CameraSettings exportCamera(const ExplorerState& state, int width, int height) {
-  if (state.viewRect.z <= 0 || state.viewRect.w <= 0 || width <= 0 || height <= 0) return state.scene.camera;
-  return core::cameraForFrame(state.scene.camera, static_cast<double>(state.viewRect.z) / state.viewRect.w,
-                              static_cast<double>(width) / height);
+core::CameraSettings viewCamera(const ExplorerState& state) {
+  const ExportSettings& exported = state.settings.lastExport;
+  if (state.viewRect.z <= 0 || state.viewRect.w <= 0 || exported.width <= 0 || exported.height <= 0)
+    return state.scene.camera;
+  return core::viewCameraFor(state.scene.camera, static_cast<double>(state.viewRect.z) / state.viewRect.w,
+                             static_cast<double>(exported.width) / exported.height);
 }
 
 std::string windowTitle(const ExplorerState& state) {

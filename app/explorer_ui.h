@@ -146,7 +146,7 @@ struct ExplorerState {
 
   // Where the picture goes: the space between the docked panels, in framebuffer pixels (x, y from
   // the bottom, width, height), set by each UI frame; empty: the whole framebuffer. The live view
-  // frames its camera to it, and an export's framing is the view's (exportCamera).
+  // frames its camera to it, widened to hold all of the export's picture (viewCamera).
   glm::ivec4 viewRect{0};
   // The docked panels' edges in window coordinates, from this frame's panels: the Pattern panel's
   // right edge, the Scene panel's left one, the Timeline's top.
@@ -204,9 +204,10 @@ void askToQuit(ExplorerState& state);
 // "voxflame — NAME", with a mark while changes are unsaved.
 std::string windowTitle(const ExplorerState& state);
 
-// The camera an export of width × height uses: the view's own, framed to what the export frame in
-// the view shows (core::cameraForFrame).
-core::CameraSettings exportCamera(const ExplorerState& state, int width, int height);
+// The camera the view shows the scene with: the scene's, widened when the export's picture is
+// wider than the view so that all of it shows, inside the export frame (core::viewCameraFor). An
+// export uses the scene's camera itself, as `voxflame render` does.
+core::CameraSettings viewCamera(const ExplorerState& state);
 
 // Opens a preset, a voxflame PNG (a fresh scene and history) or a mesh (the pattern stays; one
 // undoable edit) and puts it first in the recent files. On failure the scene is untouched and

@@ -320,15 +320,17 @@ LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int frameb
   bool changed = false;
   if (grid && renderer_.hasVolume()) {
     gl::RenderSettings settings;
-    settings.camera =
-        core::orbitCamera(state.scene.camera, grid->box(), static_cast<double>(width) / static_cast<double>(height));
+    // The scene's camera, widened to hold the export's whole picture (viewCamera).
+    const core::CameraSettings camera = viewCamera(state);
+    settings.camera = core::orbitCamera(camera, grid->box(), static_cast<double>(width) / static_cast<double>(height));
     settings.tone = state.scene.tone;
     settings.render = state.scene.render;
     // Anything that changes what a ray sees restarts the sample average (the schema's "view"
     // class: camera, opacity, mesh display, lighting ...); tone alone only changes the resolve and
     // layers change the volume, which restarts it when the new generation arrives.
-    const bool viewChanged =
-        !lastView_ || core::diff(*lastView_, state.scene).view() || width != lastWidth_ || height != lastHeight_;
+    const bool viewChanged = !lastView_ || core::diff(*lastView_, state.scene).view() || width != lastWidth_ ||
+                             height != lastHeight_ || camera.fovDeg != lastFieldDeg_ ||
+                             camera.orthoHeight != lastOrthoHeight_;
     // While the view or the pattern moves, fewer pixels keep the frame within its budget; a still
     // view refines at the scale the user chose.
     budget_.setBudget(state.frameBudgetMs);
@@ -355,6 +357,8 @@ LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int frameb
       lastView_ = state.scene;
       lastWidth_ = width;
       lastHeight_ = height;
+      lastFieldDeg_ = camera.fovDeg;
+      lastOrthoHeight_ = camera.orthoHeight;
       lastRenderScale_ = scale;
     }
     // A main grid half of one pattern and half of another is not drawn: the last picture stays

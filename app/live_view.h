@@ -139,6 +139,7 @@ class LiveView {
   // What a ray sees besides the volume: when it changes, the sample average starts over.
   std::optional<core::Scene> lastView_;
   int lastWidth_ = 0, lastHeight_ = 0;
+  double lastFieldDeg_ = 0.0, lastOrthoHeight_ = 0.0;  // the view camera's field, widened for the export (viewCamera)
   float lastRenderScale_ = 0.0f;
 
   // The march scale follows the frame budget while something changes.

@@ -447,70 +447,66 @@ double intersectionOverUnion(const std::vector<bool>& a, const std::vector<bool>
   return either ? static_cast<double>(both) / static_cast<double>(either) : 0.0;
 }
 
-// An export uses the view's camera exactly (zoomed with the wheel, panned): at the view's size its
-// lit area is the view's, and at a wider aspect it is what the export frame in the view shows.
+// An export uses the scene's camera exactly (zoomed with the wheel, panned), as the view shows it:
+// at the view's size its lit area is the view's, and a wider picture is what the thin frame in
+// the view holds (the view widens its field so the whole picture shows within it).
 TEST_F(LiveViewTest, AnExportFramesWhatTheViewShows) {
   state.scene.camera.distance *= 0.8;  // what the wheel does
   state.scene.camera.target = glm::dvec3(0.08, -0.05, 0.0);
   state.viewRect = glm::ivec4(24, 12, 112, 72);  // the space the docked panels leave
+  const glm::ivec4 rect = state.viewRect;
   app::LiveView view(session, nullptr, nullptr);
+  // The view's refined picture for an export of width × height, as lit pixels (rows top down).
+  auto viewLit = [&](int width, int height) {
+    state.settings.lastExport.width = width;
+    state.settings.lastExport.height = height;
+    for (int i = 0; i < 3; ++i) frame(view);
+    refineAtFullScale(view);
+    for (int i = 0; i < 60; ++i) frame(view);
+    const std::vector<std::uint8_t> shown =
+        gl::readRgba8(canvas.framebuffer(), {rect.x, rect.y, rect.z, rect.w}, gl::ReadAlpha::Opaque);
+    return litFromReadBack(shown, rect.z, rect.w, 30);
+  };
+  auto exportedLit = [&](int width, int height, int rows, int columns, double step) {
+    app::StillOptions options;
+    options.width = width;
+    options.height = height;
+    options.points = 4'000'000;
+    const core::ImageRGBA image = app::renderStill(state.scene, options).image;
+    std::vector<bool> lit(static_cast<std::size_t>(columns) * rows);
+    for (int y = 0; y < rows; ++y)
+      for (int x = 0; x < columns; ++x) {
+        const float* p = image.at(std::min(image.width - 1, static_cast<int>((x + 0.5) * step)),
+                                  std::min(image.height - 1, static_cast<int>((y + 0.5) * step)));
+        lit[static_cast<std::size_t>(y) * columns + x] = 255.0f * std::max({p[0], p[1], p[2]}) > 30.0f;
+      }
+    return lit;
+  };
   ASSERT_TRUE(runUntilShown(view));
   while (!session.status().resting || session.status().stats.points < 2'000'000) {
     frame(view);
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     if (session.status().stats.points > 20'000'000) break;
   }
-  refineAtFullScale(view);
-  for (int i = 0; i < 60; ++i) frame(view);
-  const glm::ivec4 rect = state.viewRect;
-  const std::vector<std::uint8_t> shown =
-      gl::readRgba8(canvas.framebuffer(), {rect.x, rect.y, rect.z, rect.w}, gl::ReadAlpha::Opaque);
-  const std::vector<bool> viewLit = litFromReadBack(shown, rect.z, rect.w, 30);
 
-  auto exported = [&](int width, int height) {
-    core::Scene scene = state.scene;
-    scene.camera = app::exportCamera(state, width, height);
-    app::StillOptions options;
-    options.width = width;
-    options.height = height;
-    options.points = 4'000'000;
-    return app::renderStill(scene, options).image;
-  };
-  auto litOf = [](const core::ImageRGBA& image, int x0, int y0, int width, int height, double step) {
-    std::vector<bool> lit(static_cast<std::size_t>(width) * height);
-    for (int y = 0; y < height; ++y)
-      for (int x = 0; x < width; ++x) {
-        const float* p = image.at(std::min(image.width - 1, static_cast<int>((x - x0 + 0.5) * step)),
-                                  std::min(image.height - 1, static_cast<int>((y - y0 + 0.5) * step)));
-        lit[static_cast<std::size_t>(y) * width + x] = 255.0f * std::max({p[0], p[1], p[2]}) > 30.0f;
-      }
-    return lit;
-  };
-  const core::ImageRGBA same = exported(rect.z, rect.w);
-  if (const char* folder = std::getenv("VOXFLAME_TEST_IMAGES")) {
-    core::ImageRGBA picture = same;
-    for (int y = 0; y < rect.w; ++y)
-      for (int x = 0; x < rect.z; ++x)
-        for (int c = 0; c < 4; ++c)
-          picture.at(x, y)[c] = shown[4 * (static_cast<std::size_t>(y) * rect.z + x) + c] / 255.0f;
-    core::writePng(std::filesystem::path(folder) / "export-framing-view.png", picture, 8, {});
-    core::writePng(std::filesystem::path(folder) / "export-framing-still.png", same, 8, {});
-  }
-  const double sameIou = intersectionOverUnion(viewLit, litOf(same, 0, 0, rect.z, rect.w, 1.0));
-  EXPECT_GE(sameIou, 0.95) << "an export at the view's size frames another picture";
+  // The view's pictures first: a still render makes a GL context of its own current.
+  const std::vector<bool> same = viewLit(rect.z, rect.w);
+  const std::vector<bool> wideView = viewLit(2 * rect.z, rect.z);  // twice as wide as high
+  std::size_t litCount = 0;
+  for (bool lit : same) litCount += lit;
+  EXPECT_GT(litCount, same.size() / 10) << "the view shows the pattern";
+  EXPECT_GE(intersectionOverUnion(same, exportedLit(rect.z, rect.w, rect.w, rect.z, 1.0)), 0.95)
+      << "an export at the view's size frames another picture";
 
-  // Twice as wide as high: the frame spans the view's width and its middle rows.
-  const core::ImageRGBA wide = exported(2 * rect.z, rect.z);
+  // The wide picture's frame spans the view's width and its middle rows.
   const glm::dvec4 frameRect = core::exportFrame(glm::dvec2(rect.z, rect.w), 2.0);
   const int top = static_cast<int>(std::lround(rect.w - frameRect.y - frameRect.w));
   const int rows = static_cast<int>(std::lround(frameRect.w));
-  std::vector<bool> viewFramed, wideLit = litOf(wide, 0, 0, rect.z, rows, 2.0);
+  std::vector<bool> framed;
   for (int y = top; y < top + rows; ++y)
-    for (int x = 0; x < rect.z; ++x) viewFramed.push_back(viewLit[static_cast<std::size_t>(y) * rect.z + x]);
-  EXPECT_GE(intersectionOverUnion(viewFramed, wideLit), 0.9) << "a wider export shows what its frame in the view shows";
-  std::size_t litCount = 0;
-  for (bool lit : viewLit) litCount += lit;
-  EXPECT_GT(litCount, viewLit.size() / 10) << "the view shows the pattern";
+    for (int x = 0; x < rect.z; ++x) framed.push_back(wideView[static_cast<std::size_t>(y) * rect.z + x]);
+  EXPECT_GE(intersectionOverUnion(framed, exportedLit(2 * rect.z, rect.z, rows, rect.z, 2.0)), 0.9)
+      << "a wider export shows what its frame in the view shows";
 }
 
 }  // namespace

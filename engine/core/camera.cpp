@@ -46,13 +46,13 @@ CameraFrame orbitCamera(const CameraSettings& settings, const Box& box, double a
   return frame;
 }
 
-CameraSettings cameraForFrame(const CameraSettings& settings, double viewAspect, double aspect) {
-  CameraSettings framed = settings;
-  if (!(viewAspect > 0.0) || !(aspect > viewAspect)) return framed;
-  const double shrink = viewAspect / aspect;  // the frame's height as a share of the view's
-  framed.fovDeg = glm::degrees(2.0 * std::atan(std::tan(0.5 * glm::radians(settings.fovDeg)) * shrink));
-  framed.orthoHeight = settings.orthoHeight * shrink;
-  return framed;
+CameraSettings viewCameraFor(const CameraSettings& settings, double viewAspect, double aspect) {
+  CameraSettings view = settings;
+  if (!(viewAspect > 0.0) || !(aspect > viewAspect)) return view;
+  const double grow = aspect / viewAspect;  // the view's height over the picture's
+  view.fovDeg = std::min(179.0, glm::degrees(2.0 * std::atan(std::tan(0.5 * glm::radians(settings.fovDeg)) * grow)));
+  view.orthoHeight = settings.orthoHeight * grow;
+  return view;
 }
 
 glm::dvec4 exportFrame(glm::dvec2 viewSize, double aspect) {

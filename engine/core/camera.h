@@ -28,10 +28,11 @@ struct CameraFrame {
 // The frame for a camera orbiting `box` (in world units), for an image of the given aspect.
 CameraFrame orbitCamera(const CameraSettings& settings, const Box& box, double aspect);
 
-// The camera that shows, at `aspect`, the largest rectangle of that aspect centred in a view of
-// `viewAspect` (exportFrame): a wider picture than the view narrows the vertical field (or the
-// orthographic height) so its width is the view's; a narrower one keeps the view's height.
-CameraSettings cameraForFrame(const CameraSettings& settings, double viewAspect, double aspect);
+// The camera of a view of `viewAspect` that shows all of what `settings` shows at `aspect`, as
+// the rectangle exportFrame() gives: a picture wider than the view widens the view's vertical
+// field (or its orthographic height) so the picture's width is the view's; a narrower one
+// keeps the view's height, the same field.
+CameraSettings viewCameraFor(const CameraSettings& settings, double viewAspect, double aspect);
 
 // That rectangle within a view of `viewSize`: x, y (from the bottom), width, height.
 glm::dvec4 exportFrame(glm::dvec2 viewSize, double aspect);
