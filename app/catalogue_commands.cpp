@@ -58,11 +58,7 @@ core::OrbitSpec specFromArguments(const OrbitArguments& arguments) {
     spec = core::defaultOrbitSpec(core::attractorOrThrow(*arguments.attractor));
   } else if (arguments.preset) {
     const core::Scene scene = sceneFromArgument(arguments.preset);
-    const core::PatternLayer& layer = scene.layers.front();
-    spec = core::defaultOrbitSpec(core::attractorOrThrow(layer.attractor));
-    spec.params = layer.params;
-    spec.integrator = layer.integrator;
-    spec.step = layer.step;
+    spec = core::orbitSpecOf(scene.layers.front());
   } else {
     throw UsageError("name a preset or an attractor (--attractor ID; `voxflame list` shows them)");
   }

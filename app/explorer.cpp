@@ -339,10 +339,13 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
 
       if (state.requests.quit) glfwSetWindowShouldClose(window, GLFW_TRUE);
       // The title follows the document: its name (after an open, a save-as, an undo) and whether
-      // it has unsaved changes.
-      if (std::string now = windowTitle(state); now != title) {
-        title = std::move(now);
-        glfwSetWindowTitle(window, title.c_str());
+      // it has unsaved changes. Not while a widget or the view is held: a drag's frames would
+      // each compare the whole scene, and its edit is one step anyway.
+      if (!state.interacting && !ImGui::IsAnyItemActive()) {
+        if (std::string now = windowTitle(state); now != title) {
+          title = std::move(now);
+          glfwSetWindowTitle(window, title.c_str());
+        }
       }
       if (state.requests.open) openFile(state, *state.requests.open);
       if (autosave) autosave->update(state.scene);

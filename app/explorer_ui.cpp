@@ -192,14 +192,6 @@ bool keyDown(int key) {
   return key >= 0 && key < IM_ARRAYSIZE(ImGui::GetIO().KeysDown) && ImGui::GetIO().KeysDown[key];
 }
 
-core::OrbitSpec layerSpec(const core::PatternLayer& layer) {
-  core::OrbitSpec spec = core::defaultOrbitSpec(core::attractorOrThrow(layer.attractor));
-  spec.params = layer.params;
-  spec.integrator = layer.integrator;
-  spec.step = layer.step;
-  return spec;
-}
-
 // ---------------------------------------------------------------------------------------------
 // The flat view: rendered off the main thread when what it shows changed, drawn behind the panels.
 namespace {
@@ -326,7 +318,7 @@ void updateAnalysis(ExplorerState& state) {
   if (key == state.analysedKey) return;
   state.analysedKey = key;
   try {
-    const core::OrbitSpec spec = layerSpec(state.scene.layers.front());
+    const core::OrbitSpec spec = core::orbitSpecOf(state.scene.layers.front());
     core::LyapunovOptions options;
     options.steps = 20'000;
     state.analysis.start([spec, options](std::stop_token) { return core::analyseOrbit(spec, options); });
@@ -403,7 +395,7 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
       });
       return;
     }
-    const core::OrbitSpec spec = layerSpec(layer);
+    const core::OrbitSpec spec = core::orbitSpecOf(layer);
     core::SearchOptions options;
     options.seed = seed;
     options.count = 1;

@@ -58,12 +58,7 @@ void benchSearch(const BenchOptions& options) {
   for (const std::filesystem::path& path : presets) {
     const core::Scene scene = core::loadScene(path);
     if (scene.layers.empty() || scene.layers.front().kind != core::PatternKind::Attractor) continue;
-    const core::PatternLayer& layer = scene.layers.front();
-    core::OrbitSpec spec = core::defaultOrbitSpec(core::attractorOrThrow(layer.attractor));
-    spec.params = layer.params;
-    spec.integrator = layer.integrator;
-    spec.step = layer.step;
-    run(path.stem().string(), layer.attractor, spec);
+    run(path.stem().string(), scene.layers.front().attractor, core::orbitSpecOf(scene.layers.front()));
   }
   // The hard case: a periodic Thomas (b above the onset of chaos at 0.208), where nothing chaotic
   // lies near and the search must widen.

@@ -15,6 +15,14 @@ OrbitSpec defaultOrbitSpec(const AttractorInfo& info) {
   return {&info, info.defaultParams(), info.defaultIntegrator, info.defaultStep, info.start};
 }
 
+OrbitSpec orbitSpecOf(const PatternLayer& layer) {
+  OrbitSpec spec = defaultOrbitSpec(attractorOrThrow(layer.attractor));
+  spec.params = layer.params;
+  spec.integrator = layer.integrator;
+  spec.step = layer.step;
+  return spec;
+}
+
 void validateOrbitSpec(const OrbitSpec& spec) {
   if (!spec.info) throw Error("no attractor given");
   const AttractorInfo& info = *spec.info;

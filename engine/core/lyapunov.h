@@ -17,6 +17,7 @@
 #include <glm/vec3.hpp>
 
 #include "attractor.h"
+#include "scene.h"
 
 namespace voxflame::core {
 
@@ -31,6 +32,8 @@ struct OrbitSpec {
 
 // The spec of an attractor's defaults (its own integrator, step and start).
 OrbitSpec defaultOrbitSpec(const AttractorInfo& info);
+// An attractor layer's orbit: its attractor's default start, its parameters, integrator and step.
+OrbitSpec orbitSpecOf(const PatternLayer& layer);
 
 // Refuses (core::Error) parameters of the wrong count, NaN or infinite values, and steps that are
 // not finite or outside (0, 1].
