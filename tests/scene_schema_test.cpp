@@ -407,7 +407,7 @@ TEST(SchemaDocument, CommittedFileIsWhatTheTablesGenerate) {
   std::ostringstream committed;
   committed << in.rdbuf();
   EXPECT_TRUE(committed.str() == generated)
-      << file << " differs from what the schema tables (engine/core/scene_schema.cpp) and the prose of "
+      << file << " differs from what the schema tables (engine/core/scene_schema_tables.cpp) and the prose of "
       << "engine/core/scene_schema_doc.cpp generate. Edit those, not the file, then regenerate it:\n"
       << "  VOXFLAME_UPDATE_SCHEMA=1 ctest --test-dir build -R SchemaDocument\n";
   // Every key of the tables is documented.

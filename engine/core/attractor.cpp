@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "cpu_features.h"
+#include "enum_names.h"
 #include "error.h"
 #include "vector_math.h"
 
@@ -13,13 +14,14 @@ std::string_view toString(AttractorKind kind) {
   return kind == AttractorKind::Map ? "map" : "flow";
 }
 std::string_view toString(Integrator integrator) {
-  return integrator == Integrator::RK4 ? "rk4" : "euler";
+  return enumName(kIntegratorNames, integrator);
 }
 
 Integrator integratorFromString(std::string_view name) {
-  if (name == "euler") return Integrator::Euler;
-  if (name == "rk4") return Integrator::RK4;
-  throw Error("unknown integrator '" + std::string(name) + "' (expected 'euler' or 'rk4')");
+  if (const std::optional<Integrator> integrator = enumFromName<Integrator>(kIntegratorNames, name)) return *integrator;
+  std::string message = "unknown integrator '";
+  message.append(name).append("' (expected ").append(quotedChoices(kIntegratorNames)).append(")");
+  throw Error(message);
 }
 
 std::vector<double> AttractorInfo::defaultParams() const {

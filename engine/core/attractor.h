@@ -20,10 +20,15 @@ namespace voxflame::core {
 
 enum class AttractorKind { Map, Flow };
 enum class Integrator { Euler, RK4 };
+inline constexpr std::string_view kIntegratorNames[] = {"euler", "rk4"};
 
 std::string_view toString(AttractorKind kind);
 std::string_view toString(Integrator integrator);
 Integrator integratorFromString(std::string_view name);  // throws core::Error on unknown names
+
+// The largest magnitude a preset may give an attractor's parameter, far beyond any slider: the
+// preset reader and the keyframe addressing both refuse beyond it.
+inline constexpr double kAttractorParameterLimit = 1e6;
 
 struct ParamInfo {
   std::string name;

@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -91,6 +92,7 @@ enum class QuaternionView {
   Project,  // drop the fourth coordinate after a turn by `turnDeg` in the (z, w) plane
   Slice,    // keep points within `thickness` of the hyperplane w = `sliceW` (after the same turn)
 };
+inline constexpr std::string_view kQuaternionViewNames[] = {"project", "slice"};
 
 struct QuaternionJuliaSettings {
   glm::dvec4 c{-0.2, 0.8, 0.0, 0.0};  // the constant: 1, i, j, k components

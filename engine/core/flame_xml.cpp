@@ -1200,11 +1200,13 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
   flame.name = name;
   FlameSymmetry symmetry;
   if (const pugi::xml_attribute kind = node.attribute("symmetry"))
-    symmetry = symmetryOfKind(reader.number(kind, "", -1e6, 1e6), reader);
+    symmetry = symmetryOfKind(reader.number(kind, "", -kFlameCoefficientLimit, kFlameCoefficientLimit), reader);
   if (const pugi::xml_node element = node.child("symmetry")) {
     if (!element.attribute("kind"))
       reader.fail("", "<symmetry> needs a kind attribute (flam3: N-fold, negative adds a mirror)");
-    symmetry = symmetryOfKind(reader.number(element.attribute("kind"), "<symmetry>", -1e6, 1e6), reader);
+    symmetry = symmetryOfKind(
+        reader.number(element.attribute("kind"), "<symmetry>", -kFlameCoefficientLimit, kFlameCoefficientLimit),
+        reader);
   }
   const auto finishGenome = [&](FlameGenome& genome, const std::string& context) {
     genome.symmetry = symmetry;

@@ -1,5 +1,6 @@
 #include "scene.h"
 
+#include "enum_names.h"
 #include "error.h"
 
 namespace voxflame::core {
@@ -10,52 +11,37 @@ std::filesystem::path Scene::resolvedMeshPath() const {
   return baseDirectory / mesh;
 }
 
+namespace {
+
+// `name` as an enumerator of the table, or core::Error "is 'NAME'; the known NOUNS are: a, b, c".
+template <class Enum>
+Enum fromNameOrThrow(std::span<const std::string_view> names, std::string_view name, std::string_view nouns) {
+  if (const std::optional<Enum> value = enumFromName<Enum>(names, name)) return *value;
+  std::string message = "is '";
+  message.append(name).append("'; the known ").append(nouns).append(" are: ").append(joinedNames(names));
+  throw Error(message);
+}
+
+}  // namespace
+
 std::string_view toString(RenderMethod method) {
-  return method == RenderMethod::Points ? "points" : "volume";
+  return enumName(kRenderMethodNames, method);
 }
 
 std::string_view toString(ColorMode mode) {
-  switch (mode) {
-    case ColorMode::Speed:
-      return "speed";
-    case ColorMode::Curvature:
-      return "curvature";
-    case ColorMode::Time:
-      return "time";
-    case ColorMode::Axis:
-      return "axis";
-    case ColorMode::Distance:
-      return "distance";
-    case ColorMode::Index:
-      return "index";
-  }
-  return "speed";
+  return enumName(kColorModeNames, mode);
 }
 
 ColorMode colorModeFromString(std::string_view name) {
-  for (ColorMode mode : {ColorMode::Speed, ColorMode::Curvature, ColorMode::Time, ColorMode::Axis, ColorMode::Distance,
-                         ColorMode::Index})
-    if (toString(mode) == name) return mode;
-  throw Error("is '" + std::string(name) +
-              "'; the known colour modes are: speed, curvature, time, axis, distance, index");
+  return fromNameOrThrow<ColorMode>(kColorModeNames, name, "colour modes");
 }
 
 std::string_view toString(PatternKind kind) {
-  switch (kind) {
-    case PatternKind::Attractor:
-      return "attractor";
-    case PatternKind::Flame:
-      return "flame";
-    case PatternKind::QuaternionJulia:
-      return "quaternion_julia";
-  }
-  return "attractor";
+  return enumName(kPatternKindNames, kind);
 }
 
 PatternKind patternKindFromString(std::string_view name) {
-  for (PatternKind kind : {PatternKind::Attractor, PatternKind::Flame, PatternKind::QuaternionJulia})
-    if (toString(kind) == name) return kind;
-  throw Error("is '" + std::string(name) + "'; the known kinds are: attractor, flame, quaternion_julia");
+  return fromNameOrThrow<PatternKind>(kPatternKindNames, name, "kinds");
 }
 
 std::string PatternLayer::patternName() const {
@@ -63,23 +49,11 @@ std::string PatternLayer::patternName() const {
 }
 
 std::string_view toString(FitMode mode) {
-  switch (mode) {
-    case FitMode::Contain:
-      return "contain";
-    case FitMode::Cover:
-      return "cover";
-    case FitMode::Stretch:
-      return "stretch";
-    case FitMode::Previous:
-      return "previous";
-  }
-  return "contain";
+  return enumName(kFitModeNames, mode);
 }
 
 FitMode fitModeFromString(std::string_view name) {
-  for (FitMode mode : {FitMode::Contain, FitMode::Cover, FitMode::Stretch, FitMode::Previous})
-    if (toString(mode) == name) return mode;
-  throw Error("is '" + std::string(name) + "'; the known fit modes are: contain, cover, stretch, previous");
+  return fromNameOrThrow<FitMode>(kFitModeNames, name, "fit modes");
 }
 
 }  // namespace voxflame::core

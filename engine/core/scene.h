@@ -39,6 +39,7 @@ enum class ColorMode {
   Distance,   // distance from the attractor's centre
   Index,      // chaos-game patterns: flam3's colour index, pulled towards each transform's colour
 };
+inline constexpr std::string_view kColorModeNames[] = {"speed", "curvature", "time", "axis", "distance", "index"};
 std::string_view toString(ColorMode mode);
 ColorMode colorModeFromString(std::string_view name);  // throws core::Error listing the modes
 
@@ -62,6 +63,7 @@ enum class FitMode {
   // the mesh on its own.
   Previous,
 };
+inline constexpr std::string_view kFitModeNames[] = {"contain", "cover", "stretch", "previous"};
 std::string_view toString(FitMode mode);
 FitMode fitModeFromString(std::string_view name);  // throws core::Error listing the modes
 
@@ -90,6 +92,7 @@ struct LayerTransform {
 
 // What a layer iterates: an attractor of the catalogue (attractor.h) or a chaos game (flame.h).
 enum class PatternKind { Attractor, Flame, QuaternionJulia };
+inline constexpr std::string_view kPatternKindNames[] = {"attractor", "flame", "quaternion_julia"};
 std::string_view toString(PatternKind kind);
 PatternKind patternKindFromString(std::string_view name);  // throws core::Error listing the kinds
 
@@ -139,6 +142,7 @@ enum class PaletteMode {
   Step,    // the entry ⌊index · 256⌋ (flam3's default)
   Linear,  // the two entries around index · 256, blended by its fraction (Apophysis 7X writes this)
 };
+inline constexpr std::string_view kPaletteModeNames[] = {"step", "linear"};
 
 struct FlatViewSettings {
   int width = 100, height = 100;  // flam3's size, pixels
@@ -154,6 +158,7 @@ struct FlatViewSettings {
 };
 
 enum class Projection { Perspective, Orthographic };
+inline constexpr std::string_view kProjectionNames[] = {"perspective", "orthographic"};
 
 // The camera orbits `target` (an offset from the grid's centre, in bounding-sphere radii) at
 // `distance` radii; free flight moves the target with the eye. Any orientation is valid.
@@ -172,10 +177,12 @@ struct CameraSettings {
 };
 
 enum class MeshDisplay { Off, Ghost, Silhouette };
+inline constexpr std::string_view kMeshDisplayNames[] = {"off", "ghost", "silhouette"};
 
 // How a still is made: "volume" ray-marches the voxel grid; "points" projects every accepted
 // point into a supersampled screen histogram, dimmed by the camera's transmittance through the grid.
 enum class RenderMethod { Volume, Points };
+inline constexpr std::string_view kRenderMethodNames[] = {"volume", "points"};
 std::string_view toString(RenderMethod method);
 
 // How a frame is drawn; none of it restarts accumulation.

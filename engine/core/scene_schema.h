@@ -9,7 +9,7 @@
 // transforms and variations, keyframes), keys whose meaning depends on another key (an
 // attractor's params by name, a layer's kind, the builtin: prefix of mesh.path). They are still
 // rows of the tables, marked `Hand` (no member), so SCHEMA.md lists them in place; the code that
-// reads and writes them is marked as such in scene_schema.cpp.
+// reads and writes them is marked as such in scene_schema_io.cpp.
 #pragma once
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 // presets/SCHEMA.md, generated: the prose is fixed text here, every row of the tables of keys
-// comes from the schema tables (scene_schema.cpp). The keyframes' own table and the version table
-// are fixed text too: the keyframe reader (keyframes.cpp) and the migrations (scene_io.cpp) are
-// hand code. To regenerate the committed file after a change: VOXFLAME_UPDATE_SCHEMA=1 ctest -R
+// comes from the schema tables (scene_schema_tables.cpp). The keyframes' own table and the
+// version table are fixed text too: the keyframe reader (keyframes.cpp) and the migrations
+// (scene_io.cpp) are hand code. To regenerate the committed file after a change: VOXFLAME_UPDATE_SCHEMA=1 ctest -R
 // SchemaDocument (or run the schema_document test binary with that variable set).
 #include <charconv>
 #include <cmath>
