@@ -19,21 +19,10 @@ using voxflame::test::TemporaryFolder;
 
 namespace {
 
-// A tiny animation: a small grid and image, few points, the layer turning 60° about y over two
-// seconds. A transform moves the same orbits (same seed, same parameters) through the grid, so the
-// change between frames is the motion alone. (Animating an attractor parameter changes every
-// chaotic orbit: at this point count the frame-to-frame noise then is as large as the motion.)
-const char* kTinyAnimation = R"({"schema_version":2,"name":"tiny","mesh":{"path":"builtin:meshes/bunny.obj"},
-  "grid":{"resolution":32},
-  "layers":[{"attractor":"lorenz84","params":{"a":1.111,"b":1.479,"f":4.494,"g":0.44},"transform":{"scale":0.75}}],
-  "points":300000,"animation":{"fps":10,"duration":2},
-  "keyframes":[{"path":"/layers/0/transform/rotation_deg","interpolation":"linear",
-                "keys":[{"time":0,"value":[0,0,0]},{"time":2,"value":[0,60,0]}]}]})";
-
-const std::string kSize = " --width 48 --height 32";
+const std::string& kSize = voxflame::test::kTinyFrameSize;
 
 void writeTinyPreset(const TemporaryFolder& folder) {
-  std::ofstream(folder / "tiny.json") << kTinyAnimation;
+  std::ofstream(folder / "tiny.json") << voxflame::test::tinyAnimationPreset(300'000);
 }
 
 // Mean absolute difference of the colour channels, in [0, 1].

@@ -110,11 +110,15 @@ TEST(Cli, RenderingThePngAgainReproducesIt) {
   EXPECT_NE(first.text.at("voxflame:stats").find("\"points\""), std::string::npos);
 }
 
+// The preset names its mesh relative to its own folder, and is rendered from the folder above: the
+// mesh is found beside the preset, not in the working directory. The PNG then carries a path that
+// still finds the mesh from another folder.
 TEST(Cli, PresetWithAMeshOnDiskTravelsInsideThePng) {
   TemporaryFolder folder;
-  std::filesystem::create_directories(folder / "work");
-  std::ofstream(folder / "work" / "p.json") << R"({"mesh":{"path":")" << voxflame::test::meshPath("teapot.obj").string()
-                                            << R"("},"grid":{"resolution":32},"layers":[{"attractor":"lorenz84"}]})";
+  std::filesystem::create_directories(folder / "work" / "meshes");
+  std::filesystem::copy_file(voxflame::test::meshPath("teapot.obj"), folder / "work" / "meshes" / "teapot.obj");
+  std::ofstream(folder / "work" / "p.json")
+      << R"({"mesh":{"path":"meshes/teapot.obj"},"grid":{"resolution":32},"layers":[{"attractor":"lorenz84"}]})";
   auto result = runVoxflame("render work/p.json -o out.png --width 32 --height 32 --points 50000", folder.path());
   ASSERT_EQ(result.exitStatus, 0) << result.output;
   std::filesystem::create_directories(folder / "elsewhere");

@@ -53,16 +53,19 @@ ExportStatus pollUntilEnded(ExportJob& job, std::vector<ExportStatus>* seen = nu
   }
 }
 
-// Waits until the child reports the stage (so it is past start-up and has its signal handlers).
+// Waits until the child reports the stage (so it is past start-up and has its signal handlers),
+// sleeping until the child writes something or ends.
 bool waitForStage(ExportJob& job, const std::string& stage, double timeoutSeconds = 60) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds);
-  while (std::chrono::steady_clock::now() < deadline) {
+  for (;;) {
     const ExportStatus status = job.poll();
     if (status.state != ExportState::Running) return false;
     if (status.stage == stage) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(16));
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left <= std::chrono::milliseconds(0)) return false;
+    job.waitForChange(left);
   }
-  return false;
 }
 
 bool reaped(pid_t pid) {

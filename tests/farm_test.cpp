@@ -23,15 +23,7 @@ using voxflame::test::TemporaryFolder;
 
 namespace {
 
-// Twenty-one frames (two seconds at 10 fps) of a layer turning, small and quick.
-const char* kTinyAnimation = R"({"schema_version":2,"name":"tiny","mesh":{"path":"builtin:meshes/bunny.obj"},
-  "grid":{"resolution":32},
-  "layers":[{"attractor":"lorenz84","params":{"a":1.111,"b":1.479,"f":4.494,"g":0.44},"transform":{"scale":0.75}}],
-  "points":200000,"animation":{"fps":10,"duration":2},
-  "keyframes":[{"path":"/layers/0/transform/rotation_deg","interpolation":"linear",
-                "keys":[{"time":0,"value":[0,0,0]},{"time":2,"value":[0,60,0]}]}]})";
-
-const std::string kSize = " --width 48 --height 32";
+const std::string& kSize = voxflame::test::kTinyFrameSize;
 
 std::string readText(const std::filesystem::path& path) {
   std::ifstream in(path);
@@ -53,7 +45,7 @@ bool contains(const std::string& text, const std::string& part) {
 
 class Farm : public ::testing::Test {
  protected:
-  void SetUp() override { std::ofstream(folder / "tiny.json") << kTinyAnimation; }
+  void SetUp() override { std::ofstream(folder / "tiny.json") << voxflame::test::tinyAnimationPreset(200'000); }
   TemporaryFolder folder;
 };
 

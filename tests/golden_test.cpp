@@ -17,7 +17,9 @@ namespace {
 
 // Mean absolute difference per channel (display-encoded, 0–1) allowed, and the share of pixels
 // that may differ by more than 0.1: covers driver and rounding differences, not a changed look.
-constexpr double kMeanTolerance = 0.01;
+// A render matches its reference within about 0.0005; the points and the volume render of the
+// same preset differ by 0.0038 (the flame) to 0.013, so the mean alone tells the methods apart.
+constexpr double kMeanTolerance = 0.002;
 constexpr double kOutlierShare = 0.01;
 
 struct Golden {

@@ -8,12 +8,15 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <memory>
+#include <mutex>
+#include <stop_token>
 #include <thread>
 #include <vector>
 
@@ -369,6 +372,25 @@ TEST(SnapshotPublisher, MakesNoWakeUpsWhileItsAccumulatorRests) {
   EXPECT_GT(publisher.wakeUps(), held) << "a request wakes it";
 }
 
+namespace {
+
+// Sleeps on the accumulator's progress signal until `ready` (which must read only atomics) holds;
+// false when `timeout` passes first.
+template <class Ready>
+bool waitForProgress(const Accumulator& accumulator, std::chrono::milliseconds timeout, Ready ready) {
+  std::stop_source expired;
+  std::jthread timer([&expired, timeout](std::stop_token waitEnded) {
+    std::mutex mutex;
+    std::condition_variable_any never;
+    std::unique_lock lock(mutex);
+    if (!never.wait_for(lock, waitEnded, timeout, [] { return false; }) && !waitEnded.stop_requested())
+      expired.request_stop();
+  });
+  return accumulator.progress().wait(expired.get_token(), ready);
+}
+
+}  // namespace
+
 // The first batch after a pause is packed as soon as it lands, not when a timer next fires: the
 // interval (long here) only spaces packs while points keep coming.
 TEST(SnapshotPublisher, PicksUpABatchPromptlyWithoutATimer) {
@@ -390,11 +412,9 @@ TEST(SnapshotPublisher, PicksUpABatchPromptlyWithoutATimer) {
 
   const std::uint64_t before = accumulator.version();
   accumulator.setHeld(false);
-  deadline = std::chrono::steady_clock::now() + 30s;
-  while (accumulator.stats().points == 0 && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(100us);
+  ASSERT_TRUE(waitForProgress(accumulator, 30s, [&] { return accumulator.version() > before; }));
   const auto landed = std::chrono::steady_clock::now();
-  ASSERT_GT(accumulator.version(), before);
+  ASSERT_GT(accumulator.stats().points, 0u);
   while (!publisher.takeIfNewer(volume) && std::chrono::steady_clock::now() < landed + interval)
     std::this_thread::sleep_for(1ms);
   EXPECT_GT(volume.points, 0u);

@@ -98,4 +98,15 @@ CommandResult runShell(const std::string& command, const std::filesystem::path& 
   return result;
 }
 
+std::string tinyAnimationPreset(std::uint64_t points) {
+  std::string preset = R"({"schema_version":2,"name":"tiny","mesh":{"path":"builtin:meshes/bunny.obj"},
+  "grid":{"resolution":32},
+  "layers":[{"attractor":"lorenz84","params":{"a":1.111,"b":1.479,"f":4.494,"g":0.44},"transform":{"scale":0.75}}],
+  "points":)";
+  preset.append(std::to_string(points)).append(R"(,"animation":{"fps":10,"duration":2},
+  "keyframes":[{"path":"/layers/0/transform/rotation_deg","interpolation":"linear",
+                "keys":[{"time":0,"value":[0,0,0]},{"time":2,"value":[0,60,0]}]}]})");
+  return preset;
+}
+
 }  // namespace voxflame::test

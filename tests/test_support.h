@@ -2,6 +2,7 @@
 // the voxflame binary and capturing what it prints.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -39,5 +40,14 @@ CommandResult runVoxflame(const std::string& arguments, const std::filesystem::p
                           const std::string& environment = "");
 // Runs a shell command in `folder` (a job script as a scheduler would run it).
 CommandResult runShell(const std::string& command, const std::filesystem::path& folder);
+
+// A tiny animation for `voxflame animate`: a 32³ grid in the built-in bunny, 21 frames (two seconds
+// at 10 fps) of one lorenz84 layer turning 60° about y, `points` per frame. A transform moves the
+// same orbits (same seed, same parameters) through the grid, so the change between frames is the
+// motion alone. (Animating an attractor parameter changes every chaotic orbit: at these point
+// counts the frame-to-frame noise then is as large as the motion.)
+std::string tinyAnimationPreset(std::uint64_t points);
+// The frame size the animation tests render the tiny animation at, as command-line options.
+inline const std::string kTinyFrameSize = " --width 48 --height 32";
 
 }  // namespace voxflame::test
