@@ -203,6 +203,8 @@ SessionStatus ExplorerSession::status() const {
   status.insideVoxels = insideVoxels_;
   status.capPointsPerVoxel = capPointsPerVoxel_;
   status.paused = paused_ && holding_ && !capped_ && !converged_;
+  status.escapeNote = escapeNote_;
+  status.showingLastBounded = showingLastBounded_;
   status.resting = engine_ && holding_ && status.stats.done && !buildingShape_ && !pending_ && !working_ &&
                    !steerRequested_ && engine_->publisher.caughtUp();
   return status;
@@ -263,12 +265,50 @@ void ExplorerSession::applyPattern(Engine& engine, const core::Scene& scene, std
   engine.target = engine.capPoints;
   engine.held = false;
   engine.accumulator.setTargetPoints(engine.target);
-  engine.accumulator.setPattern(scene.layers, scene.seed);
+  engine.accumulator.setPattern(scene.layers, scene.seed, core::Accumulator::WhenEscaping::KeepLastBounded);
+  noteEscape(engine.accumulator, scene);
   steer(engine);  // a pause still holds the new pattern (at a preview)
   engine.publisher.requestNow();
   std::lock_guard lock(mutex_);
   engine.patternGeneration = engine.accumulator.generation();
   engine.patternPost = post;
+}
+
+namespace {
+
+std::string escapeNoteFor(const core::Scene& lastBounded, const core::Scene& escaping) {
+  // One number of the pattern moved (a drag, a typed value): name it and its value, as the slider
+  // shows them. The look may have changed too since the last bounded pattern; only the layers count.
+  core::Scene base = escaping;
+  base.layers = lastBounded.layers;
+  const core::SceneDiff changed = core::diff(base, escaping);
+  if (changed.paths.size() == 1) {
+    const std::string& path = changed.paths.front();
+    const core::ValueRef value = core::resolveValue(escaping, path);
+    if (value.kind == core::ValueRef::Kind::Number && !value.numbers.empty()) {
+      char text[200];
+      std::snprintf(text, sizeof text, "escapes at %s = %.5g; showing the last bounded value",
+                    path.substr(path.rfind('/') + 1).c_str(), value.numbers.front().get());
+      return text;
+    }
+  }
+  return "these parameters escape; showing the last bounded pattern";
+}
+
+}  // namespace
+
+void ExplorerSession::noteEscape(const core::Accumulator& accumulator, const core::Scene& scene) {
+  const core::AccumulatorStats stats = accumulator.stats();
+  std::string note;
+  if (stats.problem.empty())
+    lastBounded_ = scene;
+  else if (stats.showingLastBounded && lastBounded_)
+    note = escapeNoteFor(*lastBounded_, scene);
+  else
+    note = stats.problem;
+  std::lock_guard lock(mutex_);
+  escapeNote_ = std::move(note);
+  showingLastBounded_ = stats.showingLastBounded;
 }
 
 void ExplorerSession::steer(Engine& engine) {
@@ -281,7 +321,8 @@ void ExplorerSession::steer(Engine& engine) {
     paused = paused_;
     further = std::exchange(refineFurtherRequested_, false);
   }
-  std::uint64_t points = engine.accumulator.stats().points;
+  const core::AccumulatorStats stats = engine.accumulator.stats();
+  std::uint64_t points = stats.points;
   if (further) {
     // From the points already there to twice as many: neither the noise target nor the cap
     // stops it before then (the meter goes on measuring the same generation).
@@ -325,7 +366,8 @@ void ExplorerSession::steer(Engine& engine) {
   previousMeasurement_ = engine.meter.previousMeasurement();
   capPointsPerVoxel_ = static_cast<double>(engine.capPoints) / inside;
   // The control thread sleeps until it is asked for something once refinement will add nothing.
-  holding_ = converged || paused || capped;
+  // An escaping pattern does not refine at all: nothing to measure until the next edit.
+  holding_ = converged || paused || capped || !stats.problem.empty();
 }
 
 void ExplorerSession::controlLoop(std::stop_token stop) {
@@ -430,7 +472,8 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
         const bool dragging = holdsForInteraction(*current);
         if (Proxy* proxy = current->proxy.get()) {
           proxy->setDragging(dragging);
-          proxy->accumulator.setPattern(scene.layers, scene.seed);
+          proxy->accumulator.setPattern(scene.layers, scene.seed, core::Accumulator::WhenEscaping::KeepLastBounded);
+          noteEscape(proxy->accumulator, scene);
           proxy->publisher.requestNow();
           std::lock_guard lock(mutex_);
           proxy->patternGeneration = proxy->accumulator.generation();

@@ -55,6 +55,10 @@ struct SessionStatus {
   // Nothing will change until the user does something: refinement is held and finished, and the
   // last volume has been taken. The window loop may then wait for events instead of drawing.
   bool resting = false;
+  // The newest pattern applied escapes (or collapses): what to tell the user, in one line, e.g.
+  // "escapes at a = 1.0948; showing the last bounded value". Empty while it stays bounded.
+  std::string escapeNote;
+  bool showingLastBounded = false;  // the picture is still the last bounded pattern's (dimmed)
 };
 
 class ExplorerSession {
@@ -160,6 +164,8 @@ class ExplorerSession {
   void applyPattern(Engine& engine, const core::Scene& scene, std::uint64_t post);
   // Whether the engine's large grid holds for a drag: the user interacts and a proxy shows the edits.
   bool holdsForInteraction(const Engine& engine) const;
+  // Control thread, after `accumulator` took `scene`'s pattern: what the status says of an escape.
+  void noteEscape(const core::Accumulator& accumulator, const core::Scene& scene);
 
   const int threads_;
   const std::chrono::milliseconds snapshotInterval_;
@@ -189,7 +195,10 @@ class ExplorerSession {
   std::uint64_t insideVoxels_ = 0;
   double lastMeasurement_ = std::numeric_limits<double>::quiet_NaN(), previousMeasurement_ = lastMeasurement_;
   bool refineFurtherRequested_ = false;
-  bool holding_ = false;  // the accumulator's target is held (converged, capped or paused)
+  bool holding_ = false;                    // the accumulator's target is held (converged, capped or paused)
+  std::optional<core::Scene> lastBounded_;  // control thread only: the last pattern applied that stays bounded
+  std::string escapeNote_;
+  bool showingLastBounded_ = false;
   std::jthread control_;  // last: started after everything it uses exists
 };
 

@@ -785,7 +785,9 @@ void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3&
   double shown[3] = {0.0, 0.0, 0.0};
   if (rotatingThis) std::copy(std::begin(state.rotateAngles), std::end(state.rotateAngles), shown);
   const double minDeg = -180.0, maxDeg = 180.0;
-  const bool turned = ImGui::SliderScalarN("rotate", ImGuiDataType_Double, shown, 3, &minDeg, &maxDeg, "%.0f°", kClamp);
+  // Relative: each drag turns the map from where it is, so the handle reads +0° before and after one.
+  const bool turned =
+      ImGui::SliderScalarN("turn by", ImGuiDataType_Double, shown, 3, &minDeg, &maxDeg, "%+.0f°", kClamp);
   probe(state, rotateId);
   if (ImGui::IsItemActivated()) {
     state.rotatingId = rotateId;
@@ -804,14 +806,27 @@ void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3&
   }
   if (ImGui::IsItemDeactivated() && state.rotatingId == rotateId) {
     state.rotatingId.clear();
+    if (m != state.rotateStart) {
+      state.turnedId = rotateId;
+      std::copy(std::begin(state.rotateAngles), std::end(state.rotateAngles), state.turnedAngles.begin());
+      state.turnedResult = m;
+    }
     std::fill(std::begin(state.rotateAngles), std::end(state.rotateAngles), 0.0);
   }
   if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
-    ImGui::SetTooltip("drag to turn the map about its own x, y and z axes");
+    ImGui::SetTooltip(
+        "relative: drag to turn the map by so many degrees about its own x, y and z axes.\n"
+        "Each drag starts at +0° and the turn stays when you let go (Ctrl+Z undoes it).");
+  if (state.turnedId == rotateId && state.turnedResult == m && !rotatingThis) {
+    dimText("turned by %+.0f°, %+.0f°, %+.0f° (Ctrl+Z undoes)", state.turnedAngles[0], state.turnedAngles[1],
+            state.turnedAngles[2]);
+    probe(state, scope + "turned");
+  }
 
   double scales[3] = {columnLength(m, 0), columnLength(m, 1), columnLength(m, 2)};
   const double minS = 0.01, maxS = 2.0;
-  if (ImGui::SliderScalarN("scale", ImGuiDataType_Double, scales, 3, &minS, &maxS, "%.3f", kClamp))
+  // Absolute, unlike the turn: each value is the length of one axis of the map, and stays as dragged.
+  if (ImGui::SliderScalarN("axis lengths", ImGuiDataType_Double, scales, 3, &minS, &maxS, "%.3f", kClamp))
     for (int col = 0; col < 3; ++col) {
       const double length = columnLength(m, col);
       const auto c = static_cast<std::size_t>(col);
@@ -824,6 +839,8 @@ void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3&
       }
     }
   probe(state, scope + "scale");
+  if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+    ImGui::SetTooltip("absolute: the length of the map's x, y and z axes (1 keeps a length; under 1 contracts)");
 
   if (ImGui::TreeNode("numbers")) {
     static constexpr const char* kRows[] = {"x' = x y z 1", "y' = x y z 1", "z' = x y z 1"};
@@ -1323,10 +1340,10 @@ void patternWindow(ExplorerState& state, float scale) {
       }
     } else if (!state.searchMessage.empty())
       ImGui::TextWrapped("%s", state.searchMessage.c_str());
-    if (!state.session.stats.problem.empty()) {
-      ImGui::TextColored(kErrorColor, "This pattern escapes to infinity.");
-      ImGui::SameLine();
+    // The message itself is the notice's, at the top of the view: one message, said once.
+    if (!state.session.escapeNote.empty()) {
       if (button(state, "", "Find a nearby one")) startSearch(state, 0.1, false);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("a bounded pattern close to this one (Mutate at strength 0.1)");
     }
   }
   ImGui::PopItemWidth();
@@ -1402,10 +1419,13 @@ void renderSection(ExplorerState& state) {
     for (std::string_view key : {"light_azimuth_deg", "light_elevation_deg", "light_strength"})
       fieldWidget(state, "render/", render, core::renderFields(), key);
   ImGui::SliderFloat("preview scale", &state.renderScale, 0.25f, 1.0f, "%.2f");
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("fraction of the window's pixels marched while the view is still");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "fraction of the window's pixels marched while the view is still (playback goes as sharp as "
+        "the frame budget allows)");
   ImGui::SliderFloat("frame budget", &state.frameBudgetMs, 8.0f, 200.0f, "%.0f ms");
   if (ImGui::IsItemHovered())
-    ImGui::SetTooltip("while you edit or orbit, fewer pixels are marched to keep frames this quick");
+    ImGui::SetTooltip("while you edit, orbit or play, as many pixels are marched as keep frames this quick");
   // 0 reads "never": the slider's left end is refining until the next edit.
   double& stopAt = state.settings.refineUntilNoisePercent;
   const double low = 0.0, high = 10.0;
@@ -1704,6 +1724,24 @@ void quitPromptWindow(ExplorerState& state, float scale) {
   ImGui::EndPopup();
 }
 
+// The view's rectangle in window coordinates (from the top), from framebuffer pixels from the bottom.
+ImVec4 viewRectInWindow(const ExplorerState& state, glm::dvec4 rect) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const ImVec2 scale = io.DisplayFramebufferScale;
+  return ImVec4(static_cast<float>(state.viewRect.x + rect.x) / scale.x,
+                io.DisplaySize.y - static_cast<float>(state.viewRect.y + rect.y + rect.w) / scale.y,
+                static_cast<float>(state.viewRect.x + rect.x + rect.z) / scale.x,
+                io.DisplaySize.y - static_cast<float>(state.viewRect.y + rect.y) / scale.y);
+}
+
+// While the pattern escapes the view keeps the last bounded picture, dimmed: it is not the
+// pattern the sliders say.
+void dimLastBoundedPicture(const ExplorerState& state) {
+  if (!state.session.showingLastBounded || state.viewRect.z <= 0 || state.viewRect.w <= 0) return;
+  const ImVec4 r = viewRectInWindow(state, glm::dvec4(0.0, 0.0, state.viewRect.z, state.viewRect.w));
+  ImGui::GetBackgroundDrawList()->AddRectFilled(ImVec2(r.x, r.y), ImVec2(r.z, r.w), IM_COL32(0, 0, 0, 140));
+}
+
 // Where the export's picture lies in the view, when its aspect is not the view's: a thin frame.
 void drawExportFrame(const ExplorerState& state) {
   const ExportSettings& settings = state.settings.lastExport;
@@ -1711,15 +1749,8 @@ void drawExportFrame(const ExplorerState& state) {
   const double viewAspect = static_cast<double>(state.viewRect.z) / state.viewRect.w;
   const double aspect = static_cast<double>(settings.width) / settings.height;
   if (std::abs(aspect / viewAspect - 1.0) < 0.005) return;
-  const ImGuiIO& io = ImGui::GetIO();
-  const glm::dvec4 frame = core::exportFrame(glm::dvec2(state.viewRect.z, state.viewRect.w), aspect);
-  // Framebuffer pixels from the bottom to window coordinates from the top.
-  const ImVec2 scale = io.DisplayFramebufferScale;
-  const float left = static_cast<float>(state.viewRect.x + frame.x) / scale.x;
-  const float right = static_cast<float>(state.viewRect.x + frame.x + frame.z) / scale.x;
-  const float top = io.DisplaySize.y - static_cast<float>(state.viewRect.y + frame.y + frame.w) / scale.y;
-  const float bottom = io.DisplaySize.y - static_cast<float>(state.viewRect.y + frame.y) / scale.y;
-  ImGui::GetBackgroundDrawList()->AddRect(ImVec2(left, top), ImVec2(right, bottom), IM_COL32(255, 255, 255, 110));
+  const ImVec4 r = viewRectInWindow(state, core::exportFrame(glm::dvec2(state.viewRect.z, state.viewRect.w), aspect));
+  ImGui::GetBackgroundDrawList()->AddRect(ImVec2(r.x, r.y), ImVec2(r.z, r.w), IM_COL32(255, 255, 255, 110));
 }
 
 // The picture's rectangle: between the side panels, above the Timeline, in framebuffer pixels.
@@ -1766,6 +1797,7 @@ void viewWindow(ExplorerState& state, float scale) {
 
 std::string convergenceText(const SessionStatus& status) {
   if (!status.hasShape) return "";
+  if (!status.escapeNote.empty()) return status.escapeNote;  // nothing refines: this is the news
   char text[200];
   const double noise = 100.0 * status.noise, target = 100.0 * status.noiseTarget;
   const double millions = static_cast<double>(status.stats.points) * 1e-6;
@@ -1815,18 +1847,23 @@ void statusBar(ExplorerState& state, float scale) {
     ImGui::TextUnformatted(convergence.c_str());
   char figures[400];
   std::snprintf(figures, sizeof figures,
-                "%.1f M points  %.1f M/s  inside %.1f%%  escapes %llu  |  %.0f fps  %.1f ms (worst %.0f)  upload %.1f "
-                "ms  %d samples",
+                "%.1f M points  %.1f M/s  inside %.1f%%  reseeded %llu  |  %.0f fps  %.1f ms (worst %.0f)  upload "
+                "%.1f ms  %d samples",
                 static_cast<double>(stats.points) * 1e-6, stats.pointsPerSecond * 1e-6, 100.0 * stats.insideFraction(),
                 static_cast<unsigned long long>(stats.escapes), m.fps, m.frameMs, m.worstFrameMs, m.uploadMs,
                 state.samples);
-  std::string details = figures;
+  // While the pattern escapes, the figures are the last bounded pattern's (or none): say so.
+  std::string details = state.session.showingLastBounded ? std::string("last bounded pattern: ") + figures : figures;
   if (m.changeToFrameMs >= 0.0) {
     std::snprintf(figures, sizeof figures, "  |  edit→frame %.0f ms (%d frames)", m.changeToFrameMs,
                   m.changeToFrameFrames);
     details += figures;
   }
-  if (!state.lyapunovText.empty()) details += "  |  " + state.lyapunovText;
+  // The analysis of an orbit that escapes may read as a fixed point: the escape is what is true.
+  if (!state.session.escapeNote.empty())
+    details += "  |  escapes";
+  else if (!state.lyapunovText.empty())
+    details += "  |  " + state.lyapunovText;
   if (ImGui::IsItemHovered() && !state.showStats) ImGui::SetTooltip("%s", details.c_str());
   if ((state.session.converged || state.session.capped) && !state.session.buildingShape) {
     ImGui::SameLine();
@@ -1856,13 +1893,18 @@ void noticeWindow(ExplorerState& state, float scale) {
   };
   addLine(state.notice);
   addLine(state.session.error);
-  if (!state.session.stats.problem.empty()) addLine(state.session.stats.problem + " — try Search (F3).");
+  if (!state.session.escapeNote.empty())
+    addLine(state.session.showingLastBounded ? state.session.escapeNote
+                                             : state.session.escapeNote + " — try Search (F3).");
   if (text.empty()) return;
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 12 * scale), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
   ImGui::SetNextWindowSizeConstraints(ImVec2(200 * scale, 0), ImVec2(io.DisplaySize.x * 0.45f, 400 * scale));
+  // Never focused on appearing: focusing a window ends the drag of a widget in another, and an
+  // escape that shows up in the middle of a slider's drag must not take the slider from the mouse.
   ImGui::Begin("##notice", nullptr,
-               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings);
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing);
   ImGui::PushTextWrapPos(io.DisplaySize.x * 0.43f);
   ImGui::TextColored(kErrorColor, "%s", text.c_str());
   ImGui::PopTextWrapPos();
@@ -2195,6 +2237,7 @@ void explorerUiFrame(ExplorerState& state) {
   quitPromptWindow(state, scale);
   flameChoiceWindow(state, scale);
   placeView(state, scale);
+  dimLastBoundedPicture(state);
   drawExportFrame(state);
   statusBar(state, scale);
   noticeWindow(state, scale);

@@ -95,6 +95,11 @@ struct ExplorerState {
   std::string rotatingId;
   std::array<double, 12> rotateStart{};
   double rotateAngles[3] = {0.0, 0.0, 0.0};
+  // What the last rotate drag turned, said under the handle (which is back at 0 after it) while the
+  // map is still the one that drag left.
+  std::string turnedId;
+  std::array<double, 3> turnedAngles{};
+  std::array<double, 12> turnedResult{};
   char meshPath[512] = "";
   int gridDraft = 0;  // the grid slider's value while it is held
 

@@ -334,11 +334,15 @@ LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int frameb
     // While the view or the pattern moves, fewer pixels keep the frame within its budget; a still
     // view refines at the scale the user chose.
     budget_.setBudget(state.frameBudgetMs);
-    const float scale = budget_.next(viewChanged || result.patternPosted, state.renderScale);
+    // Playback is judged for its motion, frame after frame: the budget alone decides how sharp
+    // its frames are, up to the full window, not the preview scale a still view refines at (half
+    // the pixels on software GL, a fixed blur that frames within the budget need not have).
+    const float ceiling = state.playing ? 1.0f : std::min(1.0f, state.renderScale);
+    const float scale = budget_.next(viewChanged || result.patternPosted, ceiling);
     state.metrics.marchScale = scale;
     // Coarser pixels, coarser steps along the ray. A still view marches at its ceiling (stretch
     // 1), and a change of scale restarts the samples, so its samples are all of the scene's step.
-    settings.render.stepVoxels *= FrameBudget::stepStretch(scale, std::min(1.0f, state.renderScale));
+    settings.render.stepVoxels *= FrameBudget::stepStretch(scale, ceiling);
     // A still view (one the budget has let go back to its full scale) refines in bands, as many
     // a frame as its budget allows; while something changes each frame marches a whole pass at
     // the budget's lowered scale, shown straight from the target. The first still frame keeps
@@ -368,8 +372,7 @@ LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int frameb
     const bool waitForUpload = uploadInProgress_ && target_.samples > 0 && !viewChanged;
     // A view that has just stopped changing keeps its last whole picture until the budget lets
     // the scale back up: samples marched at the lowered scale meanwhile would be thrown away then.
-    const bool settling = !still && !viewChanged && !result.patternPosted &&
-                          scale < std::min(1.0f, state.renderScale) && target_.samples >= 1;
+    const bool settling = !still && !viewChanged && !result.patternPosted && scale < ceiling && target_.samples >= 1;
     bool newPicture = false;
     if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged) && !waitForUpload && !settling) {
       newPicture = marchBands(settings, still, budget_.budgetMs());

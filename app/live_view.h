@@ -45,7 +45,8 @@ class LiveView {
   LiveView& operator=(const LiveView&) = delete;
 
   // One frame at width × height pixels into `framebuffer` (0: the window's). Reads state.scene,
-  // state.renderScale, state.frameBudgetMs and state.requests; writes state.samples,
+  // state.renderScale, state.playing, state.interacting, state.frameBudgetMs, state.settings,
+  // state.exportStatus and state.requests; writes state.samples,
   // state.metrics (upload time, edit to frame, march scale), state.notice and
   // state.presetMessage. Never waits on the session or a job. The time from one call to the next
   // is taken as the frame's cost, so call it once per displayed frame.

@@ -218,6 +218,46 @@ TEST(Accumulator, EscapingAttractorIsReportedAndNeverSplatted) {
   EXPECT_EQ(stats.points, 0u);
 }
 
+TEST(Accumulator, AnEscapeCanKeepTheLastBoundedPatternUntilABoundedOneComes) {
+  const auto mask = bunnyMask(32);
+  const auto bounded = defaultScene().layers;
+  auto escaping = bounded;
+  escaping[0].params = {1.111, 1.479, 4.494, 0.44};
+  escaping[0].step = 0.9;
+  Accumulator accumulator(mask, 2);
+  accumulator.setTargetPoints(20'000);
+  accumulator.setPattern(bounded, 1, Accumulator::WhenEscaping::KeepLastBounded);
+  ASSERT_TRUE(accumulator.waitUntilDone(30.0));
+  const AccumulatorStats before = accumulator.stats();
+  ASSERT_TRUE(before.problem.empty());
+  ASSERT_GE(before.points, 20'000u);
+  const std::uint64_t version = accumulator.version();
+
+  accumulator.setPattern(escaping, 1, Accumulator::WhenEscaping::KeepLastBounded);
+  const AccumulatorStats kept = accumulator.stats();
+  EXPECT_NE(kept.problem.find("escapes"), std::string::npos);
+  EXPECT_TRUE(kept.showingLastBounded);
+  EXPECT_TRUE(kept.done) << "nothing more will accumulate: a session may rest on it";
+  EXPECT_EQ(kept.points, before.points) << "the grid keeps the last bounded pattern's points";
+  EXPECT_EQ(kept.generation, before.generation);
+  EXPECT_EQ(accumulator.version(), version) << "nothing new to publish: a view keeps its picture";
+
+  // The default clears, as a still must: nothing of another pattern goes into it.
+  accumulator.setPattern(escaping, 1);
+  EXPECT_FALSE(accumulator.stats().showingLastBounded);
+  EXPECT_EQ(accumulator.stats().points, 0u);
+
+  accumulator.setPattern(escaping, 1, Accumulator::WhenEscaping::KeepLastBounded);
+  EXPECT_FALSE(accumulator.stats().showingLastBounded) << "the grid holds no bounded pattern to keep";
+  accumulator.setPattern(bounded, 1, Accumulator::WhenEscaping::KeepLastBounded);
+  ASSERT_TRUE(accumulator.waitUntilDone(30.0));
+  const AccumulatorStats again = accumulator.stats();
+  EXPECT_TRUE(again.problem.empty()) << "a bounded pattern comes back to life";
+  EXPECT_FALSE(again.showingLastBounded);
+  EXPECT_GT(again.generation, before.generation);
+  EXPECT_GE(again.points, 20'000u);
+}
+
 TEST(Accumulator, RefusesNonFiniteParameters) {
   const auto mask = bunnyMask(32);
   auto layers = defaultScene().layers;

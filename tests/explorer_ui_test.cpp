@@ -323,10 +323,11 @@ TEST_F(ExplorerUi, AParameterChangeBumpsTheGenerationOfTheSession) {
   EXPECT_FALSE(session.postIfPatternChanged(state.scene));
 
   const auto& slider = item("layer0/b");
-  drag(slider.centerX(), slider.centerY(), 20, 0);
+  // From b near 1.3 to near 1.4: bounded. (From b = 1.55 on, the default preset's Euler step escapes.)
+  drag(slider.minX + 0.32f * (slider.maxX - slider.minX), slider.centerY(), 10, 0);
   ASSERT_TRUE(session.postIfPatternChanged(state.scene));
   ASSERT_TRUE(session.waitUntilApplied(60.0));
-  EXPECT_EQ(session.status().stats.generation, generation + 1);
+  EXPECT_EQ(session.status().stats.generation, generation + 1) << session.status().escapeNote;
 
   // The new generation's volume arrives, tagged with the post that asked for it.
   core::PackedVolume volume;
@@ -979,12 +980,17 @@ TEST_F(ExplorerFlameUi, TheRotateHandleTurnsTheMapAndBumpsTheGeneration) {
   EXPECT_EQ(after.m[3], before.m[3]);
   EXPECT_EQ(after.m[7], before.m[7]);
   EXPECT_EQ(after.m[11], before.m[11]) << "the offset stays";
+  // The handle is relative: back at +0° after the drag, it says what the drag turned.
+  EXPECT_NO_THROW(item("layer0/xform/turned")) << "a line says what the drag turned";
+  EXPECT_GT(state.turnedAngles[0], 0.0);
+  EXPECT_EQ(state.rotateAngles[0], 0.0);
   ASSERT_TRUE(session.postIfPatternChanged(state.scene));
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   EXPECT_EQ(session.status().stats.generation, generation + 1);
   EXPECT_TRUE(session.status().error.empty()) << session.status().error;
   pressKey('Z', true);
   EXPECT_EQ(flame().xforms[0].affine, before) << "the whole drag is one undo step";
+  EXPECT_THROW(item("layer0/xform/turned"), std::runtime_error) << "undone, the turn is no longer said";
 
   // The translate handle moves the offset only.
   const auto translate = item("layer0/xform/translate");
@@ -1437,4 +1443,70 @@ TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerAndFollowsEdits) {
   state.flatView = false;
   frame();
   EXPECT_FALSE(state.flatRender.busy());
+}
+
+// Issue 28: a drag that passes through an escape. The slider keeps following the mouse (the
+// notice that appears must not take it), the picture keeps the last bounded pattern with one
+// message naming the value, and the status line and the panel say the same; dragging back brings
+// the pattern back.
+TEST_F(ExplorerUi, ADragThroughAnEscapeKeepsFollowingTheMouseAndComesBack) {
+  state.scene.gridResolution = 48;
+  const core::AttractorInfo& aizawa = core::attractorOrThrow("aizawa");
+  state.scene.layers[0].attractor = aizawa.id;
+  state.scene.layers[0].params = aizawa.defaultParams();
+  state.scene.layers[0].step = aizawa.defaultStep;
+  state.scene.layers[0].integrator = aizawa.defaultIntegrator;
+  frame(2);
+  app::ExplorerSession session(1);
+  const auto settle = [&] {
+    session.postIfPatternChanged(state.scene, state.interacting);
+    ASSERT_TRUE(session.waitUntilApplied(60.0));
+    // A bounded pattern has points to keep before the drag moves on.
+    ASSERT_TRUE(waitForSession(
+        session, [](const app::SessionStatus& s) { return !s.escapeNote.empty() || s.stats.points > 0; }));
+    state.session = session.status();
+    frame();
+  };
+  settle();
+  ASSERT_TRUE(state.session.escapeNote.empty()) << state.session.escapeNote;
+
+  const auto slider = item("layer0/a");
+  const float width = slider.maxX - slider.minX;
+  ImGuiIO& io = ImGui::GetIO();
+  moveTo(slider.minX + 0.3f * width, slider.centerY());
+  io.MouseDown[0] = true;
+  frame();
+  settle();
+  std::vector<double> values;
+  bool escaped = false, lastBoundedKept = false, agreed = true;
+  std::string note;
+  const auto step = [&](float fraction) {
+    moveTo(slider.minX + fraction * width, slider.centerY());
+    settle();
+    values.push_back(state.scene.layers[0].params[0]);
+    if (!state.session.escapeNote.empty()) {
+      escaped = true;
+      lastBoundedKept = lastBoundedKept || state.session.showingLastBounded;
+      note = state.session.escapeNote;
+      agreed = agreed && app::convergenceText(state.session) == note;
+    }
+  };
+  for (float f = 0.35f; f <= 0.96f; f += 0.05f) step(f);
+  const std::vector<double> outward = values;
+  values.clear();
+  for (float f = 0.9f; f >= 0.29f; f -= 0.1f) step(f);
+  io.MouseDown[0] = false;
+  frame(2);
+
+  for (std::size_t i = 1; i < outward.size(); ++i)
+    EXPECT_GT(outward[i], outward[i - 1]) << "the slider follows the mouse right, step " << i;
+  for (std::size_t i = 1; i < values.size(); ++i) EXPECT_LT(values[i], values[i - 1]) << "and back left, step " << i;
+  ASSERT_TRUE(escaped) << "Aizawa escapes before a = " << outward.back();
+  EXPECT_TRUE(lastBoundedKept) << "the last bounded pattern stays on screen";
+  EXPECT_EQ(note.rfind("escapes at a = ", 0), 0u) << note;
+  EXPECT_NE(note.find("showing the last bounded value"), std::string::npos) << note;
+  EXPECT_TRUE(agreed) << "the status line says what the notice says";
+  EXPECT_TRUE(state.session.escapeNote.empty()) << "dragged back, the pattern is bounded again";
+  EXPECT_FALSE(state.session.showingLastBounded);
+  EXPECT_TRUE(state.session.stats.problem.empty());
 }

@@ -362,6 +362,39 @@ TEST_F(LiveViewTest, SlowFramesWhileTheCameraMovesLowerTheMarchScale) {
   EXPECT_EQ(state.metrics.marchScale, 1.0f);
 }
 
+// Playback is not held to the preview scale (a still view's, half the pixels on software GL):
+// frames within their budget go as sharp as the whole window; an orbit stays under the preview scale.
+TEST_F(LiveViewTest, PlaybackFramesWithinTheirBudgetGoSharperThanThePreviewScale) {
+  state.renderScale = 0.5f;
+  state.frameBudgetMs = 2000.0f;  // every frame of this small picture is well within it
+  app::LiveView view(session, nullptr, nullptr);
+  frame(view);
+  ASSERT_TRUE(runUntilShown(view));
+  float orbitScale = 0.0f;
+  for (int i = 0; i < 12; ++i) {
+    state.scene.camera.azimuthDeg += 3.0;
+    frame(view);
+    orbitScale = std::max(orbitScale, state.metrics.marchScale);
+  }
+  EXPECT_LE(orbitScale, 0.5f) << "changes outside playback stay at or under the preview scale";
+  state.playing = true;
+  float playScale = 0.0f;
+  for (int i = 0; i < 12; ++i) {
+    state.scene.camera.azimuthDeg += 3.0;  // what playing a keyed orbit does each frame
+    frame(view);
+    playScale = state.metrics.marchScale;
+  }
+  EXPECT_EQ(playScale, 1.0f) << "within budget, playback marches every pixel";
+  // Over its budget, playback's scale comes down like any change's.
+  state.frameBudgetMs = 5.0f;
+  for (int i = 0; i < 6; ++i) {
+    state.scene.camera.azimuthDeg += 3.0;
+    frame(view);
+    std::this_thread::sleep_for(std::chrono::milliseconds(40));
+  }
+  EXPECT_LT(state.metrics.marchScale, 0.5f);
+}
+
 TEST_F(LiveViewTest, ASlowStillViewRefinesInBandsWithinItsBudgetUntilEveryBandHasItsSamples) {
   // A slow GPU, played by a march that costs 1 ms a row (96 ms for the whole 96-row target), under
   // a 20 ms budget: a still frame marches a few bands, never the whole target, and the bands

@@ -885,7 +885,7 @@ Accumulator::~Accumulator() {
   threads_.clear();  // joins
 }
 
-void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint64_t seed) {
+void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint64_t seed, WhenEscaping whenEscaping) {
   // Probe outside the lock so running batches are not held up by it.
   std::vector<PreparedLayer> prepared;
   std::string problem;
@@ -915,6 +915,23 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     std::unique_lock lock(gridMutex_);  // no batch runs and no snapshot copies while we clear
     patternWriters_.fetch_sub(1, std::memory_order_acq_rel);
     patternWriters_.notify_all();  // readers standing aside (waitForPatternChange) take their turn
+    const auto anyLayerBounded = [](const std::vector<PreparedLayer>& set) {
+      return std::any_of(set.begin(), set.end(), [](const PreparedLayer& l) { return l.bounded; });
+    };
+    if (whenEscaping == WhenEscaping::KeepLastBounded && !anyLayerBounded(prepared) && anyLayerBounded(layers_) &&
+        points_.load() > 0) {
+      // The grid, its counts and its layers stay the last bounded pattern's; only the workers stop
+      // (a later bounded pattern starts afresh). Nothing new is published, so a view keeps its picture.
+      {
+        std::lock_guard problemLock(problemMutex_);
+        problem_ = problem;
+        showingLastBounded_ = true;
+      }
+      active_ = false;
+      lock.unlock();
+      notifyWorkChanged();
+      return;
+    }
     layers_ = std::move(prepared);
     seed_ = seed;
     deposit_ = requestedDeposit_.load();
@@ -922,6 +939,7 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     {
       std::lock_guard problemLock(problemMutex_);
       problem_ = problem;
+      showingLastBounded_ = false;
     }
     iterations_ = 0;  // the cells are cleared slab by slab as they are next touched (makeSlabCurrent)
     points_ = 0;
@@ -929,8 +947,7 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     outside_ = 0;
     escapes_ = 0;
     generationStart_ = nowSeconds();
-    const bool anyBounded = std::any_of(layers_.begin(), layers_.end(), [](const auto& l) { return l.bounded; });
-    active_ = anyBounded;
+    active_ = anyLayerBounded(layers_);
     generation_.fetch_add(1, std::memory_order_acq_rel);
     version_.fetch_add(1, std::memory_order_acq_rel);
   }
@@ -1064,9 +1081,11 @@ AccumulatorStats Accumulator::stats() const {
   const double elapsed = nowSeconds() - generationStart_.load();
   s.pointsPerSecond = elapsed > 0.0 ? static_cast<double>(s.iterations) / elapsed : 0.0;
   const auto target = targetPoints_.load();
-  s.done = allStreamsDone(target);
+  // A pattern that cannot accumulate is as done as it will get: the explorer may rest on it.
+  s.done = !active_.load() || allStreamsDone(target);
   std::lock_guard lock(problemMutex_);
   s.problem = problem_;
+  s.showingLastBounded = showingLastBounded_;
   return s;
 }
 

@@ -140,8 +140,11 @@ struct AccumulatorStats {
     const auto total = points + outside;
     return total ? static_cast<double>(points) / static_cast<double>(total) : 0.0;
   }
-  bool done = false;    // the target number of points was reached
+  bool done = false;    // the target number of points was reached, or nothing can accumulate
   std::string problem;  // why nothing accumulates (an escaping attractor), else empty
+  // With a problem: the grid still holds the last bounded pattern (WhenEscaping::KeepLastBounded),
+  // and every other figure here is that pattern's.
+  bool showingLastBounded = false;
 };
 
 // One batch of points that landed inside the mask, in grid voxel coordinates (continuous: voxel
@@ -263,9 +266,16 @@ class Accumulator {
   Accumulator(const Accumulator&) = delete;
   Accumulator& operator=(const Accumulator&) = delete;
 
+  // What setPattern does with a pattern none of whose layers stays bounded.
+  enum class WhenEscaping {
+    Clear,            // a new, empty generation that says why it stays empty (a still must not go on)
+    KeepLastBounded,  // the grid keeps the last bounded pattern's points, and the workers stop:
+                      // what the explorer shows while a drag passes through an escape
+  };
   // Starts a new generation with these layers: the grid is cleared and refinement restarts.
   // Blocks only for the probe of each layer (milliseconds) and the end of a running batch.
-  void setPattern(const std::vector<PatternLayer>& layers, std::uint64_t seed);
+  void setPattern(const std::vector<PatternLayer>& layers, std::uint64_t seed,
+                  WhenEscaping whenEscaping = WhenEscaping::Clear);
   // How points are added to the grid (default Jittered). Takes effect at the next setPattern.
   void setDeposit(Deposit deposit);
   // When a sink is set, accepted points go to it instead of the grid (they still count as points
@@ -401,7 +411,8 @@ class Accumulator {
   // Guarded by its own mutex, not gridMutex_: stats() is read every UI frame and must not wait
   // while a generation change clears a large grid.
   mutable std::mutex problemMutex_;
-  std::string problem_;  // guarded by problemMutex_
+  std::string problem_;              // guarded by problemMutex_
+  bool showingLastBounded_ = false;  // guarded by problemMutex_
 
   void notifyWorkChanged();  // wakes idle workers and waitUntilDone, under wakeMutex_, and progress_
   mutable ProgressSignal progress_;
