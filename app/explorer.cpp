@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 
 #include "core/color.h"
@@ -271,6 +272,12 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   const std::string glRenderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   if (glRenderer.find("llvmpipe") != std::string::npos || glRenderer.find("softpipe") != std::string::npos)
     state.renderScale = 0.5f;
+  std::ofstream inputLog;
+  if (!options.inputLog.empty()) {
+    inputLog.open(options.inputLog, std::ios::app);
+    if (!inputLog) throw core::Error("cannot write the input log " + options.inputLog.string());
+    state.recordTyping = true;
+  }
   WindowInput input;
   glfwSetWindowUserPointer(window, &input);
   installInputCallbacks(window);
@@ -386,6 +393,14 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
         glfwSetWindowShouldClose(window, GLFW_TRUE);
       }
       glfwSwapBuffers(window);
+      if (inputLog && !state.typedThisFrame.empty()) {
+        const double shownAt =
+            std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+        for (const auto& [field, text] : state.typedThisFrame)
+          inputLog << std::fixed << shownAt << ' ' << field << '\t' << text << '\n';
+        inputLog.flush();  // read by another process while this one runs
+      }
+      state.typedThisFrame.clear();
       if (options.minFrameMs > 0)
         std::this_thread::sleep_until(lastFrame + std::chrono::milliseconds(options.minFrameMs));
       const auto now = std::chrono::steady_clock::now();

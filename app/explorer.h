@@ -13,6 +13,9 @@ struct ExplorerOptions {
   int width = 0, height = 0;             // window size in screen coordinates; 0: as last time (settings)
   float uiScale = 0.0f;                  // panel and font scale; 0: the monitor's content scale
   int minFrameMs = 0;                    // each frame lasts at least this long: a slow machine, for tests
+  // When set: every change to a text field is appended as "SECONDS FIELD<tab>TEXT" (SECONDS on the
+  // steady clock, which other processes share) when the frame showing it is drawn (bench explorer).
+  std::filesystem::path inputLog;
 };
 
 // Opens the window and runs until it is closed. With no display, says so and renders the scene

@@ -64,6 +64,11 @@ void probe(ExplorerState& state, const std::string& name) {
   state.probe->items[name] = UiProbe::Rect{min.x, min.y, max.x, max.y};
 }
 
+// After a text field: what it now holds, when it changed this frame and typing is recorded.
+void noteTyped(ExplorerState& state, const char* field, const char* text) {
+  if (state.recordTyping && ImGui::IsItemEdited()) state.typedThisFrame.emplace_back(field, text);
+}
+
 bool slider(ExplorerState& state, const std::string& scope, const char* label, double& value, double min, double max,
             ImGuiSliderFlags flags = 0, const char* format = "%.3f") {
   const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format, flags);
@@ -544,8 +549,15 @@ void handleCamera(ExplorerState& state) {
 void handleShortcuts(ExplorerState& state) {
   const ImGuiIO& io = ImGui::GetIO();
   if (io.KeyCtrl && ImGui::IsKeyPressed('Q', false)) askToQuit(state);
+  // Ctrl+S keeps the scene as the user's preset of its name, as the quit prompt's Save does (also
+  // from a text field, as in any editor).
+  if (io.KeyCtrl && ImGui::IsKeyPressed('S', false) && !state.quitPrompt) {
+    state.requests.saveAs = state.scene.name;
+    state.requests.saveReplacing = true;
+  }
   if (io.WantTextInput) return;
   if (ImGui::IsKeyPressed(kKeyF3, false)) startSearch(state, 0.1, true);
+  if (io.KeyCtrl && ImGui::IsKeyPressed('F', false)) state.focusAttractorFilter = true;
   const bool alt = io.KeyAlt || keyDown(kKeyLeftAlt) || keyDown(kKeyRightAlt);
   if (alt && ImGui::IsKeyPressed(kKeyLeft, false)) goVisited(state, -1);
   if (alt && ImGui::IsKeyPressed(kKeyRight, false)) goVisited(state, +1);
@@ -555,9 +567,11 @@ void handleShortcuts(ExplorerState& state) {
 // Panels.
 
 void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core::AttractorInfo& info) {
-  const bool enter = ImGui::InputTextWithHint("##filter", "filter attractors", state.attractorFilter,
+  if (std::exchange(state.focusAttractorFilter, false)) ImGui::SetKeyboardFocusHere();
+  const bool enter = ImGui::InputTextWithHint("##filter", "filter attractors (Ctrl+F)", state.attractorFilter,
                                               sizeof state.attractorFilter, ImGuiInputTextFlags_EnterReturnsTrue);
   probe(state, "attractor/filter");
+  noteTyped(state, "attractor filter", state.attractorFilter);
   const std::string filter = lowercase(state.attractorFilter);
   // Every word of the filter, anywhere in the id or the name: "sprott quadratic" finds
   // sprott_quadratic, "Sprott's 3D quadratic map".
@@ -911,6 +925,7 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
       ImGui::SetKeyboardFocusHere();
     }
     ImGui::InputTextWithHint("##variationfilter", "filter", state.variationFilter, sizeof state.variationFilter);
+    noteTyped(state, "variation filter", state.variationFilter);
     const std::string filter = lowercase(state.variationFilter);
     for (const core::VariationInfo& info : core::variationCatalogue()) {
       if (!filter.empty() && lowercase(info.name).find(filter) == std::string::npos) continue;
@@ -1363,6 +1378,7 @@ void meshSection(ExplorerState& state) {
   const std::string file = std::filesystem::path(state.scene.meshPath).filename().string();
   ImGui::Text("mesh: %s%s", file.c_str(), state.scene.embedded ? " (built in)" : "");
   ImGui::InputTextWithHint("##meshpath", "path to a mesh, preset or image", state.meshPath, sizeof state.meshPath);
+  noteTyped(state, "mesh path", state.meshPath);
   probe(state, "mesh/path");
   ImGui::SameLine();
   if (button(state, "mesh/", "Open") && state.meshPath[0] != '\0') state.requests.open = state.meshPath;
@@ -1468,6 +1484,7 @@ void presetsSection(ExplorerState& state, float scale) {
   const PresetLibrary::Entries entries = state.presets->entries();
   // Saving comes first, so it stays in reach however long the library grows.
   ImGui::InputTextWithHint("##savename", "name of your preset", state.saveName, sizeof state.saveName);
+  noteTyped(state, "preset name", state.saveName);
   probe(state, "preset/name");
   ImGui::SameLine();
   if (button(state, "preset/", "Save as") && state.saveName[0] != '\0') state.requests.saveAs = state.saveName;
@@ -1546,6 +1563,7 @@ void exportSection(ExplorerState& state) {
     state.exportPathMade = state.exportPath;
   }
   ImGui::InputText("file", state.exportPath, sizeof state.exportPath);
+  noteTyped(state, "export file", state.exportPath);
   probe(state, "export/file");
   if (state.viewRect.z > 0 && state.viewRect.w > 0) {
     ImGui::SameLine();
@@ -1652,6 +1670,7 @@ void flameChoiceWindow(ExplorerState& state, float scale) {
                      choice.names.size());
   ImGui::SetNextItemWidth(-1);
   ImGui::InputTextWithHint("##flamefilter", "filter by name", choice.filter, sizeof choice.filter);
+  noteTyped(state, "flame filter", choice.filter);
   const std::string filter = lowercase(choice.filter);
   std::optional<std::size_t> chosen;
   ImGui::BeginChild("flames", ImVec2(0, std::min(12.0f, static_cast<float>(choice.names.size())) *

@@ -76,7 +76,12 @@ struct ExplorerState {
   std::string notice;     // an error or a message shown in the window until dismissed
   UiRequests requests;
   UiProbe* probe = nullptr;  // set by tests
-  Settings settings;         // recent files, export settings, preset folder: kept between sessions
+  // Text fields' changes this frame, as (field, text), kept only when recordTyping is set (the
+  // explorer's --input-log writes them once the frame that shows them is drawn).
+  bool recordTyping = false;
+  std::vector<std::pair<std::string, std::string>> typedThisFrame;
+  bool focusAttractorFilter = false;  // Ctrl+F: the next frame puts the keyboard in the attractor filter
+  Settings settings;                  // recent files, export settings, preset folder: kept between sessions
 
   // Camera dragging.
   bool orbiting = false, panning = false;

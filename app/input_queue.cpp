@@ -69,6 +69,7 @@ void InputQueue::applyTo(ImGuiIO& io) {
   std::deque<Event> deferred;
   std::bitset<kKeys> keysDeferred;
   bool editingKeyChanged = false;
+  bool keyPressed = false;  // a key other than a modifier went down in this frame
   while (!events_.empty()) {
     const Event& event = events_.front();
     const auto index = static_cast<std::size_t>(event.code);
@@ -82,11 +83,16 @@ void InputQueue::applyTo(ImGuiIO& io) {
       }
       // A modifier must not overtake a waiting release (Z down, Z up, Ctrl down is not Ctrl+Z).
       if (isModifier(event.code) && !deferred.empty() && io.KeysDown[index] != event.down) break;
+      // Nor be released in the frame of a key pressed while it was held: xdotool's "key ctrl+a"
+      // (and a quick hand) releases Ctrl before A, and a frame that began after Ctrl alone went
+      // down (a resting loop wakes on the first event) would see A without Ctrl.
+      if (isModifier(event.code) && !event.down && io.KeysDown[index] && keyPressed) break;
       if (io.KeysDown[index] != event.down) {
         if (keysChanged[index]) break;  // the second transition of this key: next frame
         keysChanged[index] = true;
         io.KeysDown[index] = event.down;
         if (!printable && event.down) editingKeyChanged = true;  // a press edits; a release does not
+        if (event.down && !isModifier(event.code)) keyPressed = true;
       }
     } else if (event.kind == Kind::Button) {
       if (!deferred.empty()) break;

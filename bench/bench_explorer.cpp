@@ -29,6 +29,7 @@
 #include "gl/headless_context.h"
 #include "headless_frame_loop.h"
 #include "live_view.h"
+#include "xvfb_explorer.h"
 
 namespace voxflame::bench {
 
@@ -362,6 +363,88 @@ std::array<double, 3> cpuAtRest(app::ExplorerSession& session, FrameLoop& loop) 
 // The explorer's numbers at 192³, 256³ and 512³: edit → first frame (frames and ms) and → the
 // first full-resolution image, mean and worst frame while a slider drags the pattern, while the
 // camera orbits and while a still view refines, and the memory the session holds.
+// Typing into the real explorer under Xvfb: how long after xdotool starts typing a 16-character
+// string the whole of it is in a field on screen (the explorer's --input-log says when the frame
+// showing it was drawn). The goal is 0.5 s; typing itself (xdotool's 12 ms between keys) is
+// about 0.2 s of it. Measured while the default preset refines and again once it rests.
+nlohmann::json measureTyping() {
+  constexpr const char* kTyped = "sprott quadratic";
+  nlohmann::json result = {{"bench", "explorer"}, {"measurement", "typing"}, {"typed", kTyped}, {"goal_s", 0.5}};
+  if (!haveXvfbAndXdotool()) {
+    result["skipped"] = "needs Xvfb and xdotool (the setup script installs them)";
+    return result;
+  }
+  XvfbServer server("1280x800x24");
+  if (!server.running()) {
+    result["skipped"] = "Xvfb did not start";
+    return result;
+  }
+  const std::filesystem::path folder =
+      std::filesystem::temp_directory_path() / ("voxflame-bench-typing-" + std::to_string(::getpid()));
+  std::filesystem::create_directories(folder);
+  const std::filesystem::path log = folder / "typed.log";
+  {
+    BackgroundExplorer explorer(server, std::filesystem::read_symlink("/proc/self/exe"), folder,
+                                {"--input-log", log.string(), "--width", "1280", "--height", "800"});
+    if (!explorer.started() || server.xdotool(kFindExplorerWindow) != 0) {
+      result["skipped"] = "the explorer's window did not show: " + explorer.output();
+      std::filesystem::remove_all(folder);
+      return result;
+    }
+    // The seconds from the start of typing to the frame that shows the whole string; -1 when it
+    // did not show within 10 s.
+    const auto typeOnce = [&](double& typingSeconds) {
+      // Ctrl+F puts the keyboard in the attractor filter; Ctrl+A and BackSpace empty it.
+      server.xdotool(std::string(kFindExplorerWindow) +
+                     " windowfocus --sync key ctrl+f sleep 0.3 key ctrl+a BackSpace");
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      const auto start = Clock::now();
+      server.xdotool(std::string("type --delay 12 '") + kTyped + "'");
+      typingSeconds = secondsSince(start);
+      const double startSeconds = std::chrono::duration<double>(start.time_since_epoch()).count();
+      while (secondsSince(start) < 10.0) {
+        std::ifstream in(log);
+        for (std::string line; std::getline(in, line);) {
+          const std::size_t space = line.find(' '), tab = line.find('\t');
+          if (space == std::string::npos || tab == std::string::npos || tab < space) continue;
+          const double shownAt = std::stod(line.substr(0, space));
+          if (shownAt >= startSeconds && line.substr(space + 1, tab - space - 1) == "attractor filter" &&
+              line.substr(tab + 1) == kTyped)
+            return shownAt - startSeconds;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+      }
+      std::ifstream in(log);
+      std::string last;
+      for (std::string line; std::getline(in, line);) last = line;
+      result["last_logged_when_missed"] = last;  // what the field held instead, to see why
+      return -1.0;
+    };
+    // Three times each: from 5 s after the window shows, while the default preset refines (it
+    // rests after about 14 s here), and once it has rested for a while (frames wait for input).
+    const auto typeThrice = [&](const std::string& when) {
+      std::vector<double> shown, typing;
+      for (int i = 0; i < 3; ++i) {
+        double seconds = 0.0;
+        shown.push_back(typeOnce(seconds));
+        typing.push_back(seconds);
+        std::this_thread::sleep_for(std::chrono::seconds(1));
+      }
+      const bool missed = std::find(shown.begin(), shown.end(), -1.0) != shown.end();
+      result["seconds_to_show_" + when] = shown;
+      result["seconds_typing_" + when] = typing;
+      result["worst_seconds_to_show_" + when] = missed ? -1.0 : *std::max_element(shown.begin(), shown.end());
+    };
+    std::this_thread::sleep_for(std::chrono::seconds(5));
+    typeThrice("while_refining");
+    std::this_thread::sleep_for(std::chrono::seconds(25));
+    typeThrice("at_rest");
+    server.xdotool("key Escape");
+  }
+  std::filesystem::remove_all(folder);
+  return result;
+}
+
 void benchExplorer(const BenchOptions& options) {
   gl::HeadlessContext context;
   const std::set<std::string> libraryThreads = RunnableThreadSampler::threadsBut(std::to_string(::syscall(SYS_gettid)));
@@ -497,6 +580,7 @@ void benchExplorer(const BenchOptions& options) {
                      {"runnable_threads_at_sustained_max", runnable.atSustainedMax()},
                      {"phases", phases}});
   }
+  report(options, measureTyping());
 }
 
 }  // namespace voxflame::bench

@@ -107,6 +107,9 @@ Run defineExplorer(CLI::App& root) {
                   "Make each frame last at least MS milliseconds, as on a slow machine (for testing input)")
       ->type_name("MS")
       ->check(within(0, 10'000));
+  root.add_option("--input-log", options->inputLog,
+                  "Append each change to a text field, with the time it was shown, to FILE (for measuring input)")
+      ->type_name("FILE");
   root.footer(
       "Without a subcommand voxflame opens the explorer on FILE: a preset, the preset stored in a PNG\n"
       "rendered by voxflame, the first flame of a flame file (imported as by `voxflame import`), or a mesh\n"

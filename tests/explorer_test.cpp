@@ -20,139 +20,28 @@
 #include "core/scene.h"
 #include "core/scene_io.h"
 #include "test_support.h"
-
-extern char** environ;
+#include "xvfb_explorer.h"
 
 using voxflame::test::runVoxflame;
 using voxflame::test::TemporaryFolder;
 
+using voxflame::bench::XvfbServer;
+
 namespace {
 
-// A private X server for the duration of a test, on a display number nobody else uses.
-class XvfbServer {
- public:
-  // Xvfb picks a free display itself (-displayfd) and writes its number to a pipe: tests that run
-  // at once never share a server (two picking the same free number would, and a key meant for one
-  // explorer would reach another).
-  XvfbServer() {
-    int fds[2];
-    if (pipe(fds) != 0) return;
-    pid_ = fork();
-    if (pid_ == 0) {
-      close(fds[0]);
-      const std::string fd = std::to_string(fds[1]);
-      execlp("Xvfb", "Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x720x24", "-nolisten", "tcp", nullptr);
-      _exit(127);
-    }
-    close(fds[1]);
-    std::string number;
-    char c = 0;
-    while (read(fds[0], &c, 1) == 1 && c != '\n') number += c;
-    close(fds[0]);
-    if (!number.empty()) display_ = std::stoi(number);
-    for (int i = 0; i < 100 && !running(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
-  ~XvfbServer() { stop(); }
-  void stop() {
-    if (pid_ > 0) {
-      kill(pid_, SIGTERM);
-      waitpid(pid_, nullptr, 0);
-      pid_ = -1;
-    }
-  }
-  bool running() const {
-    return display_ >= 0 && std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display_));
-  }
-  std::string environment() const { return "DISPLAY=:" + std::to_string(display_); }
-
-  // Runs xdotool on this display (a shell-quoted argument string); its exit status. A window
-  // search waits at most two minutes.
-  int xdotool(const std::string& arguments) const {
-    return std::system(("env " + environment() + " timeout 120 xdotool " + arguments + " >/dev/null").c_str());
-  }
-
- private:
-  int display_ = -1;
-  pid_t pid_ = -1;
-};
-
 bool haveXdotool() {
-  return std::system("command -v xdotool >/dev/null") == 0;
+  return voxflame::bench::haveXvfbAndXdotool();
 }
 
-// The explorer running in the background on a test's X server, as a user starts it (not a
-// scripted run: settings and autosaves are on), with its settings, state and caches in `folder`
-// and its output in folder/explorer.log.
-class BackgroundExplorer {
+constexpr const char* kFindWindow = voxflame::bench::kFindExplorerWindow;
+
+// The explorer built with these tests, in the background on a test's X server, with its files in
+// the test's temporary folder.
+class BackgroundExplorer : public voxflame::bench::BackgroundExplorer {
  public:
   BackgroundExplorer(const XvfbServer& server, const TemporaryFolder& folder, std::vector<std::string> arguments)
-      : log_(folder / "explorer.log") {
-    std::vector<std::string> environment = {server.environment(), "LIBGL_ALWAYS_SOFTWARE=1"};
-    for (const char* kind : {"CONFIG", "STATE", "DATA", "CACHE"})
-      environment.push_back(std::string("XDG_") + kind + "_HOME=" + (folder / kind).string());
-    for (char** variable = environ; *variable; ++variable) {
-      const std::string entry = *variable;
-      if (entry.rfind("DISPLAY=", 0) != 0 && entry.rfind("WAYLAND_DISPLAY=", 0) != 0 && entry.rfind("XDG_", 0) != 0 &&
-          entry.rfind("LIBGL_ALWAYS_SOFTWARE=", 0) != 0)
-        environment.push_back(entry);
-    }
-    arguments.insert(arguments.begin(), VOXFLAME_BINARY);
-    std::vector<char*> argv, envp;
-    for (std::string& argument : arguments) argv.push_back(argument.data());
-    for (std::string& entry : environment) envp.push_back(entry.data());
-    argv.push_back(nullptr);
-    envp.push_back(nullptr);
-    posix_spawn_file_actions_t actions;
-    posix_spawn_file_actions_init(&actions);
-    posix_spawn_file_actions_addopen(&actions, 1, log_.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-    posix_spawn_file_actions_adddup2(&actions, 1, 2);
-    posix_spawn_file_actions_addchdir_np(&actions, folder.path().c_str());
-    if (posix_spawn(&pid_, VOXFLAME_BINARY, &actions, nullptr, argv.data(), envp.data()) != 0) pid_ = -1;
-    posix_spawn_file_actions_destroy(&actions);
-  }
-  ~BackgroundExplorer() {
-    if (pid_ > 0) {
-      kill(pid_, SIGKILL);
-      waitpid(pid_, nullptr, 0);
-    }
-  }
-  bool started() const { return pid_ > 0 || status_; }
-  void signal(int number) const {
-    if (pid_ > 0) kill(pid_, number);
-  }
-
-  // Waits up to `limit` for the explorer to end: its exit status (128 + N for signal N), or none
-  // while it is still running.
-  std::optional<int> exitStatus(std::chrono::seconds limit = std::chrono::seconds(120)) {
-    const auto deadline = std::chrono::steady_clock::now() + limit;
-    while (pid_ > 0) {
-      int status = 0;
-      if (waitpid(pid_, &status, WNOHANG) == pid_) {
-        pid_ = -1;
-        status_ = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-      } else if (std::chrono::steady_clock::now() > deadline) {
-        break;
-      } else {
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
-      }
-    }
-    return status_;
-  }
-  std::string output() const {
-    std::ifstream in(log_);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-  }
-
- private:
-  std::filesystem::path log_;
-  pid_t pid_ = -1;
-  std::optional<int> status_;
+      : voxflame::bench::BackgroundExplorer(server, VOXFLAME_BINARY, folder.path(), std::move(arguments)) {}
 };
-
-// The xdotool arguments that find the explorer's window once it is shown.
-constexpr const char* kFindWindow = "search --sync --onlyvisible --name voxflame";
 
 }  // namespace
 
@@ -344,4 +233,49 @@ TEST(Explorer, ASignalEndsTheExplorerWithTheSceneAutosaved) {
   const auto recoverable = voxflame::app::findRecoverable(folder / "STATE" / "voxflame" / "autosave");
   ASSERT_EQ(recoverable.size(), 1u) << explorer.output();
   EXPECT_TRUE(recoverable.front().scene) << recoverable.front().error;
+}
+
+// Ctrl+F puts the keyboard in the attractor filter, a quick Ctrl+A (xdotool releases Ctrl before
+// A) selects what it holds, and what is typed shows in it; --input-log records each change with
+// the time of the frame that showed it (what `bench explorer` measures typing with). Enter takes
+// the first match: the title then says the scene has unsaved changes.
+TEST(Explorer, CtrlFTypesIntoTheAttractorFilterAndTheInputLogSaysWhen) {
+  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
+  XvfbServer server;
+  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
+  TemporaryFolder folder;
+  BackgroundExplorer explorer(server, folder,
+                              {"--input-log", (folder / "typed.log").string(), "--width", "1280", "--height", "720"});
+  ASSERT_TRUE(explorer.started());
+  const auto lastLogged = [&] {
+    std::ifstream in(folder / "typed.log");
+    std::string last;
+    for (std::string line; std::getline(in, line);) last = line;
+    return last;
+  };
+  // A key may be lost while the suite loads the machine: each step is sent again until it shows.
+  const auto sendUntilLogged = [&](const std::string& keys, const std::string& text) {
+    for (int attempt = 0; attempt < 5; ++attempt) {
+      if (server.xdotool(std::string(kFindWindow) + " windowfocus --sync " + keys) != 0) return false;
+      for (int i = 0; i < 30; ++i) {
+        const std::string last = lastLogged();
+        if (last.size() >= text.size() + 1 &&
+            last.compare(last.size() - text.size() - 1, std::string::npos, "\t" + text) == 0)
+          return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      }
+    }
+    return false;
+  };
+  ASSERT_TRUE(sendUntilLogged("key ctrl+f sleep 0.3 type sprott", "sprott")) << lastLogged() << explorer.output();
+  EXPECT_NE(lastLogged().find(" attractor filter\t"), std::string::npos) << lastLogged();
+  ASSERT_TRUE(sendUntilLogged("key ctrl+a sleep 0.3 type lorenz", "lorenz"))
+      << "Ctrl+A did not select the filter's text: " << lastLogged();
+  ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync key Return"), 0);
+  bool unsaved = false;
+  for (int i = 0; i < 100 && !unsaved; ++i) {
+    unsaved = server.xdotool("search --onlyvisible --name 'unsaved'") == 0;
+    if (!unsaved) std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  EXPECT_TRUE(unsaved) << "Enter did not take the filter's first match";
 }

@@ -617,6 +617,20 @@ TEST_F(ExplorerUi, QuittingWithUnsavedChangesAsksAndEachAnswerDoesWhatItSays) {
 }
 
 // The window's title is the document's: an undone change of name takes the title back with it.
+TEST_F(ExplorerUi, CtrlSSavesTheSceneAsThePresetOfItsName) {
+  state.scene.name = "my bunny";
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyCtrl = true;
+  io.KeysDown['S'] = true;
+  frame();
+  EXPECT_EQ(state.requests.saveAs, std::optional<std::string>("my bunny"));
+  EXPECT_TRUE(state.requests.saveReplacing) << "a save replaces the preset of that name";
+  io.KeysDown['S'] = false;
+  io.KeyCtrl = false;
+  frame();
+  EXPECT_FALSE(state.requests.saveAs);
+}
+
 TEST_F(ExplorerUi, TheTitleFollowsTheDocumentThroughUndo) {
   const std::string original = state.scene.name;
   state.scene.name = "imported flame";

@@ -189,6 +189,55 @@ TEST_F(InputQueueTest, TypedTextArrivesInAFrameOrTwoAsTyped) {
   EXPECT_STREQ(text, "sprott quadratic");
 }
 
+// A resting explorer wakes on the first event, so a frame can start with Ctrl alone down; xdotool
+// then releases Ctrl before A. A's press must still come with Ctrl held.
+TEST_F(InputQueueTest, AModifierReleasedRightAfterAKeyPressWaitsForTheNextFrame) {
+  ImGuiIO& io = ImGui::GetIO();
+  queue.key(app::kKeyLeftControl, true);
+  queue.applyTo(io);  // the frame the first event woke
+  EXPECT_TRUE(io.KeyCtrl);
+  queue.key('A', true);
+  queue.key(app::kKeyLeftControl, false);
+  queue.key('A', false);
+  queue.applyTo(io);
+  EXPECT_TRUE(io.KeysDown['A']);
+  EXPECT_TRUE(io.KeyCtrl) << "A went down with Ctrl held: this frame is Ctrl+A";
+  queue.applyTo(io);
+  EXPECT_FALSE(io.KeyCtrl);
+  EXPECT_FALSE(io.KeysDown['A']);
+  EXPECT_EQ(queue.pending(), 0u);
+}
+
+// xdotool's "key ctrl+a" (Ctrl down, A down, A up, Ctrl up between two frames) selects the whole
+// text of the field with the keyboard, so the Backspace after it empties the field.
+TEST_F(InputQueueTest, AQuickCtrlASelectsTheWholeField) {
+  char text[64] = "sprott quadratic";
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyMap[ImGuiKey_Backspace] = kKeyBackspace;  // as the GLFW backend maps them
+  io.KeyMap[ImGuiKey_A] = 'A';
+  auto fieldFrame = [&](bool focus) {
+    queue.applyTo(io);
+    ImGui::NewFrame();
+    ImGui::Begin("typing");
+    if (focus) ImGui::SetKeyboardFocusHere();
+    ImGui::InputText("field", text, sizeof text);
+    ImGui::End();
+    ImGui::Render();
+  };
+  fieldFrame(true);
+  for (int i = 0; i < 3; ++i) fieldFrame(false);
+  ASSERT_TRUE(ImGui::IsAnyItemActive());
+  queue.key(app::kKeyLeftControl, true);
+  queue.key('A', true);
+  queue.key('A', false);
+  queue.key(app::kKeyLeftControl, false);
+  queue.key(kKeyBackspace, true);
+  queue.key(kKeyBackspace, false);
+  for (int i = 0; i < 20 && queue.pending() > 0; ++i) fieldFrame(false);
+  fieldFrame(false);
+  EXPECT_STREQ(text, "");
+}
+
 // A letter's release waits for the next frame while typing goes on, but a modifier does not
 // overtake it: Z down, Z up, Ctrl down between two frames is not Ctrl+Z.
 TEST_F(InputQueueTest, AWaitingReleaseIsNotOvertakenByAModifier) {
