@@ -97,3 +97,59 @@ function(voxflame_check_link_cycles)
                         "(or what uses both above them).")
   endif()
 endfunction()
+
+# voxflame_find_forbidden_link(<out-var> <start> <forbidden>...): follows VOXFLAME_LINKS_<node>
+# from <start> (breadth first) and sets <out-var> to the first chain that reaches one of the
+# forbidden names, as "a -> b -> imgui", or to "" when none is reached. Like
+# voxflame_find_link_cycle it reads only variables, so a script can try it on a made-up graph.
+function(voxflame_find_forbidden_link out start)
+  set(forbidden ${ARGN})
+  set(queue "${start}")
+  set(seen "${start}")
+  set(chain_${start} "${start}")
+  while(queue)
+    list(POP_FRONT queue node)
+    foreach(next IN LISTS VOXFLAME_LINKS_${node})
+      # list(FIND), not IN_LIST: a script (cmake -P) runs this under the old policies.
+      list(FIND seen "${next}" seenAt)
+      if(seenAt GREATER -1)
+        continue()
+      endif()
+      list(APPEND seen "${next}")
+      set(chain_${next} "${chain_${node}} -> ${next}")
+      list(FIND forbidden "${next}" forbiddenAt)
+      if(forbiddenAt GREATER -1)
+        set(${out} "${chain_${next}}" PARENT_SCOPE)
+        return()
+      endif()
+      list(APPEND queue "${next}")
+    endforeach()
+  endwhile()
+  set(${out} "" PARENT_SCOPE)
+endfunction()
+
+# voxflame_check_links_avoid(<target> <forbidden>...): call once every target is defined. Stops the
+# configure when <target> links, directly or through any of the project's libraries, one of the
+# forbidden libraries (imported targets or plain names), naming the chain. The headless commands
+# use it to stay without a window: `voxflame render` on a server must not need GLFW or ImGui.
+function(voxflame_check_links_avoid target)
+  _voxflame_targets_below("${CMAKE_SOURCE_DIR}" ours)
+  foreach(node IN LISTS ours)
+    set(VOXFLAME_LINKS_${node} "")
+    foreach(property LINK_LIBRARIES INTERFACE_LINK_LIBRARIES)
+      get_target_property(items ${node} ${property})
+      if(NOT items)
+        continue()
+      endif()
+      foreach(item IN LISTS items)
+        # A static library's PRIVATE links come back as $<LINK_ONLY:name>: they are linked too.
+        string(REGEX REPLACE "^\\$<LINK_ONLY:(.*)>$" "\\1" item "${item}")
+        list(APPEND VOXFLAME_LINKS_${node} "${item}")
+      endforeach()
+    endforeach()
+  endforeach()
+  voxflame_find_forbidden_link(chain ${target} ${ARGN})
+  if(chain)
+    message(FATAL_ERROR "${target} must not link ${ARGN}, but links: ${chain}")
+  endif()
+endfunction()

@@ -1,7 +1,10 @@
-# Fails when a file in engine/core includes a GL, EGL, GLFW or ImGui header, or engine/gl
-# includes GLFW or ImGui (DESIGN.md's layering).
+# Fails when a file in engine/core includes a GL, EGL, GLFW or ImGui header, or engine/gl or the
+# headless commands (app/, not app/explorer/) include GLFW or ImGui (docs/ARCHITECTURE.md).
 file(GLOB_RECURSE core_files ${ROOT}/engine/core/*.h ${ROOT}/engine/core/*.cpp)
 file(GLOB_RECURSE gl_files ${ROOT}/engine/gl/*.h ${ROOT}/engine/gl/*.cpp)
+# The headless commands: app/ outside the explorer's folder (and the entry point's).
+file(GLOB command_files ${ROOT}/app/*.h ${ROOT}/app/*.cpp)
+list(APPEND gl_files ${command_files})
 set(bad "")
 foreach(f IN LISTS core_files)
   file(STRINGS ${f} lines REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"](epoxy/|GL/|GLES|EGL/|GLFW/|imgui)")

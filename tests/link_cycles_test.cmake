@@ -70,3 +70,42 @@ target_link_libraries(middle INTERFACE low)
 add_library(high INTERFACE)
 target_link_libraries(high INTERFACE middle low)
 ]] FALSE "")
+
+# The headless commands' check (voxflame_check_links_avoid): a forbidden library reached through
+# any chain of links is found, with the chain; none reached, none reported.
+function(expect_forbidden expected start)
+  voxflame_find_forbidden_link(chain ${start} ${ARGN})
+  if(NOT chain STREQUAL expected)
+    message(FATAL_ERROR "from ${start}: expected the chain '${expected}', found '${chain}'")
+  endif()
+endfunction()
+set(VOXFLAME_LINKS_commands core gl)
+set(VOXFLAME_LINKS_explorer commands imgui PkgConfig::GLFW)
+set(VOXFLAME_LINKS_core "")
+set(VOXFLAME_LINKS_gl core EGL)
+expect_forbidden("" commands imgui PkgConfig::GLFW)
+expect_forbidden("explorer -> imgui" explorer imgui PkgConfig::GLFW)
+set(VOXFLAME_LINKS_gl core EGL explorer)
+expect_forbidden("commands -> gl -> explorer -> imgui" commands imgui PkgConfig::GLFW)
+
+# On real targets: a PRIVATE link of a static library (kept as $<LINK_ONLY:...>) to a library that
+# links a window library stops the configure, naming the chain.
+function(configure_headless name links expect_failure)
+  set(source ${WORK}/${name})
+  file(REMOVE_RECURSE ${source})
+  file(WRITE ${source}/CMakeLists.txt
+       "cmake_minimum_required(VERSION 3.25)\nproject(${name} LANGUAGES C)\n"
+       "add_library(window INTERFACE)\ntarget_link_libraries(window INTERFACE glfw)\n"
+       "add_library(commands STATIC empty.c)\n${links}\n"
+       "include(${ROOT}/cmake/link_cycles.cmake)\nvoxflame_check_links_avoid(commands glfw)\n")
+  file(WRITE ${source}/empty.c "int voxflame_empty;\n")
+  execute_process(COMMAND ${CMAKE_COMMAND} -S ${source} -B ${source}/build -G "${GENERATOR}"
+                  RESULT_VARIABLE status OUTPUT_VARIABLE output ERROR_VARIABLE output)
+  if(expect_failure AND (status EQUAL 0 OR NOT output MATCHES "commands must not link glfw, but links: commands -> window -> glfw"))
+    message(FATAL_ERROR "${name}: expected the configure to stop on commands -> window -> glfw:\n${output}")
+  elseif(NOT expect_failure AND NOT status EQUAL 0)
+    message(FATAL_ERROR "${name}: the configure failed:\n${output}")
+  endif()
+endfunction()
+configure_headless(links_a_window "target_link_libraries(commands PRIVATE window)" TRUE)
+configure_headless(headless "" FALSE)

@@ -1,0 +1,22 @@
+# Fails when the binary BINARY, a test that links only the headless commands, holds any Dear
+# ImGui or GLFW code: what `voxflame render` would drag onto a server without a display. (ImGui is
+# a static library and the linker drops unused shared ones, so `ldd` alone would not see it.)
+execute_process(COMMAND nm -C --defined-only ${BINARY} RESULT_VARIABLE status OUTPUT_VARIABLE symbols
+                ERROR_VARIABLE error)
+if(NOT status EQUAL 0)
+  message(FATAL_ERROR "nm ${BINARY} failed: ${error}")
+endif()
+if(NOT symbols MATCHES "voxflame::app::")
+  message(FATAL_ERROR "${BINARY} holds none of the commands' code: not the binary this check is for")
+endif()
+string(REGEX MATCHALL "[^\n]*(ImGui::|ImGui_Impl|glfw[A-Z])[^\n]*" found "${symbols}")
+list(LENGTH found count)
+if(count GREATER 0)
+  list(SUBLIST found 0 5 first)
+  string(JOIN "\n" first ${first})
+  message(FATAL_ERROR "${BINARY} holds ${count} ImGui or GLFW symbols, such as:\n${first}")
+endif()
+execute_process(COMMAND ldd ${BINARY} OUTPUT_VARIABLE libraries)
+if(libraries MATCHES "lib(glfw|imgui)")
+  message(FATAL_ERROR "${BINARY} loads a window library:\n${libraries}")
+endif()
