@@ -42,7 +42,7 @@ int runProgram(const std::string& program, const std::vector<std::string>& argum
   for (const std::string& argument : arguments) argv.push_back(const_cast<char*>(argument.c_str()));
   argv.push_back(nullptr);
   std::fflush(nullptr);
-  // posix_spawn rather than fork: voxflame may hold worker threads (DESIGN.md, Threads).
+  // posix_spawn rather than fork: voxflame may hold worker threads (docs/ARCHITECTURE.md, Threads).
   int pipeEnds[2] = {-1, -1};
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);

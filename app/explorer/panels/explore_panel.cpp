@@ -1,0 +1,233 @@
+// Explore: the Lyapunov analysis of layer 0, Search (F3) and Mutate in the background, and the
+// history of what they found (Back, Forward). Changes layer 0's pattern.
+#include "explorer_ui.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <sstream>
+#include <cstdarg>
+#include <cctype>
+#include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <utility>
+
+#include "core/attractor.h"
+#include "core/camera.h"
+#include "core/color.h"
+#include "core/error.h"
+#include "core/flame.h"
+#include "core/flame_search.h"
+#include "core/flame_variations.h"
+#include "core/flame_xml.h"
+#include "core/flat_render.h"
+#include "core/grid.h"
+#include "core/keyframes.h"
+#include "core/scene_schema.h"
+#include "commands.h"
+#include "pipeline.h"
+#include "panels.h"
+#include "widgets.h"
+
+namespace voxflame::app::panels {
+
+// Background analysis, search and the search history.
+
+std::string analysisKey(const core::PatternLayer& layer) {
+  std::string key =
+      layer.attractor + "/" + std::string(core::toString(layer.integrator)) + "/" + std::to_string(layer.step);
+  for (double p : layer.params) {
+    key += '/';
+    key += std::to_string(p);
+  }
+  return key;
+}
+
+// Keeps the Lyapunov line in step with layer 0; one analysis at a time, never waited for.
+void updateAnalysis(ExplorerState& state) {
+  const bool chaosGame = !state.scene.layers.empty() && state.scene.layers.front().isChaosGame();
+  if (state.analysis.ready()) {
+    try {
+      const core::OrbitAnalysis result = *state.analysis.take();
+      char text[160];
+      std::snprintf(text, sizeof text, "λ %.3f  %.3f  %.3f  (%s)", result.lyapunov[0], result.lyapunov[1],
+                    result.lyapunov[2], std::string(core::toString(result.verdict)).c_str());
+      if (!chaosGame) state.lyapunovText = text;  // an attractor's analysis that finished after a switch is stale
+    } catch (const core::Error& e) {
+      if (!chaosGame) state.lyapunovText = e.what();
+    }
+  }
+  if (state.scene.layers.empty()) return;
+  const core::PatternLayer& front = state.scene.layers.front();
+  if (chaosGame) {
+    // A chaos game picks a map at random every step: there is no one orbit whose Lyapunov
+    // exponents would mean anything, so the line just says what the layer is.
+    state.lyapunovText =
+        front.kind == core::PatternKind::Flame ? "flame (chaos game)" : "quaternion Julia (chaos game)";
+    state.analysedKey.clear();
+    return;
+  }
+  if (state.analysis.busy()) return;
+  const std::string key = analysisKey(front);
+  if (key == state.analysedKey) return;
+  state.analysedKey = key;
+  try {
+    const core::OrbitSpec spec = core::orbitSpecOf(state.scene.layers.front());
+    core::LyapunovOptions options;
+    options.steps = 20'000;
+    state.analysis.start([spec, options](std::stop_token) { return core::analyseOrbit(spec, options); });
+  } catch (const core::Error& e) {
+    state.lyapunovText = e.what();
+  }
+}
+
+// The part of a layer that Search changes and the history restores (its kind and pattern);
+// colour and placement stay.
+void applyVisited(core::PatternLayer& layer, const core::PatternLayer& visited) {
+  const bool kindChanges = layer.kind != visited.kind;
+  layer.kind = visited.kind;
+  layer.attractor = visited.attractor;
+  layer.params = visited.params;
+  layer.integrator = visited.integrator;
+  layer.step = visited.step;
+  layer.flame = visited.flame;
+  layer.julia = visited.julia;
+  // An attractor cannot colour by flam3's index; a chaos layer starts with it.
+  if (kindChanges) layer.color.mode = visited.isChaosGame() ? core::ColorMode::Index : core::ColorMode::Speed;
+}
+
+std::string fillText(const core::FillReport& fill) {
+  char text[128];
+  std::snprintf(text, sizeof text, "fills %.0f%% of its box, thinnest side %.2f of the longest", 100.0 * fill.occupancy,
+                fill.extentRatio);
+  return text;
+}
+
+// Search (fresh) draws new patterns near nothing; Mutate (and "Find a nearby one") moves the
+// current one by `strength`. Attractors always search near their parameters, as before; flames
+// and Julia sets use the fill test of flame_search.h.
+void startSearch(ExplorerState& state, double strength, bool fresh) {
+  if (state.search.busy() || state.scene.layers.empty()) return;  // one at a time
+  using Outcome = ExplorerState::SearchOutcome;
+  try {
+    const core::PatternLayer layer = state.scene.layers.front();
+    const std::uint64_t seed = state.searchSeed++;
+    if (layer.isChaosGame()) {
+      core::FlameSearchOptions options;
+      options.seed = seed;
+      options.count = 1;
+      options.strength = strength;
+      options.juliaView = layer.julia;
+      state.searchTried.reset();  // the flame and Julia searches count no tries
+      state.searchStrength.reset();
+      state.searchMessage = "searching…";
+      state.search.start([layer, options, fresh](std::stop_token stop) mutable {
+        options.stop = stop;
+        Outcome outcome;
+        core::PatternLayer found = layer;
+        if (layer.kind == core::PatternKind::Flame) {
+          const auto results =
+              core::searchFlames(fresh ? std::nullopt : std::optional<core::FlameGenome>(layer.flame), options);
+          if (results.empty()) {
+            outcome.message = "no flame that fills its box was found; try again or a smaller strength";
+            return outcome;
+          }
+          found.flame = results.front().genome;
+          outcome.message = "found a flame: " + fillText(results.front().fill);
+        } else {
+          const auto results = core::searchQuaternionJulia(
+              fresh ? std::nullopt : std::optional<core::QuaternionJuliaSettings>(layer.julia), options);
+          if (results.empty()) {
+            outcome.message = "no Julia set that fills its box was found; try again or a smaller strength";
+            return outcome;
+          }
+          found.julia = results.front().julia;
+          outcome.message = "found a Julia set: " + fillText(results.front().fill);
+        }
+        outcome.found = found;
+        return outcome;
+      });
+      return;
+    }
+    const core::OrbitSpec spec = core::orbitSpecOf(layer);
+    core::SearchOptions options;
+    options.seed = seed;
+    options.count = 1;
+    options.strength = strength;
+    // Nothing nearby: it widens by itself, a few hundred tries at each strength, before giving up.
+    options.widenTo = std::max(strength, core::kSearchWidenTo);
+    options.maxCandidates = core::kSearchTriesPerStrength;
+    state.searchTried = std::make_shared<std::atomic<int>>(0);
+    state.searchStrength = std::make_shared<std::atomic<double>>(strength);
+    state.searchMessage = "searching…";
+    state.search.start([layer, spec, options, tried = state.searchTried,
+                        strengthNow = state.searchStrength](std::stop_token stop) mutable {
+      options.stop = stop;
+      options.tried = tried.get();
+      options.strengthNow = strengthNow.get();
+      Outcome outcome;
+      const auto results = core::searchChaos(spec, options);
+      if (results.empty()) {
+        char text[160];
+        std::snprintf(text, sizeof text, "no chaotic set within strength %.2g–%.2g after %d tries", options.strength,
+                      options.widenTo, tried->load());
+        outcome.message = text;
+        return outcome;
+      }
+      core::PatternLayer found = layer;
+      found.params = results.front().params;
+      outcome.found = found;
+      char text[128];
+      std::snprintf(text, sizeof text, "found: largest Lyapunov exponent %.3f (strength %.2g, %d tries)",
+                    results.front().analysis.lyapunov[0], strengthNow->load(), tried->load());
+      outcome.message = text;
+      return outcome;
+    });
+  } catch (const core::Error& e) {
+    state.searchMessage = e.what();
+  }
+}
+
+void collectSearch(ExplorerState& state) {
+  if (!state.search.ready()) return;
+  try {
+    const ExplorerState::SearchOutcome outcome = *state.search.take();
+    state.searchMessage = outcome.message;
+    if (!outcome.found || state.scene.layers.empty()) return;
+    core::PatternLayer& layer = state.scene.layers.front();
+    if (layer.kind != outcome.found->kind) {
+      state.searchMessage = "the layer changed kind while the search ran; its result was dropped";
+      return;
+    }
+    // The history keeps where the search started from, then each find; a find after going back
+    // drops the forward part, as in a browser.
+    if (state.visited.empty()) {
+      state.visited.push_back(layer);
+      state.visitedMessages.assign(1, "where the search started");
+    }
+    state.visited.resize(std::min(state.visited.size(), state.visitedIndex + 1));
+    state.visitedMessages.resize(state.visited.size());
+    applyVisited(layer, *outcome.found);
+    state.visited.push_back(layer);
+    state.visitedMessages.push_back(outcome.message);
+    state.visitedIndex = state.visited.size() - 1;
+  } catch (const core::Error& e) {
+    state.searchMessage = e.what();
+  }
+}
+
+void goVisited(ExplorerState& state, int direction) {
+  if (state.visited.empty() || state.scene.layers.empty()) return;
+  const auto target = static_cast<long long>(state.visitedIndex) + direction;
+  if (target < 0 || target >= static_cast<long long>(state.visited.size())) return;
+  state.visitedIndex = static_cast<std::size_t>(target);
+  applyVisited(state.scene.layers.front(), state.visited[state.visitedIndex]);
+  // The "found:" line is the one of the pattern now shown.
+  if (state.visitedIndex < state.visitedMessages.size())
+    state.searchMessage = state.visitedMessages[state.visitedIndex];
+}
+
+}  // namespace voxflame::app::panels

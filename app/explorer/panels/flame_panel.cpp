@@ -1,0 +1,482 @@
+// A flame layer's editor: its transforms, each one's affine maps, variations and colour, the xaos
+// matrix, the final transform and symmetry. Changes the layer's flame genome.
+#include "explorer_ui.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <sstream>
+#include <cstdarg>
+#include <cctype>
+#include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <utility>
+
+#include "core/attractor.h"
+#include "core/camera.h"
+#include "core/color.h"
+#include "core/error.h"
+#include "core/flame.h"
+#include "core/flame_search.h"
+#include "core/flame_variations.h"
+#include "core/flame_xml.h"
+#include "core/flat_render.h"
+#include "core/grid.h"
+#include "core/keyframes.h"
+#include "core/scene_schema.h"
+#include "commands.h"
+#include "pipeline.h"
+#include "panels.h"
+#include "widgets.h"
+
+namespace voxflame::app::panels {
+
+// ---------------------------------------------------------------------------------------------
+// Chaos-game layers: the kind of a layer, a flame's transforms and variations, a Julia set.
+
+// A layer's kind; a new kind starts from its defaults (the default flame, the classic Julia set,
+// the attractor catalogue's first-layer default) and the colour mode that suits it.
+void patternKindChoice(ExplorerState& state, std::size_t index, const std::string& scope, core::PatternLayer& layer) {
+  static constexpr const char* kKindLabels[] = {"attractor", "flame", "quaternion Julia"};
+  const int current = static_cast<int>(layer.kind);
+  if (ImGui::BeginCombo("pattern", kKindLabels[current])) {
+    for (int k = 0; k < 3; ++k) {
+      const bool chosen = ImGui::Selectable(kKindLabels[k], k == current);
+      probe(state, scope + "pattern/" + kKindLabels[k]);
+      if (!chosen || k == current) continue;
+      const core::PatternLayer defaults;
+      layer.kind = static_cast<core::PatternKind>(k);
+      if (layer.isChaosGame()) {
+        layer.attractor.clear();
+        layer.params.clear();
+        layer.flame = layer.kind == core::PatternKind::Flame ? core::defaultFlame() : core::FlameGenome{};
+        layer.julia = core::QuaternionJuliaSettings{};
+        layer.color.mode = core::ColorMode::Index;
+      } else {
+        const core::AttractorInfo& info = core::attractorOrThrow(defaults.attractor);
+        layer.attractor = info.id;
+        layer.params = info.defaultParams();
+        layer.step = info.defaultStep;
+        layer.integrator = info.defaultIntegrator;
+        layer.flame = {};
+        layer.julia = {};
+        if (layer.color.mode == core::ColorMode::Index) layer.color.mode = core::ColorMode::Speed;
+      }
+      state.selectedXform[index] = 0;
+    }
+    ImGui::EndCombo();
+  }
+  probe(state, scope + "pattern");
+}
+
+// The length of column `col` of the 3×3 part: how much the map stretches its own axis `col`.
+double columnLength(const std::array<double, 12>& m, int col) {
+  const auto c = static_cast<std::size_t>(col);
+  return std::sqrt(m[c] * m[c] + m[4 + c] * m[4 + c] + m[8 + c] * m[8 + c]);
+}
+
+// rotation about x, then y, then z (degrees), as a 3×3 row-major matrix.
+std::array<double, 9> eulerRotation(const double degrees[3]) {
+  const double a = glm::radians(degrees[0]), b = glm::radians(degrees[1]), c = glm::radians(degrees[2]);
+  const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b), cc = std::cos(c),
+               sc = std::sin(c);
+  // Rz · Ry · Rx
+  return {cc * cb,
+          cc * sb * sa - sc * ca,
+          cc * sb * ca + sc * sa,  //
+          sc * cb,
+          sc * sb * sa + cc * ca,
+          sc * sb * ca - cc * sa,  //
+          -sb,
+          cb * sa,
+          cb * ca};
+}
+
+// Translate, rotate and scale handles for one affine map, then its 12 numbers on request. The
+// rotate handle turns the matrix about the transform's own frame (M ← M · R), so its scales and
+// offset stay; the scale handles set the length of each column of the 3×3 part.
+void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3& affine) {
+  std::array<double, 12>& m = affine.m;
+  double translate[3] = {m[3], m[7], m[11]};
+  const double minT = -3.0, maxT = 3.0;
+  if (ImGui::SliderScalarN("translate", ImGuiDataType_Double, translate, 3, &minT, &maxT, "%.3f", kClamp))
+    m[3] = translate[0], m[7] = translate[1], m[11] = translate[2];
+  probe(state, scope + "translate");
+
+  const std::string rotateId = scope + "rotate";
+  const bool rotatingThis = state.rotatingId == rotateId;
+  double shown[3] = {0.0, 0.0, 0.0};
+  if (rotatingThis) std::copy(std::begin(state.rotateAngles), std::end(state.rotateAngles), shown);
+  const double minDeg = -180.0, maxDeg = 180.0;
+  // Relative: each drag turns the map from where it is, so the handle reads +0° before and after one.
+  const bool turned =
+      ImGui::SliderScalarN("turn by", ImGuiDataType_Double, shown, 3, &minDeg, &maxDeg, "%+.0f°", kClamp);
+  probe(state, rotateId);
+  if (ImGui::IsItemActivated()) {
+    state.rotatingId = rotateId;
+    state.rotateStart = m;
+  }
+  if (turned && state.rotatingId == rotateId) {
+    std::copy(std::begin(shown), std::end(shown), state.rotateAngles);
+    const std::array<double, 9> r = eulerRotation(shown);
+    for (int row = 0; row < 3; ++row)
+      for (int col = 0; col < 3; ++col) {
+        double sum = 0.0;
+        for (int k = 0; k < 3; ++k)
+          sum += state.rotateStart[static_cast<std::size_t>(row * 4 + k)] * r[static_cast<std::size_t>(k * 3 + col)];
+        m[static_cast<std::size_t>(row * 4 + col)] = sum;
+      }
+  }
+  if (ImGui::IsItemDeactivated() && state.rotatingId == rotateId) {
+    state.rotatingId.clear();
+    if (m != state.rotateStart) {
+      state.turnedId = rotateId;
+      std::copy(std::begin(state.rotateAngles), std::end(state.rotateAngles), state.turnedAngles.begin());
+      state.turnedResult = m;
+    }
+    std::fill(std::begin(state.rotateAngles), std::end(state.rotateAngles), 0.0);
+  }
+  if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+    ImGui::SetTooltip(
+        "relative: drag to turn the map by so many degrees about its own x, y and z axes.\n"
+        "Each drag starts at +0° and the turn stays when you let go (Ctrl+Z undoes it).");
+  if (state.turnedId == rotateId && state.turnedResult == m && !rotatingThis) {
+    dimText("turned by %+.0f°, %+.0f°, %+.0f° (Ctrl+Z undoes)", state.turnedAngles[0], state.turnedAngles[1],
+            state.turnedAngles[2]);
+    probe(state, scope + "turned");
+  }
+
+  double scales[3] = {columnLength(m, 0), columnLength(m, 1), columnLength(m, 2)};
+  const double minS = 0.01, maxS = 2.0;
+  // Absolute, unlike the turn: each value is the length of one axis of the map, and stays as dragged.
+  if (ImGui::SliderScalarN("axis lengths", ImGuiDataType_Double, scales, 3, &minS, &maxS, "%.3f", kClamp))
+    for (int col = 0; col < 3; ++col) {
+      const double length = columnLength(m, col);
+      const auto c = static_cast<std::size_t>(col);
+      if (length > 1e-12) {
+        const double factor = scales[col] / length;
+        m[c] *= factor, m[4 + c] *= factor, m[8 + c] *= factor;
+      } else {  // a collapsed axis comes back along itself
+        m[c] = m[4 + c] = m[8 + c] = 0.0;
+        m[static_cast<std::size_t>(col * 4 + col)] = scales[col];
+      }
+    }
+  probe(state, scope + "scale");
+  if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+    ImGui::SetTooltip("absolute: the length of the map's x, y and z axes (1 keeps a length; under 1 contracts)");
+
+  if (ImGui::TreeNode("numbers")) {
+    static constexpr const char* kRows[] = {"x' = x y z 1", "y' = x y z 1", "z' = x y z 1"};
+    const double minV = -100.0, maxV = 100.0;
+    for (int row = 0; row < 3; ++row) {
+      ImGui::DragScalarN(kRows[row], ImGuiDataType_Double, &m[static_cast<std::size_t>(row * 4)], 4, 0.002f, &minV,
+                         &maxV, "%.3f", kClamp);
+      probe(state, scope + "row" + std::to_string(row));
+    }
+    ImGui::TreePop();
+  }
+}
+
+// A transform's variations: weight and parameter sliders each, remove buttons, and a filterable
+// list of the whole catalogue to add from.
+void variationsEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform) {
+  std::size_t removeIndex = xform.variations.size();
+  for (std::size_t v = 0; v < xform.variations.size(); ++v) {
+    core::VariationTerm& term = xform.variations[v];
+    const core::VariationInfo* info = core::findVariation(term.name);
+    const std::string vscope = scope + "var" + std::to_string(v) + "/";
+    ImGui::PushID(static_cast<int>(v));
+    // The weight slider is labelled with the variation's name; its formula is the tooltip.
+    const double minW = -2.0, maxW = 2.0;
+    ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
+    ImGui::SliderScalar((term.name + "##weight").c_str(), ImGuiDataType_Double, &term.weight, &minW, &maxW,
+                        "weight %.3f", kClamp);
+    probe(state, vscope + "weight");
+    if (ImGui::IsItemHovered() && !ImGui::IsItemActive() && info) ImGui::SetTooltip("%s", info->formula.c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("x")) removeIndex = v;
+    probe(state, vscope + "remove");
+    if (info && term.params.size() == info->params.size()) {
+      ImGui::Indent();
+      for (std::size_t p = 0; p < info->params.size(); ++p) {
+        const core::VariationParam& param = info->params[p];
+        const std::string label = term.name + " " + param.name;
+        ImGui::PushID(static_cast<int>(p));
+        if (param.integer) {
+          int value = static_cast<int>(std::lround(term.params[p]));
+          if (ImGui::SliderInt(label.c_str(), &value, static_cast<int>(std::ceil(param.sliderMin)),
+                               static_cast<int>(std::floor(param.sliderMax)), "%d", kClamp))
+            term.params[p] = value;
+        } else {
+          ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &term.params[p], &param.sliderMin, &param.sliderMax,
+                              "%.3f", kClamp);
+        }
+        probe(state, vscope + param.name);
+        if (ImGui::BeginPopupContextItem()) {
+          if (ImGui::Selectable("Reset to default")) term.params[p] = param.defaultValue;
+          ImGui::EndPopup();
+        }
+        if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+          ImGui::SetTooltip("default %.4g — right-click to reset", param.defaultValue);
+        ImGui::PopID();
+      }
+      ImGui::Unindent();
+    }
+    ImGui::PopID();
+  }
+  if (removeIndex < xform.variations.size())
+    xform.variations.erase(xform.variations.begin() + static_cast<std::ptrdiff_t>(removeIndex));
+
+  ImGui::BeginDisabled(xform.variations.size() >= core::kMaxXformVariations);
+  if (ImGui::BeginCombo("add variation", "choose…", ImGuiComboFlags_HeightLarge)) {
+    if (ImGui::IsWindowAppearing()) {
+      state.variationFilter[0] = '\0';
+      ImGui::SetKeyboardFocusHere();
+    }
+    ImGui::InputTextWithHint("##variationfilter", "filter", state.variationFilter, sizeof state.variationFilter);
+    noteTyped(state, "variation filter", state.variationFilter);
+    const std::string filter = lowercase(state.variationFilter);
+    for (const core::VariationInfo& info : core::variationCatalogue()) {
+      if (!filter.empty() && lowercase(info.name).find(filter) == std::string::npos) continue;
+      const bool chosen = ImGui::Selectable(info.name.c_str());
+      probe(state, scope + "add/" + info.name);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", info.formula.c_str());
+      if (chosen) {
+        // A new term starts small, so adding one bends the flame rather than replacing it.
+        xform.variations.push_back({info.name, xform.variations.empty() ? 1.0 : 0.25, info.defaultParams()});
+      }
+    }
+    ImGui::EndCombo();
+  }
+  probe(state, scope + "add variation");
+  ImGui::EndDisabled();
+}
+
+// Xaos (flam3's chaos) as a matrix: row i is transform i's xaos, and its cell in column j scales
+// transform j's weight when the transform after i is chosen (1 is no xaos, 0 forbids the step). A
+// missing factor is 1. The final transform has no row or column: flam3 gives it no xaos. Each
+// cell is an ordinary ImGui item, so handleHistory records a whole drag as one undo step.
+//
+// ImGui 1.86 tables hold at most 64 columns (IMGUI_TABLE_MAX_COLUMNS) and a flame up to 128
+// transforms, so wide flames show their "to" columns a page at a time.
+constexpr std::size_t kXaosColumnsPerPage = 32;
+constexpr std::size_t kXaosVisibleRows = 8;  // taller matrices scroll, their header row frozen
+constexpr double kXaosMin = 0.0, kXaosMax = 5.0;
+
+double xaosFactor(const core::FlameXform& from, std::size_t to) {
+  return to < from.xaos.size() ? from.xaos[to] : 1.0;
+}
+
+// A cell's tint: red where the step is forbidden, blue where it is less likely, amber where it is
+// more likely; none at 1, so a flame without xaos shows a plain matrix.
+ImU32 xaosCellColor(double factor) {
+  if (factor == 0.0) return IM_COL32(180, 50, 40, 120);
+  return factor < 1.0 ? IM_COL32(50, 100, 190, 110) : IM_COL32(200, 150, 30, 110);
+}
+
+// The "to" columns shown: all of them, or for flames wider than a page the page chosen in a combo.
+std::pair<std::size_t, std::size_t> xaosColumnPage(ExplorerState& state, std::size_t index, const std::string& scope,
+                                                   std::size_t count) {
+  if (count <= kXaosColumnsPerPage) return {0, count};
+  const auto pageLabel = [count](std::size_t page) {
+    const std::size_t first = page * kXaosColumnsPerPage;
+    return "to " + std::to_string(first + 1) + "–" + std::to_string(std::min(count, first + kXaosColumnsPerPage));
+  };
+  const std::size_t pages = (count + kXaosColumnsPerPage - 1) / kXaosColumnsPerPage;
+  std::size_t& page = state.xaosColumnPage[index];
+  page = std::min(page, pages - 1);  // the flame may have lost transforms since
+  if (ImGui::BeginCombo("columns", pageLabel(page).c_str())) {
+    for (std::size_t p = 0; p < pages; ++p) {
+      const std::string label = pageLabel(p);
+      if (ImGui::Selectable(label.c_str(), p == page)) page = p;
+      probe(state, scope + "xaos columns/" + label);
+    }
+    ImGui::EndCombo();
+  }
+  probe(state, scope + "xaos columns");
+  const std::size_t first = page * kXaosColumnsPerPage;
+  return {first, std::min(count, first + kXaosColumnsPerPage)};
+}
+
+// The matrix under an "Xaos" tree node: a row per transform (named by number, as the transform
+// buttons name them, the selected one highlighted) with its reset button, a column per transform,
+// and a reset for the whole matrix. Cells are probed as "xaos <from> to <to>", both 1-based.
+void xaosMatrix(ExplorerState& state, std::size_t index, const std::string& scope, core::FlameGenome& flame,
+                int selected) {
+  const bool open = ImGui::TreeNode("Xaos");
+  probe(state, scope + "Xaos");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip("row: the transform just applied; column: the next one, chosen by its weight times this factor");
+  if (!open) return;
+  const std::size_t count = flame.xforms.size();
+  const auto [firstColumn, endColumn] = xaosColumnPage(state, index, scope, count);
+
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float cellWidth = ImGui::CalcTextSize("0.000").x + 2.0f * style.FramePadding.x;
+  const float rowHeight = ImGui::GetFrameHeight() + 2.0f * style.CellPadding.y;
+  // Room for the header, up to kXaosVisibleRows rows and a horizontal scroll bar.
+  const float height = ImGui::GetTextLineHeight() + 2.0f * style.CellPadding.y +
+                       rowHeight * static_cast<float>(std::min(count, kXaosVisibleRows)) + style.ScrollbarSize;
+  constexpr ImGuiTableFlags kFlags =
+      ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_ScrollX | ImGuiTableFlags_ScrollY;
+  // The transform's number and its reset button stay in view while the factors scroll.
+  constexpr int kFrozenColumns = 2;
+  const int columns = kFrozenColumns + static_cast<int>(endColumn - firstColumn);
+  if (ImGui::BeginTable("xaos matrix", columns, kFlags, ImVec2(0.0f, height))) {
+    ImGui::TableSetupScrollFreeze(kFrozenColumns, 1);
+    ImGui::TableSetupColumn("from\\to");
+    ImGui::TableSetupColumn("##reset");
+    for (std::size_t to = firstColumn; to < endColumn; ++to)
+      ImGui::TableSetupColumn(std::to_string(to + 1).c_str(), ImGuiTableColumnFlags_WidthFixed, cellWidth);
+    ImGui::TableHeadersRow();
+    for (std::size_t from = 0; from < count; ++from) {
+      core::FlameXform& row = flame.xforms[from];
+      const std::string fromName = std::to_string(from + 1);
+      ImGui::PushID(static_cast<int>(from));
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::AlignTextToFramePadding();
+      ImGui::TextUnformatted(fromName.c_str());
+      if (static_cast<int>(from) == selected)
+        ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, ImGui::GetColorU32(ImGuiCol_Header));
+      ImGui::TableNextColumn();
+      ImGui::BeginDisabled(row.xaos.empty());
+      if (ImGui::SmallButton("reset")) row.xaos.clear();
+      probe(state, scope + "xaos reset " + fromName);
+      ImGui::EndDisabled();
+      for (std::size_t to = firstColumn; to < endColumn; ++to) {
+        ImGui::TableNextColumn();
+        ImGui::PushID(static_cast<int>(to));
+        double factor = xaosFactor(row, to);
+        ImGui::SetNextItemWidth(-FLT_MIN);
+        if (ImGui::DragScalar("##factor", ImGuiDataType_Double, &factor, 0.01f, &kXaosMin, &kXaosMax, "%.2f", kClamp)) {
+          if (row.xaos.size() <= to) row.xaos.resize(to + 1, 1.0);
+          row.xaos[to] = factor;
+        }
+        const std::string toName = std::to_string(to + 1);
+        probe(state, scope + "xaos " + fromName + " to " + toName);
+        if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+          ImGui::SetTooltip("after %s, %s's weight × %.3f (0: never) — drag, or double-click to type", fromName.c_str(),
+                            toName.c_str(), factor);
+        if (factor != 1.0) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, xaosCellColor(factor));
+        ImGui::PopID();
+      }
+      ImGui::PopID();
+    }
+    ImGui::EndTable();
+  }
+  const bool anyXaos =
+      std::any_of(flame.xforms.begin(), flame.xforms.end(), [](const core::FlameXform& x) { return !x.xaos.empty(); });
+  ImGui::BeginDisabled(!anyXaos);
+  if (button(state, scope, "Reset xaos"))
+    for (core::FlameXform& x : flame.xforms) x.xaos.clear();
+  ImGui::EndDisabled();
+  ImGui::TreePop();
+}
+
+// One transform: weight (not for the final one), colour, colour speed, opacity, the affine map
+// and an optional post map, the variations. Its xaos is a row of the flame's xaos matrix.
+void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform, bool isFinal) {
+  if (!isFinal) fieldWidget(state, scope, xform, core::xformFields(), "weight");
+  fieldWidget(state, scope, xform, core::xformFields(), "color");
+  fieldWidget(state, scope, xform, core::xformFields(), "color_speed");
+  fieldWidget(state, scope, xform, core::xformFields(), "opacity");
+  affineEditor(state, scope, xform.affine);
+  ImGui::Checkbox("post-affine", &xform.hasPost);
+  probe(state, scope + "post-affine");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("a second affine map applied after the variations");
+  if (xform.hasPost) {
+    ImGui::PushID("post");
+    ImGui::Indent();
+    affineEditor(state, scope + "post/", xform.post);
+    ImGui::Unindent();
+    ImGui::PopID();
+  }
+  ImGui::Separator();
+  dimText("variations");
+  variationsEditor(state, scope, xform);
+}
+
+void flameEditor(ExplorerState& state, std::size_t index, const std::string& scope, core::FlameGenome& flame) {
+  int& selected = state.selectedXform[index];
+  if (selected >= static_cast<int>(flame.xforms.size()) || (selected < 0 && !flame.hasFinal)) selected = 0;
+  // The transform selector: one button per transform, then the final one.
+  dimText("transform");
+  // Up to 128 transforms: 16 buttons a row.
+  constexpr std::size_t kButtonsPerRow = 16;
+  for (std::size_t i = 0; i < flame.xforms.size(); ++i) {
+    if (i == 0 || i % kButtonsPerRow != 0) ImGui::SameLine();
+    const std::string label = std::to_string(i + 1);
+    if (ImGui::Selectable(label.c_str(), selected == static_cast<int>(i), 0, ImVec2(ImGui::GetFrameHeight(), 0)))
+      selected = static_cast<int>(i);
+    probe(state, scope + "xform " + label);
+  }
+  if (flame.hasFinal) {
+    ImGui::SameLine();
+    if (ImGui::Selectable("final", selected < 0, 0, ImVec2(ImGui::CalcTextSize("final").x, 0))) selected = -1;
+    probe(state, scope + "xform final");
+  }
+  const bool full = flame.xforms.size() >= core::kMaxFlameXforms;
+  ImGui::BeginDisabled(full);
+  if (button(state, scope, "Add transform")) {
+    flame.xforms.push_back(
+        core::randomTransform(state.searchSeed++, std::fmod(0.37 * static_cast<double>(flame.xforms.size()), 1.0)));
+    selected = static_cast<int>(flame.xforms.size()) - 1;
+  }
+  ImGui::SameLine();
+  if (button(state, scope, "Duplicate") && selected >= 0) {
+    const auto at = static_cast<std::size_t>(selected);
+    flame.xforms.insert(flame.xforms.begin() + selected + 1, flame.xforms[at]);
+    // Xaos columns follow the transforms: the copy is followed as often as its original.
+    for (core::FlameXform& x : flame.xforms)
+      if (x.xaos.size() > at) x.xaos.insert(x.xaos.begin() + selected + 1, x.xaos[at]);
+    ++selected;
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(selected >= 0 && flame.xforms.size() <= 1);
+  if (button(state, scope, "Remove")) {
+    if (selected < 0) {
+      flame.hasFinal = false;
+      selected = 0;
+    } else if (flame.xforms.size() > 1) {
+      flame.xforms.erase(flame.xforms.begin() + selected);
+      for (core::FlameXform& x : flame.xforms)
+        if (x.xaos.size() > static_cast<std::size_t>(selected)) x.xaos.erase(x.xaos.begin() + selected);
+      selected = std::min(selected, static_cast<int>(flame.xforms.size()) - 1);
+    }
+  }
+  ImGui::EndDisabled();
+  if (ImGui::Checkbox("final transform", &flame.hasFinal)) {
+    if (flame.hasFinal) {
+      if (flame.finalXform.variations.empty()) flame.finalXform.variations = {{"linear", 1.0, {}}};
+      selected = -1;
+    } else if (selected < 0) {
+      selected = 0;
+    }
+  }
+  probe(state, scope + "final transform");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("bends what is drawn without feeding back into the iteration");
+
+  const std::string xscope = scope + (selected < 0 ? "final/" : "xform/");
+  ImGui::PushID(selected);
+  core::FlameXform& xform = selected < 0 ? flame.finalXform : flame.xforms[static_cast<std::size_t>(selected)];
+  xformEditor(state, xscope, xform, selected < 0);
+  ImGui::PopID();
+  // With one transform every factor leads back to it (a 0 falls back to the plain weights).
+  if (flame.xforms.size() > 1) xaosMatrix(state, index, scope, flame, selected);
+
+  if (ImGui::TreeNode("Symmetry")) {
+    core::FlameSymmetry& symmetry = flame.symmetry;
+    fieldWidget(state, scope, symmetry, core::symmetryFields(), "rotational");
+    fieldWidget(state, scope, symmetry, core::symmetryFields(), "mirror");
+    const std::string axisProbe = scope + "symmetry axis";
+    fieldWidget(state, scope, symmetry, core::symmetryFields(), "axis", axisProbe.c_str());
+    ImGui::TreePop();
+  }
+}
+
+}  // namespace voxflame::app::panels

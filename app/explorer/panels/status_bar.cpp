@@ -1,0 +1,127 @@
+// The status line: what is happening, in words, with the figures under Stats; and how long the
+// window loop may wait for events. Changes nothing but the Stats toggle and "refine further".
+#include "explorer_ui.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <sstream>
+#include <cstdarg>
+#include <cctype>
+#include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <utility>
+
+#include "core/attractor.h"
+#include "core/camera.h"
+#include "core/color.h"
+#include "core/error.h"
+#include "core/flame.h"
+#include "core/flame_search.h"
+#include "core/flame_variations.h"
+#include "core/flame_xml.h"
+#include "core/flat_render.h"
+#include "core/grid.h"
+#include "core/keyframes.h"
+#include "core/scene_schema.h"
+#include "commands.h"
+#include "pipeline.h"
+#include "panels.h"
+#include "widgets.h"
+
+namespace voxflame::app {
+
+std::string convergenceText(const SessionStatus& status) {
+  if (!status.hasShape) return "";
+  if (!status.escapeNote.empty()) return status.escapeNote;  // nothing refines: this is the news
+  char text[200];
+  const double noise = 100.0 * status.noise, target = 100.0 * status.noiseTarget;
+  const double millions = static_cast<double>(status.stats.points) * 1e-6;
+  if (status.paused)
+    std::snprintf(text, sizeof text, "refining paused for the export");
+  else if (status.converged)
+    std::snprintf(text, sizeof text, "at rest: the noise reached its target (%.2g%% of %.2g%%)", noise, target);
+  else if (status.capped)
+    std::snprintf(text, sizeof text, "at rest: the cap of %.0f points per voxel (noise %.2g%%)",
+                  status.capPointsPerVoxel, noise);
+  else if (!std::isfinite(noise))
+    std::snprintf(text, sizeof text, "refining: %.0f M points, measuring the noise", millions);
+  else if (status.noiseTarget > 0.0)
+    std::snprintf(text, sizeof text, "refining: %.0f M points, noise %.2g%% of %.2g%%", millions, noise, target);
+  else
+    std::snprintf(text, sizeof text, "refining: %.0f M points, noise %.2g%%", millions, noise);
+  return text;
+}
+
+double frameWaitSeconds(const ExplorerState& state, bool viewResting, int restingFrames) {
+  if (state.exportStatus.state == ExportState::Running) return 0.1;
+  const bool busy = state.playing || state.search.busy() || state.analysis.busy() || state.flatRender.busy() ||
+                    state.flatImagePending || state.orbiting || state.panning;
+  if (busy || !viewResting || !state.session.resting || restingFrames < 3) return 0.0;
+  // Other threads do not wake the loop; this bounds how late it notices one that finished.
+  return 0.5;
+}
+
+}  // namespace voxflame::app
+
+namespace voxflame::app::panels {
+
+void statusBar(ExplorerState& state, float scale) {
+  const ImGuiIO& io = ImGui::GetIO();
+  const float height = statusBarHeight(scale);
+  ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
+  ImGui::SetNextWindowSize(ImVec2(io.DisplaySize.x, height));
+  ImGui::SetNextWindowBgAlpha(0.75f);
+  ImGui::Begin("##status", nullptr,
+               ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
+  const core::AccumulatorStats& stats = state.session.stats;
+  const FrameMetrics& m = state.metrics;
+  // Words first: what is happening. The technical figures are one click (Stats) or a hover away.
+  if (state.session.buildingShape)
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "%s %.1f s", state.session.shapeStage.c_str(),
+                       state.session.shapeSeconds);
+  else if (const std::string convergence = convergenceText(state.session); !convergence.empty())
+    ImGui::TextUnformatted(convergence.c_str());
+  char figures[400];
+  std::snprintf(figures, sizeof figures,
+                "%.1f M points  %.1f M/s  inside %.1f%%  reseeded %llu  |  %.0f fps  %.1f ms (worst %.0f)  upload "
+                "%.1f ms  %d samples",
+                static_cast<double>(stats.points) * 1e-6, stats.pointsPerSecond * 1e-6, 100.0 * stats.insideFraction(),
+                static_cast<unsigned long long>(stats.escapes), m.fps, m.frameMs, m.worstFrameMs, m.uploadMs,
+                state.samples);
+  // While the pattern escapes, the figures are the last bounded pattern's (or none): say so.
+  std::string details = state.session.showingLastBounded ? std::string("last bounded pattern: ") + figures : figures;
+  if (m.changeToFrameMs >= 0.0) {
+    std::snprintf(figures, sizeof figures, "  |  edit→frame %.0f ms (%d frames)", m.changeToFrameMs,
+                  m.changeToFrameFrames);
+    details += figures;
+  }
+  // The analysis of an orbit that escapes may read as a fixed point: the escape is what is true.
+  if (!state.session.escapeNote.empty())
+    details += "  |  escapes";
+  else if (!state.lyapunovText.empty())
+    details += "  |  " + state.lyapunovText;
+  if (ImGui::IsItemHovered() && !state.showStats) ImGui::SetTooltip("%s", details.c_str());
+  if ((state.session.converged || state.session.capped) && !state.session.buildingShape) {
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Refine further")) state.requests.refineFurther = true;
+    probe(state, "status/refine_further");
+    if (ImGui::IsItemHovered())
+      ImGui::SetTooltip("go on from the %.0f points per voxel already there to twice as many",
+                        state.session.pointsPerVoxel);
+  }
+  ImGui::SameLine();
+  if (ImGui::SmallButton(state.showStats ? "Hide stats###stats" : "Stats###stats")) state.showStats = !state.showStats;
+  probe(state, "status/stats");
+  if (state.showStats) {
+    ImGui::SameLine();
+    ImGui::TextColored(kDimColor, "%s", details.c_str());
+  }
+  ImGui::End();
+}
+
+}  // namespace voxflame::app::panels

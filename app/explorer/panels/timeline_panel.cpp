@@ -1,0 +1,254 @@
+// The Timeline: play, scrub and key the animation, its tracks with their keys. Changes the scene's
+// keyframes and shows the scene at the current time.
+#include "explorer_ui.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <sstream>
+#include <cstdarg>
+#include <cctype>
+#include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <utility>
+
+#include "core/attractor.h"
+#include "core/camera.h"
+#include "core/color.h"
+#include "core/error.h"
+#include "core/flame.h"
+#include "core/flame_search.h"
+#include "core/flame_variations.h"
+#include "core/flame_xml.h"
+#include "core/flat_render.h"
+#include "core/grid.h"
+#include "core/keyframes.h"
+#include "core/scene_schema.h"
+#include "commands.h"
+#include "pipeline.h"
+#include "panels.h"
+#include "widgets.h"
+
+namespace voxflame::app::panels {
+
+// ---------------------------------------------------------------------------------------------
+// Timeline: the scene shown is the animation at the current time; "Key" records what the user
+// changed there as keyframes; scrubbing and playing re-evaluate the animation.
+
+double timelineLength(const core::Scene& scene) {
+  const double duration = core::animationDuration(scene);
+  return duration > 0.0 ? duration : 5.0;  // room to place the first keys
+}
+
+void showTime(ExplorerState& state, double seconds) {
+  try {
+    state.scene = core::sceneAtTime(state.scene, seconds);
+    state.keyBase = state.scene;
+  } catch (const core::Error& e) {
+    state.notice = e.what();
+    state.playing = false;
+  }
+}
+
+std::vector<double> keyTimes(const core::Scene& scene) {
+  std::vector<double> times;
+  for (const core::KeyframeTrack& track : scene.keyframes)
+    for (const core::Keyframe& key : track.keys) times.push_back(key.time);
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end(), [](double a, double b) { return std::abs(a - b) < 1e-9; }),
+              times.end());
+  return times;
+}
+
+void advancePlayback(ExplorerState& state) {
+  if (!state.playing) return;
+  const double length = timelineLength(state.scene);
+  double next = state.scene.animation.time + static_cast<double>(ImGui::GetIO().DeltaTime);
+  if (next > length) {
+    // Play stops at the end unless the animation loops (its loop box).
+    if (core::animationLoops(state.scene) && length > 0.0)
+      next = std::fmod(next, length);
+    else
+      next = length, state.playing = false;
+  }
+  showTime(state, next);
+}
+
+// An animated value's name for people: "/layers/0/params/a" reads "layer 1 a",
+// "/camera/azimuth_deg" reads "camera azimuth deg".
+std::string trackName(const std::string& path) {
+  std::vector<std::string> parts;
+  std::istringstream split(path);
+  for (std::string part; std::getline(split, part, '/');)
+    if (!part.empty()) parts.push_back(part);
+  std::string name;
+  for (std::size_t i = 0; i < parts.size(); ++i) {
+    std::string part = parts[i];
+    if (part == "params" || part == "tone" || part == "render") continue;
+    if (part == "layers" && i + 1 < parts.size() && std::all_of(parts[i + 1].begin(), parts[i + 1].end(), ::isdigit)) {
+      part = "layer " + std::to_string(std::stoi(parts[++i]) + 1);
+    }
+    std::replace(part.begin(), part.end(), '_', ' ');
+    name += (name.empty() ? "" : " ") + part;
+  }
+  return name.empty() ? path : name;
+}
+
+// What Key did: the values that got a key at `time` ("keyed layer 1 a, camera azimuth deg at 1.50 s").
+std::string keyedText(const std::vector<core::KeyframeTrack>& before, const std::vector<core::KeyframeTrack>& after,
+                      double time) {
+  std::vector<std::string> keyed;
+  for (const core::KeyframeTrack& track : after) {
+    const auto old =
+        std::find_if(before.begin(), before.end(), [&](const core::KeyframeTrack& t) { return t.path == track.path; });
+    const bool keyedNow = std::any_of(track.keys.begin(), track.keys.end(),
+                                      [&](const core::Keyframe& key) { return std::abs(key.time - time) < 1e-6; });
+    if (keyedNow && (old == before.end() || !(old->keys == track.keys))) keyed.push_back(trackName(track.path));
+  }
+  char at[32];
+  std::snprintf(at, sizeof at, " at %.2f s", time);
+  if (keyed.empty()) return std::string("nothing changed to key") + at;
+  std::string text = "keyed ";
+  for (std::size_t i = 0; i < keyed.size() && i < 4; ++i) text += (i ? ", " : "") + keyed[i];
+  if (keyed.size() > 4) text += " and " + std::to_string(keyed.size() - 4) + " more";
+  return text + at;
+}
+
+void timelineWindow(ExplorerState& state, float scale) {
+  const ImGuiIO& io = ImGui::GetIO();
+  // Docked under the picture, between the side panels, above the status line.
+  const float statusHeight = statusBarHeight(scale);
+  const float left = state.layout.left, right = std::max(state.layout.right, left + 1.0f);
+  // Room for up to four animated values' rows; more scroll.
+  const auto rows = static_cast<float>(std::min<std::size_t>(state.scene.keyframes.size(), 4) + 1);
+  const float height = 2 * ImGui::GetFrameHeightWithSpacing() + rows * ImGui::GetTextLineHeightWithSpacing() +
+                       ImGui::GetFrameHeight() + 2 * ImGui::GetStyle().WindowPadding.y +
+                       ImGui::GetTextLineHeightWithSpacing();
+  ImGui::SetNextWindowPos(ImVec2(left, io.DisplaySize.y - statusHeight), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
+  ImGui::SetNextWindowSize(ImVec2(right - left, height), ImGuiCond_Always);
+  ImGui::Begin("Timeline", nullptr,
+               ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+  state.layout.bottom = ImGui::GetWindowPos().y;
+  core::Scene& scene = state.scene;
+  const double length = timelineLength(scene);
+  if (button(state, "timeline/", state.playing ? "Pause" : "Play")) {
+    state.playing = !state.playing;
+    // Play at the end starts over.
+    if (state.playing && scene.animation.time >= length - 1e-9) showTime(state, 0.0);
+  }
+  ImGui::SameLine();
+  const std::vector<double> times = keyTimes(scene);
+  const double now = scene.animation.time;
+  if (button(state, "timeline/", "|<")) {
+    double target = 0.0;
+    for (double t : times)
+      if (t < now - 1e-6) target = t;
+    showTime(state, target);
+  }
+  ImGui::SameLine();
+  if (button(state, "timeline/", ">|")) {
+    double target = length;
+    for (auto t = times.rbegin(); t != times.rend(); ++t)
+      if (*t > now + 1e-6) target = *t;
+    showTime(state, target);
+  }
+  ImGui::SameLine();
+  if (button(state, "timeline/", "Key")) {
+    try {
+      // What changed since the time was last shown becomes keys; animated values always get one.
+      core::Scene animated = state.keyBase;
+      animated.keyframes = scene.keyframes;
+      animated.animation = scene.animation;
+      const std::vector<core::KeyframeTrack> before = scene.keyframes;
+      scene = core::withKeyframeAt(animated, scene, now);
+      state.keyBase = scene;
+      state.timelineMessage = keyedText(before, scene.keyframes, now);
+    } catch (const core::Error& e) {
+      state.notice = e.what();
+    }
+  }
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("keyframe every value you changed here (and every animated one)");
+  ImGui::SameLine();
+  const bool keyHere = std::any_of(times.begin(), times.end(), [&](double t) { return std::abs(t - now) < 1e-6; });
+  ImGui::BeginDisabled(!keyHere);
+  if (button(state, "timeline/", "Delete key")) {
+    for (core::KeyframeTrack& track : scene.keyframes)
+      std::erase_if(track.keys, [&](const core::Keyframe& key) { return std::abs(key.time - now) < 1e-6; });
+    std::erase_if(scene.keyframes, [](const core::KeyframeTrack& track) { return track.keys.empty(); });
+  }
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(90 * scale);
+  const core::Field<core::AnimationSettings>& durationField = core::field(core::animationFields(), "duration");
+  double duration = scene.animation.duration;
+  if (ImGui::DragScalar("duration", ImGuiDataType_Double, &duration, 0.05f, &durationField.ui.min,
+                        &durationField.ui.max, duration > 0.0 ? std::string(durationField.ui.format).c_str() : "auto",
+                        ImGuiSliderFlags_AlwaysClamp))
+    scene.animation.duration = duration;
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(70 * scale);
+  const core::Field<core::AnimationSettings>& fpsField = core::field(core::animationFields(), "fps");
+  double fps = scene.animation.fps;
+  if (ImGui::DragScalar("fps", ImGuiDataType_Double, &fps, 0.2f, &fpsField.ui.min, &fpsField.ui.max,
+                        std::string(fpsField.ui.format).c_str(), ImGuiSliderFlags_AlwaysClamp))
+    scene.animation.fps = fps;
+  ImGui::SameLine();
+  ImGui::Checkbox("loop", &scene.animation.loop);
+
+  // The scrubber, with a tick for every key time.
+  double time = now;
+  const double zero = 0.0;
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::SliderScalar("##time", ImGuiDataType_Double, &time, &zero, &length, "%.2f s")) {
+    state.playing = false;
+    showTime(state, time);
+  }
+  probe(state, "timeline/time");
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  const float grab = ImGui::GetStyle().GrabMinSize;
+  for (double t : times) {
+    const float x = min.x + grab * 0.5f + static_cast<float>(t / length) * (max.x - min.x - grab);
+    ImGui::GetWindowDrawList()->AddTriangleFilled(ImVec2(x - 4 * scale, max.y), ImVec2(x + 4 * scale, max.y),
+                                                  ImVec2(x, max.y - 6 * scale), IM_COL32(255, 190, 90, 255));
+  }
+  if (scene.keyframes.empty()) {
+    dimText("no keyframes: move the time, change something, press Key");
+  } else {
+    if (!state.timelineMessage.empty()) dimText("%s", state.timelineMessage.c_str());
+    // One row per animated value: its name, then its keys as ticks over the animation's length
+    // (right of the names); a value with one key holds still.
+    const float nameWidth = 170 * scale;
+    for (const core::KeyframeTrack& track : scene.keyframes) {
+      const bool holds = track.keys.size() == 1;
+      const std::string name = trackName(track.path);
+      ImGui::TextUnformatted(name.c_str());
+      probe(state, "timeline/track/" + track.path);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", track.path.c_str());
+      if (holds) {
+        ImGui::SameLine();
+        ImGui::TextColored(kDimColor, "(one key: holds still)");
+        probe(state, "timeline/track/" + track.path + "/holds");
+      }
+      ImGui::SameLine(std::max(nameWidth, ImGui::GetCursorPosX()));
+      const ImVec2 row = ImGui::GetCursorScreenPos();
+      const float rowHeight = ImGui::GetTextLineHeight();
+      const float rowLeft = row.x + 6 * scale, rowRight = std::max(rowLeft + 1.0f, max.x - grab * 0.5f);
+      ImDrawList* draw = ImGui::GetWindowDrawList();
+      draw->AddLine(ImVec2(rowLeft, row.y + 0.5f * rowHeight), ImVec2(rowRight, row.y + 0.5f * rowHeight),
+                    IM_COL32(110, 115, 130, 255));
+      for (const core::Keyframe& key : track.keys) {
+        const float x = rowLeft + static_cast<float>(key.time / std::max(length, 1e-9)) * (rowRight - rowLeft);
+        draw->AddQuadFilled(ImVec2(x, row.y + 1), ImVec2(x + 4 * scale, row.y + 0.5f * rowHeight),
+                            ImVec2(x, row.y + rowHeight - 1), ImVec2(x - 4 * scale, row.y + 0.5f * rowHeight),
+                            IM_COL32(255, 190, 90, 255));
+      }
+      ImGui::Dummy(ImVec2(1, rowHeight));
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace voxflame::app::panels

@@ -1,0 +1,107 @@
+// The widgets every panel builds from (widgets.h).
+#include "explorer_ui.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <sstream>
+#include <cstdarg>
+#include <cctype>
+#include <cfloat>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <utility>
+
+#include "core/attractor.h"
+#include "core/camera.h"
+#include "core/color.h"
+#include "core/error.h"
+#include "core/flame.h"
+#include "core/flame_search.h"
+#include "core/flame_variations.h"
+#include "core/flame_xml.h"
+#include "core/flat_render.h"
+#include "core/grid.h"
+#include "core/keyframes.h"
+#include "core/scene_schema.h"
+#include "commands.h"
+#include "pipeline.h"
+#include "panels.h"
+#include "widgets.h"
+
+namespace voxflame::app::panels {
+
+// The status line's height: the docked panels end above it.
+float statusBarHeight(float scale) {
+  return ImGui::GetFrameHeightWithSpacing() + 6 * scale;
+}
+
+// A hint or a message in the dim colour, wrapped at the panel's edge rather than cut there.
+void dimText(const char* format, ...) {
+  ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
+  va_list arguments;
+  va_start(arguments, format);
+  ImGui::TextWrappedV(format, arguments);
+  va_end(arguments);
+  ImGui::PopStyleColor();
+}
+
+void probe(ExplorerState& state, const std::string& name) {
+  if (!state.probe) return;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  state.probe->items[name] = UiProbe::Rect{min.x, min.y, max.x, max.y};
+}
+
+// After a text field: what it now holds, when it changed this frame and typing is recorded.
+void noteTyped(ExplorerState& state, const char* field, const char* text) {
+  if (state.recordTyping && ImGui::IsItemEdited()) state.typedThisFrame.emplace_back(field, text);
+}
+
+bool slider(ExplorerState& state, const std::string& scope, const char* label, double& value, double min, double max,
+            ImGuiSliderFlags flags, const char* format) {
+  const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format, flags);
+  probe(state, scope + label);
+  return changed;
+}
+
+// The JSON pointer of a panel value: a widget's scope names its object ("tone/", "camera/",
+// "layer2/" for /layers/2/), then the key.
+std::string valuePath(const std::string& scope, std::string_view key) {
+  if (scope.rfind("layer", 0) == 0 && scope.size() > 6 && std::isdigit(static_cast<unsigned char>(scope[5]))) {
+    const std::size_t slash = scope.find('/');
+    return "/layers/" + scope.substr(5, slash - 5) + "/" + std::string(key);
+  }
+  return "/" + scope + std::string(key);
+}
+
+// A value with keys on the Timeline carries a mark: a small key at the widget's top right corner.
+void markIfKeyed(ExplorerState& state, const std::string& path, const std::string& probeName) {
+  const auto& tracks = state.scene.keyframes;
+  if (std::none_of(tracks.begin(), tracks.end(), [&](const core::KeyframeTrack& t) { return t.path == path; })) return;
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  const float size = 0.22f * (max.y - min.y);
+  const ImVec2 centre(max.x - size - 1.0f, min.y + size + 1.0f);
+  ImGui::GetWindowDrawList()->AddQuadFilled(ImVec2(centre.x, centre.y - size), ImVec2(centre.x + size, centre.y),
+                                            ImVec2(centre.x, centre.y + size), ImVec2(centre.x - size, centre.y),
+                                            IM_COL32(255, 190, 90, 255));
+  probe(state, probeName + "/keyed");
+}
+
+bool button(ExplorerState& state, const std::string& scope, const char* label) {
+  const bool pressed = ImGui::Button(label);
+  probe(state, scope + label);
+  return pressed;
+}
+
+std::string lowercase(std::string text) {
+  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
+  return text;
+}
+
+bool keyDown(int key) {
+  return key >= 0 && key < IM_ARRAYSIZE(ImGui::GetIO().KeysDown) && ImGui::GetIO().KeysDown[key];
+}
+
+}  // namespace voxflame::app::panels

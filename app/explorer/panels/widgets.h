@@ -1,0 +1,130 @@
+// What every panel builds with: probes for the tests, dim and error text, sliders, buttons, and the
+// widget of one schema field (core/scene_schema.h), which brings its label, range, format, help,
+// keyed mark and right-click reset from the table.
+#pragma once
+
+#include <imgui.h>
+
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <variant>
+
+#include "core/color.h"
+#include "core/scene_schema.h"
+#include "explorer_ui.h"
+
+namespace voxflame::app::panels {
+
+// The window backend fills io.KeysDown by GLFW key code; letters are their ASCII capitals.
+inline constexpr int kKeyEscape = 256, kKeyRight = 262, kKeyLeft = 263, kKeyF3 = 292;
+inline constexpr int kKeyLeftAlt = 342, kKeyRightAlt = 346;
+
+inline const ImVec4 kErrorColor(1.0f, 0.45f, 0.35f, 1.0f);
+inline const ImVec4 kDimColor(0.62f, 0.65f, 0.72f, 1.0f);
+// Sliders clamp, Ctrl+click typing included: no value made in a panel is one a preset refuses.
+inline constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
+
+// The status line's height: the docked panels end above it.
+float statusBarHeight(float scale);
+// A hint or a message in the dim colour, wrapped at the panel's edge rather than cut there.
+IM_FMTARGS(1) void dimText(const char* format, ...);
+// Records the last widget's rectangle under `name` when a test set state.probe.
+void probe(ExplorerState& state, const std::string& name);
+// After a text field: what it now holds, when it changed this frame and typing is recorded.
+void noteTyped(ExplorerState& state, const char* field, const char* text);
+bool slider(ExplorerState& state, const std::string& scope, const char* label, double& value, double min, double max,
+            ImGuiSliderFlags flags = 0, const char* format = "%.3f");
+// The JSON pointer of a panel value: a widget's scope names its object ("tone/", "camera/",
+// "layer2/" for /layers/2/), then the key.
+std::string valuePath(const std::string& scope, std::string_view key);
+// A value with keys on the Timeline carries a mark: a small key at the widget's top right corner.
+void markIfKeyed(ExplorerState& state, const std::string& path, const std::string& probeName);
+bool button(ExplorerState& state, const std::string& scope, const char* label);
+std::string lowercase(std::string text);
+bool keyDown(int key);
+
+// The widget of one schema field (core/scene_schema.h): its label, slider range, format and help
+// come from the table. Sliders always clamp, Ctrl+click typing included, and every table's slider
+// range lies inside what the reader allows, so no value made here is one a preset refuses.
+// `probeName` replaces the probe's usual name (scope + label).
+template <class Owner>
+bool fieldWidget(ExplorerState& state, const std::string& scope, Owner& owner, core::Table<Owner> table,
+                 std::string_view key, const char* probeName = nullptr) {
+  const core::Field<Owner>& f = core::field(table, key);
+  const std::string label(f.ui.label);
+  const std::string format(f.ui.format);
+  const ImGuiSliderFlags flags =
+      ImGuiSliderFlags_AlwaysClamp | (f.ui.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+  const bool changed = std::visit(
+      [&]<class M>(const M& member) -> bool {
+        if constexpr (std::is_same_v<M, double Owner::*>) {
+          const double min = f.ui.min, max = f.ui.max;
+          return ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &(owner.*member), &min, &max, format.c_str(),
+                                     flags);
+        } else if constexpr (std::is_same_v<M, int Owner::*>) {
+          return ImGui::SliderInt(label.c_str(), &(owner.*member), static_cast<int>(f.ui.min),
+                                  static_cast<int>(f.ui.max), format.c_str(), flags);
+        } else if constexpr (std::is_same_v<M, bool Owner::*>) {
+          return ImGui::Checkbox(label.c_str(), &(owner.*member));
+        } else if constexpr (std::is_same_v<M, glm::vec3 Owner::*>) {
+          const glm::vec3 srgb = core::linearToSrgb(owner.*member);
+          float rgb[3] = {srgb.r, srgb.g, srgb.b};
+          if (!ImGui::ColorEdit3(label.c_str(), rgb)) return false;
+          owner.*member = core::srgbToLinear(glm::vec3(rgb[0], rgb[1], rgb[2]));
+          return true;
+        } else if constexpr (std::is_same_v<M, glm::dvec3 Owner::*>) {
+          glm::dvec3& value = owner.*member;
+          double v[3] = {value.x, value.y, value.z};
+          const double min = f.ui.min, max = f.ui.max;
+          if (!ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Double, v, 3, &min, &max, format.c_str(), flags))
+            return false;
+          const glm::dvec3 chosen(v[0], v[1], v[2]);
+          // An axis must not be the zero vector (the reader refuses it): keep the last one.
+          if (key == "axis" && glm::length(chosen) <= 1e-3) return false;
+          value = chosen;
+          return true;
+        } else if constexpr (std::is_same_v<M, core::Choice<Owner>>) {
+          int index = member.get(owner);
+          std::string items;
+          for (std::string_view name : member.names) (items += name) += '\0';
+          if (!ImGui::Combo(label.c_str(), &index, items.c_str())) return false;
+          member.set(owner, index);
+          return true;
+        } else {
+          return false;  // no widget for this kind of field
+        }
+      },
+      f.member);
+  const std::string probed = probeName ? std::string(probeName) : scope + label;
+  probe(state, probed);
+  markIfKeyed(state, valuePath(scope, key), probed);
+  // Right-click: back to the default, as the pattern sliders do (a default-made owner holds it).
+  bool reset = false;
+  // A named popup: the last item of some widgets (a colour editor's label) has no id of its own.
+  if (ImGui::BeginPopupContextItem(("reset##" + probed).c_str())) {
+    reset = ImGui::Selectable("Reset to default");
+    probe(state, probed + "/reset");
+    ImGui::EndPopup();
+  }
+  if (reset) {
+    static const Owner defaults{};
+    std::visit(
+        [&]<class M>(const M& member) {
+          if constexpr (std::is_same_v<M, core::Choice<Owner>>)
+            member.set(owner, member.get(defaults));
+          else if constexpr (std::is_member_object_pointer_v<M>)
+            owner.*member = defaults.*member;
+        },
+        f.member);
+  }
+  if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) {
+    if (f.help.empty())
+      ImGui::SetTooltip("right-click to reset to the default");
+    else
+      ImGui::SetTooltip("%.*s\nright-click to reset to the default", static_cast<int>(f.help.size()), f.help.data());
+  }
+  return changed || reset;
+}
+
+}  // namespace voxflame::app::panels
