@@ -43,12 +43,29 @@ class BackgroundExplorer : public voxflame::bench::BackgroundExplorer {
       : voxflame::bench::BackgroundExplorer(server, VOXFLAME_BINARY, folder.path(), std::move(arguments)) {}
 };
 
+// Each test's private X server and temporary folder, and the explorer it starts on them.
+class Explorer : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(haveXdotool()) << "xdotool or Xvfb is missing (the setup script installs them)";
+    ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
+  }
+  // The explorer as a user starts it, with its settings, state and caches in `folder`.
+  BackgroundExplorer& start(std::vector<std::string> arguments) {
+    explorer_.emplace(server, folder, std::move(arguments));
+    return *explorer_;
+  }
+
+  XvfbServer server;
+  TemporaryFolder folder;
+
+ private:
+  std::optional<BackgroundExplorer> explorer_;  // last: killed before the server stops
+};
+
 }  // namespace
 
-TEST(Explorer, WindowUnderXvfbShowsPanelAndLitVolume) {
-  XvfbServer server;
-  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
-  TemporaryFolder folder;
+TEST_F(Explorer, WindowUnderXvfbShowsPanelAndLitVolume) {
   const auto result = runVoxflame("--screenshot shot.png --frames 3", folder.path(),
                                   "env LIBGL_ALWAYS_SOFTWARE=1 " + server.environment());
   ASSERT_EQ(result.exitStatus, 0) << result.output;
@@ -77,12 +94,8 @@ TEST(Explorer, WindowUnderXvfbShowsPanelAndLitVolume) {
 // ImGui 1.86 sees a key only if it is still held when a frame starts; a tap shorter than a frame
 // used to be lost. xdotool presses Ctrl and Q and releases them within a few milliseconds (no
 // delay between its chained commands), while each frame lasts at least 400 ms.
-TEST(Explorer, CtrlQTappedFasterThanAFrameStillQuits) {
-  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
-  XvfbServer server;
-  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
-  TemporaryFolder folder;
-  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "400", "--width", "640", "--height", "480"});
+TEST_F(Explorer, CtrlQTappedFasterThanAFrameStillQuits) {
+  BackgroundExplorer& explorer = start({"--min-frame-ms", "400", "--width", "640", "--height", "480"});
   ASSERT_TRUE(explorer.started());
   // In about one full parallel run of the suite in five, the first tap was lost (xdotool had sent
   // it, and the explorer ran on; alone, or under a CPU hog, it never was; the cause is not known),
@@ -102,12 +115,8 @@ TEST(Explorer, CtrlQTappedFasterThanAFrameStillQuits) {
 // `xdotool windowclose` destroys the window under the explorer (XDestroyWindow); Xlib's default
 // handler used to print "X Error" and exit(1). The scene must survive, as an autosave the next
 // start offers back, since the user did not choose to quit.
-TEST(Explorer, WindowDestroyedFromOutsideExitsCleanlyWithTheSceneAutosaved) {
-  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
-  XvfbServer server;
-  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
-  TemporaryFolder folder;
-  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "100", "--width", "640", "--height", "480"});
+TEST_F(Explorer, WindowDestroyedFromOutsideExitsCleanlyWithTheSceneAutosaved) {
+  BackgroundExplorer& explorer = start({"--min-frame-ms", "100", "--width", "640", "--height", "480"});
   ASSERT_TRUE(explorer.started());
   ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowclose"), 0) << explorer.output();
   const std::optional<int> status = explorer.exitStatus();
@@ -121,12 +130,8 @@ TEST(Explorer, WindowDestroyedFromOutsideExitsCleanlyWithTheSceneAutosaved) {
 
 // The X server going away takes the connection with it: Xlib's default IO error handler used to
 // exit(1). The explorer ends with status 0 and the scene autosaved, as when only the window goes.
-TEST(Explorer, LostXServerExitsCleanlyWithTheSceneAutosaved) {
-  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
-  XvfbServer server;
-  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
-  TemporaryFolder folder;
-  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "100", "--width", "640", "--height", "480"});
+TEST_F(Explorer, LostXServerExitsCleanlyWithTheSceneAutosaved) {
+  BackgroundExplorer& explorer = start({"--min-frame-ms", "100", "--width", "640", "--height", "480"});
   ASSERT_TRUE(explorer.started());
   ASSERT_EQ(server.xdotool(kFindWindow), 0) << explorer.output();
   server.stop();
@@ -172,12 +177,8 @@ std::optional<int> askAndAnswerUntilItEnds(const XvfbServer& server, BackgroundE
 
 // Ctrl+Q with unsaved changes asks instead of quitting. Escape stays; D then quits without saving,
 // and nothing is left to recover or saved.
-TEST(Explorer, QuittingWithUnsavedChangesAsksThenCancelOrDiscard) {
-  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
-  XvfbServer server;
-  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
-  TemporaryFolder folder;
-  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "50", "--width", "640", "--height", "480"});
+TEST_F(Explorer, QuittingWithUnsavedChangesAsksThenCancelOrDiscard) {
+  BackgroundExplorer& explorer = start({"--min-frame-ms", "50", "--width", "640", "--height", "480"});
   ASSERT_TRUE(explorer.started());
   flyForward(server);
   ASSERT_TRUE(titleSaysUnsaved(server)) << explorer.output();
@@ -194,12 +195,8 @@ TEST(Explorer, QuittingWithUnsavedChangesAsksThenCancelOrDiscard) {
 }
 
 // S in the prompt saves the scene as the user's preset of its name, then quits.
-TEST(Explorer, QuittingWithUnsavedChangesCanSaveThem) {
-  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
-  XvfbServer server;
-  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
-  TemporaryFolder folder;
-  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "50", "--width", "640", "--height", "480"});
+TEST_F(Explorer, QuittingWithUnsavedChangesCanSaveThem) {
+  BackgroundExplorer& explorer = start({"--min-frame-ms", "50", "--width", "640", "--height", "480"});
   ASSERT_TRUE(explorer.started());
   flyForward(server);
   ASSERT_TRUE(titleSaysUnsaved(server)) << explorer.output();
@@ -218,12 +215,8 @@ TEST(Explorer, QuittingWithUnsavedChangesCanSaveThem) {
 
 // A signal (a logout, kill, Ctrl+C in the terminal) is not the user's choice in the window: the
 // explorer ends normally and the scene stays recoverable.
-TEST(Explorer, ASignalEndsTheExplorerWithTheSceneAutosaved) {
-  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
-  XvfbServer server;
-  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
-  TemporaryFolder folder;
-  BackgroundExplorer explorer(server, folder, {"--min-frame-ms", "50", "--width", "640", "--height", "480"});
+TEST_F(Explorer, ASignalEndsTheExplorerWithTheSceneAutosaved) {
+  BackgroundExplorer& explorer = start({"--min-frame-ms", "50", "--width", "640", "--height", "480"});
   ASSERT_TRUE(explorer.started());
   ASSERT_EQ(server.xdotool(kFindWindow), 0) << explorer.output();
   explorer.signal(SIGTERM);
@@ -239,13 +232,9 @@ TEST(Explorer, ASignalEndsTheExplorerWithTheSceneAutosaved) {
 // A) selects what it holds, and what is typed shows in it; --input-log records each change with
 // the time of the frame that showed it (what `bench explorer` measures typing with). Enter takes
 // the first match: the title then says the scene has unsaved changes.
-TEST(Explorer, CtrlFTypesIntoTheAttractorFilterAndTheInputLogSaysWhen) {
-  ASSERT_TRUE(haveXdotool()) << "xdotool is missing (the setup script installs it)";
-  XvfbServer server;
-  ASSERT_TRUE(server.running()) << "Xvfb did not start (the setup script installs it)";
-  TemporaryFolder folder;
-  BackgroundExplorer explorer(server, folder,
-                              {"--input-log", (folder / "typed.log").string(), "--width", "1280", "--height", "720"});
+TEST_F(Explorer, CtrlFTypesIntoTheAttractorFilterAndTheInputLogSaysWhen) {
+  BackgroundExplorer& explorer =
+      start({"--input-log", (folder / "typed.log").string(), "--width", "1280", "--height", "720"});
   ASSERT_TRUE(explorer.started());
   const auto lastLogged = [&] {
     std::ifstream in(folder / "typed.log");

@@ -21,6 +21,7 @@
 #include "core/scene.h"
 #include "explorer_session.h"
 #include "explorer_ui.h"
+#include "key_codes.h"
 #include "preset_library.h"
 #include "test_support.h"
 
@@ -716,7 +717,7 @@ TEST_F(ExplorerUi, WideRangeSlidersAreLogarithmicAndEverySliderResetsToItsDefaul
 // Typing words of a name into the attractor filter and pressing Enter picks the first match.
 TEST_F(ExplorerUi, TheAttractorFilterPicksItsFirstMatchOnEnter) {
   ImGuiIO& io = ImGui::GetIO();
-  io.KeyMap[ImGuiKey_Enter] = 257;  // GLFW_KEY_ENTER, as the GLFW backend maps it
+  io.KeyMap[ImGuiKey_Enter] = app::kKeyEnter;  // as the GLFW backend maps it
   click("attractor/filter");
   for (const char c : std::string("sprott quadratic")) io.AddInputCharacter(static_cast<unsigned>(c));
   frame(2);

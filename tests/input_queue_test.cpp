@@ -15,7 +15,7 @@ using namespace voxflame;
 
 namespace {
 
-constexpr int kKeyQ = 'Q', kKeyZ = 'Z', kKeyBackspace = 259;  // GLFW_KEY_Q, GLFW_KEY_Z, GLFW_KEY_BACKSPACE
+constexpr int kKeyQ = 'Q', kKeyZ = 'Z', kKeyBackspace = app::kKeyBackspace;  // GLFW_KEY_Q is 'Q'
 
 class InputQueueTest : public ::testing::Test {
  protected:

@@ -16,14 +16,11 @@
 #include <deque>
 #include <optional>
 
+#include "key_codes.h"
+
 struct ImGuiIO;
 
 namespace voxflame::app {
-
-// GLFW's key codes of the modifier keys (explorer.cpp checks them against GLFW's header):
-// ImGui's GLFW backend indexes io.KeysDown by GLFW key code, and so does this queue.
-inline constexpr int kKeyLeftShift = 340, kKeyLeftControl = 341, kKeyLeftAlt = 342, kKeyLeftSuper = 343,
-                     kKeyRightShift = 344, kKeyRightControl = 345, kKeyRightAlt = 346, kKeyRightSuper = 347;
 
 class InputQueue {
  public:

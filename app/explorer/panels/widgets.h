@@ -13,12 +13,9 @@
 #include "core/color.h"
 #include "core/scene_schema.h"
 #include "explorer_ui.h"
+#include "key_codes.h"
 
 namespace voxflame::app::panels {
-
-// The window backend fills io.KeysDown by GLFW key code; letters are their ASCII capitals.
-inline constexpr int kKeyEscape = 256, kKeyRight = 262, kKeyLeft = 263, kKeyF3 = 292;
-inline constexpr int kKeyLeftAlt = 342, kKeyRightAlt = 346;
 
 inline const ImVec4 kErrorColor(1.0f, 0.45f, 0.35f, 1.0f);
 inline const ImVec4 kDimColor(0.62f, 0.65f, 0.72f, 1.0f);
