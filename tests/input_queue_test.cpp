@@ -34,6 +34,26 @@ class InputQueueTest : public ::testing::Test {
   }
   void TearDown() override { ImGui::DestroyContext(); }
 
+  // A frame of a bare text field fed by the queue; `focus` gives it the keyboard.
+  void textFieldFrame(char* text, std::size_t size, bool focus) {
+    queue.applyTo(ImGui::GetIO());
+    ImGui::NewFrame();
+    ImGui::Begin("typing");
+    if (focus) ImGui::SetKeyboardFocusHere();
+    ImGui::InputText("field", text, size);
+    ImGui::End();
+    ImGui::Render();
+  }
+  // Gives the field the keyboard, with the editing keys mapped as the GLFW backend maps them.
+  void focusTextField(char* text, std::size_t size) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyMap[ImGuiKey_Backspace] = app::kKeyBackspace;
+    io.KeyMap[ImGuiKey_A] = 'A';
+    textFieldFrame(text, size, true);
+    for (int i = 0; i < 3; ++i) textFieldFrame(text, size, false);
+    ASSERT_TRUE(ImGui::IsAnyItemActive()) << "the field has the keyboard";
+  }
+
   // One explorer frame as the window loop runs it: the backend's pointer (over the window), the
   // queue, the panels. Returns whether the panels asked to quit.
   bool frame() {
@@ -151,22 +171,9 @@ TEST_F(InputQueueTest, WheelStepsAndMovesAddUpWithoutFillingTheQueue) {
 // release. The characters all reach a text field within a couple of frames, not one a frame, and
 // the text reads as typed, Backspace included.
 TEST_F(InputQueueTest, TypedTextArrivesInAFrameOrTwoAsTyped) {
-  // A bare text field with the keyboard focus, fed by the queue frame after frame.
   char text[64] = "";
-  ImGuiIO& io = ImGui::GetIO();
-  io.KeyMap[ImGuiKey_Backspace] = kKeyBackspace;  // as the GLFW backend maps it
-  auto fieldFrame = [&](bool focus) {
-    queue.applyTo(io);
-    ImGui::NewFrame();
-    ImGui::Begin("typing");
-    if (focus) ImGui::SetKeyboardFocusHere();
-    ImGui::InputText("field", text, sizeof text);
-    ImGui::End();
-    ImGui::Render();
-  };
-  fieldFrame(true);
-  for (int i = 0; i < 3; ++i) fieldFrame(false);
-  ASSERT_TRUE(ImGui::IsAnyItemActive()) << "the field has the keyboard";
+  const auto fieldFrame = [&](bool focus) { textFieldFrame(text, sizeof text, focus); };
+  focusTextField(text, sizeof text);
 
   auto type = [&](const std::string& letters) {
     for (const char c : letters) {
@@ -212,21 +219,8 @@ TEST_F(InputQueueTest, AModifierReleasedRightAfterAKeyPressWaitsForTheNextFrame)
 // text of the field with the keyboard, so the Backspace after it empties the field.
 TEST_F(InputQueueTest, AQuickCtrlASelectsTheWholeField) {
   char text[64] = "sprott quadratic";
-  ImGuiIO& io = ImGui::GetIO();
-  io.KeyMap[ImGuiKey_Backspace] = kKeyBackspace;  // as the GLFW backend maps them
-  io.KeyMap[ImGuiKey_A] = 'A';
-  auto fieldFrame = [&](bool focus) {
-    queue.applyTo(io);
-    ImGui::NewFrame();
-    ImGui::Begin("typing");
-    if (focus) ImGui::SetKeyboardFocusHere();
-    ImGui::InputText("field", text, sizeof text);
-    ImGui::End();
-    ImGui::Render();
-  };
-  fieldFrame(true);
-  for (int i = 0; i < 3; ++i) fieldFrame(false);
-  ASSERT_TRUE(ImGui::IsAnyItemActive());
+  const auto fieldFrame = [&](bool focus) { textFieldFrame(text, sizeof text, focus); };
+  focusTextField(text, sizeof text);
   queue.key(app::kKeyLeftControl, true);
   queue.key('A', true);
   queue.key('A', false);

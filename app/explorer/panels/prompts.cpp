@@ -35,6 +35,21 @@
 
 namespace voxflame::app::panels {
 
+namespace {
+
+// Opens the modal question `title` (once), centred across the window at `heightFraction` of its
+// height, `width` wide; true while it shows (then end it with ImGui::EndPopup).
+bool beginModal(const char* title, float heightFraction, float width) {
+  if (!ImGui::IsPopupOpen(title)) ImGui::OpenPopup(title);
+  const ImGuiIO& io = ImGui::GetIO();
+  ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, heightFraction * io.DisplaySize.y), ImGuiCond_Always,
+                          ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(width, 0));
+  return ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings);
+}
+
+}  // namespace
+
 // Scenes left by a session that crashed or was killed: restore or discard, one at a time.
 void recoveryWindow(ExplorerState& state, float scale) {
   if (state.recoverable.empty()) return;
@@ -69,13 +84,7 @@ void recoveryWindow(ExplorerState& state, float scale) {
 void flameChoiceWindow(ExplorerState& state, float scale) {
   if (!state.flameChoice) return;
   ExplorerState::FlameChoice& choice = *state.flameChoice;
-  constexpr const char* kTitle = "Which flame?";
-  if (!ImGui::IsPopupOpen(kTitle)) ImGui::OpenPopup(kTitle);
-  const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.45f * io.DisplaySize.y), ImGuiCond_Always,
-                          ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(440 * scale, 0));
-  if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings)) return;
+  if (!beginModal("Which flame?", 0.45f, 440 * scale)) return;
   ImGui::TextWrapped("%s holds %zu flames. Import which one?", choice.path.filename().string().c_str(),
                      choice.names.size());
   ImGui::SetNextItemWidth(-1);
@@ -119,13 +128,7 @@ void flameChoiceWindow(ExplorerState& state, float scale) {
 // them away, or stay. S, D and Escape answer from the keyboard.
 void quitPromptWindow(ExplorerState& state, float scale) {
   if (!state.quitPrompt) return;
-  constexpr const char* kTitle = "Unsaved changes";
-  if (!ImGui::IsPopupOpen(kTitle)) ImGui::OpenPopup(kTitle);
-  const ImGuiIO& io = ImGui::GetIO();
-  ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.4f * io.DisplaySize.y), ImGuiCond_Always,
-                          ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(420 * scale, 0));
-  if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings)) return;
+  if (!beginModal("Unsaved changes", 0.4f, 420 * scale)) return;
   ImGui::TextWrapped("\"%s\" has changes that are not saved. Save them before quitting?", state.scene.name.c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
   ImGui::TextWrapped(
@@ -133,7 +136,7 @@ void quitPromptWindow(ExplorerState& state, float scale) {
       "Escape cancels.",
       state.scene.name.c_str());
   ImGui::PopStyleColor();
-  const bool typing = io.WantTextInput;
+  const bool typing = ImGui::GetIO().WantTextInput;
   const bool save = button(state, "quit/", "Save") || (!typing && ImGui::IsKeyPressed('S', false));
   ImGui::SameLine();
   const bool discard = button(state, "quit/", "Discard") || (!typing && ImGui::IsKeyPressed('D', false));
