@@ -276,11 +276,11 @@ void ExplorerSession::applyPattern(Engine& engine, const core::Scene& scene, std
 
 namespace {
 
-std::string escapeNoteFor(const core::Scene& lastBounded, const core::Scene& escaping) {
+std::string escapeNoteFor(const std::vector<core::PatternLayer>& lastBounded, const core::Scene& escaping) {
   // One number of the pattern moved (a drag, a typed value): name it and its value, as the slider
   // shows them. The look may have changed too since the last bounded pattern; only the layers count.
   core::Scene base = escaping;
-  base.layers = lastBounded.layers;
+  base.layers = lastBounded;
   const core::SceneDiff changed = core::diff(base, escaping);
   if (changed.paths.size() == 1) {
     const std::string& path = changed.paths.front();
@@ -301,7 +301,7 @@ void ExplorerSession::noteEscape(const core::Accumulator& accumulator, const cor
   const core::AccumulatorStats stats = accumulator.stats();
   std::string note;
   if (stats.problem.empty())
-    lastBounded_ = scene;
+    lastBounded_ = scene.layers;  // the layers only: this runs for every edit of a drag
   else if (stats.showingLastBounded && lastBounded_)
     note = escapeNoteFor(*lastBounded_, scene);
   else

@@ -195,8 +195,9 @@ class ExplorerSession {
   std::uint64_t insideVoxels_ = 0;
   double lastMeasurement_ = std::numeric_limits<double>::quiet_NaN(), previousMeasurement_ = lastMeasurement_;
   bool refineFurtherRequested_ = false;
-  bool holding_ = false;                    // the accumulator's target is held (converged, capped or paused)
-  std::optional<core::Scene> lastBounded_;  // control thread only: the last pattern applied that stays bounded
+  bool holding_ = false;  // the accumulator's target is held (converged, capped or paused)
+  // Control thread only: the layers of the last pattern applied that stays bounded.
+  std::optional<std::vector<core::PatternLayer>> lastBounded_;
   std::string escapeNote_;
   bool showingLastBounded_ = false;
   std::jthread control_;  // last: started after everything it uses exists
