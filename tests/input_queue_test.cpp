@@ -1,4 +1,4 @@
-// The explorer's input queue (app/input_queue.h) fed like GLFW's callbacks would between two
+// The explorer's input queue (app/explorer/input_queue.h) fed like GLFW's callbacks would between two
 // frames, and applied to a headless ImGui context running the explorer's panels.
 #include <gtest/gtest.h>
 
@@ -230,6 +230,30 @@ TEST_F(InputQueueTest, AQuickCtrlASelectsTheWholeField) {
   for (int i = 0; i < 20 && queue.pending() > 0; ++i) fieldFrame(false);
   fieldFrame(false);
   EXPECT_STREQ(text, "");
+}
+
+// Ctrl+F, then a letter before the next frame: the frame that gives the field the keyboard drops
+// its characters (ImGui 1.86), so the explorer holds them for that frame and the letter arrives.
+TEST_F(InputQueueTest, ALetterTypedAsAFieldTakesTheKeyboardIsKept) {
+  char text[64] = "";
+  const auto fieldFrame = [&](bool focus, bool holdCharacters) {
+    queue.applyTo(ImGui::GetIO(), holdCharacters);
+    ImGui::NewFrame();
+    ImGui::Begin("typing");
+    if (focus) ImGui::SetKeyboardFocusHere();
+    ImGui::InputText("field", text, sizeof text);
+    ImGui::End();
+    ImGui::Render();
+  };
+  fieldFrame(true, false);  // the focus is asked for here
+  queue.key('S', true);
+  queue.character('s');
+  queue.key('S', false);
+  fieldFrame(false, true);  // the field takes the keyboard: the letter waits
+  EXPECT_STREQ(text, "");
+  EXPECT_GT(queue.pending(), 0u);
+  for (int i = 0; i < 4; ++i) fieldFrame(false, false);
+  EXPECT_STREQ(text, "s") << "the letter typed while the field took the keyboard";
 }
 
 // A letter's release waits for the next frame while typing goes on, but a modifier does not

@@ -339,7 +339,7 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();  // display size, time, pointer; then the queued input over it
       if (x11.windowGone()) break;
-      input.queue.applyTo(ImGui::GetIO());
+      input.queue.applyTo(ImGui::GetIO(), std::exchange(state.keyboardFocusMoved, false));
       ImGui::NewFrame();
       state.session = session.status();
       if (state.flatImagePending) uploadFlatView(state);

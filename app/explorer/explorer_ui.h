@@ -81,7 +81,10 @@ struct ExplorerState {
   bool recordTyping = false;
   std::vector<std::pair<std::string, std::string>> typedThisFrame;
   bool focusAttractorFilter = false;  // Ctrl+F: the next frame puts the keyboard in the attractor filter
-  Settings settings;                  // recent files, export settings, preset folder: kept between sessions
+  // A panel asked for the keyboard in this frame: the next frame's typed characters wait a frame
+  // more (InputQueue::applyTo's holdCharacters).
+  bool keyboardFocusMoved = false;
+  Settings settings;  // recent files, export settings, preset folder: kept between sessions
 
   // Camera dragging.
   bool orbiting = false, panning = false;

@@ -57,7 +57,7 @@ bool isModifier(int code) {
 
 }  // namespace
 
-void InputQueue::applyTo(ImGuiIO& io) {
+void InputQueue::applyTo(ImGuiIO& io, bool holdCharacters) {
   std::bitset<kKeys> keysChanged;
   std::array<bool, kButtons> buttonsChanged{};
   bool anyButtonChanged = false;
@@ -113,7 +113,7 @@ void InputQueue::applyTo(ImGuiIO& io) {
     } else {
       // ImGui applies a frame's characters before its keys: a character typed after Backspace or
       // an arrow waits for the next frame, so the text is edited as typed.
-      if (editingKeyChanged) break;
+      if (editingKeyChanged || holdCharacters) break;
       io.AddInputCharacter(static_cast<unsigned>(event.code));
     }
     events_.pop_front();

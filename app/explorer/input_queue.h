@@ -38,7 +38,10 @@ class InputQueue {
   // Call after the platform backend's NewFrame, which overwrites io.MouseDown and io.MousePos
   // from the current device state, and before ImGui::NewFrame. While the backend says the
   // pointer is unavailable (io.MousePos at -FLT_MAX), the pointer is left so.
-  void applyTo(ImGuiIO& io);
+  // `holdCharacters`: the keyboard moves to a text field in this frame (a focus asked for in the
+  // last one). ImGui 1.86 drops the characters of the frame that activates a field, so they, and
+  // everything after them, wait for the next frame: Ctrl+F then a quick letter keeps the letter.
+  void applyTo(ImGuiIO& io, bool holdCharacters = false);
 
   // Events waiting for a later frame.
   std::size_t pending() const { return events_.size(); }

@@ -139,7 +139,7 @@ class VolumeRenderer {
   // bottom up), whose pixels hold `samplesBefore` samples; the rest of the target is untouched.
   // Each pixel gets exactly what march() would give it, so a target marched in bands of rows
   // converges to the picture an untiled march makes. target.samples is left to the caller, who
-  // counts samples per band (app/frame_budget.h's RefineBands).
+  // counts samples per band (app/explorer/frame_budget.h's RefineBands).
   void marchRows(FrameTarget& target, const RenderSettings& settings, int sampleIndex, int firstRow, int rowCount,
                  int samplesBefore);
   // Draws the mesh overlay layer of `target` (when settings ask for one).

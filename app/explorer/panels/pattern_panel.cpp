@@ -38,7 +38,10 @@ namespace voxflame::app::panels {
 // Panels.
 
 void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core::AttractorInfo& info) {
-  if (std::exchange(state.focusAttractorFilter, false)) ImGui::SetKeyboardFocusHere();
+  if (std::exchange(state.focusAttractorFilter, false)) {
+    ImGui::SetKeyboardFocusHere();
+    state.keyboardFocusMoved = true;
+  }
   const bool enter = ImGui::InputTextWithHint("##filter", "filter attractors (Ctrl+F)", state.attractorFilter,
                                               sizeof state.attractorFilter, ImGuiInputTextFlags_EnterReturnsTrue);
   probe(state, "attractor/filter");
