@@ -81,8 +81,8 @@ struct ExplorerState {
   bool recordTyping = false;
   std::vector<std::pair<std::string, std::string>> typedThisFrame;
   bool focusAttractorFilter = false;  // Ctrl+F: the next frame puts the keyboard in the attractor filter
-  // A panel asked for the keyboard in this frame: the next frame's typed characters wait a frame
-  // more (InputQueue::applyTo's holdCharacters).
+  // A panel asked for the keyboard in this frame (panels::takeKeyboard): the next frame's typed
+  // characters wait a frame more (InputQueue::applyTo's holdCharacters).
   bool keyboardFocusMoved = false;
   Settings settings;  // recent files, export settings, preset folder: kept between sessions
 

@@ -234,7 +234,7 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
   if (ImGui::BeginCombo("add variation", "choose…", ImGuiComboFlags_HeightLarge)) {
     if (ImGui::IsWindowAppearing()) {
       state.variationFilter[0] = '\0';
-      ImGui::SetKeyboardFocusHere();
+      takeKeyboard(state);
     }
     ImGui::InputTextWithHint("##variationfilter", "filter", state.variationFilter, sizeof state.variationFilter);
     noteTyped(state, "variation filter", state.variationFilter);

@@ -38,10 +38,7 @@ namespace voxflame::app::panels {
 // Panels.
 
 void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core::AttractorInfo& info) {
-  if (std::exchange(state.focusAttractorFilter, false)) {
-    ImGui::SetKeyboardFocusHere();
-    state.keyboardFocusMoved = true;
-  }
+  if (std::exchange(state.focusAttractorFilter, false)) takeKeyboard(state);
   const bool enter = ImGui::InputTextWithHint("##filter", "filter attractors (Ctrl+F)", state.attractorFilter,
                                               sizeof state.attractorFilter, ImGuiInputTextFlags_EnterReturnsTrue);
   probe(state, "attractor/filter");

@@ -89,6 +89,11 @@ void markIfKeyed(ExplorerState& state, const std::string& path, const std::strin
   probe(state, probeName + "/keyed");
 }
 
+void takeKeyboard(ExplorerState& state) {
+  ImGui::SetKeyboardFocusHere();
+  state.keyboardFocusMoved = true;
+}
+
 bool button(ExplorerState& state, const std::string& scope, const char* label) {
   const bool pressed = ImGui::Button(label);
   probe(state, scope + label);

@@ -38,6 +38,10 @@ std::string valuePath(const std::string& scope, std::string_view key);
 // A value with keys on the Timeline carries a mark: a small key at the widget's top right corner.
 void markIfKeyed(ExplorerState& state, const std::string& path, const std::string& probeName);
 bool button(ExplorerState& state, const std::string& scope, const char* label);
+// Gives the next widget the keyboard. ImGui 1.86 drops the characters of the frame that activates
+// it, so the window loop holds the next frame's characters (ExplorerState::keyboardFocusMoved):
+// every panel that moves the keyboard goes through here.
+void takeKeyboard(ExplorerState& state);
 std::string lowercase(std::string text);
 bool keyDown(int key);
 
