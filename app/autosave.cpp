@@ -138,10 +138,10 @@ Autosave::~Autosave() {
   writer_.join();  // writes what is pending first
 }
 
-void Autosave::update(const core::Scene& scene) {
-  if (finished_ || file_.empty()) return;
+bool Autosave::update(const core::Scene& scene) {
+  if (finished_ || file_.empty()) return true;  // nothing to look for, now or later
   const auto now = std::chrono::steady_clock::now();
-  if (haveBaseline_ && now - lastCheck_ < interval_) return;
+  if (haveBaseline_ && now - lastCheck_ < interval_) return false;
   lastCheck_ = now;
   std::string preset, base;
   try {
@@ -149,21 +149,22 @@ void Autosave::update(const core::Scene& scene) {
   } catch (const std::exception& e) {
     const std::lock_guard lock(mutex_);
     lastError_ = std::string("cannot autosave this scene: ") + e.what();
-    return;
+    return true;
   }
   const std::string key = preset + '\n' + base;
   if (!haveBaseline_) {
     haveBaseline_ = true;
     lastHanded_ = key;
-    return;
+    return true;
   }
-  if (key == lastHanded_) return;
+  if (key == lastHanded_) return true;
   lastHanded_ = key;
   {
     const std::lock_guard lock(mutex_);
     pending_.emplace(std::move(preset), std::move(base));
   }
   wake_.notify_one();
+  return true;
 }
 
 std::string Autosave::saveNow(const core::Scene& scene) {

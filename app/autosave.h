@@ -60,9 +60,11 @@ class Autosave {
   Autosave(const Autosave&) = delete;
   Autosave& operator=(const Autosave&) = delete;
 
-  // Call every frame with the current scene; returns at once (see the cost above). The first
-  // scene seen is the session's starting point and is not written.
-  void update(const core::Scene& scene);
+  // Call every frame with the current scene, or (as the explorer does) on every frame after an
+  // edit until it returns true; returns at once (see the cost above). Returns whether it looked at
+  // this scene: false while the last look is less than the interval ago. The first scene seen is
+  // the session's starting point and is not written.
+  bool update(const core::Scene& scene);
 
   // Waits until every scene handed over is on disk (or failed). For tests and shutdown.
   void flush();

@@ -53,7 +53,7 @@ double residentMegabytes() {
 struct FrameLoop : HeadlessFrameLoop {
   FrameLoop(app::ExplorerSession& session, const core::Scene& scene, float renderScale)
       : HeadlessFrameLoop(session, scene, renderScale) {
-    state.settings.refineUntilNoisePercent = 0.0;
+    state.services.settings.refineUntilNoisePercent = 0.0;
   }
 };
 
@@ -243,8 +243,8 @@ struct FrameTimes {
   double resolveTotal = 0.0, uploadTotal = 0.0, scaleTotal = 0.0;
   double rowsTotal = 0.0, targetRowsTotal = 0.0;
   void add(double ms, const app::LiveView& view, const app::ExplorerState& state) {
-    uploadTotal += state.metrics.uploadMs;
-    scaleTotal += state.metrics.marchScale;
+    uploadTotal += state.frame.metrics.uploadMs;
+    scaleTotal += state.frame.metrics.marchScale;
     total += ms;
     worst = std::max(worst, ms);
     ++frames;
@@ -284,8 +284,10 @@ FrameTimes timeFrames(FrameLoop& loop, int frames, double maxMs, Each each) {
 }
 
 // A 1% nudge of the first number a slider would move, whatever the first layer's kind.
-void nudgePattern(core::Scene& scene, double factor) {
-  core::PatternLayer& layer = scene.layers[0];
+// As a slider would: changes layer 0's first parameter and reports the edit to the document.
+void nudgePattern(app::Document& document, double factor) {
+  document.edited(core::Affects::Pattern);
+  core::PatternLayer& layer = document.scene.layers[0];
   if (layer.kind == core::PatternKind::Flame)
     layer.flame.xforms[0].affine.m[0] *= factor;
   else if (layer.kind == core::PatternKind::QuaternionJulia)
@@ -302,7 +304,7 @@ struct EditLatencies {
 EditLatencies measureEdits(FrameLoop& loop, app::ExplorerSession& session, int edits) {
   EditLatencies result;
   for (int change = 0; change < edits; ++change) {
-    nudgePattern(loop.state.scene, change % 2 ? 1.0 / 1.01 : 1.01);
+    nudgePattern(loop.state.document, change % 2 ? 1.0 / 1.01 : 1.01);
     const auto changed = Clock::now();
     const std::uint32_t firstFrame = loop.view.frameCount();
     const std::uint64_t post = session.status().requestedGeneration + 1;  // the next frame posts it
@@ -335,17 +337,17 @@ EditLatencies measureEdits(FrameLoop& loop, app::ExplorerSession& session, int e
 std::array<double, 3> cpuAtRest(app::ExplorerSession& session, FrameLoop& loop) {
   const double noise = session.status().noise;
   if (!(noise > 0.0)) return {-1.0, -1.0, -1.0};
-  loop.state.settings.refineUntilNoisePercent = 100.0 * 0.9 * noise;
+  loop.state.services.settings.refineUntilNoisePercent = 100.0 * 0.9 * noise;
   int restingFrames = 0;
   auto step = [&] {
-    loop.state.session = session.status();
+    loop.state.frame.session = session.status();
     const double wait = app::frameWaitSeconds(loop.state, loop.view.resting(), restingFrames);
     if (wait > 0.0) {
       std::this_thread::sleep_for(std::chrono::duration<double>(wait));  // glfwWaitEventsTimeout, no input
       return;
     }
     loop.run();
-    restingFrames = loop.view.resting() && loop.state.session.resting ? restingFrames + 1 : 0;
+    restingFrames = loop.view.resting() && loop.state.frame.session.resting ? restingFrames + 1 : 0;
   };
   const auto start = Clock::now();
   while (restingFrames < 3 && millisecondsSince(start) < 60'000) step();
@@ -458,7 +460,7 @@ void benchExplorer(const BenchOptions& options) {
     app::ExplorerSession session;
     RunnableThreadSampler runnable(libraryThreads);
     FrameLoop loop(session, initial, software ? 0.5f : 1.0f);
-    core::Scene& scene = loop.state.scene;
+    core::Scene& scene = loop.state.document.scene;
     loop.run();  // posts the scene
     session.waitUntilApplied(600.0);
     // Wait for the full grid, then refine for a while as a user watching would.
@@ -484,13 +486,16 @@ void benchExplorer(const BenchOptions& options) {
     endPhase("edits");
     // A slider drag: a small edit every frame; then the camera orbiting; then the still view
     // refining again. The slider (then the view) is held throughout, as the panels tell the view.
-    loop.state.interacting = true;
+    loop.state.frame.interacting = true;
     const FrameTimes dragging =
-        timeFrames(loop, 40, 20'000.0, [&](int i) { nudgePattern(scene, i % 2 ? 1.0 / 1.002 : 1.002); });
+        timeFrames(loop, 40, 20'000.0, [&](int i) { nudgePattern(loop.state.document, i % 2 ? 1.0 / 1.002 : 1.002); });
     endPhase("dragging");
-    const FrameTimes orbiting = timeFrames(loop, 40, 20'000.0, [&](int) { scene.camera.azimuthDeg += 2.0; });
+    const FrameTimes orbiting = timeFrames(loop, 40, 20'000.0, [&](int) {
+      scene.camera.azimuthDeg += 2.0;
+      loop.state.document.edited(core::Affects::View);
+    });
     endPhase("orbiting");
-    loop.state.interacting = false;
+    loop.state.frame.interacting = false;
     const FrameTimes refiningAfter = timeFrames(loop, 1 << 30, 3000.0, [](int) {});
     endPhase("refining");
 
@@ -507,7 +512,7 @@ void benchExplorer(const BenchOptions& options) {
       request.settings.points = 20'000'000;
       job.start(request);
       // As in the explorer, refinement pauses while the export runs.
-      while ((loop.state.exportStatus = job.poll()).state == app::ExportState::Running) {
+      while ((loop.state.services.exportStatus = job.poll()).state == app::ExportState::Running) {
         const auto frameStart = Clock::now();
         loop.run();
         exporting.add(millisecondsSince(frameStart), loop.view, loop.state);
@@ -516,7 +521,7 @@ void benchExplorer(const BenchOptions& options) {
     }
     if (resolution == 256) endPhase("during_export");
     auto median = [](const std::vector<double>& sorted) { return sorted[sorted.size() / 2]; };
-    loop.state.exportStatus = app::ExportStatus{};
+    loop.state.services.exportStatus = app::ExportStatus{};
     runnable.setOn(false);  // sampling costs CPU, which the rest's figure must not include
     const auto [convergeSeconds, cpuPercent, restNoise] = cpuAtRest(session, loop);
     // Each phase's mean, 95th percentile and worst frame, and its resolve's mean and share.
@@ -541,8 +546,8 @@ void benchExplorer(const BenchOptions& options) {
     report(options, {{"bench", "explorer"},
                      {"grid", resolution},
                      {"renderer", context.renderer()},
-                     {"render_scale", loop.state.renderScale},
-                     {"frame_budget_ms", loop.state.frameBudgetMs},
+                     {"render_scale", loop.state.panels.scene.renderScale},
+                     {"frame_budget_ms", loop.state.panels.scene.frameBudgetMs},
                      {"mean_frame_ms", refining.mean()},
                      {"p95_frame_ms", refining.p95()},
                      {"worst_frame_ms", refining.worst},

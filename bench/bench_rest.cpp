@@ -87,14 +87,14 @@ void benchRest(const BenchOptions& options) {
     HeadlessFrameLoop loop(session, scene, software ? 0.5f : 1.0f);
     int restingFrames = 0;
     auto step = [&] {
-      loop.state.session = session.status();
+      loop.state.frame.session = session.status();
       const double wait = app::frameWaitSeconds(loop.state, loop.view.resting(), restingFrames);
       if (wait > 0.0) {
         std::this_thread::sleep_for(std::chrono::duration<double>(wait));
         return true;
       }
       loop.run();
-      restingFrames = loop.view.resting() && loop.state.session.resting ? restingFrames + 1 : 0;
+      restingFrames = loop.view.resting() && loop.state.frame.session.resting ? restingFrames + 1 : 0;
       return false;
     };
     const auto start = Clock::now();

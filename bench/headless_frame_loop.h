@@ -16,7 +16,7 @@ struct HeadlessFrameLoop {
   HeadlessFrameLoop(app::ExplorerSession& session, const core::Scene& scene, float renderScale)
       : view(session, nullptr, nullptr) {
     app::resetExplorerState(state, scene);
-    state.renderScale = renderScale;
+    state.panels.scene.renderScale = renderScale;
     glGenRenderbuffers(1, &colour);
     glBindRenderbuffer(GL_RENDERBUFFER, colour);
     glRenderbufferStorage(GL_RENDERBUFFER, GL_RGBA8, kWidth, kHeight);
@@ -37,7 +37,7 @@ struct HeadlessFrameLoop {
 
   // Runs one frame and waits for the GL, so the time is the frame's real cost.
   app::LiveFrame run() {
-    const app::LiveFrame frame = view.frame(state, kWidth, kHeight, window);
+    const app::LiveFrame frame = app::liveFrame(view, state, kWidth, kHeight, window);
     glFinish();
     return frame;
   }

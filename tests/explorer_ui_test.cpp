@@ -44,12 +44,53 @@ class ExplorerUi : public ::testing::Test {
     io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);  // what a renderer backend does
     // Nothing outside the window: the mouse starts over empty space in the middle.
     io.MousePos = ImVec2(640, 360);
-    state.probe = &probe;
+    state.frame.probe = &probe;
+    // Every frame of every test checks that the panels reported each edit they made, with what it
+    // affects (the live view acts on those reports alone).
+    state.frame.checkEditReports = true;
     app::resetExplorerState(state, core::defaultScene());
     frame();
     frame();
   }
   void TearDown() override { ImGui::DestroyContext(); }
+
+  // A change to the scene made outside the panels, as the window loop or an import makes one:
+  // reported to the document with what it affects.
+  void edit(const std::function<void(core::Scene&)>& change) {
+    core::Scene changed = state.document.scene;
+    change(changed);
+    state.document.replace(changed);
+  }
+  // Drags every widget drawn whose probe name starts with one of `prefixes` a little to the right
+  // (a click, for buttons and check boxes), one at a time, with the frames checking the edit
+  // reports (checkEditReports): a widget that changes the scene without saying what it affects
+  // makes the frame throw. Returns how many widgets changed the scene.
+  int dragEveryWidget(const std::vector<std::string>& prefixes, const std::vector<std::string>& skip) {
+    std::vector<std::string> names;
+    for (const auto& [name, rect] : probe.items)
+      for (const std::string& prefix : prefixes)
+        if (name.rfind(prefix, 0) == 0 && std::find(skip.begin(), skip.end(), name) == skip.end())
+          names.push_back(name);
+    int changed = 0;
+    for (const std::string& name : names) {
+      const auto found = probe.items.find(name);
+      if (found == probe.items.end()) continue;  // gone since an earlier widget's edit
+      const core::Scene before = state.document.scene;
+      const std::uint64_t reports = state.document.reportCount();
+      drag(found->second.centerX(), found->second.centerY(), 12.0f, 0.0f);
+      if (ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) {
+        ImGui::GetIO().KeysDown[app::kKeyEscape] = true;  // close what the click opened (a combo)
+        frame();
+        ImGui::GetIO().KeysDown[app::kKeyEscape] = false;
+        frame();
+      }
+      if (!(state.document.scene == before)) {
+        ++changed;
+        EXPECT_GT(state.document.reportCount(), reports) << name;
+      }
+    }
+    return changed;
+  }
 
   void frame(int count = 1) {
     for (int i = 0; i < count; ++i) {
@@ -116,217 +157,219 @@ class ExplorerUi : public ::testing::Test {
 };
 
 TEST_F(ExplorerUi, DraggingAParameterSliderChangesThePatternAndIsOneUndoStep) {
-  const double before = state.scene.layers[0].params[0];
-  const core::Scene keyBefore = state.scene;
+  const double before = state.document.scene.layers[0].params[0];
+  const core::Scene keyBefore = state.document.scene;
   const auto& slider = item("layer0/a");
   double pressedAt = 0.0;
   bool interactingWhilePressed = false;
   drag(slider.minX + 4, slider.centerY(), 60.0f, 0.0f, 0, [&] {
-    pressedAt = state.scene.layers[0].params[0];
-    interactingWhilePressed = state.interacting;
+    pressedAt = state.document.scene.layers[0].params[0];
+    interactingWhilePressed = state.frame.interacting;
   });
-  const double after = state.scene.layers[0].params[0];
+  const double after = state.document.scene.layers[0].params[0];
   EXPECT_GT(after, pressedAt) << "dragging right raises the value";
   EXPECT_TRUE(interactingWhilePressed) << "from the frame it is pressed, a held slider tells the view a drag is on";
-  EXPECT_FALSE(state.interacting) << "and no longer once released";
-  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern()) << "a parameter change restarts the accumulation";
+  EXPECT_FALSE(state.frame.interacting) << "and no longer once released";
+  EXPECT_TRUE(core::diff(keyBefore, state.document.scene).pattern()) << "a parameter change restarts the accumulation";
 
   pressKey('Z', true);
-  EXPECT_DOUBLE_EQ(state.scene.layers[0].params[0], before) << "the whole drag is one undo step";
+  EXPECT_DOUBLE_EQ(state.document.scene.layers[0].params[0], before) << "the whole drag is one undo step";
   pressKey('Z', true, true);
-  EXPECT_DOUBLE_EQ(state.scene.layers[0].params[0], after) << "Ctrl+Shift+Z redoes it";
+  EXPECT_DOUBLE_EQ(state.document.scene.layers[0].params[0], after) << "Ctrl+Shift+Z redoes it";
 }
 
 TEST_F(ExplorerUi, ToneSlidersChangeTheLookButNotThePattern) {
-  const core::Scene keyBefore = state.scene;
+  const core::Scene keyBefore = state.document.scene;
   double gamma = 0.0;
   const auto& slider = item("tone/gamma");
-  drag(slider.centerX(), slider.centerY(), -50.0f, 0.0f, 0, [&] { gamma = state.scene.tone.gamma; });
-  EXPECT_LT(state.scene.tone.gamma, gamma);
-  EXPECT_FALSE(core::diff(keyBefore, state.scene).pattern()) << "tone mapping must not restart accumulation";
+  drag(slider.centerX(), slider.centerY(), -50.0f, 0.0f, 0, [&] { gamma = state.document.scene.tone.gamma; });
+  EXPECT_LT(state.document.scene.tone.gamma, gamma);
+  EXPECT_FALSE(core::diff(keyBefore, state.document.scene).pattern()) << "tone mapping must not restart accumulation";
 }
 
 TEST_F(ExplorerUi, MouseOrbitsPansAndZoomsOutsideThePanels) {
-  const core::CameraSettings before = state.scene.camera;
+  const core::CameraSettings before = state.document.scene.camera;
   bool interactingWhileOrbiting = false;
-  drag(640, 360, 40, 0, 0, [&] { interactingWhileOrbiting = state.interacting; });
-  EXPECT_NE(state.scene.camera.azimuthDeg, before.azimuthDeg) << "left drag orbits";
+  drag(640, 360, 40, 0, 0, [&] { interactingWhileOrbiting = state.frame.interacting; });
+  EXPECT_NE(state.document.scene.camera.azimuthDeg, before.azimuthDeg) << "left drag orbits";
   EXPECT_TRUE(interactingWhileOrbiting);
-  EXPECT_FALSE(state.interacting);
+  EXPECT_FALSE(state.frame.interacting);
   drag(640, 360, 30, 20, 1);
-  EXPECT_GT(glm::length(state.scene.camera.target - before.target), 0.0) << "right drag pans";
+  EXPECT_GT(glm::length(state.document.scene.camera.target - before.target), 0.0) << "right drag pans";
   ImGui::GetIO().MouseWheel = 1.0f;
   frame();
   ImGui::GetIO().MouseWheel = 0.0f;
-  EXPECT_LT(state.scene.camera.distance, before.distance) << "the wheel zooms in";
+  EXPECT_LT(state.document.scene.camera.distance, before.distance) << "the wheel zooms in";
 
   // The same drag starting on a panel belongs to the panel.
-  const double azimuth = state.scene.camera.azimuthDeg;
+  const double azimuth = state.document.scene.camera.azimuthDeg;
   const auto& label = item("layer0/Reset parameters");
   drag(label.maxX + 120, label.centerY(), 40, 0);
-  EXPECT_DOUBLE_EQ(state.scene.camera.azimuthDeg, azimuth);
+  EXPECT_DOUBLE_EQ(state.document.scene.camera.azimuthDeg, azimuth);
 }
 
 TEST_F(ExplorerUi, LayersCanBeAddedWeightedAndRemoved) {
   click("Add layer");
-  ASSERT_EQ(state.scene.layers.size(), 2u);
-  EXPECT_NE(state.scene.layers[1].attractor, state.scene.layers[0].attractor);
+  ASSERT_EQ(state.document.scene.layers.size(), 2u);
+  EXPECT_NE(state.document.scene.layers[1].attractor, state.document.scene.layers[0].attractor);
   double weight = 0.0;
   const auto& slider = item("layer1/weight");
-  drag(slider.minX + 4, slider.centerY(), 40, 0, 0, [&] { weight = state.scene.layers[1].weight; });
-  EXPECT_GT(state.scene.layers[1].weight, weight);
+  drag(slider.minX + 4, slider.centerY(), 40, 0, 0, [&] { weight = state.document.scene.layers[1].weight; });
+  EXPECT_GT(state.document.scene.layers[1].weight, weight);
   click("layer1/Remove layer");
-  EXPECT_EQ(state.scene.layers.size(), 1u);
+  EXPECT_EQ(state.document.scene.layers.size(), 1u);
 }
 
 TEST_F(ExplorerUi, ResetParametersRestoresTheCatalogueDefaults) {
-  const auto defaults = core::attractorOrThrow(state.scene.layers[0].attractor).defaultParams();
-  state.scene.layers[0].params[1] += 0.2;
+  const auto defaults = core::attractorOrThrow(state.document.scene.layers[0].attractor).defaultParams();
+  edit([&](core::Scene& scene) { scene.layers[0].params[1] += 0.2; });
   frame();
   click("layer0/Reset parameters");
-  EXPECT_EQ(state.scene.layers[0].params, defaults);
+  EXPECT_EQ(state.document.scene.layers[0].params, defaults);
 }
 
 TEST_F(ExplorerUi, GradientStopsCanBeAddedAndMoved) {
-  const std::size_t stops = state.scene.layers[0].color.gradient.size();
+  const std::size_t stops = state.document.scene.layers[0].color.gradient.size();
   click("layer0/Add stop");
-  EXPECT_EQ(state.scene.layers[0].color.gradient.size(), stops + 1);
-  EXPECT_TRUE(state.scene.layers[0].color.palette.empty()) << "an edited gradient is custom";
-  for (std::size_t s = 1; s < state.scene.layers[0].color.gradient.size(); ++s)
-    EXPECT_LE(state.scene.layers[0].color.gradient[s - 1].position, state.scene.layers[0].color.gradient[s].position);
+  EXPECT_EQ(state.document.scene.layers[0].color.gradient.size(), stops + 1);
+  EXPECT_TRUE(state.document.scene.layers[0].color.palette.empty()) << "an edited gradient is custom";
+  for (std::size_t s = 1; s < state.document.scene.layers[0].color.gradient.size(); ++s)
+    EXPECT_LE(state.document.scene.layers[0].color.gradient[s - 1].position,
+              state.document.scene.layers[0].color.gradient[s].position);
 }
 
 TEST_F(ExplorerUi, GridResolutionChangesOnlyWhenTheSliderIsReleased) {
-  const int before = state.scene.gridResolution;
+  const int before = state.document.scene.gridResolution;
   const auto& slider = item("mesh/grid");
   ImGuiIO& io = ImGui::GetIO();
   moveTo(slider.minX + 4, slider.centerY());
   io.MouseDown[0] = true;
   frame();
   moveTo(slider.minX + 10, slider.centerY());
-  EXPECT_EQ(state.scene.gridResolution, before) << "no mask rebuild while dragging";
+  EXPECT_EQ(state.document.scene.gridResolution, before) << "no mask rebuild while dragging";
   io.MouseDown[0] = false;
   frame(2);
-  EXPECT_NE(state.scene.gridResolution, before);
-  EXPECT_GE(state.scene.gridResolution, 32);
-  EXPECT_LT(state.scene.gridResolution, before) << "the left part of the slider is below the default";
+  EXPECT_NE(state.document.scene.gridResolution, before);
+  EXPECT_GE(state.document.scene.gridResolution, 32);
+  EXPECT_LT(state.document.scene.gridResolution, before) << "the left part of the slider is below the default";
 }
 
 TEST_F(ExplorerUi, SearchFindsAChaoticSetAndTheHistoryGoesBackAndForward) {
-  const auto start = state.scene.layers[0].params;
+  const auto start = state.document.scene.layers[0].params;
   click("Search (F3)");
-  for (int i = 0; i < 600 && state.visited.empty(); ++i) {
+  for (int i = 0; i < 600 && state.panels.explore.visited.empty(); ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     frame();
   }
-  ASSERT_EQ(state.visited.size(), 2u) << state.searchMessage;
-  const auto found = state.scene.layers[0].params;
+  ASSERT_EQ(state.panels.explore.visited.size(), 2u) << state.panels.explore.searchMessage;
+  const auto found = state.document.scene.layers[0].params;
   EXPECT_NE(found, start);
-  const std::string foundLine = state.searchMessage;
+  const std::string foundLine = state.panels.explore.searchMessage;
   EXPECT_EQ(foundLine.rfind("found: ", 0), 0u) << foundLine;
   EXPECT_NE(foundLine.find("tries"), std::string::npos) << "it says how many it tried";
   click("< Back");
-  EXPECT_EQ(state.scene.layers[0].params, start);
-  EXPECT_EQ(state.searchMessage.rfind("found: ", 0), std::string::npos) << "the found line follows Back";
+  EXPECT_EQ(state.document.scene.layers[0].params, start);
+  EXPECT_EQ(state.panels.explore.searchMessage.rfind("found: ", 0), std::string::npos) << "the found line follows Back";
   click("Forward >");
-  EXPECT_EQ(state.scene.layers[0].params, found);
-  EXPECT_EQ(state.searchMessage, foundLine) << "and Forward";
+  EXPECT_EQ(state.document.scene.layers[0].params, found);
+  EXPECT_EQ(state.panels.explore.searchMessage, foundLine) << "and Forward";
 }
 
 // A search shows what it has tried and can be cancelled: around a periodic Thomas nothing is
 // near, and it widens instead of running on in silence.
 TEST_F(ExplorerUi, ASearchShowsItsProgressAndCanBeCancelled) {
-  state.scene.layers[0].attractor = "thomas";
-  state.scene.layers[0].params = {0.32};
+  edit([&](core::Scene& scene) { scene.layers[0].attractor = "thomas"; });
+  edit([&](core::Scene& scene) { scene.layers[0].params = {0.32}; });
   frame();
   click("Search (F3)");
-  ASSERT_TRUE(state.search.busy());
-  for (int i = 0; i < 200 && state.searchTried->load() < 3; ++i) {
+  ASSERT_TRUE(state.services.search.busy());
+  for (int i = 0; i < 200 && state.services.searchTried->load() < 3; ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
     frame();
   }
-  EXPECT_GE(state.searchTried->load(), 3) << "its tries are counted";
+  EXPECT_GE(state.services.searchTried->load(), 3) << "its tries are counted";
   frame();
   click("explore/Cancel search");
-  EXPECT_FALSE(state.search.busy());
-  EXPECT_EQ(state.searchMessage.rfind("search cancelled after ", 0), 0u) << state.searchMessage;
-  EXPECT_DOUBLE_EQ(state.scene.layers[0].params[0], 0.32) << "nothing was applied";
+  EXPECT_FALSE(state.services.search.busy());
+  EXPECT_EQ(state.panels.explore.searchMessage.rfind("search cancelled after ", 0), 0u)
+      << state.panels.explore.searchMessage;
+  EXPECT_DOUBLE_EQ(state.document.scene.layers[0].params[0], 0.32) << "nothing was applied";
 }
 
 TEST_F(ExplorerUi, OpeningFilesKeepsWorkSafe) {
   TemporaryFolder folder;
-  const auto pattern = state.scene.layers[0].params;
+  const auto pattern = state.document.scene.layers[0].params;
   // A mesh replaces the shape and keeps the pattern; it is one undoable edit.
-  ASSERT_TRUE(app::openFile(state, test::meshPath("teapot.obj"))) << state.notice;
-  EXPECT_NE(state.scene.meshPath.find("teapot.obj"), std::string::npos);
-  EXPECT_EQ(state.scene.layers[0].params, pattern);
-  EXPECT_FALSE(state.settings.recent.empty());
+  ASSERT_TRUE(app::openFile(state, test::meshPath("teapot.obj"))) << state.panels.prompts.notice;
+  EXPECT_NE(state.document.scene.meshPath.find("teapot.obj"), std::string::npos);
+  EXPECT_EQ(state.document.scene.layers[0].params, pattern);
+  EXPECT_FALSE(state.services.settings.recent.empty());
   frame(2);
   pressKey('Z', true);
-  EXPECT_EQ(state.scene.meshPath.find("teapot.obj"), std::string::npos) << "undo goes back to the bunny";
+  EXPECT_EQ(state.document.scene.meshPath.find("teapot.obj"), std::string::npos) << "undo goes back to the bunny";
 
   // A broken preset leaves the scene as it was and says why.
   const auto broken = folder.path() / "broken.json";
   std::ofstream(broken) << "{ \"schema_version\": 1, \"name\": ";
-  const std::string meshBefore = state.scene.meshPath;
+  const std::string meshBefore = state.document.scene.meshPath;
   EXPECT_FALSE(app::openFile(state, broken));
-  EXPECT_NE(state.notice.find("broken.json"), std::string::npos) << state.notice;
-  EXPECT_EQ(state.scene.meshPath, meshBefore);
+  EXPECT_NE(state.panels.prompts.notice.find("broken.json"), std::string::npos) << state.panels.prompts.notice;
+  EXPECT_EQ(state.document.scene.meshPath, meshBefore);
   frame(3);
   click("notice/Dismiss");
-  EXPECT_TRUE(state.notice.empty());
+  EXPECT_TRUE(state.panels.prompts.notice.empty());
 }
 
 // A flame file opened or dropped replaces the pattern, keeps the mesh, shows its warnings and is
 // one undoable edit; a broken one changes nothing and is named.
 TEST_F(ExplorerUi, OpeningAFlameFileKeepsTheMeshAndCanBeUndone) {
   TemporaryFolder folder;
-  ASSERT_TRUE(app::openFile(state, test::meshPath("teapot.obj"))) << state.notice;
+  ASSERT_TRUE(app::openFile(state, test::meshPath("teapot.obj"))) << state.panels.prompts.notice;
   frame(2);
   const auto flame = folder.path() / "swirl.flame";
   std::ofstream(flame) << "<flame name=\"swirl\"><xform weight=\"1\" color=\"0\" swirl=\"1\" mystery=\"1\" "
                           "coefs=\"0.5 0 0 0.5 0.2 0\"/><xform weight=\"1\" color=\"1\" linear=\"1\" "
                           "coefs=\"0.5 0 0 0.5 -0.2 0\"/></flame>";
-  ASSERT_TRUE(app::openFile(state, flame)) << state.notice;
-  ASSERT_EQ(state.scene.layers.size(), 1u);
-  EXPECT_EQ(state.scene.layers[0].kind, core::PatternKind::Flame);
-  EXPECT_EQ(state.scene.name, "swirl");
-  EXPECT_NE(state.scene.meshPath.find("teapot.obj"), std::string::npos);
-  EXPECT_NE(state.notice.find("mystery"), std::string::npos) << state.notice;
+  ASSERT_TRUE(app::openFile(state, flame)) << state.panels.prompts.notice;
+  ASSERT_EQ(state.document.scene.layers.size(), 1u);
+  EXPECT_EQ(state.document.scene.layers[0].kind, core::PatternKind::Flame);
+  EXPECT_EQ(state.document.scene.name, "swirl");
+  EXPECT_NE(state.document.scene.meshPath.find("teapot.obj"), std::string::npos);
+  EXPECT_NE(state.panels.prompts.notice.find("mystery"), std::string::npos) << state.panels.prompts.notice;
   // What a frame does once the edit settles (frames are not run here: the Pattern panel of this
   // branch does not draw flame layers yet): the flame is one step, and undo leaves only it.
-  ASSERT_TRUE(state.history->record(state.scene));
-  const auto undone = state.history->undo();
+  ASSERT_TRUE(state.document.history->record(state.document.scene));
+  const auto undone = state.document.history->undo();
   ASSERT_TRUE(undone.has_value());
   EXPECT_EQ(undone->layers.at(0).kind, core::PatternKind::Attractor) << "undo brings the attractor back";
   EXPECT_NE(undone->meshPath.find("teapot.obj"), std::string::npos);
 
   const auto broken = folder.path() / "broken.flam3";
   std::ofstream(broken) << "<flame><xform weight=\"1\" coefs=\"inf 0 0 1 0 0\"/></flame>";
-  const std::string before = core::sceneToJson(state.scene);
+  const std::string before = core::sceneToJson(state.document.scene);
   EXPECT_FALSE(app::openFile(state, broken));
-  EXPECT_NE(state.notice.find("broken.flam3"), std::string::npos) << state.notice;
-  EXPECT_EQ(core::sceneToJson(state.scene), before);
+  EXPECT_NE(state.panels.prompts.notice.find("broken.flam3"), std::string::npos) << state.panels.prompts.notice;
+  EXPECT_EQ(core::sceneToJson(state.document.scene), before);
 }
 
 // The session restarts accumulation (a new generation) when the UI changes a parameter, and
 // does not when only the tone changes.
 TEST_F(ExplorerUi, AParameterChangeBumpsTheGenerationOfTheSession) {
-  state.scene.gridResolution = 48;
+  edit([&](core::Scene& scene) { scene.gridResolution = 48; });
   app::ExplorerSession session(1);
-  ASSERT_TRUE(session.postIfPatternChanged(state.scene));
+  ASSERT_TRUE(session.postIfPatternChanged(state.document.scene));
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   ASSERT_TRUE(session.status().error.empty()) << session.status().error;
   const auto generation = session.status().stats.generation;
 
   const auto& tone = item("tone/brightness");
   drag(tone.centerX(), tone.centerY(), 30, 0);
-  EXPECT_FALSE(session.postIfPatternChanged(state.scene));
+  EXPECT_FALSE(session.postIfPatternChanged(state.document.scene));
 
   const auto& slider = item("layer0/b");
   // From b near 1.3 to near 1.4: bounded. (From b = 1.55 on, the default preset's Euler step escapes.)
   drag(slider.minX + 0.32f * (slider.maxX - slider.minX), slider.centerY(), 10, 0);
-  ASSERT_TRUE(session.postIfPatternChanged(state.scene));
+  ASSERT_TRUE(session.postIfPatternChanged(state.document.scene));
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   EXPECT_EQ(session.status().stats.generation, generation + 1) << session.status().escapeNote;
 
@@ -341,36 +384,38 @@ TEST_F(ExplorerUi, AParameterChangeBumpsTheGenerationOfTheSession) {
 }
 
 TEST_F(ExplorerUi, AnEscapingPatternIsShownWithAWayOut) {
-  state.scene.gridResolution = 48;
-  state.scene.layers[0].attractor = "polynomial_b";
-  state.scene.layers[0].params = core::attractorOrThrow("polynomial_b").alternative("seed")->values;
+  edit([&](core::Scene& scene) { scene.gridResolution = 48; });
+  edit([&](core::Scene& scene) { scene.layers[0].attractor = "polynomial_b"; });
+  edit([&](core::Scene& scene) {
+    scene.layers[0].params = core::attractorOrThrow("polynomial_b").alternative("seed")->values;
+  });
   app::ExplorerSession session(1);
-  session.postIfPatternChanged(state.scene);
+  session.postIfPatternChanged(state.document.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
-  state.session = session.status();
-  ASSERT_FALSE(state.session.stats.problem.empty());
+  state.frame.session = session.status();
+  ASSERT_FALSE(state.frame.session.stats.problem.empty());
   frame();
   EXPECT_NO_THROW(item("Find a nearby one"));
 }
 
 TEST_F(ExplorerUi, ABadMeshIsReportedAndTheOldShapeStays) {
-  state.scene.gridResolution = 48;
+  edit([&](core::Scene& scene) { scene.gridResolution = 48; });
   app::ExplorerSession session(1);
-  session.postIfPatternChanged(state.scene);
+  session.postIfPatternChanged(state.document.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   TemporaryFolder folder;
   const auto bad = folder.path() / "bad.obj";
   std::ofstream(bad) << "this is not a mesh\n";
   ASSERT_TRUE(app::openFile(state, bad));
   frame(2);
-  session.postIfPatternChanged(state.scene);
+  session.postIfPatternChanged(state.document.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   const app::SessionStatus status = session.status();
   EXPECT_NE(status.error.find("bad.obj"), std::string::npos) << status.error;
   EXPECT_TRUE(status.hasShape) << "the bunny's grid keeps refining";
   // Undo returns to the good mesh and clears the message.
   pressKey('Z', true);
-  session.postIfPatternChanged(state.scene);
+  session.postIfPatternChanged(state.document.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   EXPECT_TRUE(session.status().error.empty()) << session.status().error;
 }
@@ -381,51 +426,53 @@ namespace {
 
 TEST_F(ExplorerUi, TimelineKeysScrubsAndPlaysAnAnimation) {
   // Key the camera at 0 s and, turned, at 2 s; the middle of the timeline is halfway.
-  state.scene.animation.duration = 2.0;
-  state.scene.camera.azimuthDeg = 0.0;
+  edit([&](core::Scene& scene) { scene.animation.duration = 2.0; });
+  edit([&](core::Scene& scene) { scene.camera.azimuthDeg = 0.0; });
   frame();
   click("timeline/Key");
-  ASSERT_EQ(state.scene.keyframes.size(), 1u);
-  EXPECT_EQ(state.scene.keyframes[0].path, "/camera/azimuth_deg");
+  ASSERT_EQ(state.document.scene.keyframes.size(), 1u);
+  EXPECT_EQ(state.document.scene.keyframes[0].path, "/camera/azimuth_deg");
   const auto& scrubber = item("timeline/time");
   drag(scrubber.minX + 2, scrubber.centerY(), scrubber.maxX - scrubber.minX, 0);
-  EXPECT_NEAR(state.scene.animation.time, 2.0, 1e-9);
-  state.scene.camera.azimuthDeg = 90.0;
+  EXPECT_NEAR(state.document.scene.animation.time, 2.0, 1e-9);
+  edit([&](core::Scene& scene) { scene.camera.azimuthDeg = 90.0; });
   frame();
   click("timeline/Key");
-  ASSERT_EQ(state.scene.keyframes[0].keys.size(), 2u);
+  ASSERT_EQ(state.document.scene.keyframes[0].keys.size(), 2u);
 
   // Scrubbing to the middle shows the interpolated value; the camera is not the pattern.
-  const core::Scene pattern = state.scene;
+  const core::Scene pattern = state.document.scene;
   drag(scrubber.minX + 2, scrubber.centerY(), 0.5f * (scrubber.maxX - scrubber.minX) - 2, 0);
-  EXPECT_GT(state.scene.animation.time, 0.5);
-  EXPECT_LT(state.scene.animation.time, 1.5);
-  EXPECT_GT(state.scene.camera.azimuthDeg, 10.0);
-  EXPECT_LT(state.scene.camera.azimuthDeg, 80.0);
-  EXPECT_FALSE(core::diff(pattern, state.scene).pattern());
+  EXPECT_GT(state.document.scene.animation.time, 0.5);
+  EXPECT_LT(state.document.scene.animation.time, 1.5);
+  EXPECT_GT(state.document.scene.camera.azimuthDeg, 10.0);
+  EXPECT_LT(state.document.scene.camera.azimuthDeg, 80.0);
+  EXPECT_FALSE(core::diff(pattern, state.document.scene).pattern());
 
   // Play moves time forward frame by frame and the camera with it.
-  const double time = state.scene.animation.time, azimuth = state.scene.camera.azimuthDeg;
+  const double time = state.document.scene.animation.time, azimuth = state.document.scene.camera.azimuthDeg;
   click("timeline/Play");
   frame(10);
-  EXPECT_GT(state.scene.animation.time, time);
-  EXPECT_GT(state.scene.camera.azimuthDeg, azimuth);
+  EXPECT_GT(state.document.scene.animation.time, time);
+  EXPECT_GT(state.document.scene.camera.azimuthDeg, azimuth);
   click("timeline/Pause");
-  EXPECT_FALSE(state.playing);
+  EXPECT_FALSE(state.panels.timeline.playing);
 }
 
 // The Timeline lists its animated values by name with their keys; a value with one key says it
 // holds still; Key says what it keyed; Play stops at the end unless the animation loops.
 TEST_F(ExplorerUi, TheTimelineListsItsTracksAndPlayStopsAtTheEnd) {
-  state.scene.animation.duration = 0.5;
-  state.scene.layers[0].params[0] *= 1.02;
-  state.scene.camera.azimuthDeg += 10.0;
+  edit([&](core::Scene& scene) { scene.animation.duration = 0.5; });
+  edit([&](core::Scene& scene) { scene.layers[0].params[0] *= 1.02; });
+  edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 10.0; });
   frame();
   click("timeline/Key");
-  ASSERT_EQ(state.scene.keyframes.size(), 2u);
-  EXPECT_NE(state.timelineMessage.find("layer 1 a"), std::string::npos) << state.timelineMessage;
-  EXPECT_NE(state.timelineMessage.find("camera azimuth deg"), std::string::npos) << state.timelineMessage;
-  EXPECT_EQ(state.timelineMessage.find("animated values"), std::string::npos);
+  ASSERT_EQ(state.document.scene.keyframes.size(), 2u);
+  EXPECT_NE(state.panels.timeline.timelineMessage.find("layer 1 a"), std::string::npos)
+      << state.panels.timeline.timelineMessage;
+  EXPECT_NE(state.panels.timeline.timelineMessage.find("camera azimuth deg"), std::string::npos)
+      << state.panels.timeline.timelineMessage;
+  EXPECT_EQ(state.panels.timeline.timelineMessage.find("animated values"), std::string::npos);
   item("timeline/track//layers/0/params/a");
   item("timeline/track//camera/azimuth_deg");
   item("timeline/track//camera/azimuth_deg/holds");  // one key: it holds still
@@ -434,11 +481,13 @@ TEST_F(ExplorerUi, TheTimelineListsItsTracksAndPlayStopsAtTheEnd) {
   // A second key at the end, after turning the camera: every animated value gets one there.
   const auto& scrubber = item("timeline/time");
   drag(scrubber.minX + 2, scrubber.centerY(), scrubber.maxX - scrubber.minX, 0);
-  state.scene.camera.azimuthDeg += 30.0;
+  edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 30.0; });
   frame();
   click("timeline/Key");
-  EXPECT_NE(state.timelineMessage.find("camera azimuth deg"), std::string::npos) << state.timelineMessage;
-  EXPECT_NE(state.timelineMessage.find("at 0.50 s"), std::string::npos) << state.timelineMessage;
+  EXPECT_NE(state.panels.timeline.timelineMessage.find("camera azimuth deg"), std::string::npos)
+      << state.panels.timeline.timelineMessage;
+  EXPECT_NE(state.panels.timeline.timelineMessage.find("at 0.50 s"), std::string::npos)
+      << state.panels.timeline.timelineMessage;
   frame();
   EXPECT_EQ(probe.items.count("timeline/track//camera/azimuth_deg/holds"), 0u) << "two keys: it moves";
 
@@ -448,46 +497,47 @@ TEST_F(ExplorerUi, TheTimelineListsItsTracksAndPlayStopsAtTheEnd) {
   EXPECT_EQ(probe.items.count("tone/gamma/keyed"), 0u);
 
   // Play runs to the end and stops there with the loop off.
-  state.scene.animation.loop = false;
+  edit([&](core::Scene& scene) { scene.animation.loop = false; });
   click("timeline/Play");  // at the end: starts over
-  EXPECT_LT(state.scene.animation.time, 0.1);
-  for (int i = 0; i < 120 && state.playing; ++i) frame();
-  EXPECT_FALSE(state.playing) << "played on past the end with the loop off";
-  EXPECT_DOUBLE_EQ(state.scene.animation.time, 0.5);
+  EXPECT_LT(state.document.scene.animation.time, 0.1);
+  for (int i = 0; i < 120 && state.panels.timeline.playing; ++i) frame();
+  EXPECT_FALSE(state.panels.timeline.playing) << "played on past the end with the loop off";
+  EXPECT_DOUBLE_EQ(state.document.scene.animation.time, 0.5);
   // With the loop on it goes round.
-  state.scene.animation.loop = true;
+  edit([&](core::Scene& scene) { scene.animation.loop = true; });
   click("timeline/Play");
   for (int i = 0; i < 60; ++i) frame();
-  EXPECT_TRUE(state.playing);
+  EXPECT_TRUE(state.panels.timeline.playing);
   click("timeline/Pause");
 }
 
 TEST_F(ExplorerUi, KeyingAParameterAnimatesThePattern) {
-  state.scene.animation.duration = 1.0;
-  const double start = state.scene.layers[0].params[0];
-  state.scene.animation.time = 1.0;
-  state.scene.layers[0].params[0] = start * 1.05;
+  edit([&](core::Scene& scene) { scene.animation.duration = 1.0; });
+  const double start = state.document.scene.layers[0].params[0];
+  edit([&](core::Scene& scene) { scene.animation.time = 1.0; });
+  edit([&](core::Scene& scene) { scene.layers[0].params[0] = start * 1.05; });
   frame();
   click("timeline/Key");
-  ASSERT_EQ(state.scene.keyframes.size(), 1u);
-  EXPECT_EQ(state.scene.keyframes[0].path, "/layers/0/params/a");
-  const core::Scene patternAtEnd = state.scene;
+  ASSERT_EQ(state.document.scene.keyframes.size(), 1u);
+  EXPECT_EQ(state.document.scene.keyframes[0].path, "/layers/0/params/a");
+  const core::Scene patternAtEnd = state.document.scene;
   const auto& scrubber = item("timeline/time");
   drag(scrubber.minX + 2, scrubber.centerY(), -40, 0);
-  state.scene.layers[0].params[0] = start;
+  edit([&](core::Scene& scene) { scene.layers[0].params[0] = start; });
   frame();
   click("timeline/Key");
-  ASSERT_EQ(state.scene.keyframes[0].keys.size(), 2u);
+  ASSERT_EQ(state.document.scene.keyframes[0].keys.size(), 2u);
   drag(scrubber.minX + 2, scrubber.centerY(), 0.5f * (scrubber.maxX - scrubber.minX) - 2, 0);
-  const double middle = state.scene.layers[0].params[0];
+  const double middle = state.document.scene.layers[0].params[0];
   EXPECT_GT(middle, start);
   EXPECT_LT(middle, start * 1.05);
-  EXPECT_TRUE(core::diff(patternAtEnd, state.scene).pattern()) << "an animated parameter restarts the accumulation";
+  EXPECT_TRUE(core::diff(patternAtEnd, state.document.scene).pattern())
+      << "an animated parameter restarts the accumulation";
   // Deleting the key at the current time needs the time on a key: go to the next one.
   click("timeline/>|");
-  EXPECT_DOUBLE_EQ(state.scene.animation.time, 1.0);
+  EXPECT_DOUBLE_EQ(state.document.scene.animation.time, 1.0);
   click("timeline/Delete key");
-  EXPECT_EQ(state.scene.keyframes[0].keys.size(), 1u);
+  EXPECT_EQ(state.document.scene.keyframes[0].keys.size(), 1u);
 }
 
 }  // namespace
@@ -497,28 +547,28 @@ namespace {
 TEST_F(ExplorerUi, PresetsPanelListsThumbnailsOpensAndSaves) {
   TemporaryFolder user;
   app::PresetLibrary library(test::sourcePath("presets"), user.path());
-  state.presets = &library;
+  state.services.presets = &library;
   for (int i = 0; i < 500 && (library.busy() || !library.entries()); ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   ASSERT_TRUE(library.entries());
   // Stand-in texture names: the panel only passes them to ImGui.
   unsigned name = 1;
   for (const app::PresetEntry& entry : *library.entries())
-    if (entry.thumbnail) state.thumbnailTextures[entry.path] = name++;
+    if (entry.thumbnail) state.frame.thumbnailTextures[entry.path] = name++;
   click("header/Presets");
   // The click's request is read by the window loop in the frame it was made; do what it does.
   clickForRequest("preset/lorenz-heart");
-  ASSERT_TRUE(state.requests.open.has_value());
-  EXPECT_EQ(state.requests.open->filename(), "lorenz-heart.json");
-  ASSERT_TRUE(app::openFile(state, *state.requests.open));
-  EXPECT_EQ(state.scene.layers[0].attractor, "lorenz");
+  ASSERT_TRUE(state.frame.requests.open.has_value());
+  EXPECT_EQ(state.frame.requests.open->filename(), "lorenz-heart.json");
+  ASSERT_TRUE(app::openFile(state, *state.frame.requests.open));
+  EXPECT_EQ(state.document.scene.layers[0].attractor, "lorenz");
 
   // Save as: the name box and the button ask the window loop, which owns the pixels.
-  std::snprintf(state.saveName, sizeof state.saveName, "My heart");
+  std::snprintf(state.panels.scene.saveName, sizeof state.panels.scene.saveName, "My heart");
   frame();
   clickForRequest("preset/Save as");
-  ASSERT_TRUE(state.requests.saveAs.has_value());
-  const auto saved = library.saveAs(state.scene, *state.requests.saveAs, {});
+  ASSERT_TRUE(state.frame.requests.saveAs.has_value());
+  const auto saved = library.saveAs(state.document.scene, *state.frame.requests.saveAs, {});
   EXPECT_TRUE(std::filesystem::exists(saved));
   EXPECT_EQ(core::loadScene(saved).name, "My heart");
 }
@@ -526,32 +576,33 @@ TEST_F(ExplorerUi, PresetsPanelListsThumbnailsOpensAndSaves) {
 TEST_F(ExplorerUi, ExportPanelRendersInAChildWithProgressAndShowsThePath) {
   TemporaryFolder folder;
   app::ExportJob job;
-  state.exportJob = &job;
-  state.executable = VOXFLAME_BINARY;
-  state.scene.gridResolution = 48;
-  state.settings.lastExport.width = 64;
-  state.settings.lastExport.height = 48;
-  state.settings.lastExport.samples = 1;
-  state.settings.lastExport.points = 200'000;
+  state.services.exportJob = &job;
+  state.services.executable = VOXFLAME_BINARY;
+  edit([&](core::Scene& scene) { scene.gridResolution = 48; });
+  state.services.settings.lastExport.width = 64;
+  state.services.settings.lastExport.height = 48;
+  state.services.settings.lastExport.samples = 1;
+  state.services.settings.lastExport.points = 200'000;
   const auto output = folder.path() / "still.png";
-  std::snprintf(state.exportPath, sizeof state.exportPath, "%s", output.string().c_str());
+  std::snprintf(state.panels.scene.exportPath, sizeof state.panels.scene.exportPath, "%s", output.string().c_str());
   click("header/Export");
   // The panel asks; the window loop (app::LiveView) starts the job. Do what it does.
   clickForRequest("export/Export now");
-  ASSERT_TRUE(state.requests.exportStill.has_value());
-  app::startExport(state, job, *state.requests.exportStill);
+  ASSERT_TRUE(state.frame.requests.exportStill.has_value());
+  app::startExport(state, job, *state.frame.requests.exportStill);
   bool sawProgress = false;
-  for (int i = 0; i < 1500 && state.exportStatus.state != app::ExportState::Done &&
-                  state.exportStatus.state != app::ExportState::Failed;
+  for (int i = 0; i < 1500 && state.services.exportStatus.state != app::ExportState::Done &&
+                  state.services.exportStatus.state != app::ExportState::Failed;
        ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
     frame();
-    sawProgress |= state.exportStatus.state == app::ExportState::Running;
+    sawProgress |= state.services.exportStatus.state == app::ExportState::Running;
   }
-  ASSERT_EQ(state.exportStatus.state, app::ExportState::Done) << state.exportStatus.error << state.notice;
+  ASSERT_EQ(state.services.exportStatus.state, app::ExportState::Done)
+      << state.services.exportStatus.error << state.panels.prompts.notice;
   EXPECT_TRUE(sawProgress) << "the panel showed a progress bar while the child ran";
   EXPECT_TRUE(std::filesystem::exists(output));
-  EXPECT_EQ(state.exportStatus.output, output);
+  EXPECT_EQ(state.services.exportStatus.output, output);
 }
 
 // Quitting asks only when changes are unsaved: Save (the window loop saves, then quits), Discard
@@ -563,82 +614,82 @@ TEST_F(ExplorerUi, QuittingWithUnsavedChangesAsksAndEachAnswerDoesWhatItSays) {
     io.KeyCtrl = true;
     io.KeysDown['Q'] = true;
     frame();
-    const bool quit = state.requests.quit;
+    const bool quit = state.frame.requests.quit;
     io.KeysDown['Q'] = false;
     io.KeyCtrl = false;
     frame();
     return quit;
   };
   EXPECT_FALSE(app::hasUnsavedChanges(state)) << "a scene just opened";
-  EXPECT_EQ(app::windowTitle(state), "voxflame — " + state.scene.name);
+  EXPECT_EQ(app::windowTitle(state), "voxflame — " + state.document.scene.name);
   EXPECT_TRUE(ctrlQ()) << "nothing unsaved: Ctrl+Q quits at once";
-  EXPECT_FALSE(state.quitPrompt);
+  EXPECT_FALSE(state.panels.prompts.quitPrompt);
 
-  state.scene.tone.gamma = 3.0;
+  edit([&](core::Scene& scene) { scene.tone.gamma = 3.0; });
   frame();
   EXPECT_TRUE(app::hasUnsavedChanges(state));
-  EXPECT_EQ(app::windowTitle(state), "voxflame — " + state.scene.name + " (unsaved)");
+  EXPECT_EQ(app::windowTitle(state), "voxflame — " + state.document.scene.name + " (unsaved)");
   EXPECT_FALSE(ctrlQ()) << "unsaved changes: Ctrl+Q asks first";
-  EXPECT_TRUE(state.quitPrompt);
+  EXPECT_TRUE(state.panels.prompts.quitPrompt);
   frame();
   click("quit/Cancel");
-  EXPECT_FALSE(state.quitPrompt);
-  EXPECT_DOUBLE_EQ(state.scene.tone.gamma, 3.0) << "Cancel keeps the changes";
+  EXPECT_FALSE(state.panels.prompts.quitPrompt);
+  EXPECT_DOUBLE_EQ(state.document.scene.tone.gamma, 3.0) << "Cancel keeps the changes";
 
   ctrlQ();
   frame();
   clickForRequest("quit/Discard");
-  EXPECT_TRUE(state.requests.quit) << "Discard quits";
-  EXPECT_FALSE(state.requests.saveAs);
+  EXPECT_TRUE(state.frame.requests.quit) << "Discard quits";
+  EXPECT_FALSE(state.frame.requests.saveAs);
 
-  state.quitPrompt = false;
+  state.panels.prompts.quitPrompt = false;
   frame();
   ctrlQ();
   frame();
   clickForRequest("quit/Save");
-  ASSERT_TRUE(state.requests.saveAs) << "Save asks the window loop to save";
-  EXPECT_EQ(*state.requests.saveAs, state.scene.name);
-  EXPECT_TRUE(state.requests.saveReplacing) << "the user's preset of the document's name is replaced";
-  EXPECT_TRUE(state.quitAfterSave) << "and to quit once saved";
-  EXPECT_FALSE(state.requests.quit) << "not before";
+  ASSERT_TRUE(state.frame.requests.saveAs) << "Save asks the window loop to save";
+  EXPECT_EQ(*state.frame.requests.saveAs, state.document.scene.name);
+  EXPECT_TRUE(state.frame.requests.saveReplacing) << "the user's preset of the document's name is replaced";
+  EXPECT_TRUE(state.panels.prompts.quitAfterSave) << "and to quit once saved";
+  EXPECT_FALSE(state.frame.requests.quit) << "not before";
 
   // The keyboard answers: Escape stays, D discards.
-  state.quitAfterSave = false;
+  state.panels.prompts.quitAfterSave = false;
   ctrlQ();
   pressKey(256);  // Escape
-  EXPECT_FALSE(state.quitPrompt);
+  EXPECT_FALSE(state.panels.prompts.quitPrompt);
   ctrlQ();
   io.KeysDown['D'] = true;
   frame();
-  EXPECT_TRUE(state.requests.quit) << "D discards";
+  EXPECT_TRUE(state.frame.requests.quit) << "D discards";
   io.KeysDown['D'] = false;
   frame();
-  EXPECT_DOUBLE_EQ(state.scene.camera.target.x, core::defaultScene().camera.target.x)
+  EXPECT_DOUBLE_EQ(state.document.scene.camera.target.x, core::defaultScene().camera.target.x)
       << "keys the prompt answers do not fly the camera";
 }
 
 // The window's title is the document's: an undone change of name takes the title back with it.
 TEST_F(ExplorerUi, CtrlSSavesTheSceneAsThePresetOfItsName) {
-  state.scene.name = "my bunny";
+  edit([&](core::Scene& scene) { scene.name = "my bunny"; });
   ImGuiIO& io = ImGui::GetIO();
   io.KeyCtrl = true;
   io.KeysDown['S'] = true;
   frame();
-  EXPECT_EQ(state.requests.saveAs, std::optional<std::string>("my bunny"));
-  EXPECT_TRUE(state.requests.saveReplacing) << "a save replaces the preset of that name";
+  EXPECT_EQ(state.frame.requests.saveAs, std::optional<std::string>("my bunny"));
+  EXPECT_TRUE(state.frame.requests.saveReplacing) << "a save replaces the preset of that name";
   io.KeysDown['S'] = false;
   io.KeyCtrl = false;
   frame();
-  EXPECT_FALSE(state.requests.saveAs);
+  EXPECT_FALSE(state.frame.requests.saveAs);
 }
 
 TEST_F(ExplorerUi, TheTitleFollowsTheDocumentThroughUndo) {
-  const std::string original = state.scene.name;
-  state.scene.name = "imported flame";
+  const std::string original = state.document.scene.name;
+  edit([&](core::Scene& scene) { scene.name = "imported flame"; });
   frame(3);
   EXPECT_EQ(app::windowTitle(state), "voxflame — imported flame (unsaved)");
   pressKey('Z', true);
-  EXPECT_EQ(state.scene.name, original);
+  EXPECT_EQ(state.document.scene.name, original);
   EXPECT_EQ(app::windowTitle(state), "voxflame — " + original);
 }
 
@@ -647,40 +698,43 @@ TEST_F(ExplorerUi, TheTitleFollowsTheDocumentThroughUndo) {
 TEST_F(ExplorerUi, TheExportFileFollowsTheDocumentAndReplacingOneAsksFirst) {
   TemporaryFolder folder;
   app::ExportJob job;
-  state.exportJob = &job;
-  state.settings.lastExportFolder = folder.path();
+  state.services.exportJob = &job;
+  state.services.settings.lastExportFolder = folder.path();
   click("header/Export");
-  EXPECT_EQ(std::filesystem::path(state.exportPath).filename(), app::sanitizePresetName(state.scene.name) + ".png");
-  state.scene.name = "Night bunny";  // what a save-as does to the document
+  EXPECT_EQ(std::filesystem::path(state.panels.scene.exportPath).filename(),
+            app::sanitizePresetName(state.document.scene.name) + ".png");
+  edit([&](core::Scene& scene) { scene.name = "Night bunny"; });  // what a save-as does to the document
   frame();
-  EXPECT_EQ(std::filesystem::path(state.exportPath).filename(), app::sanitizePresetName("Night bunny") + ".png");
+  EXPECT_EQ(std::filesystem::path(state.panels.scene.exportPath).filename(),
+            app::sanitizePresetName("Night bunny") + ".png");
 
   click("export/view size");
-  ASSERT_GT(state.viewRect.z, 0);
-  EXPECT_EQ(state.settings.lastExport.width, state.viewRect.z);
-  EXPECT_EQ(state.settings.lastExport.height, state.viewRect.w);
+  ASSERT_GT(state.frame.viewRect.z, 0);
+  EXPECT_EQ(state.services.settings.lastExport.width, state.frame.viewRect.z);
+  EXPECT_EQ(state.services.settings.lastExport.height, state.frame.viewRect.w);
 
   {
-    std::ofstream existing(state.exportPath);
+    std::ofstream existing(state.panels.scene.exportPath);
     existing << "an earlier export";
   }
   clickForRequest("export/Export now");
-  EXPECT_FALSE(state.requests.exportStill) << "an existing file is replaced without asking";
-  ASSERT_TRUE(state.exportToConfirm);
+  EXPECT_FALSE(state.frame.requests.exportStill) << "an existing file is replaced without asking";
+  ASSERT_TRUE(state.panels.scene.exportToConfirm);
   frame();
   clickForRequest("export/Keep it");
-  EXPECT_FALSE(state.requests.exportStill);
-  EXPECT_FALSE(state.exportToConfirm);
+  EXPECT_FALSE(state.frame.requests.exportStill);
+  EXPECT_FALSE(state.panels.scene.exportToConfirm);
   clickForRequest("export/Export now");
   frame();
   clickForRequest("export/Replace it");
-  ASSERT_TRUE(state.requests.exportStill) << "Replace it exports";
-  EXPECT_EQ(state.requests.exportStill->output, std::filesystem::path(state.exportPath));
+  ASSERT_TRUE(state.frame.requests.exportStill) << "Replace it exports";
+  EXPECT_EQ(state.frame.requests.exportStill->output, std::filesystem::path(state.panels.scene.exportPath));
 
-  std::snprintf(state.exportPath, sizeof state.exportPath, "%s", (folder / "mine.png").c_str());
-  state.scene.name = "Renamed again";
+  std::snprintf(state.panels.scene.exportPath, sizeof state.panels.scene.exportPath, "%s",
+                (folder / "mine.png").c_str());
+  edit([&](core::Scene& scene) { scene.name = "Renamed again"; });
   frame();
-  EXPECT_EQ(std::filesystem::path(state.exportPath).filename(), "mine.png") << "a typed name stays";
+  EXPECT_EQ(std::filesystem::path(state.panels.scene.exportPath).filename(), "mine.png") << "a typed name stays";
 }
 
 // Wide-range values move on a logarithmic scale: the middle of the brightness slider is the
@@ -694,7 +748,7 @@ TEST_F(ExplorerUi, WideRangeSlidersAreLogarithmicAndEverySliderResetsToItsDefaul
     frame();
     io.MouseDown[0] = false;
     frame(2);
-    return state.scene.tone.brightness;
+    return state.document.scene.tone.brightness;
   };
   // Equal steps of the pointer multiply the value by equal factors.
   const double first = clickAt(brightness.minX + 30), second = clickAt(brightness.minX + 60),
@@ -702,7 +756,7 @@ TEST_F(ExplorerUi, WideRangeSlidersAreLogarithmicAndEverySliderResetsToItsDefaul
   ASSERT_GT(first, 0.0);
   EXPECT_NEAR(std::log(second / first), std::log(third / second), 0.15) << first << " " << second << " " << third;
   EXPECT_GT(third - second, 1.5 * (second - first)) << "equal steps, not equal factors";
-  state.scene.tone.gamma = 3.7;
+  edit([&](core::Scene& scene) { scene.tone.gamma = 3.7; });
   frame();
   const auto& gamma = item("tone/gamma");
   moveTo(gamma.centerX(), gamma.centerY());
@@ -711,7 +765,8 @@ TEST_F(ExplorerUi, WideRangeSlidersAreLogarithmicAndEverySliderResetsToItsDefaul
   io.MouseDown[1] = false;
   frame(2);
   click("tone/gamma/reset");
-  EXPECT_DOUBLE_EQ(state.scene.tone.gamma, core::ToneMapSettings{}.gamma) << "the Render panel's sliders reset too";
+  EXPECT_DOUBLE_EQ(state.document.scene.tone.gamma, core::ToneMapSettings{}.gamma)
+      << "the Render panel's sliders reset too";
 }
 
 // Typing words of a name into the attractor filter and pressing Enter picks the first match.
@@ -721,11 +776,12 @@ TEST_F(ExplorerUi, TheAttractorFilterPicksItsFirstMatchOnEnter) {
   click("attractor/filter");
   for (const char c : std::string("sprott quadratic")) io.AddInputCharacter(static_cast<unsigned>(c));
   frame(2);
-  EXPECT_STREQ(state.attractorFilter, "sprott quadratic");
+  EXPECT_STREQ(state.panels.pattern.attractorFilter, "sprott quadratic");
   pressKey(257);
   frame(2);
-  EXPECT_EQ(state.scene.layers[0].attractor, "sprott_quadratic") << "every word matches, in the id or the name";
-  EXPECT_STREQ(state.attractorFilter, "") << "the filter clears once it has picked";
+  EXPECT_EQ(state.document.scene.layers[0].attractor, "sprott_quadratic")
+      << "every word matches, in the id or the name";
+  EXPECT_STREQ(state.panels.pattern.attractorFilter, "") << "the filter clears once it has picked";
 }
 
 // A flame file with several flames asks which one to import, by name, instead of taking the
@@ -733,19 +789,19 @@ TEST_F(ExplorerUi, TheAttractorFilterPicksItsFirstMatchOnEnter) {
 TEST_F(ExplorerUi, OpeningAFileOfSeveralFlamesAsksWhichOne) {
   const std::filesystem::path file = std::filesystem::path(VOXFLAME_TEST_FLAMES) /
                                      "earthbound19__electric_sheep_genomes__electricsheep.242.01930.flam3";
-  const core::Scene before = state.scene;
-  ASSERT_TRUE(app::openFile(state, file)) << state.notice;
-  ASSERT_TRUE(state.flameChoice);
-  ASSERT_EQ(state.flameChoice->names.size(), 2u);
-  EXPECT_EQ(state.scene, before) << "nothing is imported before the choice";
+  const core::Scene before = state.document.scene;
+  ASSERT_TRUE(app::openFile(state, file)) << state.panels.prompts.notice;
+  ASSERT_TRUE(state.panels.prompts.flameChoice);
+  ASSERT_EQ(state.panels.prompts.flameChoice->names.size(), 2u);
+  EXPECT_EQ(state.document.scene, before) << "nothing is imported before the choice";
   frame(2);
-  click("flame/" + state.flameChoice->names[1]);
-  EXPECT_FALSE(state.flameChoice);
-  EXPECT_EQ(state.scene.layers[0].kind, core::PatternKind::Flame);
-  EXPECT_EQ(state.scene.name, "electricsheep.242.01826") << "the second flame, as chosen";
+  click("flame/" + state.panels.prompts.flameChoice->names[1]);
+  EXPECT_FALSE(state.panels.prompts.flameChoice);
+  EXPECT_EQ(state.document.scene.layers[0].kind, core::PatternKind::Flame);
+  EXPECT_EQ(state.document.scene.name, "electricsheep.242.01826") << "the second flame, as chosen";
   // Its 256-colour palette shows as one strip, its stops behind "edit the 256 stops".
   frame(2);
-  ASSERT_GT(state.scene.layers[0].color.gradient.size(), 16u);
+  ASSERT_GT(state.document.scene.layers[0].color.gradient.size(), 16u);
   std::size_t stripsWithHiddenStops = 0, stopRows = 0;
   for (const auto& [name, rect] : probe.items) {
     stripsWithHiddenStops += name.ends_with("edit stops");
@@ -756,10 +812,10 @@ TEST_F(ExplorerUi, OpeningAFileOfSeveralFlamesAsksWhichOne) {
 
   ASSERT_TRUE(app::openFile(state, file));
   frame(2);
-  const core::Scene imported = state.scene;
+  const core::Scene imported = state.document.scene;
   click("flame/Cancel");
-  EXPECT_FALSE(state.flameChoice);
-  EXPECT_EQ(state.scene, imported) << "Cancel imports nothing";
+  EXPECT_FALSE(state.panels.prompts.flameChoice);
+  EXPECT_EQ(state.document.scene, imported) << "Cancel imports nothing";
 }
 
 TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {
@@ -768,44 +824,46 @@ TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {
   lost.name = "lost work";
   lost.layers[0].params[0] = 1.2;
   recoverable.scene = lost;
-  state.recoverable.push_back(recoverable);
+  state.services.recoverable.push_back(recoverable);
   frame(2);
   click("recover/Restore");
-  EXPECT_EQ(state.scene.name, "lost work");
-  EXPECT_DOUBLE_EQ(state.scene.layers[0].params[0], 1.2);
-  EXPECT_TRUE(state.recoverable.empty());
+  EXPECT_EQ(state.document.scene.name, "lost work");
+  EXPECT_DOUBLE_EQ(state.document.scene.layers[0].params[0], 1.2);
+  EXPECT_TRUE(state.services.recoverable.empty());
 }
 
 }  // namespace
 
 TEST_F(ExplorerUi, DensityEstimationAndStillMethodAreLookOnlyAndTheFitRestartsThePattern) {
-  const core::Scene keyBefore = state.scene;
+  const core::Scene keyBefore = state.document.scene;
   double radius = 0.0;
   const auto& slider = item("tone/estimator radius");
-  drag(slider.centerX(), slider.centerY(), -60.0f, 0.0f, 0, [&] { radius = state.scene.tone.estimatorRadius; });
-  EXPECT_LT(state.scene.tone.estimatorRadius, radius);
+  drag(slider.centerX(), slider.centerY(), -60.0f, 0.0f, 0,
+       [&] { radius = state.document.scene.tone.estimatorRadius; });
+  EXPECT_LT(state.document.scene.tone.estimatorRadius, radius);
   EXPECT_NO_THROW(item("render/method"));
   EXPECT_NO_THROW(item("layer0/fit"));
-  state.scene.render.method = core::RenderMethod::Points;
+  edit([&](core::Scene& scene) { scene.render.method = core::RenderMethod::Points; });
   frame();
   EXPECT_NO_THROW(item("render/lens aperture")) << "the points method's depth of field shows with it";
-  EXPECT_FALSE(core::diff(keyBefore, state.scene).pattern()) << "tone and still method never restart accumulation";
-  state.scene.layers[0].transform.fit = core::FitMode::Cover;
-  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern()) << "a new fit moves the points";
+  EXPECT_FALSE(core::diff(keyBefore, state.document.scene).pattern())
+      << "tone and still method never restart accumulation";
+  edit([&](core::Scene& scene) { scene.layers[0].transform.fit = core::FitMode::Cover; });
+  EXPECT_TRUE(core::diff(keyBefore, state.document.scene).pattern()) << "a new fit moves the points";
 }
 
 TEST_F(ExplorerUi, CopiesOfALayerAreAddedTurnedAndRemoved) {
-  const core::Scene keyBefore = state.scene;
-  const std::size_t before = state.scene.layers[0].transform.copies.size();
+  const core::Scene keyBefore = state.document.scene;
+  const std::size_t before = state.document.scene.layers[0].transform.copies.size();
   click("layer0/Add copy");
-  ASSERT_EQ(state.scene.layers[0].transform.copies.size(), before + 1);
-  EXPECT_NE(state.scene.layers[0].transform.copies.back(), glm::dvec3(0.0)) << "a new copy is turned";
-  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern()) << "a copy changes the pattern";
+  ASSERT_EQ(state.document.scene.layers[0].transform.copies.size(), before + 1);
+  EXPECT_NE(state.document.scene.layers[0].transform.copies.back(), glm::dvec3(0.0)) << "a new copy is turned";
+  EXPECT_TRUE(core::diff(keyBefore, state.document.scene).pattern()) << "a copy changes the pattern";
   const std::string label = "layer0/copy " + std::to_string(before + 1);
   EXPECT_NO_THROW(item(label));
   click(label + " remove");
-  EXPECT_EQ(state.scene.layers[0].transform.copies.size(), before);
-  EXPECT_FALSE(core::diff(keyBefore, state.scene).pattern());
+  EXPECT_EQ(state.document.scene.layers[0].transform.copies.size(), before);
+  EXPECT_FALSE(core::diff(keyBefore, state.document.scene).pattern());
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -828,9 +886,9 @@ class ExplorerFlameUi : public ExplorerUi {
     app::resetExplorerState(state, scene);
     frame(2);
   }
-  core::FlameGenome& flame() { return state.scene.layers[0].flame; }
+  core::FlameGenome& flame() { return state.document.scene.layers[0].flame; }
   void waitForSearch(std::size_t visited) {
-    for (int i = 0; i < 1500 && state.visited.size() < visited; ++i) {
+    for (int i = 0; i < 1500 && state.panels.explore.visited.size() < visited; ++i) {
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
       frame();
     }
@@ -841,21 +899,37 @@ class ExplorerFlameUi : public ExplorerUi {
   }
 };
 
+// Every edit reports what it affects (Document): the live view posts patterns and restarts its
+// samples on those reports alone, so a widget that edits without reporting would leave the
+// picture stale. Each widget of the panels is dragged once with every frame checking the reports.
+TEST_F(ExplorerUi, EveryWidgetOfThePanelsReportsWhatItsEditAffects) {
+  const std::vector<std::string> skip = {"layer0/Remove layer"};
+  const int changed = dragEveryWidget({"layer0/", "tone/", "render/", "camera/", "mesh/", "timeline/"}, skip);
+  EXPECT_GE(changed, 20) << "the sweep must reach the panels' sliders";
+}
+
+TEST_F(ExplorerFlameUi, EveryWidgetOfTheFlameEditorReportsWhatItsEditAffects) {
+  useFlameLayer();
+  click("layer0/Xaos");
+  const int changed = dragEveryWidget({"layer0/"}, {"layer0/Remove layer", "layer0/pattern"});
+  EXPECT_GE(changed, 15) << "the sweep must reach the transform editor";
+}
+
 TEST_F(ExplorerFlameUi, SwitchingALayerToFlameStartsFromTheDefaultFlame) {
-  const core::Scene keyBefore = state.scene;
+  const core::Scene keyBefore = state.document.scene;
   click("layer0/pattern");
   click("layer0/pattern/flame");
-  ASSERT_EQ(state.scene.layers[0].kind, core::PatternKind::Flame);
+  ASSERT_EQ(state.document.scene.layers[0].kind, core::PatternKind::Flame);
   EXPECT_EQ(flame(), core::defaultFlame());
-  EXPECT_EQ(state.scene.layers[0].color.mode, core::ColorMode::Index) << "a flame colours by flam3's index";
-  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern());
+  EXPECT_EQ(state.document.scene.layers[0].color.mode, core::ColorMode::Index) << "a flame colours by flam3's index";
+  EXPECT_TRUE(core::diff(keyBefore, state.document.scene).pattern());
   frame();
   EXPECT_NO_THROW(item("layer0/xform/transform weight"));
   EXPECT_NO_THROW(item("layer0/xform/rotate"));
-  EXPECT_NE(state.lyapunovText.find("flame"), std::string::npos) << "the status line names the kind";
+  EXPECT_NE(state.panels.explore.lyapunovText.find("flame"), std::string::npos) << "the status line names the kind";
   pressKey('Z', true);
-  EXPECT_EQ(state.scene.layers[0].kind, core::PatternKind::Attractor) << "switching is one undo step";
-  EXPECT_FALSE(state.scene.layers[0].params.empty());
+  EXPECT_EQ(state.document.scene.layers[0].kind, core::PatternKind::Attractor) << "switching is one undo step";
+  EXPECT_FALSE(state.document.scene.layers[0].params.empty());
 }
 
 TEST_F(ExplorerFlameUi, TransformsAreAddedDuplicatedAndRemoved) {
@@ -893,13 +967,13 @@ TEST_F(ExplorerFlameUi, DraggingATransformWeightIsOneUndoStep) {
   useFlameLayer();
   click("layer0/xform 2");
   const core::FlameGenome before = flame();
-  const core::Scene keyBefore = state.scene;
+  const core::Scene keyBefore = state.document.scene;
   const auto slider = item("layer0/xform/transform weight");
   double pressedAt = 0.0;
   drag(slider.minX + 4, slider.centerY(), 80, 0, 0, [&] { pressedAt = flame().xforms[1].weight; });
   EXPECT_GT(flame().xforms[1].weight, pressedAt);
   EXPECT_EQ(flame().xforms[0], before.xforms[0]) << "only the selected transform moves";
-  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern()) << "a genome edit restarts the accumulation";
+  EXPECT_TRUE(core::diff(keyBefore, state.document.scene).pattern()) << "a genome edit restarts the accumulation";
   pressKey('Z', true);
   EXPECT_EQ(flame(), before) << "the whole drag is one undo step";
 }
@@ -913,7 +987,7 @@ TEST_F(ExplorerFlameUi, DraggingAnXaosMatrixCellSetsThatPairAndIsOneUndoStep) {
   ASSERT_FALSE(core::hasXaos(flame()));
   click("layer0/Xaos");
   const core::FlameGenome before = flame();
-  const std::size_t stepsBefore = state.history->size();
+  const std::size_t stepsBefore = state.document.history->size();
   const auto cell = item("layer0/xaos 2 to 3");
   drag(cell.centerX(), cell.centerY(), 40, 0);
   ASSERT_EQ(flame().xforms[1].xaos.size(), 3u);
@@ -924,7 +998,7 @@ TEST_F(ExplorerFlameUi, DraggingAnXaosMatrixCellSetsThatPairAndIsOneUndoStep) {
   EXPECT_TRUE(flame().xforms[0].xaos.empty()) << "other rows are untouched";
   EXPECT_TRUE(flame().xforms[2].xaos.empty());
   EXPECT_NO_THROW(core::validateFlame(flame(), "xaos edited"));
-  EXPECT_EQ(state.history->size(), stepsBefore + 1) << "the whole drag is one undo step";
+  EXPECT_EQ(state.document.history->size(), stepsBefore + 1) << "the whole drag is one undo step";
   const core::FlameGenome dragged = flame();
 
   pressKey('Z', true);
@@ -952,7 +1026,7 @@ TEST_F(ExplorerFlameUi, DraggingAnXaosMatrixCellSetsThatPairAndIsOneUndoStep) {
 // shows its columns a page at a time, and a cell of a later page edits its own column.
 TEST_F(ExplorerFlameUi, AWideFlamesXaosMatrixPagesItsColumns) {
   useFlameLayer();
-  core::Scene scene = state.scene;
+  core::Scene scene = state.document.scene;
   scene.layers[0].flame.xforms.resize(40, scene.layers[0].flame.xforms[0]);
   app::resetExplorerState(state, scene);
   frame(2);
@@ -974,14 +1048,14 @@ TEST_F(ExplorerFlameUi, AWideFlamesXaosMatrixPagesItsColumns) {
 
 TEST_F(ExplorerFlameUi, TheRotateHandleTurnsTheMapAndBumpsTheGeneration) {
   useFlameLayer();
-  state.scene.gridResolution = 48;
+  edit([&](core::Scene& scene) { scene.gridResolution = 48; });
   app::ExplorerSession session(1);
-  ASSERT_TRUE(session.postIfPatternChanged(state.scene));
+  ASSERT_TRUE(session.postIfPatternChanged(state.document.scene));
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   ASSERT_TRUE(session.status().error.empty()) << session.status().error;
   const auto generation = session.status().stats.generation;
   frame();
-  state.history->record(state.scene);
+  state.document.history->record(state.document.scene);
 
   const core::Affine3 before = flame().xforms[0].affine;
   const auto handle = item("layer0/xform/rotate");
@@ -997,9 +1071,9 @@ TEST_F(ExplorerFlameUi, TheRotateHandleTurnsTheMapAndBumpsTheGeneration) {
   EXPECT_EQ(after.m[11], before.m[11]) << "the offset stays";
   // The handle is relative: back at +0° after the drag, it says what the drag turned.
   EXPECT_NO_THROW(item("layer0/xform/turned")) << "a line says what the drag turned";
-  EXPECT_GT(state.turnedAngles[0], 0.0);
-  EXPECT_EQ(state.rotateAngles[0], 0.0);
-  ASSERT_TRUE(session.postIfPatternChanged(state.scene));
+  EXPECT_GT(state.panels.pattern.turnedAngles[0], 0.0);
+  EXPECT_EQ(state.panels.pattern.rotateAngles[0], 0.0);
+  ASSERT_TRUE(session.postIfPatternChanged(state.document.scene));
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   EXPECT_EQ(session.status().stats.generation, generation + 1);
   EXPECT_TRUE(session.status().error.empty()) << session.status().error;
@@ -1059,17 +1133,17 @@ TEST_F(ExplorerFlameUi, SearchAndMutateOnAFlameKeepTheKindAndBackRestoresTheGeno
   const core::FlameGenome start = flame();
   click("Search (F3)");
   waitForSearch(2);
-  ASSERT_EQ(state.visited.size(), 2u) << state.searchMessage;
-  ASSERT_EQ(state.scene.layers[0].kind, core::PatternKind::Flame);
+  ASSERT_EQ(state.panels.explore.visited.size(), 2u) << state.panels.explore.searchMessage;
+  ASSERT_EQ(state.document.scene.layers[0].kind, core::PatternKind::Flame);
   const core::FlameGenome found = flame();
   EXPECT_NE(found, start);
   EXPECT_NO_THROW(core::validateFlame(found, "found"));
   EXPECT_TRUE(core::measureFlameFill(found, 1).passes);
-  EXPECT_NE(state.searchMessage.find("fills"), std::string::npos) << state.searchMessage;
+  EXPECT_NE(state.panels.explore.searchMessage.find("fills"), std::string::npos) << state.panels.explore.searchMessage;
 
   click("Mutate");
   waitForSearch(3);
-  ASSERT_EQ(state.visited.size(), 3u) << state.searchMessage;
+  ASSERT_EQ(state.panels.explore.visited.size(), 3u) << state.panels.explore.searchMessage;
   EXPECT_NE(flame(), found);
   EXPECT_NO_THROW(core::validateFlame(flame(), "mutated"));
 
@@ -1084,31 +1158,31 @@ TEST_F(ExplorerFlameUi, SearchAndMutateOnAFlameKeepTheKindAndBackRestoresTheGeno
 TEST_F(ExplorerFlameUi, QuaternionJuliaHasSlidersForItsConstantAndView) {
   click("layer0/pattern");
   click("layer0/pattern/quaternion Julia");
-  ASSERT_EQ(state.scene.layers[0].kind, core::PatternKind::QuaternionJulia);
+  ASSERT_EQ(state.document.scene.layers[0].kind, core::PatternKind::QuaternionJulia);
   frame();
-  const core::QuaternionJuliaSettings before = state.scene.layers[0].julia;
-  const core::Scene keyBefore = state.scene;
+  const core::QuaternionJuliaSettings before = state.document.scene.layers[0].julia;
+  const core::Scene keyBefore = state.document.scene;
   const auto slider = item("layer0/c (j)");
   double pressedAt = 0.0;
-  drag(slider.centerX(), slider.centerY(), 25, 0, 0, [&] { pressedAt = state.scene.layers[0].julia.c.z; });
-  EXPECT_GT(state.scene.layers[0].julia.c.z, pressedAt);
-  EXPECT_EQ(state.scene.layers[0].julia.c.x, before.c.x);
-  EXPECT_TRUE(core::diff(keyBefore, state.scene).pattern());
+  drag(slider.centerX(), slider.centerY(), 25, 0, 0, [&] { pressedAt = state.document.scene.layers[0].julia.c.z; });
+  EXPECT_GT(state.document.scene.layers[0].julia.c.z, pressedAt);
+  EXPECT_EQ(state.document.scene.layers[0].julia.c.x, before.c.x);
+  EXPECT_TRUE(core::diff(keyBefore, state.document.scene).pattern());
   pressKey('Z', true);
-  EXPECT_EQ(state.scene.layers[0].julia, before);
+  EXPECT_EQ(state.document.scene.layers[0].julia, before);
   EXPECT_NO_THROW(item("layer0/turn"));
   EXPECT_THROW(item("layer0/slice w"), std::runtime_error) << "the slice sliders show in slice view only";
-  state.scene.layers[0].julia.view = core::QuaternionView::Slice;
+  edit([&](core::Scene& scene) { scene.layers[0].julia.view = core::QuaternionView::Slice; });
   frame();
   EXPECT_NO_THROW(item("layer0/slice w"));
   EXPECT_NO_THROW(item("layer0/thickness"));
 
   click("Mutate");
   waitForSearch(2);
-  ASSERT_EQ(state.visited.size(), 2u) << state.searchMessage;
-  EXPECT_EQ(state.scene.layers[0].kind, core::PatternKind::QuaternionJulia);
-  EXPECT_NE(state.scene.layers[0].julia.c, before.c);
-  EXPECT_EQ(state.scene.layers[0].julia.view, core::QuaternionView::Slice) << "the search keeps the view";
+  ASSERT_EQ(state.panels.explore.visited.size(), 2u) << state.panels.explore.searchMessage;
+  EXPECT_EQ(state.document.scene.layers[0].kind, core::PatternKind::QuaternionJulia);
+  EXPECT_NE(state.document.scene.layers[0].julia.c, before.c);
+  EXPECT_EQ(state.document.scene.layers[0].julia.view, core::QuaternionView::Slice) << "the search keeps the view";
 }
 
 }  // namespace
@@ -1150,19 +1224,19 @@ bool waitForSession(app::ExplorerSession& session, const std::function<bool(cons
 // stop growing and the process's threads use no CPU while nothing changes. A lower target or a
 // new pattern wakes them.
 TEST_F(ExplorerUi, RefinementStopsAtTheNoiseTargetAndTheWorkersSleep) {
-  state.scene.gridResolution = 64;
+  edit([&](core::Scene& scene) { scene.gridResolution = 64; });
   // Pickover's estimate falls within a few measurements. The default Lorenz-84's (and
   // polynomial_a's) rises for hundreds of millions of points on this small grid before it falls,
   // so with it whether the estimate halves within a minute depended on when it was first measured.
   // One worker on a 64³ grid: Pickover (its sines vectorised) reached the 48³ grid's cap on two
   // cores within a second, a measurement after the first, before the estimate could halve or the
   // target be met twice.
-  core::PatternLayer& layer = state.scene.layers[0];
+  core::PatternLayer& layer = state.document.scene.layers[0];
   layer.attractor = "pickover";
   layer.params = core::attractorOrThrow(layer.attractor).defaultParams();
   app::ExplorerSession session(1);
   session.setRefinement(0.0, false);
-  session.post(state.scene);
+  session.post(state.document.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   // The estimate may rise over its first measurements (an orbit dwelling in one part of the
   // attractor) before it falls: it must come to fall well under the highest it reached.
@@ -1200,10 +1274,10 @@ TEST_F(ExplorerUi, RefinementStopsAtTheNoiseTargetAndTheWorkersSleep) {
 // The default preset, on a small grid and with the explorer's default noise target, comes to rest
 // by itself: the noise target or the grid's cap, whichever is first, and the status line says so.
 TEST_F(ExplorerUi, TheDefaultPresetComesToRest) {
-  state.scene.gridResolution = 48;
+  edit([&](core::Scene& scene) { scene.gridResolution = 48; });
   app::ExplorerSession session(2);
   session.setRefinement(0.01 * app::kDefaultRefineUntilNoisePercent, false);
-  session.post(state.scene);
+  session.post(state.document.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   ASSERT_TRUE(waitForSession(
       session, [](const app::SessionStatus& s) { return s.resting; }, 240.0))
@@ -1233,10 +1307,10 @@ TEST(RestCap, FallsWithTheGridAndTheMeshesThickness) {
 // refinement stops at the grid's cap of points per voxel, adds nothing after, and the threads sleep.
 // "Refine further" then goes on from those points to twice as many, in the same generation.
 TEST_F(ExplorerUi, TheCapEndsAFlowThatNeverReachesItsTargetAndRefineFurtherKeepsItsPoints) {
-  state.scene.gridResolution = 40;
+  edit([&](core::Scene& scene) { scene.gridResolution = 40; });
   app::ExplorerSession session(2);
   session.setRefinement(1e-6, false);
-  session.post(state.scene);
+  session.post(state.document.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   ASSERT_TRUE(waitForSession(
       session, [](const app::SessionStatus& s) { return s.resting; }, 240.0))
@@ -1299,10 +1373,10 @@ TEST(ConvergenceRule, TwoMeasurementsInARowAreNeeded) {
 
 // While an export runs refinement is held (the two would fight over the cores); it resumes after.
 TEST_F(ExplorerUi, RefinementPausesWhileAnExportRuns) {
-  state.scene.gridResolution = 48;
+  edit([&](core::Scene& scene) { scene.gridResolution = 48; });
   app::ExplorerSession session(2);
   session.setRefinement(0.0, true);
-  session.post(state.scene);
+  session.post(state.document.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.paused && s.resting; }));
   const std::uint64_t held = session.status().stats.points;
@@ -1316,10 +1390,10 @@ TEST_F(ExplorerUi, RefinementPausesWhileAnExportRuns) {
 // While the user drags a slider (edits in consecutive frames) the large grid holds: the proxy shows
 // each edit and gets the cores; the grid refines the pattern the user stops on.
 TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
-  state.scene.gridResolution = 128;  // above kProxyAbove: the grid has a proxy
+  edit([&](core::Scene& scene) { scene.gridResolution = 128; });  // above kProxyAbove: the grid has a proxy
   app::ExplorerSession session(2);
   session.setRefinement(0.0, false, true);
-  session.post(state.scene);
+  session.post(state.document.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   // Takes volumes (the proxy's or the large grid's) until one shows post 1; the post it last saw.
   using Take = bool (app::ExplorerSession::*)(core::PackedVolume&, std::uint64_t*);
@@ -1371,10 +1445,10 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
 // While only the view moves (an orbit) even a grid without a proxy holds: the frames get the cores.
 // A pattern edit ends the hold, since that grid is then the only one to show it.
 TEST_F(ExplorerUi, AnOrbitHoldsEvenAGridWithoutAProxyAndAnEditEndsIt) {
-  state.scene.gridResolution = 48;  // no proxy
+  edit([&](core::Scene& scene) { scene.gridResolution = 48; });  // no proxy
   app::ExplorerSession session(2);
   session.setRefinement(0.0, false);
-  session.post(state.scene);
+  session.post(state.document.scene);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.stats.points > 100'000; }));
   session.setRefinement(0.0, false, true, true);
@@ -1385,8 +1459,8 @@ TEST_F(ExplorerUi, AnOrbitHoldsEvenAGridWithoutAProxyAndAnEditEndsIt) {
   EXPECT_EQ(session.status().stats.points, held) << "the grid adds nothing while the view moves";
 
   const std::uint64_t generation = session.status().stats.generation;
-  state.scene.layers[0].params[0] *= 1.01;
-  session.post(state.scene, true);  // an edit in the middle of the orbit
+  edit([&](core::Scene& scene) { scene.layers[0].params[0] *= 1.01; });
+  session.post(state.document.scene, true);  // an edit in the middle of the orbit
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   ASSERT_TRUE(waitForSession(session, [&](const app::SessionStatus& s) {
     return s.stats.generation > generation && s.stats.points > 10'000;
@@ -1395,12 +1469,12 @@ TEST_F(ExplorerUi, AnOrbitHoldsEvenAGridWithoutAProxyAndAnEditEndsIt) {
 
 // The Render panel has the setting; the window loop waits for input only when everything rests.
 TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) {
-  EXPECT_DOUBLE_EQ(state.settings.refineUntilNoisePercent, app::kDefaultRefineUntilNoisePercent);
+  EXPECT_DOUBLE_EQ(state.services.settings.refineUntilNoisePercent, app::kDefaultRefineUntilNoisePercent);
   const auto& slider = item("render/stop_refining_at_noise");
   drag(slider.centerX(), slider.centerY(), -2000.0f, 0.0f);
-  EXPECT_DOUBLE_EQ(state.settings.refineUntilNoisePercent, 0.0) << "the left end is \"never\"";
+  EXPECT_DOUBLE_EQ(state.services.settings.refineUntilNoisePercent, 0.0) << "the left end is \"never\"";
   drag(slider.minX + 2, slider.centerY(), 80.0f, 0.0f);
-  EXPECT_GT(state.settings.refineUntilNoisePercent, 0.0);
+  EXPECT_GT(state.services.settings.refineUntilNoisePercent, 0.0);
 
   app::SessionStatus status;
   status.hasShape = true;
@@ -1412,17 +1486,17 @@ TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) 
   EXPECT_EQ(app::convergenceText(status), "refining: 65 M points, noise 1.2%");
 
   // The Lyapunov analysis of the pattern runs in the background at first: that is not rest.
-  for (int i = 0; i < 600 && (state.analysis.busy() || state.search.busy()); ++i) {
+  for (int i = 0; i < 600 && (state.services.analysis.busy() || state.services.search.busy()); ++i) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
     frame();
   }
-  state.session.resting = false;
+  state.frame.session.resting = false;
   EXPECT_EQ(app::frameWaitSeconds(state, true, 10), 0.0) << "refining: every frame is drawn";
-  state.session.resting = true;
+  state.frame.session.resting = true;
   EXPECT_EQ(app::frameWaitSeconds(state, false, 10), 0.0) << "samples still to march";
   EXPECT_EQ(app::frameWaitSeconds(state, true, 1), 0.0) << "input settles first";
   EXPECT_GT(app::frameWaitSeconds(state, true, 10), 0.0);
-  state.exportStatus.state = app::ExportState::Running;
+  state.services.exportStatus.state = app::ExportState::Running;
   EXPECT_GT(app::frameWaitSeconds(state, false, 0), 0.0) << "an export's frames are throttled";
 }
 
@@ -1430,34 +1504,34 @@ TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) 
 // at the flame's framing (at most 640 wide), again after an edit, and stops when turned off.
 TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerAndFollowsEdits) {
   useFlameLayer();
-  state.scene.flat.width = 80;
-  state.scene.flat.height = 60;
-  state.scene.flat.scale = 20.0;
-  state.scene.flat.quality = 2.0;
-  state.flatView = true;
+  edit([&](core::Scene& scene) { scene.flat.width = 80; });
+  edit([&](core::Scene& scene) { scene.flat.height = 60; });
+  edit([&](core::Scene& scene) { scene.flat.scale = 20.0; });
+  edit([&](core::Scene& scene) { scene.flat.quality = 2.0; });
+  state.panels.flat.on = true;
   const auto waitForImage = [&] {
-    for (int i = 0; i < 1500 && !state.flatImagePending; ++i) {
+    for (int i = 0; i < 1500 && !state.frame.flatImagePending; ++i) {
       std::this_thread::sleep_for(std::chrono::milliseconds(10));
       frame();
     }
   };
   frame();
   waitForImage();
-  ASSERT_TRUE(state.flatImagePending) << state.flatMessage;
-  EXPECT_EQ(state.flatImage.width, 80);
-  EXPECT_EQ(state.flatImage.height, 60);
+  ASSERT_TRUE(state.frame.flatImagePending) << state.panels.flat.message;
+  EXPECT_EQ(state.frame.flatImage.width, 80);
+  EXPECT_EQ(state.frame.flatImage.height, 60);
   EXPECT_EQ(app::frameWaitSeconds(state, true, 10), 0.0) << "the window loop must upload the new image";
-  state.flatImagePending = false;  // as the window loop's upload does
+  state.frame.flatImagePending = false;  // as the window loop's upload does
 
-  state.scene.flat.width = 40;
+  edit([&](core::Scene& scene) { scene.flat.width = 40; });
   frame();
   waitForImage();
-  ASSERT_TRUE(state.flatImagePending) << state.flatMessage;
-  EXPECT_EQ(state.flatImage.width, 40);
+  ASSERT_TRUE(state.frame.flatImagePending) << state.panels.flat.message;
+  EXPECT_EQ(state.frame.flatImage.width, 40);
 
-  state.flatView = false;
+  state.panels.flat.on = false;
   frame();
-  EXPECT_FALSE(state.flatRender.busy());
+  EXPECT_FALSE(state.services.flatRender.busy());
 }
 
 // Issue 28: a drag that passes through an escape. The slider keeps following the mouse (the
@@ -1465,25 +1539,25 @@ TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerAndFollowsEdits) {
 // message naming the value, and the status line and the panel say the same; dragging back brings
 // the pattern back.
 TEST_F(ExplorerUi, ADragThroughAnEscapeKeepsFollowingTheMouseAndComesBack) {
-  state.scene.gridResolution = 48;
+  edit([&](core::Scene& scene) { scene.gridResolution = 48; });
   const core::AttractorInfo& aizawa = core::attractorOrThrow("aizawa");
-  state.scene.layers[0].attractor = aizawa.id;
-  state.scene.layers[0].params = aizawa.defaultParams();
-  state.scene.layers[0].step = aizawa.defaultStep;
-  state.scene.layers[0].integrator = aizawa.defaultIntegrator;
+  edit([&](core::Scene& scene) { scene.layers[0].attractor = aizawa.id; });
+  edit([&](core::Scene& scene) { scene.layers[0].params = aizawa.defaultParams(); });
+  edit([&](core::Scene& scene) { scene.layers[0].step = aizawa.defaultStep; });
+  edit([&](core::Scene& scene) { scene.layers[0].integrator = aizawa.defaultIntegrator; });
   frame(2);
   app::ExplorerSession session(1);
   const auto settle = [&] {
-    session.postIfPatternChanged(state.scene, state.interacting);
+    session.postIfPatternChanged(state.document.scene, state.frame.interacting);
     ASSERT_TRUE(session.waitUntilApplied(60.0));
     // A bounded pattern has points to keep before the drag moves on.
     ASSERT_TRUE(waitForSession(
         session, [](const app::SessionStatus& s) { return !s.escapeNote.empty() || s.stats.points > 0; }));
-    state.session = session.status();
+    state.frame.session = session.status();
     frame();
   };
   settle();
-  ASSERT_TRUE(state.session.escapeNote.empty()) << state.session.escapeNote;
+  ASSERT_TRUE(state.frame.session.escapeNote.empty()) << state.frame.session.escapeNote;
 
   const auto slider = item("layer0/a");
   const float width = slider.maxX - slider.minX;
@@ -1498,12 +1572,12 @@ TEST_F(ExplorerUi, ADragThroughAnEscapeKeepsFollowingTheMouseAndComesBack) {
   const auto step = [&](float fraction) {
     moveTo(slider.minX + fraction * width, slider.centerY());
     settle();
-    values.push_back(state.scene.layers[0].params[0]);
-    if (!state.session.escapeNote.empty()) {
+    values.push_back(state.document.scene.layers[0].params[0]);
+    if (!state.frame.session.escapeNote.empty()) {
       escaped = true;
-      lastBoundedKept = lastBoundedKept || state.session.showingLastBounded;
-      note = state.session.escapeNote;
-      agreed = agreed && app::convergenceText(state.session) == note;
+      lastBoundedKept = lastBoundedKept || state.frame.session.showingLastBounded;
+      note = state.frame.session.escapeNote;
+      agreed = agreed && app::convergenceText(state.frame.session) == note;
     }
   };
   for (float f = 0.35f; f <= 0.96f; f += 0.05f) step(f);
@@ -1521,7 +1595,7 @@ TEST_F(ExplorerUi, ADragThroughAnEscapeKeepsFollowingTheMouseAndComesBack) {
   EXPECT_EQ(note.rfind("escapes at a = ", 0), 0u) << note;
   EXPECT_NE(note.find("showing the last bounded value"), std::string::npos) << note;
   EXPECT_TRUE(agreed) << "the status line says what the notice says";
-  EXPECT_TRUE(state.session.escapeNote.empty()) << "dragged back, the pattern is bounded again";
-  EXPECT_FALSE(state.session.showingLastBounded);
-  EXPECT_TRUE(state.session.stats.problem.empty());
+  EXPECT_TRUE(state.frame.session.escapeNote.empty()) << "dragged back, the pattern is bounded again";
+  EXPECT_FALSE(state.frame.session.showingLastBounded);
+  EXPECT_TRUE(state.frame.session.stats.problem.empty());
 }

@@ -61,10 +61,10 @@ class InputQueueTest : public ::testing::Test {
     io.MousePos = ImVec2(640, 360);
     queue.applyTo(io);
     ImGui::NewFrame();
-    state.requests = {};
+    state.frame.requests = {};
     app::explorerUiFrame(state);
     ImGui::Render();
-    return state.requests.quit;
+    return state.frame.requests.quit;
   }
 
   app::InputQueue queue;

@@ -2,6 +2,7 @@
 // `bench explorer` drive it: a pattern edit reaches the screen tagged with its post, the sample
 // average restarts only for changes a ray sees, and save-as and export requests are answered
 // whether or not a volume is shown.
+#include <functional>
 #include <gtest/gtest.h>
 #include <epoxy/gl.h>
 
@@ -82,14 +83,23 @@ class LiveViewTest : public ::testing::Test {
     scene.tone.background = glm::vec3(0.0f);
     app::resetExplorerState(state, scene);
   }
-  app::LiveFrame frame(app::LiveView& view) { return view.frame(state, kWidth, kHeight, canvas.framebuffer()); }
+  // A change to the scene as the panels make one: reported to the document with what it affects.
+  void edit(const std::function<void(core::Scene&)>& change) {
+    core::Scene changed = state.document.scene;
+    change(changed);
+    state.document.replace(changed);
+  }
+  app::LiveFrame frame(app::LiveView& view) {
+    return app::liveFrame(view, state, kWidth, kHeight, canvas.framebuffer());
+  }
   // Runs a few frames, then on until the picture shown is a whole pass at the full scale (a
   // still view's first pass takes a few frames of bands, and a view change, such as the mesh
   // arriving, shows a lowered-scale picture until then).
   void refineAtFullScale(app::LiveView& view) {
     for (int i = 0; i < 400; ++i) {
       frame(view);
-      if (i >= 6 && state.metrics.marchScale == state.renderScale && state.samples >= 1) return;
+      if (i >= 6 && state.frame.metrics.marchScale == state.panels.scene.renderScale && state.frame.samples >= 1)
+        return;
     }
   }
   // Runs frames until a volume of the newest post is on screen; false after 60 s.
@@ -121,15 +131,15 @@ TEST_F(LiveViewTest, AnEditReachesTheScreenTaggedWithItsPost) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 
   // A parameter edit: posted by the next frame, shown later with the edit-to-frame metrics.
-  state.scene.layers[0].params[0] *= 1.02;
+  edit([&](core::Scene& scene) { scene.layers[0].params[0] *= 1.02; });
   const app::LiveFrame edited = frame(view);
   EXPECT_TRUE(edited.patternPosted);
   ASSERT_TRUE(runUntilShown(view));
-  EXPECT_GE(state.metrics.changeToFrameFrames, 1);
-  EXPECT_GE(state.metrics.changeToFrameMs, 0.0);
+  EXPECT_GE(state.frame.metrics.changeToFrameFrames, 1);
+  EXPECT_GE(state.frame.metrics.changeToFrameMs, 0.0);
 
   // A tone edit is not a pattern edit.
-  state.scene.tone.gamma += 0.3;
+  edit([&](core::Scene& scene) { scene.tone.gamma += 0.3; });
   EXPECT_FALSE(frame(view).patternPosted);
 }
 
@@ -142,9 +152,9 @@ TEST_F(LiveViewTest, LiveFramesReadNothingBack) {
   const std::uint64_t before = gl::readBackCount();
   int drawn = 0;
   for (int i = 0; i < 12; ++i) {
-    if (i == 4) state.scene.render.meshDisplay = core::MeshDisplay::Ghost;
-    if (i == 8) state.scene.render.meshDisplay = core::MeshDisplay::Silhouette;
-    if (i == 10) state.scene.tone.gamma += 0.3;
+    if (i == 4) edit([&](core::Scene& scene) { scene.render.meshDisplay = core::MeshDisplay::Ghost; });
+    if (i == 8) edit([&](core::Scene& scene) { scene.render.meshDisplay = core::MeshDisplay::Silhouette; });
+    if (i == 10) edit([&](core::Scene& scene) { scene.tone.gamma += 0.3; });
     drawn += frame(view).volumeDrawn ? 1 : 0;
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
@@ -161,20 +171,20 @@ TEST_F(LiveViewTest, SamplesRestartForTheCameraButNotForTheTone) {
   // Frames until the still view has added up a few samples: the shadow job landing, a fresh
   // snapshot or the frame budget settling may each restart the average once on the way.
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (state.samples < 3 && std::chrono::steady_clock::now() < deadline) {
+  while (state.frame.samples < 3 && std::chrono::steady_clock::now() < deadline) {
     frame(view);
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
-  const int refined = state.samples;
+  const int refined = state.frame.samples;
   ASSERT_GT(refined, 1);
-  state.scene.tone.gamma += 0.5;
+  edit([&](core::Scene& scene) { scene.tone.gamma += 0.5; });
   frame(view);
   // Either the average went on (a still view refines in bands, so a frame may end no pass), or a
   // fresh snapshot restarted it: never because of the tone.
-  const int afterTone = state.samples;
-  state.scene.camera.azimuthDeg += 20.0;
+  const int afterTone = state.frame.samples;
+  edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 20.0; });
   frame(view);
-  EXPECT_EQ(state.samples, 1) << "a new camera starts the average over";
+  EXPECT_EQ(state.frame.samples, 1) << "a new camera starts the average over";
   EXPECT_TRUE(afterTone >= refined || afterTone <= 1);
 }
 
@@ -183,8 +193,8 @@ TEST_F(LiveViewTest, SaveAsAndExportAreAnsweredBeforeAnyVolumeIsShown) {
   // A mesh that cannot load: no shape, no volume, ever.
   const auto bad = folder.path() / "bad.obj";
   std::ofstream(bad) << "this is not a mesh\n";
-  state.scene.meshPath = bad.string();
-  state.scene.embedded = false;
+  edit([&](core::Scene& scene) { scene.meshPath = bad.string(); });
+  edit([&](core::Scene& scene) { scene.embedded = false; });
   app::PresetLibrary presets(folder.path() / "shipped", folder.path() / "mine");
   app::ExportJob exports;
   app::LiveView view(session, &presets, &exports);
@@ -193,18 +203,19 @@ TEST_F(LiveViewTest, SaveAsAndExportAreAnsweredBeforeAnyVolumeIsShown) {
   frame(view);
   ASSERT_FALSE(view.hasVolume());
 
-  state.requests.saveAs = "Saved while broken";
+  state.frame.requests.saveAs = "Saved while broken";
   const app::LiveFrame saved = frame(view);
   EXPECT_FALSE(saved.volumeDrawn);
-  EXPECT_FALSE(state.requests.saveAs.has_value()) << "the request was served";
-  EXPECT_NE(state.presetMessage.find("saved"), std::string::npos) << state.presetMessage << state.notice;
+  EXPECT_FALSE(state.frame.requests.saveAs.has_value()) << "the request was served";
+  EXPECT_NE(state.panels.scene.presetMessage.find("saved"), std::string::npos)
+      << state.panels.scene.presetMessage << state.panels.prompts.notice;
   int savedPresets = 0;
   for (const auto& entry : std::filesystem::directory_iterator(folder.path() / "mine"))
     if (entry.path().extension() == ".json") {
       ++savedPresets;
       EXPECT_EQ(core::loadScene(entry.path()).name, "Saved while broken");
     }
-  EXPECT_EQ(savedPresets, 1) << state.presetMessage;
+  EXPECT_EQ(savedPresets, 1) << state.panels.scene.presetMessage;
 
   app::ExportRequest request;
   request.scene = core::defaultScene();
@@ -215,15 +226,15 @@ TEST_F(LiveViewTest, SaveAsAndExportAreAnsweredBeforeAnyVolumeIsShown) {
   request.settings.points = 50'000;
   request.output = folder.path() / "still.png";
   request.executable = VOXFLAME_BINARY;
-  state.requests.exportStill = request;
+  state.frame.requests.exportStill = request;
   frame(view);
-  EXPECT_FALSE(state.requests.exportStill.has_value());
-  EXPECT_NE(exports.poll().state, app::ExportState::Idle) << state.notice;
+  EXPECT_FALSE(state.frame.requests.exportStill.has_value());
+  EXPECT_NE(exports.poll().state, app::ExportState::Idle) << state.panels.prompts.notice;
 }
 
 TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBrightness) {
   // A grid large enough to have a proxy; a still view, refined at the full scale.
-  state.scene.gridResolution = 2 * app::ExplorerSession::kProxyAbove;
+  edit([&](core::Scene& scene) { scene.gridResolution = 2 * app::ExplorerSession::kProxyAbove; });
   app::LiveView view(session, nullptr, nullptr);
   frame(view);
   ASSERT_TRUE(session.waitUntilApplied(120.0));
@@ -262,7 +273,7 @@ TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBr
       // Each picture as a user would see it: refined a little at the full scale. The proxy may be
       // replaced before that; its brightness then stays unmeasured.
       const bool refined = framesSinceNewVolume >= 1 && shown.volumeDrawn &&
-                           state.metrics.marchScale == state.renderScale && state.samples >= 1;
+                           state.frame.metrics.marchScale == state.panels.scene.renderScale && state.frame.samples >= 1;
       if (!refined) continue;
       if (shown.fullShown) {
         seen.fullBrightness = canvas.meanBrightness();
@@ -277,8 +288,8 @@ TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBr
     return seen;
   };
   // A new post: the pattern nudged, so the large grid starts over.
-  const auto edit = [&] {
-    state.scene.layers[0].params[0] *= 1.02;
+  const auto nudge = [&] {
+    edit([&](core::Scene& scene) { scene.layers[0].params[0] *= 1.02; });
     return frame(view).patternPosted;
   };
 
@@ -288,7 +299,7 @@ TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBr
   // again. A live view that never showed the proxy first would fail every try.
   Handover first = watch(true);
   for (int retry = 0; retry < 3 && first.fullShown && (!first.proxyFirst || first.proxyBrightness == 0.0); ++retry) {
-    ASSERT_TRUE(edit());
+    ASSERT_TRUE(nudge());
     first = watch(true);
   }
   EXPECT_TRUE(first.proxyFirst) << "the first image after a post comes from the proxy";
@@ -303,7 +314,7 @@ TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBr
   // full grid shows it.
   Handover edited;
   for (int attempt = 0; attempt < 4 && !edited.proxyFirst; ++attempt) {
-    ASSERT_TRUE(edit());
+    ASSERT_TRUE(nudge());
     edited = watch(false);
     ASSERT_TRUE(edited.fullShown) << "the full grid shows the edit";
   }
@@ -313,15 +324,15 @@ TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBr
 // The first edit of a slider drag (the panels say a widget is held) already finds the large grid
 // held: only the proxy runs it, and the large grid gets the pattern the drag ends on.
 TEST_F(LiveViewTest, TheFirstEditOfADragLeavesTheLargeGridHeld) {
-  state.scene.gridResolution = 2 * app::ExplorerSession::kProxyAbove;
+  edit([&](core::Scene& scene) { scene.gridResolution = 2 * app::ExplorerSession::kProxyAbove; });
   app::LiveView view(session, nullptr, nullptr);
   frame(view);
   ASSERT_TRUE(session.waitUntilApplied(120.0));
   ASSERT_TRUE(runUntilShown(view));
   const std::uint64_t generation = session.status().stats.generation;
 
-  state.interacting = true;  // the slider is pressed on this frame and moves at once
-  state.scene.layers[0].params[0] *= 1.02;
+  state.frame.interacting = true;  // the slider is pressed on this frame and moves at once
+  edit([&](core::Scene& scene) { scene.layers[0].params[0] *= 1.02; });
   ASSERT_TRUE(frame(view).patternPosted);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
@@ -338,61 +349,61 @@ TEST_F(LiveViewTest, TheFirstEditOfADragLeavesTheLargeGridHeld) {
 }
 
 TEST_F(LiveViewTest, SlowFramesWhileTheCameraMovesLowerTheMarchScale) {
-  state.renderScale = 1.0f;
-  state.frameBudgetMs = 10.0f;
+  state.panels.scene.renderScale = 1.0f;
+  state.panels.scene.frameBudgetMs = 10.0f;
   app::LiveView view(session, nullptr, nullptr);
   frame(view);
   ASSERT_TRUE(runUntilShown(view));
   for (int i = 0; i < app::FrameBudget::kQuietFrames + 1; ++i) frame(view);
-  EXPECT_EQ(state.metrics.marchScale, 1.0f) << "a still view is marched at the preview scale";
+  EXPECT_EQ(state.frame.metrics.marchScale, 1.0f) << "a still view is marched at the preview scale";
   // An orbit whose frames take far longer than the budget (a slow machine, played by a sleep).
   for (int i = 0; i < 4; ++i) {
-    state.scene.camera.azimuthDeg += 3.0;
+    edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 3.0; });
     frame(view);
     std::this_thread::sleep_for(std::chrono::milliseconds(60));
   }
-  EXPECT_LT(state.metrics.marchScale, 0.5f);
-  EXPECT_GE(state.metrics.marchScale, app::FrameBudget::kDefaultFloor);
+  EXPECT_LT(state.frame.metrics.marchScale, 0.5f);
+  EXPECT_GE(state.frame.metrics.marchScale, app::FrameBudget::kDefaultFloor);
   // Let go: the still view goes back to the preview scale and refines.
   for (int i = 0; i < app::FrameBudget::kQuietFrames + 2; ++i) frame(view);
-  EXPECT_EQ(state.metrics.marchScale, 1.0f);
+  EXPECT_EQ(state.frame.metrics.marchScale, 1.0f);
   // Samples add up there (a fresh snapshot of the volume may restart them once in a while).
-  for (int i = 0; i < 30 && state.samples <= 1; ++i) frame(view);
-  EXPECT_GT(state.samples, 1);
-  EXPECT_EQ(state.metrics.marchScale, 1.0f);
+  for (int i = 0; i < 30 && state.frame.samples <= 1; ++i) frame(view);
+  EXPECT_GT(state.frame.samples, 1);
+  EXPECT_EQ(state.frame.metrics.marchScale, 1.0f);
 }
 
 // Playback is not held to the preview scale (a still view's, half the pixels on software GL):
 // frames within their budget go as sharp as the whole window; an orbit stays under the preview scale.
 TEST_F(LiveViewTest, PlaybackFramesWithinTheirBudgetGoSharperThanThePreviewScale) {
-  state.renderScale = 0.5f;
-  state.frameBudgetMs = 2000.0f;  // every frame of this small picture is well within it
+  state.panels.scene.renderScale = 0.5f;
+  state.panels.scene.frameBudgetMs = 2000.0f;  // every frame of this small picture is well within it
   app::LiveView view(session, nullptr, nullptr);
   frame(view);
   ASSERT_TRUE(runUntilShown(view));
   float orbitScale = 0.0f;
   for (int i = 0; i < 12; ++i) {
-    state.scene.camera.azimuthDeg += 3.0;
+    edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 3.0; });
     frame(view);
-    orbitScale = std::max(orbitScale, state.metrics.marchScale);
+    orbitScale = std::max(orbitScale, state.frame.metrics.marchScale);
   }
   EXPECT_LE(orbitScale, 0.5f) << "changes outside playback stay at or under the preview scale";
-  state.playing = true;
+  state.panels.timeline.playing = true;
   float playScale = 0.0f;
   for (int i = 0; i < 12; ++i) {
-    state.scene.camera.azimuthDeg += 3.0;  // what playing a keyed orbit does each frame
+    edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 3.0; });  // what playing a keyed orbit does each frame
     frame(view);
-    playScale = state.metrics.marchScale;
+    playScale = state.frame.metrics.marchScale;
   }
   EXPECT_EQ(playScale, 1.0f) << "within budget, playback marches every pixel";
   // Over its budget, playback's scale comes down like any change's.
-  state.frameBudgetMs = 5.0f;
+  state.panels.scene.frameBudgetMs = 5.0f;
   for (int i = 0; i < 6; ++i) {
-    state.scene.camera.azimuthDeg += 3.0;
+    edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 3.0; });
     frame(view);
     std::this_thread::sleep_for(std::chrono::milliseconds(40));
   }
-  EXPECT_LT(state.metrics.marchScale, 0.5f);
+  EXPECT_LT(state.frame.metrics.marchScale, 0.5f);
 }
 
 TEST_F(LiveViewTest, ASlowStillViewRefinesInBandsWithinItsBudgetUntilEveryBandHasItsSamples) {
@@ -400,9 +411,9 @@ TEST_F(LiveViewTest, ASlowStillViewRefinesInBandsWithinItsBudgetUntilEveryBandHa
   // a 20 ms budget: a still frame marches a few bands, never the whole target, and the bands
   // still all reach kMaxSamples. The session rests at a noise easily reached, so no new volume
   // restarts the average on the way.
-  state.renderScale = 1.0f;
-  state.frameBudgetMs = 20.0f;
-  state.settings.refineUntilNoisePercent = 40.0;
+  state.panels.scene.renderScale = 1.0f;
+  state.panels.scene.frameBudgetMs = 20.0f;
+  state.services.settings.refineUntilNoisePercent = 40.0;
   app::LiveView view(session, nullptr, nullptr);
   view.addMarchCostForTesting(1.0);
   frame(view);
@@ -418,8 +429,8 @@ TEST_F(LiveViewTest, ASlowStillViewRefinesInBandsWithinItsBudgetUntilEveryBandHa
       passEnds += view.refineBands().samples() > before ? 1 : 0;
     }
   }
-  ASSERT_TRUE(view.resting()) << "the picture did not converge: " << state.samples << " samples";
-  EXPECT_EQ(state.samples, app::LiveView::kMaxSamples);
+  ASSERT_TRUE(view.resting()) << "the picture did not converge: " << state.frame.samples << " samples";
+  EXPECT_EQ(state.frame.samples, app::LiveView::kMaxSamples);
   EXPECT_EQ(view.refineBands().samples(), app::LiveView::kMaxSamples);
   for (int row = 0; row < view.targetRows(); row += app::RefineBands::kBandRows)
     EXPECT_EQ(view.refineBands().samplesOfRow(row), app::LiveView::kMaxSamples) << "row " << row;
@@ -439,9 +450,9 @@ TEST_F(LiveViewTest, FresherVolumesComingFasterThanAPassStillGetShown) {
   // A march of 12 ms a row: a pass over the 96 rows takes longer than the session's 500 ms between
   // snapshots of the refining grid. Each fresher volume lets the pass under way finish (and be
   // shown) before the samples start over, so the picture keeps up with the grid.
-  state.renderScale = 1.0f;
-  state.frameBudgetMs = 20.0f;
-  state.settings.refineUntilNoisePercent = 0.0;  // refine on: a fresh volume every snapshot
+  state.panels.scene.renderScale = 1.0f;
+  state.panels.scene.frameBudgetMs = 20.0f;
+  state.services.settings.refineUntilNoisePercent = 0.0;  // refine on: a fresh volume every snapshot
   app::LiveView view(session, nullptr, nullptr);
   view.addMarchCostForTesting(12.0);
   frame(view);
@@ -484,15 +495,15 @@ double intersectionOverUnion(const std::vector<bool>& a, const std::vector<bool>
 // at the view's size its lit area is the view's, and a wider picture is what the thin frame in
 // the view holds (the view widens its field so the whole picture shows within it).
 TEST_F(LiveViewTest, AnExportFramesWhatTheViewShows) {
-  state.scene.camera.distance *= 0.8;  // what the wheel does
-  state.scene.camera.target = glm::dvec3(0.08, -0.05, 0.0);
-  state.viewRect = glm::ivec4(24, 12, 112, 72);  // the space the docked panels leave
-  const glm::ivec4 rect = state.viewRect;
+  edit([&](core::Scene& scene) { scene.camera.distance *= 0.8; });  // what the wheel does
+  edit([&](core::Scene& scene) { scene.camera.target = glm::dvec3(0.08, -0.05, 0.0); });
+  state.frame.viewRect = glm::ivec4(24, 12, 112, 72);  // the space the docked panels leave
+  const glm::ivec4 rect = state.frame.viewRect;
   app::LiveView view(session, nullptr, nullptr);
   // The view's refined picture for an export of width × height, as lit pixels (rows top down).
   auto viewLit = [&](int width, int height) {
-    state.settings.lastExport.width = width;
-    state.settings.lastExport.height = height;
+    state.services.settings.lastExport.width = width;
+    state.services.settings.lastExport.height = height;
     for (int i = 0; i < 3; ++i) frame(view);
     refineAtFullScale(view);
     for (int i = 0; i < 60; ++i) frame(view);
@@ -505,7 +516,7 @@ TEST_F(LiveViewTest, AnExportFramesWhatTheViewShows) {
     options.width = width;
     options.height = height;
     options.points = 4'000'000;
-    const core::ImageRGBA image = app::renderStill(state.scene, options).image;
+    const core::ImageRGBA image = app::renderStill(state.document.scene, options).image;
     std::vector<bool> lit(static_cast<std::size_t>(columns) * rows);
     for (int y = 0; y < rows; ++y)
       for (int x = 0; x < columns; ++x) {

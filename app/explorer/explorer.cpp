@@ -91,24 +91,24 @@ unsigned uploadThumbnail(const Thumbnail& thumbnail) {
 
 // The flat view's newest image into its texture (made on first use, replaced in place after).
 void uploadFlatView(ExplorerState& state) {
-  state.flatImagePending = false;
-  const core::ImageRGBA& image = state.flatImage;
+  state.frame.flatImagePending = false;
+  const core::ImageRGBA& image = state.frame.flatImage;
   if (image.width <= 0 || image.height <= 0) return;
   std::vector<std::uint8_t> rgba(image.pixels.size());
   for (std::size_t i = 0; i < rgba.size(); ++i)
     rgba[i] = static_cast<std::uint8_t>(std::lround(255.0f * std::clamp(image.pixels[i], 0.0f, 1.0f)));
-  if (!state.flatTexture) {
+  if (!state.frame.flatTexture) {
     GLuint texture = 0;
     glGenTextures(1, &texture);
-    state.flatTexture = texture;
+    state.frame.flatTexture = texture;
   }
-  glBindTexture(GL_TEXTURE_2D, state.flatTexture);
+  glBindTexture(GL_TEXTURE_2D, state.frame.flatTexture);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
   glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, image.width, image.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
-  state.flatTextureWidth = image.width;
-  state.flatTextureHeight = image.height;
+  state.frame.flatTextureWidth = image.width;
+  state.frame.flatTextureHeight = image.height;
 }
 
 static_assert(kKeyEscape == GLFW_KEY_ESCAPE && kKeyEnter == GLFW_KEY_ENTER && kKeyBackspace == GLFW_KEY_BACKSPACE &&
@@ -220,9 +220,9 @@ RestSignature restSignature(const ExplorerSession& session, const ExplorerState&
   signature.requested = status.requestedGeneration;
   signature.applied = status.appliedGeneration;
   signature.error = status.error;
-  signature.searchBusy = state.search.busy();
-  signature.analysisBusy = state.analysis.busy();
-  signature.exportState = state.exportStatus.state;
+  signature.searchBusy = state.services.search.busy();
+  signature.analysisBusy = state.services.analysis.busy();
+  signature.exportState = state.services.exportStatus.state;
   signature.presetsVersion = presets.version();
   glfwGetFramebufferSize(window, &signature.width, &signature.height);
   return signature;
@@ -261,24 +261,24 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   ImGui_ImplOpenGL3_Init("#version 430");
 
   ExplorerState state;
-  state.uiScale = uiScaleFor(window, options.uiScale);
-  applyUiScale(state.uiScale);
+  state.panels.uiScale = uiScaleFor(window, options.uiScale);
+  applyUiScale(state.panels.uiScale);
   resetExplorerState(state, initialScene);
-  state.settings = settingsLoad.settings;
-  state.notice = settingsLoad.message;
+  state.services.settings = settingsLoad.settings;
+  state.panels.prompts.notice = settingsLoad.message;
   // Scripted runs (screenshots, tests) neither offer nor leave autosaves.
   const bool scripted = options.frames > 0;
-  if (!scripted) state.recoverable = findRecoverable();
+  if (!scripted) state.services.recoverable = findRecoverable();
   // Software GL (llvmpipe) marches a quarter of the pixels to stay interactive; samples then
   // refine the image while nothing changes.
   const std::string glRenderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   if (glRenderer.find("llvmpipe") != std::string::npos || glRenderer.find("softpipe") != std::string::npos)
-    state.renderScale = 0.5f;
+    state.panels.scene.renderScale = 0.5f;
   std::ofstream inputLog;
   if (!options.inputLog.empty()) {
     inputLog.open(options.inputLog, std::ios::app);
     if (!inputLog) throw core::Error("cannot write the input log " + options.inputLog.string());
-    state.recordTyping = true;
+    state.frame.recordTyping = true;
   }
   WindowInput input;
   glfwSetWindowUserPointer(window, &input);
@@ -287,13 +287,14 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   const QuitSignals quitSignals;
   {
     ExplorerSession session;
-    PresetLibrary presets(findShippedPresetFolder(), state.settings.presetFolder());
-    state.presets = &presets;
+    PresetLibrary presets(findShippedPresetFolder(), state.services.settings.presetFolder());
+    state.services.presets = &presets;
     std::uint64_t thumbnailsVersion = 0;
     ExportJob exportJob;
-    state.exportJob = &exportJob;
+    state.services.exportJob = &exportJob;
     std::optional<Autosave> autosave;
     if (!scripted) autosave.emplace();
+    std::optional<std::uint64_t> autosavedRevision;  // the edit count autosave last looked at
     LiveView view(session, &presets, &exportJob);
     std::uint32_t frame = 0;
     int framesWithVolume = 0;
@@ -320,13 +321,13 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       // The close button quits at once with nothing unsaved, else asks (drawn on this frame).
       const bool closeAsked = std::exchange(input.closeAsked, false);
       if (closeAsked && !hasUnsavedChanges(state)) break;
-      if (closeAsked) state.quitPrompt = true;
+      if (closeAsked) state.panels.prompts.quitPrompt = true;
       if (iconified) {
         glfwWaitEventsTimeout(0.5);
         continue;
       }
       // (An export's progress is polled by the frames themselves: they go on, throttled.)
-      const bool restingWait = wait > 0.0 && state.exportStatus.state != ExportState::Running;
+      const bool restingWait = wait > 0.0 && state.services.exportStatus.state != ExportState::Running;
       if (restingWait && !closeAsked && input.queue.pending() == 0 && dropped.empty() &&
           !glfwWindowShouldClose(window)) {
         const RestSignature now = restSignature(session, state, presets, window);
@@ -339,32 +340,34 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();  // display size, time, pointer; then the queued input over it
       if (x11.windowGone()) break;
-      input.queue.applyTo(ImGui::GetIO(), std::exchange(state.keyboardFocusMoved, false));
+      input.queue.applyTo(ImGui::GetIO(), std::exchange(state.frame.keyboardFocusMoved, false));
       ImGui::NewFrame();
-      state.session = session.status();
-      if (state.flatImagePending) uploadFlatView(state);
+      state.frame.session = session.status();
+      if (state.frame.flatImagePending) uploadFlatView(state);
       explorerUiFrame(state);
       ImGui::Render();
 
-      if (state.requests.quit) glfwSetWindowShouldClose(window, GLFW_TRUE);
+      if (state.frame.requests.quit) glfwSetWindowShouldClose(window, GLFW_TRUE);
       // The title follows the document: its name (after an open, a save-as, an undo) and whether
       // it has unsaved changes. Not while a widget or the view is held: a drag's frames would
       // each compare the whole scene, and its edit is one step anyway.
-      if (!state.interacting && !ImGui::IsAnyItemActive()) {
+      if (!state.frame.interacting && !ImGui::IsAnyItemActive()) {
         if (std::string now = windowTitle(state); now != title) {
           title = std::move(now);
           glfwSetWindowTitle(window, title.c_str());
         }
       }
-      if (state.requests.open) openFile(state, *state.requests.open);
-      if (autosave) autosave->update(state.scene);
+      if (state.frame.requests.open) openFile(state, *state.frame.requests.open);
+      // Autosave looks at the scene only after an edit (the document's count), until it has.
+      if (autosave && autosavedRevision != state.document.revisions().any && autosave->update(state.document.scene))
+        autosavedRevision = state.document.revisions().any;
       // Thumbnails arrive decoded from the library's thread; only their upload happens here.
       if (presets.version() != thumbnailsVersion) {
         thumbnailsVersion = presets.version();
         if (const PresetLibrary::Entries entries = presets.entries())
           for (const PresetEntry& entry : *entries)
-            if (entry.thumbnail && !state.thumbnailTextures.contains(entry.path))
-              state.thumbnailTextures[entry.path] = uploadThumbnail(*entry.thumbnail);
+            if (entry.thumbnail && !state.frame.thumbnailTextures.contains(entry.path))
+              state.frame.thumbnailTextures[entry.path] = uploadThumbnail(*entry.thumbnail);
       }
       if (!dropped.empty()) {
         openFile(state, dropped.front());
@@ -374,15 +377,15 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       int width = 0, height = 0;
       glfwGetFramebufferSize(window, &width, &height);
       if (x11.windowGone()) break;
-      view.frame(state, width, height);
+      liveFrame(view, state, width, height);
       // Save, chosen in the quit prompt, has been served by the frame: it asks to quit once it worked.
-      if (state.requests.quit) glfwSetWindowShouldClose(window, GLFW_TRUE);
+      if (state.frame.requests.quit) glfwSetWindowShouldClose(window, GLFW_TRUE);
       // Input gets a few frames of its own: ImGui settles hover and layout a frame late.
       const ImGuiIO& io = ImGui::GetIO();
       const bool userActive = input.queue.pending() > 0 || io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f ||
                               io.MouseWheel != 0.0f || io.MouseWheelH != 0.0f || ImGui::IsAnyMouseDown() ||
                               ImGui::IsAnyItemActive() || !io.InputQueueCharacters.empty();
-      restingFrames = view.resting() && state.session.resting && !userActive ? restingFrames + 1 : 0;
+      restingFrames = view.resting() && state.frame.session.resting && !userActive ? restingFrames + 1 : 0;
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       ++frame;
       // Scripted runs count frames from the first one that shows the volume.
@@ -395,18 +398,18 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
         glfwSetWindowShouldClose(window, GLFW_TRUE);
       }
       glfwSwapBuffers(window);
-      if (inputLog && !state.typedThisFrame.empty()) {
+      if (inputLog && !state.frame.typedThisFrame.empty()) {
         const double shownAt =
             std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-        for (const auto& [field, text] : state.typedThisFrame)
+        for (const auto& [field, text] : state.frame.typedThisFrame)
           inputLog << std::fixed << shownAt << ' ' << field << '\t' << text << '\n';
         inputLog.flush();  // read by another process while this one runs
       }
-      state.typedThisFrame.clear();
+      state.frame.typedThisFrame.clear();
       if (options.minFrameMs > 0)
         std::this_thread::sleep_until(lastFrame + std::chrono::milliseconds(options.minFrameMs));
       const auto now = std::chrono::steady_clock::now();
-      FrameMetrics& metrics = state.metrics;
+      FrameMetrics& metrics = state.frame.metrics;
       metrics.frameMs = std::chrono::duration<double, std::milli>(now - lastFrame).count();
       metrics.fps = metrics.frameMs > 0.0 ? 0.9 * metrics.fps + 0.1 * (1000.0 / metrics.frameMs) : metrics.fps;
       if (frame > 2) metrics.worstFrameMs = std::max(metrics.worstFrameMs, metrics.frameMs);
@@ -414,34 +417,34 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     }
     if (autosave && (x11.windowGone() || QuitSignals::received())) {
       // Not the user's choice: the scene as it is now stays recoverable at the next start.
-      if (const std::string error = autosave->saveNow(state.scene); !error.empty())
+      if (const std::string error = autosave->saveNow(state.document.scene); !error.empty())
         std::cerr << "voxflame: " << error << "\n";
     } else if (autosave) {
       autosave->finishCleanly();  // a normal close: nothing to recover next time
     }
     if (options.frames > 0) {
-      const FrameMetrics& m = state.metrics;
+      const FrameMetrics& m = state.frame.metrics;
       std::printf("explorer: %u frames, last %.1f ms, worst %.1f ms since the last edit, edit to frame %.0f ms\n",
                   frame, m.frameMs, m.worstFrameMs, m.changeToFrameMs);
     }
   }
-  for (const auto& [path, texture] : state.thumbnailTextures) glDeleteTextures(1, &texture);
-  if (state.flatTexture) {
-    const GLuint texture = state.flatTexture;
+  for (const auto& [path, texture] : state.frame.thumbnailTextures) glDeleteTextures(1, &texture);
+  if (state.frame.flatTexture) {
+    const GLuint texture = state.frame.flatTexture;
     glDeleteTextures(1, &texture);
   }
   // The window's size for next time (a window that is gone keeps last time's); a failure to save
   // settings is only worth a line.
   if (!x11.windowGone()) {
     x11.rearm();
-    WindowGeometry geometry = state.settings.window;
+    WindowGeometry geometry = state.services.settings.window;
     if (!glfwGetWindowAttrib(window, GLFW_ICONIFIED)) glfwGetWindowSize(window, &geometry.width, &geometry.height);
     geometry.maximized = glfwGetWindowAttrib(window, GLFW_MAXIMIZED) != 0;
-    if (!x11.windowGone()) state.settings.window = geometry;  // read while the window still existed
+    if (!x11.windowGone()) state.services.settings.window = geometry;  // read while the window still existed
   }
   if (!scripted) {
     try {
-      saveSettings(state.settings);
+      saveSettings(state.services.settings);
     } catch (const core::Error& e) {
       std::cerr << "voxflame: " << e.what() << "\n";
     }

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 #include <utility>
 
 #include "core/attractor.h"
@@ -37,51 +38,49 @@ using namespace panels;
 void applyImportedFlame(ExplorerState& state, const std::filesystem::path& path,
                         const core::FlameFileContents& contents, const core::Scene& scene) {
   // A flame replaces the pattern and keeps the mesh and view: one undoable edit.
-  state.scene = scene;
-  state.notice.clear();
+  state.document.replace(scene);
+  state.panels.prompts.notice.clear();
   const std::string file = path.filename().string();
   for (const std::string& warning : contents.flame.warnings) {
-    if (!state.notice.empty()) state.notice += '\n';
-    state.notice.append(file).append(": ").append(warning);
+    if (!state.panels.prompts.notice.empty()) state.panels.prompts.notice += '\n';
+    state.panels.prompts.notice.append(file).append(": ").append(warning);
   }
-  state.settings.addRecent(RecentKind::Preset, path);
+  state.services.settings.addRecent(RecentKind::Preset, path);
 }
 
 bool hasUnsavedChanges(const ExplorerState& state) {
-  return !(state.scene == state.savedScene);
+  return state.document.unsaved();
 }
 
 void askToQuit(ExplorerState& state) {
   if (hasUnsavedChanges(state))
-    state.quitPrompt = true;
+    state.panels.prompts.quitPrompt = true;
   else
-    state.requests.quit = true;
+    state.frame.requests.quit = true;
 }
 
 core::CameraSettings viewCamera(const ExplorerState& state) {
-  const ExportSettings& exported = state.settings.lastExport;
-  if (state.viewRect.z <= 0 || state.viewRect.w <= 0 || exported.width <= 0 || exported.height <= 0)
-    return state.scene.camera;
-  return core::viewCameraFor(state.scene.camera, static_cast<double>(state.viewRect.z) / state.viewRect.w,
+  const ExportSettings& exported = state.services.settings.lastExport;
+  if (state.frame.viewRect.z <= 0 || state.frame.viewRect.w <= 0 || exported.width <= 0 || exported.height <= 0)
+    return state.document.scene.camera;
+  return core::viewCameraFor(state.document.scene.camera,
+                             static_cast<double>(state.frame.viewRect.z) / state.frame.viewRect.w,
                              static_cast<double>(exported.width) / exported.height);
 }
 
 std::string windowTitle(const ExplorerState& state) {
-  return "voxflame — " + state.scene.name + (hasUnsavedChanges(state) ? " (unsaved)" : "");
+  return "voxflame — " + state.document.scene.name + (hasUnsavedChanges(state) ? " (unsaved)" : "");
 }
 
 void resetExplorerState(ExplorerState& state, const core::Scene& scene) {
-  state.scene = scene;
-  state.savedScene = scene;
-  state.keyBase = scene;
-  state.initialCamera = scene.camera;
-  state.history.emplace(scene);
-  state.visited.clear();
-  state.visitedMessages.clear();
-  state.visitedIndex = 0;
-  state.searchMessage.clear();
-  state.analysedKey.clear();
-  state.playing = false;
+  state.document.reset(scene);
+  state.panels.explore.visited.clear();
+  state.panels.explore.visitedMessages.clear();
+  state.panels.explore.visitedIndex = 0;
+  state.panels.explore.searchMessage.clear();
+  state.panels.explore.analysedKey.clear();
+  state.panels.explore.analysedRevision = ~std::uint64_t{0};
+  state.panels.timeline.playing = false;
 }
 
 bool openFile(ExplorerState& state, const std::filesystem::path& path) {
@@ -91,40 +90,61 @@ bool openFile(ExplorerState& state, const std::filesystem::path& path) {
                    [](unsigned char c) { return std::tolower(c); });
     if (core::isFlameFilePath(path)) {
       core::Scene scene;
-      const core::FlameFileContents contents = importFlameScene(path, state.scene, {}, scene);
+      const core::FlameFileContents contents = importFlameScene(path, state.document.scene, {}, scene);
       // A file of several flames asks which one (flameChoiceWindow), as --index and --name do.
       if (contents.names.size() > 1) {
-        state.flameChoice.emplace();
-        state.flameChoice->path = path;
-        state.flameChoice->names = contents.names;
-        state.notice.clear();
+        state.panels.prompts.flameChoice.emplace();
+        state.panels.prompts.flameChoice->path = path;
+        state.panels.prompts.flameChoice->names = contents.names;
+        state.panels.prompts.notice.clear();
         return true;
       }
       applyImportedFlame(state, path, contents, scene);
       return true;
     }
     const bool preset = extension == ".json" || extension == ".png";
-    const core::Scene scene = preset ? sceneFromFile(path) : sceneWithMesh(state.scene, path);
+    const core::Scene scene = preset ? sceneFromFile(path) : sceneWithMesh(state.document.scene, path);
     // A preset opens fresh, with its own history; a new mesh is one more undoable edit.
     if (preset)
       resetExplorerState(state, scene);
     else
-      state.scene = scene;
-    state.notice.clear();
-    state.settings.addRecent(preset ? RecentKind::Preset : RecentKind::Mesh, path);
-    if (preset && extension == ".json") state.settings.lastPreset = std::filesystem::absolute(path);
+      state.document.replace(scene);
+    state.panels.prompts.notice.clear();
+    state.services.settings.addRecent(preset ? RecentKind::Preset : RecentKind::Mesh, path);
+    if (preset && extension == ".json") state.services.settings.lastPreset = std::filesystem::absolute(path);
     return true;
   } catch (const core::Error& e) {
-    state.notice = e.what();
+    state.panels.prompts.notice = e.what();
     return false;
   }
 }
 
+// Every change to the scene is reported where it is made (Document::edited); with
+// checkEditReports on (the tests) the frame compares the scene before and after and throws when a
+// change went unreported, or was reported as affecting less than it does.
+static void checkEditReports(const core::Scene& before, Document& document, std::uint64_t reportsBefore) {
+  const core::Affects reported = document.takeReported();
+  const core::SceneDiff changed = core::diff(before, document.scene);
+  if (changed.empty()) return;
+  const bool unreported = document.reportCount() == reportsBefore;
+  const core::Affects missing =
+      static_cast<core::Affects>(static_cast<unsigned>(changed.affects) & ~static_cast<unsigned>(reported));
+  if (unreported || core::any(missing))
+    throw std::logic_error("an edit of " + changed.paths.front() + " (" + core::toString(changed.affects) +
+                           ") was reported as " + (unreported ? "nothing" : core::toString(reported)));
+}
+
 void explorerUiFrame(ExplorerState& state) {
-  const float scale = state.uiScale;
-  state.requests = UiRequests{};
-  if (state.probe) state.probe->items.clear();
-  if (state.exportJob) state.exportStatus = state.exportJob->poll();
+  std::optional<core::Scene> before;
+  const std::uint64_t reportsBefore = state.document.reportCount();
+  if (state.frame.checkEditReports) {
+    before = state.document.scene;
+    state.document.takeReported();
+  }
+  const float scale = state.panels.uiScale;
+  state.frame.requests = UiRequests{};
+  if (state.frame.probe) state.frame.probe->items.clear();
+  if (state.services.exportJob) state.services.exportStatus = state.services.exportJob->poll();
   handleShortcuts(state);
   handleCamera(state);
   handleHistory(state);
@@ -146,7 +166,8 @@ void explorerUiFrame(ExplorerState& state) {
   noticeWindow(state, scale);
   // Read after the panels, which make a widget active on the frame it is pressed: an edit on that
   // very frame is already part of a drag.
-  state.interacting = ImGui::IsAnyItemActive() || state.orbiting || state.panning;
+  state.frame.interacting = ImGui::IsAnyItemActive() || state.panels.orbiting || state.panels.panning;
+  if (before) checkEditReports(*before, state.document, reportsBefore);
 }
 
 void applyUiScale(float scale) {

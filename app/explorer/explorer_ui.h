@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <memory>
 #include <atomic>
+#include <utility>
 #include <map>
 #include <optional>
 #include <string>
@@ -18,6 +19,7 @@
 #include "core/image_io.h"
 #include "core/lyapunov.h"
 #include "core/scene.h"
+#include "document.h"
 #include "explorer_session.h"
 #include "autosave.h"
 #include "background_job.h"
@@ -62,39 +64,12 @@ struct FrameMetrics {
   float marchScale = 1.0f;       // fraction of the window's pixels the last frame marched (frame budget)
 };
 
-struct ExplorerState {
-  core::Scene scene;
-  core::CameraSettings initialCamera;
-  float renderScale = 1.0f;  // fraction of the window's pixels a still view is refined at
-  // While the view or pattern changes, the march scale drops below renderScale to keep frames
-  // within this many milliseconds (app::FrameBudget).
-  float frameBudgetMs = 33.0f;
-  float uiScale = 1.0f;  // panel and font scale (DPI), as given to applyUiScale
-  int samples = 0;
-  FrameMetrics metrics;
-  SessionStatus session;  // copied from the session once per frame
-  std::string notice;     // an error or a message shown in the window until dismissed
-  UiRequests requests;
-  UiProbe* probe = nullptr;  // set by tests
-  // Text fields' changes this frame, as (field, text), kept only when recordTyping is set (the
-  // explorer's --input-log writes them once the frame that shows them is drawn).
-  bool recordTyping = false;
-  std::vector<std::pair<std::string, std::string>> typedThisFrame;
-  bool focusAttractorFilter = false;  // Ctrl+F: the next frame puts the keyboard in the attractor filter
-  // A panel asked for the keyboard in this frame (panels::takeKeyboard): the next frame's typed
-  // characters wait a frame more (InputQueue::applyTo's holdCharacters).
-  bool keyboardFocusMoved = false;
-  Settings settings;  // recent files, export settings, preset folder: kept between sessions
-
-  // Camera dragging.
-  bool orbiting = false, panning = false;
-  // The user holds a widget (a slider being dragged, a field being typed in) or drags the view:
-  // an edit made now is one of a run of them, so the large grid holds from the first (LiveView).
-  bool interacting = false;
-
-  // Pattern panel.
+// What each panel keeps between frames besides the document: filters, fields being typed, handles
+// being dragged, messages. A panel changes its own part.
+struct PatternPanelState {
   char attractorFilter[64] = "";
   char variationFilter[64] = "";             // the "add variation" list's filter (one list is open at a time)
+  bool focusAttractorFilter = false;         // Ctrl+F: the next frame puts the keyboard in the attractor filter
   std::map<std::size_t, int> selectedXform;  // per layer: the flame transform being edited (-1: the final one)
   // Per layer: the page of "to" columns the xaos matrix shows (ImGui tables hold 64 columns at most).
   std::map<std::size_t, std::size_t> xaosColumnPage;
@@ -108,16 +83,26 @@ struct ExplorerState {
   std::string turnedId;
   std::array<double, 3> turnedAngles{};
   std::array<double, 12> turnedResult{};
-  char meshPath[512] = "";
-  int gridDraft = 0;  // the grid slider's value while it is held
+};
 
-  // Search (F3) and Mutate run off the main thread; their result replaces layer 0's pattern
-  // (an attractor's parameters, a flame's genome or a Julia set's constant).
-  struct SearchOutcome {
-    std::optional<core::PatternLayer> found;  // the pattern part of layer 0 (applyVisited copies it)
-    std::string message;                      // what was found, or why nothing was
-  };
-  BackgroundJob<SearchOutcome> search;
+struct ScenePanelState {
+  char meshPath[512] = "";
+  int gridDraft = 0;         // the grid slider's value while it is held
+  float renderScale = 1.0f;  // fraction of the window's pixels a still view is refined at
+  // While the view or pattern changes, the march scale drops below renderScale to keep frames
+  // within this many milliseconds (app::FrameBudget).
+  float frameBudgetMs = 33.0f;
+  // Presets section.
+  char saveName[128] = "";
+  std::string presetMessage;
+  // Export section. The path it made for the document's name (it follows the name until typed
+  // over), and an export waiting for "replace the existing file?".
+  char exportPath[512] = "";
+  std::string exportPathMade;
+  std::optional<ExportRequest> exportToConfirm;
+};
+
+struct ExplorePanelState {
   std::uint64_t searchSeed = 1;
   double mutateStrength = 0.1;
   std::string searchMessage;
@@ -125,38 +110,91 @@ struct ExplorerState {
   // entry is a whole layer, so it holds the kind and the genome or constant of chaos layers too.
   std::vector<core::PatternLayer> visited;
   std::size_t visitedIndex = 0;
-  std::vector<std::string> visitedMessages;  // what the search said of each, so it follows Back/Forward
+  std::vector<std::string> visitedMessages;            // what the search said of each, so it follows Back/Forward
+  std::string analysedKey;                             // the layer the last analysis was started for
+  std::uint64_t analysedRevision = ~std::uint64_t{0};  // ... checked at this pattern revision
+  std::string lyapunovText = "Lyapunov: …";
+};
+
+struct TimelinePanelState {
+  bool playing = false;  // the shown scene is the animation at scene.animation.time
+  std::string timelineMessage;
+};
+
+struct PromptsState {
+  std::string notice;  // an error or a message shown in the window until dismissed
+  // A flame file with several flames, opened: which one to import (the "Which flame?" list).
+  struct FlameChoice {
+    std::filesystem::path path;
+    std::vector<std::string> names;  // every flame of the file, in order
+    char filter[64] = "";
+  };
+  std::optional<FlameChoice> flameChoice;
+  bool quitPrompt = false;     // the Save / Discard / Cancel prompt is open
+  bool quitAfterSave = false;  // Save was chosen there: quit once the save has worked
+};
+
+// The flat view (issue 25): the first flame layer rendered in 2D as flam3 frames it
+// (core/flat_render.h), shown over the viewport while `on`. It renders off the main thread whenever
+// the layer, the tone or the framing change.
+struct FlatViewState {
+  bool on = false;
+  core::Scene rendered;  // what the job renders or rendered: the flame layer, tone and framing
+  std::uint64_t checkedRevision = ~std::uint64_t{0};  // the document revision `rendered` was last checked at
+  std::string message;
+};
+
+struct PanelState {
+  PatternPanelState pattern;
+  ScenePanelState scene;
+  ExplorePanelState explore;
+  TimelinePanelState timeline;
+  PromptsState prompts;
+  FlatViewState flat;
+  bool orbiting = false, panning = false;  // the view is being dragged (shortcuts.cpp)
+  bool showStats = false;                  // the status line shows its technical figures (else as a tooltip)
+  float uiScale = 1.0f;                    // panel and font scale (DPI), as given to applyUiScale
+};
+
+// The work that runs beside the frames and what it needs: background jobs, the preset library, the
+// export child, the settings kept between sessions.
+struct Services {
+  // Search (F3) and Mutate run off the main thread; their result replaces layer 0's pattern
+  // (an attractor's parameters, a flame's genome or a Julia set's constant).
+  struct SearchOutcome {
+    std::optional<core::PatternLayer> found;  // the pattern part of layer 0 (applyVisited copies it)
+    std::string message;                      // what was found, or why nothing was
+  };
+  BackgroundJob<SearchOutcome> search;
   // The running search's progress: candidates tried, and the strength it tries now (it widens by
   // itself while it finds nothing).
   std::shared_ptr<std::atomic<int>> searchTried;
   std::shared_ptr<std::atomic<double>> searchStrength;
-
   // The Lyapunov spectrum of layer 0, analysed off the main thread whenever the pattern changes.
   BackgroundJob<core::OrbitAnalysis> analysis;
-  std::string analysedKey;
-  std::string lyapunovText = "Lyapunov: …";
+  BackgroundJob<core::ImageRGBA> flatRender;  // the flat view's image
+  PresetLibrary* presets = nullptr;           // owned by the window loop
+  ExportJob* exportJob = nullptr;             // the child rendering a still, owned by the window loop
+  std::filesystem::path executable;           // the voxflame binary exports run; empty: this process
+  ExportStatus exportStatus;                  // polled once per UI frame
+  Settings settings;                          // recent files, export settings, preset folder: kept between sessions
+  std::vector<Recoverable> recoverable;  // autosaves of sessions that crashed or were killed, offered back at start
+};
 
-  std::optional<SceneHistory> history;  // undo/redo over the whole scene
-
-  // Presets panel: the library (owned by the window loop) and the GL textures of its thumbnails.
-  PresetLibrary* presets = nullptr;
-  std::map<std::filesystem::path, unsigned> thumbnailTextures;
-  char saveName[128] = "";
-  std::string presetMessage;
-
-  // Export panel: the child process rendering a still (owned by the window loop).
-  ExportJob* exportJob = nullptr;
-  std::filesystem::path executable;  // the voxflame binary exports run; empty: this process
-  ExportStatus exportStatus;
-  char exportPath[512] = "";
-  // The path the Export panel made for the document's name (it follows the name until typed over),
-  // and an export waiting for "replace the existing file?".
-  std::string exportPathMade;
-  std::optional<ExportRequest> exportToConfirm;
-
-  // Autosaves of sessions that crashed or were killed, offered back at start.
-  std::vector<Recoverable> recoverable;
-
+// What a frame produces and the window loop, the live view and the tests read: timings, the
+// session's status, the panels' requests, where the picture goes, and the GL textures the window
+// loop uploads for the panels.
+struct FrameOutputs {
+  FrameMetrics metrics;
+  SessionStatus session;  // copied from the session once per frame
+  int samples = 0;        // the live view's samples of the picture shown
+  UiRequests requests;
+  // The user holds a widget (a slider being dragged, a field being typed in) or drags the view:
+  // an edit made now is one of a run of them, so the large grid holds from the first (LiveView).
+  bool interacting = false;
+  // A panel asked for the keyboard in this frame (panels::takeKeyboard): the next frame's typed
+  // characters wait a frame more (InputQueue::applyTo's holdCharacters).
+  bool keyboardFocusMoved = false;
   // Where the picture goes: the space between the docked panels, in framebuffer pixels (x, y from
   // the bottom, width, height), set by each UI frame; empty: the whole framebuffer. The live view
   // frames its camera to it, widened to hold all of the export's picture (viewCamera).
@@ -166,39 +204,28 @@ struct ExplorerState {
   struct PanelEdges {
     float left = 0.0f, right = 0.0f, bottom = 0.0f;
   } layout;
-
-  bool showStats = false;  // the status line shows its technical figures (else as a tooltip)
-
-  // A flame file with several flames, opened: which one to import (the "Which flame?" list).
-  struct FlameChoice {
-    std::filesystem::path path;
-    std::vector<std::string> names;  // every flame of the file, in order
-    char filter[64] = "";
-  };
-  std::optional<FlameChoice> flameChoice;
-
-  // The document as last opened or saved: quitting asks first while the scene differs from it.
-  core::Scene savedScene;
-  bool quitPrompt = false;     // the Save / Discard / Cancel prompt is open
-  bool quitAfterSave = false;  // Save was chosen there: quit once the save has worked
-
-  // The flat view (issue 25): the first flame layer rendered in 2D as flam3 frames it
-  // (core/flat_render.h), shown over the viewport while `flatView` is on. It renders off the main
-  // thread whenever the layer, the tone or the framing change; the window loop uploads each new
-  // image into `flatTexture` (flatImagePending) before the next UI frame draws it.
-  bool flatView = false;
-  BackgroundJob<core::ImageRGBA> flatRender;
-  core::Scene flatRendered;  // what the job renders or rendered: the flame layer, tone and framing
+  // Text fields' changes this frame, as (field, text), kept only when recordTyping is set (the
+  // explorer's --input-log writes them once the frame that shows them is drawn).
+  bool recordTyping = false;
+  std::vector<std::pair<std::string, std::string>> typedThisFrame;
+  UiProbe* probe = nullptr;  // set by tests
+  // Set by tests: each UI frame checks that every change to the scene was reported with what it
+  // affects (Document), and throws std::logic_error naming the first that was not.
+  bool checkEditReports = false;
+  // GL textures, uploaded by the window loop: the presets' thumbnails, and the flat view's image
+  // (the window loop uploads `flatImage` before the next UI frame while flatImagePending).
+  std::map<std::filesystem::path, unsigned> thumbnailTextures;
   core::ImageRGBA flatImage;
   bool flatImagePending = false;
   unsigned flatTexture = 0;
   int flatTextureWidth = 0, flatTextureHeight = 0;
-  std::string flatMessage;
+};
 
-  // Timeline: the shown scene is the animation at scene.animation.time.
-  bool playing = false;
-  core::Scene keyBase;  // the scene when the time was last shown: "Key" records what differs from it
-  std::string timelineMessage;
+struct ExplorerState {
+  Document document;
+  PanelState panels;
+  Services services;
+  FrameOutputs frame;
 };
 
 // Sets up the state for a scene just opened (history, camera reset point, search history).

@@ -267,12 +267,13 @@ bool LiveView::resting() const {
   return target_.samples >= kMaxSamples && !uploadInProgress_ && !shadowJob_.busy() && !shadowJob_.ready();
 }
 
-LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int framebufferHeight, unsigned framebuffer) {
+LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, FrameMetrics& metrics,
+                          int framebufferWidth, int framebufferHeight, unsigned framebuffer) {
   LiveFrame result;
   framebufferWidth = std::max(1, framebufferWidth);
   framebufferHeight = std::max(1, framebufferHeight);
   // The picture's place: the rectangle the docked panels leave (the whole framebuffer without one).
-  const glm::ivec4 place = placeWithin(state.viewRect, framebufferWidth, framebufferHeight);
+  const glm::ivec4 place = placeWithin(inputs.viewRect, framebufferWidth, framebufferHeight);
   const int width = place.z, height = place.w;
   const auto frameStart = std::chrono::steady_clock::now();
   if (lastFrameStart_) {
@@ -294,26 +295,30 @@ LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int frameb
   marchMs_ = -1.0;
   // An edit while the user holds a widget or the view, or right after a frame that changed, is one
   // of a drag's: posted with the hold, so the large grid never starts on it.
-  if (session_.postIfPatternChanged(state.scene, state.interacting || changedLastFrame_)) {
+  // The document counts its pattern edits (Document::Revisions): a new count is a pattern to post,
+  // with no walk over the scene.
+  if (postedPattern_ != inputs.revisions.pattern) {
+    postedPattern_ = inputs.revisions.pattern;
+    session_.post(scene, inputs.interacting || changedLastFrame_);
     result.patternPosted = true;
     waitingPost_ = session_.status().requestedGeneration;
     waitingFullPost_ = waitingPost_;
     waitingSince_ = std::chrono::steady_clock::now();
     waitingSinceFrame_ = frame_;
-    state.metrics.worstFrameMs = 0.0;
+    metrics.worstFrameMs = 0.0;
   }
   if (auto mesh = session_.takeNewMesh()) {
     renderer_.setMesh(*mesh);
-    lastView_.reset();
+    shownView_.reset();
   }
   const auto uploadStart = std::chrono::steady_clock::now();
   takeVolume();
-  state.metrics.uploadMs = millisecondsSince(uploadStart);
-  keepShadowInStep(state.scene.render);
+  metrics.uploadMs = millisecondsSince(uploadStart);
+  keepShadowInStep(scene.render);
 
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, framebufferWidth, framebufferHeight);
-  const glm::vec3 background = core::linearToSrgb(state.scene.tone.background);
+  const glm::vec3 background = core::linearToSrgb(scene.tone.background);
   clearAround(place, framebufferWidth, framebufferHeight, background);
   glViewport(place.x, place.y, width, height);
   const std::optional<core::GridGeometry> grid = session_.geometry();
@@ -321,25 +326,24 @@ LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int frameb
   if (grid && renderer_.hasVolume()) {
     gl::RenderSettings settings;
     // The scene's camera, widened to hold the export's whole picture (viewCamera).
-    const core::CameraSettings camera = viewCamera(state);
+    const core::CameraSettings& camera = inputs.camera;
     settings.camera = core::orbitCamera(camera, grid->box(), static_cast<double>(width) / static_cast<double>(height));
-    settings.tone = state.scene.tone;
-    settings.render = state.scene.render;
+    settings.tone = scene.tone;
+    settings.render = scene.render;
     // Anything that changes what a ray sees restarts the sample average (the schema's "view"
     // class: camera, opacity, mesh display, lighting ...); tone alone only changes the resolve and
     // layers change the volume, which restarts it when the new generation arrives.
-    const bool viewChanged = !lastView_ || core::diff(*lastView_, state.scene).view() || width != lastWidth_ ||
-                             height != lastHeight_ || camera.fovDeg != lastFieldDeg_ ||
-                             camera.orthoHeight != lastOrthoHeight_;
+    const bool viewChanged = shownView_ != inputs.revisions.view || width != lastWidth_ || height != lastHeight_ ||
+                             camera.fovDeg != lastFieldDeg_ || camera.orthoHeight != lastOrthoHeight_;
     // While the view or the pattern moves, fewer pixels keep the frame within its budget; a still
     // view refines at the scale the user chose.
-    budget_.setBudget(state.frameBudgetMs);
+    budget_.setBudget(inputs.frameBudgetMs);
     // Playback is judged for its motion, frame after frame: the budget alone decides how sharp
     // its frames are, up to the full window, not the preview scale a still view refines at (half
     // the pixels on software GL, a fixed blur that frames within the budget need not have).
-    const float ceiling = state.playing ? 1.0f : std::min(1.0f, state.renderScale);
+    const float ceiling = inputs.playing ? 1.0f : std::min(1.0f, inputs.renderScale);
     const float scale = budget_.next(viewChanged || result.patternPosted, ceiling);
-    state.metrics.marchScale = scale;
+    metrics.marchScale = scale;
     // Coarser pixels, coarser steps along the ray. A still view marches at its ceiling (stretch
     // 1), and a change of scale restarts the samples, so its samples are all of the scene's step.
     settings.render.stepVoxels *= FrameBudget::stepStretch(scale, ceiling);
@@ -358,7 +362,7 @@ LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int frameb
     if (viewChanged || scale != lastRenderScale_) {
       restartSamples();
       renderer_.drawMesh(target_, settings);
-      lastView_ = state.scene;
+      shownView_ = inputs.revisions.view;
       lastWidth_ = width;
       lastHeight_ = height;
       lastFieldDeg_ = camera.fovDeg;
@@ -380,7 +384,6 @@ LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int frameb
       lastMarchScale_ = scale;
       lastInBands_ = still;
     }
-    state.samples = target_.samples;
     changed = viewChanged;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     // Until the first pass over a new view or volume is whole, the last whole picture stays up.
@@ -393,15 +396,13 @@ LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int frameb
   } else {
     clearAround(glm::ivec4(0), framebufferWidth, framebufferHeight, background);
   }
-  // Requests are served after the picture is drawn and before the panels go over it, so a
-  // thumbnail shows the view alone.
-  serveRequests(state, place, framebuffer);
+  lastPlace_ = place;
+  result.samples = target_.samples;
 
   result.fullShown = renderer_.hasVolume() && renderer_.marchedSource() == gl::VolumeRenderer::Source::Main;
   if (newVolumeShown_) {
     result.newVolumeShown = true;
     result.shownPost = shownPost_;
-    FrameMetrics& metrics = state.metrics;
     if (waitingPost_ != 0 && shownPost_ == waitingPost_) {
       metrics.changeToFrameMs = millisecondsSince(waitingSince_);
       metrics.changeToFrameFrames = static_cast<int>(frame_ - waitingSinceFrame_) + 1;
@@ -420,46 +421,76 @@ LiveFrame LiveView::frame(ExplorerState& state, int framebufferWidth, int frameb
   // proxy too: at 64³ its refinement took the cores the orbit's frames needed.
   const bool viewOnly = changed && !result.patternPosted;
   changed = changed || result.patternPosted;
-  const bool held = changed && (changedLastFrame_ || state.interacting);
-  session_.setRefinement(0.01 * state.settings.refineUntilNoisePercent,
-                         state.exportStatus.state == ExportState::Running, held, held && viewOnly);
+  const bool held = changed && (changedLastFrame_ || inputs.interacting);
+  session_.setRefinement(inputs.refineUntilNoise, inputs.exportRunning, held, held && viewOnly);
   changedLastFrame_ = changed;
   ++frame_;
   return result;
 }
 
-void LiveView::serveRequests(ExplorerState& state, glm::ivec4 place, unsigned framebuffer) {
-  if (std::exchange(state.requests.refineFurther, false)) session_.refineFurther();
-  if (state.requests.saveAs) {
+void LiveView::serveRequests(ExplorerState& state, unsigned framebuffer) {
+  const glm::ivec4 place = lastPlace_;
+  if (std::exchange(state.frame.requests.refineFurther, false)) session_.refineFurther();
+  if (state.frame.requests.saveAs) {
     // Saved whatever is on screen: the volume, or the background while a shape builds or after a
     // bad mesh. The preset is what matters; the thumbnail is the view as it is now.
     if (!presets_) {
-      state.notice = "there is no preset library to save into";
+      state.panels.prompts.notice = "there is no preset library to save into";
     } else {
       try {
         glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        const std::filesystem::path saved = presets_->saveAs(
-            state.scene, *state.requests.saveAs, readThumbnail(framebuffer, place), state.requests.saveReplacing);
-        state.presetMessage = "saved " + saved.string();
-        state.settings.addRecent(RecentKind::Preset, saved);
+        const std::filesystem::path saved =
+            presets_->saveAs(state.document.scene, *state.frame.requests.saveAs, readThumbnail(framebuffer, place),
+                             state.frame.requests.saveReplacing);
+        state.panels.scene.presetMessage = "saved " + saved.string();
+        state.services.settings.addRecent(RecentKind::Preset, saved);
         // The document is now the saved preset: its name (the window's title) and nothing unsaved.
-        state.scene.name = *state.requests.saveAs;
-        state.savedScene = state.scene;
-        if (state.quitAfterSave) state.requests.quit = true;  // Save in the quit prompt: now quit
+        state.document.scene.name = *state.frame.requests.saveAs;
+        state.document.edited(core::Affects::None);
+        state.document.markSaved();
+        if (state.panels.prompts.quitAfterSave) state.frame.requests.quit = true;  // Save in the quit prompt: now quit
       } catch (const core::Error& e) {
-        state.notice = e.what();
-        state.quitAfterSave = false;  // the changes are not saved: stay
+        state.panels.prompts.notice = e.what();
+        state.panels.prompts.quitAfterSave = false;  // the changes are not saved: stay
       }
     }
-    state.requests.saveAs.reset();
+    state.frame.requests.saveAs.reset();
   }
-  if (state.requests.exportStill) {
+  if (state.frame.requests.exportStill) {
     if (!exportJob_)
-      state.notice = "exports are not available here";
+      state.panels.prompts.notice = "exports are not available here";
     else
-      startExport(state, *exportJob_, *state.requests.exportStill);
-    state.requests.exportStill.reset();
+      startExport(state, *exportJob_, *state.frame.requests.exportStill);
+    state.frame.requests.exportStill.reset();
   }
+}
+
+}  // namespace voxflame::app
+
+namespace voxflame::app {
+
+LiveInputs liveInputs(const ExplorerState& state) {
+  LiveInputs inputs;
+  inputs.revisions = state.document.revisions();
+  inputs.camera = viewCamera(state);
+  inputs.viewRect = state.frame.viewRect;
+  inputs.renderScale = state.panels.scene.renderScale;
+  inputs.frameBudgetMs = state.panels.scene.frameBudgetMs;
+  inputs.playing = state.panels.timeline.playing;
+  inputs.interacting = state.frame.interacting;
+  inputs.refineUntilNoise = 0.01 * state.services.settings.refineUntilNoisePercent;
+  inputs.exportRunning = state.services.exportStatus.state == ExportState::Running;
+  return inputs;
+}
+
+LiveFrame liveFrame(LiveView& view, ExplorerState& state, int width, int height, unsigned framebuffer) {
+  const LiveFrame result =
+      view.frame(state.document.scene, liveInputs(state), state.frame.metrics, width, height, framebuffer);
+  state.frame.samples = result.samples;
+  // Requests are served after the picture is drawn and before the panels go over it, so a
+  // thumbnail shows the view alone.
+  view.serveRequests(state, framebuffer);
+  return result;
 }
 
 }  // namespace voxflame::app

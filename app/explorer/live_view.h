@@ -33,6 +33,23 @@ struct LiveFrame {
   std::uint64_t shownPost = 0;  // ... and the session post whose pattern it shows (0: an older one)
   bool patternPosted = false;   // the scene's pattern changed and was posted this frame
   bool fullShown = false;       // the volume drawn is the full grid (else the session's coarse proxy)
+  int samples = 0;              // samples of the picture shown
+};
+
+// What a frame draws from besides the scene: what the document has changed so far, the window's
+// choices, and what the user is doing.
+struct LiveInputs {
+  // The document's edit counts: a new pattern count posts the scene to the session, a new view
+  // count restarts the samples. Only these say that the scene changed; it is never compared.
+  Document::Revisions revisions;
+  core::CameraSettings camera;    // the camera the view shows (viewCamera: widened to hold the export)
+  glm::ivec4 viewRect{0};         // where the picture goes (FrameOutputs::viewRect)
+  float renderScale = 1.0f;       // the march scale's ceiling for a still view
+  float frameBudgetMs = 33.0f;    // ... and the budget that lowers it while something changes
+  bool playing = false;           // playback: the ceiling is the whole window
+  bool interacting = false;       // a widget or the view is held: an edit now is one of a drag's
+  double refineUntilNoise = 0.0;  // refinement rests at this noise (fraction; 0: never)
+  bool exportRunning = false;     // refinement pauses while an export uses the cores
 };
 
 class LiveView {
@@ -44,13 +61,16 @@ class LiveView {
   LiveView(const LiveView&) = delete;
   LiveView& operator=(const LiveView&) = delete;
 
-  // One frame at width × height pixels into `framebuffer` (0: the window's). Reads state.scene,
-  // state.renderScale, state.playing, state.interacting, state.frameBudgetMs, state.settings,
-  // state.exportStatus and state.requests; writes state.samples,
-  // state.metrics (upload time, edit to frame, march scale), state.notice and
-  // state.presetMessage. Never waits on the session or a job. The time from one call to the next
-  // is taken as the frame's cost, so call it once per displayed frame.
-  LiveFrame frame(ExplorerState& state, int width, int height, unsigned framebuffer = 0);
+  // One frame of `scene` at width × height pixels into `framebuffer` (0: the window's); writes the
+  // upload time, edit to frame and march scale into `metrics`. Never waits on the session or a
+  // job. The time from one call to the next is taken as the frame's cost, so call it once per
+  // displayed frame.
+  LiveFrame frame(const core::Scene& scene, const LiveInputs& inputs, FrameMetrics& metrics, int width, int height,
+                  unsigned framebuffer = 0);
+  // The panels' requests that need the session or the picture just drawn (a save's thumbnail):
+  // refine further, save as (writes the document's name and saved mark, a notice or the presets'
+  // message), export. Call after frame(), before the panels are drawn over the picture.
+  void serveRequests(ExplorerState& state, unsigned framebuffer = 0);
 
   bool hasVolume() const { return renderer_.hasVolume(); }
   // The picture is finished: every band of it marched kMaxSamples times, no upload or shadow
@@ -85,7 +105,6 @@ class LiveView {
   // The points a main grid volume of the proxy's pattern needs to replace the proxy on screen.
   std::uint64_t takeoverPoints() const;
   void keepShadowInStep(const core::RenderSettingsDoc& render);
-  void serveRequests(ExplorerState& state, glm::ivec4 place, unsigned framebuffer);
 
   ExplorerSession& session_;
   PresetLibrary* presets_;
@@ -137,8 +156,12 @@ class LiveView {
   std::optional<ShadowInputs> shadowShown_;  // what the uploaded (or computing) shadow was made from
   glm::ivec3 shadowSourceSize_{0};           // ... and the size of that volume's grid
 
+  // The pattern count last posted to the session, and the view count the samples were started
+  // for (none: start over, as after a new mesh).
+  std::optional<std::uint64_t> postedPattern_;
   // What a ray sees besides the volume: when it changes, the sample average starts over.
-  std::optional<core::Scene> lastView_;
+  std::optional<std::uint64_t> shownView_;
+  glm::ivec4 lastPlace_{0};  // where the last frame drew its picture
   int lastWidth_ = 0, lastHeight_ = 0;
   double lastFieldDeg_ = 0.0, lastOrthoHeight_ = 0.0;  // the view camera's field, widened for the export (viewCamera)
   float lastRenderScale_ = 0.0f;
@@ -156,5 +179,11 @@ class LiveView {
   std::uint32_t waitingSinceFrame_ = 0;
   std::uint32_t frame_ = 0;
 };
+
+// The frame's inputs from the explorer's state.
+LiveInputs liveInputs(const ExplorerState& state);
+// The explorer's frame: LiveView::frame of the document with the state's inputs, its samples and
+// metrics into state.frame, then the panels' requests served (LiveView::serveRequests).
+LiveFrame liveFrame(LiveView& view, ExplorerState& state, int width, int height, unsigned framebuffer = 0);
 
 }  // namespace voxflame::app

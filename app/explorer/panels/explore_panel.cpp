@@ -48,39 +48,44 @@ std::string analysisKey(const core::PatternLayer& layer) {
 
 // Keeps the Lyapunov line in step with layer 0; one analysis at a time, never waited for.
 void updateAnalysis(ExplorerState& state) {
-  const bool chaosGame = !state.scene.layers.empty() && state.scene.layers.front().isChaosGame();
-  if (state.analysis.ready()) {
+  const bool chaosGame = !state.document.scene.layers.empty() && state.document.scene.layers.front().isChaosGame();
+  if (state.services.analysis.ready()) {
     try {
-      const core::OrbitAnalysis result = *state.analysis.take();
+      const core::OrbitAnalysis result = *state.services.analysis.take();
       char text[160];
       std::snprintf(text, sizeof text, "λ %.3f  %.3f  %.3f  (%s)", result.lyapunov[0], result.lyapunov[1],
                     result.lyapunov[2], std::string(core::toString(result.verdict)).c_str());
-      if (!chaosGame) state.lyapunovText = text;  // an attractor's analysis that finished after a switch is stale
+      if (!chaosGame)
+        state.panels.explore.lyapunovText = text;  // an attractor's analysis that finished after a switch is stale
     } catch (const core::Error& e) {
-      if (!chaosGame) state.lyapunovText = e.what();
+      if (!chaosGame) state.panels.explore.lyapunovText = e.what();
     }
   }
-  if (state.scene.layers.empty()) return;
-  const core::PatternLayer& front = state.scene.layers.front();
+  if (state.document.scene.layers.empty()) return;
+  const core::PatternLayer& front = state.document.scene.layers.front();
   if (chaosGame) {
     // A chaos game picks a map at random every step: there is no one orbit whose Lyapunov
     // exponents would mean anything, so the line just says what the layer is.
-    state.lyapunovText =
+    state.panels.explore.lyapunovText =
         front.kind == core::PatternKind::Flame ? "flame (chaos game)" : "quaternion Julia (chaos game)";
-    state.analysedKey.clear();
+    state.panels.explore.analysedKey.clear();
+    state.panels.explore.analysedRevision = ~std::uint64_t{0};
     return;
   }
-  if (state.analysis.busy()) return;
+  if (state.services.analysis.busy()) return;
+  // Only a pattern edit can change what is analysed: no key is made on the frames between.
+  if (state.panels.explore.analysedRevision == state.document.revisions().pattern) return;
+  state.panels.explore.analysedRevision = state.document.revisions().pattern;
   const std::string key = analysisKey(front);
-  if (key == state.analysedKey) return;
-  state.analysedKey = key;
+  if (key == state.panels.explore.analysedKey) return;
+  state.panels.explore.analysedKey = key;
   try {
-    const core::OrbitSpec spec = core::orbitSpecOf(state.scene.layers.front());
+    const core::OrbitSpec spec = core::orbitSpecOf(state.document.scene.layers.front());
     core::LyapunovOptions options;
     options.steps = 20'000;
-    state.analysis.start([spec, options](std::stop_token) { return core::analyseOrbit(spec, options); });
+    state.services.analysis.start([spec, options](std::stop_token) { return core::analyseOrbit(spec, options); });
   } catch (const core::Error& e) {
-    state.lyapunovText = e.what();
+    state.panels.explore.lyapunovText = e.what();
   }
 }
 
@@ -110,21 +115,21 @@ std::string fillText(const core::FillReport& fill) {
 // current one by `strength`. Attractors always search near their parameters, as before; flames
 // and Julia sets use the fill test of flame_search.h.
 void startSearch(ExplorerState& state, double strength, bool fresh) {
-  if (state.search.busy() || state.scene.layers.empty()) return;  // one at a time
-  using Outcome = ExplorerState::SearchOutcome;
+  if (state.services.search.busy() || state.document.scene.layers.empty()) return;  // one at a time
+  using Outcome = Services::SearchOutcome;
   try {
-    const core::PatternLayer layer = state.scene.layers.front();
-    const std::uint64_t seed = state.searchSeed++;
+    const core::PatternLayer layer = state.document.scene.layers.front();
+    const std::uint64_t seed = state.panels.explore.searchSeed++;
     if (layer.isChaosGame()) {
       core::FlameSearchOptions options;
       options.seed = seed;
       options.count = 1;
       options.strength = strength;
       options.juliaView = layer.julia;
-      state.searchTried.reset();  // the flame and Julia searches count no tries
-      state.searchStrength.reset();
-      state.searchMessage = "searching…";
-      state.search.start([layer, options, fresh](std::stop_token stop) mutable {
+      state.services.searchTried.reset();  // the flame and Julia searches count no tries
+      state.services.searchStrength.reset();
+      state.panels.explore.searchMessage = "searching…";
+      state.services.search.start([layer, options, fresh](std::stop_token stop) mutable {
         options.stop = stop;
         Outcome outcome;
         core::PatternLayer found = layer;
@@ -160,11 +165,11 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
     // Nothing nearby: it widens by itself, a few hundred tries at each strength, before giving up.
     options.widenTo = std::max(strength, core::kSearchWidenTo);
     options.maxCandidates = core::kSearchTriesPerStrength;
-    state.searchTried = std::make_shared<std::atomic<int>>(0);
-    state.searchStrength = std::make_shared<std::atomic<double>>(strength);
-    state.searchMessage = "searching…";
-    state.search.start([layer, spec, options, tried = state.searchTried,
-                        strengthNow = state.searchStrength](std::stop_token stop) mutable {
+    state.services.searchTried = std::make_shared<std::atomic<int>>(0);
+    state.services.searchStrength = std::make_shared<std::atomic<double>>(strength);
+    state.panels.explore.searchMessage = "searching…";
+    state.services.search.start([layer, spec, options, tried = state.services.searchTried,
+                                 strengthNow = state.services.searchStrength](std::stop_token stop) mutable {
       options.stop = stop;
       options.tried = tried.get();
       options.strengthNow = strengthNow.get();
@@ -187,47 +192,50 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
       return outcome;
     });
   } catch (const core::Error& e) {
-    state.searchMessage = e.what();
+    state.panels.explore.searchMessage = e.what();
   }
 }
 
 void collectSearch(ExplorerState& state) {
-  if (!state.search.ready()) return;
+  if (!state.services.search.ready()) return;
   try {
-    const ExplorerState::SearchOutcome outcome = *state.search.take();
-    state.searchMessage = outcome.message;
-    if (!outcome.found || state.scene.layers.empty()) return;
-    core::PatternLayer& layer = state.scene.layers.front();
+    const Services::SearchOutcome outcome = *state.services.search.take();
+    state.panels.explore.searchMessage = outcome.message;
+    if (!outcome.found || state.document.scene.layers.empty()) return;
+    core::PatternLayer& layer = state.document.scene.layers.front();
     if (layer.kind != outcome.found->kind) {
-      state.searchMessage = "the layer changed kind while the search ran; its result was dropped";
+      state.panels.explore.searchMessage = "the layer changed kind while the search ran; its result was dropped";
       return;
     }
     // The history keeps where the search started from, then each find; a find after going back
     // drops the forward part, as in a browser.
-    if (state.visited.empty()) {
-      state.visited.push_back(layer);
-      state.visitedMessages.assign(1, "where the search started");
+    if (state.panels.explore.visited.empty()) {
+      state.panels.explore.visited.push_back(layer);
+      state.panels.explore.visitedMessages.assign(1, "where the search started");
     }
-    state.visited.resize(std::min(state.visited.size(), state.visitedIndex + 1));
-    state.visitedMessages.resize(state.visited.size());
+    state.panels.explore.visited.resize(
+        std::min(state.panels.explore.visited.size(), state.panels.explore.visitedIndex + 1));
+    state.panels.explore.visitedMessages.resize(state.panels.explore.visited.size());
     applyVisited(layer, *outcome.found);
-    state.visited.push_back(layer);
-    state.visitedMessages.push_back(outcome.message);
-    state.visitedIndex = state.visited.size() - 1;
+    state.document.edited(core::Affects::Pattern);
+    state.panels.explore.visited.push_back(layer);
+    state.panels.explore.visitedMessages.push_back(outcome.message);
+    state.panels.explore.visitedIndex = state.panels.explore.visited.size() - 1;
   } catch (const core::Error& e) {
-    state.searchMessage = e.what();
+    state.panels.explore.searchMessage = e.what();
   }
 }
 
 void goVisited(ExplorerState& state, int direction) {
-  if (state.visited.empty() || state.scene.layers.empty()) return;
-  const auto target = static_cast<long long>(state.visitedIndex) + direction;
-  if (target < 0 || target >= static_cast<long long>(state.visited.size())) return;
-  state.visitedIndex = static_cast<std::size_t>(target);
-  applyVisited(state.scene.layers.front(), state.visited[state.visitedIndex]);
+  if (state.panels.explore.visited.empty() || state.document.scene.layers.empty()) return;
+  const auto target = static_cast<long long>(state.panels.explore.visitedIndex) + direction;
+  if (target < 0 || target >= static_cast<long long>(state.panels.explore.visited.size())) return;
+  state.panels.explore.visitedIndex = static_cast<std::size_t>(target);
+  applyVisited(state.document.scene.layers.front(), state.panels.explore.visited[state.panels.explore.visitedIndex]);
+  state.document.edited(core::Affects::Pattern);
   // The "found:" line is the one of the pattern now shown.
-  if (state.visitedIndex < state.visitedMessages.size())
-    state.searchMessage = state.visitedMessages[state.visitedIndex];
+  if (state.panels.explore.visitedIndex < state.panels.explore.visitedMessages.size())
+    state.panels.explore.searchMessage = state.panels.explore.visitedMessages[state.panels.explore.visitedIndex];
 }
 
 }  // namespace voxflame::app::panels

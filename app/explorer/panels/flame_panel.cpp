@@ -65,7 +65,8 @@ void patternKindChoice(ExplorerState& state, std::size_t index, const std::strin
         layer.julia = {};
         if (layer.color.mode == core::ColorMode::Index) layer.color.mode = core::ColorMode::Speed;
       }
-      state.selectedXform[index] = 0;
+      state.panels.pattern.selectedXform[index] = 0;
+      state.document.edited(core::Affects::Pattern);
     }
     ImGui::EndCombo();
   }
@@ -102,57 +103,64 @@ void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3&
   std::array<double, 12>& m = affine.m;
   double translate[3] = {m[3], m[7], m[11]};
   const double minT = -3.0, maxT = 3.0;
-  if (ImGui::SliderScalarN("translate", ImGuiDataType_Double, translate, 3, &minT, &maxT, "%.3f", kClamp))
+  if (reportEdit(state,
+                 ImGui::SliderScalarN("translate", ImGuiDataType_Double, translate, 3, &minT, &maxT, "%.3f", kClamp),
+                 core::Affects::Pattern))
     m[3] = translate[0], m[7] = translate[1], m[11] = translate[2];
   probe(state, scope + "translate");
 
   const std::string rotateId = scope + "rotate";
-  const bool rotatingThis = state.rotatingId == rotateId;
+  const bool rotatingThis = state.panels.pattern.rotatingId == rotateId;
   double shown[3] = {0.0, 0.0, 0.0};
-  if (rotatingThis) std::copy(std::begin(state.rotateAngles), std::end(state.rotateAngles), shown);
+  if (rotatingThis)
+    std::copy(std::begin(state.panels.pattern.rotateAngles), std::end(state.panels.pattern.rotateAngles), shown);
   const double minDeg = -180.0, maxDeg = 180.0;
   // Relative: each drag turns the map from where it is, so the handle reads +0° before and after one.
   const bool turned =
       ImGui::SliderScalarN("turn by", ImGuiDataType_Double, shown, 3, &minDeg, &maxDeg, "%+.0f°", kClamp);
   probe(state, rotateId);
   if (ImGui::IsItemActivated()) {
-    state.rotatingId = rotateId;
-    state.rotateStart = m;
+    state.panels.pattern.rotatingId = rotateId;
+    state.panels.pattern.rotateStart = m;
   }
-  if (turned && state.rotatingId == rotateId) {
-    std::copy(std::begin(shown), std::end(shown), state.rotateAngles);
+  if (reportEdit(state, turned && state.panels.pattern.rotatingId == rotateId, core::Affects::Pattern)) {
+    std::copy(std::begin(shown), std::end(shown), state.panels.pattern.rotateAngles);
     const std::array<double, 9> r = eulerRotation(shown);
     for (int row = 0; row < 3; ++row)
       for (int col = 0; col < 3; ++col) {
         double sum = 0.0;
         for (int k = 0; k < 3; ++k)
-          sum += state.rotateStart[static_cast<std::size_t>(row * 4 + k)] * r[static_cast<std::size_t>(k * 3 + col)];
+          sum += state.panels.pattern.rotateStart[static_cast<std::size_t>(row * 4 + k)] *
+                 r[static_cast<std::size_t>(k * 3 + col)];
         m[static_cast<std::size_t>(row * 4 + col)] = sum;
       }
   }
-  if (ImGui::IsItemDeactivated() && state.rotatingId == rotateId) {
-    state.rotatingId.clear();
-    if (m != state.rotateStart) {
-      state.turnedId = rotateId;
-      std::copy(std::begin(state.rotateAngles), std::end(state.rotateAngles), state.turnedAngles.begin());
-      state.turnedResult = m;
+  if (ImGui::IsItemDeactivated() && state.panels.pattern.rotatingId == rotateId) {
+    state.panels.pattern.rotatingId.clear();
+    if (m != state.panels.pattern.rotateStart) {
+      state.panels.pattern.turnedId = rotateId;
+      std::copy(std::begin(state.panels.pattern.rotateAngles), std::end(state.panels.pattern.rotateAngles),
+                state.panels.pattern.turnedAngles.begin());
+      state.panels.pattern.turnedResult = m;
     }
-    std::fill(std::begin(state.rotateAngles), std::end(state.rotateAngles), 0.0);
+    std::fill(std::begin(state.panels.pattern.rotateAngles), std::end(state.panels.pattern.rotateAngles), 0.0);
   }
   if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
     ImGui::SetTooltip(
         "relative: drag to turn the map by so many degrees about its own x, y and z axes.\n"
         "Each drag starts at +0° and the turn stays when you let go (Ctrl+Z undoes it).");
-  if (state.turnedId == rotateId && state.turnedResult == m && !rotatingThis) {
-    dimText("turned by %+.0f°, %+.0f°, %+.0f° (Ctrl+Z undoes)", state.turnedAngles[0], state.turnedAngles[1],
-            state.turnedAngles[2]);
+  if (state.panels.pattern.turnedId == rotateId && state.panels.pattern.turnedResult == m && !rotatingThis) {
+    dimText("turned by %+.0f°, %+.0f°, %+.0f° (Ctrl+Z undoes)", state.panels.pattern.turnedAngles[0],
+            state.panels.pattern.turnedAngles[1], state.panels.pattern.turnedAngles[2]);
     probe(state, scope + "turned");
   }
 
   double scales[3] = {columnLength(m, 0), columnLength(m, 1), columnLength(m, 2)};
   const double minS = 0.01, maxS = 2.0;
   // Absolute, unlike the turn: each value is the length of one axis of the map, and stays as dragged.
-  if (ImGui::SliderScalarN("axis lengths", ImGuiDataType_Double, scales, 3, &minS, &maxS, "%.3f", kClamp))
+  if (reportEdit(state,
+                 ImGui::SliderScalarN("axis lengths", ImGuiDataType_Double, scales, 3, &minS, &maxS, "%.3f", kClamp),
+                 core::Affects::Pattern))
     for (int col = 0; col < 3; ++col) {
       const double length = columnLength(m, col);
       const auto c = static_cast<std::size_t>(col);
@@ -172,8 +180,10 @@ void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3&
     static constexpr const char* kRows[] = {"x' = x y z 1", "y' = x y z 1", "z' = x y z 1"};
     const double minV = -100.0, maxV = 100.0;
     for (int row = 0; row < 3; ++row) {
-      ImGui::DragScalarN(kRows[row], ImGuiDataType_Double, &m[static_cast<std::size_t>(row * 4)], 4, 0.002f, &minV,
-                         &maxV, "%.3f", kClamp);
+      reportEdit(state,
+                 ImGui::DragScalarN(kRows[row], ImGuiDataType_Double, &m[static_cast<std::size_t>(row * 4)], 4, 0.002f,
+                                    &minV, &maxV, "%.3f", kClamp),
+                 core::Affects::Pattern);
       probe(state, scope + "row" + std::to_string(row));
     }
     ImGui::TreePop();
@@ -192,8 +202,10 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
     // The weight slider is labelled with the variation's name; its formula is the tooltip.
     const double minW = -2.0, maxW = 2.0;
     ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
-    ImGui::SliderScalar((term.name + "##weight").c_str(), ImGuiDataType_Double, &term.weight, &minW, &maxW,
-                        "weight %.3f", kClamp);
+    reportEdit(state,
+               ImGui::SliderScalar((term.name + "##weight").c_str(), ImGuiDataType_Double, &term.weight, &minW, &maxW,
+                                   "weight %.3f", kClamp),
+               core::Affects::Pattern);
     probe(state, vscope + "weight");
     if (ImGui::IsItemHovered() && !ImGui::IsItemActive() && info) ImGui::SetTooltip("%s", info->formula.c_str());
     ImGui::SameLine();
@@ -207,16 +219,21 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
         ImGui::PushID(static_cast<int>(p));
         if (param.integer) {
           int value = static_cast<int>(std::lround(term.params[p]));
-          if (ImGui::SliderInt(label.c_str(), &value, static_cast<int>(std::ceil(param.sliderMin)),
-                               static_cast<int>(std::floor(param.sliderMax)), "%d", kClamp))
+          if (reportEdit(state,
+                         ImGui::SliderInt(label.c_str(), &value, static_cast<int>(std::ceil(param.sliderMin)),
+                                          static_cast<int>(std::floor(param.sliderMax)), "%d", kClamp),
+                         core::Affects::Pattern))
             term.params[p] = value;
         } else {
-          ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &term.params[p], &param.sliderMin, &param.sliderMax,
-                              "%.3f", kClamp);
+          reportEdit(state,
+                     ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &term.params[p], &param.sliderMin,
+                                         &param.sliderMax, "%.3f", kClamp),
+                     core::Affects::Pattern);
         }
         probe(state, vscope + param.name);
         if (ImGui::BeginPopupContextItem()) {
-          if (ImGui::Selectable("Reset to default")) term.params[p] = param.defaultValue;
+          if (reportEdit(state, ImGui::Selectable("Reset to default"), core::Affects::Pattern))
+            term.params[p] = param.defaultValue;
           ImGui::EndPopup();
         }
         if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
@@ -227,18 +244,19 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
     }
     ImGui::PopID();
   }
-  if (removeIndex < xform.variations.size())
+  if (reportEdit(state, removeIndex < xform.variations.size(), core::Affects::Pattern))
     xform.variations.erase(xform.variations.begin() + static_cast<std::ptrdiff_t>(removeIndex));
 
   ImGui::BeginDisabled(xform.variations.size() >= core::kMaxXformVariations);
   if (ImGui::BeginCombo("add variation", "choose…", ImGuiComboFlags_HeightLarge)) {
     if (ImGui::IsWindowAppearing()) {
-      state.variationFilter[0] = '\0';
+      state.panels.pattern.variationFilter[0] = '\0';
       takeKeyboard(state);
     }
-    ImGui::InputTextWithHint("##variationfilter", "filter", state.variationFilter, sizeof state.variationFilter);
-    noteTyped(state, "variation filter", state.variationFilter);
-    const std::string filter = lowercase(state.variationFilter);
+    ImGui::InputTextWithHint("##variationfilter", "filter", state.panels.pattern.variationFilter,
+                             sizeof state.panels.pattern.variationFilter);
+    noteTyped(state, "variation filter", state.panels.pattern.variationFilter);
+    const std::string filter = lowercase(state.panels.pattern.variationFilter);
     for (const core::VariationInfo& info : core::variationCatalogue()) {
       if (!filter.empty() && lowercase(info.name).find(filter) == std::string::npos) continue;
       const bool chosen = ImGui::Selectable(info.name.c_str());
@@ -247,6 +265,7 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
       if (chosen) {
         // A new term starts small, so adding one bends the flame rather than replacing it.
         xform.variations.push_back({info.name, xform.variations.empty() ? 1.0 : 0.25, info.defaultParams()});
+        state.document.edited(core::Affects::Pattern);
       }
     }
     ImGui::EndCombo();
@@ -286,7 +305,7 @@ std::pair<std::size_t, std::size_t> xaosColumnPage(ExplorerState& state, std::si
     return "to " + std::to_string(first + 1) + "–" + std::to_string(std::min(count, first + kXaosColumnsPerPage));
   };
   const std::size_t pages = (count + kXaosColumnsPerPage - 1) / kXaosColumnsPerPage;
-  std::size_t& page = state.xaosColumnPage[index];
+  std::size_t& page = state.panels.pattern.xaosColumnPage[index];
   page = std::min(page, pages - 1);  // the flame may have lost transforms since
   if (ImGui::BeginCombo("columns", pageLabel(page).c_str())) {
     for (std::size_t p = 0; p < pages; ++p) {
@@ -344,7 +363,7 @@ void xaosMatrix(ExplorerState& state, std::size_t index, const std::string& scop
         ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, ImGui::GetColorU32(ImGuiCol_Header));
       ImGui::TableNextColumn();
       ImGui::BeginDisabled(row.xaos.empty());
-      if (ImGui::SmallButton("reset")) row.xaos.clear();
+      if (reportEdit(state, ImGui::SmallButton("reset"), core::Affects::Pattern)) row.xaos.clear();
       probe(state, scope + "xaos reset " + fromName);
       ImGui::EndDisabled();
       for (std::size_t to = firstColumn; to < endColumn; ++to) {
@@ -352,7 +371,10 @@ void xaosMatrix(ExplorerState& state, std::size_t index, const std::string& scop
         ImGui::PushID(static_cast<int>(to));
         double factor = xaosFactor(row, to);
         ImGui::SetNextItemWidth(-FLT_MIN);
-        if (ImGui::DragScalar("##factor", ImGuiDataType_Double, &factor, 0.01f, &kXaosMin, &kXaosMax, "%.2f", kClamp)) {
+        if (reportEdit(state,
+                       ImGui::DragScalar("##factor", ImGuiDataType_Double, &factor, 0.01f, &kXaosMin, &kXaosMax, "%.2f",
+                                         kClamp),
+                       core::Affects::Pattern)) {
           if (row.xaos.size() <= to) row.xaos.resize(to + 1, 1.0);
           row.xaos[to] = factor;
         }
@@ -371,7 +393,7 @@ void xaosMatrix(ExplorerState& state, std::size_t index, const std::string& scop
   const bool anyXaos =
       std::any_of(flame.xforms.begin(), flame.xforms.end(), [](const core::FlameXform& x) { return !x.xaos.empty(); });
   ImGui::BeginDisabled(!anyXaos);
-  if (button(state, scope, "Reset xaos"))
+  if (reportEdit(state, button(state, scope, "Reset xaos"), core::Affects::Pattern))
     for (core::FlameXform& x : flame.xforms) x.xaos.clear();
   ImGui::EndDisabled();
   ImGui::TreePop();
@@ -385,7 +407,7 @@ void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXfor
   fieldWidget(state, scope, xform, core::xformFields(), "color_speed");
   fieldWidget(state, scope, xform, core::xformFields(), "opacity");
   affineEditor(state, scope, xform.affine);
-  ImGui::Checkbox("post-affine", &xform.hasPost);
+  reportEdit(state, ImGui::Checkbox("post-affine", &xform.hasPost), core::Affects::Pattern);
   probe(state, scope + "post-affine");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("a second affine map applied after the variations");
   if (xform.hasPost) {
@@ -401,7 +423,7 @@ void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXfor
 }
 
 void flameEditor(ExplorerState& state, std::size_t index, const std::string& scope, core::FlameGenome& flame) {
-  int& selected = state.selectedXform[index];
+  int& selected = state.panels.pattern.selectedXform[index];
   if (selected >= static_cast<int>(flame.xforms.size()) || (selected < 0 && !flame.hasFinal)) selected = 0;
   // The transform selector: one button per transform, then the final one.
   dimText("transform");
@@ -421,13 +443,13 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
   }
   const bool full = flame.xforms.size() >= core::kMaxFlameXforms;
   ImGui::BeginDisabled(full);
-  if (button(state, scope, "Add transform")) {
-    flame.xforms.push_back(
-        core::randomTransform(state.searchSeed++, std::fmod(0.37 * static_cast<double>(flame.xforms.size()), 1.0)));
+  if (reportEdit(state, button(state, scope, "Add transform"), core::Affects::Pattern)) {
+    flame.xforms.push_back(core::randomTransform(state.panels.explore.searchSeed++,
+                                                 std::fmod(0.37 * static_cast<double>(flame.xforms.size()), 1.0)));
     selected = static_cast<int>(flame.xforms.size()) - 1;
   }
   ImGui::SameLine();
-  if (button(state, scope, "Duplicate") && selected >= 0) {
+  if (button(state, scope, "Duplicate") && reportEdit(state, selected >= 0, core::Affects::Pattern)) {
     const auto at = static_cast<std::size_t>(selected);
     flame.xforms.insert(flame.xforms.begin() + selected + 1, flame.xforms[at]);
     // Xaos columns follow the transforms: the copy is followed as often as its original.
@@ -438,7 +460,7 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(selected >= 0 && flame.xforms.size() <= 1);
-  if (button(state, scope, "Remove")) {
+  if (reportEdit(state, button(state, scope, "Remove"), core::Affects::Pattern)) {
     if (selected < 0) {
       flame.hasFinal = false;
       selected = 0;
@@ -450,7 +472,7 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
     }
   }
   ImGui::EndDisabled();
-  if (ImGui::Checkbox("final transform", &flame.hasFinal)) {
+  if (reportEdit(state, ImGui::Checkbox("final transform", &flame.hasFinal), core::Affects::Pattern)) {
     if (flame.hasFinal) {
       if (flame.finalXform.variations.empty()) flame.finalXform.variations = {{"linear", 1.0, {}}};
       selected = -1;

@@ -58,32 +58,36 @@ core::Scene flatViewScene(const core::Scene& scene) {
 }
 
 void updateFlatView(ExplorerState& state) {
-  if (!state.flatView) {
+  if (!state.panels.flat.on) {
     // Runs every frame while the view is off: costs nothing unless a render was under way or kept.
-    if (state.flatRender.busy()) state.flatRender.cancel();
-    state.flatRendered.layers.clear();  // so that turning the view on renders afresh
+    if (state.services.flatRender.busy()) state.services.flatRender.cancel();
+    state.panels.flat.rendered.layers.clear();  // so that turning the view on renders afresh
+    state.panels.flat.checkedRevision = ~std::uint64_t{0};
     return;
   }
-  if (state.flatRender.ready()) {
+  if (state.services.flatRender.ready()) {
     try {
-      state.flatImage = *state.flatRender.take();
-      state.flatImagePending = true;
-      state.flatMessage.clear();
+      state.frame.flatImage = *state.services.flatRender.take();
+      state.frame.flatImagePending = true;
+      state.panels.flat.message.clear();
     } catch (const std::exception& e) {
-      state.flatMessage = e.what();
+      state.panels.flat.message = e.what();
     }
   }
-  const core::Scene shown = flatViewScene(state.scene);
+  // Only an edit can change what the flat view shows: no copy of the layer is made on the frames between.
+  if (state.panels.flat.checkedRevision == state.document.revisions().any) return;
+  state.panels.flat.checkedRevision = state.document.revisions().any;
+  const core::Scene shown = flatViewScene(state.document.scene);
   if (shown.layers.empty()) {
-    state.flatMessage = "the flat view shows flame layers; this scene has none";
+    state.panels.flat.message = "the flat view shows flame layers; this scene has none";
     return;
   }
-  if (shown == state.flatRendered) return;
-  state.flatRendered = shown;
+  if (shown == state.panels.flat.rendered) return;
+  state.panels.flat.rendered = shown;
   core::FlatRenderOptions options;
   options.width = std::min(shown.flat.width, kFlatViewMaxWidth);
   options.quality = std::min(shown.flat.quality, kFlatViewMaxQuality);
-  state.flatRender.start([shown, options](std::stop_token stop) mutable {
+  state.services.flatRender.start([shown, options](std::stop_token stop) mutable {
     std::atomic<bool> cancel{false};
     const std::stop_callback onStop(stop, [&cancel] { cancel = true; });
     options.cancel = &cancel;
@@ -97,22 +101,22 @@ void updateFlatView(ExplorerState& state) {
 
 // The flat image over the whole window behind the panels, letterboxed to its aspect.
 void drawFlatView(const ExplorerState& state) {
-  if (!state.flatView) return;
+  if (!state.panels.flat.on) return;
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   draw->AddRectFilled(ImVec2(0.0f, 0.0f), display, IM_COL32(0, 0, 0, 255));
-  if (state.flatTexture && state.flatTextureWidth > 0 && state.flatTextureHeight > 0) {
-    const float fit = std::min(display.x / static_cast<float>(state.flatTextureWidth),
-                               display.y / static_cast<float>(state.flatTextureHeight));
-    const ImVec2 size(fit * static_cast<float>(state.flatTextureWidth),
-                      fit * static_cast<float>(state.flatTextureHeight));
+  if (state.frame.flatTexture && state.frame.flatTextureWidth > 0 && state.frame.flatTextureHeight > 0) {
+    const float fit = std::min(display.x / static_cast<float>(state.frame.flatTextureWidth),
+                               display.y / static_cast<float>(state.frame.flatTextureHeight));
+    const ImVec2 size(fit * static_cast<float>(state.frame.flatTextureWidth),
+                      fit * static_cast<float>(state.frame.flatTextureHeight));
     const ImVec2 corner(0.5f * (display.x - size.x), 0.5f * (display.y - size.y));
-    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(state.flatTexture)), corner,
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(state.frame.flatTexture)), corner,
                    ImVec2(corner.x + size.x, corner.y + size.y));
   }
-  const char* text = !state.flatMessage.empty() ? state.flatMessage.c_str()
-                     : state.flatRender.busy()  ? "flat view: rendering…"
-                                                : "flat view (as flam3 renders it)";
+  const char* text = !state.panels.flat.message.empty() ? state.panels.flat.message.c_str()
+                     : state.services.flatRender.busy() ? "flat view: rendering…"
+                                                        : "flat view (as flam3 renders it)";
   draw->AddText(ImVec2(12.0f, display.y - 48.0f), IM_COL32(220, 220, 220, 255), text);
 }
 

@@ -38,12 +38,13 @@ namespace voxflame::app::panels {
 // Panels.
 
 void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core::AttractorInfo& info) {
-  if (std::exchange(state.focusAttractorFilter, false)) takeKeyboard(state);
-  const bool enter = ImGui::InputTextWithHint("##filter", "filter attractors (Ctrl+F)", state.attractorFilter,
-                                              sizeof state.attractorFilter, ImGuiInputTextFlags_EnterReturnsTrue);
+  if (std::exchange(state.panels.pattern.focusAttractorFilter, false)) takeKeyboard(state);
+  const bool enter =
+      ImGui::InputTextWithHint("##filter", "filter attractors (Ctrl+F)", state.panels.pattern.attractorFilter,
+                               sizeof state.panels.pattern.attractorFilter, ImGuiInputTextFlags_EnterReturnsTrue);
   probe(state, "attractor/filter");
-  noteTyped(state, "attractor filter", state.attractorFilter);
-  const std::string filter = lowercase(state.attractorFilter);
+  noteTyped(state, "attractor filter", state.panels.pattern.attractorFilter);
+  const std::string filter = lowercase(state.panels.pattern.attractorFilter);
   // Every word of the filter, anywhere in the id or the name: "sprott quadratic" finds
   // sprott_quadratic, "Sprott's 3D quadratic map".
   std::vector<std::string> words;
@@ -63,6 +64,7 @@ void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core
     layer.params = candidate.defaultParams();
     layer.step = candidate.defaultStep;
     layer.integrator = candidate.defaultIntegrator;
+    state.document.edited(core::Affects::Pattern);
   };
   // Enter takes the first match, so typing a name and Enter is enough.
   if (!filter.empty()) {
@@ -74,7 +76,7 @@ void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core
       dimText("Enter: %s", first->name.c_str());
       if (enter) {
         choose(*first);
-        state.attractorFilter[0] = '\0';
+        state.panels.pattern.attractorFilter[0] = '\0';
       }
     }
   }
@@ -114,7 +116,8 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
   int mode = static_cast<int>(color.mode);
   const char* modes =
       chaosGame ? "speed\0curvature\0time\0axis\0distance\0index\0" : "speed\0curvature\0time\0axis\0distance\0";
-  if (ImGui::Combo("colour by", &mode, modes)) color.mode = static_cast<core::ColorMode>(mode);
+  if (reportEdit(state, ImGui::Combo("colour by", &mode, modes), core::Affects::Pattern))
+    color.mode = static_cast<core::ColorMode>(mode);
   probe(state, scope + "colour by");
   if (color.mode == core::ColorMode::Time) fieldWidget(state, scope, color, core::colorFields(), "period");
   if (color.mode == core::ColorMode::Axis) fieldWidget(state, scope, color, core::colorFields(), "axis");
@@ -129,6 +132,7 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
       if (ImGui::Selectable(palette.name.c_str(), palette.name == color.palette)) {
         color.palette = palette.name;
         color.gradient = core::paletteStops(palette.name);
+        state.document.edited(core::Affects::Pattern);
       }
       ImGui::SameLine(nameWidth);
       gradientPreview(core::paletteStops(palette.name), std::max(20.0f, ImGui::GetContentRegionAvail().x),
@@ -182,6 +186,7 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
     edited = true;
   }
   if (edited) {
+    state.document.edited(core::Affects::Pattern);
     color.palette.clear();
     // Stops stay in position order (the preset's order), except while one is being dragged past another.
     if (!ImGui::IsAnyItemActive())
@@ -192,7 +197,9 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
 
 void juliaEditor(ExplorerState& state, const std::string& scope, core::QuaternionJuliaSettings& julia) {
   static constexpr const char* kComponents[] = {"c (1)", "c (i)", "c (j)", "c (k)"};
-  for (int i = 0; i < 4; ++i) slider(state, scope, kComponents[i], julia.c[i], -1.5, 1.5, kClamp, "%.4f");
+  for (int i = 0; i < 4; ++i)
+    reportEdit(state, slider(state, scope, kComponents[i], julia.c[i], -1.5, 1.5, kClamp, "%.4f"),
+               core::Affects::Pattern);
   fieldWidget(state, scope, julia, core::juliaFields(), "view");
   fieldWidget(state, scope, julia, core::juliaFields(), "turn_deg");
   if (julia.view == core::QuaternionView::Slice) {
@@ -210,13 +217,17 @@ void attractorEditor(ExplorerState& state, const std::string& scope, core::Patte
     const core::ParamInfo& param = current.params[p];
     // The slider's range is the catalogue's; Ctrl+click types any value the preset reader allows
     // (clamped to it here: ImGui can only clamp to the slider's range), right-click resets it.
-    if (slider(state, scope, param.name.c_str(), layer.params[p], param.sliderMin, param.sliderMax, 0, "%.4f"))
+    if (reportEdit(
+            state,
+            slider(state, scope, param.name.c_str(), layer.params[p], param.sliderMin, param.sliderMax, 0, "%.4f"),
+            core::Affects::Pattern))
       layer.params[p] = std::isfinite(layer.params[p]) ? std::clamp(layer.params[p], -core::kAttractorParameterLimit,
                                                                     core::kAttractorParameterLimit)
                                                        : param.defaultValue;
     markIfKeyed(state, valuePath(scope, "params/" + param.name), scope + param.name);
     if (ImGui::BeginPopupContextItem()) {
-      if (ImGui::Selectable("Reset to default")) layer.params[p] = param.defaultValue;
+      if (reportEdit(state, ImGui::Selectable("Reset to default"), core::Affects::Pattern))
+        layer.params[p] = param.defaultValue;
       ImGui::EndPopup();
     }
     if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
@@ -224,11 +235,11 @@ void attractorEditor(ExplorerState& state, const std::string& scope, core::Patte
   }
   if (current.kind == core::AttractorKind::Flow) {
     int integrator = layer.integrator == core::Integrator::RK4 ? 1 : 0;
-    if (ImGui::Combo("integrator", &integrator, "Euler\0Runge-Kutta 4\0"))
+    if (reportEdit(state, ImGui::Combo("integrator", &integrator, "Euler\0Runge-Kutta 4\0"), core::Affects::Pattern))
       layer.integrator = integrator == 1 ? core::Integrator::RK4 : core::Integrator::Euler;
     fieldWidget(state, scope, layer, core::layerFields(), "step");
   }
-  if (button(state, scope, "Reset parameters")) {
+  if (reportEdit(state, button(state, scope, "Reset parameters"), core::Affects::Pattern)) {
     layer.params = current.defaultParams();
     layer.step = current.defaultStep;
     layer.integrator = current.defaultIntegrator;
@@ -236,7 +247,7 @@ void attractorEditor(ExplorerState& state, const std::string& scope, core::Patte
 }
 
 void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
-  core::PatternLayer& layer = state.scene.layers[index];
+  core::PatternLayer& layer = state.document.scene.layers[index];
   const std::string scope = "layer" + std::to_string(index) + "/";
   const core::PatternKind kindBefore = layer.kind;
   patternKindChoice(state, index, scope, layer);
@@ -246,7 +257,7 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
       attractorEditor(state, scope, layer);
       break;
     case core::PatternKind::Flame:
-      ImGui::Checkbox("flat view (as flam3 renders it)", &state.flatView);
+      ImGui::Checkbox("flat view (as flam3 renders it)", &state.panels.flat.on);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "The flame in 2D at its own framing (the flame file's size, centre, scale, zoom) with\n"
@@ -257,7 +268,7 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
       juliaEditor(state, scope, layer.julia);
       break;
   }
-  if (state.scene.layers.size() > 1) {
+  if (state.document.scene.layers.size() > 1) {
     if (layer.kind == core::PatternKind::Attractor) ImGui::SameLine();  // beside "Reset parameters"
     if (button(state, scope, "Remove layer")) removeThis = true;
     fieldWidget(state, scope, layer, core::layerFields(), "weight");
@@ -276,7 +287,10 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
       ImGui::PushID(static_cast<int>(c));
       double angles[3] = {copies[c].x, copies[c].y, copies[c].z};
       const std::string label = "copy " + std::to_string(c + 1);
-      if (ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Double, angles, 3, &minDeg, &maxDeg, "%.0f°", kClamp))
+      if (reportEdit(
+              state,
+              ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Double, angles, 3, &minDeg, &maxDeg, "%.0f°", kClamp),
+              core::Affects::Pattern))
         copies[c] = glm::dvec3(angles[0], angles[1], angles[2]);
       probe(state, scope + label);
       ImGui::SameLine();
@@ -284,8 +298,10 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
       probe(state, scope + label + " remove");
       ImGui::PopID();
     }
-    if (removeCopy < copies.size()) copies.erase(copies.begin() + static_cast<std::ptrdiff_t>(removeCopy));
-    if (copies.size() < core::kMaxLayerCopies && button(state, scope, "Add copy")) {
+    if (reportEdit(state, removeCopy < copies.size(), core::Affects::Pattern))
+      copies.erase(copies.begin() + static_cast<std::ptrdiff_t>(removeCopy));
+    if (copies.size() < core::kMaxLayerCopies &&
+        reportEdit(state, button(state, scope, "Add copy"), core::Affects::Pattern)) {
       // Each new copy turns a quarter further about the next axis, so it lands somewhere new.
       const auto n = static_cast<int>(copies.size());
       glm::dvec3 angles(0.0);
@@ -311,11 +327,11 @@ void patternWindow(ExplorerState& state, float scale) {
   ImGui::SetNextWindowSizeConstraints(ImVec2(260 * scale, height), ImVec2(0.4f * io.DisplaySize.x, height));
   // Side panels stay behind the notice and popups even when clicked.
   ImGui::Begin("Pattern", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoMove);
-  state.layout.left = ImGui::IsWindowCollapsed() ? 0.0f : ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
+  state.frame.layout.left = ImGui::IsWindowCollapsed() ? 0.0f : ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
   ImGui::PushItemWidth(-110 * scale);
-  std::size_t removeIndex = state.scene.layers.size();
-  for (std::size_t li = 0; li < state.scene.layers.size(); ++li) {
-    const core::PatternLayer& shown = state.scene.layers[li];
+  std::size_t removeIndex = state.document.scene.layers.size();
+  for (std::size_t li = 0; li < state.document.scene.layers.size(); ++li) {
+    const core::PatternLayer& shown = state.document.scene.layers[li];
     const std::string what = shown.kind == core::PatternKind::Attractor ? core::attractorOrThrow(shown.attractor).name
                              : shown.kind == core::PatternKind::Flame
                                  ? "flame (" + std::to_string(shown.flame.xforms.size()) + " transforms)"
@@ -329,12 +345,13 @@ void patternWindow(ExplorerState& state, float scale) {
     }
     ImGui::PopID();
   }
-  if (removeIndex < state.scene.layers.size())
-    state.scene.layers.erase(state.scene.layers.begin() + static_cast<std::ptrdiff_t>(removeIndex));
-  if (state.scene.layers.size() < 8 && button(state, "", "Add layer")) {
+  if (reportEdit(state, removeIndex < state.document.scene.layers.size(), core::Affects::Pattern))
+    state.document.scene.layers.erase(state.document.scene.layers.begin() + static_cast<std::ptrdiff_t>(removeIndex));
+  if (state.document.scene.layers.size() < 8 &&
+      reportEdit(state, button(state, "", "Add layer"), core::Affects::Pattern)) {
     // A second pattern starts as a different attractor at half weight, coloured apart.
     core::PatternLayer layer;
-    layer.attractor = state.scene.layers.front().attractor == "aizawa" ? "thomas" : "aizawa";
+    layer.attractor = state.document.scene.layers.front().attractor == "aizawa" ? "thomas" : "aizawa";
     const core::AttractorInfo& info = core::attractorOrThrow(layer.attractor);
     layer.params = info.defaultParams();
     layer.step = info.defaultStep;
@@ -342,45 +359,51 @@ void patternWindow(ExplorerState& state, float scale) {
     layer.weight = 0.5;
     layer.color.palette = core::namedPalettes().back().name;
     layer.color.gradient = core::paletteStops(layer.color.palette);
-    state.scene.layers.push_back(layer);
+    state.document.scene.layers.push_back(layer);
   }
 
   if (ImGui::CollapsingHeader("Explore", ImGuiTreeNodeFlags_DefaultOpen)) {
     if (button(state, "", "Search (F3)")) startSearch(state, 0.1, true);
-    if (ImGui::IsItemHovered() && !state.scene.layers.empty() && state.scene.layers.front().isChaosGame())
+    if (ImGui::IsItemHovered() && !state.document.scene.layers.empty() &&
+        state.document.scene.layers.front().isChaosGame())
       ImGui::SetTooltip("a new random pattern of this kind that fills its box");
     ImGui::SameLine();
-    if (button(state, "", "Mutate")) startSearch(state, state.mutateStrength, false);
+    if (button(state, "", "Mutate")) startSearch(state, state.panels.explore.mutateStrength, false);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1);
-    slider(state, "", "##strength", state.mutateStrength, 0.01, 1.0, ImGuiSliderFlags_Logarithmic, "strength %.2f");
-    ImGui::BeginDisabled(state.visited.empty() || state.visitedIndex == 0);
+    slider(state, "", "##strength", state.panels.explore.mutateStrength, 0.01, 1.0, ImGuiSliderFlags_Logarithmic,
+           "strength %.2f");
+    ImGui::BeginDisabled(state.panels.explore.visited.empty() || state.panels.explore.visitedIndex == 0);
     if (button(state, "", "< Back")) goVisited(state, -1);
     ImGui::EndDisabled();
     ImGui::SameLine();
-    ImGui::BeginDisabled(state.visited.empty() || state.visitedIndex + 1 >= state.visited.size());
+    ImGui::BeginDisabled(state.panels.explore.visited.empty() ||
+                         state.panels.explore.visitedIndex + 1 >= state.panels.explore.visited.size());
     if (button(state, "", "Forward >")) goVisited(state, +1);
     ImGui::EndDisabled();
     ImGui::SameLine();
-    if (state.visited.empty())
+    if (state.panels.explore.visited.empty())
       dimText("no history yet");
     else
-      dimText("%zu of %zu (Alt+Left/Right)", state.visitedIndex + 1, state.visited.size());
-    if (state.search.busy()) {
-      if (state.searchTried && state.searchStrength)
-        dimText("searching at strength %.2g: %d tried", state.searchStrength->load(), state.searchTried->load());
+      dimText("%zu of %zu (Alt+Left/Right)", state.panels.explore.visitedIndex + 1,
+              state.panels.explore.visited.size());
+    if (state.services.search.busy()) {
+      if (state.services.searchTried && state.services.searchStrength)
+        dimText("searching at strength %.2g: %d tried", state.services.searchStrength->load(),
+                state.services.searchTried->load());
       else
         dimText("searching…");
       if (button(state, "explore/", "Cancel search")) {
-        state.search.cancel();
-        state.searchMessage = state.searchTried
-                                  ? "search cancelled after " + std::to_string(state.searchTried->load()) + " tries"
-                                  : std::string("search cancelled");
+        state.services.search.cancel();
+        state.panels.explore.searchMessage =
+            state.services.searchTried
+                ? "search cancelled after " + std::to_string(state.services.searchTried->load()) + " tries"
+                : std::string("search cancelled");
       }
-    } else if (!state.searchMessage.empty())
-      ImGui::TextWrapped("%s", state.searchMessage.c_str());
+    } else if (!state.panels.explore.searchMessage.empty())
+      ImGui::TextWrapped("%s", state.panels.explore.searchMessage.c_str());
     // The message itself is the notice's, at the top of the view: one message, said once.
-    if (!state.session.escapeNote.empty()) {
+    if (!state.frame.session.escapeNote.empty()) {
       if (button(state, "", "Find a nearby one")) startSearch(state, 0.1, false);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("a bounded pattern close to this one (Mutate at strength 0.1)");
     }

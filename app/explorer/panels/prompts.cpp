@@ -52,8 +52,8 @@ bool beginModal(const char* title, float heightFraction, float width) {
 
 // Scenes left by a session that crashed or was killed: restore or discard, one at a time.
 void recoveryWindow(ExplorerState& state, float scale) {
-  if (state.recoverable.empty()) return;
-  const Recoverable& recoverable = state.recoverable.front();
+  if (state.services.recoverable.empty()) return;
+  const Recoverable& recoverable = state.services.recoverable.front();
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.35f * io.DisplaySize.y), ImGuiCond_Always,
                           ImVec2(0.5f, 0.5f));
@@ -63,18 +63,18 @@ void recoveryWindow(ExplorerState& state, float scale) {
     ImGui::TextWrapped("voxflame did not close normally last time. Its scene \"%s\" was autosaved.",
                        recoverable.scene->name.c_str());
     if (button(state, "recover/", "Restore")) {
-      state.scene = *recoverable.scene;
-      state.keyBase = state.scene;
+      state.document.replace(*recoverable.scene);
+      state.document.keyBase = state.document.scene;
       dismissRecoverable(recoverable);
-      state.recoverable.erase(state.recoverable.begin());
+      state.services.recoverable.erase(state.services.recoverable.begin());
     }
     ImGui::SameLine();
   } else {
     ImGui::TextColored(kErrorColor, "%s", recoverable.error.c_str());
   }
-  if (!state.recoverable.empty() && button(state, "recover/", "Discard")) {
-    dismissRecoverable(state.recoverable.front());
-    state.recoverable.erase(state.recoverable.begin());
+  if (!state.services.recoverable.empty() && button(state, "recover/", "Discard")) {
+    dismissRecoverable(state.services.recoverable.front());
+    state.services.recoverable.erase(state.services.recoverable.begin());
   }
   ImGui::End();
 }
@@ -82,8 +82,8 @@ void recoveryWindow(ExplorerState& state, float scale) {
 // "Which flame?": the flames of a file opened with several, by name (filtered by words), to import
 // one; Escape or Cancel imports none.
 void flameChoiceWindow(ExplorerState& state, float scale) {
-  if (!state.flameChoice) return;
-  ExplorerState::FlameChoice& choice = *state.flameChoice;
+  if (!state.panels.prompts.flameChoice) return;
+  PromptsState::FlameChoice& choice = *state.panels.prompts.flameChoice;
   if (!beginModal("Which flame?", 0.45f, 440 * scale)) return;
   ImGui::TextWrapped("%s holds %zu flames. Import which one?", choice.path.filename().string().c_str(),
                      choice.names.size());
@@ -111,14 +111,14 @@ void flameChoiceWindow(ExplorerState& state, float scale) {
       core::FlameImportOptions options;
       options.index = *chosen;
       core::Scene scene;
-      const core::FlameFileContents contents = importFlameScene(choice.path, state.scene, options, scene);
+      const core::FlameFileContents contents = importFlameScene(choice.path, state.document.scene, options, scene);
       applyImportedFlame(state, choice.path, contents, scene);
     } catch (const core::Error& e) {
-      state.notice = e.what();
+      state.panels.prompts.notice = e.what();
     }
   }
   if (chosen || cancel) {
-    state.flameChoice.reset();
+    state.panels.prompts.flameChoice.reset();
     ImGui::CloseCurrentPopup();
   }
   ImGui::EndPopup();
@@ -127,14 +127,15 @@ void flameChoiceWindow(ExplorerState& state, float scale) {
 // Quitting with unsaved changes: save them (as the user's preset of the document's name), throw
 // them away, or stay. S, D and Escape answer from the keyboard.
 void quitPromptWindow(ExplorerState& state, float scale) {
-  if (!state.quitPrompt) return;
+  if (!state.panels.prompts.quitPrompt) return;
   if (!beginModal("Unsaved changes", 0.4f, 420 * scale)) return;
-  ImGui::TextWrapped("\"%s\" has changes that are not saved. Save them before quitting?", state.scene.name.c_str());
+  ImGui::TextWrapped("\"%s\" has changes that are not saved. Save them before quitting?",
+                     state.document.scene.name.c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
   ImGui::TextWrapped(
       "Save keeps them as your preset \"%s\", replacing one of that name. S saves, D discards, "
       "Escape cancels.",
-      state.scene.name.c_str());
+      state.document.scene.name.c_str());
   ImGui::PopStyleColor();
   const bool typing = ImGui::GetIO().WantTextInput;
   const bool save = button(state, "quit/", "Save") || (!typing && ImGui::IsKeyPressed('S', false));
@@ -143,14 +144,14 @@ void quitPromptWindow(ExplorerState& state, float scale) {
   ImGui::SameLine();
   const bool cancel = button(state, "quit/", "Cancel") || ImGui::IsKeyPressed(kKeyEscape, false);
   if (save) {
-    state.requests.saveAs = state.scene.name;
-    state.requests.saveReplacing = true;
-    state.quitAfterSave = true;
+    state.frame.requests.saveAs = state.document.scene.name;
+    state.frame.requests.saveReplacing = true;
+    state.panels.prompts.quitAfterSave = true;
   } else if (discard) {
-    state.requests.quit = true;
+    state.frame.requests.quit = true;
   }
   if (save || discard || cancel) {
-    state.quitPrompt = false;
+    state.panels.prompts.quitPrompt = false;
     ImGui::CloseCurrentPopup();
   }
   ImGui::EndPopup();
@@ -164,11 +165,11 @@ void noticeWindow(ExplorerState& state, float scale) {
     if (!text.empty()) text += '\n';
     text += line;
   };
-  addLine(state.notice);
-  addLine(state.session.error);
-  if (!state.session.escapeNote.empty())
-    addLine(state.session.showingLastBounded ? state.session.escapeNote
-                                             : state.session.escapeNote + " — try Search (F3).");
+  addLine(state.panels.prompts.notice);
+  addLine(state.frame.session.error);
+  if (!state.frame.session.escapeNote.empty())
+    addLine(state.frame.session.showingLastBounded ? state.frame.session.escapeNote
+                                                   : state.frame.session.escapeNote + " — try Search (F3).");
   if (text.empty()) return;
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 12 * scale), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
@@ -181,7 +182,7 @@ void noticeWindow(ExplorerState& state, float scale) {
   ImGui::PushTextWrapPos(io.DisplaySize.x * 0.43f);
   ImGui::TextColored(kErrorColor, "%s", text.c_str());
   ImGui::PopTextWrapPos();
-  if (!state.notice.empty() && button(state, "notice/", "Dismiss")) state.notice.clear();
+  if (!state.panels.prompts.notice.empty() && button(state, "notice/", "Dismiss")) state.panels.prompts.notice.clear();
   ImGui::End();
 }
 

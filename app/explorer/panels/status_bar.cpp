@@ -57,10 +57,11 @@ std::string convergenceText(const SessionStatus& status) {
 }
 
 double frameWaitSeconds(const ExplorerState& state, bool viewResting, int restingFrames) {
-  if (state.exportStatus.state == ExportState::Running) return 0.1;
-  const bool busy = state.playing || state.search.busy() || state.analysis.busy() || state.flatRender.busy() ||
-                    state.flatImagePending || state.orbiting || state.panning;
-  if (busy || !viewResting || !state.session.resting || restingFrames < 3) return 0.0;
+  if (state.services.exportStatus.state == ExportState::Running) return 0.1;
+  const bool busy = state.panels.timeline.playing || state.services.search.busy() || state.services.analysis.busy() ||
+                    state.services.flatRender.busy() || state.frame.flatImagePending || state.panels.orbiting ||
+                    state.panels.panning;
+  if (busy || !viewResting || !state.frame.session.resting || restingFrames < 3) return 0.0;
   // Other threads do not wake the loop; this bounds how late it notices one that finished.
   return 0.5;
 }
@@ -78,13 +79,13 @@ void statusBar(ExplorerState& state, float scale) {
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
-  const core::AccumulatorStats& stats = state.session.stats;
-  const FrameMetrics& m = state.metrics;
+  const core::AccumulatorStats& stats = state.frame.session.stats;
+  const FrameMetrics& m = state.frame.metrics;
   // Words first: what is happening. The technical figures are one click (Stats) or a hover away.
-  if (state.session.buildingShape)
-    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "%s %.1f s", state.session.shapeStage.c_str(),
-                       state.session.shapeSeconds);
-  else if (const std::string convergence = convergenceText(state.session); !convergence.empty())
+  if (state.frame.session.buildingShape)
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "%s %.1f s", state.frame.session.shapeStage.c_str(),
+                       state.frame.session.shapeSeconds);
+  else if (const std::string convergence = convergenceText(state.frame.session); !convergence.empty())
     ImGui::TextUnformatted(convergence.c_str());
   char figures[400];
   std::snprintf(figures, sizeof figures,
@@ -92,32 +93,34 @@ void statusBar(ExplorerState& state, float scale) {
                 "%.1f ms  %d samples",
                 static_cast<double>(stats.points) * 1e-6, stats.pointsPerSecond * 1e-6, 100.0 * stats.insideFraction(),
                 static_cast<unsigned long long>(stats.escapes), m.fps, m.frameMs, m.worstFrameMs, m.uploadMs,
-                state.samples);
+                state.frame.samples);
   // While the pattern escapes, the figures are the last bounded pattern's (or none): say so.
-  std::string details = state.session.showingLastBounded ? std::string("last bounded pattern: ") + figures : figures;
+  std::string details =
+      state.frame.session.showingLastBounded ? std::string("last bounded pattern: ") + figures : figures;
   if (m.changeToFrameMs >= 0.0) {
     std::snprintf(figures, sizeof figures, "  |  edit→frame %.0f ms (%d frames)", m.changeToFrameMs,
                   m.changeToFrameFrames);
     details += figures;
   }
   // The analysis of an orbit that escapes may read as a fixed point: the escape is what is true.
-  if (!state.session.escapeNote.empty())
+  if (!state.frame.session.escapeNote.empty())
     details += "  |  escapes";
-  else if (!state.lyapunovText.empty())
-    details += "  |  " + state.lyapunovText;
-  if (ImGui::IsItemHovered() && !state.showStats) ImGui::SetTooltip("%s", details.c_str());
-  if ((state.session.converged || state.session.capped) && !state.session.buildingShape) {
+  else if (!state.panels.explore.lyapunovText.empty())
+    details += "  |  " + state.panels.explore.lyapunovText;
+  if (ImGui::IsItemHovered() && !state.panels.showStats) ImGui::SetTooltip("%s", details.c_str());
+  if ((state.frame.session.converged || state.frame.session.capped) && !state.frame.session.buildingShape) {
     ImGui::SameLine();
-    if (ImGui::SmallButton("Refine further")) state.requests.refineFurther = true;
+    if (ImGui::SmallButton("Refine further")) state.frame.requests.refineFurther = true;
     probe(state, "status/refine_further");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("go on from the %.0f points per voxel already there to twice as many",
-                        state.session.pointsPerVoxel);
+                        state.frame.session.pointsPerVoxel);
   }
   ImGui::SameLine();
-  if (ImGui::SmallButton(state.showStats ? "Hide stats###stats" : "Stats###stats")) state.showStats = !state.showStats;
+  if (ImGui::SmallButton(state.panels.showStats ? "Hide stats###stats" : "Stats###stats"))
+    state.panels.showStats = !state.panels.showStats;
   probe(state, "status/stats");
-  if (state.showStats) {
+  if (state.panels.showStats) {
     ImGui::SameLine();
     ImGui::TextColored(kDimColor, "%s", details.c_str());
   }

@@ -45,11 +45,13 @@ double timelineLength(const core::Scene& scene) {
 
 void showTime(ExplorerState& state, double seconds) {
   try {
-    state.scene = core::sceneAtTime(state.scene, seconds);
-    state.keyBase = state.scene;
+    // The moment's values differ from the last one's wherever a track is: what they affect is found
+    // by comparing the two (Document::replace).
+    state.document.replace(core::sceneAtTime(state.document.scene, seconds));
+    state.document.keyBase = state.document.scene;
   } catch (const core::Error& e) {
-    state.notice = e.what();
-    state.playing = false;
+    state.panels.prompts.notice = e.what();
+    state.panels.timeline.playing = false;
   }
 }
 
@@ -64,15 +66,15 @@ std::vector<double> keyTimes(const core::Scene& scene) {
 }
 
 void advancePlayback(ExplorerState& state) {
-  if (!state.playing) return;
-  const double length = timelineLength(state.scene);
-  double next = state.scene.animation.time + static_cast<double>(ImGui::GetIO().DeltaTime);
+  if (!state.panels.timeline.playing) return;
+  const double length = timelineLength(state.document.scene);
+  double next = state.document.scene.animation.time + static_cast<double>(ImGui::GetIO().DeltaTime);
   if (next > length) {
     // Play stops at the end unless the animation loops (its loop box).
-    if (core::animationLoops(state.scene) && length > 0.0)
+    if (core::animationLoops(state.document.scene) && length > 0.0)
       next = std::fmod(next, length);
     else
-      next = length, state.playing = false;
+      next = length, state.panels.timeline.playing = false;
   }
   showTime(state, next);
 }
@@ -121,9 +123,9 @@ void timelineWindow(ExplorerState& state, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
   // Docked under the picture, between the side panels, above the status line.
   const float statusHeight = statusBarHeight(scale);
-  const float left = state.layout.left, right = std::max(state.layout.right, left + 1.0f);
+  const float left = state.frame.layout.left, right = std::max(state.frame.layout.right, left + 1.0f);
   // Room for up to four animated values' rows; more scroll.
-  const auto rows = static_cast<float>(std::min<std::size_t>(state.scene.keyframes.size(), 4) + 1);
+  const auto rows = static_cast<float>(std::min<std::size_t>(state.document.scene.keyframes.size(), 4) + 1);
   const float height = 2 * ImGui::GetFrameHeightWithSpacing() + rows * ImGui::GetTextLineHeightWithSpacing() +
                        ImGui::GetFrameHeight() + 2 * ImGui::GetStyle().WindowPadding.y +
                        ImGui::GetTextLineHeightWithSpacing();
@@ -131,13 +133,13 @@ void timelineWindow(ExplorerState& state, float scale) {
   ImGui::SetNextWindowSize(ImVec2(right - left, height), ImGuiCond_Always);
   ImGui::Begin("Timeline", nullptr,
                ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-  state.layout.bottom = ImGui::GetWindowPos().y;
-  core::Scene& scene = state.scene;
+  state.frame.layout.bottom = ImGui::GetWindowPos().y;
+  core::Scene& scene = state.document.scene;
   const double length = timelineLength(scene);
-  if (button(state, "timeline/", state.playing ? "Pause" : "Play")) {
-    state.playing = !state.playing;
+  if (button(state, "timeline/", state.panels.timeline.playing ? "Pause" : "Play")) {
+    state.panels.timeline.playing = !state.panels.timeline.playing;
     // Play at the end starts over.
-    if (state.playing && scene.animation.time >= length - 1e-9) showTime(state, 0.0);
+    if (state.panels.timeline.playing && scene.animation.time >= length - 1e-9) showTime(state, 0.0);
   }
   ImGui::SameLine();
   const std::vector<double> times = keyTimes(scene);
@@ -159,15 +161,15 @@ void timelineWindow(ExplorerState& state, float scale) {
   if (button(state, "timeline/", "Key")) {
     try {
       // What changed since the time was last shown becomes keys; animated values always get one.
-      core::Scene animated = state.keyBase;
+      core::Scene animated = state.document.keyBase;
       animated.keyframes = scene.keyframes;
       animated.animation = scene.animation;
       const std::vector<core::KeyframeTrack> before = scene.keyframes;
-      scene = core::withKeyframeAt(animated, scene, now);
-      state.keyBase = scene;
-      state.timelineMessage = keyedText(before, scene.keyframes, now);
+      state.document.replace(core::withKeyframeAt(animated, scene, now));
+      state.document.keyBase = scene;
+      state.panels.timeline.timelineMessage = keyedText(before, scene.keyframes, now);
     } catch (const core::Error& e) {
-      state.notice = e.what();
+      state.panels.prompts.notice = e.what();
     }
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("keyframe every value you changed here (and every animated one)");
@@ -175,9 +177,11 @@ void timelineWindow(ExplorerState& state, float scale) {
   const bool keyHere = std::any_of(times.begin(), times.end(), [&](double t) { return std::abs(t - now) < 1e-6; });
   ImGui::BeginDisabled(!keyHere);
   if (button(state, "timeline/", "Delete key")) {
-    for (core::KeyframeTrack& track : scene.keyframes)
+    core::Scene without = scene;
+    for (core::KeyframeTrack& track : without.keyframes)
       std::erase_if(track.keys, [&](const core::Keyframe& key) { return std::abs(key.time - now) < 1e-6; });
-    std::erase_if(scene.keyframes, [](const core::KeyframeTrack& track) { return track.keys.empty(); });
+    std::erase_if(without.keyframes, [](const core::KeyframeTrack& track) { return track.keys.empty(); });
+    state.document.replace(without);
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
@@ -186,24 +190,29 @@ void timelineWindow(ExplorerState& state, float scale) {
   double duration = scene.animation.duration;
   if (ImGui::DragScalar("duration", ImGuiDataType_Double, &duration, 0.05f, &durationField.ui.min,
                         &durationField.ui.max, duration > 0.0 ? std::string(durationField.ui.format).c_str() : "auto",
-                        ImGuiSliderFlags_AlwaysClamp))
+                        ImGuiSliderFlags_AlwaysClamp)) {
     scene.animation.duration = duration;
+    state.document.edited(durationField.affects);
+  }
   ImGui::SameLine();
   ImGui::SetNextItemWidth(70 * scale);
   const core::Field<core::AnimationSettings>& fpsField = core::field(core::animationFields(), "fps");
   double fps = scene.animation.fps;
   if (ImGui::DragScalar("fps", ImGuiDataType_Double, &fps, 0.2f, &fpsField.ui.min, &fpsField.ui.max,
-                        std::string(fpsField.ui.format).c_str(), ImGuiSliderFlags_AlwaysClamp))
+                        std::string(fpsField.ui.format).c_str(), ImGuiSliderFlags_AlwaysClamp)) {
     scene.animation.fps = fps;
+    state.document.edited(fpsField.affects);
+  }
   ImGui::SameLine();
-  ImGui::Checkbox("loop", &scene.animation.loop);
+  reportEdit(state, ImGui::Checkbox("loop", &scene.animation.loop),
+             core::field(core::animationFields(), "loop").affects);
 
   // The scrubber, with a tick for every key time.
   double time = now;
   const double zero = 0.0;
   ImGui::SetNextItemWidth(-1);
   if (ImGui::SliderScalar("##time", ImGuiDataType_Double, &time, &zero, &length, "%.2f s")) {
-    state.playing = false;
+    state.panels.timeline.playing = false;
     showTime(state, time);
   }
   probe(state, "timeline/time");
@@ -217,7 +226,7 @@ void timelineWindow(ExplorerState& state, float scale) {
   if (scene.keyframes.empty()) {
     dimText("no keyframes: move the time, change something, press Key");
   } else {
-    if (!state.timelineMessage.empty()) dimText("%s", state.timelineMessage.c_str());
+    if (!state.panels.timeline.timelineMessage.empty()) dimText("%s", state.panels.timeline.timelineMessage.c_str());
     // One row per animated value: its name, then its keys as ticks over the animation's length
     // (right of the names); a value with one key holds still.
     const float nameWidth = 170 * scale;

@@ -49,14 +49,14 @@ void dimText(const char* format, ...) {
 }
 
 void probe(ExplorerState& state, const std::string& name) {
-  if (!state.probe) return;
+  if (!state.frame.probe) return;
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  state.probe->items[name] = UiProbe::Rect{min.x, min.y, max.x, max.y};
+  state.frame.probe->items[name] = UiProbe::Rect{min.x, min.y, max.x, max.y};
 }
 
 // After a text field: what it now holds, when it changed this frame and typing is recorded.
 void noteTyped(ExplorerState& state, const char* field, const char* text) {
-  if (state.recordTyping && ImGui::IsItemEdited()) state.typedThisFrame.emplace_back(field, text);
+  if (state.frame.recordTyping && ImGui::IsItemEdited()) state.frame.typedThisFrame.emplace_back(field, text);
 }
 
 bool slider(ExplorerState& state, const std::string& scope, const char* label, double& value, double min, double max,
@@ -78,7 +78,7 @@ std::string valuePath(const std::string& scope, std::string_view key) {
 
 // A value with keys on the Timeline carries a mark: a small key at the widget's top right corner.
 void markIfKeyed(ExplorerState& state, const std::string& path, const std::string& probeName) {
-  const auto& tracks = state.scene.keyframes;
+  const auto& tracks = state.document.scene.keyframes;
   if (std::none_of(tracks.begin(), tracks.end(), [&](const core::KeyframeTrack& t) { return t.path == path; })) return;
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   const float size = 0.22f * (max.y - min.y);
@@ -91,13 +91,18 @@ void markIfKeyed(ExplorerState& state, const std::string& path, const std::strin
 
 void takeKeyboard(ExplorerState& state) {
   ImGui::SetKeyboardFocusHere();
-  state.keyboardFocusMoved = true;
+  state.frame.keyboardFocusMoved = true;
 }
 
 bool button(ExplorerState& state, const std::string& scope, const char* label) {
   const bool pressed = ImGui::Button(label);
   probe(state, scope + label);
   return pressed;
+}
+
+bool reportEdit(ExplorerState& state, bool changed, core::Affects affects) {
+  if (changed) state.document.edited(affects);
+  return changed;
 }
 
 std::string lowercase(std::string text) {

@@ -26,7 +26,7 @@ inline constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
 float statusBarHeight(float scale);
 // A hint or a message in the dim colour, wrapped at the panel's edge rather than cut there.
 IM_FMTARGS(1) void dimText(const char* format, ...);
-// Records the last widget's rectangle under `name` when a test set state.probe.
+// Records the last widget's rectangle under `name` when a test set state.frame.probe.
 void probe(ExplorerState& state, const std::string& name);
 // After a text field: what it now holds, when it changed this frame and typing is recorded.
 void noteTyped(ExplorerState& state, const char* field, const char* text);
@@ -39,9 +39,13 @@ std::string valuePath(const std::string& scope, std::string_view key);
 void markIfKeyed(ExplorerState& state, const std::string& path, const std::string& probeName);
 bool button(ExplorerState& state, const std::string& scope, const char* label);
 // Gives the next widget the keyboard. ImGui 1.86 drops the characters of the frame that activates
-// it, so the window loop holds the next frame's characters (ExplorerState::keyboardFocusMoved):
+// it, so the window loop holds the next frame's characters (FrameOutputs::keyboardFocusMoved):
 // every panel that moves the keyboard goes through here.
 void takeKeyboard(ExplorerState& state);
+// Reports an edit of the document made by the widget just drawn, when `changed`, with what it
+// affects (Document::edited); returns `changed`. Every panel edit of the scene goes through here or
+// through fieldWidget, which reports its row's class.
+bool reportEdit(ExplorerState& state, bool changed, core::Affects affects);
 std::string lowercase(std::string text);
 bool keyDown(int key);
 
@@ -125,7 +129,7 @@ bool fieldWidget(ExplorerState& state, const std::string& scope, Owner& owner, c
     else
       ImGui::SetTooltip("%.*s\nright-click to reset to the default", static_cast<int>(f.help.size()), f.help.data());
   }
-  return changed || reset;
+  return reportEdit(state, changed || reset, f.affects);
 }
 
 }  // namespace voxflame::app::panels
