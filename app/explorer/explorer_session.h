@@ -80,8 +80,9 @@ class ExplorerSession {
   void post(const core::Scene& scene, bool interacting = false);
 
   // Posts the scene when its pattern (what core::diff() classes as Affects::Pattern: mesh, grid,
-  // layers, seed) differs from the last one posted this way; returns whether it did. The explorer
-  // calls it every frame.
+  // layers, seed) differs from the last one posted this way; returns whether it did. For callers
+  // without a document's revisions (the session's tests): the explorer's live view posts on the
+  // document's pattern revision instead, with no diff per frame.
   bool postIfPatternChanged(const core::Scene& scene, bool interacting = false);
 
   // Swaps the newest packed volume into `out` when one newer than it is ready. Never waits.

@@ -35,17 +35,18 @@ namespace voxflame::app {
 
 using namespace panels;
 
-void applyImportedFlame(ExplorerState& state, const std::filesystem::path& path,
-                        const core::FlameFileContents& contents, const core::Scene& scene) {
+void applyImportedFlame(Document& document, PromptsState& prompts, Settings& settings,
+                        const std::filesystem::path& path, const core::FlameFileContents& contents,
+                        const core::Scene& scene) {
   // A flame replaces the pattern and keeps the mesh and view: one undoable edit.
-  state.document.replace(scene);
-  state.panels.prompts.notice.clear();
+  document.replace(scene);
+  prompts.notice.clear();
   const std::string file = path.filename().string();
   for (const std::string& warning : contents.flame.warnings) {
-    if (!state.panels.prompts.notice.empty()) state.panels.prompts.notice += '\n';
-    state.panels.prompts.notice.append(file).append(": ").append(warning);
+    if (!prompts.notice.empty()) prompts.notice += '\n';
+    prompts.notice.append(file).append(": ").append(warning);
   }
-  state.services.settings.addRecent(RecentKind::Preset, path);
+  settings.addRecent(RecentKind::Preset, path);
 }
 
 bool hasUnsavedChanges(const ExplorerState& state) {
@@ -99,7 +100,7 @@ bool openFile(ExplorerState& state, const std::filesystem::path& path) {
         state.panels.prompts.notice.clear();
         return true;
       }
-      applyImportedFlame(state, path, contents, scene);
+      applyImportedFlame(state.document, state.panels.prompts, state.services.settings, path, contents, scene);
       return true;
     }
     const bool preset = extension == ".json" || extension == ".png";
@@ -145,28 +146,34 @@ void explorerUiFrame(ExplorerState& state) {
   state.frame.requests = UiRequests{};
   if (state.frame.probe) state.frame.probe->items.clear();
   if (state.services.exportJob) state.services.exportStatus = state.services.exportJob->poll();
+  // Each panel gets the parts it may change (panels/panels.h).
+  Document& document = state.document;
+  FrameOutputs& frame = state.frame;
+  PanelState& panels = state.panels;
+  Services& services = state.services;
+  Ui ui{document, frame};
   handleShortcuts(state);
-  handleCamera(state);
-  handleHistory(state);
-  collectSearch(state);
-  updateAnalysis(state);
-  updateFlatView(state);
-  drawFlatView(state);
-  advancePlayback(state);
-  patternWindow(state, scale);
-  viewWindow(state, scale);
-  timelineWindow(state, scale);
-  recoveryWindow(state, scale);
-  quitPromptWindow(state, scale);
-  flameChoiceWindow(state, scale);
-  placeView(state, scale);
-  dimLastBoundedPicture(state);
-  drawExportFrame(state);
-  statusBar(state, scale);
-  noticeWindow(state, scale);
+  handleCamera(document, panels.drag, panels.prompts.quitPrompt);
+  handleHistory(document);
+  collectSearch(document, panels.explore, services);
+  updateAnalysis(document, panels.explore, services);
+  updateFlatView(document, panels.flat, services, frame);
+  drawFlatView(panels.flat, services, frame);
+  advancePlayback(document, panels.timeline, panels.prompts);
+  patternWindow(ui, panels.pattern, panels.explore, panels.flat, services, scale);
+  viewWindow(ui, panels.scene, panels.prompts, services, scale);
+  timelineWindow(ui, panels.timeline, panels.prompts, scale);
+  recoveryWindow(ui, services.recoverable, scale);
+  quitPromptWindow(document, frame, panels.prompts, scale);
+  flameChoiceWindow(ui, panels.prompts, services.settings, scale);
+  placeView(frame, scale);
+  dimLastBoundedPicture(frame);
+  drawExportFrame(frame, services);
+  statusBar(frame, panels.explore, panels.status, scale);
+  noticeWindow(frame, panels.prompts, scale);
   // Read after the panels, which make a widget active on the frame it is pressed: an edit on that
   // very frame is already part of a drag.
-  state.frame.interacting = ImGui::IsAnyItemActive() || state.panels.orbiting || state.panels.panning;
+  state.frame.interacting = ImGui::IsAnyItemActive() || state.panels.drag.orbiting || state.panels.drag.panning;
   if (before) checkEditReports(*before, state.document, reportsBefore);
 }
 

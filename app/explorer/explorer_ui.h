@@ -144,6 +144,15 @@ struct FlatViewState {
   std::string message;
 };
 
+// The view being dragged with the mouse (shortcuts.cpp): left orbits, right or middle pans.
+struct ViewDragState {
+  bool orbiting = false, panning = false;
+};
+
+struct StatusBarState {
+  bool showStats = false;  // the status line shows its technical figures (else as a tooltip)
+};
+
 struct PanelState {
   PatternPanelState pattern;
   ScenePanelState scene;
@@ -151,9 +160,9 @@ struct PanelState {
   TimelinePanelState timeline;
   PromptsState prompts;
   FlatViewState flat;
-  bool orbiting = false, panning = false;  // the view is being dragged (shortcuts.cpp)
-  bool showStats = false;                  // the status line shows its technical figures (else as a tooltip)
-  float uiScale = 1.0f;                    // panel and font scale (DPI), as given to applyUiScale
+  ViewDragState drag;
+  StatusBarState status;
+  float uiScale = 1.0f;  // panel and font scale (DPI), as given to applyUiScale
 };
 
 // The work that runs beside the frames and what it needs: background jobs, the preset library, the

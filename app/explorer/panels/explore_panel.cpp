@@ -47,45 +47,44 @@ std::string analysisKey(const core::PatternLayer& layer) {
 }
 
 // Keeps the Lyapunov line in step with layer 0; one analysis at a time, never waited for.
-void updateAnalysis(ExplorerState& state) {
-  const bool chaosGame = !state.document.scene.layers.empty() && state.document.scene.layers.front().isChaosGame();
-  if (state.services.analysis.ready()) {
+void updateAnalysis(const Document& document, ExplorePanelState& explore, Services& services) {
+  const bool chaosGame = !document.scene.layers.empty() && document.scene.layers.front().isChaosGame();
+  if (services.analysis.ready()) {
     try {
-      const core::OrbitAnalysis result = *state.services.analysis.take();
+      const core::OrbitAnalysis result = *services.analysis.take();
       char text[160];
       std::snprintf(text, sizeof text, "λ %.3f  %.3f  %.3f  (%s)", result.lyapunov[0], result.lyapunov[1],
                     result.lyapunov[2], std::string(core::toString(result.verdict)).c_str());
-      if (!chaosGame)
-        state.panels.explore.lyapunovText = text;  // an attractor's analysis that finished after a switch is stale
+      if (!chaosGame) explore.lyapunovText = text;  // an attractor's analysis that finished after a switch is stale
     } catch (const core::Error& e) {
-      if (!chaosGame) state.panels.explore.lyapunovText = e.what();
+      if (!chaosGame) explore.lyapunovText = e.what();
     }
   }
-  if (state.document.scene.layers.empty()) return;
-  const core::PatternLayer& front = state.document.scene.layers.front();
+  if (document.scene.layers.empty()) return;
+  const core::PatternLayer& front = document.scene.layers.front();
   if (chaosGame) {
     // A chaos game picks a map at random every step: there is no one orbit whose Lyapunov
     // exponents would mean anything, so the line just says what the layer is.
-    state.panels.explore.lyapunovText =
+    explore.lyapunovText =
         front.kind == core::PatternKind::Flame ? "flame (chaos game)" : "quaternion Julia (chaos game)";
-    state.panels.explore.analysedKey.clear();
-    state.panels.explore.analysedRevision = ~std::uint64_t{0};
+    explore.analysedKey.clear();
+    explore.analysedRevision = ~std::uint64_t{0};
     return;
   }
-  if (state.services.analysis.busy()) return;
+  if (services.analysis.busy()) return;
   // Only a pattern edit can change what is analysed: no key is made on the frames between.
-  if (state.panels.explore.analysedRevision == state.document.revisions().pattern) return;
-  state.panels.explore.analysedRevision = state.document.revisions().pattern;
+  if (explore.analysedRevision == document.revisions().pattern) return;
+  explore.analysedRevision = document.revisions().pattern;
   const std::string key = analysisKey(front);
-  if (key == state.panels.explore.analysedKey) return;
-  state.panels.explore.analysedKey = key;
+  if (key == explore.analysedKey) return;
+  explore.analysedKey = key;
   try {
-    const core::OrbitSpec spec = core::orbitSpecOf(state.document.scene.layers.front());
+    const core::OrbitSpec spec = core::orbitSpecOf(document.scene.layers.front());
     core::LyapunovOptions options;
     options.steps = 20'000;
-    state.services.analysis.start([spec, options](std::stop_token) { return core::analyseOrbit(spec, options); });
+    services.analysis.start([spec, options](std::stop_token) { return core::analyseOrbit(spec, options); });
   } catch (const core::Error& e) {
-    state.panels.explore.lyapunovText = e.what();
+    explore.lyapunovText = e.what();
   }
 }
 
@@ -114,22 +113,23 @@ std::string fillText(const core::FillReport& fill) {
 // Search (fresh) draws new patterns near nothing; Mutate (and "Find a nearby one") moves the
 // current one by `strength`. Attractors always search near their parameters, as before; flames
 // and Julia sets use the fill test of flame_search.h.
-void startSearch(ExplorerState& state, double strength, bool fresh) {
-  if (state.services.search.busy() || state.document.scene.layers.empty()) return;  // one at a time
+void startSearch(const Document& document, ExplorePanelState& explore, Services& services, double strength,
+                 bool fresh) {
+  if (services.search.busy() || document.scene.layers.empty()) return;  // one at a time
   using Outcome = Services::SearchOutcome;
   try {
-    const core::PatternLayer layer = state.document.scene.layers.front();
-    const std::uint64_t seed = state.panels.explore.searchSeed++;
+    const core::PatternLayer layer = document.scene.layers.front();
+    const std::uint64_t seed = explore.searchSeed++;
     if (layer.isChaosGame()) {
       core::FlameSearchOptions options;
       options.seed = seed;
       options.count = 1;
       options.strength = strength;
       options.juliaView = layer.julia;
-      state.services.searchTried.reset();  // the flame and Julia searches count no tries
-      state.services.searchStrength.reset();
-      state.panels.explore.searchMessage = "searching…";
-      state.services.search.start([layer, options, fresh](std::stop_token stop) mutable {
+      services.searchTried.reset();  // the flame and Julia searches count no tries
+      services.searchStrength.reset();
+      explore.searchMessage = "searching…";
+      services.search.start([layer, options, fresh](std::stop_token stop) mutable {
         options.stop = stop;
         Outcome outcome;
         core::PatternLayer found = layer;
@@ -165,11 +165,11 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
     // Nothing nearby: it widens by itself, a few hundred tries at each strength, before giving up.
     options.widenTo = std::max(strength, core::kSearchWidenTo);
     options.maxCandidates = core::kSearchTriesPerStrength;
-    state.services.searchTried = std::make_shared<std::atomic<int>>(0);
-    state.services.searchStrength = std::make_shared<std::atomic<double>>(strength);
-    state.panels.explore.searchMessage = "searching…";
-    state.services.search.start([layer, spec, options, tried = state.services.searchTried,
-                                 strengthNow = state.services.searchStrength](std::stop_token stop) mutable {
+    services.searchTried = std::make_shared<std::atomic<int>>(0);
+    services.searchStrength = std::make_shared<std::atomic<double>>(strength);
+    explore.searchMessage = "searching…";
+    services.search.start([layer, spec, options, tried = services.searchTried,
+                           strengthNow = services.searchStrength](std::stop_token stop) mutable {
       options.stop = stop;
       options.tried = tried.get();
       options.strengthNow = strengthNow.get();
@@ -192,50 +192,49 @@ void startSearch(ExplorerState& state, double strength, bool fresh) {
       return outcome;
     });
   } catch (const core::Error& e) {
-    state.panels.explore.searchMessage = e.what();
+    explore.searchMessage = e.what();
   }
 }
 
-void collectSearch(ExplorerState& state) {
-  if (!state.services.search.ready()) return;
+void collectSearch(Document& document, ExplorePanelState& explore, Services& services) {
+  if (!services.search.ready()) return;
   try {
-    const Services::SearchOutcome outcome = *state.services.search.take();
-    state.panels.explore.searchMessage = outcome.message;
-    if (!outcome.found || state.document.scene.layers.empty()) return;
-    core::PatternLayer& layer = state.document.scene.layers.front();
+    const Services::SearchOutcome outcome = *services.search.take();
+    explore.searchMessage = outcome.message;
+    if (!outcome.found || document.scene.layers.empty()) return;
+    core::PatternLayer& layer = document.scene.layers.front();
     if (layer.kind != outcome.found->kind) {
-      state.panels.explore.searchMessage = "the layer changed kind while the search ran; its result was dropped";
+      explore.searchMessage = "the layer changed kind while the search ran; its result was dropped";
       return;
     }
     // The history keeps where the search started from, then each find; a find after going back
     // drops the forward part, as in a browser.
-    if (state.panels.explore.visited.empty()) {
-      state.panels.explore.visited.push_back(layer);
-      state.panels.explore.visitedMessages.assign(1, "where the search started");
+    if (explore.visited.empty()) {
+      explore.visited.push_back(layer);
+      explore.visitedMessages.assign(1, "where the search started");
     }
-    state.panels.explore.visited.resize(
-        std::min(state.panels.explore.visited.size(), state.panels.explore.visitedIndex + 1));
-    state.panels.explore.visitedMessages.resize(state.panels.explore.visited.size());
+    explore.visited.resize(std::min(explore.visited.size(), explore.visitedIndex + 1));
+    explore.visitedMessages.resize(explore.visited.size());
     applyVisited(layer, *outcome.found);
-    state.document.edited(core::Affects::Pattern);
-    state.panels.explore.visited.push_back(layer);
-    state.panels.explore.visitedMessages.push_back(outcome.message);
-    state.panels.explore.visitedIndex = state.panels.explore.visited.size() - 1;
+    document.edited(core::Affects::Pattern);
+    explore.visited.push_back(layer);
+    explore.visitedMessages.push_back(outcome.message);
+    explore.visitedIndex = explore.visited.size() - 1;
   } catch (const core::Error& e) {
-    state.panels.explore.searchMessage = e.what();
+    explore.searchMessage = e.what();
   }
 }
 
-void goVisited(ExplorerState& state, int direction) {
-  if (state.panels.explore.visited.empty() || state.document.scene.layers.empty()) return;
-  const auto target = static_cast<long long>(state.panels.explore.visitedIndex) + direction;
-  if (target < 0 || target >= static_cast<long long>(state.panels.explore.visited.size())) return;
-  state.panels.explore.visitedIndex = static_cast<std::size_t>(target);
-  applyVisited(state.document.scene.layers.front(), state.panels.explore.visited[state.panels.explore.visitedIndex]);
-  state.document.edited(core::Affects::Pattern);
+void goVisited(Document& document, ExplorePanelState& explore, int direction) {
+  if (explore.visited.empty() || document.scene.layers.empty()) return;
+  const auto target = static_cast<long long>(explore.visitedIndex) + direction;
+  if (target < 0 || target >= static_cast<long long>(explore.visited.size())) return;
+  explore.visitedIndex = static_cast<std::size_t>(target);
+  applyVisited(document.scene.layers.front(), explore.visited[explore.visitedIndex]);
+  document.edited(core::Affects::Pattern);
   // The "found:" line is the one of the pattern now shown.
-  if (state.panels.explore.visitedIndex < state.panels.explore.visitedMessages.size())
-    state.panels.explore.searchMessage = state.panels.explore.visitedMessages[state.panels.explore.visitedIndex];
+  if (explore.visitedIndex < explore.visitedMessages.size())
+    explore.searchMessage = explore.visitedMessages[explore.visitedIndex];
 }
 
 }  // namespace voxflame::app::panels

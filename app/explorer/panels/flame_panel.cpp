@@ -39,13 +39,14 @@ namespace voxflame::app::panels {
 
 // A layer's kind; a new kind starts from its defaults (the default flame, the classic Julia set,
 // the attractor catalogue's first-layer default) and the colour mode that suits it.
-void patternKindChoice(ExplorerState& state, std::size_t index, const std::string& scope, core::PatternLayer& layer) {
+void patternKindChoice(Ui& ui, PatternPanelState& pattern, std::size_t index, const std::string& scope,
+                       core::PatternLayer& layer) {
   static constexpr const char* kKindLabels[] = {"attractor", "flame", "quaternion Julia"};
   const int current = static_cast<int>(layer.kind);
   if (ImGui::BeginCombo("pattern", kKindLabels[current])) {
     for (int k = 0; k < 3; ++k) {
       const bool chosen = ImGui::Selectable(kKindLabels[k], k == current);
-      probe(state, scope + "pattern/" + kKindLabels[k]);
+      probe(ui, scope + "pattern/" + kKindLabels[k]);
       if (!chosen || k == current) continue;
       const core::PatternLayer defaults;
       layer.kind = static_cast<core::PatternKind>(k);
@@ -65,12 +66,12 @@ void patternKindChoice(ExplorerState& state, std::size_t index, const std::strin
         layer.julia = {};
         if (layer.color.mode == core::ColorMode::Index) layer.color.mode = core::ColorMode::Speed;
       }
-      state.panels.pattern.selectedXform[index] = 0;
-      state.document.edited(core::Affects::Pattern);
+      pattern.selectedXform[index] = 0;
+      ui.document.edited(core::Affects::Pattern);
     }
     ImGui::EndCombo();
   }
-  probe(state, scope + "pattern");
+  probe(ui, scope + "pattern");
 }
 
 // The length of column `col` of the 3×3 part: how much the map stretches its own axis `col`.
@@ -99,66 +100,63 @@ std::array<double, 9> eulerRotation(const double degrees[3]) {
 // Translate, rotate and scale handles for one affine map, then its 12 numbers on request. The
 // rotate handle turns the matrix about the transform's own frame (M ← M · R), so its scales and
 // offset stay; the scale handles set the length of each column of the 3×3 part.
-void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3& affine) {
+void affineEditor(Ui& ui, PatternPanelState& pattern, const std::string& scope, core::Affine3& affine) {
   std::array<double, 12>& m = affine.m;
   double translate[3] = {m[3], m[7], m[11]};
   const double minT = -3.0, maxT = 3.0;
-  if (reportEdit(state,
+  if (reportEdit(ui,
                  ImGui::SliderScalarN("translate", ImGuiDataType_Double, translate, 3, &minT, &maxT, "%.3f", kClamp),
                  core::Affects::Pattern))
     m[3] = translate[0], m[7] = translate[1], m[11] = translate[2];
-  probe(state, scope + "translate");
+  probe(ui, scope + "translate");
 
   const std::string rotateId = scope + "rotate";
-  const bool rotatingThis = state.panels.pattern.rotatingId == rotateId;
+  const bool rotatingThis = pattern.rotatingId == rotateId;
   double shown[3] = {0.0, 0.0, 0.0};
-  if (rotatingThis)
-    std::copy(std::begin(state.panels.pattern.rotateAngles), std::end(state.panels.pattern.rotateAngles), shown);
+  if (rotatingThis) std::copy(std::begin(pattern.rotateAngles), std::end(pattern.rotateAngles), shown);
   const double minDeg = -180.0, maxDeg = 180.0;
   // Relative: each drag turns the map from where it is, so the handle reads +0° before and after one.
   const bool turned =
       ImGui::SliderScalarN("turn by", ImGuiDataType_Double, shown, 3, &minDeg, &maxDeg, "%+.0f°", kClamp);
-  probe(state, rotateId);
+  probe(ui, rotateId);
   if (ImGui::IsItemActivated()) {
-    state.panels.pattern.rotatingId = rotateId;
-    state.panels.pattern.rotateStart = m;
+    pattern.rotatingId = rotateId;
+    pattern.rotateStart = m;
   }
-  if (reportEdit(state, turned && state.panels.pattern.rotatingId == rotateId, core::Affects::Pattern)) {
-    std::copy(std::begin(shown), std::end(shown), state.panels.pattern.rotateAngles);
+  if (reportEdit(ui, turned && pattern.rotatingId == rotateId, core::Affects::Pattern)) {
+    std::copy(std::begin(shown), std::end(shown), pattern.rotateAngles);
     const std::array<double, 9> r = eulerRotation(shown);
     for (int row = 0; row < 3; ++row)
       for (int col = 0; col < 3; ++col) {
         double sum = 0.0;
         for (int k = 0; k < 3; ++k)
-          sum += state.panels.pattern.rotateStart[static_cast<std::size_t>(row * 4 + k)] *
-                 r[static_cast<std::size_t>(k * 3 + col)];
+          sum += pattern.rotateStart[static_cast<std::size_t>(row * 4 + k)] * r[static_cast<std::size_t>(k * 3 + col)];
         m[static_cast<std::size_t>(row * 4 + col)] = sum;
       }
   }
-  if (ImGui::IsItemDeactivated() && state.panels.pattern.rotatingId == rotateId) {
-    state.panels.pattern.rotatingId.clear();
-    if (m != state.panels.pattern.rotateStart) {
-      state.panels.pattern.turnedId = rotateId;
-      std::copy(std::begin(state.panels.pattern.rotateAngles), std::end(state.panels.pattern.rotateAngles),
-                state.panels.pattern.turnedAngles.begin());
-      state.panels.pattern.turnedResult = m;
+  if (ImGui::IsItemDeactivated() && pattern.rotatingId == rotateId) {
+    pattern.rotatingId.clear();
+    if (m != pattern.rotateStart) {
+      pattern.turnedId = rotateId;
+      std::copy(std::begin(pattern.rotateAngles), std::end(pattern.rotateAngles), pattern.turnedAngles.begin());
+      pattern.turnedResult = m;
     }
-    std::fill(std::begin(state.panels.pattern.rotateAngles), std::end(state.panels.pattern.rotateAngles), 0.0);
+    std::fill(std::begin(pattern.rotateAngles), std::end(pattern.rotateAngles), 0.0);
   }
   if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
     ImGui::SetTooltip(
         "relative: drag to turn the map by so many degrees about its own x, y and z axes.\n"
         "Each drag starts at +0° and the turn stays when you let go (Ctrl+Z undoes it).");
-  if (state.panels.pattern.turnedId == rotateId && state.panels.pattern.turnedResult == m && !rotatingThis) {
-    dimText("turned by %+.0f°, %+.0f°, %+.0f° (Ctrl+Z undoes)", state.panels.pattern.turnedAngles[0],
-            state.panels.pattern.turnedAngles[1], state.panels.pattern.turnedAngles[2]);
-    probe(state, scope + "turned");
+  if (pattern.turnedId == rotateId && pattern.turnedResult == m && !rotatingThis) {
+    dimText("turned by %+.0f°, %+.0f°, %+.0f° (Ctrl+Z undoes)", pattern.turnedAngles[0], pattern.turnedAngles[1],
+            pattern.turnedAngles[2]);
+    probe(ui, scope + "turned");
   }
 
   double scales[3] = {columnLength(m, 0), columnLength(m, 1), columnLength(m, 2)};
   const double minS = 0.01, maxS = 2.0;
   // Absolute, unlike the turn: each value is the length of one axis of the map, and stays as dragged.
-  if (reportEdit(state,
+  if (reportEdit(ui,
                  ImGui::SliderScalarN("axis lengths", ImGuiDataType_Double, scales, 3, &minS, &maxS, "%.3f", kClamp),
                  core::Affects::Pattern))
     for (int col = 0; col < 3; ++col) {
@@ -172,7 +170,7 @@ void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3&
         m[static_cast<std::size_t>(col * 4 + col)] = scales[col];
       }
     }
-  probe(state, scope + "scale");
+  probe(ui, scope + "scale");
   if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
     ImGui::SetTooltip("absolute: the length of the map's x, y and z axes (1 keeps a length; under 1 contracts)");
 
@@ -180,11 +178,11 @@ void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3&
     static constexpr const char* kRows[] = {"x' = x y z 1", "y' = x y z 1", "z' = x y z 1"};
     const double minV = -100.0, maxV = 100.0;
     for (int row = 0; row < 3; ++row) {
-      reportEdit(state,
+      reportEdit(ui,
                  ImGui::DragScalarN(kRows[row], ImGuiDataType_Double, &m[static_cast<std::size_t>(row * 4)], 4, 0.002f,
                                     &minV, &maxV, "%.3f", kClamp),
                  core::Affects::Pattern);
-      probe(state, scope + "row" + std::to_string(row));
+      probe(ui, scope + "row" + std::to_string(row));
     }
     ImGui::TreePop();
   }
@@ -192,7 +190,7 @@ void affineEditor(ExplorerState& state, const std::string& scope, core::Affine3&
 
 // A transform's variations: weight and parameter sliders each, remove buttons, and a filterable
 // list of the whole catalogue to add from.
-void variationsEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform) {
+void variationsEditor(Ui& ui, PatternPanelState& pattern, const std::string& scope, core::FlameXform& xform) {
   std::size_t removeIndex = xform.variations.size();
   for (std::size_t v = 0; v < xform.variations.size(); ++v) {
     core::VariationTerm& term = xform.variations[v];
@@ -202,15 +200,15 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
     // The weight slider is labelled with the variation's name; its formula is the tooltip.
     const double minW = -2.0, maxW = 2.0;
     ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
-    reportEdit(state,
+    reportEdit(ui,
                ImGui::SliderScalar((term.name + "##weight").c_str(), ImGuiDataType_Double, &term.weight, &minW, &maxW,
                                    "weight %.3f", kClamp),
                core::Affects::Pattern);
-    probe(state, vscope + "weight");
+    probe(ui, vscope + "weight");
     if (ImGui::IsItemHovered() && !ImGui::IsItemActive() && info) ImGui::SetTooltip("%s", info->formula.c_str());
     ImGui::SameLine();
     if (ImGui::SmallButton("x")) removeIndex = v;
-    probe(state, vscope + "remove");
+    probe(ui, vscope + "remove");
     if (info && term.params.size() == info->params.size()) {
       ImGui::Indent();
       for (std::size_t p = 0; p < info->params.size(); ++p) {
@@ -219,20 +217,20 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
         ImGui::PushID(static_cast<int>(p));
         if (param.integer) {
           int value = static_cast<int>(std::lround(term.params[p]));
-          if (reportEdit(state,
+          if (reportEdit(ui,
                          ImGui::SliderInt(label.c_str(), &value, static_cast<int>(std::ceil(param.sliderMin)),
                                           static_cast<int>(std::floor(param.sliderMax)), "%d", kClamp),
                          core::Affects::Pattern))
             term.params[p] = value;
         } else {
-          reportEdit(state,
+          reportEdit(ui,
                      ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &term.params[p], &param.sliderMin,
                                          &param.sliderMax, "%.3f", kClamp),
                      core::Affects::Pattern);
         }
-        probe(state, vscope + param.name);
+        probe(ui, vscope + param.name);
         if (ImGui::BeginPopupContextItem()) {
-          if (reportEdit(state, ImGui::Selectable("Reset to default"), core::Affects::Pattern))
+          if (reportEdit(ui, ImGui::Selectable("Reset to default"), core::Affects::Pattern))
             term.params[p] = param.defaultValue;
           ImGui::EndPopup();
         }
@@ -244,33 +242,32 @@ void variationsEditor(ExplorerState& state, const std::string& scope, core::Flam
     }
     ImGui::PopID();
   }
-  if (reportEdit(state, removeIndex < xform.variations.size(), core::Affects::Pattern))
+  if (reportEdit(ui, removeIndex < xform.variations.size(), core::Affects::Pattern))
     xform.variations.erase(xform.variations.begin() + static_cast<std::ptrdiff_t>(removeIndex));
 
   ImGui::BeginDisabled(xform.variations.size() >= core::kMaxXformVariations);
   if (ImGui::BeginCombo("add variation", "choose…", ImGuiComboFlags_HeightLarge)) {
     if (ImGui::IsWindowAppearing()) {
-      state.panels.pattern.variationFilter[0] = '\0';
-      takeKeyboard(state);
+      pattern.variationFilter[0] = '\0';
+      takeKeyboard(ui);
     }
-    ImGui::InputTextWithHint("##variationfilter", "filter", state.panels.pattern.variationFilter,
-                             sizeof state.panels.pattern.variationFilter);
-    noteTyped(state, "variation filter", state.panels.pattern.variationFilter);
-    const std::string filter = lowercase(state.panels.pattern.variationFilter);
+    ImGui::InputTextWithHint("##variationfilter", "filter", pattern.variationFilter, sizeof pattern.variationFilter);
+    noteTyped(ui, "variation filter", pattern.variationFilter);
+    const std::string filter = lowercase(pattern.variationFilter);
     for (const core::VariationInfo& info : core::variationCatalogue()) {
       if (!filter.empty() && lowercase(info.name).find(filter) == std::string::npos) continue;
       const bool chosen = ImGui::Selectable(info.name.c_str());
-      probe(state, scope + "add/" + info.name);
+      probe(ui, scope + "add/" + info.name);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", info.formula.c_str());
       if (chosen) {
         // A new term starts small, so adding one bends the flame rather than replacing it.
         xform.variations.push_back({info.name, xform.variations.empty() ? 1.0 : 0.25, info.defaultParams()});
-        state.document.edited(core::Affects::Pattern);
+        ui.document.edited(core::Affects::Pattern);
       }
     }
     ImGui::EndCombo();
   }
-  probe(state, scope + "add variation");
+  probe(ui, scope + "add variation");
   ImGui::EndDisabled();
 }
 
@@ -297,25 +294,25 @@ ImU32 xaosCellColor(double factor) {
 }
 
 // The "to" columns shown: all of them, or for flames wider than a page the page chosen in a combo.
-std::pair<std::size_t, std::size_t> xaosColumnPage(ExplorerState& state, std::size_t index, const std::string& scope,
-                                                   std::size_t count) {
+std::pair<std::size_t, std::size_t> xaosColumnPage(Ui& ui, PatternPanelState& pattern, std::size_t index,
+                                                   const std::string& scope, std::size_t count) {
   if (count <= kXaosColumnsPerPage) return {0, count};
   const auto pageLabel = [count](std::size_t page) {
     const std::size_t first = page * kXaosColumnsPerPage;
     return "to " + std::to_string(first + 1) + "–" + std::to_string(std::min(count, first + kXaosColumnsPerPage));
   };
   const std::size_t pages = (count + kXaosColumnsPerPage - 1) / kXaosColumnsPerPage;
-  std::size_t& page = state.panels.pattern.xaosColumnPage[index];
+  std::size_t& page = pattern.xaosColumnPage[index];
   page = std::min(page, pages - 1);  // the flame may have lost transforms since
   if (ImGui::BeginCombo("columns", pageLabel(page).c_str())) {
     for (std::size_t p = 0; p < pages; ++p) {
       const std::string label = pageLabel(p);
       if (ImGui::Selectable(label.c_str(), p == page)) page = p;
-      probe(state, scope + "xaos columns/" + label);
+      probe(ui, scope + "xaos columns/" + label);
     }
     ImGui::EndCombo();
   }
-  probe(state, scope + "xaos columns");
+  probe(ui, scope + "xaos columns");
   const std::size_t first = page * kXaosColumnsPerPage;
   return {first, std::min(count, first + kXaosColumnsPerPage)};
 }
@@ -323,15 +320,15 @@ std::pair<std::size_t, std::size_t> xaosColumnPage(ExplorerState& state, std::si
 // The matrix under an "Xaos" tree node: a row per transform (named by number, as the transform
 // buttons name them, the selected one highlighted) with its reset button, a column per transform,
 // and a reset for the whole matrix. Cells are probed as "xaos <from> to <to>", both 1-based.
-void xaosMatrix(ExplorerState& state, std::size_t index, const std::string& scope, core::FlameGenome& flame,
-                int selected) {
+void xaosMatrix(Ui& ui, PatternPanelState& pattern, std::size_t index, const std::string& scope,
+                core::FlameGenome& flame, int selected) {
   const bool open = ImGui::TreeNode("Xaos");
-  probe(state, scope + "Xaos");
+  probe(ui, scope + "Xaos");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip("row: the transform just applied; column: the next one, chosen by its weight times this factor");
   if (!open) return;
   const std::size_t count = flame.xforms.size();
-  const auto [firstColumn, endColumn] = xaosColumnPage(state, index, scope, count);
+  const auto [firstColumn, endColumn] = xaosColumnPage(ui, pattern, index, scope, count);
 
   const ImGuiStyle& style = ImGui::GetStyle();
   const float cellWidth = ImGui::CalcTextSize("0.000").x + 2.0f * style.FramePadding.x;
@@ -363,15 +360,15 @@ void xaosMatrix(ExplorerState& state, std::size_t index, const std::string& scop
         ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, ImGui::GetColorU32(ImGuiCol_Header));
       ImGui::TableNextColumn();
       ImGui::BeginDisabled(row.xaos.empty());
-      if (reportEdit(state, ImGui::SmallButton("reset"), core::Affects::Pattern)) row.xaos.clear();
-      probe(state, scope + "xaos reset " + fromName);
+      if (reportEdit(ui, ImGui::SmallButton("reset"), core::Affects::Pattern)) row.xaos.clear();
+      probe(ui, scope + "xaos reset " + fromName);
       ImGui::EndDisabled();
       for (std::size_t to = firstColumn; to < endColumn; ++to) {
         ImGui::TableNextColumn();
         ImGui::PushID(static_cast<int>(to));
         double factor = xaosFactor(row, to);
         ImGui::SetNextItemWidth(-FLT_MIN);
-        if (reportEdit(state,
+        if (reportEdit(ui,
                        ImGui::DragScalar("##factor", ImGuiDataType_Double, &factor, 0.01f, &kXaosMin, &kXaosMax, "%.2f",
                                          kClamp),
                        core::Affects::Pattern)) {
@@ -379,7 +376,7 @@ void xaosMatrix(ExplorerState& state, std::size_t index, const std::string& scop
           row.xaos[to] = factor;
         }
         const std::string toName = std::to_string(to + 1);
-        probe(state, scope + "xaos " + fromName + " to " + toName);
+        probe(ui, scope + "xaos " + fromName + " to " + toName);
         if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
           ImGui::SetTooltip("after %s, %s's weight × %.3f (0: never) — drag, or double-click to type", fromName.c_str(),
                             toName.c_str(), factor);
@@ -393,7 +390,7 @@ void xaosMatrix(ExplorerState& state, std::size_t index, const std::string& scop
   const bool anyXaos =
       std::any_of(flame.xforms.begin(), flame.xforms.end(), [](const core::FlameXform& x) { return !x.xaos.empty(); });
   ImGui::BeginDisabled(!anyXaos);
-  if (reportEdit(state, button(state, scope, "Reset xaos"), core::Affects::Pattern))
+  if (reportEdit(ui, button(ui, scope, "Reset xaos"), core::Affects::Pattern))
     for (core::FlameXform& x : flame.xforms) x.xaos.clear();
   ImGui::EndDisabled();
   ImGui::TreePop();
@@ -401,29 +398,30 @@ void xaosMatrix(ExplorerState& state, std::size_t index, const std::string& scop
 
 // One transform: weight (not for the final one), colour, colour speed, opacity, the affine map
 // and an optional post map, the variations. Its xaos is a row of the flame's xaos matrix.
-void xformEditor(ExplorerState& state, const std::string& scope, core::FlameXform& xform, bool isFinal) {
-  if (!isFinal) fieldWidget(state, scope, xform, core::xformFields(), "weight");
-  fieldWidget(state, scope, xform, core::xformFields(), "color");
-  fieldWidget(state, scope, xform, core::xformFields(), "color_speed");
-  fieldWidget(state, scope, xform, core::xformFields(), "opacity");
-  affineEditor(state, scope, xform.affine);
-  reportEdit(state, ImGui::Checkbox("post-affine", &xform.hasPost), core::Affects::Pattern);
-  probe(state, scope + "post-affine");
+void xformEditor(Ui& ui, PatternPanelState& pattern, const std::string& scope, core::FlameXform& xform, bool isFinal) {
+  if (!isFinal) fieldWidget(ui, scope, xform, core::xformFields(), "weight");
+  fieldWidget(ui, scope, xform, core::xformFields(), "color");
+  fieldWidget(ui, scope, xform, core::xformFields(), "color_speed");
+  fieldWidget(ui, scope, xform, core::xformFields(), "opacity");
+  affineEditor(ui, pattern, scope, xform.affine);
+  reportEdit(ui, ImGui::Checkbox("post-affine", &xform.hasPost), core::Affects::Pattern);
+  probe(ui, scope + "post-affine");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("a second affine map applied after the variations");
   if (xform.hasPost) {
     ImGui::PushID("post");
     ImGui::Indent();
-    affineEditor(state, scope + "post/", xform.post);
+    affineEditor(ui, pattern, scope + "post/", xform.post);
     ImGui::Unindent();
     ImGui::PopID();
   }
   ImGui::Separator();
   dimText("variations");
-  variationsEditor(state, scope, xform);
+  variationsEditor(ui, pattern, scope, xform);
 }
 
-void flameEditor(ExplorerState& state, std::size_t index, const std::string& scope, core::FlameGenome& flame) {
-  int& selected = state.panels.pattern.selectedXform[index];
+void flameEditor(Ui& ui, PatternPanelState& pattern, ExplorePanelState& explore, std::size_t index,
+                 const std::string& scope, core::FlameGenome& flame) {
+  int& selected = pattern.selectedXform[index];
   if (selected >= static_cast<int>(flame.xforms.size()) || (selected < 0 && !flame.hasFinal)) selected = 0;
   // The transform selector: one button per transform, then the final one.
   dimText("transform");
@@ -434,22 +432,22 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
     const std::string label = std::to_string(i + 1);
     if (ImGui::Selectable(label.c_str(), selected == static_cast<int>(i), 0, ImVec2(ImGui::GetFrameHeight(), 0)))
       selected = static_cast<int>(i);
-    probe(state, scope + "xform " + label);
+    probe(ui, scope + "xform " + label);
   }
   if (flame.hasFinal) {
     ImGui::SameLine();
     if (ImGui::Selectable("final", selected < 0, 0, ImVec2(ImGui::CalcTextSize("final").x, 0))) selected = -1;
-    probe(state, scope + "xform final");
+    probe(ui, scope + "xform final");
   }
   const bool full = flame.xforms.size() >= core::kMaxFlameXforms;
   ImGui::BeginDisabled(full);
-  if (reportEdit(state, button(state, scope, "Add transform"), core::Affects::Pattern)) {
-    flame.xforms.push_back(core::randomTransform(state.panels.explore.searchSeed++,
-                                                 std::fmod(0.37 * static_cast<double>(flame.xforms.size()), 1.0)));
+  if (reportEdit(ui, button(ui, scope, "Add transform"), core::Affects::Pattern)) {
+    flame.xforms.push_back(
+        core::randomTransform(explore.searchSeed++, std::fmod(0.37 * static_cast<double>(flame.xforms.size()), 1.0)));
     selected = static_cast<int>(flame.xforms.size()) - 1;
   }
   ImGui::SameLine();
-  if (button(state, scope, "Duplicate") && reportEdit(state, selected >= 0, core::Affects::Pattern)) {
+  if (button(ui, scope, "Duplicate") && reportEdit(ui, selected >= 0, core::Affects::Pattern)) {
     const auto at = static_cast<std::size_t>(selected);
     flame.xforms.insert(flame.xforms.begin() + selected + 1, flame.xforms[at]);
     // Xaos columns follow the transforms: the copy is followed as often as its original.
@@ -460,7 +458,7 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(selected >= 0 && flame.xforms.size() <= 1);
-  if (reportEdit(state, button(state, scope, "Remove"), core::Affects::Pattern)) {
+  if (reportEdit(ui, button(ui, scope, "Remove"), core::Affects::Pattern)) {
     if (selected < 0) {
       flame.hasFinal = false;
       selected = 0;
@@ -472,7 +470,7 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
     }
   }
   ImGui::EndDisabled();
-  if (reportEdit(state, ImGui::Checkbox("final transform", &flame.hasFinal), core::Affects::Pattern)) {
+  if (reportEdit(ui, ImGui::Checkbox("final transform", &flame.hasFinal), core::Affects::Pattern)) {
     if (flame.hasFinal) {
       if (flame.finalXform.variations.empty()) flame.finalXform.variations = {{"linear", 1.0, {}}};
       selected = -1;
@@ -480,23 +478,23 @@ void flameEditor(ExplorerState& state, std::size_t index, const std::string& sco
       selected = 0;
     }
   }
-  probe(state, scope + "final transform");
+  probe(ui, scope + "final transform");
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("bends what is drawn without feeding back into the iteration");
 
   const std::string xscope = scope + (selected < 0 ? "final/" : "xform/");
   ImGui::PushID(selected);
   core::FlameXform& xform = selected < 0 ? flame.finalXform : flame.xforms[static_cast<std::size_t>(selected)];
-  xformEditor(state, xscope, xform, selected < 0);
+  xformEditor(ui, pattern, xscope, xform, selected < 0);
   ImGui::PopID();
   // With one transform every factor leads back to it (a 0 falls back to the plain weights).
-  if (flame.xforms.size() > 1) xaosMatrix(state, index, scope, flame, selected);
+  if (flame.xforms.size() > 1) xaosMatrix(ui, pattern, index, scope, flame, selected);
 
   if (ImGui::TreeNode("Symmetry")) {
     core::FlameSymmetry& symmetry = flame.symmetry;
-    fieldWidget(state, scope, symmetry, core::symmetryFields(), "rotational");
-    fieldWidget(state, scope, symmetry, core::symmetryFields(), "mirror");
+    fieldWidget(ui, scope, symmetry, core::symmetryFields(), "rotational");
+    fieldWidget(ui, scope, symmetry, core::symmetryFields(), "mirror");
     const std::string axisProbe = scope + "symmetry axis";
-    fieldWidget(state, scope, symmetry, core::symmetryFields(), "axis", axisProbe.c_str());
+    fieldWidget(ui, scope, symmetry, core::symmetryFields(), "axis", axisProbe.c_str());
     ImGui::TreePop();
   }
 }

@@ -57,37 +57,37 @@ core::Scene flatViewScene(const core::Scene& scene) {
   return shown;
 }
 
-void updateFlatView(ExplorerState& state) {
-  if (!state.panels.flat.on) {
+void updateFlatView(const Document& document, FlatViewState& flat, Services& services, FrameOutputs& frame) {
+  if (!flat.on) {
     // Runs every frame while the view is off: costs nothing unless a render was under way or kept.
-    if (state.services.flatRender.busy()) state.services.flatRender.cancel();
-    state.panels.flat.rendered.layers.clear();  // so that turning the view on renders afresh
-    state.panels.flat.checkedRevision = ~std::uint64_t{0};
+    if (services.flatRender.busy()) services.flatRender.cancel();
+    flat.rendered.layers.clear();  // so that turning the view on renders afresh
+    flat.checkedRevision = ~std::uint64_t{0};
     return;
   }
-  if (state.services.flatRender.ready()) {
+  if (services.flatRender.ready()) {
     try {
-      state.frame.flatImage = *state.services.flatRender.take();
-      state.frame.flatImagePending = true;
-      state.panels.flat.message.clear();
+      frame.flatImage = *services.flatRender.take();
+      frame.flatImagePending = true;
+      flat.message.clear();
     } catch (const std::exception& e) {
-      state.panels.flat.message = e.what();
+      flat.message = e.what();
     }
   }
   // Only an edit can change what the flat view shows: no copy of the layer is made on the frames between.
-  if (state.panels.flat.checkedRevision == state.document.revisions().any) return;
-  state.panels.flat.checkedRevision = state.document.revisions().any;
-  const core::Scene shown = flatViewScene(state.document.scene);
+  if (flat.checkedRevision == document.revisions().any) return;
+  flat.checkedRevision = document.revisions().any;
+  const core::Scene shown = flatViewScene(document.scene);
   if (shown.layers.empty()) {
-    state.panels.flat.message = "the flat view shows flame layers; this scene has none";
+    flat.message = "the flat view shows flame layers; this scene has none";
     return;
   }
-  if (shown == state.panels.flat.rendered) return;
-  state.panels.flat.rendered = shown;
+  if (shown == flat.rendered) return;
+  flat.rendered = shown;
   core::FlatRenderOptions options;
   options.width = std::min(shown.flat.width, kFlatViewMaxWidth);
   options.quality = std::min(shown.flat.quality, kFlatViewMaxQuality);
-  state.services.flatRender.start([shown, options](std::stop_token stop) mutable {
+  services.flatRender.start([shown, options](std::stop_token stop) mutable {
     std::atomic<bool> cancel{false};
     const std::stop_callback onStop(stop, [&cancel] { cancel = true; });
     options.cancel = &cancel;
@@ -100,23 +100,23 @@ void updateFlatView(ExplorerState& state) {
 }
 
 // The flat image over the whole window behind the panels, letterboxed to its aspect.
-void drawFlatView(const ExplorerState& state) {
-  if (!state.panels.flat.on) return;
+void drawFlatView(const FlatViewState& flat, const Services& services, const FrameOutputs& frame) {
+  if (!flat.on) return;
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   draw->AddRectFilled(ImVec2(0.0f, 0.0f), display, IM_COL32(0, 0, 0, 255));
-  if (state.frame.flatTexture && state.frame.flatTextureWidth > 0 && state.frame.flatTextureHeight > 0) {
-    const float fit = std::min(display.x / static_cast<float>(state.frame.flatTextureWidth),
-                               display.y / static_cast<float>(state.frame.flatTextureHeight));
-    const ImVec2 size(fit * static_cast<float>(state.frame.flatTextureWidth),
-                      fit * static_cast<float>(state.frame.flatTextureHeight));
+  if (frame.flatTexture && frame.flatTextureWidth > 0 && frame.flatTextureHeight > 0) {
+    const float fit = std::min(display.x / static_cast<float>(frame.flatTextureWidth),
+                               display.y / static_cast<float>(frame.flatTextureHeight));
+    const ImVec2 size(fit * static_cast<float>(frame.flatTextureWidth),
+                      fit * static_cast<float>(frame.flatTextureHeight));
     const ImVec2 corner(0.5f * (display.x - size.x), 0.5f * (display.y - size.y));
-    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(state.frame.flatTexture)), corner,
+    draw->AddImage(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(frame.flatTexture)), corner,
                    ImVec2(corner.x + size.x, corner.y + size.y));
   }
-  const char* text = !state.panels.flat.message.empty() ? state.panels.flat.message.c_str()
-                     : state.services.flatRender.busy() ? "flat view: rendering…"
-                                                        : "flat view (as flam3 renders it)";
+  const char* text = !flat.message.empty()        ? flat.message.c_str()
+                     : services.flatRender.busy() ? "flat view: rendering…"
+                                                  : "flat view (as flam3 renders it)";
   draw->AddText(ImVec2(12.0f, display.y - 48.0f), IM_COL32(220, 220, 220, 255), text);
 }
 

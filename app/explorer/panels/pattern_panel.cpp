@@ -37,14 +37,13 @@ namespace voxflame::app::panels {
 // ---------------------------------------------------------------------------------------------
 // Panels.
 
-void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core::AttractorInfo& info) {
-  if (std::exchange(state.panels.pattern.focusAttractorFilter, false)) takeKeyboard(state);
-  const bool enter =
-      ImGui::InputTextWithHint("##filter", "filter attractors (Ctrl+F)", state.panels.pattern.attractorFilter,
-                               sizeof state.panels.pattern.attractorFilter, ImGuiInputTextFlags_EnterReturnsTrue);
-  probe(state, "attractor/filter");
-  noteTyped(state, "attractor filter", state.panels.pattern.attractorFilter);
-  const std::string filter = lowercase(state.panels.pattern.attractorFilter);
+void attractorPicker(Ui& ui, PatternPanelState& pattern, core::PatternLayer& layer, const core::AttractorInfo& info) {
+  if (std::exchange(pattern.focusAttractorFilter, false)) takeKeyboard(ui);
+  const bool enter = ImGui::InputTextWithHint("##filter", "filter attractors (Ctrl+F)", pattern.attractorFilter,
+                                              sizeof pattern.attractorFilter, ImGuiInputTextFlags_EnterReturnsTrue);
+  probe(ui, "attractor/filter");
+  noteTyped(ui, "attractor filter", pattern.attractorFilter);
+  const std::string filter = lowercase(pattern.attractorFilter);
   // Every word of the filter, anywhere in the id or the name: "sprott quadratic" finds
   // sprott_quadratic, "Sprott's 3D quadratic map".
   std::vector<std::string> words;
@@ -64,7 +63,7 @@ void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core
     layer.params = candidate.defaultParams();
     layer.step = candidate.defaultStep;
     layer.integrator = candidate.defaultIntegrator;
-    state.document.edited(core::Affects::Pattern);
+    ui.document.edited(core::Affects::Pattern);
   };
   // Enter takes the first match, so typing a name and Enter is enough.
   if (!filter.empty()) {
@@ -76,7 +75,7 @@ void attractorPicker(ExplorerState& state, core::PatternLayer& layer, const core
       dimText("Enter: %s", first->name.c_str());
       if (enter) {
         choose(*first);
-        state.panels.pattern.attractorFilter[0] = '\0';
+        pattern.attractorFilter[0] = '\0';
       }
     }
   }
@@ -111,17 +110,17 @@ void gradientPreview(const std::vector<core::GradientStop>& stops, float width, 
   ImGui::Dummy(ImVec2(width, height));
 }
 
-void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSettings& color, bool chaosGame) {
+void colourEditor(Ui& ui, const std::string& scope, core::ColorSettings& color, bool chaosGame) {
   // ColorMode's order; flam3's colour index only exists for chaos-game layers.
   int mode = static_cast<int>(color.mode);
   const char* modes =
       chaosGame ? "speed\0curvature\0time\0axis\0distance\0index\0" : "speed\0curvature\0time\0axis\0distance\0";
-  if (reportEdit(state, ImGui::Combo("colour by", &mode, modes), core::Affects::Pattern))
+  if (reportEdit(ui, ImGui::Combo("colour by", &mode, modes), core::Affects::Pattern))
     color.mode = static_cast<core::ColorMode>(mode);
-  probe(state, scope + "colour by");
-  if (color.mode == core::ColorMode::Time) fieldWidget(state, scope, color, core::colorFields(), "period");
-  if (color.mode == core::ColorMode::Axis) fieldWidget(state, scope, color, core::colorFields(), "axis");
-  fieldWidget(state, scope, color, core::colorFields(), "scale");
+  probe(ui, scope + "colour by");
+  if (color.mode == core::ColorMode::Time) fieldWidget(ui, scope, color, core::colorFields(), "period");
+  if (color.mode == core::ColorMode::Axis) fieldWidget(ui, scope, color, core::colorFields(), "axis");
+  fieldWidget(ui, scope, color, core::colorFields(), "scale");
 
   // Palettes: a named one fills the stops; editing a stop makes the gradient custom.
   const char* current = color.palette.empty() ? "custom gradient" : color.palette.c_str();
@@ -132,7 +131,7 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
       if (ImGui::Selectable(palette.name.c_str(), palette.name == color.palette)) {
         color.palette = palette.name;
         color.gradient = core::paletteStops(palette.name);
-        state.document.edited(core::Affects::Pattern);
+        ui.document.edited(core::Affects::Pattern);
       }
       ImGui::SameLine(nameWidth);
       gradientPreview(core::paletteStops(palette.name), std::max(20.0f, ImGui::GetContentRegionAvail().x),
@@ -140,12 +139,12 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
     }
     ImGui::EndCombo();
   }
-  probe(state, scope + "palette");
+  probe(ui, scope + "palette");
   gradientPreview(color.gradient, ImGui::CalcItemWidth(), ImGui::GetFrameHeight());
   // A palette of many stops (a flame's 256 colours) shows as its strip; its stops open on demand.
   const bool manyStops = color.gradient.size() > 16;
   const bool stopsOpen = !manyStops || ImGui::TreeNode("stops", "edit the %zu stops", color.gradient.size());
-  if (manyStops) probe(state, scope + "edit stops");
+  if (manyStops) probe(ui, scope + "edit stops");
   bool edited = false;
   int remove = -1;
   for (std::size_t s = 0; stopsOpen && s < color.gradient.size(); ++s) {
@@ -160,7 +159,7 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
     if (ImGui::SliderFloat("##position", &stop.position, 0.0f, 1.0f, "stop at %.2f")) edited = true;
-    probe(state, scope + "stop" + std::to_string(s));
+    probe(ui, scope + "stop" + std::to_string(s));
     ImGui::SameLine();
     if (color.gradient.size() > 1 && ImGui::SmallButton("x")) remove = static_cast<int>(s);
     ImGui::PopID();
@@ -170,7 +169,7 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
     color.gradient.erase(color.gradient.begin() + remove);
     edited = true;
   }
-  if (!manyStops && button(state, scope, "Add stop") && color.gradient.size() < 16) {
+  if (!manyStops && button(ui, scope, "Add stop") && color.gradient.size() < 16) {
     // A new stop goes into the widest gap, with the colour the gradient already has there.
     std::vector<core::GradientStop> sorted = color.gradient;
     std::sort(sorted.begin(), sorted.end(), [](const auto& a, const auto& b) { return a.position < b.position; });
@@ -186,7 +185,7 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
     edited = true;
   }
   if (edited) {
-    state.document.edited(core::Affects::Pattern);
+    ui.document.edited(core::Affects::Pattern);
     color.palette.clear();
     // Stops stay in position order (the preset's order), except while one is being dragged past another.
     if (!ImGui::IsAnyItemActive())
@@ -195,38 +194,36 @@ void colourEditor(ExplorerState& state, const std::string& scope, core::ColorSet
   }
 }
 
-void juliaEditor(ExplorerState& state, const std::string& scope, core::QuaternionJuliaSettings& julia) {
+void juliaEditor(Ui& ui, const std::string& scope, core::QuaternionJuliaSettings& julia) {
   static constexpr const char* kComponents[] = {"c (1)", "c (i)", "c (j)", "c (k)"};
   for (int i = 0; i < 4; ++i)
-    reportEdit(state, slider(state, scope, kComponents[i], julia.c[i], -1.5, 1.5, kClamp, "%.4f"),
-               core::Affects::Pattern);
-  fieldWidget(state, scope, julia, core::juliaFields(), "view");
-  fieldWidget(state, scope, julia, core::juliaFields(), "turn_deg");
+    reportEdit(ui, slider(ui, scope, kComponents[i], julia.c[i], -1.5, 1.5, kClamp, "%.4f"), core::Affects::Pattern);
+  fieldWidget(ui, scope, julia, core::juliaFields(), "view");
+  fieldWidget(ui, scope, julia, core::juliaFields(), "turn_deg");
   if (julia.view == core::QuaternionView::Slice) {
-    fieldWidget(state, scope, julia, core::juliaFields(), "slice_w");
-    fieldWidget(state, scope, julia, core::juliaFields(), "thickness");
+    fieldWidget(ui, scope, julia, core::juliaFields(), "slice_w");
+    fieldWidget(ui, scope, julia, core::juliaFields(), "thickness");
   }
 }
 
-void attractorEditor(ExplorerState& state, const std::string& scope, core::PatternLayer& layer) {
+void attractorEditor(Ui& ui, PatternPanelState& pattern, const std::string& scope, core::PatternLayer& layer) {
   const core::AttractorInfo& info = core::attractorOrThrow(layer.attractor);
-  attractorPicker(state, layer, info);
+  attractorPicker(ui, pattern, layer, info);
   if (layer.params.size() != info.params.size()) return;  // changed attractor: sliders next frame
   const core::AttractorInfo& current = core::attractorOrThrow(layer.attractor);
   for (std::size_t p = 0; p < current.params.size(); ++p) {
     const core::ParamInfo& param = current.params[p];
     // The slider's range is the catalogue's; Ctrl+click types any value the preset reader allows
     // (clamped to it here: ImGui can only clamp to the slider's range), right-click resets it.
-    if (reportEdit(
-            state,
-            slider(state, scope, param.name.c_str(), layer.params[p], param.sliderMin, param.sliderMax, 0, "%.4f"),
-            core::Affects::Pattern))
+    if (reportEdit(ui,
+                   slider(ui, scope, param.name.c_str(), layer.params[p], param.sliderMin, param.sliderMax, 0, "%.4f"),
+                   core::Affects::Pattern))
       layer.params[p] = std::isfinite(layer.params[p]) ? std::clamp(layer.params[p], -core::kAttractorParameterLimit,
                                                                     core::kAttractorParameterLimit)
                                                        : param.defaultValue;
-    markIfKeyed(state, valuePath(scope, "params/" + param.name), scope + param.name);
+    markIfKeyed(ui, valuePath(scope, "params/" + param.name), scope + param.name);
     if (ImGui::BeginPopupContextItem()) {
-      if (reportEdit(state, ImGui::Selectable("Reset to default"), core::Affects::Pattern))
+      if (reportEdit(ui, ImGui::Selectable("Reset to default"), core::Affects::Pattern))
         layer.params[p] = param.defaultValue;
       ImGui::EndPopup();
     }
@@ -235,50 +232,51 @@ void attractorEditor(ExplorerState& state, const std::string& scope, core::Patte
   }
   if (current.kind == core::AttractorKind::Flow) {
     int integrator = layer.integrator == core::Integrator::RK4 ? 1 : 0;
-    if (reportEdit(state, ImGui::Combo("integrator", &integrator, "Euler\0Runge-Kutta 4\0"), core::Affects::Pattern))
+    if (reportEdit(ui, ImGui::Combo("integrator", &integrator, "Euler\0Runge-Kutta 4\0"), core::Affects::Pattern))
       layer.integrator = integrator == 1 ? core::Integrator::RK4 : core::Integrator::Euler;
-    fieldWidget(state, scope, layer, core::layerFields(), "step");
+    fieldWidget(ui, scope, layer, core::layerFields(), "step");
   }
-  if (reportEdit(state, button(state, scope, "Reset parameters"), core::Affects::Pattern)) {
+  if (reportEdit(ui, button(ui, scope, "Reset parameters"), core::Affects::Pattern)) {
     layer.params = current.defaultParams();
     layer.step = current.defaultStep;
     layer.integrator = current.defaultIntegrator;
   }
 }
 
-void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
-  core::PatternLayer& layer = state.document.scene.layers[index];
+void layerEditor(Ui& ui, PatternPanelState& pattern, ExplorePanelState& explore, FlatViewState& flat, std::size_t index,
+                 bool& removeThis) {
+  core::PatternLayer& layer = ui.document.scene.layers[index];
   const std::string scope = "layer" + std::to_string(index) + "/";
   const core::PatternKind kindBefore = layer.kind;
-  patternKindChoice(state, index, scope, layer);
+  patternKindChoice(ui, pattern, index, scope, layer);
   if (layer.kind != kindBefore) return;  // the new kind's widgets from the next frame
   switch (layer.kind) {
     case core::PatternKind::Attractor:
-      attractorEditor(state, scope, layer);
+      attractorEditor(ui, pattern, scope, layer);
       break;
     case core::PatternKind::Flame:
-      ImGui::Checkbox("flat view (as flam3 renders it)", &state.panels.flat.on);
+      ImGui::Checkbox("flat view (as flam3 renders it)", &flat.on);
       if (ImGui::IsItemHovered())
         ImGui::SetTooltip(
             "The flame in 2D at its own framing (the flame file's size, centre, scale, zoom) with\n"
             "flam3's tone: what the flame's author saw. `voxflame render --flat` renders it too.");
-      flameEditor(state, index, scope, layer.flame);
+      flameEditor(ui, pattern, explore, index, scope, layer.flame);
       break;
     case core::PatternKind::QuaternionJulia:
-      juliaEditor(state, scope, layer.julia);
+      juliaEditor(ui, scope, layer.julia);
       break;
   }
-  if (state.document.scene.layers.size() > 1) {
+  if (ui.document.scene.layers.size() > 1) {
     if (layer.kind == core::PatternKind::Attractor) ImGui::SameLine();  // beside "Reset parameters"
-    if (button(state, scope, "Remove layer")) removeThis = true;
-    fieldWidget(state, scope, layer, core::layerFields(), "weight");
+    if (button(ui, scope, "Remove layer")) removeThis = true;
+    fieldWidget(ui, scope, layer, core::layerFields(), "weight");
   }
   // Open from the start: the fit decides how much of the mesh the pattern fills.
   if (ImGui::TreeNodeEx("Placement", ImGuiTreeNodeFlags_DefaultOpen)) {
-    fieldWidget(state, scope, layer.transform, core::transformFields(), "scale");
-    fieldWidget(state, scope, layer.transform, core::transformFields(), "fit");
-    fieldWidget(state, scope, layer.transform, core::transformFields(), "rotation_deg");
-    fieldWidget(state, scope, layer.transform, core::transformFields(), "offset");
+    fieldWidget(ui, scope, layer.transform, core::transformFields(), "scale");
+    fieldWidget(ui, scope, layer.transform, core::transformFields(), "fit");
+    fieldWidget(ui, scope, layer.transform, core::transformFields(), "rotation_deg");
+    fieldWidget(ui, scope, layer.transform, core::transformFields(), "offset");
     const double minDeg = -180.0, maxDeg = 180.0;
     // Copies: the same pattern again, turned; one set of parameters moves them all.
     std::vector<glm::dvec3>& copies = layer.transform.copies;
@@ -288,20 +286,20 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
       double angles[3] = {copies[c].x, copies[c].y, copies[c].z};
       const std::string label = "copy " + std::to_string(c + 1);
       if (reportEdit(
-              state,
+              ui,
               ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Double, angles, 3, &minDeg, &maxDeg, "%.0f°", kClamp),
               core::Affects::Pattern))
         copies[c] = glm::dvec3(angles[0], angles[1], angles[2]);
-      probe(state, scope + label);
+      probe(ui, scope + label);
       ImGui::SameLine();
       if (ImGui::SmallButton("x")) removeCopy = c;
-      probe(state, scope + label + " remove");
+      probe(ui, scope + label + " remove");
       ImGui::PopID();
     }
-    if (reportEdit(state, removeCopy < copies.size(), core::Affects::Pattern))
+    if (reportEdit(ui, removeCopy < copies.size(), core::Affects::Pattern))
       copies.erase(copies.begin() + static_cast<std::ptrdiff_t>(removeCopy));
     if (copies.size() < core::kMaxLayerCopies &&
-        reportEdit(state, button(state, scope, "Add copy"), core::Affects::Pattern)) {
+        reportEdit(ui, button(ui, scope, "Add copy"), core::Affects::Pattern)) {
       // Each new copy turns a quarter further about the next axis, so it lands somewhere new.
       const auto n = static_cast<int>(copies.size());
       glm::dvec3 angles(0.0);
@@ -313,12 +311,13 @@ void layerEditor(ExplorerState& state, std::size_t index, bool& removeThis) {
     ImGui::TreePop();
   }
   if (ImGui::TreeNodeEx("Colour", ImGuiTreeNodeFlags_DefaultOpen)) {
-    colourEditor(state, scope, layer.color, layer.isChaosGame());
+    colourEditor(ui, scope, layer.color, layer.isChaosGame());
     ImGui::TreePop();
   }
 }
 
-void patternWindow(ExplorerState& state, float scale) {
+void patternWindow(Ui& ui, PatternPanelState& pattern, ExplorePanelState& explore, FlatViewState& flat,
+                   Services& services, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
   // Docked at the left, full height above the status line; only its width is the user's.
   const float height = io.DisplaySize.y - statusBarHeight(scale);
@@ -327,11 +326,11 @@ void patternWindow(ExplorerState& state, float scale) {
   ImGui::SetNextWindowSizeConstraints(ImVec2(260 * scale, height), ImVec2(0.4f * io.DisplaySize.x, height));
   // Side panels stay behind the notice and popups even when clicked.
   ImGui::Begin("Pattern", nullptr, ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoMove);
-  state.frame.layout.left = ImGui::IsWindowCollapsed() ? 0.0f : ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
+  ui.frame.layout.left = ImGui::IsWindowCollapsed() ? 0.0f : ImGui::GetWindowPos().x + ImGui::GetWindowSize().x;
   ImGui::PushItemWidth(-110 * scale);
-  std::size_t removeIndex = state.document.scene.layers.size();
-  for (std::size_t li = 0; li < state.document.scene.layers.size(); ++li) {
-    const core::PatternLayer& shown = state.document.scene.layers[li];
+  std::size_t removeIndex = ui.document.scene.layers.size();
+  for (std::size_t li = 0; li < ui.document.scene.layers.size(); ++li) {
+    const core::PatternLayer& shown = ui.document.scene.layers[li];
     const std::string what = shown.kind == core::PatternKind::Attractor ? core::attractorOrThrow(shown.attractor).name
                              : shown.kind == core::PatternKind::Flame
                                  ? "flame (" + std::to_string(shown.flame.xforms.size()) + " transforms)"
@@ -340,18 +339,17 @@ void patternWindow(ExplorerState& state, float scale) {
     const std::string header = "Layer " + std::to_string(li + 1) + ": " + what + "###layer";
     if (ImGui::CollapsingHeader(header.c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
       bool remove = false;
-      layerEditor(state, li, remove);
+      layerEditor(ui, pattern, explore, flat, li, remove);
       if (remove) removeIndex = li;
     }
     ImGui::PopID();
   }
-  if (reportEdit(state, removeIndex < state.document.scene.layers.size(), core::Affects::Pattern))
-    state.document.scene.layers.erase(state.document.scene.layers.begin() + static_cast<std::ptrdiff_t>(removeIndex));
-  if (state.document.scene.layers.size() < 8 &&
-      reportEdit(state, button(state, "", "Add layer"), core::Affects::Pattern)) {
+  if (reportEdit(ui, removeIndex < ui.document.scene.layers.size(), core::Affects::Pattern))
+    ui.document.scene.layers.erase(ui.document.scene.layers.begin() + static_cast<std::ptrdiff_t>(removeIndex));
+  if (ui.document.scene.layers.size() < 8 && reportEdit(ui, button(ui, "", "Add layer"), core::Affects::Pattern)) {
     // A second pattern starts as a different attractor at half weight, coloured apart.
     core::PatternLayer layer;
-    layer.attractor = state.document.scene.layers.front().attractor == "aizawa" ? "thomas" : "aizawa";
+    layer.attractor = ui.document.scene.layers.front().attractor == "aizawa" ? "thomas" : "aizawa";
     const core::AttractorInfo& info = core::attractorOrThrow(layer.attractor);
     layer.params = info.defaultParams();
     layer.step = info.defaultStep;
@@ -359,52 +357,46 @@ void patternWindow(ExplorerState& state, float scale) {
     layer.weight = 0.5;
     layer.color.palette = core::namedPalettes().back().name;
     layer.color.gradient = core::paletteStops(layer.color.palette);
-    state.document.scene.layers.push_back(layer);
+    ui.document.scene.layers.push_back(layer);
   }
 
   if (ImGui::CollapsingHeader("Explore", ImGuiTreeNodeFlags_DefaultOpen)) {
-    if (button(state, "", "Search (F3)")) startSearch(state, 0.1, true);
-    if (ImGui::IsItemHovered() && !state.document.scene.layers.empty() &&
-        state.document.scene.layers.front().isChaosGame())
+    if (button(ui, "", "Search (F3)")) startSearch(ui.document, explore, services, 0.1, true);
+    if (ImGui::IsItemHovered() && !ui.document.scene.layers.empty() && ui.document.scene.layers.front().isChaosGame())
       ImGui::SetTooltip("a new random pattern of this kind that fills its box");
     ImGui::SameLine();
-    if (button(state, "", "Mutate")) startSearch(state, state.panels.explore.mutateStrength, false);
+    if (button(ui, "", "Mutate")) startSearch(ui.document, explore, services, explore.mutateStrength, false);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(-1);
-    slider(state, "", "##strength", state.panels.explore.mutateStrength, 0.01, 1.0, ImGuiSliderFlags_Logarithmic,
-           "strength %.2f");
-    ImGui::BeginDisabled(state.panels.explore.visited.empty() || state.panels.explore.visitedIndex == 0);
-    if (button(state, "", "< Back")) goVisited(state, -1);
+    slider(ui, "", "##strength", explore.mutateStrength, 0.01, 1.0, ImGuiSliderFlags_Logarithmic, "strength %.2f");
+    ImGui::BeginDisabled(explore.visited.empty() || explore.visitedIndex == 0);
+    if (button(ui, "", "< Back")) goVisited(ui.document, explore, -1);
     ImGui::EndDisabled();
     ImGui::SameLine();
-    ImGui::BeginDisabled(state.panels.explore.visited.empty() ||
-                         state.panels.explore.visitedIndex + 1 >= state.panels.explore.visited.size());
-    if (button(state, "", "Forward >")) goVisited(state, +1);
+    ImGui::BeginDisabled(explore.visited.empty() || explore.visitedIndex + 1 >= explore.visited.size());
+    if (button(ui, "", "Forward >")) goVisited(ui.document, explore, +1);
     ImGui::EndDisabled();
     ImGui::SameLine();
-    if (state.panels.explore.visited.empty())
+    if (explore.visited.empty())
       dimText("no history yet");
     else
-      dimText("%zu of %zu (Alt+Left/Right)", state.panels.explore.visitedIndex + 1,
-              state.panels.explore.visited.size());
-    if (state.services.search.busy()) {
-      if (state.services.searchTried && state.services.searchStrength)
-        dimText("searching at strength %.2g: %d tried", state.services.searchStrength->load(),
-                state.services.searchTried->load());
+      dimText("%zu of %zu (Alt+Left/Right)", explore.visitedIndex + 1, explore.visited.size());
+    if (services.search.busy()) {
+      if (services.searchTried && services.searchStrength)
+        dimText("searching at strength %.2g: %d tried", services.searchStrength->load(), services.searchTried->load());
       else
         dimText("searching…");
-      if (button(state, "explore/", "Cancel search")) {
-        state.services.search.cancel();
-        state.panels.explore.searchMessage =
-            state.services.searchTried
-                ? "search cancelled after " + std::to_string(state.services.searchTried->load()) + " tries"
-                : std::string("search cancelled");
+      if (button(ui, "explore/", "Cancel search")) {
+        services.search.cancel();
+        explore.searchMessage =
+            services.searchTried ? "search cancelled after " + std::to_string(services.searchTried->load()) + " tries"
+                                 : std::string("search cancelled");
       }
-    } else if (!state.panels.explore.searchMessage.empty())
-      ImGui::TextWrapped("%s", state.panels.explore.searchMessage.c_str());
+    } else if (!explore.searchMessage.empty())
+      ImGui::TextWrapped("%s", explore.searchMessage.c_str());
     // The message itself is the notice's, at the top of the view: one message, said once.
-    if (!state.frame.session.escapeNote.empty()) {
-      if (button(state, "", "Find a nearby one")) startSearch(state, 0.1, false);
+    if (!ui.frame.session.escapeNote.empty()) {
+      if (button(ui, "", "Find a nearby one")) startSearch(ui.document, explore, services, 0.1, false);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("a bounded pattern close to this one (Mutate at strength 0.1)");
     }
   }

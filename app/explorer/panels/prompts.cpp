@@ -51,9 +51,9 @@ bool beginModal(const char* title, float heightFraction, float width) {
 }  // namespace
 
 // Scenes left by a session that crashed or was killed: restore or discard, one at a time.
-void recoveryWindow(ExplorerState& state, float scale) {
-  if (state.services.recoverable.empty()) return;
-  const Recoverable& recoverable = state.services.recoverable.front();
+void recoveryWindow(Ui& ui, std::vector<Recoverable>& offered, float scale) {
+  if (offered.empty()) return;
+  const Recoverable& recoverable = offered.front();
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 0.35f * io.DisplaySize.y), ImGuiCond_Always,
                           ImVec2(0.5f, 0.5f));
@@ -62,34 +62,34 @@ void recoveryWindow(ExplorerState& state, float scale) {
   if (recoverable.scene) {
     ImGui::TextWrapped("voxflame did not close normally last time. Its scene \"%s\" was autosaved.",
                        recoverable.scene->name.c_str());
-    if (button(state, "recover/", "Restore")) {
-      state.document.replace(*recoverable.scene);
-      state.document.keyBase = state.document.scene;
+    if (button(ui, "recover/", "Restore")) {
+      ui.document.replace(*recoverable.scene);
+      ui.document.keyBase = ui.document.scene;
       dismissRecoverable(recoverable);
-      state.services.recoverable.erase(state.services.recoverable.begin());
+      offered.erase(offered.begin());
     }
     ImGui::SameLine();
   } else {
     ImGui::TextColored(kErrorColor, "%s", recoverable.error.c_str());
   }
-  if (!state.services.recoverable.empty() && button(state, "recover/", "Discard")) {
-    dismissRecoverable(state.services.recoverable.front());
-    state.services.recoverable.erase(state.services.recoverable.begin());
+  if (!offered.empty() && button(ui, "recover/", "Discard")) {
+    dismissRecoverable(offered.front());
+    offered.erase(offered.begin());
   }
   ImGui::End();
 }
 
 // "Which flame?": the flames of a file opened with several, by name (filtered by words), to import
 // one; Escape or Cancel imports none.
-void flameChoiceWindow(ExplorerState& state, float scale) {
-  if (!state.panels.prompts.flameChoice) return;
-  PromptsState::FlameChoice& choice = *state.panels.prompts.flameChoice;
+void flameChoiceWindow(Ui& ui, PromptsState& prompts, Settings& settings, float scale) {
+  if (!prompts.flameChoice) return;
+  PromptsState::FlameChoice& choice = *prompts.flameChoice;
   if (!beginModal("Which flame?", 0.45f, 440 * scale)) return;
   ImGui::TextWrapped("%s holds %zu flames. Import which one?", choice.path.filename().string().c_str(),
                      choice.names.size());
   ImGui::SetNextItemWidth(-1);
   ImGui::InputTextWithHint("##flamefilter", "filter by name", choice.filter, sizeof choice.filter);
-  noteTyped(state, "flame filter", choice.filter);
+  noteTyped(ui, "flame filter", choice.filter);
   const std::string filter = lowercase(choice.filter);
   std::optional<std::size_t> chosen;
   ImGui::BeginChild("flames", ImVec2(0, std::min(12.0f, static_cast<float>(choice.names.size())) *
@@ -102,23 +102,23 @@ void flameChoiceWindow(ExplorerState& state, float scale) {
     label += ". ";
     label += name;
     if (ImGui::Selectable(label.c_str())) chosen = i;
-    probe(state, "flame/" + name);
+    probe(ui, "flame/" + name);
   }
   ImGui::EndChild();
-  const bool cancel = button(state, "flame/", "Cancel") || ImGui::IsKeyPressed(kKeyEscape, false);
+  const bool cancel = button(ui, "flame/", "Cancel") || ImGui::IsKeyPressed(kKeyEscape, false);
   if (chosen) {
     try {
       core::FlameImportOptions options;
       options.index = *chosen;
       core::Scene scene;
-      const core::FlameFileContents contents = importFlameScene(choice.path, state.document.scene, options, scene);
-      applyImportedFlame(state, choice.path, contents, scene);
+      const core::FlameFileContents contents = importFlameScene(choice.path, ui.document.scene, options, scene);
+      applyImportedFlame(ui.document, prompts, settings, choice.path, contents, scene);
     } catch (const core::Error& e) {
-      state.panels.prompts.notice = e.what();
+      prompts.notice = e.what();
     }
   }
   if (chosen || cancel) {
-    state.panels.prompts.flameChoice.reset();
+    prompts.flameChoice.reset();
     ImGui::CloseCurrentPopup();
   }
   ImGui::EndPopup();
@@ -126,50 +126,49 @@ void flameChoiceWindow(ExplorerState& state, float scale) {
 
 // Quitting with unsaved changes: save them (as the user's preset of the document's name), throw
 // them away, or stay. S, D and Escape answer from the keyboard.
-void quitPromptWindow(ExplorerState& state, float scale) {
-  if (!state.panels.prompts.quitPrompt) return;
+void quitPromptWindow(const Document& document, FrameOutputs& frame, PromptsState& prompts, float scale) {
+  if (!prompts.quitPrompt) return;
   if (!beginModal("Unsaved changes", 0.4f, 420 * scale)) return;
-  ImGui::TextWrapped("\"%s\" has changes that are not saved. Save them before quitting?",
-                     state.document.scene.name.c_str());
+  ImGui::TextWrapped("\"%s\" has changes that are not saved. Save them before quitting?", document.scene.name.c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, kDimColor);
   ImGui::TextWrapped(
       "Save keeps them as your preset \"%s\", replacing one of that name. S saves, D discards, "
       "Escape cancels.",
-      state.document.scene.name.c_str());
+      document.scene.name.c_str());
   ImGui::PopStyleColor();
   const bool typing = ImGui::GetIO().WantTextInput;
-  const bool save = button(state, "quit/", "Save") || (!typing && ImGui::IsKeyPressed('S', false));
+  const bool save = button(frame, "quit/", "Save") || (!typing && ImGui::IsKeyPressed('S', false));
   ImGui::SameLine();
-  const bool discard = button(state, "quit/", "Discard") || (!typing && ImGui::IsKeyPressed('D', false));
+  const bool discard = button(frame, "quit/", "Discard") || (!typing && ImGui::IsKeyPressed('D', false));
   ImGui::SameLine();
-  const bool cancel = button(state, "quit/", "Cancel") || ImGui::IsKeyPressed(kKeyEscape, false);
+  const bool cancel = button(frame, "quit/", "Cancel") || ImGui::IsKeyPressed(kKeyEscape, false);
   if (save) {
-    state.frame.requests.saveAs = state.document.scene.name;
-    state.frame.requests.saveReplacing = true;
-    state.panels.prompts.quitAfterSave = true;
+    frame.requests.saveAs = document.scene.name;
+    frame.requests.saveReplacing = true;
+    prompts.quitAfterSave = true;
   } else if (discard) {
-    state.frame.requests.quit = true;
+    frame.requests.quit = true;
   }
   if (save || discard || cancel) {
-    state.panels.prompts.quitPrompt = false;
+    prompts.quitPrompt = false;
     ImGui::CloseCurrentPopup();
   }
   ImGui::EndPopup();
 }
 
 // Errors stay on screen until dismissed; the explorer goes on with the last good state.
-void noticeWindow(ExplorerState& state, float scale) {
+void noticeWindow(FrameOutputs& frame, PromptsState& prompts, float scale) {
   std::string text;
   auto addLine = [&text](const std::string& line) {
     if (line.empty()) return;
     if (!text.empty()) text += '\n';
     text += line;
   };
-  addLine(state.panels.prompts.notice);
-  addLine(state.frame.session.error);
-  if (!state.frame.session.escapeNote.empty())
-    addLine(state.frame.session.showingLastBounded ? state.frame.session.escapeNote
-                                                   : state.frame.session.escapeNote + " — try Search (F3).");
+  addLine(prompts.notice);
+  addLine(frame.session.error);
+  if (!frame.session.escapeNote.empty())
+    addLine(frame.session.showingLastBounded ? frame.session.escapeNote
+                                             : frame.session.escapeNote + " — try Search (F3).");
   if (text.empty()) return;
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(0.5f * io.DisplaySize.x, 12 * scale), ImGuiCond_Always, ImVec2(0.5f, 0.0f));
@@ -182,7 +181,7 @@ void noticeWindow(ExplorerState& state, float scale) {
   ImGui::PushTextWrapPos(io.DisplaySize.x * 0.43f);
   ImGui::TextColored(kErrorColor, "%s", text.c_str());
   ImGui::PopTextWrapPos();
-  if (!state.panels.prompts.notice.empty() && button(state, "notice/", "Dismiss")) state.panels.prompts.notice.clear();
+  if (!prompts.notice.empty() && button(frame, "notice/", "Dismiss")) prompts.notice.clear();
   ImGui::End();
 }
 

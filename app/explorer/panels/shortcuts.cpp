@@ -39,20 +39,20 @@ namespace voxflame::app::panels {
 
 // Ctrl+Z undoes, Ctrl+Shift+Z (or Ctrl+Y) redoes; an edit is recorded once it settles, so a
 // whole slider drag or camera drag is one step.
-void handleHistory(ExplorerState& state) {
+void handleHistory(Document& document) {
   const ImGuiIO& io = ImGui::GetIO();
   const bool z = ImGui::IsKeyPressed('Z', false), y = ImGui::IsKeyPressed('Y', false);
   if (!io.WantTextInput && io.KeyCtrl && (z || y)) {
     const bool redo = io.KeyShift || y;
-    if (auto scene = redo ? state.document.history->redo() : state.document.history->undo()) {
-      state.document.replace(*scene);
-      state.document.keyBase = *scene;
+    if (auto scene = redo ? document.history->redo() : document.history->undo()) {
+      document.replace(*scene);
+      document.keyBase = *scene;
     }
     return;
   }
   const bool mouseHeld = ImGui::IsMouseDown(ImGuiMouseButton_Left) || ImGui::IsMouseDown(ImGuiMouseButton_Right) ||
                          ImGui::IsMouseDown(ImGuiMouseButton_Middle);
-  if (!mouseHeld && !ImGui::IsAnyItemActive()) state.document.recordInHistory();
+  if (!mouseHeld && !ImGui::IsAnyItemActive()) document.recordInHistory();
 }
 
 // However far one pans or flies, the target stays a value a preset can hold.
@@ -61,34 +61,33 @@ glm::dvec3 clampedTarget(const glm::dvec3& target) {
   return glm::clamp(target, glm::dvec3(field.min), glm::dvec3(field.max));
 }
 
-static void moveCamera(ExplorerState& state, core::CameraSettings& camera);
+static void moveCamera(ViewDragState& drag, bool quitPromptOpen, core::CameraSettings& camera);
 
 // Left-drag orbits, right- or middle-drag pans, the wheel zooms; W/A/S/D/Q/E fly. Input that
 // starts over a panel belongs to the panel.
-void handleCamera(ExplorerState& state) {
-  core::CameraSettings& camera = state.document.scene.camera;
+void handleCamera(Document& document, ViewDragState& drag, bool quitPromptOpen) {
+  core::CameraSettings& camera = document.scene.camera;
   const core::CameraSettings before = camera;
-  moveCamera(state, camera);
-  if (!(camera == before)) state.document.edited(core::Affects::View);
+  moveCamera(drag, quitPromptOpen, camera);
+  if (!(camera == before)) document.edited(core::Affects::View);
 }
 
-static void moveCamera(ExplorerState& state, core::CameraSettings& camera) {
+static void moveCamera(ViewDragState& drag, bool quitPromptOpen, core::CameraSettings& camera) {
   const ImGuiIO& io = ImGui::GetIO();
   const bool overUi = io.WantCaptureMouse;
-  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !overUi) state.panels.orbiting = true;
+  if (ImGui::IsMouseClicked(ImGuiMouseButton_Left) && !overUi) drag.orbiting = true;
   if ((ImGui::IsMouseClicked(ImGuiMouseButton_Right) || ImGui::IsMouseClicked(ImGuiMouseButton_Middle)) && !overUi)
-    state.panels.panning = true;
-  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) state.panels.orbiting = false;
-  if (!ImGui::IsMouseDown(ImGuiMouseButton_Right) && !ImGui::IsMouseDown(ImGuiMouseButton_Middle))
-    state.panels.panning = false;
+    drag.panning = true;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Left)) drag.orbiting = false;
+  if (!ImGui::IsMouseDown(ImGuiMouseButton_Right) && !ImGui::IsMouseDown(ImGuiMouseButton_Middle)) drag.panning = false;
   const ImVec2 delta = io.MouseDelta;
   const bool moved = std::isfinite(delta.x) && std::isfinite(delta.y) && (delta.x != 0.0f || delta.y != 0.0f);
   const core::CameraFrame frame = core::orbitCamera(camera, core::Box{{-1, -1, -1}, {1, 1, 1}}, 1.0);
-  if (state.panels.orbiting && moved) {
+  if (drag.orbiting && moved) {
     camera.azimuthDeg = std::remainder(camera.azimuthDeg - 0.3 * delta.x, 360.0);
     camera.elevationDeg = std::clamp(camera.elevationDeg + 0.3 * delta.y, -90.0, 90.0);
   }
-  if (state.panels.panning && moved) {
+  if (drag.panning && moved) {
     // The target moves with the pointer: a screen's height of drag moves the view by about
     // what is visible at the target's distance.
     const double perPixel =
@@ -102,7 +101,7 @@ static void moveCamera(ExplorerState& state, core::CameraSettings& camera) {
   // Free flight: W/S move along the view, A/D sideways, Q/E down and up; the orbit target moves
   // with the eye, so the camera turns about itself when dragged afterwards.
   // (Nor while the quit prompt is open: S and D answer it.)
-  if (io.WantCaptureKeyboard || io.KeyCtrl || state.panels.prompts.quitPrompt) return;
+  if (io.WantCaptureKeyboard || io.KeyCtrl || quitPromptOpen) return;
   const double speed = 1.2 * camera.distance * std::min(0.1f, io.DeltaTime);
   auto held = [](int key) { return keyDown(key) ? 1.0 : 0.0; };
   const glm::dvec3 move = (held('W') - held('S')) * frame.forward + (held('D') - held('A')) * frame.right +
@@ -120,11 +119,11 @@ void handleShortcuts(ExplorerState& state) {
     state.frame.requests.saveReplacing = true;
   }
   if (io.WantTextInput) return;
-  if (ImGui::IsKeyPressed(kKeyF3, false)) startSearch(state, 0.1, true);
+  if (ImGui::IsKeyPressed(kKeyF3, false)) startSearch(state.document, state.panels.explore, state.services, 0.1, true);
   if (io.KeyCtrl && ImGui::IsKeyPressed('F', false)) state.panels.pattern.focusAttractorFilter = true;
   const bool alt = io.KeyAlt || keyDown(kKeyLeftAlt) || keyDown(kKeyRightAlt);
-  if (alt && ImGui::IsKeyPressed(kKeyLeft, false)) goVisited(state, -1);
-  if (alt && ImGui::IsKeyPressed(kKeyRight, false)) goVisited(state, +1);
+  if (alt && ImGui::IsKeyPressed(kKeyLeft, false)) goVisited(state.document, state.panels.explore, -1);
+  if (alt && ImGui::IsKeyPressed(kKeyRight, false)) goVisited(state.document, state.panels.explore, +1);
 }
 
 }  // namespace voxflame::app::panels

@@ -59,8 +59,8 @@ std::string convergenceText(const SessionStatus& status) {
 double frameWaitSeconds(const ExplorerState& state, bool viewResting, int restingFrames) {
   if (state.services.exportStatus.state == ExportState::Running) return 0.1;
   const bool busy = state.panels.timeline.playing || state.services.search.busy() || state.services.analysis.busy() ||
-                    state.services.flatRender.busy() || state.frame.flatImagePending || state.panels.orbiting ||
-                    state.panels.panning;
+                    state.services.flatRender.busy() || state.frame.flatImagePending || state.panels.drag.orbiting ||
+                    state.panels.drag.panning;
   if (busy || !viewResting || !state.frame.session.resting || restingFrames < 3) return 0.0;
   // Other threads do not wake the loop; this bounds how late it notices one that finished.
   return 0.5;
@@ -70,7 +70,7 @@ double frameWaitSeconds(const ExplorerState& state, bool viewResting, int restin
 
 namespace voxflame::app::panels {
 
-void statusBar(ExplorerState& state, float scale) {
+void statusBar(FrameOutputs& frame, const ExplorePanelState& explore, StatusBarState& status, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
   const float height = statusBarHeight(scale);
   ImGui::SetNextWindowPos(ImVec2(0, io.DisplaySize.y - height));
@@ -79,13 +79,13 @@ void statusBar(ExplorerState& state, float scale) {
   ImGui::Begin("##status", nullptr,
                ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                    ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoBringToFrontOnFocus);
-  const core::AccumulatorStats& stats = state.frame.session.stats;
-  const FrameMetrics& m = state.frame.metrics;
+  const core::AccumulatorStats& stats = frame.session.stats;
+  const FrameMetrics& m = frame.metrics;
   // Words first: what is happening. The technical figures are one click (Stats) or a hover away.
-  if (state.frame.session.buildingShape)
-    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "%s %.1f s", state.frame.session.shapeStage.c_str(),
-                       state.frame.session.shapeSeconds);
-  else if (const std::string convergence = convergenceText(state.frame.session); !convergence.empty())
+  if (frame.session.buildingShape)
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "%s %.1f s", frame.session.shapeStage.c_str(),
+                       frame.session.shapeSeconds);
+  else if (const std::string convergence = convergenceText(frame.session); !convergence.empty())
     ImGui::TextUnformatted(convergence.c_str());
   char figures[400];
   std::snprintf(figures, sizeof figures,
@@ -93,34 +93,33 @@ void statusBar(ExplorerState& state, float scale) {
                 "%.1f ms  %d samples",
                 static_cast<double>(stats.points) * 1e-6, stats.pointsPerSecond * 1e-6, 100.0 * stats.insideFraction(),
                 static_cast<unsigned long long>(stats.escapes), m.fps, m.frameMs, m.worstFrameMs, m.uploadMs,
-                state.frame.samples);
+                frame.samples);
   // While the pattern escapes, the figures are the last bounded pattern's (or none): say so.
-  std::string details =
-      state.frame.session.showingLastBounded ? std::string("last bounded pattern: ") + figures : figures;
+  std::string details = frame.session.showingLastBounded ? std::string("last bounded pattern: ") + figures : figures;
   if (m.changeToFrameMs >= 0.0) {
     std::snprintf(figures, sizeof figures, "  |  edit→frame %.0f ms (%d frames)", m.changeToFrameMs,
                   m.changeToFrameFrames);
     details += figures;
   }
   // The analysis of an orbit that escapes may read as a fixed point: the escape is what is true.
-  if (!state.frame.session.escapeNote.empty())
+  if (!frame.session.escapeNote.empty())
     details += "  |  escapes";
-  else if (!state.panels.explore.lyapunovText.empty())
-    details += "  |  " + state.panels.explore.lyapunovText;
-  if (ImGui::IsItemHovered() && !state.panels.showStats) ImGui::SetTooltip("%s", details.c_str());
-  if ((state.frame.session.converged || state.frame.session.capped) && !state.frame.session.buildingShape) {
+  else if (!explore.lyapunovText.empty())
+    details += "  |  " + explore.lyapunovText;
+  if (ImGui::IsItemHovered() && !status.showStats) ImGui::SetTooltip("%s", details.c_str());
+  if ((frame.session.converged || frame.session.capped) && !frame.session.buildingShape) {
     ImGui::SameLine();
-    if (ImGui::SmallButton("Refine further")) state.frame.requests.refineFurther = true;
-    probe(state, "status/refine_further");
+    if (ImGui::SmallButton("Refine further")) frame.requests.refineFurther = true;
+    probe(frame, "status/refine_further");
     if (ImGui::IsItemHovered())
       ImGui::SetTooltip("go on from the %.0f points per voxel already there to twice as many",
-                        state.frame.session.pointsPerVoxel);
+                        frame.session.pointsPerVoxel);
   }
   ImGui::SameLine();
-  if (ImGui::SmallButton(state.panels.showStats ? "Hide stats###stats" : "Stats###stats"))
-    state.panels.showStats = !state.panels.showStats;
-  probe(state, "status/stats");
-  if (state.panels.showStats) {
+  if (ImGui::SmallButton(status.showStats ? "Hide stats###stats" : "Stats###stats"))
+    status.showStats = !status.showStats;
+  probe(frame, "status/stats");
+  if (status.showStats) {
     ImGui::SameLine();
     ImGui::TextColored(kDimColor, "%s", details.c_str());
   }

@@ -43,15 +43,15 @@ double timelineLength(const core::Scene& scene) {
   return duration > 0.0 ? duration : 5.0;  // room to place the first keys
 }
 
-void showTime(ExplorerState& state, double seconds) {
+void showTime(Document& document, TimelinePanelState& timeline, PromptsState& prompts, double seconds) {
   try {
     // The moment's values differ from the last one's wherever a track is: what they affect is found
     // by comparing the two (Document::replace).
-    state.document.replace(core::sceneAtTime(state.document.scene, seconds));
-    state.document.keyBase = state.document.scene;
+    document.replace(core::sceneAtTime(document.scene, seconds));
+    document.keyBase = document.scene;
   } catch (const core::Error& e) {
-    state.panels.prompts.notice = e.what();
-    state.panels.timeline.playing = false;
+    prompts.notice = e.what();
+    timeline.playing = false;
   }
 }
 
@@ -65,18 +65,18 @@ std::vector<double> keyTimes(const core::Scene& scene) {
   return times;
 }
 
-void advancePlayback(ExplorerState& state) {
-  if (!state.panels.timeline.playing) return;
-  const double length = timelineLength(state.document.scene);
-  double next = state.document.scene.animation.time + static_cast<double>(ImGui::GetIO().DeltaTime);
+void advancePlayback(Document& document, TimelinePanelState& timeline, PromptsState& prompts) {
+  if (!timeline.playing) return;
+  const double length = timelineLength(document.scene);
+  double next = document.scene.animation.time + static_cast<double>(ImGui::GetIO().DeltaTime);
   if (next > length) {
     // Play stops at the end unless the animation loops (its loop box).
-    if (core::animationLoops(state.document.scene) && length > 0.0)
+    if (core::animationLoops(document.scene) && length > 0.0)
       next = std::fmod(next, length);
     else
-      next = length, state.panels.timeline.playing = false;
+      next = length, timeline.playing = false;
   }
-  showTime(state, next);
+  showTime(document, timeline, prompts, next);
 }
 
 // An animated value's name for people: "/layers/0/params/a" reads "layer 1 a",
@@ -119,13 +119,13 @@ std::string keyedText(const std::vector<core::KeyframeTrack>& before, const std:
   return text + at;
 }
 
-void timelineWindow(ExplorerState& state, float scale) {
+void timelineWindow(Ui& ui, TimelinePanelState& timeline, PromptsState& prompts, float scale) {
   const ImGuiIO& io = ImGui::GetIO();
   // Docked under the picture, between the side panels, above the status line.
   const float statusHeight = statusBarHeight(scale);
-  const float left = state.frame.layout.left, right = std::max(state.frame.layout.right, left + 1.0f);
+  const float left = ui.frame.layout.left, right = std::max(ui.frame.layout.right, left + 1.0f);
   // Room for up to four animated values' rows; more scroll.
-  const auto rows = static_cast<float>(std::min<std::size_t>(state.document.scene.keyframes.size(), 4) + 1);
+  const auto rows = static_cast<float>(std::min<std::size_t>(ui.document.scene.keyframes.size(), 4) + 1);
   const float height = 2 * ImGui::GetFrameHeightWithSpacing() + rows * ImGui::GetTextLineHeightWithSpacing() +
                        ImGui::GetFrameHeight() + 2 * ImGui::GetStyle().WindowPadding.y +
                        ImGui::GetTextLineHeightWithSpacing();
@@ -133,55 +133,55 @@ void timelineWindow(ExplorerState& state, float scale) {
   ImGui::SetNextWindowSize(ImVec2(right - left, height), ImGuiCond_Always);
   ImGui::Begin("Timeline", nullptr,
                ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
-  state.frame.layout.bottom = ImGui::GetWindowPos().y;
-  core::Scene& scene = state.document.scene;
+  ui.frame.layout.bottom = ImGui::GetWindowPos().y;
+  core::Scene& scene = ui.document.scene;
   const double length = timelineLength(scene);
-  if (button(state, "timeline/", state.panels.timeline.playing ? "Pause" : "Play")) {
-    state.panels.timeline.playing = !state.panels.timeline.playing;
+  if (button(ui, "timeline/", timeline.playing ? "Pause" : "Play")) {
+    timeline.playing = !timeline.playing;
     // Play at the end starts over.
-    if (state.panels.timeline.playing && scene.animation.time >= length - 1e-9) showTime(state, 0.0);
+    if (timeline.playing && scene.animation.time >= length - 1e-9) showTime(ui.document, timeline, prompts, 0.0);
   }
   ImGui::SameLine();
   const std::vector<double> times = keyTimes(scene);
   const double now = scene.animation.time;
-  if (button(state, "timeline/", "|<")) {
+  if (button(ui, "timeline/", "|<")) {
     double target = 0.0;
     for (double t : times)
       if (t < now - 1e-6) target = t;
-    showTime(state, target);
+    showTime(ui.document, timeline, prompts, target);
   }
   ImGui::SameLine();
-  if (button(state, "timeline/", ">|")) {
+  if (button(ui, "timeline/", ">|")) {
     double target = length;
     for (auto t = times.rbegin(); t != times.rend(); ++t)
       if (*t > now + 1e-6) target = *t;
-    showTime(state, target);
+    showTime(ui.document, timeline, prompts, target);
   }
   ImGui::SameLine();
-  if (button(state, "timeline/", "Key")) {
+  if (button(ui, "timeline/", "Key")) {
     try {
       // What changed since the time was last shown becomes keys; animated values always get one.
-      core::Scene animated = state.document.keyBase;
+      core::Scene animated = ui.document.keyBase;
       animated.keyframes = scene.keyframes;
       animated.animation = scene.animation;
       const std::vector<core::KeyframeTrack> before = scene.keyframes;
-      state.document.replace(core::withKeyframeAt(animated, scene, now));
-      state.document.keyBase = scene;
-      state.panels.timeline.timelineMessage = keyedText(before, scene.keyframes, now);
+      ui.document.replace(core::withKeyframeAt(animated, scene, now));
+      ui.document.keyBase = scene;
+      timeline.timelineMessage = keyedText(before, scene.keyframes, now);
     } catch (const core::Error& e) {
-      state.panels.prompts.notice = e.what();
+      prompts.notice = e.what();
     }
   }
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("keyframe every value you changed here (and every animated one)");
   ImGui::SameLine();
   const bool keyHere = std::any_of(times.begin(), times.end(), [&](double t) { return std::abs(t - now) < 1e-6; });
   ImGui::BeginDisabled(!keyHere);
-  if (button(state, "timeline/", "Delete key")) {
+  if (button(ui, "timeline/", "Delete key")) {
     core::Scene without = scene;
     for (core::KeyframeTrack& track : without.keyframes)
       std::erase_if(track.keys, [&](const core::Keyframe& key) { return std::abs(key.time - now) < 1e-6; });
     std::erase_if(without.keyframes, [](const core::KeyframeTrack& track) { return track.keys.empty(); });
-    state.document.replace(without);
+    ui.document.replace(without);
   }
   ImGui::EndDisabled();
   ImGui::SameLine();
@@ -192,7 +192,7 @@ void timelineWindow(ExplorerState& state, float scale) {
                         &durationField.ui.max, duration > 0.0 ? std::string(durationField.ui.format).c_str() : "auto",
                         ImGuiSliderFlags_AlwaysClamp)) {
     scene.animation.duration = duration;
-    state.document.edited(durationField.affects);
+    ui.document.edited(durationField.affects);
   }
   ImGui::SameLine();
   ImGui::SetNextItemWidth(70 * scale);
@@ -201,21 +201,20 @@ void timelineWindow(ExplorerState& state, float scale) {
   if (ImGui::DragScalar("fps", ImGuiDataType_Double, &fps, 0.2f, &fpsField.ui.min, &fpsField.ui.max,
                         std::string(fpsField.ui.format).c_str(), ImGuiSliderFlags_AlwaysClamp)) {
     scene.animation.fps = fps;
-    state.document.edited(fpsField.affects);
+    ui.document.edited(fpsField.affects);
   }
   ImGui::SameLine();
-  reportEdit(state, ImGui::Checkbox("loop", &scene.animation.loop),
-             core::field(core::animationFields(), "loop").affects);
+  reportEdit(ui, ImGui::Checkbox("loop", &scene.animation.loop), core::field(core::animationFields(), "loop").affects);
 
   // The scrubber, with a tick for every key time.
   double time = now;
   const double zero = 0.0;
   ImGui::SetNextItemWidth(-1);
   if (ImGui::SliderScalar("##time", ImGuiDataType_Double, &time, &zero, &length, "%.2f s")) {
-    state.panels.timeline.playing = false;
-    showTime(state, time);
+    timeline.playing = false;
+    showTime(ui.document, timeline, prompts, time);
   }
-  probe(state, "timeline/time");
+  probe(ui, "timeline/time");
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   const float grab = ImGui::GetStyle().GrabMinSize;
   for (double t : times) {
@@ -226,7 +225,7 @@ void timelineWindow(ExplorerState& state, float scale) {
   if (scene.keyframes.empty()) {
     dimText("no keyframes: move the time, change something, press Key");
   } else {
-    if (!state.panels.timeline.timelineMessage.empty()) dimText("%s", state.panels.timeline.timelineMessage.c_str());
+    if (!timeline.timelineMessage.empty()) dimText("%s", timeline.timelineMessage.c_str());
     // One row per animated value: its name, then its keys as ticks over the animation's length
     // (right of the names); a value with one key holds still.
     const float nameWidth = 170 * scale;
@@ -234,12 +233,12 @@ void timelineWindow(ExplorerState& state, float scale) {
       const bool holds = track.keys.size() == 1;
       const std::string name = trackName(track.path);
       ImGui::TextUnformatted(name.c_str());
-      probe(state, "timeline/track/" + track.path);
+      probe(ui, "timeline/track/" + track.path);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", track.path.c_str());
       if (holds) {
         ImGui::SameLine();
         ImGui::TextColored(kDimColor, "(one key: holds still)");
-        probe(state, "timeline/track/" + track.path + "/holds");
+        probe(ui, "timeline/track/" + track.path + "/holds");
       }
       ImGui::SameLine(std::max(nameWidth, ImGui::GetCursorPosX()));
       const ImVec2 row = ImGui::GetCursorScreenPos();

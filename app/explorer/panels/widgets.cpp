@@ -48,21 +48,21 @@ void dimText(const char* format, ...) {
   ImGui::PopStyleColor();
 }
 
-void probe(ExplorerState& state, const std::string& name) {
-  if (!state.frame.probe) return;
+void probe(FrameOutputs& frame, const std::string& name) {
+  if (!frame.probe) return;
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  state.frame.probe->items[name] = UiProbe::Rect{min.x, min.y, max.x, max.y};
+  frame.probe->items[name] = UiProbe::Rect{min.x, min.y, max.x, max.y};
 }
 
 // After a text field: what it now holds, when it changed this frame and typing is recorded.
-void noteTyped(ExplorerState& state, const char* field, const char* text) {
-  if (state.frame.recordTyping && ImGui::IsItemEdited()) state.frame.typedThisFrame.emplace_back(field, text);
+void noteTyped(FrameOutputs& frame, const char* field, const char* text) {
+  if (frame.recordTyping && ImGui::IsItemEdited()) frame.typedThisFrame.emplace_back(field, text);
 }
 
-bool slider(ExplorerState& state, const std::string& scope, const char* label, double& value, double min, double max,
+bool slider(FrameOutputs& frame, const std::string& scope, const char* label, double& value, double min, double max,
             ImGuiSliderFlags flags, const char* format) {
   const bool changed = ImGui::SliderScalar(label, ImGuiDataType_Double, &value, &min, &max, format, flags);
-  probe(state, scope + label);
+  probe(frame, scope + label);
   return changed;
 }
 
@@ -77,8 +77,8 @@ std::string valuePath(const std::string& scope, std::string_view key) {
 }
 
 // A value with keys on the Timeline carries a mark: a small key at the widget's top right corner.
-void markIfKeyed(ExplorerState& state, const std::string& path, const std::string& probeName) {
-  const auto& tracks = state.document.scene.keyframes;
+void markIfKeyed(Ui& ui, const std::string& path, const std::string& probeName) {
+  const auto& tracks = ui.document.scene.keyframes;
   if (std::none_of(tracks.begin(), tracks.end(), [&](const core::KeyframeTrack& t) { return t.path == path; })) return;
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   const float size = 0.22f * (max.y - min.y);
@@ -86,22 +86,22 @@ void markIfKeyed(ExplorerState& state, const std::string& path, const std::strin
   ImGui::GetWindowDrawList()->AddQuadFilled(ImVec2(centre.x, centre.y - size), ImVec2(centre.x + size, centre.y),
                                             ImVec2(centre.x, centre.y + size), ImVec2(centre.x - size, centre.y),
                                             IM_COL32(255, 190, 90, 255));
-  probe(state, probeName + "/keyed");
+  probe(ui, probeName + "/keyed");
 }
 
-void takeKeyboard(ExplorerState& state) {
+void takeKeyboard(FrameOutputs& frame) {
   ImGui::SetKeyboardFocusHere();
-  state.frame.keyboardFocusMoved = true;
+  frame.keyboardFocusMoved = true;
 }
 
-bool button(ExplorerState& state, const std::string& scope, const char* label) {
+bool button(FrameOutputs& frame, const std::string& scope, const char* label) {
   const bool pressed = ImGui::Button(label);
-  probe(state, scope + label);
+  probe(frame, scope + label);
   return pressed;
 }
 
-bool reportEdit(ExplorerState& state, bool changed, core::Affects affects) {
-  if (changed) state.document.edited(affects);
+bool reportEdit(Document& document, bool changed, core::Affects affects) {
+  if (changed) document.edited(affects);
   return changed;
 }
 

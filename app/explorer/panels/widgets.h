@@ -17,6 +17,17 @@
 
 namespace voxflame::app::panels {
 
+// What a panel that edits the document draws with: the document, whose edits it reports
+// (reportEdit, fieldWidget), and the frame's outputs its widgets write (probes for the tests,
+// typed text, a keyboard request). Panels that only show things take FrameOutputs alone; a Ui
+// passes for either.
+struct Ui {
+  Document& document;
+  FrameOutputs& frame;
+  operator Document&() const { return document; }
+  operator FrameOutputs&() const { return frame; }
+};
+
 inline const ImVec4 kErrorColor(1.0f, 0.45f, 0.35f, 1.0f);
 inline const ImVec4 kDimColor(0.62f, 0.65f, 0.72f, 1.0f);
 // Sliders clamp, Ctrl+click typing included: no value made in a panel is one a preset refuses.
@@ -26,26 +37,26 @@ inline constexpr ImGuiSliderFlags kClamp = ImGuiSliderFlags_AlwaysClamp;
 float statusBarHeight(float scale);
 // A hint or a message in the dim colour, wrapped at the panel's edge rather than cut there.
 IM_FMTARGS(1) void dimText(const char* format, ...);
-// Records the last widget's rectangle under `name` when a test set state.frame.probe.
-void probe(ExplorerState& state, const std::string& name);
+// Records the last widget's rectangle under `name` when a test set FrameOutputs::probe.
+void probe(FrameOutputs& frame, const std::string& name);
 // After a text field: what it now holds, when it changed this frame and typing is recorded.
-void noteTyped(ExplorerState& state, const char* field, const char* text);
-bool slider(ExplorerState& state, const std::string& scope, const char* label, double& value, double min, double max,
+void noteTyped(FrameOutputs& frame, const char* field, const char* text);
+bool slider(FrameOutputs& frame, const std::string& scope, const char* label, double& value, double min, double max,
             ImGuiSliderFlags flags = 0, const char* format = "%.3f");
 // The JSON pointer of a panel value: a widget's scope names its object ("tone/", "camera/",
 // "layer2/" for /layers/2/), then the key.
 std::string valuePath(const std::string& scope, std::string_view key);
 // A value with keys on the Timeline carries a mark: a small key at the widget's top right corner.
-void markIfKeyed(ExplorerState& state, const std::string& path, const std::string& probeName);
-bool button(ExplorerState& state, const std::string& scope, const char* label);
+void markIfKeyed(Ui& ui, const std::string& path, const std::string& probeName);
+bool button(FrameOutputs& frame, const std::string& scope, const char* label);
 // Gives the next widget the keyboard. ImGui 1.86 drops the characters of the frame that activates
 // it, so the window loop holds the next frame's characters (FrameOutputs::keyboardFocusMoved):
 // every panel that moves the keyboard goes through here.
-void takeKeyboard(ExplorerState& state);
+void takeKeyboard(FrameOutputs& frame);
 // Reports an edit of the document made by the widget just drawn, when `changed`, with what it
 // affects (Document::edited); returns `changed`. Every panel edit of the scene goes through here or
 // through fieldWidget, which reports its row's class.
-bool reportEdit(ExplorerState& state, bool changed, core::Affects affects);
+bool reportEdit(Document& document, bool changed, core::Affects affects);
 std::string lowercase(std::string text);
 bool keyDown(int key);
 
@@ -54,8 +65,8 @@ bool keyDown(int key);
 // range lies inside what the reader allows, so no value made here is one a preset refuses.
 // `probeName` replaces the probe's usual name (scope + label).
 template <class Owner>
-bool fieldWidget(ExplorerState& state, const std::string& scope, Owner& owner, core::Table<Owner> table,
-                 std::string_view key, const char* probeName = nullptr) {
+bool fieldWidget(Ui& ui, const std::string& scope, Owner& owner, core::Table<Owner> table, std::string_view key,
+                 const char* probeName = nullptr) {
   const core::Field<Owner>& f = core::field(table, key);
   const std::string label(f.ui.label);
   const std::string format(f.ui.format);
@@ -102,14 +113,14 @@ bool fieldWidget(ExplorerState& state, const std::string& scope, Owner& owner, c
       },
       f.member);
   const std::string probed = probeName ? std::string(probeName) : scope + label;
-  probe(state, probed);
-  markIfKeyed(state, valuePath(scope, key), probed);
+  probe(ui, probed);
+  markIfKeyed(ui, valuePath(scope, key), probed);
   // Right-click: back to the default, as the pattern sliders do (a default-made owner holds it).
   bool reset = false;
   // A named popup: the last item of some widgets (a colour editor's label) has no id of its own.
   if (ImGui::BeginPopupContextItem(("reset##" + probed).c_str())) {
     reset = ImGui::Selectable("Reset to default");
-    probe(state, probed + "/reset");
+    probe(ui, probed + "/reset");
     ImGui::EndPopup();
   }
   if (reset) {
@@ -129,7 +140,7 @@ bool fieldWidget(ExplorerState& state, const std::string& scope, Owner& owner, c
     else
       ImGui::SetTooltip("%.*s\nright-click to reset to the default", static_cast<int>(f.help.size()), f.help.data());
   }
-  return reportEdit(state, changed || reset, f.affects);
+  return reportEdit(ui, changed || reset, f.affects);
 }
 
 }  // namespace voxflame::app::panels
