@@ -37,6 +37,12 @@ const json* ObjectReader::find(const std::string& key) {
   return it == object_.end() ? nullptr : &*it;
 }
 
+std::optional<ObjectReader> ObjectReader::child(const std::string& key) {
+  const json* value = find(key);
+  if (!value) return std::nullopt;
+  return ObjectReader(*value, source_, keyPath(key));
+}
+
 double ObjectReader::number(const std::string& key, double fallback, double min, double max) {
   const json* value = find(key);
   if (!value) return fallback;

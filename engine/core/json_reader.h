@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -28,6 +29,9 @@ class ObjectReader {
   // The value of `key`, or nullptr; either way the key counts as read.
   const nlohmann::json* find(const std::string& key);
   bool has(const std::string& key) const { return object_.contains(key); }
+  // The object under `key` as a reader of its own (whose finish() checks its keys), or nothing
+  // when the key is absent; either way the key counts as read. Throws when it is not an object.
+  std::optional<ObjectReader> child(const std::string& key);
 
   double number(const std::string& key, double fallback, double min, double max);
   double checkNumber(const nlohmann::json& value, const std::string& key, double min, double max) const;

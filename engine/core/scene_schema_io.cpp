@@ -153,78 +153,81 @@ void failOn(ObjectReader& reader, const std::optional<Failure>& failure) {
 // ---------------------------------------------------------------------------------------------
 // The reader: the tables, plus the marked hand code for what they cannot hold.
 
+// An optional nested object: `read` fills `value` from the object's own reader, which then checks
+// that every key was read. When the key is absent, `value` stays as given (the defaults).
+template <class T, class Read>
+T readObject(ObjectReader& parent, const std::string& key, T value, Read read) {
+  if (std::optional<ObjectReader> reader = parent.child(key)) {
+    read(*reader, value);
+    reader->finish();
+  }
+  return value;
+}
+
 // Hand code: gradient stops (an array of colours) or a named palette, not both.
 ColorSettings readColor(ObjectReader& parent, ColorMode defaultMode) {
-  ColorSettings color;
-  color.mode = defaultMode;
-  color.gradient = {{0.0f, parseHexColor("#2a6cff")}, {1.0f, parseHexColor("#ffb347")}};
-  const json* value = parent.find("color");
-  if (!value) return color;
-  ObjectReader reader(*value, parent.source(), parent.keyPath("color"));
-  readFields(reader, colorFields(), color);
-  const json* stops = reader.find("gradient");
-  color.palette = reader.string("palette", "");
-  if (!color.palette.empty()) {
-    if (stops) reader.fail("cannot be given together with 'gradient'; choose one", "palette");
-    try {
-      color.gradient = paletteStops(color.palette);
-    } catch (const Error& e) {
-      reader.fail(e.what(), "palette");
-    }
-  }
-  if (stops) {
-    const std::string path = reader.keyPath("gradient");
-    if (!stops->is_array() || stops->size() < 2 || stops->size() > kMaxGradientStops)
-      reader.fail("must be an array of 2 to 256 colours like \"#ff8800\" (a flame's palette has 256)", "gradient");
-    color.gradient.clear();
-    const std::size_t count = stops->size();
-    for (std::size_t i = 0; i < count; ++i) {
-      const json& stop = (*stops)[i];
-      if (!stop.is_string())
-        throw Error(parent.source() + ": '" + path + "[" + std::to_string(i) + "]' must be a colour string");
+  ColorSettings defaults;
+  defaults.mode = defaultMode;
+  defaults.gradient = {{0.0f, parseHexColor("#2a6cff")}, {1.0f, parseHexColor("#ffb347")}};
+  return readObject(parent, "color", defaults, [&parent](ObjectReader& reader, ColorSettings& color) {
+    readFields(reader, colorFields(), color);
+    const json* stops = reader.find("gradient");
+    color.palette = reader.string("palette", "");
+    if (!color.palette.empty()) {
+      if (stops) reader.fail("cannot be given together with 'gradient'; choose one", "palette");
       try {
-        color.gradient.push_back(
-            {static_cast<float>(i) / static_cast<float>(count - 1), parseHexColor(stop.get<std::string>())});
+        color.gradient = paletteStops(color.palette);
       } catch (const Error& e) {
-        throw Error(parent.source() + ": '" + path + "[" + std::to_string(i) + "]' " + e.what());
+        reader.fail(e.what(), "palette");
       }
     }
-  }
-  failOn(reader, zeroAxisFailure(color.axis));
-  reader.finish();
-  return color;
+    if (stops) {
+      const std::string path = reader.keyPath("gradient");
+      if (!stops->is_array() || stops->size() < 2 || stops->size() > kMaxGradientStops)
+        reader.fail("must be an array of 2 to 256 colours like \"#ff8800\" (a flame's palette has 256)", "gradient");
+      color.gradient.clear();
+      const std::size_t count = stops->size();
+      for (std::size_t i = 0; i < count; ++i) {
+        const json& stop = (*stops)[i];
+        if (!stop.is_string())
+          throw Error(parent.source() + ": '" + path + "[" + std::to_string(i) + "]' must be a colour string");
+        try {
+          color.gradient.push_back(
+              {static_cast<float>(i) / static_cast<float>(count - 1), parseHexColor(stop.get<std::string>())});
+        } catch (const Error& e) {
+          throw Error(parent.source() + ": '" + path + "[" + std::to_string(i) + "]' " + e.what());
+        }
+      }
+    }
+    failOn(reader, zeroAxisFailure(color.axis));
+  });
 }
 
 // Hand code: `copies` (an array of rotations) and the `locked_fit` block, whose presence locks the fit.
 LayerTransform readTransform(ObjectReader& parent) {
-  LayerTransform transform;
-  const json* value = parent.find("transform");
-  if (!value) return transform;
-  ObjectReader reader(*value, parent.source(), parent.keyPath("transform"));
-  readFields(reader, transformFields(), transform);
-  if (const json* copies = reader.find("copies")) {
-    if (!copies->is_array() || copies->size() > kMaxLayerCopies)
-      reader.fail("must be an array of at most " + std::to_string(kMaxLayerCopies) + " rotations", "copies");
-    for (std::size_t i = 0; i < copies->size(); ++i) {
-      const json& copy = (*copies)[i];
-      const std::string copyKey = "copies[" + std::to_string(i) + "]";
-      if (!copy.is_array() || copy.size() != 3) reader.fail("must be an array of three numbers (degrees)", copyKey);
-      glm::dvec3 angles;
-      for (int axis = 0; axis < 3; ++axis)
-        angles[axis] = reader.checkNumber(copy[static_cast<std::size_t>(axis)], copyKey, -3600.0, 3600.0);
-      transform.copies.push_back(angles);
+  return readObject(parent, "transform", LayerTransform{}, [](ObjectReader& reader, LayerTransform& transform) {
+    readFields(reader, transformFields(), transform);
+    if (const json* copies = reader.find("copies")) {
+      if (!copies->is_array() || copies->size() > kMaxLayerCopies)
+        reader.fail("must be an array of at most " + std::to_string(kMaxLayerCopies) + " rotations", "copies");
+      for (std::size_t i = 0; i < copies->size(); ++i) {
+        const json& copy = (*copies)[i];
+        const std::string copyKey = "copies[" + std::to_string(i) + "]";
+        if (!copy.is_array() || copy.size() != 3) reader.fail("must be an array of three numbers (degrees)", copyKey);
+        glm::dvec3 angles;
+        for (int axis = 0; axis < 3; ++axis)
+          angles[axis] = reader.checkNumber(copy[static_cast<std::size_t>(axis)], copyKey, -3600.0, 3600.0);
+        transform.copies.push_back(angles);
+      }
     }
-  }
-  if (const json* locked = reader.find("locked_fit")) {
-    ObjectReader lockedReader(*locked, parent.source(), reader.keyPath("locked_fit"));
-    transform.lockFit = true;
-    if (!lockedReader.has("center")) lockedReader.fail("is missing", "center");
-    if (!lockedReader.has("scale")) lockedReader.fail("is missing", "scale");
-    readFields(lockedReader, lockedFitFields(), transform);
-    lockedReader.finish();
-  }
-  reader.finish();
-  return transform;
+    if (std::optional<ObjectReader> locked = reader.child("locked_fit")) {
+      transform.lockFit = true;
+      if (!locked->has("center")) locked->fail("is missing", "center");
+      if (!locked->has("scale")) locked->fail("is missing", "scale");
+      readFields(*locked, lockedFitFields(), transform);
+      locked->finish();
+    }
+  });
 }
 
 // Hand code: 12 numbers, the 3×4 matrix row by row.
@@ -239,23 +242,27 @@ Affine3 readAffine(ObjectReader& reader, const std::string& key, const Affine3& 
   return affine;
 }
 
+// The catalogue entry that `name` (the value of `key`) names; an unknown name fails at that key with
+// the catalogue's own message, which lists the names it has or the nearest ones.
+template <class Lookup>
+decltype(auto) catalogueEntry(ObjectReader& reader, const std::string& key, const std::string& name, Lookup orThrow) {
+  try {
+    return orThrow(name);
+  } catch (const Error& e) {
+    reader.fail(e.what(), key);
+  }
+}
+
 // Hand code: a variation's parameters are keys named by the catalogue entry its `name` picks.
 VariationTerm readVariation(const json& value, const std::string& source, const std::string& path) {
   ObjectReader reader(value, source, path);
   VariationTerm term;
   term.name = reader.requiredString("name");
-  const VariationInfo* info = findVariation(term.name);
-  if (!info) {
-    try {
-      variationOrThrow(term.name);
-    } catch (const Error& e) {
-      reader.fail(e.what(), "name");
-    }
-  }
+  const VariationInfo& info = catalogueEntry(reader, "name", term.name, variationOrThrow);
   readFields(reader, variationFields(), term);
-  term.params = info->defaultParams();
-  for (std::size_t i = 0; i < info->params.size(); ++i)
-    term.params[i] = reader.number(info->params[i].name, info->params[i].defaultValue, -kFlameCoefficientLimit,
+  term.params = info.defaultParams();
+  for (std::size_t i = 0; i < info.params.size(); ++i)
+    term.params[i] = reader.number(info.params[i].name, info.params[i].defaultValue, -kFlameCoefficientLimit,
                                    kFlameCoefficientLimit);
   reader.finish();
   return term;
@@ -291,9 +298,9 @@ FlameXform readXform(const json& value, const std::string& source, const std::st
 
 // Hand code: the transforms (an array, required) and the optional final one.
 FlameGenome readFlame(ObjectReader& parent) {
-  const json* value = parent.find("flame");
-  if (!value) parent.fail("is missing (a flame layer needs its transforms)", "flame");
-  ObjectReader reader(*value, parent.source(), parent.keyPath("flame"));
+  std::optional<ObjectReader> flame = parent.child("flame");
+  if (!flame) parent.fail("is missing (a flame layer needs its transforms)", "flame");
+  ObjectReader& reader = *flame;
   FlameGenome genome;
   const json* xforms = reader.find("xforms");
   if (!xforms) reader.fail("is missing", "xforms");
@@ -307,11 +314,10 @@ FlameGenome readFlame(ObjectReader& parent) {
     genome.hasFinal = true;
     genome.finalXform = readXform(*finalXform, parent.source(), reader.keyPath("final"), true);
   }
-  if (const json* symmetry = reader.find("symmetry")) {
-    ObjectReader symmetryReader(*symmetry, parent.source(), reader.keyPath("symmetry"));
-    readFields(symmetryReader, symmetryFields(), genome.symmetry);
-    failOn(symmetryReader, zeroAxisFailure(genome.symmetry.axis));
-    symmetryReader.finish();
+  if (std::optional<ObjectReader> symmetry = reader.child("symmetry")) {
+    readFields(*symmetry, symmetryFields(), genome.symmetry);
+    failOn(*symmetry, zeroAxisFailure(genome.symmetry.axis));
+    symmetry->finish();
   }
   reader.finish();
   return genome;
@@ -319,17 +325,13 @@ FlameGenome readFlame(ObjectReader& parent) {
 
 // Hand code: `c` is four numbers.
 QuaternionJuliaSettings readJulia(ObjectReader& parent) {
-  QuaternionJuliaSettings q;
-  const json* value = parent.find("julia");
-  if (!value) return q;
-  ObjectReader reader(*value, parent.source(), parent.keyPath("julia"));
-  if (const json* c = reader.find("c")) {
-    if (!c->is_array() || c->size() != 4) reader.fail("must be four numbers (1, i, j, k components)", "c");
-    for (std::size_t i = 0; i < 4; ++i) q.c[static_cast<int>(i)] = reader.checkNumber((*c)[i], "c", -10.0, 10.0);
-  }
-  readFields(reader, juliaFields(), q);
-  reader.finish();
-  return q;
+  return readObject(parent, "julia", QuaternionJuliaSettings{}, [](ObjectReader& reader, QuaternionJuliaSettings& q) {
+    if (const json* c = reader.find("c")) {
+      if (!c->is_array() || c->size() != 4) reader.fail("must be four numbers (1, i, j, k components)", "c");
+      for (std::size_t i = 0; i < 4; ++i) q.c[static_cast<int>(i)] = reader.checkNumber((*c)[i], "c", -10.0, 10.0);
+    }
+    readFields(reader, juliaFields(), q);
+  });
 }
 
 // Hand code: the kind decides which keys a layer has; an attractor's params are named by its
@@ -352,24 +354,17 @@ PatternLayer readLayer(const json& value, const std::string& source, const std::
       layer.julia = readJulia(reader);
   } else {
     layer.attractor = reader.requiredString("attractor");
-    const AttractorInfo* info = findAttractor(layer.attractor);
-    if (!info) {
-      try {
-        attractorOrThrow(layer.attractor);
-      } catch (const Error& e) {
-        reader.fail(e.what(), "attractor");
-      }
-    }
-    layer.params = info->defaultParams();
+    const AttractorInfo& info = catalogueEntry(reader, "attractor", layer.attractor, attractorOrThrow);
+    layer.params = info.defaultParams();
     if (const json* params = reader.find("params")) {
       ObjectReader paramReader(*params, source, reader.keyPath("params"));
-      for (std::size_t i = 0; i < info->params.size(); ++i)
-        layer.params[i] = paramReader.number(info->params[i].name, info->params[i].defaultValue,
+      for (std::size_t i = 0; i < info.params.size(); ++i)
+        layer.params[i] = paramReader.number(info.params[i].name, info.params[i].defaultValue,
                                              -kAttractorParameterLimit, kAttractorParameterLimit);
       paramReader.finish();
     }
-    layer.integrator = info->defaultIntegrator;
-    layer.step = info->defaultStep;
+    layer.integrator = info.defaultIntegrator;
+    layer.step = info.defaultStep;
   }
   readFields(reader, layerFields(), layer);
   layer.color = readColor(reader, layer.isChaosGame() ? ColorMode::Index : ColorMode::Speed);

@@ -229,13 +229,7 @@ void variationsEditor(Ui& ui, PatternPanelState& pattern, const std::string& sco
                      core::Affects::Pattern);
         }
         probe(ui, vscope + param.name);
-        if (ImGui::BeginPopupContextItem()) {
-          if (reportEdit(ui, ImGui::Selectable("Reset to default"), core::Affects::Pattern))
-            term.params[p] = param.defaultValue;
-          ImGui::EndPopup();
-        }
-        if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
-          ImGui::SetTooltip("default %.4g — right-click to reset", param.defaultValue);
+        parameterResetMenu(ui, term.params[p], param.defaultValue, "right-click to reset");
         ImGui::PopID();
       }
       ImGui::Unindent();

@@ -222,13 +222,7 @@ void attractorEditor(Ui& ui, PatternPanelState& pattern, const std::string& scop
                                                                     core::kAttractorParameterLimit)
                                                        : param.defaultValue;
     markIfKeyed(ui, valuePath(scope, "params/" + param.name), scope + param.name);
-    if (ImGui::BeginPopupContextItem()) {
-      if (reportEdit(ui, ImGui::Selectable("Reset to default"), core::Affects::Pattern))
-        layer.params[p] = param.defaultValue;
-      ImGui::EndPopup();
-    }
-    if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
-      ImGui::SetTooltip("default %.4g — Ctrl+click to type, right-click to reset", param.defaultValue);
+    parameterResetMenu(ui, layer.params[p], param.defaultValue, "Ctrl+click to type, right-click to reset");
   }
   if (current.kind == core::AttractorKind::Flow) {
     int integrator = layer.integrator == core::Integrator::RK4 ? 1 : 0;

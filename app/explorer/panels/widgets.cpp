@@ -105,6 +105,14 @@ bool reportEdit(Document& document, bool changed, core::Affects affects) {
   return changed;
 }
 
+void parameterResetMenu(Ui& ui, double& value, double defaultValue, const char* hint) {
+  if (ImGui::BeginPopupContextItem()) {
+    if (reportEdit(ui, ImGui::Selectable("Reset to default"), core::Affects::Pattern)) value = defaultValue;
+    ImGui::EndPopup();
+  }
+  if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) ImGui::SetTooltip("default %.4g — %s", defaultValue, hint);
+}
+
 std::string lowercase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
   return text;

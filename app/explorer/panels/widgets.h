@@ -57,6 +57,10 @@ void takeKeyboard(FrameOutputs& frame);
 // affects (Document::edited); returns `changed`. Every panel edit of the scene goes through here or
 // through fieldWidget, which reports its row's class.
 bool reportEdit(Document& document, bool changed, core::Affects affects);
+// The right-click menu and tooltip of the last widget, for a number no schema table holds (an
+// attractor's or a variation's parameter): "Reset to default", reported as a pattern edit, and a
+// tooltip with the default and `hint`.
+void parameterResetMenu(Ui& ui, double& value, double defaultValue, const char* hint);
 std::string lowercase(std::string text);
 bool keyDown(int key);
 
