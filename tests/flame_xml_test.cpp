@@ -523,7 +523,9 @@ TEST(FlameXml, FuzzedFlameFilesNeverCrashOrHang) {
   options.paletteTable = kFlam3PaletteTable;
   const auto start = std::chrono::steady_clock::now();
   int imported = 0, refused = 0;
-  constexpr int kCases = 20000;
+  // A deterministic sample of mutations, run on every build (sanitizers included); the open-ended
+  // search is scripts/fuzz.sh's libFuzzer target on the same importer, so 5000 suffice here.
+  constexpr int kCases = 5000;
   for (int round = 0; round < kCases; ++round) {
     std::string text = bases[static_cast<std::size_t>(round) % bases.size()];
     const int edits = 1 + static_cast<int>(next() % 4);
@@ -564,7 +566,7 @@ TEST(FlameXml, FuzzedFlameFilesNeverCrashOrHang) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_GT(imported, kCases / 20) << "the mutations should leave many files importable";
   EXPECT_GT(refused, kCases / 20);
-  EXPECT_LT(seconds, 120.0);  // about 3 s in a Release build; sanitizer builds are slower
+  EXPECT_LT(seconds, 120.0);  // about 1 s in a Release build; sanitizer builds are slower
 }
 
 // Issue 25: what real files write that is not well-formed XML, read tolerantly.
