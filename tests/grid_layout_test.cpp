@@ -188,7 +188,9 @@ TEST(SnapshotPublisher, TwoPackedVolumesCycleBetweenThePublisherAndItsTaker) {
 // A volume packed and not yet taken is not packed over while its pattern refines, so a taker that
 // comes once a frame finds it, not a pack in progress; a new pattern's volume replaces it.
 TEST(SnapshotPublisher, AFreshVolumeWaitsForItsTakerUntilThePatternChanges) {
-  const auto mask = fullMask(glm::ivec3(96));  // a pack of some milliseconds, against a 1 ms interval
+  // A pack of a millisecond or more, against a 1 ms interval (and far longer under a sanitizer,
+  // where the frames below wait for packs of this size: a larger grid only makes them longer).
+  const auto mask = fullMask(glm::ivec3(64));
   Accumulator accumulator(mask, 1);
   accumulator.setPattern(defaultScene().layers, 1);  // refines without end
   SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(1));
