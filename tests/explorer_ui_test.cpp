@@ -76,7 +76,7 @@ class ExplorerUi : public ::testing::Test {
       const auto found = probe.items.find(name);
       if (found == probe.items.end()) continue;  // gone since an earlier widget's edit
       const core::Scene before = state.document.scene;
-      const std::uint64_t reports = state.document.reportCount();
+      const std::uint64_t reports = state.document.revisions().any;
       drag(found->second.centerX(), found->second.centerY(), 12.0f, 0.0f);
       if (ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) {
         ImGui::GetIO().KeysDown[app::kKeyEscape] = true;  // close what the click opened (a combo)
@@ -86,7 +86,7 @@ class ExplorerUi : public ::testing::Test {
       }
       if (!(state.document.scene == before)) {
         ++changed;
-        EXPECT_GT(state.document.reportCount(), reports) << name;
+        EXPECT_GT(state.document.revisions().any, reports) << name;
       }
     }
     return changed;

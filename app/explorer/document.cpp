@@ -19,8 +19,7 @@ bool Document::replace(const core::Scene& next) {
 }
 
 void Document::reset(const core::Scene& opened) {
-  replace(opened);
-  scene = opened;  // equal, member for member, to what was opened (replace kept an equal scene as it was)
+  replace(opened);  // counts what the opened scene changes, so the live view posts it
   savedScene = opened;
   keyBase = opened;
   initialCamera = opened.camera;

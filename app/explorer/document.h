@@ -58,7 +58,6 @@ class Document {
 
   // Everything reported since the last call (the UI frame's check of the reports).
   core::Affects takeReported() { return std::exchange(reported_, core::Affects::None); }
-  std::uint64_t reportCount() const { return revisions_.any; }
 
  private:
   Revisions revisions_;

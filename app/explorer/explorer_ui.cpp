@@ -127,7 +127,7 @@ static void checkEditReports(const core::Scene& before, Document& document, std:
   const core::Affects reported = document.takeReported();
   const core::SceneDiff changed = core::diff(before, document.scene);
   if (changed.empty()) return;
-  const bool unreported = document.reportCount() == reportsBefore;
+  const bool unreported = document.revisions().any == reportsBefore;
   const core::Affects missing =
       static_cast<core::Affects>(static_cast<unsigned>(changed.affects) & ~static_cast<unsigned>(reported));
   if (unreported || core::any(missing))
@@ -137,7 +137,7 @@ static void checkEditReports(const core::Scene& before, Document& document, std:
 
 void explorerUiFrame(ExplorerState& state) {
   std::optional<core::Scene> before;
-  const std::uint64_t reportsBefore = state.document.reportCount();
+  const std::uint64_t reportsBefore = state.document.revisions().any;
   if (state.frame.checkEditReports) {
     before = state.document.scene;
     state.document.takeReported();

@@ -464,11 +464,6 @@ void LiveView::serveRequests(ExplorerState& state, unsigned framebuffer) {
     state.frame.requests.exportStill.reset();
   }
 }
-
-}  // namespace voxflame::app
-
-namespace voxflame::app {
-
 LiveInputs liveInputs(const ExplorerState& state) {
   LiveInputs inputs;
   inputs.revisions = state.document.revisions();
