@@ -3,6 +3,7 @@
 #pragma once
 
 #include <chrono>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,9 @@ int runBenchmarks(BenchOptions options, const std::string& which);
 // children (RUSAGE_CHILDREN): on a shared machine the wall-clock rate depends on what else runs,
 // while a rate per CPU second measures the code itself.
 double cpuSeconds(int who);
+// The presets named on the command line (a path, or a shipped preset's name with or without
+// .json), or every shipped preset.
+std::vector<std::filesystem::path> presetsToRun(const BenchOptions& options);
 
 // Prints one measurement: the JSON object as one line with --json, else "key=value" pairs.
 void report(const BenchOptions& options, const nlohmann::json& measurement);
@@ -52,6 +56,7 @@ void benchExplorer(const BenchOptions& options);    // bench_explorer.cpp
 void benchQuality(const BenchOptions& options);     // bench_quality.cpp
 void benchFlame(const BenchOptions& options);       // bench_flame.cpp
 void benchRest(const BenchOptions& options);        // bench_rest.cpp
+void benchView(const BenchOptions& options);        // bench_view.cpp
 void benchFidelity(const BenchOptions& options);    // bench_fidelity.cpp
 void benchSearch(const BenchOptions& options);      // bench_search.cpp
 

@@ -37,6 +37,13 @@ const std::vector<Benchmark>& benchmarks() {
        "the live view on each shipped preset (or the ones named) at its own grid: seconds until it rests and why, "
        "then CPU and context switches per second at rest",
        &benchRest},
+      {"view",
+       "the live view headless at 1280×720 on the shipped presets (or the ones named), as the window loop runs it: "
+       "seconds from the last change to a picture with SSIM ≥ 0.95 against the final one, seconds to rest, frame "
+       "times while the points refine (mean, p95) and overall p95, CPU at rest, and the view at rest against "
+       "`voxflame render` of the same preset at the view's size with its points and samples (SSIM, mean-luminance "
+       "ratio)",
+       &benchView},
       {"fidelity",
        "the flat view against flam3-render at quality 400, at most 640 pixels wide: SSIM of the luma (and flam3 "
        "against itself with another seed as the ceiling), ratio of mean luminance; flam3's test.flam3 and up to 19 "

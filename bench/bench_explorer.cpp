@@ -344,7 +344,7 @@ std::array<double, 3> cpuAtRest(app::ExplorerSession& session, FrameLoop& loop) 
     const double wait = app::frameWaitSeconds(loop.state, loop.view.resting(), restingFrames);
     if (wait > 0.0) {
       std::this_thread::sleep_for(std::chrono::duration<double>(wait));  // glfwWaitEventsTimeout, no input
-      return;
+      if (!loop.state.frame.view.waitingForPoints) return;               // frames between points pictures draw after it
     }
     loop.run();
     restingFrames = loop.view.resting() && loop.state.frame.session.resting ? restingFrames + 1 : 0;

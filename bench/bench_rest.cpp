@@ -40,8 +40,8 @@ long long contextSwitches() {
   return total;
 }
 
-// The presets named on the command line (a path, or a shipped preset's name with or without
-// .json), or every shipped preset.
+}  // namespace
+
 std::vector<std::filesystem::path> presetsToRun(const BenchOptions& options) {
   const std::filesystem::path shipped = app::findShippedPresetFolder();
   std::vector<std::filesystem::path> paths;
@@ -59,6 +59,8 @@ std::vector<std::filesystem::path> presetsToRun(const BenchOptions& options) {
   }
   return paths;
 }
+
+namespace {
 
 // Why the session rests, as the status line says it.
 std::string restReason(const app::SessionStatus& status) {
@@ -91,7 +93,8 @@ void benchRest(const BenchOptions& options) {
       const double wait = app::frameWaitSeconds(loop.state, loop.view.resting(), restingFrames);
       if (wait > 0.0) {
         std::this_thread::sleep_for(std::chrono::duration<double>(wait));
-        return true;
+        // Frames also wait between the points picture's steps, and then draw.
+        if (!loop.state.frame.view.waitingForPoints) return true;
       }
       loop.run();
       restingFrames = loop.view.resting() && loop.state.frame.session.resting ? restingFrames + 1 : 0;

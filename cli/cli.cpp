@@ -389,8 +389,8 @@ Run defineBench(CLI::App& command) {
                   "(256 and 512)")
       ->check(within(core::kMinGridResolution, core::kMaxGridResolution));
   command.add_option("presets", options->presets,
-                     "`rest`: the presets to open (files, or shipped names such as default); default: every shipped "
-                     "preset. `fidelity`: the flame files to compare with flam3-render");
+                     "`rest` and `view`: the presets to open (files, or shipped names such as default); default: every "
+                     "shipped preset. `fidelity`: the flame files to compare with flam3-render");
   command.add_flag("--print", options->print,
                    "`export`: the 16K print instead (15360×8640, points method, 20 points a pixel), rendered by a "
                    "`voxflame render` of its own: seconds and peak resident memory");

@@ -327,7 +327,9 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
         continue;
       }
       // (An export's progress is polled by the frames themselves: they go on, throttled.)
-      const bool restingWait = wait > 0.0 && state.services.exportStatus.state != ExportState::Running;
+      // A wait between the points picture's steps is no rest either: the frame after it draws.
+      const bool restingWait =
+          wait > 0.0 && state.services.exportStatus.state != ExportState::Running && !state.frame.view.waitingForPoints;
       if (restingWait && !closeAsked && input.queue.pending() == 0 && dropped.empty() &&
           !glfwWindowShouldClose(window)) {
         const RestSignature now = restSignature(session, state, presets, window);

@@ -180,6 +180,11 @@ std::optional<core::GridGeometry> ExplorerSession::geometry() const {
   return engine_->mask->geometry;
 }
 
+std::shared_ptr<const core::InsideMask> ExplorerSession::mask() const {
+  std::lock_guard lock(mutex_);
+  return engine_ ? engine_->mask : nullptr;
+}
+
 SessionStatus ExplorerSession::status() const {
   std::lock_guard lock(mutex_);
   SessionStatus status;
@@ -221,11 +226,14 @@ bool ExplorerSession::waitUntilApplied(double timeoutSeconds) {
                                  [&] { return applied_ == requested_ && !working_; });
 }
 
-void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool interacting, bool viewMoving) {
+void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool interacting, bool viewMoving,
+                                    std::uint64_t gridPointCap) {
   {
     std::lock_guard lock(mutex_);
-    if (noiseTarget == noiseTarget_ && paused == paused_ && interacting == interacting_ && viewMoving == viewMoving_)
+    if (noiseTarget == noiseTarget_ && paused == paused_ && interacting == interacting_ && viewMoving == viewMoving_ &&
+        gridPointCap == gridPointCap_)
       return;
+    gridPointCap_ = gridPointCap;
     noiseTarget_ = noiseTarget;
     paused_ = paused;
     interacting_ = interacting;
@@ -315,10 +323,12 @@ void ExplorerSession::steer(Engine& engine) {
   const bool interacting = holdsForInteraction(engine);
   double target = 0.0;
   bool paused = false, further = false;
+  std::uint64_t gridPointCap = 0;
   {
     std::lock_guard lock(mutex_);
     target = noiseTarget_;
     paused = paused_;
+    gridPointCap = gridPointCap_;
     further = std::exchange(refineFurtherRequested_, false);
   }
   const core::AccumulatorStats stats = engine.accumulator.stats();
@@ -336,15 +346,18 @@ void ExplorerSession::steer(Engine& engine) {
   // is NaN): a single one may dip under it by chance, or while a flow's orbits dwell in one part
   // of the attractor between two samples.
   const bool converged = target > 0.0 && engine.meter.twoMeasurementsWithin(target) && points >= engine.furtherPoints;
-  const bool capped = points >= engine.capPoints;
-  std::uint64_t wanted = engine.capPoints;
+  // "Refine further" goes past a grid cap as it goes past the rest cap.
+  const std::uint64_t capPoints =
+      gridPointCap > 0 ? std::min(engine.capPoints, std::max(gridPointCap, engine.furtherPoints)) : engine.capPoints;
+  const bool capped = points >= capPoints;
+  std::uint64_t wanted = capPoints;
   if (converged || paused) {
     // A target already held stays: raising it to the points counted now would send the streams
     // that are behind on another batch each time, and the workers would never quite rest.
     wanted = engine.held            ? engine.target
              : paused && !converged ? std::max(points, kPausedPreviewPoints)
                                     : std::max<std::uint64_t>(points, 1);
-    wanted = std::min(wanted, engine.capPoints);
+    wanted = std::min(wanted, capPoints);
   }
   engine.held = converged || paused;
   engine.accumulator.setHeld(interacting);
@@ -364,7 +377,7 @@ void ExplorerSession::steer(Engine& engine) {
   insideVoxels_ = engine.accumulator.insideVoxels();
   lastMeasurement_ = engine.meter.lastMeasurement();
   previousMeasurement_ = engine.meter.previousMeasurement();
-  capPointsPerVoxel_ = static_cast<double>(engine.capPoints) / inside;
+  capPointsPerVoxel_ = static_cast<double>(capPoints) / inside;
   // The control thread sleeps until it is asked for something once refinement will add nothing.
   // An escaping pattern does not refine at all: nothing to measure until the next edit.
   holding_ = converged || paused || capped || !stats.problem.empty();

@@ -129,7 +129,15 @@ class ExplorerSession {
   // each edit, and the large grid refines the pattern the user stops on. `viewMoving`: only the
   // view changes (an orbit, a pan), so any grid, one without a proxy too, holds: the pattern
   // stays, and the cores are the frame's until the view is still (a post ends it).
-  void setRefinement(double noiseTarget, bool paused, bool interacting = false, bool viewMoving = false);
+  // `gridPointCap` (0: none) ends refinement at that many points when fewer than the rest cap:
+  // under the points method the grid only dims the projected points, and an export's grid stops at
+  // kGridPointsForPointsMethod, so the live view's stops there too and leaves the cores to the
+  // points picture (LivePoints).
+  void setRefinement(double noiseTarget, bool paused, bool interacting = false, bool viewMoving = false,
+                     std::uint64_t gridPointCap = 0);
+  // The inside mask of the current shape (null before the first shape is ready): the points
+  // picture iterates the pattern over it.
+  std::shared_ptr<const core::InsideMask> mask() const;
 
   // How often the noise is measured while the volume refines.
   static constexpr std::chrono::milliseconds kMeterInterval{250};
@@ -188,6 +196,7 @@ class ExplorerSession {
   bool paused_ = false;
   bool interacting_ = false;
   bool viewMoving_ = false;
+  std::uint64_t gridPointCap_ = 0;
   bool steerRequested_ = false;  // setRefinement changed something for the control thread
   double noise_ = std::numeric_limits<double>::quiet_NaN();
   bool converged_ = false;

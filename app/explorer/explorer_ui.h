@@ -193,10 +193,24 @@ struct Services {
 // What a frame produces and the window loop, the live view and the tests read: timings, the
 // session's status, the panels' requests, where the picture goes, and the GL textures the window
 // loop uploads for the panels.
+// What the live view shows and whether it still refines it (LiveView::refinement), for the status
+// line: "at rest" is said only once the session and the view both rest.
+struct ViewRefinement {
+  bool resting = false;      // the picture is final: no sample or point of the view's is being made
+  bool points = false;       // the scene's still method is points
+  bool pointsShown = false;  // ... and the points picture has replaced the volume picture
+  std::uint64_t pointsDone = 0, pointsTarget = 0;
+  int samples = 0;  // of the volume picture
+  // The view only waits for the points thread's next picture: frames may wait a little for input
+  // instead of drawing the same pixels (frameWaitSeconds).
+  bool waitingForPoints = false;
+};
+
 struct FrameOutputs {
   FrameMetrics metrics;
   SessionStatus session;  // copied from the session once per frame
   int samples = 0;        // the live view's samples of the picture shown
+  ViewRefinement view;
   UiRequests requests;
   // The user holds a widget (a slider being dragged, a field being typed in) or drags the view:
   // an edit made now is one of a run of them, so the large grid holds from the first (LiveView).
@@ -270,6 +284,9 @@ void startExport(ExplorerState& state, ExportJob& job, const ExportRequest& requ
 // The status line's convergence meter: "noise 1.2% → 0.5%" while refining towards a target,
 // "noise 1.2%" when refinement never stops, "converged (noise 0.48%)", "paused for the export".
 std::string convergenceText(const SessionStatus& status);
+// The same with the live view's own refinement: "at rest" only once the view rests too, and the
+// points picture's progress while it builds ("points: 38 M of 60 M").
+std::string convergenceText(const SessionStatus& status, const ViewRefinement& view);
 
 // How long the window loop may wait for input before its next frame: 0 while anything moves (an
 // edit, refinement, an upload, samples, a job, playback); a long wait when the session and the

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/scene_schema.h"
 #include "gl/read_back.h"
+#include "pipeline.h"
 
 namespace voxflame::app {
 
@@ -214,6 +215,8 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
 
 void LiveView::restartSamples(bool refinedContent) {
   target_.samples = 0;
+  settled_ = false;
+  settledReferenceSamples_ = 0;
   // A fresher volume (or shadow) of what is already marched does not throw away a first pass
   // under way: the pass finishes on it and is shown, then the samples start over. The grid's
   // refinement brings one every few frames, faster than a slow GL marches a pass in bands, and
@@ -264,7 +267,87 @@ bool LiveView::marchBands(const gl::RenderSettings& settings, bool still, double
 }
 
 bool LiveView::resting() const {
-  return target_.samples >= kMaxSamples && !uploadInProgress_ && !shadowJob_.busy() && !shadowJob_.ready();
+  if (uploadInProgress_ || shadowJob_.busy() || shadowJob_.ready() || points_.working()) return false;
+  if (pointsMethod_) return pointsShown_ && points_.progress().finished;
+  return settled_ || target_.samples >= kMaxSamples;
+}
+
+void LiveView::stopPoints() {
+  points_.stop();
+  pointsKey_.reset();
+  pointsHavePicture_ = false;
+  pointsShown_ = false;
+}
+
+bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, const gl::RenderSettings& settings,
+                            bool still, int width, int height) {
+  if (!pointsMethod_) {
+    if (pointsKey_) stopPoints();
+    return false;
+  }
+  const int oversample = std::clamp(scene.render.oversample, 1, 4);
+  const PointsKey key{
+      inputs.revisions.pattern, inputs.revisions.view,    scene.points, scene.seed, width, height, oversample,
+      inputs.camera.fovDeg,     inputs.camera.orthoHeight};
+  // While anything moves the volume preview takes over; once it stops, the points picture builds
+  // up again from nothing.
+  if (pointsKey_ && (*pointsKey_ != key || !still || inputs.interacting)) stopPoints();
+  if (!still || inputs.interacting) return false;
+  if (!pointsKey_) {
+    // The points are dimmed by the grid in front of them: they start once the main grid shows the
+    // pattern, whole (a proxy's or a half-uploaded grid's transmittance would be another picture's).
+    const bool gridShowsPattern = renderer_.marchedSource() == gl::VolumeRenderer::Source::Main &&
+                                  renderer_.hasVolume(gl::VolumeRenderer::Source::Main) && mainPost_ >= lastPost_ &&
+                                  !mainMixed_ && !uploadInProgress_;
+    std::shared_ptr<const core::InsideMask> mask = gridShowsPattern ? session_.mask() : nullptr;
+    if (!mask || mask->geometry.size != shown_->geometry.size) return false;
+    LivePointsRequest request;
+    request.scene = scene;
+    request.mask = std::move(mask);
+    request.volume = shown_;  // shared: the next volume is packed into a fresh one meanwhile
+    request.camera = settings.camera;
+    request.width = width * oversample;
+    request.height = height * oversample;
+    points_.start(std::move(request));
+    pointsKey_ = key;
+    pointsHavePicture_ = false;
+    pointsShown_ = false;
+    pointsNextShare_ = kPointsShownShare;
+  }
+  // A picture is taken when its points have doubled since the last one shown (from
+  // kPointsShownShare on) and when it is whole: finishing a full-size picture of sparse points
+  // costs a software GL hundreds of milliseconds, and each doubling is the visible step.
+  const LivePointsProgress progress = points_.progress();
+  const double share =
+      static_cast<double>(progress.points) / static_cast<double>(std::max<std::uint64_t>(progress.target, 1));
+  if (!(progress.finished || share >= pointsNextShare_) || !points_.takeIfNewer(pointsImage_)) return false;
+  pointsTarget_.setSums(pointsImage_, oversample);
+  if (!pointsHavePicture_) {
+    renderer_.drawMesh(pointsTarget_, settings);
+    pointsHavePicture_ = true;
+  }
+  pointsNextShare_ = std::max(pointsNextShare_, 2.0 * share);
+  pointsShown_ = true;
+  return true;
+}
+
+void LiveView::checkSettled(unsigned framebuffer, glm::ivec4 place, int samples) {
+  std::vector<std::uint8_t> picture =
+      gl::readRgba8(framebuffer, {place.x, place.y, place.z, place.w}, gl::ReadAlpha::Opaque);
+  if (settledReferenceSamples_ > 0 && settledReference_.size() == picture.size()) {
+    std::size_t moved = 0;
+    for (std::size_t i = 0; i < picture.size(); i += 4) {
+      int largest = 0;
+      for (std::size_t c = 0; c < 3; ++c)
+        largest =
+            std::max(largest, std::abs(static_cast<int>(picture[i + c]) - static_cast<int>(settledReference_[i + c])));
+      if (largest > kSettledLevels) ++moved;
+    }
+    lastSettledShare_ = static_cast<double>(moved) / static_cast<double>(std::max<std::size_t>(picture.size() / 4, 1));
+    if (lastSettledShare_ <= kSettledShare) settled_ = true;
+  }
+  settledReference_ = std::move(picture);
+  settledReferenceSamples_ = samples;
 }
 
 LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, FrameMetrics& metrics,
@@ -288,6 +371,7 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
     }
   }
   lastFrameStart_ = frameStart;
+  pointsMethod_ = scene.render.method == core::RenderMethod::Points;
   lastMarched_ = false;
   lastInBands_ = false;
   lastFinishMs_ = 0.0;
@@ -302,6 +386,7 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
     session_.post(scene, inputs.interacting || changedLastFrame_);
     result.patternPosted = true;
     waitingPost_ = session_.status().requestedGeneration;
+    lastPost_ = waitingPost_;
     waitingFullPost_ = waitingPost_;
     waitingSince_ = std::chrono::steady_clock::now();
     waitingSinceFrame_ = frame_;
@@ -338,11 +423,13 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
     // While the view or the pattern moves, fewer pixels keep the frame within its budget; a still
     // view refines at the scale the user chose.
     budget_.setBudget(inputs.frameBudgetMs);
-    // Playback is judged for its motion, frame after frame: the budget alone decides how sharp
-    // its frames are, up to the full window, not the preview scale a still view refines at (half
-    // the pixels on software GL, a fixed blur that frames within the budget need not have).
+    // The preview scale is the ceiling only while something moves. Playback is judged for its
+    // motion, frame after frame: the budget alone decides how sharp its frames are, up to the full
+    // window. A still view refines at the full resolution on every GL, software included: it is
+    // the picture an export of the view makes, and its bands keep each frame within the budget.
     const float ceiling = inputs.playing ? 1.0f : std::min(1.0f, inputs.renderScale);
-    const float scale = budget_.next(viewChanged || result.patternPosted, ceiling);
+    float scale = budget_.next(viewChanged || result.patternPosted, ceiling);
+    if (budget_.quiet()) scale = 1.0f;
     metrics.marchScale = scale;
     // Coarser pixels, coarser steps along the ray. A still view marches at its ceiling (stretch
     // 1), and a change of scale restarts the samples, so its samples are all of the scene's step.
@@ -377,8 +464,12 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
     // A view that has just stopped changing keeps its last whole picture until the budget lets
     // the scale back up: samples marched at the lowered scale meanwhile would be thrown away then.
     const bool settling = !still && !viewChanged && !result.patternPosted && scale < ceiling && target_.samples >= 1;
+    const bool pointsPicture = updatePoints(scene, inputs, settings, still, width, height);
     bool newPicture = false;
-    if (target_.samples < kMaxSamples && (!mainMixedShown() || viewChanged) && !waitForUpload && !settling) {
+    // Once the points are being projected, the volume picture is not refined further: the points
+    // picture replaces it within seconds, and its samples would only take the cores the points need.
+    if (target_.samples < kMaxSamples && !settled_ && !pointsKey_ && (!mainMixedShown() || viewChanged) &&
+        !waitForUpload && !settling) {
       newPicture = marchBands(settings, still, budget_.budgetMs());
       lastMarched_ = true;
       lastMarchScale_ = scale;
@@ -387,17 +478,34 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
     changed = viewChanged;
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
     // Until the first pass over a new view or volume is whole, the last whole picture stays up.
-    const gl::FrameTarget& shown = showingTarget_ || !shownHasPicture_ ? target_ : shownTarget_;
+    const gl::FrameTarget& shown = pointsShown_                          ? pointsTarget_
+                                   : showingTarget_ || !shownHasPicture_ ? target_
+                                                                         : shownTarget_;
     const auto resolveStart = std::chrono::steady_clock::now();
     renderer_.resolve(shown, settings, place, false);
     resolveMs_ = millisecondsSince(resolveStart);
-    if (newPicture) lastFinishMs_ = resolveMs_;
+    if (newPicture || pointsPicture) lastFinishMs_ = resolveMs_;
+    // A still volume picture whose samples just doubled (from kFirstSettledCheck on) is compared
+    // with the one before the doubling: once no pixel moves visibly, refining stops.
+    const int passSamples = target_.samples;
+    if (newPicture && still && !pointsMethod_ && passSamples >= kFirstSettledCheck &&
+        (passSamples & (passSamples - 1)) == 0 && scale == 1.0f)
+      checkSettled(framebuffer, place, passSamples);
     result.volumeDrawn = true;
   } else {
     clearAround(glm::ivec4(0), framebufferWidth, framebufferHeight, background);
   }
   lastPlace_ = place;
   result.samples = target_.samples;
+  const LivePointsProgress pointsProgress = points_.progress();
+  result.view.points = pointsMethod_;
+  result.view.pointsShown = pointsShown_;
+  result.view.pointsDone = pointsProgress.points;
+  result.view.pointsTarget = pointsMethod_ ? scene.points : 0;
+  result.view.samples = target_.samples;
+  result.view.resting = resting();
+  // Nothing for the frames to do but wait for the points thread's next picture.
+  result.view.waitingForPoints = points_.working() && pointsKey_ && !uploadInProgress_ && !changedLastFrame_;
 
   result.fullShown = renderer_.hasVolume() && renderer_.marchedSource() == gl::VolumeRenderer::Source::Main;
   if (newVolumeShown_) {
@@ -422,7 +530,9 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
   const bool viewOnly = changed && !result.patternPosted;
   changed = changed || result.patternPosted;
   const bool held = changed && (changedLastFrame_ || inputs.interacting);
-  session_.setRefinement(inputs.refineUntilNoise, inputs.exportRunning, held, held && viewOnly);
+  // Under the points method the grid only dims the points: it stops where an export's does.
+  session_.setRefinement(inputs.refineUntilNoise, inputs.exportRunning, held, held && viewOnly,
+                         pointsMethod_ ? kGridPointsForPointsMethod : 0);
   changedLastFrame_ = changed;
   ++frame_;
   return result;
@@ -482,6 +592,7 @@ LiveFrame liveFrame(LiveView& view, ExplorerState& state, int width, int height,
   const LiveFrame result =
       view.frame(state.document.scene, liveInputs(state), state.frame.metrics, width, height, framebuffer);
   state.frame.samples = result.samples;
+  state.frame.view = result.view;
   // Requests are served after the picture is drawn and before the panels go over it, so a
   // thumbnail shows the view alone.
   view.serveRequests(state, framebuffer);

@@ -23,6 +23,7 @@
 #include "explorer_ui.h"
 #include "frame_budget.h"
 #include "gl/volume_renderer.h"
+#include "live_points.h"
 
 namespace voxflame::app {
 
@@ -34,6 +35,7 @@ struct LiveFrame {
   bool patternPosted = false;   // the scene's pattern changed and was posted this frame
   bool fullShown = false;       // the volume drawn is the full grid (else the session's coarse proxy)
   int samples = 0;              // samples of the picture shown
+  ViewRefinement view;          // which picture is shown, and whether it still refines
 };
 
 // What a frame draws from besides the scene: what the document has changed so far, the window's
@@ -73,13 +75,32 @@ class LiveView {
   void serveRequests(ExplorerState& state, unsigned framebuffer = 0);
 
   bool hasVolume() const { return renderer_.hasVolume(); }
-  // The picture is finished: every band of it marched kMaxSamples times, no upload or shadow
-  // under way. With the session resting too, another frame would draw the same pixels.
+  // The picture is final: the volume picture's samples stopped changing it visibly (or reached
+  // kMaxSamples), or under the points method every point is in the points picture; no upload,
+  // shadow or points thread is at work. With the session resting too, another frame would draw
+  // the same pixels.
   bool resting() const;
   std::uint32_t frameCount() const { return frame_; }
 
-  // Refining stops after this many samples of an unchanged view (the picture no longer improves).
+  // Refining stops after this many samples of an unchanged view at most; usually sooner, once a
+  // doubling of the samples changes no pixel visibly (see kSettledLevels).
   static constexpr int kMaxSamples = 64;
+  // The volume picture is final once the picture shown after 2n samples differs from the one
+  // after n by no more than this many 8-bit levels in any channel, at all but kSettledShare of
+  // its pixels: the change still to come past 2n samples is about the same size again, which
+  // nobody sees. Checked at n = kFirstSettledCheck, then at each doubling.
+  static constexpr int kSettledLevels = 2;
+  static constexpr double kSettledShare = 0.002;
+  static constexpr int kFirstSettledCheck = 4;
+  // The share of the view's pixels that moved by more than kSettledLevels at the last doubling
+  // (negative: not measured yet), for the benchmark and the tests.
+  double lastSettledShare() const { return lastSettledShare_; }
+  // The points picture replaces the volume picture once it holds this share of its points: its
+  // noise is then twice the final picture's at most, and finer than the grid's voxels
+  // (`bench view` measures how close it is to the final picture by then).
+  static constexpr double kPointsShownShare = 0.25;
+  // The points picture's progress (points method), for the benchmark and the tests.
+  LivePointsProgress pointsProgress() const { return points_.progress(); }
 
   // What the last frame marched and what it cost, for the benchmark and the tests: the rows of
   // the march target it marched (0: none) of how many, the march's time (measured only for a
@@ -126,6 +147,37 @@ class LiveView {
   bool lastInBands_ = false;   // the last frame refined a still view in bands
   double lastFinishMs_ = 0.0;  // ... and the finish of a new picture it ran (0: none)
   double testMsPerRow_ = 0.0;
+  // The volume picture stopped changing visibly: no more samples until the view or volume changes.
+  bool settled_ = false;
+  std::vector<std::uint8_t> settledReference_;  // the picture shown at the last check (RGBA8)
+  int settledReferenceSamples_ = 0;
+  double lastSettledShare_ = -1.0;
+  // Compares the picture just drawn at `place` with the last check's (framebuffer bound).
+  void checkSettled(unsigned framebuffer, glm::ivec4 place, int samples);
+
+  // The points picture (points method): made on LivePoints' thread once the view and pattern are
+  // still and the main grid shows the pattern, shown from pointsTarget_ once it has more points
+  // than kPointsShownShare of its count.
+  struct PointsKey {
+    std::uint64_t pattern = 0, view = 0, points = 0, seed = 0;
+    int width = 0, height = 0, oversample = 0;
+    double fieldDeg = 0.0, orthoHeight = 0.0;
+    bool operator==(const PointsKey&) const = default;
+  };
+  LivePoints points_;
+  std::optional<PointsKey> pointsKey_;  // what the run under way (or done) projects
+  gl::FrameTarget pointsTarget_;
+  bool pointsHavePicture_ = false;  // pointsTarget_ holds a picture of the run under way
+  bool pointsShown_ = false;
+  double pointsNextShare_ = kPointsShownShare;  // of the points, for the next picture taken
+  bool pointsMethod_ = false;                   // of the last frame's scene
+  std::uint64_t lastPost_ = 0;                  // the newest post made
+  core::DensityImage pointsImage_;              // the newest points picture taken, before its upload
+  void stopPoints();
+  // Starts, stops and takes the points picture for this frame; true when a new one was uploaded
+  // and is shown.
+  bool updatePoints(const core::Scene& scene, const LiveInputs& inputs, const gl::RenderSettings& settings, bool still,
+                    int width, int height);
   // The volume being uploaded or shown, shared with a shadow job that may still read it; the next
   // volume is swapped into it once uploaded (or into a fresh one while a shadow job holds it).
   std::shared_ptr<core::PackedVolume> shown_ = std::make_shared<core::PackedVolume>();

@@ -386,7 +386,7 @@ DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const Inside
       accumulator.setChunk(static_cast<std::uint64_t>(chunk), false);
       accumulator.setTargetPoints(chunkTarget);
       accumulator.setHeld(false);
-      while (!accumulator.waitUntilDone(0.25)) {
+      while (!accumulator.waitUntilDone(options.progressInterval)) {
         stats = accumulator.stats();
         const double done = (static_cast<double>(chunksDone) +
                              std::min(1.0, static_cast<double>(stats.points - pointsBefore) /

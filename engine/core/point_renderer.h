@@ -144,6 +144,7 @@ struct PointsPassOptions {
   int threads = 0;
   int transmittanceCells = 4;  // image pixels per transmittance cell along each axis
   std::function<void(double)> progress;
+  double progressInterval = 0.25;         // seconds between progress calls (a live picture stops sooner with less)
   std::uint64_t* pointsInside = nullptr;  // when set, receives how many points landed inside the mesh
   std::uint64_t* iterations = nullptr;    // when set, receives the orbit steps taken
   // The points split into `chunks` chunks (chunkPoints), each iterating its own seed streams

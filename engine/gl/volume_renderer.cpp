@@ -115,6 +115,27 @@ core::DensityImage FrameTarget::readDensity() const {
   return image;
 }
 
+void FrameTarget::setSums(const core::DensityImage& image, int oversample) {
+  oversample = std::max(1, oversample);
+  if (image.width % oversample != 0 || image.height % oversample != 0 ||
+      image.values.size() != 4 * static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height))
+    throw core::Error("the sums are not a whole supersampled image");
+  resize(image.width / oversample, image.height / oversample);
+  const glm::ivec2 size(image.width, image.height);
+  glBindTexture(GL_TEXTURE_2D, radiance_);
+  if (radianceSize_ != size) glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+  // The image's rows run top to bottom, GL's bottom to top.
+  for (int y = 0; y < size.y; ++y)
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, size.y - 1 - y, size.x, 1, GL_RGBA, GL_FLOAT,
+                    &image.values[4 * static_cast<std::size_t>(y) * static_cast<std::size_t>(size.x)]);
+  glBindTexture(GL_TEXTURE_2D, 0);
+  radianceSize_ = size;
+  oversample_ = oversample;
+  hitsPerUnitDensity_ = image.hitsPerUnitDensity;
+  content_ = glm::ivec4(0, 0, size.x, size.y);
+  ++revision_;
+}
+
 core::MeshOverlay FrameTarget::readMeshOverlay(const RenderSettings& settings) const {
   core::MeshOverlay overlay = emptyOverlay(settings, 0, 0);
   overlay.width = width_;
@@ -140,6 +161,8 @@ void FrameTarget::resize(int width, int height) {
   ++revision_;
   width_ = std::max(1, width);
   height_ = std::max(1, height);
+  radianceSize_ = glm::ivec2(width_, height_);
+  oversample_ = 1;
   samples = 0;
   content_ = glm::ivec4(0);  // cleared below
   if (!framebuffer_) {
@@ -579,8 +602,8 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
     // Straight from the target's textures: the whole image, no apron needed.
     FinishSource source;
     source.density = target.radiance_;
-    source.size = size;
-    source.fullSize = size;
+    source.size = target.radianceSize_;
+    source.fullSize = target.radianceSize_;
     source.hitsPerUnitDensity = target.hitsPerUnitDensity_;
     source.content = target.content_;
     OverlayStyle style;
@@ -591,7 +614,7 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
       source.overlay = target.meshLayer_;
       style = {settings.render.meshDisplay, settings.render.meshColor, settings.render.meshStrength};
     }
-    finisher_.finish(source, finishSettings(settings, linearOutput, 1), style, glm::ivec2(0), size,
+    finisher_.finish(source, finishSettings(settings, linearOutput, target.oversample_), style, glm::ivec2(0), size,
                      target.finishedFramebuffer_, target.finished_);
     target.finishedRevision_ = target.revision_;
     target.finishedKey_ = key;

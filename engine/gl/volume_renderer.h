@@ -56,6 +56,12 @@ class FrameTarget {
   // can be shown while `other` refines on in bands (a part-refined image would show their seams).
   void copyFrom(const FrameTarget& other);
 
+  // Takes sums made elsewhere (the points method's screen histogram, supersampled `oversample`
+  // times along each axis) in place of marched ones: the target becomes image / oversample pixels,
+  // and resolve() finishes the sums with that oversample, as an export of the points method does.
+  // The mesh layer stays at the target's (output) size; drawMesh fills it.
+  void setSums(const core::DensityImage& image, int oversample);
+
   // The sums read back (rows top to bottom), for tests and exports (gl/read_back.h counts it).
   core::DensityImage readDensity() const;
   // The mesh layer read back as an overlay at this target's size.
@@ -64,6 +70,9 @@ class FrameTarget {
  private:
   friend class VolumeRenderer;
   int width_ = 0, height_ = 0;
+  // The sums' size and oversample: width_ × height_ and 1 for marched sums, larger for setSums's.
+  glm::ivec2 radianceSize_{0};
+  int oversample_ = 1;
   GLuint framebuffer_ = 0, radiance_ = 0;
   GLuint meshFramebuffer_ = 0, meshLayer_ = 0, meshDepth_ = 0;
   std::uint64_t revision_ = 0;       // bumped by every march, mesh draw and resize

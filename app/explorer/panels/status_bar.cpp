@@ -56,12 +56,34 @@ std::string convergenceText(const SessionStatus& status) {
   return text;
 }
 
+std::string convergenceText(const SessionStatus& status, const ViewRefinement& view) {
+  std::string text = convergenceText(status);
+  if (text.empty() || !status.escapeNote.empty() || status.paused) return text;
+  char line[200];
+  const bool sessionRests = text.rfind("at rest", 0) == 0;
+  if (view.points && (view.pointsDone > 0 || sessionRests) && !view.resting) {
+    std::snprintf(line, sizeof line, "points: %.0f M of %.0f M%s", static_cast<double>(view.pointsDone) * 1e-6,
+                  static_cast<double>(view.pointsTarget) * 1e-6,
+                  view.pointsShown ? "" : " (the volume preview until a quarter is in)");
+    return line;
+  }
+  if (sessionRests && !view.resting) {
+    std::snprintf(line, sizeof line, "refining the view: %d samples", view.samples);
+    return line;
+  }
+  return text;
+}
+
 double frameWaitSeconds(const ExplorerState& state, bool viewResting, int restingFrames) {
   if (state.services.exportStatus.state == ExportState::Running) return 0.1;
   const bool busy = state.panels.timeline.playing || state.services.search.busy() || state.services.analysis.busy() ||
                     state.services.flatRender.busy() || state.frame.flatImagePending || state.panels.drag.orbiting ||
                     state.panels.drag.panning;
-  if (busy || !viewResting || !state.frame.session.resting || restingFrames < 3) return 0.0;
+  if (busy) return 0.0;
+  // The points picture comes a few times in its build-up: the frames between would draw the same
+  // pixels and take a core from the points. Input ends the wait at once.
+  if (state.frame.view.waitingForPoints) return 0.05;
+  if (!viewResting || !state.frame.session.resting || restingFrames < 3) return 0.0;
   // Other threads do not wake the loop; this bounds how late it notices one that finished.
   return 0.5;
 }
@@ -85,7 +107,7 @@ void statusBar(FrameOutputs& frame, const ExplorePanelState& explore, StatusBarS
   if (frame.session.buildingShape)
     ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.4f, 1.0f), "%s %.1f s", frame.session.shapeStage.c_str(),
                        frame.session.shapeSeconds);
-  else if (const std::string convergence = convergenceText(frame.session); !convergence.empty())
+  else if (const std::string convergence = convergenceText(frame.session, frame.view); !convergence.empty())
     ImGui::TextUnformatted(convergence.c_str());
   char figures[400];
   std::snprintf(figures, sizeof figures,
