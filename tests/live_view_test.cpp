@@ -13,6 +13,7 @@
 
 #include "core/camera.h"
 #include "core/image_io.h"
+#include "core/image_metrics.h"
 #include "core/scene.h"
 #include "core/scene_io.h"
 #include "explorer_session.h"
@@ -145,7 +146,8 @@ TEST_F(LiveViewTest, AnEditReachesTheScreenTaggedWithItsPost) {
 
 TEST_F(LiveViewTest, LiveFramesReadNothingBack) {
   // The finish runs on the GPU: a frame that marches, finishes and draws (with the mesh ghost and
-  // silhouette, and after a tone edit) never waits for the GPU to hand pixels back.
+  // silhouette, and after a tone edit) never waits for the GPU to hand pixels back, except to see
+  // whether a still picture has settled (once per doubling of its samples).
   app::LiveView view(session, nullptr, nullptr);
   frame(view);
   ASSERT_TRUE(runUntilShown(view));
@@ -159,9 +161,11 @@ TEST_F(LiveViewTest, LiveFramesReadNothingBack) {
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   EXPECT_GT(drawn, 0);
-  EXPECT_EQ(gl::readBackCount(), before) << "a live frame read pixels back";
+  EXPECT_EQ(gl::readBackCount(), before + static_cast<std::uint64_t>(view.settledChecks()))
+      << "a live frame read pixels back";
+  const std::uint64_t checked = before + static_cast<std::uint64_t>(view.settledChecks());
   EXPECT_GT(canvas.brightest(), 0);
-  EXPECT_EQ(gl::readBackCount(), before + 1) << "the counter counts a read-back";
+  EXPECT_EQ(gl::readBackCount(), checked + 1) << "the counter counts a read-back";
 }
 
 TEST_F(LiveViewTest, SamplesRestartForTheCameraButNotForTheTone) {
@@ -430,15 +434,21 @@ TEST_F(LiveViewTest, ASlowStillViewRefinesInBandsWithinItsBudgetUntilEveryBandHa
     }
   }
   ASSERT_TRUE(view.resting()) << "the picture did not converge: " << state.frame.samples << " samples";
-  EXPECT_EQ(state.frame.samples, app::LiveView::kMaxSamples);
-  EXPECT_EQ(view.refineBands().samples(), app::LiveView::kMaxSamples);
+  // Refining stops once a doubling of the samples changes no pixel visibly, at a power of two
+  // from twice the first check on, and kMaxSamples at most.
+  const int samples = state.frame.samples;
+  EXPECT_GE(samples, 2 * app::LiveView::kFirstSettledCheck);
+  EXPECT_LE(samples, app::LiveView::kMaxSamples);
+  EXPECT_EQ(samples & (samples - 1), 0);
+  EXPECT_TRUE(samples == app::LiveView::kMaxSamples || view.lastSettledShare() <= app::LiveView::kSettledShare);
+  EXPECT_EQ(view.refineBands().samples(), samples);
   for (int row = 0; row < view.targetRows(); row += app::RefineBands::kBandRows)
-    EXPECT_EQ(view.refineBands().samplesOfRow(row), app::LiveView::kMaxSamples) << "row " << row;
+    EXPECT_EQ(view.refineBands().samplesOfRow(row), samples) << "row " << row;
   EXPECT_EQ(view.targetRows(), kHeight);
   // 20 ms at 1 ms a row leaves room for a band or two, never the whole target.
   EXPECT_LT(widestBand, kHeight / 2);
-  EXPECT_GE(bandFrames, 2 * app::LiveView::kMaxSamples) << "each pass took several frames";
-  EXPECT_GE(passEnds, app::LiveView::kMaxSamples / 2);
+  EXPECT_GE(bandFrames, 2 * samples) << "each pass took several frames";
+  EXPECT_GE(passEnds, samples / 2);
   // Resting: no more marching.
   frame(view);
   EXPECT_EQ(view.marchedRows(), 0);
@@ -551,6 +561,119 @@ TEST_F(LiveViewTest, AnExportFramesWhatTheViewShows) {
     for (int x = 0; x < rect.z; ++x) framed.push_back(wideView[static_cast<std::size_t>(y) * rect.z + x]);
   EXPECT_GE(intersectionOverUnion(framed, exportedLit(2 * rect.z, rect.z, rows, rect.z, 2.0)), 0.9)
       << "a wider export shows what its frame in the view shows";
+}
+
+// The canvas as an image (rows top to bottom, values in [0, 1]).
+core::ImageRGBA canvasImage(const Canvas& canvas) {
+  const std::vector<std::uint8_t> rgba = canvas.pixels();
+  core::ImageRGBA image;
+  image.width = kWidth;
+  image.height = kHeight;
+  image.pixels.resize(rgba.size());
+  for (std::size_t i = 0; i < rgba.size(); ++i) image.pixels[i] = rgba[i] / 255.0f;  // rows top to bottom
+  return image;
+}
+
+TEST_F(LiveViewTest, AStillViewMarchesAtFullResolutionWhateverThePreviewScale) {
+  // Software GL previews at half the pixels while something moves; once still, the view refines
+  // every pixel, as an export of it does.
+  state.panels.scene.renderScale = 0.5f;
+  app::LiveView view(session, nullptr, nullptr);
+  frame(view);
+  ASSERT_TRUE(runUntilShown(view));
+  edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 20.0; });
+  frame(view);
+  EXPECT_LT(view.targetRows(), kHeight) << "a moving view marches at the preview scale or below";
+  for (int i = 0; i < 400 && !(state.frame.samples >= 2 && view.targetRows() == kHeight); ++i) frame(view);
+  EXPECT_EQ(view.targetRows(), kHeight) << "a still view marches at the full resolution";
+  EXPECT_EQ(state.frame.metrics.marchScale, 1.0f);
+  EXPECT_GE(state.frame.samples, 2);
+}
+
+// Runs the view and the session until both rest (as the window loop sees it); false after 120 s.
+bool runUntilRest(app::ExplorerSession& session, app::ExplorerState& state, app::LiveView& view,
+                  const std::function<void()>& frame) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  int restingFrames = 0;
+  while (std::chrono::steady_clock::now() < deadline && restingFrames < 3) {
+    frame();
+    restingFrames = view.resting() && session.status().resting ? restingFrames + 1 : 0;
+    if (restingFrames == 0) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  return restingFrames >= 3;
+}
+
+TEST_F(LiveViewTest, AVolumeViewAtRestIsAnExportOfTheView) {
+  app::LiveView view(session, nullptr, nullptr);
+  ASSERT_TRUE(runUntilRest(session, state, view, [&] { frame(view); }));
+  // At rest nothing of the view's works, and the status line says so only now.
+  EXPECT_EQ(app::convergenceText(session.status(), state.frame.view).rfind("at rest", 0), 0u)
+      << app::convergenceText(session.status(), state.frame.view);
+  EXPECT_GE(state.frame.samples, app::LiveView::kFirstSettledCheck);
+  const core::ImageRGBA shown = canvasImage(canvas);
+  canvas.save("volume-view-at-rest");
+  // The view's picture first: a still render makes a GL context of its own current.
+  app::StillOptions options;
+  options.width = kWidth;
+  options.height = kHeight;
+  options.points = session.status().stats.points;
+  core::Scene exported = state.document.scene;
+  exported.render.samples = state.frame.samples;
+  const core::ImageRGBA image = app::renderStill(exported, options).image;
+  if (const char* folder = std::getenv("VOXFLAME_TEST_IMAGES"))
+    core::writePng(std::filesystem::path(folder) / "volume-export-of-the-view.png", image, 8, {});
+  EXPECT_GE(core::ssimLuma(shown, image), 0.98);
+  const double ratio = core::meanLinearLuminance(shown) / core::meanLinearLuminance(image);
+  EXPECT_GT(ratio, 0.97);
+  EXPECT_LT(ratio, 1.03);
+}
+
+TEST_F(LiveViewTest, APointsViewBuildsUpRestartsWhenTheCameraMovesAndAtRestIsAnExportOfTheView) {
+  edit([&](core::Scene& scene) {
+    scene.render.method = core::RenderMethod::Points;
+    scene.points = 3'000'000;
+  });
+  app::LiveView view(session, nullptr, nullptr);
+  ASSERT_TRUE(runUntilRest(session, state, view, [&] { frame(view); }));
+  ASSERT_TRUE(view.pointsProgress().finished);
+  EXPECT_TRUE(state.frame.view.pointsShown) << "the points picture replaced the volume picture";
+  EXPECT_GE(view.pointsProgress().points, 3'000'000u);
+  EXPECT_EQ(session.status().stats.points <= app::kGridPointsForPointsMethod + 2'000'000, true)
+      << "the grid stops where an export's does";
+  EXPECT_EQ(app::convergenceText(session.status(), state.frame.view).rfind("at rest", 0), 0u);
+  const core::ImageRGBA shown = canvasImage(canvas);
+  canvas.save("points-view-at-rest");
+
+  // The camera moves: the volume preview takes over at once, and the points start again.
+  edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 30.0; });
+  frame(view);
+  EXPECT_FALSE(state.frame.view.pointsShown);
+  EXPECT_FALSE(view.resting());
+  bool buildingShown = false;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (std::chrono::steady_clock::now() < deadline && !view.resting()) {
+    frame(view);
+    const std::string status = app::convergenceText(session.status(), state.frame.view);
+    if (status.rfind("points: ", 0) == 0) buildingShown = true;
+    EXPECT_NE(status.rfind("at rest", 0), 0u) << "at rest while the view still works";
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  EXPECT_TRUE(buildingShown) << "the status line shows the points coming in";
+  EXPECT_TRUE(state.frame.view.pointsShown);
+  EXPECT_TRUE(view.pointsProgress().finished);
+
+  app::StillOptions options;
+  options.width = kWidth;
+  options.height = kHeight;
+  const core::ImageRGBA image = app::renderStill(state.document.scene, options).image;
+  core::Scene before = state.document.scene;
+  before.camera.azimuthDeg -= 30.0;
+  const core::ImageRGBA imageBefore = app::renderStill(before, options).image;
+  EXPECT_GE(core::ssimLuma(shown, imageBefore), 0.98);
+  const double ratio = core::meanLinearLuminance(shown) / core::meanLinearLuminance(imageBefore);
+  EXPECT_GT(ratio, 0.97);
+  EXPECT_LT(ratio, 1.03);
+  EXPECT_LT(core::ssimLuma(shown, image), core::ssimLuma(shown, imageBefore)) << "the turned view is another picture";
 }
 
 }  // namespace

@@ -95,6 +95,9 @@ class LiveView {
   // The share of the view's pixels that moved by more than kSettledLevels at the last doubling
   // (negative: not measured yet), for the benchmark and the tests.
   double lastSettledShare() const { return lastSettledShare_; }
+  // Read-backs made to see whether the picture settled: the only pixels a live frame reads back,
+  // once per doubling of a still picture's samples from kFirstSettledCheck on.
+  int settledChecks() const { return settledChecks_; }
   // The points picture replaces the volume picture once it holds this share of its points: its
   // noise is then twice the final picture's at most, and finer than the grid's voxels
   // (`bench view` measures how close it is to the final picture by then).
@@ -152,6 +155,7 @@ class LiveView {
   std::vector<std::uint8_t> settledReference_;  // the picture shown at the last check (RGBA8)
   int settledReferenceSamples_ = 0;
   double lastSettledShare_ = -1.0;
+  int settledChecks_ = 0;
   // Compares the picture just drawn at `place` with the last check's (framebuffer bound).
   void checkSettled(unsigned framebuffer, glm::ivec4 place, int samples);
 
