@@ -200,7 +200,8 @@ struct ViewRefinement {
   bool points = false;       // the scene's still method is points
   bool pointsShown = false;  // ... and the points picture has replaced the volume picture
   std::uint64_t pointsDone = 0, pointsTarget = 0;
-  int samples = 0;  // of the volume picture
+  std::string pointsError;  // why the points picture stopped (the volume picture is shown), else empty
+  int samples = 0;          // of the volume picture
   // The view only waits for the points thread's next picture: frames may wait a little for input
   // instead of drawing the same pixels (frameWaitSeconds).
   bool waitingForPoints = false;

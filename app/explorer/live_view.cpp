@@ -268,7 +268,7 @@ bool LiveView::marchBands(const gl::RenderSettings& settings, bool still, double
 
 bool LiveView::resting() const {
   if (uploadInProgress_ || shadowJob_.busy() || shadowJob_.ready() || points_.working()) return false;
-  if (pointsMethod_) return pointsShown_ && points_.progress().finished;
+  if (pointsMethod_ && !pointsFailed_) return pointsShown_ && points_.progress().finished;
   return settled_ || target_.samples >= kMaxSamples;
 }
 
@@ -277,6 +277,7 @@ void LiveView::stopPoints() {
   pointsKey_.reset();
   pointsHavePicture_ = false;
   pointsShown_ = false;
+  pointsFailed_ = false;
 }
 
 bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, const gl::RenderSettings& settings,
@@ -318,6 +319,13 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
   // kPointsShownShare on) and when it is whole: finishing a full-size picture of sparse points
   // costs a software GL hundreds of milliseconds, and each doubling is the visible step.
   const LivePointsProgress progress = points_.progress();
+  // A run that failed (the pattern escapes, no memory for the histograms) leaves the volume
+  // picture to refine and rest as under the volume method, until the next change.
+  if (!progress.error.empty() && !pointsFailed_) {
+    pointsFailed_ = true;
+    pointsShown_ = false;
+  }
+  if (pointsFailed_) return false;
   const double share =
       static_cast<double>(progress.points) / static_cast<double>(std::max<std::uint64_t>(progress.target, 1));
   if (!(progress.finished || share >= pointsNextShare_) || !points_.takeIfNewer(pointsImage_)) return false;
@@ -468,8 +476,8 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
     bool newPicture = false;
     // Once the points are being projected, the volume picture is not refined further: the points
     // picture replaces it within seconds, and its samples would only take the cores the points need.
-    if (target_.samples < kMaxSamples && !settled_ && !pointsKey_ && (!mainMixedShown() || viewChanged) &&
-        !waitForUpload && !settling) {
+    if (target_.samples < kMaxSamples && !settled_ && (!pointsKey_ || pointsFailed_) &&
+        (!mainMixedShown() || viewChanged) && !waitForUpload && !settling) {
       newPicture = marchBands(settings, still, budget_.budgetMs());
       lastMarched_ = true;
       lastMarchScale_ = scale;
@@ -500,6 +508,7 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
   const LivePointsProgress pointsProgress = points_.progress();
   result.view.points = pointsMethod_;
   result.view.pointsShown = pointsShown_;
+  if (pointsFailed_) result.view.pointsError = pointsProgress.error;
   result.view.pointsDone = pointsProgress.points;
   result.view.pointsTarget = pointsMethod_ ? scene.points : 0;
   result.view.samples = target_.samples;

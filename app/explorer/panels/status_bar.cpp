@@ -61,6 +61,8 @@ std::string convergenceText(const SessionStatus& status, const ViewRefinement& v
   if (text.empty() || !status.escapeNote.empty() || status.paused) return text;
   char line[200];
   const bool sessionRests = text.rfind("at rest", 0) == 0;
+  if (!view.pointsError.empty() && (sessionRests || view.resting))
+    return "the points picture stopped (" + view.pointsError + "): " + (view.resting ? text : "refining the view");
   if (view.points && (view.pointsDone > 0 || sessionRests) && !view.resting) {
     std::snprintf(line, sizeof line, "points: %.0f M of %.0f M%s", static_cast<double>(view.pointsDone) * 1e-6,
                   static_cast<double>(view.pointsTarget) * 1e-6,
