@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -94,11 +95,21 @@ void benchView(const BenchOptions& options) {
       core::ImageRGBA image;
     };
     std::vector<Snapshot> snapshots;
+    // The picture the points replace, and their first, to compare with the final one: the points
+    // take over when they are the closer of the two.
+    std::optional<core::ImageRGBA> beforePoints, firstPoints;
     const auto start = Clock::now();
     double nextSnapshot = 0.5;
     bool resting = false;
     while (!resting && secondsSince(start) < kGiveUpSeconds) {
       resting = step();
+      const app::ViewRefinement& refinement = loop.state.frame.view;
+      if (refinement.points && !firstPoints && loop.view.hasVolume()) {
+        if (refinement.pointsShown)
+          firstPoints = readWindow(loop);
+        else if (refinement.waitingForPoints)
+          beforePoints = readWindow(loop);
+      }
       const double now = secondsSince(start);
       if (!resting && now >= nextSnapshot && loop.view.hasVolume()) {
         snapshots.push_back({now, readWindow(loop)});
@@ -130,6 +141,10 @@ void benchView(const BenchOptions& options) {
           break;
         }
       measurement["seconds_to_ssim_0_95"] = toSimilar >= 0.0 ? toSimilar : toRest;
+      if (beforePoints && firstPoints) {
+        measurement["ssim_volume_before_points"] = core::ssimLuma(*beforePoints, final);
+        measurement["ssim_first_points"] = core::ssimLuma(*firstPoints, final);
+      }
       const double cpuStart = cpuSeconds(RUSAGE_SELF);
       const auto restStart = Clock::now();
       while (secondsSince(restStart) < kRestSeconds) step();

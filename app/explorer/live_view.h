@@ -101,7 +101,7 @@ class LiveView {
   // The points picture replaces the volume picture once it holds this share of its points: its
   // noise is then twice the final picture's at most, and finer than the grid's voxels
   // (`bench view` measures how close it is to the final picture by then).
-  static constexpr double kPointsShownShare = 0.25;
+  static constexpr double kPointsShownShare = 1.0 / 8.0;
   // The points picture's progress (points method), for the benchmark and the tests.
   LivePointsProgress pointsProgress() const { return points_.progress(); }
 

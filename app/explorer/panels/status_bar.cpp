@@ -69,6 +69,11 @@ std::string convergenceText(const SessionStatus& status, const ViewRefinement& v
                   view.pointsShown ? "" : " (the volume preview until a quarter is in)");
     return line;
   }
+  if (view.points && view.pointsShown && view.resting && sessionRests) {
+    std::snprintf(line, sizeof line, "at rest: the points picture holds its %.0f M points",
+                  static_cast<double>(view.pointsDone) * 1e-6);
+    return line;
+  }
   if (sessionRests && !view.resting) {
     std::snprintf(line, sizeof line, "refining the view: %d samples", view.samples);
     return line;
