@@ -268,7 +268,7 @@ bool LiveView::marchBands(const gl::RenderSettings& settings, bool still, double
 
 bool LiveView::resting() const {
   if (uploadInProgress_ || shadowJob_.busy() || shadowJob_.ready() || points_.working()) return false;
-  if (pointsMethod_ && !pointsFailed_) return pointsShown_ && points_.progress().finished;
+  if (pointsMethod_ && !pointsFailed_) return pointsShown_ && pointsCurrent_ && points_.progress().finished;
   return settled_ || target_.samples >= kMaxSamples;
 }
 
@@ -278,6 +278,7 @@ void LiveView::stopPoints() {
   pointsHavePicture_ = false;
   pointsShown_ = false;
   pointsFailed_ = false;
+  pointsCurrent_ = true;
 }
 
 bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, const gl::RenderSettings& settings,
@@ -335,7 +336,7 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
     pointsHavePicture_ = true;
   }
   pointsNextShare_ = std::max(pointsNextShare_, 2.0 * share);
-  pointsShown_ = true;
+  pointsCurrent_ = false;
   return true;
 }
 
@@ -484,13 +485,23 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
       lastInBands_ = still;
     }
     changed = viewChanged;
-    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    // Until the first pass over a new view or volume is whole, the last whole picture stays up.
-    const gl::FrameTarget& shown = pointsShown_                          ? pointsTarget_
-                                   : showingTarget_ || !shownHasPicture_ ? target_
-                                                                         : shownTarget_;
+    // A points picture is finished a strip at a time, within the frame's budget (a software GL
+    // takes hundreds of milliseconds over a whole one); the last whole one stays up meanwhile.
     const auto resolveStart = std::chrono::steady_clock::now();
-    renderer_.resolve(shown, settings, place, false);
+    if (pointsHavePicture_ && !pointsFailed_) {
+      const double stripBudgetMs = kPointsFinishShareOfBudget * budget_.budgetMs();
+      do {
+        pointsCurrent_ = renderer_.finishStrip(pointsTarget_, settings, kPointsStripRows);
+        glFinish();  // the strips' cost is known only once they are done
+      } while (!pointsCurrent_ && millisecondsSince(resolveStart) < stripBudgetMs);
+      if (pointsCurrent_) pointsShown_ = true;
+    }
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+    if (!(pointsShown_ && renderer_.drawFinished(pointsTarget_, place))) {
+      // Until the first pass over a new view or volume is whole, the last whole picture stays up.
+      const gl::FrameTarget& shown = showingTarget_ || !shownHasPicture_ ? target_ : shownTarget_;
+      renderer_.resolve(shown, settings, place, false);
+    }
     resolveMs_ = millisecondsSince(resolveStart);
     if (newPicture || pointsPicture) lastFinishMs_ = resolveMs_;
     // A still volume picture whose samples just doubled (from kFirstSettledCheck on) is compared
@@ -514,7 +525,8 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
   result.view.samples = target_.samples;
   result.view.resting = resting();
   // Nothing for the frames to do but wait for the points thread's next picture.
-  result.view.waitingForPoints = points_.working() && pointsKey_ && !uploadInProgress_ && !changedLastFrame_;
+  result.view.waitingForPoints =
+      points_.working() && pointsKey_ && pointsCurrent_ && !uploadInProgress_ && !changedLastFrame_;
 
   result.fullShown = renderer_.hasVolume() && renderer_.marchedSource() == gl::VolumeRenderer::Source::Main;
   if (newVolumeShown_) {

@@ -102,6 +102,10 @@ class LiveView {
   // noise is then twice the final picture's at most, and finer than the grid's voxels
   // (`bench view` measures how close it is to the final picture by then).
   static constexpr double kPointsShownShare = 1.0 / 8.0;
+  // A points picture is finished in strips of this many rows, as many a frame as this share of
+  // the frame budget allows (at least one).
+  static constexpr int kPointsStripRows = 32;
+  static constexpr double kPointsFinishShareOfBudget = 0.6;
   // The points picture's progress (points method), for the benchmark and the tests.
   LivePointsProgress pointsProgress() const { return points_.progress(); }
 
@@ -174,6 +178,7 @@ class LiveView {
   bool pointsHavePicture_ = false;  // pointsTarget_ holds a picture of the run under way
   bool pointsShown_ = false;
   bool pointsFailed_ = false;                   // the run for pointsKey_ stopped on an error: the volume picture stays
+  bool pointsCurrent_ = true;                   // the picture drawn is the newest taken, finished whole
   double pointsNextShare_ = kPointsShownShare;  // of the points, for the next picture taken
   bool pointsMethod_ = false;                   // of the last frame's scene
   std::uint64_t lastPost_ = 0;                  // the newest post made

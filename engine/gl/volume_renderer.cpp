@@ -104,6 +104,12 @@ FrameTarget::~FrameTarget() {
   glDeleteRenderbuffers(1, &meshDepth_);
   glDeleteTextures(1, &finished_);
   glDeleteFramebuffers(1, &finishedFramebuffer_);
+  glDeleteTextures(1, &pending_);
+  glDeleteFramebuffers(1, &pendingFramebuffer_);
+  glDeleteTextures(1, &stripDensity_);
+  glDeleteTextures(1, &stripOverlay_);
+  glDeleteTextures(1, &stripOutput_);
+  glDeleteFramebuffers(1, &stripFramebuffer_);
 }
 
 core::DensityImage FrameTarget::readDensity() const {
@@ -631,6 +637,109 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
+}
+
+namespace {
+
+// (Re)allocates `texture` as a 2D texture of `size` and `format` when either differs from `had`.
+void ensureTexture(GLuint& texture, glm::ivec2& had, glm::ivec2 size, GLenum format) {
+  if (texture && had == size) return;
+  if (!texture) texture = makeTexture(GL_TEXTURE_2D, GL_LINEAR);
+  glBindTexture(GL_TEXTURE_2D, texture);
+  if (format == GL_RGBA8)
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, size.x, size.y, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+  else
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, size.x, size.y, 0, GL_RGBA, GL_FLOAT, nullptr);
+  had = size;
+}
+
+}  // namespace
+
+bool VolumeRenderer::finishStrip(const FrameTarget& target, const RenderSettings& settings, int rows) {
+  const bool withMesh = meshIndexCount_ > 0 && settings.render.meshDisplay != core::MeshDisplay::Off;
+  const std::string key = finishKey(settings, false, withMesh);
+  const glm::ivec2 size(target.width_, target.height_);
+  const GLenum format = finisher_.computePasses() ? GL_RGBA32F : GL_RGBA8;
+  if (target.finished_ && target.finishedRevision_ == target.revision_ && target.finishedKey_ == key &&
+      target.finishedSize_ == size && target.finishedFormat_ == format)
+    return true;
+  if (!target.pending_ || target.pendingRevision_ != target.revision_ || target.pendingKey_ != key) {
+    if (!target.pendingFramebuffer_) glGenFramebuffers(1, &target.pendingFramebuffer_);
+    glm::ivec2 had(-1);  // made anew at the target's size and format (it may be the last picture's)
+    ensureTexture(target.pending_, had, size, format);
+    glBindFramebuffer(GL_FRAMEBUFFER, target.pendingFramebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.pending_, 0);
+    target.pendingRow_ = 0;
+    target.pendingRevision_ = target.revision_;
+    target.pendingKey_ = key;
+  }
+  const core::FinishSettings finish = finishSettings(settings, false, target.oversample_);
+  const int oversample = target.oversample_;
+  const int apron = FlameFinisher::apron(finish);
+  const int firstRow = target.pendingRow_, stripRows = std::min(std::max(1, rows), size.y - firstRow);
+  // The strip's sums with the apron its kernels and filter reach (GL rows, bottom up).
+  const glm::ivec2 lo(0, std::max(0, firstRow * oversample - apron));
+  const glm::ivec2 hi(target.radianceSize_.x,
+                      std::min(target.radianceSize_.y, (firstRow + stripRows) * oversample + apron));
+  ensureTexture(target.stripDensity_, target.stripDensitySize_, hi - lo, GL_RGBA32F);
+  glCopyImageSubData(target.radiance_, GL_TEXTURE_2D, 0, lo.x, lo.y, 0, target.stripDensity_, GL_TEXTURE_2D, 0, 0, 0, 0,
+                     hi.x - lo.x, hi.y - lo.y, 1);
+  FinishSource source;
+  source.density = target.stripDensity_;
+  source.origin = lo;
+  source.size = hi - lo;
+  source.fullSize = target.radianceSize_;
+  source.hitsPerUnitDensity = target.hitsPerUnitDensity_;
+  OverlayStyle style;
+  if (withMesh) {
+    // The silhouette's edge looks one pixel around.
+    const int overlayLo = std::max(0, firstRow - 1), overlayHi = std::min(size.y, firstRow + stripRows + 1);
+    ensureTexture(target.stripOverlay_, target.stripOverlaySize_, glm::ivec2(size.x, overlayHi - overlayLo), GL_RGBA8);
+    glCopyImageSubData(target.meshLayer_, GL_TEXTURE_2D, 0, 0, overlayLo, 0, target.stripOverlay_, GL_TEXTURE_2D, 0, 0,
+                       0, 0, size.x, overlayHi - overlayLo, 1);
+    source.overlay = target.stripOverlay_;
+    source.overlayOrigin = glm::ivec2(0, overlayLo);
+    style = {settings.render.meshDisplay, settings.render.meshColor, settings.render.meshStrength};
+  }
+  if (target.stripOutputSize_ != glm::ivec2(size.x, stripRows) || !target.stripFramebuffer_) {
+    if (!target.stripFramebuffer_) glGenFramebuffers(1, &target.stripFramebuffer_);
+    glm::ivec2 had(-1);
+    ensureTexture(target.stripOutput_, had, glm::ivec2(size.x, stripRows), format);
+    target.stripOutputSize_ = glm::ivec2(size.x, stripRows);
+    glBindFramebuffer(GL_FRAMEBUFFER, target.stripFramebuffer_);
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target.stripOutput_, 0);
+  }
+  finisher_.finish(source, finish, style, glm::ivec2(0, firstRow), glm::ivec2(size.x, stripRows),
+                   target.stripFramebuffer_, format == GL_RGBA32F ? target.stripOutput_ : 0);
+  glCopyImageSubData(target.stripOutput_, GL_TEXTURE_2D, 0, 0, 0, 0, target.pending_, GL_TEXTURE_2D, 0, 0, firstRow, 0,
+                     size.x, stripRows, 1);
+  target.pendingRow_ += stripRows;
+  if (target.pendingRow_ < size.y) return false;
+  // Whole: it becomes the picture drawn.
+  std::swap(target.finished_, target.pending_);
+  std::swap(target.finishedFramebuffer_, target.pendingFramebuffer_);
+  target.finishedSize_ = size;
+  target.finishedFormat_ = format;
+  target.finishedRevision_ = target.pendingRevision_;
+  target.finishedKey_ = key;
+  target.pendingRevision_ = ~std::uint64_t{0};
+  return true;
+}
+
+bool VolumeRenderer::drawFinished(const FrameTarget& target, glm::ivec4 viewport) {
+  if (!target.finished_ || target.finishedRevision_ == ~std::uint64_t{0}) return false;
+  glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  const ShaderProgram& p = blitProgram_;
+  glUseProgram(p.id());
+  glUniform4f(p.uniform("uViewport"), static_cast<float>(viewport.x), static_cast<float>(viewport.y),
+              static_cast<float>(viewport.z), static_cast<float>(viewport.w));
+  bindSampler(p, "uImage", 0, GL_TEXTURE_2D, target.finished_);
+  glBindVertexArray(vertexArray_);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  return true;
 }
 
 namespace {

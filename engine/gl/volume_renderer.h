@@ -86,6 +86,14 @@ class FrameTarget {
   mutable GLenum finishedFormat_ = 0;  // RGBA8 for a display drawn by fragments, else RGBA32F
   mutable std::uint64_t finishedRevision_ = ~std::uint64_t{0};
   mutable std::string finishedKey_;
+  // A finish made strip by strip (VolumeRenderer::finishStrips): the picture being finished, the
+  // GL row it has reached and what it is of, and the strips' own source, overlay and output.
+  mutable GLuint pending_ = 0, pendingFramebuffer_ = 0;
+  mutable int pendingRow_ = 0;
+  mutable std::uint64_t pendingRevision_ = ~std::uint64_t{0};
+  mutable std::string pendingKey_;
+  mutable GLuint stripDensity_ = 0, stripOverlay_ = 0, stripOutput_ = 0, stripFramebuffer_ = 0;
+  mutable glm::ivec2 stripDensitySize_{0}, stripOverlaySize_{0}, stripOutputSize_{0};
 };
 
 class VolumeRenderer {
@@ -160,6 +168,14 @@ class VolumeRenderer {
   // skips the display encoding and clamping (for EXR). An unchanged target and settings are only
   // drawn again. Reads nothing back.
   void resolve(const FrameTarget& target, const RenderSettings& settings, glm::ivec4 viewport, bool linearOutput);
+  // resolve() in strips of `rows` output rows, one strip a call, for a picture too costly to
+  // finish within a frame (the points method's full-size sums on a software GL): the picture last
+  // finished whole stays the one drawn (drawFinished) until the new one is whole. Returns whether
+  // the finished picture is `target`'s current one (nothing left to finish).
+  bool finishStrip(const FrameTarget& target, const RenderSettings& settings, int rows);
+  // Draws the picture finishStrip last made whole into the bound framebuffer's viewport; false
+  // when there is none yet.
+  bool drawFinished(const FrameTarget& target, glm::ivec4 viewport);
   bool hasMesh() const { return meshIndexCount_ > 0; }
   // The GPU finish this renderer resolves with, for the still methods' sums (finishImageOnGpu).
   FlameFinisher& finisher() { return finisher_; }
