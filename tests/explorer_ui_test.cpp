@@ -8,6 +8,7 @@
 #include <functional>
 #include <fstream>
 #include <thread>
+#include <set>
 #include <sstream>
 #include <filesystem>
 #include <iterator>
@@ -790,17 +791,34 @@ TEST_F(ExplorerUi, WideRangeSlidersAreLogarithmicAndEverySliderResetsToItsDefaul
   ASSERT_GT(first, 0.0);
   EXPECT_NEAR(std::log(second / first), std::log(third / second), 0.15) << first << " " << second << " " << third;
   EXPECT_GT(third - second, 1.5 * (second - first)) << "equal steps, not equal factors";
+  // A right-click resets at once, with no menu to confirm it (issue 38), and Ctrl+Z brings the
+  // value back.
+  const auto rightClick = [&](const std::string& name) {
+    const auto& rect = item(name);
+    moveTo(rect.centerX(), rect.centerY());
+    io.MouseDown[1] = true;
+    frame();
+    io.MouseDown[1] = false;
+    frame(2);
+  };
   edit([&](core::Scene& scene) { scene.tone.gamma = 3.7; });
   frame();
-  const auto& gamma = item("tone/gamma");
-  moveTo(gamma.centerX(), gamma.centerY());
-  io.MouseDown[1] = true;
-  frame();
-  io.MouseDown[1] = false;
-  frame(2);
-  click("tone/gamma/reset");
+  rightClick("tone/gamma");
+  EXPECT_FALSE(ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) << "no menu";
   EXPECT_DOUBLE_EQ(state.document.scene.tone.gamma, core::ToneMapSettings{}.gamma)
       << "the Render panel's sliders reset too";
+  pressKey('Z', true);
+  EXPECT_DOUBLE_EQ(state.document.scene.tone.gamma, 3.7) << "one undo step";
+  const core::ParamInfo& b = core::attractorOrThrow(state.document.scene.layers[0].attractor).params[1];
+  edit([&](core::Scene& scene) { scene.layers[0].params[1] = b.defaultValue + 0.05; });
+  frame();
+  rightClick("layer0/" + b.name);
+  EXPECT_DOUBLE_EQ(state.document.scene.layers[0].params[1], b.defaultValue) << "an attractor's parameter resets too";
+  edit([&](core::Scene& scene) { scene.tone.background = glm::vec3(0.5f, 0.1f, 0.2f); });
+  frame();
+  rightClick("tone/background");
+  EXPECT_FALSE(ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) << "not the colour editor's own menu";
+  EXPECT_EQ(state.document.scene.tone.background, core::ToneMapSettings{}.background) << "a colour resets too";
 }
 
 // Typing words of a name into the attractor filter and pressing Enter picks the first match.
@@ -1160,6 +1178,50 @@ TEST_F(ExplorerFlameUi, VariationsAreAddedWeightedAndRemoved) {
       << "dragged past the end, the slider stops at its maximum";
   pressKey('Z', true);
   EXPECT_EQ(flame(), before);
+}
+
+// Issue 38: pre_falloff3's centre read "pre_falloff3 center" three times, cut at the panel's edge
+// with the axis gone. Each variation's labels show whole inside the panel (beside the slider, or
+// above it when too long), and its parameters' labels tell them apart ("center x").
+TEST_F(ExplorerFlameUi, VariationLabelsShowWholeInsideThePanelAndApart) {
+  useFlameLayer();
+  const core::VariationInfo* falloff3 = core::findVariation("pre_falloff3");
+  ASSERT_NE(falloff3, nullptr);
+  // And the longest name of the catalogue, in its pre_ form.
+  std::string longest;
+  for (const core::VariationInfo& info : core::variationCatalogue())
+    if (info.name.size() > longest.size()) longest = info.name;
+  const core::VariationInfo* longestInfo = core::findVariation("pre_" + longest);
+  ASSERT_NE(longestInfo, nullptr) << longest;
+  const std::size_t first = flame().xforms[0].variations.size();
+  edit([&](core::Scene& scene) {
+    auto& variations = scene.layers[0].flame.xforms[0].variations;
+    variations.push_back({"pre_falloff3", 0.25, falloff3->defaultParams()});
+    variations.push_back({"pre_" + longest, 0.25, longestInfo->defaultParams()});
+  });
+  frame(2);
+  const float panelRight = state.frame.layout.left;
+  const auto inside = [&](const std::string& name) {
+    EXPECT_LE(item(name).maxX, panelRight) << name << " (" << probe.texts[name] << ") is cut at the panel's edge";
+    const auto label = probe.items.find(name + "/label");
+    if (label != probe.items.end()) {
+      EXPECT_LE(label->second.maxX, panelRight) << name << "/label";
+    }
+  };
+  for (const auto& [index, info] : {std::pair{first, falloff3}, std::pair{first + 1, longestInfo}}) {
+    const std::string scope = "layer0/xform/var" + std::to_string(index) + "/";
+    EXPECT_EQ(probe.texts[scope + "weight"], flame().xforms[0].variations[index].name);
+    inside(scope + "weight");
+    std::set<std::string> labels;
+    for (const core::VariationParam& param : info->params) {
+      inside(scope + param.name);
+      labels.insert(probe.texts[scope + param.name]);
+    }
+    EXPECT_EQ(labels.size(), info->params.size()) << info->name << ": every parameter's label differs";
+  }
+  const std::string scope = "layer0/xform/var" + std::to_string(first) + "/";
+  EXPECT_EQ(probe.texts[scope + "center_x"], "center x");
+  EXPECT_EQ(probe.texts[scope + "center_z"], "center z");
 }
 
 TEST_F(ExplorerFlameUi, SearchAndMutateOnAFlameKeepTheKindAndBackRestoresTheGenome) {

@@ -39,6 +39,8 @@ struct UiProbe {
     float centerY() const { return 0.5f * (minY + maxY); }
   };
   std::map<std::string, Rect> items;
+  // The words some of them show, by the same names, where a test reads them (a label, a caption).
+  std::map<std::string, std::string> texts;
 };
 
 // What panels ask of the window loop, which owns files, GL and the session; cleared each frame.

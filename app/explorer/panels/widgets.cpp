@@ -54,6 +54,23 @@ void probe(FrameOutputs& frame, const std::string& name) {
   frame.probe->items[name] = UiProbe::Rect{min.x, min.y, max.x, max.y};
 }
 
+void probeText(FrameOutputs& frame, const std::string& name, const std::string& text) {
+  if (frame.probe) frame.probe->texts[name] = text;
+}
+
+bool labelFitsBeside(FrameOutputs& frame, const std::string& label, const std::string& probeName) {
+  probeText(frame, probeName, label);
+  const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x;
+  return ImGui::CalcTextSize(label.c_str()).x <= room;
+}
+
+void labelAbove(FrameOutputs& frame, const std::string& label, const std::string& probeName) {
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextUnformatted(label.c_str());
+  ImGui::PopTextWrapPos();
+  probe(frame, probeName + "/label");
+}
+
 // After a text field: what it now holds, when it changed this frame and typing is recorded.
 void noteTyped(FrameOutputs& frame, const char* field, const char* text) {
   if (frame.recordTyping && ImGui::IsItemEdited()) frame.typedThisFrame.emplace_back(field, text);
@@ -105,12 +122,22 @@ bool reportEdit(Document& document, bool changed, core::Affects affects) {
   return changed;
 }
 
-void parameterResetMenu(Ui& ui, double& value, double defaultValue, const char* hint) {
-  if (ImGui::BeginPopupContextItem()) {
-    if (reportEdit(ui, ImGui::Selectable("Reset to default"), core::Affects::Pattern)) value = defaultValue;
-    ImGui::EndPopup();
+bool resetClicked() {
+  // Hovered, not focused: the last item of some widgets (a colour editor, a vector's sliders) is
+  // their group, which has no id of its own to open a menu on.
+  return ImGui::IsItemHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Right);
+}
+
+void parameterReset(Ui& ui, double& value, double defaultValue, const char* hint, const std::string& name) {
+  if (resetClicked()) {
+    value = defaultValue;
+    ui.document.edited(core::Affects::Pattern);
   }
-  if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) ImGui::SetTooltip("default %.4g — %s", defaultValue, hint);
+  if (!ImGui::IsItemHovered() || ImGui::IsItemActive()) return;
+  if (name.empty())
+    ImGui::SetTooltip("default %.4g — %s", defaultValue, hint);
+  else
+    ImGui::SetTooltip("%s\ndefault %.4g — %s", name.c_str(), defaultValue, hint);
 }
 
 std::string lowercase(std::string text) {

@@ -39,6 +39,15 @@ float statusBarHeight(float scale);
 IM_FMTARGS(1) void dimText(const char* format, ...);
 // Records the last widget's rectangle under `name` when a test set FrameOutputs::probe.
 void probe(FrameOutputs& frame, const std::string& name);
+// Records `text` as what the widget `name` shows, when a test set FrameOutputs::probe.
+void probeText(FrameOutputs& frame, const std::string& name, const std::string& text);
+// Whether `label` fits beside the next widget, in the room the panel keeps right of its widgets
+// (PushItemWidth). A label that does not goes on a line of its own above the widget instead, so no
+// label is cut at the panel's edge: the caller draws it there (labelAbove) and gives the widget an
+// id alone ("##..."). Records the label under `probeName`.
+bool labelFitsBeside(FrameOutputs& frame, const std::string& label, const std::string& probeName);
+// A label on a line of its own, wrapped at the panel's edge; probed as `probeName` + "/label".
+void labelAbove(FrameOutputs& frame, const std::string& label, const std::string& probeName);
 // After a text field: what it now holds, when it changed this frame and typing is recorded.
 void noteTyped(FrameOutputs& frame, const char* field, const char* text);
 bool slider(FrameOutputs& frame, const std::string& scope, const char* label, double& value, double min, double max,
@@ -57,10 +66,14 @@ void takeKeyboard(FrameOutputs& frame);
 // affects (Document::edited); returns `changed`. Every panel edit of the scene goes through here or
 // through fieldWidget, which reports its row's class.
 bool reportEdit(Document& document, bool changed, core::Affects affects);
-// The right-click menu and tooltip of the last widget, for a number no schema table holds (an
-// attractor's or a variation's parameter): "Reset to default", reported as a pattern edit, and a
-// tooltip with the default and `hint`.
-void parameterResetMenu(Ui& ui, double& value, double defaultValue, const char* hint);
+// Whether the last widget was right-clicked in this frame: what resets a value to its default at
+// once, with no menu to confirm it (Ctrl+Z undoes it like any edit).
+bool resetClicked();
+// The right-click reset and the tooltip of the last widget, for a number no schema table holds (an
+// attractor's or a variation's parameter): back to `defaultValue`, reported as a pattern edit, and
+// a tooltip with the default and `hint`, after `name` when that is given (a label too long for the
+// panel shows whole there).
+void parameterReset(Ui& ui, double& value, double defaultValue, const char* hint, const std::string& name = {});
 std::string lowercase(std::string text);
 bool keyDown(int key);
 
@@ -90,7 +103,8 @@ bool fieldWidget(Ui& ui, const std::string& scope, Owner& owner, core::Table<Own
         } else if constexpr (std::is_same_v<M, glm::vec3 Owner::*>) {
           const glm::vec3 srgb = core::linearToSrgb(owner.*member);
           float rgb[3] = {srgb.r, srgb.g, srgb.b};
-          if (!ImGui::ColorEdit3(label.c_str(), rgb)) return false;
+          // Without the editor's own right-click menu: a right-click resets here as everywhere.
+          if (!ImGui::ColorEdit3(label.c_str(), rgb, ImGuiColorEditFlags_NoOptions)) return false;
           owner.*member = core::srgbToLinear(glm::vec3(rgb[0], rgb[1], rgb[2]));
           return true;
         } else if constexpr (std::is_same_v<M, glm::dvec3 Owner::*>) {
@@ -119,14 +133,9 @@ bool fieldWidget(Ui& ui, const std::string& scope, Owner& owner, core::Table<Own
   const std::string probed = probeName ? std::string(probeName) : scope + label;
   probe(ui, probed);
   markIfKeyed(ui, valuePath(scope, key), probed);
-  // Right-click: back to the default, as the pattern sliders do (a default-made owner holds it).
-  bool reset = false;
-  // A named popup: the last item of some widgets (a colour editor's label) has no id of its own.
-  if (ImGui::BeginPopupContextItem(("reset##" + probed).c_str())) {
-    reset = ImGui::Selectable("Reset to default");
-    probe(ui, probed + "/reset");
-    ImGui::EndPopup();
-  }
+  // Right-click: back to the default at once, as the pattern sliders do (a default-made owner
+  // holds it).
+  const bool reset = resetClicked();
   if (reset) {
     static const Owner defaults{};
     std::visit(
