@@ -546,6 +546,43 @@ TEST_F(ExplorerUi, TheTimelineListsItsTracksAndPlayStopsAtTheEnd) {
   click("timeline/Pause");
 }
 
+// Issue 38: the Timeline's key marks sat on its words: the scrubber's ticks on the time it shows,
+// and the tracks' keys on names longer than their column. Marks keep clear of every text, in a
+// wide Timeline and in a narrow one (where a long name is shortened, whole in its tooltip).
+TEST_F(ExplorerUi, TheTimelinesKeyMarksCoverNoText) {
+  edit([&](core::Scene& scene) { scene.layers[0].transform.rotationDeg.x += 20.0; });
+  edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 10.0; });
+  frame();
+  click("timeline/Key");
+  const auto& scrubber = item("timeline/time");
+  drag(scrubber.minX + 2, scrubber.centerY(), scrubber.maxX - scrubber.minX, 0);
+  edit([&](core::Scene& scene) { scene.layers[0].transform.rotationDeg.x += 20.0; });
+  edit([&](core::Scene& scene) { scene.tone.brightness *= 1.5; });  // one key: it holds still
+  frame();
+  click("timeline/Key");
+  ASSERT_EQ(state.document.scene.keyframes.size(), 3u);
+  for (const float width : {1280.0f, 1000.0f}) {
+    ImGui::GetIO().DisplaySize.x = width;
+    frame(3);
+    const auto time = item("timeline/time"), ticks = item("timeline/ticks");
+    EXPECT_GE(ticks.minY, time.maxY) << "the scrubber's ticks lie under it, not on its time";
+    std::size_t holding = 0;
+    for (const core::KeyframeTrack& track : state.document.scene.keyframes) {
+      const std::string name = "timeline/track/" + track.path;
+      const auto keys = item(name + "/keys");
+      EXPECT_GT(keys.maxX - keys.minX, 50.0f) << name << " at " << width;
+      EXPECT_GE(keys.minX, item(name).maxX) << name << " at " << width;
+      if (probe.items.count(name + "/holds")) {
+        ++holding;
+        EXPECT_GE(keys.minX, item(name + "/holds").maxX) << name << " at " << width;
+      }
+    }
+    EXPECT_EQ(holding, 1u);
+  }
+  const std::string& shortened = probe.texts["timeline/track//layers/0/transform/rotation_deg"];
+  EXPECT_TRUE(shortened.ends_with("…")) << shortened << ": a long name is shortened in a narrow Timeline";
+}
+
 TEST_F(ExplorerUi, KeyingAParameterAnimatesThePattern) {
   edit([&](core::Scene& scene) { scene.animation.duration = 1.0; });
   const double start = state.document.scene.layers[0].params[0];

@@ -64,6 +64,21 @@ bool labelFitsBeside(FrameOutputs& frame, const std::string& label, const std::s
   return ImGui::CalcTextSize(label.c_str()).x <= room;
 }
 
+std::string fittedText(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  const char* ellipsis = "…";
+  const float ellipsisWidth = ImGui::CalcTextSize(ellipsis).x;
+  if (width < ellipsisWidth) return {};
+  std::size_t length = text.size();
+  // Whole UTF-8 characters only: a cut never leaves half of one.
+  while (length > 0) {
+    do --length;
+    while (length > 0 && (static_cast<unsigned char>(text[length]) & 0xC0) == 0x80);
+    if (ImGui::CalcTextSize(text.data(), text.data() + length).x + ellipsisWidth <= width) break;
+  }
+  return text.substr(0, length) + ellipsis;
+}
+
 void labelAbove(FrameOutputs& frame, const std::string& label, const std::string& probeName) {
   ImGui::PushTextWrapPos(0.0f);
   ImGui::TextUnformatted(label.c_str());

@@ -46,6 +46,9 @@ void probeText(FrameOutputs& frame, const std::string& name, const std::string& 
 // label is cut at the panel's edge: the caller draws it there (labelAbove) and gives the widget an
 // id alone ("##..."). Records the label under `probeName`.
 bool labelFitsBeside(FrameOutputs& frame, const std::string& label, const std::string& probeName);
+// `text` when it is at most `width` wide, else as much of it as fits before an ellipsis ("…"),
+// or nothing where not even the ellipsis fits.
+std::string fittedText(const std::string& text, float width);
 // A label on a line of its own, wrapped at the panel's edge; probed as `probeName` + "/label".
 void labelAbove(FrameOutputs& frame, const std::string& label, const std::string& probeName);
 // After a text field: what it now holds, when it changed this frame and typing is recorded.
