@@ -907,6 +907,33 @@ TEST_F(ExplorerUi, OpeningAFileOfSeveralFlamesAsksWhichOne) {
   EXPECT_EQ(state.document.scene, imported) << "Cancel imports nothing";
 }
 
+// Issue 38: the flame chooser's filter has the keyboard as soon as it opens (no click first), and
+// Enter takes the one flame the filter leaves; while several are left Enter takes none.
+TEST_F(ExplorerUi, TheFlameChoosersFilterHasTheKeyboardAndEnterTakesTheOnlyMatch) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyMap[ImGuiKey_Enter] = app::kKeyEnter;  // as the GLFW backend maps it
+  const std::filesystem::path file = std::filesystem::path(VOXFLAME_TEST_FLAMES) /
+                                     "earthbound19__electric_sheep_genomes__electricsheep.242.01930.flam3";
+  ASSERT_TRUE(app::openFile(state, file)) << state.panels.prompts.notice;
+  ASSERT_TRUE(state.panels.prompts.flameChoice);
+  const std::vector<std::string> names = state.panels.prompts.flameChoice->names;
+  ASSERT_EQ(names.size(), 2u);
+  frame(2);
+  io.AddInputCharactersUTF8("electricsheep");  // both names hold it
+  frame(2);
+  EXPECT_STREQ(state.panels.prompts.flameChoice->filter, "electricsheep") << "typed without a click first";
+  pressKey(app::kKeyEnter);
+  ASSERT_TRUE(state.panels.prompts.flameChoice) << "two flames match: Enter takes neither";
+  const std::string wanted = names[1];
+  io.AddInputCharactersUTF8((" " + wanted.substr(wanted.size() - 5)).c_str());  // the second's own end
+  frame(2);
+  EXPECT_EQ(state.panels.prompts.flameChoice->filter, "electricsheep " + wanted.substr(wanted.size() - 5))
+      << "the filter keeps the keyboard after an Enter that took nothing";
+  pressKey(app::kKeyEnter);
+  EXPECT_FALSE(state.panels.prompts.flameChoice);
+  EXPECT_EQ(state.document.scene.name, wanted) << "the only match, taken by Enter";
+}
+
 TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {
   app::Recoverable recoverable;
   core::Scene lost = core::defaultScene();

@@ -130,6 +130,9 @@ struct PromptsState {
     std::filesystem::path path;
     std::vector<std::string> names;  // every flame of the file, in order
     char filter[64] = "";
+    // The next frame gives the filter the keyboard: when the list opens, and after an Enter that
+    // took nothing (ImGui lets go of a field on Enter).
+    bool focusFilter = true;
   };
   std::optional<FlameChoice> flameChoice;
   bool quitPrompt = false;     // the Save / Discard / Cancel prompt is open
