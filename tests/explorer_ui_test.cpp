@@ -1663,8 +1663,12 @@ TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) 
 }
 
 // The flat view (issue 25): the checkbox's state renders the flame layer in 2D off the main thread,
-// at the flame's framing (at most 640 wide), again after an edit, and stops when turned off.
-TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerAndFollowsEdits) {
+// at the flame's framing, again after an edit, and stops when turned off. Issue 38: it was drawn
+// over the whole window, under the side panels, its caption hidden under the left one, and
+// stretched soft from a small render. It fills the view's rectangle between the panels (the flame's
+// aspect fitted into it), rendered at that rectangle's pixel size and drawn a texel a pixel, with
+// its caption inside the rectangle; a new size of the rectangle renders it again.
+TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerInTheViewAtItsSizeAndFollowsEdits) {
   useFlameLayer();
   edit([&](core::Scene& scene) { scene.flat.width = 80; });
   edit([&](core::Scene& scene) { scene.flat.height = 60; });
@@ -1677,19 +1681,60 @@ TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerAndFollowsEdits) {
       frame();
     }
   };
+  // As the window loop's upload does: the image becomes the texture drawn.
+  const auto upload = [&] {
+    state.frame.flatImagePending = false;
+    state.frame.flatTexture = 1;
+    state.frame.flatTextureWidth = state.frame.flatImage.width;
+    state.frame.flatTextureHeight = state.frame.flatImage.height;
+    frame();
+  };
+  // The picture and its caption lie in the view's rectangle, between the panels and above the
+  // Timeline; the picture is the image's size, filling the rectangle's width or height.
+  const auto checkPlacement = [&] {
+    const glm::ivec4 view = state.frame.viewRect;
+    const app::FrameOutputs::PanelEdges& edges = state.frame.layout;
+    const auto image = item("flat/image"), caption = item("flat/caption");
+    EXPECT_FLOAT_EQ(image.maxX - image.minX, static_cast<float>(state.frame.flatImage.width));
+    EXPECT_FLOAT_EQ(image.maxY - image.minY, static_cast<float>(state.frame.flatImage.height));
+    EXPECT_TRUE(state.frame.flatImage.width == view.z || state.frame.flatImage.height == view.w)
+        << state.frame.flatImage.width << "×" << state.frame.flatImage.height << " in " << view.z << "×" << view.w;
+    for (const auto& [name, rect] : {std::pair{"image", image}, std::pair{"caption", caption}}) {
+      EXPECT_GE(rect.minX, edges.left) << name << " under the Pattern panel";
+      EXPECT_LE(rect.maxX, edges.right) << name << " under the Scene panel";
+      EXPECT_LE(rect.maxY, edges.bottom) << name << " under the Timeline";
+      EXPECT_GE(rect.minY, 0.0f) << name;
+    }
+    EXPECT_EQ(probe.texts["flat/caption"], "flat view (as flam3 renders it)");
+  };
   frame();
   waitForImage();
   ASSERT_TRUE(state.frame.flatImagePending) << state.panels.flat.message;
-  EXPECT_EQ(state.frame.flatImage.width, 80);
-  EXPECT_EQ(state.frame.flatImage.height, 60);
+  EXPECT_NEAR(state.frame.flatImage.width * 60, state.frame.flatImage.height * 80, 80) << "the flame's aspect";
+  EXPECT_GT(state.frame.flatImage.width, 400) << "the view's size, not the flame's 80 × 60";
   EXPECT_EQ(app::frameWaitSeconds(state, true, 10), 0.0) << "the window loop must upload the new image";
-  state.frame.flatImagePending = false;  // as the window loop's upload does
+  upload();
+  checkPlacement();
 
-  edit([&](core::Scene& scene) { scene.flat.width = 40; });
+  edit([&](core::Scene& scene) { scene.flat.width = 20; });
   frame();
   waitForImage();
   ASSERT_TRUE(state.frame.flatImagePending) << state.panels.flat.message;
-  EXPECT_EQ(state.frame.flatImage.width, 40);
+  EXPECT_EQ(state.frame.flatImage.height, state.frame.viewRect.w) << "a tall flame fills the view's height";
+  EXPECT_NEAR(state.frame.flatImage.width * 60, state.frame.flatImage.height * 20, 60);
+  upload();
+  checkPlacement();
+
+  // A smaller window: the view's rectangle shrinks, and the picture is rendered again at its size.
+  const int before = state.frame.flatImage.height;
+  ImGui::GetIO().DisplaySize.y = 1000.0f;
+  frame(2);
+  waitForImage();
+  ASSERT_TRUE(state.frame.flatImagePending) << state.panels.flat.message;
+  EXPECT_LT(state.frame.flatImage.height, before);
+  EXPECT_EQ(state.frame.flatImage.height, state.frame.viewRect.w);
+  upload();
+  checkPlacement();
 
   state.panels.flat.on = false;
   frame();

@@ -140,11 +140,13 @@ struct PromptsState {
 };
 
 // The flat view (issue 25): the first flame layer rendered in 2D as flam3 frames it
-// (core/flat_render.h), shown over the viewport while `on`. It renders off the main thread whenever
-// the layer, the tone or the framing change.
+// (core/flat_render.h), shown in the view's rectangle between the panels while `on`, at that
+// rectangle's pixel size. It renders off the main thread whenever the layer, the tone, the framing
+// or the rectangle's size change.
 struct FlatViewState {
   bool on = false;
-  core::Scene rendered;  // what the job renders or rendered: the flame layer, tone and framing
+  core::Scene rendered;        // what the job renders or rendered: the flame layer, tone and framing
+  glm::ivec2 renderedSize{0};  // ... and at what size, in pixels
   std::uint64_t checkedRevision = ~std::uint64_t{0};  // the document revision `rendered` was last checked at
   std::string message;
 };
