@@ -858,6 +858,27 @@ TEST_F(ExplorerUi, WideRangeSlidersAreLogarithmicAndEverySliderResetsToItsDefaul
   EXPECT_EQ(state.document.scene.tone.background, core::ToneMapSettings{}.background) << "a colour resets too";
 }
 
+// Issue 38: labels were cut at the panels' edges. Every label of a schema widget (and the Render
+// section's own) shows whole inside its panel: beside its widget where it fits, else above it.
+TEST_F(ExplorerUi, EveryLabelShowsWholeInsideItsPanel) {
+  click("header/Camera");
+  frame(2);
+  const float patternRight = state.frame.layout.left, sceneRight = ImGui::GetIO().DisplaySize.x;
+  int checked = 0;
+  for (const auto& [name, text] : probe.texts) {
+    const float right = name.rfind("layer", 0) == 0 ? patternRight : sceneRight;
+    const auto label = probe.items.find(name + "/label");
+    const auto& rect = label != probe.items.end() ? label->second : item(name);
+    EXPECT_LE(rect.maxX, right) << name << " (\"" << text << "\") is cut at its panel's edge";
+    ++checked;
+  }
+  EXPECT_GT(checked, 30);
+  EXPECT_TRUE(probe.texts.count("render/stop_refining_at_noise"));
+  EXPECT_TRUE(std::any_of(probe.texts.begin(), probe.texts.end(), [](const auto& entry) {
+    return entry.first.rfind("camera/", 0) == 0;
+  })) << "the Camera section's too";
+}
+
 // Typing words of a name into the attractor filter and pressing Enter picks the first match.
 TEST_F(ExplorerUi, TheAttractorFilterPicksItsFirstMatchOnEnter) {
   ImGuiIO& io = ImGui::GetIO();

@@ -60,7 +60,10 @@ void probeText(FrameOutputs& frame, const std::string& name, const std::string& 
 
 bool labelFitsBeside(FrameOutputs& frame, const std::string& label, const std::string& probeName) {
   probeText(frame, probeName, label);
-  const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcItemWidth() - ImGui::GetStyle().ItemInnerSpacing.x;
+  // ImGui shows a window's content up to half its padding from its edge.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcItemWidth() - style.ItemInnerSpacing.x +
+                     std::floor(0.5f * style.WindowPadding.x);
   return ImGui::CalcTextSize(label.c_str()).x <= room;
 }
 

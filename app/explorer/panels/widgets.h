@@ -90,16 +90,22 @@ bool fieldWidget(Ui& ui, const std::string& scope, Owner& owner, core::Table<Own
   const core::Field<Owner>& f = core::field(table, key);
   const std::string label(f.ui.label);
   const std::string format(f.ui.format);
+  const std::string probed = probeName ? std::string(probeName) : scope + label;
+  // A check box's label follows its box; every other widget's goes where labels go, or above the
+  // widget when it is too long for the room there.
+  const bool beside = std::holds_alternative<bool Owner::*>(f.member) || labelFitsBeside(ui, label, probed);
+  if (!beside) labelAbove(ui, label, probed);
+  const std::string shown = beside ? label : "##" + label;
   const ImGuiSliderFlags flags =
       ImGuiSliderFlags_AlwaysClamp | (f.ui.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
   const bool changed = std::visit(
       [&]<class M>(const M& member) -> bool {
         if constexpr (std::is_same_v<M, double Owner::*>) {
           const double min = f.ui.min, max = f.ui.max;
-          return ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &(owner.*member), &min, &max, format.c_str(),
+          return ImGui::SliderScalar(shown.c_str(), ImGuiDataType_Double, &(owner.*member), &min, &max, format.c_str(),
                                      flags);
         } else if constexpr (std::is_same_v<M, int Owner::*>) {
-          return ImGui::SliderInt(label.c_str(), &(owner.*member), static_cast<int>(f.ui.min),
+          return ImGui::SliderInt(shown.c_str(), &(owner.*member), static_cast<int>(f.ui.min),
                                   static_cast<int>(f.ui.max), format.c_str(), flags);
         } else if constexpr (std::is_same_v<M, bool Owner::*>) {
           return ImGui::Checkbox(label.c_str(), &(owner.*member));
@@ -107,14 +113,14 @@ bool fieldWidget(Ui& ui, const std::string& scope, Owner& owner, core::Table<Own
           const glm::vec3 srgb = core::linearToSrgb(owner.*member);
           float rgb[3] = {srgb.r, srgb.g, srgb.b};
           // Without the editor's own right-click menu: a right-click resets here as everywhere.
-          if (!ImGui::ColorEdit3(label.c_str(), rgb, ImGuiColorEditFlags_NoOptions)) return false;
+          if (!ImGui::ColorEdit3(shown.c_str(), rgb, ImGuiColorEditFlags_NoOptions)) return false;
           owner.*member = core::srgbToLinear(glm::vec3(rgb[0], rgb[1], rgb[2]));
           return true;
         } else if constexpr (std::is_same_v<M, glm::dvec3 Owner::*>) {
           glm::dvec3& value = owner.*member;
           double v[3] = {value.x, value.y, value.z};
           const double min = f.ui.min, max = f.ui.max;
-          if (!ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Double, v, 3, &min, &max, format.c_str(), flags))
+          if (!ImGui::SliderScalarN(shown.c_str(), ImGuiDataType_Double, v, 3, &min, &max, format.c_str(), flags))
             return false;
           const glm::dvec3 chosen(v[0], v[1], v[2]);
           // An axis must not be the zero vector (the reader refuses it): keep the last one.
@@ -125,7 +131,7 @@ bool fieldWidget(Ui& ui, const std::string& scope, Owner& owner, core::Table<Own
           int index = member.get(owner);
           std::string items;
           for (std::string_view name : member.names) (items += name) += '\0';
-          if (!ImGui::Combo(label.c_str(), &index, items.c_str())) return false;
+          if (!ImGui::Combo(shown.c_str(), &index, items.c_str())) return false;
           member.set(owner, index);
           return true;
         } else {
@@ -133,7 +139,6 @@ bool fieldWidget(Ui& ui, const std::string& scope, Owner& owner, core::Table<Own
         }
       },
       f.member);
-  const std::string probed = probeName ? std::string(probeName) : scope + label;
   probe(ui, probed);
   markIfKeyed(ui, valuePath(scope, key), probed);
   // Right-click: back to the default at once, as the pattern sliders do (a default-made owner
