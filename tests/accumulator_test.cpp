@@ -947,6 +947,38 @@ TEST(ChaosGameLayers, AnEscapingFlameSaysSoAndNeverHangs) {
   EXPECT_NE(accumulator.stats().problem.find("flame layer escapes"), std::string::npos) << accumulator.stats().problem;
 }
 
+// runsBounded is the probe setPattern makes: it says no exactly where an accumulator reports an
+// escape (what a search asks of a candidate before handing it to the live view).
+TEST(ChaosGameLayers, RunsBoundedSaysWhatAnAccumulatorFinds) {
+  const auto mask = bunnyMask(32);
+  PatternLayer escapingAttractor = defaultScene().layers.front();
+  escapingAttractor.params = {1.111, 1.479, 4.494, 0.44};
+  escapingAttractor.step = 0.9;  // Euler with a huge step blows up
+  PatternLayer escapingFlame = defaultFlameLayer();
+  for (auto& x : escapingFlame.flame.xforms) {
+    x.affine.m = {3.0, 0, 0, 0, 0, 3.0, 0, 0, 0, 0, 3.0, 0};
+    x.variations = {{"linear", 1.0, {}}};
+  }
+  PatternLayer missedSlice = defaultFlameLayer();
+  missedSlice.kind = PatternKind::QuaternionJulia;
+  missedSlice.julia.view = QuaternionView::Slice;
+  missedSlice.julia.sliceW = 5.0;  // shows nothing of the set
+  const std::vector<std::pair<PatternLayer, bool>> cases = {{defaultScene().layers.front(), true},
+                                                            {escapingAttractor, false},
+                                                            {defaultFlameLayer(), true},
+                                                            {escapingFlame, false},
+                                                            {missedSlice, false}};
+  for (const auto& [layer, bounded] : cases) {
+    EXPECT_EQ(runsBounded(layer, 1), bounded) << toString(layer.kind);
+    Accumulator accumulator(mask, 1);
+    accumulator.setPattern({layer}, 1);
+    EXPECT_EQ(accumulator.stats().problem.empty(), bounded) << toString(layer.kind);
+  }
+  PatternLayer invalid = defaultScene().layers.front();
+  invalid.params[0] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_FALSE(runsBounded(invalid, 1)) << "an invalid layer does not run";
+}
+
 TEST(ChaosGameLayers, IndexColoursNeedAChaosGame) {
   const auto mask = bunnyMask(32);
   PatternLayer layer = defaultScene().layers.front();

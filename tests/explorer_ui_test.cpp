@@ -8,6 +8,7 @@
 #include <functional>
 #include <fstream>
 #include <thread>
+#include <set>
 #include <sstream>
 #include <filesystem>
 #include <iterator>
@@ -275,6 +276,40 @@ TEST_F(ExplorerUi, SearchFindsAChaoticSetAndTheHistoryGoesBackAndForward) {
   EXPECT_EQ(state.panels.explore.searchMessage, foundLine) << "and Forward";
 }
 
+// Issue 38: the default preset's first F3 said "largest Lyapunov exponent 0.133" and handed back
+// parameters that escape in the live view: bounded only from a start near the attractor's, which
+// a layer cannot hold. What Search hands back runs bounded in a session as the live view posts it:
+// the first F3 on the default preset, and F3 with search seeds that, unchecked, handed back
+// parameters that escape (about one search in six from the default preset did).
+TEST_F(ExplorerUi, WhatSearchHandsBackRunsBoundedInTheLiveView) {
+  edit([&](core::Scene& scene) { scene.gridResolution = 48; });
+  frame();
+  const core::Scene start = state.document.scene;
+  app::ExplorerSession session(1);
+  for (const std::uint64_t seed : {1, 232, 246, 324, 349}) {
+    if (seed != 1) {
+      edit([&](core::Scene& scene) { scene.layers = start.layers; });
+      state.panels.explore.searchSeed = seed;
+    }
+    frame();
+    pressKey(app::kKeyF3);
+    for (int i = 0; i < 1500 && state.services.search.busy(); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      frame();
+    }
+    frame();
+    ASSERT_EQ(state.panels.explore.searchMessage.rfind("found: ", 0), 0u) << state.panels.explore.searchMessage;
+    ASSERT_NE(state.document.scene.layers[0].params, start.layers[0].params) << "seed " << seed;
+    ASSERT_TRUE(session.postIfPatternChanged(state.document.scene));
+    ASSERT_TRUE(session.waitUntilApplied(60.0));
+    const app::SessionStatus status = session.status();
+    EXPECT_TRUE(status.stats.problem.empty())
+        << "seed " << seed << ": " << status.stats.problem << " (" << state.panels.explore.searchMessage << ")";
+    EXPECT_TRUE(status.escapeNote.empty()) << status.escapeNote;
+    EXPECT_FALSE(status.showingLastBounded);
+  }
+}
+
 // A search shows what it has tried and can be cancelled: around a periodic Thomas nothing is
 // near, and it widens instead of running on in silence.
 TEST_F(ExplorerUi, ASearchShowsItsProgressAndCanBeCancelled) {
@@ -509,6 +544,43 @@ TEST_F(ExplorerUi, TheTimelineListsItsTracksAndPlayStopsAtTheEnd) {
   for (int i = 0; i < 60; ++i) frame();
   EXPECT_TRUE(state.panels.timeline.playing);
   click("timeline/Pause");
+}
+
+// Issue 38: the Timeline's key marks sat on its words: the scrubber's ticks on the time it shows,
+// and the tracks' keys on names longer than their column. Marks keep clear of every text, in a
+// wide Timeline and in a narrow one (where a long name is shortened, whole in its tooltip).
+TEST_F(ExplorerUi, TheTimelinesKeyMarksCoverNoText) {
+  edit([&](core::Scene& scene) { scene.layers[0].transform.rotationDeg.x += 20.0; });
+  edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 10.0; });
+  frame();
+  click("timeline/Key");
+  const auto& scrubber = item("timeline/time");
+  drag(scrubber.minX + 2, scrubber.centerY(), scrubber.maxX - scrubber.minX, 0);
+  edit([&](core::Scene& scene) { scene.layers[0].transform.rotationDeg.x += 20.0; });
+  edit([&](core::Scene& scene) { scene.tone.brightness *= 1.5; });  // one key: it holds still
+  frame();
+  click("timeline/Key");
+  ASSERT_EQ(state.document.scene.keyframes.size(), 3u);
+  for (const float width : {1280.0f, 1000.0f}) {
+    ImGui::GetIO().DisplaySize.x = width;
+    frame(3);
+    const auto time = item("timeline/time"), ticks = item("timeline/ticks");
+    EXPECT_GE(ticks.minY, time.maxY) << "the scrubber's ticks lie under it, not on its time";
+    std::size_t holding = 0;
+    for (const core::KeyframeTrack& track : state.document.scene.keyframes) {
+      const std::string name = "timeline/track/" + track.path;
+      const auto keys = item(name + "/keys");
+      EXPECT_GT(keys.maxX - keys.minX, 50.0f) << name << " at " << width;
+      EXPECT_GE(keys.minX, item(name).maxX) << name << " at " << width;
+      if (probe.items.count(name + "/holds")) {
+        ++holding;
+        EXPECT_GE(keys.minX, item(name + "/holds").maxX) << name << " at " << width;
+      }
+    }
+    EXPECT_EQ(holding, 1u);
+  }
+  const std::string& shortened = probe.texts["timeline/track//layers/0/transform/rotation_deg"];
+  EXPECT_TRUE(shortened.ends_with("…")) << shortened << ": a long name is shortened in a narrow Timeline";
 }
 
 TEST_F(ExplorerUi, KeyingAParameterAnimatesThePattern) {
@@ -756,17 +828,55 @@ TEST_F(ExplorerUi, WideRangeSlidersAreLogarithmicAndEverySliderResetsToItsDefaul
   ASSERT_GT(first, 0.0);
   EXPECT_NEAR(std::log(second / first), std::log(third / second), 0.15) << first << " " << second << " " << third;
   EXPECT_GT(third - second, 1.5 * (second - first)) << "equal steps, not equal factors";
+  // A right-click resets at once, with no menu to confirm it (issue 38), and Ctrl+Z brings the
+  // value back.
+  const auto rightClick = [&](const std::string& name) {
+    const auto& rect = item(name);
+    moveTo(rect.centerX(), rect.centerY());
+    io.MouseDown[1] = true;
+    frame();
+    io.MouseDown[1] = false;
+    frame(2);
+  };
   edit([&](core::Scene& scene) { scene.tone.gamma = 3.7; });
   frame();
-  const auto& gamma = item("tone/gamma");
-  moveTo(gamma.centerX(), gamma.centerY());
-  io.MouseDown[1] = true;
-  frame();
-  io.MouseDown[1] = false;
-  frame(2);
-  click("tone/gamma/reset");
+  rightClick("tone/gamma");
+  EXPECT_FALSE(ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) << "no menu";
   EXPECT_DOUBLE_EQ(state.document.scene.tone.gamma, core::ToneMapSettings{}.gamma)
       << "the Render panel's sliders reset too";
+  pressKey('Z', true);
+  EXPECT_DOUBLE_EQ(state.document.scene.tone.gamma, 3.7) << "one undo step";
+  const core::ParamInfo& b = core::attractorOrThrow(state.document.scene.layers[0].attractor).params[1];
+  edit([&](core::Scene& scene) { scene.layers[0].params[1] = b.defaultValue + 0.05; });
+  frame();
+  rightClick("layer0/" + b.name);
+  EXPECT_DOUBLE_EQ(state.document.scene.layers[0].params[1], b.defaultValue) << "an attractor's parameter resets too";
+  edit([&](core::Scene& scene) { scene.tone.background = glm::vec3(0.5f, 0.1f, 0.2f); });
+  frame();
+  rightClick("tone/background");
+  EXPECT_FALSE(ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId)) << "not the colour editor's own menu";
+  EXPECT_EQ(state.document.scene.tone.background, core::ToneMapSettings{}.background) << "a colour resets too";
+}
+
+// Issue 38: labels were cut at the panels' edges. Every label of a schema widget (and the Render
+// section's own) shows whole inside its panel: beside its widget where it fits, else above it.
+TEST_F(ExplorerUi, EveryLabelShowsWholeInsideItsPanel) {
+  click("header/Camera");
+  frame(2);
+  const float patternRight = state.frame.layout.left, sceneRight = ImGui::GetIO().DisplaySize.x;
+  int checked = 0;
+  for (const auto& [name, text] : probe.texts) {
+    const float right = name.rfind("layer", 0) == 0 ? patternRight : sceneRight;
+    const auto label = probe.items.find(name + "/label");
+    const auto& rect = label != probe.items.end() ? label->second : item(name);
+    EXPECT_LE(rect.maxX, right) << name << " (\"" << text << "\") is cut at its panel's edge";
+    ++checked;
+  }
+  EXPECT_GT(checked, 30);
+  EXPECT_TRUE(probe.texts.count("render/stop_refining_at_noise"));
+  EXPECT_TRUE(std::any_of(probe.texts.begin(), probe.texts.end(), [](const auto& entry) {
+    return entry.first.rfind("camera/", 0) == 0;
+  })) << "the Camera section's too";
 }
 
 // Typing words of a name into the attractor filter and pressing Enter picks the first match.
@@ -816,6 +926,33 @@ TEST_F(ExplorerUi, OpeningAFileOfSeveralFlamesAsksWhichOne) {
   click("flame/Cancel");
   EXPECT_FALSE(state.panels.prompts.flameChoice);
   EXPECT_EQ(state.document.scene, imported) << "Cancel imports nothing";
+}
+
+// Issue 38: the flame chooser's filter has the keyboard as soon as it opens (no click first), and
+// Enter takes the one flame the filter leaves; while several are left Enter takes none.
+TEST_F(ExplorerUi, TheFlameChoosersFilterHasTheKeyboardAndEnterTakesTheOnlyMatch) {
+  ImGuiIO& io = ImGui::GetIO();
+  io.KeyMap[ImGuiKey_Enter] = app::kKeyEnter;  // as the GLFW backend maps it
+  const std::filesystem::path file = std::filesystem::path(VOXFLAME_TEST_FLAMES) /
+                                     "earthbound19__electric_sheep_genomes__electricsheep.242.01930.flam3";
+  ASSERT_TRUE(app::openFile(state, file)) << state.panels.prompts.notice;
+  ASSERT_TRUE(state.panels.prompts.flameChoice);
+  const std::vector<std::string> names = state.panels.prompts.flameChoice->names;
+  ASSERT_EQ(names.size(), 2u);
+  frame(2);
+  io.AddInputCharactersUTF8("electricsheep");  // both names hold it
+  frame(2);
+  EXPECT_STREQ(state.panels.prompts.flameChoice->filter, "electricsheep") << "typed without a click first";
+  pressKey(app::kKeyEnter);
+  ASSERT_TRUE(state.panels.prompts.flameChoice) << "two flames match: Enter takes neither";
+  const std::string wanted = names[1];
+  io.AddInputCharactersUTF8((" " + wanted.substr(wanted.size() - 5)).c_str());  // the second's own end
+  frame(2);
+  EXPECT_EQ(state.panels.prompts.flameChoice->filter, "electricsheep " + wanted.substr(wanted.size() - 5))
+      << "the filter keeps the keyboard after an Enter that took nothing";
+  pressKey(app::kKeyEnter);
+  EXPECT_FALSE(state.panels.prompts.flameChoice);
+  EXPECT_EQ(state.document.scene.name, wanted) << "the only match, taken by Enter";
 }
 
 TEST_F(ExplorerUi, AutosavedWorkIsOfferedBackAndRestored) {
@@ -1126,6 +1263,50 @@ TEST_F(ExplorerFlameUi, VariationsAreAddedWeightedAndRemoved) {
       << "dragged past the end, the slider stops at its maximum";
   pressKey('Z', true);
   EXPECT_EQ(flame(), before);
+}
+
+// Issue 38: pre_falloff3's centre read "pre_falloff3 center" three times, cut at the panel's edge
+// with the axis gone. Each variation's labels show whole inside the panel (beside the slider, or
+// above it when too long), and its parameters' labels tell them apart ("center x").
+TEST_F(ExplorerFlameUi, VariationLabelsShowWholeInsideThePanelAndApart) {
+  useFlameLayer();
+  const core::VariationInfo* falloff3 = core::findVariation("pre_falloff3");
+  ASSERT_NE(falloff3, nullptr);
+  // And the longest name of the catalogue, in its pre_ form.
+  std::string longest;
+  for (const core::VariationInfo& info : core::variationCatalogue())
+    if (info.name.size() > longest.size()) longest = info.name;
+  const core::VariationInfo* longestInfo = core::findVariation("pre_" + longest);
+  ASSERT_NE(longestInfo, nullptr) << longest;
+  const std::size_t first = flame().xforms[0].variations.size();
+  edit([&](core::Scene& scene) {
+    auto& variations = scene.layers[0].flame.xforms[0].variations;
+    variations.push_back({"pre_falloff3", 0.25, falloff3->defaultParams()});
+    variations.push_back({"pre_" + longest, 0.25, longestInfo->defaultParams()});
+  });
+  frame(2);
+  const float panelRight = state.frame.layout.left;
+  const auto inside = [&](const std::string& name) {
+    EXPECT_LE(item(name).maxX, panelRight) << name << " (" << probe.texts[name] << ") is cut at the panel's edge";
+    const auto label = probe.items.find(name + "/label");
+    if (label != probe.items.end()) {
+      EXPECT_LE(label->second.maxX, panelRight) << name << "/label";
+    }
+  };
+  for (const auto& [index, info] : {std::pair{first, falloff3}, std::pair{first + 1, longestInfo}}) {
+    const std::string scope = "layer0/xform/var" + std::to_string(index) + "/";
+    EXPECT_EQ(probe.texts[scope + "weight"], flame().xforms[0].variations[index].name);
+    inside(scope + "weight");
+    std::set<std::string> labels;
+    for (const core::VariationParam& param : info->params) {
+      inside(scope + param.name);
+      labels.insert(probe.texts[scope + param.name]);
+    }
+    EXPECT_EQ(labels.size(), info->params.size()) << info->name << ": every parameter's label differs";
+  }
+  const std::string scope = "layer0/xform/var" + std::to_string(first) + "/";
+  EXPECT_EQ(probe.texts[scope + "center_x"], "center x");
+  EXPECT_EQ(probe.texts[scope + "center_z"], "center z");
 }
 
 TEST_F(ExplorerFlameUi, SearchAndMutateOnAFlameKeepTheKindAndBackRestoresTheGenome) {
@@ -1503,8 +1684,12 @@ TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) 
 }
 
 // The flat view (issue 25): the checkbox's state renders the flame layer in 2D off the main thread,
-// at the flame's framing (at most 640 wide), again after an edit, and stops when turned off.
-TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerAndFollowsEdits) {
+// at the flame's framing, again after an edit, and stops when turned off. Issue 38: it was drawn
+// over the whole window, under the side panels, its caption hidden under the left one, and
+// stretched soft from a small render. It fills the view's rectangle between the panels (the flame's
+// aspect fitted into it), rendered at that rectangle's pixel size and drawn a texel a pixel, with
+// its caption inside the rectangle; a new size of the rectangle renders it again.
+TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerInTheViewAtItsSizeAndFollowsEdits) {
   useFlameLayer();
   edit([&](core::Scene& scene) { scene.flat.width = 80; });
   edit([&](core::Scene& scene) { scene.flat.height = 60; });
@@ -1517,19 +1702,60 @@ TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerAndFollowsEdits) {
       frame();
     }
   };
+  // As the window loop's upload does: the image becomes the texture drawn.
+  const auto upload = [&] {
+    state.frame.flatImagePending = false;
+    state.frame.flatTexture = 1;
+    state.frame.flatTextureWidth = state.frame.flatImage.width;
+    state.frame.flatTextureHeight = state.frame.flatImage.height;
+    frame();
+  };
+  // The picture and its caption lie in the view's rectangle, between the panels and above the
+  // Timeline; the picture is the image's size, filling the rectangle's width or height.
+  const auto checkPlacement = [&] {
+    const glm::ivec4 view = state.frame.viewRect;
+    const app::FrameOutputs::PanelEdges& edges = state.frame.layout;
+    const auto image = item("flat/image"), caption = item("flat/caption");
+    EXPECT_FLOAT_EQ(image.maxX - image.minX, static_cast<float>(state.frame.flatImage.width));
+    EXPECT_FLOAT_EQ(image.maxY - image.minY, static_cast<float>(state.frame.flatImage.height));
+    EXPECT_TRUE(state.frame.flatImage.width == view.z || state.frame.flatImage.height == view.w)
+        << state.frame.flatImage.width << "×" << state.frame.flatImage.height << " in " << view.z << "×" << view.w;
+    for (const auto& [name, rect] : {std::pair{"image", image}, std::pair{"caption", caption}}) {
+      EXPECT_GE(rect.minX, edges.left) << name << " under the Pattern panel";
+      EXPECT_LE(rect.maxX, edges.right) << name << " under the Scene panel";
+      EXPECT_LE(rect.maxY, edges.bottom) << name << " under the Timeline";
+      EXPECT_GE(rect.minY, 0.0f) << name;
+    }
+    EXPECT_EQ(probe.texts["flat/caption"], "flat view (as flam3 renders it)");
+  };
   frame();
   waitForImage();
   ASSERT_TRUE(state.frame.flatImagePending) << state.panels.flat.message;
-  EXPECT_EQ(state.frame.flatImage.width, 80);
-  EXPECT_EQ(state.frame.flatImage.height, 60);
+  EXPECT_NEAR(state.frame.flatImage.width * 60, state.frame.flatImage.height * 80, 80) << "the flame's aspect";
+  EXPECT_GT(state.frame.flatImage.width, 400) << "the view's size, not the flame's 80 × 60";
   EXPECT_EQ(app::frameWaitSeconds(state, true, 10), 0.0) << "the window loop must upload the new image";
-  state.frame.flatImagePending = false;  // as the window loop's upload does
+  upload();
+  checkPlacement();
 
-  edit([&](core::Scene& scene) { scene.flat.width = 40; });
+  edit([&](core::Scene& scene) { scene.flat.width = 20; });
   frame();
   waitForImage();
   ASSERT_TRUE(state.frame.flatImagePending) << state.panels.flat.message;
-  EXPECT_EQ(state.frame.flatImage.width, 40);
+  EXPECT_EQ(state.frame.flatImage.height, state.frame.viewRect.w) << "a tall flame fills the view's height";
+  EXPECT_NEAR(state.frame.flatImage.width * 60, state.frame.flatImage.height * 20, 60);
+  upload();
+  checkPlacement();
+
+  // A smaller window: the view's rectangle shrinks, and the picture is rendered again at its size.
+  const int before = state.frame.flatImage.height;
+  ImGui::GetIO().DisplaySize.y = 1000.0f;
+  frame(2);
+  waitForImage();
+  ASSERT_TRUE(state.frame.flatImagePending) << state.panels.flat.message;
+  EXPECT_LT(state.frame.flatImage.height, before);
+  EXPECT_EQ(state.frame.flatImage.height, state.frame.viewRect.w);
+  upload();
+  checkPlacement();
 
   state.panels.flat.on = false;
   frame();

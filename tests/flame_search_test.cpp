@@ -164,6 +164,33 @@ TEST(FlameSearch, SearchReturnsTheBestCandidatesThatPassTheFillTest) {
   EXPECT_TRUE(core::searchFlames(scaledGenome(3.0), options).empty());
 }
 
+// A caller holds the search to its own check of each candidate that passed the fill test (the
+// explorer: does its live view run it bounded?): a refused one is never returned.
+TEST(FlameSearch, SearchKeepsOnlyWhatTheCallerAccepts) {
+  core::FlameSearchOptions options;
+  options.seed = 11;
+  options.count = 1;
+  const auto unchecked = core::searchFlames(std::nullopt, options);
+  ASSERT_EQ(unchecked.size(), 1u);
+  int asked = 0;
+  options.acceptFlame = [&](const core::FlameGenome& genome) {
+    ++asked;
+    return !(genome == unchecked.front().genome);
+  };
+  const auto checked = core::searchFlames(std::nullopt, options);
+  ASSERT_EQ(checked.size(), 1u);
+  EXPECT_NE(checked.front().genome, unchecked.front().genome) << "the best one was refused";
+  EXPECT_GE(asked, 3) << "asked of every candidate that passed, until the pool was full";
+
+  options.acceptFlame = [](const core::FlameGenome&) { return false; };
+  options.maxCandidates = 30;
+  EXPECT_TRUE(core::searchFlames(std::nullopt, options).empty());
+  options.acceptJulia = [](const core::QuaternionJuliaSettings&) { return false; };
+  EXPECT_TRUE(core::searchQuaternionJulia(std::nullopt, options).empty());
+  options.acceptJulia = {};
+  EXPECT_FALSE(core::searchQuaternionJulia(std::nullopt, options).empty()) << "the Julia search asks acceptJulia";
+}
+
 TEST(FlameSearch, QuaternionJuliaSearchKeepsSetsThatAreNeitherDustNorEmpty) {
   core::QuaternionJuliaSettings dust;
   // Far outside the Mandelbrot set the set is a Cantor dust huddled around ±√(−c).

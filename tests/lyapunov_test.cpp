@@ -129,6 +129,39 @@ TEST(ChaosSearch, IsDeterministicPerSeedAndFindsChaoticVolumeFillingSets) {
   EXPECT_THROW(searchChaos(base, options), Error);
 }
 
+// A caller holds the search to its own check of each set that passed the analysis (the explorer:
+// does its live view run it bounded?) and, when its orbits cannot start elsewhere, to the base's
+// start, so the analysis it reports is of the orbit it runs.
+TEST(ChaosSearch, KeepsOnlyWhatTheCallerAcceptsFromTheBasesStart) {
+  const auto& info = attractorOrThrow("polynomial_b");
+  const OrbitSpec base{&info, info.alternative("seed")->values, Integrator::Euler, 1.0, {0.1, 0.1, 0.1}};
+  SearchOptions options;
+  options.seed = 3;
+  options.count = 2;
+  options.strength = 0.3;
+  options.jitterStart = false;
+  int asked = 0;
+  std::vector<std::vector<double>> refused;
+  options.accept = [&](const std::vector<double>& params) {
+    const bool accepted = ++asked % 2 == 0;  // every other one
+    if (!accepted) refused.push_back(params);
+    return accepted;
+  };
+  const auto found = searchChaos(base, options);
+  ASSERT_EQ(found.size(), 2u);
+  EXPECT_EQ(asked, 4) << "asked only of sets that passed the analysis, until enough were kept";
+  for (const SearchResult& result : found) {
+    EXPECT_EQ(std::count(refused.begin(), refused.end(), result.params), 0) << "a refused set is never returned";
+    EXPECT_EQ(result.start, base.start);
+    OrbitSpec check = base;
+    check.params = result.params;
+    EXPECT_EQ(analyseOrbit(check, options.confirm).verdict, OrbitVerdict::Chaotic) << "from the base's own start";
+  }
+  options.accept = [](const std::vector<double>&) { return false; };
+  options.maxCandidates = 60;
+  EXPECT_TRUE(searchChaos(base, options).empty());
+}
+
 // Nothing chaotic near a periodic Thomas (b well above the onset of chaos at 0.208): the search
 // widens its strength by itself, reporting its tries and the strength, before giving up.
 TEST(ChaosSearch, WidensItsStrengthUntilItFindsChaos) {

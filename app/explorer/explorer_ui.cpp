@@ -158,7 +158,6 @@ void explorerUiFrame(ExplorerState& state) {
   collectSearch(document, panels.explore, services);
   updateAnalysis(document, panels.explore, services);
   updateFlatView(document, panels.flat, services, frame);
-  drawFlatView(panels.flat, services, frame);
   advancePlayback(document, panels.timeline, panels.prompts);
   patternWindow(ui, panels.pattern, panels.explore, panels.flat, services, scale);
   viewWindow(ui, panels.scene, panels.prompts, services, scale);
@@ -169,6 +168,9 @@ void explorerUiFrame(ExplorerState& state) {
   placeView(frame, scale);
   dimLastBoundedPicture(frame);
   drawExportFrame(frame, services);
+  // Over the volume's picture in the view's rectangle, placed by this frame's panels. Not dimmed
+  // with the volume: the flat view renders the pattern the sliders say, escaping or not.
+  drawFlatView(panels.flat, services, frame);
   statusBar(frame, panels.explore, panels.status, scale);
   noticeWindow(frame, panels.prompts, scale);
   // Read after the panels, which make a widget active on the frame it is pressed: an edit on that

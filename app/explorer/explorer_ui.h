@@ -39,6 +39,8 @@ struct UiProbe {
     float centerY() const { return 0.5f * (minY + maxY); }
   };
   std::map<std::string, Rect> items;
+  // The words some of them show, by the same names, where a test reads them (a label, a caption).
+  std::map<std::string, std::string> texts;
 };
 
 // What panels ask of the window loop, which owns files, GL and the session; cleared each frame.
@@ -128,6 +130,9 @@ struct PromptsState {
     std::filesystem::path path;
     std::vector<std::string> names;  // every flame of the file, in order
     char filter[64] = "";
+    // The next frame gives the filter the keyboard: when the list opens, and after an Enter that
+    // took nothing (ImGui lets go of a field on Enter).
+    bool focusFilter = true;
   };
   std::optional<FlameChoice> flameChoice;
   bool quitPrompt = false;     // the Save / Discard / Cancel prompt is open
@@ -135,11 +140,13 @@ struct PromptsState {
 };
 
 // The flat view (issue 25): the first flame layer rendered in 2D as flam3 frames it
-// (core/flat_render.h), shown over the viewport while `on`. It renders off the main thread whenever
-// the layer, the tone or the framing change.
+// (core/flat_render.h), shown in the view's rectangle between the panels while `on`, at that
+// rectangle's pixel size. It renders off the main thread whenever the layer, the tone, the framing
+// or the rectangle's size change.
 struct FlatViewState {
   bool on = false;
-  core::Scene rendered;  // what the job renders or rendered: the flame layer, tone and framing
+  core::Scene rendered;        // what the job renders or rendered: the flame layer, tone and framing
+  glm::ivec2 renderedSize{0};  // ... and at what size, in pixels
   std::uint64_t checkedRevision = ~std::uint64_t{0};  // the document revision `rendered` was last checked at
   std::string message;
 };

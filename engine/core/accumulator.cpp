@@ -467,6 +467,18 @@ std::vector<PreparedLayer> prepareLayers(const std::vector<PatternLayer>& layers
   return prepared;
 }
 
+bool runsBounded(const PatternLayer& layer, std::uint64_t seed) {
+  InsideMask mask;
+  mask.geometry.size = glm::ivec3(8);
+  const InsideBox inside{glm::dvec3(0.0), glm::dvec3(8.0)};
+  try {
+    const std::vector<PreparedLayer> prepared = prepareLayers({layer}, mask, inside, seed);
+    return std::all_of(prepared.begin(), prepared.end(), [](const PreparedLayer& l) { return l.bounded; });
+  } catch (const Error&) {
+    return false;
+  }
+}
+
 // Per-thread state of one layer's orbits, structure of arrays so the advance and classify loops
 // vectorise across orbits.
 struct OrbitBatch {

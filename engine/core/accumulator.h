@@ -117,6 +117,13 @@ PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, co
                            std::uint64_t seed, bool deepSeeds = false);
 PreparedLayer prepareLayer(const PatternLayer& layer, const InsideMask& mask, std::uint64_t seed);
 
+// Whether an Accumulator runs `layer` (in a scene of `seed`) or counts it as escaping (or
+// collapsing, or showing almost nothing): the probe setPattern makes, so the answer is the live
+// view's, whose KeepLastBounded keeps the last pattern instead. The mask only places a bounded
+// pattern, so a small box stands in for the mesh's. A search asks this of a candidate before it
+// hands it back. An invalid layer does not run: false.
+bool runsBounded(const PatternLayer& layer, std::uint64_t seed);
+
 // A copy of the grid for rendering: raw density (hits) and average colour per voxel.
 struct VolumeSnapshot {
   GridGeometry geometry;

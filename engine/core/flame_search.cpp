@@ -290,8 +290,8 @@ void nudgeXaos(FlameGenome& g, SplitMix64& rng, double strength) {
   }
 }
 
-template <class Candidate, class Make, class Measure>
-std::vector<Candidate> runSearch(const FlameSearchOptions& options, Make make, Measure measure) {
+template <class Candidate, class Make, class Measure, class Accept>
+std::vector<Candidate> runSearch(const FlameSearchOptions& options, Make make, Measure measure, Accept accept) {
   std::vector<Candidate> pool;
   const auto wanted = static_cast<std::size_t>(std::max(1, options.count) * std::max(1, options.poolPerResult));
   for (int i = 0; i < options.maxCandidates && pool.size() < wanted && !options.stop.stop_requested(); ++i) {
@@ -303,7 +303,7 @@ std::vector<Candidate> runSearch(const FlameSearchOptions& options, Make make, M
     } catch (const Error&) {
       continue;  // an invalid candidate (cannot happen for valid inputs) is simply not kept
     }
-    if (candidate->fill.passes) pool.push_back(std::move(*candidate));
+    if (candidate->fill.passes && accept(*candidate)) pool.push_back(std::move(*candidate));
   }
   std::stable_sort(pool.begin(), pool.end(),
                    [](const Candidate& a, const Candidate& b) { return a.fill.score > b.fill.score; });
@@ -484,7 +484,8 @@ std::vector<FlameCandidate> searchFlames(const std::optional<FlameGenome>& base,
       [&](const FlameCandidate& c, std::uint64_t seed) {
         validateFlame(c.genome, "candidate");
         return measureFlameFill(c.genome, seed, options.fill);
-      });
+      },
+      [&](const FlameCandidate& c) { return !options.acceptFlame || options.acceptFlame(c.genome); });
 }
 
 std::vector<JuliaCandidate> searchQuaternionJulia(const std::optional<QuaternionJuliaSettings>& base,
@@ -501,7 +502,8 @@ std::vector<JuliaCandidate> searchQuaternionJulia(const std::optional<Quaternion
       [&](const JuliaCandidate& c, std::uint64_t seed) {
         validateQuaternionJulia(c.julia, "candidate");
         return measureJuliaFill(c.julia, seed, options.fill);
-      });
+      },
+      [&](const JuliaCandidate& c) { return !options.acceptJulia || options.acceptJulia(c.julia); });
 }
 
 }  // namespace voxflame::core

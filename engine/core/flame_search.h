@@ -11,6 +11,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -93,6 +94,11 @@ struct FlameSearchOptions {
   QuaternionJuliaSettings juliaView;  // Julia sets without a base: the view, turn and slice kept
   FillCriteria fill;
   std::stop_token stop;  // a stop request ends the search early with what it found
+  // When set, a candidate that passes the fill test is kept only if this says yes: the explorer
+  // asks whether its live view runs it bounded (runsBounded, accumulator.h). Each search asks the
+  // one of its kind.
+  std::function<bool(const FlameGenome&)> acceptFlame;
+  std::function<bool(const QuaternionJuliaSettings&)> acceptJulia;
 };
 
 struct FlameCandidate {

@@ -172,7 +172,7 @@ std::vector<SearchResult> searchChaos(const OrbitSpec& base, const SearchOptions
     }
     // Half the candidates start from the base start, half from a jittered one: basins move with
     // the parameters, and a nearby start often lands in the new one.
-    const double jitter = (candidate % 2 == 0) ? 0.0 : 0.5;
+    const double jitter = (candidate % 2 == 0 || !options.jitterStart) ? 0.0 : 0.5;
     spec.start += jitter * glm::dvec3(rng.symmetric(), rng.symmetric(), rng.symmetric());
     if (options.tried) options.tried->fetch_add(1, std::memory_order_relaxed);
     const OrbitAnalysis screen = analyseOrbit(spec, options.screen);
@@ -181,6 +181,7 @@ std::vector<SearchResult> searchChaos(const OrbitSpec& base, const SearchOptions
     const OrbitAnalysis confirm = analyseOrbit(spec, options.confirm);
     if (confirm.verdict != OrbitVerdict::Chaotic) continue;
     if (confirm.smallestExtent() < options.minExtentRatio * confirm.largestExtent()) continue;
+    if (options.accept && !options.accept(spec.params)) continue;
     found.push_back({spec.params, spec.start, confirm});
   }
   if (found.empty() && options.widenTo > options.strength && !options.stop.stop_requested()) {

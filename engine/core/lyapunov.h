@@ -10,6 +10,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <stop_token>
 #include <string>
 #include <vector>
@@ -85,6 +86,13 @@ struct SearchOptions {
   double widenTo = 0.0;
   std::atomic<int>* tried = nullptr;           // counts the candidates as they are tried (progress), if set
   std::atomic<double>* strengthNow = nullptr;  // the strength being tried now, if set
+  // Half the candidates start from a point near the base's start (basins move with the
+  // parameters), and a result says where. A caller whose orbits always start at the base's start
+  // (the explorer's layers hold no start) turns this off, so every analysis is of its own orbit.
+  bool jitterStart = true;
+  // When set, a candidate that passed the analysis is kept only if this says yes: the explorer
+  // asks whether its live view runs the parameters bounded (runsBounded, accumulator.h).
+  std::function<bool(const std::vector<double>& params)> accept;
 };
 
 struct SearchResult {

@@ -15,6 +15,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "core/accumulator.h"
 #include "core/attractor.h"
 #include "core/camera.h"
 #include "core/color.h"
@@ -112,7 +113,10 @@ std::string fillText(const core::FillReport& fill) {
 
 // Search (fresh) draws new patterns near nothing; Mutate (and "Find a nearby one") moves the
 // current one by `strength`. Attractors always search near their parameters, as before; flames
-// and Julia sets use the fill test of flame_search.h.
+// and Julia sets use the fill test of flame_search.h. Whatever a search finds, the live view runs
+// bounded: each candidate that passes the search's own test must also pass the probe the
+// accumulator makes (core::runsBounded) with the scene's seed, else the view would keep the last
+// bounded pattern under the sliders of one that escapes.
 void startSearch(const Document& document, ExplorePanelState& explore, Services& services, double strength,
                  bool fresh) {
   if (services.search.busy() || document.scene.layers.empty()) return;  // one at a time
@@ -120,12 +124,23 @@ void startSearch(const Document& document, ExplorePanelState& explore, Services&
   try {
     const core::PatternLayer layer = document.scene.layers.front();
     const std::uint64_t seed = explore.searchSeed++;
+    const std::uint64_t sceneSeed = document.scene.seed;
     if (layer.isChaosGame()) {
       core::FlameSearchOptions options;
       options.seed = seed;
       options.count = 1;
       options.strength = strength;
       options.juliaView = layer.julia;
+      options.acceptFlame = [layer, sceneSeed](const core::FlameGenome& genome) {
+        core::PatternLayer candidate = layer;
+        candidate.flame = genome;
+        return core::runsBounded(candidate, sceneSeed);
+      };
+      options.acceptJulia = [layer, sceneSeed](const core::QuaternionJuliaSettings& julia) {
+        core::PatternLayer candidate = layer;
+        candidate.julia = julia;
+        return core::runsBounded(candidate, sceneSeed);
+      };
       services.searchTried.reset();  // the flame and Julia searches count no tries
       services.searchStrength.reset();
       explore.searchMessage = "searching…";
@@ -165,6 +180,14 @@ void startSearch(const Document& document, ExplorePanelState& explore, Services&
     // Nothing nearby: it widens by itself, a few hundred tries at each strength, before giving up.
     options.widenTo = std::max(strength, core::kSearchWidenTo);
     options.maxCandidates = core::kSearchTriesPerStrength;
+    // The layer's orbits start at the attractor's start, so the analysis the message quotes is of
+    // the orbit the view runs, not of one from a nearby start that the layer cannot hold.
+    options.jitterStart = false;
+    options.accept = [layer, sceneSeed](const std::vector<double>& params) {
+      core::PatternLayer candidate = layer;
+      candidate.params = params;
+      return core::runsBounded(candidate, sceneSeed);
+    };
     services.searchTried = std::make_shared<std::atomic<int>>(0);
     services.searchStrength = std::make_shared<std::atomic<double>>(strength);
     explore.searchMessage = "searching…";

@@ -197,39 +197,52 @@ void variationsEditor(Ui& ui, PatternPanelState& pattern, const std::string& sco
     const core::VariationInfo* info = core::findVariation(term.name);
     const std::string vscope = scope + "var" + std::to_string(v) + "/";
     ImGui::PushID(static_cast<int>(v));
-    // The weight slider is labelled with the variation's name; its formula is the tooltip.
+    // The weight slider, its remove button, then the variation's name where labels go (or above,
+    // when it is too long for them); its formula is the tooltip.
+    const bool nameBeside = labelFitsBeside(ui, term.name, vscope + "weight");
+    if (!nameBeside) labelAbove(ui, term.name, vscope + "weight");
     const double minW = -2.0, maxW = 2.0;
     ImGui::SetNextItemWidth(ImGui::CalcItemWidth() - ImGui::GetFrameHeight() - ImGui::GetStyle().ItemSpacing.x);
     reportEdit(ui,
-               ImGui::SliderScalar((term.name + "##weight").c_str(), ImGuiDataType_Double, &term.weight, &minW, &maxW,
-                                   "weight %.3f", kClamp),
+               ImGui::SliderScalar("##weight", ImGuiDataType_Double, &term.weight, &minW, &maxW, "weight %.3f", kClamp),
                core::Affects::Pattern);
     probe(ui, vscope + "weight");
-    if (ImGui::IsItemHovered() && !ImGui::IsItemActive() && info) ImGui::SetTooltip("%s", info->formula.c_str());
+    if (ImGui::IsItemHovered() && !ImGui::IsItemActive())
+      ImGui::SetTooltip("%s\n%s", term.name.c_str(), info ? info->formula.c_str() : "");
     ImGui::SameLine();
     if (ImGui::SmallButton("x")) removeIndex = v;
     probe(ui, vscope + "remove");
+    if (nameBeside) {
+      ImGui::SameLine();
+      ImGui::TextUnformatted(term.name.c_str());
+    }
     if (info && term.params.size() == info->params.size()) {
       ImGui::Indent();
       for (std::size_t p = 0; p < info->params.size(); ++p) {
         const core::VariationParam& param = info->params[p];
-        const std::string label = term.name + " " + param.name;
+        // Under its variation's row, a parameter is named by itself, its words apart ("center x"):
+        // the variation's name before it left no room for the axis that tells its three apart.
+        std::string label = param.name;
+        std::replace(label.begin(), label.end(), '_', ' ');
         ImGui::PushID(static_cast<int>(p));
+        const bool beside = labelFitsBeside(ui, label, vscope + param.name);
+        if (!beside) labelAbove(ui, label, vscope + param.name);
+        const std::string widgetLabel = beside ? label : "##" + label;
         if (param.integer) {
           int value = static_cast<int>(std::lround(term.params[p]));
           if (reportEdit(ui,
-                         ImGui::SliderInt(label.c_str(), &value, static_cast<int>(std::ceil(param.sliderMin)),
+                         ImGui::SliderInt(widgetLabel.c_str(), &value, static_cast<int>(std::ceil(param.sliderMin)),
                                           static_cast<int>(std::floor(param.sliderMax)), "%d", kClamp),
                          core::Affects::Pattern))
             term.params[p] = value;
         } else {
           reportEdit(ui,
-                     ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &term.params[p], &param.sliderMin,
+                     ImGui::SliderScalar(widgetLabel.c_str(), ImGuiDataType_Double, &term.params[p], &param.sliderMin,
                                          &param.sliderMax, "%.3f", kClamp),
                      core::Affects::Pattern);
         }
         probe(ui, vscope + param.name);
-        parameterResetMenu(ui, term.params[p], param.defaultValue, "right-click to reset");
+        parameterReset(ui, term.params[p], param.defaultValue, "right-click to reset", term.name + " " + param.name);
         ImGui::PopID();
       }
       ImGui::Unindent();

@@ -37,7 +37,8 @@ struct Ui;
 // flat_view.cpp
 core::Scene flatViewScene(const core::Scene& scene);
 void updateFlatView(const Document& document, FlatViewState& flat, Services& services, FrameOutputs& frame);
-void drawFlatView(const FlatViewState& flat, const Services& services, const FrameOutputs& frame);
+glm::ivec2 flatViewSize(const core::FlatViewSettings& flat, const glm::ivec4& viewRect);
+void drawFlatView(const FlatViewState& flat, const Services& services, FrameOutputs& frame);
 
 // explore_panel.cpp
 std::string analysisKey(const core::PatternLayer& layer);

@@ -222,7 +222,7 @@ void attractorEditor(Ui& ui, PatternPanelState& pattern, const std::string& scop
                                                                     core::kAttractorParameterLimit)
                                                        : param.defaultValue;
     markIfKeyed(ui, valuePath(scope, "params/" + param.name), scope + param.name);
-    parameterResetMenu(ui, layer.params[p], param.defaultValue, "Ctrl+click to type, right-click to reset");
+    parameterReset(ui, layer.params[p], param.defaultValue, "Ctrl+click to type, right-click to reset");
   }
   if (current.kind == core::AttractorKind::Flow) {
     int integrator = layer.integrator == core::Integrator::RK4 ? 1 : 0;

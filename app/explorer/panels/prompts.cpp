@@ -80,7 +80,8 @@ void recoveryWindow(Ui& ui, std::vector<Recoverable>& offered, float scale) {
 }
 
 // "Which flame?": the flames of a file opened with several, by name (filtered by words), to import
-// one; Escape or Cancel imports none.
+// one; Escape or Cancel imports none. The filter has the keyboard from the start, and Enter takes
+// the one flame it leaves.
 void flameChoiceWindow(Ui& ui, PromptsState& prompts, Settings& settings, float scale) {
   if (!prompts.flameChoice) return;
   PromptsState::FlameChoice& choice = *prompts.flameChoice;
@@ -88,16 +89,41 @@ void flameChoiceWindow(Ui& ui, PromptsState& prompts, Settings& settings, float 
   ImGui::TextWrapped("%s holds %zu flames. Import which one?", choice.path.filename().string().c_str(),
                      choice.names.size());
   ImGui::SetNextItemWidth(-1);
-  ImGui::InputTextWithHint("##flamefilter", "filter by name", choice.filter, sizeof choice.filter);
+  if (std::exchange(choice.focusFilter, false)) takeKeyboard(ui);
+  const bool enter = ImGui::InputTextWithHint("##flamefilter", "filter by name", choice.filter, sizeof choice.filter,
+                                              ImGuiInputTextFlags_EnterReturnsTrue);
+  probe(ui, "flame/filter");
   noteTyped(ui, "flame filter", choice.filter);
   const std::string filter = lowercase(choice.filter);
+  // Every word of the filter, anywhere in the name.
+  std::vector<std::string> words;
+  {
+    std::istringstream split(filter);
+    for (std::string word; split >> word;) words.push_back(word);
+  }
+  std::vector<std::size_t> matches;
+  for (std::size_t i = 0; i < choice.names.size(); ++i) {
+    const std::string name = lowercase(choice.names[i]);
+    if (std::all_of(words.begin(), words.end(),
+                    [&](const std::string& w) { return name.find(w) != std::string::npos; }))
+      matches.push_back(i);
+  }
+  if (!words.empty()) {
+    if (matches.empty())
+      dimText("no flame matches");
+    else if (matches.size() == 1)
+      dimText("Enter: %s", choice.names[matches.front()].c_str());
+    else
+      dimText("%zu flames match", matches.size());
+  }
   std::optional<std::size_t> chosen;
+  if (enter && matches.size() == 1) chosen = matches.front();
+  if (enter && !chosen) choice.focusFilter = true;
   ImGui::BeginChild("flames", ImVec2(0, std::min(12.0f, static_cast<float>(choice.names.size())) *
                                                 ImGui::GetTextLineHeightWithSpacing() +
                                             8 * scale));
-  for (std::size_t i = 0; i < choice.names.size(); ++i) {
+  for (const std::size_t i : matches) {
     const std::string& name = choice.names[i];
-    if (!filter.empty() && lowercase(name).find(filter) == std::string::npos) continue;
     std::string label = std::to_string(i + 1);
     label += ". ";
     label += name;

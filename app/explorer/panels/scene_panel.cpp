@@ -133,7 +133,10 @@ void renderSection(Ui& ui, ScenePanelState& scenePanel, Services& services) {
   // 0 reads "never": the slider's left end is refining until the next edit.
   double& stopAt = services.settings.refineUntilNoisePercent;
   const double low = 0.0, high = 10.0;
-  ImGui::SliderScalar("stop refining at noise", ImGuiDataType_Double, &stopAt, &low, &high,
+  const char* stopLabel = "stop refining at noise";
+  const bool stopBeside = labelFitsBeside(ui, stopLabel, "render/stop_refining_at_noise");
+  if (!stopBeside) labelAbove(ui, stopLabel, "render/stop_refining_at_noise");
+  ImGui::SliderScalar(stopBeside ? stopLabel : "##stop refining at noise", ImGuiDataType_Double, &stopAt, &low, &high,
                       stopAt <= 0.0 ? "at the cap" : "%.2f%%", ImGuiSliderFlags_Logarithmic);
   probe(ui, "render/stop_refining_at_noise");
   stopAt = std::clamp(stopAt, 0.0, 100.0);
@@ -362,7 +365,9 @@ void viewWindow(Ui& ui, ScenePanelState& scenePanel, PromptsState& prompts, Serv
   ImGui::PushItemWidth(-120 * scale);
   if (ImGui::CollapsingHeader("Mesh", ImGuiTreeNodeFlags_DefaultOpen)) meshSection(ui, scenePanel, services);
   if (ImGui::CollapsingHeader("Render", ImGuiTreeNodeFlags_DefaultOpen)) renderSection(ui, scenePanel, services);
-  if (ImGui::CollapsingHeader("Camera")) cameraSection(ui);
+  const bool cameraOpen = ImGui::CollapsingHeader("Camera");
+  probe(ui, "header/Camera");
+  if (cameraOpen) cameraSection(ui);
   const bool presetsOpen = ImGui::CollapsingHeader("Presets");
   probe(ui, "header/Presets");
   if (presetsOpen) presetsSection(ui.frame, scenePanel, prompts, services, scale);

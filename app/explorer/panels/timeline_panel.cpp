@@ -124,11 +124,13 @@ void timelineWindow(Ui& ui, TimelinePanelState& timeline, PromptsState& prompts,
   // Docked under the picture, between the side panels, above the status line.
   const float statusHeight = statusBarHeight(scale);
   const float left = ui.frame.layout.left, right = std::max(ui.frame.layout.right, left + 1.0f);
-  // Room for up to four animated values' rows; more scroll.
+  // Room for up to four animated values' rows; more scroll. The scrubber's key ticks have a strip
+  // of their own under it.
   const auto rows = static_cast<float>(std::min<std::size_t>(ui.document.scene.keyframes.size(), 4) + 1);
+  const float tickHeight = 6 * scale;
   const float height = 2 * ImGui::GetFrameHeightWithSpacing() + rows * ImGui::GetTextLineHeightWithSpacing() +
                        ImGui::GetFrameHeight() + 2 * ImGui::GetStyle().WindowPadding.y +
-                       ImGui::GetTextLineHeightWithSpacing();
+                       ImGui::GetTextLineHeightWithSpacing() + tickHeight + ImGui::GetStyle().ItemSpacing.y;
   ImGui::SetNextWindowPos(ImVec2(left, io.DisplaySize.y - statusHeight), ImGuiCond_Always, ImVec2(0.0f, 1.0f));
   ImGui::SetNextWindowSize(ImVec2(right - left, height), ImGuiCond_Always);
   ImGui::Begin("Timeline", nullptr,
@@ -206,7 +208,8 @@ void timelineWindow(Ui& ui, TimelinePanelState& timeline, PromptsState& prompts,
   ImGui::SameLine();
   reportEdit(ui, ImGui::Checkbox("loop", &scene.animation.loop), core::field(core::animationFields(), "loop").affects);
 
-  // The scrubber, with a tick for every key time.
+  // The scrubber, with a tick for every key time in a strip under it: inside it they covered the
+  // time it shows.
   double time = now;
   const double zero = 0.0;
   ImGui::SetNextItemWidth(-1);
@@ -217,43 +220,62 @@ void timelineWindow(Ui& ui, TimelinePanelState& timeline, PromptsState& prompts,
   probe(ui, "timeline/time");
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
   const float grab = ImGui::GetStyle().GrabMinSize;
+  ImGui::Dummy(ImVec2(max.x - min.x, tickHeight));
+  probe(ui, "timeline/ticks");
+  const float tickTop = ImGui::GetItemRectMin().y;
   for (double t : times) {
     const float x = min.x + grab * 0.5f + static_cast<float>(t / length) * (max.x - min.x - grab);
-    ImGui::GetWindowDrawList()->AddTriangleFilled(ImVec2(x - 4 * scale, max.y), ImVec2(x + 4 * scale, max.y),
-                                                  ImVec2(x, max.y - 6 * scale), IM_COL32(255, 190, 90, 255));
+    ImGui::GetWindowDrawList()->AddTriangleFilled(ImVec2(x - 4 * scale, tickTop + tickHeight),
+                                                  ImVec2(x + 4 * scale, tickTop + tickHeight), ImVec2(x, tickTop),
+                                                  IM_COL32(255, 190, 90, 255));
   }
   if (scene.keyframes.empty()) {
     dimText("no keyframes: move the time, change something, press Key");
   } else {
     if (!timeline.timelineMessage.empty()) dimText("%s", timeline.timelineMessage.c_str());
-    // One row per animated value: its name, then its keys as ticks over the animation's length
-    // (right of the names); a value with one key holds still.
-    const float nameWidth = 170 * scale;
+    // One row per animated value: its name, then its keys as ticks over the animation's length,
+    // in a column right of every name (the longest sets it, up to half the row; a name longer than
+    // that is shortened, whole in its tooltip); a value with one key holds still.
+    const char* holdsText = "(one key: holds still)";
+    const float spacing = ImGui::GetStyle().ItemSpacing.x;
+    const float mark = 4 * scale;  // a key's half width
+    float namesWidth = 0.0f;
+    for (const core::KeyframeTrack& track : scene.keyframes)
+      namesWidth = std::max(namesWidth, ImGui::CalcTextSize(trackName(track.path).c_str()).x +
+                                            (track.keys.size() == 1 ? spacing + ImGui::CalcTextSize(holdsText).x : 0));
+    const float nameWidth = std::min(std::max(namesWidth, 160 * scale), 0.5f * (max.x - min.x));
+    const float rowLeft = min.x + nameWidth + spacing + mark;
+    const float rowRight = std::max(rowLeft + 1.0f, max.x - grab * 0.5f);
     for (const core::KeyframeTrack& track : scene.keyframes) {
       const bool holds = track.keys.size() == 1;
-      const std::string name = trackName(track.path);
+      // Where both do not fit, the name and "holds still" share the column.
+      const float holdsWidth = holds ? std::min(spacing + ImGui::CalcTextSize(holdsText).x, 0.5f * nameWidth) : 0.0f;
+      const std::string name = fittedText(trackName(track.path), nameWidth - holdsWidth);
+      const ImVec2 row = ImGui::GetCursorScreenPos();
       ImGui::TextUnformatted(name.c_str());
       probe(ui, "timeline/track/" + track.path);
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", track.path.c_str());
-      if (holds) {
+      probeText(ui, "timeline/track/" + track.path, name);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s%s", track.path.c_str(), holds ? "\none key: holds still" : "");
+      const std::string holdsShown =
+          holds ? fittedText(holdsText, nameWidth - ImGui::CalcTextSize(name.c_str()).x - spacing) : std::string();
+      if (!holdsShown.empty()) {
         ImGui::SameLine();
-        ImGui::TextColored(kDimColor, "(one key: holds still)");
+        ImGui::TextColored(kDimColor, "%s", holdsShown.c_str());
         probe(ui, "timeline/track/" + track.path + "/holds");
       }
-      ImGui::SameLine(std::max(nameWidth, ImGui::GetCursorPosX()));
-      const ImVec2 row = ImGui::GetCursorScreenPos();
       const float rowHeight = ImGui::GetTextLineHeight();
-      const float rowLeft = row.x + 6 * scale, rowRight = std::max(rowLeft + 1.0f, max.x - grab * 0.5f);
       ImDrawList* draw = ImGui::GetWindowDrawList();
       draw->AddLine(ImVec2(rowLeft, row.y + 0.5f * rowHeight), ImVec2(rowRight, row.y + 0.5f * rowHeight),
                     IM_COL32(110, 115, 130, 255));
       for (const core::Keyframe& key : track.keys) {
         const float x = rowLeft + static_cast<float>(key.time / std::max(length, 1e-9)) * (rowRight - rowLeft);
-        draw->AddQuadFilled(ImVec2(x, row.y + 1), ImVec2(x + 4 * scale, row.y + 0.5f * rowHeight),
-                            ImVec2(x, row.y + rowHeight - 1), ImVec2(x - 4 * scale, row.y + 0.5f * rowHeight),
+        draw->AddQuadFilled(ImVec2(x, row.y + 1), ImVec2(x + mark, row.y + 0.5f * rowHeight),
+                            ImVec2(x, row.y + rowHeight - 1), ImVec2(x - mark, row.y + 0.5f * rowHeight),
                             IM_COL32(255, 190, 90, 255));
       }
-      ImGui::Dummy(ImVec2(1, rowHeight));
+      if (ui.frame.probe)
+        ui.frame.probe->items["timeline/track/" + track.path + "/keys"] =
+            UiProbe::Rect{rowLeft - mark, row.y, rowRight + mark, row.y + rowHeight};
     }
   }
   ImGui::End();

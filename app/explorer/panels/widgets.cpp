@@ -54,6 +54,41 @@ void probe(FrameOutputs& frame, const std::string& name) {
   frame.probe->items[name] = UiProbe::Rect{min.x, min.y, max.x, max.y};
 }
 
+void probeText(FrameOutputs& frame, const std::string& name, const std::string& text) {
+  if (frame.probe) frame.probe->texts[name] = text;
+}
+
+bool labelFitsBeside(FrameOutputs& frame, const std::string& label, const std::string& probeName) {
+  probeText(frame, probeName, label);
+  // ImGui shows a window's content up to half its padding from its edge.
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float room = ImGui::GetContentRegionAvail().x - ImGui::CalcItemWidth() - style.ItemInnerSpacing.x +
+                     std::floor(0.5f * style.WindowPadding.x);
+  return ImGui::CalcTextSize(label.c_str()).x <= room;
+}
+
+std::string fittedText(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  const char* ellipsis = "…";
+  const float ellipsisWidth = ImGui::CalcTextSize(ellipsis).x;
+  if (width < ellipsisWidth) return {};
+  std::size_t length = text.size();
+  // Whole UTF-8 characters only: a cut never leaves half of one.
+  while (length > 0) {
+    do --length;
+    while (length > 0 && (static_cast<unsigned char>(text[length]) & 0xC0) == 0x80);
+    if (ImGui::CalcTextSize(text.data(), text.data() + length).x + ellipsisWidth <= width) break;
+  }
+  return text.substr(0, length) + ellipsis;
+}
+
+void labelAbove(FrameOutputs& frame, const std::string& label, const std::string& probeName) {
+  ImGui::PushTextWrapPos(0.0f);
+  ImGui::TextUnformatted(label.c_str());
+  ImGui::PopTextWrapPos();
+  probe(frame, probeName + "/label");
+}
+
 // After a text field: what it now holds, when it changed this frame and typing is recorded.
 void noteTyped(FrameOutputs& frame, const char* field, const char* text) {
   if (frame.recordTyping && ImGui::IsItemEdited()) frame.typedThisFrame.emplace_back(field, text);
@@ -105,12 +140,22 @@ bool reportEdit(Document& document, bool changed, core::Affects affects) {
   return changed;
 }
 
-void parameterResetMenu(Ui& ui, double& value, double defaultValue, const char* hint) {
-  if (ImGui::BeginPopupContextItem()) {
-    if (reportEdit(ui, ImGui::Selectable("Reset to default"), core::Affects::Pattern)) value = defaultValue;
-    ImGui::EndPopup();
+bool resetClicked() {
+  // Hovered, not focused: the last item of some widgets (a colour editor, a vector's sliders) is
+  // their group, which has no id of its own to open a menu on.
+  return ImGui::IsItemHovered() && ImGui::IsMouseClicked(ImGuiMouseButton_Right);
+}
+
+void parameterReset(Ui& ui, double& value, double defaultValue, const char* hint, const std::string& name) {
+  if (resetClicked()) {
+    value = defaultValue;
+    ui.document.edited(core::Affects::Pattern);
   }
-  if (ImGui::IsItemHovered() && !ImGui::IsItemActive()) ImGui::SetTooltip("default %.4g — %s", defaultValue, hint);
+  if (!ImGui::IsItemHovered() || ImGui::IsItemActive()) return;
+  if (name.empty())
+    ImGui::SetTooltip("default %.4g — %s", defaultValue, hint);
+  else
+    ImGui::SetTooltip("%s\ndefault %.4g — %s", name.c_str(), defaultValue, hint);
 }
 
 std::string lowercase(std::string text) {

@@ -39,6 +39,18 @@ float statusBarHeight(float scale);
 IM_FMTARGS(1) void dimText(const char* format, ...);
 // Records the last widget's rectangle under `name` when a test set FrameOutputs::probe.
 void probe(FrameOutputs& frame, const std::string& name);
+// Records `text` as what the widget `name` shows, when a test set FrameOutputs::probe.
+void probeText(FrameOutputs& frame, const std::string& name, const std::string& text);
+// Whether `label` fits beside the next widget, in the room the panel keeps right of its widgets
+// (PushItemWidth). A label that does not goes on a line of its own above the widget instead, so no
+// label is cut at the panel's edge: the caller draws it there (labelAbove) and gives the widget an
+// id alone ("##..."). Records the label under `probeName`.
+bool labelFitsBeside(FrameOutputs& frame, const std::string& label, const std::string& probeName);
+// `text` when it is at most `width` wide, else as much of it as fits before an ellipsis ("…"),
+// or nothing where not even the ellipsis fits.
+std::string fittedText(const std::string& text, float width);
+// A label on a line of its own, wrapped at the panel's edge; probed as `probeName` + "/label".
+void labelAbove(FrameOutputs& frame, const std::string& label, const std::string& probeName);
 // After a text field: what it now holds, when it changed this frame and typing is recorded.
 void noteTyped(FrameOutputs& frame, const char* field, const char* text);
 bool slider(FrameOutputs& frame, const std::string& scope, const char* label, double& value, double min, double max,
@@ -57,10 +69,14 @@ void takeKeyboard(FrameOutputs& frame);
 // affects (Document::edited); returns `changed`. Every panel edit of the scene goes through here or
 // through fieldWidget, which reports its row's class.
 bool reportEdit(Document& document, bool changed, core::Affects affects);
-// The right-click menu and tooltip of the last widget, for a number no schema table holds (an
-// attractor's or a variation's parameter): "Reset to default", reported as a pattern edit, and a
-// tooltip with the default and `hint`.
-void parameterResetMenu(Ui& ui, double& value, double defaultValue, const char* hint);
+// Whether the last widget was right-clicked in this frame: what resets a value to its default at
+// once, with no menu to confirm it (Ctrl+Z undoes it like any edit).
+bool resetClicked();
+// The right-click reset and the tooltip of the last widget, for a number no schema table holds (an
+// attractor's or a variation's parameter): back to `defaultValue`, reported as a pattern edit, and
+// a tooltip with the default and `hint`, after `name` when that is given (a label too long for the
+// panel shows whole there).
+void parameterReset(Ui& ui, double& value, double defaultValue, const char* hint, const std::string& name = {});
 std::string lowercase(std::string text);
 bool keyDown(int key);
 
@@ -74,30 +90,37 @@ bool fieldWidget(Ui& ui, const std::string& scope, Owner& owner, core::Table<Own
   const core::Field<Owner>& f = core::field(table, key);
   const std::string label(f.ui.label);
   const std::string format(f.ui.format);
+  const std::string probed = probeName ? std::string(probeName) : scope + label;
+  // A check box's label follows its box; every other widget's goes where labels go, or above the
+  // widget when it is too long for the room there.
+  const bool beside = std::holds_alternative<bool Owner::*>(f.member) || labelFitsBeside(ui, label, probed);
+  if (!beside) labelAbove(ui, label, probed);
+  const std::string shown = beside ? label : "##" + label;
   const ImGuiSliderFlags flags =
       ImGuiSliderFlags_AlwaysClamp | (f.ui.logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
   const bool changed = std::visit(
       [&]<class M>(const M& member) -> bool {
         if constexpr (std::is_same_v<M, double Owner::*>) {
           const double min = f.ui.min, max = f.ui.max;
-          return ImGui::SliderScalar(label.c_str(), ImGuiDataType_Double, &(owner.*member), &min, &max, format.c_str(),
+          return ImGui::SliderScalar(shown.c_str(), ImGuiDataType_Double, &(owner.*member), &min, &max, format.c_str(),
                                      flags);
         } else if constexpr (std::is_same_v<M, int Owner::*>) {
-          return ImGui::SliderInt(label.c_str(), &(owner.*member), static_cast<int>(f.ui.min),
+          return ImGui::SliderInt(shown.c_str(), &(owner.*member), static_cast<int>(f.ui.min),
                                   static_cast<int>(f.ui.max), format.c_str(), flags);
         } else if constexpr (std::is_same_v<M, bool Owner::*>) {
           return ImGui::Checkbox(label.c_str(), &(owner.*member));
         } else if constexpr (std::is_same_v<M, glm::vec3 Owner::*>) {
           const glm::vec3 srgb = core::linearToSrgb(owner.*member);
           float rgb[3] = {srgb.r, srgb.g, srgb.b};
-          if (!ImGui::ColorEdit3(label.c_str(), rgb)) return false;
+          // Without the editor's own right-click menu: a right-click resets here as everywhere.
+          if (!ImGui::ColorEdit3(shown.c_str(), rgb, ImGuiColorEditFlags_NoOptions)) return false;
           owner.*member = core::srgbToLinear(glm::vec3(rgb[0], rgb[1], rgb[2]));
           return true;
         } else if constexpr (std::is_same_v<M, glm::dvec3 Owner::*>) {
           glm::dvec3& value = owner.*member;
           double v[3] = {value.x, value.y, value.z};
           const double min = f.ui.min, max = f.ui.max;
-          if (!ImGui::SliderScalarN(label.c_str(), ImGuiDataType_Double, v, 3, &min, &max, format.c_str(), flags))
+          if (!ImGui::SliderScalarN(shown.c_str(), ImGuiDataType_Double, v, 3, &min, &max, format.c_str(), flags))
             return false;
           const glm::dvec3 chosen(v[0], v[1], v[2]);
           // An axis must not be the zero vector (the reader refuses it): keep the last one.
@@ -108,7 +131,7 @@ bool fieldWidget(Ui& ui, const std::string& scope, Owner& owner, core::Table<Own
           int index = member.get(owner);
           std::string items;
           for (std::string_view name : member.names) (items += name) += '\0';
-          if (!ImGui::Combo(label.c_str(), &index, items.c_str())) return false;
+          if (!ImGui::Combo(shown.c_str(), &index, items.c_str())) return false;
           member.set(owner, index);
           return true;
         } else {
@@ -116,17 +139,11 @@ bool fieldWidget(Ui& ui, const std::string& scope, Owner& owner, core::Table<Own
         }
       },
       f.member);
-  const std::string probed = probeName ? std::string(probeName) : scope + label;
   probe(ui, probed);
   markIfKeyed(ui, valuePath(scope, key), probed);
-  // Right-click: back to the default, as the pattern sliders do (a default-made owner holds it).
-  bool reset = false;
-  // A named popup: the last item of some widgets (a colour editor's label) has no id of its own.
-  if (ImGui::BeginPopupContextItem(("reset##" + probed).c_str())) {
-    reset = ImGui::Selectable("Reset to default");
-    probe(ui, probed + "/reset");
-    ImGui::EndPopup();
-  }
+  // Right-click: back to the default at once, as the pattern sliders do (a default-made owner
+  // holds it).
+  const bool reset = resetClicked();
   if (reset) {
     static const Owner defaults{};
     std::visit(
