@@ -11,8 +11,10 @@
 #include "core/flame_image.h"
 #include "core/packed_volume.h"
 #include "core/scene_io.h"
+#include "gl/canvas.h"
 #include "gl/flame_finisher.h"
 #include "gl/headless_context.h"
+#include "gl/volume_renderer.h"
 #include "pipeline.h"
 
 using namespace voxflame;
@@ -95,6 +97,59 @@ core::DensityImage syntheticDensity(int width, int height, double hitsPerUnit) {
 }
 
 }  // namespace
+
+TEST(GpuFinishStrips, APictureFinishedInStripsIsThePictureFinishedWhole) {
+  // The live view finishes a points picture a strip at a time (VolumeRenderer::finishStrip) while
+  // the last whole one stays up; the strips, each with its apron, make the same pixels as one
+  // finish of the whole (the sums supersampled, as the points method makes them).
+  gl::HeadlessContext context;
+  gl::VolumeRenderer renderer;
+  constexpr int kOversample = 2, kOutWidth = 90, kOutHeight = 70;
+  const core::DensityImage density = syntheticDensity(kOutWidth * kOversample, kOutHeight * kOversample, 40.0);
+  gl::RenderSettings settings;
+  settings.tone.estimatorRadius = 6.0;
+  settings.tone.estimatorMinimum = 0.0;
+  settings.tone.background = glm::vec3(0.05f, 0.0f, 0.1f);
+  settings.render.filterRadius = 0.8;
+  gl::Canvas whole(kOutWidth, kOutHeight), strips(kOutWidth, kOutHeight);
+  ASSERT_TRUE(whole.complete() && strips.complete());
+  gl::FrameTarget wholeTarget, stripTarget;
+  wholeTarget.setSums(density, kOversample);
+  EXPECT_EQ(wholeTarget.width(), kOutWidth);
+  EXPECT_EQ(wholeTarget.height(), kOutHeight);
+  glBindFramebuffer(GL_FRAMEBUFFER, whole.framebuffer());
+  renderer.resolve(wholeTarget, settings, glm::ivec4(0, 0, kOutWidth, kOutHeight), false);
+
+  stripTarget.setSums(density, kOversample);
+  EXPECT_FALSE(renderer.drawFinished(stripTarget, glm::ivec4(0, 0, kOutWidth, kOutHeight)))
+      << "nothing is whole before the last strip";
+  int calls = 1;
+  while (!renderer.finishStrip(stripTarget, settings, 8)) ++calls;
+  EXPECT_EQ(calls, (kOutHeight + 7) / 8) << "one strip of 8 rows a call";
+  EXPECT_TRUE(renderer.finishStrip(stripTarget, settings, 8)) << "a finished picture is not finished again";
+  glBindFramebuffer(GL_FRAMEBUFFER, strips.framebuffer());
+  ASSERT_TRUE(renderer.drawFinished(stripTarget, glm::ivec4(0, 0, kOutWidth, kOutHeight)));
+
+  const std::vector<std::uint8_t> a = whole.pixels(), b = strips.pixels();
+  ASSERT_EQ(a.size(), b.size());
+  std::size_t differing = 0, lit = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    differing += std::abs(int(a[i]) - int(b[i])) > 1 ? 1 : 0;
+    lit += a[i] > 40 ? 1 : 0;
+  }
+  EXPECT_GT(lit, a.size() / 20) << "the picture shows the density";
+  EXPECT_LE(differing, a.size() / 1000) << "the strips' seams show";
+
+  // New sums: the old whole picture stays drawn until the new one is whole.
+  core::DensityImage brighter = density;
+  for (float& value : brighter.values) value *= 4.0f;
+  stripTarget.setSums(brighter, kOversample);
+  EXPECT_FALSE(renderer.finishStrip(stripTarget, settings, 8));
+  glBindFramebuffer(GL_FRAMEBUFFER, strips.framebuffer());
+  ASSERT_TRUE(renderer.drawFinished(stripTarget, glm::ivec4(0, 0, kOutWidth, kOutHeight)));
+  EXPECT_EQ(strips.pixels(), b) << "a half-finished picture was drawn";
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+}
 
 TEST_P(GpuFinishGolden, AgreesWithTheCpuReference) {
   const GoldenScene golden = GetParam();
