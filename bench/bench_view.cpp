@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <numeric>
 #include <optional>
@@ -169,6 +170,11 @@ void benchView(const BenchOptions& options) {
       std::string output;
       if (app::runProgram(arguments[0], arguments, &output, true) == 0) {
         const core::ImageRGBA render = core::readPng(exported).image;
+        // VOXFLAME_BENCH_IMAGES names a folder to keep both pictures in, to set side by side.
+        if (const char* folder = std::getenv("VOXFLAME_BENCH_IMAGES")) {
+          core::writePng(std::filesystem::path(folder) / (path.stem().string() + "-view.png"), final, 8, {});
+          core::writePng(std::filesystem::path(folder) / (path.stem().string() + "-export.png"), render, 8, {});
+        }
         measurement["ssim_vs_export"] = core::ssimLuma(final, render);
         measurement["luminance_ratio_vs_export"] =
             core::meanLinearLuminance(final) / std::max(1e-9, core::meanLinearLuminance(render));

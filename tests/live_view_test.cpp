@@ -676,4 +676,22 @@ TEST_F(LiveViewTest, APointsViewBuildsUpRestartsWhenTheCameraMovesAndAtRestIsAnE
   EXPECT_LT(core::ssimLuma(shown, image), core::ssimLuma(shown, imageBefore)) << "the turned view is another picture";
 }
 
+TEST_F(LiveViewTest, APointsViewWhosePatternEscapesRestsOnTheLastBoundedVolume) {
+  // The grid keeps the last bounded pattern while the scene's escapes (b = 1.55 on escapes with
+  // the default preset's step): the points cannot be projected, so the volume picture refines and
+  // the view comes to rest on it.
+  edit([&](core::Scene& scene) {
+    scene.render.method = core::RenderMethod::Points;
+    scene.points = 2'000'000;
+  });
+  app::LiveView view(session, nullptr, nullptr);
+  ASSERT_TRUE(runUntilRest(session, state, view, [&] { frame(view); }));
+  ASSERT_TRUE(state.frame.view.pointsShown);
+  edit([&](core::Scene& scene) { scene.layers[0].params[1] = 2.0; });
+  ASSERT_TRUE(runUntilRest(session, state, view, [&] { frame(view); })) << "the view never rested";
+  EXPECT_FALSE(session.status().escapeNote.empty());
+  EXPECT_FALSE(state.frame.view.pointsShown) << "the points of a pattern that escapes were shown";
+  EXPECT_GT(canvas.brightest(), 40) << "the last bounded volume is shown";
+}
+
 }  // namespace

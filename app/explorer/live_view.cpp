@@ -268,7 +268,8 @@ bool LiveView::marchBands(const gl::RenderSettings& settings, bool still, double
 
 bool LiveView::resting() const {
   if (uploadInProgress_ || shadowJob_.busy() || shadowJob_.ready() || points_.working()) return false;
-  if (pointsMethod_ && !pointsFailed_) return pointsShown_ && pointsCurrent_ && points_.progress().finished;
+  if (pointsMethod_ && !pointsFailed_ && !pointsBlocked_)
+    return pointsShown_ && pointsCurrent_ && points_.progress().finished;
   return settled_ || target_.samples >= kMaxSamples;
 }
 
@@ -283,7 +284,16 @@ void LiveView::stopPoints() {
 
 bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, const gl::RenderSettings& settings,
                             bool still, int width, int height) {
+  pointsBlocked_ = false;
   if (!pointsMethod_) {
+    if (pointsKey_) stopPoints();
+    return false;
+  }
+  // While the pattern escapes the grid shows the last bounded one, which the scene no longer
+  // holds: the volume picture stays, refined and resting as under the volume method.
+  const SessionStatus status = session_.status();
+  pointsBlocked_ = status.showingLastBounded || !status.escapeNote.empty();
+  if (pointsBlocked_) {
     if (pointsKey_) stopPoints();
     return false;
   }
@@ -507,8 +517,8 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
     // A still volume picture whose samples just doubled (from kFirstSettledCheck on) is compared
     // with the one before the doubling: once no pixel moves visibly, refining stops.
     const int passSamples = target_.samples;
-    if (newPicture && still && !pointsMethod_ && passSamples >= kFirstSettledCheck &&
-        (passSamples & (passSamples - 1)) == 0 && scale == 1.0f)
+    if (newPicture && still && (!pointsMethod_ || pointsFailed_ || pointsBlocked_) &&
+        passSamples >= kFirstSettledCheck && (passSamples & (passSamples - 1)) == 0 && scale == 1.0f)
       checkSettled(framebuffer, place, passSamples);
     result.volumeDrawn = true;
   } else {

@@ -177,8 +177,9 @@ class LiveView {
   gl::FrameTarget pointsTarget_;
   bool pointsHavePicture_ = false;  // pointsTarget_ holds a picture of the run under way
   bool pointsShown_ = false;
-  bool pointsFailed_ = false;                   // the run for pointsKey_ stopped on an error: the volume picture stays
-  bool pointsCurrent_ = true;                   // the picture drawn is the newest taken, finished whole
+  bool pointsFailed_ = false;   // the run for pointsKey_ stopped on an error: the volume picture stays
+  bool pointsBlocked_ = false;  // the pattern escapes: the grid shows the last bounded one, not the scene's
+  bool pointsCurrent_ = true;   // the picture drawn is the newest taken, finished whole
   double pointsNextShare_ = kPointsShownShare;  // of the points, for the next picture taken
   bool pointsMethod_ = false;                   // of the last frame's scene
   std::uint64_t lastPost_ = 0;                  // the newest post made
