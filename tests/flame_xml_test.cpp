@@ -481,10 +481,13 @@ TEST(FlameXml, FlatFlamesGainAdjustableDepth) {
 
 TEST(FlameXml, ImportedSceneIsACompletePresetThatLoadsBack) {
   const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, hexPaletteBlock(), "gamma=\"3\""), "s.flame").flame;
+  ASSERT_EQ(defaultScene().render.method, RenderMethod::Volume);
   const Scene scene = sceneFromImportedFlame(flame, defaultScene());
   ASSERT_EQ(scene.layers.size(), 1u);
   EXPECT_EQ(scene.layers[0].kind, PatternKind::Flame);
   EXPECT_EQ(scene.layers[0].color.mode, ColorMode::Index);
+  // Opened over an attractor's scene (the explorer's open), a flame still shows its filaments.
+  EXPECT_EQ(scene.render.method, RenderMethod::Points);
   EXPECT_EQ(scene.layers[0].color.gradient.size(), 256u);
   EXPECT_EQ(scene.name, "hand");
   EXPECT_DOUBLE_EQ(scene.tone.gamma, 3.0);

@@ -1450,6 +1450,9 @@ Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base) {
   }
   scene.tone = flame.tone;
   scene.flat = flame.flat;
+  // Whatever the scene it replaces had: a flame's filaments survive projecting every point (the
+  // flam3 way), and ray-marching the grid blurs them to the voxel size.
+  scene.render.method = defaultRenderMethod(scene.layers);
   scene.animation = AnimationSettings{};
   scene.keyframes.clear();
   return scene;

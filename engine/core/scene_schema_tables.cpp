@@ -605,7 +605,8 @@ const RF kRenderFields[] = {
      .help = "how stills are made: ray-march the voxel grid, or project every point into a supersampled screen "
              "histogram (pixel-fine filaments; the grid only dims points by the density in front of them). The "
              "explorer previews with `volume`",
-     .affects = kStill},
+     .affects = kStill,
+     .defaultText = "`volume` (`points` when a layer is a flame)"},
     {.key = "oversample",
      .member = &RenderSettingsDoc::oversample,
      .min = 1,
