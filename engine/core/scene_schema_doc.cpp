@@ -235,7 +235,9 @@ other variations (`presets/VARIATIONS.md` lists them with their formulas and the
 `pre_`/`post_` forms; `voxflame list --variations`), its `post_` variations, then its optional
 `post` map. Its colour index moves towards the transform's `color` by `color_speed` (flam3's
 blend `c ← (1 − color_speed) · c + color_speed · color`) and indexes the layer's gradient
-(`color.mode` `index`). The `final` transform bends what is drawn without feeding back. The
+(`color.mode` `index`) as flam3 indexes its 256-colour palette: the gradient read at 256
+positions, index c takes entry ⌊256 c⌋ (`flat.palette_mode` `step`, the default) or blends it
+with the next one (`linear`). The `final` transform bends what is drawn without feeding back. The
 layer's `color`, `weight` and `transform` (fit, copies) work as for attractors.
 
 )md";

@@ -703,7 +703,8 @@ const FV kFlatFields[] = {
      .affects = kStill},
     {.key = "palette_mode",
      .member = choice<&FlatViewSettings::paletteMode>(kPaletteModeNames, "palette mode"),
-     .help = "flam3's colour lookup: step takes the palette entry ⌊index · 256⌋, linear blends the two around it",
+     .help = "flam3's colour lookup, in the flat view and in stills in the mesh: step takes the palette entry "
+             "⌊index · 256⌋, linear blends the two around it",
      .affects = kStill},
 };
 
