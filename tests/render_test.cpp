@@ -236,11 +236,17 @@ TEST(HeadlessRender, APatternThatFillsItsMeshCoversMoreOfIt) {
 // flame as flam3 draws it). Cocoons' palette changes from one entry to the next, and its
 // transforms sit on entries (colour k/255) in flam3's linear palette mode: looked up as entry
 // ⌊255 c⌋ without the blend, its gold turned green in the mesh (hue 96° against the flat view's 52°).
+// Ethereal passage was a faint smudge (0.6% of the pixels lit): fitted by the box of its haze, its
+// framed part was a speck, and its palette summed as linear light was too dark to show.
 TEST(ImportedFlame, ItsColoursInTheMeshAreThoseOfItsFlatView) {
   const std::filesystem::path file =
       std::filesystem::path(VOXFLAME_TEST_FLAMES) / "typpos__fractorium__b33rheart_examples.flame";
   ASSERT_TRUE(std::filesystem::exists(file)) << file;
-  for (const char* name : {"Cocoons_by_b33rheart"}) {
+  // Hue tolerances: Ethereal passage's frame is wider than the bunny, which shows its middle, a
+  // little bluer than the pink-tipped arcs at the frame's edges.
+  const std::pair<const char*, double> flames[] = {{"Cocoons_by_b33rheart", 12.0},
+                                                   {"Ethereal_passage_by_b33rheart", 20.0}};
+  for (const auto& [name, tolerance] : flames) {
     SCOPED_TRACE(name);
     core::FlameImportOptions import;
     import.name = name;
@@ -248,19 +254,19 @@ TEST(ImportedFlame, ItsColoursInTheMeshAreThoseOfItsFlatView) {
     scene.render.meshDisplay = core::MeshDisplay::Off;  // the outline's colour is not the flame's
     scene.gridResolution = 96;
     core::FlatRenderOptions flatOptions;
-    flatOptions.width = 200;
-    flatOptions.quality = 40.0;
+    flatOptions.width = 160;
+    flatOptions.quality = 20.0;
     double flatLit = 0.0, meshLit = 0.0;
     const double flatHue = meanHueDegrees(core::renderFlat(scene, flatOptions).image, flatLit);
     app::StillOptions options;
     options.width = 200;
     options.height = 125;
-    options.points = 2'000'000;
+    options.points = 1'000'000;
     options.threads = 2;
     const double meshHue = meanHueDegrees(app::renderStill(scene, options).image, meshLit);
     EXPECT_GT(flatLit, 0.05);
     EXPECT_GT(meshLit, 0.02);
     const double apart = std::abs(std::remainder(meshHue - flatHue, 360.0));
-    EXPECT_LT(apart, 12.0) << "mesh " << meshHue << "°, flat view " << flatHue << "°";
+    EXPECT_LT(apart, tolerance) << "mesh " << meshHue << "°, flat view " << flatHue << "°";
   }
 }

@@ -21,6 +21,7 @@
 #include <glm/trigonometric.hpp>
 #include <glm/vector_relational.hpp>
 
+#include "color.h"
 #include "cpu_features.h"
 #include "error.h"
 #include "order_statistics.h"
@@ -412,9 +413,15 @@ PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3
   prepared.curvatureReference = turns.empty() ? 1.0 : std::max(percentile(turns, 0.95), 1e-12);
 
   const Gradient gradient(layer.color.gradient);
+  // flam3's colour index comes with flam3's palette: its colours are summed and shown as the file
+  // writes them (display-encoded, as the flat view sums them), not as linear light. Summed as
+  // linear light, a flame's palette showed darker and more saturated than flam3 and its flat view
+  // show it (Ethereal passage's blues and pinks, near 0.3 to 0.6, fell to 0.07 to 0.3: a dark smudge).
+  const bool flam3Palette = layer.color.mode == ColorMode::Index;
   prepared.palette.resize(256);
   for (int i = 0; i < 256; ++i) {
-    const glm::vec3 c = glm::clamp(gradient.at(static_cast<float>(i) / 255.0f), 0.0f, 1.0f) * 255.0f + 0.5f;
+    const glm::vec3 linear = gradient.at(static_cast<float>(i) / 255.0f);
+    const glm::vec3 c = glm::clamp(flam3Palette ? linearToSrgb(linear) : linear, 0.0f, 1.0f) * 255.0f + 0.5f;
     prepared.palette[static_cast<std::size_t>(i)] = glm::u8vec3(c);
   }
   prepared.bounded = true;
