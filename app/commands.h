@@ -127,7 +127,7 @@ int importCommand(const ImportArguments& arguments);  // import_command.cpp
 inline constexpr std::uint64_t kImportedFlamePoints = 60'000'000;
 
 // The scene an imported flame goes into when there is no current one: the default preset's mesh
-// and camera, kImportedFlamePoints, the points render method.
+// and camera, kImportedFlamePoints (the points method comes with core::sceneFromImportedFlame).
 core::Scene importBaseScene();
 
 // Reads the flame `options` picks from `path` and makes `scene` from `base` (its mesh, camera and

@@ -39,9 +39,6 @@ void placeMesh(core::Scene& scene, const std::string& mesh, const std::filesyste
 core::Scene importBaseScene() {
   core::Scene base = core::defaultScene();
   base.points = kImportedFlamePoints;
-  // A flame's fine filaments survive projecting every point (the flam3 way) better than
-  // ray-marching the voxel grid, which blurs them to the voxel size.
-  base.render.method = core::RenderMethod::Points;
   return base;
 }
 

@@ -106,6 +106,7 @@ AccumulatedVolume accumulateChunks(const core::Scene& scene, const SceneShape& s
   accumulator.setHeld(true);  // nothing runs until the first chunk's streams are set
   accumulator.setTargetPoints(1);
   accumulator.setDeepSeeds(true);
+  accumulator.setPaletteMode(scene.flat.paletteMode);
   accumulator.setPattern(scene.layers, scene.seed);
   const std::uint64_t iterationLimit = 40 * (target / static_cast<std::uint64_t>(chunks)) + 50'000'000;
   std::uint64_t pointsDone = perChunk ? total.points : 0, iterationsDone = perChunk ? total.iterations : 0;
@@ -201,6 +202,7 @@ AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& s
   // measured against. (A noise target without a count is measured along the way.)
   const std::uint64_t halfway = target < kUntilNoisePointCap ? target / 3 : 0;
   accumulator.setTargetPoints(halfway ? halfway : target);
+  accumulator.setPaletteMode(scene.flat.paletteMode);
   accumulator.setPattern(scene.layers, scene.seed);
   // A pattern that mostly misses the mesh would never reach its target: give up after a
   // generous number of iterations and say how many points landed.

@@ -481,10 +481,21 @@ TEST(FlameXml, FlatFlamesGainAdjustableDepth) {
 
 TEST(FlameXml, ImportedSceneIsACompletePresetThatLoadsBack) {
   const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, hexPaletteBlock(), "gamma=\"3\""), "s.flame").flame;
+  ASSERT_EQ(defaultScene().render.method, RenderMethod::Volume);
   const Scene scene = sceneFromImportedFlame(flame, defaultScene());
   ASSERT_EQ(scene.layers.size(), 1u);
   EXPECT_EQ(scene.layers[0].kind, PatternKind::Flame);
   EXPECT_EQ(scene.layers[0].color.mode, ColorMode::Index);
+  // Opened over an attractor's scene (the explorer's open), a flame still shows its filaments.
+  EXPECT_EQ(scene.render.method, RenderMethod::Points);
+  // Placed as framed: the frame's centre at the mesh's centre, its longer side across the grid.
+  const LayerTransform& placed = scene.layers[0].transform;
+  ASSERT_TRUE(placed.lockFit);
+  EXPECT_DOUBLE_EQ(placed.lockedCenter.x, flame.flat.centerX);
+  EXPECT_DOUBLE_EQ(placed.lockedCenter.y, flame.flat.centerY);
+  const double frame = std::max(flame.flat.width, flame.flat.height) / (flame.flat.scale * std::exp2(flame.flat.zoom));
+  EXPECT_NEAR(placed.lockedScale, defaultScene().gridResolution / frame, 1e-9);
+  EXPECT_FALSE(placed.rotationDeg.x == 0.0 && placed.rotationDeg.y == 0.0) << "turned to face the camera";
   EXPECT_EQ(scene.layers[0].color.gradient.size(), 256u);
   EXPECT_EQ(scene.name, "hand");
   EXPECT_DOUBLE_EQ(scene.tone.gamma, 3.0);

@@ -1,10 +1,18 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "commands.h"
 #include "core/camera.h"
 #include "core/color.h"
 #include "core/flame_image.h"
+#include "core/flame_xml.h"
+#include "core/flat_render.h"
 #include "core/scene_io.h"
 #include "gl/headless_context.h"
 #include "gl/volume_renderer.h"
@@ -34,6 +42,29 @@ void projectedBox(const core::Scene& scene, const core::Box& grid, const core::B
     low = glm::min(low, pixel);
     high = glm::max(high, pixel);
   }
+}
+
+// The mean hue of the lit pixels in degrees, each pixel's hue weighted by its chroma (a mean of
+// directions on the colour wheel, so 350° and 10° average to 0°); `lit` gets their share.
+double meanHueDegrees(const core::ImageRGBA& image, double& lit) {
+  double x = 0.0, y = 0.0;
+  std::size_t count = 0;
+  const std::size_t pixels = static_cast<std::size_t>(image.width) * static_cast<std::size_t>(image.height);
+  for (std::size_t p = 0; p < pixels; ++p) {
+    const float* c = &image.pixels[4 * p];
+    const double high = std::max({c[0], c[1], c[2]}), low = std::min({c[0], c[1], c[2]});
+    const double chroma = high - low;
+    if (high < 0.08 || chroma < 0.03) continue;
+    double hue = high == c[0]   ? std::fmod((c[1] - c[2]) / chroma + 6.0, 6.0)
+                 : high == c[1] ? (c[2] - c[0]) / chroma + 2.0
+                                : (c[0] - c[1]) / chroma + 4.0;
+    hue *= std::numbers::pi / 3.0;
+    x += chroma * std::cos(hue);
+    y += chroma * std::sin(hue);
+    ++count;
+  }
+  lit = static_cast<double>(count) / static_cast<double>(pixels);
+  return std::fmod(std::atan2(y, x) * 180.0 / std::numbers::pi + 360.0, 360.0);
 }
 
 }  // namespace
@@ -199,4 +230,43 @@ TEST(HeadlessRender, APatternThatFillsItsMeshCoversMoreOfIt) {
   const double filling = app::renderStill(full, options).coverage;
   const double shrunk = app::renderStill(small, options).coverage;
   EXPECT_GT(filling, shrunk + 0.2);
+}
+
+// Issue 38: an imported flame reads as itself in the mesh, in the colours of its flat view (the
+// flame as flam3 draws it). Cocoons' palette changes from one entry to the next, and its
+// transforms sit on entries (colour k/255) in flam3's linear palette mode: looked up as entry
+// ⌊255 c⌋ without the blend, its gold turned green in the mesh (hue 96° against the flat view's 52°).
+// Ethereal passage was a faint smudge (0.6% of the pixels lit): fitted by the box of its haze, its
+// framed part was a speck, and its palette summed as linear light was too dark to show.
+TEST(ImportedFlame, ItsColoursInTheMeshAreThoseOfItsFlatView) {
+  const std::filesystem::path file =
+      std::filesystem::path(VOXFLAME_TEST_FLAMES) / "typpos__fractorium__b33rheart_examples.flame";
+  ASSERT_TRUE(std::filesystem::exists(file)) << file;
+  // Hue tolerances: Ethereal passage's frame is wider than the bunny, which shows its middle, a
+  // little bluer than the pink-tipped arcs at the frame's edges.
+  const std::pair<const char*, double> flames[] = {{"Cocoons_by_b33rheart", 12.0},
+                                                   {"Ethereal_passage_by_b33rheart", 20.0}};
+  for (const auto& [name, tolerance] : flames) {
+    SCOPED_TRACE(name);
+    core::FlameImportOptions import;
+    import.name = name;
+    core::Scene scene = core::sceneFromImportedFlame(core::loadFlameFile(file, import).flame, app::importBaseScene());
+    scene.render.meshDisplay = core::MeshDisplay::Off;  // the outline's colour is not the flame's
+    scene.gridResolution = 96;
+    core::FlatRenderOptions flatOptions;
+    flatOptions.width = 160;
+    flatOptions.quality = 20.0;
+    double flatLit = 0.0, meshLit = 0.0;
+    const double flatHue = meanHueDegrees(core::renderFlat(scene, flatOptions).image, flatLit);
+    app::StillOptions options;
+    options.width = 200;
+    options.height = 125;
+    options.points = 1'000'000;
+    options.threads = 2;
+    const double meshHue = meanHueDegrees(app::renderStill(scene, options).image, meshLit);
+    EXPECT_GT(flatLit, 0.05);
+    EXPECT_GT(meshLit, 0.02);
+    const double apart = std::abs(std::remainder(meshHue - flatHue, 360.0));
+    EXPECT_LT(apart, tolerance) << "mesh " << meshHue << "°, flat view " << flatHue << "°";
+  }
 }

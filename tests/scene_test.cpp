@@ -47,6 +47,23 @@ TEST(Scene, MinimalPresetGetsDefaults) {
   EXPECT_EQ(scene.gridResolution, 192);
 }
 
+TEST(Scene, AFlameLayerProjectsItsPointsUnlessThePresetSaysOtherwise) {
+  // Without `render.method`, a scene with a flame layer takes the points method, any other the
+  // volume method; a method the preset names is kept either way, and it is what a saved scene says.
+  const std::string flame = R"({"kind":"flame","flame":{"xforms":[{"affine":[0.5,0,0,0, 0,0.5,0,0, 0,0,0.5,0]}]}})";
+  const auto load = [](const std::string& layers, const std::string& render) {
+    return sceneFromJson(R"({"mesh":{"path":"m.obj"},"layers":[)" + layers + "]" + render + "}", "m.json");
+  };
+  EXPECT_EQ(load(R"({"attractor":"lorenz84"})", "").render.method, RenderMethod::Volume);
+  EXPECT_EQ(load(flame, "").render.method, RenderMethod::Points);
+  EXPECT_EQ(load(R"({"attractor":"lorenz84"},)" + flame, "").render.method, RenderMethod::Points);
+  EXPECT_EQ(load(flame, R"(,"render":{"method":"volume"})").render.method, RenderMethod::Volume);
+  EXPECT_EQ(load(R"({"attractor":"lorenz84"})", R"(,"render":{"method":"points"})").render.method,
+            RenderMethod::Points);
+  const Scene volumeFlame = load(flame, R"(,"render":{"method":"volume"})");
+  EXPECT_EQ(sceneFromJson(sceneToJson(volumeFlame), "again.json").render.method, RenderMethod::Volume);
+}
+
 TEST(Scene, SerialisedSceneLoadsBackEqual) {
   const Scene scene = defaultScene();
   const std::string text = sceneToJson(scene);

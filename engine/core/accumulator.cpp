@@ -21,6 +21,7 @@
 #include <glm/trigonometric.hpp>
 #include <glm/vector_relational.hpp>
 
+#include "color.h"
 #include "cpu_features.h"
 #include "error.h"
 #include "order_statistics.h"
@@ -412,9 +413,15 @@ PreparedLayer finishPreparedLayer(PreparedLayer prepared, std::vector<glm::dvec3
   prepared.curvatureReference = turns.empty() ? 1.0 : std::max(percentile(turns, 0.95), 1e-12);
 
   const Gradient gradient(layer.color.gradient);
+  // flam3's colour index comes with flam3's palette: its colours are summed and shown as the file
+  // writes them (display-encoded, as the flat view sums them), not as linear light. Summed as
+  // linear light, a flame's palette showed darker and more saturated than flam3 and its flat view
+  // show it (Ethereal passage's blues and pinks, near 0.3 to 0.6, fell to 0.07 to 0.3: a dark smudge).
+  const bool flam3Palette = layer.color.mode == ColorMode::Index;
   prepared.palette.resize(256);
   for (int i = 0; i < 256; ++i) {
-    const glm::vec3 c = glm::clamp(gradient.at(static_cast<float>(i) / 255.0f), 0.0f, 1.0f) * 255.0f + 0.5f;
+    const glm::vec3 linear = gradient.at(static_cast<float>(i) / 255.0f);
+    const glm::vec3 c = glm::clamp(flam3Palette ? linearToSrgb(linear) : linear, 0.0f, 1.0f) * 255.0f + 0.5f;
     prepared.palette[static_cast<std::size_t>(i)] = glm::u8vec3(c);
   }
   prepared.bounded = true;
@@ -565,16 +572,18 @@ struct LayerKernel {
   // 1 for flows, 0 for maps: a flow's point is placed at a uniformly random spot of its last step,
   // so the orbit is drawn as the continuous curve it samples instead of a dotted stroboscope.
   double alongStep;
-  double colorScale;  // mode value × colorScale = gradient position (before clamping to [0, 1])
+  double colorScale;   // mode value × colorScale = gradient position (before clamping to [0, 1])
+  double indexDither;  // 1: a colour index takes the next palette entry with the fraction's chance (linear)
   double inversePeriod;
   double axis[3];
   double axisOffset;
   double center[3];
 };
 
-LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid, const ColourLayout& colour,
-                       int slabShift) {
+LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid, const ColourLayout& colour, int slabShift,
+                       PaletteMode paletteMode) {
   LayerKernel k{};
+  k.indexDither = paletteMode == PaletteMode::Linear ? 1.0 : 0.0;
   const glm::dvec3 axisScale = layer.fit.axisScale * layer.fit.scale;
   const glm::dmat3 m =
       layer.fit.rotation * glm::dmat3(glm::dvec3(axisScale.x, 0.0, 0.0), glm::dvec3(0.0, axisScale.y, 0.0),
@@ -618,7 +627,11 @@ LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid, con
       k.colorScale = color.scale / layer.distanceReference;
       break;
     case ColorMode::Index:
-      k.colorScale = color.scale;
+      // flam3's palette lookup: a colour index c takes entry ⌊256 c⌋ (the last one from 255/256
+      // on), not ⌊255 c⌋. Flames put their transforms' colours on entries (c = k/255) of
+      // palettes that change from one entry to the next, so the lower entry would give them
+      // other colours than the flat view and flam3 show.
+      k.colorScale = color.scale * 256.0 / 255.0;
       break;
   }
   k.axisOffset = layer.axisLow;
@@ -672,6 +685,13 @@ template <ColorMode kMode, Output kOut>
       value = std::sqrt(ex * ex + ey * ey + ez * ez);
     }
     double t = value * k.colorScale * 255.0;
+    if constexpr (kMode == ColorMode::Index) {
+      // flam3's linear palette mode: the entry above with the chance of the fraction. The draw
+      // is kept only then, so a step-mode render's jitters stay what they were (a select, no branch).
+      const std::uint32_t r = xorshift32(noise[i]);
+      noise[i] = k.indexDither > 0.0 ? r : noise[i];
+      t += k.indexDither * (jitterOffset(r) + 0.5);
+    }
     t = finite ? t : 0.0;
     t = std::min(std::max(t, 0.0), 255.0);
     colorIndex[i] = static_cast<std::int32_t>(t);
@@ -947,6 +967,7 @@ void Accumulator::setPattern(const std::vector<PatternLayer>& layers, std::uint6
     layers_ = std::move(prepared);
     seed_ = seed;
     deposit_ = requestedDeposit_.load();
+    paletteMode_ = requestedPaletteMode_.load();
     sink_ = requestedSink_.load();
     {
       std::lock_guard problemLock(problemMutex_);
@@ -1050,6 +1071,10 @@ void Accumulator::makeSlabCurrent(std::size_t slab) {
 
 void Accumulator::setDeposit(Deposit deposit) {
   requestedDeposit_ = deposit;
+}
+
+void Accumulator::setPaletteMode(PaletteMode mode) {
+  requestedPaletteMode_ = mode;
 }
 
 void Accumulator::setPointSink(PointSink* sink) {
@@ -1439,7 +1464,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
     // A layer's weight is its share of the iterations, hence of the density it adds.
     const int fullSteps = std::max(1, static_cast<int>(std::lround(kStepsPerBatch * layer.layer.weight / maxWeight)));
     const int steps = std::max(1, static_cast<int>(std::ceil(fullSteps * stepFraction)));
-    const LayerKernel kernel = makeKernel(layer, grid, colour_, slabShift_);
+    const LayerKernel kernel = makeKernel(layer, grid, colour_, slabShift_, paletteMode_);
     const ClassifyFn classify = classifier(layer.layer.color.mode, output);
     std::uint32_t packedPalette[256];
     for (std::size_t c = 0; c < 256; ++c)

@@ -285,6 +285,11 @@ class Accumulator {
                   WhenEscaping whenEscaping = WhenEscaping::Clear);
   // How points are added to the grid (default Jittered). Takes effect at the next setPattern.
   void setDeposit(Deposit deposit);
+  // How colour index layers (ColorMode::Index) look up their gradient, as flam3 does (the scene's
+  // flat.palette_mode): Step takes entry ⌊256 c⌋; Linear blends it with the next entry by the
+  // fraction of 256 c, here by taking the next entry with that probability, which sums to the
+  // blend in every voxel and pixel. Default Step. Takes effect at the next setPattern.
+  void setPaletteMode(PaletteMode mode);
   // When a sink is set, accepted points go to it instead of the grid (they still count as points
   // towards the target and in stats). Set it before setPattern; nullptr restores grid deposits.
   // The sink must outlive the pattern's generation. Positions are exact (never jittered) and the
@@ -401,6 +406,8 @@ class Accumulator {
   // What setDeposit / setPointSink asked for, and what the current generation uses (copied by
   // setPattern under gridMutex_, so a running batch never sees them change).
   std::atomic<Deposit> requestedDeposit_{Deposit::Jittered};
+  std::atomic<PaletteMode> requestedPaletteMode_{PaletteMode::Step};
+  PaletteMode paletteMode_ = PaletteMode::Step;  // guarded by gridMutex_
   std::atomic<PointSink*> requestedSink_{nullptr};
   Deposit deposit_ = Deposit::Jittered;  // guarded by gridMutex_
   PointSink* sink_ = nullptr;            // guarded by gridMutex_

@@ -10,16 +10,20 @@
 #include <map>
 #include <mutex>
 #include <limits>
+#include <numbers>
 #include <numeric>
 #include <optional>
 #include <set>
 #include <sstream>
 
 #include <glm/common.hpp>
+#include <glm/mat3x3.hpp>
 #include <pugixml.hpp>
 
+#include "chaos_game.h"
 #include "error.h"
 #include "flame_variations.h"
+#include "random.h"
 
 namespace voxflame::core {
 
@@ -1427,6 +1431,109 @@ FlameFileContents loadFlameFile(const std::filesystem::path& path, const FlameIm
   return readFlameXml(bytes.str(), path.string(), options);
 }
 
+namespace {
+
+// How much of the mesh the flat view's frame takes: its longer side spans the mesh's longest
+// axis (grid.resolution voxels), and the depth of the points drawn inside it (5–95%) this share
+// of that side, so the layers a flat flame gains fill the mesh's thickness about as its frame
+// fills the mesh's width.
+constexpr double kFrameDepthShare = 0.6;
+constexpr std::size_t kDepthProbeLanes = 256;
+constexpr int kDepthProbeTransient = 20, kDepthProbeSteps = 200;
+
+// The z of points the flame draws inside the frame: where the flame's depth lies (its median) and
+// how far it spreads. All drawn points when too few fall inside the frame. Empty when none stay finite.
+std::vector<double> framedDepths(const PatternLayer& layer, const FlatViewSettings& flat, double frame) {
+  std::vector<double> inside, all;
+  try {
+    const ChaosGame game(layer, "the imported flame");
+    SplitMix64 rng(1);
+    ChaosLanes lanes;
+    lanes.resize(kDepthProbeLanes);
+    for (std::size_t i = 0; i < kDepthProbeLanes; ++i) game.seedLane(lanes, i, rng);
+    std::vector<double> x(kDepthProbeLanes), y(kDepthProbeLanes), z(kDepthProbeLanes), color(kDepthProbeLanes);
+    for (int step = 0; step < kDepthProbeTransient + kDepthProbeSteps; ++step) {
+      game.step(lanes, x.data(), y.data(), z.data(), color.data(), kDepthProbeLanes);
+      for (std::size_t i = 0; i < kDepthProbeLanes; ++i) {
+        if (!std::isfinite(x[i]) || !std::isfinite(y[i]) || !std::isfinite(z[i])) {
+          game.seedLane(lanes, i, rng);
+          continue;
+        }
+        if (step < kDepthProbeTransient || !lanes.visible[i]) continue;
+        all.push_back(z[i]);
+        if (std::abs(x[i] - flat.centerX) <= 0.5 * frame && std::abs(y[i] - flat.centerY) <= 0.5 * frame)
+          inside.push_back(z[i]);
+      }
+    }
+  } catch (const Error&) {
+    return {};  // a genome the chaos game refuses keeps the automatic fit
+  }
+  return inside.size() >= 100 ? inside : all;
+}
+
+// Euler angles (degrees, about x, then y, then z: LayerTransform::rotationDeg) of a rotation
+// matrix R = Rz · Ry · Rx.
+glm::dvec3 eulerDegrees(const glm::dmat3& r) {
+  // glm is column-major: r[column][row].
+  const double x = std::atan2(r[1][2], r[2][2]);
+  const double y = std::asin(std::clamp(-r[0][2], -1.0, 1.0));
+  const double z = std::atan2(r[0][1], r[0][0]);
+  return glm::dvec3(x, y, z) * (180.0 / std::numbers::pi);
+}
+
+glm::dmat3 turnAbout(int axis, double degrees) {
+  const double a = degrees * std::numbers::pi / 180.0, c = std::cos(a), s = std::sin(a);
+  glm::dmat3 m(1.0);
+  const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+  m[i][i] = c;
+  m[i][j] = s;
+  m[j][i] = -s;
+  m[j][j] = c;
+  return m;
+}
+
+// Places an imported flame in the mesh as its author framed it in 2D (the flat view), instead of
+// fitting the box of all its points: flames often scatter a faint haze far beyond the part their
+// author framed (Ethereal passage's frame is a twentieth of its robust box, which left the framed
+// flame a faint speck in the bunny). A locked fit puts the frame's centre at the mesh's centre and
+// its longer side across the mesh's longest axis. The rotation turns the frame as flam3 turns it,
+// puts the flat view's top (its first rows, the smaller y) up on screen, and faces the frame to
+// the scene's camera: the flame's depth then runs along the view instead of smearing its picture
+// sideways (Ethereal passage's depth comes from 3D variations and has no order a viewer could
+// read). Returns false, changing nothing, when there is no sensible frame or the flame draws
+// nothing finite.
+bool placeAsFramed(std::vector<PatternLayer>& layers, const FlatViewSettings& flat, const CameraSettings& camera,
+                   int gridResolution) {
+  const double pixelsPerUnit = flat.scale * std::exp2(flat.zoom);
+  const double frame = static_cast<double>(std::max(flat.width, flat.height)) / pixelsPerUnit;  // flame units
+  if (!std::isfinite(frame) || frame <= 0.0 || layers.empty()) return false;
+  std::vector<double> depths = framedDepths(layers.front(), flat, frame);
+  if (depths.empty()) return false;
+  const auto at = [&](double fraction) {
+    const auto nth = depths.begin() + static_cast<std::ptrdiff_t>(fraction * static_cast<double>(depths.size() - 1));
+    std::nth_element(depths.begin(), nth, depths.end());
+    return *nth;
+  };
+  const double low = at(0.05), middle = at(0.5), high = at(0.95);
+  // A flame without depth (imported with --depth 0) keeps its z as it is: there is nothing to spread.
+  const double depthScale = high - low > 1e-9 ? std::clamp(kFrameDepthShare * frame / (high - low), 1e-6, 1e6) : 1.0;
+  LayerTransform& first = layers.front().transform;
+  first.lockFit = true;
+  first.lockedCenter = glm::dvec3(flat.centerX, flat.centerY, middle);
+  first.lockedScale = std::clamp(static_cast<double>(gridResolution) / frame, 1e-9, 1e9);
+  first.lockedAxisScale = glm::dvec3(1.0, 1.0, depthScale);
+  // Read from the right: about z by −rotate and about x by 180° are flam3's turn seen the right way
+  // up (x by 180° turns y, and z to stay a rotation, over); then the frame's normal (+z) turns to
+  // the eye: down by the elevation, round by the azimuth (camera.cpp's orbit). The other layers
+  // take the first one's fit (FitMode::Previous) and this turn.
+  const glm::dmat3 turn = turnAbout(1, camera.azimuthDeg) * turnAbout(0, -camera.elevationDeg) * turnAbout(0, 180.0) *
+                          turnAbout(2, -flat.rotateDeg);
+  for (PatternLayer& layer : layers) layer.transform.rotationDeg = eulerDegrees(turn);
+  return true;
+}
+
+}  // namespace
+
 Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base) {
   Scene scene = base;
   scene.name = flame.name;
@@ -1448,8 +1555,12 @@ Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base) {
     scene.layers.push_back(flameLayer(other.genome, other.palette, other.weight));
     scene.layers.back().transform.fit = FitMode::Previous;
   }
+  placeAsFramed(scene.layers, flame.flat, base.camera, base.gridResolution);
   scene.tone = flame.tone;
   scene.flat = flame.flat;
+  // Whatever the scene it replaces had: a flame's filaments survive projecting every point (the
+  // flam3 way), and ray-marching the grid blurs them to the voxel size.
+  scene.render.method = defaultRenderMethod(scene.layers);
   scene.animation = AnimationSettings{};
   scene.keyframes.clear();
   return scene;

@@ -101,7 +101,10 @@ bool addFlameDepth(FlameGenome& genome, double depth);
 // A complete scene showing the imported flame: `base` with its layers replaced by one flame layer
 // (colour index mode over the flame's palette) and one more per layer of otherLayers, each with
 // its weight, the others fitted with the first (FitMode::Previous) so they stay in register; the
-// flame's tone keys and 2D framing, its name, no animation.
+// flame's tone keys and 2D framing, its name, the points method (defaultRenderMethod), no animation.
+// The first layer's locked fit and every layer's rotation put the flat view's frame in the mesh,
+// facing base's camera (presets/SCHEMA.md, "Imported flames"), from a short chaos game of the
+// flame for the depth of what it draws inside the frame.
 Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base);
 
 }  // namespace voxflame::core

@@ -374,6 +374,7 @@ DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const Inside
     accumulator.setHeld(true);  // nothing runs until the first chunk's streams are set
     accumulator.setTargetPoints(1);
     accumulator.setDeepSeeds(true);
+    accumulator.setPaletteMode(scene.flat.paletteMode);
     accumulator.setPattern(scene.layers, scene.seed);
     // A pattern that mostly misses the mesh would never reach its target: stop after as many
     // iterations as the grid pass allows.

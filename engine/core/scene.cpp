@@ -1,5 +1,7 @@
 #include "scene.h"
 
+#include <algorithm>
+
 #include "enum_names.h"
 #include "error.h"
 
@@ -26,6 +28,12 @@ Enum fromNameOrThrow(std::span<const std::string_view> names, std::string_view n
 
 std::string_view toString(RenderMethod method) {
   return enumName(kRenderMethodNames, method);
+}
+
+RenderMethod defaultRenderMethod(const std::vector<PatternLayer>& layers) {
+  const bool flame = std::any_of(layers.begin(), layers.end(),
+                                 [](const PatternLayer& layer) { return layer.kind == PatternKind::Flame; });
+  return flame ? RenderMethod::Points : RenderMethod::Volume;
 }
 
 std::string_view toString(ColorMode mode) {

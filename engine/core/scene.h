@@ -184,6 +184,9 @@ inline constexpr std::string_view kMeshDisplayNames[] = {"off", "ghost", "silhou
 enum class RenderMethod { Volume, Points };
 inline constexpr std::string_view kRenderMethodNames[] = {"volume", "points"};
 std::string_view toString(RenderMethod method);
+// The method a scene has when its preset names none: `points` when a layer is a flame (its
+// filaments are finer than a voxel, and the volume method blurs them to the grid), else `volume`.
+RenderMethod defaultRenderMethod(const std::vector<PatternLayer>& layers);
 
 // How a frame is drawn; none of it restarts accumulation.
 struct RenderSettingsDoc {

@@ -235,7 +235,10 @@ other variations (`presets/VARIATIONS.md` lists them with their formulas and the
 `pre_`/`post_` forms; `voxflame list --variations`), its `post_` variations, then its optional
 `post` map. Its colour index moves towards the transform's `color` by `color_speed` (flam3's
 blend `c ← (1 − color_speed) · c + color_speed · color`) and indexes the layer's gradient
-(`color.mode` `index`). The `final` transform bends what is drawn without feeding back. The
+(`color.mode` `index`) as flam3 indexes its 256-colour palette: the gradient read at 256
+positions, index c takes entry ⌊256 c⌋ (`flat.palette_mode` `step`, the default) or blends it
+with the next one (`linear`), and the colours are summed as written (sRGB), as flam3 sums them, not
+as linear light as the other colour modes are. The `final` transform bends what is drawn without feeding back. The
 layer's `color`, `weight` and `transform` (fit, copies) work as for attractors.
 
 )md";
@@ -368,6 +371,14 @@ transform's variations (2D ones multiply z by the sum W of their weights) z' = �
 so k = ½ / W and t = depth · s / W, with s from −1 (the transform of lowest colour) to +1 (the
 highest) and depth 0.5 unless `--depth` says otherwise. Edit `k` and `t` to change the layering
 after import; `t` = 0 for every transform flattens the flame.
+
+The layer's `transform` places the flame as its author framed it (the `flat` block): its
+`locked_fit` puts the frame's centre (`center`, with the median depth of the points drawn inside
+the frame) at the mesh's centre, at `scale` = `grid.resolution` / the frame's longer side in flame
+units, so that side spans the mesh's longest axis, and its `axis_scale` z makes the depth of those
+points (5–95%) 0.6 of that side. `rotation_deg` turns the frame by −`rotate` about z, by 180°
+about x (the flat view's top up on screen) and then to face the camera the scene had. The preset's
+`render.method` is `points`.
 )md";
   return out;
 }

@@ -507,6 +507,7 @@ Scene sceneFromDocument(const json& document, std::string_view sourceName,
 
   readBlock(root, "tone", toneFields(), scene.tone, &toneFailure);
   readBlock(root, "camera", cameraFields(), scene.camera, &cameraFailure);
+  scene.render.method = defaultRenderMethod(scene.layers);
   readBlock(root, "render", renderFields(), scene.render);
   readBlock(root, "animation", animationFields(), scene.animation);
   readBlock(root, "flat", flatFields(), scene.flat);

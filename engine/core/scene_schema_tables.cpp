@@ -605,7 +605,8 @@ const RF kRenderFields[] = {
      .help = "how stills are made: ray-march the voxel grid, or project every point into a supersampled screen "
              "histogram (pixel-fine filaments; the grid only dims points by the density in front of them). The "
              "explorer previews with `volume`",
-     .affects = kStill},
+     .affects = kStill,
+     .defaultText = "`volume` (`points` when a layer is a flame)"},
     {.key = "oversample",
      .member = &RenderSettingsDoc::oversample,
      .min = 1,
@@ -702,7 +703,8 @@ const FV kFlatFields[] = {
      .affects = kStill},
     {.key = "palette_mode",
      .member = choice<&FlatViewSettings::paletteMode>(kPaletteModeNames, "palette mode"),
-     .help = "flam3's colour lookup: step takes the palette entry ⌊index · 256⌋, linear blends the two around it",
+     .help = "flam3's colour lookup, in the flat view and in stills in the mesh: step takes the palette entry "
+             "⌊index · 256⌋, linear blends the two around it",
      .affects = kStill},
 };
 
