@@ -45,6 +45,18 @@ TEST(FrameBudgetTest, TheFirstSlowFrameAlreadyReacts) {
   EXPECT_LE(budget.next(true, 1.0f), 0.5f) << "a frame of four budgets halves the scale at once";
 }
 
+TEST(FrameBudgetTest, APredictedPassCostSetsTheFirstMovingFrameScaleAtOnce) {
+  // A still view refined at the full scale, whose whole pass the bands predict at 16 budgets:
+  // the first frame of a drag marches at the scale that fits (a quarter of the side, the floor
+  // here), not half of it, which a single frame that went would allow.
+  FrameBudget budget(33.0);
+  budget.measured(16.0 * 33.0, 1.0f, true, true);
+  EXPECT_LE(budget.next(true, 0.5f), 0.25f);
+  FrameBudget measuredOnly(33.0);
+  measuredOnly.measured(16.0 * 33.0, 1.0f, true);
+  EXPECT_EQ(measuredOnly.next(true, 0.5f), 0.5f) << "a frame that went moves the scale by half at most";
+}
+
 TEST(FrameBudgetTest, QuickFramesClimbBackAndStillFramesGoToTheCeiling) {
   FrameBudget budget(33.0);
   const float low = drag(budget, {4.0, 200.0}, 12);

@@ -591,8 +591,7 @@ TEST_F(LiveViewTest, AStillViewMarchesAtFullResolutionWhateverThePreviewScale) {
 }
 
 // Runs the view and the session until both rest (as the window loop sees it); false after 120 s.
-bool runUntilRest(app::ExplorerSession& session, app::ExplorerState& state, app::LiveView& view,
-                  const std::function<void()>& frame) {
+bool runUntilRest(app::ExplorerSession& session, app::LiveView& view, const std::function<void()>& frame) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
   int restingFrames = 0;
   while (std::chrono::steady_clock::now() < deadline && restingFrames < 3) {
@@ -605,7 +604,7 @@ bool runUntilRest(app::ExplorerSession& session, app::ExplorerState& state, app:
 
 TEST_F(LiveViewTest, AVolumeViewAtRestIsAnExportOfTheView) {
   app::LiveView view(session, nullptr, nullptr);
-  ASSERT_TRUE(runUntilRest(session, state, view, [&] { frame(view); }));
+  ASSERT_TRUE(runUntilRest(session, view, [&] { frame(view); }));
   // At rest nothing of the view's works, and the status line says so only now.
   EXPECT_EQ(app::convergenceText(session.status(), state.frame.view).rfind("at rest", 0), 0u)
       << app::convergenceText(session.status(), state.frame.view);
@@ -634,7 +633,7 @@ TEST_F(LiveViewTest, APointsViewBuildsUpRestartsWhenTheCameraMovesAndAtRestIsAnE
     scene.points = 3'000'000;
   });
   app::LiveView view(session, nullptr, nullptr);
-  ASSERT_TRUE(runUntilRest(session, state, view, [&] { frame(view); }));
+  ASSERT_TRUE(runUntilRest(session, view, [&] { frame(view); }));
   ASSERT_TRUE(view.pointsProgress().finished);
   EXPECT_TRUE(state.frame.view.pointsShown) << "the points picture replaced the volume picture";
   EXPECT_GE(view.pointsProgress().points, 3'000'000u);
@@ -685,10 +684,10 @@ TEST_F(LiveViewTest, APointsViewWhosePatternEscapesRestsOnTheLastBoundedVolume) 
     scene.points = 2'000'000;
   });
   app::LiveView view(session, nullptr, nullptr);
-  ASSERT_TRUE(runUntilRest(session, state, view, [&] { frame(view); }));
+  ASSERT_TRUE(runUntilRest(session, view, [&] { frame(view); }));
   ASSERT_TRUE(state.frame.view.pointsShown);
   edit([&](core::Scene& scene) { scene.layers[0].params[1] = 2.0; });
-  ASSERT_TRUE(runUntilRest(session, state, view, [&] { frame(view); })) << "the view never rested";
+  ASSERT_TRUE(runUntilRest(session, view, [&] { frame(view); })) << "the view never rested";
   EXPECT_FALSE(session.status().escapeNote.empty());
   EXPECT_FALSE(state.frame.view.pointsShown) << "the points of a pattern that escapes were shown";
   EXPECT_GT(canvas.brightest(), 40) << "the last bounded volume is shown";

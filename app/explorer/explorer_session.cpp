@@ -273,6 +273,8 @@ void ExplorerSession::applyPattern(Engine& engine, const core::Scene& scene, std
   engine.target = engine.capPoints;
   engine.held = false;
   engine.accumulator.setTargetPoints(engine.target);
+  // The colour lookup a still makes (pipeline.cpp), so the view's colours are the export's.
+  engine.accumulator.setPaletteMode(scene.flat.paletteMode);
   engine.accumulator.setPattern(scene.layers, scene.seed, core::Accumulator::WhenEscaping::KeepLastBounded);
   noteEscape(engine.accumulator, scene);
   steer(engine);  // a pause still holds the new pattern (at a preview)
@@ -485,6 +487,7 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
         const bool dragging = holdsForInteraction(*current);
         if (Proxy* proxy = current->proxy.get()) {
           proxy->setDragging(dragging);
+          proxy->accumulator.setPaletteMode(scene.flat.paletteMode);
           proxy->accumulator.setPattern(scene.layers, scene.seed, core::Accumulator::WhenEscaping::KeepLastBounded);
           noteEscape(proxy->accumulator, scene);
           proxy->publisher.requestNow();

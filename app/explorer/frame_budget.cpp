@@ -21,11 +21,13 @@ void FrameBudget::setBudget(double budgetMs) {
   budgetMs_ = std::max(1.0, budgetMs);
 }
 
-void FrameBudget::measured(double frameMs, float scale, bool marched) {
-  // A gap of seconds is a stall elsewhere (a window drag, a debugger), not the march's cost.
-  if (!marched || scale <= 0.0f || !(frameMs > 0.0) || frameMs > 2000.0) return;
+void FrameBudget::measured(double frameMs, float scale, bool marched, bool predicted) {
+  // A gap of seconds is a stall elsewhere (a window drag, a debugger), not the march's cost; a
+  // prediction of a whole pass may be that long on a software GL.
+  if (!marched || scale <= 0.0f || !(frameMs > 0.0) || (frameMs > 2000.0 && !predicted)) return;
   lastMs_ = frameMs;
   lastScale_ = scale;
+  lastPredicted_ = predicted;
 }
 
 float FrameBudget::stepStretch(float scale, float ceiling) {
@@ -48,7 +50,8 @@ float FrameBudget::next(bool changing, float ceiling) {
     // A still frame at the full scale measured last tells what the first frame of a drag may
     // afford, so a drag starts near the right scale.
     const double ratio = lastMs_ / budgetMs_;
-    const double factor = ratio > 1.0 || ratio < 0.6 ? std::clamp(std::sqrt(0.85 / ratio), 0.5, 1.25) : 1.0;
+    const double fastest = lastPredicted_ ? 0.0 : 0.5;
+    const double factor = ratio > 1.0 || ratio < 0.6 ? std::clamp(std::sqrt(0.85 / ratio), fastest, 1.25) : 1.0;
     interactive_ = quantise(static_cast<float>(lastScale_ * factor));
     lastMs_ = 0.0;
   }

@@ -26,7 +26,11 @@ class FrameBudget {
   // What the previous frame cost (from the start of one frame to the start of the next, so the
   // GL work the swap waited on is in it) and the scale it marched at; marched false: it only
   // resolved an unchanged image, which says nothing about the cost of marching.
-  void measured(double frameMs, float scale, bool marched);
+  // `predicted`: not a frame that went but a whole pass's cost predicted from the bands a still
+  // view marched (RefineBands), which is steady: the next scale may then drop to what it asks
+  // at once, not by half (a still view marches at the full resolution, so the first frame of a
+  // drag would otherwise march half its pixels, several budgets' worth on a software GL).
+  void measured(double frameMs, float scale, bool marched, bool predicted = false);
 
   // The scale to march the next frame at, between the floor and `ceiling` (the scale a still
   // picture refines at). `changing`: the view or pattern changed in this frame.
@@ -51,6 +55,7 @@ class FrameBudget {
   int quietFrames_ = kQuietFrames;
   double lastMs_ = 0.0;  // the newest marching frame's time and scale, not yet acted on
   float lastScale_ = 0.0f;
+  bool lastPredicted_ = false;
 };
 
 }  // namespace voxflame::app

@@ -384,7 +384,7 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
       bands_.frameMeasured(lastFrameMs, std::max(0.0, marchMs_), lastFinishMs_);
       // A frame that marched a few bands says little of what a drag's first frame, which marches
       // the whole target, may afford: the bands' estimate of a whole pass does.
-      budget_.measured(bands_.otherMs() + bands_.passMs() + bands_.finishMs(), lastMarchScale_, true);
+      budget_.measured(bands_.otherMs() + bands_.passMs() + bands_.finishMs(), lastMarchScale_, true, true);
     } else {
       budget_.measured(lastFrameMs, lastMarchScale_, lastMarched_);
     }

@@ -705,7 +705,8 @@ const FV kFlatFields[] = {
      .member = choice<&FlatViewSettings::paletteMode>(kPaletteModeNames, "palette mode"),
      .help = "flam3's colour lookup, in the flat view and in stills in the mesh: step takes the palette entry "
              "⌊index · 256⌋, linear blends the two around it",
-     .affects = kStill},
+     // The grid's colours too: the live view refines the pattern again.
+     .affects = kPattern},
 };
 
 using AF = Field<AnimationSettings>;
