@@ -298,9 +298,19 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
     return false;
   }
   const int oversample = std::clamp(scene.render.oversample, 1, 4);
-  const PointsKey key{
-      inputs.revisions.pattern, inputs.revisions.view,    scene.points, scene.seed, width, height, oversample,
-      inputs.camera.fovDeg,     inputs.camera.orthoHeight};
+  PointsKey key;
+  key.pattern = inputs.revisions.pattern;
+  key.view = inputs.revisions.view;
+  key.points = scene.points;
+  key.seed = scene.seed;
+  key.width = width;
+  key.height = height;
+  key.oversample = oversample;
+  key.fieldDeg = inputs.camera.fovDeg;
+  key.orthoHeight = inputs.camera.orthoHeight;
+  key.dofAperture = scene.render.dofAperture;
+  key.dofFocusDistance = scene.render.dofFocusDistance;
+  key.fog = scene.render.fog;
   // While anything moves the volume preview takes over; once it stops, the points picture builds
   // up again from nothing.
   if (pointsKey_ && (*pointsKey_ != key || !still || inputs.interacting)) stopPoints();

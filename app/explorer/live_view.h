@@ -170,6 +170,8 @@ class LiveView {
     std::uint64_t pattern = 0, view = 0, points = 0, seed = 0;
     int width = 0, height = 0, oversample = 0;
     double fieldDeg = 0.0, orthoHeight = 0.0;
+    // What only stills read (no view revision follows them) but the projection uses.
+    double dofAperture = 0.0, dofFocusDistance = 0.0, fog = 0.0;
     bool operator==(const PointsKey&) const = default;
   };
   LivePoints points_;

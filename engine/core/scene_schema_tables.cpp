@@ -604,7 +604,7 @@ const RF kRenderFields[] = {
      .ui = {"still method"},
      .help = "how stills are made: ray-march the voxel grid, or project every point into a supersampled screen "
              "histogram (pixel-fine filaments; the grid only dims points by the density in front of them). The "
-             "explorer previews with `volume`",
+             "explorer's view shows the same picture once it is still",
      .affects = kStill,
      .defaultText = "`volume` (`points` when a layer is a flame)"},
     {.key = "oversample",
