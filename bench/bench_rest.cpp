@@ -80,26 +80,15 @@ std::string restReason(const app::SessionStatus& status) {
 // seconds of rest.
 void benchRest(const BenchOptions& options) {
   gl::HeadlessContext context;
-  // As the explorer does: software GL refines a still view at half the pixels along each side.
+  // As the explorer does: software GL previews at half the pixels along each side while something
+  // moves (a still view refines at the full resolution).
   const bool software = context.renderer().find("llvmpipe") != std::string::npos;
   constexpr double kGiveUpSeconds = 300.0, kRestSeconds = 5.0;
   for (const std::filesystem::path& path : presetsToRun(options)) {
     const core::Scene scene = core::loadScene(path);
     app::ExplorerSession session;
     HeadlessFrameLoop loop(session, scene, software ? 0.5f : 1.0f);
-    int restingFrames = 0;
-    auto step = [&] {
-      loop.state.frame.session = session.status();
-      const double wait = app::frameWaitSeconds(loop.state, loop.view.resting(), restingFrames);
-      if (wait > 0.0) {
-        std::this_thread::sleep_for(std::chrono::duration<double>(wait));
-        // Frames also wait between the points picture's steps, and then draw.
-        if (!loop.state.frame.view.waitingForPoints) return true;
-      }
-      loop.run();
-      restingFrames = loop.view.resting() && loop.state.frame.session.resting ? restingFrames + 1 : 0;
-      return false;
-    };
+    auto step = [&] { return loop.step(session); };
     const auto start = Clock::now();
     bool resting = false;
     double nextProgress = 10.0;

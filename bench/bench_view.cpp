@@ -72,23 +72,13 @@ void benchView(const BenchOptions& options) {
     const core::Scene scene = core::loadScene(path);
     app::ExplorerSession session;
     HeadlessFrameLoop loop(session, scene, software ? 0.5f : 1.0f);
-    int restingFrames = 0;
     std::vector<double> frameMs, pointsFrameMs;
     auto step = [&] {
-      loop.state.frame.session = session.status();
-      const double wait = app::frameWaitSeconds(loop.state, loop.view.resting(), restingFrames);
-      if (wait > 0.0) {
-        std::this_thread::sleep_for(std::chrono::duration<double>(wait));
-        // Frames also wait between the points picture's steps, and then draw.
-        if (!loop.state.frame.view.waitingForPoints) return true;
-      }
-      const auto frameStart = Clock::now();
-      loop.run();
-      const double ms = 1000.0 * secondsSince(frameStart);
+      double ms = -1.0;
+      if (loop.step(session, &ms)) return true;
       frameMs.push_back(ms);
       const app::ViewRefinement& view = loop.state.frame.view;
       if (view.points && view.pointsDone > 0 && !view.resting) pointsFrameMs.push_back(ms);
-      restingFrames = loop.view.resting() && loop.state.frame.session.resting ? restingFrames + 1 : 0;
       return false;
     };
     struct Snapshot {

@@ -5,6 +5,9 @@
 
 #include <epoxy/gl.h>
 
+#include <chrono>
+#include <thread>
+
 #include "core/scene.h"
 #include "explorer_session.h"
 #include "live_view.h"
@@ -41,6 +44,26 @@ struct HeadlessFrameLoop {
     glFinish();
     return frame;
   }
+
+  // One turn of the window loop with no input arriving: the wait app::frameWaitSeconds asks for
+  // (glfwWaitEventsTimeout), then a frame unless the wait was one of rest (true: nothing drawn).
+  // Frames also wait between the points picture's steps, and then draw. `frameMs` gets the
+  // frame's milliseconds (negative: none was drawn).
+  bool step(app::ExplorerSession& session, double* frameMs = nullptr) {
+    if (frameMs) *frameMs = -1.0;
+    state.frame.session = session.status();
+    const double wait = app::frameWaitSeconds(state, view.resting(), restingFrames);
+    if (wait > 0.0) {
+      std::this_thread::sleep_for(std::chrono::duration<double>(wait));
+      if (!state.frame.view.waitingForPoints) return true;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    run();
+    if (frameMs) *frameMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    restingFrames = view.resting() && state.frame.session.resting ? restingFrames + 1 : 0;
+    return false;
+  }
+  int restingFrames = 0;  // frames in a row that found the view and the session at rest
 };
 
 }  // namespace voxflame::bench

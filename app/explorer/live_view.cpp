@@ -252,9 +252,21 @@ bool LiveView::marchBands(const gl::RenderSettings& settings, bool still, double
   bands_.marched(span, marchMs_);
   marchedRows_ = span.rows;
   target_.samples = bands_.samples();
+  // A still view's picture is shown at each doubling of its samples (1, 2, 4, ...: the steps the
+  // eye sees), and finished in strips over the frames that follow (finishStrip): a whole finish
+  // at the full resolution takes a software GL several budgets. A doubling that comes while the
+  // last picture is still being finished is shown at the next pass that finds it done.
+  bool copied = false;
   if (span.endsPass && still) {
-    shownTarget_.copyFrom(target_);
-    shownHasPicture_ = true;
+    const int samples = bands_.samples();
+    shownCopyOwed_ = shownCopyOwed_ || (samples & (samples - 1)) == 0;
+    if (shownCopyOwed_ && shownFinished_) {
+      shownTarget_.copyFrom(target_);
+      shownHasPicture_ = true;
+      shownCopyOwed_ = false;
+      shownFinished_ = false;
+      copied = true;
+    }
   }
   // A whole pass marched while something changes is shown from the target itself: no copy.
   if (span.endsPass) showingTarget_ = !still;
@@ -263,14 +275,14 @@ bool LiveView::marchBands(const gl::RenderSettings& settings, bool still, double
     bandsRestart_ = true;
     restartAfterPass_ = false;
   }
-  return span.endsPass;
+  return still ? copied : span.endsPass;
 }
 
 bool LiveView::resting() const {
   if (uploadInProgress_ || shadowJob_.busy() || shadowJob_.ready() || points_.working()) return false;
   if (pointsMethod_ && !pointsFailed_ && !pointsBlocked_)
     return pointsShown_ && pointsCurrent_ && points_.progress().finished;
-  return settled_ || target_.samples >= kMaxSamples;
+  return (settled_ || target_.samples >= kMaxSamples) && (shownFinished_ || !shownHasPicture_);
 }
 
 void LiveView::stopPoints() {
@@ -472,6 +484,8 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
       shownTarget_.copyFrom(target_);  // whole, even when new content has just restarted its samples
       shownHasPicture_ = true;
       showingTarget_ = false;
+      // A picture of the moving view, coarse: finished whole at once, not left behind an older one.
+      shownWholeFinish_ = true;
     }
     target_.resize(std::max(1, static_cast<int>(static_cast<float>(width) * scale)),
                    std::max(1, static_cast<int>(static_cast<float>(height) * scale)));
@@ -516,20 +530,39 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
       } while (!pointsCurrent_ && millisecondsSince(resolveStart) < stripBudgetMs);
       if (pointsCurrent_) pointsShown_ = true;
     }
+    // Until the first pass over a new view or volume is whole, the last whole picture stays up.
+    const bool fromShown = shownHasPicture_ && !showingTarget_;
+    bool shownNowFinished = false, wholeFinish = false;
+    if (!pointsShown_ && fromShown && still && !shownWholeFinish_ && !shownFinished_) {
+      const double stripBudgetMs = kPointsFinishShareOfBudget * budget_.budgetMs();
+      do {
+        shownFinished_ = renderer_.finishStrip(shownTarget_, settings, kPointsStripRows);
+        glFinish();  // the strips' cost is known only once they are done
+      } while (!shownFinished_ && millisecondsSince(resolveStart) < stripBudgetMs);
+      shownNowFinished = shownFinished_;
+    }
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-    if (!(pointsShown_ && renderer_.drawFinished(pointsTarget_, place))) {
-      // Until the first pass over a new view or volume is whole, the last whole picture stays up.
-      const gl::FrameTarget& shown = showingTarget_ || !shownHasPicture_ ? target_ : shownTarget_;
+    if (!(pointsShown_ && renderer_.drawFinished(pointsTarget_, place)) &&
+        !(fromShown && still && !shownWholeFinish_ && renderer_.drawFinished(shownTarget_, place))) {
+      const gl::FrameTarget& shown = fromShown ? shownTarget_ : target_;
       renderer_.resolve(shown, settings, place, false);
+      wholeFinish = newPicture || fromShown;
+      if (fromShown) {
+        shownFinished_ = true;
+        shownWholeFinish_ = false;
+      }
     }
     resolveMs_ = millisecondsSince(resolveStart);
-    if (newPicture || pointsPicture) lastFinishMs_ = resolveMs_;
-    // A still volume picture whose samples just doubled (from kFirstSettledCheck on) is compared
-    // with the one before the doubling: once no pixel moves visibly, refining stops.
-    const int passSamples = target_.samples;
-    if (newPicture && still && (!pointsMethod_ || pointsFailed_ || pointsBlocked_) &&
-        passSamples >= kFirstSettledCheck && (passSamples & (passSamples - 1)) == 0 && scale == 1.0f)
-      checkSettled(framebuffer, place, passSamples);
+    // A finish in strips is a cost of every frame while it lasts (the bands learn it as such); a
+    // whole one comes with the pass it shows.
+    if (wholeFinish || pointsPicture) lastFinishMs_ = resolveMs_;
+    // A still volume picture whose samples doubled (from kFirstSettledCheck on), once finished and
+    // drawn, is compared with the last one checked: once no pixel moves visibly, refining stops.
+    const int shownSamples = shownTarget_.samples;
+    if ((shownNowFinished || (wholeFinish && fromShown)) && still &&
+        (!pointsMethod_ || pointsFailed_ || pointsBlocked_) && shownSamples >= kFirstSettledCheck && scale == 1.0f &&
+        shownTarget_.width() == target_.width())
+      checkSettled(framebuffer, place, shownSamples);
     result.volumeDrawn = true;
   } else {
     clearAround(glm::ivec4(0), framebufferWidth, framebufferHeight, background);

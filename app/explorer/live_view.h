@@ -143,8 +143,11 @@ class LiveView {
   // the last whole pass, copied here, so a frame never shows one band a sample ahead of the next
   // (nor a half-marched first pass) and the finish runs once a pass, not once a frame.
   gl::FrameTarget shownTarget_;
-  bool showingTarget_ = false;    // target_ itself is shown (its last pass, marched while something changed, is whole)
-  bool shownHasPicture_ = false;  // shownTarget_ holds a whole pass
+  bool showingTarget_ = false;     // target_ itself is shown (its last pass, marched while something changed, is whole)
+  bool shownFinished_ = true;      // shownTarget_'s finish is whole (else strips of it are being finished)
+  bool shownCopyOwed_ = false;     // a doubling of the samples waits for that finish to be shown
+  bool shownWholeFinish_ = false;  // shownTarget_ holds a moving view's picture: finished whole at once
+  bool shownHasPicture_ = false;   // shownTarget_ holds a whole pass
   RefineBands bands_;
   bool bandsRestart_ = true;
   bool restartAfterPass_ = false;  // the samples start over once the pass under way is whole

@@ -626,6 +626,10 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
     target.finishedKey_ = key;
   }
   glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(output));
+  blit(target.finished_, viewport);
+}
+
+void VolumeRenderer::blit(GLuint texture, glm::ivec4 viewport) {
   glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
   glDisable(GL_DEPTH_TEST);
   glDisable(GL_BLEND);
@@ -633,7 +637,7 @@ void VolumeRenderer::resolve(const FrameTarget& target, const RenderSettings& se
   glUseProgram(p.id());
   glUniform4f(p.uniform("uViewport"), static_cast<float>(viewport.x), static_cast<float>(viewport.y),
               static_cast<float>(viewport.z), static_cast<float>(viewport.w));
-  bindSampler(p, "uImage", 0, GL_TEXTURE_2D, target.finished_);
+  bindSampler(p, "uImage", 0, GL_TEXTURE_2D, texture);
   glBindVertexArray(vertexArray_);
   glDrawArrays(GL_TRIANGLES, 0, 3);
   glBindVertexArray(0);
@@ -728,17 +732,7 @@ bool VolumeRenderer::finishStrip(const FrameTarget& target, const RenderSettings
 
 bool VolumeRenderer::drawFinished(const FrameTarget& target, glm::ivec4 viewport) {
   if (!target.finished_ || target.finishedRevision_ == ~std::uint64_t{0}) return false;
-  glViewport(viewport.x, viewport.y, viewport.z, viewport.w);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  const ShaderProgram& p = blitProgram_;
-  glUseProgram(p.id());
-  glUniform4f(p.uniform("uViewport"), static_cast<float>(viewport.x), static_cast<float>(viewport.y),
-              static_cast<float>(viewport.z), static_cast<float>(viewport.w));
-  bindSampler(p, "uImage", 0, GL_TEXTURE_2D, target.finished_);
-  glBindVertexArray(vertexArray_);
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glBindVertexArray(0);
+  blit(target.finished_, viewport);
   return true;
 }
 

@@ -181,6 +181,8 @@ class VolumeRenderer {
   FlameFinisher& finisher() { return finisher_; }
 
  private:
+  // Draws a finished picture into the bound framebuffer's viewport.
+  void blit(GLuint texture, glm::ivec4 viewport);
   // One sub-sample into the pixels of `scissor` (x, y, w, h; all of the target when w is 0).
   void marchPixels(FrameTarget& target, const RenderSettings& settings, int sampleIndex, glm::ivec4 tile,
                    glm::ivec4 scissor, int samplesBefore);
