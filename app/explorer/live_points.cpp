@@ -16,7 +16,7 @@ namespace {
 // Thrown from the progress callback to end a run that was stopped.
 struct Stopped {};
 
-// The picture of `sums` (the steps so far): densities scaled to the whole count, so the
+// The picture of `sums` (the chunks so far): densities scaled to the whole count, so the
 // brightness is the final picture's, and density estimation's hit counts of the points it holds.
 core::DensityImage pictureOf(const core::ImageSums& sums, const LivePointsRequest& request, std::uint64_t target) {
   core::DensityImage image;
@@ -62,15 +62,13 @@ void LivePoints::start(LivePointsRequest request) {
     core::PointsPassOptions options;
     options.points = target;
     options.threads = request.threads;
-    // One chunk, as an export of the points method makes it (each chunk restarts the orbits, which
-    // a flow's picture shows), in steps.
-    options.steps = kSteps;
+    options.chunks = kChunks;
     options.makeImage = false;
     options.progressInterval = 0.05;
     options.progress = [&stop](double) {
       if (stop.stop_requested()) throw Stopped{};
     };
-    options.stepDone = [&](const core::ImageSums& sums) {
+    options.chunkDone = [&](int, const core::ImageSums& sums) {
       if (stop.stop_requested()) throw Stopped{};
       if (total.counts.empty()) total.reset(sums.width, sums.height, sums.unit);
       total.add(sums);

@@ -2,7 +2,7 @@
 // points are projected into a screen histogram of the view's camera at the view's full size,
 // exactly as `voxflame render --method points` projects them (core::projectScenePoints: the same
 // projection, transmittance through the grid, light and lens), on a thread of its own. The points
-// come in steps of one run; after each, the picture so far is published, scaled to the whole count so its
+// come in chunks; after each, the picture so far is published, scaled to the whole count so its
 // brightness never changes as it fills in, and with the density estimation's hit counts of the
 // points it holds, so it is the export of that many points. No GL: the live view uploads what it
 // takes (gl::FrameTarget::setSums) and finishes it on the GPU like a marched picture.
@@ -36,15 +36,17 @@ struct LivePointsRequest {
 struct LivePointsProgress {
   std::uint64_t points = 0;  // projected into the newest picture
   std::uint64_t target = 0;  // the scene's count
-  bool finished = false;     // every step is in: the picture is the export's
+  bool finished = false;     // every chunk is in: the picture is the export's
   std::string error;         // why it stopped early (the pattern escaped ...), else empty
 };
 
 class LivePoints {
  public:
-  // Steps of the points: a picture is published after each. Enough that the first comes within
-  // a fraction of a second, few enough that holding the workers between steps costs little.
-  static constexpr int kSteps = 32;
+  // Chunks of the points (core::PointsPassOptions::chunks): a picture is published after each.
+  // Enough that the first comes within a fraction of a second, few enough that holding the
+  // workers between chunks costs little. Each chunk starts its orbits afresh, which a flow's
+  // picture shows (its export, in one chunk, draws fewer, longer orbits).
+  static constexpr int kChunks = 32;
 
   LivePoints() = default;
   ~LivePoints();  // stops and joins every run

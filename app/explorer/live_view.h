@@ -101,11 +101,11 @@ class LiveView {
   // The points picture replaces the volume picture once it holds this share of its points: its
   // noise is then twice the final picture's at most, and finer than the grid's voxels
   // (`bench view` measures how close it is to the final picture by then).
-  static constexpr double kPointsShownShare = 1.0 / 8.0;
+  static constexpr double kPointsShownShare = 1.0 / 16.0;
   // A points picture is finished in strips of this many rows, as many a frame as this share of
   // the frame budget allows (at least one).
   static constexpr int kPointsStripRows = 32;
-  static constexpr double kPointsFinishShareOfBudget = 0.6;
+  static constexpr double kPointsFinishShareOfBudget = 0.8;
   // The points picture's progress (points method), for the benchmark and the tests.
   LivePointsProgress pointsProgress() const { return points_.progress(); }
 

@@ -385,40 +385,21 @@ DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const Inside
       const std::uint64_t iterationsBefore = accumulator.stats().iterations;
       const std::uint64_t pointsBefore = accumulator.stats().points;
       accumulator.setChunk(static_cast<std::uint64_t>(chunk), false);
-      // Steps raise the target in equal parts: each stream stops at its share of the step, its
-      // orbits waiting where they are, and goes on from there in the next, so the steps' points
-      // are the points of one uninterrupted run.
-      const int steps = options.stepDone ? std::max(1, options.steps) : 1;
-      bool limited = false;
-      for (int step = 1; step <= steps && !limited; ++step) {
-        const std::uint64_t pointsAtStep = accumulator.stats().points;
-        const std::uint64_t iterationsAtStep = accumulator.stats().iterations;
-        accumulator.setTargetPoints(
-            std::max<std::uint64_t>(1, static_cast<std::uint64_t>(static_cast<double>(chunkTarget) * step / steps)));
-        accumulator.setHeld(false);
-        while (!accumulator.waitUntilDone(options.progressInterval)) {
-          stats = accumulator.stats();
-          const double done = (static_cast<double>(chunksDone) +
-                               std::min(1.0, static_cast<double>(stats.points - pointsBefore) /
-                                                 static_cast<double>(std::max<std::uint64_t>(chunkTarget, 1)))) /
-                              static_cast<double>(chunkList.size());
-          if (options.progress) options.progress(done);
-          if (stats.iterations - iterationsBefore > iterationLimit / static_cast<std::uint64_t>(chunks) + 50'000'000 ||
-              !stats.problem.empty()) {
-            limited = true;
-            break;
-          }
-        }
-        accumulator.setHeld(true);
+      accumulator.setTargetPoints(chunkTarget);
+      accumulator.setHeld(false);
+      while (!accumulator.waitUntilDone(options.progressInterval)) {
         stats = accumulator.stats();
-        if (!stats.problem.empty()) break;
-        if (options.stepDone) {
-          ImageSums sums = projector.takeSums();
-          sums.points = stats.points - pointsAtStep;
-          sums.iterations = stats.iterations - iterationsAtStep;
-          options.stepDone(sums);
-        }
+        const double done = (static_cast<double>(chunksDone) +
+                             std::min(1.0, static_cast<double>(stats.points - pointsBefore) /
+                                               static_cast<double>(std::max<std::uint64_t>(chunkTarget, 1)))) /
+                            static_cast<double>(chunkList.size());
+        if (options.progress) options.progress(done);
+        if (stats.iterations - iterationsBefore > iterationLimit / static_cast<std::uint64_t>(chunks) + 50'000'000 ||
+            !stats.problem.empty())
+          break;
       }
+      accumulator.setHeld(true);
+      stats = accumulator.stats();
       if (!stats.problem.empty()) break;
       ++chunksDone;
       if (perChunk) {

@@ -156,11 +156,6 @@ struct PointsPassOptions {
   std::function<void(int chunk, const ImageSums& sums)> chunkDone;
   const ImageSums* earlierSums = nullptr;
   bool makeImage = true;  // false: only render the chunks (a farm task); the result is empty
-  // When set (with no chunkDone and makeImage false), each chunk's points come in `steps` equal
-  // steps of one run, and each step's own sums are handed here as it ends: the live view shows
-  // the picture so far, and the whole is the picture one uninterrupted run makes.
-  std::function<void(const ImageSums& sums)> stepDone;
-  int steps = 1;
   std::function<void(int chunksDone)> chunkFinished;  // after each chunk (may be empty)
 };
 // Chunk `chunk`'s share of `points` split into `chunks` (the first points % chunks get one more).
