@@ -35,7 +35,7 @@ const std::vector<Benchmark>& benchmarks() {
        &benchFlame},
       {"rest",
        "the live view on each shipped preset (or the ones named) at its own grid: seconds until it rests and why, "
-       "then CPU and context switches per second at rest",
+       "the frame times until then (p95, worst), then CPU and context switches per second at rest",
        &benchRest},
       {"view",
        "the live view headless at 1280×720 on the shipped presets (or the ones named), as the window loop runs it: "

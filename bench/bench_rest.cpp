@@ -88,7 +88,14 @@ void benchRest(const BenchOptions& options) {
     const core::Scene scene = core::loadScene(path);
     app::ExplorerSession session;
     HeadlessFrameLoop loop(session, scene, software ? 0.5f : 1.0f);
-    auto step = [&] { return loop.step(session); };
+    std::vector<double> frameMs;  // of the frames drawn until rest
+    bool measuringFrames = true;
+    auto step = [&] {
+      double ms = -1.0;
+      const bool rested = loop.step(session, &ms);
+      if (measuringFrames && ms >= 0.0) frameMs.push_back(ms);
+      return rested;
+    };
     const auto start = Clock::now();
     bool resting = false;
     double nextProgress = 10.0;
@@ -115,6 +122,14 @@ void benchRest(const BenchOptions& options) {
                                   {"points_millions", static_cast<double>(rested.stats.points) / 1e6},
                                   {"points_per_voxel", rested.pointsPerVoxel},
                                   {"cap_points_per_voxel", rested.capPointsPerVoxel}};
+    measuringFrames = false;
+    if (!frameMs.empty()) {
+      std::sort(frameMs.begin(), frameMs.end());
+      measurement["frames"] = frameMs.size();
+      measurement["frame_ms_p95"] =
+          frameMs[std::min(frameMs.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(frameMs.size())))];
+      measurement["frame_ms_worst"] = frameMs.back();
+    }
     if (resting) {
       const double cpuStart = cpuSeconds(RUSAGE_SELF);
       const long long switchesStart = contextSwitches();

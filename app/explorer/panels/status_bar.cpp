@@ -66,7 +66,7 @@ std::string convergenceText(const SessionStatus& status, const ViewRefinement& v
   if (view.points && (view.pointsDone > 0 || sessionRests) && !view.resting) {
     std::snprintf(line, sizeof line, "points: %.0f M of %.0f M%s", static_cast<double>(view.pointsDone) * 1e-6,
                   static_cast<double>(view.pointsTarget) * 1e-6,
-                  view.pointsShown ? "" : " (the volume preview until a quarter is in)");
+                  view.pointsShown ? "" : " (the volume preview until the first picture is in)");
     return line;
   }
   if (view.points && view.pointsShown && view.resting && sessionRests) {
