@@ -57,8 +57,9 @@ double mean(const std::vector<double>& values) {
 
 // Each preset opened in the live view (as the window loop runs it: frames while anything moves,
 // the loop's sleeps once frameWaitSeconds says it rests), from the moment it is opened (the last
-// change) until the view and the session rest. The window is read back at intervals (half a
-// second for the first 20 s, then every 2 s; the read-backs' cost is in the frame times), and
+// change) until the view and the session rest. The window is read back at intervals (a quarter
+// of a second for the first 10 s, half a second to 20 s, then every 2 s; the read-backs' cost is
+// in the frame times), and
 // each picture compared with the final one. At rest, `voxflame render` of the same preset at the
 // view's size, with the view's points (or the grid's, for the volume method) and samples, is set
 // beside the view's picture.
@@ -104,7 +105,7 @@ void benchView(const BenchOptions& options) {
       const double now = secondsSince(start);
       if (!resting && now >= nextSnapshot && loop.view.hasVolume()) {
         snapshots.push_back({now, readWindow(loop)});
-        nextSnapshot = now + (now < 20.0 ? 0.5 : 2.0);
+        nextSnapshot = now + (now < 10.0 ? 0.25 : now < 20.0 ? 0.5 : 2.0);
       }
     }
     const double toRest = secondsSince(start);

@@ -654,7 +654,9 @@ TEST_F(LiveViewTest, APointsViewBuildsUpRestartsWhenTheCameraMovesAndAtRestIsAnE
     frame(view);
     const std::string status = app::convergenceText(session.status(), state.frame.view);
     if (status.rfind("points: ", 0) == 0) buildingShown = true;
-    EXPECT_NE(status.rfind("at rest", 0), 0u) << "at rest while the view still works";
+    if (!state.frame.view.resting) {
+      EXPECT_NE(status.rfind("at rest", 0), 0u) << "at rest while the view still works";
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   EXPECT_TRUE(buildingShown) << "the status line shows the points coming in";
