@@ -339,6 +339,9 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
     request.scene = scene;
     request.mask = std::move(mask);
     request.volume = shown_;  // shared: the next volume is packed into a fresh one meanwhile
+    // The points are dimmed by this grid: refining it further meanwhile would only take the cores
+    // the points need, so the session holds it here until the view or the pattern changes.
+    pointsGridPoints_ = shown_->points;
     request.camera = settings.camera;
     request.width = width * oversample;
     request.height = height * oversample;
@@ -604,9 +607,13 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
   const bool viewOnly = changed && !result.patternPosted;
   changed = changed || result.patternPosted;
   const bool held = changed && (changedLastFrame_ || inputs.interacting);
-  // Under the points method the grid only dims the points: it stops where an export's does.
+  // Under the points method the grid only dims the points: it stops where an export's does, and
+  // once the points are being projected, where it was when they started (they are dimmed by that
+  // one; refining it further would only take their cores).
   session_.setRefinement(inputs.refineUntilNoise, inputs.exportRunning, held, held && viewOnly,
-                         pointsMethod_ ? kGridPointsForPointsMethod : 0);
+                         !pointsMethod_                 ? 0
+                         : pointsKey_ && !pointsFailed_ ? std::max<std::uint64_t>(pointsGridPoints_, 1)
+                                                        : kGridPointsForPointsMethod);
   changedLastFrame_ = changed;
   ++frame_;
   return result;

@@ -189,6 +189,7 @@ class LiveView {
   double pointsNextShare_ = kPointsShownShare;  // of the points, for the next picture taken
   bool pointsMethod_ = false;                   // of the last frame's scene
   std::uint64_t lastPost_ = 0;                  // the newest post made
+  std::uint64_t pointsGridPoints_ = 0;          // the points of the grid the points run is dimmed by
   core::DensityImage pointsImage_;              // the newest points picture taken, before its upload
   void stopPoints();
   // Starts, stops and takes the points picture for this frame; true when a new one was uploaded
