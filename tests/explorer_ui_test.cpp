@@ -1059,6 +1059,7 @@ TEST_F(ExplorerFlameUi, SwitchingALayerToFlameStartsFromTheDefaultFlame) {
   ASSERT_EQ(state.document.scene.layers[0].kind, core::PatternKind::Flame);
   EXPECT_EQ(flame(), core::defaultFlame());
   EXPECT_EQ(state.document.scene.layers[0].color.mode, core::ColorMode::Index) << "a flame colours by flam3's index";
+  EXPECT_EQ(state.document.scene.render.method, core::RenderMethod::Points) << "a flame shows its filaments as points";
   EXPECT_TRUE(core::diff(keyBefore, state.document.scene).pattern());
   frame();
   EXPECT_NO_THROW(item("layer0/xform/transform weight"));
@@ -1066,6 +1067,7 @@ TEST_F(ExplorerFlameUi, SwitchingALayerToFlameStartsFromTheDefaultFlame) {
   EXPECT_NE(state.panels.explore.lyapunovText.find("flame"), std::string::npos) << "the status line names the kind";
   pressKey('Z', true);
   EXPECT_EQ(state.document.scene.layers[0].kind, core::PatternKind::Attractor) << "switching is one undo step";
+  EXPECT_EQ(state.document.scene.render.method, keyBefore.render.method) << "... the method's change with it";
   EXPECT_FALSE(state.document.scene.layers[0].params.empty());
 }
 

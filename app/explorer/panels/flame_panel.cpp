@@ -67,7 +67,12 @@ void patternKindChoice(Ui& ui, PatternPanelState& pattern, std::size_t index, co
         if (layer.color.mode == core::ColorMode::Index) layer.color.mode = core::ColorMode::Speed;
       }
       pattern.selectedXform[index] = 0;
-      ui.document.edited(core::Affects::Pattern);
+      // The still method follows the pattern's default: a flame shows its filaments as points.
+      core::Scene& scene = ui.document.scene;
+      const core::RenderMethod method = core::defaultRenderMethod(scene.layers);
+      const bool methodChanged = scene.render.method != method;
+      scene.render.method = method;
+      ui.document.edited(methodChanged ? core::Affects::Pattern | core::Affects::Still : core::Affects::Pattern);
     }
     ImGui::EndCombo();
   }
