@@ -80,14 +80,11 @@ std::string restReason(const app::SessionStatus& status) {
 // seconds of rest.
 void benchRest(const BenchOptions& options) {
   gl::HeadlessContext context;
-  // As the explorer does: software GL previews at half the pixels along each side while something
-  // moves (a still view refines at the full resolution).
-  const bool software = context.renderer().find("llvmpipe") != std::string::npos;
   constexpr double kGiveUpSeconds = 300.0, kRestSeconds = 5.0;
   for (const std::filesystem::path& path : presetsToRun(options)) {
     const core::Scene scene = core::loadScene(path);
     app::ExplorerSession session;
-    HeadlessFrameLoop loop(session, scene, software ? 0.5f : 1.0f);
+    HeadlessFrameLoop loop(session, scene, explorerPreviewScale(context.renderer()));
     std::vector<double> frameMs;  // of the frames drawn until rest
     bool measuringFrames = true;
     auto step = [&] {

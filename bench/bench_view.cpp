@@ -59,20 +59,16 @@ double mean(const std::vector<double>& values) {
 // the loop's sleeps once frameWaitSeconds says it rests), from the moment it is opened (the last
 // change) until the view and the session rest. The window is read back at intervals (a quarter
 // of a second for the first 10 s, half a second to 20 s, then every 2 s; the read-backs' cost is
-// in the frame times), and
-// each picture compared with the final one. At rest, `voxflame render` of the same preset at the
-// view's size, with the view's points (or the grid's, for the volume method) and samples, is set
-// beside the view's picture.
+// in the frame times), and each picture compared with the final one. At rest, `voxflame render` of the same preset at
+// the view's size, with the view's points (or the grid's, for the volume method) and samples, is set beside the view's
+// picture.
 void benchView(const BenchOptions& options) {
   gl::HeadlessContext context;
-  // As the explorer does: software GL previews at half the pixels along each side while
-  // something moves (a still view refines at full resolution everywhere).
-  const bool software = context.renderer().find("llvmpipe") != std::string::npos;
   constexpr double kGiveUpSeconds = 300.0, kRestSeconds = 5.0;
   for (const std::filesystem::path& path : presetsToRun(options)) {
     const core::Scene scene = core::loadScene(path);
     app::ExplorerSession session;
-    HeadlessFrameLoop loop(session, scene, software ? 0.5f : 1.0f);
+    HeadlessFrameLoop loop(session, scene, explorerPreviewScale(context.renderer()));
     std::vector<double> frameMs, pointsFrameMs;
     auto step = [&] {
       double ms = -1.0;

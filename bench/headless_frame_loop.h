@@ -6,6 +6,7 @@
 #include <epoxy/gl.h>
 
 #include <chrono>
+#include <string>
 #include <thread>
 
 #include "core/scene.h"
@@ -13,6 +14,13 @@
 #include "live_view.h"
 
 namespace voxflame::bench {
+
+// The preview scale the explorer sets for this GL renderer: software GL (llvmpipe) previews at
+// half the pixels along each side while something moves; a still view refines at the full
+// resolution everywhere.
+inline float explorerPreviewScale(const std::string& glRenderer) {
+  return glRenderer.find("llvmpipe") != std::string::npos ? 0.5f : 1.0f;
+}
 
 struct HeadlessFrameLoop {
   static constexpr int kWidth = 1280, kHeight = 720;
