@@ -216,7 +216,7 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
 void LiveView::restartSamples(bool refinedContent) {
   target_.samples = 0;
   settled_ = false;
-  settledReferenceSamples_ = 0;
+  settledReference_.clear();
   // A fresher volume (or shadow) of what is already marched does not throw away a first pass
   // under way: the pass finishes on it and is shown, then the samples start over. The grid's
   // refinement brings one every few frames, faster than a slow GL marches a pass in bands, and
@@ -301,14 +301,6 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
     if (pointsKey_) stopPoints();
     return false;
   }
-  // While the pattern escapes the grid shows the last bounded one, which the scene no longer
-  // holds: the volume picture stays, refined and resting as under the volume method.
-  const SessionStatus status = session_.status();
-  pointsBlocked_ = status.showingLastBounded || !status.escapeNote.empty();
-  if (pointsBlocked_) {
-    if (pointsKey_) stopPoints();
-    return false;
-  }
   const int oversample = std::clamp(scene.render.oversample, 1, 4);
   PointsKey key;
   key.pattern = inputs.revisions.pattern;
@@ -328,6 +320,12 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
   if (pointsKey_ && (*pointsKey_ != key || !still || inputs.interacting)) stopPoints();
   if (!still || inputs.interacting) return false;
   if (!pointsKey_) {
+    // While the pattern escapes the grid shows the last bounded one, which the scene no longer
+    // holds: the volume picture stays, refined and resting as under the volume method. (An escape
+    // comes only with a new pattern, which stops a run under way.)
+    const SessionStatus status = session_.status();
+    pointsBlocked_ = status.showingLastBounded || !status.escapeNote.empty();
+    if (pointsBlocked_) return false;
     // The points are dimmed by the grid in front of them: they start once the main grid shows the
     // pattern, whole (a proxy's or a half-uploaded grid's transmittance would be another picture's).
     const bool gridShowsPattern = renderer_.marchedSource() == gl::VolumeRenderer::Source::Main &&
@@ -375,10 +373,20 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
   return true;
 }
 
-void LiveView::checkSettled(unsigned framebuffer, glm::ivec4 place, int samples) {
+bool LiveView::finishStrips(const gl::FrameTarget& target, const gl::RenderSettings& settings,
+                            std::chrono::steady_clock::time_point frameStart) {
+  bool whole = false;
+  do {
+    whole = renderer_.finishStrip(target, settings, kStripRows);
+    glFinish();  // the strips' cost is known only once they are done
+  } while (!whole && millisecondsSince(frameStart) < kFinishShareOfBudget * budget_.budgetMs());
+  return whole;
+}
+
+void LiveView::checkSettled(unsigned framebuffer, glm::ivec4 place) {
   std::vector<std::uint8_t> picture =
       gl::readRgba8(framebuffer, {place.x, place.y, place.z, place.w}, gl::ReadAlpha::Opaque);
-  if (settledReferenceSamples_ > 0 && settledReference_.size() == picture.size()) {
+  if (settledReference_.size() == picture.size()) {
     std::size_t moved = 0;
     for (std::size_t i = 0; i < picture.size(); i += 4) {
       int largest = 0;
@@ -391,7 +399,6 @@ void LiveView::checkSettled(unsigned framebuffer, glm::ivec4 place, int samples)
     if (lastSettledShare_ <= kSettledShare) settled_ = true;
   }
   settledReference_ = std::move(picture);
-  settledReferenceSamples_ = samples;
 }
 
 LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, FrameMetrics& metrics,
@@ -526,22 +533,14 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
     // takes hundreds of milliseconds over a whole one); the last whole one stays up meanwhile.
     const auto resolveStart = std::chrono::steady_clock::now();
     if (pointsHavePicture_ && !pointsFailed_) {
-      const double stripBudgetMs = kPointsFinishShareOfBudget * budget_.budgetMs();
-      do {
-        pointsCurrent_ = renderer_.finishStrip(pointsTarget_, settings, kPointsStripRows);
-        glFinish();  // the strips' cost is known only once they are done
-      } while (!pointsCurrent_ && millisecondsSince(resolveStart) < stripBudgetMs);
+      pointsCurrent_ = finishStrips(pointsTarget_, settings, resolveStart);
       if (pointsCurrent_) pointsShown_ = true;
     }
     // Until the first pass over a new view or volume is whole, the last whole picture stays up.
     const bool fromShown = shownHasPicture_ && !showingTarget_;
     bool shownNowFinished = false, wholeFinish = false;
     if (!pointsShown_ && fromShown && still && !shownWholeFinish_ && !shownFinished_) {
-      const double stripBudgetMs = kPointsFinishShareOfBudget * budget_.budgetMs();
-      do {
-        shownFinished_ = renderer_.finishStrip(shownTarget_, settings, kPointsStripRows);
-        glFinish();  // the strips' cost is known only once they are done
-      } while (!shownFinished_ && millisecondsSince(resolveStart) < stripBudgetMs);
+      shownFinished_ = finishStrips(shownTarget_, settings, resolveStart);
       shownNowFinished = shownFinished_;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
@@ -561,11 +560,10 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
     if (wholeFinish || pointsPicture) lastFinishMs_ = resolveMs_;
     // A still volume picture whose samples doubled (from kFirstSettledCheck on), once finished and
     // drawn, is compared with the last one checked: once no pixel moves visibly, refining stops.
-    const int shownSamples = shownTarget_.samples;
     if ((shownNowFinished || (wholeFinish && fromShown)) && still &&
-        (!pointsMethod_ || pointsFailed_ || pointsBlocked_) && shownSamples >= kFirstSettledCheck && scale == 1.0f &&
-        shownTarget_.width() == target_.width())
-      checkSettled(framebuffer, place, shownSamples);
+        (!pointsMethod_ || pointsFailed_ || pointsBlocked_) && shownTarget_.samples >= kFirstSettledCheck &&
+        scale == 1.0f && shownTarget_.width() == target_.width())
+      checkSettled(framebuffer, place);
     result.volumeDrawn = true;
   } else {
     clearAround(glm::ivec4(0), framebufferWidth, framebufferHeight, background);

@@ -103,10 +103,10 @@ class LiveView {
   // the first points picture is at SSIM 0.976 of the final one where the volume preview it
   // replaces was at 0.911), and pixel-fine where the volume is voxel-coarse.
   static constexpr double kPointsShownShare = 1.0 / 16.0;
-  // A points picture is finished in strips of this many rows, as many a frame as this share of
-  // the frame budget allows (at least one).
-  static constexpr int kPointsStripRows = 32;
-  static constexpr double kPointsFinishShareOfBudget = 0.8;
+  // A still picture (points, or the volume's at the full resolution) is finished in strips of
+  // this many rows, as many a frame as this share of the frame budget allows (at least one).
+  static constexpr int kStripRows = 32;
+  static constexpr double kFinishShareOfBudget = 0.8;
   // The points picture's progress (points method), for the benchmark and the tests.
   LivePointsProgress pointsProgress() const { return points_.progress(); }
 
@@ -161,11 +161,14 @@ class LiveView {
   // The volume picture stopped changing visibly: no more samples until the view or volume changes.
   bool settled_ = false;
   std::vector<std::uint8_t> settledReference_;  // the picture shown at the last check (RGBA8)
-  int settledReferenceSamples_ = 0;
   double lastSettledShare_ = -1.0;
   int settledChecks_ = 0;
   // Compares the picture just drawn at `place` with the last check's (framebuffer bound).
-  void checkSettled(unsigned framebuffer, glm::ivec4 place, int samples);
+  void checkSettled(unsigned framebuffer, glm::ivec4 place);
+  // Finishes strips of `target` until it is whole or the frame begun at `frameStart` has used its
+  // share of the budget (at least one strip); true when whole.
+  bool finishStrips(const gl::FrameTarget& target, const gl::RenderSettings& settings,
+                    std::chrono::steady_clock::time_point frameStart);
 
   // The points picture (points method): made on LivePoints' thread once the view and pattern are
   // still and the main grid shows the pattern, shown from pointsTarget_ once it has more points
