@@ -1,6 +1,6 @@
 // `voxflame list`, `voxflame info` and `voxflame search`: the attractor and flame-variation
 // catalogues, the chaos diagnostics of one parameter set, and the chaos search, from the command
-// line. A flame or quaternion Julia preset gets the fill test and the search of flame_search.h instead.
+// line. A flame or quaternion Julia preset gets the fill test and the search of flame/search.h instead.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -13,8 +13,8 @@
 #include "commands.h"
 #include "core/attractor.h"
 #include "core/file_output.h"
-#include "core/flame_search.h"
-#include "core/flame_variations.h"
+#include "core/flame/search.h"
+#include "core/flame/variations.h"
 #include "core/lyapunov.h"
 #include "core/scene.h"
 #include "usage_error.h"

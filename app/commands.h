@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/attractor.h"
-#include "core/flame_xml.h"
+#include "core/flame/xml.h"
 #include "core/inside_mask.h"
 #include "core/scene.h"
 
@@ -33,7 +33,7 @@ struct RenderArguments {
   int progressFd = -1;  // -1: no progress lines
   std::optional<core::RenderMethod> method;
   bool stats = false;
-  // --flat: the flame layer in 2D as flam3 frames it (flat_render.h); the size defaults to the
+  // --flat: the flame layer in 2D as flam3 frames it (flame/flat_render.h); the size defaults to the
   // flame's, so the command line says whether --width and --height were given.
   bool flat = false;
   bool widthGiven = false, heightGiven = false;

@@ -1,6 +1,6 @@
 // `voxflame import FILE.flame|FILE.flam3 -o PRESET.json [--mesh MESH] [--depth D] [--index N | --name NAME]`:
 // turns a flame that flam3, Apophysis, Fractorium or JWildfire wrote into a complete voxflame
-// preset (core/flame_xml.h does the reading), so `voxflame render PRESET.json` renders it.
+// preset (core/flame/xml.h does the reading), so `voxflame render PRESET.json` renders it.
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -8,7 +8,7 @@
 #include "commands.h"
 #include "core/error.h"
 #include "core/file_output.h"
-#include "core/flame_xml.h"
+#include "core/flame/xml.h"
 #include "core/scene_io.h"
 #include "usage_error.h"
 

@@ -14,7 +14,7 @@
 #include "core/camera.h"
 #include "core/convergence.h"
 #include "core/error.h"
-#include "core/flame_image.h"
+#include "core/flame/image.h"
 #include "core/point_renderer.h"
 #include "core/packed_volume.h"
 #include "core/shadow_volume.h"

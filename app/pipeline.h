@@ -15,7 +15,7 @@
 #include "core/accumulator.h"
 #include "core/chunk_sums.h"
 #include "core/error.h"
-#include "core/flame_image.h"
+#include "core/flame/image.h"
 #include "core/image_io.h"
 #include "core/inside_mask.h"
 #include "core/packed_volume.h"
@@ -84,7 +84,7 @@ struct StillResult {
   double renderSeconds = 0.0;
   std::string renderer;               // GL_RENDERER
   std::string warning;                // e.g. fewer points landed inside the mesh than asked for
-  double coverage = 0.0;              // share of the mesh's silhouette where the pattern shows (flame_image.h)
+  double coverage = 0.0;              // share of the mesh's silhouette where the pattern shows (flame/image.h)
   std::uint64_t pointsProjected = 0;  // points method: points projected into the image (0: volume method)
   double noise = std::numeric_limits<double>::quiet_NaN();  // the grid's final noise estimate (NaN: none)
 };

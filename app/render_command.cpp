@@ -17,7 +17,7 @@
 #include "core/chunk_io.h"
 #include "core/chunk_sums.h"
 #include "core/error.h"
-#include "core/flat_render.h"
+#include "core/flame/flat_render.h"
 #include "core/image_io.h"
 #include "core/keyframes.h"
 #include "core/scene_io.h"
@@ -101,7 +101,7 @@ int writeVolume(const core::Scene& scene, const StillOptions& options, const std
   return 0;
 }
 
-// `render --flat`: the flame layer in 2D, framed as flam3 frames it (core/flat_render.h).
+// `render --flat`: the flame layer in 2D, framed as flam3 frames it (core/flame/flat_render.h).
 int renderFlatCommand(const RenderArguments& arguments, const std::string& output) {
   if (std::filesystem::path(output).extension() != ".png")
     throw UsageError("render --flat writes a PNG: -o OUT.png, not '" + output + "'");

@@ -1,4 +1,4 @@
-// `voxflame bench fidelity [FILE...]`: how close voxflame's flat view (core/flat_render.h) comes to
+// `voxflame bench fidelity [FILE...]`: how close voxflame's flat view (core/flame/flat_render.h) comes to
 // flam3-render on the same flames. Each flame (the first of its file) is rendered at the same size
 // (its own, shrunk to at most 640 pixels wide) and quality 400 by both, then compared: SSIM of the
 // luma against flam3's render, and the ratio of mean linear luminance. flam3-render against itself
@@ -28,8 +28,8 @@
 #include "bench.h"
 #include "flam3_runs.h"
 #include "core/error.h"
-#include "core/flame_xml.h"
-#include "core/flat_render.h"
+#include "core/flame/xml.h"
+#include "core/flame/flat_render.h"
 #include "core/image_io.h"
 #include "core/image_metrics.h"
 #include "programs.h"

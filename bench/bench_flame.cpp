@@ -27,7 +27,7 @@
 #include "bench.h"
 #include "core/accumulator.h"
 #include "core/error.h"
-#include "core/flame_xml.h"
+#include "core/flame/xml.h"
 #include "core/grid.h"
 #include "core/inside_mask.h"
 #include "core/mesh.h"

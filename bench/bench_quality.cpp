@@ -2,7 +2,7 @@
 #include <filesystem>
 
 #include "bench.h"
-#include "core/flame_image.h"
+#include "core/flame/image.h"
 #include "core/scene.h"
 #include "core/scene_io.h"
 #include "pipeline.h"
@@ -10,7 +10,7 @@
 namespace voxflame::bench {
 
 // How noisy a render at a preset's own budget is: the relative RMS difference of linear luminance
-// between it and the same scene with ten times the points (flame_image.h), for both methods, at
+// between it and the same scene with ten times the points (flame/image.h), for both methods, at
 // 1280×720; plus the seconds each render took. 0 would be converged; flam3-render's stock genome
 // at its default quality sits near 0.34 by the same measure.
 void benchQuality(const BenchOptions& options) {

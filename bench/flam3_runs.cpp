@@ -13,7 +13,7 @@
 
 #include "bench.h"
 #include "core/error.h"
-#include "core/flame_xml.h"
+#include "core/flame/xml.h"
 #include "programs.h"
 
 namespace voxflame::bench {

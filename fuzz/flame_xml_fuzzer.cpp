@@ -16,7 +16,7 @@
 #include <string_view>
 
 #include "core/error.h"
-#include "core/flame_xml.h"
+#include "core/flame/xml.h"
 #include "core/scene.h"
 #include "core/scene_io.h"
 

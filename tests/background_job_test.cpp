@@ -8,7 +8,7 @@
 #include <thread>
 
 #include "background_job.h"
-#include "core/flame_search.h"
+#include "core/flame/search.h"
 #include "core/lyapunov.h"
 
 using namespace voxflame;

@@ -14,7 +14,7 @@
 
 #include "core/chaos_game.h"
 #include "core/error.h"
-#include "core/flame.h"
+#include "core/flame/flame.h"
 #include "core/scene.h"
 #include "test_support.h"
 

@@ -10,8 +10,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/attractor.h"
-#include "core/flame.h"
-#include "core/flame_variations.h"
+#include "core/flame/flame.h"
+#include "core/flame/variations.h"
 #include "core/image_io.h"
 #include "core/scene.h"
 #include "core/scene_io.h"

@@ -15,8 +15,8 @@
 #include <cmath>
 
 #include "core/attractor.h"
-#include "core/flame_search.h"
-#include "core/flame_variations.h"
+#include "core/flame/search.h"
+#include "core/flame/variations.h"
 #include "core/scene_io.h"
 #include "core/scene_schema.h"
 #include "core/scene.h"

@@ -20,7 +20,7 @@ void xform_precalc(flam3_genome* cp, int xi);
 int prepare_precalc_flags(flam3_genome* cp);
 }
 
-#include "core/flame_variations.h"
+#include "core/flame/variations.h"
 
 using namespace voxflame::core;
 

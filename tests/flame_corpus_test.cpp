@@ -24,7 +24,7 @@
 
 #include "core/chaos_game.h"
 #include "core/error.h"
-#include "core/flame_xml.h"
+#include "core/flame/xml.h"
 #include "core/random.h"
 #include "core/scene.h"
 

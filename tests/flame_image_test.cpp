@@ -1,11 +1,11 @@
-// flam3's last stage (flame_image.h) and the points method's projection (point_renderer.h),
+// flam3's last stage (flame/image.h) and the points method's projection (point_renderer.h),
 // against hand-computed expectations.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
 #include "core/camera.h"
-#include "core/flame_image.h"
+#include "core/flame/image.h"
 #include "core/packed_volume.h"
 #include "core/point_renderer.h"
 

@@ -7,9 +7,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/flame.h"
-#include "core/flame_search.h"
-#include "core/flame_variations.h"
+#include "core/flame/flame.h"
+#include "core/flame/search.h"
+#include "core/flame/variations.h"
 
 using namespace voxflame;
 

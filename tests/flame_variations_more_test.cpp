@@ -1,9 +1,9 @@
-// The variations of flame_variations_more.cpp, each at points whose expected values were worked
-// out from the published formulas (JWildfire's and Fractorium's variation classes), independently
-// of the code under test, in double precision. The main point is (0.3, −0.7, 0.5) with weight 0.8,
-// as in flame_variations_test.cpp: r² = 0.58, φ = atan2(−0.7, 0.3) = −1.16590454, and a 2D
-// variation's z is 0.8 · 0.5 = 0.4. Random variations are replayed from the lane's seed: xorshift32
-// gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594 first from 0x9E3779B9.
+// The variations of core/flame/variations_fractorium.cpp and variations_jwildfire.cpp, each at points whose expected
+// values were worked out from the published formulas (JWildfire's and Fractorium's variation classes), independently of
+// the code under test, in double precision. The main point is (0.3, −0.7, 0.5) with weight 0.8, as in
+// flame_variations_test.cpp: r² = 0.58, φ = atan2(−0.7, 0.3) = −1.16590454, and a 2D variation's z is 0.8 · 0.5 = 0.4.
+// Random variations are replayed from the lane's seed: xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ
+// = 0.316594 first from 0x9E3779B9.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,9 +15,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/flame_variations.h"
-#include "core/flame_variations_more.h"
-#include "core/flame_xml.h"
+#include "core/flame/variations.h"
+#include "core/flame/xml.h"
 #include "variation_point_case.h"
 
 using namespace voxflame::core;
@@ -341,19 +340,7 @@ TEST_P(MoreVariationAtPoint, MatchesTheHandComputedValue) {
 
 INSTANTIATE_TEST_SUITE_P(More, MoreVariationAtPoint, testing::ValuesIn(pointCases()), caseLabel);
 
-TEST(FlameVariationMore, EveryEntryHasAHandCheckedPointAndIsInTheCatalogue) {
-  std::set<std::string> checked;
-  for (const PointCase& c : pointCases()) checked.insert(c.name);
-  std::vector<VariationInfo> more;
-  addMoreVariations(more);
-  EXPECT_FALSE(more.empty());
-  for (const VariationInfo& info : more) {
-    EXPECT_TRUE(checked.count(info.name)) << info.name << " has no hand-checked point";
-    const VariationInfo* entry = findVariation(info.name);
-    ASSERT_NE(entry, nullptr) << info.name;
-    EXPECT_EQ(entry->apply, info.apply) << info.name;
-  }
-}
+const PointCaseTableRegistration registered(&pointCases);
 
 // The pre_/post_ forms of a variation that ignores its weight replace the point by its own result.
 TEST(FlameVariationMore, PrePostFormsReplaceThePointUnlessTheVariationIsABlur) {
@@ -363,10 +350,9 @@ TEST(FlameVariationMore, PrePostFormsReplaceThePointUnlessTheVariationIsABlur) {
     EXPECT_FALSE(info->additive) << name;
   }
   // Only nBlur, a blur, ignores the point (its pre_/post_ forms add); every other form replaces it.
-  std::vector<VariationInfo> more;
-  addMoreVariations(more);
-  for (const VariationInfo& info : more)
-    EXPECT_EQ(findVariation(info.name)->additive, info.name == "nBlur") << info.name;
+  std::set<std::string> names;
+  for (const PointCase& c : pointCases()) names.insert(c.name);
+  for (const std::string& name : names) EXPECT_EQ(findVariation(name)->additive, name == "nBlur") << name;
   EXPECT_EQ(variationStage("post_axis_symmetry_wf"), VariationStage::Post);
   EXPECT_EQ(variationStage("pre_mirror_x"), VariationStage::Pre);
 }

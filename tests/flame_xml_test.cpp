@@ -12,8 +12,8 @@
 
 #include "core/chaos_game.h"
 #include "core/error.h"
-#include "core/flame_variations.h"
-#include "core/flame_xml.h"
+#include "core/flame/variations.h"
+#include "core/flame/xml.h"
 #include "core/random.h"
 #include "core/scene.h"
 #include "core/scene_io.h"

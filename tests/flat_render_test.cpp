@@ -1,4 +1,4 @@
-// The flat view (core/flat_render.h): flam3's framing kept on import and through presets, the
+// The flat view (core/flame/flat_render.h): flam3's framing kept on import and through presets, the
 // image metrics it is judged with, and a golden image made by flam3-render itself.
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <filesystem>
 
 #include "core/error.h"
-#include "core/flame_xml.h"
-#include "core/flat_render.h"
+#include "core/flame/xml.h"
+#include "core/flame/flat_render.h"
 #include "core/image_io.h"
 #include "core/image_metrics.h"
 #include "core/scene.h"

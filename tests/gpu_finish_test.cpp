@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <random>
 
-#include "core/flame_image.h"
+#include "core/flame/image.h"
 #include "core/packed_volume.h"
 #include "core/scene_io.h"
 #include "gl/canvas.h"

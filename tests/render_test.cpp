@@ -10,9 +10,9 @@
 #include "commands.h"
 #include "core/camera.h"
 #include "core/color.h"
-#include "core/flame_image.h"
-#include "core/flame_xml.h"
-#include "core/flat_render.h"
+#include "core/flame/image.h"
+#include "core/flame/xml.h"
+#include "core/flame/flat_render.h"
 #include "core/scene_io.h"
 #include "gl/headless_context.h"
 #include "gl/volume_renderer.h"
@@ -181,7 +181,7 @@ double meanLuminanceOf(const core::Scene& scene, std::uint64_t points, int width
 
 // The flame tone map works on each pixel's summed density relative to the mesh's mean, so the
 // same scene keeps its brightness when the point count, the grid, the image size or the samples
-// change (flame_image.h). The cost is the grid's voxels (twice the default 192 is 384³, 57M
+// change (flame/image.h). The cost is the grid's voxels (twice the default 192 is 384³, 57M
 // voxels to accumulate, pack and upload), so a 96-voxel grid and its double, 192, with a million
 // points: every ratio stays within 5% of the reference there (within 4% at 192 and 4M points),
 // against the 10% allowed.

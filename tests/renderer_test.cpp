@@ -8,7 +8,7 @@
 #include "core/camera.h"
 #include "core/color.h"
 #include "core/error.h"
-#include "core/flame_image.h"
+#include "core/flame/image.h"
 #include "core/packed_volume.h"
 #include "gl/canvas.h"
 #include "gl/headless_context.h"
@@ -61,7 +61,7 @@ core::ToneMapSettings neutralTone(double brightness) {
   return tone;
 }
 
-// The marched column density D at the image's centre (flame_image.h).
+// The marched column density D at the image's centre (flame/image.h).
 double centreDensity(gl::VolumeRenderer& renderer, const gl::RenderSettings& settings, int size = 16) {
   const gl::MarchedImage marched = gl::marchImage(renderer, settings, size, size);
   return marched.density.at(size / 2, size / 2)[3];

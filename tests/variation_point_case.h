@@ -14,7 +14,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "core/flame_variations.h"
+#include "core/flame/variations.h"
 
 namespace voxflame::test {
 
@@ -28,6 +28,17 @@ struct PointCase {
   double weight;
   std::uint32_t seed;
   glm::dvec3 expected;  // weight · V(point)
+};
+
+// Every test file's table of rows registers itself (`const PointCaseTable registered(&pointCases);`), so
+// that one test can check that every entry of the catalogue has a hand-checked row somewhere.
+using PointCaseTable = const std::vector<PointCase>& (*)();
+inline std::vector<PointCaseTable>& registeredPointCaseTables() {
+  static std::vector<PointCaseTable> tables;
+  return tables;
+}
+struct PointCaseTableRegistration {
+  explicit PointCaseTableRegistration(PointCaseTable table) { registeredPointCaseTables().push_back(table); }
 };
 
 [[maybe_unused]] inline void PrintTo(const PointCase& c, std::ostream* os) {

@@ -140,7 +140,7 @@ struct PromptsState {
 };
 
 // The flat view (issue 25): the first flame layer rendered in 2D as flam3 frames it
-// (core/flat_render.h), shown in the view's rectangle between the panels while `on`, at that
+// (core/flame/flat_render.h), shown in the view's rectangle between the panels while `on`, at that
 // rectangle's pixel size. It renders off the main thread whenever the layer, the tone, the framing
 // or the rectangle's size change.
 struct FlatViewState {

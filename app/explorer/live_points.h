@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "core/camera.h"
-#include "core/flame_image.h"
+#include "core/flame/image.h"
 #include "core/inside_mask.h"
 #include "core/packed_volume.h"
 #include "core/scene.h"

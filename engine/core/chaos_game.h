@@ -5,7 +5,7 @@
 // shared one draw would all apply the same map and, the maps being contractive, converge onto one
 // point. To still vectorise, a step sorts the lanes by the transform they drew (a counting sort),
 // gathers each group's points into contiguous arrays, runs the group's affine map and each of its
-// variations as one loop over the group (flame_variations.h), and scatters the results back.
+// variations as one loop over the group (flame/variations.h), and scatters the results back.
 #pragma once
 
 #include <array>
@@ -14,8 +14,8 @@
 #include <memory>
 #include <vector>
 
-#include "flame.h"
-#include "flame_variations.h"
+#include "core/flame/flame.h"
+#include "core/flame/variations.h"
 #include "random.h"
 
 namespace voxflame::core {

@@ -122,7 +122,7 @@ PointProjector::PointProjector(const PointProjection& projection, int threads) :
   streamRandom_.resize(static_cast<std::size_t>(Accumulator::streamsPerChunk()));
   scratch_.resize(static_cast<std::size_t>(threads));
   // One point's D in its pixel: (volume inside the mesh) / (points · pixel footprint), lengths in
-  // grid sides (flame_image.h). The footprint grows with the view depth squared in perspective.
+  // grid sides (flame/image.h). The footprint grows with the view depth squared in perspective.
   const GridGeometry& g = p_.grid;
   const double side = g.voxelSize * std::max({g.size.x, g.size.y, g.size.z, 1});
   const double scale = std::max(std::abs(p_.camera.projection[1][1]), 1e-12);

@@ -4,7 +4,7 @@
 // dimmed by the camera's transmittance through the accumulated volume in front of it (a
 // view-aligned transmittance volume, built once per image) and, with lighting, by the light's
 // shadow volume. Optional depth of field (a thin lens) and depth fog. The histogram is a
-// DensityImage in the same units as the volume method's, so flame_image.h finishes both alike.
+// DensityImage in the same units as the volume method's, so flame/image.h finishes both alike.
 // Memory grows with the image, not with the grid.
 #pragma once
 
@@ -20,7 +20,7 @@
 #include "accumulator.h"
 #include "chunk_sums.h"
 #include "camera.h"
-#include "flame_image.h"
+#include "core/flame/image.h"
 #include "packed_volume.h"
 #include "shadow_volume.h"
 

@@ -20,7 +20,7 @@
 
 #include "attractor.h"
 #include "color.h"
-#include "flame.h"
+#include "core/flame/flame.h"
 
 namespace voxflame::core {
 
@@ -114,7 +114,7 @@ struct PatternLayer {
   bool operator==(const PatternLayer&) const = default;
 };
 
-// flam3-style tone mapping (flame_image.h), applied to each pixel's summed density, so changing it
+// flam3-style tone mapping (flame/image.h), applied to each pixel's summed density, so changing it
 // never restarts accumulation. Names follow flam3 (Draves & Reckase, "The Fractal Flame Algorithm").
 struct ToneMapSettings {
   double brightness = 4.0;  // k1: scales the log density
@@ -135,7 +135,7 @@ struct ToneMapSettings {
 };
 
 // How flam3 frames a flame in 2D (its <flame> attributes), kept on import so the flame can be
-// shown as its author saw it (`voxflame render --flat`, flat_render.h). Defaults are flam3's own
+// shown as its author saw it (`voxflame render --flat`, flame/flat_render.h). Defaults are flam3's own
 // (clear_cp in flam3.c). The tone of the flat view is the scene's `tone`.
 // flam3's palette_mode: how a colour index picks from the 256 palette entries.
 enum class PaletteMode {

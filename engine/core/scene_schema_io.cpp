@@ -11,7 +11,7 @@
 
 #include "enum_names.h"
 #include "error.h"
-#include "flame_variations.h"
+#include "core/flame/variations.h"
 #include "json_reader.h"
 #include "scene_schema_internal.h"
 

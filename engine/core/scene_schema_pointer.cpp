@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "error.h"
-#include "flame_variations.h"
+#include "core/flame/variations.h"
 #include "json_reader.h"
 #include "scene_schema_internal.h"
 

@@ -23,7 +23,7 @@ bool computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, dou
   };
 
   // Extinction per cell edge: the mean of its voxels' densities relative to the mesh's mean
-  // density, per grid side, as the renderer absorbs (flame_image.h): nothing log-scaled per voxel.
+  // density, per grid side, as the renderer absorbs (flame/image.h): nothing log-scaled per voxel.
   std::vector<float> sigma(cells, 0.0f);
   const float toRelative = static_cast<float>(volume.texelDensity / std::max(volume.referenceDensity, 1e-30));
   const float perVoxel = static_cast<float>(extinctionScale / std::max({g.size.x, g.size.y, g.size.z, 1}));

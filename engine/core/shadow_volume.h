@@ -20,7 +20,7 @@ struct ShadowVolume {
 };
 
 // `towardLight` need not be normalised. `extinctionScale` is the extinction per unit of
-// normalised column density (flame_image.h: density relative to the mesh's mean, lengths in grid
+// normalised column density (flame/image.h: density relative to the mesh's mean, lengths in grid
 // sides), as the renderer absorbs. A stop requested through `stop` ends the work within a slice
 // (a millisecond or so at 512³) and returns false, `out` then being no shadow; true otherwise.
 bool computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, double extinctionScale, int downsample,

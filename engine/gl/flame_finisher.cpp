@@ -21,8 +21,8 @@ namespace {
 constexpr int kMaxKernels = 192;
 constexpr int kMaxTaps = 128;
 constexpr std::size_t kPackChunk = 64;    // finish_pack.comp.glsl's kChunk
-constexpr double kGaussianSupport = 1.5;  // flam3's Gaussian support (core/flame_image.cpp)
-constexpr double kKernelStep = 1.04;      // the estimator's width quantisation (core/flame_image.cpp)
+constexpr double kGaussianSupport = 1.5;  // flam3's Gaussian support (core/flame/image.cpp)
+constexpr double kKernelStep = 1.04;      // the estimator's width quantisation (core/flame/image.cpp)
 
 double gaussian(double x) {
   return std::exp(-2.0 * x * x);

@@ -1,4 +1,4 @@
-// flam3's finish (core/flame_image.h) on the GPU, so neither the explorer nor an export reads the
+// flam3's finish (core/flame/image.h) on the GPU, so neither the explorer nor an export reads the
 // marched sums back to finish them on the CPU. Three passes, each giving what core::finishImage
 // gives to within float rounding:
 //   1. scatter: a compute pass lists the non-empty pixels whose kernel is wider than a pixel and
@@ -20,7 +20,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "core/flame_image.h"
+#include "core/flame/image.h"
 #include "shader_program.h"
 
 namespace voxflame::gl {

@@ -467,7 +467,7 @@ void VolumeRenderer::marchPixels(FrameTarget& target, const RenderSettings& sett
   glUniform3i(p.uniform("uBrickCount"), slot.brickCount.x, slot.brickCount.y, slot.brickCount.z);
   glUniform1i(p.uniform("uBrickShift"), core::kBrickShift);
   // Density relative to the mesh's mean and lengths in grid sides make a pixel's sum independent
-  // of the point count and the grid resolution (flame_image.h).
+  // of the point count and the grid resolution (flame/image.h).
   glUniform1f(p.uniform("uToRelative"), static_cast<float>(slot.texelDensity / std::max(slot.referenceDensity, 1e-30)));
   setUniform(p, "uStepUnits",
              std::clamp(settings.render.stepVoxels, 0.05, 4.0) /

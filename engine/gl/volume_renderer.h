@@ -20,7 +20,7 @@
 #include <string>
 
 #include "core/camera.h"
-#include "core/flame_image.h"
+#include "core/flame/image.h"
 #include "core/image_io.h"
 #include "core/mesh.h"
 #include "core/packed_volume.h"
@@ -37,7 +37,7 @@ struct RenderSettings {
   core::RenderSettingsDoc render;
 };
 
-// The float image one view accumulates into (colour-weighted density + density, flame_image.h's
+// The float image one view accumulates into (colour-weighted density + density, flame/image.h's
 // DensityImage on the GL side), plus the mesh overlay layer and the finished image last drawn
 // from them. Sized in pixels; reallocated on resize.
 class FrameTarget {
@@ -114,7 +114,7 @@ class VolumeRenderer {
 
   // A second, small volume (a coarse proxy of the same pattern, uploaded whole) that march() can
   // draw instead of the main one, e.g. while the main one is still being filled or uploaded.
-  // Brightness does not depend on the grid (flame_image.h), so the two look alike.
+  // Brightness does not depend on the grid (flame/image.h), so the two look alike.
   enum class Source { Main, Proxy };
   void uploadProxy(const core::PackedVolume& volume);
   void marchFrom(Source source) { marched_ = source == Source::Main ? kMain : kProxy; }
@@ -265,7 +265,7 @@ MarchedImage marchImage(VolumeRenderer& renderer, const RenderSettings& settings
 core::MeshOverlay renderMeshOverlay(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,
                                     int maxTile = kDefaultMaxTile);
 
-// marchImage, then flame_image.h's finish on the GPU (finishImageOnGpu) with the settings' tone,
+// marchImage, then flame/image.h's finish on the GPU (finishImageOnGpu) with the settings' tone,
 // oversample and filter. Rows top to bottom; display-encoded in [0, 1], or linear light when
 // `linearOutput`.
 core::ImageRGBA renderToImage(VolumeRenderer& renderer, const RenderSettings& settings, int width, int height,

@@ -20,11 +20,11 @@
 #include "core/camera.h"
 #include "core/color.h"
 #include "core/error.h"
-#include "core/flame.h"
-#include "core/flame_search.h"
-#include "core/flame_variations.h"
-#include "core/flame_xml.h"
-#include "core/flat_render.h"
+#include "core/flame/flame.h"
+#include "core/flame/search.h"
+#include "core/flame/variations.h"
+#include "core/flame/xml.h"
+#include "core/flame/flat_render.h"
 #include "core/grid.h"
 #include "core/keyframes.h"
 #include "core/scene_schema.h"
@@ -113,7 +113,7 @@ std::string fillText(const core::FillReport& fill) {
 
 // Search (fresh) draws new patterns near nothing; Mutate (and "Find a nearby one") moves the
 // current one by `strength`. Attractors always search near their parameters, as before; flames
-// and Julia sets use the fill test of flame_search.h. Whatever a search finds, the live view runs
+// and Julia sets use the fill test of flame/search.h. Whatever a search finds, the live view runs
 // bounded: each candidate that passes the search's own test must also pass the probe the
 // accumulator makes (core::runsBounded) with the scene's seed, else the view would keep the last
 // bounded pattern under the sliders of one that escapes.

@@ -11,9 +11,9 @@
 #include <utility>
 #include <vector>
 
-#include "core/flame.h"
-#include "core/flame_search.h"
-#include "core/flame_xml.h"
+#include "core/flame/flame.h"
+#include "core/flame/search.h"
+#include "core/flame/xml.h"
 #include "explorer_ui.h"
 
 namespace voxflame::app {

@@ -1,12 +1,12 @@
-#include "flame.h"
+#include "core/flame/flame.h"
 
 #include <cmath>
 #include <numbers>
 
 #include <glm/geometric.hpp>
 
-#include "error.h"
-#include "flame_variations.h"
+#include "core/error.h"
+#include "core/flame/variations.h"
 
 namespace voxflame::core {
 

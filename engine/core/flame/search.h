@@ -19,7 +19,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "flame.h"
+#include "core/flame/flame.h"
 
 namespace voxflame::core {
 

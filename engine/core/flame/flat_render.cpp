@@ -1,4 +1,4 @@
-#include "flat_render.h"
+#include "core/flame/flat_render.h"
 
 #include <algorithm>
 #include <array>
@@ -9,12 +9,12 @@
 #include <glm/common.hpp>
 #include <glm/exponential.hpp>
 
-#include "chaos_game.h"
-#include "color.h"
-#include "error.h"
-#include "flame_image.h"
-#include "random.h"
-#include "task_scheduler.h"
+#include "core/chaos_game.h"
+#include "core/color.h"
+#include "core/error.h"
+#include "core/flame/image.h"
+#include "core/random.h"
+#include "core/task_scheduler.h"
 
 namespace voxflame::core {
 

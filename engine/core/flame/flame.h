@@ -3,7 +3,7 @@
 // step; the points then fill a fractal set (an IFS attractor) whose density and colour are the
 // picture. A flame is Draves & Reckase's algorithm ("The Fractal Flame Algorithm", 2003) lifted
 // into 3D: transforms ("xforms"), each an affine map followed by a weighted sum of variations
-// (flame_variations.h) and an optional post-affine, chosen with probability proportional to their
+// (flame/variations.h) and an optional post-affine, chosen with probability proportional to their
 // weights; an optional final transform bends what is drawn without feeding back; optional
 // rotational and mirror symmetry. Colour is flam3's: each point carries a colour index in [0, 1]
 // that moves towards the chosen transform's colour by its colour speed, and indexes the layer's

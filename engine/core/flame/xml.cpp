@@ -1,4 +1,4 @@
-#include "flame_xml.h"
+#include "core/flame/xml.h"
 
 #include <algorithm>
 #include <array>
@@ -20,10 +20,10 @@
 #include <glm/mat3x3.hpp>
 #include <pugixml.hpp>
 
-#include "chaos_game.h"
-#include "error.h"
-#include "flame_variations.h"
-#include "random.h"
+#include "core/chaos_game.h"
+#include "core/error.h"
+#include "core/flame/variations.h"
+#include "core/random.h"
 
 namespace voxflame::core {
 

@@ -1,12 +1,12 @@
-#include "flame_image.h"
+#include "core/flame/image.h"
 
 #include <algorithm>
 #include <cmath>
 #include <functional>
 
-#include "color.h"
-#include "error.h"
-#include "task_scheduler.h"
+#include "core/color.h"
+#include "core/error.h"
+#include "core/task_scheduler.h"
 
 namespace voxflame::core {
 

@@ -6,7 +6,7 @@
 //
 // flam3 writes an affine map as coefs="a d b e c f", meaning x' = a x + b y + c, y' = d x + e y + f;
 // the reader puts a, b, c, d, e, f into Affine3's first two rows (flame.h). Variations are the
-// attributes of an <xform> that name a variation of the catalogue (flame_variations.h), their
+// attributes of an <xform> that name a variation of the catalogue (flame/variations.h), their
 // parameters `<variation>_<parameter>` attributes (julian_power, ngon_sides); `chaos` is the
 // transform's xaos. Files that are not well-formed XML (JWildfire's attribute names with spaces or
 // `#`, stray closing tags) are read again tolerantly. What voxflame does not know (a variation,
@@ -28,9 +28,9 @@
 #include <string_view>
 #include <vector>
 
-#include "color.h"
-#include "flame.h"
-#include "scene.h"
+#include "core/color.h"
+#include "core/flame/flame.h"
+#include "core/scene.h"
 
 namespace voxflame::core {
 

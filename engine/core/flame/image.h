@@ -23,10 +23,10 @@
 
 #include <glm/vec3.hpp>
 
-#include "camera.h"
-#include "grid.h"
-#include "image_io.h"
-#include "scene.h"
+#include "core/camera.h"
+#include "core/grid.h"
+#include "core/image_io.h"
+#include "core/scene.h"
 
 namespace voxflame::core {
 

@@ -1,4 +1,4 @@
-#include "flame_search.h"
+#include "core/flame/search.h"
 
 #include <algorithm>
 #include <array>
@@ -8,11 +8,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "chaos_game.h"
-#include "error.h"
-#include "flame_variations.h"
-#include "random.h"
-#include "scene.h"
+#include "core/chaos_game.h"
+#include "core/error.h"
+#include "core/flame/variations.h"
+#include "core/random.h"
+#include "core/scene.h"
 
 namespace voxflame::core {
 

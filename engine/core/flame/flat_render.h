@@ -4,7 +4,7 @@
 // flame units to pixels at scale · 2^zoom pixels per unit, turned by `rotate` about the centre;
 // points fall into an oversampled histogram with a gutter around the image; the sample count is
 // flam3's: quality · 4^zoom per output pixel. The histogram is then finished by the same flam3
-// finisher the 3D renders use (flame_image.h): density estimation, log density, the spatial
+// finisher the 3D renders use (flame/image.h): density estimation, log density, the spatial
 // filter, gamma, vibrancy, highlight power and the background.
 //
 // The palette and the background are used as flam3 uses them: the file's colour values averaged
@@ -19,8 +19,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "image_io.h"
-#include "scene.h"
+#include "core/image_io.h"
+#include "core/scene.h"
 
 namespace voxflame::core {
 

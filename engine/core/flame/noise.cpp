@@ -3,7 +3,7 @@
 // spread evenly over the sphere (a Fibonacci lattice) in that permuted order. The Crackle plugin
 // ships tables of its own; they are its authors' data and are not copied here, so a crackle
 // flame's cells have the plugin's size, spread and jitter but not the very same places.
-#include "flame_noise.h"
+#include "core/flame/noise.h"
 
 #include <array>
 #include <cmath>

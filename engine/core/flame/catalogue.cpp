@@ -1,0 +1,229 @@
+// The variation catalogue as a whole: the families' tables in one list, looked up by name (with the
+// pre_/post_ forms), and written out as presets/VARIATIONS.md.
+#include "core/flame/variations.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "core/error.h"
+#include "core/flame/variation_kernels.h"
+
+namespace voxflame::core {
+
+namespace {
+
+std::vector<VariationInfo> buildCatalogue() {
+  std::vector<VariationInfo> c;
+  variation_kernels::addFlam3ClassicVariations(c);
+  variation_kernels::add3DVariations(c);
+  variation_kernels::addFlam3Variations(c);
+  variation_kernels::addApophysisVariations(c);
+  variation_kernels::addPluginVariations(c);
+  variation_kernels::addFractoriumVariations(c);
+  variation_kernels::addJwildfireVariations(c);
+  for (VariationInfo& info : c)
+    if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
+        info.name == "flatten" || info.name == "inflateZ_3")
+      info.mapsXY = false;
+  return c;
+}
+
+}  // namespace
+
+int VariationInfo::paramIndex(std::string_view paramName) const {
+  for (std::size_t i = 0; i < params.size(); ++i)
+    if (params[i].name == paramName) return static_cast<int>(i);
+  return -1;
+}
+
+std::vector<double> VariationInfo::defaultParams() const {
+  std::vector<double> values;
+  values.reserve(params.size());
+  for (const auto& p : params) values.push_back(p.defaultValue);
+  return values;
+}
+
+namespace {
+
+// Whether a variation's result depends on the point: it is run at two points with the same random
+// state and default parameters, and its mapped coordinates compared.
+bool resultIgnoresThePoint(const VariationInfo& info) {
+  constexpr double kAffine[12] = {0.9, 0.2, 0.0, 0.3, -0.1, 0.8, 0.0, -0.4, 0.0, 0.0, 1.0, 0.0};
+  const std::vector<double> params = info.defaultParams();
+  const auto at = [&](double x, double y, double z) {
+    std::uint32_t random = 0x2545F491u;
+    double ox = 0.0, oy = 0.0, oz = 0.0;
+    VariationInput in;
+    in.x = &x;
+    in.y = &y;
+    in.z = &z;
+    in.random = &random;
+    in.count = 1;
+    in.params = params.data();
+    in.affine = kAffine;
+    in.tx = &x;
+    in.ty = &y;
+    in.tz = &z;
+    info.apply(in, &ox, &oy, &oz);
+    return std::array<double, 3>{info.mapsXY ? ox : 0.0, info.mapsXY ? oy : 0.0, info.threeD ? oz : 0.0};
+  };
+  return at(0.3, -0.7, 0.5) == at(-0.45, 0.2, -0.35);
+}
+
+}  // namespace
+
+const std::vector<VariationInfo>& variationCatalogue() {
+  static const std::vector<VariationInfo> catalogue = [] {
+    std::vector<VariationInfo> c = buildCatalogue();
+    for (VariationInfo& info : c) info.additive = resultIgnoresThePoint(info);
+    return c;
+  }();
+  return catalogue;
+}
+
+namespace {
+
+const VariationInfo* catalogueEntry(std::string_view name) {
+  for (const auto& info : variationCatalogue())
+    if (info.name == name) return &info;
+  return nullptr;
+}
+
+constexpr std::string_view kPrePrefix = "pre_", kPostPrefix = "post_";
+
+}  // namespace
+
+VariationStage variationStage(std::string_view name) {
+  // flam3's pre_blur is an entry of its own that acts before the others.
+  if (catalogueEntry(name)) return name.starts_with(kPrePrefix) ? VariationStage::Pre : VariationStage::Normal;
+  if (name.starts_with(kPrePrefix) && catalogueEntry(name.substr(kPrePrefix.size()))) return VariationStage::Pre;
+  if (name.starts_with(kPostPrefix) && catalogueEntry(name.substr(kPostPrefix.size()))) return VariationStage::Post;
+  return VariationStage::Normal;
+}
+
+const VariationInfo* findVariation(std::string_view name) {
+  if (const VariationInfo* info = catalogueEntry(name)) return info;
+  if (name.starts_with(kPrePrefix)) return catalogueEntry(name.substr(kPrePrefix.size()));
+  if (name.starts_with(kPostPrefix)) return catalogueEntry(name.substr(kPostPrefix.size()));
+  return nullptr;
+}
+
+namespace {
+
+std::string lowered(std::string_view text) {
+  std::string out(text);
+  std::transform(out.begin(), out.end(), out.begin(), [](unsigned char ch) { return std::tolower(ch); });
+  return out;
+}
+
+// Levenshtein distance, for "did you mean": swapped or missing letters are the usual typos.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+const VariationInfo& variationOrThrow(std::string_view name) {
+  if (const VariationInfo* info = findVariation(name)) return *info;
+  // Close names: the same letters in another case, a shared three-letter start, or two edits away
+  // (ignoring case and underscores, so "spherical_3d" finds "spherical3D").
+  const std::string lower = lowered(name);
+  std::string bare = lower;
+  std::erase(bare, '_');
+  std::string close;
+  if (!lower.empty()) {
+    for (const auto& info : variationCatalogue()) {
+      const std::string candidate = lowered(info.name);
+      std::string candidateBare = candidate;
+      std::erase(candidateBare, '_');
+      const bool near = candidate == lower || (lower.size() >= 3 && candidate.rfind(lower.substr(0, 3), 0) == 0) ||
+                        editDistance(bare, candidateBare) <= 2;
+      if (!near) continue;
+      if (!close.empty()) close.append(", ");
+      close.append(info.name);
+    }
+  }
+  std::string message = "'";
+  message.append(name);
+  message.append("' is not a known variation");
+  if (close.empty()) {
+    message.append("; `voxflame list --variations` lists them");
+  } else {
+    message.append("; did you mean ");
+    message.append(close);
+    message.append("?");
+  }
+  throw Error(message);
+}
+
+namespace {
+
+std::string formatNumber(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+// A table cell: '|' would end the cell early.
+std::string cell(const std::string& text) {
+  std::string out;
+  for (const char ch : text) {
+    if (ch == '|') out += '\\';
+    out += ch;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string variationsMarkdown() {
+  std::ostringstream md;
+  md << "# Flame variations\n\n"
+     << "The variations a flame transform can use (`\"variations\": [{\"name\": ..., \"weight\": ..., "
+        "PARAMETER: VALUE}]` in a preset;\nsee [SCHEMA.md](SCHEMA.md)). Parameters left out take the default "
+        "shown; the range is the slider's,\nnot a limit. This file is generated from the catalogue: "
+        "`voxflame list --variations --markdown > presets/VARIATIONS.md`.\n\n"
+     << "Notation (flam3's): p = (x, y, z) is the point after the transform's affine map, r² = x² + y², "
+        "θ = atan2(x, y),\nφ = atan2(y, x), ε = 10⁻¹⁰, Ψ a uniform random number in [0, 1) (a new one each "
+        "time it appears), and\nb, c, e, f the pre-affine's coefficients as flam3 names them. Each formula "
+        "is V(p); a transform adds\nweight · V(p). A 2D variation maps x and y and carries z through; a 3D one "
+        "acts on z itself.\n\n"
+     << "Every variation also has a `pre_` and a `post_` form (`pre_spherical`, `post_curl`), as in Apophysis "
+        "7X,\nJWildfire and Fractorium: a transform applies its `pre_` terms one after the other to the point after "
+        "its\naffine map, then sums its other variations, then applies its `post_` terms to the sum, before its "
+        "post map.\nSuch a term replaces the coordinates its variation maps (x and y for a 2D one, z too for a 3D "
+        "one, z alone\nfor zscale, zcone, zblur, ztranslate, inflateZ_3 and flatten) by weight · V(p) and keeps the "
+        "others; a "
+        "variation whose\nresult does not depend on the point (the blurs, ztranslate) adds weight · V(p) instead. "
+        "`pre_blur` is\nflam3's own: a Gaussian blur added to the point first.\n\n"
+     << "| name | kind | parameters (default, slider range) | formula |\n"
+     << "| --- | --- | --- | --- |\n";
+  for (const VariationInfo& info : variationCatalogue()) {
+    std::string params;
+    for (const VariationParam& p : info.params) {
+      params += (params.empty() ? "" : "<br>") +
+                ("`" + p.name + "` = " + formatNumber(p.defaultValue) + " (" + formatNumber(p.sliderMin) + " … " +
+                 formatNumber(p.sliderMax) + (p.integer ? ", whole" : "") + ")");
+    }
+    md << "| `" << info.name << "` | " << (info.threeD ? "3D" : "2D") << (info.random ? ", random" : "") << " | "
+       << (params.empty() ? "—" : params) << " | " << cell(info.formula) << " |\n";
+  }
+  return md.str();
+}
+
+}  // namespace voxflame::core

@@ -1,0 +1,192 @@
+// What the files of the variation catalogue share (flame_variations.cpp and
+// flame_variations_more.cpp): the constants, the prologue every variation function opens with, the
+// build targets, and the one way entries are added to the catalogue. Internal to those files.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/flame/variations.h"
+
+namespace voxflame::core::variation_kernels {
+
+inline constexpr double kPi = std::numbers::pi;
+inline constexpr double kTwoPi = 2.0 * std::numbers::pi;
+
+// Fractorium's Zeps(): a zero divisor becomes the double's machine epsilon. Used where the flames
+// that need a variation come from Fractorium, so they draw as Fractorium draws them.
+inline constexpr double kFractoriumEps = std::numeric_limits<double>::epsilon();
+inline double fractoriumZeps(double value) {
+  return value == 0.0 ? kFractoriumEps : value;
+}
+
+// Adds entries to a catalogue: name, formula, 2D/3D, random or not, the function, parameters.
+class CatalogueAdder {
+ public:
+  static constexpr bool k2D = false, k3D = true, kRandom = true, kFixed = false;
+  explicit CatalogueAdder(std::vector<VariationInfo>& catalogue) : catalogue_(catalogue) {}
+  void operator()(std::string name, std::string formula, bool threeD, bool random, VariationFn fn,
+                  std::vector<VariationParam> params = {}) const {
+    VariationInfo info;
+    info.name = std::move(name);
+    info.formula = std::move(formula);
+    info.threeD = threeD;
+    info.random = random;
+    info.apply = fn;
+    info.params = std::move(params);
+    catalogue_.push_back(std::move(info));
+  }
+  // A count parameter (sides, power, slices): rounded where used.
+  static VariationParam count(std::string name, double value, double low, double high) {
+    return VariationParam{std::move(name), value, low, high, true};
+  }
+
+ private:
+  std::vector<VariationInfo>& catalogue_;
+};
+
+using namespace variation_kernels;
+
+// Our own guard where flam3 divides by r unguarded (sin θ = x / r at the origin would be 0/0): small
+// enough to change no result away from the origin.
+constexpr double kEpsilon = 1e-300;
+// flam3's EPS, used exactly where flam3 adds it (to a parameter such as rings' c² or to a
+// denominator), so imported flames come out as flam3 draws them.
+constexpr double kFlam3Eps = 1e-10;
+
+// A count parameter (sides, power, slices) as used: rounded, 0 taken as 1 so nothing divides by 0.
+// Stays a double: converting a huge or NaN value to an integer would be undefined behaviour.
+inline double countParam(double value) {
+  const double rounded = std::round(value);
+  return rounded == 0.0 ? 1.0 : rounded;
+}
+
+// std::fmod(a, m) in a form GCC vectorises: libm's fmod has no vector variant (vector_math.h), and
+// one scalar call keeps the whole loop scalar. a − m·trunc(a/m), moved back into fmod's range (the
+// sign of a, magnitude below |m|) when the rounded quotient is one off; it differs from the exact
+// fmod by at most an ulp of a. NaN where fmod is NaN (an infinite a, a zero m).
+inline double laneFmod(double a, double m) {
+  const double am = std::abs(m);
+  double r = a - std::trunc(a / m) * m;
+  r = a >= 0.0 ? (r < 0.0 ? r + am : r) : (r > 0.0 ? r - am : r);
+  return a >= 0.0 ? (r >= am ? r - am : r) : (r <= -am ? r + am : r);
+}
+
+// flam3's own count-like parameters (julian's power, pie's slices, ngon's sides) are real numbers
+// there, and files hold values such as 3.8967: used as they are, with 0 taken as 1 as above.
+inline double flam3Count(double value) {
+  return value == 0.0 ? 1.0 : value;
+}
+
+// flam3's affine coefficients inside the row-major 3×4 pre-affine (see flame.h).
+constexpr std::size_t kAffineB = 1;  // m01
+constexpr std::size_t kAffineC = 3;  // t0
+constexpr std::size_t kAffineE = 5;  // m11
+constexpr std::size_t kAffineF = 7;  // t1
+
+// JWildfire's MathLib.EPSILON, used exactly where JWildfire adds or compares with it.
+constexpr double kJwfEpsilon = 1e-8;
+
+// ---- Fractorium's parameter rules --------------------------------------------------------------
+
+// Fractorium rounds an integer parameter (⌊v + ½⌋) and clamps it into its range when it is set.
+inline double fractoriumInteger(double value, double low, double high) {
+  return std::clamp(std::floor(value + 0.5), low, high);
+}
+
+// Apophysis' log map and log scale (Fractorium's VarFuncs), used by falloff3's third blur.
+inline double signNz(double value) {
+  return value < 0.0 ? -1.0 : 1.0;
+}
+inline double logMap(double value) {
+  return value == 0.0 ? 0.0 : (std::numbers::e + std::log(value * std::numbers::e)) * 0.25 * signNz(value);
+}
+inline double logScale(double value) {
+  return value == 0.0 ? 0.0 : std::log((std::abs(value) + 1.0) * std::numbers::e) * signNz(value) / std::numbers::e;
+}
+
+// ---- Java's integer arithmetic -------------------------------------------------------------------
+
+// Java's (int) of a double: truncation towards 0, saturating at the int range, NaN as 0.
+inline std::int32_t javaInt(double value) {
+  if (std::isnan(value)) return 0;
+  if (value >= 2147483647.0) return std::numeric_limits<std::int32_t>::max();
+  if (value <= -2147483648.0) return std::numeric_limits<std::int32_t>::min();
+  return static_cast<std::int32_t>(value);
+}
+// Java's int + and ×, which wrap around.
+inline std::int32_t wrapAdd(std::int32_t a, std::int32_t b) {
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(a) + static_cast<std::uint32_t>(b));
+}
+inline std::int32_t wrapMul(std::int32_t a, std::int32_t b) {
+  return static_cast<std::int32_t>(static_cast<std::uint32_t>(a) * static_cast<std::uint32_t>(b));
+}
+
+// The sum of four uniforms less 2: flam3's cheap bell-shaped number in (−2, 2).
+[[gnu::always_inline]] inline double laneGauss(std::uint32_t& state) {
+  const double a = laneUniform(state), b = laneUniform(state), c = laneUniform(state), d = laneUniform(state);
+  return a + b + c + d - 2.0;
+}
+
+// The families' tables (one file each), in the catalogue's order.
+void addFlam3ClassicVariations(std::vector<VariationInfo>& catalogue);
+void add3DVariations(std::vector<VariationInfo>& catalogue);
+void addFlam3Variations(std::vector<VariationInfo>& catalogue);
+void addApophysisVariations(std::vector<VariationInfo>& catalogue);
+void addPluginVariations(std::vector<VariationInfo>& catalogue);
+void addFractoriumVariations(std::vector<VariationInfo>& catalogue);
+void addJwildfireVariations(std::vector<VariationInfo>& catalogue);
+
+}  // namespace voxflame::core::variation_kernels
+
+// The arrays of a variation call as restrict-qualified locals: GCC vectorises loops over arrays it
+// knows do not alias. The outputs must carry `__restrict` in the function's own parameters too:
+// GCC 12 does not vectorise stores through a restrict local copied from an unqualified parameter
+// (it left even `linear` scalar). Loops that call sin, cos, atan2 or pow stay scalar, as libm has
+// no vector variants without -ffast-math; those without such calls vectorise.
+#define VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz) \
+  const double* __restrict x = (in).x;           \
+  const double* __restrict y = (in).y;           \
+  const double* __restrict z = (in).z;           \
+  std::uint32_t* __restrict rnd = (in).random;   \
+  double* __restrict outX = (ox);                \
+  double* __restrict outY = (oy);                \
+  double* __restrict outZ = (oz);                \
+  const std::size_t n = (in).count;              \
+  const double w = (in).weight;                  \
+  const double* __restrict P = (in).params;      \
+  (void)x;                                       \
+  (void)y;                                       \
+  (void)z;                                       \
+  (void)rnd;                                     \
+  (void)outX;                                    \
+  (void)outY;                                    \
+  (void)w;                                       \
+  (void)P;
+
+// Each variation is built for AVX2 and for any x86-64, picked when the program loads: with AVX2
+// the loops that vectorise run four lanes at a time.
+#if defined(__x86_64__) && !defined(__AVX2__) && !defined(__SANITIZE_THREAD__)
+#define VOXFLAME_VARIATION_TARGETS [[gnu::target_clones("avx2", "default")]]
+#else
+#define VOXFLAME_VARIATION_TARGETS
+#endif
+
+// A shorthand for the common shape: a loop over the lanes with x, y, z and the lane's random state
+// in scope, where the body adds to outX[i] and outY[i]; z is carried through.
+#define VOXFLAME_VARIATION_2D(fn, ...)                                                                       \
+  VOXFLAME_VARIATION_TARGETS void fn(const VariationInput& in, double* __restrict ox, double* __restrict oy, \
+                                     double* __restrict oz) {                                                \
+    VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)                                                                 \
+    for (std::size_t i = 0; i < n; ++i) {                                                                    \
+      __VA_ARGS__                                                                                            \
+      outZ[i] += w * z[i];                                                                                   \
+    }                                                                                                        \
+  }
