@@ -85,6 +85,52 @@ TEST(FlameImage, DensityEstimationLeavesADenseRegionAndSpreadsALoneHit) {
   EXPECT_EQ(estimated.at(49, 32)[3], 0.0f);
 }
 
+// flam3-render's density estimation (filters.c, rect.c) normalises a kernel of width h over every
+// offset within h but spreads only over offsets of at most ⌈h⌉ − 1 pixels along each axis: the
+// narrowest kernel, of width 1 where the density is highest, keeps its pixel's value divided by
+// 1 + 4 e^(−2 · 1.5²) and drops the rest. The flat view does as flam3 does; voxflame's own finish
+// keeps every pixel's total.
+TEST(FlameImage, Flam3sDensityEstimationDropsTheRingOfAWholeWidthKernel) {
+  core::DensityImage image;
+  image.resize(48, 48);
+  image.hitsPerUnitDensity = 1.0;  // D is the hit count
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 48; ++x) {
+      float* p = image.at(x, y);
+      p[0] = p[1] = p[2] = p[3] = 5000.0f;  // dense: the narrowest kernel everywhere
+    }
+  image.wholeHits = true;
+  core::ToneMapSettings tone = plainTone();
+  tone.estimatorRadius = 9.0;
+  tone.estimatorMinimum = 0.0;
+  tone.estimatorCurve = 0.4;
+  core::DensityImage ours, flam3s;
+  core::estimateDensity(image, tone, 1, ours);
+  core::estimateDensity(image, tone, 1, flam3s, true);
+  const double dense = core::logDensity(5000.0, tone);
+  const double kept = 1.0 / (1.0 + 4.0 * std::exp(-2.0 * 1.5 * 1.5));
+  EXPECT_NEAR(ours.at(24, 24)[3], dense, 1e-4 * dense);
+  EXPECT_NEAR(flam3s.at(24, 24)[3], kept * dense, 1e-4 * dense);
+  // A lone point's kernel (width 10, the widest) spreads all it has in both.
+  core::DensityImage lone;
+  lone.resize(48, 48);
+  lone.hitsPerUnitDensity = 1.0;
+  lone.wholeHits = true;
+  lone.at(24, 24)[3] = lone.at(24, 24)[0] = 1.0f;
+  core::estimateDensity(lone, tone, 1, ours);
+  core::estimateDensity(lone, tone, 1, flam3s, true);
+  double oursTotal = 0.0, flam3Total = 0.0;
+  for (int y = 0; y < 48; ++y)
+    for (int x = 0; x < 48; ++x) {
+      oursTotal += ours.at(x, y)[3];
+      flam3Total += flam3s.at(x, y)[3];
+    }
+  const double one = core::logDensity(1.0, tone);
+  EXPECT_NEAR(oursTotal, one, 1e-4 * one);
+  EXPECT_NEAR(flam3Total, one, 1e-4 * one);
+  EXPECT_EQ(flam3s.at(24 + 10, 24)[3], 0.0f);  // ⌈10⌉ − 1 = 9 pixels at most
+}
+
 TEST(FlameImage, SpatialFilterKeepsTheTotalAndDownsamples) {
   core::DensityImage image;
   image.resize(40, 20);

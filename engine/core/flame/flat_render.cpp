@@ -23,8 +23,15 @@ namespace {
 constexpr double kMaxSide = 65536.0;
 constexpr double kMaxSamples = 1e12;
 constexpr std::size_t kLanes = 1024;
-// Steps a freshly seeded lane runs before it draws (flam3 discards 15–20 per orbit it starts).
-constexpr int kFuse = 20;
+// flam3's chaos game (rect.c, iter_thread and flam3_iterate), which the flat view follows so that
+// a flame is as bright as flam3-render draws it: an orbit starts from a random point and draws
+// kSubBatch samples after discarding kFuse steps (flam3-render's fuse without early clipping),
+// then starts again. A flame whose orbits collapse onto a point is drawn mostly by those
+// restarts. A bad value (NaN or beyond 10¹⁰) restarts the orbit at a random point without fuse and
+// does not count as a sample, unless it is the kBadRetries-th in a row.
+constexpr int kFuse = 15;
+constexpr std::uint64_t kSubBatch = 10000;
+constexpr int kBadRetries = 5;
 // The histograms of all chaos-game tasks together stay below this, whatever the core count.
 constexpr double kMaxHistogramBytes = 1.5e9;
 // flam3's k1 carries 268/256 (rect.c): flam3 brightness 4 is 4 · 268/256 on the log curve.
@@ -140,6 +147,17 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   const double turn = flat.rotateDeg * std::numbers::pi / 180.0;
   const double cosTurn = std::cos(turn), sinTurn = std::sin(turn);
   const bool turned = flat.rotateDeg != 0.0;
+  // flam3's histogram (rect.c) reaches beyond the image by the spatial filter's gutter or, when
+  // larger, the density estimator's radius: points further out are not drawn, so neither filter
+  // spreads anything from them into the picture.
+  const int filterGutter = (spatialFilterTaps(oversample, flat.filterRadius) - oversample) / 2;
+  const int estimatorGutter =
+      sceneTone.estimatorRadius > 0.0
+          ? static_cast<int>(std::ceil(std::min(sceneTone.estimatorRadius, 1e6))) * oversample + oversample - 1
+          : 0;
+  const double drawnGutter = std::max(filterGutter, estimatorGutter);
+  const double drawnLeft = gutter * oversample - drawnGutter, drawnRight = (gutter + width) * oversample + drawnGutter;
+  const double drawnTop = gutter * oversample - drawnGutter, drawnBottom = (gutter + height) * oversample + drawnGutter;
 
   // The chaos game in independent tasks, each into its own histogram (hits, then red, green and
   // blue weighted by hits), summed afterwards; the task count is fixed by the core count and a
@@ -158,7 +176,8 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
       SplitMix64 rng(options.seed * 0x9e3779b97f4a7c15ULL + task + 1);
       ChaosLanes lanes;
       lanes.resize(kLanes);
-      std::vector<int> fuse(kLanes, kFuse);
+      std::vector<int> fuse(kLanes, kFuse), bad(kLanes, 0);
+      std::vector<std::uint64_t> orbitSamples(kLanes, 0);
       for (std::size_t i = 0; i < kLanes; ++i) game.seedLane(lanes, i, rng);
       std::vector<double> outX(kLanes), outY(kLanes), outZ(kLanes), outColor(kLanes);
       std::uint64_t drawn = 0;
@@ -171,18 +190,26 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
         }
         game.step(lanes, outX.data(), outY.data(), outZ.data(), outColor.data(), kLanes);
         for (std::size_t i = 0; i < kLanes && drawn < quota; ++i) {
-          if (std::isnan(outX[i])) {  // escaped: a fresh start, as flam3 does with a bad value
+          if (std::isnan(outX[i])) {  // a bad value: on from a random point, as flam3 goes on
             game.seedLane(lanes, i, rng);
-            fuse[i] = kFuse;
+            if (fuse[i] > 0 || ++bad[i] < kBadRetries) continue;
+            bad[i] = 0;
             ++drawn;
             continue;
           }
+          bad[i] = 0;
           if (fuse[i] > 0) {
             --fuse[i];
             continue;
           }
           ++drawn;
-          if (!lanes.visible[i]) continue;
+          const bool visible = lanes.visible[i] != 0;
+          if (++orbitSamples[i] == kSubBatch) {  // this orbit's sub-batch is drawn: the next starts afresh
+            orbitSamples[i] = 0;
+            game.seedLane(lanes, i, rng);
+            fuse[i] = kFuse;
+          }
+          if (!visible) continue;
           double px = outX[i], py = outY[i];
           if (turned) {
             const double dx = px - flat.centerX, dy = py - flat.centerY;
@@ -190,7 +217,7 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
             py = dx * sinTurn + dy * cosTurn + flat.centerY;
           }
           const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
-          if (!(bx >= 0.0 && by >= 0.0 && bx < histWidth && by < histHeight)) continue;
+          if (!(bx >= drawnLeft && by >= drawnTop && bx < drawnRight && by < drawnBottom)) continue;
           const glm::vec3 c = flatPaletteColour(palette, outColor[i], flat.paletteMode);
           float* v = histogram.at(static_cast<int>(bx), static_cast<int>(by));
           v[0] += c.r;
@@ -226,6 +253,7 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   finish.tone.brightness *= kFlam3BrightnessFactor;
   finish.oversample = oversample;
   finish.filterRadius = flat.filterRadius;
+  finish.flam3KernelTruncation = true;
   const FinishedImage finished = finishImage(sum, finish);
 
   FlatRenderResult result;

@@ -35,19 +35,23 @@ struct Kernel {
   std::vector<float> weights;
 };
 
-Kernel makeKernel(double width) {
+// `normalHalf`: the half side of the square whose offsets within the width normalise the weights
+// (flam3's, FinishSettings::flam3KernelTruncation), or −1 for those the kernel spreads over.
+Kernel makeKernel(double width, int normalHalf) {
   Kernel k;
-  k.radius = static_cast<int>(std::floor(width));
+  k.radius = normalHalf < 0 ? static_cast<int>(std::floor(width)) : std::max(0, static_cast<int>(std::ceil(width)) - 1);
   const int side = 2 * k.radius + 1;
   k.weights.assign(static_cast<std::size_t>(side * side), 0.0f);
   double sum = 0.0;
-  for (int dy = -k.radius; dy <= k.radius; ++dy)
-    for (int dx = -k.radius; dx <= k.radius; ++dx) {
+  const int half = normalHalf < 0 ? k.radius : std::max(normalHalf, k.radius);
+  for (int dy = -half; dy <= half; ++dy)
+    for (int dx = -half; dx <= half; ++dx) {
       const double d = std::sqrt(static_cast<double>(dx * dx + dy * dy)) / width;
       if (d > 1.0) continue;
       const double w = gaussian(kGaussianSupport * d);
-      k.weights[static_cast<std::size_t>((dy + k.radius) * side + dx + k.radius)] = static_cast<float>(w);
       sum += w;
+      if (std::abs(dx) <= k.radius && std::abs(dy) <= k.radius)
+        k.weights[static_cast<std::size_t>((dy + k.radius) * side + dx + k.radius)] = static_cast<float>(w);
     }
   for (float& w : k.weights) w = static_cast<float>(w / sum);
   return k;
@@ -58,13 +62,20 @@ Kernel makeKernel(double width) {
 // 4% so a table of kernels serves every pixel.
 class KernelTable {
  public:
-  KernelTable(const ToneMapSettings& tone, int oversample)
+  KernelTable(const ToneMapSettings& tone, int oversample, bool flam3Truncation)
       : maxWidth_(tone.estimatorRadius * oversample + 1.0),
         minWidth_(std::min(tone.estimatorMinimum * oversample + 1.0, maxWidth_)),
         curve_(std::max(tone.estimatorCurve, 1e-3)) {
     const int count = index(minWidth_) + 1;
+    // flam3 normalises over the square of the widest kernel's spread (filters.c's de_half_size).
+    const int normalHalf = flam3Truncation ? std::max(0, static_cast<int>(std::ceil(maxWidth_)) - 1) : -1;
     kernels_.reserve(static_cast<std::size_t>(count));
-    for (int i = 0; i < count; ++i) kernels_.push_back(makeKernel(maxWidth_ / std::pow(kStep, i)));
+    for (int i = 0; i < count; ++i) {
+      // With flam3's truncation the narrowest is minWidth_ itself (a whole width when the minimum
+      // is), as flam3's is; else the table's quantised widths all through, as the GPU finisher has them.
+      const double width = flam3Truncation && i + 1 == count ? minWidth_ : maxWidth_ / std::pow(kStep, i);
+      kernels_.push_back(makeKernel(width, normalHalf));
+    }
   }
   const Kernel& forHits(double hits, bool wholeHits) const {
     const double count = wholeHits ? std::max(1.0, std::ceil(hits)) : hits + 1.0;
@@ -172,7 +183,8 @@ double logDensity(double density, const ToneMapSettings& tone) {
   return density > 0.0 ? tone.brightness * std::log1p(kDensityScale * density) : 0.0;
 }
 
-void estimateDensity(const DensityImage& in, const ToneMapSettings& tone, int oversample, DensityImage& out) {
+void estimateDensity(const DensityImage& in, const ToneMapSettings& tone, int oversample, DensityImage& out,
+                     bool flam3KernelTruncation) {
   out.resize(in.width, in.height);
   out.hitsPerUnitDensity = in.hitsPerUnitDensity;
   const int width = in.width, height = in.height;
@@ -191,7 +203,7 @@ void estimateDensity(const DensityImage& in, const ToneMapSettings& tone, int ov
     });
     return;
   }
-  const KernelTable kernels(tone, std::max(1, oversample));
+  const KernelTable kernels(tone, std::max(1, oversample), flam3KernelTruncation);
   // Each pixel scatters over its own kernel. Bands at least two kernels tall are done in two
   // rounds (even bands, then odd ones), so bands that run at the same time never write the same row.
   const int band = std::max(16, 2 * kernels.maxRadius() + 2);
@@ -212,9 +224,9 @@ void estimateDensity(const DensityImage& in, const ToneMapSettings& tone, int ov
             const double density = in.wholeHits && oversample > 1 ? blockDensity(in, x, y, oversample) : v[3];
             const Kernel& k = kernels.forHits(density * hitsPerUnit, in.wholeHits);
             const int r = k.radius, side = 2 * r + 1;
-            if (r == 0) {
+            if (r == 0) {  // its one weight is 1, or less with flam3's truncation
               float* o = out.at(x, y);
-              for (int c = 0; c < 4; ++c) o[c] += value[c];
+              for (int c = 0; c < 4; ++c) o[c] += k.weights[0] * value[c];
               continue;
             }
             // Weight that would fall outside the image piles on its edge, so the total is kept.
@@ -234,6 +246,14 @@ void estimateDensity(const DensityImage& in, const ToneMapSettings& tone, int ov
   }
 }
 
+int spatialFilterTaps(int oversample, double radius) {
+  oversample = std::max(1, oversample);
+  const double fw = 2.0 * kGaussianSupport * oversample * std::max(0.0, radius);
+  int taps = static_cast<int>(std::min(fw, 1e6)) + 1;
+  if ((taps ^ oversample) & 1) ++taps;
+  return taps;
+}
+
 void spatialFilter(const DensityImage& in, int oversample, double radius, DensityImage& out) {
   oversample = std::max(1, oversample);
   const int outWidth = in.width / oversample, outHeight = in.height / oversample;
@@ -242,8 +262,7 @@ void spatialFilter(const DensityImage& in, int oversample, double radius, Densit
   // flam3's filter (filters.c): a kernel of fw = 2 · support · oversample · radius supersampled
   // pixels, rounded to a whole width of the oversample's parity so it stays centred on the pixel.
   const double fw = 2.0 * kGaussianSupport * oversample * std::max(0.0, radius);
-  int taps = static_cast<int>(fw) + 1;
-  if ((taps ^ oversample) & 1) ++taps;
+  const int taps = spatialFilterTaps(oversample, radius);
   const double adjust = fw > 0.0 ? kGaussianSupport * taps / fw : 1.0;
   std::vector<float> weights(static_cast<std::size_t>(taps * taps));
   double sum = 0.0;
@@ -283,7 +302,7 @@ FinishedImage finishImage(const DensityImage& in, const FinishSettings& settings
   if (in.width % oversample || in.height % oversample)
     throw Error("the density image is not a whole number of supersampled pixels");
   DensityImage logImage, filtered;
-  estimateDensity(in, settings.tone, oversample, logImage);
+  estimateDensity(in, settings.tone, oversample, logImage, settings.flam3KernelTruncation);
   spatialFilter(logImage, oversample, settings.filterRadius, filtered);
 
   const ToneMapSettings& tone = settings.tone;

@@ -72,6 +72,11 @@ struct FinishSettings {
   int oversample = 1;         // supersampled pixels per output pixel along each axis
   double filterRadius = 0.5;  // spatial filter, in output pixels
   bool linearOutput = false;  // linear light (for EXR) instead of display-encoded and clamped
+  // Density estimation as flam3-render does it (the flat view, compared with flam3): a kernel of
+  // width h spreads over the offsets of at most ⌈h⌉ − 1 pixels along each axis, while its weights
+  // are normalised over every offset within h, so a kernel of whole width (the narrowest, 1, where
+  // the density is highest) keeps only 1 / (1 + 4 e^(−4.5)) ≈ 96% of its pixel's value.
+  bool flam3KernelTruncation = false;
 };
 
 struct FinishedImage {
@@ -89,10 +94,14 @@ double logDensity(double density, const ToneMapSettings& tone);
 
 // Step 2 on every pixel: log density, spread by density estimation when tone.estimatorRadius > 0
 // (radii in output pixels, scaled by `oversample`). Output: red·L, green·L, blue·L, L per pixel.
-void estimateDensity(const DensityImage& in, const ToneMapSettings& tone, int oversample, DensityImage& out);
+void estimateDensity(const DensityImage& in, const ToneMapSettings& tone, int oversample, DensityImage& out,
+                     bool flam3KernelTruncation = false);
 
 // Step 3: the Gaussian spatial filter of `radius` output pixels, from the supersampled image to
 // width / oversample × height / oversample pixels.
+// The width of that filter in supersampled pixels (flam3's filters.c: ⌊2 · support · oversample ·
+// radius⌋ + 1, made of the oversample's parity so it stays centred on the pixel).
+int spatialFilterTaps(int oversample, double radius);
 void spatialFilter(const DensityImage& in, int oversample, double radius, DensityImage& out);
 
 // Steps 2–4 and the mesh overlay (may be null). `in`'s size must be a multiple of the oversample.
