@@ -25,6 +25,9 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addPluginVariations(c);
   variation_kernels::addFractoriumVariations(c);
   variation_kernels::addJwildfireVariations(c);
+  variation_kernels::addFractorium2dMVariations(c);
+  variation_kernels::addFractorium2dSVariations(c);
+  variation_kernels::addFractoriumTruchetVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3")

@@ -143,6 +143,9 @@ void addApophysisVariations(std::vector<VariationInfo>& catalogue);
 void addPluginVariations(std::vector<VariationInfo>& catalogue);
 void addFractoriumVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireVariations(std::vector<VariationInfo>& catalogue);
+void addFractorium2dMVariations(std::vector<VariationInfo>& catalogue);
+void addFractorium2dSVariations(std::vector<VariationInfo>& catalogue);
+void addFractoriumTruchetVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -106,12 +106,14 @@ const VariationInfo* variationNamed(std::string_view name) {
 // octa_y and octa_z (JWildfire's octagon_x ...); bezo97's pixel_flow plugin writes its parameters
 // bare (angle, len, ...). JWildfire's crop_trapezoid names two parameters "Base Sup." and
 // "Base Inf." (not XML names; tolerantXml keeps them), the catalogue's base_sup and base_inf.
+// Fractorium's q_ode names its parameters q_ode01 … q_ode12, without the "_".
 std::vector<std::string> fileParamNames(const std::string& termAttribute, const VariationInfo& info,
                                         const std::string& param) {
   std::vector<std::string> names = {termAttribute + "_" + param};
   if (info.name == "auger" && param == "strength") names.push_back(termAttribute + "_weight");
   if (info.name == "octagon" && param.size() == 1) names.push_back("octa_" + param);
   if (info.name == "pixel_flow") names.push_back(param);
+  if (info.name == "q_ode") names.push_back(termAttribute + param);
   if (info.name == "crop_trapezoid" && param == "base_sup") names.push_back(termAttribute + "_Base Sup.");
   if (info.name == "crop_trapezoid" && param == "base_inf") names.push_back(termAttribute + "_Base Inf.");
   if (info.name == "mobius" && param.size() == 4) {
