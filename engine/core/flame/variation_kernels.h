@@ -143,6 +143,10 @@ void addApophysisVariations(std::vector<VariationInfo>& catalogue);
 void addPluginVariations(std::vector<VariationInfo>& catalogue);
 void addFractoriumVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireVariations(std::vector<VariationInfo>& catalogue);
+void addQuaternionVariations(std::vector<VariationInfo>& catalogue);
+void addFractorium3DShapeVariations(std::vector<VariationInfo>& catalogue);
+void addFractorium3DMoreVariations(std::vector<VariationInfo>& catalogue);
+void addFractoriumRandom2DVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

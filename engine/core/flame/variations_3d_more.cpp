@@ -1,0 +1,257 @@
+// More of Fractorium's 3D variations: quaternion Möbius maps, 3D julia roots, spherical heat waves, the hyperbolic
+// tiling in 3D, lines, rings and scry/loonie 3D. The formulas follow Fractorium's classes of the same name
+// (Variations02.h–07.h), with Fractorium's guard Zeps (a zero divisor taken as the double's epsilon). Each variation
+// is a kernel below and one row of the table at the end (see variations.h for the notation and variation_kernels.h
+// for what the files share).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "core/flame/variation_kernels.h"
+#include "core/vector_math.h"
+
+namespace voxflame::core {
+
+namespace {
+
+using namespace variation_kernels;
+
+// mobiq: the quaternion Möbius map (A q + B)/(C q + D) of q = x + y i + z j, with A … D quaternions (t + x i + y j +
+// z k) from the parameters; the quotient's k part is dropped (Fractorium's).
+VOXFLAME_VARIATION_TARGETS void mobiq(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                      double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double at = P[0], ax = P[1], ay = P[2], az = P[3], bt = P[4], bx = P[5], by = P[6], bz = P[7];
+  const double ct = P[8], cx = P[9], cy = P[10], cz = P[11], dt = P[12], dx = P[13], dy = P[14], dz = P[15];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double qt = x[i], qx = y[i], qy = z[i];
+    const double nt = at * qt - ax * qx - ay * qy + bt;
+    const double nx = at * qx + ax * qt - az * qy + bx;
+    const double ny = at * qy + ay * qt + az * qx + by;
+    const double nz = az * qt + ax * qy - ay * qx + bz;
+    const double et = ct * qt - cx * qx - cy * qy + dt;
+    const double ex = ct * qx + cx * qt - cz * qy + dx;
+    const double ey = ct * qy + cy * qt + cz * qx + dy;
+    const double ez = cz * qt + cx * qy - cy * qx + dz;
+    const double ni = w / (et * et + ex * ex + ey * ey + ez * ez);
+    outX[i] += (nt * et + nx * ex + ny * ey + nz * ez) * ni;
+    outY[i] += (nx * et - nt * ex - ny * ez + nz * ey) * ni;
+    outZ[i] += (ny * et - nt * ey - nz * ex + nx * ez) * ni;
+  }
+}
+
+// julia3Dq: julia3D's root with a divisor: the angle φ·divisor/power plus a random one of the power branches 2πk/power,
+// the radius (r² + (z·|divisor/power|)²)^(divisor/power/2 − ½). Fractorium picks k as a random integer below 32767;
+// k below |power| gives the same branches.
+VOXFLAME_VARIATION_TARGETS void julia3Dq(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double power = countParam(P[0]), divisor = countParam(P[1]);
+  const double invPower = divisor / power, absInvPower = std::abs(invPower);
+  const double halfInvPower = 0.5 * invPower - 0.5, branch = kTwoPi / power, branches = std::abs(power);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double k = std::floor(laneUniform(rnd[i]) * branches);
+    const double t = std::atan2(y[i], x[i]) * invPower + k * branch;
+    const double pz = z[i] * absInvPower;
+    const double r2 = x[i] * x[i] + y[i] * y[i];
+    const double r = w * std::pow(r2 + pz * pz, halfInvPower);
+    const double rs = r * std::sqrt(r2);
+    outX[i] += rs * std::cos(t);
+    outY[i] += rs * std::sin(t);
+    outZ[i] += r * pz;
+  }
+}
+
+// heat: the point in spherical coordinates (ρ, azimuth φ, polar σ), each shifted by a sine wave of the radius:
+// ρ' = ρ + w r_amp sin(2π ρ/r_period + r_phase/r_period), and likewise φ (theta_*) and σ (phi_*) from ρ'. As in
+// Fractorium, ρ = √|x² + y² + z| (z, not z²), and a period of 0 stops its wave.
+VOXFLAME_VARIATION_TARGETS void heat(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                     double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const auto inverse = [](double period) { return period == 0.0 ? 0.0 : 1.0 / period; };
+  const double tx = inverse(P[0]), px = inverse(P[3]), rx = inverse(P[6]);
+  const double at = w * P[2], bt = kTwoPi * tx, ct = P[1] * tx;
+  const double ap = w * P[5], bp = kTwoPi * px, cp = P[4] * px;
+  const double ar = w * P[8], br = kTwoPi * rx, cr = P[7] * rx;
+  for (std::size_t i = 0; i < n; ++i) {
+    double r = std::sqrt(std::abs(x[i] * x[i] + y[i] * y[i] + z[i]));
+    r += ar * std::sin(br * r + cr);
+    if (r == 0.0) r = kFractoriumEps;
+    const double azimuth = at * std::sin(bt * r + ct) + std::atan2(y[i], x[i]);
+    const double polar = ap * std::sin(bp * r + cp) + std::acos(std::clamp(z[i] / r, -1.0, 1.0));
+    const double sp = std::sin(polar);
+    outX[i] += r * std::cos(azimuth) * sp;
+    outY[i] += r * std::sin(azimuth) * sp;
+    outZ[i] += r * std::cos(polar);
+  }
+}
+
+// hypertile3D: hypertile's Möbius step of the {p, q} tiling extended to z. As in Fractorium, |p|² is taken as x² + y²
+// + z (z, not z²).
+VOXFLAME_VARIATION_TARGETS void hypertile3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                            double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  constexpr double kMaxCount = 2147483647.0;
+  const double p = fractoriumInteger(P[0], 3.0, kMaxCount), q = fractoriumInteger(P[1], 3.0, kMaxCount);
+  const double tile = std::floor(P[2] + 0.5);
+  const double pa = kTwoPi / p, qa = kTwoPi / q;
+  double r = -(std::cos(pa) - 1.0) / fractoriumZeps(std::cos(pa) + std::cos(qa));
+  r = r > 0.0 ? 1.0 / fractoriumZeps(std::sqrt(1.0 + r)) : 1.0;
+  const double cx = r * std::cos(tile * pa), cy = r * std::sin(tile * pa);
+  const double c2 = cx * cx + cy * cy, c2x = 2.0 * cx, c2y = 2.0 * cy;
+  const double s2x = 1.0 + cx * cx - cy * cy, s2y = 1.0 + cy * cy - cx * cx, s2z = 1.0 - cy * cy - cx * cx;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r2 = x[i] * x[i] + y[i] * y[i] + z[i];
+    const double x2cx = c2x * x[i], y2cy = c2y * y[i];
+    const double d = w / fractoriumZeps(c2 * r2 + x2cx - y2cy + 1.0);
+    outX[i] += d * (x[i] * s2x - cx * (y2cy - r2 - 1.0));
+    outY[i] += d * (y[i] * s2y + cy * (-x2cx - r2 - 1.0));
+    outZ[i] += d * z[i] * s2z;
+  }
+}
+
+// loonie_3D: loonie in 3D, with z replaced by φ where it is 0, and z halved.
+VOXFLAME_VARIATION_TARGETS void loonie3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double vv = w * w;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double pz = z[i] == 0.0 ? std::atan2(y[i], x[i]) : z[i];
+    const double r2 = x[i] * x[i] + y[i] * y[i] + pz * pz;
+    const double r = r2 < vv ? w * std::sqrt(vv / r2 - 1.0) : w;
+    outX[i] += r * x[i];
+    outY[i] += r * y[i];
+    outZ[i] += r * pz * 0.5;
+  }
+}
+
+// scry_3D: scry in 3D, with z replaced by φ where it is 0; the weight enters only as 1/w, as in scry.
+VOXFLAME_VARIATION_TARGETS void scry3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double invWeight = 1.0 / fractoriumZeps(w);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = x[i] * x[i] + y[i] * y[i] + z[i] * z[i];
+    const double r = 1.0 / fractoriumZeps(std::sqrt(t) * (t + invWeight));
+    const double pz = z[i] == 0.0 ? std::atan2(y[i], x[i]) : z[i];
+    outX[i] += x[i] * r;
+    outY[i] += y[i] * r;
+    outZ[i] += pz * r;
+  }
+}
+
+// line: a random point on the segment from the origin to w·u, u the unit vector at azimuth delta·π and elevation phi·π.
+VOXFLAME_VARIATION_TARGETS void line(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                     double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  double ux = std::cos(P[0] * kPi) * std::cos(P[1] * kPi);
+  double uy = std::sin(P[0] * kPi) * std::cos(P[1] * kPi);
+  double uz = std::sin(P[1] * kPi);
+  const double length = std::sqrt(ux * ux + uy * uy + uz * uz);
+  ux /= length;
+  uy /= length;
+  uz /= length;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = laneUniform(rnd[i]) * w;
+    outX[i] += ux * r;
+    outY[i] += uy * r;
+    outZ[i] += uz * r;
+  }
+}
+
+// concentric: rings of a random level ⌊Ψ density⌋/density, at radius level·radius (blurred by R_blur), sunk to
+// z = −level (blurred by Z_blur). Fractorium discards the terms summed before it as an ordinary term (and adds it as a
+// pre_/post_ term), and so does the chaos game here.
+VOXFLAME_VARIATION_TARGETS void concentric(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double radius = P[0], density = P[1], rBlur = P[2], zBlur = P[3];
+  const double inverseDensity = 1.0 / fractoriumZeps(density);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double level = std::floor(laneUniform(rnd[i]) * density) * inverseDensity;
+    const double angle = laneUniform(rnd[i]) * kTwoPi;
+    double ring = level * radius;
+    if (rBlur != 0.0) ring += (std::sqrt(laneUniform(rnd[i])) * 2.0 - 1.0) * rBlur;
+    const double zb = zBlur != 0.0 ? (laneUniform(rnd[i]) * 2.0 - 1.0) * zBlur : 0.0;
+    outX[i] += ring * std::cos(angle) * w;
+    outY[i] += ring * std::sin(angle) * w;
+    outZ[i] += (zb - level) * w;
+  }
+}
+
+}  // namespace
+
+void variation_kernels::addFractorium3DMoreVariations(std::vector<VariationInfo>& catalogue) {
+  const CatalogueAdder add(catalogue);
+  constexpr bool k3D = CatalogueAdder::k3D, kRandom = CatalogueAdder::kRandom, kFixed = CatalogueAdder::kFixed;
+  const auto count = &CatalogueAdder::count;
+  add("mobiq",
+      "(A q + B)/(C q + D) for q = x + y i + z j, A = at + ax i + ay j + az k and likewise B, C, D; the result's real, "
+      "i "
+      "and j parts (Fractorium's)",
+      k3D, kFixed, &mobiq,
+      {{"at", 1.0, -2.0, 2.0},
+       {"ax", 0.0, -2.0, 2.0},
+       {"ay", 0.0, -2.0, 2.0},
+       {"az", 0.0, -2.0, 2.0},
+       {"bt", 0.0, -2.0, 2.0},
+       {"bx", 0.0, -2.0, 2.0},
+       {"by", 0.0, -2.0, 2.0},
+       {"bz", 0.0, -2.0, 2.0},
+       {"ct", 0.0, -2.0, 2.0},
+       {"cx", 0.0, -2.0, 2.0},
+       {"cy", 0.0, -2.0, 2.0},
+       {"cz", 0.0, -2.0, 2.0},
+       {"dt", 1.0, -2.0, 2.0},
+       {"dx", 0.0, -2.0, 2.0},
+       {"dy", 0.0, -2.0, 2.0},
+       {"dz", 0.0, -2.0, 2.0}});
+  add("julia3Dq",
+      "ρ (r cos t, r sin t, z'); m = divisor/power, z' = |m| z, ρ = (r² + z'²)^(m/2 − ½), t = m φ + 2π ⌊Ψ |power|⌋ / "
+      "power",
+      k3D, kRandom, &julia3Dq, {count("power", 3.0, -10.0, 10.0), count("divisor", 2.0, -10.0, 10.0)});
+  add("heat",
+      "ρ' (cos a sin s, sin a sin s, cos s); ρ = √|r² + z|, ρ' = ρ + w r_amp sin(2π ρ/r_period + r_phase/r_period), a "
+      "= "
+      "φ + w theta_amp sin(2π ρ'/theta_period + theta_phase/theta_period), s = acos(z/ρ') + w phi_amp sin(2π "
+      "ρ'/phi_period + phi_phase/phi_period); a period of 0 stops its wave (w the weight; Fractorium's)",
+      k3D, kFixed, &heat,
+      {{"theta_period", 1.0, -5.0, 5.0},
+       {"theta_phase", 0.0, -5.0, 5.0},
+       {"theta_amp", 1.0, -5.0, 5.0},
+       {"phi_period", 1.0, -5.0, 5.0},
+       {"phi_phase", 0.0, -5.0, 5.0},
+       {"phi_amp", 0.0, -5.0, 5.0},
+       {"r_period", 1.0, -5.0, 5.0},
+       {"r_phase", 0.0, -5.0, 5.0},
+       {"r_amp", 0.0, -5.0, 5.0}});
+  add("hypertile3D",
+      "(x s_x − c_x (2 c_y y − t − 1), y s_y − c_y (2 c_x x + t + 1), z s_z) / (|c|² t + 2 c_x x − 2 c_y y + 1); t = "
+      "r² "
+      "+ z, c the {p, q} tiling's centre of tile n, s_x = 1 + c_x² − c_y², s_y = 1 + c_y² − c_x², s_z = 1 − |c|² "
+      "(Fractorium's)",
+      k3D, kFixed, &hypertile3D,
+      {count("p", 3.0, 3.0, 12.0), count("q", 7.0, 3.0, 12.0), count("n", 0.0, -10.0, 10.0)});
+  add("loonie_3D",
+      "k (x, y, z'/2); z' = z, or φ where z = 0; k = √(w²/(r² + z'²) − 1) inside the sphere of radius |w|, else 1 (w "
+      "the weight)",
+      k3D, kFixed, &loonie3D);
+  add("scry_3D", "(x, y, z') / (|p| (|p|² + 1/w)), the weight w applied only there; z' = z, or φ where z = 0", k3D,
+      kFixed, &scry3D);
+  add("line", "Ψ u; u the unit vector (cos δ cos ϕ, sin δ cos ϕ, sin ϕ), δ = π delta, ϕ = π phi", k3D, kRandom, &line,
+      {{"delta", 0.0, -1.0, 1.0}, {"phi", 0.0, -1.0, 1.0}});
+  add("concentric",
+      "(ρ cos a, ρ sin a, b − l); l = ⌊Ψ₁ density⌋/density, a = 2πΨ₂, ρ = l radius + (2√Ψ₃ − 1) R_blur (Ψ₃ drawn "
+      "only when R_blur ≠ 0), b = (2Ψ₄ − 1) Z_blur (drawn only when Z_blur ≠ 0); discards the terms before it "
+      "(Fractorium's)",
+      k3D, kRandom, &concentric,
+      {{"radius", 1.0, -2.0, 2.0},
+       {"density", 10.0, 1.0, 50.0},
+       {"R_blur", 0.0, -1.0, 1.0},
+       {"Z_blur", 0.0, -1.0, 1.0}});
+  catalogue.back().replaces = VariationInfo::Replaces::XYZ;
+}
+
+}  // namespace voxflame::core
