@@ -9,11 +9,13 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "core/flame/variations.h"
+#include "core/flame/xml.h"
 #include "variation_point_case.h"
 
 using namespace voxflame::core;
@@ -288,17 +290,106 @@ const std::vector<PointCase>& pointCases() {
        kHighSeed,
        {0.508235141459625, -0.5508608962622799, 0.4}},
       {"sschecks",
-       {0.3, -0.2, 0.7, 0.6},
+       {0.3, -0.2, 0.25, 0.6},
        {0.3, -0.7, 0.5},
        0.8,
        kHighSeed,
-       {0.508235141459625, -0.5508608962622799, 0.4}},
+       {0.5660912625228575, -0.44871701732551234, 0.4}},
       {"starblur", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.29468793935595244, 0.020778614485252644, 0.4}},
       {"starblur", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {0.641297863492753, -0.17753566779834612, 0.4}},
       {"starblur", {7.0, 0.6}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.4255324411221003, -0.2778726458828377, 0.4}},
       {"log_db", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.21789087017666886, -5.95927187815152, 0.4}},
       {"log_db", {2.0, 0.5}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.12868985796297377, -2.189360693843768, 0.4}},
       {"log_db", {0.0, 0.0}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.21789087017666886, -3.445997755279685, 0.4}},
+      {"hypercrop", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.06468397598555375, -0.484864561136666, 0.0}},
+      {"hypercrop", {}, {0.8, -0.7, 0.5}, 0.8, kHighSeed, {0.3562398430198167, -0.13435976452972512, 0.0}},
+      {"hypercrop", {4.0, 1.0, 1.0}, {0.8, -0.7, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.0}},
+      {"hypercrop", {4.0, 1.0, 2.0}, {0.8, -0.7, 0.5}, 0.8, kHighSeed, {0.8, -0.7999999999999998, 0.0}},
+      {"hypercrop", {6.0, 0.6, 0.0}, {0.9, 0.1, 0.5}, 0.8, kHighSeed, {0.7200000000000001, 0.08000000000000002, 0.4}},
+      {"hypershift2",
+       {},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.07065942554258486, -0.3801076701211331, 0.01420460348158793}},
+      {"hypershift2",
+       {4.0, 6.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.3251007965834725, 0.5329600346909725, 0.025221946828187257}},
+      {"SuperShape3D",
+       {},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.717035348179518, -0.655134126631884, -0.8554227693619444}},
+      {"SuperShape3D",
+       {5.0, 3.0, 4.0, 5.0, 1.2, 0.8, 1.5, 0.7, 0.5, 2.0, 1.5, 0.5, 2.5, 1.0, 0.2, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.22024291522892117, 0.3489253692214046, -3.2727328766120287}},
+      {"starblur2", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.3815036059318642, -0.020962898756725343, 0.4}},
+      {"starblur2", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {0.6521959729292616, -0.18036842534678804, 0.4}},
+      {"starblur2",
+       {6.0, 0.3, 0.2, 3.0, 0.6},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.3618524550573845, -0.16049679675586087, 0.4}},
+      {"SphericalN", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.4137931034482759, -0.9655172413793105, 0.4}},
+      {"SphericalN", {5.0, 1.5}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.905702855250016, -0.7928435580103822, 0.4}},
+      {"SplitBrdr", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.32960698689956336, -1.1690829694323144, 0.4}},
+      {"SplitBrdr", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {0.5296069868995633, -0.9690829694323144, 0.4}},
+      {"SplitBrdr",
+       {0.3, 0.1, 0.2, -0.1},
+       {0.3, -0.9, 0.5},
+       0.8,
+       kLowSeed,
+       {0.6159183673469388, -1.2310884353741496, 0.4}},
+      {"SplitBrdr",
+       {0.3, 0.1, 0.2, -0.1},
+       {-0.4, -0.9, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.5775452716297789, -1.229476861167002, 0.4}},
+      {"SplitBrdr",
+       {0.3, 0.1, 0.2, -0.1},
+       {1.4, -0.9, 0.5},
+       0.8,
+       kLowSeed,
+       {2.1417429837518465, -1.0754062038404726, 0.4}},
+      {"SplitBrdr",
+       {0.3, 0.1, 0.2, -0.1},
+       {1.6, -0.9, 0.5},
+       0.8,
+       kLowSeed,
+       {2.374708276797829, -1.0407734056987787, 0.4}},
+      {"npolar", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.14752666221952965, 0.4252600431874927, 0.4}},
+      {"npolar", {1.0, 3.0}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.5777871431171079, -0.4470942583330027, 0.4}},
+      {"npolar", {2.0, -2.0}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.01147122699600269, 0.38736997840625365, 0.4}},
+      {"npolar", {3.0, -2.0}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-2.295926923657154, -1.5139253924636502, 0.4}},
+      {"phoenix_julia", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.5429253828574739, 0.43890945242083307, 0.4}},
+      {"phoenix_julia",
+       {3.5, 0.7, 0.3, -0.4},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.28724321271342307, -0.7010207700300791, 0.4}},
+      {"MobiusN", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.23999999999999996, 0.56, 0.4}},
+      {"MobiusN",
+       {0.8, 0.3, -0.2, 0.1, 0.4, -0.3, 1.1, 0.2, 3.0, 1.5},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.43166157576188235, 0.49493071668864613, 0.4}},
+      {"MobiusN",
+       {0.8, 0.3, -0.2, 0.1, 0.4, -0.3, 1.1, 0.2, 0.5, 1.5},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.5206369396124385, -0.07287048887991072, 0.4}},
   };
   return cases;
 }
@@ -328,7 +419,30 @@ TEST(FlameVariation3DExtra, QuaternionFunctionsKeepTheVectorPartsDirection) {
 // concentric discards the terms summed before it, as Fractorium's ordinary term does.
 TEST(FlameVariation3DExtra, ConcentricReplacesTheRunningSum) {
   EXPECT_EQ(variationOrThrow("concentric").replaces, VariationInfo::Replaces::XYZ);
+  EXPECT_EQ(variationOrThrow("hypershift2").replaces, VariationInfo::Replaces::XYZ);
   EXPECT_EQ(variationOrThrow("line").replaces, VariationInfo::Replaces::Nothing);
+}
+
+// Fractorium writes MobiusN's coefficients as MobiusNRe_A … (no "_" after the variation's name), its power and
+// distance as MobiusN_Power, MobiusN_Dist; a pre_ term as pre_MobiusNRe_A.
+TEST(FlameVariation3DExtra, MobiusNReadsFractoriumsParameterNames) {
+  const std::string text =
+      R"(<flames><flame name="t" size="64 64"><xform weight="1" color="0" MobiusN="0.5" pre_MobiusN="1" )"
+      R"(MobiusNRe_A="0.8" MobiusNIm_A="0.3" MobiusNRe_B="-0.2" MobiusNIm_B="0.1" MobiusNRe_C="0.4" )"
+      R"(MobiusNIm_C="-0.3" MobiusNRe_D="1.1" MobiusNIm_D="0.2" MobiusN_Power="3" MobiusN_Dist="1.5" )"
+      R"(pre_MobiusNIm_D="0.7" coefs="1 0 0 1 0 0"/><color index="0" rgb="255 255 255"/></flame></flames>)";
+  const ImportedFlame flame = readFlameXml(text, "t.flame").flame;
+  EXPECT_TRUE(flame.leftOut.empty()) << flame.leftOut.front();
+  const auto& terms = flame.genome.xforms.at(0).variations;
+  ASSERT_EQ(terms.size(), 2u);
+  for (const VariationTerm& term : terms) {
+    if (term.name == "MobiusN") {
+      EXPECT_EQ(term.params, (std::vector<double>{0.8, 0.3, -0.2, 0.1, 0.4, -0.3, 1.1, 0.2, 3.0, 1.5}));
+    } else {
+      EXPECT_EQ(term.name, "pre_MobiusN");
+      EXPECT_EQ(term.params, (std::vector<double>{1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.7, 2.0, 1.0}));
+    }
+  }
 }
 
 }  // namespace

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <vector>
 
 #include "core/flame/variation_kernels.h"
@@ -181,6 +180,96 @@ VOXFLAME_VARIATION_TARGETS void concentric(const VariationInput& in, double* __r
   }
 }
 
+// hypercrop: n discs at the corners of a regular n-gon (radius rad, scaled to touch its sides) cut out of the plane:
+// a point inside one goes to that disc's centre (zero > 1.5), to the origin (zero > 0.5) or to the disc's edge,
+// with z 0; other points stay (Fractorium's).
+VOXFLAME_VARIATION_TARGETS void hypercrop(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double sides = fractoriumZeps(P[0]), zero = P[2];
+  const double coeff = fractoriumZeps(sides * 0.5 / kPi), a0 = kPi / sides;
+  const double length = 1.0 / fractoriumZeps(std::cos(a0)), d = P[1] * std::sin(a0) * length;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle = std::floor(std::atan2(y[i], x[i]) * coeff) / coeff + a0;
+    const double x0 = std::cos(angle) * length, y0 = std::sin(angle) * length;
+    const double dx = x[i] - x0, dy = y[i] - y0;
+    double fx = x[i], fy = y[i], fz = z[i];
+    if (std::sqrt(dx * dx + dy * dy) < d) {
+      if (zero > 1.5) {
+        fx = x0;
+        fy = y0;
+      } else if (zero > 0.5) {
+        fx = 0.0;
+        fy = 0.0;
+      } else {
+        const double edge = std::atan2(dy, dx);
+        fx = x0 + std::cos(edge) * d;
+        fy = y0 + std::sin(edge) * d;
+      }
+      fz = 0.0;
+    }
+    outX[i] += fx * w;
+    outY[i] += fy * w;
+    outZ[i] += fz * w;
+  }
+}
+
+// hypershift2: an inversion, a shift by the {p, q} tiling's offset, a second inversion and shift, then a turn by a
+// random odd multiple of π/p; z scaled by the second inversion. Fractorium's flam3-compatible mode discards the terms
+// summed before it (as an ordinary term), and so does the chaos game here.
+VOXFLAME_VARIATION_TARGETS void hypershift2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                            double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double p = std::max(P[0], 2.0), q = std::max(P[1], 2.0);
+  const double pq = kPi / q, pp = kPi / p, spq = std::sin(pq), spp = std::sin(pp);
+  const double shift = std::sin(kPi * 0.5 - pq - pp) / std::sqrt(1.0 - spq * spq - spp * spp);
+  const double lifted = std::sin(kPi / 2.0 + pp);
+  const double scale2 = 1.0 / std::sqrt(lifted * lifted / (spq * spq) - 1.0) * (lifted / spq - 1.0);
+  const double scale = 1.0 - shift * shift;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double fx = x[i] * scale2, fy = y[i] * scale2;
+    double rad = 1.0 / fractoriumZeps(fx * fx + fy * fy);
+    const double sx = rad * fx + shift, sy = rad * fy;
+    rad = w * scale / fractoriumZeps(sx * sx + sy * sy);
+    const double angle = (std::floor(laneUniform(rnd[i]) * p) * 2.0 + 1.0) * kPi / p;
+    const double X = rad * sx + shift, Y = rad * sy;
+    const double c = std::cos(angle), s = std::sin(angle);
+    outX[i] += c * X - s * Y;
+    outY[i] += s * X + c * Y;
+    outZ[i] += z[i] * rad;
+  }
+}
+
+// SuperShape3D: a random point of Gielis' superformula surface: ρ and ϕ random angles (ρ in [0, rho·2/π), ϕ in
+// ±[0, phi·2/π), Fractorium's M_2_PI), r_i = (a_i |cos(m_i/4 angle)|^n2_i + b_i |sin(m_i/4 angle)|^n3_i)^n1_i with a_i
+// = |1/a|^n2 and b_i = |1/b|^n3 (Fractorium's exponents, as it has them), r1 plus spiral·ρ; a sphere-like product or,
+// with toroidmap, a torus. Fractorium's random sign bit is Ψ < ½ here.
+VOXFLAME_VARIATION_TARGETS void superShape3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                             double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double rho2pi = P[0] * (2.0 / kPi), phi2pi = P[1] * (2.0 / kPi), m41 = P[2] / 4.0, m42 = P[3] / 4.0;
+  const double an21 = std::pow(std::abs(1.0 / P[4]), P[10]), an22 = std::pow(std::abs(1.0 / P[5]), P[11]);
+  const double bn31 = std::pow(std::abs(1.0 / P[6]), P[12]), bn32 = std::pow(std::abs(1.0 / P[7]), P[13]);
+  const double n11 = P[8], n12 = P[9], n21 = P[10], n22 = P[11], n31 = P[12], n32 = P[13], spiral = P[14];
+  const bool toroid = std::floor(P[15] + 0.5) == 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double rho = laneUniform(rnd[i]) * rho2pi;
+    double phi = laneUniform(rnd[i]) * phi2pi;
+    if (laneUniform(rnd[i]) < 0.5) phi = -phi;
+    const double sr = std::sin(rho), cr = std::cos(rho), sp = std::sin(phi), cp = std::cos(phi);
+    const double pr1 =
+        an21 * std::pow(std::abs(std::cos(m41 * rho)), n21) + bn31 * std::pow(std::abs(std::sin(m41 * rho)), n31);
+    const double pr2 =
+        an22 * std::pow(std::abs(std::cos(m42 * phi)), n22) + bn32 * std::pow(std::abs(std::sin(m42 * phi)), n32);
+    const double r1 = std::pow(std::abs(pr1), n11) + spiral * rho;
+    const double r2 = std::pow(std::abs(pr2), n12);
+    const double ring = toroid ? r1 + r2 * cp : r1 * r2 * cp;
+    outX[i] += w * cr * ring;
+    outY[i] += w * sr * ring;
+    outZ[i] += w * r2 * sp;
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addFractorium3DMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -252,6 +341,39 @@ void variation_kernels::addFractorium3DMoreVariations(std::vector<VariationInfo>
        {"R_blur", 0.0, -1.0, 1.0},
        {"Z_blur", 0.0, -1.0, 1.0}});
   catalogue.back().replaces = VariationInfo::Replaces::XYZ;
+  add("hypercrop",
+      "p, except inside the n discs of radius rad·sin(π/n)/cos(π/n) centred at c = (cos a, sin a)/cos(π/n), a = "
+      "⌊φ n/2π⌋ 2π/n + π/n: there (c, 0) with zero > 1.5, (0, 0, 0) with zero > 0.5, else the nearest point of the "
+      "disc's edge with z 0 (Fractorium's)",
+      k3D, kFixed, &hypercrop, {{"n", 4.0, 1.0, 12.0}, {"rad", 1.0, 0.0, 2.0}, {"zero", 0.0, 0.0, 2.0}});
+  add("hypershift2",
+      "R((2⌊Ψ p⌋ + 1)π/p) (s (u, v)/|(u, v)|² + (h, 0)), z s/|(u, v)|²; (u, v) = q/|q|² + (h, 0), q = k (x, y), h, k "
+      "and "
+      "s = 1 − h² from the {p, q} tiling (p, q at least 2); discards the terms before it (Fractorium's, flam3 mode)",
+      k3D, kRandom, &hypershift2, {{"p", 3.0, 2.0, 12.0}, {"q", 7.0, 2.0, 12.0}});
+  catalogue.back().replaces = VariationInfo::Replaces::XYZ;
+  add("SuperShape3D",
+      "(cos ρ · R, sin ρ · R, r2 sin ϕ); ρ = Ψ₁ rho·2/π, ϕ = ±Ψ₂ phi·2/π (− when Ψ₃ < ½), r1 = |A₁|cos(m1 ρ/4)|^n2_1 + "
+      "B₁|sin(m1 ρ/4)|^n3_1|^n1_1 + spiral ρ, r2 likewise from ϕ with the _2 parameters (no spiral), A_i = "
+      "|1/a_i|^n2_i, "
+      "B_i = |1/b_i|^n3_i; R = r1 r2 cos ϕ, or r1 + r2 cos ϕ with toroidmap (Fractorium's)",
+      k3D, kRandom, &superShape3D,
+      {{"rho", 9.9, -20.0, 20.0},
+       {"phi", 2.5, -20.0, 20.0},
+       {"m1", 6.0, -20.0, 20.0},
+       {"m2", 3.0, -20.0, 20.0},
+       {"a1", 1.0, -5.0, 5.0},
+       {"a2", 1.0, -5.0, 5.0},
+       {"b1", 1.0, -5.0, 5.0},
+       {"b2", 1.0, -5.0, 5.0},
+       {"n1_1", 1.0, -5.0, 5.0},
+       {"n1_2", 1.0, -5.0, 5.0},
+       {"n2_1", 1.0, -5.0, 5.0},
+       {"n2_2", 1.0, -5.0, 5.0},
+       {"n3_1", 1.0, -5.0, 5.0},
+       {"n3_2", 1.0, -5.0, 5.0},
+       {"spiral", 0.0, -2.0, 2.0},
+       count("toroidmap", 0.0, 0.0, 1.0)});
 }
 
 }  // namespace voxflame::core

@@ -186,6 +186,167 @@ VOXFLAME_VARIATION_TARGETS void logDb(const VariationInput& in, double* __restri
   }
 }
 
+// starblur2: starblur with a hole (radii from hole to 1), stripes across each edge (width their share) and Zeps
+// guards (Fractorium's).
+VOXFLAME_VARIATION_TARGETS void starblur2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double power = P[0], range = P[1], width = P[4];
+  const double p = fractoriumZeps(power), halfAngle = kPi / p;
+  const double length = std::sqrt(1.0 + range * range - 2.0 * range * std::cos(halfAngle));
+  const double alpha = std::asin(std::sin(halfAngle) * range / fractoriumZeps(length));
+  const double hole = std::min(std::abs(P[2]), 1.0), holeSq = hole * hole, oneMinusHoleSq = 1.0 - holeSq;
+  const double stripes = fractoriumZeps(std::abs(P[3]));
+  const double sector = kTwoPi / p, power2 = power * 2.0;
+  const double sinAlpha = std::sin(alpha), cosAlpha2 = std::cos(alpha) * 2.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double k = laneUniform(rnd[i]) * power2;
+    const double edge = std::floor(k);
+    const double f = k - edge;
+    const double fs = std::trunc(f * stripes);
+    const bool even = laneFmod(edge, 2.0) == 0.0;
+    const double dif = even ? width * (f * stripes - fs) : 1.0 - width * (f * stripes - fs);
+    const double ff = (dif + fs) / stripes;
+    const double px = ff * length;
+    const double d = fractoriumZeps(std::sqrt(1.0 + px * px - px * cosAlpha2));
+    const double sign = edge - std::floor(k / 2.0) * 2.0 == 1.0 ? 1.0 : -1.0;
+    const double angle = sector * std::trunc(edge / 2.0) + sign * std::asin(sinAlpha * px / d) - kPi / 2.0;
+    const double scaled = w * d * std::sqrt(laneUniform(rnd[i]) * oneMinusHoleSq + holeSq);
+    outX[i] += std::cos(angle) * scaled;
+    outY[i] += std::sin(angle) * scaled;
+    outZ[i] += w * z[i];
+  }
+}
+
+// SphericalN: spherical with a power: 1/r^Dist at the angle φ plus a random one of ⌊Power⌋ turns. Fractorium's
+// flam3-compatible branch (cos, sin) is followed; its other branch swaps them.
+VOXFLAME_VARIATION_TARGETS void sphericalN(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double power = P[0], dist = P[1], turn = kTwoPi / fractoriumZeps(std::floor(P[0]));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = fractoriumZeps(std::pow(std::sqrt(x[i] * x[i] + y[i] * y[i]), dist));
+    const double k = std::floor(power * laneUniform(rnd[i]));
+    const double alpha = std::atan2(y[i], x[i]) + k * turn;
+    outX[i] += w * std::cos(alpha) / r;
+    outY[i] += w * std::sin(alpha) / r;
+    outZ[i] += w * z[i];
+  }
+}
+
+// SplitBrdr: bubble plus the point's unit cell, its offset from the cell centre halved and, three times in four
+// (Ψ < ¾), pushed toward the cell's border along the offset's larger coordinate, plus (px x, py y) outside the weight.
+// Which of x and y each push uses is Fractorium's, kept as it is.
+VOXFLAME_VARIATION_TARGETS void splitBrdr(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double sx = P[0], sy = P[1], px = P[2], py = P[3];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double b = w / ((x[i] * x[i] + y[i] * y[i]) * 0.25 + 1.0);
+    const double roundX = std::nearbyint(x[i]), roundY = std::nearbyint(y[i]);
+    const double offX = x[i] - roundX, offY = y[i] - roundY;
+    double ax = offX * 0.5 + roundX, ay = offY * 0.5 + roundY;
+    if (laneUniform(rnd[i]) < 0.75) {
+      if (std::abs(offX) >= std::abs(offY)) {
+        if (offX >= 0.0) {
+          ax += sx;
+          ay += sy * offY / fractoriumZeps(offX);
+        } else {
+          ax -= sy;
+          ay -= sy * offY / fractoriumZeps(offX);
+        }
+      } else {
+        if (offY >= 0.0) {
+          ay += sy;
+          ax += offX / fractoriumZeps(offY) * sy;
+        } else {
+          ay -= sy;
+          ax -= offX / fractoriumZeps(offY) * sx;
+        }
+      }
+    }
+    outX[i] += x[i] * b + w * ax + x[i] * px;
+    outY[i] += y[i] * b + w * ay + y[i] * py;
+    outZ[i] += w * z[i];
+  }
+}
+
+// npolar: a julia-like root of the point (odd parity) or of its log-polar image (even parity), n branches chosen at
+// random. Fractorium's flam3-compatible branch is followed: the odd root is scaled by parity, and the even one
+// returns to the plane through ln of the squared radius.
+VOXFLAME_VARIATION_TARGETS void npolar(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double parity = P[0], nnz = P[1] == 0.0 ? 1.0 : P[1];
+  const double vvar = w / kPi, vvar2 = vvar * 0.5, absN = std::abs(nnz), cn = 1.0 / nnz / 2.0;
+  const bool odd = std::fmod(std::abs(parity), 2.0) != 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double turn = kTwoPi * std::floor(laneUniform(rnd[i]) * absN);
+    const double r2 = x[i] * x[i] + y[i] * y[i];
+    double px = 0.0, py = 0.0;
+    if (odd) {
+      const double angle = (std::atan2(y[i], x[i]) + turn) / nnz;
+      const double r = w * std::pow(r2, cn) * parity;
+      px = std::cos(angle) * r;
+      py = std::sin(angle) * r;
+    } else {
+      const double lx = vvar * std::atan2(x[i], y[i]), ly = vvar2 * std::log(r2);
+      const double angle = (std::atan2(ly, lx) + turn) / nnz;
+      const double r = w * std::pow(lx * lx + ly * ly, cn);
+      const double s = std::sin(angle) * r, c = std::cos(angle) * r;
+      px = vvar2 * std::log(c * c + s * s);
+      py = vvar * std::atan2(c, s);
+    }
+    outX[i] += px;
+    outY[i] += py;
+    outZ[i] += w * z[i];
+  }
+}
+
+// phoenix_julia: julian of the distorted point (x (1 + x_distort), y (1 + y_distort)) for its angle, the undistorted
+// radius. Fractorium's flam3-compatible branch draws the branch as a random integer below 32767 (so a power that is
+// not whole spreads the angles), and so does this.
+VOXFLAME_VARIATION_TARGETS void phoenixJulia(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                             double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double power = fractoriumZeps(P[0]), invN = P[1] / power, inv2PiN = kTwoPi / power, cn = invN / 2.0;
+  const double dx = P[2] + 1.0, dy = P[3] + 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double k = std::floor(laneUniform(rnd[i]) * 32767.0);
+    const double t = std::atan2(y[i] * dy, x[i] * dx) * invN + k * inv2PiN;
+    const double r = w * std::pow(x[i] * x[i] + y[i] * y[i], cn);
+    outX[i] += r * std::cos(t);
+    outY[i] += r * std::sin(t);
+    outZ[i] += w * z[i];
+  }
+}
+
+// MobiusN: a Möbius map between a power and its root: u = ρ^(4 Dist/Power) (cos Power φ, sin Power φ), v = (A u +
+// B)/(C u + D), then the Power/(4 Dist)-th power of |v| at the angle (arg v + 2π k)/⌊Power⌋, k = ⌊Ψ Power⌋. Power
+// below 1 in magnitude counts as 1 (Fractorium's).
+VOXFLAME_VARIATION_TARGETS void mobiusN(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double reA = P[0], imA = P[1], reB = P[2], imB = P[3], reC = P[4], imC = P[5], reD = P[6], imD = P[7];
+  const double power = std::abs(P[8]) < 1.0 ? 1.0 : P[8];
+  const double exponent = 4.0 * P[9] / power, root = 1.0 / exponent, whole = std::floor(power);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = std::pow(std::sqrt(x[i] * x[i] + y[i] * y[i]), exponent);
+    const double alpha = std::atan2(y[i], x[i]) * power;
+    const double ux = r * std::cos(alpha), uy = r * std::sin(alpha);
+    const double reU = reA * ux - imA * uy + reB, imU = reA * uy + imA * ux + imB;
+    const double reV = reC * ux - imC * uy + reD, imV = reC * uy + imC * ux + imD;
+    const double radV = reV * reV + imV * imV;
+    const double vx = (reU * reV + imU * imV) / radV, vy = (imU * reV - reU * imV) / radV;
+    const double rr = std::pow(std::sqrt(vx * vx + vy * vy), root);
+    const double k = std::floor(power * laneUniform(rnd[i]));
+    const double angle = (std::atan2(vy, vx) + k * kTwoPi) / whole;
+    outX[i] += w * rr * std::cos(angle);
+    outY[i] += w * rr * std::sin(angle);
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addFractoriumRandom2DVariations(std::vector<VariationInfo>& catalogue) {
@@ -247,6 +408,53 @@ void variation_kernels::addFractoriumRandom2DVariations(std::vector<VariationInf
       "(ln r² / (2 ln(e base)), φ + π fix_period Σ₇ k), z; each k = ⌊10Ψ⌋ − 5 where that is within ±2, else 0; base ≤ "
       "0 gives ½ ln r², fix_period ≤ 0 a period of π (Fractorium's)",
       k2D, kRandom, &logDb, {{"base", 1.0, 0.0, 5.0}, {"fix_period", 1.0, 0.0, 5.0}});
+  add("starblur2",
+      "starblur's star (power points, inner corners at range) with a hole: radius d √(Ψ₂ (1 − h²) + h²), h = "
+      "min(|hole|, 1); each edge's position f split into |stripes| stripes, of which the share width is kept (from "
+      "the edge's start on even edges, its end on odd ones); z (Fractorium's)",
+      k2D, kRandom, &starblur2,
+      {{"power", 5.0, 2.0, 12.0},
+       {"range", 0.40162283177245455973959534526548, 0.0, 1.0},
+       {"hole", 0.5, 0.0, 1.0},
+       {"stripes", 5.0, 0.0, 20.0},
+       {"width", 0.2, 0.0, 1.0}});
+  add("SphericalN", "(cos a, sin a)/r^Dist, z; a = φ + 2π ⌊Ψ Power⌋/⌊Power⌋ (Fractorium's flam3-compatible form)", k2D,
+      kRandom, &sphericalN, {{"Power", 1.0, 1.0, 12.0}, {"Dist", 1.0, -3.0, 3.0}});
+  add("SplitBrdr",
+      "(x, y)/(r²/4 + 1) + (o/2 + ⌊p⌉) + e + (px x, py y)/w, z; ⌊p⌉ the nearest whole point, o = p − ⌊p⌉, e = 0 when Ψ "
+      "≥ ¾, "
+      "else along o's larger coordinate: o_x ≥ |o_y|: (x', y' o_y/o_x), o_x ≤ −|o_y|: (−y', −y' o_y/o_x), o_y > 0: "
+      "(y' o_x/o_y, y'), o_y < 0: (−x' o_x/o_y, −y'); x', y' the parameters x, y (w the weight; Fractorium's)",
+      k2D, kRandom, &splitBrdr,
+      {{"x", 0.25, -1.0, 1.0}, {"y", 0.25, -1.0, 1.0}, {"px", 0.0, -1.0, 1.0}, {"py", 0.0, -1.0, 1.0}});
+  add("npolar",
+      "odd parity: parity ρ^(1/n) (cos a, sin a), a = (φ + 2π ⌊Ψ|n|⌋)/n; even: (ln|s|²/(2π), atan2(s_x, s_y)/π) of s = "
+      "|l|^(1/n) (cos b, sin b), l = (θ/π, ln r²/(2π)), b = (∠l + 2π ⌊Ψ|n|⌋)/n; n 0 taken as 1; z (Fractorium's "
+      "flam3-compatible form)",
+      k2D, kRandom, &npolar, {{"parity", 0.0, -5.0, 5.0}, {"n", 1.0, -10.0, 10.0}});
+  add("phoenix_julia",
+      "r^(dist/power) (cos t, sin t), z; t = (dist/power) atan2(y (1 + y_distort), x (1 + x_distort)) + 2π k/power, k "
+      "= ⌊32767 Ψ⌋ (Fractorium's flam3-compatible form)",
+      k2D, kRandom, &phoenixJulia,
+      {{"power", 2.0, -10.0, 10.0},
+       {"dist", 1.0, -5.0, 5.0},
+       {"x_distort", -0.5, -2.0, 2.0},
+       {"y_distort", 0.0, -2.0, 2.0}});
+  add("MobiusN",
+      "|v|^(1/e) (cos a, sin a), z; u = r^e (cos(Power φ), sin(Power φ)), e = 4 Dist/Power, v = (A u + B)/(C u + D) "
+      "with A = Re_A + i Im_A and likewise, a = (arg v + 2π ⌊Ψ Power⌋)/⌊Power⌋; Power within ±1 taken as 1 "
+      "(Fractorium's; files write MobiusNRe_A … and MobiusN_Power, MobiusN_Dist)",
+      k2D, kRandom, &mobiusN,
+      {{"Re_A", 1.0, -2.0, 2.0},
+       {"Im_A", 0.0, -2.0, 2.0},
+       {"Re_B", 0.0, -2.0, 2.0},
+       {"Im_B", 0.0, -2.0, 2.0},
+       {"Re_C", 0.0, -2.0, 2.0},
+       {"Im_C", 0.0, -2.0, 2.0},
+       {"Re_D", 1.0, -2.0, 2.0},
+       {"Im_D", 0.0, -2.0, 2.0},
+       {"Power", 2.0, 1.0, 10.0},
+       {"Dist", 1.0, -3.0, 3.0}});
 }
 
 }  // namespace voxflame::core
