@@ -270,6 +270,56 @@ VOXFLAME_VARIATION_TARGETS void superShape3D(const VariationInput& in, double* _
   }
 }
 
+// pRose3D: a rose curve of k petals, l cos(k φ + c) (cos φ, sin φ)/2, lifted to z by a waggle of the radius (a blend
+// of sine terms chosen by opt, optSc and opt3) and a wiggle of the angle; with transp (squared) a random share of
+// the points, half of them, becomes a mirrored "ghost" petal below, scaled by refSc. The ghost needs opt or opt3
+// negative (Fractorium's).
+VOXFLAME_VARIATION_TARGETS void pRose3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double l = P[0], k = P[1], c = P[2], z1 = P[3], z2 = P[4], refSc = P[5], opt = P[6], optSc = P[7];
+  const double opt3 = P[8], transp = P[9], dist = P[10], wagsc = P[11], crvsc = P[12], f = P[13], wigsc = P[14];
+  const double offset = P[15];
+  const double cycle = kTwoPi / fractoriumZeps(k);
+  // Fractorium takes the sign of the previous k here (its precalc sets it after use); the current k's is meant.
+  const double petals = std::abs(k) < 0.0001 ? std::copysign(0.0001, k) : k;
+  const double freq = f * kTwoPi, wigScale = wigsc * 0.5;
+  const double smooth12 = std::min(std::abs(opt), 2.0), smooth3 = std::min(std::abs(opt3), 1.0);
+  const double absOptSc = std::abs(optSc), antiOpt1 = 2.0 - smooth12;
+  const double optDir = opt3 < 0.0 ? -1.0 : std::copysign(1.0, opt);
+  const double ghost = optDir > 0.0 ? 0.0 : transp * transp;
+  for (std::size_t i = 0; i < n; ++i) {
+    const bool negative = laneUniform(rnd[i]) < 0.5;
+    const bool ghostly = laneUniform(rnd[i]) < ghost;
+    const double rad = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    const double curve1 = rad / l, curve2 = curve1 * curve1, curve3 = (rad - l * 0.5) / l, curve4 = curve2 * curve2;
+    const double th = std::atan2(y[i], x[i]);
+    const double wig = th / fractoriumZeps(cycle) * freq * 0.5 + offset * cycle;
+    const double sin2 = std::sin(curve2 * kPi), cos3 = std::cos(curve3 * kPi);
+    const double wag =
+        std::sin(curve1 * kPi * absOptSc) + wagsc * 0.4 * rad + crvsc * 0.5 * (optDir < 0.0 ? sin2 : cos3);
+    const double wag3 =
+        std::sin(curve4 * kPi * absOptSc) + wagsc * rad * rad * 0.4 + crvsc * 0.5 * (optDir < 0.0 ? cos3 : sin2);
+    const double wag2 = std::sin(curve2 * kPi * absOptSc) + wagsc * 0.4 * rad + crvsc * 0.5 * cos3;
+    double wag12 = 0.0;
+    if (smooth12 <= 1.0)
+      wag12 = wag;
+    else if (smooth12 <= 2.0)
+      wag12 = wag2 * (1.0 - antiOpt1) + wag * antiOpt1;
+    double waggle = 0.0;
+    if (smooth3 == 0.0)
+      waggle = wag12;
+    else if (smooth3 > 0.0)
+      waggle = wag12 * (1.0 - smooth3) + wag3 * smooth3;
+    const bool mirrored = ghostly && negative;
+    const double petal = w * 0.5 * (mirrored ? refSc : 1.0) * l * std::cos(petals * th + c);
+    const double lift = (mirrored ? z2 : z1) * waggle + rad * 0.5 * rad * 0.5 * std::sin(wig) * wigScale + dist;
+    outX[i] += petal * std::cos(th);
+    outY[i] += petal * std::sin(th);
+    outZ[i] += w * (mirrored ? -0.5 : 0.5) * lift;
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addFractorium3DMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -374,6 +424,29 @@ void variation_kernels::addFractorium3DMoreVariations(std::vector<VariationInfo>
        {"n3_2", 1.0, -5.0, 5.0},
        {"spiral", 0.0, -2.0, 2.0},
        count("toroidmap", 0.0, 0.0, 1.0)});
+  add("pRose3D",
+      "(R cos φ, R sin φ, (z1 g + (r/2)² sin(v) wigsc/2 + dist)/2), R = l cos(k φ + c)/2; g the waggle, sin(π optSc "
+      "r/l) + 0.4 wagsc r + crvsc/2 cos(π (r − l/2)/l) (sin(π r²/l²) for the last term when opt or opt3 < 0), blended "
+      "toward its r²/l² and r⁴/l⁴ forms by |opt| ∈ [1, 2] and |opt3| ∈ [0, 1]; v = φ k f/2 + 2π offset/k; when opt or "
+      "opt3 < 0, with probability transp²/2 (Ψ₁ < ½ and Ψ₂ < transp²) a ghost petal: R times refSc and z = −(z2 g + "
+      "…)/2 (Fractorium's)",
+      k3D, kRandom, &pRose3D,
+      {{"l", 1.0, 0.1, 3.0},
+       {"k", 3.0, -10.0, 10.0},
+       {"c", 0.0, -3.0, 3.0},
+       {"z1", 1.0, -2.0, 2.0},
+       {"z2", 1.0, -2.0, 2.0},
+       {"refSc", 1.0, -2.0, 2.0},
+       {"opt", 1.0, -2.0, 2.0},
+       {"optSc", 1.0, -2.0, 2.0},
+       {"opt3", 0.0, -1.0, 1.0},
+       {"transp", 0.5, 0.0, 1.0},
+       {"dist", 1.0, -2.0, 2.0},
+       {"wagsc", 0.0, -2.0, 2.0},
+       {"crvsc", 0.0, -2.0, 2.0},
+       {"f", 3.0, -10.0, 10.0},
+       {"wigsc", 0.0, -2.0, 2.0},
+       {"offset", 0.0, -2.0, 2.0}});
 }
 
 }  // namespace voxflame::core
