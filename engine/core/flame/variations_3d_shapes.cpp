@@ -250,6 +250,92 @@ VOXFLAME_VARIATION_TARGETS void xerf(const VariationInput& in, double* __restric
   }
 }
 
+// bubbleT3D: bubble's sphere (the inverse stereographic projection, z = 2/rad^exponentZ − 1) cut into stripes of
+// longitude (number_of_stripes of them, the share ratio_of_stripes kept; negative counts invert which part) and
+// with a hole around the pole of angle angle_of_hole degrees (negative: around the other pole; symmetryZ: at both).
+// What is cut goes to the origin, or with modusBlur is turned onto the kept part (Fractorium's).
+VOXFLAME_VARIATION_TARGETS void bubbleT3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double stripes = std::floor(P[0] + 0.5), absStripes = std::abs(stripes);
+  const bool invStripes = stripes < 0.0;
+  const double ratio = std::clamp(std::clamp(P[1], 0.0, 2.0), 0.01, 1.99);
+  const double hole = std::clamp(P[2], -360.0, 360.0), exponentZ = P[3];
+  const bool symmetryZ = fractoriumInteger(P[4], 0.0, 1.0) == 1.0, blur = fractoriumInteger(P[5], 0.0, 1.0) == 1.0;
+  const double angStrip = absStripes != 0.0 ? kPi / absStripes : 0.0, strip2 = 2.0 * angStrip;
+  const double sn = std::sin(angStrip), cs = std::cos(angStrip), strip1 = fractoriumZeps(ratio * angStrip);
+  double holeAngle = symmetryZ ? (hole < 0.0 ? std::abs(hole) : std::min(hole, 179.9)) : hole;
+  const bool invHole = holeAngle < 0.0;
+  holeAngle = invHole ? std::abs(hole) / 360.0 * kTwoPi / 2.0 : kPi - holeAngle / 360.0 * kTwoPi / 2.0;
+  const double holeComp = kPi - holeAngle;
+  const bool pushesHole = blur && exponentZ == 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    double px = x[i], py = y[i], pz = z[i];
+    const double rad = fractoriumZeps((px * px + py * py) / 4.0 + 1.0);
+    if (absStripes != 0.0) {
+      double a = std::atan2(px, py);
+      if (a < 0.0) a += kTwoPi;
+      // Fractorium subtracts 2π/|stripes| while the angle exceeds it: the remainder in (0, 2π/|stripes|].
+      if (a > strip2) {
+        a = laneFmod(a, strip2);
+        if (a == 0.0) a = strip2;
+      }
+      const bool cut = invStripes ? a < strip1 : a > strip1;
+      if (cut && !blur) {
+        px = 0.0;
+        py = 0.0;
+      } else if (cut) {
+        double c = cs, s = sn;
+        const bool single = invStripes ? absStripes == 1.0 : ratio == 1.0;
+        if (!single) {
+          const double turn = invStripes ? a - (a - strip1) / strip1 * (strip2 - strip1)
+                                         : a - (a - strip1) / fractoriumZeps(strip2 - strip1) * strip1;
+          c = std::cos(turn);
+          s = std::sin(turn);
+        }
+        const double tx = c * px - s * py, ty = s * px + c * py;
+        px = tx;
+        py = ty;
+      }
+    }
+    px /= rad;
+    py /= rad;
+    double angZ = 0.0;
+    if (px != 0.0 || py != 0.0) {
+      pz = 2.0 / std::pow(rad, exponentZ) - 1.0;
+      const double q = px * px + py * py;
+      angZ = exponentZ <= 2.0 ? kPi - std::acos(pz / (q + pz * pz)) : kPi - std::atan2(q * q, pz);
+    } else {
+      pz = 0.0;
+    }
+    bool cut = false;
+    double angTmp = 0.0;
+    if (!symmetryZ) {
+      cut = invHole ? angZ < holeAngle : angZ > holeAngle;
+      angTmp = invHole ? kPi - angZ / fractoriumZeps(holeComp * holeAngle - kPi / 2.0)
+                       : (kPi - angZ) / fractoriumZeps(holeComp * holeAngle - kPi / 2.0);
+    } else {
+      cut = angZ > holeAngle || angZ < kPi - holeAngle;
+      angTmp = angZ > holeAngle ? (kPi - angZ) / holeComp * (kPi - 2.0 * holeComp) + holeComp - kPi / 2.0
+                                : kPi / 2.0 - (angZ / holeComp * (kPi - 2.0 * holeComp) + holeComp);
+    }
+    if (cut && !pushesHole) {
+      px = 0.0;
+      py = 0.0;
+      pz = 0.0;
+    } else if (cut) {
+      const double from = angZ - kPi / 2.0;
+      const double fac = std::cos(angTmp) / std::cos(from);
+      px *= fac;
+      py *= fac;
+      pz *= std::sin(angTmp) / std::sin(from);
+    }
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * pz;
+  }
+}
+
 // ---- 3D blurs ------------------------------------------------------------------------------------
 
 VOXFLAME_VARIATION_TARGETS void square3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
@@ -345,6 +431,18 @@ void variation_kernels::addFractorium3DShapeVariations(std::vector<VariationInfo
   add("waves2_3D", "(x + scale sin(freq y), y + scale sin(freq x), z + scale sin(freq (x + y)/2))", k3D, kFixed,
       &waves23D, {{"freq", 2.0, -10.0, 10.0}, {"scale", 1.0, -2.0, 2.0}});
   add("xerf", "each coordinate u: erf(u), or u/|p|² where |u| ≥ 2", k3D, kFixed, &xerf);
+  add("bubbleT3D",
+      "bubble's sphere (x/ρ, y/ρ, 2/ρ^exponentZ − 1), ρ = r²/4 + 1, cut into |number_of_stripes| stripes of "
+      "longitude of which the share ratio_of_stripes is kept (the rest for a negative count), with a hole of "
+      "angle_of_hole degrees around the pole (the other pole when negative, both with symmetryZ); what is cut goes "
+      "to the origin, or with modusBlur is turned onto what is kept (Fractorium's)",
+      k3D, kFixed, &bubbleT3D,
+      {count("number_of_stripes", 0.0, -20.0, 20.0),
+       {"ratio_of_stripes", 1.0, 0.0, 2.0},
+       {"angle_of_hole", 0.0, -360.0, 360.0},
+       {"exponentZ", 1.0, -3.0, 3.0},
+       count("symmetryZ", 0.0, 0.0, 1.0),
+       count("modusBlur", 0.0, 0.0, 1.0)});
   add("square3D", "(Ψ₁ − ½, Ψ₂ − ½, Ψ₃ − ½): the unit cube", k3D, kRandom, &square3D);
   add("farblur",
       "(x' sin v cos u, y' sin v sin u, z' cos v) |p − o|² (Ψ₁ + Ψ₂ + Ψ₃ + Ψ₄ − 2); u = 2πΨ₅, v = 2πΨ₆; x', y', z' the "
