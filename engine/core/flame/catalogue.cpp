@@ -28,6 +28,10 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addFractorium2dMVariations(c);
   variation_kernels::addFractorium2dSVariations(c);
   variation_kernels::addFractoriumTruchetVariations(c);
+  variation_kernels::addQuaternionVariations(c);
+  variation_kernels::addFractorium3DShapeVariations(c);
+  variation_kernels::addFractorium3DMoreVariations(c);
+  variation_kernels::addFractoriumRandom2DVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3")

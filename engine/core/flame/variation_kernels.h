@@ -146,6 +146,10 @@ void addJwildfireVariations(std::vector<VariationInfo>& catalogue);
 void addFractorium2dMVariations(std::vector<VariationInfo>& catalogue);
 void addFractorium2dSVariations(std::vector<VariationInfo>& catalogue);
 void addFractoriumTruchetVariations(std::vector<VariationInfo>& catalogue);
+void addQuaternionVariations(std::vector<VariationInfo>& catalogue);
+void addFractorium3DShapeVariations(std::vector<VariationInfo>& catalogue);
+void addFractorium3DMoreVariations(std::vector<VariationInfo>& catalogue);
+void addFractoriumRandom2DVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -122,6 +122,8 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
     bare[3] = static_cast<char>(std::toupper(static_cast<unsigned char>(bare[3])));
     names.push_back(bare);
   }
+  // Fractorium's MobiusN writes its coefficients without the separating "_" (MobiusNRe_A, pre_MobiusNIm_B).
+  if (info.name == "MobiusN" && param.size() == 4) names.push_back(termAttribute + param);
   return names;
 }
 
