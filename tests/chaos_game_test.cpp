@@ -563,3 +563,43 @@ TEST(ChaosGame, PostDepthAddsTheTransformsAffinePoint) {
     EXPECT_NEAR(again.z[i], 1.2 * 0.8, 1e-12);
   }
 }
+
+// JWildfire's chained final transforms: each bends what the one before drew, in order, and none
+// feeds back into the state.
+TEST(ChaosGame, ChainedFinalTransformsApplyInOrder) {
+  PatternLayer layer;
+  layer.kind = PatternKind::Flame;
+  FlameXform shrink;
+  shrink.affine.m = {0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0};
+  shrink.variations = {{"linear", 1.0, {}}};
+  layer.flame.xforms = {shrink};
+  FlameXform shift;  // x + 1
+  shift.affine.m = {1, 0, 0, 1, 0, 1, 0, 0, 0, 0, 1, 0};
+  shift.variations = {{"linear", 1.0, {}}};
+  FlameXform twice;  // 2x
+  twice.affine.m = {2, 0, 0, 0, 0, 2, 0, 0, 0, 0, 2, 0};
+  twice.variations = {{"linear", 1.0, {}}};
+  layer.flame.hasFinal = true;
+  layer.flame.finalXform = shift;
+  layer.flame.chainedFinals = {twice};
+  const ChaosGame game(layer, "chain");
+  ChaosLanes lanes;
+  lanes.resize(1);
+  SplitMix64 rng(3);
+  game.seedLane(lanes, 0, rng);
+  lanes.x[0] = 0.5;
+  lanes.y[0] = 0.25;
+  lanes.z[0] = 0.0;
+  double x = 0.0, y = 0.0, z = 0.0, c = 0.0;
+  game.step(lanes, &x, &y, &z, &c, 1);
+  // The state moved to (0.25, 0.125); drawn: 2 · (0.25 + 1) = 2.5, and 2 · 0.125 = 0.25.
+  EXPECT_NEAR(lanes.x[0], 0.25, 1e-12);
+  EXPECT_NEAR(x, 2.5, 1e-12);
+  EXPECT_NEAR(y, 0.25, 1e-12);
+  layer.flame.chainedFinals = {};
+  const ChaosGame single(layer, "single");
+  lanes.x[0] = 0.5;
+  lanes.y[0] = 0.25;
+  single.step(lanes, &x, &y, &z, &c, 1);
+  EXPECT_NEAR(x, 1.25, 1e-12);
+}

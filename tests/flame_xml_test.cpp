@@ -856,3 +856,28 @@ TEST(FlameXml, LongAttributeNamesOfManyUnderscoresReadInLinearTime) {
   ASSERT_EQ(params.flame.genome.xforms.front().variations.size(), 1u);
   EXPECT_EQ(params.flame.genome.xforms.front().variations.front().params.front(), 3.0);
 }
+
+namespace {
+
+// JWildfire chains several final transforms: the first is the final transform, the others follow
+// it in order, and they round-trip through a preset.
+TEST(FlameXml, ChainedFinalTransformsAreKeptInOrder) {
+  const std::string finals =
+      "<finalxform color=\"0\" spherical=\"1\" coefs=\"1 0 0 1 0 0\"/>\n"
+      "<finalxform color=\"0\" linear=\"1\" coefs=\"2 0 0 2 0 0\"/>\n"
+      "<finalxform color=\"0\" swirl=\"1\" coefs=\"1 0 0 1 0 0\"/>\n";
+  const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, finals), "p.flame").flame;
+  ASSERT_TRUE(flame.genome.hasFinal);
+  EXPECT_EQ(flame.genome.finalXform.variations.front().name, "spherical");
+  ASSERT_EQ(flame.genome.chainedFinals.size(), 2u);
+  EXPECT_EQ(flame.genome.chainedFinals[0].variations.front().name, "linear");
+  EXPECT_EQ(flame.genome.chainedFinals[1].variations.front().name, "swirl");
+  EXPECT_TRUE(flame.leftOut.empty());
+  Scene base;
+  base.meshPath = "mesh.obj";
+  const Scene scene = sceneFromImportedFlame(flame, base);
+  const Scene again = sceneFromJson(sceneToJson(scene), "again.json");
+  EXPECT_EQ(again.layers.front().flame.chainedFinals, flame.genome.chainedFinals);
+}
+
+}  // namespace

@@ -233,9 +233,13 @@ ChaosGame::ChaosGame(const PatternLayer& layer, const std::string& where) {
   if (layer.flame.symmetry.rotational > 1 || layer.flame.symmetry.mirror)
     for (const Affine3& g : symmetryGroup(layer.flame.symmetry)) group_.push_back(g.m);
   hasFinal_ = layer.flame.hasFinal;
-  if (hasFinal_) final_ = compile(layer.flame.finalXform);
+  if (hasFinal_) {
+    final_ = compile(layer.flame.finalXform);
+    for (const FlameXform& chained : layer.flame.chainedFinals) chainedFinals_.push_back(compile(chained));
+  }
   for (const Compiled& x : xforms_) hidesPoints_ = hidesPoints_ || x.opacity < 1.0;
   hidesPoints_ = hidesPoints_ || (hasFinal_ && final_.opacity < 1.0);
+  for (const Compiled& x : chainedFinals_) hidesPoints_ = hidesPoints_ || x.opacity < 1.0;
 }
 
 void ChaosGame::seedLane(ChaosLanes& lanes, std::size_t i, SplitMix64& rng) const {
@@ -429,6 +433,22 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     std::uint32_t r = lanes.groupRandom[i];
     visible[i] &= laneUniform(r) < final_.opacity ? 1 : 0;
     random[i] = r;
+  }
+  // JWildfire's further final transforms, each bending what the one before drew.
+  for (const Compiled& chained : chainedFinals_) {
+    gatherAffine(order, count, outX, outY, outZ, random, chained.affine.data(), lanes.tx.data(), lanes.ty.data(),
+                 lanes.tz.data(), lanes.groupRandom.data());
+    applyGroup(chained, lanes, count);
+    const double chainedKeep = 1.0 - chained.colorSpeed, chainedPull = chained.colorSpeed * chained.color;
+    for (std::size_t i = 0; i < count; ++i) {
+      outX[i] = std::isnan(outX[i]) ? kNaN : lanes.ox[i];
+      outY[i] = lanes.oy[i];
+      outZ[i] = lanes.oz[i];
+      outColor[i] = chainedKeep * outColor[i] + chainedPull;
+      std::uint32_t r = lanes.groupRandom[i];
+      visible[i] &= laneUniform(r) < chained.opacity ? 1 : 0;
+      random[i] = r;
+    }
   }
   if (!group_.empty()) symmetrise(lanes, outX, outY, outZ, count);
 }

@@ -94,6 +94,7 @@ class ChaosGame {
   std::vector<Compiled> xforms_;
   bool hasFinal_ = false;
   Compiled final_;
+  std::vector<Compiled> chainedFinals_;  // applied after final_, in order (FlameGenome::chainedFinals)
   static constexpr int kPickBits = 12;
   static constexpr std::size_t kPickSize = std::size_t{1} << kPickBits;
   // Top bits of a draw → transform. Without xaos one row of kPickSize entries; with xaos (flam3's

@@ -71,6 +71,7 @@ void diffLayer(const PatternLayer& a, const PatternLayer& b, const std::string& 
       note(d, flame + "/final", kPattern);
     else if (a.flame.finalXform != b.flame.finalXform)
       diffXform(a.flame.finalXform, b.flame.finalXform, flame + "/final", d);
+    if (a.flame.chainedFinals != b.flame.chainedFinals) note(d, flame + "/final_chain", kPattern);
     diffTable(a.flame.symmetry, b.flame.symmetry, symmetryFields(), flame + "/symmetry", d);
   }
   if (a.julia.c != b.julia.c) note(d, base + "/julia/c", kPattern);

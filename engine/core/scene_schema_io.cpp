@@ -314,6 +314,14 @@ FlameGenome readFlame(ObjectReader& parent) {
     genome.hasFinal = true;
     genome.finalXform = readXform(*finalXform, parent.source(), reader.keyPath("final"), true);
   }
+  if (const json* chain = reader.find("final_chain")) {
+    if (!genome.hasFinal) reader.fail("needs a `final` transform to follow", "final_chain");
+    if (!chain->is_array() || chain->size() > kMaxChainedFinals)
+      reader.fail("must be an array of at most " + std::to_string(kMaxChainedFinals) + " transforms", "final_chain");
+    for (std::size_t i = 0; i < chain->size(); ++i)
+      genome.chainedFinals.push_back(
+          readXform((*chain)[i], parent.source(), reader.keyPath("final_chain") + "[" + std::to_string(i) + "]", true));
+  }
   if (std::optional<ObjectReader> symmetry = reader.child("symmetry")) {
     readFields(*symmetry, symmetryFields(), genome.symmetry);
     failOn(*symmetry, zeroAxisFailure(genome.symmetry.axis));
@@ -430,6 +438,11 @@ json flameJson(const FlameGenome& genome, bool complete) {
   for (const FlameXform& x : genome.xforms) xforms.push_back(xformJson(x, false, complete));
   json out = {{"xforms", xforms}};
   if (genome.hasFinal) out["final"] = xformJson(genome.finalXform, true, complete);
+  if (genome.hasFinal && !genome.chainedFinals.empty()) {
+    json chain = json::array();
+    for (const FlameXform& x : genome.chainedFinals) chain.push_back(xformJson(x, true, complete));
+    out["final_chain"] = chain;
+  }
   if (complete || genome.symmetry != FlameSymmetry{})
     writeFields(out["symmetry"], symmetryFields(), genome.symmetry, complete);
   return out;

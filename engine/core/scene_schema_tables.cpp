@@ -263,6 +263,12 @@ const FF kFlameFields[] = {
      .typeText = "object",
      .rangeText = "a transform without `weight`",
      .defaultText = "none"},
+    {.key = "final_chain",
+     .help = "further final transforms, applied one after the other after `final` (JWildfire chains several)",
+     .affects = kPattern,
+     .typeText = "array",
+     .rangeText = "0–16 transforms without `weight`; needs `final`",
+     .defaultText = "none"},
 };
 
 using XF = Field<FlameXform>;

@@ -446,11 +446,22 @@ void flameEditor(Ui& ui, PatternPanelState& pattern, ExplorePanelState& explore,
       selected = static_cast<int>(i);
     probe(ui, scope + "xform " + label);
   }
+  // selected: −1 is the final transform, −2 − k the k-th chained one (JWildfire's chain).
   if (flame.hasFinal) {
     ImGui::SameLine();
-    if (ImGui::Selectable("final", selected < 0, 0, ImVec2(ImGui::CalcTextSize("final").x, 0))) selected = -1;
+    if (ImGui::Selectable("final", selected == -1, 0, ImVec2(ImGui::CalcTextSize("final").x, 0))) selected = -1;
     probe(ui, scope + "xform final");
+    for (std::size_t k = 0; k < flame.chainedFinals.size(); ++k) {
+      const std::string label = "final " + std::to_string(k + 2);
+      ImGui::SameLine();
+      if (ImGui::Selectable(label.c_str(), selected == -2 - static_cast<int>(k), 0,
+                            ImVec2(ImGui::CalcTextSize(label.c_str()).x, 0)))
+        selected = -2 - static_cast<int>(k);
+      probe(ui, scope + "xform " + label);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("applied after the final transform before it (a chain of finals)");
+    }
   }
+  if (selected < -1 - static_cast<int>(flame.chainedFinals.size())) selected = -1;
   const bool full = flame.xforms.size() >= core::kMaxFlameXforms;
   ImGui::BeginDisabled(full);
   if (reportEdit(ui, button(ui, scope, "Add transform"), core::Affects::Pattern)) {
@@ -471,7 +482,14 @@ void flameEditor(Ui& ui, PatternPanelState& pattern, ExplorePanelState& explore,
   ImGui::SameLine();
   ImGui::BeginDisabled(selected >= 0 && flame.xforms.size() <= 1);
   if (reportEdit(ui, button(ui, scope, "Remove"), core::Affects::Pattern)) {
-    if (selected < 0) {
+    if (selected < -1) {
+      flame.chainedFinals.erase(flame.chainedFinals.begin() + (-2 - selected));
+      selected = -1;
+    } else if (selected < 0 && !flame.chainedFinals.empty()) {
+      // The next final of the chain takes the removed one's place.
+      flame.finalXform = flame.chainedFinals.front();
+      flame.chainedFinals.erase(flame.chainedFinals.begin());
+    } else if (selected < 0) {
       flame.hasFinal = false;
       selected = 0;
     } else if (flame.xforms.size() > 1) {
@@ -495,7 +513,9 @@ void flameEditor(Ui& ui, PatternPanelState& pattern, ExplorePanelState& explore,
 
   const std::string xscope = scope + (selected < 0 ? "final/" : "xform/");
   ImGui::PushID(selected);
-  core::FlameXform& xform = selected < 0 ? flame.finalXform : flame.xforms[static_cast<std::size_t>(selected)];
+  core::FlameXform& xform = selected >= 0    ? flame.xforms[static_cast<std::size_t>(selected)]
+                            : selected == -1 ? flame.finalXform
+                                             : flame.chainedFinals[static_cast<std::size_t>(-2 - selected)];
   xformEditor(ui, pattern, xscope, xform, selected < 0);
   ImGui::PopID();
   // With one transform every factor leads back to it (a 0 falls back to the plain weights).

@@ -159,6 +159,11 @@ void validateFlame(const FlameGenome& genome, const std::string& where) {
   }
   if (!(total > 0.0)) throw Error(where + " has only transforms of weight 0; at least one needs a positive weight");
   if (genome.hasFinal) validateXform(genome.finalXform, where + " final transform");
+  if (genome.chainedFinals.size() > kMaxChainedFinals)
+    throw Error(where + " chains " + std::to_string(genome.chainedFinals.size()) +
+                " final transforms after the first; at most " + std::to_string(kMaxChainedFinals) + " are allowed");
+  for (std::size_t i = 0; i < genome.chainedFinals.size(); ++i)
+    validateXform(genome.chainedFinals[i], where + " chained final transform " + std::to_string(i + 1));
   const FlameSymmetry& s = genome.symmetry;
   if (s.rotational < 1 || s.rotational > kMaxFlameSymmetry)
     throw Error(where + " has rotational symmetry " + std::to_string(s.rotational) + "; it must be 1 to " +

@@ -25,6 +25,8 @@
 namespace voxflame::core {
 
 inline constexpr std::size_t kMaxFlameXforms = 128;
+// Final transforms after the first that a flame may chain (FlameGenome::chainedFinals).
+inline constexpr std::size_t kMaxChainedFinals = 16;
 inline constexpr std::size_t kMaxXformVariations = 16;
 inline constexpr int kMaxFlameSymmetry = 24;
 // The largest magnitude a flame's numbers may have (affine and post coefficients, transform and variation weights,
@@ -83,6 +85,9 @@ struct FlameGenome {
   std::vector<FlameXform> xforms;
   bool hasFinal = false;
   FlameXform finalXform;
+  // Further final transforms, applied one after the other after finalXform (JWildfire chains
+  // several); used only with hasFinal.
+  std::vector<FlameXform> chainedFinals;
   FlameSymmetry symmetry;
   bool operator==(const FlameGenome&) const = default;
 };

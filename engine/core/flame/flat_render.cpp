@@ -57,6 +57,7 @@ PatternLayer planarLayer(const PatternLayer& layer) {
   };
   for (FlameXform& x : planar.flame.xforms) flatten(x);
   flatten(planar.flame.finalXform);
+  for (FlameXform& x : planar.flame.chainedFinals) flatten(x);
   return planar;
 }
 

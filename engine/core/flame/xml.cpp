@@ -1172,6 +1172,18 @@ FlameGenome readGenome(const pugi::xml_node& body, const std::string& context, F
   if (const pugi::xml_node finalNode = body.child("finalxform")) {
     genome.hasFinal = true;
     genome.finalXform = reader.xform(finalNode, prefix + "final transform", true);
+    // JWildfire applies several final transforms one after the other.
+    std::size_t finalNumber = 1;
+    for (pugi::xml_node node = finalNode.next_sibling("finalxform"); node; node = node.next_sibling("finalxform")) {
+      if (genome.chainedFinals.size() == kMaxChainedFinals) {
+        reader.lose("final transforms after the " + std::to_string(kMaxChainedFinals + 1) + "th");
+        reader.warn(context + " chains more than " + std::to_string(kMaxChainedFinals + 1) +
+                    " final transforms; the rest were left out");
+        break;
+      }
+      genome.chainedFinals.push_back(
+          reader.xform(node, prefix + "final transform " + std::to_string(++finalNumber), true));
+    }
   }
   return genome;
 }
