@@ -1,11 +1,11 @@
 // The direct-colour variations of core/flame/variations_direct_colour.cpp (Fractorium's dc_ ones, randCubes and
-// curl_sp; falloff3's colour shift too): where they move the point (the PointCase table) and the colour index they set,
-// each worked out from Fractorium's published formulas by a separate Python script in double precision, independently
-// of the code under test. The point is (0.3, −0.7, 0.5) with weight 0.8 unless a row says otherwise; the harness
-// (variation_point_case.h) starts the outputs at (0.125, −0.25, 0.5), which is the running sum an ordinary dc term
-// colours by, and the colour at 0.375. Random variations are replayed from the lane's seed: xorshift32 gives Ψ =
-// 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594 first from 0x9E3779B9. Then the chaos game's part: the
-// transform's direct_color blend.
+// curl_sp; falloff3's colour shift and pixel_flow's enable_dc too): where they move the point (the PointCase table) and
+// the colour index they set, each worked out from Fractorium's published formulas by a separate Python script in double
+// precision, independently of the code under test. The point is (0.3, −0.7, 0.5) with weight 0.8 unless a row says
+// otherwise; the harness (variation_point_case.h) starts the outputs at (0.125, −0.25, 0.5), which is the running sum
+// an ordinary dc term colours by, and the colour at 0.375. Random variations are replayed from the lane's seed:
+// xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594 first from 0x9E3779B9. Then the chaos
+// game's part: the transform's direct_color blend.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -316,6 +316,10 @@ const std::vector<ColourCase>& colourCases() {
       {"falloff3", {0, 0, 1, 0.5, 0, 1, 1, 0, 0.5, 0, 0, 0, 0}, {0.3, -0.7, 0.5}, kHighSeed, 0.3708924858519776},
       {"falloff3", {0, 0, 5, 0.1, 0, 1, 1, 0, 1.0, 0, 0, 0, 0}, {0.3, -0.7, 0.5}, kLowSeed, 0.2948551552568862},
       {"falloff3", {2, 1, 5, 0.1, 0, 1, 1, 0, 0.7, 0, 0, 0, 0.3}, {0.3, -0.7, 0.5}, kHighSeed, 0.28643686392816803},
+      // pixel_flow with enable_dc: the fade's Ψ, the lane's first draw; without it the colour is left alone.
+      {"pixel_flow", {90.0, 0.1, 200.0, 42.0, 1.0}, {0.3, -0.7, 0.5}, kHighSeed, 0.8794664144515991},
+      {"pixel_flow", {90.0, 0.1, 200.0, 42.0, 1.0}, {0.3, -0.7, 0.5}, kLowSeed, 0.3165935277938843},
+      {"pixel_flow", {}, {0.3, -0.7, 0.5}, kHighSeed, 0.375},
   };
   return cases;
 }
@@ -375,8 +379,8 @@ TEST(FlameVariationColour, LinearAsPrePostColoursByItsInputPlusItsResult) {
 // Only the variations that read or set the colour say so.
 TEST(FlameVariationColour, OnlyColourVariationsAreMarkedDirectColour) {
   for (const VariationInfo& info : variationCatalogue()) {
-    const bool colours =
-        info.name.starts_with("dc_") || info.name == "randCubes" || info.name == "curl_sp" || info.name == "falloff3";
+    const bool colours = info.name.starts_with("dc_") || info.name == "randCubes" || info.name == "curl_sp" ||
+                         info.name == "falloff3" || info.name == "pixel_flow";
     EXPECT_EQ(info.directColour, colours) << info.name;
   }
 }

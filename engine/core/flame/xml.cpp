@@ -639,10 +639,9 @@ class FlameReader {
         lose("colour shift of " + withoutCopyMark(name));
         warn(context + " has " + name + " with a colour shift, which voxflame does not apply");
       }
-      // pixel_flow's and truchet's direct colour (the point's colour set by the variation) is not
+      // truchet's direct colour (JWildfire's: the point's colour set by the variation) is not
       // applied either.
-      if ((info->name == "pixel_flow" && term.params.at(4) != 0.0) ||
-          (info->name == "truchet" && std::round(term.params.at(6)) == 1.0)) {
+      if (info->name == "truchet" && std::round(term.params.at(6)) == 1.0) {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
       }
