@@ -158,6 +158,45 @@ VOXFLAME_VARIATION_TARGETS void depthGaussian(const VariationInput& in, double* 
   }
 }
 
+// depth_ngon: depth_gaussian's blur (beyond `radius`, growing with the distance) shaped as a regular
+// polygon of `power` sides: the radius 1/cos of the angle from the nearest side's middle. Every lane
+// draws its Ψ, as in depth_gaussian.
+VOXFLAME_VARIATION_TARGETS void depthNgon(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double side = kTwoPi / fractoriumZeps(P[0]), halfSide = side / 2.0, blur = P[1] / 10.0, radius = P[2];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle = laneUniform(rnd[i]) * kTwoPi;
+    double phi = angle - side * std::floor(angle / fractoriumZeps(side));
+    phi = phi > halfSide ? phi - side : phi;
+    const double rad = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    const double stretch = 1.0 / fractoriumZeps(std::cos(phi));
+    const double aux = rad > radius ? stretch * blur * (rad - radius) : 0.0;
+    outX[i] += w * (x[i] + aux * std::cos(angle));
+    outY[i] += w * (y[i] + aux * std::sin(angle));
+    outZ[i] += w * z[i];
+  }
+}
+
+// depth_sine: depth_gaussian's blur with the radius acos(2u − 1)/π, u = (1 − Ψ)^power (Ψ itself
+// for power 1, as Fractorium has it).
+VOXFLAME_VARIATION_TARGETS void depthSine(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double power = std::max(P[0], 0.0), blur = P[1] / 10.0, radius = P[2];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double angle = laneUniform(rnd[i]) * kTwoPi;
+    const double u = laneUniform(rnd[i]);
+    const double r = power == 1.0 ? std::acos(u * 2.0 - 1.0) / kPi
+                                  : std::acos(std::exp(std::log(1.0 - u) * power) * 2.0 - 1.0) / kPi;
+    const double rad = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    const double aux = rad > radius ? r * blur * (rad - radius) : 0.0;
+    outX[i] += w * (x[i] + aux * std::cos(angle));
+    outY[i] += w * (y[i] + aux * std::sin(angle));
+    outZ[i] += w * z[i];
+  }
+}
+
 // checks: a checkerboard of cells of side `size`: the point moved by (−x, −y) on the odd cells
 // and by (x, y) on the even ones, with a random spread rnd Ψ along x on the odd, along y on the
 // even ones; the cells' parity is that of the sum of the rounded (Apophysis' rounding) cell
@@ -270,6 +309,14 @@ void variation_kernels::addBlurVariations(std::vector<VariationInfo>& catalogue)
       "w (p + b), b = √(−2 ln(1 − Ψ₁)) blur/10 (r − radius) (cos 2πΨ₂, sin 2πΨ₂) beyond the radius, 0 within "
       "(Fractorium's)",
       k2D, kRandom, &depthGaussian, {{"blur", 1.0, 0.0, 4.0}, {"radius", 1.0, 0.0, 4.0}});
+  add("depth_ngon",
+      "w (p + b), b = blur/10 (r − radius) / cos(φ') (cos 2πΨ, sin 2πΨ) beyond the radius, 0 within; φ' the angle "
+      "2πΨ from the middle of its side of a regular power-gon (Fractorium's)",
+      k2D, kRandom, &depthNgon, {{"power", 5.0, 1.0, 12.0}, {"blur", 1.0, 0.0, 4.0}, {"radius", 1.0, 0.0, 4.0}});
+  add("depth_sine",
+      "w (p + b), b = acos(2u − 1)/π blur/10 (r − radius) (cos 2πΨ₁, sin 2πΨ₁) beyond the radius, 0 within; u = Ψ₂ "
+      "for power 1, else (1 − Ψ₂)^power (Fractorium's)",
+      k2D, kRandom, &depthSine, {{"power", 1.0, 0.0, 4.0}, {"blur", 1.0, 0.0, 4.0}, {"radius", 1.0, 0.0, 4.0}});
   add("checks",
       "w (p + d): on the cells of side size where ⌊x/size⌉ + ⌊y/size⌉ is odd d = (rnd Ψ₁ − x, −y), else d = (x, y + "
       "rnd "
