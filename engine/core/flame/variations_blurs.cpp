@@ -197,6 +197,56 @@ VOXFLAME_VARIATION_TARGETS void depthSine(const VariationInput& in, double* __re
   }
 }
 
+// bTransform: bipolar coordinates (τ, σ) of p about the foci ±1, τ divided by power and moved by
+// move, σ turned by rotate, divided by power and put on a random one of the power branches
+// (⌊Ψ power⌋), τ pushed apart by split on the two half-planes, and mapped back.
+VOXFLAME_VARIATION_TARGETS void bTransform(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  // Fractorium keeps power in [1, 2³¹ − 1] (its default 0 becomes 1).
+  const double rotate = P[0], power = std::clamp(P[1], 1.0, 2147483647.0), move = P[2], split = P[3];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double xp1 = x[i] + 1.0, y2 = y[i] * y[i];
+    double tau = 0.5 * (std::log(xp1 * xp1 + y2) - std::log((x[i] - 1.0) * (x[i] - 1.0) + y2)) / power + move;
+    double sigma = kPi - std::atan2(y[i], xp1) - std::atan2(y[i], 1.0 - x[i]) + rotate;
+    sigma = sigma / power + kTwoPi / power * std::floor(laneUniform(rnd[i]) * power);
+    tau += x[i] >= 0.0 ? split : -split;
+    const double d = fractoriumZeps(std::cosh(tau) - std::cos(sigma));
+    outX[i] += w * std::sinh(tau) / d;
+    outY[i] += w * std::sin(sigma) / d;
+    outZ[i] += w * z[i];
+  }
+}
+
+// boarders2: the point's offset from its rounded (unit) cell centre scaled by |c|; with the chance
+// |c| (1 + |right|) (Ψ below it) pushed out by |c| |left| towards the cell's border along the larger
+// offset. The ratio of the offsets is guarded where both are 0 (Fractorium's 0/0).
+VOXFLAME_VARIATION_TARGETS void boarders2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double c = fractoriumZeps(std::abs(P[0])), cl = c * fractoriumZeps(std::abs(P[1]));
+  const double cr = c + c * fractoriumZeps(std::abs(P[2]));
+  for (std::size_t i = 0; i < n; ++i) {
+    const double rx = apophysisRound(x[i]), ry = apophysisRound(y[i]);
+    const double dx = x[i] - rx, dy = y[i] - ry;
+    double px = dx * c + rx, py = dy * c + ry;
+    if (laneUniform(rnd[i]) < cr) {
+      if (std::abs(dx) >= std::abs(dy)) {
+        const double side = dx >= 0.0 ? cl : -cl;
+        px += side;
+        py += side * dy / fractoriumZeps(dx);
+      } else {
+        const double side = dy >= 0.0 ? cl : -cl;
+        py += side;
+        px += dx / dy * side;
+      }
+    }
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * z[i];
+  }
+}
+
 // checks: a checkerboard of cells of side `size`: the point moved by (−x, −y) on the odd cells
 // and by (x, y) on the even ones, with a random spread rnd Ψ along x on the odd, along y on the
 // even ones; the cells' parity is that of the sum of the rounded (Apophysis' rounding) cell
@@ -317,6 +367,16 @@ void variation_kernels::addBlurVariations(std::vector<VariationInfo>& catalogue)
       "w (p + b), b = acos(2u − 1)/π blur/10 (r − radius) (cos 2πΨ₁, sin 2πΨ₁) beyond the radius, 0 within; u = Ψ₂ "
       "for power 1, else (1 − Ψ₂)^power (Fractorium's)",
       k2D, kRandom, &depthSine, {{"power", 1.0, 0.0, 4.0}, {"blur", 1.0, 0.0, 4.0}, {"radius", 1.0, 0.0, 4.0}});
+  add("bTransform",
+      "bipolar coordinates of p (foci ±1): τ/power + move ± split (by x's sign), (σ + rotate)/power + 2π ⌊Ψ "
+      "power⌋/power, "
+      "back to the plane: w (sinh τ, sin σ)/(cosh τ − cos σ) (Fractorium's)",
+      k2D, kRandom, &bTransform,
+      {{"rotate", 0.0, -kPi, kPi}, {"power", 1.0, 1.0, 10.0}, {"move", 0.0, -2.0, 2.0}, {"split", 0.0, -2.0, 2.0}});
+  add("boarders2",
+      "w (o |c| + k), k = p rounded, o = p − k; when Ψ < |c| (1 + |right|) moved by |c| |left| towards the cell's "
+      "border along o's larger coordinate (Fractorium's)",
+      k2D, kRandom, &boarders2, {{"c", 0.5, -2.0, 2.0}, {"left", 0.5, -2.0, 2.0}, {"right", 0.5, -2.0, 2.0}});
   add("checks",
       "w (p + d): on the cells of side size where ⌊x/size⌉ + ⌊y/size⌉ is odd d = (rnd Ψ₁ − x, −y), else d = (x, y + "
       "rnd "
