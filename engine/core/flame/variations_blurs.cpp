@@ -247,6 +247,58 @@ VOXFLAME_VARIATION_TARGETS void boarders2(const VariationInput& in, double* __re
   }
 }
 
+// cpow3: the complex power z^(c + i d') of cpow's kind on a random branch: the angle taken in
+// [0, 2π), moved down a turn with the chance (1 − cos(φ/2))/2, then by ±2π round(spread-scaled
+// ln Ψ) turns, and the result turned by 2πk/divisor (k = ⌊32767 Ψ⌋). c and d' come from r and
+// d: the exponent's angle atan2(r ln d, 2π) (ln of |d| negated for d < 0).
+VOXFLAME_VARIATION_TARGETS void cpow3(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                      double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double r = P[0], d = fractoriumZeps(P[1]), divisor = fractoriumZeps(P[2]), spread = P[3];
+  const double turn = kTwoPi / divisor;
+  const double a0 = std::atan2((d < 0.0 ? -std::log(-d) : std::log(d)) * r, kTwoPi);
+  const double c = std::cos(a0) * r * std::cos(a0) / divisor, e = std::cos(a0) * r * std::sin(a0) / divisor;
+  const double halfC = c / 2.0, halfE = e / 2.0, coeff = e == 0.0 ? 0.0 : -0.095 * spread / e;
+  for (std::size_t i = 0; i < n; ++i) {
+    double a = std::atan2(y[i], x[i]);
+    a = a < 0.0 ? a + kTwoPi : a;
+    a = std::cos(a / 2.0) < 2.0 * laneUniform(rnd[i]) - 1.0 ? a - kTwoPi : a;
+    const double sign = laneUniform(rnd[i]) < 0.5 ? kTwoPi : -kTwoPi;
+    // ln(1 − Ψ): Ψ = 0 would make it −∞ (and 0 · −∞ NaN).
+    a += sign * std::round(std::log(1.0 - laneUniform(rnd[i])) * coeff);
+    const double k = std::floor(laneUniform(rnd[i]) * 32767.0);
+    const double lnr2 = std::log(x[i] * x[i] + y[i] * y[i]);
+    const double m = w * std::exp(halfC * lnr2 - e * a);
+    const double angle = c * a + halfE * lnr2 + turn * k;
+    outX[i] += m * std::cos(angle);
+    outY[i] += m * std::sin(angle);
+    outZ[i] += w * z[i];
+  }
+}
+
+// GlynnSim5: the origin within radius + thickness; beyond it, with the chance contrast ·
+// (radius/r)^pow, the point (w α², w α²), α = radius/r, else w p (Fractorium's, as it has it).
+// Every lane draws its Ψ, so the loop has no branch on the draw.
+VOXFLAME_VARIATION_TARGETS void glynnSim5(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double radius = P[0], inner = P[0] + P[1], contrast = std::clamp(P[2], 0.0, 1.0), power = P[3];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = laneUniform(rnd[i]);
+    const double r = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    const double alpha = std::abs(radius / fractoriumZeps(r));
+    double px = 0.0, py = 0.0;
+    if (!(r < inner)) {
+      const bool keep = u > contrast * std::pow(alpha, power);
+      px = keep ? w * x[i] : w * alpha * alpha;
+      py = keep ? w * y[i] : w * alpha * alpha;
+    }
+    outX[i] += px;
+    outY[i] += py;
+    outZ[i] += w * z[i];
+  }
+}
+
 // checks: a checkerboard of cells of side `size`: the point moved by (−x, −y) on the odd cells
 // and by (x, y) on the even ones, with a random spread rnd Ψ along x on the odd, along y on the
 // even ones; the cells' parity is that of the sum of the rounded (Apophysis' rounding) cell
@@ -377,6 +429,17 @@ void variation_kernels::addBlurVariations(std::vector<VariationInfo>& catalogue)
       "w (o |c| + k), k = p rounded, o = p − k; when Ψ < |c| (1 + |right|) moved by |c| |left| towards the cell's "
       "border along o's larger coordinate (Fractorium's)",
       k2D, kRandom, &boarders2, {{"c", 0.5, -2.0, 2.0}, {"left", 0.5, -2.0, 2.0}, {"right", 0.5, -2.0, 2.0}});
+  add("cpow3",
+      "w e^(c L/2 − d' α) (cos β, sin β), L = ln r², β = c α + d' L/2 + 2πk/divisor, k = ⌊32767 Ψ₄⌋; α = φ in [0, 2π), "
+      "less 2π when cos(α/2) < 2Ψ₁ − 1, plus ±2π round(−0.095 spread ln(1 − Ψ₃)/d') (± by Ψ₂); c = r cos² t/divisor, "
+      "d' = r cos t sin t/divisor, t = atan2(r ln d, 2π) (Fractorium's)",
+      k2D, kRandom, &cpow3,
+      {{"r", 1.0, -4.0, 4.0}, {"d", 1.0, -4.0, 4.0}, {"divisor", 1.0, -10.0, 10.0}, {"spread", 1.0, -4.0, 4.0}});
+  add("GlynnSim5",
+      "0 within radius + thickness; beyond, w (α², α²) with α = radius/r when Ψ ≤ contrast α^pow, else w p "
+      "(Fractorium's)",
+      k2D, kRandom, &glynnSim5,
+      {{"radius", 1.0, 0.0, 4.0}, {"thickness", 0.1, 0.0, 1.0}, {"contrast", 0.5, 0.0, 1.0}, {"pow", 1.5, 0.0, 4.0}});
   add("checks",
       "w (p + d): on the cells of side size where ⌊x/size⌉ + ⌊y/size⌉ is odd d = (rnd Ψ₁ − x, −y), else d = (x, y + "
       "rnd "
