@@ -16,6 +16,12 @@ namespace {
 
 using namespace variation_kernels;
 
+// Fractorium's HashShadertoy (after Chaotica): fract(sin(12.9898 a + 78.233 b + seed) 43758.5453).
+inline double shadertoyHash(double a, double b, double seed) {
+  const double v = std::sin(a * 12.9898 + b * 78.233 + seed) * 43758.5453;
+  return v - std::floor(v);
+}
+
 // gaussian: the point plus a Gaussian-like blur of radius w (Ψ₁ + Ψ₂ + Ψ₃ + Ψ₄ − 2) in the
 // direction 2πΨ; unlike flam3's gaussian_blur the point itself is added, without the weight
 // (Fractorium's).
@@ -299,6 +305,59 @@ VOXFLAME_VARIATION_TARGETS void glynnSim5(const VariationInput& in, double* __re
   }
 }
 
+// GlynnSim4: w (X, Y) within radius; beyond it w p, or w α² p (α = radius/r) with the chance
+// contrast α^pow. Every lane draws its Ψ.
+VOXFLAME_VARIATION_TARGETS void glynnSim4(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double radius = P[0], contrast = std::clamp(P[1], 0.0, 1.0), power = P[2], cx = P[3], cy = P[4];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double u = laneUniform(rnd[i]);
+    const double r = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    const double alpha = std::abs(radius / fractoriumZeps(r));
+    const double f = u > contrast * std::pow(alpha, power) ? w : w * (alpha * alpha);
+    const bool inside = r < radius;
+    outX[i] += inside ? w * cx : f * x[i];
+    outY[i] += inside ? w * cy : f * y[i];
+    outZ[i] += w * z[i];
+  }
+}
+
+// hex_rand: a random point of a random hexagon of a hexagonal lattice (2x by 2y cells about the
+// origin), shown with the chance `density` (hashed per hexagon) and sized by size/2 times a hashed
+// number to the power `power` (Fractorium's).
+VOXFLAME_VARIATION_TARGETS void hexRand(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  constexpr double kSqrt3Half = 0.86602540378443864676, kTwoOverSqrt3 = 1.1547005383792515290;
+  constexpr double kThirdTurn = 2.0943951023931954923;
+  const double cellsX = P[0], cellsY = P[1], halfSize = P[2] * 0.5, power = P[3];
+  const double density = std::clamp(P[4], 0.0, 1.0), seed = P[5];
+  for (std::size_t i = 0; i < n; ++i) {
+    // The angle within the hexagon's six triangles, and the distance to its edge in that direction.
+    const double k = laneUniform(rnd[i]) * 6.0;
+    const double sector = std::floor(k), t = k - sector;
+    const double edge = std::sqrt(1.0 + t * t - t);
+    const double sign = sector - std::floor(k / 2.0) * 2.0 == 1.0 ? 1.0 : -1.0;
+    // Fractorium halves the sector in integers: ⌊sector/2⌋.
+    const double angle = kThirdTurn * std::floor(sector / 2.0) + sign * std::asin(kSqrt3Half * t / edge) - kPi / 2.0;
+    const double cx = std::floor(laneUniform(rnd[i]) * cellsX * 2.0) - cellsX;
+    const double cy = std::floor(laneUniform(rnd[i]) * cellsY * 2.0) - cellsY;
+    const double hx = cx + 0.5 * cy, hy = cy * kSqrt3Half;
+    const double spread = std::sqrt(laneUniform(rnd[i]));
+    double px = 0.0, py = 0.0;
+    if (shadertoyHash(hy, hx, seed) < density) {
+      const double scaled = edge * spread * kTwoOverSqrt3;
+      const double r = halfSize * scaled * std::pow(shadertoyHash(hx, hy, seed), power);
+      px = (std::cos(angle) * r + hx) * w;
+      py = (std::sin(angle) * r + hy) * w;
+    }
+    outX[i] += px;
+    outY[i] += py;
+    outZ[i] += w * z[i];
+  }
+}
+
 // checks: a checkerboard of cells of side `size`: the point moved by (−x, −y) on the odd cells
 // and by (x, y) on the even ones, with a random spread rnd Ψ along x on the odd, along y on the
 // even ones; the cells' parity is that of the sum of the rounded (Apophysis' rounding) cell
@@ -345,12 +404,6 @@ VOXFLAME_VARIATION_TARGETS void glynnia2(const VariationInput& in, double* __res
     outY[i] += py;
     outZ[i] += w * z[i];
   }
-}
-
-// Fractorium's HashShadertoy (after Chaotica): fract(sin(12.9898 a + 78.233 b + seed) 43758.5453).
-inline double shadertoyHash(double a, double b, double seed) {
-  const double v = std::sin(a * 12.9898 + b * 78.233 + seed) * 43758.5453;
-  return v - std::floor(v);
 }
 
 // crackle2: cracks between jittered cell points: the point's unit cell and a random neighbour (up,
@@ -440,6 +493,25 @@ void variation_kernels::addBlurVariations(std::vector<VariationInfo>& catalogue)
       "(Fractorium's)",
       k2D, kRandom, &glynnSim5,
       {{"radius", 1.0, 0.0, 4.0}, {"thickness", 0.1, 0.0, 1.0}, {"contrast", 0.5, 0.0, 1.0}, {"pow", 1.5, 0.0, 4.0}});
+  add("GlynnSim4",
+      "w (X, Y) within radius; beyond, w α² p (α = radius/r) when Ψ ≤ contrast α^pow, else w p (Fractorium's)", k2D,
+      kRandom, &glynnSim4,
+      {{"radius", 1.0, 0.0, 4.0},
+       {"contrast", 0.5, 0.0, 1.0},
+       {"pow", 1.5, 0.0, 4.0},
+       {"X", 0.0, -2.0, 2.0},
+       {"Y", 0.0, -2.0, 2.0}});
+  add("hex_rand",
+      "w (c + R (cos β, sin β)): c a random centre (i + j/2, j √3/2) of the hexagonal lattice, i ∈ [−x, x), j ∈ [−y, "
+      "y), kept when its hash is below density (else 0); β a random direction, R = size/2 · (distance to the "
+      "hexagon's edge) √Ψ · 2/√3 · h^power, h another hash of c (Fractorium's)",
+      k2D, kRandom, &hexRand,
+      {{"x", 10.0, 0.0, 50.0},
+       {"y", 10.0, 0.0, 50.0},
+       {"size", 1.0, 0.0, 2.0},
+       {"power", 1.0, 0.0, 4.0},
+       {"density", 1.0, 0.0, 1.0},
+       {"seed", 1.0, 0.0, 100.0}});
   add("checks",
       "w (p + d): on the cells of side size where ⌊x/size⌉ + ⌊y/size⌉ is odd d = (rnd Ψ₁ − x, −y), else d = (x, y + "
       "rnd "
