@@ -98,6 +98,8 @@ TEST(Flam3Oracle, DeterministicVariationsMatchLibflam3) {
       in.tx = &x;
       in.ty = &y;
       in.tz = &z;
+      double colour = 0.5;
+      in.colour = &colour;
       info.apply(in, &outX, &outY, &outZ);
       const double tolerance = 1e-9 * std::max(1.0, std::abs(q[0]) + std::abs(q[1]));
       EXPECT_NEAR(outX, q[0], tolerance) << "at (" << point[0] << ", " << point[1] << ")";

@@ -903,6 +903,8 @@ TEST(VariationCatalogue, OddInputsNeverTrapOrDisturbOtherLanes) {
         in.tx = bx.data();
         in.ty = by.data();
         in.tz = bz.data();
+        out.colour.assign(lanes, 0.5);
+        in.colour = out.colour.data();
         info.apply(in, out.x.data(), out.y.data(), out.z.data());
         return out;
       };
@@ -918,7 +920,8 @@ TEST(VariationCatalogue, OddInputsNeverTrapOrDisturbOtherLanes) {
       const Outputs tame = runBatch(tameX, tameY, tameZ, random);
       for (std::size_t i = 1; i < lanes; i += 2) {
         const auto same = [](double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; };
-        EXPECT_TRUE(same(odd.x[i], tame.x[i]) && same(odd.y[i], tame.y[i]) && same(odd.z[i], tame.z[i]))
+        EXPECT_TRUE(same(odd.x[i], tame.x[i]) && same(odd.y[i], tame.y[i]) && same(odd.z[i], tame.z[i]) &&
+                    same(odd.colour[i], tame.colour[i]))
             << "lane " << i << " beside odd input (" << xs[i - 1] << ", " << ys[i - 1] << ", " << zs[i - 1] << ")";
       }
     }
@@ -954,6 +957,8 @@ TEST(VariationCatalogue, DefaultsGiveFiniteResultsInTheUnitCube) {
     in.tx = xs.data();
     in.ty = ys.data();
     in.tz = zs.data();
+    std::vector<double> colour(lanes, 0.5);
+    in.colour = colour.data();
     info.apply(in, ox.data(), oy.data(), oz.data());
     // crop_trapezoid drops what it crops (NaN in all three, the chaos game's escape) by design.
     const bool drops = info.name == "crop_trapezoid";
@@ -1007,7 +1012,7 @@ ChaosRun runInTheChaosGame(const std::string& name, double weight) {
       else
         game.seedLane(lanes, i, rng);
       run.statesStayUsable = run.statesStayUsable && std::isfinite(lanes.x[i]) && std::isfinite(lanes.y[i]) &&
-                             std::isfinite(lanes.z[i]) && lanes.random[i] != 0u;
+                             std::isfinite(lanes.z[i]) && std::isfinite(lanes.color[i]) && lanes.random[i] != 0u;
     }
   }
   run.finiteShare = static_cast<double>(finite) / static_cast<double>(drawn);

@@ -54,14 +54,16 @@ inline std::string caseLabel(const testing::TestParamInfo<PointCase>& info) {
 struct Outputs {
   std::vector<double> x, y, z;
   std::vector<std::uint32_t> random;
+  std::vector<double> colour;  // each lane's colour index, kStartColour before (direct-colour variations set it)
 };
-inline constexpr double kStartX = 0.125, kStartY = -0.25, kStartZ = 0.5;
+inline constexpr double kStartX = 0.125, kStartY = -0.25, kStartZ = 0.5, kStartColour = 0.375;
 
 inline Outputs run(const core::VariationInfo& info, const std::vector<double>& params, glm::dvec3 p, double weight,
                    std::uint32_t seed, std::size_t lanes) {
   std::vector<double> xs(lanes, p.x), ys(lanes, p.y), zs(lanes, p.z);
   Outputs out{std::vector<double>(lanes, kStartX), std::vector<double>(lanes, kStartY),
-              std::vector<double>(lanes, kStartZ), std::vector<std::uint32_t>(lanes, seed)};
+              std::vector<double>(lanes, kStartZ), std::vector<std::uint32_t>(lanes, seed),
+              std::vector<double>(lanes, kStartColour)};
   core::VariationInput in;
   in.x = xs.data();
   in.y = ys.data();
@@ -74,6 +76,7 @@ inline Outputs run(const core::VariationInfo& info, const std::vector<double>& p
   in.tx = xs.data();
   in.ty = ys.data();
   in.tz = zs.data();
+  in.colour = out.colour.data();
   info.apply(in, out.x.data(), out.y.data(), out.z.data());
   return out;
 }

@@ -168,7 +168,7 @@ VOXFLAME_CHAOS_TARGETS void emitPoints(const double* x, const double* y, const d
 }  // namespace
 
 void ChaosLanes::resize(std::size_t lanes) {
-  for (auto* v : {&x, &y, &z, &w, &color, &tx, &ty, &tz, &ox, &oy, &oz, &sx, &sy, &sz}) v->assign(lanes, 0.0);
+  for (auto* v : {&x, &y, &z, &w, &color, &tx, &ty, &tz, &ox, &oy, &oz, &sx, &sy, &sz, &gc, &gs}) v->assign(lanes, 0.0);
   random.assign(lanes, 1u);
   groupRandom.assign(lanes, 1u);
   visible.assign(lanes, 1);
@@ -185,6 +185,7 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
   c.color = xform.color;
   c.colorSpeed = xform.colorSpeed;
   c.opacity = xform.opacity;
+  c.directColor = xform.directColor;
   for (const VariationStage stage : {VariationStage::Pre, VariationStage::Normal, VariationStage::Post})
     for (const VariationTerm& term : xform.variations) {
       if (term.weight == 0.0 || variationStage(term.name) != stage) continue;
@@ -192,6 +193,7 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
       c.terms.push_back({info.apply, term.weight, term.params, stage, info.mapsXY, info.threeD, info.additive,
                          info.name == "flatten", info.replaces});
       c.hasNormalTerms = c.hasNormalTerms || stage == VariationStage::Normal;
+      c.directColour = c.directColour || info.directColour;
     }
   return c;
 }
@@ -300,6 +302,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   };
   VariationInput in;
   in.random = lanes.groupRandom.data();
+  in.colour = lanes.gc.data();  // read and set only by direct-colour terms (startDirectColour fills it)
   in.count = count;
   in.affine = xform.affine.data();
   in.tx = tx;
@@ -312,6 +315,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
     in.z = z;
     in.weight = term.weight;
     in.params = term.params.data();
+    in.stage = term.stage;
     term.apply(in, rx, ry, rz);
   };
   std::size_t k = 0;
@@ -358,6 +362,25 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
       for (std::size_t j = 0; j < count; ++j) oz[j] = 0.0;
   }
   if (xform.hasPost) affineInPlace(ox, oy, oz, xform.post.data(), count);
+}
+
+void ChaosGame::startDirectColour(const Compiled& xform, ChaosLanes& lanes, const std::uint32_t* group, std::size_t n) {
+  const double keep = 1.0 - xform.colorSpeed, pull = xform.colorSpeed * xform.color;
+  const double* color = lanes.color.data();
+  double* gc = lanes.gc.data();
+  double* gs = lanes.gs.data();
+  for (std::size_t j = 0; j < n; ++j) gs[j] = gc[j] = keep * color[group[j]] + pull;
+}
+
+void ChaosGame::finishDirectColour(const Compiled& xform, ChaosLanes& lanes, std::size_t n) {
+  // Fractorium's Xform::Apply: saved + direct_color · (set − saved), and NaN (a variation's 0/0,
+  // an escaped point's) as 0.
+  double* gc = lanes.gc.data();
+  const double* gs = lanes.gs.data();
+  for (std::size_t j = 0; j < n; ++j) {
+    const double c = gs[j] + xform.directColor * (gc[j] - gs[j]);
+    gc[j] = std::isnan(c) ? 0.0 : c;
+  }
 }
 
 void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
@@ -407,9 +430,16 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     const std::uint32_t* group = order + first;
     gatherAffine(group, n, x, y, z, random, xf.affine.data(), lanes.tx.data(), lanes.ty.data(), lanes.tz.data(),
                  lanes.groupRandom.data());
+    if (xf.directColour) startDirectColour(xf, lanes, group, n);
     applyGroup(xf, lanes, n);
     scatterGroup(group, n, lanes.ox.data(), lanes.oy.data(), lanes.oz.data(), lanes.groupRandom.data(), x, y, z, color,
                  random, visible, 1.0 - xf.colorSpeed, xf.colorSpeed * xf.color, xf.opacity);
+    if (xf.directColour) {
+      // The plain blend scatterGroup wrote is replaced by the direct-colour one.
+      finishDirectColour(xf, lanes, n);
+      const double* gc = lanes.gc.data();
+      for (std::uint32_t j = 0; j < n; ++j) color[group[j]] = gc[j];
+    }
   }
 
   // 4. What is drawn: the state, or the final transform of it (which never feeds back).
@@ -421,7 +451,9 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
   for (std::size_t i = 0; i < count; ++i) order[i] = static_cast<std::uint32_t>(i);
   gatherAffine(order, count, x, y, z, random, final_.affine.data(), lanes.tx.data(), lanes.ty.data(), lanes.tz.data(),
                lanes.groupRandom.data());
+  if (final_.directColour) startDirectColour(final_, lanes, order, count);
   applyGroup(final_, lanes, count);
+  if (final_.directColour) finishDirectColour(final_, lanes, count);
   const double keep = 1.0 - final_.colorSpeed, pull = final_.colorSpeed * final_.color;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < count; ++i) {
@@ -429,7 +461,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     outX[i] = good ? lanes.ox[i] : kNaN;
     outY[i] = lanes.oy[i];
     outZ[i] = lanes.oz[i];
-    outColor[i] = keep * color[i] + pull;
+    outColor[i] = final_.directColour ? lanes.gc[i] : keep * color[i] + pull;
     std::uint32_t r = lanes.groupRandom[i];
     visible[i] &= laneUniform(r) < final_.opacity ? 1 : 0;
     random[i] = r;

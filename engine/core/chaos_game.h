@@ -36,6 +36,9 @@ struct ChaosLanes {
   std::vector<std::uint32_t> order;
   std::vector<double> tx, ty, tz, ox, oy, oz;
   std::vector<double> sx, sy, sz;  // a post_ term's result (t is still read then)
+  // A direct-colour transform's group: the colour index its variations read and set, and what the
+  // colour blend made of it before them (flame.h's directColor blends between the two).
+  std::vector<double> gc, gs;
   std::vector<std::uint32_t> groupRandom;
   void resize(std::size_t lanes);
   std::size_t size() const { return x.size(); }
@@ -79,10 +82,16 @@ class ChaosGame {
     std::vector<Term> terms;  // pre_ terms first, then the others, then post_ ones (each in file order)
     bool hasNormalTerms = false;
     double color = 0.0, colorSpeed = 0.5, opacity = 1.0;
+    bool directColour = false;  // has a term that reads or sets the colour index (VariationInfo::directColour)
+    double directColor = 1.0;
   };
   static Compiled compile(const FlameXform& xform);
   // Runs one compiled transform's affine map, variations and post map on a contiguous group.
   void applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const;
+  // A direct-colour transform's colour: lanes.gc as the colour blend of `color` makes it (and gs a copy)
+  // before applyGroup; after it, gc blended back towards gs by directColor.
+  static void startDirectColour(const Compiled& xform, ChaosLanes& lanes, const std::uint32_t* group, std::size_t n);
+  static void finishDirectColour(const Compiled& xform, ChaosLanes& lanes, std::size_t n);
   void stepFlame(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
                  std::size_t count) const;
   void symmetrise(ChaosLanes& lanes, double* outX, double* outY, double* outZ, std::size_t count) const;

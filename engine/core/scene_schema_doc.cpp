@@ -234,7 +234,9 @@ through its `affine` map, then its `pre_` variations one after the other, the we
 other variations (`presets/VARIATIONS.md` lists them with their formulas and the rules of the
 `pre_`/`post_` forms; `voxflame list --variations`), its `post_` variations, then its optional
 `post` map. Its colour index moves towards the transform's `color` by `color_speed` (flam3's
-blend `c ← (1 − color_speed) · c + color_speed · color`) and indexes the layer's gradient
+blend `c ← (1 − color_speed) · c + color_speed · color`); a transform with direct-colour
+variations (`dc_linear`, …, Fractorium's) then sets it from the point, c ← c + `direct_color` ·
+(dc − c). It indexes the layer's gradient
 (`color.mode` `index`) as flam3 indexes its 256-colour palette: the gradient read at 256
 positions, index c takes entry ⌊256 c⌋ (`flat.palette_mode` `step`, the default) or blends it
 with the next one (`linear`), and the colours are summed as written (sRGB), as flam3 sums them, not

@@ -331,6 +331,15 @@ const XF kXformFields[] = {
      .help = "the chance that a point it makes is drawn",
      .affects = kPattern,
      .write = Write::UnlessDefault},
+    {.key = "direct_color",
+     .member = &FlameXform::directColor,
+     .min = 0.0,
+     .max = 1.0,
+     .ui = {"direct colour", 0.0, 1.0},
+     .help = "how much of the colour index its direct-colour variations (dc_linear, ...) set is kept "
+             "(Fractorium's var_color)",
+     .affects = kPattern,
+     .write = Write::UnlessDefault},
 };
 
 using VF = Field<VariationTerm>;

@@ -408,13 +408,19 @@ void xaosMatrix(Ui& ui, PatternPanelState& pattern, std::size_t index, const std
   ImGui::TreePop();
 }
 
-// One transform: weight (not for the final one), colour, colour speed, opacity, the affine map
+// One transform: weight (not for the final one), colour, colour speed, opacity (and direct colour), the affine map
 // and an optional post map, the variations. Its xaos is a row of the flame's xaos matrix.
 void xformEditor(Ui& ui, PatternPanelState& pattern, const std::string& scope, core::FlameXform& xform, bool isFinal) {
   if (!isFinal) fieldWidget(ui, scope, xform, core::xformFields(), "weight");
   fieldWidget(ui, scope, xform, core::xformFields(), "color");
   fieldWidget(ui, scope, xform, core::xformFields(), "color_speed");
   fieldWidget(ui, scope, xform, core::xformFields(), "opacity");
+  // The direct colour matters only to a transform with a variation that sets the colour (dc_linear, ...).
+  if (std::any_of(xform.variations.begin(), xform.variations.end(), [](const core::VariationTerm& term) {
+        const core::VariationInfo* info = core::findVariation(term.name);
+        return info && info->directColour;
+      }))
+    fieldWidget(ui, scope, xform, core::xformFields(), "direct_color");
   affineEditor(ui, pattern, scope, xform.affine);
   reportEdit(ui, ImGui::Checkbox("post-affine", &xform.hasPost), core::Affects::Pattern);
   probe(ui, scope + "post-affine");

@@ -32,6 +32,8 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addFractorium3DShapeVariations(c);
   variation_kernels::addFractorium3DMoreVariations(c);
   variation_kernels::addFractoriumRandom2DVariations(c);
+  variation_kernels::addDirectColourVariations(c);
+  variation_kernels::addBlurVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3")
@@ -63,7 +65,7 @@ bool resultIgnoresThePoint(const VariationInfo& info) {
   const std::vector<double> params = info.defaultParams();
   const auto at = [&](double x, double y, double z) {
     std::uint32_t random = 0x2545F491u;
-    double ox = 0.0, oy = 0.0, oz = 0.0;
+    double ox = 0.0, oy = 0.0, oz = 0.0, colour = 0.5;
     VariationInput in;
     in.x = &x;
     in.y = &y;
@@ -75,6 +77,7 @@ bool resultIgnoresThePoint(const VariationInfo& info) {
     in.tx = &x;
     in.ty = &y;
     in.tz = &z;
+    in.colour = &colour;
     info.apply(in, &ox, &oy, &oz);
     return std::array<double, 3>{info.mapsXY ? ox : 0.0, info.mapsXY ? oy : 0.0, info.threeD ? oz : 0.0};
   };

@@ -59,6 +59,8 @@ void validateXform(const FlameXform& xform, const std::string& where) {
   if (!finite(xform.colorSpeed) || xform.colorSpeed < 0.0 || xform.colorSpeed > 1.0)
     fail("has a colour speed outside [0, 1]");
   if (!finite(xform.opacity) || xform.opacity < 0.0 || xform.opacity > 1.0) fail("has an opacity outside [0, 1]");
+  if (!finite(xform.directColor) || xform.directColor < 0.0 || xform.directColor > 1.0)
+    fail("has a direct colour outside [0, 1]");
   if (xform.xaos.size() > kMaxFlameXforms)
     fail("has " + std::to_string(xform.xaos.size()) + " xaos factors; at most one per transform (" +
          std::to_string(kMaxFlameXforms) + ")");

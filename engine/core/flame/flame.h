@@ -62,6 +62,10 @@ struct FlameXform {
   double color = 0.0;       // the colour index this transform pulls points towards, 0–1
   double colorSpeed = 0.5;  // how far each step moves a point's colour towards `color`, 0–1
   double opacity = 1.0;     // the chance that a point this transform makes is drawn, 0–1
+  // How much of the colour index its direct-colour variations (dc_linear, ...) set is kept, 0–1:
+  // Fractorium's and Apophysis 7X's "direct color" (var_color in their files). The point's colour
+  // becomes c + directColor · (dc − c), c being what the colour blend above made; 0 ignores them.
+  double directColor = 1.0;
   // Xaos (flam3's and Apophysis' `chaos`): xaos[j] multiplies transform j's weight when the next
   // transform is chosen right after this one, so 0 forbids the step from this transform to j.
   // Entries past the end (and an empty list) are 1; the final transform's list is unused. When

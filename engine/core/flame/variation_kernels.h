@@ -85,6 +85,13 @@ inline double flam3Count(double value) {
   return value == 0.0 ? 1.0 : value;
 }
 
+// Apophysis' rounding (Fractorium's LRint): half away from zero, through a 64-bit integer; values
+// beyond its range are whole numbers already and stay as they are (NaN too).
+inline double apophysisRound(double v) {
+  if (!(std::abs(v) < 0x1p62)) return v;
+  return static_cast<double>(static_cast<std::int64_t>(v >= 0.0 ? v + 0.5 : v - 0.5));
+}
+
 // flam3's affine coefficients inside the row-major 3×4 pre-affine (see flame.h).
 constexpr std::size_t kAffineB = 1;  // m01
 constexpr std::size_t kAffineC = 3;  // t0
@@ -150,6 +157,8 @@ void addQuaternionVariations(std::vector<VariationInfo>& catalogue);
 void addFractorium3DShapeVariations(std::vector<VariationInfo>& catalogue);
 void addFractorium3DMoreVariations(std::vector<VariationInfo>& catalogue);
 void addFractoriumRandom2DVariations(std::vector<VariationInfo>& catalogue);
+void addDirectColourVariations(std::vector<VariationInfo>& catalogue);
+void addBlurVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 
@@ -169,6 +178,7 @@ void addFractoriumRandom2DVariations(std::vector<VariationInfo>& catalogue);
   const std::size_t n = (in).count;              \
   const double w = (in).weight;                  \
   const double* __restrict P = (in).params;      \
+  double* __restrict colour = (in).colour;       \
   (void)x;                                       \
   (void)y;                                       \
   (void)z;                                       \
@@ -176,7 +186,8 @@ void addFractoriumRandom2DVariations(std::vector<VariationInfo>& catalogue);
   (void)outX;                                    \
   (void)outY;                                    \
   (void)w;                                       \
-  (void)P;
+  (void)P;                                       \
+  (void)colour;
 
 // Each variation is built for AVX2 and for any x86-64, picked when the program loads: with AVX2
 // the loops that vectorise run four lanes at a time.

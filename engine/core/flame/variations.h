@@ -47,6 +47,10 @@ namespace voxflame::core {
   return static_cast<double>(static_cast<std::int32_t>(state >> 8)) * 0x1p-24;
 }
 
+// Where in its transform a variation term acts: its name's pre_/post_ prefix (see above); the
+// catalogue's own pre_blur acts at the pre_ stage too.
+enum class VariationStage { Pre, Normal, Post };
+
 // What a variation sees for one group of lanes (all lanes that chose the same transform this step).
 struct VariationInput {
   const double* x = nullptr;  // the point after the transform's affine map
@@ -63,6 +67,13 @@ struct VariationInput {
   const double* tx = nullptr;
   const double* ty = nullptr;
   const double* tz = nullptr;
+  // The point's colour index per lane, as the transform's colour blend left it (flam3's, 0–1):
+  // direct-colour variations (VariationInfo::directColour) read it and may overwrite it, and the
+  // transform then blends the result in by its direct_color. The chaos game always passes it.
+  double* colour = nullptr;
+  // The stage the term acts at: some direct-colour variations (dc_linear) colour by the running
+  // sum of an ordinary term but by the input point of a pre_/post_ one, as Fractorium does.
+  VariationStage stage = VariationStage::Normal;
 };
 
 // Adds weight · V(p) to (outX, outY, outZ) for every lane of `in`.
@@ -91,15 +102,15 @@ struct VariationInfo {
   // mirror_x/y/z clear all three. The chaos game clears those coordinates before the term adds.
   enum class Replaces { Nothing, XY, XYZ };
   Replaces replaces = Replaces::Nothing;
+  // Reads or writes the point's colour index (VariationInput::colour): Fractorium's dc_ variations.
+  // The chaos game sets up the colour array and blends by direct_color only for transforms with one.
+  bool directColour = false;
   VariationFn apply = nullptr;
 
   int paramIndex(std::string_view paramName) const;  // -1 when absent
   std::vector<double> defaultParams() const;
 };
 
-// Where in its transform a variation term acts: its name's pre_/post_ prefix (see above); the
-// catalogue's own pre_blur acts at the pre_ stage too.
-enum class VariationStage { Pre, Normal, Post };
 VariationStage variationStage(std::string_view name);
 
 const std::vector<VariationInfo>& variationCatalogue();

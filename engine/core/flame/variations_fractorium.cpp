@@ -302,8 +302,8 @@ VOXFLAME_VARIATION_TARGETS void falloff(const VariationInput& in, double* __rest
 }
 
 // Fractorium's falloff3: like falloff, with the distance measured round (blur_shape 0) or square
-// (1), and a Gaussian (0), radial (1) or logarithmic (2, 3) blur. Its colour shift (mul_c) is not
-// applied; the importer says so when a file sets it.
+// (1), and a Gaussian (0), radial (1) or logarithmic (2, 3) blur; its colour shift (mul_c) moves the
+// colour index by the fourth draw times the blur, mod 1, as Fractorium's does (a direct-colour variation).
 VOXFLAME_VARIATION_TARGETS void falloff3(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                          double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
@@ -313,10 +313,11 @@ VOXFLAME_VARIATION_TARGETS void falloff3(const VariationInput& in, double* __res
   const double minDist = std::max(P[3], 0.0);
   const bool invert = fractoriumInteger(P[4], 0.0, 1.0) != 0.0;
   const double mulX = std::clamp(P[5], 0.0, 1.0), mulY = std::clamp(P[6], 0.0, 1.0), mulZ = std::clamp(P[7], 0.0, 1.0);
+  const double mulC = std::clamp(P[8], 0.0, 1.0);
   const double cx = P[9], cy = P[10], cz = P[11], alpha = P[12];
   for (std::size_t i = 0; i < n; ++i) {
     const double rx = laneUniform(rnd[i]) - 0.5, ry = laneUniform(rnd[i]) - 0.5, rz = laneUniform(rnd[i]) - 0.5;
-    (void)laneUniform(rnd[i]);  // Fractorium's fourth draw shifts the colour
+    const double rc = laneUniform(rnd[i]) - 0.5;
     const double dx = x[i] - cx, dy = y[i] - cy, dz = z[i] - cz;
     const double radius =
         square ? std::max(std::abs(dx), std::max(std::abs(dy), std::abs(dz))) : std::sqrt(dx * dx + dy * dy + dz * dz);
@@ -327,6 +328,7 @@ VOXFLAME_VARIATION_TARGETS void falloff3(const VariationInput& in, double* __res
       outX[i] += (x[i] + mulX * rad * std::cos(sigma) * std::cos(phi)) * w;
       outY[i] += (y[i] + mulY * rad * std::cos(sigma) * std::sin(phi)) * w;
       outZ[i] += (z[i] + mulZ * rad * std::sin(sigma)) * w;
+      colour[i] = std::abs(laneFmod(colour[i] + mulC * rc * dist, 1.0));
     } else if (type == 1.0) {
       if (x[i] == 0.0 && y[i] == 0.0 && z[i] == 0.0) continue;  // adds w·0
       const double rIn = std::sqrt(x[i] * x[i] + y[i] * y[i] + z[i] * z[i]);
@@ -336,11 +338,13 @@ VOXFLAME_VARIATION_TARGETS void falloff3(const VariationInput& in, double* __res
       outX[i] += r * std::cos(sigma) * w * std::cos(phi);
       outY[i] += r * std::cos(sigma) * w * std::sin(phi);
       outZ[i] += r * std::sin(sigma) * w;
+      colour[i] = std::abs(laneFmod(colour[i] + mulC * rc * dist, 1.0));
     } else {
       const double coeff = rMax <= std::numeric_limits<double>::epsilon() ? dist : dist + alpha * (logMap(dist) - dist);
       outX[i] += (x[i] + logMap(mulX) * logScale(rx) * coeff) * w;
       outY[i] += (y[i] + logMap(mulY) * logScale(ry) * coeff) * w;
       outZ[i] += (z[i] + logMap(mulZ) * logScale(rz) * coeff) * w;
+      colour[i] = std::abs(laneFmod(colour[i] + logMap(mulC) * logScale(rc) * coeff, 1.0));
     }
   }
 }
@@ -658,7 +662,8 @@ void variation_kernels::addFractoriumVariations(std::vector<VariationInfo>& cata
       "largest coordinate (1), as max(0, 1 − d) with invert_distance; a = (Ψ₁, Ψ₂, Ψ₃) − ½: blur_type 0 p + D a₁ "
       "(mul_x cos σ cos φ', mul_y cos σ sin φ', mul_z sin σ), σ = 2π a₂ D, φ' = π a₃ D; 1 as falloff's type 1; 2 "
       "and 3 p + L(mul) S(a) (D + alpha (L(D) − D)), L(v) = (e + ln(e v))/4, S(v) = ln(e (|v| + 1))/e, signed "
-      "(Fractorium's; the colour shift mul_c is not applied)",
+      "(Fractorium's); the colour index moves by mul_c (Ψ₄ − ½) D (types 0, 1) or L(mul_c) S(Ψ₄ − ½) (D + alpha (L(D) "
+      "− D)) (2, 3), then |… mod 1|",
       k3D, kRandom, &falloff3,
       {count("blur_type", 0.0, 0.0, 3.0),
        count("blur_shape", 0.0, 0.0, 1.0),
@@ -673,6 +678,7 @@ void variation_kernels::addFractoriumVariations(std::vector<VariationInfo>& cata
        {"center_y", 0.0, -3.0, 3.0},
        {"center_z", 0.0, -3.0, 3.0},
        {"alpha", 0.0, -1.0, 1.0}});
+  catalogue.back().directColour = true;
   add("Voron",
       "K (x, y) + (1 − K) s, z; s the nearest of the seed points of the 3×3 cells of side Step around p, 1 to Num "
       "per cell, placed by Hugo Elias' integer hash of the cell and XSeed, YSeed (Fractorium's)",

@@ -34,8 +34,8 @@ inline double pixelFlowHash(std::int32_t a) {
 // pixel_flow (bezo97's Apophysis plugin, as JWildfire ports it): a streak of length len in the
 // direction `angle` (degrees) from the origin, faded by Ψ⁴ and by a length hashed from the point's
 // block of a grid of 1/width cells (widths and lengths vary by `seed`). The point itself is not
-// added: with linear it draws streaks from every point. Its direct colour (enable_dc) is not
-// applied; the importer says so when a file sets it.
+// added: with linear it draws streaks from every point. With enable_dc the colour index becomes
+// the fade's Ψ (the plugin's direct colour, as Fractorium and JWildfire have it).
 VOXFLAME_VARIATION_TARGETS void pixelFlow(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                           double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
@@ -43,8 +43,10 @@ VOXFLAME_VARIATION_TARGETS void pixelFlow(const VariationInput& in, double* __re
   const double len = P[1], width = P[2];
   const std::int32_t seed = javaInt(std::floor(std::clamp(P[3], -2147483648.0, 2147483647.0) + 0.5));
   const double dirX = w * len * std::cos(radians), dirY = w * len * std::sin(radians);
+  const bool direct = std::round(P[4]) != 0.0;
   for (std::size_t i = 0; i < n; ++i) {
     const double r01 = laneUniform(rnd[i]);
+    colour[i] = direct ? r01 : colour[i];
     std::int32_t blockX = javaInt(std::floor(x[i] * width));
     blockX = javaInt(static_cast<double>(blockX) + (2.0 - 4.0 * pixelFlowHash(wrapAdd(wrapMul(blockX, seed), 1))));
     std::int32_t blockY = javaInt(std::floor(y[i] * width));
@@ -389,13 +391,14 @@ void variation_kernels::addJwildfireVariations(std::vector<VariationInfo>& catal
   add("pixel_flow",
       "len · h Ψ⁴ (cos angle°, sin angle°), z: streaks, not the point; h the mean of two hashes (Bob Jenkins') of "
       "the point's block ⌊(x, y)·width⌋, each block shifted by up to ±2 by a hash with seed (bezo97's; files write "
-      "the parameters bare: angle, len, width, seed, enable_dc; the direct colour enable_dc is not applied)",
+      "the parameters bare: angle, len, width, seed, enable_dc); with enable_dc the colour index becomes Ψ",
       k2D, kRandom, &pixelFlow,
       {{"angle", 90.0, -360.0, 360.0},
        {"len", 0.1, -5.0, 5.0},
        {"width", 200.0, 1.0, 500.0},
        count("seed", 42.0, 0.0, 1000000.0),
        count("enable_dc", 0.0, 0.0, 1.0)});
+  catalogue.back().directColour = true;
   add("vibration2",
       "p + Σ over two waves a sin(2π freq d' + m_f/freq + 2π phase/freq) (cos(angle' + dir'), sin(angle' + dir')), z; "
       "d = x cos dir + y sin dir, dir' = dir + m_d, angle' = angle + m_t, a = amp (1 + m_a), d' = x cos dir' + y sin "

@@ -111,6 +111,7 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
                                         const std::string& param) {
   std::vector<std::string> names = {termAttribute + "_" + param};
   if (info.name == "auger" && param == "strength") names.push_back(termAttribute + "_weight");
+  if (info.name == "d_spherical" && param == "spherical_weight") names.push_back(termAttribute + "_weight");
   if (info.name == "octagon" && param.size() == 1) names.push_back("octa_" + param);
   if (info.name == "pixel_flow") names.push_back(param);
   if (info.name == "q_ode") names.push_back(termAttribute + param);
@@ -563,6 +564,9 @@ class FlameReader {
           (1.0 - number(symmetry, context, -kFlameCoefficientLimit, kFlameCoefficientLimit)) / 2.0, 0.0, 1.0);
     if (const pugi::xml_attribute opacity = node.attribute("opacity"))
       x.opacity = clampedNumber(opacity, context, 0.0, 1.0);
+    // Fractorium's and Apophysis 7X's direct colour: how much of what dc_ variations set is kept.
+    if (const pugi::xml_attribute direct = node.attribute("var_color"))
+      x.directColor = clampedNumber(direct, context, 0.0, 1.0);
     if (const pugi::xml_attribute plotmode = node.attribute("plotmode");
         plotmode && std::string_view(plotmode.value()) == "off")
       x.opacity = 0.0;  // Apophysis' invisible transform
@@ -630,21 +634,18 @@ class FlameReader {
           consumed.insert(param->second.first);
           break;
         }
-      // falloff2's colour shift is not applied (flame_variations.cpp), nor falloff3's or
-      // axis_symmetry_wf's.
+      // falloff2's colour shift is not applied (variations_apophysis.cpp), nor axis_symmetry_wf's.
       const bool shiftsColour =
           (info->name == "falloff2" && term.params.at(5) != 0.0) ||
-          (info->name == "falloff3" && term.params.at(8) != 0.0) ||
           (info->name == "axis_symmetry_wf" &&
            std::any_of(term.params.begin() + 5, term.params.end(), [](double v) { return v != 0.0; }));
       if (shiftsColour) {
         lose("colour shift of " + withoutCopyMark(name));
         warn(context + " has " + name + " with a colour shift, which voxflame does not apply");
       }
-      // pixel_flow's and truchet's direct colour (the point's colour set by the variation) is not
+      // truchet's direct colour (JWildfire's: the point's colour set by the variation) is not
       // applied either.
-      if ((info->name == "pixel_flow" && term.params.at(4) != 0.0) ||
-          (info->name == "truchet" && std::round(term.params.at(6)) == 1.0)) {
+      if (info->name == "truchet" && std::round(term.params.at(6)) == 1.0) {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
       }
