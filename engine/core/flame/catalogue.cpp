@@ -25,6 +25,10 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addPluginVariations(c);
   variation_kernels::addFractoriumVariations(c);
   variation_kernels::addJwildfireVariations(c);
+  variation_kernels::addFractorium2DVariationsA(c);
+  variation_kernels::addFractorium2DVariationsB(c);
+  variation_kernels::addFractorium2DVariationsC(c);
+  variation_kernels::addFractorium2DVariationsD(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3")

@@ -143,6 +143,11 @@ void addApophysisVariations(std::vector<VariationInfo>& catalogue);
 void addPluginVariations(std::vector<VariationInfo>& catalogue);
 void addFractoriumVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireVariations(std::vector<VariationInfo>& catalogue);
+// Fractorium's other 2D variations (variations_2d_*.cpp).
+void addFractorium2DVariationsA(std::vector<VariationInfo>& catalogue);
+void addFractorium2DVariationsB(std::vector<VariationInfo>& catalogue);
+void addFractorium2DVariationsC(std::vector<VariationInfo>& catalogue);
+void addFractorium2DVariationsD(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 
