@@ -2,13 +2,14 @@
 // worked out from Fractorium's published variation classes (Source/Ember/Variations0x.h) by a separate Python
 // script, independently of the code under test, in double precision (Python's math and cmath, whose complex log and
 // square root take the same principal branches). The rows of the variations that draw no random numbers were also
-// run through Fractorium's own classes, compiled from its sources, and agree to 1e-9. The main point is (0.3, −0.7,
-// 0.5) with weight 0.8, as in flame_variations_test.cpp; a 2D variation's z is 0.8 · 0.5 = 0.4. Random variations are
-// replayed from the lane's seed: xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594 first from
-// 0x9E3779B9 (waffle's other seeds were picked so that each of its five cases occurs). Where the draws of a Fractorium
-// formula happen in C++'s unspecified order (waffle, tile_log, synth's blurs) the rows take them left to right, as the
-// port does. hexcrop's dropped points replace the sum so far by (dropoff, dropoff): their rows expect dropoff less the
-// start value the check adds to (0.125, −0.25).
+// run through Fractorium's own classes, compiled from its sources, and agree to 1e-9; the script's formulas for the
+// random ones (but tile_log, whose sign bit is drawn differently) agree with those classes fed the same draws. The main
+// point is (0.3, −0.7, 0.5) with weight 0.8, as in flame_variations_test.cpp; a 2D variation's z is 0.8 · 0.5 = 0.4.
+// Random variations are replayed from the lane's seed: xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ
+// = 0.316594 first from 0x9E3779B9 (waffle's other seeds were picked so that each of its five cases occurs). Where the
+// draws of a Fractorium formula happen in C++'s unspecified order (waffle, tile_log, synth's blurs) the rows take them
+// left to right, as the port does. hexcrop's dropped points replace the sum so far by (dropoff, dropoff): their rows
+// expect dropoff less the start value the check adds to (0.125, −0.25).
 #include <gtest/gtest.h>
 
 #include <cstdint>
