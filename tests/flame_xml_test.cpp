@@ -187,7 +187,7 @@ TEST(FlameXml, Flam3GenomesImportAndTheirParameterNamesMatchTheCatalogue) {
     EXPECT_EQ(flame.genome.hasFinal, flameText.find("<finalxform") != std::string::npos) << "flame " << i;
     EXPECT_EQ(flame.palette.size(), 256u);
     EXPECT_FALSE(hasWarningContaining(flame, "does not have")) << "flame " << i << ": " << flame.warnings.front();
-    // The transforms' tags only: the flame's own attributes (rotate, scale) are no variations.
+    // The transforms' tags only: the flame's own attributes (rotate, scale, gamma) are no variations.
     std::string xformTags;
     for (std::size_t at = flameText.find("xform "); at != std::string::npos; at = flameText.find("xform ", at + 1))
       xformTags += flameText.substr(at, flameText.find('>', at) - at);

@@ -34,6 +34,10 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addFractoriumRandom2DVariations(c);
   variation_kernels::addDirectColourVariations(c);
   variation_kernels::addBlurVariations(c);
+  variation_kernels::addFractorium2DVariationsA(c);
+  variation_kernels::addFractorium2DVariationsB(c);
+  variation_kernels::addFractorium2DVariationsC(c);
+  variation_kernels::addFractorium2DVariationsD(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3")

@@ -159,6 +159,11 @@ void addFractorium3DMoreVariations(std::vector<VariationInfo>& catalogue);
 void addFractoriumRandom2DVariations(std::vector<VariationInfo>& catalogue);
 void addDirectColourVariations(std::vector<VariationInfo>& catalogue);
 void addBlurVariations(std::vector<VariationInfo>& catalogue);
+// Fractorium's other 2D variations (variations_2d_*.cpp).
+void addFractorium2DVariationsA(std::vector<VariationInfo>& catalogue);
+void addFractorium2DVariationsB(std::vector<VariationInfo>& catalogue);
+void addFractorium2DVariationsC(std::vector<VariationInfo>& catalogue);
+void addFractorium2DVariationsD(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -464,10 +464,14 @@ class FlameReader {
     throw Error(where_ + (context.empty() ? "" : " " + context) + ": " + reason);
   }
 
-  double number(const pugi::xml_attribute& attribute, const std::string& context, double low, double high) const {
+  // `clampFinite`: a finite value out of range is clamped instead (Fractorium writes hexcrop's dropoff as 1e10, a
+  // point sent out of the picture, which the limit sends as far).
+  double number(const pugi::xml_attribute& attribute, const std::string& context, double low, double high,
+                bool clampFinite = false) const {
     const auto value = parseNumber(attribute.value());
     if (!value)
       fail(context, std::string("attribute ") + attribute.name() + "=\"" + attribute.value() + "\" is not a number");
+    if (clampFinite && std::isfinite(*value)) return std::clamp(*value, low, high);
     if (!std::isfinite(*value) || *value < low || *value > high)
       fail(context, std::string("attribute ") + attribute.name() + "=\"" + attribute.value() +
                         "\" must be a number from " + formatted(low) + " to " + formatted(high));
@@ -630,7 +634,8 @@ class FlameReader {
           // Editors that capitalise a variation capitalise its parameters too (Mobius_Re_A).
           const auto param = byLowerName.find(lowered(key));
           if (param == byLowerName.end()) continue;
-          term.params[i] = number(param->second.second, context, -kFlameCoefficientLimit, kFlameCoefficientLimit);
+          term.params[i] = number(param->second.second, context, -kFlameCoefficientLimit, kFlameCoefficientLimit,
+                                  info->name == "hexcrop" && info->params[i].name == "dropoff");
           consumed.insert(param->second.first);
           break;
         }
