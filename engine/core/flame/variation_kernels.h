@@ -143,6 +143,8 @@ void addApophysisVariations(std::vector<VariationInfo>& catalogue);
 void addPluginVariations(std::vector<VariationInfo>& catalogue);
 void addFractoriumVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireVariations(std::vector<VariationInfo>& catalogue);
+void addJwildfireShapeVariations(std::vector<VariationInfo>& catalogue);
+void addJwildfireMoreVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -256,6 +256,17 @@ bool isDerivedParam(const VariationInfo& info, std::string_view param) {
   return info.name == "auger" && param == "half_scale";
 }
 
+// JWildfire writes a variation's resources (file names, references) beside its parameters: plane_wf's
+// colour and displacement images and recurrenceplot's reference document. voxflame reads no images:
+// an empty name (no image) loses nothing, a named image is left out.
+bool isJwildfireResource(const VariationInfo& info, std::string_view param) {
+  return (info.name == "plane_wf" && (param == "colormap_filename" || param == "displ_map_filename")) ||
+         (info.name == "recurrenceplot" && param == "func_id_reference");
+}
+bool jwildfireResourceMatters(const VariationInfo& info, std::string_view value) {
+  return info.name == "plane_wf" && !value.empty();
+}
+
 // JWildfire stores a motion curve beside any variation parameter (`<variation>_<parameter>_enabled`,
 // `_view_xmin`, `_x0`, ...) and a variation's order as `<variation>_fx_priority`; pugixml sees
 // these as parameters of the variation. They carry no value a still image uses.
@@ -626,21 +637,26 @@ class FlameReader {
           consumed.insert(param->second.first);
           break;
         }
-      // falloff2's colour shift is not applied (flame_variations.cpp), nor falloff3's or
-      // axis_symmetry_wf's.
+      // falloff2's colour shift is not applied (flame_variations.cpp), nor falloff3's,
+      // point_symmetry_wf's, mirror_wf's or axis_symmetry_wf's.
       const bool shiftsColour =
           (info->name == "falloff2" && term.params.at(5) != 0.0) ||
           (info->name == "falloff3" && term.params.at(8) != 0.0) ||
+          (info->name == "point_symmetry_wf" && term.params.at(3) != 0.0) ||
+          (info->name == "mirror_wf" &&
+           std::any_of(term.params.begin() + 8, term.params.end(), [](double v) { return v != 0.0; })) ||
           (info->name == "axis_symmetry_wf" &&
            std::any_of(term.params.begin() + 5, term.params.end(), [](double v) { return v != 0.0; }));
       if (shiftsColour) {
         lose("colour shift of " + withoutCopyMark(name));
         warn(context + " has " + name + " with a colour shift, which voxflame does not apply");
       }
-      // pixel_flow's and truchet's direct colour (the point's colour set by the variation) is not
-      // applied either.
+      // pixel_flow's, truchet's, plane_wf's and recurrenceplot's direct colour (the point's colour
+      // set by the variation) is not applied either.
       if ((info->name == "pixel_flow" && term.params.at(4) != 0.0) ||
-          (info->name == "truchet" && std::round(term.params.at(6)) == 1.0)) {
+          (info->name == "truchet" && std::round(term.params.at(6)) == 1.0) ||
+          (info->name == "plane_wf" && std::round(term.params.at(3)) == 1.0) ||
+          (info->name == "recurrenceplot" && std::trunc(term.params.at(5)) != 0.0)) {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
       }
@@ -681,6 +697,13 @@ class FlameReader {
       if (!owner.empty()) {
         const VariationInfo* info = variationNamed(withoutCopyMark(owner));
         const std::string param = name.substr(owner.size() + 1);
+        if (info && isJwildfireResource(*info, param)) {
+          if (jwildfireResourceMatters(*info, attribute.value())) {
+            lose("image " + withoutCopyMark(owner) + "_" + param);
+            warn(context + " gives '" + name + "' an image, which voxflame does not read; it was left out");
+          }
+          continue;
+        }
         if (info && info->paramIndex(param) < 0 && !isJwildfireParamCurve(param) && !isDerivedParam(*info, param)) {
           lose("parameter " + withoutCopyMark(owner) + "_" + param);
           warn(context + " sets '" + name + "', which voxflame's '" + info->name + "' does not have; it was left out");

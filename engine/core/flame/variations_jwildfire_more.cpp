@@ -1,0 +1,407 @@
+// More of JWildfire's own variations: filled curves (rose, heart, maple leaf), waves, complex inverse hyperbolic
+// functions, tangent3D, and its post_ mirrors and z scale. Each variation is a kernel below and one row of the table
+// at the end (see variations.h for the notation and variation_kernels.h for what the files share).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/flame/variation_kernels.h"
+#include "core/vector_math.h"
+
+namespace voxflame::core {
+
+namespace {
+
+using namespace variation_kernels;
+
+// As in variations_jwildfire_shapes.cpp: a curve point moved towards the origin by Ψ₂ when Ψ₁ < filled; both
+// numbers are drawn for every point (JWildfire draws the second only when it is used).
+inline double filledScale(double filled, std::uint32_t& state) {
+  const double psi1 = laneUniform(state), psi2 = laneUniform(state);
+  return filled > 0.0 && filled > psi1 ? psi2 : 1.0;
+}
+
+inline double power10(double v) {
+  const double v2 = v * v, v4 = v2 * v2;
+  return v4 * v4 * v2;
+}
+
+// rose_wf (JWildfire's): the rose r = amp cos(waves θ) at angle θ = atan2(x, y), filled as above; waves is rounded.
+VOXFLAME_VARIATION_TARGETS void roseWf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double amp = P[0], waves = std::round(P[1]), filled = P[2];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = std::atan2(x[i], y[i]);
+    const double r = amp * std::cos(waves * a) * filledScale(filled, rnd[i]);
+    outX[i] += w * std::sin(a) * r;
+    outY[i] += w * std::cos(a) * r;
+    outZ[i] += w * z[i];
+  }
+}
+
+// heart_wf (JWildfire's): the angle θ = atan2(x, y) picks t on a heart curve (t = |θ|/π · 60 · scale_r_left or
+// scale_r_right by the side, less shift_t, at most 60), drawn at the point's distance r from the origin.
+VOXFLAME_VARIATION_TARGETS void heartWf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double scaleX = P[0], shiftT = P[1], scaleLeft = P[2], scaleRight = P[3];
+  constexpr double kTMax = 60.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = std::atan2(x[i], y[i]);
+    const double r = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    const bool left = a < 0.0;
+    const double t = std::min((left ? -a : a) / kPi * kTMax * (left ? scaleLeft : scaleRight) - shiftT, kTMax);
+    const double side = left ? -1.0 : 1.0;
+    const double nx = side * 0.001 * (-t * t + 40.0 * t + 1200.0) * std::sin(kPi * t / 180.0) * r;
+    const double ny = -0.001 * (-t * t + 40.0 * t + 400.0) * std::cos(kPi * t / 180.0) * r;
+    outX[i] += w * nx * scaleX;
+    outY[i] += w * ny;
+    outZ[i] += w * z[i];
+  }
+}
+
+// maple_leaf (JWildfire's): Hamid Naderi Yeganeh's maple leaf (x(t), y(t)) at t = θ − π/2, filled as above. In
+// JWildfire's x(t) the term 1/4 cos²(30t) is Java's integer 1/4 = 0, so it is left out here too.
+VOXFLAME_VARIATION_TARGETS void mapleLeaf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double filled = P[0];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = std::atan2(x[i], y[i]) - kPi / 2.0;
+    const double r = w * filledScale(filled, rnd[i]);
+    const double c6 = std::cos(6.0 * t), c30 = std::cos(30.0 * t), ct = std::cos(t), c3 = std::cos(3.0 * t);
+    const double ct2 = ct * ct, ct4 = ct2 * ct2;
+    const double c30sq = c30 * c30, c30p4 = c30sq * c30sq, c30p12 = c30p4 * c30p4 * c30p4;
+    const double notch = 1.0 - power10(std::sin(6.0 * t));
+    const double lobe = 1.0 - power10(ct) * c3 * c3;
+    const double lx = (1.0 + c6 * c6 + 0.2 * power10(c6 * std::cos(24.0 * t)) + (c30p12 / 9.0) * notch) *
+                      std::sin(2.0 * t) * (1.0 - ct4) * lobe;
+    const double ly =
+        21.0 / 20.0 * std::cos(2.0 * t) * (1.0 - ct4 + 0.5 * power10(ct * c3)) *
+        (1.0 + c6 * c6 + 0.2 * power10(c6 * std::cos(18.0 * t)) + (c30p4 / 4.0 + c30p12 / 10.0) * lobe * notch);
+    outX[i] += r * lx;
+    outY[i] += r * ly;
+    outZ[i] += w * z[i];
+  }
+}
+
+// waves3_wf (JWildfire's): waves2_wf with the squared sine or cosine.
+VOXFLAME_VARIATION_TARGETS void waves3Wf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double scaleX = P[0], scaleY = P[1], freqX = P[2], freqY = P[3];
+  const bool cosX = std::round(P[4]) == 1.0, cosY = std::round(P[5]) == 1.0;
+  const double dampX = std::abs(P[6]) < kJwfEpsilon ? 1.0 : std::exp(P[6]);
+  const double dampY = std::abs(P[7]) < kJwfEpsilon ? 1.0 : std::exp(P[7]);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double wx = cosX ? std::cos(y[i] * freqX) : std::sin(y[i] * freqX);
+    const double wy = cosY ? std::cos(x[i] * freqY) : std::sin(x[i] * freqY);
+    outX[i] += w * (x[i] + dampX * scaleX * wx * wx) * dampX;
+    outY[i] += w * (y[i] + dampY * scaleY * wy * wy) * dampY;
+    outZ[i] += w * z[i];
+  }
+}
+
+// tangent3D (Apophysis 3D's tangent, as JWildfire has it): (sin x / cos y, tan y, tan x).
+VOXFLAME_VARIATION_TARGETS void tangent3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  for (std::size_t i = 0; i < n; ++i) {
+    outX[i] += w * std::sin(x[i]) / std::cos(y[i]);
+    outY[i] += w * std::tan(y[i]);
+    outZ[i] += w * std::tan(x[i]);
+  }
+}
+
+// ---- complex inverse hyperbolic functions (Whittaker Courtney's, after Tatyana Zabanova and dark-beam) ----------
+
+// JWildfire's Complex: acosh q = log(q + √(q² − 1)) with its square root (the root with a non-negative real part, the
+// imaginary part taking the sign of q² − 1's, + for 0) and its logarithm (½ log(|·|² + 10⁻²⁰), atan2).
+inline void jwfAcosh(double& re, double& im) {
+  const double dr = re * re - im * im - 1.0, di = 2.0 * re * im;
+  const double radius = std::hypot(dr, di);
+  const double sr = std::sqrt(0.5 * (radius + dr)), si = (di < 0.0 ? -1.0 : 1.0) * std::sqrt(0.5 * (radius - dr));
+  const double ar = re + sr, ai = im + si;
+  re = 0.5 * std::log(ar * ar + ai * ai + 1e-20);
+  im = std::atan2(ai, ar);
+}
+
+// acosh: acosh(x + iy)·2/π, negated half the time (Ψ ≥ ½).
+VOXFLAME_VARIATION_TARGETS void acoshJwf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double scale = w * 2.0 / kPi;
+  for (std::size_t i = 0; i < n; ++i) {
+    double re = x[i], im = y[i];
+    jwfAcosh(re, im);
+    const double sign = laneUniform(rnd[i]) < 0.5 ? scale : -scale;
+    outX[i] += sign * re;
+    outY[i] += sign * im;
+    outZ[i] += w * z[i];
+  }
+}
+
+// acosech: acosh(1/(x + iy)) with its real and imaginary parts swapped, ·2/π, negated half the time (Ψ ≥ ½).
+// JWildfire's 1/q keeps q where |q|² < 10⁻¹⁰⁰ (it conjugates it only).
+VOXFLAME_VARIATION_TARGETS void acosechJwf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double scale = w * 2.0 / kPi;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double m2 = x[i] * x[i] + y[i] * y[i];
+    const double inverse = m2 < 1e-100 ? 1.0 : 1.0 / m2;
+    double re = x[i] * inverse, im = -y[i] * inverse;
+    jwfAcosh(re, im);
+    const double sign = laneUniform(rnd[i]) < 0.5 ? scale : -scale;
+    outX[i] += sign * im;
+    outY[i] += sign * re;
+    outZ[i] += w * z[i];
+  }
+}
+
+// ---- JWildfire's post_ helpers --------------------------------------------------------------------------------
+
+// zscale_wf (JWildfire's post_zscale_wf): z scaled by the weight and moved by ztranslate; x and y are kept (it maps z
+// alone, so its post_ form replaces only z).
+VOXFLAME_VARIATION_TARGETS void zscaleWf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double translate = P[0];
+  for (std::size_t i = 0; i < n; ++i) outZ[i] += w * z[i] + translate;
+}
+
+// mirror_wf (JWildfire's post_mirror_wf): with xaxis, half the time (Ψ₁ < ½) x becomes xscale (−x − xshift) and y
+// yscale·y; then with yaxis, half the time (Ψ₂ < ½) x becomes xscale·x and y yscale (−y − yshift); then with zaxis,
+// half the time (Ψ₃ < ½) z becomes −z − zshift. The weight only switches it off (|w| ≤ 10⁻⁸): the result is the point
+// itself. All three numbers are drawn for every point. The colour shifts are not applied (the importer says so).
+VOXFLAME_VARIATION_TARGETS void mirrorWf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const bool active = std::abs(w) > kJwfEpsilon;
+  const bool xAxis = active && std::round(P[0]) > 0.0, yAxis = active && std::round(P[1]) > 0.0,
+             zAxis = active && std::round(P[2]) > 0.0;
+  const double xShift = P[3], yShift = P[4], zShift = P[5], xScale = P[6], yScale = P[7];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double psi1 = laneUniform(rnd[i]), psi2 = laneUniform(rnd[i]), psi3 = laneUniform(rnd[i]);
+    double px = x[i], py = y[i], pz = z[i];
+    if (xAxis && psi1 < 0.5) {
+      px = xScale * (-px - xShift);
+      py = yScale * py;
+    }
+    if (yAxis && psi2 < 0.5) {
+      px = xScale * px;
+      py = yScale * (-py - yShift);
+    }
+    if (zAxis && psi3 < 0.5) pz = -pz - zShift;
+    outX[i] += px;
+    outY[i] += py;
+    outZ[i] += pz;
+  }
+}
+
+// ---- Brad Stefanov's complex trigonometric functions with separate frequencies (as JWildfire has them) ----------
+// Each takes sin and cos of x (or y) at frequencies x1, x2 (y1, y2) where the plain function has 1; where the
+// denominator is exactly 0 JWildfire adds nothing at all (z included), and so do these.
+
+// cos2_bs: (cos(x2 x) cosh(y2 y), −sin(x1 x) sinh(y1 y)).
+VOXFLAME_VARIATION_TARGETS void cos2Bs(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double x1 = P[0], x2 = P[1], y1 = P[2], y2 = P[3];
+  for (std::size_t i = 0; i < n; ++i) {
+    outX[i] += w * std::cos(x[i] * x2) * std::cosh(y[i] * y2);
+    outY[i] -= w * std::sin(x[i] * x1) * std::sinh(y[i] * y1);
+    outZ[i] += w * z[i];
+  }
+}
+
+// coth2_bs: (sinh(x1 x), sin(y1 y))/(cosh(x2 x) − cos(y2 y)).
+VOXFLAME_VARIATION_TARGETS void coth2Bs(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double x1 = P[0], x2 = P[1], y1 = P[2], y2 = P[3];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = std::cosh(x2 * x[i]) - std::cos(y2 * y[i]);
+    if (d == 0.0) continue;
+    const double f = w / d;
+    outX[i] += f * std::sinh(x1 * x[i]);
+    outY[i] += f * std::sin(y1 * y[i]);
+    outZ[i] += w * z[i];
+  }
+}
+
+// sec2_bs: 2 (cos(x2 x) cosh(y2 y), sin(x1 x) sinh(y1 y))/(cos 2x + cosh 2y).
+VOXFLAME_VARIATION_TARGETS void sec2Bs(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double x1 = P[0], x2 = P[1], y1 = P[2], y2 = P[3];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = std::cos(2.0 * x[i]) + std::cosh(2.0 * y[i]);
+    if (d == 0.0) continue;
+    const double f = w * 2.0 / d;
+    outX[i] += f * std::cos(x[i] * x2) * std::cosh(y[i] * y2);
+    outY[i] += f * std::sin(x[i] * x1) * std::sinh(y[i] * y1);
+    outZ[i] += w * z[i];
+  }
+}
+
+// tan2_bs: (sin(x1 x), sinh(y1 y))/(cos(x2 x) + cosh(y2 y)).
+VOXFLAME_VARIATION_TARGETS void tan2Bs(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double x1 = P[0], x2 = P[1], y1 = P[2], y2 = P[3];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = std::cos(x2 * x[i]) + std::cosh(y2 * y[i]);
+    if (d == 0.0) continue;
+    const double f = w / d;
+    outX[i] += f * std::sin(x1 * x[i]);
+    outY[i] += f * std::sinh(y1 * y[i]);
+    outZ[i] += w * z[i];
+  }
+}
+
+// ---- shapes ----------------------------------------------------------------------------------------------------
+
+// triangle (Jesus Sosa's, as JWildfire has it): a uniform random point of the triangle (x1, y1, z1), (x2, y2, z2),
+// (x3, y3, z3) (barycentric 1 − √Ψ₁, √Ψ₁ (1 − Ψ₂), √Ψ₁ Ψ₂); the point itself is not used, and JWildfire assigns all
+// three coordinates (VariationInfo::replaces).
+VOXFLAME_VARIATION_TARGETS void triangle(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  for (std::size_t i = 0; i < n; ++i) {
+    const double root = std::sqrt(laneUniform(rnd[i])), r2 = laneUniform(rnd[i]);
+    const double a = 1.0 - root, b = root * (1.0 - r2), c = r2 * root;
+    outX[i] += w * (a * P[0] + b * P[3] + c * P[6]);
+    outY[i] += w * (a * P[1] + b * P[4] + c * P[7]);
+    outZ[i] += w * (a * P[2] + b * P[5] + c * P[8]);
+  }
+}
+
+// chunk (zephyrtronium's Apophysis plugin, as JWildfire has it): the point where the conic w (a x² + b xy + c y² + d x
+// + e y + f) is ≤ 0 (mode 0) or > 0 (mode 1), else nothing; x and y are not weighted, z is (JWildfire's).
+VOXFLAME_VARIATION_TARGETS void chunk(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                      double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double a = w * P[0], b = w * P[1], c = w * P[2], d = w * P[3], e = w * P[4], f = w * P[5];
+  const bool outside = std::clamp(std::round(P[6]), 0.0, 1.0) == 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double r = a * x[i] * x[i] + b * x[i] * y[i] + c * y[i] * y[i] + d * x[i] + e * y[i] + f;
+    const bool keep = outside ? r > 0.0 : r <= 0.0;
+    outX[i] += keep ? x[i] : 0.0;
+    outY[i] += keep ? y[i] : 0.0;
+    outZ[i] += keep ? w * z[i] : 0.0;
+  }
+}
+
+}  // namespace
+
+void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& catalogue) {
+  const CatalogueAdder add(catalogue);
+  [[maybe_unused]] constexpr bool k2D = CatalogueAdder::k2D, k3D = CatalogueAdder::k3D,
+                                  kRandom = CatalogueAdder::kRandom, kFixed = CatalogueAdder::kFixed;
+  [[maybe_unused]] const auto count = &CatalogueAdder::count;
+
+  add("rose_wf", "r (sin θ, cos θ), z; r = amp cos(waves θ), times Ψ₂ when Ψ₁ < filled (JWildfire's)", k2D, kRandom,
+      &roseWf, {{"amp", 0.5, 0.0, 2.0}, count("waves", 4.0, 1.0, 12.0), {"filled", 0.85, 0.0, 1.0}});
+  add("heart_wf",
+      "r·(±(1200 + 40t − t²) sin(πt/180)·scale_x, −(400 + 40t − t²) cos(πt/180))/1000, z; r = √(x² + y²), t = "
+      "min(60 |θ|/π · scale_r_left (θ < 0, −) or scale_r_right (+) − shift_t, 60) (JWildfire's)",
+      k2D, kFixed, &heartWf,
+      {{"scale_x", 1.0, -2.0, 2.0},
+       {"shift_t", 0.0, -60.0, 60.0},
+       {"scale_r_left", 1.0, 0.0, 2.0},
+       {"scale_r_right", 1.0, 0.0, 2.0}});
+  add("maple_leaf",
+      "s (x(t), y(t)), z: Hamid Naderi Yeganeh's maple leaf at t = θ − π/2, s = Ψ₂ when Ψ₁ < filled, else 1 "
+      "(JWildfire's, whose integer 1/4 drops one term of x(t))",
+      k2D, kRandom, &mapleLeaf, {{"filled", 0.5, 0.0, 1.0}});
+  add("waves3_wf",
+      "(d_x (x + d_x scalex f²(y·freqx)), d_y (y + d_y scaley g²(x·freqy)), z); f = cos with use_cos_x = 1, else sin "
+      "(g likewise with use_cos_y), d = e^damp (1 where |damp| < 10⁻⁸) (JWildfire's)",
+      k2D, kFixed, &waves3Wf,
+      {{"scalex", 0.25, -1.0, 1.0},
+       {"scaley", 0.5, -1.0, 1.0},
+       {"freqx", kPi / 2.0, 0.0, 10.0},
+       {"freqy", kPi / 4.0, 0.0, 10.0},
+       count("use_cos_x", 1.0, 0.0, 1.0),
+       count("use_cos_y", 0.0, 0.0, 1.0),
+       {"dampx", 0.0, -1.0, 1.0},
+       {"dampy", 0.0, -1.0, 1.0}});
+  add("tangent3D", "(sin x / cos y, tan y, tan x) (Apophysis 3D's, as JWildfire has it)", k3D, kFixed, &tangent3D);
+  add("acosh",
+      "±(2/π) acosh(x + iy), z; − for Ψ ≥ ½; acosh q = log(q + √(q² − 1)) (Whittaker Courtney's, as JWildfire has "
+      "it)",
+      k2D, kRandom, &acoshJwf);
+  add("acosech", "±(2/π)(Im, Re) of acosh(1/(x + iy)), z; − for Ψ ≥ ½ (Whittaker Courtney's, as JWildfire has it)", k2D,
+      kRandom, &acosechJwf);
+  add("zscale_wf",
+      "(0, 0, z + ztranslate/w): z scaled by the weight, then moved by ztranslate (JWildfire's post_zscale_wf)", k3D,
+      kFixed, &zscaleWf, {{"ztranslate", 0.0, -2.0, 2.0}});
+  add("mirror_wf",
+      "p, its x mirrored to xscale (−x − xshift) (y to yscale·y) for Ψ₁ < ½ with xaxis, then y to yscale (−y − "
+      "yshift) (x to xscale·x) for Ψ₂ < ½ with yaxis, then z to −z − zshift for Ψ₃ < ½ with zaxis: the point "
+      "itself, not weighted (JWildfire's post_mirror_wf; its colour shifts are not applied)",
+      k3D, kRandom, &mirrorWf,
+      {count("xaxis", 1.0, 0.0, 1.0),
+       count("yaxis", 0.0, 0.0, 1.0),
+       count("zaxis", 0.0, 0.0, 1.0),
+       {"xshift", 0.0, -2.0, 2.0},
+       {"yshift", 0.0, -2.0, 2.0},
+       {"zshift", 0.0, -2.0, 2.0},
+       {"xscale", 1.0, -2.0, 2.0},
+       {"yscale", 1.0, -2.0, 2.0},
+       {"xcolorshift", 0.0, -1.0, 1.0},
+       {"ycolorshift", 0.0, -1.0, 1.0},
+       {"zcolorshift", 0.0, -1.0, 1.0}});
+  const auto bs = [](double x1, double x2, double y1, double y2) {
+    return std::vector<VariationParam>{
+        {"x1", x1, -5.0, 5.0}, {"x2", x2, -5.0, 5.0}, {"y1", y1, -5.0, 5.0}, {"y2", y2, -5.0, 5.0}};
+  };
+  add("cos2_bs", "(cos(x2 x) cosh(y2 y), −sin(x1 x) sinh(y1 y), z) (Brad Stefanov's, as JWildfire has it)", k2D, kFixed,
+      &cos2Bs, bs(1.0, 1.0, 1.0, 1.0));
+  add("coth2_bs",
+      "(sinh(x1 x), sin(y1 y), z·d)/d, d = cosh(x2 x) − cos(y2 y); nothing where d = 0 (Brad Stefanov's, as "
+      "JWildfire has it)",
+      k2D, kFixed, &coth2Bs, bs(2.0, 2.0, 2.0, 2.0));
+  add("sec2_bs",
+      "2 (cos(x2 x) cosh(y2 y), sin(x1 x) sinh(y1 y), z·d/2)/d, d = cos 2x + cosh 2y; nothing where d = 0 (Brad "
+      "Stefanov's, as JWildfire has it)",
+      k2D, kFixed, &sec2Bs, bs(1.25, 0.75, 1.5, 0.5));
+  add("tan2_bs",
+      "(sin(x1 x), sinh(y1 y), z·d)/d, d = cos(x2 x) + cosh(y2 y); nothing where d = 0 (Brad Stefanov's, as "
+      "JWildfire has it)",
+      k2D, kFixed, &tan2Bs, bs(2.0, 2.0, 2.0, 2.0));
+  add("triangle",
+      "a uniform random point (1 − √Ψ₁) v₁ + √Ψ₁ (1 − Ψ₂) v₂ + √Ψ₁ Ψ₂ v₃ of the triangle v₁ = (x1, y1, z1), v₂, "
+      "v₃; "
+      "the point itself is not used, and it replaces the terms before it (Jesus Sosa's, as JWildfire has it)",
+      k3D, kRandom, &triangle,
+      {{"x1", -0.2, -2.0, 2.0},
+       {"y1", -0.1, -2.0, 2.0},
+       {"z1", 0.0, -2.0, 2.0},
+       {"x2", 0.2, -2.0, 2.0},
+       {"y2", -0.1, -2.0, 2.0},
+       {"z2", 0.0, -2.0, 2.0},
+       {"x3", 0.2, -2.0, 2.0},
+       {"y3", 0.1, -2.0, 2.0},
+       {"z3", 0.0, -2.0, 2.0}});
+  catalogue.back().replaces = VariationInfo::Replaces::XYZ;
+  add("chunk",
+      "p where w (a x² + b xy + c y² + d x + e y + f) ≤ 0 (mode 0) or > 0 (mode 1), else nothing; x and y are added "
+      "unweighted, z weighted (zephyrtronium's, as JWildfire has it)",
+      k2D, kFixed, &chunk,
+      {{"a", 1.0, -2.0, 2.0},
+       {"b", 0.0, -2.0, 2.0},
+       {"c", 1.0, -2.0, 2.0},
+       {"d", 0.0, -2.0, 2.0},
+       {"e", 0.0, -2.0, 2.0},
+       {"f", -1.0, -2.0, 2.0},
+       count("mode", 0.0, 0.0, 1.0)});
+}
+
+}  // namespace voxflame::core

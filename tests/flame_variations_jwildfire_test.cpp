@@ -1,0 +1,254 @@
+// The variations of core/flame/variations_jwildfire_shapes.cpp (JWildfire's own), each at points whose expected values
+// were worked out from JWildfire's Java classes (thargor6/JWildfire,
+// src/org/jwildfire/create/tina/variation/*Func.java) by a separate Python transcription of them, independently of the
+// code under test, in double precision. The main point is (0.3, −0.7, 0.5) with weight 0.8, as in
+// flame_variations_test.cpp; a 2D variation's z is 0.8 · 0.5 = 0.4. Random variations are replayed from the lane's
+// seed: xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594 first from 0x9E3779B9. Where
+// voxflame draws differently from JWildfire (Ψ drawn for every point, pairs drawn again by recurrenceplot), the
+// transcription draws as voxflame does.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/flame/variations.h"
+#include "core/flame/xml.h"
+#include "variation_point_case.h"
+
+using namespace voxflame::core;
+
+namespace {
+
+using namespace voxflame::test;
+
+constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
+constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
+constexpr glm::dvec3 kPoint{0.3, -0.7, 0.5};
+
+const std::vector<PointCase>& pointCases() {
+  static const std::vector<PointCase> cases = {
+      // bwraps7: (0.3, −0.7) lies in the bubble of the cell centred at (0.5, −0.5); with cellsize 0.25 it lies
+      // outside its bubble and is linear.
+      {"bwraps7", {}, kPoint, 0.8, kHighSeed, {0.15757572635446104, -0.6424242736455389, 0.4}},
+      {"bwraps7", {0.8, 0.3, 1.5, 0.7, -1.2}, kPoint, 0.8, kHighSeed, {0.446277604262205, -0.5505134264088912, 0.4}},
+      {"bwraps7", {0.25, 0.0, 2.0, 0.0, 0.0}, kPoint, 0.8, kHighSeed, {0.23899521483024652, -0.5610047851697535, 0.4}},
+      // yin_yang: Ψ > ½ takes the yang half (negated), Ψ < ½ the yin half; outside the disc linear or nothing.
+      {"yin_yang", {}, kPoint, 0.8, kHighSeed, {-0.52, 0.28, 0.4}},
+      {"yin_yang", {}, kPoint, 0.8, kLowSeed, {0.52, -0.28, 0.4}},
+      {"yin_yang", {0.3, 0.25, -0.4, 1, 0}, kPoint, 0.8, kHighSeed, {-0.42247172885741036, 0.12039092422824223, 0.4}},
+      {"yin_yang",
+       {0.3, 0.25, -0.4, 1, 0},
+       {0.2, 0.1, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.5976581721210812, 0.03823430491716864, 0.4}},
+      {"yin_yang", {0.3, 0.25, -0.4, 1, 1}, {1.2, -0.7, 0.5}, 0.8, kHighSeed, {0.96, -0.56, 0.4}},
+      {"yin_yang", {0.3, 0.25, -0.4, 1, 0}, {1.2, -0.7, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.4}},
+      // affine3D: the identity by default; then scales, turns and shears (JWildfire's sheared branch).
+      {"affine3D", {}, kPoint, 0.8, kHighSeed, {0.24, -0.56, 0.4}},
+      {"affine3D",
+       {0.1, -0.2, 0.3, 1.5, 0.5, -2.0, 30.0, -45.0, 60.0, 0.1, 0.2, -0.3, 0.4, 0.5, -0.6},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.7396435126640286, 0.20824410705853613, -0.16548577511045087}},
+      // plane_wf: (½ − Ψ₁, ½ − Ψ₂)·size in the plane zx at y = position (axis 2), xy (0) or yz (1).
+      {"plane_wf", {}, kPoint, 0.8, kHighSeed, {-3.035731315612793, 2.4, -0.36260414123535156}},
+      {"plane_wf",
+       {-1.5, 4.0, 0, 1, 3, 0, 0, 0, 0, 0},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {-1.2142925262451172, -0.14504165649414064, -1.2}},
+      {"plane_wf",
+       {-1.5, 4.0, 1, 1, 3, 0, 0, 0, 0, 0},
+       kPoint,
+       0.8,
+       kLowSeed,
+       {-1.2, 0.5869007110595703, -1.202262306213379}},
+      // point_symmetry_wf: k = ⌊3Ψ⌋ = 2 (Ψ = 0.879) turns by 240°, k = 0 keeps the scaled offset.
+      {"point_symmetry_wf", {}, kPoint, 0.8, kHighSeed, {1.0613843876330606, 1.014641016151378, 0.4}},
+      {"point_symmetry_wf", {}, kPoint, 0.8, kLowSeed, {0.29, -0.46, 0.4}},
+      {"point_symmetry_wf", {-0.1, 0.2, 5, 0.0}, kPoint, 0.8, kHighSeed, {0.6836461299324937, 0.2818458492644872, 0.4}},
+      // The filled curves: Ψ₁ = 0.879 < 0.85 fails (the curve itself), Ψ₁ = 0.317 passes (scaled by Ψ₂).
+      {"cannabiscurve_wf", {}, kPoint, 0.8, kHighSeed, {-0.0943563825718746, -0.040438449673660566, 0.4}},
+      {"cannabiscurve_wf", {}, kPoint, 0.8, kLowSeed, {-0.08262854194744164, -0.03541223226318929, 0.4}},
+      {"cannabiscurve_wf", {0.95}, kPoint, 0.8, kHighSeed, {-0.05145494317000592, -0.022052118501431118, 0.4}},
+      {"cloverleaf_wf", {}, kPoint, 0.8, kHighSeed, {-0.27968932411234654, 0.6526084229288085, 0.4}},
+      {"cloverleaf_wf", {}, kPoint, 0.8, kLowSeed, {-0.24492589075322668, 0.5714937450908621, 0.4}},
+      {"cloverleaf_wf", {0.0}, kPoint, 0.8, kLowSeed, {-0.27968932411234654, 0.6526084229288085, 0.4}},
+      {"japanese_maple_leaf", {}, kPoint, 0.8, kHighSeed, {-0.0005638835773004729, 0.17396670901762498, 0.4}},
+      {"japanese_maple_leaf", {}, kPoint, 0.8, kLowSeed, {-0.0005638835773004729, 0.17396670901762498, 0.4}},
+      {"japanese_maple_leaf",
+       {0.9},
+       {-0.4, 0.2, 0.5},
+       0.8,
+       kHighSeed,
+       {0.08680610417396925, -0.09877949163497265, 0.4}},
+      {"spherical3D_wf", {}, kPoint, 0.8, kHighSeed, {0.28915662650602414, -0.674698795180723, 0.48192771084337355}},
+      {"spherical3D_wf",
+       {1, 3.0},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {-0.3173906312954902, 0.7405781396894772, -0.5289843854924837}},
+      {"waves2_wf", {}, kPoint, 0.8, kHighSeed, {0.3307980999479094, -0.4666218544576379, 0.4}},
+      {"waves2_wf",
+       {0.3, -0.2, 2.5, 3.5, 0, 1, 0.2, -0.3},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {-0.05916762708439205, -0.4585498485203985, 0.4}},
+      {"butterfly3D", {}, kPoint, 0.8, kHighSeed, {0.10008486003652638, -0.4670626801704564, 0.08892608495987193}},
+      {"cylinder_apo", {}, kPoint, 0.8, kHighSeed, {0.23641616532907164, -0.56, 0.7642691913004849}},
+      {"crown_js", {}, kPoint, 0.8, kHighSeed, {-0.18595411995491196, 0.10293405961072394, 0.003985785902038484}},
+      {"crown_js",
+       {3.0, 0.8},
+       kPoint,
+       0.8,
+       kLowSeed,
+       {-0.01084323898295543, -0.33578999973903456, 0.02488320547120025}},
+      // flower_db reads the sum so far, the run's start (0.125, −0.25, 0.5): the differences from it. With
+      // stem_thickness 2 the third row is held at −stem_length.
+      {"flower_db", {}, kPoint, 0.8, kHighSeed, {-0.19402189511665102, 0.08315224076427902, -8.474652636141338}},
+      {"flower_db",
+       {5.0, 0.5, 1.2, 0.3, 0.4, 0.6, 0.2},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {-0.8939250543100212, 0.38311073756143765, 0.031289375372469896}},
+      {"flower_db",
+       {5.0, 0.5, 1.2, 2.0, 0.4, 0.6, 0.2},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {-0.8939250543100212, 0.38311073756143765, -0.9}},
+      // recurrenceplot: the first near pair, after 11, 7, 0, 4, 35 and 11 misses; functions 0, 2, a Legendre
+      // polynomial (22, degree b = 3), a square wave (23) and a Chebyshev polynomial (29, degree k = 4).
+      {"recurrenceplot", {}, kPoint, 0.8, kHighSeed, {0.027428571428571403, -0.022857142857142868, 0.4}},
+      {"recurrenceplot", {}, kPoint, 0.8, kLowSeed, {-0.3622857142857143, -0.18857142857142858, 0.4}},
+      {"recurrenceplot",
+       {2, 0.0, 0.0, 0, 700, 2, 1.0, 0.0, 0.0, 5.0},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.3028571428571429, 0.03542857142857141, 0.4}},
+      {"recurrenceplot", {22, 300.0, 3.0, 0, 500, 0, 1, 0, 0, 20.0}, kPoint, 0.8, kLowSeed, {0.1264, 0.1664, 0.4}},
+      {"recurrenceplot", {23, 500.0, 2.0, 5, 600, 0, 1, 0, 0, 5.0}, kPoint, 0.8, kHighSeed, {-0.132, -0.092, 0.4}},
+      {"recurrenceplot", {29, 400.0, 0.0, 4, 800, 0, 1, 0, 0, 10.0}, kPoint, 0.8, kHighSeed, {0.027, -0.023, 0.4}},
+      // variations_jwildfire_more.cpp. rose_wf: Ψ₁ = 0.879 > 0.85 draws the curve, 0.317 scales it by Ψ₂ = 0.876.
+      {"rose_wf", {}, kPoint, 0.8, kHighSeed, {-0.007681660519260871, 0.01792387454494203, 0.4}},
+      {"rose_wf", {}, kPoint, 0.8, kLowSeed, {-0.006726883663203821, 0.015696061880808913, 0.4}},
+      {"rose_wf", {1.2, 3, 0.0}, kPoint, 0.8, kHighSeed, {-0.13184304399524402, 0.307633769322236, 0.4}},
+      // heart_wf: the two sides, then shifted and scaled (t held at 60 in the last row, where x(t) is 0).
+      {"heart_wf", {}, kPoint, 0.8, kHighSeed, {0.26927233058526157, 0.08992110077993411, 0.4}},
+      {"heart_wf", {}, {-0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.26927233058526157, 0.08992110077993411, 0.4}},
+      {"heart_wf",
+       {1.5, 10.0, 0.7, 1.4},
+       {-0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.6366826043580112, -0.412229152807797, 0.4}},
+      {"heart_wf", {1.5, -10.0, 0.7, 1.4}, kPoint, 0.8, kHighSeed, {0.0, 0.24370473938764514, 0.4}},
+      {"maple_leaf", {}, kPoint, 0.8, kHighSeed, {0.9145423353838334, -1.0049567201817957, 0.4}},
+      {"maple_leaf", {}, kPoint, 0.8, kLowSeed, {0.800871098088272, -0.8800476051066476, 0.4}},
+      {"maple_leaf", {0.95}, {-0.4, 0.2, 0.5}, 0.8, kHighSeed, {0.23324664279749552, 0.18569740207703783, 0.4}},
+      {"waves3_wf", {}, kPoint, 0.8, kHighSeed, {0.2812214747707527, -0.5382013048376736, 0.4}},
+      {"waves3_wf",
+       {0.3, -0.2, 2.5, 3.5, 0, 1, 0.2, -0.3},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.6397991314000017, -0.43659790113799263, 0.4}},
+      {"tangent3D", {}, kPoint, 0.8, kHighSeed, {0.30910450451020294, -0.6738307043704636, 0.24746899968769862}},
+      // acosh and acosech, through JWildfire's Complex (its square root and ε-tamed logarithm); Ψ ≥ ½ negates.
+      {"acosh", {}, kPoint, 0.8, kHighSeed, {-0.34139969978441004, 0.6748497169700012, 0.4}},
+      {"acosh", {}, kPoint, 0.8, kLowSeed, {0.34139969978441004, -0.6748497169700012, 0.4}},
+      {"acosh", {}, {-1.3, 0.4, 0.5}, 0.8, kLowSeed, {-0.45042897846891283, -1.391368851862155, 0.4}},
+      {"acosech", {}, kPoint, 0.8, kHighSeed, {-0.6344167017512854, -0.5410062442816109, 0.4}},
+      {"acosech", {}, kPoint, 0.8, kLowSeed, {0.6344167017512854, 0.5410062442816109, 0.4}},
+      {"zscale_wf", {}, kPoint, 0.8, kHighSeed, {0.0, 0.0, 0.4}},
+      {"zscale_wf", {0.3}, kPoint, 0.8, kHighSeed, {0.0, 0.0, 0.7}},
+      // mirror_wf: the point itself; Ψ₁ = 0.879 keeps x, 0.317 mirrors it; with all three axes (Ψ = 0.317, 0.876,
+      // 0.483) x and z are mirrored; from 0x12345678 (Ψ₂, Ψ₃ < ½) y and z are.
+      {"mirror_wf", {}, kPoint, 0.8, kHighSeed, {0.3, -0.7, 0.5}},
+      {"mirror_wf", {}, kPoint, 0.8, kLowSeed, {-0.3, -0.7, 0.5}},
+      {"mirror_wf", {1, 1, 1, 0.1, 0.2, 0.3, 1.5, -0.5, 0, 0, 0}, kPoint, 0.8, kLowSeed, {-0.6, 0.35, -0.8}},
+      {"mirror_wf", {0, 1, 1, 0.1, 0.2, 0.3, 1.5, -0.5, 0, 0, 0}, kPoint, 0.8, 0x12345678u, {0.45, -0.25, -0.8}},
+      // The *_bs functions; coth2_bs at the origin, where its denominator is 0, adds nothing (z neither).
+      {"cos2_bs", {}, kPoint, 0.8, kHighSeed, {0.9592870008789945, 0.1793414498700343, 0.4}},
+      {"cos2_bs", {0.5, 1.5, -0.7, 2.0}, kPoint, 0.8, kHighSeed, {1.5494162324944585, -0.06095221730621698, 0.4}},
+      {"coth2_bs", {}, kPoint, 0.8, kHighSeed, {0.5015498089910704, -0.7763281911935119, 0.4}},
+      {"coth2_bs", {0.5, 1.5, -0.7, 2.0}, kPoint, 0.8, kHighSeed, {0.1290998026899597, 0.40353643041223314, 0.4}},
+      {"coth2_bs", {}, {0.0, 0.0, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.0}},
+      {"sec2_bs", {}, kPoint, 0.8, kHighSeed, {0.5564681877092988, -0.24689093480859295, 0.4}},
+      {"sec2_bs", {0.5, 1.5, -0.7, 2.0}, kPoint, 0.8, kHighSeed, {1.041192453744641, 0.04095928993596859, 0.4}},
+      {"tan2_bs", {}, kPoint, 0.8, kHighSeed, {0.15177367321526952, -0.511868744210544, 0.4}},
+      {"tan2_bs", {0.5, 1.5, -0.7, 2.0}, kPoint, 0.8, kHighSeed, {0.039179602350708956, 0.13367084168369156, 0.4}},
+      // triangle: barycentric (1 − √Ψ₁, √Ψ₁ (1 − Ψ₂), √Ψ₁ Ψ₂) of its corners (it replaces the sum before it in the
+      // chaos game; the function adds).
+      {"triangle", {}, kPoint, 0.8, kHighSeed, {0.1400955861718792, 0.0018248904374931541, 0.0}},
+      {"triangle",
+       {0.1, 0.2, 0.3, -0.5, 0.4, -0.2, 0.6, -0.7, 0.9},
+       kPoint,
+       0.8,
+       kLowSeed,
+       {0.24352332295533047, -0.18357658520318243, 0.4485366385172935}},
+      // chunk: inside the unit circle (mode 0) the point, x and y unweighted; outside nothing; mode 1 the reverse.
+      {"chunk", {}, kPoint, 0.8, kHighSeed, {0.3, -0.7, 0.4}},
+      {"chunk", {}, {1.2, -0.7, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.0}},
+      {"chunk", {0.5, 0.3, 1.0, -0.2, 0.1, -0.4, 1}, kPoint, 0.8, kHighSeed, {0.0, 0.0, 0.0}},
+      {"chunk", {0.5, 0.3, 1.0, -0.2, 0.1, -0.4, 1}, {1.2, -0.7, 0.5}, 0.8, kHighSeed, {1.2, -0.7, 0.4}},
+  };
+  return cases;
+}
+
+class JwildfireVariationAtPoint : public testing::TestWithParam<PointCase> {};
+
+TEST_P(JwildfireVariationAtPoint, MatchesTheHandComputedValue) {
+  expectMatchesTheHandComputedValue(GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(Jwildfire, JwildfireVariationAtPoint, testing::ValuesIn(pointCases()), caseLabel);
+
+const PointCaseTableRegistration registered(&pointCases);
+
+// A file's parameters as JWildfire writes them (recurrenceplot's capitalised Density, plane_wf's image names) are
+// read, and the colour these variations would set is reported as lost.
+TEST(FlameVariationJwildfire, ImportReadsTheParametersAndReportsLostColour) {
+  const auto importXform = [](const std::string& xform) {
+    const std::string text = "<flames><flame name=\"t\" size=\"64 64\"><xform weight=\"1\" color=\"0\" " + xform +
+                             "/><color index=\"0\" rgb=\"255 255 255\"/></flame></flames>";
+    return readFlameXml(text, "t.flame").flame;
+  };
+  const ImportedFlame plot = importXform(
+      R"(recurrenceplot="1" recurrenceplot_func_id="2" recurrenceplot_Density="500" recurrenceplot_dc="0" coefs="1 0 0 1 0 0")");
+  ASSERT_TRUE(plot.leftOut.empty()) << plot.leftOut.front();
+  const VariationTerm& term = plot.genome.xforms.at(0).variations.at(0);
+  EXPECT_EQ(term.name, "recurrenceplot");
+  EXPECT_EQ(term.params.at(0), 2.0);
+  EXPECT_EQ(term.params.at(4), 500.0);
+  const ImportedFlame coloured = importXform(R"(recurrenceplot="1" recurrenceplot_dc="2" coefs="1 0 0 1 0 0")");
+  EXPECT_EQ(coloured.leftOut, (std::vector<std::string>{"direct colour of recurrenceplot"}));
+  const ImportedFlame plane = importXform(
+      R"(plane_wf="1" plane_wf_direct_color="0" plane_wf_colormap_filename="" plane_wf_displ_map_filename="" coefs="1 0 0 1 0 0")");
+  EXPECT_TRUE(plane.leftOut.empty()) << plane.leftOut.front();
+  const ImportedFlame symmetry = importXform(
+      R"(linear="1" post_point_symmetry_wf="1" post_point_symmetry_wf_colorshift="0.1" coefs="1 0 0 1 0 0")");
+  EXPECT_EQ(symmetry.leftOut, (std::vector<std::string>{"colour shift of post_point_symmetry_wf"}));
+  const ImportedFlame mirror =
+      importXform(R"(linear="1" post_mirror_wf="1" post_mirror_wf_xcolorshift="0.68" coefs="1 0 0 1 0 0")");
+  EXPECT_EQ(mirror.leftOut, (std::vector<std::string>{"colour shift of post_mirror_wf"}));
+  const ImportedFlame zscale =
+      importXform(R"(linear3D="1" post_zscale_wf="0.5" post_zscale_wf_ztranslate="0.25" coefs="1 0 0 1 0 0")");
+  ASSERT_TRUE(zscale.leftOut.empty()) << zscale.leftOut.front();
+  EXPECT_EQ(zscale.genome.xforms.at(0).variations.back().name, "post_zscale_wf");
+  EXPECT_EQ(variationStage("post_zscale_wf"), VariationStage::Post);
+  EXPECT_FALSE(findVariation("zscale_wf")->mapsXY);
+}
+
+}  // namespace
