@@ -203,6 +203,114 @@ const std::vector<PointCase>& pointCases() {
       {"chunk", {}, {1.2, -0.7, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.0}},
       {"chunk", {0.5, 0.3, 1.0, -0.2, 0.1, -0.4, 1}, kPoint, 0.8, kHighSeed, {0.0, 0.0, 0.0}},
       {"chunk", {0.5, 0.3, 1.0, -0.2, 0.1, -0.4, 1}, {1.2, -0.7, 0.5}, 0.8, kHighSeed, {1.2, -0.7, 0.4}},
+      // spirograph3D: t = tmin + (tmax − tmin)Ψ, then the mode's offsets (modes 0 to 4).
+      {"spirograph3D", {}, kPoint, 0.8, kHighSeed, {0.8098890486908985, -0.28808266560141543, 0.18808586020393545}},
+      {"spirograph3D",
+       {1.2, 0.5, -0.3, -5.0, 20.0, 0.3, 1, 0},
+       kPoint,
+       0.8,
+       kLowSeed,
+       {-1.6233265244226827, 0.21290382585564355, 0.17874044363729935}},
+      {"spirograph3D",
+       {1.2, 0.5, -0.3, -5.0, 20.0, 0.3, 2, 0},
+       kPoint,
+       0.8,
+       kLowSeed,
+       {-1.447262687299321, 0.18970950069406792, -0.006547719905297212}},
+      {"spirograph3D",
+       {1.2, 0.5, -0.3, -5.0, 20.0, 0.3, 3, 0},
+       kPoint,
+       0.8,
+       kLowSeed,
+       {-1.5057350226379136, 0.3556428236005621, 0.13769884877451236}},
+      {"spirograph3D",
+       {1.2, 0.5, -0.3, -5.0, 20.0, 0.3, 4, 0},
+       kPoint,
+       0.8,
+       kLowSeed,
+       {-1.7774323602653244, 0.19371746482828422, 0.11203264050730044}},
+      // rhodonea: 3/4 closes after 4 cycles, 5/3 after 3 (twice with metacycles 2), 2.5/1.3 after 16; the modes 0–6
+      // inside and outside the petal (the drops of modes 5 and 6 are checked below); mode 1 reads the sum so far.
+      {"rhodonea", {}, kPoint, 0.8, kHighSeed, {0.03655410867786188, -0.748913446083023, 0.4}},
+      {"rhodonea", {}, {0.05, -0.1, 0.5}, 0.8, kHighSeed, {0.2203868598623796, -0.755612090956729, 0.4}},
+      {"rhodonea",
+       {5, 3, 0, 0, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.024262005806583054, 0.5778546290789098, 0.4}},
+      {"rhodonea",
+       {5, 3, 0, 0, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       {0.05, -0.1, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.05972441789948013, 0.44201290454106545, 0.4}},
+      {"rhodonea",
+       {5, 3, 1, 1, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.026956191241430727, 0.6272147285229952, 0.4}},
+      {"rhodonea",
+       {5, 3, 1, 1, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       {0.05, -0.1, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.04381775277180272, 0.29485886976921766, 0.4}},
+      {"rhodonea",
+       {5, 3, 2, 2, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.19253764127744832, 0.5671418516315639, 0.4}},
+      {"rhodonea",
+       {5, 3, 2, 2, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       {0.05, -0.1, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.05341260417164648, 0.2972077427246393, 0.4}},
+      {"rhodonea",
+       {5, 3, 3, 3, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.2114620058065831, 0.9138546290789098, 0.4}},
+      {"rhodonea",
+       {5, 3, 3, 3, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       {0.05, -0.1, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.046924417899480125, 0.4100129045410654, 0.4}},
+      {"rhodonea",
+       {5, 3, 4, 4, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.03278240937784149, 0.6767735081902053, 0.4}},
+      {"rhodonea",
+       {5, 3, 4, 4, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       {0.05, -0.1, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.024119858415577747, 0.21386907062214924, 0.4}},
+      {"rhodonea",
+       {5, 3, 5, 5, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.3, -0.7, 0.4}},
+      {"rhodonea",
+       {5, 3, 6, 6, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3},
+       {0.05, -0.1, 0.5},
+       0.8,
+       kHighSeed,
+       {0.04999999999999999, -0.09999999999999998, 0.4}},
+      {"rhodonea",
+       {2.5, 1.3, 1, 1, 0.4, 0.6, 0.8, 1.3, 1.0, 0.0, 0.0, 0, 0.0, 1, 0.0},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {-0.16073795409298414, -0.033435697615263604, 0.4}},
   };
   return cases;
 }
@@ -249,6 +357,22 @@ TEST(FlameVariationJwildfire, ImportReadsTheParametersAndReportsLostColour) {
   EXPECT_EQ(zscale.genome.xforms.at(0).variations.back().name, "post_zscale_wf");
   EXPECT_EQ(variationStage("post_zscale_wf"), VariationStage::Post);
   EXPECT_FALSE(findVariation("zscale_wf")->mapsXY);
+}
+
+// rhodonea's mode 5 drops the points inside the petal and mode 6 those beyond it (NaN, the chaos game's escape, where
+// JWildfire hides them); z is carried either way.
+TEST(FlameVariationJwildfire, RhodoneaMasksDropThePointsTheyHide) {
+  const VariationInfo& info = variationOrThrow("rhodonea");
+  for (const double mode : {5.0, 6.0}) {
+    const std::vector<double> params = {5, 3, mode, mode, 0.4, 0.6, 0.8, 1.3, 1.5, 0.2, 0.1, 0, 0.1, 2, 0.3};
+    // (0.05, −0.1) lies inside the petal, (0.3, −0.7) beyond it.
+    const glm::dvec3 hidden = mode == 5.0 ? glm::dvec3{0.05, -0.1, 0.5} : kPoint;
+    const Outputs out = run(info, params, hidden, 0.8, kHighSeed, 5);
+    for (std::size_t lane = 0; lane < 5; ++lane) {
+      EXPECT_TRUE(std::isnan(out.x[lane]) && std::isnan(out.y[lane])) << mode;
+      EXPECT_NEAR(out.z[lane] - kStartZ, 0.4, 1e-12);
+    }
+  }
 }
 
 }  // namespace

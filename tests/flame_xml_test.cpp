@@ -395,7 +395,8 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
     if (info.name == "falloff2" || info.name == "falloff3" || info.name == "axis_symmetry_wf" ||
         info.name == "point_symmetry_wf" || info.name == "mirror_wf")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour shift of " + info.name}));
-    else if (info.name == "pixel_flow" || info.name == "truchet" || info.name == "recurrenceplot")
+    else if (info.name == "pixel_flow" || info.name == "truchet" || info.name == "recurrenceplot" ||
+             info.name == "spirograph3D")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"direct colour of " + info.name}));
     else if (info.name == "smartcrop")  // static −1 reads the transform's state, which is not kept
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"static or cropmode 2 of smartcrop"}));

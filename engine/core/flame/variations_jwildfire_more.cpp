@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -298,6 +299,164 @@ VOXFLAME_VARIATION_TARGETS void chunk(const VariationInput& in, double* __restri
   }
 }
 
+// spirograph3D (as JWildfire has it): the point at t = tmin + (tmax − tmin)Ψ of the 3D spirograph ((a + b) cos t −
+// c cos(((a + b)/b) t), (a + b) sin t − c sin(((a + b)/b) t), c sin(((a + b)/b) t)), thickened by width: mode 0 one
+// offset along (1, 1, 1), 1 that offset turned along the curve, 2 three uniform offsets, 3 three bell-shaped ones, 4
+// ±width along x. The point itself is not used. Its direct colour is not applied (the importer says so).
+VOXFLAME_VARIATION_TARGETS void spirograph3D(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                             double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double a = P[0], b = P[1], c = P[2], tMin = P[3], tMax = P[4], width = P[5];
+  const double mode = std::clamp(std::round(P[6]), 0.0, 4.0);
+  const double ab = a + b, ratio = (a + b) / b;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double t = (tMax - tMin) * laneUniform(rnd[i]) + tMin;
+    double w1 = 0.0, w2 = 0.0, w3 = 0.0;
+    if (mode == 0.0) {
+      w1 = w2 = w3 = width * laneUniform(rnd[i]) - width / 2.0;
+    } else if (mode == 1.0) {
+      const double offset = width * laneUniform(rnd[i]) - width / 2.0;
+      w1 = offset * std::sin(36.0 * t);
+      w2 = offset * std::sin(36.0 * t + kTwoPi / 3.0);
+      w3 = offset * std::sin(36.0 * t + 2.0 * kTwoPi / 3.0);
+    } else if (mode == 2.0) {
+      w1 = width * laneUniform(rnd[i]) - width / 2.0;
+      w2 = width * laneUniform(rnd[i]) - width / 2.0;
+      w3 = width * laneUniform(rnd[i]) - width / 2.0;
+    } else if (mode == 3.0) {
+      w1 = width * laneGauss(rnd[i]) / 2.0;
+      w2 = width * laneGauss(rnd[i]) / 2.0;
+      w3 = width * laneGauss(rnd[i]) / 2.0;
+    } else {
+      w1 = laneUniform(rnd[i]) < 0.5 ? width : -width;
+    }
+    outX[i] += w * (ab * std::cos(t) - c * std::cos(ratio * t) + w1);
+    outY[i] += w * (ab * std::sin(t) - c * std::sin(ratio * t) + w2);
+    outZ[i] += w * (c * std::sin(ratio * t) + w3);
+  }
+}
+
+// ---- rhodonea ------------------------------------------------------------------------------------------------------
+
+// rhodonea (CozyG's, as JWildfire has it): the rose r = cos(k t) + radial_offset, k = knumer/kdenom, at t = cycles·(φ +
+// 2π cycle_offset), spread about the curve by the point's distance: inner_mode for points within the petal (spread
+// · ratio x, spread y), outer_mode for points beyond it (modes 0–6: on the curve, scaled by the distance, pulled
+// towards the point, pushed by it, halved distance plus spread, the point itself (unweighted) or dropped). cycles (0:
+// enough to close the curve, times metacycles) as JWildfire works it out; each closed round adds metacycle_expansion
+// to the weight. JWildfire hides a dropped point; here it is dropped (NaN, the chaos game's escape). Ψ is drawn for
+// every point (JWildfire draws it only with fill). Where knumer/kdenom is not a ratio of integers JWildfire closes
+// after 16 cycles on its first render, which is taken here.
+struct RhodoneaSetup {
+  double k, cycles, cyclesToClose;
+};
+
+inline double javaFmod(double a, double b) {
+  return std::fmod(a, b);  // Java's % on doubles is C's fmod
+}
+
+inline std::int64_t javaLong(double value) {
+  if (std::isnan(value)) return 0;
+  if (value >= 9.2233720368547758e18) return std::numeric_limits<std::int64_t>::max();
+  if (value <= -9.2233720368547758e18) return std::numeric_limits<std::int64_t>::min();
+  return static_cast<std::int64_t>(value);
+}
+
+// BigInteger.gcd: the non-negative greatest common divisor (of |a| and |b|; gcd(0, 0) = 0).
+inline double bigGcd(std::int64_t a, std::int64_t b) {
+  std::uint64_t ua = a < 0 ? 0 - static_cast<std::uint64_t>(a) : static_cast<std::uint64_t>(a);
+  std::uint64_t ub = b < 0 ? 0 - static_cast<std::uint64_t>(b) : static_cast<std::uint64_t>(b);
+  while (ub != 0) {
+    const std::uint64_t r = ua % ub;
+    ua = ub;
+    ub = r;
+  }
+  return static_cast<double>(ua);
+}
+
+RhodoneaSetup rhodoneaSetup(const double* P) {
+  const double knumer = P[0], kdenom = P[1], innerSpread = P[4], outerSpread = P[5], fill = P[9], radialOffset = P[10];
+  const double cyclesParam = P[11], metacycles = P[13];
+  RhodoneaSetup s{};
+  double kn = knumer, kd = kdenom;
+  s.k = kn / kd;
+  if (javaFmod(s.k, 1.0) == 0.0) {
+    if (javaFmod(s.k, 2.0) == 0.0)
+      s.cyclesToClose = 1.0;
+    else
+      s.cyclesToClose = radialOffset != 0.0 || innerSpread != 0.0 || outerSpread != 0.0 || fill != 0.0 ? 1.0 : 0.5;
+  } else if (javaFmod(kn, 1.0) == 0.0 && javaFmod(kd, 1.0) == 0.0) {
+    // BigInteger.valueOf((long) kn) and of (int) kd.
+    const double gcd = bigGcd(javaLong(kn), javaInt(kd));
+    if (gcd != 1.0) {
+      kn /= gcd;
+      kd /= gcd;
+    }
+    s.cyclesToClose = javaFmod(kn, 2.0) == 0.0 || javaFmod(kd, 2.0) == 0.0 ? kd : kd / 2.0;
+  } else {
+    s.cyclesToClose = 16.0;
+  }
+  s.cycles = cyclesParam == 0.0 ? s.cyclesToClose * metacycles : cyclesParam;
+  return s;
+}
+
+VOXFLAME_VARIATION_TARGETS void rhodonea(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const RhodoneaSetup s = rhodoneaSetup(P);
+  const auto modeOf = [](double v) {
+    const double m = std::floor(v);
+    return m >= 0.0 && m <= 6.0 ? m : 0.0;
+  };
+  const double innerMode = modeOf(P[2]), outerMode = modeOf(P[3]);
+  const double innerSpread = P[4], outerSpread = P[5], innerRatio = P[6], outerRatio = P[7], split = P[8];
+  const double fill = P[9], radialOffset = P[10], cycleOffset = P[12], expansionStep = P[14];
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double psi = laneUniform(rnd[i]);
+    const double rin = split * std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    const double tin = std::atan2(y[i], x[i]);
+    const double t = s.cycles * (tin + cycleOffset * kTwoPi);
+    double r = std::cos(s.k * t) + radialOffset;
+    if (fill != 0.0) r += fill * (psi - 0.5);
+    const double cx = r * std::cos(t), cy = r * std::sin(t);
+    const double expansion = std::floor(s.cycles * (tin + kPi) / (s.cyclesToClose * kTwoPi));
+    const double amount = w + expansion * expansionStep;
+    const bool outer = std::abs(rin) > std::abs(r);
+    const double mode = outer ? outerMode : innerMode;
+    const double spread = outer ? outerSpread : innerSpread, ratio = outer ? outerRatio : innerRatio;
+    // The point's coordinates with the signs of the curve's.
+    const double xin = cx < 0.0 ? -std::abs(x[i]) : std::abs(x[i]), yin = cy < 0.0 ? -std::abs(y[i]) : std::abs(y[i]);
+    double px = amount * cx, py = amount * cy;
+    bool zeroXIfNoY = false;
+    if (mode == 1.0) {
+      px = amount * (rin * spread * ratio - spread * ratio + 1.0) * cx;
+      py = amount * (rin * spread - spread + 1.0) * cy;
+      zeroXIfNoY = true;
+    } else if (mode == 2.0) {  // towards the point outside, away from it inside
+      const double sign = outer ? 1.0 : -1.0;
+      px = amount * (cx + sign * spread * ratio * (outer ? xin - cx : cx - xin));
+      py = amount * (cy + sign * spread * (outer ? yin - cy : cy - yin));
+    } else if (mode == 3.0) {
+      const double sign = outer ? 1.0 : -1.0;
+      px = amount * (cx + sign * spread * ratio * xin);
+      py = amount * (cy + sign * spread * yin);
+    } else if (mode == 4.0) {
+      px = amount * (0.5 * rin + spread * ratio) * cx;
+      py = amount * (0.5 * rin + spread) * cy;
+    } else if (mode == 5.0 || mode == 6.0) {
+      // Mode 5 keeps the point outside and drops it inside; mode 6 the reverse.
+      const bool keep = outer == (mode == 5.0);
+      px = keep ? x[i] : kNaN;
+      py = keep ? y[i] : kNaN;
+    }
+    outX[i] += px;
+    outY[i] += py;
+    // JWildfire's mode 1 clears x where the sum so far has y exactly 0.
+    if (zeroXIfNoY && outY[i] == 0.0) outX[i] = 0.0;
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -402,6 +561,39 @@ void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& c
        {"e", 0.0, -2.0, 2.0},
        {"f", -1.0, -2.0, 2.0},
        count("mode", 0.0, 0.0, 1.0)});
+  add("spirograph3D",
+      "((a + b) cos t − c cos(q t), (a + b) sin t − c sin(q t), c sin(q t)) + offsets of width (by mode), q = (a + "
+      "b)/b, t = tmin + (tmax − tmin)Ψ; the point itself is not used (as JWildfire has it; its direct colour is not "
+      "applied)",
+      k3D, kRandom, &spirograph3D,
+      {{"a", 1.0, -2.0, 2.0},
+       {"b", -0.3, -2.0, 2.0},
+       {"c", 0.4, -2.0, 2.0},
+       {"tmin", 0.0, -1000.0, 1000.0},
+       {"tmax", 1000.0, -1000.0, 1000.0},
+       {"width", 0.0, 0.0, 1.0},
+       count("mode", 0.0, 0.0, 4.0),
+       count("direct_color", 0.0, 0.0, 1.0)});
+  add("rhodonea",
+      "the rose (cos(k t) + radial_offset (+ fill (Ψ − ½)))·(cos t, sin t), k = knumer/kdenom, t = cycles (φ + 2π "
+      "cycle_offset), spread by the point's distance per inner_mode/outer_mode (0–6), times w + metacycle_expansion "
+      "per closed round; z (CozyG's, as JWildfire has it; modes 5 and 6 drop the points JWildfire hides)",
+      k2D, kRandom, &rhodonea,
+      {{"knumer", 3.0, 1.0, 20.0},
+       {"kdenom", 4.0, 1.0, 20.0},
+       count("inner_mode", 1.0, 0.0, 6.0),
+       count("outer_mode", 1.0, 0.0, 6.0),
+       {"inner_spread", 0.0, -1.0, 1.0},
+       {"outer_spread", 0.0, -1.0, 1.0},
+       {"inner_spread_ratio", 1.0, 0.0, 2.0},
+       {"outer_spread_ratio", 1.0, 0.0, 2.0},
+       {"spread_split", 1.0, 0.0, 2.0},
+       {"fill", 0.0, 0.0, 1.0},
+       {"radial_offset", 0.0, -1.0, 1.0},
+       {"cycles", 0.0, 0.0, 100.0},
+       {"cycle_offset", 0.0, -1.0, 1.0},
+       {"metacycles", 1.0, 1.0, 10.0},
+       {"metacycle_expansion", 0.0, -1.0, 1.0}});
 }
 
 }  // namespace voxflame::core
