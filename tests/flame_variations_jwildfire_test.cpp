@@ -311,6 +311,100 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kHighSeed,
        {-0.16073795409298414, -0.033435697615263604, 0.4}},
+      // inversion: the circle (scale 1 and 0.684), the holdout's ellipse, a hyperbola, a pentagon in a 1.5-norm, a rose
+      // (its farthest crossing, in a 3-norm), a superellipse and a supershape; points imode or the ring leave alone
+      // (unweighted); the rose's outline (draw_shape, thickened) and a pass-through.
+      {"inversion", {}, kPoint, 0.8, kHighSeed, {0.41379310344827586, -0.9655172413793104, 0.4}},
+      {"inversion",
+       {0.684, 0, 1, 0, 0, 1, 1, 0, 0, 0, 0, 0, 1, 2, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.19359558620689657, -0.4517230344827587, 0.4}},
+      {"inversion",
+       {1, 0, 1, 0, 0, 1.712, 1.144, 0.132, 0.924, 0.016, 0, 0, 1, 2, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.5924259939762235, -1.382327319277855, 0.4}},
+      {"inversion",
+       {1, -0.35, 2, 0, 0, 0.6, 1.3, 0, 0, 0, 0, 0, 1, 2, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.14976402911038006, -0.34944940125755347, 0.4}},
+      {"inversion",
+       {1, 0.1, 3, 0, 0, 5.5, 1, 0, 0, 0, 0, 0, 1, 1.5, 2, 1.2, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.25597226551973185, -0.5972686195460409, 0.4}},
+      {"inversion",
+       {1, 0, 4, 0, 0, 5, 3, 0.2, 0, 0, 0, 0, 1, 2, 3, 1, 0.8, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.003878458837314287, -0.00904973728706667, 0.4}},
+      {"inversion",
+       {1, 0, 5, 0, 0, 1.2, 0.8, 3.0, 0, 0, 0, 0, 1, 2, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.3086880410546225, -0.7202720957941192, 0.4}},
+      {"inversion",
+       {1, 0, 6, 0, 0, 1.0, 1.2, 5, 2.0, 1.5, 1.7, 0, 1, 2, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.5419221316130625, -1.2644849737638124, 0.4}},
+      {"inversion",
+       {1, 0, 0, 1, 0, 1, 1, 0, 0, 0, 0, 0, 1, 2, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.3, -0.7, 0.5}},
+      {"inversion",
+       {0.5, 0, 0, 2, 0, 1, 1, 0, 0, 0, 0, 2, 0.8, 2, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.3, -0.7, 0.5}},
+      {"inversion",
+       {1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0.8, 2, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.3, -0.7, 0.5}},
+      {"inversion",
+       {1, 0, 4, 0, 0, 5, 3, 0, 0, 0, 0, 0, 1, 2, 2, 1, 1, 0.95, 3.0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {-0.27385716404747074, 0.5796280016773844, 0.0}},
+      {"inversion",
+       {1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 0, 1, 2, 2, 1, 1, 0, 0, 0.5, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kLowSeed,
+       {0.41379310344827586, -0.9655172413793104, 0.4}},
+      {"inversion",
+       {1, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 0, 1, 2, 2, 1, 1, 0, 0, 0.95, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.3, -0.7, 0.0}},
+      {"inversion",
+       {1.2, 0, 0, 0, 0, 1, 1, 0, 0, 0, 0, 1, 0.5, 2, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.5958620689655173, -1.390344827586207, 0.4}},
+      {"inversion",
+       {1.1, 0, 0, 2, 0, 1, 1, 0, 0, 0, 0, 0, 1, 2, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 1},
+       kPoint,
+       0.8,
+       kHighSeed,
+       {0.5006896551724139, -1.1682758620689657, 0.4}},
   };
   return cases;
 }
@@ -372,6 +466,19 @@ TEST(FlameVariationJwildfire, RhodoneaMasksDropThePointsTheyHide) {
       EXPECT_TRUE(std::isnan(out.x[lane]) && std::isnan(out.y[lane])) << mode;
       EXPECT_NEAR(out.z[lane] - kStartZ, 0.4, 1e-12);
     }
+  }
+}
+
+// inversion with hide_uninverted drops the points it does not invert (NaN, where JWildfire hides them), with z.
+TEST(FlameVariationJwildfire, InversionHidesWhatItDoesNotInvert) {
+  const VariationInfo& info = variationOrThrow("inversion");
+  std::vector<double> params = info.defaultParams();
+  params[3] = 1.0;  // imode 1: only points outside the unit circle invert; (0.3, −0.7) lies inside
+  params[4] = 1.0;  // hide_uninverted
+  const Outputs out = run(info, params, kPoint, 0.8, kHighSeed, 5);
+  for (std::size_t lane = 0; lane < 5; ++lane) {
+    EXPECT_TRUE(std::isnan(out.x[lane]) && std::isnan(out.y[lane]));
+    EXPECT_NEAR(out.z[lane] - kStartZ, 0.5, 1e-12);
   }
 }
 

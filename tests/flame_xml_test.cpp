@@ -396,7 +396,7 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
         info.name == "point_symmetry_wf" || info.name == "mirror_wf")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour shift of " + info.name}));
     else if (info.name == "pixel_flow" || info.name == "truchet" || info.name == "recurrenceplot" ||
-             info.name == "spirograph3D")
+             info.name == "spirograph3D" || info.name == "inversion")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"direct colour of " + info.name}));
     else if (info.name == "smartcrop")  // static −1 reads the transform's state, which is not kept
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"static or cropmode 2 of smartcrop"}));

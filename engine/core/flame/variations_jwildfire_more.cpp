@@ -457,6 +457,168 @@ VOXFLAME_VARIATION_TARGETS void rhodonea(const VariationInput& in, double* __res
   }
 }
 
+// ---- inversion ---------------------------------------------------------------------------------------------------
+
+// inversion (CozyG's, as JWildfire has it): inversion in a shape rather than a circle. The point p at angle φ from the
+// origin is mapped to p·|s|²/|p|², s where the ray through p meets the shape (a circle of radius scale, an ellipse,
+// a hyperbola, a regular polygon, a rose, a superellipse or a supershape, shape 0–6, turned by rotation·π; a–f its
+// parameters), each |·|² measured in the p-norms pnorm_shape/pnorm_point (with their pnorm_smod/pnorm_pmod). imode 1
+// inverts only the points outside the shape, 2 only those inside; ring_mode 1 (2) only those inside (outside) the
+// ring between ring_scale·scale and its inverse. The others pass unweighted, or are dropped with hide_uninverted
+// (NaN, the chaos game's escape, where JWildfire hides them). With draw_shape a share of the points draws the shape's
+// outline instead (thickened by shape_thickness), and with passthrough a share passes unchanged; both unweighted, z
+// not carried, as JWildfire does. Five numbers Ψ₁…Ψ₅ are drawn for every point (outline test, its angle, its two
+// thickness offsets, pass-through test). Its direct colour (color_measure) and editor guides are not applied.
+struct InversionShape {
+  double shape, scale, rotation, a, b, c, d, e, f, period;
+  bool simple;
+};
+
+// The shape's point at angle t from the origin: its radius r (negative for some shapes) and (r cos t, r sin t).
+inline double inversionRadius(const InversionShape& s, double tin) {
+  const double t = tin - s.rotation;
+  if (s.shape == 1.0)
+    return s.a * s.b / std::sqrt(s.b * std::cos(t) * s.b * std::cos(t) + s.a * std::sin(t) * s.a * std::sin(t)) *
+           s.scale;
+  if (s.shape == 2.0) {
+    const double ct = std::cos(t), st = std::sin(t);
+    return std::sqrt(s.a * s.a * s.b * s.b / (s.b * s.b * ct * ct - s.a * s.a * st * st)) * s.scale;
+  }
+  if (s.shape == 3.0) {
+    const double theta = std::abs(std::fmod(tin - s.rotation, kTwoPi));
+    const double sides = std::floor(s.a);
+    return std::cos(kPi / sides) / std::cos(std::fmod(theta, kTwoPi / sides) - kPi / sides) * s.scale;
+  }
+  if (s.shape == 4.0) return (std::cos(s.a / s.b * t) + s.c) * s.scale;
+  if (s.shape == 5.0)
+    return s.a * s.b /
+           std::pow(std::pow(std::abs(s.a * std::sin(t)), s.c) + std::pow(std::abs(s.b * std::cos(t)), s.c),
+                    1.0 / s.c) *
+           s.scale;
+  if (s.shape == 6.0)
+    return std::pow(std::pow(std::abs(std::cos(s.c * t / 4.0) / s.a), s.e) +
+                        std::pow(std::abs(std::sin(s.c * t / 4.0) / s.b), s.f),
+                    -1.0 / s.d) *
+           s.scale;
+  return s.scale;  // the circle, and any other shape number
+}
+
+// Where the ray at angle tin meets the shape: for a rose (not a simple shape), the farthest of its crossings at tin,
+// tin + π, … over its period, as JWildfire takes them (radius −0.0001 at the origin when the period is under 2π; at
+// most 1000 of them).
+inline void inversionCurvePoint(const InversionShape& s, double tin, double& r, double& cx, double& cy) {
+  if (s.simple) {
+    r = inversionRadius(s, tin);
+    cx = r * std::cos(tin);
+    cy = r * std::sin(tin);
+    return;
+  }
+  r = -0.0001;
+  cx = cy = 0.0;
+  // JWildfire's (int)(period/2π) crossings, at most 1000 here (a rose of kdenom above 1000 would take longer).
+  const double turns = std::min(static_cast<double>(javaInt(s.period / kTwoPi)), 1000.0);
+  for (double i = 0.0; i < turns; i += 1.0) {
+    const double theta = tin + i * kPi, ri = inversionRadius(s, theta);
+    if (std::abs(ri) > r) {
+      cx = ri * std::cos(theta);
+      cy = ri * std::sin(theta);
+      r = std::abs(ri);
+    }
+  }
+}
+
+// The rose's period (JWildfire's Rhodonea.calcPeriod): 2π, π for odd k without c, kd·2π or kd·π for k = kn/kd.
+inline double rosePeriod(double a, double b, double c) {
+  const double k = a / b;
+  if (std::fmod(k, 1.0) == 0.0) return std::fmod(k, 2.0) == 0.0 || c != 0.0 ? kTwoPi : kPi;
+  if (std::fmod(a, 1.0) == 0.0 && std::fmod(b, 1.0) == 0.0) {
+    double kn = a, kd = b;
+    const double gcd = bigGcd(javaLong(kn), javaInt(kd));
+    if (gcd != 1.0) {
+      kn /= gcd;
+      kd /= gcd;
+    }
+    return std::fmod(kn, 2.0) == 0.0 || std::fmod(kd, 2.0) == 0.0 ? kd * kTwoPi : kd * kPi;
+  }
+  return kTwoPi;
+}
+
+inline double pNormSquared(double px, double py, double p, double mod) {
+  return std::pow(std::pow(std::abs(px), p) + std::pow(std::abs(py), p), 2.0 / (p * mod));
+}
+
+VOXFLAME_VARIATION_TARGETS void inversion(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  InversionShape s{};
+  s.scale = P[0];
+  s.rotation = kPi * P[1];
+  s.shape = static_cast<double>(javaInt(P[2]));
+  if (!(s.shape >= 0.0 && s.shape <= 6.0)) s.shape = 0.0;
+  s.a = P[5];
+  s.b = P[6];
+  s.c = P[7];
+  s.d = P[8];
+  s.e = P[9];
+  s.f = P[10];
+  s.simple = s.shape != 4.0;
+  s.period = s.shape == 4.0 ? rosePeriod(s.a, s.b, s.c) : kTwoPi;
+  const double imode = static_cast<double>(javaInt(P[3]));
+  const bool hideUninverted = P[4] == 1.0;
+  const double ringMode = static_cast<double>(javaInt(P[11])), ringScale = P[12];
+  const double pnormPoint = P[13], pnormShape = P[14], pnormPmod = P[15], pnormSmod = P[16];
+  const double drawShape = P[17], thickness = P[18], passthrough = P[19];
+  const double ringMin = ringScale <= s.scale ? ringScale * s.scale : s.scale * s.scale / (ringScale * s.scale);
+  const double ringMax = ringScale <= s.scale ? s.scale * s.scale / (ringScale * s.scale) : ringScale * s.scale;
+  const bool ring = ringMode != 0.0 && ringScale != 1.0;
+  const bool plainShape = pnormShape == 2.0 && pnormSmod == 1.0, plainPoint = pnormPoint == 2.0 && pnormPmod == 1.0;
+  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t i = 0; i < n; ++i) {
+    const double psi1 = laneUniform(rnd[i]), psi2 = laneUniform(rnd[i]), psi3 = laneUniform(rnd[i]),
+                 psi4 = laneUniform(rnd[i]), psi5 = laneUniform(rnd[i]);
+    const double xin = x[i], yin = y[i];
+    double r, cx, cy;
+    if (drawShape > 0.0 && psi1 < drawShape) {
+      // The outline's own point at the angle (not the farthest crossing), as JWildfire draws it.
+      const double theta = psi2 * s.period;
+      r = inversionRadius(s, theta);
+      cx = r * std::cos(theta);
+      cy = r * std::sin(theta);
+      if (thickness != 0.0) {
+        cx += 0.01 * (psi3 - 0.5) * thickness;
+        cy += 0.01 * (psi4 - 0.5) * thickness;
+      }
+      outX[i] += cx;
+      outY[i] += cy;
+      continue;
+    }
+    if (passthrough > 0.0 && psi5 < passthrough) {
+      outX[i] += xin;
+      outY[i] += yin;
+      continue;
+    }
+    const double rin = std::sqrt(xin * xin + yin * yin);
+    inversionCurvePoint(s, std::atan2(yin, xin), r, cx, cy);
+    bool invert = imode == 1.0 ? rin > r : imode == 2.0 ? rin < r : true;
+    if (invert && ring) {
+      if (ringMode == 1.0) invert = rin >= ringMin && rin <= ringMax;
+      if (ringMode == 2.0) invert = rin <= ringMin || rin >= ringMax;
+    }
+    if (invert) {
+      const double num = plainShape ? r * r : pNormSquared(cx, cy, pnormShape, pnormSmod);
+      const double den = plainPoint ? xin * xin + yin * yin : pNormSquared(xin, yin, pnormPoint, pnormPmod);
+      const double factor = w * (num / den);
+      outX[i] += factor * xin;
+      outY[i] += factor * yin;
+      outZ[i] += w * z[i];
+    } else {
+      outX[i] += hideUninverted ? kNaN : xin;
+      outY[i] += hideUninverted ? kNaN : yin;
+      outZ[i] += z[i];
+    }
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -594,6 +756,39 @@ void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& c
        {"cycle_offset", 0.0, -1.0, 1.0},
        {"metacycles", 1.0, 1.0, 10.0},
        {"metacycle_expansion", 0.0, -1.0, 1.0}});
+  add("inversion",
+      "w·p·|s|²/|p|², s where the ray from the origin through p meets the shape (0 circle of radius scale, 1 ellipse, "
+      "2 "
+      "hyperbola, 3 regular a-gon, 4 rose, 5 superellipse, 6 supershape, turned by rotation·π), the |·|² in p-norms; "
+      "imode and ring_mode limit which points invert, the rest pass unweighted (or are dropped with hide_uninverted); "
+      "draw_shape and passthrough send shares of the points to the outline or through unchanged; z (CozyG's, as "
+      "JWildfire has it; its direct colour is not applied)",
+      k2D, kRandom, &inversion,
+      {{"scale", 1.0, 0.0, 2.0},
+       {"rotation", 0.0, -1.0, 1.0},
+       count("shape", 0.0, 0.0, 6.0),
+       count("imode", 0.0, 0.0, 2.0),
+       count("hide_uninverted", 0.0, 0.0, 1.0),
+       {"a", 1.0, 0.0, 5.0},
+       {"b", 1.0, 0.0, 5.0},
+       {"c", 0.0, -5.0, 5.0},
+       {"d", 0.0, -5.0, 5.0},
+       {"e", 0.0, -5.0, 5.0},
+       {"f", 0.0, -5.0, 5.0},
+       count("ring_mode", 0.0, 0.0, 2.0),
+       {"ring_scale", 1.0, 0.0, 2.0},
+       {"pnorm_point", 2.0, 0.1, 4.0},
+       {"pnorm_shape", 2.0, 0.1, 4.0},
+       {"pnorm_pmod", 1.0, 0.1, 4.0},
+       {"pnorm_smod", 1.0, 0.1, 4.0},
+       {"draw_shape", 0.0, 0.0, 1.0},
+       {"shape_thickness", 0.0, 0.0, 10.0},
+       {"passthrough", 0.0, 0.0, 1.0},
+       count("guides_enabled", 1.0, 0.0, 1.0),
+       count("color_measure", 0.0, 0.0, 4.0),
+       count("color_gradient", 1.0, 1.0, 2.0),
+       {"color_low_threshold", 0.0, 0.0, 1.0},
+       {"color_high_threshold", 1.0, 0.0, 2.0}});
 }
 
 }  // namespace voxflame::core

@@ -651,12 +651,14 @@ class FlameReader {
         lose("colour shift of " + withoutCopyMark(name));
         warn(context + " has " + name + " with a colour shift, which voxflame does not apply");
       }
-      // pixel_flow's, truchet's, plane_wf's, spirograph3D's and recurrenceplot's direct colour (the
-      // point's colour set by the variation) is not applied either.
+      // pixel_flow's, truchet's, plane_wf's, spirograph3D's, inversion's and recurrenceplot's direct
+      // colour (the point's colour set by the variation) is not applied either.
       if ((info->name == "pixel_flow" && term.params.at(4) != 0.0) ||
           (info->name == "truchet" && std::round(term.params.at(6)) == 1.0) ||
           (info->name == "plane_wf" && std::round(term.params.at(3)) == 1.0) ||
           (info->name == "spirograph3D" && std::round(term.params.at(7)) != 0.0) ||
+          (info->name == "inversion" && std::trunc(term.params.at(21)) >= 1.0 &&
+           std::trunc(term.params.at(21)) <= 4.0) ||
           (info->name == "recurrenceplot" && std::trunc(term.params.at(5)) != 0.0)) {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
