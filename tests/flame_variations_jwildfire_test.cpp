@@ -405,6 +405,22 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kHighSeed,
        {0.5006896551724139, -1.1682758620689657, 0.4}},
+      // minkowskope: p outside the band (the main point, at the defaults and with other waves), −p inside it.
+      {"minkowskope", {}, kPoint, 0.8, kHighSeed, {0.24, -0.5599999999999999, 0.4}},
+      {"minkowskope", {0.2, 3.1, -2.5, 0.9, 1.4, 0.3}, kPoint, 0.8, kHighSeed, {0.24, -0.5599999999999999, 0.4}},
+      {"minkowskope",
+       {0.2, 3.1, -2.5, 0.9, 1.4, 0.3},
+       {0.45, 0.1, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.36000000000000004, -0.08000000000000002, 0.4}},
+      {"minkowskope",
+       {0.1, -1.1, 6.8, 2.2, -3.7, -0.03},
+       {-0.6, 0.2, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.48, 0.16000000000000003, 0.4}},
+      {"minkowskope", {}, {0.3, 0.1, 0.5}, 0.8, kHighSeed, {-0.24, -0.08000000000000002, 0.4}},
   };
   return cases;
 }
@@ -442,6 +458,10 @@ TEST(FlameVariationJwildfire, ImportReadsTheParametersAndReportsLostColour) {
   const ImportedFlame symmetry = importXform(
       R"(linear="1" post_point_symmetry_wf="1" post_point_symmetry_wf_colorshift="0.1" coefs="1 0 0 1 0 0")");
   EXPECT_EQ(symmetry.leftOut, (std::vector<std::string>{"colour shift of post_point_symmetry_wf"}));
+  // The Apophysis plugin's names for minkowskope's parameters.
+  const ImportedFlame scope = importXform(R"(minkowskope="1" mskope_separation="0.7" coefs="1 0 0 1 0 0")");
+  ASSERT_TRUE(scope.leftOut.empty()) << scope.leftOut.front();
+  EXPECT_EQ(scope.genome.xforms.at(0).variations.at(0).params.at(0), 0.7);
   const ImportedFlame mirror =
       importXform(R"(linear="1" post_mirror_wf="1" post_mirror_wf_xcolorshift="0.68" coefs="1 0 0 1 0 0")");
   EXPECT_EQ(mirror.leftOut, (std::vector<std::string>{"colour shift of post_mirror_wf"}));

@@ -527,6 +527,57 @@ VOXFLAME_VARIATION_TARGETS void recurrencePlot(const VariationInput& in, double*
   }
 }
 
+// ---- minkowskope ---------------------------------------------------------------------------------------------------
+
+// Minkowski's question-mark function ?(x) on [0, 1], by 20 steps down the Stern–Brocot tree (dark-beam's, as JWildfire
+// has it: 2⁻²⁰ added at the end).
+inline double minkowskiQuestionMark(double x) {
+  double p = 0.0, q = 1.0, r = 1.0, s = 1.0, y = 0.0, d = 1.0;
+  for (int step = 0; step < 20; ++step) {
+    d *= 0.5;
+    const double m = p + r, n = q + s;
+    if (x < m / n) {
+      r = m;
+      s = n;
+    } else {
+      y += d;
+      p = m;
+      q = n;
+    }
+  }
+  return y + d;
+}
+
+// A sine-like wave of period 4 made of ?(x) on a triangle wave (less x with altWave), its sign as JWildfire's.
+inline double minkowskiSine(double x, bool altWave) {
+  const double lp = std::fmod(std::abs(x), 4.0);
+  double p = std::fmod(std::abs(x), 2.0);
+  if (p > 1.0) p = 2.0 - p;
+  const double mink = altWave ? minkowskiQuestionMark(p) - p : minkowskiQuestionMark(p);
+  return (lp < 2.0) != (x > 0.0) ? mink : -mink;
+}
+
+// minkowskope (dark-beam's tweak of the oscilloscope plugin, as JWildfire has it): −p inside the band |y| ≤ t and p
+// outside it, t = amplitude·e^(−damping |x|)·M(frequencyx·x/2 − 1 + perturbation·M(frequencyy·y/2)) + separation, M
+// the Minkowski wave above (its alternative form when frequencyx ≤ 0; no damping where |damping| ≤ 10⁻⁸).
+VOXFLAME_VARIATION_TARGETS void minkowskope(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                            double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double separation = P[0], frequencyX = P[1], frequencyY = P[2], amplitude = P[3], perturbation = P[4],
+               damping = P[5];
+  const double tpf = 0.5 * frequencyX, tpf2 = 0.5 * frequencyY;
+  const bool noDamping = std::abs(damping) <= kJwfEpsilon, altWave = frequencyX <= 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double pt = perturbation * minkowskiSine(tpf2 * y[i], altWave);
+    const double wave = minkowskiSine(tpf * x[i] + pt - 1.0, altWave);
+    const double t = amplitude * (noDamping ? 1.0 : std::exp(-std::abs(x[i]) * damping)) * wave + separation;
+    const double sign = std::abs(y[i]) <= t ? -w : w;
+    outX[i] += sign * x[i];
+    outY[i] += sign * y[i];
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addJwildfireShapeVariations(std::vector<VariationInfo>& catalogue) {
@@ -664,6 +715,17 @@ void variation_kernels::addJwildfireShapeVariations(std::vector<VariationInfo>& 
        {"angle", 0.0, -kPi, kPi},
        {"offset", 0.0, 0.0, 1.0},
        {"tolerance", 5.0, 0.0, 50.0}});
+  add("minkowskope",
+      "−p where |y| ≤ t, else p; z; t = amplitude e^(−damping |x|) M(frequencyx x/2 − 1 + perturbation M(frequencyy "
+      "y/2)) + separation, M a wave of Minkowski's question-mark function (dark-beam's, as JWildfire has it; files may "
+      "write the parameters as mskope_separation, …)",
+      k2D, kFixed, &minkowskope,
+      {{"separation", 0.5, 0.0, 2.0},
+       {"frequencyx", -2.0, -10.0, 10.0},
+       {"frequencyy", 2.0, -10.0, 10.0},
+       {"amplitude", 0.5, -2.0, 2.0},
+       {"perturbation", 1.0, -2.0, 2.0},
+       {"damping", 0.0, -1.0, 1.0}});
 }
 
 }  // namespace voxflame::core

@@ -112,6 +112,7 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
   if (info.name == "auger" && param == "strength") names.push_back(termAttribute + "_weight");
   if (info.name == "octagon" && param.size() == 1) names.push_back("octa_" + param);
   if (info.name == "pixel_flow") names.push_back(param);
+  if (info.name == "minkowskope") names.push_back("mskope_" + param);  // the Apophysis plugin's names
   if (info.name == "crop_trapezoid" && param == "base_sup") names.push_back(termAttribute + "_Base Sup.");
   if (info.name == "crop_trapezoid" && param == "base_inf") names.push_back(termAttribute + "_Base Inf.");
   if (info.name == "mobius" && param.size() == 4) {
