@@ -619,6 +619,77 @@ VOXFLAME_VARIATION_TARGETS void inversion(const VariationInput& in, double* __re
   }
 }
 
+// ---- maurer_rose -------------------------------------------------------------------------------------------------
+
+// maurer_rose (CozyG's, as JWildfire has it): the Maurer rose of the rose r = cos(k θ) + c, k = kn/kd: chords between
+// the rose's points line_offset_degrees apart (line_count of them). The point's angle φ picks t = cycles·φ, cycles =
+// line_count·line_offset_degrees/360, and its chord (the step ⌊t/step⌋); then by Ψ₁ the point goes to a random place
+// on that chord (show_lines), to one of its two ends (show_points) or onto the rose at t (show_curve), the shares in
+// proportion to those three, each thickened (line_thickness, point_thickness, curve_thickness, in hundredths). Ψ₁…Ψ₄
+// are drawn for every point: the choice, then the place along the chord (or the end's offset radius, or the curve's x
+// offset), then the offsets.
+VOXFLAME_VARIATION_TARGETS void maurerRose(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double k = P[0] / P[1], c = P[2];
+  const double step = kTwoPi * (P[3] / 360.0);
+  const double cycles = P[4] * step / kTwoPi;
+  const double showSum = P[5] + P[6] + P[7];
+  const double lineShare = P[5] / showSum, pointShare = P[6] / showSum;
+  const double lineThreshold = lineShare, pointThreshold = lineShare + pointShare,
+               pointHalfThreshold = lineShare + pointShare / 2.0;
+  const double lineThickness = P[8] / 100.0, pointThickness = P[9] / 100.0, curveThickness = P[10] / 100.0;
+  const auto rose = [&](double theta, double& px, double& py) {
+    const double r = std::cos(k * theta) + c;
+    px = r * std::cos(theta);
+    py = r * std::sin(theta);
+  };
+  for (std::size_t i = 0; i < n; ++i) {
+    const double psi1 = laneUniform(rnd[i]), psi2 = laneUniform(rnd[i]), psi3 = laneUniform(rnd[i]),
+                 psi4 = laneUniform(rnd[i]);
+    const double t = cycles * std::atan2(y[i], x[i]);
+    const double theta1 = std::floor(t / step) * step, theta2 = theta1 + step;
+    double x1, y1, x2, y2;
+    rose(theta1, x1, y1);
+    rose(theta2, x2, y2);
+    double px, py;
+    if (psi1 < lineThreshold) {
+      // Along the chord by its slope, as JWildfire goes (NaN on an exactly vertical chord, as there).
+      const double dx = x2 - x1, dy = y2 - y1, slope = dy / dx;
+      const double along = psi2 * std::sqrt(dx * dx + dy * dy);
+      double xOffset = along / std::sqrt(1.0 + slope * slope);
+      if (x2 < x1) xOffset = -xOffset;
+      double yOffset = std::abs(slope * xOffset);
+      if (y2 < y1) yOffset = -yOffset;
+      if (lineThickness != 0.0) {
+        xOffset += (psi3 - 0.5) * lineThickness;
+        yOffset += (psi4 - 0.5) * lineThickness;
+      }
+      px = x1 + xOffset;
+      py = y1 + yOffset;
+    } else if (psi1 <= pointThreshold) {
+      double xOffset = 0.0, yOffset = 0.0;
+      if (pointThickness != 0.0) {
+        const double radius = psi2 * pointThickness, angle = psi3 * kTwoPi;
+        xOffset = radius * std::cos(angle);
+        yOffset = radius * std::sin(angle);
+      }
+      const bool first = psi1 <= pointHalfThreshold;
+      px = (first ? x1 : x2) + xOffset;
+      py = (first ? y1 : y2) + yOffset;
+    } else {
+      rose(t, px, py);
+      if (curveThickness != 0.0) {
+        px += (psi2 - 0.5) * curveThickness;
+        py += (psi3 - 0.5) * curveThickness;
+      }
+    }
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -789,6 +860,22 @@ void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& c
        count("color_gradient", 1.0, 1.0, 2.0),
        {"color_low_threshold", 0.0, 0.0, 1.0},
        {"color_high_threshold", 1.0, 0.0, 2.0}});
+  add("maurer_rose",
+      "a random point of the Maurer rose of r = cos(k θ) + c (k = kn/kd): on the chord between the rose's points at "
+      "θ₁ = ⌊t/s⌋ s and θ₁ + s (show_lines), at one of its ends (show_points) or on the rose at t (show_curve), s = "
+      "line_offset_degrees, t = φ·line_count·s/2π, each thickened; z (CozyG's, as JWildfire has it)",
+      k2D, kRandom, &maurerRose,
+      {{"kn", 2.0, 1.0, 20.0},
+       {"kd", 1.0, 1.0, 20.0},
+       {"c", 0.0, -1.0, 1.0},
+       {"line_offset_degrees", 71.0, 0.0, 360.0},
+       {"line_count", 360.0, 1.0, 1000.0},
+       {"show_lines", 1.0, 0.0, 1.0},
+       {"show_points", 0.0, 0.0, 1.0},
+       {"show_curve", 0.05, 0.0, 1.0},
+       {"line_thickness", 0.5, 0.0, 5.0},
+       {"point_thickness", 3.0, 0.0, 10.0},
+       {"curve_thickness", 1.0, 0.0, 5.0}});
 }
 
 }  // namespace voxflame::core
