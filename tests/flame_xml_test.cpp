@@ -239,7 +239,7 @@ TEST(FlameXml, HandWrittenFileWithEveryElement) {
       "<xform weight=\"0.6\" color=\"0.25\" color_speed=\"0.3\" opacity=\"0.75\" spherical=\"0.8\" linear=\"0.2\" "
       "coefs=\"1 2 3 4 5 6\" post=\"0.9 0.1 -0.1 0.9 0.05 -0.05\" chaos=\"1 0\"/>\n"
       // The old symmetry attribute: color_speed = (1 − symmetry) / 2; an unknown variation and its parameter.
-      "<xform weight=\"0.4\" color=\"0.75\" symmetry=\"0.5\" julia=\"1\" bwraps7=\"0.3\" bwraps7_cellsize=\"2\" "
+      "<xform weight=\"0.4\" color=\"0.75\" symmetry=\"0.5\" julia=\"1\" text_wf=\"0.3\" text_wf_font_size=\"2\" "
       "coefs=\"0.5 0 0 0.5 0 0\" plotmode=\"off\"/>\n"
       "<finalxform color=\"0.5\" color_speed=\"0.2\" swirl=\"0.7\" coefs=\"1 0 0 1 0.1 0.2\"/>\n";
   const std::string extra = "<symmetry kind=\"-3\"/>\n" + hexPaletteBlock();
@@ -275,7 +275,7 @@ TEST(FlameXml, HandWrittenFileWithEveryElement) {
   const FlameXform& second = flame.genome.xforms[1];
   EXPECT_DOUBLE_EQ(second.colorSpeed, 0.25);
   EXPECT_EQ(second.opacity, 0.0);           // plotmode="off"
-  ASSERT_EQ(second.variations.size(), 1u);  // bwraps7 left out
+  ASSERT_EQ(second.variations.size(), 1u);  // text_wf left out
   EXPECT_EQ(second.variations[0].name, "julia");
   ASSERT_TRUE(flame.genome.hasFinal);
   EXPECT_DOUBLE_EQ(flame.genome.finalXform.colorSpeed, 0.2);
@@ -300,11 +300,11 @@ TEST(FlameXml, HandWrittenFileWithEveryElement) {
   EXPECT_EQ(first.xaos, (std::vector<double>{1.0, 0.0}));
   EXPECT_TRUE(flame.genome.xforms[1].xaos.empty());
   // The unknown variation by name (not its parameter); it is the one thing left out.
-  EXPECT_TRUE(hasWarningContaining(flame, "bwraps7"));
-  EXPECT_FALSE(hasWarningContaining(flame, "cellsize"));
+  EXPECT_TRUE(hasWarningContaining(flame, "text_wf"));
+  EXPECT_FALSE(hasWarningContaining(flame, "font_size"));
   EXPECT_FALSE(hasWarningContaining(flame, "xaos"));
-  EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"variation bwraps7"}));
-  // bwraps7 (0.3) is less than julia (1): no warning that transform 1 lost most of its weight.
+  EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"variation text_wf"}));
+  // text_wf (0.3) is less than julia (1): no warning that transform 1 lost most of its weight.
   EXPECT_FALSE(hasWarningContaining(flame, "look different"));
   const std::string mostlyUnknown =
       "<xform weight=\"1\" julia=\"0.1\" zzunknownvariation=\"0.9\" coefs=\"0.5 0 0 0.5 0 0\"/>";
@@ -396,9 +396,11 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
     ASSERT_EQ(term.params.size(), expected.size()) << info.name;
     for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_DOUBLE_EQ(term.params[i], expected[i]) << info.name;
     // Their colour shifts, set here, are the parameters not applied.
-    if (info.name == "falloff2" || info.name == "axis_symmetry_wf")
+    if (info.name == "falloff2" || info.name == "axis_symmetry_wf" || info.name == "point_symmetry_wf" ||
+        info.name == "mirror_wf")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour shift of " + info.name}));
-    else if (info.name == "truchet")
+    else if (info.name == "truchet" || info.name == "recurrenceplot" || info.name == "spirograph3D" ||
+             info.name == "inversion")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"direct colour of " + info.name}));
     else if (info.name == "smartcrop")  // static −1 reads the transform's state, which is not kept
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"static or cropmode 2 of smartcrop"}));

@@ -38,9 +38,11 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addFractorium2DVariationsB(c);
   variation_kernels::addFractorium2DVariationsC(c);
   variation_kernels::addFractorium2DVariationsD(c);
+  variation_kernels::addJwildfireShapeVariations(c);
+  variation_kernels::addJwildfireMoreVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
-        info.name == "flatten" || info.name == "inflateZ_3")
+        info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")
       info.mapsXY = false;
   return c;
 }

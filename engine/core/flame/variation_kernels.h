@@ -164,6 +164,8 @@ void addFractorium2DVariationsA(std::vector<VariationInfo>& catalogue);
 void addFractorium2DVariationsB(std::vector<VariationInfo>& catalogue);
 void addFractorium2DVariationsC(std::vector<VariationInfo>& catalogue);
 void addFractorium2DVariationsD(std::vector<VariationInfo>& catalogue);
+void addJwildfireShapeVariations(std::vector<VariationInfo>& catalogue);
+void addJwildfireMoreVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -115,6 +115,7 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
   if (info.name == "octagon" && param.size() == 1) names.push_back("octa_" + param);
   if (info.name == "pixel_flow") names.push_back(param);
   if (info.name == "q_ode") names.push_back(termAttribute + param);
+  if (info.name == "minkowskope") names.push_back("mskope_" + param);  // the Apophysis plugin's names
   if (info.name == "crop_trapezoid" && param == "base_sup") names.push_back(termAttribute + "_Base Sup.");
   if (info.name == "crop_trapezoid" && param == "base_inf") names.push_back(termAttribute + "_Base Inf.");
   if (info.name == "mobius" && param.size() == 4) {
@@ -259,6 +260,17 @@ std::string withoutCopyMark(std::string_view name) {
 // writes auger's half_scale (scale / 2). They carry nothing of their own.
 bool isDerivedParam(const VariationInfo& info, std::string_view param) {
   return info.name == "auger" && param == "half_scale";
+}
+
+// JWildfire writes a variation's resources (file names, references) beside its parameters: plane_wf's
+// colour and displacement images and recurrenceplot's reference document. voxflame reads no images:
+// an empty name (no image) loses nothing, a named image is left out.
+bool isJwildfireResource(const VariationInfo& info, std::string_view param) {
+  return (info.name == "plane_wf" && (param == "colormap_filename" || param == "displ_map_filename")) ||
+         (info.name == "recurrenceplot" && param == "func_id_reference");
+}
+bool jwildfireResourceMatters(const VariationInfo& info, std::string_view value) {
+  return info.name == "plane_wf" && !value.empty();
 }
 
 // JWildfire stores a motion curve beside any variation parameter (`<variation>_<parameter>_enabled`,
@@ -639,18 +651,27 @@ class FlameReader {
           consumed.insert(param->second.first);
           break;
         }
-      // falloff2's colour shift is not applied (variations_apophysis.cpp), nor axis_symmetry_wf's.
+      // falloff2's colour shift is not applied (variations_apophysis.cpp), nor point_symmetry_wf's,
+      // mirror_wf's or axis_symmetry_wf's.
       const bool shiftsColour =
           (info->name == "falloff2" && term.params.at(5) != 0.0) ||
+          (info->name == "point_symmetry_wf" && term.params.at(3) != 0.0) ||
+          (info->name == "mirror_wf" &&
+           std::any_of(term.params.begin() + 8, term.params.end(), [](double v) { return v != 0.0; })) ||
           (info->name == "axis_symmetry_wf" &&
            std::any_of(term.params.begin() + 5, term.params.end(), [](double v) { return v != 0.0; }));
       if (shiftsColour) {
         lose("colour shift of " + withoutCopyMark(name));
         warn(context + " has " + name + " with a colour shift, which voxflame does not apply");
       }
-      // truchet's direct colour (JWildfire's: the point's colour set by the variation) is not
-      // applied either.
-      if (info->name == "truchet" && std::round(term.params.at(6)) == 1.0) {
+      // truchet's, plane_wf's, spirograph3D's, inversion's and recurrenceplot's direct colour (the
+      // point's colour set by the variation, JWildfire's way) is not applied either.
+      if ((info->name == "truchet" && std::round(term.params.at(6)) == 1.0) ||
+          (info->name == "plane_wf" && std::round(term.params.at(3)) == 1.0) ||
+          (info->name == "spirograph3D" && std::round(term.params.at(7)) != 0.0) ||
+          (info->name == "inversion" && std::trunc(term.params.at(21)) >= 1.0 &&
+           std::trunc(term.params.at(21)) <= 4.0) ||
+          (info->name == "recurrenceplot" && std::trunc(term.params.at(5)) != 0.0)) {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
       }
@@ -691,6 +712,13 @@ class FlameReader {
       if (!owner.empty()) {
         const VariationInfo* info = variationNamed(withoutCopyMark(owner));
         const std::string param = name.substr(owner.size() + 1);
+        if (info && isJwildfireResource(*info, param)) {
+          if (jwildfireResourceMatters(*info, attribute.value())) {
+            lose("image " + withoutCopyMark(owner) + "_" + param);
+            warn(context + " gives '" + name + "' an image, which voxflame does not read; it was left out");
+          }
+          continue;
+        }
         if (info && info->paramIndex(param) < 0 && !isJwildfireParamCurve(param) && !isDerivedParam(*info, param)) {
           lose("parameter " + withoutCopyMark(owner) + "_" + param);
           warn(context + " sets '" + name + "', which voxflame's '" + info->name + "' does not have; it was left out");
