@@ -13,10 +13,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/chaos_game.h"
 #include "core/error.h"
 #include "core/flame/variations.h"
 #include "core/flame/xml.h"
 #include "core/keyframes.h"
+#include "core/random.h"
 #include "core/scene.h"
 #include "core/scene_io.h"
 
@@ -305,4 +307,118 @@ TEST(FlameImport, RealJwildfireLayeredFilesImportEveryLayer) {
   const Scene scene = sceneFromImportedFlame(flame, defaultScene());
   EXPECT_EQ(scene.layers.size(), 3u);
   EXPECT_DOUBLE_EQ(scene.layers[1].weight, 0.4);
+}
+
+// JWildfire's weighting fields: the variation weights of a transform scale per point by
+// 1 + amount · noise(p), p the point after the affine map (or before it: input position).
+TEST(FlameImport, WeightingFieldScalesVariationWeightsPerPoint) {
+  for (const WeightFieldInput input : {WeightFieldInput::Affine, WeightFieldInput::Position}) {
+    PatternLayer layer;
+    layer.kind = PatternKind::Flame;
+    FlameXform x;
+    x.affine.m = {0.5, 0.1, 0, 0.2, -0.1, 0.5, 0, 0.1, 0, 0, 0.5, 0.3};
+    x.variations = {{"linear", 1.0, {}}, {"spherical", 0.5, {}}};
+    x.fieldKind = WeightFieldKind::Fractal;
+    x.fieldInput = input;
+    x.fieldAmount = 0.8;
+    x.fieldFrequency = 1.7;
+    x.fieldSeed = 42;
+    layer.flame.xforms = {x};
+    const ChaosGame game(layer, "field");
+    FlameXform plain = x;
+    plain.fieldKind = WeightFieldKind::None;
+    layer.flame.xforms = {plain};
+    const ChaosGame without(layer, "no field");
+    constexpr std::size_t kLanes = 16;
+    ChaosLanes lanes, plainLanes;
+    lanes.resize(kLanes);
+    SplitMix64 rng(3);
+    for (std::size_t i = 0; i < kLanes; ++i) game.seedLane(lanes, i, rng);
+    plainLanes = lanes;
+    const std::vector<double> px = lanes.x, py = lanes.y, pz = lanes.z;
+    std::vector<double> ox(kLanes), oy(kLanes), oz(kLanes), oc(kLanes), qx(kLanes), qy(kLanes), qz(kLanes), qc(kLanes);
+    game.step(lanes, ox.data(), oy.data(), oz.data(), oc.data(), kLanes);
+    without.step(plainLanes, qx.data(), qy.data(), qz.data(), qc.data(), kLanes);
+    double largest = 0.0;
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      // Both variations scale alike: the step is the plain step's variation sum times the factor.
+      const glm::dvec3 p(px[i], py[i], pz[i]);
+      const glm::dvec3 t = x.affine.apply(p);
+      const glm::dvec3 at = input == WeightFieldInput::Affine ? t : p;
+      const double factor = 1.0 + 0.8 * weightFieldNoise(x, at.x, at.y, at.z);
+      EXPECT_NEAR(ox[i], factor * qx[i], 1e-9) << i;
+      EXPECT_NEAR(oy[i], factor * qy[i], 1e-9) << i;
+      EXPECT_NEAR(oz[i], factor * qz[i], 1e-9) << i;
+      largest = std::max(largest, std::abs(factor - 1.0));
+    }
+    EXPECT_GT(largest, 0.05) << "the noise hardly moved: the test shows nothing";
+  }
+}
+
+TEST(FlameImport, JwildfireWeightingFieldsAreRead) {
+  const ImportedFlame flame = importFlat(flameFile(
+      "<xform weight=\"1\" julian=\"1\" coefs=\"0.5 0 0 0.5 0 0\" wfield_type=\"PERLIN_FRACTAL_NOISE\" "
+      "wfield_input=\"AFFINE\" wfield_color_intensity=\"0.3\" wfield_var_amount_intensity=\"0.5\" "
+      "wfield_var_param1_intensity=\"0.0\" wfield_jitter_intensity=\"0.0\" wfield_noise_seed=\"7\" "
+      "wfield_noise_frequency=\"2.5\" wfield_fract_noise_fract_type=\"BILLOW\" wfield_fract_noise_gain=\"0.4\" "
+      "wfield_fract_noise_lacunarity=\"2.2\" wfield_fract_noise_octaves=\"4\"/>\n"
+      "<xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.5 0\" wfield_type=\"CELLULAR_NOISE\" "
+      "wfield_var_amount_intensity=\"1\"/>\n"
+      "<xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.5 0\" wfield_type=\"SIMPLEX_NOISE\" "
+      "wfield_noise_frequency=\"fast\"/>\n"
+      "<xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.5 0\" wfield_type=\"7\" wfield_input=\"1\" "
+      "wfield_var_amount=\"0.2\" wfield_scale=\"1.5\" wfield_octaves=\"3\"/>\n"));
+  const FlameXform& x = flame.genome.xforms[0];
+  EXPECT_EQ(x.fieldKind, WeightFieldKind::Fractal);
+  EXPECT_EQ(x.fieldInput, WeightFieldInput::Affine);
+  EXPECT_EQ(x.fieldFractal, WeightFieldFractal::Billow);
+  EXPECT_DOUBLE_EQ(x.fieldAmount, 0.5);
+  EXPECT_DOUBLE_EQ(x.fieldFrequency, 2.5);
+  EXPECT_EQ(x.fieldSeed, 7);
+  EXPECT_EQ(x.fieldOctaves, 4);
+  EXPECT_DOUBLE_EQ(x.fieldGain, 0.4);
+  EXPECT_DOUBLE_EQ(x.fieldLacunarity, 2.2);
+  EXPECT_EQ(flame.genome.xforms[1].fieldKind, WeightFieldKind::None);  // cellular: not drawn
+  EXPECT_EQ(flame.genome.xforms[2].fieldKind, WeightFieldKind::None);  // its frequency is not a number
+  // JWildfire's GPU export: ordinals and its own names (7: SIMPLEX_FRACTAL_NOISE, input 1: position).
+  const FlameXform& gpu = flame.genome.xforms[3];
+  EXPECT_EQ(gpu.fieldKind, WeightFieldKind::Fractal);
+  EXPECT_EQ(gpu.fieldInput, WeightFieldInput::Position);
+  EXPECT_DOUBLE_EQ(gpu.fieldAmount, 0.2);
+  EXPECT_DOUBLE_EQ(gpu.fieldFrequency, 1.5);
+  EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"JWildfire weighting field", "JWildfire weighting field colour"}));
+  EXPECT_TRUE(hasWarningContaining(flame, "CELLULAR_NOISE) of a kind voxflame does not draw")) << allWarnings(flame);
+  EXPECT_TRUE(hasWarningContaining(flame, "wfield_noise_frequency=\"fast\"")) << allWarnings(flame);
+  EXPECT_TRUE(hasWarningContaining(flame, "also scales its colour")) << allWarnings(flame);
+  EXPECT_TRUE(hasWarningContaining(flame, "PERLIN_FRACTAL_NOISE, SIMPLEX_FRACTAL_NOISE) scale the variation weights"))
+      << allWarnings(flame);
+  // The preset keeps the field and loads it back; a transform without one writes no field.
+  const Scene scene = sceneFromImportedFlame(flame, defaultScene());
+  const std::string saved = sceneToJson(scene);
+  const Scene back = sceneFromJson(saved, "field.json");
+  EXPECT_EQ(back.layers[0].flame.xforms[0], scene.layers[0].flame.xforms[0]);
+  EXPECT_EQ(sceneToJson(back), saved);
+  const nlohmann::json document = nlohmann::json::parse(saved);
+  EXPECT_EQ(document["layers"][0]["flame"]["xforms"][0]["field"]["kind"], "fractal");
+  EXPECT_FALSE(document["layers"][0]["flame"]["xforms"][1].contains("field"));
+}
+
+// The one real file with a weighting field: JWildfire's GPU-renderer export (a simplex fractal
+// field read at the point's position, which also scales colour and jitters the point).
+TEST(FlameImport, RealWeightingFieldFileImportsItsField) {
+  const std::filesystem::path file =
+      std::filesystem::path(VOXFLAME_TEST_FLAMES) / "thargor6__JWildfire__selftest.flame";
+  if (!std::filesystem::exists(file)) GTEST_SKIP() << file << " is not here";
+  const ImportedFlame flame = loadFlameFile(file).flame;
+  const auto withField = std::find_if(flame.genome.xforms.begin(), flame.genome.xforms.end(),
+                                      [](const FlameXform& x) { return x.hasWeightField(); });
+  ASSERT_NE(withField, flame.genome.xforms.end()) << allWarnings(flame);
+  EXPECT_EQ(withField->fieldKind, WeightFieldKind::Fractal);
+  EXPECT_EQ(withField->fieldInput, WeightFieldInput::Position);
+  EXPECT_NEAR(withField->fieldAmount, 0.21416904132907888, 1e-15);
+  EXPECT_DOUBLE_EQ(withField->fieldFrequency, 1.468);
+  EXPECT_EQ(withField->fieldOctaves, 3);
+  EXPECT_TRUE(std::count(flame.leftOut.begin(), flame.leftOut.end(), "JWildfire weighting field colour") == 1 &&
+              std::count(flame.leftOut.begin(), flame.leftOut.end(), "JWildfire weighting field jitter") == 1)
+      << allWarnings(flame);
 }

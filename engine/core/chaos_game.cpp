@@ -169,6 +169,7 @@ VOXFLAME_CHAOS_TARGETS void emitPoints(const double* x, const double* y, const d
 
 void ChaosLanes::resize(std::size_t lanes) {
   for (auto* v : {&x, &y, &z, &w, &color, &tx, &ty, &tz, &ox, &oy, &oz, &sx, &sy, &sz}) v->assign(lanes, 0.0);
+  field.assign(lanes, 1.0);
   random.assign(lanes, 1u);
   groupRandom.assign(lanes, 1u);
   visible.assign(lanes, 1);
@@ -185,6 +186,13 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
   c.color = xform.color;
   c.colorSpeed = xform.colorSpeed;
   c.opacity = xform.opacity;
+  if (xform.hasWeightField()) {
+    c.hasField = true;
+    c.fieldFromPosition = xform.fieldInput == WeightFieldInput::Position;
+    c.field = xform;
+    c.field.variations.clear();
+    c.field.xaos.clear();
+  }
   for (const VariationStage stage : {VariationStage::Pre, VariationStage::Normal, VariationStage::Post})
     for (const VariationTerm& term : xform.variations) {
       if (term.weight == 0.0 || variationStage(term.name) != stage) continue;
@@ -276,6 +284,20 @@ void combineStage(double* __restrict px, double* __restrict py, double* __restri
 
 }  // namespace
 
+void ChaosGame::fillField(const Compiled& xform, const std::uint32_t* group, std::size_t count, const double* x,
+                          const double* y, const double* z, ChaosLanes& lanes) {
+  double* field = lanes.field.data();
+  const double amount = xform.field.fieldAmount;
+  for (std::size_t j = 0; j < count; ++j) {
+    const std::uint32_t i = group[j];
+    const double n = xform.fieldFromPosition ? weightFieldNoise(xform.field, x[i], y[i], z[i])
+                                             : weightFieldNoise(xform.field, lanes.tx[j], lanes.ty[j], lanes.tz[j]);
+    field[j] = 1.0 + amount * n;
+  }
+  // The lanes applyGroup rounds the group up to.
+  for (std::size_t j = count; j < std::min((count + 3) & ~std::size_t{3}, lanes.size()); ++j) field[j] = 1.0;
+}
+
 void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const {
   // Whole vectors only: the lanes past the group (to the next multiple of 4) are worked on too and
   // never read back, so no lane falls to a loop's scalar tail, where a sin or atan2 costs four
@@ -293,6 +315,14 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   double* __restrict sz = lanes.sz.data();
   const auto clear = [&](double* a, double* b, double* c) {
     for (std::size_t j = 0; j < count; ++j) a[j] = b[j] = c[j] = 0.0;
+  };
+  const double* __restrict field = lanes.field.data();
+  const auto scaleByField = [&](double* a, double* b, double* c) {
+    for (std::size_t j = 0; j < count; ++j) {
+      a[j] *= field[j];
+      b[j] *= field[j];
+      c[j] *= field[j];
+    }
   };
   VariationInput in;
   in.random = lanes.groupRandom.data();
@@ -315,6 +345,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   for (; k < xform.terms.size() && xform.terms[k].stage == VariationStage::Pre; ++k) {
     clear(ox, oy, oz);
     run(xform.terms[k], tx, ty, tz, ox, oy, oz);
+    if (xform.hasField) scaleByField(ox, oy, oz);
     combineStage(tx, ty, tz, ox, oy, oz, xform.terms[k].mapsXY, xform.terms[k].mapsZ, xform.terms[k].additive, count);
     if (xform.terms[k].flattens)
       for (std::size_t j = 0; j < count; ++j) tz[j] = 0.0;
@@ -340,7 +371,18 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
         oz[j] = all ? 0.0 : oz[j];
       }
     }
-    run(xform.terms[k], tx, ty, tz, ox, oy, oz);
+    if (xform.hasField) {
+      // The term's result scaled per lane (variations are linear in their weight), then summed.
+      clear(sx, sy, sz);
+      run(xform.terms[k], tx, ty, tz, sx, sy, sz);
+      for (std::size_t j = 0; j < count; ++j) {
+        ox[j] += field[j] * sx[j];
+        oy[j] += field[j] * sy[j];
+        oz[j] += field[j] * sz[j];
+      }
+    } else {
+      run(xform.terms[k], tx, ty, tz, ox, oy, oz);
+    }
     flatten = flatten || xform.terms[k].flattens;
   }
   if (flatten)
@@ -349,6 +391,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   for (; k < xform.terms.size(); ++k) {
     clear(sx, sy, sz);
     run(xform.terms[k], ox, oy, oz, sx, sy, sz);
+    if (xform.hasField) scaleByField(sx, sy, sz);
     combineStage(ox, oy, oz, sx, sy, sz, xform.terms[k].mapsXY, xform.terms[k].mapsZ, xform.terms[k].additive, count);
     if (xform.terms[k].flattens)
       for (std::size_t j = 0; j < count; ++j) oz[j] = 0.0;
@@ -403,6 +446,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     const std::uint32_t* group = order + first;
     gatherAffine(group, n, x, y, z, random, xf.affine.data(), lanes.tx.data(), lanes.ty.data(), lanes.tz.data(),
                  lanes.groupRandom.data());
+    if (xf.hasField) fillField(xf, group, n, x, y, z, lanes);
     applyGroup(xf, lanes, n);
     scatterGroup(group, n, lanes.ox.data(), lanes.oy.data(), lanes.oz.data(), lanes.groupRandom.data(), x, y, z, color,
                  random, visible, 1.0 - xf.colorSpeed, xf.colorSpeed * xf.color, xf.opacity);
@@ -417,6 +461,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
   for (std::size_t i = 0; i < count; ++i) order[i] = static_cast<std::uint32_t>(i);
   gatherAffine(order, count, x, y, z, random, final_.affine.data(), lanes.tx.data(), lanes.ty.data(), lanes.tz.data(),
                lanes.groupRandom.data());
+  if (final_.hasField) fillField(final_, order, count, x, y, z, lanes);
   applyGroup(final_, lanes, count);
   const double keep = 1.0 - final_.colorSpeed, pull = final_.colorSpeed * final_.color;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();

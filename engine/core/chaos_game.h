@@ -36,6 +36,7 @@ struct ChaosLanes {
   std::vector<std::uint32_t> order;
   std::vector<double> tx, ty, tz, ox, oy, oz;
   std::vector<double> sx, sy, sz;  // a post_ term's result (t is still read then)
+  std::vector<double> field;       // 1 + amount · noise: a weighting field's factor of the variation weights
   std::vector<std::uint32_t> groupRandom;
   void resize(std::size_t lanes);
   std::size_t size() const { return x.size(); }
@@ -79,7 +80,14 @@ class ChaosGame {
     std::vector<Term> terms;  // pre_ terms first, then the others, then post_ ones (each in file order)
     bool hasNormalTerms = false;
     double color = 0.0, colorSpeed = 0.5, opacity = 1.0;
+    // A weighting field (flame.h): `field` keeps the transform's field settings (no variations).
+    bool hasField = false;
+    bool fieldFromPosition = false;
+    FlameXform field;
   };
+  // lanes.field for a group: the factor each lane's variation weights take.
+  static void fillField(const Compiled& xform, const std::uint32_t* group, std::size_t count, const double* x,
+                        const double* y, const double* z, ChaosLanes& lanes);
   static Compiled compile(const FlameXform& xform);
   // Runs one compiled transform's affine map, variations and post map on a contiguous group.
   void applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const;

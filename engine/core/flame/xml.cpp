@@ -746,9 +746,110 @@ class FlameReader {
       x.variations.push_back(std::move(term));
       return x.variations.size() - 1;
     };
+    readWeightField(node, context, x);
     readFlam3Motion(node, context, x, isFinal, termFor);
     readJwildfireCurves(node, context, x, isFinal, termFor);
     return x;
+  }
+
+  // JWildfire's weighting field of a transform, as JWildfire writes it (wfield_type="PERLIN_NOISE",
+  // wfield_var_amount_intensity, wfield_noise_frequency, ...) or as its GPU renderer's export
+  // does (wfield_type="6", the type's ordinal; wfield_var_amount, wfield_scale, ...). The noise
+  // kinds become voxflame's (flame.h: simplex noise for JWildfire's FastNoise, the same kind of
+  // field, not the same values); cellular, white and image-map fields, and a field's colour,
+  // jitter and parameter intensities, are left out.
+  void readWeightField(const pugi::xml_node& node, const std::string& context, FlameXform& x) {
+    const pugi::xml_attribute typeAttribute = node.attribute("wfield_type");
+    if (!typeAttribute) return;
+    static constexpr std::array<std::string_view, 12> kTypes = {
+        "NONE",         "CELLULAR_NOISE",       "CUBIC_NOISE",   "CUBIC_FRACTAL_NOISE",
+        "PERLIN_NOISE", "PERLIN_FRACTAL_NOISE", "SIMPLEX_NOISE", "SIMPLEX_FRACTAL_NOISE",
+        "VALUE_NOISE",  "VALUE_FRACTAL_NOISE",  "WHITE_NOISE",   "IMAGE_MAP"};
+    std::string type = trimmed(typeAttribute.value());
+    if (const auto ordinal = parseNumber(type);
+        ordinal && *ordinal >= 0.0 && *ordinal < static_cast<double>(kTypes.size()) && *ordinal == std::floor(*ordinal))
+      type = kTypes[static_cast<std::size_t>(*ordinal)];
+    if (type == "NONE") return;
+    const auto leaveOut = [&](const std::string& why) {
+      lose("JWildfire weighting field");
+      warn(context + " has a JWildfire weighting field (" + type.substr(0, 40) + ") " + why + "; it was left out");
+    };
+    if (std::find(kTypes.begin(), kTypes.end(), type) == kTypes.end())
+      return leaveOut("of a type JWildfire does not have");
+    if (type == "CELLULAR_NOISE" || type == "WHITE_NOISE" || type == "IMAGE_MAP")
+      return leaveOut("of a kind voxflame does not draw");
+    // A number under either of its names; nullopt (after leaveOut) when it is not one.
+    bool bad = false;
+    const auto number = [&](std::initializer_list<const char*> names, double fallback, double low,
+                            double high) -> double {
+      for (const char* name : names) {
+        const pugi::xml_attribute attribute = node.attribute(name);
+        if (!attribute) continue;
+        const auto value = parseNumber(attribute.value());
+        if (!value || !std::isfinite(*value) || *value < low || *value > high) {
+          if (!bad)
+            leaveOut(std::string("whose ") + name + "=\"" + std::string(attribute.value()).substr(0, 40) +
+                     "\" is not a number from " + formatted(low) + " to " + formatted(high));
+          bad = true;
+          return fallback;
+        }
+        return *value;
+      }
+      return fallback;
+    };
+    FlameXform field;
+    field.fieldKind = type.find("FRACTAL") != std::string::npos ? WeightFieldKind::Fractal : WeightFieldKind::Noise;
+    field.fieldAmount = number({"wfield_var_amount_intensity", "wfield_var_amount"}, 0.0, -kFlameCoefficientLimit,
+                               kFlameCoefficientLimit);
+    field.fieldFrequency = number({"wfield_noise_frequency", "wfield_scale"}, 1.0, 0.0, kFlameCoefficientLimit);
+    field.fieldSeed =
+        static_cast<int>(number({"wfield_noise_seed", "wfield_seed"}, 1337.0, -2147483648.0, 2147483647.0));
+    field.fieldOctaves = static_cast<int>(
+        std::lround(number({"wfield_fract_noise_octaves", "wfield_octaves"}, 3.0, 1.0, kMaxWeightFieldOctaves)));
+    field.fieldGain =
+        number({"wfield_fract_noise_gain", "wfield_gain"}, 0.5, -kFlameCoefficientLimit, kFlameCoefficientLimit);
+    field.fieldLacunarity = number({"wfield_fract_noise_lacunarity", "wfield_lacunarity"}, 2.0, -kFlameCoefficientLimit,
+                                   kFlameCoefficientLimit);
+    const std::string input = node.attribute("wfield_input").value();
+    field.fieldInput = input == "POSITION" || input == "1" ? WeightFieldInput::Position : WeightFieldInput::Affine;
+    for (const char* name : {"wfield_fract_noise_fract_type", "wfield_fractal_type"}) {
+      const std::string fractal = node.attribute(name).value();
+      if (fractal == "BILLOW" || fractal == "1") field.fieldFractal = WeightFieldFractal::Billow;
+      if (fractal == "RIGID_MULTI" || fractal == "2") field.fieldFractal = WeightFieldFractal::Rigid;
+    }
+    if (bad) return;
+    // What the field does besides scaling the variations' weights.
+    // (A value that is not a number counts as one that is not 0.)
+    const auto nonZero = [&](std::initializer_list<const char*> names) {
+      return std::any_of(names.begin(), names.end(), [&](const char* name) {
+        const pugi::xml_attribute attribute = node.attribute(name);
+        return attribute && parseNumber(attribute.value()) != std::optional<double>(0.0);
+      });
+    };
+    std::vector<std::string> notKept;
+    if (nonZero({"wfield_color_intensity", "wfield_color_amount"})) notKept.push_back("colour");
+    if (nonZero({"wfield_jitter_intensity", "wfield_jitter_amount"})) notKept.push_back("jitter");
+    if (nonZero({"wfield_var_param1_intensity", "wfield_var_param2_intensity", "wfield_var_param3_intensity",
+                 "wfield_param1_amount", "wfield_param2_amount", "wfield_param3_amount"}))
+      notKept.push_back("variation parameters");
+    std::string also;
+    for (const std::string& what : notKept) {
+      lose("JWildfire weighting field " + what);
+      also += (also.empty() ? "" : ", ") + what;
+    }
+    x.fieldKind = field.fieldKind;
+    x.fieldInput = field.fieldInput;
+    x.fieldFractal = field.fieldFractal;
+    x.fieldAmount = field.fieldAmount;
+    x.fieldFrequency = field.fieldFrequency;
+    x.fieldSeed = field.fieldSeed;
+    x.fieldOctaves = field.fieldOctaves;
+    x.fieldGain = field.fieldGain;
+    x.fieldLacunarity = field.fieldLacunarity;
+    weightFields_.insert(type);
+    if (!also.empty())
+      warn(context + " has a JWildfire weighting field that also scales its " + also +
+           ", which voxflame does not; only the variation weights are scaled");
   }
 
   // --- motion: flam3's <motion> elements and JWildfire's motion curves, kept as keyframes ---
@@ -1075,14 +1176,8 @@ class FlameReader {
       }
       return true;
     }
-    // JWildfire's weighting fields (a noise that scales variation weights or colour per point).
-    if (name.starts_with("wfield_")) {
-      if (name == "wfield_type" && value != "0" && value != "NONE") {
-        lose("JWildfire weighting field");
-        warn(context + " has a JWildfire weighting field, which voxflame does not support");
-      }
-      return true;
-    }
+    // JWildfire's weighting fields: readWeightField reads them.
+    if (name.starts_with("wfield_")) return true;
     // Motion curves: readJwildfireCurves reads the enabled ones.
     const std::size_t curve = name.find("Curve_");
     return curve != std::string::npos && curve != 0;
@@ -1112,6 +1207,14 @@ class FlameReader {
       out.push_back("variations voxflame does not know were left out: " + list);
     }
     out.insert(out.end(), warnings_.begin(), warnings_.end());
+    if (!weightFields_.empty()) {
+      std::string types;
+      for (const std::string& type : weightFields_) types += (types.empty() ? "" : ", ") + type;
+      out.push_back("JWildfire's weighting fields (" + types +
+                    ") scale the variation weights per point as JWildfire's do, with voxflame's simplex noise "
+                    "standing in for JWildfire's FastNoise: the same kind of field at the same frequency, not the "
+                    "same values");
+    }
     return out;
   }
 
@@ -1128,6 +1231,7 @@ class FlameReader {
   std::vector<std::string> warnings_;
   std::vector<MotionChannel> pendingChannels_;
   std::set<std::string> approximatedCurves_;  // JWildfire interpolations played as Catmull-Rom
+  std::set<std::string> weightFields_;        // JWildfire weighting field types read
 };
 
 // --- palettes -------------------------------------------------------------------------------
