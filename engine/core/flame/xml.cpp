@@ -43,7 +43,11 @@ constexpr int kMaxMotionFrequency = 64;
 constexpr std::size_t kMaxCurvePoints = 4096;
 constexpr double kFlam3LoopFrames = 128.0, kFlam3LoopFps = 30.0;
 constexpr int kMaxKeysPerPeriod = 32;
-constexpr std::size_t kMaxWaveKeys = 1024;
+constexpr std::size_t kMaxWaveKeys = 256;
+// Every track is checked as a preset's would be (checkKeyframeTracks), which costs a flame
+// validation per key and point between keys: a flame's motion keeps to these.
+constexpr std::size_t kMaxMotionTracks = 512;
+constexpr std::size_t kMaxMotionKeys = 20'000;
 // Flame files are a few kilobytes; the largest real ones (animations with hundreds of keyframe
 // genomes) stay well below this. A larger file is almost certainly something else.
 constexpr std::uintmax_t kMaxFlameFileBytes = 64u << 20;
@@ -1831,10 +1835,10 @@ void finishMotion(ImportedFlame& flame, const std::vector<std::vector<MotionChan
   check.animation = animation;
   std::size_t keys = 0;
   for (KeyframeTrack& track : tracks) {
-    if (flame.keyframes.size() >= kMaxKeyframeTracks || keys + track.keys.size() > kMaxKeyframes) {
+    if (flame.keyframes.size() >= kMaxMotionTracks || keys + track.keys.size() > kMaxMotionKeys) {
       reader.lose("motion of " + track.path);
-      reader.warn("the motion of " + track.path + " was left out: an animation holds at most " +
-                  std::to_string(kMaxKeyframeTracks) + " tracks and " + std::to_string(kMaxKeyframes) + " keys");
+      reader.warn("the motion of " + track.path + " was left out: an imported flame's motion keeps to " +
+                  std::to_string(kMaxMotionTracks) + " tracks and " + std::to_string(kMaxMotionKeys) + " keys");
       continue;
     }
     // A smooth track whose curve overshoots its value's range (a colour near 1) is keyed
