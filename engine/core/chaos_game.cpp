@@ -169,6 +169,7 @@ VOXFLAME_CHAOS_TARGETS void emitPoints(const double* x, const double* y, const d
 
 void ChaosLanes::resize(std::size_t lanes) {
   for (auto* v : {&x, &y, &z, &w, &color, &tx, &ty, &tz, &ox, &oy, &oz, &sx, &sy, &sz, &gc, &gs}) v->assign(lanes, 0.0);
+  field.assign(lanes, 1.0);
   random.assign(lanes, 1u);
   groupRandom.assign(lanes, 1u);
   visible.assign(lanes, 1);
@@ -186,6 +187,13 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
   c.colorSpeed = xform.colorSpeed;
   c.opacity = xform.opacity;
   c.directColor = xform.directColor;
+  if (xform.hasWeightField()) {
+    c.hasField = true;
+    c.fieldFromPosition = xform.fieldInput == WeightFieldInput::Position;
+    c.field = xform;
+    c.field.variations.clear();
+    c.field.xaos.clear();
+  }
   for (const VariationStage stage : {VariationStage::Pre, VariationStage::Normal, VariationStage::Post})
     for (const VariationTerm& term : xform.variations) {
       if (term.weight == 0.0 || variationStage(term.name) != stage) continue;
@@ -282,6 +290,20 @@ void combineStage(double* __restrict px, double* __restrict py, double* __restri
 
 }  // namespace
 
+void ChaosGame::fillField(const Compiled& xform, const std::uint32_t* group, std::size_t count, const double* x,
+                          const double* y, const double* z, ChaosLanes& lanes) {
+  double* field = lanes.field.data();
+  const double amount = xform.field.fieldAmount;
+  for (std::size_t j = 0; j < count; ++j) {
+    const std::uint32_t i = group[j];
+    const double n = xform.fieldFromPosition ? weightFieldNoise(xform.field, x[i], y[i], z[i])
+                                             : weightFieldNoise(xform.field, lanes.tx[j], lanes.ty[j], lanes.tz[j]);
+    field[j] = 1.0 + amount * n;
+  }
+  // The lanes applyGroup rounds the group up to.
+  for (std::size_t j = count; j < std::min((count + 3) & ~std::size_t{3}, lanes.size()); ++j) field[j] = 1.0;
+}
+
 void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const {
   // Whole vectors only: the lanes past the group (to the next multiple of 4) are worked on too and
   // never read back, so no lane falls to a loop's scalar tail, where a sin or atan2 costs four
@@ -299,6 +321,14 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   double* __restrict sz = lanes.sz.data();
   const auto clear = [&](double* a, double* b, double* c) {
     for (std::size_t j = 0; j < count; ++j) a[j] = b[j] = c[j] = 0.0;
+  };
+  const double* __restrict field = lanes.field.data();
+  const auto scaleByField = [&](double* a, double* b, double* c) {
+    for (std::size_t j = 0; j < count; ++j) {
+      a[j] *= field[j];
+      b[j] *= field[j];
+      c[j] *= field[j];
+    }
   };
   VariationInput in;
   in.random = lanes.groupRandom.data();
@@ -323,6 +353,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   for (; k < xform.terms.size() && xform.terms[k].stage == VariationStage::Pre; ++k) {
     clear(ox, oy, oz);
     run(xform.terms[k], tx, ty, tz, ox, oy, oz);
+    if (xform.hasField) scaleByField(ox, oy, oz);
     combineStage(tx, ty, tz, ox, oy, oz, xform.terms[k].mapsXY, xform.terms[k].mapsZ, xform.terms[k].additive, count);
     if (xform.terms[k].flattens)
       for (std::size_t j = 0; j < count; ++j) tz[j] = 0.0;
@@ -348,7 +379,18 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
         oz[j] = all ? 0.0 : oz[j];
       }
     }
-    run(xform.terms[k], tx, ty, tz, ox, oy, oz);
+    if (xform.hasField) {
+      // The term's result scaled per lane (variations are linear in their weight), then summed.
+      clear(sx, sy, sz);
+      run(xform.terms[k], tx, ty, tz, sx, sy, sz);
+      for (std::size_t j = 0; j < count; ++j) {
+        ox[j] += field[j] * sx[j];
+        oy[j] += field[j] * sy[j];
+        oz[j] += field[j] * sz[j];
+      }
+    } else {
+      run(xform.terms[k], tx, ty, tz, ox, oy, oz);
+    }
     flatten = flatten || xform.terms[k].flattens;
   }
   if (flatten)
@@ -357,6 +399,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   for (; k < xform.terms.size(); ++k) {
     clear(sx, sy, sz);
     run(xform.terms[k], ox, oy, oz, sx, sy, sz);
+    if (xform.hasField) scaleByField(sx, sy, sz);
     combineStage(ox, oy, oz, sx, sy, sz, xform.terms[k].mapsXY, xform.terms[k].mapsZ, xform.terms[k].additive, count);
     if (xform.terms[k].flattens)
       for (std::size_t j = 0; j < count; ++j) oz[j] = 0.0;
@@ -431,6 +474,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     gatherAffine(group, n, x, y, z, random, xf.affine.data(), lanes.tx.data(), lanes.ty.data(), lanes.tz.data(),
                  lanes.groupRandom.data());
     if (xf.directColour) startDirectColour(xf, lanes, group, n);
+    if (xf.hasField) fillField(xf, group, n, x, y, z, lanes);
     applyGroup(xf, lanes, n);
     scatterGroup(group, n, lanes.ox.data(), lanes.oy.data(), lanes.oz.data(), lanes.groupRandom.data(), x, y, z, color,
                  random, visible, 1.0 - xf.colorSpeed, xf.colorSpeed * xf.color, xf.opacity);
@@ -452,6 +496,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
   gatherAffine(order, count, x, y, z, random, final_.affine.data(), lanes.tx.data(), lanes.ty.data(), lanes.tz.data(),
                lanes.groupRandom.data());
   if (final_.directColour) startDirectColour(final_, lanes, order, count);
+  if (final_.hasField) fillField(final_, order, count, x, y, z, lanes);
   applyGroup(final_, lanes, count);
   if (final_.directColour) finishDirectColour(final_, lanes, count);
   const double keep = 1.0 - final_.colorSpeed, pull = final_.colorSpeed * final_.color;
@@ -470,13 +515,17 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
   for (const Compiled& chained : chainedFinals_) {
     gatherAffine(order, count, outX, outY, outZ, random, chained.affine.data(), lanes.tx.data(), lanes.ty.data(),
                  lanes.tz.data(), lanes.groupRandom.data());
-    applyGroup(chained, lanes, count);
     const double chainedKeep = 1.0 - chained.colorSpeed, chainedPull = chained.colorSpeed * chained.color;
+    if (chained.directColour)  // as startDirectColour, from the colour the final before it drew
+      for (std::size_t i = 0; i < count; ++i) lanes.gs[i] = lanes.gc[i] = chainedKeep * outColor[i] + chainedPull;
+    if (chained.hasField) fillField(chained, order, count, outX, outY, outZ, lanes);
+    applyGroup(chained, lanes, count);
+    if (chained.directColour) finishDirectColour(chained, lanes, count);
     for (std::size_t i = 0; i < count; ++i) {
       outX[i] = std::isnan(outX[i]) ? kNaN : lanes.ox[i];
       outY[i] = lanes.oy[i];
       outZ[i] = lanes.oz[i];
-      outColor[i] = chainedKeep * outColor[i] + chainedPull;
+      outColor[i] = chained.directColour ? lanes.gc[i] : chainedKeep * outColor[i] + chainedPull;
       std::uint32_t r = lanes.groupRandom[i];
       visible[i] &= laneUniform(r) < chained.opacity ? 1 : 0;
       random[i] = r;

@@ -39,6 +39,7 @@ struct ChaosLanes {
   // A direct-colour transform's group: the colour index its variations read and set, and what the
   // colour blend made of it before them (flame.h's directColor blends between the two).
   std::vector<double> gc, gs;
+  std::vector<double> field;       // 1 + amount · noise: a weighting field's factor of the variation weights
   std::vector<std::uint32_t> groupRandom;
   void resize(std::size_t lanes);
   std::size_t size() const { return x.size(); }
@@ -84,7 +85,14 @@ class ChaosGame {
     double color = 0.0, colorSpeed = 0.5, opacity = 1.0;
     bool directColour = false;  // has a term that reads or sets the colour index (VariationInfo::directColour)
     double directColor = 1.0;
+    // A weighting field (flame.h): `field` keeps the transform's field settings (no variations).
+    bool hasField = false;
+    bool fieldFromPosition = false;
+    FlameXform field;
   };
+  // lanes.field for a group: the factor each lane's variation weights take.
+  static void fillField(const Compiled& xform, const std::uint32_t* group, std::size_t count, const double* x,
+                        const double* y, const double* z, ChaosLanes& lanes);
   static Compiled compile(const FlameXform& xform);
   // Runs one compiled transform's affine map, variations and post map on a contiguous group.
   void applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const;

@@ -45,6 +45,22 @@ struct Affine3 {
   bool operator==(const Affine3&) const = default;
 };
 
+// JWildfire's weighting fields: a noise over space that scales a transform's variations per
+// point. Each variation's weight becomes weight · (1 + amount · n(p)), n the field's noise at p
+// (roughly in [−1, 1]): p the point after the transform's affine map (input `affine`) or the point
+// it starts from (`position`). Noise kinds: `noise` is gradient noise at `frequency` (3D simplex
+// noise, simplexNoise3D, standing in for the Perlin, simplex, value and cubic noise of
+// JWildfire's FastNoise: the same kind of smooth field, not the same values), `fractal` sums
+// `octaves` of it, each `lacunarity` times finer and `gain` times weaker (FastNoise's fractal
+// sum: fbm, billow or rigid). `seed` moves the noise to another place of the noise space.
+enum class WeightFieldKind { None, Noise, Fractal };
+inline constexpr std::string_view kWeightFieldKindNames[] = {"none", "noise", "fractal"};
+enum class WeightFieldInput { Affine, Position };
+inline constexpr std::string_view kWeightFieldInputNames[] = {"affine", "position"};
+enum class WeightFieldFractal { Fbm, Billow, Rigid };
+inline constexpr std::string_view kWeightFieldFractalNames[] = {"fbm", "billow", "rigid"};
+inline constexpr int kMaxWeightFieldOctaves = 10;
+
 // One variation of a transform: its catalogue name, weight and parameters (catalogue order).
 struct VariationTerm {
   std::string name;
@@ -72,8 +88,21 @@ struct FlameXform {
   // every transform's weight times its factor is 0, the plain weights choose instead (flam3 would
   // refuse to render such a flame; a dead end must not stop the chaos game).
   std::vector<double> xaos;
+  // The weighting field (above); kind None: none.
+  WeightFieldKind fieldKind = WeightFieldKind::None;
+  WeightFieldInput fieldInput = WeightFieldInput::Affine;
+  WeightFieldFractal fieldFractal = WeightFieldFractal::Fbm;
+  double fieldAmount = 0.0;  // JWildfire's "var amount intensity"
+  double fieldFrequency = 1.0;
+  int fieldSeed = 1337;
+  int fieldOctaves = 3;
+  double fieldGain = 0.5, fieldLacunarity = 2.0;
+  bool hasWeightField() const { return fieldKind != WeightFieldKind::None && fieldAmount != 0.0; }
   bool operator==(const FlameXform&) const = default;
 };
+
+// The weighting field's noise n(p) of a transform (0 without a field).
+double weightFieldNoise(const FlameXform& xform, double x, double y, double z);
 
 // Symmetry as flam3 makes it: extra transforms that turn the whole pattern by 360°/N about `axis`
 // (and mirror it across a plane through the axis), chosen like any other transform but never

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <limits>
@@ -15,6 +16,7 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <utility>
 
 #include <glm/common.hpp>
 #include <glm/mat3x3.hpp>
@@ -22,6 +24,7 @@
 
 #include "core/chaos_game.h"
 #include "core/error.h"
+#include "core/keyframes.h"
 #include "core/flame/variations.h"
 #include "core/random.h"
 
@@ -32,6 +35,19 @@ namespace {
 // The longest "_<parameter>" a variation's parameter attribute ends with that the importer looks
 // for, JWildfire's motion-curve suffixes included ("_power_view_xmin").
 constexpr std::size_t kMaxParameterSuffix = 64;
+// Motion (flam3's <motion>, JWildfire's curves) as keyframes: bounds that keep a hostile file's
+// tracks small. flam3's motion runs over a loop; voxflame plays one loop in kFlam3LoopFrames
+// frames at kFlam3LoopFps (Electric Sheep's loop length; flam3 itself leaves it to the caller).
+constexpr std::size_t kMaxMotionsPerXform = 64;
+constexpr int kMaxMotionFrequency = 64;
+constexpr std::size_t kMaxCurvePoints = 4096;
+constexpr double kFlam3LoopFrames = 128.0, kFlam3LoopFps = 30.0;
+constexpr int kMaxKeysPerPeriod = 32;
+constexpr std::size_t kMaxWaveKeys = 256;
+// Every track is checked as a preset's would be (checkKeyframeTracks), which costs a flame
+// validation per key and point between keys: a flame's motion keeps to these.
+constexpr std::size_t kMaxMotionTracks = 512;
+constexpr std::size_t kMaxMotionKeys = 20'000;
 // Flame files are a few kilobytes; the largest real ones (animations with hundreds of keyframe
 // genomes) stay well below this. A larger file is almost certainly something else.
 constexpr std::uintmax_t kMaxFlameFileBytes = 64u << 20;
@@ -607,15 +623,6 @@ class FlameReader {
       warn(context + " uses flam3's old var=/var1= variation lists, which voxflame does not read; it acts as linear");
     }
 
-    for (const pugi::xml_node& motion : node.children("motion")) {
-      (void)motion;
-      lose("<motion>");
-      warn(context +
-           " has flam3 <motion> elements (the transform animated over time), which voxflame does not "
-           "read; it is drawn as it stands");
-      break;
-    }
-
     // Variations: attributes naming a catalogue entry. Their parameters follow as
     // `<variation>_<parameter>`; an unknown variation's parameters are dropped with it. JWildfire
     // writes a second copy of a variation on one transform as `<variation>#N#` (parameters
@@ -628,7 +635,9 @@ class FlameReader {
     }
     double droppedWeight = 0.0;
     std::string dropped;
-    std::set<std::string> consumed;  // attributes read as some term's parameters
+    std::set<std::string> consumed;                  // attributes read as some term's parameters
+    std::map<std::string, std::size_t> termIndex;    // a variation attribute → its term in x.variations
+    std::map<std::string, VariationTerm> zeroTerms;  // variations of weight 0, by attribute
     // First the variations (so parameters are known before anything is called unknown)...
     for (const pugi::xml_attribute& attribute : node.attributes()) {
       const std::string name = nameOf(attribute);
@@ -639,18 +648,24 @@ class FlameReader {
       VariationTerm term;
       term.name = termName(withoutCopyMark(name), *info);
       term.weight = number(attribute, context, -kFlameCoefficientLimit, kFlameCoefficientLimit);
-      if (term.weight == 0.0) continue;
       term.params = info->defaultParams();
       for (std::size_t i = 0; i < info->params.size(); ++i)
         for (const std::string& key : fileParamNames(name, *info, info->params[i].name)) {
-          // Editors that capitalise a variation capitalise its parameters too (Mobius_Re_A).
+          // Editors that capitalise a variation capitalise its parameters too (Mobius_Re_A). An
+          // attribute that is itself a variation's name is that variation, never a parameter of
+          // another whose name it extends (blur_square is not blur's parameter "square").
           const auto param = byLowerName.find(lowered(key));
-          if (param == byLowerName.end()) continue;
+          if (param == byLowerName.end() || variationNamed(withoutCopyMark(param->second.first))) continue;
           term.params[i] = number(param->second.second, context, -kFlameCoefficientLimit, kFlameCoefficientLimit,
                                   info->name == "hexcrop" && info->params[i].name == "dropoff");
           consumed.insert(param->second.first);
           break;
         }
+      // A variation of weight 0 draws nothing, unless a motion gives it weight (motion below).
+      if (term.weight == 0.0) {
+        zeroTerms.emplace(name, std::move(term));
+        continue;
+      }
       // falloff2's colour shift is not applied (variations_apophysis.cpp), nor point_symmetry_wf's,
       // mirror_wf's or axis_symmetry_wf's.
       const bool shiftsColour =
@@ -684,6 +699,7 @@ class FlameReader {
              " reading the transform's state (static other than 2, or cropmode 2), which voxflame does not keep; "
              "it crops the point itself and drops what cropmode 2 would replace");
       }
+      termIndex.emplace(name, x.variations.size());
       x.variations.push_back(std::move(term));
     }
     // ...then everything else: parameters, JWildfire's own keys, and what voxflame does not know.
@@ -691,46 +707,51 @@ class FlameReader {
       const std::string name = nameOf(attribute);
       if (knownXformAttributes().contains(name) || consumed.contains(name)) continue;
       if (isJwildfireExtra(name, attribute.value(), context)) continue;
-      // A parameter: the longest attribute present that it extends with "_". Parameter names are
-      // short (the catalogue's, perhaps with a JWildfire curve suffix), so the cut is looked for
-      // only among the last kMaxParameterSuffix characters: each cut copies and looks up the
-      // prefix, and trying every "_" of a long name was quadratic (a 40 kB name of "a_a_..." took
-      // 20 s).
-      std::string owner;
+      // A parameter or an unknown variation. The name is cut at its last "_"s, longest prefix
+      // first: the first prefix that is a catalogue variation decides. If the rest is one of that
+      // variation's parameters (or JWildfire's curve keys of one), the attribute is that
+      // parameter; otherwise it is a variation voxflame does not know whose name extends a known
+      // one (blur_square beside blur), reported with its weight like any unknown variation. A
+      // prefix that is an unknown variation present on the transform owns the attribute: its
+      // parameters go with it. Parameter names are short (the catalogue's, perhaps with a
+      // JWildfire curve suffix), so the cut is looked for only among the last kMaxParameterSuffix
+      // characters: each cut copies and looks up the prefix, and trying every "_" of a long name
+      // was quadratic (a 40 kB name of "a_a_..." took 20 s).
+      bool parameter = false;
+      std::string extends;  // the known variation an unknown one's name extends
       for (std::size_t cut = name.rfind('_');
            cut != std::string::npos && cut > 0 && name.size() - cut <= kMaxParameterSuffix;
            cut = name.rfind('_', cut - 1)) {
         const std::string prefix = name.substr(0, cut);
-        const VariationInfo* info = variationNamed(withoutCopyMark(prefix));
-        // A known variation's own parameter counts even when the variation is absent (weight 0).
         const std::string rest = name.substr(cut + 1);
-        if (byName.contains(prefix) || (info && (info->paramIndex(rest) >= 0 || isJwildfireParamCurve(rest)))) {
-          owner = prefix;
+        if (const VariationInfo* info = variationNamed(withoutCopyMark(prefix))) {
+          // A known variation's own parameter counts even when the variation is absent (weight 0).
+          if (info->paramIndex(rest) >= 0 || isJwildfireParamCurve(rest) || isDerivedParam(*info, rest)) {
+            parameter = true;
+          } else if (isJwildfireResource(*info, rest)) {
+            parameter = true;
+            if (jwildfireResourceMatters(*info, attribute.value())) {
+              lose("image " + withoutCopyMark(prefix) + "_" + rest);
+              warn(context + " gives '" + name + "' an image, which voxflame does not read; it was left out");
+            }
+          } else {
+            extends = info->name;
+          }
+          break;
+        }
+        if (byName.contains(prefix)) {
+          parameter = true;  // of an unknown variation, left out with it
           break;
         }
       }
-      if (!owner.empty()) {
-        const VariationInfo* info = variationNamed(withoutCopyMark(owner));
-        const std::string param = name.substr(owner.size() + 1);
-        if (info && isJwildfireResource(*info, param)) {
-          if (jwildfireResourceMatters(*info, attribute.value())) {
-            lose("image " + withoutCopyMark(owner) + "_" + param);
-            warn(context + " gives '" + name + "' an image, which voxflame does not read; it was left out");
-          }
-          continue;
-        }
-        if (info && info->paramIndex(param) < 0 && !isJwildfireParamCurve(param) && !isDerivedParam(*info, param)) {
-          lose("parameter " + withoutCopyMark(owner) + "_" + param);
-          warn(context + " sets '" + name + "', which voxflame's '" + info->name + "' does not have; it was left out");
-        }
-        continue;
-      }
+      if (parameter) continue;
       if (!isXmlName(withoutCopyMark(name))) {
         lose("attribute '" + name + "'");
         warn(context + " has an attribute named '" + name + "', which is not an XML name; it was skipped");
         continue;
       }
       unknownVariations_.insert(withoutCopyMark(name));
+      if (!extends.empty()) extendedNames_.emplace(withoutCopyMark(name), extends);
       if (const auto weight = parseNumber(attribute.value()); weight && std::isfinite(*weight)) {
         droppedWeight += std::abs(*weight);
         dropped += (dropped.empty() ? "" : ", ") + name;
@@ -746,9 +767,434 @@ class FlameReader {
     if (x.variations.size() > kMaxXformVariations)
       fail(context, "has " + std::to_string(x.variations.size()) + " variations; voxflame takes at most " +
                         std::to_string(kMaxXformVariations));
-    if (x.variations.empty()) x.variations = {{"linear", 1.0, {}}};
+    if (x.variations.empty()) {
+      x.variations = {{"linear", 1.0, {}}};
+      termIndex.emplace("linear", 0);
+    }
+    // A motion may animate a variation the transform holds at weight 0 (or not at all): it joins
+    // the transform at weight 0, with the file's parameters.
+    const auto termFor = [&](const std::string& attribute, const VariationInfo& info) -> std::optional<std::size_t> {
+      if (const auto found = termIndex.find(attribute); found != termIndex.end()) return found->second;
+      if (x.variations.size() >= kMaxXformVariations) return std::nullopt;
+      VariationTerm term;
+      if (auto zero = zeroTerms.find(attribute); zero != zeroTerms.end()) {
+        term = std::move(zero->second);
+      } else {
+        term.name = termName(withoutCopyMark(attribute), info);
+        term.weight = 0.0;
+        term.params = info.defaultParams();
+      }
+      termIndex.emplace(attribute, x.variations.size());
+      x.variations.push_back(std::move(term));
+      return x.variations.size() - 1;
+    };
+    readWeightField(node, context, x);
+    readFlam3Motion(node, context, x, isFinal, termFor);
+    readJwildfireCurves(node, context, x, isFinal, termFor);
     return x;
   }
+
+  // JWildfire's weighting field of a transform, as JWildfire writes it (wfield_type="PERLIN_NOISE",
+  // wfield_var_amount_intensity, wfield_noise_frequency, ...) or as its GPU renderer's export
+  // does (wfield_type="6", the type's ordinal; wfield_var_amount, wfield_scale, ...). The noise
+  // kinds become voxflame's (flame.h: simplex noise for JWildfire's FastNoise, the same kind of
+  // field, not the same values); cellular, white and image-map fields, and a field's colour,
+  // jitter and parameter intensities, are left out.
+  void readWeightField(const pugi::xml_node& node, const std::string& context, FlameXform& x) {
+    const pugi::xml_attribute typeAttribute = node.attribute("wfield_type");
+    if (!typeAttribute) return;
+    static constexpr std::array<std::string_view, 12> kTypes = {
+        "NONE",         "CELLULAR_NOISE",       "CUBIC_NOISE",   "CUBIC_FRACTAL_NOISE",
+        "PERLIN_NOISE", "PERLIN_FRACTAL_NOISE", "SIMPLEX_NOISE", "SIMPLEX_FRACTAL_NOISE",
+        "VALUE_NOISE",  "VALUE_FRACTAL_NOISE",  "WHITE_NOISE",   "IMAGE_MAP"};
+    std::string type = trimmed(typeAttribute.value());
+    if (const auto ordinal = parseNumber(type);
+        ordinal && *ordinal >= 0.0 && *ordinal < static_cast<double>(kTypes.size()) && *ordinal == std::floor(*ordinal))
+      type = kTypes[static_cast<std::size_t>(*ordinal)];
+    if (type == "NONE") return;
+    const auto leaveOut = [&](const std::string& why) {
+      lose("JWildfire weighting field");
+      warn(context + " has a JWildfire weighting field (" + type.substr(0, 40) + ") " + why + "; it was left out");
+    };
+    if (std::find(kTypes.begin(), kTypes.end(), type) == kTypes.end())
+      return leaveOut("of a type JWildfire does not have");
+    if (type == "CELLULAR_NOISE" || type == "WHITE_NOISE" || type == "IMAGE_MAP")
+      return leaveOut("of a kind voxflame does not draw");
+    // A number under either of its names; nullopt (after leaveOut) when it is not one.
+    bool bad = false;
+    const auto number = [&](std::initializer_list<const char*> names, double fallback, double low,
+                            double high) -> double {
+      for (const char* name : names) {
+        const pugi::xml_attribute attribute = node.attribute(name);
+        if (!attribute) continue;
+        const auto value = parseNumber(attribute.value());
+        if (!value || !std::isfinite(*value) || *value < low || *value > high) {
+          if (!bad)
+            leaveOut(std::string("whose ") + name + "=\"" + std::string(attribute.value()).substr(0, 40) +
+                     "\" is not a number from " + formatted(low) + " to " + formatted(high));
+          bad = true;
+          return fallback;
+        }
+        return *value;
+      }
+      return fallback;
+    };
+    FlameXform field;
+    field.fieldKind = type.find("FRACTAL") != std::string::npos ? WeightFieldKind::Fractal : WeightFieldKind::Noise;
+    field.fieldAmount = number({"wfield_var_amount_intensity", "wfield_var_amount"}, 0.0, -kFlameCoefficientLimit,
+                               kFlameCoefficientLimit);
+    field.fieldFrequency = number({"wfield_noise_frequency", "wfield_scale"}, 1.0, 0.0, kFlameCoefficientLimit);
+    field.fieldSeed =
+        static_cast<int>(number({"wfield_noise_seed", "wfield_seed"}, 1337.0, -2147483648.0, 2147483647.0));
+    field.fieldOctaves = static_cast<int>(
+        std::lround(number({"wfield_fract_noise_octaves", "wfield_octaves"}, 3.0, 1.0, kMaxWeightFieldOctaves)));
+    field.fieldGain =
+        number({"wfield_fract_noise_gain", "wfield_gain"}, 0.5, -kFlameCoefficientLimit, kFlameCoefficientLimit);
+    field.fieldLacunarity = number({"wfield_fract_noise_lacunarity", "wfield_lacunarity"}, 2.0, -kFlameCoefficientLimit,
+                                   kFlameCoefficientLimit);
+    const std::string input = node.attribute("wfield_input").value();
+    field.fieldInput = input == "POSITION" || input == "1" ? WeightFieldInput::Position : WeightFieldInput::Affine;
+    for (const char* name : {"wfield_fract_noise_fract_type", "wfield_fractal_type"}) {
+      const std::string fractal = node.attribute(name).value();
+      if (fractal == "BILLOW" || fractal == "1") field.fieldFractal = WeightFieldFractal::Billow;
+      if (fractal == "RIGID_MULTI" || fractal == "2") field.fieldFractal = WeightFieldFractal::Rigid;
+    }
+    if (bad) return;
+    // What the field does besides scaling the variations' weights.
+    // (A value that is not a number counts as one that is not 0.)
+    const auto nonZero = [&](std::initializer_list<const char*> names) {
+      return std::any_of(names.begin(), names.end(), [&](const char* name) {
+        const pugi::xml_attribute attribute = node.attribute(name);
+        return attribute && parseNumber(attribute.value()) != std::optional<double>(0.0);
+      });
+    };
+    std::vector<std::string> notKept;
+    if (nonZero({"wfield_color_intensity", "wfield_color_amount"})) notKept.push_back("colour");
+    if (nonZero({"wfield_jitter_intensity", "wfield_jitter_amount"})) notKept.push_back("jitter");
+    if (nonZero({"wfield_var_param1_intensity", "wfield_var_param2_intensity", "wfield_var_param3_intensity",
+                 "wfield_param1_amount", "wfield_param2_amount", "wfield_param3_amount"}))
+      notKept.push_back("variation parameters");
+    std::string also;
+    for (const std::string& what : notKept) {
+      lose("JWildfire weighting field " + what);
+      also += (also.empty() ? "" : ", ") + what;
+    }
+    x.fieldKind = field.fieldKind;
+    x.fieldInput = field.fieldInput;
+    x.fieldFractal = field.fieldFractal;
+    x.fieldAmount = field.fieldAmount;
+    x.fieldFrequency = field.fieldFrequency;
+    x.fieldSeed = field.fieldSeed;
+    x.fieldOctaves = field.fieldOctaves;
+    x.fieldGain = field.fieldGain;
+    x.fieldLacunarity = field.fieldLacunarity;
+    weightFields_.insert(type);
+    if (!also.empty())
+      warn(context + " has a JWildfire weighting field that also scales its " + also +
+           ", which voxflame does not; only the variation weights are scaled");
+  }
+
+  // --- motion: flam3's <motion> elements and JWildfire's motion curves, kept as keyframes ---
+
+  using TermFor = std::function<std::optional<std::size_t>(const std::string&, const VariationInfo&)>;
+
+  // One animated value of a transform: which (MotionChannel::field, the path below the
+  // transform), its range, and either flam3's periodic offsets (waves, added to the value as it
+  // stands) or a JWildfire curve (points: frame → value).
+  struct MotionWave {
+    double amplitude = 0.0;
+    int frequency = 1;
+    char function = 's';  // s(in), t(riangle), h(ill), w (saw)
+  };
+  struct MotionChannel {
+    std::size_t xform = 0;
+    bool isFinal = false;
+    std::string field;       // "weight", "affine/3", "variations/2/power"
+    std::string layerField;  // instead of field: a value of the layer itself ("weight")
+    double low = -kFlameCoefficientLimit, high = kFlameCoefficientLimit;
+    std::vector<MotionWave> waves;
+    std::vector<std::pair<double, double>> points;  // (JWildfire frame, value)
+    bool smooth = false;                            // the curve's interpolation (JWildfire)
+  };
+
+  // flam3's <motion> children of a transform: each adds amplitude · f(frequency · t) to the
+  // values it names, t running 0 → 1 over a loop, f one of flam3's (and Fractorium's) motion
+  // functions, 0 at whole t, peak 1.
+  void readFlam3Motion(const pugi::xml_node& node, const std::string& context, FlameXform& x, bool isFinal,
+                       const TermFor& termFor) {
+    std::size_t number = 0;
+    for (const pugi::xml_node& motion : node.children("motion")) {
+      const std::string where = context + ", <motion> " + std::to_string(++number);
+      if (number > kMaxMotionsPerXform) {
+        lose("<motion>");
+        warn(where + " and after: a transform takes at most " + std::to_string(kMaxMotionsPerXform) +
+             " <motion> elements; the others were left out");
+        break;
+      }
+      MotionWave wave;
+      const pugi::xml_attribute frequency = motion.attribute("motion_frequency");
+      const auto freq = parseNumber(frequency.value());
+      if (!frequency || !freq || *freq != std::floor(*freq) || std::abs(*freq) > kMaxMotionFrequency) {
+        lose("<motion>");
+        warn(where + " needs motion_frequency, a whole number from −" + std::to_string(kMaxMotionFrequency) + " to " +
+             std::to_string(kMaxMotionFrequency) + " (it has \"" + std::string(frequency.value()).substr(0, 40) +
+             "\"); it was left out");
+        continue;
+      }
+      wave.frequency = static_cast<int>(*freq);
+      if (wave.frequency == 0) continue;  // flam3: no motion
+      const std::string function = motion.attribute("motion_function").value();
+      if (function == "triangle")
+        wave.function = 't';
+      else if (function == "hill")
+        wave.function = 'h';
+      else if (function == "saw")
+        wave.function = 'w';
+      else if (!function.empty() && function != "sin")
+        warn(where + " has motion_function \"" + function.substr(0, 40) +
+             "\", not sin, triangle, hill or saw; sin is used");
+      for (const pugi::xml_attribute& attribute : motion.attributes()) {
+        const std::string name = nameOf(attribute);
+        if (name == "motion_frequency" || name == "motion_function") continue;
+        const auto values = parseNumbers(attribute.value());
+        const bool numbers = values && !values->empty() && std::all_of(values->begin(), values->end(), [](double v) {
+                               return finiteWithin(v, kFlameCoefficientLimit);
+                             });
+        if (!numbers) {
+          lose("<motion> " + name);
+          warn(where + " has " + name + "=\"" + std::string(attribute.value()).substr(0, 40) +
+               "\", which is not numbers within ±1e6; it was left out");
+          continue;
+        }
+        const auto add = [&](const std::string& field, double amplitude, double low, double high) {
+          if (amplitude == 0.0) return;
+          MotionChannel& channel = channelFor(field, low, high);
+          MotionWave w = wave;
+          w.amplitude = amplitude;
+          channel.waves.push_back(w);
+        };
+        if (name == "coefs" || name == "post") {
+          if (values->size() != 6) {
+            lose("<motion> " + name);
+            warn(where + " has " + name + " of " + std::to_string(values->size()) + " numbers, not 6; it was left out");
+            continue;
+          }
+          if (name == "post" && !x.hasPost &&
+              std::any_of(values->begin(), values->end(), [](double v) { return v != 0.0; }))
+            x.hasPost = true;                                                 // an identity post map that moves
+          static constexpr std::array<int, 6> kElement = {0, 4, 1, 5, 3, 7};  // a d b e c f
+          for (std::size_t i = 0; i < 6; ++i)
+            add((name == "coefs" ? "affine/" : "post/") + std::to_string(kElement[i]), (*values)[i],
+                -kFlameCoefficientLimit, kFlameCoefficientLimit);
+          continue;
+        }
+        const double amplitude = values->front();
+        if (name == "weight") {
+          if (!isFinal) add("weight", amplitude, 0.0, kFlameCoefficientLimit);
+        } else if (name == "color") {
+          add("color", amplitude, 0.0, 1.0);
+        } else if (name == "color_speed") {
+          add("color_speed", amplitude, 0.0, 1.0);
+        } else if (name == "opacity") {
+          add("opacity", amplitude, 0.0, 1.0);
+        } else if (const auto target = variationTarget(name, termFor)) {
+          add(*target, amplitude, -kFlameCoefficientLimit, kFlameCoefficientLimit);
+        } else {
+          // animate (the loop's rotation flag), symmetry, and what voxflame does not know.
+          lose("<motion> " + name);
+          warn(where + " animates " + name + ", which voxflame cannot animate; it was left out");
+        }
+      }
+    }
+  }
+
+  // JWildfire's motion curves of a transform and its variations: `<name>_enabled="true"`, then
+  // `<name>_point_count`, `<name>_x<i>` (frames), `<name>_y<i>` (values), `<name>_interpolation`.
+  // The curve's value replaces the property's at each frame.
+  void readJwildfireCurves(const pugi::xml_node& node, const std::string& context, FlameXform& x, bool isFinal,
+                           const TermFor& termFor) {
+    std::map<std::string, pugi::xml_attribute, std::less<>> byName;
+    for (const pugi::xml_attribute& attribute : node.attributes()) byName.emplace(nameOf(attribute), attribute);
+    const bool planes =
+        node.attribute("yzCoefs") || node.attribute("zxCoefs") || node.attribute("yzPost") || node.attribute("zxPost");
+    for (const auto& [attributeName, attribute] : byName) {
+      if (!attributeName.ends_with("_enabled") || std::string_view(attribute.value()) != "true") continue;
+      const std::string curve = attributeName.substr(0, attributeName.size() - std::string_view("_enabled").size());
+      const auto leaveOut = [&](const std::string& why) {
+        lose("JWildfire motion curve " + curve);
+        warn(context + " has a JWildfire motion curve of " + curve + ", " + why + "; the value as it stands is used");
+      };
+      // Which value it animates, and how its y becomes voxflame's value.
+      std::optional<std::string> field;
+      double low = -kFlameCoefficientLimit, high = kFlameCoefficientLimit, scale = 1.0, offset = 0.0;
+      if (curve.ends_with("Curve")) {
+        const std::string property = curve.substr(0, curve.size() - 5);
+        static const std::array<std::string_view, 6> kCoefficient = {"00", "01", "10", "11", "20", "21"};
+        static constexpr std::array<int, 6> kElement = {0, 4, 1, 5, 3, 7};
+        if (property == "weight" && !isFinal) {
+          field = "weight";
+          low = 0.0;
+        } else if (property == "color" || property == "opacity") {
+          field = property;
+          low = 0.0;
+          high = 1.0;
+        } else if (property == "colorSymmetry") {  // color_speed = (1 − symmetry) / 2
+          field = "color_speed";
+          low = 0.0;
+          high = 1.0;
+          scale = -0.5;
+          offset = 0.5;
+        } else if (property.ends_with("_amount")) {
+          const std::string variation = property.substr(0, property.size() - 7);
+          if (const VariationInfo* info = variationNamed(withoutCopyMark(variation));
+              info && byName.contains(variation))
+            if (const auto term = termFor(variation, *info)) field = "variations/" + std::to_string(*term) + "/weight";
+        } else {
+          for (std::size_t i = 0; i < 6 && !field; ++i) {
+            if (property == "xyCoeff" + std::string(kCoefficient[i]))
+              field = "affine/" + std::to_string(kElement[i]);
+            else if (property == "xyPostCoeff" + std::string(kCoefficient[i]))
+              field = "post/" + std::to_string(kElement[i]);
+          }
+          if (field && planes) {
+            leaveOut("which voxflame cannot key on a transform with JWildfire's yz or zx planes");
+            continue;
+          }
+        }
+      } else {
+        field = variationTarget(curve, termFor);
+      }
+      if (!field) {
+        leaveOut("which voxflame cannot animate");
+        continue;
+      }
+      if (byName.contains(curve + "_parent_curve")) {
+        leaveOut("which adds a parent curve voxflame does not read");
+        continue;
+      }
+      std::optional<std::vector<std::pair<double, double>>> points =
+          curvePoints(byName, curve, scale, offset, leaveOut);
+      if (!points) continue;
+      const std::string interpolation =
+          byName.contains(curve + "_interpolation") ? byName.at(curve + "_interpolation").value() : "SPLINE";
+      MotionChannel& channel = channelFor(*field, low, high);
+      if (!channel.points.empty() || !channel.waves.empty()) {
+        leaveOut("a second motion of that value");
+        continue;
+      }
+      if (*field == "post/0" || field->starts_with("post/")) x.hasPost = true;
+      channel.points = std::move(*points);
+      channel.smooth = interpolation != "LINEAR";
+      if (interpolation != "LINEAR") approximatedCurves_.insert(interpolation.substr(0, 20));
+    }
+  }
+
+  // A JWildfire curve's points (frame, offset + scale · y); nullopt, after leaveOut(why), when
+  // they are not whole.
+  template <typename LeaveOut>
+  std::optional<std::vector<std::pair<double, double>>> curvePoints(
+      const std::map<std::string, pugi::xml_attribute, std::less<>>& byName, const std::string& curve, double scale,
+      double offset, const LeaveOut& leaveOut) {
+    const auto countAttribute = byName.find(curve + "_point_count");
+    const auto count = parseNumber(countAttribute == byName.end() ? "" : countAttribute->second.value());
+    if (!count || *count != std::floor(*count) || *count < 1.0 || *count > static_cast<double>(kMaxCurvePoints)) {
+      leaveOut("whose point_count is not a whole number from 1 to " + std::to_string(kMaxCurvePoints));
+      return std::nullopt;
+    }
+    std::vector<std::pair<double, double>> points;
+    std::string bad;
+    for (std::size_t i = 0; i < static_cast<std::size_t>(*count) && bad.empty(); ++i) {
+      const auto coordinate = [&](const char* axis) -> std::optional<double> {
+        const std::string key = curve + "_" + axis + std::to_string(i);
+        const auto found = byName.find(key);
+        const auto value = found == byName.end() ? std::optional<double>(0.0) : parseNumber(found->second.value());
+        if (!value || !finiteWithin(*value, kFlameCoefficientLimit)) bad = key + " is not a number within ±1e6";
+        return value;
+      };
+      const auto frame = coordinate("x"), value = coordinate("y");
+      if (!bad.empty()) break;
+      if (!points.empty() && *frame <= points.back().first)
+        bad = curve + "_x" + std::to_string(i) + " does not come after the point before it";
+      points.emplace_back(*frame, offset + scale * *value);
+    }
+    if (!bad.empty()) {
+      leaveOut("whose point " + bad);
+      return std::nullopt;
+    }
+    return points;
+  }
+
+  // A JWildfire layer's weight curve, as a curve of voxflame's layer weight (× `factor`, the
+  // density's share); the density curve is not keyed.
+  void readLayerCurves(const pugi::xml_node& layer, const std::string& context, double factor) {
+    std::map<std::string, pugi::xml_attribute, std::less<>> byName;
+    for (const pugi::xml_attribute& attribute : layer.attributes()) byName.emplace(nameOf(attribute), attribute);
+    for (const std::string& curve : {std::string("weightCurve"), std::string("densityCurve")}) {
+      const auto enabled = byName.find(curve + "_enabled");
+      if (enabled == byName.end() || std::string_view(enabled->second.value()) != "true") continue;
+      const auto leaveOut = [&](const std::string& why) {
+        lose("JWildfire layer motion curve " + curve);
+        warn("JWildfire " + context + " has a motion curve of its " + curve.substr(0, curve.size() - 5) + ", " + why +
+             "; the value as it stands is used");
+      };
+      if (curve == "densityCurve") {
+        leaveOut("which voxflame does not key");
+        continue;
+      }
+      if (byName.contains(curve + "_parent_curve")) {
+        leaveOut("which adds a parent curve voxflame does not read");
+        continue;
+      }
+      auto points = curvePoints(byName, curve, factor, 0.0, leaveOut);
+      if (!points) continue;
+      MotionChannel channel;
+      channel.layerField = "weight";
+      channel.low = 0.0;
+      channel.high = kMaxImportedLayerWeight;
+      channel.points = std::move(*points);
+      const auto interpolation = byName.find(curve + "_interpolation");
+      const std::string kind = interpolation == byName.end() ? "SPLINE" : interpolation->second.value();
+      channel.smooth = kind != "LINEAR";
+      if (channel.smooth) approximatedCurves_.insert(kind.substr(0, 20));
+      pendingChannels_.push_back(std::move(channel));
+    }
+  }
+
+  // The path below a transform that a motion's `<variation>` or `<variation>_<parameter>` names:
+  // its weight or parameter (the longest catalogue name that is a prefix decides, as for the
+  // transform's own attributes). The variation joins the transform at weight 0 when absent.
+  std::optional<std::string> variationTarget(const std::string& name, const TermFor& termFor) {
+    if (const VariationInfo* info = variationNamed(withoutCopyMark(name))) {
+      if (const auto term = termFor(name, *info)) return "variations/" + std::to_string(*term) + "/weight";
+      return std::nullopt;
+    }
+    for (std::size_t cut = name.rfind('_');
+         cut != std::string::npos && cut > 0 && name.size() - cut <= kMaxParameterSuffix;
+         cut = name.rfind('_', cut - 1)) {
+      const std::string prefix = name.substr(0, cut), rest = name.substr(cut + 1);
+      const VariationInfo* info = variationNamed(withoutCopyMark(prefix));
+      if (!info) continue;
+      if (info->paramIndex(rest) < 0) return std::nullopt;
+      if (const auto term = termFor(prefix, *info)) return "variations/" + std::to_string(*term) + "/" + rest;
+      return std::nullopt;
+    }
+    return std::nullopt;
+  }
+
+  MotionChannel& channelFor(const std::string& field, double low, double high) {
+    for (MotionChannel& channel : pendingChannels_)
+      if (channel.field == field) return channel;
+    MotionChannel channel;
+    channel.field = field;
+    channel.low = low;
+    channel.high = high;
+    pendingChannels_.push_back(std::move(channel));
+    return pendingChannels_.back();
+  }
+
+  // The channels the last xform() call found, for readGenome to give their transform.
+  std::vector<MotionChannel> takePendingChannels() { return std::exchange(pendingChannels_, {}); }
+  const std::set<std::string>& approximatedCurves() const { return approximatedCurves_; }
 
   void warn(std::string text) { warnings_.push_back(std::move(text)); }
 
@@ -772,23 +1218,11 @@ class FlameReader {
       }
       return true;
     }
-    // JWildfire's weighting fields (a noise that scales variation weights or colour per point).
-    if (name.starts_with("wfield_")) {
-      if (name == "wfield_type" && value != "0" && value != "NONE") {
-        lose("JWildfire weighting field");
-        warn(context + " has a JWildfire weighting field, which voxflame does not support");
-      }
-      return true;
-    }
+    // JWildfire's weighting fields: readWeightField reads them.
+    if (name.starts_with("wfield_")) return true;
+    // Motion curves: readJwildfireCurves reads the enabled ones.
     const std::size_t curve = name.find("Curve_");
-    if (curve == std::string::npos || curve == 0) return false;
-    if (name.ends_with("Curve_enabled") && value == "true") {
-      lose("JWildfire motion curve " + name.substr(0, curve + 5));
-      warn(context + " animates " + name.substr(0, curve) +
-           " with a JWildfire motion curve, which voxflame does not "
-           "support; the value as it stands is used");
-    }
-    return true;
+    return curve != std::string::npos && curve != 0;
   }
   // Records something of the file that the import does not keep (ImportedFlame::leftOut).
   void lose(std::string what) { lost_.insert(std::move(what)); }
@@ -801,12 +1235,28 @@ class FlameReader {
 
   std::vector<std::string> finishWarnings() {
     std::vector<std::string> out;
+    // Every variation left out, in this one warning. A name that extends a known variation's
+    // whose parameters do not include the rest could also be such a parameter of a newer
+    // version of that variation: the warning says so.
     if (!unknownVariations_.empty()) {
       std::string list;
-      for (const std::string& name : unknownVariations_) list += (list.empty() ? "" : ", ") + name;
+      for (const std::string& name : unknownVariations_) {
+        list += (list.empty() ? "" : ", ") + name;
+        const auto extended = extendedNames_.find(name);
+        const VariationInfo* info = extended == extendedNames_.end() ? nullptr : findVariation(extended->second);
+        if (info && !info->params.empty()) list += " (or a parameter that voxflame's " + info->name + " does not have)";
+      }
       out.push_back("variations voxflame does not know were left out: " + list);
     }
     out.insert(out.end(), warnings_.begin(), warnings_.end());
+    if (!weightFields_.empty()) {
+      std::string types;
+      for (const std::string& type : weightFields_) types += (types.empty() ? "" : ", ") + type;
+      out.push_back("JWildfire's weighting fields (" + types +
+                    ") scale the variation weights per point as JWildfire's do, with voxflame's simplex noise "
+                    "standing in for JWildfire's FastNoise: the same kind of field at the same frequency, not the "
+                    "same values");
+    }
     return out;
   }
 
@@ -817,9 +1267,13 @@ class FlameReader {
   std::string where_;
   const FlameImportOptions& options_;
   std::set<std::string> unknownVariations_;
+  std::map<std::string, std::string> extendedNames_;  // unknown variation → the known one its name extends
   std::set<std::string> lost_;
   std::map<std::string, std::string> renamed_;
   std::vector<std::string> warnings_;
+  std::vector<MotionChannel> pendingChannels_;
+  std::set<std::string> approximatedCurves_;  // JWildfire interpolations played as Catmull-Rom
+  std::set<std::string> weightFields_;        // JWildfire weighting field types read
 };
 
 // --- palettes -------------------------------------------------------------------------------
@@ -1175,8 +1629,18 @@ FlameSymmetry symmetryOfKind(double kind, FlameReader& reader) {
 
 // The transforms and final transform of one genome: a <flame>, or one <layer> of a JWildfire
 // <jwf-flame> (`context` then names the layer in messages: "layer 2, transform 0").
-FlameGenome readGenome(const pugi::xml_node& body, const std::string& context, FlameReader& reader) {
+using MotionChannel = FlameReader::MotionChannel;
+
+FlameGenome readGenome(const pugi::xml_node& body, const std::string& context, FlameReader& reader,
+                       std::vector<MotionChannel>& channels) {
   FlameGenome genome;
+  const auto tagChannels = [&](std::size_t xform, bool isFinal) {
+    for (MotionChannel& channel : reader.takePendingChannels()) {
+      channel.xform = xform;
+      channel.isFinal = isFinal;
+      channels.push_back(std::move(channel));
+    }
+  };
   const std::string prefix = context.empty() ? "" : context + ", ";
   std::size_t index = 0;
   for (const pugi::xml_node& child : body.children("xform")) {
@@ -1184,6 +1648,7 @@ FlameGenome readGenome(const pugi::xml_node& body, const std::string& context, F
       reader.fail(context, "has more than " + std::to_string(kMaxFlameXforms) + " transforms; voxflame takes at most " +
                                std::to_string(kMaxFlameXforms));
     genome.xforms.push_back(reader.xform(child, prefix + "transform " + std::to_string(index), false));
+    tagChannels(index, false);
     ++index;
   }
   if (genome.xforms.empty()) reader.fail(context, "has no transforms (<xform> elements); there is nothing to draw");
@@ -1206,6 +1671,7 @@ FlameGenome readGenome(const pugi::xml_node& body, const std::string& context, F
   if (const pugi::xml_node finalNode = body.child("finalxform")) {
     genome.hasFinal = true;
     genome.finalXform = reader.xform(finalNode, prefix + "final transform", true);
+    tagChannels(0, true);
     // JWildfire applies several final transforms one after the other.
     std::size_t finalNumber = 1;
     for (pugi::xml_node node = finalNode.next_sibling("finalxform"); node; node = node.next_sibling("finalxform")) {
@@ -1215,8 +1681,14 @@ FlameGenome readGenome(const pugi::xml_node& body, const std::string& context, F
                     " final transforms; the rest were left out");
         break;
       }
-      genome.chainedFinals.push_back(
-          reader.xform(node, prefix + "final transform " + std::to_string(++finalNumber), true));
+      const std::string where = prefix + "final transform " + std::to_string(++finalNumber);
+      genome.chainedFinals.push_back(reader.xform(node, where, true));
+      // Keyframes reach the final transform, not those chained after it.
+      if (!reader.takePendingChannels().empty()) {
+        reader.lose("motion of chained final transforms");
+        reader.warn(where + " is animated, which voxflame does not keyframe on a chained final transform; it "
+                            "stands still");
+      }
     }
   }
   return genome;
@@ -1246,6 +1718,239 @@ double jwildfireLayerWeight(const pugi::xml_node& layer, const std::string& cont
   return weight;
 }
 
+// --- motion as keyframes ----------------------------------------------------------------------
+
+// flam3's motion functions (interpolation.c's motion_funcs) and Fractorium's saw: periodic in t,
+// 0 at whole t, peaks ±1 (hill: 0 to 1).
+double motionFunction(char function, double t) {
+  switch (function) {
+    case 't': {
+      const double fr = t - std::floor(t);
+      return fr <= 0.25 ? 4.0 * fr : fr <= 0.75 ? 2.0 - 4.0 * fr : 4.0 * fr - 4.0;
+    }
+    case 'h':
+      return (1.0 - std::cos(2.0 * std::numbers::pi * t)) * 0.5;
+    case 'w':
+      return 2.0 * (t - std::floor(t + 0.5));
+    default:
+      return std::sin(2.0 * std::numbers::pi * t);
+  }
+}
+
+// The value a channel animates, as the transform holds it.
+double channelBase(const FlameXform& x, const std::string& field) {
+  if (field == "weight") return x.weight;
+  if (field == "color") return x.color;
+  if (field == "color_speed") return x.colorSpeed;
+  if (field == "opacity") return x.opacity;
+  const std::size_t slash = field.find('/');
+  const std::string head = field.substr(0, slash), rest = field.substr(slash + 1);
+  if (head == "affine") return x.affine.m.at(std::stoul(rest));
+  if (head == "post") return x.post.m.at(std::stoul(rest));
+  // variations/K/weight or variations/K/PARAM
+  const std::size_t second = rest.find('/');
+  const VariationTerm& term = x.variations.at(std::stoul(rest.substr(0, second)));
+  const std::string key = rest.substr(second + 1);
+  if (key == "weight") return term.weight;
+  const VariationInfo* info = findVariation(term.name);
+  const int index = info ? info->paramIndex(key) : -1;
+  return index >= 0 && static_cast<std::size_t>(index) < term.params.size()
+             ? term.params[static_cast<std::size_t>(index)]
+             : 0.0;
+}
+
+// How motion times map to seconds: flam3's loop, JWildfire's frames.
+struct MotionTiming {
+  double loopSeconds = kFlam3LoopFrames / kFlam3LoopFps;
+  bool loop = true;          // only flam3 motion: the animation loops
+  double fps = 30.0;         // JWildfire's frames per second
+  double originFrame = 1.0;  // the JWildfire frame shown at 0 s
+};
+
+struct MotionNotes {
+  std::size_t flam3 = 0, curves = 0;
+  bool clamped = false, linearWaves = false, linearised = false;
+};
+
+// One channel as a keyframe track of layer `layer`.
+KeyframeTrack motionTrack(const FlameGenome& genome, const MotionChannel& channel, std::size_t layer,
+                          const MotionTiming& timing, MotionNotes& notes) {
+  const FlameXform& x = channel.isFinal ? genome.finalXform : genome.xforms.at(channel.xform);
+  KeyframeTrack track;
+  track.path = "/layers/" + std::to_string(layer) + "/" +
+               (!channel.layerField.empty()
+                    ? channel.layerField
+                    : "flame/" + (channel.isFinal ? std::string("final") : "xforms/" + std::to_string(channel.xform)) +
+                          "/" + channel.field);
+  track.kind = KeyKind::Number;
+  const auto keep = [&](double v) {
+    const double kept = std::clamp(v, channel.low, channel.high);
+    notes.clamped |= kept != v;
+    return kept;
+  };
+  if (!channel.points.empty()) {
+    ++notes.curves;
+    track.interpolation = channel.smooth ? Interpolation::Smooth : Interpolation::Linear;
+    for (const auto& [frame, value] : channel.points)
+      track.keys.push_back({std::max(0.0, (frame - timing.originFrame) / timing.fps), {keep(value)}});
+    // Frames before the origin all land at 0 s: the latest of them stands there.
+    while (track.keys.size() > 1 && track.keys[1].time <= track.keys[0].time) track.keys.erase(track.keys.begin());
+    return track;
+  }
+  ++notes.flam3;
+  int frequency = 1;
+  bool smooth = true;
+  for (const FlameReader::MotionWave& wave : channel.waves) {
+    frequency = std::max(frequency, std::abs(wave.frequency));
+    smooth &= wave.function == 's' || wave.function == 'h';
+  }
+  notes.linearWaves |= !smooth;
+  track.interpolation = smooth ? Interpolation::Smooth : Interpolation::Linear;
+  const std::size_t perLoop =
+      std::min(kMaxWaveKeys,
+               static_cast<std::size_t>(frequency) * static_cast<std::size_t>(kMaxKeysPerPeriod / (smooth ? 2 : 1)));
+  const double base = channelBase(x, channel.field);
+  for (std::size_t k = 0; k < perLoop + (timing.loop ? 0 : 1); ++k) {
+    const double t = static_cast<double>(k) / static_cast<double>(perLoop);
+    double value = base;
+    for (const FlameReader::MotionWave& wave : channel.waves)
+      value += wave.amplitude * motionFunction(wave.function, wave.frequency * t);
+    track.keys.push_back({t * timing.loopSeconds, {keep(value)}});
+  }
+  return track;
+}
+
+PatternLayer importedFlameLayer(const FlameGenome& genome, const std::vector<GradientStop>& palette, double weight) {
+  PatternLayer layer;
+  layer.kind = PatternKind::Flame;
+  layer.attractor.clear();
+  layer.params.clear();
+  layer.flame = genome;
+  layer.weight = weight;
+  layer.color.mode = ColorMode::Index;
+  layer.color.palette.clear();
+  layer.color.gradient = palette;
+  return layer;
+}
+
+// The flame's motion as keyframes (ImportedFlame::keyframes): every track is checked as a preset's
+// would be, and one that fails (a value its variation refuses somewhere in the motion) is left
+// out with the reason.
+void finishMotion(ImportedFlame& flame, const std::vector<std::vector<MotionChannel>>& channels,
+                  const pugi::xml_node& node, FlameReader& reader) {
+  bool anyCurve = false, anyWave = false;
+  double firstFrame = 1.0;
+  for (const auto& layerChannels : channels)
+    for (const MotionChannel& channel : layerChannels) {
+      anyCurve |= !channel.points.empty();
+      anyWave |= channel.points.empty();
+      if (!channel.points.empty()) firstFrame = std::min(firstFrame, channel.points.front().first);
+    }
+  if (!anyCurve && !anyWave) return;
+  MotionTiming timing;
+  timing.loop = !anyCurve;
+  timing.originFrame = firstFrame;
+  if (const pugi::xml_attribute fps = node.attribute("fps")) {
+    const auto value = parseNumber(fps.value());
+    if (value && *value >= 1.0 && *value <= 240.0)
+      timing.fps = *value;
+    else
+      reader.warn(std::string("fps=\"") + std::string(fps.value()).substr(0, 40) +
+                  "\" is not a frame rate from 1 to 240; the motion curves play at 30 fps");
+  }
+  MotionNotes notes;
+  std::vector<KeyframeTrack> tracks;
+  std::vector<FlameGenome*> genomes = {&flame.genome};
+  for (ImportedFlameLayer& other : flame.otherLayers) genomes.push_back(&other.genome);
+  for (std::size_t layer = 0; layer < channels.size() && layer < genomes.size(); ++layer)
+    for (const MotionChannel& channel : channels[layer])
+      tracks.push_back(motionTrack(*genomes[layer], channel, layer, timing, notes));
+
+  AnimationSettings animation;
+  animation.loop = timing.loop;
+  animation.fps = timing.loop ? kFlam3LoopFps : timing.fps;
+  double end = timing.loop ? timing.loopSeconds : 0.0;
+  for (const KeyframeTrack& track : tracks) end = std::max(end, track.keys.back().time);
+  if (const pugi::xml_attribute frames = node.attribute("frame_count"); frames && !timing.loop) {
+    const auto count = parseNumber(frames.value());
+    if (count && *count >= 1.0 && *count <= 1e6)
+      end = std::max(end, std::min(kMaxAnimationSeconds, (*count - timing.originFrame) / timing.fps));
+  }
+  animation.duration = std::min(end, kMaxAnimationSeconds);
+  if (const pugi::xml_attribute frame = node.attribute("frame"); frame && !timing.loop) {
+    const auto value = parseNumber(frame.value());
+    if (value && std::isfinite(*value))
+      animation.time = std::clamp((*value - timing.originFrame) / timing.fps, 0.0, animation.duration);
+  }
+
+  // Each track alone in the scene the import makes.
+  Scene check;
+  check.layers = {importedFlameLayer(flame.genome, flame.palette, flame.weight)};
+  for (const ImportedFlameLayer& other : flame.otherLayers)
+    check.layers.push_back(importedFlameLayer(other.genome, other.palette, other.weight));
+  check.animation = animation;
+  std::size_t keys = 0;
+  for (KeyframeTrack& track : tracks) {
+    if (flame.keyframes.size() >= kMaxMotionTracks || keys + track.keys.size() > kMaxMotionKeys) {
+      reader.lose("motion of " + track.path);
+      reader.warn("the motion of " + track.path + " was left out: an imported flame's motion keeps to " +
+                  std::to_string(kMaxMotionTracks) + " tracks and " + std::to_string(kMaxMotionKeys) + " keys");
+      continue;
+    }
+    // A smooth track whose curve overshoots its value's range (a colour near 1) is keyed
+    // linearly instead, through the same keys.
+    std::string refused;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+      check.keyframes = {track};
+      try {
+        checkKeyframeTracks(check, "the motion");
+        refused.clear();
+        break;
+      } catch (const Error& e) {
+        refused = e.what();
+        if (track.interpolation == Interpolation::Linear) break;
+        track.interpolation = Interpolation::Linear;
+        notes.linearised = true;
+      }
+    }
+    if (!refused.empty()) {
+      reader.lose("motion of " + track.path);
+      reader.warn(refused + "; the motion of " + track.path + " was left out");
+      continue;
+    }
+    keys += track.keys.size();
+    flame.keyframes.push_back(std::move(track));
+  }
+  if (flame.keyframes.empty()) return;
+  flame.animation = animation;
+  std::ostringstream say;
+  say.precision(3);
+  if (notes.flam3 > 0) {
+    say << "flam3's <motion> became " << notes.flam3 << " keyframe track" << (notes.flam3 == 1 ? "" : "s")
+        << (timing.loop ? ", a loop of " : " over ") << timing.loopSeconds << " s (" << kFlam3LoopFrames
+        << " frames at " << kFlam3LoopFps
+        << " fps, voxflame's choice) adding each motion's periodic offset to the value; flam3's turn of transforms "
+           "marked animate=\"1\" over the loop is not keyed";
+    if (notes.linearWaves)
+      say << "; triangle and saw motions are keyed linearly at " << kMaxKeysPerPeriod
+          << " keys a period (saw's jump becomes a steep ramp)";
+  }
+  if (notes.curves > 0) {
+    say << (notes.flam3 > 0 ? "; " : "") << "JWildfire's motion curves became " << notes.curves << " keyframe track"
+        << (notes.curves == 1 ? "" : "s") << " (frame f at (f − " << timing.originFrame << ") / " << timing.fps
+        << " s)";
+    if (!reader.approximatedCurves().empty()) {
+      std::string kinds;
+      for (const std::string& kind : reader.approximatedCurves()) kinds += (kinds.empty() ? "" : ", ") + kind;
+      say << "; its " << kinds
+          << " curves are played as Catmull-Rom curves through the same points, an approximation of JWildfire's";
+    }
+  }
+  if (notes.clamped) say << "; values beyond voxflame's ranges are held at their ends";
+  if (notes.linearised) say << "; smooth tracks that would overshoot their value's range are keyed linearly";
+  reader.warn(say.str());
+}
+
 ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, const std::string& name,
                         const FlameImportOptions& options, const std::map<std::string, std::string>& renamed) {
   FlameReader reader(where, options);
@@ -1268,6 +1973,7 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
     validateFlame(genome, context.empty() ? where : where + ", " + context);
     return depthAdded;
   };
+  std::vector<std::vector<MotionChannel>> channels;  // per imported layer
   if (std::string_view(node.name()) == "jwf-flame") {
     // JWildfire's layered flames keep their transforms and palette in <layer> children, drawn
     // together into one image: each visible layer becomes a voxflame flame layer, the first one
@@ -1290,8 +1996,21 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
         continue;
       }
       const std::string layerContext = layered ? context : "";
-      FlameGenome genome = readGenome(layer, layerContext, reader);
+      std::vector<MotionChannel> layerChannels;
+      FlameGenome genome = readGenome(layer, layerContext, reader, layerChannels);
       const double weight = jwildfireLayerWeight(layer, layerContext, reader);
+      {
+        double factor = 1.0;
+        if (const auto density = parseNumber(layer.attribute("density").value()); density && *density < 1.0)
+          factor = std::max(0.0, *density * *density);
+        reader.readLayerCurves(layer, context, factor);
+        for (MotionChannel& channel : reader.takePendingChannels()) layerChannels.push_back(std::move(channel));
+      }
+      if (layer.child("bgxform")) {
+        reader.lose("JWildfire background transforms");
+        reader.warn("JWildfire " + context +
+                    " has background transforms (<bgxform>), which paint JWildfire's background; they were left out");
+      }
       const std::vector<GradientStop> palette = gradientOf(readPalette(layer, reader));
       const bool depthAdded = finishGenome(genome, layerContext);
       if (first) {
@@ -1303,6 +2022,7 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
       } else {
         flame.otherLayers.push_back({std::move(genome), palette, weight, depthAdded});
       }
+      channels.push_back(std::move(layerChannels));
     }
     if (first)
       reader.fail("",
@@ -1312,14 +2032,20 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
     double heaviest = flame.weight;
     for (const ImportedFlameLayer& layer : flame.otherLayers) heaviest = std::max(heaviest, layer.weight);
     if (heaviest > kMaxImportedLayerWeight) {
+      for (auto& layerChannels : channels)
+        for (MotionChannel& channel : layerChannels)
+          if (!channel.layerField.empty())
+            for (auto& point : channel.points) point.second *= kMaxImportedLayerWeight / heaviest;
       flame.weight *= kMaxImportedLayerWeight / heaviest;
       for (ImportedFlameLayer& layer : flame.otherLayers) layer.weight *= kMaxImportedLayerWeight / heaviest;
     }
   } else {
-    flame.genome = readGenome(node, "", reader);
+    channels.emplace_back();
+    flame.genome = readGenome(node, "", reader, channels.back());
     flame.palette = gradientOf(readPalette(node, reader));
     flame.depthAdded = finishGenome(flame.genome, "");
   }
+  finishMotion(flame, channels, node, reader);
   flame.tone = readTone(node, reader);
   flame.flat = readFlat(node, reader);
   flame.warnings = reader.finishWarnings();
@@ -1587,22 +2313,10 @@ bool placeAsFramed(std::vector<PatternLayer>& layers, const FlatViewSettings& fl
 Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base) {
   Scene scene = base;
   scene.name = flame.name;
-  const auto flameLayer = [](const FlameGenome& genome, const std::vector<GradientStop>& palette, double weight) {
-    PatternLayer layer;
-    layer.kind = PatternKind::Flame;
-    layer.attractor.clear();
-    layer.params.clear();
-    layer.flame = genome;
-    layer.weight = weight;
-    layer.color.mode = ColorMode::Index;
-    layer.color.palette.clear();
-    layer.color.gradient = palette;
-    return layer;
-  };
-  scene.layers = {flameLayer(flame.genome, flame.palette, flame.weight)};
+  scene.layers = {importedFlameLayer(flame.genome, flame.palette, flame.weight)};
   for (const ImportedFlameLayer& other : flame.otherLayers) {
     // Drawn in the first layer's coordinates, as JWildfire draws them into one image.
-    scene.layers.push_back(flameLayer(other.genome, other.palette, other.weight));
+    scene.layers.push_back(importedFlameLayer(other.genome, other.palette, other.weight));
     scene.layers.back().transform.fit = FitMode::Previous;
   }
   placeAsFramed(scene.layers, flame.flat, base.camera, base.gridResolution);
@@ -1611,8 +2325,8 @@ Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base) {
   // Whatever the scene it replaces had: a flame's filaments survive projecting every point (the
   // flam3 way), and ray-marching the grid blurs them to the voxel size.
   scene.render.method = defaultRenderMethod(scene.layers);
-  scene.animation = AnimationSettings{};
-  scene.keyframes.clear();
+  scene.animation = flame.animation;
+  scene.keyframes = flame.keyframes;
   return scene;
 }
 

@@ -8,12 +8,21 @@
 // the reader puts a, b, c, d, e, f into Affine3's first two rows (flame.h). Variations are the
 // attributes of an <xform> that name a variation of the catalogue (flame/variations.h), their
 // parameters `<variation>_<parameter>` attributes (julian_power, ngon_sides); `chaos` is the
-// transform's xaos. Files that are not well-formed XML (JWildfire's attribute names with spaces or
-// `#`, stray closing tags) are read again tolerantly. What voxflame does not know (a variation,
-// flam3's <motion>, JWildfire's motion curves) is left out, reported as a warning and listed in
-// ImportedFlame::leftOut; what would make the flame meaningless (no transforms, only zero
-// weights, coefficients that are not finite or beyond ±1e6) is a core::Error naming the file and
-// the transform.
+// transform's xaos. An attribute that names a catalogue variation is that variation, never a
+// parameter of a shorter one (blur_square beside blur); one that extends a known variation's name
+// without being one of its parameters is an unknown variation. Files that are not well-formed
+// XML (JWildfire's attribute names with spaces or `#`, stray closing tags) are read again
+// tolerantly. What voxflame does not know (a variation, a background transform) is left out,
+// reported as a warning (the unknown variations all in one) and listed in ImportedFlame::leftOut;
+// what would make the flame meaningless (no transforms, only zero weights, coefficients that are
+// not finite or beyond ±1e6) is a core::Error naming the file and the transform.
+//
+// Motion becomes keyframes (ImportedFlame::keyframes): flam3's <motion> elements (periodic
+// offsets, motion_function sin, triangle, hill or Fractorium's saw, over a loop of 128 frames at
+// 30 fps) and JWildfire's motion curves (points frame → value of a transform's weight, colour,
+// colour symmetry, opacity, xy coefficients, a variation's amount or parameter, a layer's weight),
+// each with its interpolation as near as keyframes come (JWildfire's SPLINE and BEZIER are played
+// as Catmull-Rom curves through the same points); the warnings say what was approximated.
 //
 // Flames are 2D. A flat one (no 3D variation, no z coefficient) gains depth on import
 // (addFlameDepth): the z row of every transform becomes z' = ½ z + depth · s, with s from −1 for
@@ -64,9 +73,14 @@ struct ImportedFlame {
   std::vector<GradientStop> palette;  // kFlamePaletteSize stops at i/255, linear RGB
   double weight = 1.0;                // the layer weight (JWildfire's layer weight × density²)
   std::vector<ImportedFlameLayer> otherLayers;
-  ToneMapSettings tone;               // flam3's defaults, then the file's keys
-  FlatViewSettings flat;              // flam3's 2D framing: size, center, scale, zoom, quality, ...
-  bool depthAdded = false;            // addFlameDepth changed the genome
+  ToneMapSettings tone;     // flam3's defaults, then the file's keys
+  FlatViewSettings flat;    // flam3's 2D framing: size, center, scale, zoom, quality, ...
+  bool depthAdded = false;  // addFlameDepth changed the genome
+  // flam3's <motion> and JWildfire's motion curves as keyframes of the scene sceneFromImportedFlame
+  // makes (paths /layers/L/flame/xforms/J/...: L 0 for the flame, 1... for otherLayers), with
+  // their timing; empty when the flame does not move.
+  std::vector<KeyframeTrack> keyframes;
+  AnimationSettings animation;
   std::vector<std::string> warnings;  // what was left out or replaced, for the user
   // What the file asks for that the import could not keep, one short name each, sorted
   // ("variation crackle", "xaos", "<motion>"): empty when the flame was imported whole. The
@@ -101,7 +115,8 @@ bool addFlameDepth(FlameGenome& genome, double depth);
 // A complete scene showing the imported flame: `base` with its layers replaced by one flame layer
 // (colour index mode over the flame's palette) and one more per layer of otherLayers, each with
 // its weight, the others fitted with the first (FitMode::Previous) so they stay in register; the
-// flame's tone keys and 2D framing, its name, the points method (defaultRenderMethod), no animation.
+// flame's tone keys and 2D framing, its name, the points method (defaultRenderMethod), and the
+// flame's motion as keyframes (none when it does not move).
 // The first layer's locked fit and every layer's rotation put the flat view's frame in the mesh,
 // facing base's camera (presets/SCHEMA.md, "Imported flames"), from a short chaos game of the
 // flame for the depth of what it draws inside the frame.
