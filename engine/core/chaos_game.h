@@ -39,7 +39,7 @@ struct ChaosLanes {
   // A direct-colour transform's group: the colour index its variations read and set, and what the
   // colour blend made of it before them (flame.h's directColor blends between the two).
   std::vector<double> gc, gs;
-  std::vector<double> field;       // 1 + amount · noise: a weighting field's factor of the variation weights
+  std::vector<double> field;  // 1 + amount · noise: a weighting field's factor of the variation weights
   std::vector<std::uint32_t> groupRandom;
   void resize(std::size_t lanes);
   std::size_t size() const { return x.size(); }

@@ -1686,8 +1686,9 @@ FlameGenome readGenome(const pugi::xml_node& body, const std::string& context, F
       // Keyframes reach the final transform, not those chained after it.
       if (!reader.takePendingChannels().empty()) {
         reader.lose("motion of chained final transforms");
-        reader.warn(where + " is animated, which voxflame does not keyframe on a chained final transform; it "
-                            "stands still");
+        reader.warn(where +
+                    " is animated, which voxflame does not keyframe on a chained final transform; it "
+                    "stands still");
       }
     }
   }
