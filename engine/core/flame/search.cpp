@@ -37,14 +37,22 @@ constexpr std::array<std::string_view, 40> kFavourites = {
 // Variations that smear points (noise, blurs), only act on depth, only turn the point (rotate_*,
 // whose weight is an angle) or only crop it: fine as a second term, but alone they make a formless
 // cloud, flatten the pattern or leave the affine map bare, so they are never a transform's only term.
-constexpr std::array<std::string_view, 25> kNeverAlone = {
-    "noise",    "blur",       "gaussian_blur", "pre_blur", "square",      "blur3D",    "radial_blur",
-    "zscale",   "ztranslate", "zcone",         "zblur",    "blur_circle", "blur_zoom", "blur_pixelize",
-    "crackle",  "pre_zscale", "blur_linear",   "exblur",   "inflateZ_3",  "rotate_x",  "rotate_y",
-    "rotate_z", "smartcrop",  "circlecrop",    "cropn"};
+// Besides these names, every variation whose result ignores the point (VariationInfo::additive:
+// the blurs) or that acts on depth alone (mapsXY false) is never alone either (neverAlone below).
+constexpr std::array<std::string_view, 34> kNeverAlone = {
+    "noise",       "blur",          "gaussian_blur",     "pre_blur",   "square",      "blur3D",
+    "radial_blur", "zscale",        "ztranslate",        "zcone",      "zblur",       "blur_circle",
+    "blur_zoom",   "blur_pixelize", "crackle",           "pre_zscale", "blur_linear", "exblur",
+    "inflateZ_3",  "rotate_x",      "rotate_y",          "rotate_z",   "smartcrop",   "circlecrop",
+    "cropn",       "hexcrop",       "circlecrop2",       "vignette",   "plane_wf",    "triangle",
+    "zscale_wf",   "mirror_wf",     "point_symmetry_wf", "chunk"};
 
 bool contains(const auto& list, std::string_view name) {
   return std::find(list.begin(), list.end(), name) != list.end();
+}
+
+bool neverAlone(const VariationInfo& info) {
+  return contains(kNeverAlone, info.name) || info.additive || !info.mapsXY;
 }
 
 double uniformIn(SplitMix64& rng, double low, double high) {
@@ -55,28 +63,28 @@ int integerIn(SplitMix64& rng, int low, int high) {  // inclusive
   return low + static_cast<int>(rng.next() % static_cast<std::uint64_t>(high - low + 1));
 }
 
-double drawWeight(std::string_view name) {
-  if (contains(kNeverAlone, name)) return 0.4;
-  return contains(kFavourites, name) ? 3.0 : 1.0;
+double drawWeight(const VariationInfo& info) {
+  if (neverAlone(info)) return 0.4;
+  return contains(kFavourites, info.name) ? 3.0 : 1.0;
 }
 
 // One catalogue entry drawn with drawWeight, skipping `exclude` and, when `alone`, the never-alone ones.
 const VariationInfo* drawVariation(SplitMix64& rng, bool alone, const std::vector<VariationTerm>& exclude) {
   const auto& catalogue = variationCatalogue();
   const auto usable = [&](const VariationInfo& info) {
-    if (alone && contains(kNeverAlone, info.name)) return false;
+    if (alone && neverAlone(info)) return false;
     return std::none_of(exclude.begin(), exclude.end(), [&](const VariationTerm& t) { return t.name == info.name; });
   };
   double total = 0.0;
   for (const VariationInfo& info : catalogue)
-    if (usable(info)) total += drawWeight(info.name);
+    if (usable(info)) total += drawWeight(info);
   if (total <= 0.0) return nullptr;
   double pick = rng.uniform() * total;
   const VariationInfo* last = nullptr;
   for (const VariationInfo& info : catalogue) {
     if (!usable(info)) continue;
     last = &info;
-    pick -= drawWeight(info.name);
+    pick -= drawWeight(info);
     if (pick < 0.0) return &info;
   }
   return last;
@@ -255,7 +263,8 @@ void structuralChange(FlameGenome& g, SplitMix64& rng, const RandomFlameOptions&
       if (x.variations.size() > 1) {
         x.variations.erase(x.variations.begin() + static_cast<std::ptrdiff_t>(rng.next() % x.variations.size()));
         // What is left must be able to stand alone.
-        if (x.variations.size() == 1 && contains(kNeverAlone, x.variations.front().name))
+        const VariationInfo* left = findVariation(x.variations.front().name);
+        if (x.variations.size() == 1 && left && neverAlone(*left))
           x.variations.push_back(drawTerm(rng, true, x.variations));
       }
       break;
