@@ -40,6 +40,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addFractorium2DVariationsD(c);
   variation_kernels::addJwildfireShapeVariations(c);
   variation_kernels::addJwildfireMoreVariations(c);
+  variation_kernels::addJwildfireTailVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")

@@ -166,6 +166,7 @@ void addFractorium2DVariationsC(std::vector<VariationInfo>& catalogue);
 void addFractorium2DVariationsD(std::vector<VariationInfo>& catalogue);
 void addJwildfireShapeVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireMoreVariations(std::vector<VariationInfo>& catalogue);
+void addJwildfireTailVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -215,12 +215,22 @@ VOXFLAME_VARIATION_TARGETS void loonie3(const VariationInput& in, double* __rest
   }
 }
 
-VOXFLAME_VARIATION_2D(mask, {
-  const double d = w / fractoriumZeps(x[i] * x[i] + y[i] * y[i]);
-  const double s = std::sin(x[i]), c = std::cos(x[i]), k = std::cosh(y[i]) + 1.0;
-  outX[i] += d * s * k * s * s;
-  outY[i] += d * c * k * s * s;
-})
+// JWildfire's mask has five parameters more: X = xscale·x + xshift and Y = yscale·y + yshift in place of
+// x and y, and ushift in place of the 1; their defaults give Fractorium's. (JWildfire hides the point at
+// the origin where Fractorium divides by ε; Fractorium's way is kept.)
+VOXFLAME_VARIATION_TARGETS void mask(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                     double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double xshift = P[0], yshift = P[1], ushift = P[2], xscale = P[3], yscale = P[4];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double d = w / fractoriumZeps(x[i] * x[i] + y[i] * y[i]);
+    const double u = xscale * x[i] + xshift, v = yscale * y[i] + yshift;
+    const double s = std::sin(u), c = std::cos(u), k = std::cosh(v) + ushift;
+    outX[i] += d * s * k * s * s;
+    outY[i] += d * c * k * s * s;
+    outZ[i] += w * z[i];
+  }
+}
 
 // Fractorium's mcarpet: an ovoid-like scaling by w/(r²/4 + 1) plus a Lozi-like term.
 VOXFLAME_VARIATION_TARGETS void mcarpet(const VariationInput& in, double* __restrict ox, double* __restrict oy,
@@ -614,7 +624,15 @@ void variation_kernels::addFractorium2dMVariations(std::vector<VariationInfo>& c
       k2D, kFixed, &loonie3);
   add("lozi", "(1 − a |x| + y, b x), z: the Lozi map (Fractorium's)", k2D, kFixed, &lozi,
       {{"a", 0.5, -2.0, 2.0}, {"b", 1.0, -2.0, 2.0}});
-  add("mask", "(sin x, cos x) (cosh y + 1) sin² x / r², z; r² as ε where 0 (Fractorium's)", k2D, kFixed, &mask);
+  add("mask",
+      "(sin X, cos X) (cosh Y + ushift) sin² X / r², z; X = xscale·x + xshift, Y = yscale·y + yshift; r² as ε where "
+      "0 (Fractorium's, with JWildfire's parameters)",
+      k2D, kFixed, &mask,
+      {{"xshift", 0.0, -2.0, 2.0},
+       {"yshift", 0.0, -2.0, 2.0},
+       {"ushift", 1.0, -2.0, 2.0},
+       {"xscale", 1.0, -2.0, 2.0},
+       {"yscale", 1.0, -2.0, 2.0}});
   add("mcarpet", "(x x₀, y y₀)/(r²/4 + 1) + (1 − twist x² + y, tilt x), z; x₀, y₀ the parameters x, y (Fractorium's)",
       k2D, kFixed, &mcarpet,
       {{"x", 0.0, -2.0, 2.0}, {"y", 0.0, -2.0, 2.0}, {"twist", 0.0, -2.0, 2.0}, {"tilt", 0.0, -2.0, 2.0}});

@@ -451,9 +451,12 @@ VOXFLAME_VARIATION_TARGETS void splits(const VariationInput& in, double* __restr
                                        double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double sx = P[0], sy = P[1];
+  // JWildfire's shears (dark-beam's, to match the splits.dll plugin): each half also slides along the
+  // axis it is split from. 0 by default, which is flam3's splits.
+  const double lshear = P[2], rshear = P[3], ushear = P[4], dshear = P[5];
   for (std::size_t i = 0; i < n; ++i) {
-    outX[i] += w * (x[i] >= 0.0 ? x[i] + sx : x[i] - sx);
-    outY[i] += w * (y[i] >= 0.0 ? y[i] + sy : y[i] - sy);
+    outX[i] += w * ((x[i] >= 0.0 ? x[i] + sx : x[i] - sx) + (y[i] >= 0.0 ? ushear : -dshear));
+    outY[i] += w * ((y[i] >= 0.0 ? y[i] + sy : y[i] - sy) + (x[i] >= 0.0 ? rshear : -lshear));
     outZ[i] += w * z[i];
   }
 }
@@ -785,8 +788,16 @@ void variation_kernels::addFlam3Variations(std::vector<VariationInfo>& catalogue
       {{"x", 0.5, 0.0, 2.0}, {"xinside", 0.0, -1.0, 1.0}, {"y", 0.5, 0.0, 2.0}, {"yinside", 0.0, -1.0, 1.0}});
   add("split", "(cos(π ysize·y) ≥ 0 ? x : −x, cos(π xsize·x) ≥ 0 ? y : −y, z)", k2D, kFixed, &split,
       {{"xsize", 0.5, -2.0, 2.0}, {"ysize", 0.5, -2.0, 2.0}});
-  add("splits", "(x ± x₀, y ± y₀, z): each half moved away from the axis (x₀, y₀ the parameters x, y)", k2D, kFixed,
-      &splits, {{"x", 0.0, -1.0, 1.0}, {"y", 0.0, -1.0, 1.0}});
+  add("splits",
+      "(x ± x₀ + (y ≥ 0 ? ushear : −dshear), y ± y₀ + (x ≥ 0 ? rshear : −lshear), z): each half moved away from the "
+      "axis (x₀, y₀ the parameters x, y) and slid along it by JWildfire's shears",
+      k2D, kFixed, &splits,
+      {{"x", 0.0, -1.0, 1.0},
+       {"y", 0.0, -1.0, 1.0},
+       {"lshear", 0.0, -1.0, 1.0},
+       {"rshear", 0.0, -1.0, 1.0},
+       {"ushear", 0.0, -1.0, 1.0},
+       {"dshear", 0.0, -1.0, 1.0}});
   add("stripes", "(d (1 − space) + X, y + d² warp, z); X = ⌊x + ½⌋, d = x − X", k2D, kFixed, &stripes,
       {{"space", 0.0, -1.0, 1.0}, {"warp", 0.0, -2.0, 2.0}});
   add("wedge", "(r + hole)(cos α, sin α), z; a = φ + swirl·r, α = a (1 − angle·count/2π) + angle ⌊(count·a + π)/2π⌋",

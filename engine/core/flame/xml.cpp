@@ -122,7 +122,8 @@ const VariationInfo* variationNamed(std::string_view name) {
 // octa_y and octa_z (JWildfire's octagon_x ...); bezo97's pixel_flow plugin writes its parameters
 // bare (angle, len, ...). JWildfire's crop_trapezoid names two parameters "Base Sup." and
 // "Base Inf." (not XML names; tolerantXml keeps them), the catalogue's base_sup and base_inf.
-// Fractorium's q_ode names its parameters q_ode01 … q_ode12, without the "_".
+// Fractorium's q_ode names its parameters q_ode01 … q_ode12, without the "_". JWildfire's rational3
+// names Fractorium's t3, t2, t1, tc, b3, b2, b1, bc as a … h.
 std::vector<std::string> fileParamNames(const std::string& termAttribute, const VariationInfo& info,
                                         const std::string& param) {
   std::vector<std::string> names = {termAttribute + "_" + param};
@@ -132,6 +133,11 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
   if (info.name == "pixel_flow") names.push_back(param);
   if (info.name == "q_ode") names.push_back(termAttribute + param);
   if (info.name == "minkowskope") names.push_back("mskope_" + param);  // the Apophysis plugin's names
+  if (info.name == "rational3") {
+    static const std::array<std::string_view, 8> fractorium = {"t3", "t2", "t1", "tc", "b3", "b2", "b1", "bc"};
+    const auto at = std::find(fractorium.begin(), fractorium.end(), param);
+    if (at != fractorium.end()) names.push_back(termAttribute + "_" + char('a' + (at - fractorium.begin())));
+  }
   if (info.name == "crop_trapezoid" && param == "base_sup") names.push_back(termAttribute + "_Base Sup.");
   if (info.name == "crop_trapezoid" && param == "base_inf") names.push_back(termAttribute + "_Base Inf.");
   if (info.name == "mobius" && param.size() == 4) {
@@ -648,7 +654,14 @@ class FlameReader {
       VariationTerm term;
       term.name = termName(withoutCopyMark(name), *info);
       term.weight = number(attribute, context, -kFlameCoefficientLimit, kFlameCoefficientLimit);
+      // JWildfire runs a variation whatever its weight, and pre_stabilize does not use its weight:
+      // files leave it at 0. voxflame drops terms of weight 0, so it is kept at weight 1.
+      if (term.weight == 0.0 && info->name == "stabilize" && term.name == "pre_stabilize") term.weight = 1.0;
       term.params = info->defaultParams();
+      // JWildfire's rational3 names its coefficients a … h (rational3_a = Fractorium's t3, …) and has
+      // defaults of its own, which a file naming them that way gets for the ones it leaves out.
+      if (info->name == "rational3" && byLowerName.contains(lowered(name + "_a")))
+        term.params = {0.5, 0.0, 0.25, 1.0, 0.0, 0.9, 0.0, 1.0};
       for (std::size_t i = 0; i < info->params.size(); ++i)
         for (const std::string& key : fileParamNames(name, *info, info->params[i].name)) {
           // Editors that capitalise a variation capitalise its parameters too (Mobius_Re_A). An
@@ -699,6 +712,15 @@ class FlameReader {
              " reading the transform's state (static other than 2, or cropmode 2), which voxflame does not keep; "
              "it crops the point itself and drops what cropmode 2 would replace");
       }
+      // JWildfire runs a prepost_ variation as a pre_ term (its inverse map) and as a post_ term (the map
+      // itself): the catalogue has the two halves as pre_prepost_X and prepost_X.
+      if (info->name.starts_with("prepost_") && term.name == info->name) {
+        VariationTerm pre = term;
+        pre.name = "pre_" + info->name;
+        term.name = "post_" + info->name;
+        x.variations.push_back(std::move(pre));
+      }
+      // (A motion curve of the attribute animates the post_ half.)
       termIndex.emplace(name, x.variations.size());
       x.variations.push_back(std::move(term));
     }
