@@ -85,8 +85,9 @@ VOXFLAME_VARIATION_TARGETS void epispiral(const VariationInput& in, double* __re
 
 // Xyrus02's falloff2 (Apophysis 7X): a blur that grows with the distance from a centre, linear
 // (type 0), in spherical coordinates (1; its z is sin σ without the radius, as the plugin has it)
-// or Gaussian (2). The plugin's colour shift (mul_c) is not applied: a variation here moves
-// points, not colours.
+// or Gaussian (2). Its colour shift (mul_c) moves the colour index by a fourth draw − ½ times D,
+// mod 1, as Fractorium's does (a direct-colour variation); the fourth number is drawn only when
+// mul_c is set, so a falloff2 without colour shift draws as it always has.
 VOXFLAME_VARIATION_TARGETS void falloff2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                          double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
@@ -96,6 +97,7 @@ VOXFLAME_VARIATION_TARGETS void falloff2(const VariationInput& in, double* __res
   const double x0 = P[6], y0 = P[7], z0 = P[8];
   const bool invert = std::round(P[9]) >= 1.0;
   const double type = std::round(P[10]);
+  const double mulC = std::clamp(P[5], 0.0, 1.0);
   for (std::size_t i = 0; i < n; ++i) {
     const double dx = x[i] - x0, dy = y[i] - y0, dz = z[i] - z0;
     double d = std::sqrt(dx * dx + dy * dy + dz * dz);
@@ -124,6 +126,7 @@ VOXFLAME_VARIATION_TARGETS void falloff2(const VariationInput& in, double* __res
     outX[i] += w * px;
     outY[i] += w * py;
     outZ[i] += w * pz;
+    if (mulC != 0.0) colour[i] = std::abs(laneFmod(colour[i] + mulC * (laneUniform(rnd[i]) - 0.5) * d, 1.0));
   }
 }
 
@@ -190,8 +193,8 @@ void variation_kernels::addApophysisVariations(std::vector<VariationInfo>& catal
       "p + blur growing with D = max(0, (|p − (x0, y0, z0)| − mindist)) · 0.04 scatter (|…| as 1 − |…| with invert): "
       "type 0 (mul_x Ψ₁, mul_y Ψ₂, mul_z Ψ₃) D; type 1 r (cos σ cos φ, cos σ sin φ), sin σ with σ = asin(z/r) + "
       "mul_z Ψ₁ D, φ = atan2(y, x) + mul_y Ψ₂ D, r = |p| + mul_x Ψ₃ D; type 2 a Gaussian-like offset D Ψ₃ in a "
-      "random direction (2πΨ₁, πΨ₂) scaled by mul_x, mul_y, mul_z (Apophysis 7X's; mul_c, its colour shift, is not "
-      "applied)",
+      "random direction (2πΨ₁, πΨ₂) scaled by mul_x, mul_y, mul_z; the colour index c ↦ |c + mul_c (Ψ₄ − ½) D| mod 1 "
+      "(Apophysis 7X's)",
       k3D, kRandom, &falloff2,
       {{"scatter", 1.0, 0.0, 20.0},
        {"mindist", 0.5, 0.0, 3.0},
@@ -204,6 +207,7 @@ void variation_kernels::addApophysisVariations(std::vector<VariationInfo>& catal
        {"z0", 0.0, -3.0, 3.0},
        {"invert", 0.0, 0.0, 1.0},
        {"type", 0.0, 0.0, 2.0}});
+  catalogue.back().directColour = true;
   add("crop",
       "(x, y) clamped into [left, right] × [top, bottom]: a coordinate beyond an edge lands Ψ · scatter_area · half "
       "the side inside it; with zero, a point outside goes to the origin instead; z",

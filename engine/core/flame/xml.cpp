@@ -679,10 +679,8 @@ class FlameReader {
         zeroTerms.emplace(name, std::move(term));
         continue;
       }
-      // falloff2's colour shift is not applied (variations_apophysis.cpp), nor point_symmetry_wf's,
-      // mirror_wf's or axis_symmetry_wf's.
+      // point_symmetry_wf's, mirror_wf's and axis_symmetry_wf's colour shifts are not applied.
       const bool shiftsColour =
-          (info->name == "falloff2" && term.params.at(5) != 0.0) ||
           (info->name == "point_symmetry_wf" && term.params.at(3) != 0.0) ||
           (info->name == "mirror_wf" &&
            std::any_of(term.params.begin() + 8, term.params.end(), [](double v) { return v != 0.0; })) ||
