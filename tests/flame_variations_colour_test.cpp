@@ -423,9 +423,15 @@ const std::vector<ColourCase>& colourCases() {
       // falloff2's colour shift: c + mul_c (Ψ₄ − ½) D, D = (|p − centre| − mindist) 0.04 scatter; the fourth
       // draw only with mul_c set (none by default, the colour left alone).
       {"falloff2", {}, {0.3, -0.7, 0.5}, kHighSeed, 0.375},
-      {"falloff2", {10.0, 0.2, 1.0, 0.5, 0.7, 0.5, 0.1, -0.2, 0.3, 0.0, 0.0}, {0.3, -0.7, 0.5}, kHighSeed,
+      {"falloff2",
+       {10.0, 0.2, 1.0, 0.5, 0.7, 0.5, 0.1, -0.2, 0.3, 0.0, 0.0},
+       {0.3, -0.7, 0.5},
+       kHighSeed,
        0.33758096925139186},
-      {"falloff2", {10.0, 0.1, 1.0, 0.5, 0.7, 1.0, 0.1, -0.2, 0.3, 0.0, 2.0}, {0.3, -0.7, 0.5}, kLowSeed,
+      {"falloff2",
+       {10.0, 0.1, 1.0, 0.5, 0.7, 1.0, 0.1, -0.2, 0.3, 0.0, 2.0},
+       {0.3, -0.7, 0.5},
+       kLowSeed,
        0.28123134189556204},
       // pixel_flow with enable_dc: the fade's Ψ, the lane's first draw; without it the colour is left alone.
       {"pixel_flow", {90.0, 0.1, 200.0, 42.0, 1.0}, {0.3, -0.7, 0.5}, kHighSeed, 0.8794664144515991},
