@@ -402,8 +402,7 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
     ASSERT_EQ(term.params.size(), expected.size()) << info.name;
     for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_DOUBLE_EQ(term.params[i], expected[i]) << info.name;
     // Their colour shifts, set here, are the parameters not applied.
-    if (info.name == "axis_symmetry_wf" || info.name == "point_symmetry_wf" ||
-        info.name == "mirror_wf")
+    if (info.name == "axis_symmetry_wf" || info.name == "point_symmetry_wf" || info.name == "mirror_wf")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour shift of " + info.name}));
     else if (info.name == "truchet" || info.name == "recurrenceplot" || info.name == "spirograph3D" ||
              info.name == "inversion")
