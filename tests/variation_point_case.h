@@ -1,6 +1,6 @@
-// One variation at one point, against a value worked out by hand: the table row both catalogue
-// test files (flame_variations_test.cpp, flame_variations_more_test.cpp) are made of, and the check
-// they run on each row.
+// One variation at one point, against a value worked out by hand: the table row the catalogue's
+// test files (flame_variations_test.cpp, flame_variations_more_test.cpp and one per family of
+// variations) are made of, and the check they run on each row.
 #pragma once
 
 #include <gtest/gtest.h>

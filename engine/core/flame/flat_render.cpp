@@ -36,7 +36,7 @@ constexpr int kBadRetries = 5;
 constexpr double kMaxHistogramBytes = 1.5e9;
 // flam3's k1 carries 268/256 (rect.c): flam3 brightness 4 is 4 · 268/256 on the log curve.
 constexpr double kFlam3BrightnessFactor = 268.0 / 256.0;
-// The finisher's log is brightness · log(1 + kFinisherDensityScale · D) (flame_image.cpp's k2).
+// The finisher's log is brightness · log(1 + kFinisherDensityScale · D) (image.cpp's k2).
 constexpr double kFinisherDensityScale = 1.5;
 
 const PatternLayer& flameLayer(const Scene& scene) {

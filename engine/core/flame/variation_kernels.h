@@ -1,6 +1,7 @@
-// What the files of the variation catalogue share (flame_variations.cpp and
-// flame_variations_more.cpp): the constants, the prologue every variation function opens with, the
-// build targets, and the one way entries are added to the catalogue. Internal to those files.
+// What the files of the variation catalogue share (flame/variations_*.cpp, one per family): the
+// constants and helpers, the prologue every variation function opens with, the build targets, the
+// one way entries are added to the catalogue, and each family's table function. Internal to those
+// files and catalogue.cpp.
 #pragma once
 
 #include <algorithm>

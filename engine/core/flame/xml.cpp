@@ -702,7 +702,7 @@ class FlameReader {
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
       }
       // smartcrop reads the point itself (static 2) and cannot keep the last point it let through
-      // (cropmode 2), which the plugin's other modes need (flame_variations.cpp).
+      // (cropmode 2), which the plugin's other modes need (variations_plugins.cpp).
       if (info->name == "smartcrop" &&
           (std::round(term.params.at(10)) != 2.0 || std::round(term.params.at(9)) == 2.0)) {
         lose("static or cropmode 2 of " + withoutCopyMark(name));
