@@ -889,3 +889,33 @@ TEST(FlameXml, ChainedFinalTransformsAreKeptInOrder) {
 }
 
 }  // namespace
+
+namespace {
+
+// flam3 2.x's variation lists: var1="k" is flam3's k-th variation alone, var="w0 w1 ..." weighs
+// them by index; an index past flam3's 99 is refused by var1 and named as lost by var.
+TEST(FlameXml, Flam3sOldVariationListsAreRead) {
+  const ImportedFlame one =
+      readFlameXml(flameFile("<xform weight=\"1\" color=\"0\" var1=\"2\" coefs=\"0.5 0 0 0.5 0 0\"/>\n"), "old.flame")
+          .flame;
+  ASSERT_EQ(one.genome.xforms[0].variations.size(), 1u);
+  EXPECT_EQ(one.genome.xforms[0].variations[0].name, "spherical");
+  EXPECT_DOUBLE_EQ(one.genome.xforms[0].variations[0].weight, 1.0);
+  EXPECT_TRUE(one.leftOut.empty());
+  const ImportedFlame list =
+      readFlameXml(
+          flameFile(
+              "<xform weight=\"1\" color=\"0\" var=\"0.5 0 0 0 0 0 0 0 0 0 0 0 0 0.25\" coefs=\"0.5 0 0 0.5 0 0\"/>\n"),
+          "old.flame")
+          .flame;
+  ASSERT_EQ(list.genome.xforms[0].variations.size(), 2u);
+  EXPECT_EQ(list.genome.xforms[0].variations[0].name, "linear");
+  EXPECT_EQ(list.genome.xforms[0].variations[1].name, "julia");
+  EXPECT_DOUBLE_EQ(list.genome.xforms[0].variations[1].weight, 0.25);
+  EXPECT_NE(errorOf(flameFile("<xform weight=\"1\" var1=\"99\" coefs=\"1 0 0 1 0 0\"/>\n")).find("var1"),
+            std::string::npos);
+  EXPECT_NE(errorOf(flameFile("<xform weight=\"1\" var=\"1 x\" coefs=\"1 0 0 1 0 0\"/>\n")).find("var="),
+            std::string::npos);
+}
+
+}  // namespace

@@ -101,6 +101,25 @@ std::string lowered(std::string_view text) {
   return out;
 }
 
+// flam3's variations in the order of its list (variations.c), which flam3 2.x's var= and var1=
+// attributes index.
+constexpr std::array<std::string_view, 99> kFlam3VariationOrder = {
+    "linear",        "sinusoidal",  "spherical",   "swirl",      "horseshoe",   "polar",      "handkerchief",
+    "heart",         "disc",        "spiral",      "hyperbolic", "diamond",     "ex",         "julia",
+    "bent",          "waves",       "fisheye",     "popcorn",    "exponential", "power",      "cosine",
+    "rings",         "fan",         "blob",        "pdj",        "fan2",        "rings2",     "eyefish",
+    "bubble",        "cylinder",    "perspective", "noise",      "julian",      "juliascope", "blur",
+    "gaussian_blur", "radial_blur", "pie",         "ngon",       "curl",        "rectangles", "arch",
+    "tangent",       "square",      "rays",        "blade",      "secant2",     "twintrian",  "cross",
+    "disc2",         "super_shape", "flower",      "conic",      "parabola",    "bent2",      "bipolar",
+    "boarders",      "butterfly",   "cell",        "cpow",       "curve",       "edisc",      "elliptic",
+    "escher",        "foci",        "lazysusan",   "loonie",     "pre_blur",    "modulus",    "oscilloscope",
+    "polar2",        "popcorn2",    "scry",        "separation", "split",       "splits",     "stripes",
+    "wedge",         "wedge_julia", "wedge_sph",   "whorl",      "waves2",      "exp",        "log",
+    "sin",           "cos",         "tan",         "sec",        "csc",         "cot",        "sinh",
+    "cosh",          "tanh",        "sech",        "csch",       "coth",        "auger",      "flux",
+    "mobius"};
+
 // The catalogue entry a flame file's variation name means (pre_ and post_ forms included).
 // Apophysis and JWildfire write "linear3D" for the linear map that carries z along, which is
 // exactly voxflame's "linear"; the alias stands only while the catalogue has no entry of that name
@@ -624,9 +643,35 @@ class FlameReader {
         x.xaos.push_back(v);
       }
     }
-    if (node.attribute("var") || node.attribute("var1")) {
-      lose("var= lists");
-      warn(context + " uses flam3's old var=/var1= variation lists, which voxflame does not read; it acts as linear");
+    // flam3 2.x's variation lists: var="w0 w1 ..." weighs the variations by their index in flam3's
+    // list, var1="k" is variation k alone at weight 1.
+    std::vector<VariationTerm> oldList;
+    if (const pugi::xml_attribute list = node.attribute("var")) {
+      const auto weights = parseNumbers(list.value());
+      if (!weights) fail(context, "attribute var=\"" + std::string(list.value()).substr(0, 80) + "\" must be numbers");
+      for (std::size_t i = 0; i < weights->size(); ++i) {
+        const double weight = (*weights)[i];
+        if (weight == 0.0) continue;
+        if (!std::isfinite(weight) || std::abs(weight) > kFlameCoefficientLimit)
+          fail(context, "has a var= weight that is not a finite number within ±1e6");
+        if (i >= kFlam3VariationOrder.size()) {
+          lose("var= entry " + std::to_string(i));
+          warn(context + " weighs variation " + std::to_string(i) + " of flam3's list in var=, which has only " +
+               std::to_string(kFlam3VariationOrder.size()) + "; it was left out");
+          continue;
+        }
+        const VariationInfo& info = variationOrThrow(kFlam3VariationOrder[i]);
+        oldList.push_back({info.name, weight, info.defaultParams()});
+      }
+    } else if (const pugi::xml_attribute one = node.attribute("var1")) {
+      const auto index = parseNumber(one.value());
+      if (!index || *index < 0.0 || *index >= static_cast<double>(kFlam3VariationOrder.size()) ||
+          *index != std::floor(*index))
+        fail(context, "attribute var1=\"" + std::string(one.value()).substr(0, 40) +
+                          "\" must be the index of one of flam3's " + std::to_string(kFlam3VariationOrder.size()) +
+                          " variations");
+      const VariationInfo& info = variationOrThrow(kFlam3VariationOrder[static_cast<std::size_t>(*index)]);
+      oldList.push_back({info.name, 1.0, info.defaultParams()});
     }
 
     // Variations: attributes naming a catalogue entry. Their parameters follow as
@@ -777,6 +822,7 @@ class FlameReader {
         dropped += (dropped.empty() ? "" : ", ") + name;
       }
     }
+    for (VariationTerm& term : oldList) x.variations.push_back(std::move(term));
     // Without most of its variation weight a transform shrinks towards its affine map's origin
     // and the picture changes: say so, so an odd-looking import is not a mystery.
     double keptWeight = 0.0;
