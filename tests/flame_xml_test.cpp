@@ -919,3 +919,26 @@ TEST(FlameXml, Flam3sOldVariationListsAreRead) {
 }
 
 }  // namespace
+
+namespace {
+
+// What a flame turns on at its own level that voxflame does not keep is named, never passed over.
+TEST(FlameXml, FlameLevelFeaturesVoxflameDoesNotKeepAreNamed) {
+  const std::string attributes =
+      "post_symmetry_type=\"POINT\" post_symmetry_order=\"3\" cam_pitch=\"0.5\" cam_yaw=\"0\" "
+      "sld_render_enabled=\"true\" camPitchCurve_enabled=\"true\"";
+  const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, "", attributes), "p.flame").flame;
+  for (const char* lost :
+       {"JWildfire post symmetry", "JWildfire solid rendering", "3D camera", "JWildfire flame motion curve"})
+    EXPECT_NE(std::find(flame.leftOut.begin(), flame.leftOut.end(), lost), flame.leftOut.end()) << lost;
+  EXPECT_TRUE(hasWarningContaining(flame, "cam_pitch"));
+  // Switched off, none of them is a loss.
+  const ImportedFlame plain =
+      readFlameXml(
+          flameFile(kTwoXforms, "", "post_symmetry_type=\"NONE\" cam_pitch=\"0.0\" sld_render_enabled=\"false\""),
+          "p.flame")
+          .flame;
+  EXPECT_TRUE(plain.leftOut.empty());
+}
+
+}  // namespace

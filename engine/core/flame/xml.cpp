@@ -1559,6 +1559,48 @@ Palette readPalette(const pugi::xml_node& flame, FlameReader& reader) {
   return fallbackPalette();
 }
 
+// JWildfire's flame-level features that neither the flat view nor the mesh keeps, named as lost
+// when a file turns them on: its post symmetry (copies of every drawn point turned about a centre
+// or mirrored), solid rendering (lights, materials, ambient occlusion), a 3D camera (pitch, yaw,
+// perspective, depth of field: the flat view draws the flame straight on, the mesh with the
+// explorer's camera) and motion curves on flame values (the camera's, the brightness').
+void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader) {
+  const std::string symmetry = flame.attribute("post_symmetry_type").as_string("NONE");
+  if (!symmetry.empty() && symmetry != "NONE") {
+    reader.lose("JWildfire post symmetry");
+    reader.warn("the flame has JWildfire's post symmetry (" + symmetry.substr(0, 40) +
+                "), which voxflame does not apply; its points are drawn once");
+  }
+  const std::string solid = flame.attribute("sld_render_enabled").as_string("false");
+  if (solid == "true" || solid == "1") {
+    reader.lose("JWildfire solid rendering");
+    reader.warn(
+        "the flame uses JWildfire's solid rendering (lights and materials), which voxflame does not; it is "
+        "drawn as a glowing flame");
+  }
+  std::string camera;
+  for (const char* key : {"cam_pitch", "cam_yaw", "cam_persp", "cam_perspective", "cam_dof"}) {
+    const auto value = parseNumber(flame.attribute(key).as_string("0"));
+    if (value && *value != 0.0 && std::isfinite(*value)) camera += (camera.empty() ? "" : ", ") + std::string(key);
+  }
+  if (!camera.empty()) {
+    reader.lose("3D camera");
+    reader.warn("the flame's 3D camera (" + camera +
+                ") is not kept: the flat view draws the flame straight on and the mesh with the explorer's camera");
+  }
+  std::string curves;
+  for (const pugi::xml_attribute& attribute : flame.attributes()) {
+    const std::string_view name = attribute.name();
+    if (name.ends_with("Curve_enabled") && std::string_view(attribute.value()) == "true")
+      curves += (curves.empty() ? "" : ", ") + std::string(name.substr(0, name.size() - 13));
+  }
+  if (!curves.empty()) {
+    reader.lose("JWildfire flame motion curve");
+    reader.warn("the flame animates " + curves.substr(0, 200) +
+                " with JWildfire motion curves, which voxflame does not keyframe; the values as they stand are used");
+  }
+}
+
 // --- tone -----------------------------------------------------------------------------------
 
 ToneMapSettings readTone(const pugi::xml_node& flame, FlameReader& reader) {
@@ -2115,6 +2157,7 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
   finishMotion(flame, channels, node, reader);
   flame.tone = readTone(node, reader);
   flame.flat = readFlat(node, reader);
+  reportUnkeptFlameFeatures(node, reader);
   flame.warnings = reader.finishWarnings();
   flame.leftOut = reader.finishLeftOut();
   return flame;
