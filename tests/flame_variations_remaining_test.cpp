@@ -158,6 +158,25 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kLowSeed,
        {0.4770618251835876, -0.5243436080490324, 0.5}},
+      // crob: outside the inner borders (±0.5 by default) a random point of the band, unweighted; inside nothing.
+      {"crob", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.45467448234558105, 0.9223548522990495, 0.4}},
+      {"crob", {}, {3.0, 0.2, 0.5}, 0.8, kLowSeed, {0.8832104827752669, 0.12429302930831909, 0.4}},
+      {"crob", {}, {0.3, -0.7, 0.5}, 0.8, kSeed4, {-0.6567368584228959, -0.08851706981658936, 0.4}},
+      {"crob", {}, {0.1, 0.2, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.4}},
+      {"crob", {0.5, -2.0, -1.0, 3.0, 1.0, 0.3, 1.5}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.4}},
+      {"crob",
+       {0.5, -2.0, -1.0, 3.0, 1.0, 0.3, 1.5},
+       {2.9, -1.9, 0.5},
+       0.8,
+       kHighSeed,
+       {1.909348964691162, 0.40723385597932804, 0.4}},
+      {"crob",
+       {0.5, -2.0, -1.0, 3.0, 1.0, 0.3, 1.5},
+       {2.9, -1.9, 0.5},
+       0.8,
+       kSeed3,
+       {2.833156108856201, 0.44391668373167903, 0.4}},
+      {"crob", {-1.0, 1.0, -1.0, 1.0, 0.0, 0.5, 2.0}, {3.0, 0.2, 0.5}, 0.8, kHighSeed, {0.0, 0.0, 0.4}},
       // The running-sum variations: an ordinary term, the sum before it being the harness's start (0.125, −0.25, 0.5).
       {"cubic3D", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.34687500000000004, -0.51875, -0.275}},
       {"cubic3D", {}, {0.3, -0.7, 0.5}, 0.3, kHighSeed, {-0.06812499999999999, -0.32125, 0.12499999999999997}},
@@ -359,20 +378,20 @@ PatternLayer oneTransformLayer(std::vector<VariationTerm> terms, bool field = fa
   return layer;
 }
 
-// One chaos-game step of every lane from (0.3, −0.7, 0.5) under the identity map.
+// One chaos-game step of every lane from one point (by default (0.3, −0.7, 0.5)) under the identity map.
 struct Stepped {
   std::vector<double> x, y, z;
 };
-Stepped stepFromThePoint(const PatternLayer& layer) {
+Stepped stepFromThePoint(const PatternLayer& layer, glm::dvec3 from = {0.3, -0.7, 0.5}) {
   const ChaosGame game(layer, "test");
   ChaosLanes lanes;
   lanes.resize(kLanes);
   SplitMix64 rng(5);
   for (std::size_t i = 0; i < kLanes; ++i) {
     game.seedLane(lanes, i, rng);
-    lanes.x[i] = 0.3;
-    lanes.y[i] = -0.7;
-    lanes.z[i] = 0.5;
+    lanes.x[i] = from.x;
+    lanes.y[i] = from.y;
+    lanes.z[i] = from.z;
   }
   Stepped s{std::vector<double>(kLanes), std::vector<double>(kLanes), std::vector<double>(kLanes)};
   std::vector<double> colour(kLanes);
@@ -430,5 +449,34 @@ TEST(RemainingVariations, ATermThatReadsTheSumSeesItUnderAWeightingFieldToo) {
       EXPECT_NEAR(s.z[i], f * (1.0 + rz), 1e-12);
     }
     EXPECT_EQ(someFactorDiffers, field);
+  }
+}
+
+// crob moves the transform's point for the terms after it: linear after it maps the cropped point, so
+// a point beyond the frame lands on the band between the inner borders (±0.5) and the frame (±1),
+// twice (crob's own result plus linear's), and a point inside is left to linear. Its pre_ form sets
+// the point to its result, which inside is the origin.
+TEST(RemainingVariations, CrobMovesThePointForTheTermsAfterIt) {
+  const std::vector<double> frame = {-1.0, 1.0, -1.0, 1.0, 1.0, 0.5, 2.0};
+  const PatternLayer layer = oneTransformLayer({{"crob", 1.0, frame}, {"linear", 1.0, {}}});
+  const Stepped outside = stepFromThePoint(layer, {3.0, 0.2, 0.5});
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    const double cx = outside.x[i] / 2.0, cy = outside.y[i] / 2.0;
+    EXPECT_LE(std::abs(cx), 1.0 + 1e-12);
+    EXPECT_LE(std::abs(cy), 1.0 + 1e-12);
+    EXPECT_TRUE(std::abs(cx) >= 0.5 || std::abs(cy) >= 0.5) << cx << ", " << cy;
+    EXPECT_NEAR(outside.z[i], 1.0, 1e-12);
+  }
+  const Stepped inside = stepFromThePoint(layer, {0.1, 0.2, 0.5});
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    EXPECT_NEAR(inside.x[i], 0.1, 1e-12);
+    EXPECT_NEAR(inside.y[i], 0.2, 1e-12);
+  }
+  const Stepped pre =
+      stepFromThePoint(oneTransformLayer({{"pre_crob", 1.0, frame}, {"linear", 1.0, {}}}), {0.1, 0.2, 0.5});
+  for (std::size_t i = 0; i < kLanes; ++i) {
+    EXPECT_EQ(pre.x[i], 0.0);
+    EXPECT_EQ(pre.y[i], 0.0);
+    EXPECT_NEAR(pre.z[i], 0.5, 1e-12);
   }
 }

@@ -346,6 +346,10 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
     in.weight = term.weight;
     in.params = term.params.data();
     in.stage = term.stage;
+    // An ordinary term maps t itself, which crob may move for the terms after it.
+    const bool ordinary = term.stage == VariationStage::Normal;
+    in.movableX = ordinary ? tx : nullptr;
+    in.movableY = ordinary ? ty : nullptr;
     term.apply(in, rx, ry, rz);
   };
   std::size_t k = 0;

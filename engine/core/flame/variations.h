@@ -74,6 +74,11 @@ struct VariationInput {
   // The stage the term acts at: some direct-colour variations (dc_linear) colour by the running
   // sum of an ordinary term but by the input point of a pre_/post_ one, as Fractorium does.
   VariationStage stage = VariationStage::Normal;
+  // For an ordinary term in the chaos game, the transform's point (the arrays x, y and tx, ty read)
+  // writable, else nullptr: Fractorium's crob moves the point that the terms after it map. A
+  // variation that writes it reads x and y through unrestricted pointers, as they alias.
+  double* movableX = nullptr;
+  double* movableY = nullptr;
 };
 
 // Adds weight · V(p) to (outX, outY, outZ) for every lane of `in`.

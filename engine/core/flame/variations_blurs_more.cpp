@@ -389,6 +389,98 @@ VOXFLAME_VARIATION_TARGETS void juliaNab(const VariationInput& in, double* __res
   }
 }
 
+// crob's frame, from its parameters as Fractorium's Precalc derives it: the edges sorted (equal ones
+// become ±1), the half sizes, the corner (x0c, y0c) of the square at the frame's right top, the
+// chance of the top and bottom bands (by their share of the frame's size), and the inner borders the
+// blur band starts at.
+struct CropFrame {
+  double top, bottom, left, right, ratio, power;
+  bool blur;
+  double halfX, halfY, minHalf, x0c, y0c, setProb, topBorder, bottomBorder, leftBorder, rightBorder;
+};
+inline CropFrame cropFrame(const double* P) {
+  CropFrame f{};
+  f.top = std::min(P[0], P[1]);
+  f.bottom = std::max(P[0], P[1]);
+  if (f.top == f.bottom) f.top = -1.0, f.bottom = 1.0;
+  f.left = std::min(P[2], P[3]);
+  f.right = std::max(P[2], P[3]);
+  if (f.left == f.right) f.left = -1.0, f.right = 1.0;
+  f.blur = fractoriumInteger(P[4], -2147483647.0, 2147483647.0) != 0.0;
+  f.ratio = fractoriumClamp(P[5], 0.0, 1.0);
+  f.power = std::max(P[6], 0.0);
+  // Fractorium's intervals: |right| − left and |bottom| − top.
+  const double intervalX = std::abs(f.right) - f.left, intervalY = std::abs(f.bottom) - f.top;
+  f.halfX = intervalX / 2.0;
+  f.halfY = intervalY / 2.0;
+  f.minHalf = f.halfX > f.halfY ? f.halfY : f.halfX;
+  const double x0 = f.right - f.halfX, y0 = f.top + f.halfY;
+  f.x0c = f.halfX > f.halfY ? f.right - f.minHalf : x0;
+  f.y0c = f.halfX < f.halfY ? f.top + f.minHalf : y0;
+  f.setProb = intervalY / (intervalX + intervalY);
+  const double inset = f.blur ? f.minHalf * f.ratio : 0.0;
+  f.topBorder = f.top + inset;
+  f.bottomBorder = f.bottom - inset;
+  f.leftBorder = f.left + inset;
+  f.rightBorder = f.right - inset;
+  return f;
+}
+
+// crob: a crop to the frame [left, right] × [top, bottom]. Inside its inner borders the term adds
+// nothing; outside them, with blur, a random point of the band between the borders and the frame (its
+// depth drawn as Ψ^directBlur ratioBlur, the sides picked by their share of the frame, the corners
+// cut along their diagonals), unweighted, and without blur the origin. As an ordinary term it also
+// moves the transform's point there, so that the terms after it map the cropped point (linear after
+// it gives the crop); a pre_ term sets the point to its result, inside points to the origin, as
+// Fractorium's does. The rejection loops are cut at 64 tries (Fractorium's have no limit).
+VOXFLAME_VARIATION_TARGETS void crob(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                     double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  // The point through plain pointers: in.movableX/Y (the same arrays) is written below.
+  const double* px = in.x;
+  const double* py = in.y;
+  double* moveX = in.stage == VariationStage::Normal ? in.movableX : nullptr;
+  double* moveY = in.stage == VariationStage::Normal ? in.movableY : nullptr;
+  const CropFrame f = cropFrame(P);
+  const double quarter = 0.25 * f.setProb, half = 0.5 * f.setProb, threeQuarters = 0.75 * f.setProb;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double xi = px[i], yi = py[i];
+    const double section = laneUniform(rnd[i]);
+    double cx = 0.0, cy = 0.0;
+    if (f.blur) {
+      if (section < f.setProb) {
+        for (int tries = 0; tries < 64; ++tries) {
+          cy = f.top + laneUniform(rnd[i]) * f.halfY;
+          cx = f.right - std::pow(laneUniform(rnd[i]), f.power) * f.ratio * f.minHalf;
+          if (!((cy - f.y0c) / fractoriumZeps(cx - f.x0c) < -1.0)) break;
+        }
+        cx = section < half ? f.left + f.right - cx : cx;
+        cy = section > quarter && section < threeQuarters ? f.bottom + f.top - cy : cy;
+      } else {
+        for (int tries = 0; tries < 64; ++tries) {
+          cx = f.right - laneUniform(rnd[i]) * f.halfX;
+          cy = f.top + std::pow(laneUniform(rnd[i]), f.power) * f.ratio * f.minHalf;
+          const double gradient = (cy - f.y0c) / fractoriumZeps(cx - f.x0c);
+          if (!(gradient <= 0.0 && gradient > -1.0)) break;
+        }
+        // Fractorium compares with the top and bottom bands' chances here too.
+        cy = section > half ? f.bottom + f.top - cy : cy;
+        cx = section > quarter && section < threeQuarters ? f.left + f.right - cx : cx;
+      }
+    }
+    const bool outside = xi < f.leftBorder || xi > f.rightBorder || yi < f.topBorder || yi > f.bottomBorder;
+    cx = outside ? cx : 0.0;
+    cy = outside ? cy : 0.0;
+    if (outside && moveX) {
+      moveX[i] = cx;
+      moveY[i] = cy;
+    }
+    outX[i] += cx;
+    outY[i] += cy;
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addFractoriumBlursMoreVariations(std::vector<VariationInfo>& catalogue) {
@@ -522,6 +614,18 @@ void variation_kernels::addFractoriumBlursMoreVariations(std::vector<VariationIn
       k3D, kRandom, &juliaNab,
       {{"n", 1.0, -10.0, 10.0}, {"a", 1.0, -4.0, 4.0}, {"b", 1.0, -2.0, 2.0}, {"separ", 1.0, -4.0, 4.0}});
   catalogue.back().replaces = VariationInfo::Replaces::Z;
+  add("crob",
+      "0 inside the frame's inner borders (the frame [left, right] × [top, bottom] less ratioBlur of its smaller half "
+      "size); outside them a random point of the band between, its depth Ψ^directBlur, unweighted (the origin without "
+      "blur); an ordinary term also moves the transform's point there for the terms after it (Fractorium's)",
+      k2D, kRandom, &crob,
+      {{"top", -1.0, -4.0, 4.0},
+       {"bottom", 1.0, -4.0, 4.0},
+       {"left", -1.0, -4.0, 4.0},
+       {"right", 1.0, -4.0, 4.0},
+       CatalogueAdder::count("blur", 1.0, 0.0, 1.0),
+       {"ratioBlur", 0.5, 0.0, 1.0},
+       {"directBlur", 2.0, 0.0, 4.0}});
 }
 
 }  // namespace voxflame::core
