@@ -20,6 +20,7 @@
 #include "core/chaos_game.h"
 #include "core/flame/flame.h"
 #include "core/flame/variations.h"
+#include "core/flame/xml.h"
 #include "core/random.h"
 #include "core/scene.h"
 #include "variation_point_case.h"
@@ -479,4 +480,35 @@ TEST(RemainingVariations, CrobMovesThePointForTheTermsAfterIt) {
     EXPECT_EQ(pre.y[i], 0.0);
     EXPECT_NEAR(pre.z[i], 0.5, 1e-12);
   }
+}
+
+// A Fractorium file names these variations' parameters after them; where one name starts another's
+// (popcorn2 and popcorn2_3D, depth_blur and depth_blur2, Circle_Rand and CircleRand), each parameter
+// goes to its own variation.
+TEST(RemainingVariations, FractoriumFilesSetTheirParameters) {
+  const std::string text =
+      "<flames><flame name=\"f\"><xform weight=\"1\" color=\"0\" coefs=\"1 0 0 1 0 0\" popcorn2=\"0.5\" "
+      "popcorn2_x=\"0.2\" popcorn2_3D=\"0.25\" popcorn2_3D_x=\"0.3\" popcorn2_3D_c=\"1.5\" depth_blur=\"0.1\" "
+      "depth_blur_power=\"3\" depth_blur2=\"0.2\" depth_blur2_power=\"4\" depth_blur2_exp=\"2\" Circle_Rand=\"0.3\" "
+      "Circle_Rand_X=\"4\" CircleRand=\"0.4\" CircleRand_X=\"6\" CircleRand_Seed=\"3\" cubicLattice_3D=\"0.5\" "
+      "cubicLattice_3D_style=\"2\"/></flame></flames>";
+  const ImportedFlame flame = readFlameXml(text, "f.flame").flame;
+  ASSERT_EQ(flame.genome.xforms.size(), 1u);
+  const auto param = [&](const std::string& name, const std::string& parameter) {
+    for (const VariationTerm& term : flame.genome.xforms[0].variations)
+      if (term.name == name)
+        return term.params.at(static_cast<std::size_t>(variationOrThrow(name).paramIndex(parameter)));
+    ADD_FAILURE() << "no term " << name;
+    return 0.0;
+  };
+  EXPECT_EQ(param("popcorn2", "x"), 0.2);
+  EXPECT_EQ(param("popcorn2_3D", "x"), 0.3);
+  EXPECT_EQ(param("popcorn2_3D", "c"), 1.5);
+  EXPECT_EQ(param("depth_blur", "power"), 3.0);
+  EXPECT_EQ(param("depth_blur2", "power"), 4.0);
+  EXPECT_EQ(param("depth_blur2", "exp"), 2.0);
+  EXPECT_EQ(param("Circle_Rand", "X"), 4.0);
+  EXPECT_EQ(param("CircleRand", "X"), 6.0);
+  EXPECT_EQ(param("CircleRand", "Seed"), 3.0);
+  EXPECT_EQ(param("cubicLattice_3D", "style"), 2.0);
 }
