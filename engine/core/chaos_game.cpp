@@ -199,7 +199,7 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
       if (term.weight == 0.0 || variationStage(term.name) != stage) continue;
       const VariationInfo& info = variationOrThrow(term.name);
       c.terms.push_back({info.apply, term.weight, term.params, stage, info.mapsXY, info.threeD, info.additive,
-                         info.name == "flatten", info.replaces});
+                         info.name == "flatten", info.replaces, info.readsSum});
       c.hasNormalTerms = c.hasNormalTerms || stage == VariationStage::Normal;
       c.directColour = c.directColour || info.directColour;
     }
@@ -346,6 +346,10 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
     in.weight = term.weight;
     in.params = term.params.data();
     in.stage = term.stage;
+    // An ordinary term maps t itself, which crob may move for the terms after it.
+    const bool ordinary = term.stage == VariationStage::Normal;
+    in.movableX = ordinary ? tx : nullptr;
+    in.movableY = ordinary ? ty : nullptr;
     term.apply(in, rx, ry, rz);
   };
   std::size_t k = 0;
@@ -372,14 +376,28 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
     // A term that assigns instead of adding (JWildfire's shredlin, Fractorium's mirror_x) discards
     // the sum so far.
     if (xform.terms[k].replaces != VariationInfo::Replaces::Nothing) {
-      const bool all = xform.terms[k].replaces == VariationInfo::Replaces::XYZ;
+      const bool xy = xform.terms[k].replaces != VariationInfo::Replaces::Z;
+      const bool z = xform.terms[k].replaces != VariationInfo::Replaces::XY;
       for (std::size_t j = 0; j < count; ++j) {
-        ox[j] = 0.0;
-        oy[j] = 0.0;
-        oz[j] = all ? 0.0 : oz[j];
+        ox[j] = xy ? 0.0 : ox[j];
+        oy[j] = xy ? 0.0 : oy[j];
+        oz[j] = z ? 0.0 : oz[j];
       }
     }
-    if (xform.hasField) {
+    if (xform.hasField && xform.terms[k].readsSum) {
+      // A term that reads (and may rewrite) the sum before it gets that sum; its change is scaled.
+      for (std::size_t j = 0; j < count; ++j) {
+        sx[j] = ox[j];
+        sy[j] = oy[j];
+        sz[j] = oz[j];
+      }
+      run(xform.terms[k], tx, ty, tz, sx, sy, sz);
+      for (std::size_t j = 0; j < count; ++j) {
+        ox[j] += field[j] * (sx[j] - ox[j]);
+        oy[j] += field[j] * (sy[j] - oy[j]);
+        oz[j] += field[j] * (sz[j] - oz[j]);
+      }
+    } else if (xform.hasField) {
       // The term's result scaled per lane (variations are linear in their weight), then summed.
       clear(sx, sy, sz);
       run(xform.terms[k], tx, ty, tz, sx, sy, sz);

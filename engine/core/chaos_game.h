@@ -75,6 +75,7 @@ class ChaosGame {
     bool mapsXY = true, mapsZ = false, additive = false;                  // how a pre_/post_ form combines
     bool flattens = false;                                                // flatten: z is 0 after this stage
     VariationInfo::Replaces replaces = VariationInfo::Replaces::Nothing;  // as an ordinary term
+    bool readsSum = false;                                                // as an ordinary term
   };
   struct Compiled {
     std::array<double, 12> affine{};

@@ -41,6 +41,8 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addJwildfireShapeVariations(c);
   variation_kernels::addJwildfireMoreVariations(c);
   variation_kernels::addJwildfireTailVariations(c);
+  variation_kernels::addFractoriumBlursMoreVariations(c);
+  variation_kernels::addFractorium3DSumVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")
@@ -66,7 +68,9 @@ std::vector<double> VariationInfo::defaultParams() const {
 namespace {
 
 // Whether a variation's result depends on the point: it is run at two points with the same random
-// state and default parameters, and its mapped coordinates compared.
+// state and default parameters, and its mapped coordinates compared. It runs as a pre_ term, the
+// form this decides for (extrude adds nothing to x and y as an ordinary term but keeps them as a
+// pre_ one).
 bool resultIgnoresThePoint(const VariationInfo& info) {
   constexpr double kAffine[12] = {0.9, 0.2, 0.0, 0.3, -0.1, 0.8, 0.0, -0.4, 0.0, 0.0, 1.0, 0.0};
   const std::vector<double> params = info.defaultParams();
@@ -85,6 +89,7 @@ bool resultIgnoresThePoint(const VariationInfo& info) {
     in.ty = &y;
     in.tz = &z;
     in.colour = &colour;
+    in.stage = VariationStage::Pre;
     info.apply(in, &ox, &oy, &oz);
     return std::array<double, 3>{info.mapsXY ? ox : 0.0, info.mapsXY ? oy : 0.0, info.threeD ? oz : 0.0};
   };

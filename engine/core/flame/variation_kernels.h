@@ -168,6 +168,10 @@ void addFractorium2DVariationsD(std::vector<VariationInfo>& catalogue);
 void addJwildfireShapeVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireMoreVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireTailVariations(std::vector<VariationInfo>& catalogue);
+// Fractorium's remaining random 2D ones (variations_blurs_more.cpp) and the 3D ones that read the
+// running sum (variations_3d_sum.cpp).
+void addFractoriumBlursMoreVariations(std::vector<VariationInfo>& catalogue);
+void addFractorium3DSumVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -74,6 +74,11 @@ struct VariationInput {
   // The stage the term acts at: some direct-colour variations (dc_linear) colour by the running
   // sum of an ordinary term but by the input point of a pre_/post_ one, as Fractorium does.
   VariationStage stage = VariationStage::Normal;
+  // For an ordinary term in the chaos game, the transform's point (the arrays x, y and tx, ty read)
+  // writable, else nullptr: Fractorium's crob moves the point that the terms after it map. A
+  // variation that writes it reads x and y through unrestricted pointers, as they alias.
+  double* movableX = nullptr;
+  double* movableY = nullptr;
 };
 
 // Adds weight · V(p) to (outX, outY, outZ) for every lane of `in`.
@@ -99,9 +104,14 @@ struct VariationInfo {
   bool additive = false;
   // What of the sum of the ordinary terms before it an ordinary term of this variation discards:
   // JWildfire's shredlin and crop_trapezoid assign x and y where others add them, Fractorium's
-  // mirror_x/y/z clear all three. The chaos game clears those coordinates before the term adds.
-  enum class Replaces { Nothing, XY, XYZ };
+  // mirror_x/y/z clear all three, Fractorium's extrude and juliaNab z alone. The chaos game clears
+  // those coordinates before the term adds.
+  enum class Replaces { Nothing, XY, XYZ, Z };
   Replaces replaces = Replaces::Nothing;
+  // An ordinary term of it reads the sum of the ordinary terms before it from the output arrays
+  // (which hold that sum when it is called) and may rewrite it: Fractorium's cubic3D, octapol,
+  // roundspher3D. Under a weighting field the chaos game hands it the sum and scales its change.
+  bool readsSum = false;
   // Reads or writes the point's colour index (VariationInput::colour): Fractorium's dc_ variations.
   // The chaos game sets up the colour array and blends by direct_color only for transforms with one.
   bool directColour = false;
