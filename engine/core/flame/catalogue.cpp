@@ -234,8 +234,8 @@ std::string variationsMarkdown() {
         "variation whose\nresult does not depend on the point (the blurs, ztranslate) adds weight · V(p) instead. "
         "`pre_blur` is\nflam3's own: a Gaussian blur added to the point first.\n\n"
      << "## Which variations real flames use\n\n"
-     << "The catalogue holds every variation of Fractorium's list (each also as `pre_` and `post_`, the "
-        "direct-colour `dc_*` ones\nsetting the colour index from the position, as Fractorium does) and the "
+     << "The catalogue holds every variation of Fractorium's list but two (each also as `pre_` and `post_`, "
+        "the direct-colour\n`dc_*` ones setting the colour index from the position, as Fractorium does) and the "
         "JWildfire variations that real flame files use.\nThose were counted in 779 flames written by "
         "JWildfire and published in public repositories (thargor6/JWildfireSwan's\nand thargor6/JWildfire's "
         "examples, sidwellr/Variations' one flame per variation, and 102 flames of other repositories),\n"
@@ -248,7 +248,8 @@ std::string variationsMarkdown() {
         "cylinder_apo 5, waffle 5, xtrb 5. Not here, because they need what a variation's numbers cannot "
         "carry: text_wf\n(fonts), parplot2d_wf, polarplot3d_wf and isosfplot3d_wf (formula text), "
         "obj_mesh_primitive_wf and dla3d_wf\n(meshes and a grown cluster), brush_stroke_wf (images), and "
-        "hopalong and mandelbrot (an orbit kept between calls).\n\n"
+        "hopalong, mandelbrot and Fractorium's hexaplay3D and\nhexnix3D (an orbit or a walk over hexagons kept "
+        "from one iteration to the next, where a variation here keeps nothing).\n\n"
      << "| name | kind | parameters (default, slider range) | formula |\n"
      << "| --- | --- | --- | --- |\n";
   for (const VariationInfo& info : variationCatalogue()) {
