@@ -468,6 +468,20 @@ void variation_kernels::addBlurVariations(std::vector<VariationInfo>& catalogue)
       "w (p + b), b = blur/10 (r − radius) / cos(φ') (cos 2πΨ, sin 2πΨ) beyond the radius, 0 within; φ' the angle "
       "2πΨ from the middle of its side of a regular power-gon (Fractorium's)",
       k2D, kRandom, &depthNgon, {{"power", 5.0, 1.0, 12.0}, {"blur", 1.0, 0.0, 4.0}, {"radius", 1.0, 0.0, 4.0}});
+  // depth_ngon2 in Fractorium's flam3-compatible form is depth_ngon: its x0, y0, mulx, muly and exp
+  // only act in the other form.
+  add("depth_ngon2",
+      "depth_ngon: w (p + b), b = blur/10 (r − radius)/cos φ' (cos 2πΨ, sin 2πΨ) beyond the radius (Fractorium's "
+      "flam3-compatible form, in which x0, y0, mulx, muly and exp do nothing)",
+      k2D, kRandom, &depthNgon,
+      {{"power", 5.0, 1.0, 12.0},
+       {"blur", 1.0, 0.0, 4.0},
+       {"radius", 1.0, 0.0, 4.0},
+       {"x0", 0.0, -2.0, 2.0},
+       {"y0", 0.0, -2.0, 2.0},
+       {"mulx", 1.0, 0.0, 4.0},
+       {"muly", 1.0, 0.0, 4.0},
+       {"exp", 1.0, 0.0, 4.0}});
   add("depth_sine",
       "w (p + b), b = acos(2u − 1)/π blur/10 (r − radius) (cos 2πΨ₁, sin 2πΨ₁) beyond the radius, 0 within; u = Ψ₂ "
       "for power 1, else (1 − Ψ₂)^power (Fractorium's)",

@@ -260,24 +260,6 @@ VOXFLAME_VARIATION_TARGETS void depthGaussian2(const VariationInput& in, double*
   }
 }
 
-// depth_ngon2 in Fractorium's flam3-compatible form: depth_ngon's polygon blur about the origin, the
-// distance plain and the blur linear in it; x0, y0, mulx, muly and exp only act in its other form.
-VOXFLAME_VARIATION_TARGETS void depthNgon2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
-                                           double* __restrict oz) {
-  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double side = kTwoPi / fractoriumZeps(P[0]), halfSide = side / 2.0, blur = P[1] / 10.0, radius = P[2];
-  for (std::size_t i = 0; i < n; ++i) {
-    const double angle = laneUniform(rnd[i]) * kTwoPi;
-    double phi = angle - side * std::floor(angle / fractoriumZeps(side));
-    phi = phi > halfSide ? phi - side : phi;
-    const double rad = std::sqrt(x[i] * x[i] + y[i] * y[i]);
-    const double aux = rad > radius ? blur * (rad - radius) / fractoriumZeps(std::cos(phi)) : 0.0;
-    outX[i] += w * (x[i] + aux * std::cos(angle));
-    outY[i] += w * (y[i] + aux * std::sin(angle));
-    outZ[i] += w * z[i];
-  }
-}
-
 // depth_sine2: depth_sine about (x0, y0) with the axes divided by mulx, muly (Fractorium's
 // flam3-compatible form) and the blur growing as (r − radius)^exp.
 VOXFLAME_VARIATION_TARGETS void depthSine2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
@@ -551,18 +533,6 @@ void variation_kernels::addFractoriumBlursMoreVariations(std::vector<VariationIn
       "|((x − x0) mulx², (y − y0) muly²)| (Fractorium's)",
       k2D, kRandom, &depthGaussian2,
       {{"blur", 1.0, 0.0, 4.0},
-       {"radius", 1.0, 0.0, 4.0},
-       {"x0", 0.0, -2.0, 2.0},
-       {"y0", 0.0, -2.0, 2.0},
-       {"mulx", 1.0, 0.0, 4.0},
-       {"muly", 1.0, 0.0, 4.0},
-       {"exp", 1.0, 0.0, 4.0}});
-  add("depth_ngon2",
-      "depth_ngon: w (p + b), b = blur/10 (r − radius)/cos φ' (cos 2πΨ, sin 2πΨ) beyond the radius (Fractorium's "
-      "flam3-compatible form, in which x0, y0, mulx, muly and exp do nothing)",
-      k2D, kRandom, &depthNgon2,
-      {{"power", 5.0, 1.0, 12.0},
-       {"blur", 1.0, 0.0, 4.0},
        {"radius", 1.0, 0.0, 4.0},
        {"x0", 0.0, -2.0, 2.0},
        {"y0", 0.0, -2.0, 2.0},
