@@ -942,3 +942,23 @@ TEST(FlameXml, FlameLevelFeaturesVoxflameDoesNotKeepAreNamed) {
 }
 
 }  // namespace
+
+namespace {
+
+// JWildfire's `<variation>_fx_priority` moves a variation to the pre_ (negative) or post_ (positive) stage.
+TEST(FlameXml, JwildfiresPriorityMovesAVariationToItsStage) {
+  const ImportedFlame flame =
+      readFlameXml(flameFile("<xform weight=\"1\" color=\"0\" linear=\"1\" splits=\"0.5\" splits_fx_priority=\"1\" "
+                             "julia=\"0.25\" julia_fx_priority=\"-1\" swirl=\"0.1\" swirl_fx_priority=\"0\" "
+                             "coefs=\"1 0 0 1 0 0\"/>\n"),
+                   "p.flame")
+          .flame;
+  std::vector<std::string> names;
+  for (const VariationTerm& term : flame.genome.xforms[0].variations) names.push_back(term.name);
+  EXPECT_NE(std::find(names.begin(), names.end(), "post_splits"), names.end());
+  EXPECT_NE(std::find(names.begin(), names.end(), "pre_julia"), names.end());
+  EXPECT_NE(std::find(names.begin(), names.end(), "swirl"), names.end());
+  EXPECT_TRUE(flame.leftOut.empty());
+}
+
+}  // namespace

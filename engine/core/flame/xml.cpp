@@ -315,8 +315,8 @@ bool jwildfireResourceMatters(const VariationInfo& info, std::string_view value)
 }
 
 // JWildfire stores a motion curve beside any variation parameter (`<variation>_<parameter>_enabled`,
-// `_view_xmin`, `_x0`, ...) and a variation's order as `<variation>_fx_priority`; pugixml sees
-// these as parameters of the variation. They carry no value a still image uses.
+// `_view_xmin`, `_x0`, ...) and a variation's stage as `<variation>_fx_priority` (read where the
+// variation is); pugixml sees these as parameters of the variation.
 bool isJwildfireParamCurve(std::string_view param) {
   if (param == "fx_priority") return true;
   static const std::array<std::string_view, 10> suffixes = {
@@ -698,6 +698,15 @@ class FlameReader {
       consumed.insert(name);
       VariationTerm term;
       term.name = termName(withoutCopyMark(name), *info);
+      // JWildfire moves a variation to the pre_ stage (a negative `<variation>_fx_priority`) or the
+      // post_ stage (a positive one) without renaming it.
+      if (term.name == info->name && !info->name.starts_with("prepost_")) {
+        if (const auto it = byName.find(name + "_fx_priority"); it != byName.end()) {
+          const auto priority = parseNumber(it->second.value());
+          if (priority && *priority < 0.0) term.name = "pre_" + info->name;
+          if (priority && *priority > 0.0) term.name = "post_" + info->name;
+        }
+      }
       term.weight = number(attribute, context, -kFlameCoefficientLimit, kFlameCoefficientLimit);
       // JWildfire runs a variation whatever its weight, and pre_stabilize does not use its weight:
       // files leave it at 0. voxflame drops terms of weight 0, so it is kept at weight 1.
