@@ -669,7 +669,7 @@ TEST(FlameXml, HexPalettesOfAnyCountAreResampled) {
       readFlameXml(flameFile(kTwoXforms, "<palette count=\"1\" format=\"RGB\">204060</palette>"), "one.flame");
   expectColorNear(srgb255(one.flame, 77), {32, 64, 96});
   std::string many = "<palette count=\"512\" format=\"RGB\">";
-  char hex[8];
+  char hex[16];
   for (int i = 0; i < 512; ++i) {
     std::snprintf(hex, sizeof hex, "%02X%02X%02X", i / 2, 0, 255 - i / 2);
     many += hex;
