@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "core/chaos_game.h"
@@ -924,14 +925,23 @@ namespace {
 
 // What a flame turns on at its own level that voxflame does not keep is named, never passed over.
 TEST(FlameXml, FlameLevelFeaturesVoxflameDoesNotKeepAreNamed) {
+  // JWildfire's 3D camera is another than Apophysis 3D's and Fractorium's, which the flat view keeps.
   const std::string attributes =
-      "post_symmetry_type=\"POINT\" post_symmetry_order=\"3\" cam_pitch=\"0.5\" cam_yaw=\"0\" "
-      "sld_render_enabled=\"true\" camPitchCurve_enabled=\"true\"";
+      "version=\"JWildfire V7.50\" post_symmetry_type=\"POINT\" post_symmetry_order=\"3\" cam_pitch=\"0.5\" "
+      "cam_yaw=\"0\" sld_render_enabled=\"true\" camPitchCurve_enabled=\"true\"";
   const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, "", attributes), "p.flame").flame;
   for (const char* lost :
        {"JWildfire post symmetry", "JWildfire solid rendering", "3D camera", "JWildfire flame motion curve"})
     EXPECT_NE(std::find(flame.leftOut.begin(), flame.leftOut.end(), lost), flame.leftOut.end()) << lost;
   EXPECT_TRUE(hasWarningContaining(flame, "cam_pitch"));
+  EXPECT_FALSE(flame.flat.hasCamera());
+  const ImportedFlame fractorium =
+      readFlameXml(flameFile(kTwoXforms, "", "version=\"EMBER-WIN-1.0.0.19\" cam_pitch=\"0.5\" cam_persp=\"0.25\""),
+                   "p.flame")
+          .flame;
+  EXPECT_TRUE(fractorium.leftOut.empty());
+  EXPECT_NEAR(fractorium.flat.cameraPitchDeg, 0.5 * 180.0 / std::numbers::pi, 1e-9);
+  EXPECT_DOUBLE_EQ(fractorium.flat.cameraPerspective, 0.25);
   // Switched off, none of them is a loss.
   const ImportedFlame plain =
       readFlameXml(

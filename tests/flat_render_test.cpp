@@ -264,3 +264,80 @@ TEST(FlatView, TheGoldenComparisonCatchesAWrongPaletteOrVariation) {
   const Comparison tooBright = compareWithGolden(brightness);
   EXPECT_FALSE(matches(tooBright)) << "luminance ratio " << tooBright.luminanceRatio;
 }
+
+// The 3D camera of Apophysis 3D and Fractorium, at points worked out by hand from Fractorium's
+// Ember::ProjectPitchYaw: yaw turns (x, y) by −yaw, pitch tilts y into depth (y cos p − z sin p),
+// and perspective divides by 1 − perspective · depth (depth = y sin p + z cos p after the yaw).
+TEST(FlatView, TheCameraProjectsAsFractoriumDoes) {
+  core::FlatViewSettings flat;
+  EXPECT_FALSE(flat.hasCamera());
+  flat.cameraPitchDeg = 60.0;
+  const core::FlatCamera pitch(flat);
+  glm::dvec2 p = pitch.project(0.3, 0.8, 0.0, 0.0, 0.0);
+  EXPECT_NEAR(p.x, 0.3, 1e-12);
+  EXPECT_NEAR(p.y, 0.4, 1e-12);  // 0.8 cos 60°
+  p = pitch.project(0.0, 0.0, 1.0, 0.0, 0.0);
+  EXPECT_NEAR(p.y, -std::sqrt(3.0) / 2.0, 1e-12);  // −sin 60°
+  flat.cameraPitchDeg = 0.0;
+  flat.cameraYawDeg = 90.0;
+  p = core::FlatCamera(flat).project(1.0, 0.0, 0.0, 0.0, 0.0);
+  EXPECT_NEAR(p.x, 0.0, 1e-12);  // (cos 90°, −sin 90°)·x in Fractorium's matrix: (0, −1)
+  EXPECT_NEAR(p.y, -1.0, 1e-12);
+  flat.cameraYawDeg = 0.0;
+  flat.cameraPitchDeg = 30.0;
+  flat.cameraPerspective = 0.5;
+  flat.cameraZ = 0.2;
+  // dz = −0.2; y' = 0.8 cos 30° + 0.2 sin 30° = 0.79282; depth = 0.8 sin 30° − 0.2 cos 30° = 0.22679;
+  // zr = 1 − 0.5 · 0.22679 = 0.88660.
+  p = core::FlatCamera(flat).project(0.3, 0.8, 0.0, 0.0, 0.0);
+  const double depth = 0.8 * 0.5 - 0.2 * std::sqrt(3.0) / 2.0, zr = 1.0 - 0.5 * depth;
+  EXPECT_NEAR(p.x, 0.3 / zr, 1e-12);
+  EXPECT_NEAR(p.y, (0.8 * std::sqrt(3.0) / 2.0 + 0.2 * 0.5) / zr, 1e-12);
+  // Depth of field moves the point by blur · 0.1 dof · depth towards the angle, before the division.
+  flat.cameraDof = 2.0;
+  p = core::FlatCamera(flat).project(0.3, 0.8, 0.0, 0.25, 0.5);
+  EXPECT_NEAR(p.x, 0.3 / zr, 1e-12);
+  EXPECT_NEAR(p.y, (0.8 * std::sqrt(3.0) / 2.0 + 0.2 * 0.5 + 0.5 * 0.2 * depth) / zr, 1e-12);
+}
+
+// A file's camera reaches the flat view and tilts the picture: Sierpinski's triangle (framed about
+// its middle, flat, on black), pitched by 60° (cam_pitch in radians, as Apophysis 3D and Fractorium
+// write it), is drawn half as tall and as wide; turned by yaw 90°, its height and width swap.
+TEST(FlatView, AFilesCameraTiltsThePicture) {
+  const auto sierpinski = [](const std::string& camera) {
+    const std::string xml = "<flame size=\"200 200\" center=\"0 0\" scale=\"70\" estimator_radius=\"0\" " + camera +
+                            ">\n<xform weight=\"1\" color=\"0\" linear=\"1\" coefs=\"0.5 0 0 0.5 -0.5 -0.4\"/>\n"
+                            "<xform weight=\"1\" color=\"0.5\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.5 -0.4\"/>\n"
+                            "<xform weight=\"1\" color=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 0.6\"/>\n</flame>\n";
+    return core::sceneFromImportedFlame(core::readFlameXml(xml, "sierpinski.flame").flame, core::Scene{});
+  };
+  // The extent of the lit pixels: width, height.
+  const auto extent = [](const core::Scene& scene) {
+    core::FlatRenderOptions options;
+    options.quality = 20.0;
+    const core::ImageRGBA image = core::renderFlat(scene, options).image;
+    int left = image.width, right = -1, top = image.height, bottom = -1;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const float* p = image.at(x, y);
+        if (p[0] + p[1] + p[2] < 0.2f) continue;
+        left = std::min(left, x);
+        right = std::max(right, x);
+        top = std::min(top, y);
+        bottom = std::max(bottom, y);
+      }
+    return std::array<double, 2>{static_cast<double>(right - left), static_cast<double>(bottom - top)};
+  };
+  const core::Scene straight = sierpinski("");
+  EXPECT_FALSE(straight.flat.hasCamera());
+  const core::Scene pitched = sierpinski("cam_pitch=\"1.0471975511965976\"");
+  EXPECT_NEAR(pitched.flat.cameraPitchDeg, 60.0, 1e-9);
+  const auto [width, height] = extent(straight);
+  const auto [pitchedWidth, pitchedHeight] = extent(pitched);
+  EXPECT_GT(height, 100.0);
+  EXPECT_NEAR(pitchedWidth / width, 1.0, 0.05);
+  EXPECT_NEAR(pitchedHeight / height, 0.5, 0.05);
+  const auto [turnedWidth, turnedHeight] = extent(sierpinski("cam_yaw=\"1.5707963267948966\""));
+  EXPECT_NEAR(turnedWidth / height, 1.0, 0.05);
+  EXPECT_NEAR(turnedHeight / width, 1.0, 0.05);
+}

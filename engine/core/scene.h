@@ -154,6 +154,16 @@ struct FlatViewSettings {
   double filterRadius = 0.5;  // Gaussian spatial filter, in output pixels
   double quality = 1.0;       // samples per output pixel (flam3's sample_density)
   PaletteMode paletteMode = PaletteMode::Step;
+  // The 3D camera of Apophysis 3D and Fractorium (flam3's cam_* keys): the drawn point turned by
+  // yaw about z and pitch about x, seen in perspective from depth cameraZ, blurred with depth by dof.
+  double cameraPitchDeg = 0.0, cameraYawDeg = 0.0;
+  double cameraPerspective = 0.0;  // cam_persp: a point at depth d is drawn 1 / (1 − perspective · d) as large
+  double cameraZ = 0.0;            // cam_zpos
+  double cameraDof = 0.0;          // cam_dof
+  bool hasCamera() const {
+    return cameraPitchDeg != 0.0 || cameraYawDeg != 0.0 || cameraPerspective != 0.0 || cameraZ != 0.0 ||
+           cameraDof != 0.0;
+  }
   bool operator==(const FlatViewSettings&) const = default;
 };
 

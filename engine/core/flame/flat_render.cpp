@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <vector>
 
@@ -113,6 +114,36 @@ float flatPixelLevel(float value, int bitDepth) {
   return bitDepth == 16 ? std::floor(a * 256.0f) / 65535.0f : std::floor(a) / 255.0f;
 }
 
+FlatCamera::FlatCamera(const FlatViewSettings& flat)
+    : z0(flat.cameraZ), perspective(flat.cameraPerspective), dofScale(0.1 * flat.cameraDof) {
+  const double pitch = flat.cameraPitchDeg * std::numbers::pi / 180.0;
+  const double yaw = -flat.cameraYawDeg * std::numbers::pi / 180.0;
+  const double sp = std::sin(pitch), cp = std::cos(pitch), sy = std::sin(yaw), cy = std::cos(yaw);
+  m00 = cy;
+  m10 = -sy;
+  m01 = cp * sy;
+  m11 = cp * cy;
+  m21 = -sp;
+  m02 = sp * sy;
+  m12 = sp * cy;
+  m22 = cp;
+}
+
+glm::dvec2 FlatCamera::project(double x, double y, double z, double angle01, double blur01) const {
+  const double dz = z - z0;
+  double px = m00 * x + m10 * y;
+  double py = m01 * x + m11 * y + m21 * dz;
+  const double depth = m02 * x + m12 * y + m22 * dz;
+  if (dofScale != 0.0) {
+    const double angle = 2.0 * std::numbers::pi * angle01, r = blur01 * dofScale * depth;
+    px += r * std::cos(angle);
+    py += r * std::sin(angle);
+  }
+  double zr = 1.0 - perspective * depth;
+  if (zr == 0.0) zr = std::numeric_limits<double>::epsilon();  // Fractorium's Zeps
+  return {px / zr, py / zr};
+}
+
 FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options) {
   const FlatViewSettings& flat = scene.flat;
   int width = 0, height = 0;
@@ -145,6 +176,8 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   const double bucketsPerUnit = pixelsPerUnit * oversample;
   const double left = flat.centerX - (0.5 * width + gutter) / pixelsPerUnit;
   const double top = flat.centerY - (0.5 * height + gutter) / pixelsPerUnit;
+  const bool hasCamera = flat.hasCamera();
+  const FlatCamera camera(flat);
   const double turn = flat.rotateDeg * std::numbers::pi / 180.0;
   const double cosTurn = std::cos(turn), sinTurn = std::sin(turn);
   const bool turned = flat.rotateDeg != 0.0;
@@ -212,6 +245,13 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
           }
           if (!visible) continue;
           double px = outX[i], py = outY[i];
+          if (hasCamera) {
+            const double angle = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
+            const double blur = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
+            const glm::dvec2 p = camera.project(px, py, outZ[i], angle, blur);
+            px = p.x;
+            py = p.y;
+          }
           if (turned) {
             const double dx = px - flat.centerX, dy = py - flat.centerY;
             px = dx * cosTurn - dy * sinTurn + flat.centerX;

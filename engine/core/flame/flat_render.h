@@ -17,6 +17,7 @@
 #include <cstdint>
 #include <optional>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/image_io.h"
@@ -63,5 +64,15 @@ glm::vec3 flatPaletteColour(const std::array<glm::vec3, 256>& palette, double in
 float flatPixelLevel(float value, int bitDepth);
 
 FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options = {});
+
+// The 3D camera of Apophysis 3D and Fractorium (Fractorium's Ember::ProjectPitchYaw and its depth
+// blur): p − (0, 0, z₀) turned by −yaw about z and pitch about x, divided by 1 − perspective · its
+// depth; with depth of field first moved by blur01 · 0.1 dof · depth towards angle01 · 2π. Returns
+// the drawn (x, y).
+struct FlatCamera {
+  explicit FlatCamera(const FlatViewSettings& flat);
+  glm::dvec2 project(double x, double y, double z, double angle01, double blur01) const;
+  double m00, m10, m01, m11, m21, m02, m12, m22, z0, perspective, dofScale;
+};
 
 }  // namespace voxflame::core

@@ -1568,6 +1568,16 @@ Palette readPalette(const pugi::xml_node& flame, FlameReader& reader) {
   return fallbackPalette();
 }
 
+// JWildfire writes its version as "JWildfire …" (flam3, Apophysis and Fractorium their own), on the
+// <flame> or on the <jwf-flame> around it.
+bool writtenByJwildfire(const pugi::xml_node& flame) {
+  for (pugi::xml_node node = flame; node; node = node.parent()) {
+    if (std::string_view(node.name()) == "jwf-flame") return true;
+    if (std::string_view(node.attribute("version").as_string()).starts_with("JWildfire")) return true;
+  }
+  return false;
+}
+
 // JWildfire's flame-level features that neither the flat view nor the mesh keeps, named as lost
 // when a file turns them on: its post symmetry (copies of every drawn point turned about a centre
 // or mirrored), solid rendering (lights, materials, ambient occlusion), a 3D camera (pitch, yaw,
@@ -1589,12 +1599,13 @@ void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader)
   }
   std::string camera;
   for (const char* key : {"cam_pitch", "cam_yaw", "cam_persp", "cam_perspective", "cam_dof"}) {
+    if (!writtenByJwildfire(flame)) break;  // Apophysis 3D's and Fractorium's camera: the flat view keeps it
     const auto value = parseNumber(flame.attribute(key).as_string("0"));
     if (value && *value != 0.0 && std::isfinite(*value)) camera += (camera.empty() ? "" : ", ") + std::string(key);
   }
   if (!camera.empty()) {
     reader.lose("3D camera");
-    reader.warn("the flame's 3D camera (" + camera +
+    reader.warn("the flame's JWildfire 3D camera (" + camera +
                 ") is not kept: the flat view draws the flame straight on and the mesh with the explorer's camera");
   }
   std::string curves;
@@ -1723,6 +1734,18 @@ FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader) {
     else if (value != "step")  // flam3 warns and steps
       reader.warn("palette_mode '" + std::string(value) +
                   "' is not step or linear; the flat view steps, as flam3 does");
+  }
+  // The 3D camera of Apophysis 3D and Fractorium (angles in radians). JWildfire's camera is another
+  // (reportUnkeptFlameFeatures names it).
+  if (!writtenByJwildfire(flame)) {
+    double pitch = 0.0, yaw = 0.0;
+    if (key("cam_pitch", pitch, -2.0 * std::numbers::pi, 2.0 * std::numbers::pi))
+      flat.cameraPitchDeg = pitch * 180.0 / std::numbers::pi;
+    if (key("cam_yaw", yaw, -2.0 * std::numbers::pi, 2.0 * std::numbers::pi))
+      flat.cameraYawDeg = yaw * 180.0 / std::numbers::pi;
+    key("cam_persp", flat.cameraPerspective, -1e6, 1e6);
+    key("cam_zpos", flat.cameraZ, -1e6, 1e6);
+    key("cam_dof", flat.cameraDof, 0.0, 1e6);
   }
   if (const pugi::xml_attribute shape = flame.attribute("filter_shape");
       shape && std::string_view(shape.value()) != "gaussian") {
