@@ -1598,11 +1598,12 @@ void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader)
         "drawn as a glowing flame");
   }
   std::string camera;
-  for (const char* key : {"cam_pitch", "cam_yaw", "cam_persp", "cam_perspective", "cam_dof"}) {
-    if (!writtenByJwildfire(flame)) break;  // Apophysis 3D's and Fractorium's camera: the flat view keeps it
-    const auto value = parseNumber(flame.attribute(key).as_string("0"));
-    if (value && *value != 0.0 && std::isfinite(*value)) camera += (camera.empty() ? "" : ", ") + std::string(key);
-  }
+  // Apophysis 3D's and Fractorium's camera the flat view keeps (readFlat); JWildfire's is another.
+  if (writtenByJwildfire(flame))
+    for (const char* key : {"cam_pitch", "cam_yaw", "cam_persp", "cam_perspective", "cam_dof"}) {
+      const auto value = parseNumber(flame.attribute(key).as_string("0"));
+      if (value && *value != 0.0 && std::isfinite(*value)) camera += (camera.empty() ? "" : ", ") + std::string(key);
+    }
   if (!camera.empty()) {
     reader.lose("3D camera");
     reader.warn("the flame's JWildfire 3D camera (" + camera +
