@@ -32,7 +32,7 @@
 
 #include "core/file_output.h"
 #include "commands.h"
-#include "core/accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "core/error.h"
 #include "core/scene_schema.h"
 #include "core/file_output.h"

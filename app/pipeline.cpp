@@ -12,7 +12,7 @@
 
 #include "commands.h"
 #include "core/camera.h"
-#include "core/convergence.h"
+#include "core/refinement/convergence.h"
 #include "core/error.h"
 #include "core/flame/image.h"
 #include "core/point_renderer.h"

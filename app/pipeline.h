@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "core/accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "core/chunk_sums.h"
 #include "core/error.h"
 #include "core/flame/image.h"
@@ -61,7 +61,7 @@ struct StillOptions {
   int width = 1280;
   int height = 720;
   std::uint64_t points = 0;  // 0: the scene's own count
-  // > 0: accumulate until the estimated noise (core/convergence.h, a fraction) is this low, with
+  // > 0: accumulate until the estimated noise (core/refinement/convergence.h, a fraction) is this low, with
   // `points` (when set) as a cap. The volume method only: the points method projects a count.
   double untilNoise = 0.0;
   int threads = 0;                            // 0: all hardware threads
@@ -111,7 +111,7 @@ struct AccumulatedVolume {
   core::AccumulatorStats stats;
   double seconds = 0.0;
   std::string warning;                                      // e.g. fewer points landed inside the mesh than asked for
-  double noise = std::numeric_limits<double>::quiet_NaN();  // the final estimate (core/convergence.h)
+  double noise = std::numeric_limits<double>::quiet_NaN();  // the final estimate (core/refinement/convergence.h)
 };
 // The point count an accumulation with StillOptions::untilNoise and no `points` stops at anyway.
 inline constexpr std::uint64_t kUntilNoisePointCap = std::uint64_t{1} << 40;

@@ -47,7 +47,7 @@ struct Settings {
   std::filesystem::path userPresetFolder;  // empty: defaultUserPresetFolder()
   ExportSettings lastExport;
   std::filesystem::path lastExportFolder;  // empty: none yet
-  // The explorer stops refining once the volume's estimated noise (core/convergence.h) is this
+  // The explorer stops refining once the volume's estimated noise (core/refinement/convergence.h) is this
   // many percent, and the process rests; 0: never stop (refine until the next edit). 0–100.
   double refineUntilNoisePercent = kDefaultRefineUntilNoisePercent;
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "bench.h"
-#include "core/accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "core/grid.h"
 #include "core/inside_mask.h"
 #include "core/mesh.h"

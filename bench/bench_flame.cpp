@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "bench.h"
-#include "core/accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "core/error.h"
 #include "core/flame/xml.h"
 #include "core/grid.h"

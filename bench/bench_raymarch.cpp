@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "bench.h"
-#include "core/accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "core/camera.h"
 #include "core/grid.h"
 #include "core/inside_mask.h"

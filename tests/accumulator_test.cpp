@@ -16,9 +16,9 @@
 #include <glm/geometric.hpp>
 #include <memory>
 
-#include "core/accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "core/chunk_sums.h"
-#include "core/convergence.h"
+#include "core/refinement/convergence.h"
 #include "core/error.h"
 #include "core/grid.h"
 #include "core/inside_mask.h"

@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "core/convergence.h"
+#include "core/refinement/convergence.h"
 
 using namespace voxflame::core;
 

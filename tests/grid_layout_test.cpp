@@ -20,13 +20,13 @@
 #include <thread>
 #include <vector>
 
-#include "core/accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "core/attractor.h"
 #include "core/color.h"
 #include "core/inside_mask.h"
 #include "core/packed_volume.h"
 #include "core/scene_io.h"
-#include "core/snapshot_publisher.h"
+#include "core/refinement/snapshot_publisher.h"
 
 using namespace voxflame::core;
 

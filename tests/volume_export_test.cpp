@@ -12,7 +12,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "core/grid.h"
 #include "core/scene.h"
 #include "core/volume_export.h"

@@ -19,11 +19,11 @@
 #include <string>
 #include <thread>
 
-#include "core/accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "core/mesh.h"
 #include "core/packed_volume.h"
 #include "core/scene.h"
-#include "core/snapshot_publisher.h"
+#include "core/refinement/snapshot_publisher.h"
 
 namespace voxflame::app {
 
@@ -38,7 +38,7 @@ struct SessionStatus {
   std::uint64_t appliedGeneration = 0;    // of those, the newest the Accumulator runs
   bool hasShape = false;
   core::GridGeometry grid;  // the current shape's grid (when hasShape)
-  // Convergence (core/convergence.h): the estimated noise left in the volume (a fraction; NaN
+  // Convergence (core/refinement/convergence.h): the estimated noise left in the volume (a fraction; NaN
   // until measured), the target that stops refining (0: never), and why refinement rests.
   double noise = std::numeric_limits<double>::quiet_NaN();
   double noiseTarget = 0.0;

@@ -37,7 +37,7 @@ void GridSums::add(const GridSums& other) {
   insideVoxels = std::max(insideVoxels, other.insideVoxels);
 }
 
-GridSums readGridSums(const Accumulator& accumulator, const AccumulatorStats& stats) {
+GridSums readGridSums(const RefinementBackend& accumulator, const AccumulatorStats& stats) {
   GridSums sums;
   const GridGeometry& g = accumulator.mask().geometry;
   const ColourLayout colour = accumulator.colourLayout();

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "accumulator.h"
+#include "core/refinement/refinement_backend.h"
 #include "grid.h"
 
 namespace voxflame::core {
@@ -32,8 +32,8 @@ struct GridSums {
   void add(const GridSums& other);                                   // throws core::Error when the shapes differ
 };
 
-// What an Accumulator's grid holds now (the workers should be idle: a chunk reached its target).
-GridSums readGridSums(const Accumulator& accumulator, const AccumulatorStats& stats);
+// What a backend's grid holds now (the workers should be idle: a chunk reached its target).
+GridSums readGridSums(const RefinementBackend& accumulator, const AccumulatorStats& stats);
 
 // The snapshot a renderer draws: density = hits, colour = the mean of the colour sums, as
 // Accumulator::snapshot makes it from the live grid (the two agree exactly on the same sums).

@@ -91,7 +91,7 @@ struct SearchOptions {
   // (the explorer's layers hold no start) turns this off, so every analysis is of its own orbit.
   bool jitterStart = true;
   // When set, a candidate that passed the analysis is kept only if this says yes: the explorer
-  // asks whether its live view runs the parameters bounded (runsBounded, accumulator.h).
+  // asks whether its live view runs the parameters bounded (runsBounded, refinement/prepared_layer.h).
   std::function<bool(const std::vector<double>& params)> accept;
 };
 

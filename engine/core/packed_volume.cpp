@@ -143,7 +143,7 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
   finishOccupancy(out);
 }
 
-bool packVolume(const Accumulator& accumulator, PackedVolume& out, const std::atomic<bool>* cancel) {
+bool packVolume(const RefinementBackend& accumulator, PackedVolume& out, const std::atomic<bool>* cancel) {
   const GridGeometry& g = accumulator.mask().geometry;
   const ColourLayout& colour = accumulator.colourLayout();
   prepare(out, g, colour);

@@ -14,7 +14,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "accumulator.h"
+#include "core/refinement/refinement_backend.h"
 #include "grid.h"
 
 namespace voxflame::core {
@@ -66,7 +66,7 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out);
 // reads true the remaining slabs are skipped and false is returned: `out` is then not a volume to
 // show (its packedFromGrid still says whether its outside rows are zero). A pack at 512³ takes
 // half a second of a core, which the frames of a drag that began meanwhile need more.
-bool packVolume(const Accumulator& accumulator, PackedVolume& out, const std::atomic<bool>* cancel = nullptr);
+bool packVolume(const RefinementBackend& accumulator, PackedVolume& out, const std::atomic<bool>* cancel = nullptr);
 
 // The bytes a packed volume of this grid holds (and the renderer's textures, which mirror it).
 std::size_t packedVolumeBytes(const GridGeometry& grid);

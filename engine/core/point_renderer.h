@@ -17,7 +17,7 @@
 #include <optional>
 #include <vector>
 
-#include "accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "chunk_sums.h"
 #include "camera.h"
 #include "core/flame/image.h"

@@ -18,7 +18,7 @@
 #include <filesystem>
 #include <string>
 
-#include "accumulator.h"
+#include "core/refinement/refinement_backend.h"
 
 namespace voxflame::core {
 

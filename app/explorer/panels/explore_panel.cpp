@@ -15,7 +15,7 @@
 #include <filesystem>
 #include <utility>
 
-#include "core/accumulator.h"
+#include "core/refinement/accumulator.h"
 #include "core/attractor.h"
 #include "core/camera.h"
 #include "core/color.h"

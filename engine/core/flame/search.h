@@ -95,7 +95,7 @@ struct FlameSearchOptions {
   FillCriteria fill;
   std::stop_token stop;  // a stop request ends the search early with what it found
   // When set, a candidate that passes the fill test is kept only if this says yes: the explorer
-  // asks whether its live view runs it bounded (runsBounded, accumulator.h). Each search asks the
+  // asks whether its live view runs it bounded (runsBounded, refinement/prepared_layer.h). Each search asks the
   // one of its kind.
   std::function<bool(const FlameGenome&)> acceptFlame;
   std::function<bool(const QuaternionJuliaSettings&)> acceptJulia;

@@ -1,4 +1,4 @@
-#include "snapshot_publisher.h"
+#include "core/refinement/snapshot_publisher.h"
 
 #include <pthread.h>
 #include <algorithm>
@@ -6,7 +6,7 @@
 
 namespace voxflame::core {
 
-SnapshotPublisher::SnapshotPublisher(const Accumulator& accumulator, std::chrono::milliseconds interval)
+SnapshotPublisher::SnapshotPublisher(const RefinementBackend& accumulator, std::chrono::milliseconds interval)
     : accumulator_(accumulator), interval_(interval), thread_([this](std::stop_token stop) { loop(stop); }) {}
 
 SnapshotPublisher::~SnapshotPublisher() {

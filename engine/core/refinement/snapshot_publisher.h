@@ -1,7 +1,7 @@
-// Packed volumes of a running Accumulator, read and packed for upload on a thread of their own so
-// the main thread never spends a frame copying the grid: it only swaps in the newest finished
-// volume, handing back the one it had (which the next pack reuses). One buffer here and one with
-// the taker: no other copy of the grid exists.
+// Packed volumes of a running refinement backend (an Accumulator or a GPU one), read and packed for upload on a thread
+// of their own so the main thread never spends a frame copying the grid: it only swaps in the newest finished volume,
+// handing back the one it had (which the next pack reuses). One buffer here and one with the taker: no other copy of
+// the grid exists.
 //
 // The thread runs on events, not a timer: it sleeps on the accumulator's progress signal until a
 // batch lands (or the pattern, hold or target changes), a taker asks, or a volume is taken while
@@ -18,14 +18,14 @@
 #include <mutex>
 #include <thread>
 
-#include "accumulator.h"
-#include "packed_volume.h"
+#include "core/refinement/refinement_backend.h"
+#include "core/packed_volume.h"
 
 namespace voxflame::core {
 
 class SnapshotPublisher {
  public:
-  SnapshotPublisher(const Accumulator& accumulator, std::chrono::milliseconds interval);
+  SnapshotPublisher(const RefinementBackend& accumulator, std::chrono::milliseconds interval);
   ~SnapshotPublisher();  // joins the thread
 
   // Swaps the newest volume into `out` when a fresh one is ready; never waits for a pack in
@@ -53,7 +53,7 @@ class SnapshotPublisher {
  private:
   void loop(std::stop_token stop);
 
-  const Accumulator& accumulator_;
+  const RefinementBackend& accumulator_;
   std::chrono::milliseconds interval_;
   std::mutex mutex_;  // guards ready_ and readyFresh_; held while packing
   PackedVolume ready_;

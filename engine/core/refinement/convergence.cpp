@@ -1,4 +1,4 @@
-#include "convergence.h"
+#include "core/refinement/convergence.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,0 +1,714 @@
+#include "gpu_accumulator.h"
+
+#include <epoxy/gl.h>
+#include <pthread.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <map>
+#include <utility>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec3.hpp>
+
+#include "core/chunk_sums.h"
+#include "core/error.h"
+#include "core/random.h"
+#include "gl/headless_context.h"
+#include "gl/renderer_kind.h"
+#include "gl/shader_program.h"
+
+namespace voxflame::gl {
+
+namespace {
+
+constexpr GLuint kOrbitsBinding = 0, kCellsBinding = 1, kHitsBinding = 2, kSeedsBinding = 3, kCountersBinding = 4,
+                 kPaletteBinding = 5, kMaskBinding = 6, kSampleBinding = 7;
+constexpr int kTransientSteps = 32;  // as the CPU's: steps an orbit takes before it may add a point
+constexpr int kOrbitBytes = 64;      // accumulate.comp.glsl's Orbit
+
+double nowSeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// The attractors attractors.glsl knows, by catalogue id: its define is SYSTEM_ and the id in capitals.
+constexpr std::array<const char*, 45> kGpuAttractors = {"lorenz",
+                                                        "lorenz84",
+                                                        "pickover",
+                                                        "polynomial_a",
+                                                        "polynomial_b",
+                                                        "polynomial_c",
+                                                        "rossler",
+                                                        "aizawa",
+                                                        "thomas",
+                                                        "halvorsen",
+                                                        "chen",
+                                                        "lu_chen",
+                                                        "dadras",
+                                                        "rabinovich_fabrikant",
+                                                        "chua",
+                                                        "nose_hoover",
+                                                        "arneodo",
+                                                        "burke_shaw",
+                                                        "dequan_li",
+                                                        "four_wing",
+                                                        "genesio_tesi",
+                                                        "hadley",
+                                                        "newton_leipnik",
+                                                        "rucklidge",
+                                                        "shimizu_morioka",
+                                                        "sakarya",
+                                                        "yu_wang",
+                                                        "sprott_jerk",
+                                                        "sprott_b",
+                                                        "sprott_c",
+                                                        "sprott_d",
+                                                        "sprott_e",
+                                                        "sprott_f",
+                                                        "sprott_g",
+                                                        "sprott_h",
+                                                        "sprott_l",
+                                                        "sprott_m",
+                                                        "sprott_n",
+                                                        "sprott_o",
+                                                        "sprott_p",
+                                                        "sprott_q",
+                                                        "sprott_r",
+                                                        "sprott_s",
+                                                        "henon_3d",
+                                                        "sprott_quadratic"};
+
+bool gpuKnowsAttractor(const std::string& id) {
+  return std::find_if(kGpuAttractors.begin(), kGpuAttractors.end(), [&](const char* known) { return id == known; }) !=
+         kGpuAttractors.end();
+}
+
+std::string systemDefine(const std::string& id) {
+  std::string define = "SYSTEM_";
+  for (char c : id) define += static_cast<char>(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+  return define;
+}
+
+std::uint32_t packRgb(const glm::u8vec3& c) {
+  return std::uint32_t{c.r} | std::uint32_t{c.g} << 8 | std::uint32_t{c.b} << 16;
+}
+
+GLuint makeBuffer(GLuint binding, std::size_t bytes, const void* data = nullptr) {
+  GLuint buffer = 0;
+  glGenBuffers(1, &buffer);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, 16)), data,
+               GL_DYNAMIC_DRAW);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
+  return buffer;
+}
+
+}  // namespace
+
+std::string gpuUnsupportedReason(const std::vector<core::PatternLayer>& layers) {
+  for (const core::PatternLayer& layer : layers) {
+    if (layer.kind != core::PatternKind::Attractor)
+      return "the GPU backend runs attractor layers only; a " + std::string(core::toString(layer.kind)) +
+             " layer needs the CPU backend";
+    if (!gpuKnowsAttractor(layer.attractor))
+      return "the GPU backend does not know attractor '" + layer.attractor + "'; it needs the CPU backend";
+    if (layer.params.size() > 32)
+      return "attractor '" + layer.attractor + "' has more parameters than the GPU backend takes";
+  }
+  return {};
+}
+
+bool hardwareGpuAvailable() {
+  try {
+    const HeadlessContext context;
+    return !softwareRasteriser();
+  } catch (const core::Error&) {
+    return false;
+  }
+}
+
+// One layer as the shader runs it.
+struct LayerUniforms {
+  std::string system;
+  bool rk4 = false;
+  std::vector<float> params;
+  std::vector<double> exactParams;  // for the maps attractors.glsl iterates in double
+  float step = 0.0f;
+  glm::mat3 toGrid{1.0f};
+  glm::vec3 offset{0.0f};
+  float escapeRadius = 1e6f;
+  float alongStep = 0.0f;
+  int colorMode = 0;
+  float colorScale = 1.0f, inversePeriod = 1.0f, axisOffset = 0.0f, hair = 0.0f;
+  glm::vec3 axis{1.0f, 0.0f, 0.0f}, center{0.0f};
+  std::array<std::uint32_t, 256> palette{};
+  std::vector<glm::vec4> seeds;
+  int stepShare = 1;  // steps per dispatch, of stepsPerDispatch, by its weight
+  bool runs = false;  // bounded, with weight
+};
+
+struct GpuAccumulator::Device {
+  std::unique_ptr<HeadlessContext> context;
+  GLuint cells = 0, hits = 0, counters = 0, mask = 0, sample = 0;
+  std::vector<GLuint> orbits, seeds, palettes;
+  std::vector<LayerUniforms> layers;
+  std::map<std::string, ShaderProgram> programs;  // by their defines
+  bool hitsInCells = true;
+
+  ~Device() {
+    for (GLuint* b : {&cells, &hits, &counters, &mask, &sample})
+      if (*b) glDeleteBuffers(1, b);
+    for (auto* list : {&orbits, &seeds, &palettes})
+      if (!list->empty()) glDeleteBuffers(static_cast<GLsizei>(list->size()), list->data());
+    programs.clear();
+  }
+
+  const ShaderProgram& program(const std::string& file, const std::string& defines, bool withAttractors) {
+    const std::string key = file + "|" + defines;
+    auto found = programs.find(key);
+    if (found != programs.end()) return found->second;
+    const ShaderSource body = embeddedShader(file);
+    std::string text = "#version 430 core\n" + defines + (hitsInCells ? "#define HITS_IN_CELLS\n" : "");
+    if (withAttractors) text += embeddedShader("attractors.glsl").text + "\n";
+    text += "#line 1\n" + body.text;
+    return programs.emplace(key, ShaderProgram(ShaderSource{body.file, std::move(text)})).first->second;
+  }
+
+  void bindGrid() const {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCellsBinding, cells);
+    if (hits) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kHitsBinding, hits);
+  }
+};
+
+GpuAccumulator::GpuAccumulator(std::shared_ptr<const core::InsideMask> mask) : mask_(std::move(mask)) {
+  if (!mask_) throw core::Error("the GPU backend needs an inside mask");
+  const core::GridGeometry& g = mask_->geometry;
+  const std::size_t voxels = g.voxelCount();
+  if (voxels == 0 || voxels >= (std::size_t{1} << 31))
+    throw core::Error("the accumulation grid must have 1 to 2^31 voxels");
+  colour_ = core::ColourLayout::of(g);
+  gridId_ = core::nextGridId();
+  rowInside_.assign(static_cast<std::size_t>(g.size.y) * g.size.z, 0);
+  for (int k = 0; k < g.size.z; ++k)
+    for (int j = 0; j < g.size.y; ++j)
+      for (int i = 0; i < g.size.x; ++i)
+        if (mask_->at(i, j, k)) {
+          rowInside_[static_cast<std::size_t>(j) + static_cast<std::size_t>(g.size.y) * k] = 1;
+          ++insideVoxels_;
+        }
+  insideBox_ = core::insideBox(*mask_);
+
+  std::exception_ptr startError;
+  std::mutex startMutex;
+  std::condition_variable started;
+  bool ready = false;
+  thread_ = std::jthread([this, &startError, &startMutex, &started, &ready](std::stop_token stop) {
+    loop(stop, &startError, &startMutex, &started, &ready);
+  });
+  std::unique_lock lock(startMutex);
+  started.wait(lock, [&] { return ready; });
+  if (startError) {
+    lock.unlock();
+    thread_.request_stop();
+    thread_.join();
+    std::rethrow_exception(startError);
+  }
+}
+
+GpuAccumulator::~GpuAccumulator() {
+  thread_.request_stop();
+  {
+    std::lock_guard lock(mutex_);
+    wake_.notify_all();
+  }
+  if (thread_.joinable()) thread_.join();
+}
+
+std::size_t GpuAccumulator::gridBytes() const {
+  const std::size_t voxels = mask_->geometry.voxelCount();
+  const std::size_t hits = colour_.shift == 0 ? 0 : voxels * sizeof(std::uint32_t);
+  return hits + colour_.cellCount() * sizeof(core::detail::ColourCell) + voxels / 8 +
+         std::size_t{orbits_} * kOrbitBytes * std::max<std::size_t>(layers_.size(), 1);
+}
+
+void GpuAccumulator::loop(std::stop_token stop, std::exception_ptr* startError, std::mutex* startMutex,
+                          std::condition_variable* started, bool* ready) {
+  pthread_setname_np(pthread_self(), "vf-gpu");
+  std::unique_ptr<Device> device;
+  try {
+    device = std::make_unique<Device>();
+    device->context = std::make_unique<HeadlessContext>();
+    renderer_ = device->context->renderer();
+    software_ = softwareRasteriser();
+    // A software rasteriser runs a dispatch on the CPU's cores: as many orbits as the CPU backend
+    // has (16 streams of 256) keep a dispatch at milliseconds. A GPU wants a million in flight.
+    orbits_ = software_ ? 4096u : 1u << 20;
+    stepsPerDispatch_ = software_ ? 64 : 256;
+    device->hitsInCells = colour_.shift == 0;
+    const core::GridGeometry& g = mask_->geometry;
+    const std::size_t voxels = g.voxelCount();
+    GLint maxBlock = 0;
+    glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    const std::size_t cellBytes = colour_.cellCount() * sizeof(core::detail::ColourCell);
+    if (static_cast<std::size_t>(static_cast<GLuint>(maxBlock)) < cellBytes)
+      throw core::Error("the grid's colour sums (" + std::to_string(cellBytes >> 20) +
+                        " MiB) exceed what this GPU binds at once");
+    device->cells = makeBuffer(kCellsBinding, cellBytes);
+    if (!device->hitsInCells) device->hits = makeBuffer(kHitsBinding, voxels * sizeof(std::uint32_t));
+    std::vector<std::uint32_t> bits((voxels + 31) / 32, 0u);
+    for (std::size_t v = 0; v < voxels; ++v)
+      if (mask_->inside[v]) bits[v >> 5] |= 1u << (v & 31u);
+    device->mask = makeBuffer(kMaskBinding, bits.size() * sizeof(std::uint32_t), bits.data());
+    device->counters = makeBuffer(kCountersBinding, 4 * sizeof(std::uint32_t));
+    device->sample = makeBuffer(kSampleBinding, (core::kConvergenceSampleVoxels * 2 + 64) * sizeof(std::uint32_t));
+    // Compile the grid passes now, so a driver without compute shaders fails here, with a message.
+    device->program("accumulate_grid.comp.glsl", "#define CLEAR_GRID\n", false);
+    if (glGetError() != GL_NO_ERROR) throw core::Error("the GPU backend could not allocate its grid");
+  } catch (...) {
+    device.reset();
+    std::lock_guard lock(*startMutex);
+    *startError = std::current_exception();
+    *ready = true;
+    started->notify_all();
+    return;
+  }
+  {
+    std::lock_guard lock(*startMutex);
+    *ready = true;
+    started->notify_all();
+  }
+
+  std::unique_lock lock(mutex_);
+  while (!stop.stop_requested()) {
+    if (!tasks_.empty()) {
+      auto task = std::move(tasks_.front());
+      tasks_.pop_front();
+      lock.unlock();
+      task(*device);
+      lock.lock();
+      continue;
+    }
+    if (active_.load() && !held_.load() && !targetReached()) {
+      lock.unlock();
+      dispatchRound(*device);
+      lock.lock();
+      continue;
+    }
+    wake_.wait(lock, stop, [&] { return !tasks_.empty() || (active_.load() && !held_.load() && !targetReached()); });
+  }
+  // Tasks still queued belong to callers that are being destroyed with us; their waits end with
+  // the stop (runOnDevice is never called concurrently with the destructor).
+  tasks_.clear();
+  lock.unlock();
+  device.reset();  // GL objects go while the context is current
+}
+
+void GpuAccumulator::runOnDevice(const std::function<void(Device&)>& task) const {
+  std::mutex doneMutex;
+  std::condition_variable doneCondition;
+  bool done = false;
+  std::exception_ptr error;
+  {
+    std::lock_guard lock(mutex_);
+    tasks_.emplace_back([&](Device& device) {
+      try {
+        task(device);
+      } catch (...) {
+        error = std::current_exception();
+      }
+      std::lock_guard doneLock(doneMutex);
+      done = true;
+      doneCondition.notify_all();
+    });
+    wake_.notify_all();
+  }
+  std::unique_lock doneLock(doneMutex);
+  doneCondition.wait(doneLock, [&] { return done; });
+  if (error) std::rethrow_exception(error);
+}
+
+bool GpuAccumulator::targetReached() const {
+  const std::uint64_t target = targetPoints_.load();
+  return target > 0 && chunkPoints_.load() >= target;
+}
+
+void GpuAccumulator::notifyWorkChanged() {
+  {
+    std::lock_guard lock(mutex_);
+    wake_.notify_all();
+    doneSignal_.notify_all();
+  }
+  progress_.notify();
+}
+
+void GpuAccumulator::setDeposit(core::Deposit deposit) {
+  deposit_ = deposit;
+}
+
+void GpuAccumulator::setPaletteMode(core::PaletteMode /*mode*/) {
+  // Only colour index layers (flames, quaternion Julia sets) read it, and they run on the CPU.
+}
+
+void GpuAccumulator::setHeld(bool held) {
+  if (held_.exchange(held) != held) notifyWorkChanged();
+}
+
+void GpuAccumulator::setTargetPoints(std::uint64_t target) {
+  if (targetPoints_.exchange(target) == target) return;
+  notifyWorkChanged();
+}
+
+bool GpuAccumulator::waitUntilDone(double timeoutSeconds) {
+  std::unique_lock lock(mutex_);
+  return doneSignal_.wait_for(lock, std::chrono::duration<double>(timeoutSeconds),
+                              [&] { return !active_.load() || targetReached(); });
+}
+
+core::AccumulatorStats GpuAccumulator::stats() const {
+  core::AccumulatorStats s;
+  s.generation = generation_.load();
+  s.iterations = iterations_.load();
+  s.points = points_.load();
+  s.outside = outside_.load();
+  s.escapes = escapes_.load();
+  const double elapsed = nowSeconds() - generationStart_.load();
+  s.pointsPerSecond = elapsed > 0.0 ? static_cast<double>(s.iterations) / elapsed : 0.0;
+  s.done = !active_.load() || targetReached();
+  std::lock_guard lock(mutex_);
+  s.problem = problem_;
+  s.showingLastBounded = showingLastBounded_;
+  return s;
+}
+
+void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, std::uint64_t seed,
+                                WhenEscaping whenEscaping) {
+  const std::string unsupported = gpuUnsupportedReason(core::expandCopies(layers));
+  std::vector<core::PreparedLayer> prepared;
+  std::string problem = unsupported;
+  if (unsupported.empty()) {
+    prepared = core::prepareLayers(layers, *mask_, insideBox_, seed, deepSeeds_.load());
+    problem = core::escapeProblem(prepared);
+  }
+  const auto anyBounded = [](const std::vector<core::PreparedLayer>& set) {
+    return std::any_of(set.begin(), set.end(), [](const core::PreparedLayer& l) { return l.bounded; });
+  };
+  std::vector<LayerUniforms> uniforms;
+  for (const core::PreparedLayer& layer : prepared) {
+    LayerUniforms u;
+    u.runs = layer.bounded && layer.layer.weight > 0.0 && !layer.seeds.empty();
+    u.system = systemDefine(layer.layer.attractor);
+    u.rk4 = layer.layer.integrator == core::Integrator::RK4;
+    for (double v : layer.layer.params) u.params.push_back(static_cast<float>(v));
+    u.exactParams = layer.layer.params;
+    u.step = static_cast<float>(layer.layer.step);
+    const glm::dvec3 axisScale = layer.fit.axisScale * layer.fit.scale;
+    const glm::dmat3 m =
+        layer.fit.rotation * glm::dmat3(glm::dvec3(axisScale.x, 0.0, 0.0), glm::dvec3(0.0, axisScale.y, 0.0),
+                                        glm::dvec3(0.0, 0.0, axisScale.z));
+    u.toGrid = glm::mat3(m);
+    u.offset = glm::vec3(layer.fit.gridCenter - m * layer.fit.attractorCenter);
+    u.escapeRadius = static_cast<float>(std::min(layer.escapeRadius, 1e30));
+    const bool flow = layer.info && layer.info->kind == core::AttractorKind::Flow;
+    u.alongStep = flow ? 1.0f : 0.0f;
+    u.hair = flow ? 1e-5f : 0.0f;
+    const core::ColorSettings& color = layer.layer.color;
+    double scale = color.scale;
+    switch (color.mode) {
+      case core::ColorMode::Speed:
+        u.colorMode = 0, scale /= layer.speedReference;
+        break;
+      case core::ColorMode::Curvature:
+        u.colorMode = 1, scale /= layer.curvatureReference;
+        break;
+      case core::ColorMode::Time:
+        u.colorMode = 2;
+        break;
+      case core::ColorMode::Axis:
+        u.colorMode = 3, scale /= (layer.axisHigh - layer.axisLow);
+        break;
+      case core::ColorMode::Distance:
+      case core::ColorMode::Index:  // refused for attractor layers by prepareLayers
+        u.colorMode = 4, scale /= layer.distanceReference;
+        break;
+    }
+    u.colorScale = static_cast<float>(scale);
+    u.inversePeriod = static_cast<float>(1.0 / color.period);
+    u.axis = glm::vec3(glm::normalize(color.axis));
+    u.axisOffset = static_cast<float>(layer.axisLow);
+    u.center = glm::vec3(layer.center);
+    for (std::size_t c = 0; c < 256 && c < layer.palette.size(); ++c) u.palette[c] = packRgb(layer.palette[c]);
+    for (const glm::dvec3& s : layer.seeds) u.seeds.emplace_back(glm::vec3(s), 0.0f);
+    uniforms.push_back(std::move(u));
+  }
+  double maxWeight = 0.0;
+  for (const core::PreparedLayer& l : prepared) maxWeight = std::max(maxWeight, l.layer.weight);
+  for (std::size_t i = 0; i < prepared.size(); ++i)
+    uniforms[i].stepShare =
+        std::max(1, static_cast<int>(std::lround(stepsPerDispatch_ *
+                                                 (maxWeight > 0.0 ? prepared[i].layer.weight / maxWeight : 0.0))));
+
+  bool keepLastBounded = false;
+  {
+    std::lock_guard lock(mutex_);
+    keepLastBounded = whenEscaping == WhenEscaping::KeepLastBounded && unsupported.empty() && !anyBounded(prepared) &&
+                      anyBounded(layers_) && points_.load() > 0;
+    // Kept: the grid and its counts stay the last bounded pattern's, and only the refinement
+    // stops. Otherwise nothing runs until the device has the new layers and an empty grid.
+    problem_ = problem;
+    showingLastBounded_ = keepLastBounded;
+    active_ = false;
+  }
+  if (keepLastBounded) {
+    notifyWorkChanged();
+    return;
+  }
+  runOnDevice([&](Device& device) {
+    for (auto* list : {&device.orbits, &device.seeds, &device.palettes})
+      if (!list->empty()) {
+        glDeleteBuffers(static_cast<GLsizei>(list->size()), list->data());
+        list->clear();
+      }
+    device.layers = std::move(uniforms);
+    for (const LayerUniforms& u : device.layers) {
+      device.orbits.push_back(makeBuffer(kOrbitsBinding, std::size_t{orbits_} * kOrbitBytes));
+      device.seeds.push_back(makeBuffer(kSeedsBinding, u.seeds.size() * sizeof(glm::vec4), u.seeds.data()));
+      device.palettes.push_back(makeBuffer(kPaletteBinding, sizeof(u.palette), u.palette.data()));
+      // All ones: every orbit reads as unseeded (state.y) and seeds itself at its first step.
+      const GLuint ones = 0xFFFFFFFFu;
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.orbits.back());
+      glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+      if (u.runs)
+        device.program("accumulate.comp.glsl", "#define " + u.system + "\n" + (u.rk4 ? "#define INTEGRATOR_RK4\n" : ""),
+                       true);
+    }
+    clearGrid(device);
+    if (glGetError() != GL_NO_ERROR) throw core::Error("the GPU backend could not set up the pattern's buffers");
+    std::lock_guard lock(mutex_);
+    layers_ = std::move(prepared);
+    seed_ = seed;
+    chunk_ = 0;
+    orbitsFresh_ = true;
+    pointsPerStep_ = 0.0;
+    iterations_ = 0;
+    points_ = 0;
+    chunkPoints_ = 0;
+    outside_ = 0;
+    escapes_ = 0;
+    generationStart_ = nowSeconds();
+    active_ = anyBounded(layers_) && unsupported.empty();
+    generation_.fetch_add(1, std::memory_order_acq_rel);
+    version_.fetch_add(1, std::memory_order_acq_rel);
+  });
+  notifyWorkChanged();
+}
+
+void GpuAccumulator::clearGrid(Device& device) const {
+  const core::GridGeometry& g = mask_->geometry;
+  const ShaderProgram& clear = device.program("accumulate_grid.comp.glsl", "#define CLEAR_GRID\n", false);
+  glUseProgram(clear.id());
+  device.bindGrid();
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMaskBinding, device.mask);
+  const auto voxels = static_cast<GLuint>(g.voxelCount());
+  const auto cells = static_cast<GLuint>(colour_.cellCount());
+  glUniform1ui(clear.uniform("uCount"), voxels);
+  glUniform1ui(clear.uniform("uCellCount"), cells);
+  glDispatchCompute((std::max(voxels, cells) + 255u) / 256u, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+}
+
+void GpuAccumulator::setChunk(std::uint64_t chunk, bool clearGrid) {
+  runOnDevice([&](Device& device) {
+    for (GLuint orbits : device.orbits) {
+      const GLuint ones = 0xFFFFFFFFu;
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, orbits);
+      glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+    }
+    if (clearGrid) this->clearGrid(device);
+    std::lock_guard lock(mutex_);
+    chunk_ = chunk;
+    orbitsFresh_ = true;
+    pointsPerStep_ = 0.0;
+    chunkPoints_ = 0;
+    if (clearGrid) {
+      iterations_ = 0;
+      points_ = 0;
+      outside_ = 0;
+      escapes_ = 0;
+      generationStart_ = nowSeconds();
+      generation_.fetch_add(1, std::memory_order_acq_rel);
+    }
+    version_.fetch_add(1, std::memory_order_acq_rel);
+  });
+  notifyWorkChanged();
+}
+
+void GpuAccumulator::dispatchRound(Device& device) {
+  std::uint64_t seed = 0, chunk = 0;
+  bool fresh = false;
+  double pointsPerStep = 0.0;
+  {
+    std::lock_guard lock(mutex_);
+    seed = seed_;
+    chunk = chunk_;
+    fresh = orbitsFresh_;
+    pointsPerStep = pointsPerStep_;
+  }
+  // The last round a target needs is cut short in proportion (as the CPU cuts its last batch), so
+  // a still's chunk overshoots its share by little. The cut follows from the counts alone.
+  double stepFraction = 1.0;
+  const std::uint64_t target = targetPoints_.load(), done = chunkPoints_.load();
+  if (target > 0 && target > done) {
+    const auto remaining = static_cast<double>(target - done);
+    const double perRound = pointsPerStep * stepsPerDispatch_;
+    stepFraction = !fresh && perRound > 0.0
+                       ? 1.1 * remaining / perRound
+                       : (kTransientSteps + 1.1 * remaining / static_cast<double>(orbits_) + 1.0) / stepsPerDispatch_;
+    stepFraction = std::clamp(stepFraction, 1.0 / stepsPerDispatch_, 1.0);
+  }
+  const GLuint zero = 0;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.counters);
+  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountersBinding, device.counters);
+  device.bindGrid();
+  std::uint64_t iterations = 0;
+  int roundSteps = 0;
+  for (std::size_t li = 0; li < device.layers.size(); ++li) {
+    const LayerUniforms& u = device.layers[li];
+    if (!u.runs) continue;
+    const int steps = std::max(1, static_cast<int>(std::ceil(u.stepShare * stepFraction)));
+    roundSteps = std::max(roundSteps, steps);
+    const ShaderProgram& program = device.program(
+        "accumulate.comp.glsl", "#define " + u.system + "\n" + (u.rk4 ? "#define INTEGRATOR_RK4\n" : ""), true);
+    const GLuint id = program.id();
+    glUseProgram(id);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOrbitsBinding, device.orbits[li]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSeedsBinding, device.seeds[li]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPaletteBinding, device.palettes[li]);
+    std::array<float, 32> params{};
+    std::copy(u.params.begin(), u.params.end(), params.begin());
+    glUniform1fv(program.uniform("uParams"), 32, params.data());
+    if (const GLint location = program.uniform("uParamsDouble"); location >= 0) {
+      std::array<double, 32> exact{};
+      std::copy(u.exactParams.begin(), u.exactParams.end(), exact.begin());
+      glUniform1dv(location, 32, exact.data());
+    }
+    glUniform1ui(program.uniform("uOrbitCount"), orbits_);
+    glUniform1i(program.uniform("uSteps"), steps);
+    glUniform1f(program.uniform("uStep"), u.step);
+    const std::uint64_t streamSeed = core::mixSeed(core::mixSeed(seed, chunk), li);
+    glUniform1ui(program.uniform("uStreamSeed"), static_cast<GLuint>(streamSeed ^ (streamSeed >> 32)));
+    glUniform1ui(program.uniform("uSeedCount"), static_cast<GLuint>(u.seeds.size()));
+    glUniform1f(program.uniform("uHair"), u.hair);
+    glUniformMatrix3fv(program.uniform("uToGrid"), 1, GL_FALSE, &u.toGrid[0][0]);
+    glUniform3fv(program.uniform("uGridOffset"), 1, &u.offset[0]);
+    const glm::ivec3 size = mask_->geometry.size;
+    glUniform3i(program.uniform("uGridSize"), size.x, size.y, size.z);
+    glUniform1i(program.uniform("uColourShift"), colour_.shift);
+    glUniform2i(program.uniform("uCellStrides"), colour_.size.x, colour_.size.x * colour_.size.y);
+    glUniform1f(program.uniform("uEscapeRadius"), u.escapeRadius);
+    glUniform1f(program.uniform("uAlongStep"), u.alongStep);
+    glUniform1i(program.uniform("uColorMode"), u.colorMode);
+    glUniform1f(program.uniform("uColorScale"), u.colorScale);
+    glUniform1f(program.uniform("uInversePeriod"), u.inversePeriod);
+    glUniform3fv(program.uniform("uAxis"), 1, &u.axis[0]);
+    glUniform1f(program.uniform("uAxisOffset"), u.axisOffset);
+    glUniform3fv(program.uniform("uCenter"), 1, &u.center[0]);
+    glUniform1i(program.uniform("uJittered"), deposit_.load() == core::Deposit::Jittered ? 1 : 0);
+    glDispatchCompute((orbits_ + 63u) / 64u, 1, 1);
+    iterations += std::uint64_t{orbits_} * static_cast<std::uint64_t>(steps);
+  }
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  std::array<std::uint32_t, 4> counts{};
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.counters);
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(counts), counts.data());  // waits for the round
+  {
+    std::lock_guard lock(mutex_);
+    // What a step of every layer yields now, past the transient (fresh orbits spent it first).
+    const int productive = roundSteps - (fresh ? kTransientSteps : 0);
+    pointsPerStep_ = productive > 0 ? static_cast<double>(counts[0]) / productive : pointsPerStep_;
+    orbitsFresh_ = false;
+  }
+  iterations_.fetch_add(iterations, std::memory_order_relaxed);
+  points_.fetch_add(counts[0], std::memory_order_relaxed);
+  chunkPoints_.fetch_add(counts[0], std::memory_order_relaxed);
+  outside_.fetch_add(counts[1], std::memory_order_relaxed);
+  escapes_.fetch_add(counts[2], std::memory_order_relaxed);
+  version_.fetch_add(1, std::memory_order_release);
+  {
+    std::lock_guard lock(mutex_);
+    doneSignal_.notify_all();
+  }
+  progress_.notify();
+}
+
+void GpuAccumulator::readSlabsImpl(core::GridReading& reading, void (*visit)(const core::GridSlabView&, void*),
+                                   void* context) const {
+  const core::GridGeometry& g = mask_->geometry;
+  std::lock_guard hostLock(hostMutex_);
+  runOnDevice([&](Device& device) {
+    // Read under the device's order: what the reading says is what the copy holds.
+    reading.geometry = g;
+    reading.colour = colour_;
+    reading.version = version_.load();
+    reading.generation = generation_.load();
+    reading.points = points_.load();
+    reading.insideVoxels = insideVoxels_;
+    reading.gridId = gridId_;
+    hostCells_.resize(colour_.cellCount());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.cells);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0,
+                       static_cast<GLsizeiptr>(hostCells_.size() * sizeof(core::detail::ColourCell)),
+                       hostCells_.data());
+    if (device.hits) {
+      hostHits_.resize(g.voxelCount());
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.hits);
+      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(hostHits_.size() * sizeof(std::uint32_t)),
+                         hostHits_.data());
+    }
+  });
+  core::GridSlabView slab;
+  slab.firstZ = 0;
+  slab.endZ = g.size.z;
+  slab.hits = colour_.shift == 0 ? &hostCells_.front().count : hostHits_.data();
+  slab.hitsStride = colour_.shift == 0 ? 4 : 1;
+  slab.firstColourZ = 0;
+  slab.endColourZ = colour_.size.z;
+  slab.colours = hostCells_.data();
+  slab.empty = false;
+  slab.rowInside = rowInside_.data();
+  visit(slab, context);
+}
+
+void GpuAccumulator::sampleDensity(core::DensitySample& out) const {
+  const std::size_t voxels = mask_->geometry.voxelCount();
+  const std::size_t stride = core::convergenceSampleStride(voxels);
+  const std::size_t count = (voxels + stride - 1) / stride;
+  out.hits.resize(count);
+  runOnDevice([&](Device& device) {
+    out.generation = generation_.load();
+    out.points = points_.load();
+    const ShaderProgram& sample = device.program("accumulate_grid.comp.glsl", "#define SAMPLE_DENSITY\n", false);
+    glUseProgram(sample.id());
+    device.bindGrid();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSampleBinding, device.sample);
+    glUniform1ui(sample.uniform("uCount"), static_cast<GLuint>(count));
+    glUniform1ui(sample.uniform("uStride"), static_cast<GLuint>(stride));
+    glDispatchCompute(static_cast<GLuint>((count + 255) / 256), 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.sample);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(count * sizeof(std::uint32_t)),
+                       out.hits.data());
+  });
+}
+
+void GpuAccumulator::snapshot(core::VolumeSnapshot& out) const {
+  const core::GridSums sums = core::readGridSums(*this, stats());
+  core::snapshotFromSums(sums, out);
+  out.generation = generation_.load();
+  out.version = version_.load();
+}
+
+}  // namespace voxflame::gl

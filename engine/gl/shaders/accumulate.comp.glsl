@@ -1,0 +1,182 @@
+// The GPU backend's chaos step (gpu_accumulator.h): one invocation per orbit, uSteps steps of the
+// layer's attractor (attractors.glsl, put before this file) per dispatch, each point classified the
+// way core::Accumulator's classify pass does it (escape test, colour, a jittered voxel, the inside
+// flag) and added to the grid with integer atomics, so the sums come out the same in any order.
+// The grid's layout is the CPU's: hit counts carry the outside flag in their top bit; colour cells
+// hold red, green, blue and a count, and where a cell is one voxel (HITS_IN_CELLS) its count is
+// the voxel's hits.
+layout(local_size_x = 64) in;
+
+struct Orbit {
+  vec4 position;  // w: unused (a double-precision map's state between dispatches: in float)
+  vec4 previous;  // the position one step before
+  vec4 lastStep;  // the step before that (curvature colouring)
+  uvec4 state;    // x: jitter stream (xorshift32, never 0), y: age (kUnseeded: to be seeded), z: reseeds
+};
+layout(std430, binding = 0) buffer Orbits { Orbit orbits[]; };
+layout(std430, binding = 1) buffer Cells { uvec4 cells[]; };  // red, green, blue, count
+#ifndef HITS_IN_CELLS
+layout(std430, binding = 2) buffer Hits { uint hits[]; };
+#endif
+layout(std430, binding = 3) readonly buffer Seeds { vec4 seeds[]; };  // points on the attractor
+layout(std430, binding = 4) buffer Counters { uint counters[]; };     // inside, outside, escapes
+layout(std430, binding = 5) readonly buffer Palette { uint palette[]; };  // 256 linear RGB8
+
+uniform uint uOrbitCount;
+uniform int uSteps;
+uniform float uStep;           // the integrator's step (flows)
+uniform uint uStreamSeed;      // the pattern's seed, chunk and layer, mixed
+uniform uint uSeedCount;
+uniform float uHair;           // a flow's orbits start this far (relative) off their seed
+uniform mat3 uToGrid;          // attractor → voxel coordinates
+uniform vec3 uGridOffset;
+uniform ivec3 uGridSize;
+uniform int uColourShift;
+uniform ivec2 uCellStrides;    // colour cells along x, along x·y
+uniform float uEscapeRadius;
+uniform float uAlongStep;      // 1 for flows: a point lands at a random spot of its last step
+uniform int uColorMode;        // core::ColorMode: 0 speed, 1 curvature, 2 time, 3 axis, 4 distance
+uniform float uColorScale;
+uniform float uInversePeriod;
+uniform vec3 uAxis;
+uniform float uAxisOffset;
+uniform vec3 uCenter;
+uniform bool uJittered;        // core::Deposit::Jittered (else Nearest)
+
+const int kTransientSteps = 32;
+const uint kUnseeded = 0xFFFFFFFFu;
+const uint kAgeLimit = 1u << 30;
+const uint kOutsideBit = 0x80000000u;
+const uint kColourCountLimit = 1u << 24;
+
+// PCG's output permutation as a hash (Jarzynski and Olano, "Hash Functions for GPU Rendering",
+// JCGT 2020): seeds and reseeds draw from it, so each orbit's stream depends on its index alone.
+uint pcgHash(uint v) {
+  uint state = v * 747796405u + 2891336453u;
+  uint word = ((state >> ((state >> 28u) + 4u)) ^ state) * 277803737u;
+  return (word >> 22u) ^ word;
+}
+uint xorshift32(uint r) {
+  r ^= r << 13;
+  r ^= r >> 17;
+  r ^= r << 5;
+  return r;
+}
+// The top 24 bits as a uniform offset in [-0.5, 0.5), as the CPU's jitter takes them.
+float jitterOffset(uint r) { return float(r >> 8) * (1.0 / 16777216.0) - 0.5; }
+float symmetric(uint r) { return float(r >> 8) * (2.0 / 16777216.0) - 1.0; }
+
+void seedOrbit(inout Orbit o, uint index) {
+  uint h = pcgHash(uStreamSeed ^ pcgHash(index * 2654435761u + o.state.z * 40503u));
+  vec3 s = seeds[h % max(uSeedCount, 1u)].xyz;
+  uint a = pcgHash(h), b = pcgHash(a), c = pcgHash(b);
+  vec3 start = s + uHair * (1.0 + abs(s)) * vec3(symmetric(a), symmetric(b), symmetric(c));
+  o.position = vec4(start, 0.0);
+  o.previous = o.position;
+  o.lastStep = vec4(0.0);
+  o.state.y = 0u;
+  o.state.z += 1u;
+  if (o.state.x == 0u) o.state.x = pcgHash(c) | 1u;
+}
+
+void main() {
+  uint index = gl_GlobalInvocationID.x;
+  if (index >= uOrbitCount) return;
+  Orbit o = orbits[index];
+  if (o.state.y == kUnseeded) {
+    o.state.z = 0u;
+    o.state.x = 0u;
+    seedOrbit(o, index);
+  }
+  uint inside = 0u, outside = 0u, escapes = 0u;
+  real3 state = real3(o.position.xyz);
+  for (int step = 0; step < uSteps; ++step) {
+    real3 next = advance(state, uStep);
+    vec3 q = vec3(next);
+    bool finite = all(lessThan(abs(q), vec3(uEscapeRadius)));  // false for NaN
+    vec3 d = q - o.previous.xyz;
+    float value;
+    if (uColorMode == 0) {
+      value = length(d);
+    } else if (uColorMode == 1) {
+      vec3 s = o.lastStep.xyz;
+      value = length(cross(d, s)) / (sqrt(dot(d, d) * dot(s, s)) + 1e-30);
+    } else if (uColorMode == 2) {
+      float cycles = float(o.state.y) * uInversePeriod;
+      value = cycles - floor(cycles);
+    } else if (uColorMode == 3) {
+      value = dot(q, uAxis) - uAxisOffset;
+    } else {
+      value = length(q - uCenter);
+    }
+    float t = finite ? clamp(value * uColorScale * 255.0, 0.0, 255.0) : 0.0;
+    uint colour = palette[uint(t)];
+
+    uint r = xorshift32(o.state.x);
+    float along = uAlongStep * (jitterOffset(r) + 0.5);
+    vec3 g = uToGrid * (q - along * d) + uGridOffset;
+    if (uJittered) {
+      r = xorshift32(r);
+      g.x += jitterOffset(r);
+      r = xorshift32(r);
+      g.y += jitterOffset(r);
+      r = xorshift32(r);
+      g.z += jitterOffset(r);
+    }
+    o.state.x = r;
+    bool inGrid = finite && all(greaterThanEqual(g, vec3(0.0))) && all(lessThan(g, vec3(uGridSize)));
+    bool settled = finite && o.state.y > uint(kTransientSteps);
+    if (settled) {
+      if (!inGrid) {
+        ++outside;
+      } else {
+        ivec3 v = ivec3(g);
+        uint voxel = uint(v.x + uGridSize.x * (v.y + uGridSize.y * v.z));
+        ivec3 c = v >> uColourShift;
+        uint cell = uint(c.x + uCellStrides.x * c.y + uCellStrides.y * c.z);
+#ifdef HITS_IN_CELLS
+        // The flag never changes within a generation, so a plain read of it is exact.
+        if ((cells[cell].w & kOutsideBit) != 0u) {
+          ++outside;
+        } else {
+          uint before = atomicAdd(cells[cell].w, 1u);
+          if (before < kColourCountLimit) {
+            atomicAdd(cells[cell].x, colour & 0xffu);
+            atomicAdd(cells[cell].y, (colour >> 8) & 0xffu);
+            atomicAdd(cells[cell].z, (colour >> 16) & 0xffu);
+          }
+          ++inside;
+        }
+#else
+        if ((hits[voxel] & kOutsideBit) != 0u) {
+          ++outside;
+        } else {
+          atomicAdd(hits[voxel], 1u);
+          uint before = atomicAdd(cells[cell].w, 1u);
+          if (before < kColourCountLimit) {
+            atomicAdd(cells[cell].x, colour & 0xffu);
+            atomicAdd(cells[cell].y, (colour >> 8) & 0xffu);
+            atomicAdd(cells[cell].z, (colour >> 16) & 0xffu);
+          }
+          ++inside;
+        }
+#endif
+      }
+    }
+    if (!finite) {
+      ++escapes;
+      seedOrbit(o, index);
+      state = real3(o.position.xyz);
+      continue;
+    }
+    state = next;
+    o.lastStep = vec4(d, 0.0);
+    o.previous = vec4(q, 0.0);
+    o.position = vec4(q, 0.0);
+    if (o.state.y < kAgeLimit) ++o.state.y;
+  }
+  orbits[index] = o;
+  if (inside != 0u) atomicAdd(counters[0], inside);
+  if (outside != 0u) atomicAdd(counters[1], outside);
+  if (escapes != 0u) atomicAdd(counters[2], escapes);
+}
