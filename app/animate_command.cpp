@@ -216,6 +216,8 @@ int animateCommand(const AnimateArguments& arguments) {
   const bool interactive = isatty(fileno(stderr));
   StillOptions options;
   options.threads = arguments.threads;
+  // One backend for every frame: keyframes change values, never a layer's kind.
+  options.backend = resolveBackend(arguments.backend, scene.layers, scene.render.method);
   // Split into chunks as `render` splits a still (its default K), so `voxflame render FRAME.png`
   // makes the frame again, byte for byte.
   options.chunks = ChunkPlan{};

@@ -16,6 +16,7 @@
 #include "core/flame/xml.h"
 #include "core/inside_mask.h"
 #include "core/scene.h"
+#include "refinement_backends.h"
 
 namespace voxflame::app {
 
@@ -24,9 +25,10 @@ struct RenderArguments {
   std::optional<std::string> preset;  // PRESET.json, IMAGE.png, FILE.flame or a mesh; none: the default
   std::optional<std::string> output;  // OUT.png, OUT.exr, OUT.vdb or OUT.nrrd
   int width = 1280, height = 720;
-  std::uint64_t points = 0;                 // 0: the preset's
-  int threads = 0;                          // 0: all cores
-  std::optional<double> untilNoisePercent;  // stop at this estimated noise (percent), --points a cap
+  std::uint64_t points = 0;                     // 0: the preset's
+  int threads = 0;                              // 0: all cores
+  BackendChoice backend = BackendChoice::Auto;  // what refines the volume (refinement_backends.h)
+  std::optional<double> untilNoisePercent;      // stop at this estimated noise (percent), --points a cap
   std::optional<int> samples, grid, oversample;
   std::optional<double> cameraAzimuthDeg, cameraElevationDeg, time;
   int bitDepth = 8;
@@ -67,7 +69,8 @@ struct AnimateArguments {
   std::optional<int> samples, grid;
   std::uint64_t points = 0;
   int threads = 0;
-  std::optional<std::string> farm;  // "slurm"
+  BackendChoice backend = BackendChoice::Auto;  // what refines each frame's volume
+  std::optional<std::string> farm;              // "slurm"
   std::optional<int> tasks;
   std::optional<std::string> partition;
   bool submit = false;

@@ -1,5 +1,7 @@
 #include "pipeline.h"
 
+#include "refinement_backends.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -11,6 +13,7 @@
 #include <thread>
 
 #include "commands.h"
+#include "refinement_backends.h"
 #include "core/camera.h"
 #include "core/refinement/convergence.h"
 #include "core/error.h"
@@ -91,7 +94,8 @@ AccumulatedVolume accumulateChunks(const core::Scene& scene, const SceneShape& s
     for (int chunk = 0; chunk < chunks; ++chunk) list.push_back(chunk);
   const bool perChunk = static_cast<bool>(plan.gridDone);
   const auto start = std::chrono::steady_clock::now();
-  core::Accumulator accumulator(shape.mask, options.threads);
+  const std::unique_ptr<core::RefinementBackend> backend = makeBackend(options.backend, shape.mask, options.threads);
+  core::RefinementBackend& accumulator = *backend;
   core::GridSums total;
   if (perChunk) {
     if (plan.earlierGrid)
@@ -181,7 +185,8 @@ AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& s
   std::uint64_t target = options.points ? options.points : untilNoise ? kUntilNoisePointCap : scene.points;
   if (scene.render.method == core::RenderMethod::Points) target = std::min(target, kGridPointsForPointsMethod);
   const auto start = std::chrono::steady_clock::now();
-  core::Accumulator accumulator(shape.mask, options.threads);
+  const std::unique_ptr<core::RefinementBackend> backend = makeBackend(options.backend, shape.mask, options.threads);
+  core::RefinementBackend& accumulator = *backend;
   core::ConvergenceMeter meter;
   core::DensitySample sample;
   auto measure = [&] {
@@ -371,6 +376,7 @@ FrameRenderer::Rendered FrameRenderer::renderWithStats(const core::Scene& scene,
 
 StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   StillResult result;
+  result.backend = options.backend;
   if (options.stage) options.stage(StillStage::Loading, 0.0);
   const SceneShape shape = buildSceneShape(scene);
   core::PackedVolume volume;

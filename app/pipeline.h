@@ -65,6 +65,9 @@ struct StillOptions {
   // `points` (when set) as a cap. The volume method only: the points method projects a count.
   double untilNoise = 0.0;
   int threads = 0;                            // 0: all hardware threads
+  // What refines the volume (resolveBackend gives it from the user's choice): the CPU's threads
+  // (`threads` of them) or the GPU's compute shaders. A farm's chunks all use one.
+  core::BackendKind backend = core::BackendKind::Cpu;
   bool linearOutput = false;                  // linear light (for EXR) instead of display-encoded
   const std::atomic<bool>* cancel = nullptr;  // when set and raised, renderStill throws RenderCancelled
   std::function<void(const core::AccumulatorStats&, std::uint64_t target)> progress;  // may be empty
@@ -83,6 +86,7 @@ struct StillResult {
   double accumulateSeconds = 0.0;
   double renderSeconds = 0.0;
   std::string renderer;               // GL_RENDERER
+  core::BackendKind backend = core::BackendKind::Cpu;  // what refined the volume
   std::string warning;                // e.g. fewer points landed inside the mesh than asked for
   double coverage = 0.0;              // share of the mesh's silhouette where the pattern shows (flame/image.h)
   std::uint64_t pointsProjected = 0;  // points method: points projected into the image (0: volume method)

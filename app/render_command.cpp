@@ -399,6 +399,7 @@ int renderCommand(const RenderArguments& arguments) {
   scene = core::sceneFromJson(core::sceneToJson(scene), "(command line)");
   scene.embedded = embedded;
   scene.baseDirectory = baseDirectory;
+  options.backend = resolveBackend(arguments.backend, scene.layers, scene.render.method);
 
   // Every still but one with a noise target is split into chunks: one code path, whether it runs
   // here at once, is resumed, or is spread over a farm.
@@ -416,6 +417,7 @@ int renderCommand(const RenderArguments& arguments) {
       checkpoint->folder = folder;
       checkpoint->points = scene.render.method == core::RenderMethod::Points;
       checkpoint->label = {core::sceneToJson(scene), options.width, options.height, 0, plan.chunks};
+      checkpoint->label.backend = std::string(core::toString(options.backend));
       std::optional<FrameRange> range;
       if (arguments.chunkRange) range = parseChunkRange(*arguments.chunkRange, plan.chunks);
       openCheckpoint(*checkpoint, plan, range);
@@ -496,10 +498,10 @@ int renderCommand(const RenderArguments& arguments) {
   const std::uint64_t shown = result.pointsProjected ? result.pointsProjected : result.stats.points;
   std::printf(
       "wrote %s (%d×%d, %s method, %d samples, %llu points inside, pattern covers %.0f%% of the mesh, %.2f s "
-      "accumulating, %.2f s rendering on %s)\n",
+      "accumulating on the %s backend, %.2f s rendering on %s)\n",
       output.c_str(), options.width, options.height, std::string(core::toString(scene.render.method)).c_str(),
       scene.render.samples, static_cast<unsigned long long>(shown), 100.0 * result.coverage, result.accumulateSeconds,
-      result.renderSeconds, result.renderer.c_str());
+      std::string(core::toString(result.backend)).c_str(), result.renderSeconds, result.renderer.c_str());
   if (arguments.stats) std::printf("stats %s\n", stillMetadata(scene, result).at("voxflame:stats").c_str());
   if (checkpoint)
     std::printf("the chunks stay in %s; delete it when the image is what you want\n", checkpoint->folder.c_str());

@@ -77,6 +77,16 @@ CLI::Option* addChoice(CLI::App& command, const std::string& option, Target& tar
   return command.add_option_function<std::string>(option, set, help)->check(CLI::IsMember(names));
 }
 
+// --backend of render and animate.
+CLI::Option* addBackendChoice(CLI::App& command, app::BackendChoice& target) {
+  return addChoice(
+      command, "--backend", target, {app::BackendChoice::Cpu, app::BackendChoice::Gpu, app::BackendChoice::Auto},
+      [](app::BackendChoice c) { return app::toString(c); },
+      "What refines the volume: cpu (every core), gpu (compute shaders; attractor layers and the volume method), "
+      "auto (the GPU where it is a hardware one and runs the pattern, else the CPU; the default). A render's "
+      "chunks all come from one backend");
+}
+
 std::vector<std::string> renderMethodNames() {
   return {std::string(core::toString(core::RenderMethod::Volume)),
           std::string(core::toString(core::RenderMethod::Points))};
@@ -168,6 +178,7 @@ Run defineRender(CLI::App& command) {
       .add_option("--camera-elevation", a->cameraElevationDeg, "Camera elevation in degrees (default: the preset's)")
       ->check(within(-360.0, 360.0));
   command.add_option("--threads", a->threads, "Accumulation threads (0: all cores)")->check(within(0, 1024));
+  addBackendChoice(command, a->backend);
   command
       .add_option("--progress-fd", a->progressFd,
                   "Write lines \"progress STAGE FRACTION\" to this open file descriptor, for a parent process")
@@ -215,8 +226,8 @@ Run defineRender(CLI::App& command) {
       "render ranges of chunks into OUT.chunks/ (or --checkpoint) and a job that sums them into OUT.");
   // What a farm task renders with: the options that shape the image, as given.
   const std::vector<std::string> passedOnNames = {
-      "--width", "--height",         "--samples",          "--points",  "--grid",   "--bit-depth",
-      "--time",  "--camera-azimuth", "--camera-elevation", "--threads", "--method", "--oversample"};
+      "--width",          "--height",           "--samples", "--points", "--grid",       "--bit-depth", "--time",
+      "--camera-azimuth", "--camera-elevation", "--threads", "--method", "--oversample", "--backend"};
   return [a, width, height, passedOnNames, &command] {
     a->widthGiven = width->count() > 0;
     a->heightGiven = height->count() > 0;
@@ -263,6 +274,7 @@ Run defineAnimate(CLI::App& command) {
       command.add_option("--grid", a->grid, "Voxels along the mesh's longest side (default: the preset's)")
           ->check(within(16, 1024)),
       command.add_option("--threads", a->threads, "Accumulation threads (0: all cores)")->check(within(0, 1024)),
+      addBackendChoice(command, a->backend),
   };
   command.add_option("--video", a->video, "Encode the frames to this file with ffmpeg when it is installed")
       ->type_name("OUT.mp4");

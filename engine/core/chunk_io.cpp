@@ -199,6 +199,8 @@ std::string readCheckedLabelPart(const fs::path& path, ChunkKind kind) {
 }
 
 void checkLabel(const fs::path& path, const ChunkLabel& label) {
+  if (label.backend != "cpu" && label.backend != "gpu")
+    refuse(path, "it names a refinement backend '" + label.backend + "' that voxflame does not know");
   if (label.chunks < 1) refuse(path, "it says the render has " + std::to_string(label.chunks) + " chunks");
   if (label.chunk < 0 || label.chunk >= label.chunks)
     refuse(path, "its chunk index " + std::to_string(label.chunk) + " is not one of its " +
@@ -247,6 +249,7 @@ ChunkLabel labelFromVdb(const fs::path& path, const openvdb::MetaMap& meta) {
   label.chunks = metaValue<std::int32_t>(path, meta, "voxflame_chunks");
   label.width = metaValue<std::int32_t>(path, meta, "voxflame_width");
   label.height = metaValue<std::int32_t>(path, meta, "voxflame_height");
+  if (meta["voxflame_backend"]) label.backend = metaValue<std::string>(path, meta, "voxflame_backend");
   checkLabel(path, label);
   return label;
 }
@@ -377,6 +380,7 @@ openvdb::MetaMap vdbFileMetadata(const GridSums& sums, const ChunkLabel& label) 
   meta.insertMeta("voxflame_chunks", openvdb::Int32Metadata(label.chunks));
   meta.insertMeta("voxflame_width", openvdb::Int32Metadata(label.width));
   meta.insertMeta("voxflame_height", openvdb::Int32Metadata(label.height));
+  meta.insertMeta("voxflame_backend", openvdb::StringMetadata(label.backend));
   meta.insertMeta("voxflame_points", openvdb::Int64Metadata(static_cast<std::int64_t>(sums.points)));
   meta.insertMeta("voxflame_iterations", openvdb::Int64Metadata(static_cast<std::int64_t>(sums.iterations)));
   meta.insertMeta("voxflame_inside_voxels", openvdb::Int64Metadata(static_cast<std::int64_t>(sums.insideVoxels)));
@@ -489,6 +493,8 @@ ChunkLabel labelFromExr(const fs::path& path, const Imf::Header& header) {
   label.chunks = exrValue<Imf::IntAttribute>(path, header, "voxflame_chunks");
   label.width = exrValue<Imf::IntAttribute>(path, header, "voxflame_width");
   label.height = exrValue<Imf::IntAttribute>(path, header, "voxflame_height");
+  if (header.find("voxflame_backend") != header.end())
+    label.backend = exrValue<Imf::StringAttribute>(path, header, "voxflame_backend");
   checkLabel(path, label);
   return label;
 }
@@ -612,6 +618,7 @@ void writeImageChunk(const fs::path& path, const ImageSums& sums, const ChunkLab
   header.insert("voxflame_chunks", Imf::IntAttribute(label.chunks));
   header.insert("voxflame_width", Imf::IntAttribute(label.width));
   header.insert("voxflame_height", Imf::IntAttribute(label.height));
+  header.insert("voxflame_backend", Imf::StringAttribute(label.backend));
   header.insert("voxflame_unit", Imf::DoubleAttribute(sums.unit));
   header.insert("voxflame_points", Imf::StringAttribute(std::to_string(sums.points)));
   header.insert("voxflame_iterations", Imf::StringAttribute(std::to_string(sums.iterations)));

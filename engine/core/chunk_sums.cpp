@@ -126,6 +126,9 @@ std::string describeLabelDifference(const ChunkLabel& expected, const ChunkLabel
   if (found.chunks != expected.chunks)
     return "it is one of " + std::to_string(found.chunks) + " chunks, this render has " +
            std::to_string(expected.chunks) + " (--chunks)";
+  if (found.backend != expected.backend)
+    return "it was refined by the " + found.backend + " backend, this render uses the " + expected.backend +
+           " backend (--backend): one render's chunks all come from one backend";
   if (found.width != expected.width || found.height != expected.height)
     return "it was rendered at " + std::to_string(found.width) + "×" + std::to_string(found.height) +
            ", this render is " + std::to_string(expected.width) + "×" + std::to_string(expected.height);

@@ -62,6 +62,9 @@ struct ChunkLabel {
   std::string presetJson;  // the scene as rendered (core::sceneToJson)
   int width = 0, height = 0;
   int chunk = 0, chunks = 0;  // this chunk's index, of how many
+  // The refinement backend that made it ("cpu" or "gpu", core::toString(BackendKind)): a render
+  // adds up the chunks of one backend only. Chunks written before backends existed are the CPU's.
+  std::string backend = "cpu";
 };
 
 // "" when `found` belongs to the render `expected` describes (the chunk index aside), else what
