@@ -925,16 +925,44 @@ namespace {
 
 // What a flame turns on at its own level that voxflame does not keep is named, never passed over.
 TEST(FlameXml, FlameLevelFeaturesVoxflameDoesNotKeepAreNamed) {
-  // JWildfire's 3D camera is another than Apophysis 3D's and Fractorium's, which the flat view keeps.
+  // JWildfire's 3D camera is kept (its own model) but for its depth of field about a focus point,
+  // blur shapes other than the bubble and depth dimming.
   const std::string attributes =
       "version=\"JWildfire V7.50\" post_symmetry_type=\"POINT\" post_symmetry_order=\"3\" cam_pitch=\"0.5\" "
-      "cam_yaw=\"0\" sld_render_enabled=\"true\" camPitchCurve_enabled=\"true\"";
+      "cam_yaw=\"0\" cam_dof=\"0.2\" new_dof=\"1\" cam_dof_shape=\"HEART\" cam_zdimish=\"0.5\" "
+      "sld_render_enabled=\"true\" camPitchCurve_enabled=\"true\"";
   const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, "", attributes), "p.flame").flame;
   for (const char* lost :
        {"JWildfire post symmetry", "JWildfire solid rendering", "3D camera", "JWildfire flame motion curve"})
     EXPECT_NE(std::find(flame.leftOut.begin(), flame.leftOut.end(), lost), flame.leftOut.end()) << lost;
-  EXPECT_TRUE(hasWarningContaining(flame, "cam_pitch"));
-  EXPECT_FALSE(flame.flat.hasCamera());
+  for (const char* part : {"new_dof", "HEART", "cam_zdimish"}) EXPECT_TRUE(hasWarningContaining(flame, part)) << part;
+  EXPECT_TRUE(flame.flat.hasCamera());
+  EXPECT_EQ(flame.flat.cameraModel, FlatCameraModel::Jwildfire);
+  EXPECT_NEAR(flame.flat.cameraPitchDeg, 0.5 * 180.0 / std::numbers::pi, 1e-9);
+  // Its turn, perspective, position, zoom and plain (bubble) depth of field are kept whole.
+  const ImportedFlame jwildfire =
+      readFlameXml(flameFile(kTwoXforms, "",
+                             "version=\"JWildfire V8.00\" scale=\"40\" cam_zoom=\"2.5\" cam_pitch=\"0.5\" "
+                             "cam_yaw=\"-7\" cam_roll=\"0.25\" cam_persp=\"0.3\" cam_pos_x=\"0.1\" "
+                             "cam_pos_y=\"0.2\" cam_pos_z=\"0.3\" cam_zpos=\"0.4\" cam_dof=\"-0.2\" "
+                             "cam_dof_shape=\"BUBBLE\" cam_dof_scale=\"1.5\" cam_dof_fade=\"0.5\" new_dof=\"0\""),
+                   "p.flame")
+          .flame;
+  EXPECT_TRUE(jwildfire.leftOut.empty());
+  EXPECT_DOUBLE_EQ(jwildfire.flat.scale, 100.0);
+  EXPECT_NEAR(jwildfire.flat.cameraYawDeg, (2.0 * std::numbers::pi - 7.0) * 180.0 / std::numbers::pi, 1e-9);
+  EXPECT_NEAR(jwildfire.flat.cameraBankDeg, 0.25 * 180.0 / std::numbers::pi, 1e-9);
+  EXPECT_DOUBLE_EQ(jwildfire.flat.cameraPerspective, 0.3);
+  EXPECT_EQ(jwildfire.flat.cameraPosition, glm::dvec3(0.1, 0.2, 0.3));
+  EXPECT_DOUBLE_EQ(jwildfire.flat.cameraZ, 0.4);
+  EXPECT_DOUBLE_EQ(jwildfire.flat.cameraDof, 0.2);
+  EXPECT_DOUBLE_EQ(jwildfire.flat.cameraDofScale, 1.5);
+  EXPECT_DOUBLE_EQ(jwildfire.flat.cameraDofFade, 0.5);
+  // Without a turn, perspective, position or depth of field JWildfire draws the flame flat.
+  EXPECT_EQ(readFlameXml(flameFile(kTwoXforms, "", "version=\"JWildfire V8.00\" cam_zpos=\"1\" cam_dof_scale=\"2\""),
+                         "p.flame")
+                .flame.flat,
+            FlatViewSettings{});
   const ImportedFlame fractorium =
       readFlameXml(flameFile(kTwoXforms, "", "version=\"EMBER-WIN-1.0.0.19\" cam_pitch=\"0.5\" cam_persp=\"0.25\""),
                    "p.flame")
