@@ -932,9 +932,9 @@ TEST(FlameXml, FlameLevelFeaturesVoxflameDoesNotKeepAreNamed) {
       "cam_yaw=\"0\" cam_dof=\"0.2\" new_dof=\"1\" cam_dof_shape=\"HEART\" cam_zdimish=\"0.5\" "
       "sld_render_enabled=\"true\" camPitchCurve_enabled=\"true\"";
   const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, "", attributes), "p.flame").flame;
-  for (const char* lost :
-       {"JWildfire post symmetry", "JWildfire solid rendering", "3D camera", "JWildfire flame motion curve"})
+  for (const char* lost : {"JWildfire solid rendering", "3D camera", "JWildfire flame motion curve"})
     EXPECT_NE(std::find(flame.leftOut.begin(), flame.leftOut.end(), lost), flame.leftOut.end()) << lost;
+  EXPECT_EQ(flame.genome.postSymmetry.kind, PostSymmetryKind::Point);
   for (const char* part : {"new_dof", "HEART", "cam_zdimish"}) EXPECT_TRUE(hasWarningContaining(flame, part)) << part;
   EXPECT_TRUE(flame.flat.hasCamera());
   EXPECT_EQ(flame.flat.cameraModel, FlatCameraModel::Jwildfire);
@@ -982,6 +982,39 @@ TEST(FlameXml, FlameLevelFeaturesVoxflameDoesNotKeepAreNamed) {
 }  // namespace
 
 namespace {
+
+// JWildfire's post symmetry is kept whole, for every layer of a layered flame; an unknown kind is none
+// (as JWildfire reads it) and an order beyond 64 is 64.
+TEST(FlameXml, JwildfiresPostSymmetryIsKept) {
+  const ImportedFlame axis =
+      readFlameXml(flameFile(kTwoXforms, "",
+                             "version=\"JWildfire V8.00\" post_symmetry_type=\"Y_AXIS\" post_symmetry_order=\"5\" "
+                             "post_symmetry_centre_x=\"0.25\" post_symmetry_centre_y=\"-0.5\" "
+                             "post_symmetry_distance=\"2\" post_symmetry_rotation=\"-30\""),
+                   "p.flame")
+          .flame;
+  EXPECT_TRUE(axis.leftOut.empty());
+  EXPECT_EQ(axis.genome.postSymmetry, (FlamePostSymmetry{PostSymmetryKind::YAxis, 5, 0.25, -0.5, 2.0, -30.0}));
+  const ImportedFlame big =
+      readFlameXml(flameFile(kTwoXforms, "", "post_symmetry_type=\"POINT\" post_symmetry_order=\"100\""), "p.flame")
+          .flame;
+  EXPECT_EQ(big.genome.postSymmetry.kind, PostSymmetryKind::Point);
+  EXPECT_EQ(big.genome.postSymmetry.order, kMaxPostSymmetryOrder);
+  EXPECT_DOUBLE_EQ(big.genome.postSymmetry.distance, 1.25);  // JWildfire's defaults
+  EXPECT_DOUBLE_EQ(big.genome.postSymmetry.rotationDeg, 6.0);
+  const ImportedFlame odd = readFlameXml(flameFile(kTwoXforms, "", "post_symmetry_type=\"SPIRAL\""), "p.flame").flame;
+  EXPECT_EQ(odd.genome.postSymmetry.kind, PostSymmetryKind::None);
+  EXPECT_TRUE(hasWarningContaining(odd, "SPIRAL"));
+  const std::string layer = "<layer>" + kTwoXforms + "<palette count=\"1\" format=\"RGB\">FF0000</palette></layer>";
+  const ImportedFlame layered =
+      readFlameXml("<jwf-flames><jwf-flame version=\"JWildfire V8.00\" post_symmetry_type=\"X_AXIS\">" + layer + layer +
+                       "</jwf-flame></jwf-flames>",
+                   "p.flame")
+          .flame;
+  EXPECT_EQ(layered.genome.postSymmetry.kind, PostSymmetryKind::XAxis);
+  ASSERT_EQ(layered.otherLayers.size(), 1u);
+  EXPECT_EQ(layered.otherLayers[0].genome.postSymmetry.kind, PostSymmetryKind::XAxis);
+}
 
 // JWildfire's `<variation>_fx_priority` moves a variation to the pre_ (negative) or post_ (positive) stage.
 TEST(FlameXml, JwildfiresPriorityMovesAVariationToItsStage) {

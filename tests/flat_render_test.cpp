@@ -458,3 +458,74 @@ TEST(FlatView, AFilesCameraTiltsThePicture) {
   EXPECT_NEAR(zoomedWidth / width, 0.5, 0.05);
   EXPECT_NEAR(zoomedHeight / height, 0.5, 0.05);
 }
+
+// JWildfire's post symmetry in the flat view: Sierpinski's triangle off the centre, with a 3-fold
+// point symmetry about the centre, looks the same turned by 120° (within the noise, after a small
+// blur); with an x_axis symmetry it looks the same mirrored left to right. Without either it does not.
+TEST(FlatView, PostSymmetryCopiesThePictureAsJwildfireDoes) {
+  const auto render = [](const std::string& symmetry) {
+    const std::string xml =
+        "<flame version=\"JWildfire V8.00\" size=\"200 200\" center=\"0 0\" scale=\"50\" estimator_radius=\"0\" " +
+        symmetry +
+        ">\n<xform weight=\"1\" color=\"0\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.1 -0.3\"/>\n"
+        "<xform weight=\"1\" color=\"0.5\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.7 -0.3\"/>\n"
+        "<xform weight=\"1\" color=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.4 0.3\"/>\n</flame>\n";
+    const core::ImportedFlame flame = core::readFlameXml(xml, "sierpinski.flame").flame;
+    EXPECT_TRUE(flame.leftOut.empty());
+    core::FlatRenderOptions options;
+    options.quality = 40.0;
+    const core::ImageRGBA image = core::renderFlat(core::sceneFromImportedFlame(flame, core::Scene{}), options).image;
+    // Luminance, blurred over 5 × 5 pixels.
+    std::vector<double> lit(static_cast<std::size_t>(image.width * image.height)), blurred(lit.size());
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const float* p = image.at(x, y);
+        lit[static_cast<std::size_t>(y * image.width + x)] = p[0] + p[1] + p[2];
+      }
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        double sum = 0.0;
+        for (int v = std::max(0, y - 2); v <= std::min(image.height - 1, y + 2); ++v)
+          for (int u = std::max(0, x - 2); u <= std::min(image.width - 1, x + 2); ++u)
+            sum += lit[static_cast<std::size_t>(v * image.width + u)];
+        blurred[static_cast<std::size_t>(y * image.width + x)] = sum / 25.0;
+      }
+    return blurred;
+  };
+  constexpr int kSide = 200;
+  // The mean difference between the picture and itself moved by `move` (a pixel centre's offset
+  // from the image centre to the offset it is compared with), over the mean brightness.
+  const auto difference = [&](const std::vector<double>& image, const auto& move) {
+    double diff = 0.0, sum = 0.0;
+    for (int y = 0; y < kSide; ++y)
+      for (int x = 0; x < kSide; ++x) {
+        const glm::dvec2 to = move(glm::dvec2(x + 0.5 - kSide / 2.0, y + 0.5 - kSide / 2.0));
+        const int u = static_cast<int>(std::floor(to.x + kSide / 2.0)),
+                  v = static_cast<int>(std::floor(to.y + kSide / 2.0));
+        const double a = image[static_cast<std::size_t>(y * kSide + x)];
+        const double b =
+            u >= 0 && v >= 0 && u < kSide && v < kSide ? image[static_cast<std::size_t>(v * kSide + u)] : 0.0;
+        diff += std::abs(a - b);
+        sum += a;
+      }
+    return diff / sum;
+  };
+  const double third = 2.0 * std::numbers::pi / 3.0;
+  const auto turned = [&](glm::dvec2 d) {
+    return glm::dvec2(d.x * std::cos(third) - d.y * std::sin(third), d.x * std::sin(third) + d.y * std::cos(third));
+  };
+  const auto mirrored = [](glm::dvec2 d) { return glm::dvec2(-d.x, d.y); };
+  const std::vector<double> plain = render("");
+  const std::vector<double> point = render("post_symmetry_type=\"POINT\" post_symmetry_order=\"3\"");
+  const std::vector<double> axis =
+      render("post_symmetry_type=\"X_AXIS\" post_symmetry_distance=\"0.4\" post_symmetry_rotation=\"20\"");
+  const double plainTurned = difference(plain, turned), plainMirrored = difference(plain, mirrored);
+  const double pointTurned = difference(point, turned), axisMirrored = difference(axis, mirrored);
+  std::printf("post symmetry: turned by 120° %.3f (plain %.3f), mirrored %.3f (plain %.3f)\n", pointTurned, plainTurned,
+              axisMirrored, plainMirrored);
+  EXPECT_GT(plainTurned, 1.0);
+  EXPECT_GT(plainMirrored, 1.0);
+  EXPECT_LT(pointTurned, 0.25);
+  EXPECT_LT(axisMirrored, 0.25);
+  EXPECT_GT(difference(point, mirrored), 0.5);  // a turn is not a mirror
+}

@@ -441,6 +441,44 @@ const YF kSymmetryFields[] = {
      .affects = kPattern},
 };
 
+using PF = Field<FlamePostSymmetry>;
+const PF kPostSymmetryFields[] = {
+    {.key = "kind",
+     .member = choice<&FlamePostSymmetry::kind>(kPostSymmetryKindNames, "post symmetry"),
+     .help = "JWildfire's post symmetry: every drawn point drawn again, turned about the centre (point) or "
+             "mirrored across the vertical (x_axis) or horizontal (y_axis) line through it",
+     .affects = kPattern},
+    {.key = "order",
+     .member = &FlamePostSymmetry::order,
+     .min = 1,
+     .max = kMaxPostSymmetryOrder,
+     .help = "point: the turns by 360°/order (the point itself is drawn twice, as JWildfire does)",
+     .affects = kPattern},
+    {.key = "center_x",
+     .member = &FlamePostSymmetry::centerX,
+     .min = -kFlameCoefficientLimit,
+     .max = kFlameCoefficientLimit,
+     .help = "the centre, in flame units",
+     .affects = kPattern},
+    {.key = "center_y",
+     .member = &FlamePostSymmetry::centerY,
+     .min = -kFlameCoefficientLimit,
+     .max = kFlameCoefficientLimit,
+     .affects = kPattern},
+    {.key = "distance",
+     .member = &FlamePostSymmetry::distance,
+     .min = -kFlameCoefficientLimit,
+     .max = kFlameCoefficientLimit,
+     .help = "x_axis, y_axis: the point and its mirror image move apart by this",
+     .affects = kPattern},
+    {.key = "rotation",
+     .member = &FlamePostSymmetry::rotationDeg,
+     .min = -kFlameCoefficientLimit,
+     .max = kFlameCoefficientLimit,
+     .help = "x_axis, y_axis: degrees the point turns by about the centre one way, its mirror image the other",
+     .affects = kPattern},
+};
+
 using QF = Field<QuaternionJuliaSettings>;
 const QF kJuliaFields[] = {
     {.key = "c",
@@ -915,6 +953,9 @@ Table<VariationTerm> variationFields() {
 }
 Table<FlameSymmetry> symmetryFields() {
   return kSymmetryFields;
+}
+Table<FlamePostSymmetry> postSymmetryFields() {
+  return kPostSymmetryFields;
 }
 Table<QuaternionJuliaSettings> juliaFields() {
   return kJuliaFields;

@@ -196,7 +196,12 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   if (!finitePositive(flat.scale) || !std::isfinite(flat.zoom) || !std::isfinite(flat.centerX) ||
       !std::isfinite(flat.centerY) || !std::isfinite(flat.rotateDeg) || !(flat.filterRadius >= 0.0))
     throw Error("the flame's framing (flat) holds a value that is not a finite number");
-  const PatternLayer layer = planarLayer(flameLayer(scene));
+  PatternLayer layer = planarLayer(flameLayer(scene));
+  // JWildfire's post symmetry draws every point through each of its maps, as JWildfire does (the
+  // chaos game alone would draw each through one of them).
+  std::vector<Affine3> postSymmetry = postSymmetryMaps(layer.flame.postSymmetry);
+  if (postSymmetry.empty()) postSymmetry.emplace_back();
+  layer.flame.postSymmetry.kind = PostSymmetryKind::None;
   const ChaosGame game(layer, "the flame layer");
   const std::array<glm::vec3, 256> palette = filePalette(layer.color);
 
@@ -288,27 +293,30 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
             fuse[i] = kFuse;
           }
           if (!visible) continue;
-          double px = outX[i], py = outY[i];
-          if (hasCamera) {
-            const double angle = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
-            const double blur = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
-            const glm::dvec2 p = camera.project(px, py, outZ[i], angle, blur);
-            px = p.x;
-            py = p.y;
-          }
-          if (turned) {
-            const double dx = px - flat.centerX, dy = py - flat.centerY;
-            px = dx * cosTurn - dy * sinTurn + flat.centerX;
-            py = dx * sinTurn + dy * cosTurn + flat.centerY;
-          }
-          const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
-          if (!(bx >= drawnLeft && by >= drawnTop && bx < drawnRight && by < drawnBottom)) continue;
           const glm::vec3 c = flatPaletteColour(palette, outColor[i], flat.paletteMode);
-          float* v = histogram.at(static_cast<int>(bx), static_cast<int>(by));
-          v[0] += c.r;
-          v[1] += c.g;
-          v[2] += c.b;
-          v[3] += 1.0f;
+          for (const Affine3& image : postSymmetry) {
+            const glm::dvec3 q = image.apply({outX[i], outY[i], outZ[i]});
+            double px = q.x, py = q.y;
+            if (hasCamera) {
+              const double angle = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
+              const double blur = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
+              const glm::dvec2 p = camera.project(px, py, q.z, angle, blur);
+              px = p.x;
+              py = p.y;
+            }
+            if (turned) {
+              const double dx = px - flat.centerX, dy = py - flat.centerY;
+              px = dx * cosTurn - dy * sinTurn + flat.centerX;
+              py = dx * sinTurn + dy * cosTurn + flat.centerY;
+            }
+            const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
+            if (!(bx >= drawnLeft && by >= drawnTop && bx < drawnRight && by < drawnBottom)) continue;
+            float* v = histogram.at(static_cast<int>(bx), static_cast<int>(by));
+            v[0] += c.r;
+            v[1] += c.g;
+            v[2] += c.b;
+            v[3] += 1.0f;
+          }
         }
       }
     }

@@ -1579,16 +1579,10 @@ bool writtenByJwildfire(const pugi::xml_node& flame) {
 }
 
 // JWildfire's flame-level features that neither the flat view nor the mesh keeps, named as lost
-// when a file turns them on: its post symmetry (copies of every drawn point turned about a centre
-// or mirrored), solid rendering (lights, materials, ambient occlusion), the parts of its 3D camera
-// the flat view does not draw and motion curves on flame values (the camera's, the brightness').
+// when a file turns them on: solid rendering (lights, materials, ambient occlusion), the parts of
+// its 3D camera the flat view does not draw and motion curves on flame values (the camera's, the
+// brightness').
 void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader) {
-  const std::string symmetry = flame.attribute("post_symmetry_type").as_string("NONE");
-  if (!symmetry.empty() && symmetry != "NONE") {
-    reader.lose("JWildfire post symmetry");
-    reader.warn("the flame has JWildfire's post symmetry (" + symmetry.substr(0, 40) +
-                "), which voxflame does not apply; its points are drawn once");
-  }
   const std::string solid = flame.attribute("sld_render_enabled").as_string("false");
   if (solid == "true" || solid == "1") {
     reader.lose("JWildfire solid rendering");
@@ -2132,6 +2126,43 @@ void finishMotion(ImportedFlame& flame, const std::vector<std::vector<MotionChan
   reader.warn(say.str());
 }
 
+// JWildfire's post symmetry (post_symmetry_*, flame.h's FlamePostSymmetry). As JWildfire reads it, an
+// unknown kind is none and an order beyond 64 is 64; a value that is not a usable number keeps
+// JWildfire's default, with a warning.
+FlamePostSymmetry readPostSymmetry(const pugi::xml_node& flame, FlameReader& reader) {
+  FlamePostSymmetry post;
+  const pugi::xml_attribute kind = flame.attribute("post_symmetry_type");
+  if (!kind) return post;
+  const std::string_view name = kind.value();
+  if (name == "POINT")
+    post.kind = PostSymmetryKind::Point;
+  else if (name == "X_AXIS")
+    post.kind = PostSymmetryKind::XAxis;
+  else if (name == "Y_AXIS")
+    post.kind = PostSymmetryKind::YAxis;
+  else if (name != "NONE")
+    reader.warn("post_symmetry_type \"" + std::string(name.substr(0, 40)) +
+                "\" is not one of JWildfire's (NONE, POINT, X_AXIS, Y_AXIS); as JWildfire does, the flame has none");
+  const auto value = [&](const char* key, double& target) {
+    const pugi::xml_attribute attribute = flame.attribute(key);
+    if (!attribute) return;
+    const auto number = parseNumber(attribute.value());
+    if (number && std::isfinite(*number) && std::abs(*number) <= kFlameCoefficientLimit)
+      target = *number;
+    else
+      reader.warn(std::string(key) + "=\"" + std::string(std::string_view(attribute.value()).substr(0, 40)) +
+                  "\" is not a number within ±1e6; JWildfire's default " + formatted(target) + " is used");
+  };
+  double order = post.order;
+  value("post_symmetry_order", order);
+  post.order = static_cast<int>(std::clamp(std::trunc(order), 1.0, static_cast<double>(kMaxPostSymmetryOrder)));
+  value("post_symmetry_centre_x", post.centerX);
+  value("post_symmetry_centre_y", post.centerY);
+  value("post_symmetry_distance", post.distance);
+  value("post_symmetry_rotation", post.rotationDeg);
+  return post;
+}
+
 ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, const std::string& name,
                         const FlameImportOptions& options, const std::map<std::string, std::string>& renamed) {
   FlameReader reader(where, options);
@@ -2148,8 +2179,11 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
         reader.number(element.attribute("kind"), "<symmetry>", -kFlameCoefficientLimit, kFlameCoefficientLimit),
         reader);
   }
+  // JWildfire's post symmetry belongs to the whole flame: every layer draws through it.
+  const FlamePostSymmetry postSymmetry = readPostSymmetry(node, reader);
   const auto finishGenome = [&](FlameGenome& genome, const std::string& context) {
     genome.symmetry = symmetry;
+    genome.postSymmetry = postSymmetry;
     const bool depthAdded = addFlameDepth(genome, options.depth);
     validateFlame(genome, context.empty() ? where : where + ", " + context);
     return depthAdded;
