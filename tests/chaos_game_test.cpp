@@ -281,6 +281,87 @@ TEST(ChaosGame, BadGenomesAreRefusedWithClearMessages) {
   EXPECT_NE(messageOf(tooMany).find("1 to 128"), std::string::npos);
 }
 
+// JWildfire's post symmetry, its maps worked out from its PointSymmetryProjector and
+// X/YAxisSymmetryProjector by hand: a point is drawn itself and turned by −k · 360°/order (k from 0,
+// so itself twice); an axis symmetry draws it moved by distance/2 and turned by −rotation, and its
+// mirror image moved the other way and turned by +rotation.
+TEST(ChaosGame, PostSymmetryMapsAreJwildfires) {
+  const auto at = [](const Affine3& map, double x, double y) { return map.apply({x, y, 0.5}); };
+  FlamePostSymmetry post;
+  EXPECT_TRUE(postSymmetryMaps(post).empty());
+  post.kind = PostSymmetryKind::Point;
+  post.order = 1;
+  EXPECT_TRUE(postSymmetryMaps(post).empty());
+  post.order = 3;
+  post.centerX = 1.0;
+  post.centerY = 2.0;
+  std::vector<Affine3> maps = postSymmetryMaps(post);
+  ASSERT_EQ(maps.size(), 4u);
+  EXPECT_TRUE(maps[0].isIdentity());
+  glm::dvec3 p = at(maps[1], 3.0, 2.0);  // 2 to the right of the centre
+  EXPECT_NEAR(p.x, 3.0, 1e-12);
+  EXPECT_NEAR(p.y, 2.0, 1e-12);
+  p = at(maps[2], 3.0, 2.0);  // turned by −120°
+  EXPECT_NEAR(p.x, 1.0 + 2.0 * std::cos(-2.0 * std::numbers::pi / 3.0), 1e-12);
+  EXPECT_NEAR(p.y, 2.0 + 2.0 * std::sin(-2.0 * std::numbers::pi / 3.0), 1e-12);
+  EXPECT_DOUBLE_EQ(p.z, 0.5);
+  p = at(maps[3], 3.0, 2.0);  // −240°
+  EXPECT_NEAR(p.x, 1.0 - 1.0, 1e-12);
+  EXPECT_NEAR(p.y, 2.0 + std::sqrt(3.0), 1e-12);
+  post = {};
+  post.kind = PostSymmetryKind::XAxis;
+  post.centerX = 1.0;
+  post.distance = 0.5;
+  post.rotationDeg = 90.0;
+  maps = postSymmetryMaps(post);
+  ASSERT_EQ(maps.size(), 2u);
+  // (2, 1) is (1, 1) from the centre: moved to (1.25, 1), turned by −90° → (1, −1.25); its mirror
+  // image (−1, 1), moved to (−1.25, 1), turned by +90° → (−1, −1.25).
+  p = at(maps[0], 2.0, 1.0);
+  EXPECT_NEAR(p.x, 2.0, 1e-12);
+  EXPECT_NEAR(p.y, -1.25, 1e-12);
+  p = at(maps[1], 2.0, 1.0);
+  EXPECT_NEAR(p.x, 0.0, 1e-12);
+  EXPECT_NEAR(p.y, -1.25, 1e-12);
+  post.kind = PostSymmetryKind::YAxis;
+  post.rotationDeg = 0.0;
+  maps = postSymmetryMaps(post);
+  ASSERT_EQ(maps.size(), 2u);
+  p = at(maps[0], 2.0, 1.0);  // (1, 1) from the centre, moved up by 0.25
+  EXPECT_NEAR(p.x, 2.0, 1e-12);
+  EXPECT_NEAR(p.y, 1.25, 1e-12);
+  p = at(maps[1], 2.0, 1.0);  // mirrored across y = 0, moved down by 0.25
+  EXPECT_NEAR(p.x, 2.0, 1e-12);
+  EXPECT_NEAR(p.y, -1.25, 1e-12);
+}
+
+// The chaos game draws each point through one of the post symmetry's maps: a flame that draws only
+// (1, 0) with a 3-fold point symmetry draws (1, 0) half the time (JWildfire draws it twice) and
+// each of its two turns a quarter of the time; the iteration itself is left alone.
+TEST(ChaosGame, PostSymmetryDrawsEachPointThroughOneOfItsImages) {
+  FlameGenome g;
+  g.xforms = {xform(1.0, affine({0, 0, 0, 1, 0, 0, 0, 0, 0, 0, 0, 0}))};
+  g.postSymmetry.kind = PostSymmetryKind::Point;
+  const ChaosGame game(flameLayer(g), "test");
+  LaneRun run(game);
+  std::array<double, 3> images{};
+  for (int s = 0; s < 200; ++s) {
+    run.step(game);
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      EXPECT_NEAR(std::hypot(run.x[i], run.y[i]), 1.0, 1e-12);
+      const double turns = std::atan2(-run.y[i], run.x[i]) / (2.0 * std::numbers::pi / 3.0);
+      const long k = std::lround(turns < -0.1 ? turns + 3.0 : turns);
+      ASSERT_LT(std::abs(turns - std::round(turns)), 1e-9);
+      images[static_cast<std::size_t>(k % 3)] += 1.0;
+    }
+    EXPECT_EQ(run.lanes.x[0], 1.0);  // the state is not turned
+  }
+  const double total = images[0] + images[1] + images[2];
+  EXPECT_NEAR(images[0] / total, 0.5, 0.01);
+  EXPECT_NEAR(images[1] / total, 0.25, 0.01);
+  EXPECT_NEAR(images[2] / total, 0.25, 0.01);
+}
+
 TEST(FlamePreset, FlameAndQuaternionLayersRoundTripThroughJson) {
   Scene scene;
   scene.meshPath = "mesh.obj";
@@ -292,6 +373,7 @@ TEST(FlamePreset, FlameAndQuaternionLayersRoundTripThroughJson) {
   flame.flame.hasFinal = true;
   flame.flame.finalXform = xform(1.0, affine({1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 2, 0}), 0.3, 0.1);
   flame.flame.symmetry = {3, {0.0, 1.0, 0.0}, true};
+  flame.flame.postSymmetry = {PostSymmetryKind::YAxis, 5, 0.25, -0.5, 2.0, -30.0};
   flame.color.gradient = {{0.0f, {0.0f, 0.0f, 0.0f}}, {1.0f, {1.0f, 1.0f, 1.0f}}};
   PatternLayer julia;
   julia.kind = PatternKind::QuaternionJulia;
@@ -336,6 +418,12 @@ TEST(FlamePreset, BadFlameLayersNameTheKeyAndTheReason) {
             std::string::npos);
   EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{}], "symmetry": {"rotational": 99}}})"))
                 .find("rotational"),
+            std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{}], "post_symmetry": {"order": 65}}})"))
+                .find("'layers[0].flame.post_symmetry.order'"),
+            std::string::npos);
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{}], "post_symmetry": {"kind": "line"}}})"))
+                .find("x_axis"),
             std::string::npos);
   EXPECT_NE(presetErrorOf(preset(R"({"kind": "quaternion_julia", "julia": {"c": [1, 2, 3]}})")).find("four numbers"),
             std::string::npos);

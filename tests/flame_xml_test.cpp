@@ -925,16 +925,44 @@ namespace {
 
 // What a flame turns on at its own level that voxflame does not keep is named, never passed over.
 TEST(FlameXml, FlameLevelFeaturesVoxflameDoesNotKeepAreNamed) {
-  // JWildfire's 3D camera is another than Apophysis 3D's and Fractorium's, which the flat view keeps.
+  // JWildfire's 3D camera is kept (its own model) but for its depth of field about a focus point,
+  // blur shapes other than the bubble and depth dimming.
   const std::string attributes =
       "version=\"JWildfire V7.50\" post_symmetry_type=\"POINT\" post_symmetry_order=\"3\" cam_pitch=\"0.5\" "
-      "cam_yaw=\"0\" sld_render_enabled=\"true\" camPitchCurve_enabled=\"true\"";
+      "cam_yaw=\"0\" cam_dof=\"0.2\" new_dof=\"1\" cam_dof_shape=\"HEART\" cam_zdimish=\"0.5\" "
+      "sld_render_enabled=\"true\" camPitchCurve_enabled=\"true\"";
   const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, "", attributes), "p.flame").flame;
-  for (const char* lost :
-       {"JWildfire post symmetry", "JWildfire solid rendering", "3D camera", "JWildfire flame motion curve"})
+  for (const char* lost : {"JWildfire solid rendering", "3D camera", "JWildfire flame motion curve"})
     EXPECT_NE(std::find(flame.leftOut.begin(), flame.leftOut.end(), lost), flame.leftOut.end()) << lost;
-  EXPECT_TRUE(hasWarningContaining(flame, "cam_pitch"));
-  EXPECT_FALSE(flame.flat.hasCamera());
+  EXPECT_EQ(flame.genome.postSymmetry.kind, PostSymmetryKind::Point);
+  for (const char* part : {"new_dof", "HEART", "cam_zdimish"}) EXPECT_TRUE(hasWarningContaining(flame, part)) << part;
+  EXPECT_TRUE(flame.flat.hasCamera());
+  EXPECT_EQ(flame.flat.cameraModel, FlatCameraModel::Jwildfire);
+  EXPECT_NEAR(flame.flat.cameraPitchDeg, 0.5 * 180.0 / std::numbers::pi, 1e-9);
+  // Its turn, perspective, position, zoom and plain (bubble) depth of field are kept whole.
+  const ImportedFlame jwildfire =
+      readFlameXml(flameFile(kTwoXforms, "",
+                             "version=\"JWildfire V8.00\" scale=\"40\" cam_zoom=\"2.5\" cam_pitch=\"0.5\" "
+                             "cam_yaw=\"-7\" cam_roll=\"0.25\" cam_persp=\"0.3\" cam_pos_x=\"0.1\" "
+                             "cam_pos_y=\"0.2\" cam_pos_z=\"0.3\" cam_zpos=\"0.4\" cam_dof=\"-0.2\" "
+                             "cam_dof_shape=\"BUBBLE\" cam_dof_scale=\"1.5\" cam_dof_fade=\"0.5\" new_dof=\"0\""),
+                   "p.flame")
+          .flame;
+  EXPECT_TRUE(jwildfire.leftOut.empty());
+  EXPECT_DOUBLE_EQ(jwildfire.flat.scale, 100.0);
+  EXPECT_NEAR(jwildfire.flat.cameraYawDeg, (2.0 * std::numbers::pi - 7.0) * 180.0 / std::numbers::pi, 1e-9);
+  EXPECT_NEAR(jwildfire.flat.cameraBankDeg, 0.25 * 180.0 / std::numbers::pi, 1e-9);
+  EXPECT_DOUBLE_EQ(jwildfire.flat.cameraPerspective, 0.3);
+  EXPECT_EQ(jwildfire.flat.cameraPosition, glm::dvec3(0.1, 0.2, 0.3));
+  EXPECT_DOUBLE_EQ(jwildfire.flat.cameraZ, 0.4);
+  EXPECT_DOUBLE_EQ(jwildfire.flat.cameraDof, 0.2);
+  EXPECT_DOUBLE_EQ(jwildfire.flat.cameraDofScale, 1.5);
+  EXPECT_DOUBLE_EQ(jwildfire.flat.cameraDofFade, 0.5);
+  // Without a turn, perspective, position or depth of field JWildfire draws the flame flat.
+  EXPECT_EQ(readFlameXml(flameFile(kTwoXforms, "", "version=\"JWildfire V8.00\" cam_zpos=\"1\" cam_dof_scale=\"2\""),
+                         "p.flame")
+                .flame.flat,
+            FlatViewSettings{});
   const ImportedFlame fractorium =
       readFlameXml(flameFile(kTwoXforms, "", "version=\"EMBER-WIN-1.0.0.19\" cam_pitch=\"0.5\" cam_persp=\"0.25\""),
                    "p.flame")
@@ -954,6 +982,39 @@ TEST(FlameXml, FlameLevelFeaturesVoxflameDoesNotKeepAreNamed) {
 }  // namespace
 
 namespace {
+
+// JWildfire's post symmetry is kept whole, for every layer of a layered flame; an unknown kind is none
+// (as JWildfire reads it) and an order beyond 64 is 64.
+TEST(FlameXml, JwildfiresPostSymmetryIsKept) {
+  const ImportedFlame axis =
+      readFlameXml(flameFile(kTwoXforms, "",
+                             "version=\"JWildfire V8.00\" post_symmetry_type=\"Y_AXIS\" post_symmetry_order=\"5\" "
+                             "post_symmetry_centre_x=\"0.25\" post_symmetry_centre_y=\"-0.5\" "
+                             "post_symmetry_distance=\"2\" post_symmetry_rotation=\"-30\""),
+                   "p.flame")
+          .flame;
+  EXPECT_TRUE(axis.leftOut.empty());
+  EXPECT_EQ(axis.genome.postSymmetry, (FlamePostSymmetry{PostSymmetryKind::YAxis, 5, 0.25, -0.5, 2.0, -30.0}));
+  const ImportedFlame big =
+      readFlameXml(flameFile(kTwoXforms, "", "post_symmetry_type=\"POINT\" post_symmetry_order=\"100\""), "p.flame")
+          .flame;
+  EXPECT_EQ(big.genome.postSymmetry.kind, PostSymmetryKind::Point);
+  EXPECT_EQ(big.genome.postSymmetry.order, kMaxPostSymmetryOrder);
+  EXPECT_DOUBLE_EQ(big.genome.postSymmetry.distance, 1.25);  // JWildfire's defaults
+  EXPECT_DOUBLE_EQ(big.genome.postSymmetry.rotationDeg, 6.0);
+  const ImportedFlame odd = readFlameXml(flameFile(kTwoXforms, "", "post_symmetry_type=\"SPIRAL\""), "p.flame").flame;
+  EXPECT_EQ(odd.genome.postSymmetry.kind, PostSymmetryKind::None);
+  EXPECT_TRUE(hasWarningContaining(odd, "SPIRAL"));
+  const std::string layer = "<layer>" + kTwoXforms + "<palette count=\"1\" format=\"RGB\">FF0000</palette></layer>";
+  const ImportedFlame layered =
+      readFlameXml("<jwf-flames><jwf-flame version=\"JWildfire V8.00\" post_symmetry_type=\"X_AXIS\">" + layer + layer +
+                       "</jwf-flame></jwf-flames>",
+                   "p.flame")
+          .flame;
+  EXPECT_EQ(layered.genome.postSymmetry.kind, PostSymmetryKind::XAxis);
+  ASSERT_EQ(layered.otherLayers.size(), 1u);
+  EXPECT_EQ(layered.otherLayers[0].genome.postSymmetry.kind, PostSymmetryKind::XAxis);
+}
 
 // JWildfire's `<variation>_fx_priority` moves a variation to the pre_ (negative) or post_ (positive) stage.
 TEST(FlameXml, JwildfiresPriorityMovesAVariationToItsStage) {

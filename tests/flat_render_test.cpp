@@ -136,6 +136,17 @@ TEST(FlatView, FramingRoundTripsThroughPresetsAndDefaultsToFlam3s) {
   EXPECT_NE(core::sceneToJson(scene).find("\"palette_mode\": \"linear\""), std::string::npos);
   const core::Scene loaded = core::sceneFromJson(core::sceneToJson(scene), "round trip");
   EXPECT_EQ(loaded.flat, scene.flat);
+  // JWildfire's camera keys.
+  scene.flat.cameraModel = core::FlatCameraModel::Jwildfire;
+  scene.flat.cameraPitchDeg = 30.0;
+  scene.flat.cameraBankDeg = -20.0;
+  scene.flat.cameraPosition = {0.5, -0.25, 1.0};
+  scene.flat.cameraDof = 0.3;
+  scene.flat.cameraDofScale = 2.0;
+  scene.flat.cameraDofFade = 0.25;
+  const std::string json = core::sceneToJson(scene);
+  EXPECT_NE(json.find("\"camera_model\": \"jwildfire\""), std::string::npos);
+  EXPECT_EQ(core::sceneFromJson(json, "round trip").flat, scene.flat);
   const core::FlatViewSettings flam3;
   EXPECT_EQ(flam3.width, 100);
   EXPECT_EQ(flam3.scale, 50.0);
@@ -300,6 +311,97 @@ TEST(FlatView, TheCameraProjectsAsFractoriumDoes) {
   EXPECT_NEAR(p.y, (0.8 * std::sqrt(3.0) / 2.0 + 0.2 * 0.5 + 0.5 * 0.2 * depth) / zr, 1e-12);
 }
 
+// JWildfire's camera, at points worked out from its FlameRendererView (camera matrix and project)
+// by hand and with a separate script: the turn is R_z(rotate) R_x(pitch) R_y(bank) R_z(−yaw), the
+// camera position is added after it, and zr = 1 − perspective · depth + position_z.
+TEST(FlatView, TheCameraProjectsAsJwildfireDoes) {
+  core::FlatViewSettings flat;
+  flat.cameraModel = core::FlatCameraModel::Jwildfire;
+  EXPECT_FALSE(flat.hasCamera());
+  flat.cameraZ = 0.5;  // JWildfire's depth in focus: alone it is no 3D camera
+  EXPECT_FALSE(flat.hasCamera());
+  flat.cameraZ = 0.0;
+  const auto project = [&](double x, double y, double z) { return core::FlatCamera(flat).project(x, y, z, 0.0, 0.0); };
+  flat.cameraPitchDeg = 60.0;
+  EXPECT_TRUE(flat.hasCamera());
+  glm::dvec2 p = project(0.0, 1.0, 0.0);
+  EXPECT_NEAR(p.x, 0.0, 1e-12);
+  EXPECT_NEAR(p.y, 0.5, 1e-12);  // cos 60°
+  flat.cameraPitchDeg = 30.0;
+  p = project(0.0, 1.0, 0.5);
+  EXPECT_NEAR(p.y, 0.6160254037844387, 1e-12);  // cos 30° − 0.5 sin 30°
+  flat.cameraPitchDeg = 0.0;
+  flat.cameraYawDeg = 90.0;
+  p = project(1.0, 0.0, 0.0);
+  EXPECT_NEAR(p.x, 0.0, 1e-12);
+  EXPECT_NEAR(p.y, -1.0, 1e-12);
+  flat.cameraYawDeg = 0.0;
+  // Bank turns about the vertical axis: x takes cos bank of itself and sin bank of the depth.
+  flat.cameraBankDeg = 90.0;
+  p = project(1.0, 0.0, 0.0);
+  EXPECT_NEAR(p.x, 0.0, 1e-12);
+  EXPECT_NEAR(p.y, 0.0, 1e-12);
+  flat.cameraBankDeg = 40.0;
+  p = project(1.0, 0.5, 0.25);
+  EXPECT_NEAR(p.x, 0.9267413455406128, 1e-12);  // cos 40° + 0.25 sin 40°
+  EXPECT_NEAR(p.y, 0.5, 1e-12);
+  flat.cameraBankDeg = 0.0;
+  // With the camera, `rotate` turns about the origin.
+  flat.cameraPerspective = 1e-3;
+  flat.rotateDeg = 90.0;
+  flat.centerX = 5.0;
+  p = core::FlatCamera(flat).project(0.0, 1.0, 0.0, 0.0, 0.0);
+  EXPECT_NEAR(p.x, -1.0, 1e-12);
+  EXPECT_NEAR(p.y, 0.0, 1e-12);
+  flat.rotateDeg = 0.0;
+  flat.centerX = 0.0;
+  flat.cameraPerspective = 0.5;
+  p = project(0.0, 1.0, 1.0);
+  EXPECT_NEAR(p.y, 2.0, 1e-12);  // zr = 1 − 0.5 · 1
+  // All at once, and with the camera moved.
+  flat.cameraPitchDeg = 25.0;
+  flat.cameraYawDeg = -40.0;
+  flat.cameraBankDeg = 15.0;
+  flat.rotateDeg = 10.0;
+  flat.cameraPerspective = 0.3;
+  p = project(0.3, -0.7, 0.4);
+  EXPECT_NEAR(p.x, 0.8294126268011645, 1e-12);
+  EXPECT_NEAR(p.y, -0.26571481040893774, 1e-12);
+  flat.cameraPosition = {0.2, -0.1, 0.3};
+  p = project(0.3, -0.7, 0.4);
+  EXPECT_NEAR(p.x, 0.8509982435727739, 1e-12);
+  EXPECT_NEAR(p.y, -0.30266129268303965, 1e-12);
+  // A point behind the eye (zr ≤ 0) is not drawn.
+  flat = {};
+  flat.cameraModel = core::FlatCameraModel::Jwildfire;
+  flat.cameraPerspective = 2.0;
+  EXPECT_TRUE(std::isnan(project(0.0, 0.0, 0.6).x));
+  EXPECT_FALSE(std::isnan(project(0.0, 0.0, 0.4).x));
+
+  // Depth of field (its bubble blur): a point in front of the depth in focus moves by
+  // f · 0.1 dof · scale · (focus − depth) towards the drawn angle.
+  flat = {};
+  flat.cameraModel = core::FlatCameraModel::Jwildfire;
+  flat.cameraPitchDeg = 30.0;  // (0.3, 0.8, 0) is at depth 0.4
+  flat.cameraDof = 2.0;
+  flat.cameraDofScale = 1.5;
+  flat.cameraZ = 1.0;
+  const double y = 0.8 * std::sqrt(3.0) / 2.0;
+  p = core::FlatCamera(flat).project(0.3, 0.8, 0.0, 0.25, 0.5);  // f = 0.5: 0.09 up
+  EXPECT_NEAR(p.x, 0.3, 1e-12);
+  EXPECT_NEAR(p.y, 0.782820323027551, 1e-12);
+  flat.cameraDofFade = 0.5;
+  p = core::FlatCamera(flat).project(0.3, 0.8, 0.0, 0.0, 0.25);  // f = 0.25 / 0.5: 0.09 right
+  EXPECT_NEAR(p.x, 0.39, 1e-12);
+  EXPECT_NEAR(p.y, y, 1e-12);
+  p = core::FlatCamera(flat).project(0.3, 0.8, 0.0, 0.0, 0.75);  // past the fade: f = 1
+  EXPECT_NEAR(p.x, 0.48, 1e-12);
+  flat.cameraZ = 0.2;  // behind the depth in focus: sharp
+  p = core::FlatCamera(flat).project(0.3, 0.8, 0.0, 0.25, 0.5);
+  EXPECT_NEAR(p.x, 0.3, 1e-12);
+  EXPECT_NEAR(p.y, y, 1e-12);
+}
+
 // A file's camera reaches the flat view and tilts the picture: Sierpinski's triangle (framed about
 // its middle, flat, on black), pitched by 60° (cam_pitch in radians, as Apophysis 3D and Fractorium
 // write it), is drawn half as tall and as wide; turned by yaw 90°, its height and width swap.
@@ -340,4 +442,90 @@ TEST(FlatView, AFilesCameraTiltsThePicture) {
   const auto [turnedWidth, turnedHeight] = extent(sierpinski("cam_yaw=\"1.5707963267948966\""));
   EXPECT_NEAR(turnedWidth / height, 1.0, 0.05);
   EXPECT_NEAR(turnedHeight / width, 1.0, 0.05);
+
+  // JWildfire's camera: pitched by 60°, the triangle is half as tall; banked by 60°, half as wide;
+  // cam_zoom 0.5 draws it half as large.
+  const std::string jwildfire = "version=\"JWildfire V8.00\" ";
+  const core::Scene jwfPitched = sierpinski(jwildfire + "cam_pitch=\"1.0471975511965976\"");
+  EXPECT_EQ(jwfPitched.flat.cameraModel, core::FlatCameraModel::Jwildfire);
+  const auto [jwfPitchedWidth, jwfPitchedHeight] = extent(jwfPitched);
+  EXPECT_NEAR(jwfPitchedWidth / width, 1.0, 0.05);
+  EXPECT_NEAR(jwfPitchedHeight / height, 0.5, 0.05);
+  const auto [bankedWidth, bankedHeight] = extent(sierpinski(jwildfire + "cam_roll=\"1.0471975511965976\""));
+  EXPECT_NEAR(bankedWidth / width, 0.5, 0.05);
+  EXPECT_NEAR(bankedHeight / height, 1.0, 0.05);
+  const auto [zoomedWidth, zoomedHeight] = extent(sierpinski(jwildfire + "cam_zoom=\"0.5\""));
+  EXPECT_NEAR(zoomedWidth / width, 0.5, 0.05);
+  EXPECT_NEAR(zoomedHeight / height, 0.5, 0.05);
+}
+
+// JWildfire's post symmetry in the flat view: Sierpinski's triangle off the centre, with a 3-fold
+// point symmetry about the centre, looks the same turned by 120° (within the noise, after a small
+// blur); with an x_axis symmetry it looks the same mirrored left to right. Without either it does not.
+TEST(FlatView, PostSymmetryCopiesThePictureAsJwildfireDoes) {
+  const auto render = [](const std::string& symmetry) {
+    const std::string xml =
+        "<flame version=\"JWildfire V8.00\" size=\"200 200\" center=\"0 0\" scale=\"50\" estimator_radius=\"0\" " +
+        symmetry +
+        ">\n<xform weight=\"1\" color=\"0\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.1 -0.3\"/>\n"
+        "<xform weight=\"1\" color=\"0.5\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.7 -0.3\"/>\n"
+        "<xform weight=\"1\" color=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.4 0.3\"/>\n</flame>\n";
+    const core::ImportedFlame flame = core::readFlameXml(xml, "sierpinski.flame").flame;
+    EXPECT_TRUE(flame.leftOut.empty());
+    core::FlatRenderOptions options;
+    options.quality = 40.0;
+    const core::ImageRGBA image = core::renderFlat(core::sceneFromImportedFlame(flame, core::Scene{}), options).image;
+    // Luminance, blurred over 5 × 5 pixels.
+    std::vector<double> lit(static_cast<std::size_t>(image.width * image.height)), blurred(lit.size());
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const float* p = image.at(x, y);
+        lit[static_cast<std::size_t>(y * image.width + x)] = p[0] + p[1] + p[2];
+      }
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        double sum = 0.0;
+        for (int v = std::max(0, y - 2); v <= std::min(image.height - 1, y + 2); ++v)
+          for (int u = std::max(0, x - 2); u <= std::min(image.width - 1, x + 2); ++u)
+            sum += lit[static_cast<std::size_t>(v * image.width + u)];
+        blurred[static_cast<std::size_t>(y * image.width + x)] = sum / 25.0;
+      }
+    return blurred;
+  };
+  constexpr int kSide = 200;
+  // The mean difference between the picture and itself moved by `move` (a pixel centre's offset
+  // from the image centre to the offset it is compared with), over the mean brightness.
+  const auto difference = [&](const std::vector<double>& image, const auto& move) {
+    double diff = 0.0, sum = 0.0;
+    for (int y = 0; y < kSide; ++y)
+      for (int x = 0; x < kSide; ++x) {
+        const glm::dvec2 to = move(glm::dvec2(x + 0.5 - kSide / 2.0, y + 0.5 - kSide / 2.0));
+        const int u = static_cast<int>(std::floor(to.x + kSide / 2.0)),
+                  v = static_cast<int>(std::floor(to.y + kSide / 2.0));
+        const double a = image[static_cast<std::size_t>(y * kSide + x)];
+        const double b =
+            u >= 0 && v >= 0 && u < kSide && v < kSide ? image[static_cast<std::size_t>(v * kSide + u)] : 0.0;
+        diff += std::abs(a - b);
+        sum += a;
+      }
+    return diff / sum;
+  };
+  const double third = 2.0 * std::numbers::pi / 3.0;
+  const auto turned = [&](glm::dvec2 d) {
+    return glm::dvec2(d.x * std::cos(third) - d.y * std::sin(third), d.x * std::sin(third) + d.y * std::cos(third));
+  };
+  const auto mirrored = [](glm::dvec2 d) { return glm::dvec2(-d.x, d.y); };
+  const std::vector<double> plain = render("");
+  const std::vector<double> point = render("post_symmetry_type=\"POINT\" post_symmetry_order=\"3\"");
+  const std::vector<double> axis =
+      render("post_symmetry_type=\"X_AXIS\" post_symmetry_distance=\"0.4\" post_symmetry_rotation=\"20\"");
+  const double plainTurned = difference(plain, turned), plainMirrored = difference(plain, mirrored);
+  const double pointTurned = difference(point, turned), axisMirrored = difference(axis, mirrored);
+  std::printf("post symmetry: turned by 120° %.3f (plain %.3f), mirrored %.3f (plain %.3f)\n", pointTurned, plainTurned,
+              axisMirrored, plainMirrored);
+  EXPECT_GT(plainTurned, 1.0);
+  EXPECT_GT(plainMirrored, 1.0);
+  EXPECT_LT(pointTurned, 0.25);
+  EXPECT_LT(axisMirrored, 0.25);
+  EXPECT_GT(difference(point, mirrored), 0.5);  // a turn is not a mirror
 }

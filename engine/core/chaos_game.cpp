@@ -242,6 +242,7 @@ ChaosGame::ChaosGame(const PatternLayer& layer, const std::string& where) {
   }
   if (layer.flame.symmetry.rotational > 1 || layer.flame.symmetry.mirror)
     for (const Affine3& g : symmetryGroup(layer.flame.symmetry)) group_.push_back(g.m);
+  for (const Affine3& g : postSymmetryMaps(layer.flame.postSymmetry)) postSymmetry_.push_back(g.m);
   hasFinal_ = layer.flame.hasFinal;
   if (hasFinal_) {
     final_ = compile(layer.flame.finalXform);
@@ -507,7 +508,8 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
   // 4. What is drawn: the state, or the final transform of it (which never feeds back).
   if (!hasFinal_) {
     emitPoints(x, y, z, color, outX, outY, outZ, outColor, count);
-    if (!group_.empty()) symmetrise(lanes, outX, outY, outZ, count);
+    if (!group_.empty()) throughOneOf(group_, lanes, outX, outY, outZ, count);
+    if (!postSymmetry_.empty()) throughOneOf(postSymmetry_, lanes, outX, outY, outZ, count);
     return;
   }
   for (std::size_t i = 0; i < count; ++i) order[i] = static_cast<std::uint32_t>(i);
@@ -549,19 +551,21 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
       random[i] = r;
     }
   }
-  if (!group_.empty()) symmetrise(lanes, outX, outY, outZ, count);
+  if (!group_.empty()) throughOneOf(group_, lanes, outX, outY, outZ, count);
+  if (!postSymmetry_.empty()) throughOneOf(postSymmetry_, lanes, outX, outY, outZ, count);
 }
 
-void ChaosGame::symmetrise(ChaosLanes& lanes, double* outX, double* outY, double* outZ, std::size_t count) const {
-  const auto elements = static_cast<std::uint64_t>(group_.size());
+void ChaosGame::throughOneOf(const std::vector<std::array<double, 12>>& maps, ChaosLanes& lanes, double* outX,
+                             double* outY, double* outZ, std::size_t count) {
+  const auto elements = static_cast<std::uint64_t>(maps.size());
   for (std::size_t i = 0; i < count; ++i) {
     const std::uint32_t r = laneNext(lanes.random[i]);
     lanes.random[i] = r;
-    const auto& m = group_[static_cast<std::size_t>((std::uint64_t{r} * elements) >> 32)];
+    const auto& m = maps[static_cast<std::size_t>((std::uint64_t{r} * elements) >> 32)];
     const double px = outX[i], py = outY[i], pz = outZ[i];
-    outX[i] = m[0] * px + m[1] * py + m[2] * pz;
-    outY[i] = m[4] * px + m[5] * py + m[6] * pz;
-    outZ[i] = m[8] * px + m[9] * py + m[10] * pz;
+    outX[i] = m[0] * px + m[1] * py + m[2] * pz + m[3];
+    outY[i] = m[4] * px + m[5] * py + m[6] * pz + m[7];
+    outZ[i] = m[8] * px + m[9] * py + m[10] * pz + m[11];
   }
 }
 

@@ -103,7 +103,9 @@ class ChaosGame {
   static void finishDirectColour(const Compiled& xform, ChaosLanes& lanes, std::size_t n);
   void stepFlame(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
                  std::size_t count) const;
-  void symmetrise(ChaosLanes& lanes, double* outX, double* outY, double* outZ, std::size_t count) const;
+  // Each drawn point through one of `maps` (Affine3's layout), drawn at random from its lane.
+  static void throughOneOf(const std::vector<std::array<double, 12>>& maps, ChaosLanes& lanes, double* outX,
+                           double* outY, double* outZ, std::size_t count);
   void stepJulia(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
                  std::size_t count) const;
 
@@ -121,6 +123,8 @@ class ChaosGame {
   std::vector<std::uint8_t> pick_;
   bool xaos_ = false;
   std::vector<std::array<double, 12>> group_;  // the symmetry group each drawn point goes through (flame.h)
+  // JWildfire's post symmetry (flame.h's postSymmetryMaps), after the group: one image of each point.
+  std::vector<std::array<double, 12>> postSymmetry_;
   QuaternionJuliaSettings juliaSettings_;
   double turnCos_ = 1.0, turnSin_ = 0.0;
 };

@@ -144,6 +144,11 @@ enum class PaletteMode {
 };
 inline constexpr std::string_view kPaletteModeNames[] = {"step", "linear"};
 
+// Whose 3D camera the flat view has: Apophysis 3D's and Fractorium's, or JWildfire's (see
+// FlatViewSettings below and flame/flat_render.h's FlatCamera).
+enum class FlatCameraModel { Fractorium, Jwildfire };
+inline constexpr std::string_view kFlatCameraModelNames[] = {"fractorium", "jwildfire"};
+
 struct FlatViewSettings {
   int width = 100, height = 100;  // flam3's size, pixels
   double centerX = 0.0, centerY = 0.0;
@@ -154,13 +159,23 @@ struct FlatViewSettings {
   double filterRadius = 0.5;  // Gaussian spatial filter, in output pixels
   double quality = 1.0;       // samples per output pixel (flam3's sample_density)
   PaletteMode paletteMode = PaletteMode::Step;
-  // The 3D camera of Apophysis 3D and Fractorium (flam3's cam_* keys): the drawn point turned by
-  // yaw about z and pitch about x, seen in perspective from depth cameraZ, blurred with depth by dof.
+  // The 3D camera of Apophysis 3D and Fractorium (flam3's cam_* keys), or JWildfire's (cameraModel):
+  // the drawn point turned by yaw about z and pitch about x, seen in perspective, blurred with
+  // depth by dof. JWildfire's also banks about y between the yaw and the pitch, turns by `rotate`
+  // about the origin last (instead of about the center, after), then moves by cameraPosition.
+  FlatCameraModel cameraModel = FlatCameraModel::Fractorium;
   double cameraPitchDeg = 0.0, cameraYawDeg = 0.0;
+  double cameraBankDeg = 0.0;      // JWildfire's cam_roll
   double cameraPerspective = 0.0;  // cam_persp: a point at depth d is drawn 1 / (1 − perspective · d) as large
-  double cameraZ = 0.0;            // cam_zpos
+  double cameraZ = 0.0;            // cam_zpos: Fractorium's eye depth; JWildfire's depth in focus
+  glm::dvec3 cameraPosition{0.0};  // JWildfire's cam_pos_x, _y, _z: added after the turn
   double cameraDof = 0.0;          // cam_dof
+  double cameraDofScale = 1.0;     // JWildfire's cam_dof_scale: the blur's radius is scaled by it
+  double cameraDofFade = 1.0;      // JWildfire's cam_dof_fade (see FlatCamera)
   bool hasCamera() const {
+    if (cameraModel == FlatCameraModel::Jwildfire)  // JWildfire's is3dProjectionRequired: not cam_zpos alone
+      return cameraPitchDeg != 0.0 || cameraYawDeg != 0.0 || cameraBankDeg != 0.0 || cameraPerspective != 0.0 ||
+             cameraDof != 0.0 || cameraPosition != glm::dvec3(0.0);
     return cameraPitchDeg != 0.0 || cameraYawDeg != 0.0 || cameraPerspective != 0.0 || cameraZ != 0.0 ||
            cameraDof != 0.0;
   }

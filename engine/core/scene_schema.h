@@ -99,21 +99,22 @@ template <class Owner>
 using Table = std::span<const Field<Owner>>;
 
 // The tables, one per object of the preset, in the order SCHEMA.md lists them.
-Table<Scene> sceneFields();                    // top level: name, mesh.path, grid.resolution, seed, ...
-Table<PatternLayer> layerFields();             // layers[i]
-Table<ColorSettings> colorFields();            // layers[i].color
-Table<LayerTransform> transformFields();       // layers[i].transform
-Table<LayerTransform> lockedFitFields();       // layers[i].transform.locked_fit
-Table<FlameGenome> flameFields();              // layers[i].flame
-Table<FlameXform> xformFields();               // layers[i].flame.xforms[j] (the final one skips `weight`)
-Table<VariationTerm> variationFields();        // ....xforms[j].variations[k]
-Table<FlameSymmetry> symmetryFields();         // layers[i].flame.symmetry
-Table<QuaternionJuliaSettings> juliaFields();  // layers[i].julia
-Table<ToneMapSettings> toneFields();           // tone
-Table<CameraSettings> cameraFields();          // camera
-Table<RenderSettingsDoc> renderFields();       // render
-Table<AnimationSettings> animationFields();    // animation
-Table<FlatViewSettings> flatFields();          // flat
+Table<Scene> sceneFields();                     // top level: name, mesh.path, grid.resolution, seed, ...
+Table<PatternLayer> layerFields();              // layers[i]
+Table<ColorSettings> colorFields();             // layers[i].color
+Table<LayerTransform> transformFields();        // layers[i].transform
+Table<LayerTransform> lockedFitFields();        // layers[i].transform.locked_fit
+Table<FlameGenome> flameFields();               // layers[i].flame
+Table<FlameXform> xformFields();                // layers[i].flame.xforms[j] (the final one skips `weight`)
+Table<VariationTerm> variationFields();         // ....xforms[j].variations[k]
+Table<FlameSymmetry> symmetryFields();          // layers[i].flame.symmetry
+Table<FlamePostSymmetry> postSymmetryFields();  // layers[i].flame.post_symmetry
+Table<QuaternionJuliaSettings> juliaFields();   // layers[i].julia
+Table<ToneMapSettings> toneFields();            // tone
+Table<CameraSettings> cameraFields();           // camera
+Table<RenderSettingsDoc> renderFields();        // render
+Table<AnimationSettings> animationFields();     // animation
+Table<FlatViewSettings> flatFields();           // flat
 
 // The row of `table` with this key; throws std::out_of_range for a key it does not have (a
 // programming error: the UI and tests name keys that exist).

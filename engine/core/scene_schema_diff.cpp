@@ -73,6 +73,7 @@ void diffLayer(const PatternLayer& a, const PatternLayer& b, const std::string& 
       diffXform(a.flame.finalXform, b.flame.finalXform, flame + "/final", d);
     if (a.flame.chainedFinals != b.flame.chainedFinals) note(d, flame + "/final_chain", kPattern);
     diffTable(a.flame.symmetry, b.flame.symmetry, symmetryFields(), flame + "/symmetry", d);
+    diffTable(a.flame.postSymmetry, b.flame.postSymmetry, postSymmetryFields(), flame + "/post_symmetry", d);
   }
   if (a.julia.c != b.julia.c) note(d, base + "/julia/c", kPattern);
   diffTable(a.julia, b.julia, juliaFields(), base + "/julia", d);

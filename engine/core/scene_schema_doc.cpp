@@ -141,7 +141,8 @@ std::vector<DocRow> flameRows() {
                  rows(xformFields(), "flame.xforms[j]."),
                  rows(variationFields(), "flame.xforms[j].variations[k]."),
                  {flame.back()},
-                 rows(symmetryFields(), "flame.symmetry.")});
+                 rows(symmetryFields(), "flame.symmetry."),
+                 rows(postSymmetryFields(), "flame.post_symmetry.")});
 }
 
 std::vector<DocRow> juliaRows() {

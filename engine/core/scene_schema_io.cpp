@@ -327,6 +327,10 @@ FlameGenome readFlame(ObjectReader& parent) {
     failOn(*symmetry, zeroAxisFailure(genome.symmetry.axis));
     symmetry->finish();
   }
+  if (std::optional<ObjectReader> post = reader.child("post_symmetry")) {
+    readFields(*post, postSymmetryFields(), genome.postSymmetry);
+    post->finish();
+  }
   reader.finish();
   return genome;
 }
@@ -445,6 +449,8 @@ json flameJson(const FlameGenome& genome, bool complete) {
   }
   if (complete || genome.symmetry != FlameSymmetry{})
     writeFields(out["symmetry"], symmetryFields(), genome.symmetry, complete);
+  if (complete || genome.postSymmetry != FlamePostSymmetry{})
+    writeFields(out["post_symmetry"], postSymmetryFields(), genome.postSymmetry, complete);
   return out;
 }
 

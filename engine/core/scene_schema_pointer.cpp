@@ -200,6 +200,8 @@ ValueRef flameAt(Walk& w, FlameGenome& flame, const std::string& base) {
   }
   if (key == "final" && flame.hasFinal) return xformAt(w, flame.finalXform, joinPath(base, "final"), true);
   if (key == "symmetry") return objectAt(w, symmetryFields(), flame.symmetry, joinPath(base, "symmetry"));
+  if (key == "post_symmetry")
+    return objectAt(w, postSymmetryFields(), flame.postSymmetry, joinPath(base, "post_symmetry"));
   return missing();
 }
 
@@ -445,6 +447,7 @@ std::vector<std::string> animatablePaths(const Scene& scene) {
         xformPaths(layer.flame.xforms[j], base + "/flame/xforms/" + std::to_string(j), false, out);
       if (layer.flame.hasFinal) xformPaths(layer.flame.finalXform, base + "/flame/final", true, out);
       tablePaths(symmetryFields(), layer.flame.symmetry, base + "/flame/symmetry", out);
+      tablePaths(postSymmetryFields(), layer.flame.postSymmetry, base + "/flame/post_symmetry", out);
     } else {
       out.push_back(base + "/julia/c");
       tablePaths(juliaFields(), layer.julia, base + "/julia", out);

@@ -441,6 +441,44 @@ const YF kSymmetryFields[] = {
      .affects = kPattern},
 };
 
+using PF = Field<FlamePostSymmetry>;
+const PF kPostSymmetryFields[] = {
+    {.key = "kind",
+     .member = choice<&FlamePostSymmetry::kind>(kPostSymmetryKindNames, "post symmetry"),
+     .help = "JWildfire's post symmetry: every drawn point drawn again, turned about the centre (point) or "
+             "mirrored across the vertical (x_axis) or horizontal (y_axis) line through it",
+     .affects = kPattern},
+    {.key = "order",
+     .member = &FlamePostSymmetry::order,
+     .min = 1,
+     .max = kMaxPostSymmetryOrder,
+     .help = "point: the turns by 360°/order (the point itself is drawn twice, as JWildfire does)",
+     .affects = kPattern},
+    {.key = "center_x",
+     .member = &FlamePostSymmetry::centerX,
+     .min = -kFlameCoefficientLimit,
+     .max = kFlameCoefficientLimit,
+     .help = "the centre, in flame units",
+     .affects = kPattern},
+    {.key = "center_y",
+     .member = &FlamePostSymmetry::centerY,
+     .min = -kFlameCoefficientLimit,
+     .max = kFlameCoefficientLimit,
+     .affects = kPattern},
+    {.key = "distance",
+     .member = &FlamePostSymmetry::distance,
+     .min = -kFlameCoefficientLimit,
+     .max = kFlameCoefficientLimit,
+     .help = "x_axis, y_axis: the point and its mirror image move apart by this",
+     .affects = kPattern},
+    {.key = "rotation",
+     .member = &FlamePostSymmetry::rotationDeg,
+     .min = -kFlameCoefficientLimit,
+     .max = kFlameCoefficientLimit,
+     .help = "x_axis, y_axis: degrees the point turns by about the centre one way, its mirror image the other",
+     .affects = kPattern},
+};
+
 using QF = Field<QuaternionJuliaSettings>;
 const QF kJuliaFields[] = {
     {.key = "c",
@@ -783,11 +821,17 @@ const FV kFlatFields[] = {
              "⌊index · 256⌋, linear blends the two around it",
      // The grid's colours too: the live view refines the pattern again.
      .affects = kPattern},
+    {.key = "camera_model",
+     .member = choice<&FlatViewSettings::cameraModel>(kFlatCameraModelNames, "camera model"),
+     .help = "whose 3D camera the camera_ keys are: Apophysis 3D's and Fractorium's, or JWildfire's (which "
+             "adds bank, position, the depth of field's scale and fade, and turns by rotate about the origin)",
+     .affects = kStill,
+     .write = Write::UnlessDefault},
     {.key = "camera_pitch",
      .member = &FlatViewSettings::cameraPitchDeg,
      .min = -360.0,
      .max = 360.0,
-     .help = "the 3D camera of Apophysis 3D and Fractorium: degrees the flame tilts about the horizontal axis",
+     .help = "the flame's 3D camera: degrees the flame tilts about the horizontal axis",
      .affects = kStill,
      .write = Write::UnlessDefault},
     {.key = "camera_yaw",
@@ -795,6 +839,13 @@ const FV kFlatFields[] = {
      .min = -360.0,
      .max = 360.0,
      .help = "degrees it turns about the depth axis before the tilt",
+     .affects = kStill,
+     .write = Write::UnlessDefault},
+    {.key = "camera_bank",
+     .member = &FlatViewSettings::cameraBankDeg,
+     .min = -360.0,
+     .max = 360.0,
+     .help = "JWildfire's camera: degrees it turns about the vertical axis between the yaw and the tilt",
      .affects = kStill,
      .write = Write::UnlessDefault},
     {.key = "camera_perspective",
@@ -808,14 +859,37 @@ const FV kFlatFields[] = {
      .member = &FlatViewSettings::cameraZ,
      .min = -1e6,
      .max = 1e6,
-     .help = "the depth the camera looks from",
+     .help = "Fractorium's camera: the depth it looks from; JWildfire's: the depth in focus",
+     .affects = kStill,
+     .write = Write::UnlessDefault},
+    {.key = "camera_position",
+     .member = &FlatViewSettings::cameraPosition,
+     .min = -1e6,
+     .max = 1e6,
+     .help = "JWildfire's camera: moves the turned flame by this (its depth too) before the perspective",
      .affects = kStill,
      .write = Write::UnlessDefault},
     {.key = "camera_dof",
      .member = &FlatViewSettings::cameraDof,
      .min = 0.0,
      .max = 1e6,
-     .help = "depth of field: a point is blurred by up to 0.1 · dof · its depth",
+     .help = "depth of field: a point is blurred by up to 0.1 · dof · its depth (JWildfire's: its depth in front "
+             "of camera_z)",
+     .affects = kStill,
+     .write = Write::UnlessDefault},
+    {.key = "camera_dof_scale",
+     .member = &FlatViewSettings::cameraDofScale,
+     .min = 0.0,
+     .max = 1e6,
+     .help = "JWildfire's camera: scales the depth of field's blur",
+     .affects = kStill,
+     .write = Write::UnlessDefault},
+    {.key = "camera_dof_fade",
+     .member = &FlatViewSettings::cameraDofFade,
+     .min = 0.0,
+     .max = 1.0,
+     .help = "JWildfire's camera: 1 blurs each point by a random part of its radius, 0 by all of it, between "
+             "them that share of the points by a random part",
      .affects = kStill,
      .write = Write::UnlessDefault},
 };
@@ -879,6 +953,9 @@ Table<VariationTerm> variationFields() {
 }
 Table<FlameSymmetry> symmetryFields() {
   return kSymmetryFields;
+}
+Table<FlamePostSymmetry> postSymmetryFields() {
+  return kPostSymmetryFields;
 }
 Table<QuaternionJuliaSettings> juliaFields() {
   return kJuliaFields;

@@ -160,6 +160,44 @@ std::vector<Affine3> symmetryGroup(const FlameSymmetry& s) {
   return group;
 }
 
+std::vector<Affine3> postSymmetryMaps(const FlamePostSymmetry& s) {
+  const double cx = s.centerX, cy = s.centerY;
+  // p ↦ the turn by `radians` about the centre of (sx · p + (tx, ty)), in the plane; z is kept.
+  const auto map = [&](double radians, double sx, double sy, double tx, double ty) {
+    const double c = std::cos(radians), n = std::sin(radians);
+    // q = (sx x + tx − cx, sy y + ty − cy), turned, then moved back by the centre.
+    const double qx = tx - cx, qy = ty - cy;
+    Affine3 a;
+    a.m[0] = c * sx;
+    a.m[1] = -n * sy;
+    a.m[3] = c * qx - n * qy + cx;
+    a.m[4] = n * sx;
+    a.m[5] = c * sy;
+    a.m[7] = n * qx + c * qy + cy;
+    return a;
+  };
+  std::vector<Affine3> maps;
+  const double half = 0.5 * s.distance, turn = s.rotationDeg * std::numbers::pi / 180.0;
+  switch (s.kind) {
+    case PostSymmetryKind::None:
+      break;
+    case PostSymmetryKind::Point:
+      if (s.order <= 1) break;
+      maps.push_back(Affine3{});  // JWildfire draws the point, then all its turns from the 0° one
+      for (int k = 0; k < s.order; ++k) maps.push_back(map(-2.0 * std::numbers::pi * k / s.order, 1.0, 1.0, 0.0, 0.0));
+      break;
+    case PostSymmetryKind::XAxis:
+      maps.push_back(map(-turn, 1.0, 1.0, half, 0.0));
+      maps.push_back(map(turn, -1.0, 1.0, 2.0 * cx - half, 0.0));
+      break;
+    case PostSymmetryKind::YAxis:
+      maps.push_back(map(-turn, 1.0, 1.0, 0.0, half));
+      maps.push_back(map(turn, 1.0, -1.0, 0.0, 2.0 * cy - half));
+      break;
+  }
+  return maps;
+}
+
 double weightFieldNoise(const FlameXform& xform, double x, double y, double z) {
   if (xform.fieldKind == WeightFieldKind::None) return 0.0;
   // The seed picks a far-off place of the noise space (irrational steps: no two seeds align).
@@ -206,6 +244,13 @@ void validateFlame(const FlameGenome& genome, const std::string& where) {
                 std::to_string(kMaxFlameSymmetry));
   if (!finite(s.axis.x) || !finite(s.axis.y) || !finite(s.axis.z) || glm::length(s.axis) < 1e-12)
     throw Error(where + " has a symmetry axis that is not a finite, non-zero vector");
+  const FlamePostSymmetry& post = genome.postSymmetry;
+  if (post.order < 1 || post.order > kMaxPostSymmetryOrder)
+    throw Error(where + " has a post symmetry of order " + std::to_string(post.order) + "; it must be 1 to " +
+                std::to_string(kMaxPostSymmetryOrder));
+  for (const double v : {post.centerX, post.centerY, post.distance, post.rotationDeg})
+    if (!finite(v) || std::abs(v) > kFlameCoefficientLimit)
+      throw Error(where + " has a post symmetry value that is not finite or beyond ±1e6");
 }
 
 void validateQuaternionJulia(const QuaternionJuliaSettings& q, const std::string& where) {

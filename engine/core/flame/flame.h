@@ -114,6 +114,33 @@ struct FlameSymmetry {
   bool operator==(const FlameSymmetry&) const = default;
 };
 
+// JWildfire's post symmetry (its post_symmetry_* keys): every point the flame draws is drawn again,
+// turned or mirrored in the plane about `center`, after the final transforms and before any camera;
+// unlike `symmetry` it leaves the iteration alone. The images (postSymmetryMaps):
+//  * point: the point itself and its turns by −k · 360°/order about the centre, k = 0 … order − 1,
+//    so the point itself twice, as JWildfire draws it (an order of 1 draws the point alone);
+//  * x_axis: the point moved by distance/2 along x and turned by −rotation about the centre, and
+//    its mirror image across the vertical line through the centre moved by −distance/2 along x
+//    and turned by +rotation; y_axis the same across the horizontal line, along y.
+// Where the flame is drawn as its author saw it (the flat view) each point is drawn through all of
+// them, as JWildfire does; the 3D chaos game draws each through one of them at random, so the
+// density has the same shape.
+enum class PostSymmetryKind { None, Point, XAxis, YAxis };
+inline constexpr std::string_view kPostSymmetryKindNames[] = {"none", "point", "x_axis", "y_axis"};
+inline constexpr int kMaxPostSymmetryOrder = 64;  // JWildfire's limit
+
+struct FlamePostSymmetry {
+  PostSymmetryKind kind = PostSymmetryKind::None;
+  int order = 3;  // point: 1–64
+  double centerX = 0.0, centerY = 0.0;
+  double distance = 1.25;    // x_axis, y_axis (JWildfire's defaults)
+  double rotationDeg = 6.0;  // x_axis, y_axis
+  bool operator==(const FlamePostSymmetry&) const = default;
+};
+
+// The maps every drawn point goes through (above): none for kind none or a point symmetry of order 1.
+std::vector<Affine3> postSymmetryMaps(const FlamePostSymmetry& symmetry);
+
 struct FlameGenome {
   std::vector<FlameXform> xforms;
   bool hasFinal = false;
@@ -122,6 +149,7 @@ struct FlameGenome {
   // several); used only with hasFinal.
   std::vector<FlameXform> chainedFinals;
   FlameSymmetry symmetry;
+  FlamePostSymmetry postSymmetry;
   bool operator==(const FlameGenome&) const = default;
 };
 

@@ -114,33 +114,76 @@ float flatPixelLevel(float value, int bitDepth) {
   return bitDepth == 16 ? std::floor(a * 256.0f) / 65535.0f : std::floor(a) / 255.0f;
 }
 
+namespace {
+
+using Matrix3 = std::array<std::array<double, 3>, 3>;
+
+Matrix3 operator*(const Matrix3& a, const Matrix3& b) {
+  Matrix3 m{};
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      for (int k = 0; k < 3; ++k) m[i][j] += a[i][k] * b[k][j];
+  return m;
+}
+
+// The turn by `degrees` about coordinate axis `axis` (0: x, 1: y, 2: z), right-handed.
+Matrix3 turnAbout(int axis, double degrees) {
+  const double a = degrees * std::numbers::pi / 180.0, c = std::cos(a), s = std::sin(a);
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  Matrix3 m{};
+  m[axis][axis] = 1.0;
+  m[u][u] = c;
+  m[u][v] = -s;
+  m[v][u] = s;
+  m[v][v] = c;
+  return m;
+}
+
+}  // namespace
+
 FlatCamera::FlatCamera(const FlatViewSettings& flat)
-    : z0(flat.cameraZ), perspective(flat.cameraPerspective), dofScale(0.1 * flat.cameraDof) {
-  const double pitch = flat.cameraPitchDeg * std::numbers::pi / 180.0;
-  const double yaw = -flat.cameraYawDeg * std::numbers::pi / 180.0;
-  const double sp = std::sin(pitch), cp = std::cos(pitch), sy = std::sin(yaw), cy = std::cos(yaw);
-  m00 = cy;
-  m10 = -sy;
-  m01 = cp * sy;
-  m11 = cp * cy;
-  m21 = -sp;
-  m02 = sp * sy;
-  m12 = sp * cy;
-  m22 = cp;
+    : jwildfire(flat.cameraModel == FlatCameraModel::Jwildfire),
+      z0(flat.cameraZ),
+      perspective(flat.cameraPerspective),
+      dofScale(0.1 * flat.cameraDof),
+      dofFade(flat.cameraDofFade) {
+  const Matrix3 yaw = turnAbout(2, -flat.cameraYawDeg), pitch = turnAbout(0, flat.cameraPitchDeg);
+  if (jwildfire) {
+    turn = turnAbout(2, flat.rotateDeg) * pitch * turnAbout(1, flat.cameraBankDeg) * yaw;
+    position = flat.cameraPosition;
+    dofScale *= flat.cameraDofScale;
+  } else {
+    turn = pitch * yaw;
+  }
 }
 
 glm::dvec2 FlatCamera::project(double x, double y, double z, double angle01, double blur01) const {
-  const double dz = z - z0;
-  double px = m00 * x + m10 * y;
-  double py = m01 * x + m11 * y + m21 * dz;
-  const double depth = m02 * x + m12 * y + m22 * dz;
-  if (dofScale != 0.0) {
-    const double angle = 2.0 * std::numbers::pi * angle01, r = blur01 * dofScale * depth;
+  if (!jwildfire) z -= z0;
+  const auto row = [&](int i) { return turn[i][0] * x + turn[i][1] * y + turn[i][2] * z; };
+  double px = row(0) + position.x, py = row(1) + position.y;
+  const double depth = row(2) + position.z;
+  if (!jwildfire) {
+    if (dofScale != 0.0) {
+      const double angle = 2.0 * std::numbers::pi * angle01, r = blur01 * dofScale * depth;
+      px += r * std::cos(angle);
+      py += r * std::sin(angle);
+    }
+    double zr = 1.0 - perspective * depth;
+    if (zr == 0.0) zr = std::numeric_limits<double>::epsilon();  // Fractorium's Zeps
+    return {px / zr, py / zr};
+  }
+  const double zr = 1.0 - perspective * depth + position.z;
+  if (!(zr >= 1e-8)) return glm::dvec2(std::numeric_limits<double>::quiet_NaN());  // behind the eye
+  const double inFront = z0 - depth;
+  if (dofScale != 0.0 && inFront > 0.0) {
+    const double fade = dofFade <= 1e-8         ? 1.0
+                        : dofFade >= 1.0 - 1e-8 ? blur01
+                        : blur01 <= dofFade     ? blur01 / dofFade
+                                                : 1.0;
+    const double angle = 2.0 * std::numbers::pi * angle01, r = fade * dofScale * inFront;
     px += r * std::cos(angle);
     py += r * std::sin(angle);
   }
-  double zr = 1.0 - perspective * depth;
-  if (zr == 0.0) zr = std::numeric_limits<double>::epsilon();  // Fractorium's Zeps
   return {px / zr, py / zr};
 }
 
@@ -153,7 +196,12 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   if (!finitePositive(flat.scale) || !std::isfinite(flat.zoom) || !std::isfinite(flat.centerX) ||
       !std::isfinite(flat.centerY) || !std::isfinite(flat.rotateDeg) || !(flat.filterRadius >= 0.0))
     throw Error("the flame's framing (flat) holds a value that is not a finite number");
-  const PatternLayer layer = planarLayer(flameLayer(scene));
+  PatternLayer layer = planarLayer(flameLayer(scene));
+  // JWildfire's post symmetry draws every point through each of its maps, as JWildfire does (the
+  // chaos game alone would draw each through one of them).
+  std::vector<Affine3> postSymmetry = postSymmetryMaps(layer.flame.postSymmetry);
+  if (postSymmetry.empty()) postSymmetry.emplace_back();
+  layer.flame.postSymmetry.kind = PostSymmetryKind::None;
   const ChaosGame game(layer, "the flame layer");
   const std::array<glm::vec3, 256> palette = filePalette(layer.color);
 
@@ -180,7 +228,8 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   const FlatCamera camera(flat);
   const double turn = flat.rotateDeg * std::numbers::pi / 180.0;
   const double cosTurn = std::cos(turn), sinTurn = std::sin(turn);
-  const bool turned = flat.rotateDeg != 0.0;
+  // JWildfire's camera turns by `rotate` itself (about the origin).
+  const bool turned = flat.rotateDeg != 0.0 && !(hasCamera && camera.jwildfire);
   // flam3's histogram (rect.c) reaches beyond the image by the spatial filter's gutter or, when
   // larger, the density estimator's radius: points further out are not drawn, so neither filter
   // spreads anything from them into the picture.
@@ -244,27 +293,30 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
             fuse[i] = kFuse;
           }
           if (!visible) continue;
-          double px = outX[i], py = outY[i];
-          if (hasCamera) {
-            const double angle = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
-            const double blur = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
-            const glm::dvec2 p = camera.project(px, py, outZ[i], angle, blur);
-            px = p.x;
-            py = p.y;
-          }
-          if (turned) {
-            const double dx = px - flat.centerX, dy = py - flat.centerY;
-            px = dx * cosTurn - dy * sinTurn + flat.centerX;
-            py = dx * sinTurn + dy * cosTurn + flat.centerY;
-          }
-          const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
-          if (!(bx >= drawnLeft && by >= drawnTop && bx < drawnRight && by < drawnBottom)) continue;
           const glm::vec3 c = flatPaletteColour(palette, outColor[i], flat.paletteMode);
-          float* v = histogram.at(static_cast<int>(bx), static_cast<int>(by));
-          v[0] += c.r;
-          v[1] += c.g;
-          v[2] += c.b;
-          v[3] += 1.0f;
+          for (const Affine3& image : postSymmetry) {
+            const glm::dvec3 q = image.apply({outX[i], outY[i], outZ[i]});
+            double px = q.x, py = q.y;
+            if (hasCamera) {
+              const double angle = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
+              const double blur = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
+              const glm::dvec2 p = camera.project(px, py, q.z, angle, blur);
+              px = p.x;
+              py = p.y;
+            }
+            if (turned) {
+              const double dx = px - flat.centerX, dy = py - flat.centerY;
+              px = dx * cosTurn - dy * sinTurn + flat.centerX;
+              py = dx * sinTurn + dy * cosTurn + flat.centerY;
+            }
+            const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
+            if (!(bx >= drawnLeft && by >= drawnTop && bx < drawnRight && by < drawnBottom)) continue;
+            float* v = histogram.at(static_cast<int>(bx), static_cast<int>(by));
+            v[0] += c.r;
+            v[1] += c.g;
+            v[2] += c.b;
+            v[3] += 1.0f;
+          }
         }
       }
     }

@@ -65,14 +65,26 @@ float flatPixelLevel(float value, int bitDepth);
 
 FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options = {});
 
-// The 3D camera of Apophysis 3D and Fractorium (Fractorium's Ember::ProjectPitchYaw and its depth
-// blur): p − (0, 0, z₀) turned by −yaw about z and pitch about x, divided by 1 − perspective · its
-// depth; with depth of field first moved by blur01 · 0.1 dof · depth towards angle01 · 2π. Returns
-// the drawn (x, y).
+// The flat view's 3D camera (FlatViewSettings), projecting a drawn point (x, y, z) into the plane.
+// angle01 and blur01 are uniform draws in [0, 1) for depth of field. With R_a the turn by a about
+// an axis (right-handed: R_z(a) takes (1, 0, 0) to (cos a, sin a, 0)):
+//  * Apophysis 3D's and Fractorium's (Ember::ProjectPitchYaw and its depth blur): q = R_x(pitch)
+//    R_z(−yaw) (p − (0, 0, z₀)); with depth of field (x, y) first moves by blur01 · 0.1 dof · q_z
+//    towards angle01 · 2π; then divided by 1 − perspective · q_z.
+//  * JWildfire's (FlameRendererView's camera matrix and project): q = R_z(rotate) R_x(pitch)
+//    R_y(bank) R_z(−yaw) p + c, c the camera position; zr = 1 − perspective · q_z + c_z, a point
+//    with zr below 10⁻⁸ is not drawn (NaN). With depth of field a point in front of the depth in
+//    focus z₀ (z₀ − q_z > 0) moves by f · 0.1 dof · scale · (z₀ − q_z) towards angle01 · 2π before
+//    the division, f being JWildfire's fade of its bubble blur: blur01 for fade ≥ 1, 1 for fade 0,
+//    and between them blur01 / fade when blur01 ≤ fade, else 1. The picture's `rotate` is part of
+//    this camera (about the origin), so the flat view does not turn the picture again.
 struct FlatCamera {
   explicit FlatCamera(const FlatViewSettings& flat);
   glm::dvec2 project(double x, double y, double z, double angle01, double blur01) const;
-  double m00, m10, m01, m11, m21, m02, m12, m22, z0, perspective, dofScale;
+  bool jwildfire = false;
+  std::array<std::array<double, 3>, 3> turn{};  // rows: the turned point's x, y and depth
+  glm::dvec3 position{0.0};                     // JWildfire's c
+  double z0 = 0.0, perspective = 0.0, dofScale = 0.0, dofFade = 1.0;
 };
 
 }  // namespace voxflame::core

@@ -1579,17 +1579,10 @@ bool writtenByJwildfire(const pugi::xml_node& flame) {
 }
 
 // JWildfire's flame-level features that neither the flat view nor the mesh keeps, named as lost
-// when a file turns them on: its post symmetry (copies of every drawn point turned about a centre
-// or mirrored), solid rendering (lights, materials, ambient occlusion), a 3D camera (pitch, yaw,
-// perspective, depth of field: the flat view draws the flame straight on, the mesh with the
-// explorer's camera) and motion curves on flame values (the camera's, the brightness').
+// when a file turns them on: solid rendering (lights, materials, ambient occlusion), the parts of
+// its 3D camera the flat view does not draw and motion curves on flame values (the camera's, the
+// brightness').
 void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader) {
-  const std::string symmetry = flame.attribute("post_symmetry_type").as_string("NONE");
-  if (!symmetry.empty() && symmetry != "NONE") {
-    reader.lose("JWildfire post symmetry");
-    reader.warn("the flame has JWildfire's post symmetry (" + symmetry.substr(0, 40) +
-                "), which voxflame does not apply; its points are drawn once");
-  }
   const std::string solid = flame.attribute("sld_render_enabled").as_string("false");
   if (solid == "true" || solid == "1") {
     reader.lose("JWildfire solid rendering");
@@ -1597,17 +1590,27 @@ void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader)
         "the flame uses JWildfire's solid rendering (lights and materials), which voxflame does not; it is "
         "drawn as a glowing flame");
   }
+  // The flat view keeps the 3D camera (readFlat) but for these parts of JWildfire's: its depth of
+  // field about a focus point (new_dof) and blur shapes other than its bubble, and its depth dimming.
   std::string camera;
-  // Apophysis 3D's and Fractorium's camera the flat view keeps (readFlat); JWildfire's is another.
-  if (writtenByJwildfire(flame))
-    for (const char* key : {"cam_pitch", "cam_yaw", "cam_persp", "cam_perspective", "cam_dof"}) {
+  if (writtenByJwildfire(flame)) {
+    const auto set = [&](const char* key) {
       const auto value = parseNumber(flame.attribute(key).as_string("0"));
-      if (value && *value != 0.0 && std::isfinite(*value)) camera += (camera.empty() ? "" : ", ") + std::string(key);
+      return value && *value != 0.0 && std::isfinite(*value);
+    };
+    const auto add = [&](const std::string& part) { camera += (camera.empty() ? "" : ", ") + part; };
+    if (set("cam_dof")) {
+      if (set("new_dof")) add("depth of field about a focus point (new_dof)");
+      const std::string shape = flame.attribute("cam_dof_shape").as_string("BUBBLE");
+      if (shape != "BUBBLE") add("the depth of field's blur shape " + shape.substr(0, 40));
     }
+    if (set("cam_zdimish")) add("depth dimming (cam_zdimish)");
+  }
   if (!camera.empty()) {
     reader.lose("3D camera");
-    reader.warn("the flame's JWildfire 3D camera (" + camera +
-                ") is not kept: the flat view draws the flame straight on and the mesh with the explorer's camera");
+    reader.warn(
+        "the flame's JWildfire 3D camera has " + camera +
+        ", which the flat view does not draw; the camera's turn, perspective and plain depth of field are kept");
   }
   std::string curves;
   for (const pugi::xml_attribute& attribute : flame.attributes()) {
@@ -1736,8 +1739,14 @@ FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader) {
       reader.warn("palette_mode '" + std::string(value) +
                   "' is not step or linear; the flat view steps, as flam3 does");
   }
-  // The 3D camera of Apophysis 3D and Fractorium (angles in radians). JWildfire's camera is another
-  // (reportUnkeptFlameFeatures names it).
+  // The 3D camera (angles in radians in the files): Apophysis 3D's and Fractorium's, or JWildfire's,
+  // which has more (FlatCamera in flat_render.h).
+  const auto angle = [&](const char* name, double& degrees) {
+    double radians = 0.0;
+    if (!key(name, radians, -kFlameCoefficientLimit, kFlameCoefficientLimit)) return;
+    // A whole turn more or less is the same camera; the preset keeps −360° to 360°.
+    degrees = std::remainder(radians, 2.0 * std::numbers::pi) * 180.0 / std::numbers::pi;
+  };
   if (!writtenByJwildfire(flame)) {
     double pitch = 0.0, yaw = 0.0;
     if (key("cam_pitch", pitch, -2.0 * std::numbers::pi, 2.0 * std::numbers::pi))
@@ -1747,6 +1756,30 @@ FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader) {
     key("cam_persp", flat.cameraPerspective, -1e6, 1e6);
     key("cam_zpos", flat.cameraZ, -1e6, 1e6);
     key("cam_dof", flat.cameraDof, 0.0, 1e6);
+  } else {
+    // JWildfire's cam_zoom multiplies its pixels per unit (FlameRendererView.initView) and nothing
+    // else: its sample count and log density scale with the image, as the flat view's do with scale.
+    double zoom = 1.0;
+    if (key("cam_zoom", zoom, 1e-6, 1e6)) flat.scale = std::clamp(flat.scale * zoom, 1e-6, 1e6);
+    FlatViewSettings camera = flat;
+    camera.cameraModel = FlatCameraModel::Jwildfire;
+    angle("cam_pitch", camera.cameraPitchDeg);
+    angle("cam_yaw", camera.cameraYawDeg);
+    angle("cam_roll", camera.cameraBankDeg);  // JWildfire's bank; its roll is `rotate`
+    // JWildfire reads cam_perspective (older files) after cam_persp.
+    key("cam_persp", camera.cameraPerspective, -1e6, 1e6);
+    key("cam_perspective", camera.cameraPerspective, -1e6, 1e6);
+    key("cam_zpos", camera.cameraZ, -1e6, 1e6);
+    key("cam_pos_x", camera.cameraPosition.x, -1e6, 1e6);
+    key("cam_pos_y", camera.cameraPosition.y, -1e6, 1e6);
+    key("cam_pos_z", camera.cameraPosition.z, -1e6, 1e6);
+    // A negative cam_dof blurs as its size does (the blur's direction is drawn at random).
+    if (double dof = 0.0; key("cam_dof", dof, -1e6, 1e6)) camera.cameraDof = std::abs(dof);
+    key("cam_dof_scale", camera.cameraDofScale, 0.0, 1e6);
+    key("cam_dof_fade", camera.cameraDofFade, 0.0, 1.0);
+    // Without a 3D camera JWildfire draws the flame flat, turned about the centre as flam3 does:
+    // nothing of the camera is kept then.
+    if (camera.hasCamera()) flat = camera;
   }
   if (const pugi::xml_attribute shape = flame.attribute("filter_shape");
       shape && std::string_view(shape.value()) != "gaussian") {
@@ -2093,6 +2126,43 @@ void finishMotion(ImportedFlame& flame, const std::vector<std::vector<MotionChan
   reader.warn(say.str());
 }
 
+// JWildfire's post symmetry (post_symmetry_*, flame.h's FlamePostSymmetry). As JWildfire reads it, an
+// unknown kind is none and an order beyond 64 is 64; a value that is not a usable number keeps
+// JWildfire's default, with a warning.
+FlamePostSymmetry readPostSymmetry(const pugi::xml_node& flame, FlameReader& reader) {
+  FlamePostSymmetry post;
+  const pugi::xml_attribute kind = flame.attribute("post_symmetry_type");
+  if (!kind) return post;
+  const std::string_view name = kind.value();
+  if (name == "POINT")
+    post.kind = PostSymmetryKind::Point;
+  else if (name == "X_AXIS")
+    post.kind = PostSymmetryKind::XAxis;
+  else if (name == "Y_AXIS")
+    post.kind = PostSymmetryKind::YAxis;
+  else if (name != "NONE")
+    reader.warn("post_symmetry_type \"" + std::string(name.substr(0, 40)) +
+                "\" is not one of JWildfire's (NONE, POINT, X_AXIS, Y_AXIS); as JWildfire does, the flame has none");
+  const auto value = [&](const char* key, double& target) {
+    const pugi::xml_attribute attribute = flame.attribute(key);
+    if (!attribute) return;
+    const auto number = parseNumber(attribute.value());
+    if (number && std::isfinite(*number) && std::abs(*number) <= kFlameCoefficientLimit)
+      target = *number;
+    else
+      reader.warn(std::string(key) + "=\"" + std::string(std::string_view(attribute.value()).substr(0, 40)) +
+                  "\" is not a number within ±1e6; JWildfire's default " + formatted(target) + " is used");
+  };
+  double order = post.order;
+  value("post_symmetry_order", order);
+  post.order = static_cast<int>(std::clamp(std::trunc(order), 1.0, static_cast<double>(kMaxPostSymmetryOrder)));
+  value("post_symmetry_centre_x", post.centerX);
+  value("post_symmetry_centre_y", post.centerY);
+  value("post_symmetry_distance", post.distance);
+  value("post_symmetry_rotation", post.rotationDeg);
+  return post;
+}
+
 ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, const std::string& name,
                         const FlameImportOptions& options, const std::map<std::string, std::string>& renamed) {
   FlameReader reader(where, options);
@@ -2109,8 +2179,11 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
         reader.number(element.attribute("kind"), "<symmetry>", -kFlameCoefficientLimit, kFlameCoefficientLimit),
         reader);
   }
+  // JWildfire's post symmetry belongs to the whole flame: every layer draws through it.
+  const FlamePostSymmetry postSymmetry = readPostSymmetry(node, reader);
   const auto finishGenome = [&](FlameGenome& genome, const std::string& context) {
     genome.symmetry = symmetry;
+    genome.postSymmetry = postSymmetry;
     const bool depthAdded = addFlameDepth(genome, options.depth);
     validateFlame(genome, context.empty() ? where : where + ", " + context);
     return depthAdded;
