@@ -1,6 +1,7 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <memory>
 #include <string>
 #include <thread>
 #include <utility>
@@ -8,10 +9,12 @@
 
 #include "bench.h"
 #include "core/refinement/accumulator.h"
+#include "core/error.h"
 #include "core/grid.h"
 #include "core/inside_mask.h"
 #include "core/mesh.h"
 #include "core/scene.h"
+#include "gl/gpu_accumulator.h"
 
 namespace voxflame::bench {
 
@@ -23,10 +26,11 @@ struct Rate {
   double perSecond = 0.0;
   double perCpuSecond = 0.0;
   double cpuSecondsPerSecond = 0.0;
+  double depositsPerSecond = 0.0;  // points added to the grid (inside the mask) per second
   core::AccumulatorStats stats;
 };
 
-Rate measureRate(const core::Accumulator& accumulator) {
+Rate measureRate(const core::RefinementBackend& accumulator) {
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // warm-up
   const auto before = accumulator.stats();
   const double cpuBefore = cpuSeconds(RUSAGE_SELF);
@@ -38,6 +42,7 @@ Rate measureRate(const core::Accumulator& accumulator) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   const auto iterations = static_cast<double>(rate.stats.iterations - before.iterations);
   rate.perSecond = iterations / seconds;
+  rate.depositsPerSecond = static_cast<double>(rate.stats.points - before.points) / seconds;
   rate.perCpuSecond = iterations / cpuUsed;
   rate.cpuSecondsPerSecond = cpuUsed / seconds;
   return rate;
@@ -47,10 +52,12 @@ Rate measureRate(const core::Accumulator& accumulator) {
 
 void benchAccumulateChaos(const BenchOptions& options, const std::shared_ptr<const core::InsideMask>& mask,
                           int allThreads);
+void benchAccumulateGpu(const BenchOptions& options);
 
 // Lorenz-84 (and every other catalogue entry named below) filling the bunny's mask at 256³,
 // colour by speed, timed over a fixed wall-clock window after a warm-up. Rows name the deposit.
 void benchAccumulate(const BenchOptions& options) {
+  if (options.backend == "gpu") return benchAccumulateGpu(options);
   const core::TriangleMesh mesh = core::loadMesh(options.meshFolder + "/bunny.obj");
   const auto mask =
       std::make_shared<const core::InsideMask>(core::buildInsideMask(mesh, core::gridOverBox(mesh.bounds(), 256)));
@@ -83,6 +90,7 @@ void benchAccumulate(const BenchOptions& options) {
                        {"threads", threads},
                        {"deposit", deposit == core::Deposit::Jittered ? "jittered" : "nearest"},
                        {"points_per_s", rate.perSecond},
+                       {"deposits_per_s", rate.depositsPerSecond},
                        {"inside_fraction", rate.stats.insideFraction()},
                        {"cpu_seconds_per_second", rate.cpuSecondsPerSecond},
                        {"points_per_cpu_s", rate.perCpuSecond}});
@@ -115,9 +123,53 @@ void benchAccumulateChaos(const BenchOptions& options, const std::shared_ptr<con
                        {"threads", threads},
                        {"deposit", "jittered"},
                        {"points_per_s", rate.perSecond},
+                       {"deposits_per_s", rate.depositsPerSecond},
                        {"inside_fraction", rate.stats.insideFraction()},
                        {"cpu_seconds_per_second", rate.cpuSecondsPerSecond},
                        {"points_per_cpu_s", rate.perCpuSecond}});
+    }
+  }
+}
+
+// The GPU backend (gl::GpuAccumulator) filling the bunny's mask at 256³ and 512³: deposits (points
+// added inside the mask) per second, the figure the GPU's goals name, beside the orbit steps.
+void benchAccumulateGpu(const BenchOptions& options) {
+  const core::TriangleMesh mesh = core::loadMesh(options.meshFolder + "/bunny.obj");
+  for (const int grid : {256, 512}) {
+    const auto mask =
+        std::make_shared<const core::InsideMask>(core::buildInsideMask(mesh, core::gridOverBox(mesh.bounds(), grid)));
+    std::unique_ptr<gl::GpuAccumulator> backend;
+    try {
+      backend = std::make_unique<gl::GpuAccumulator>(mask);
+    } catch (const core::Error& error) {
+      report(options, {{"bench", "accumulate"}, {"backend", "gpu"}, {"grid", grid}, {"error", error.what()}});
+      continue;
+    }
+    gl::GpuAccumulator& accumulator = *backend;
+    for (const char* id : {"lorenz84", "lorenz", "pickover", "polynomial_a"}) {
+      const core::AttractorInfo* info = core::findAttractor(id);
+      if (!info) continue;
+      core::PatternLayer layer;
+      layer.attractor = id;
+      layer.params = info->defaultParams();
+      layer.step = info->defaultStep;
+      layer.integrator = info->defaultIntegrator;
+      layer.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
+      accumulator.setTargetPoints(0);
+      accumulator.setPattern({layer}, 1);
+      const Rate rate = measureRate(accumulator);
+      report(options, {{"bench", "accumulate"},
+                       {"backend", "gpu"},
+                       {"renderer", accumulator.renderer()},
+                       {"attractor", id},
+                       {"grid", grid},
+                       {"orbits", accumulator.orbitsPerLayer()},
+                       {"colour_cell_voxels", 1 << (3 * accumulator.colourLayout().shift)},
+                       {"deposit", "jittered"},
+                       {"points_per_s", rate.perSecond},
+                       {"deposits_per_s", rate.depositsPerSecond},
+                       {"inside_fraction", rate.stats.insideFraction()},
+                       {"cpu_seconds_per_second", rate.cpuSecondsPerSecond}});
     }
   }
 }

@@ -406,6 +406,11 @@ Run defineBench(CLI::App& command) {
   command.add_flag("--print", options->print,
                    "`export`: the 16K print instead (15360×8640, points method, 20 points a pixel), rendered by a "
                    "`voxflame render` of its own: seconds and peak resident memory");
+  command
+      .add_option("--backend", options->backend,
+                  "`accumulate`: the refinement backend to measure, cpu (the default) or gpu (compute shaders, at 256³ "
+                  "and 512³)")
+      ->check(CLI::IsMember({"cpu", "gpu"}));
   command.add_flag("--json", options->json, "One JSON object a line");
   command.footer("Measure performance (Release build). The benchmarks:" + list);
   return [options, which] { return bench::runBenchmarks(*options, *which); };

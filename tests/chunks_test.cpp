@@ -170,3 +170,39 @@ TEST(ChunkOptions, MisusesGiveMessages) {
     EXPECT_TRUE(contains(result.output, c.expected)) << c.arguments << "\n" << result.output;
   }
 }
+
+// A render's chunks come from one refinement backend: a checkpoint the GPU began is refused by a
+// render on the CPU, naming the backends, and the GPU's own chunks resume into the same image.
+TEST(ChunkBackends, ChunksOfAnotherBackendAreRefusedAndTheirOwnResume) {
+  TemporaryFolder folder;
+  const std::string render =
+      "render " + kAttractor + kQuick + kSize + " --method volume -o a.png --chunks 4 --checkpoint ck ";
+  auto result = runVoxflame(render + "--backend gpu --chunk-range 0-1", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  result = runVoxflame(render + "--backend cpu", folder.path());
+  EXPECT_EQ(result.exitStatus, 1) << result.output;
+  EXPECT_TRUE(contains(result.output, "it was refined by the gpu backend, this render uses the cpu backend"))
+      << result.output;
+  result = runVoxflame(render + "--backend gpu", folder.path());
+  ASSERT_EQ(result.exitStatus, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "on the gpu backend")) << result.output;
+  EXPECT_TRUE(std::filesystem::exists(folder / "a.png"));
+}
+
+TEST(ChunkBackends, TheGpuBackendRefusesWhatItDoesNotRunWithAMessage) {
+  TemporaryFolder folder;
+  auto result = runVoxflame("render " + kFlame + kQuick + kSize + " -o f.png --backend gpu", folder.path());
+  EXPECT_EQ(result.exitStatus, 1) << result.output;
+  EXPECT_TRUE(contains(result.output, "a flame layer needs the CPU backend")) << result.output;
+  result =
+      runVoxflame("render " + kAttractor + kQuick + kSize + " -o p.png --backend gpu --method points", folder.path());
+  EXPECT_EQ(result.exitStatus, 1) << result.output;
+  EXPECT_TRUE(contains(result.output, "the points method projects its points on the CPU")) << result.output;
+  // auto falls back to the CPU for both, whatever the machine.
+  result = runVoxflame("render " + kFlame + kQuick + kSize + " -o f.png --backend auto", folder.path());
+  EXPECT_EQ(result.exitStatus, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "on the cpu backend")) << result.output;
+  result = runVoxflame("render " + kAttractor + kQuick + kSize + " -o x.png --backend metal", folder.path());
+  EXPECT_NE(result.exitStatus, 0);
+  EXPECT_TRUE(contains(result.output, "--backend")) << result.output;
+}

@@ -247,15 +247,25 @@ void GpuAccumulator::loop(std::stop_token stop, std::exception_ptr* startError, 
     // has (16 streams of 256) keep a dispatch at milliseconds. A GPU wants a million in flight.
     orbits_ = software_ ? 4096u : 1u << 20;
     stepsPerDispatch_ = software_ ? 64 : 256;
-    device->hitsInCells = colour_.shift == 0;
     const core::GridGeometry& g = mask_->geometry;
     const std::size_t voxels = g.voxelCount();
     GLint maxBlock = 0;
     glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+    const auto blockLimit = static_cast<std::size_t>(static_cast<GLuint>(maxBlock));
+    // The CPU's layout where it fits what the device binds at once; else colour cells of 2×2×2
+    // voxels (the CPU's own layout above 256³), which readers take from colourLayout().
+    if (colour_.shift == 0 && colour_.cellCount() * sizeof(core::detail::ColourCell) > blockLimit) {
+      colour_.shift = 1;
+      colour_.size = (g.size + 1) / 2;
+    }
+    device->hitsInCells = colour_.shift == 0;
     const std::size_t cellBytes = colour_.cellCount() * sizeof(core::detail::ColourCell);
-    if (static_cast<std::size_t>(static_cast<GLuint>(maxBlock)) < cellBytes)
-      throw core::Error("the grid's colour sums (" + std::to_string(cellBytes >> 20) +
-                        " MiB) exceed what this GPU binds at once");
+    const std::size_t hitBytes = device->hitsInCells ? 0 : voxels * sizeof(std::uint32_t);
+    if (std::max(cellBytes, hitBytes) > blockLimit)
+      throw core::Error("the grid is too large for the GPU backend on " + renderer_ + ": its " +
+                        std::to_string(std::max(cellBytes, hitBytes) >> 20) + " MiB of sums exceed the " +
+                        std::to_string(blockLimit >> 20) +
+                        " MiB it binds at once; use a smaller grid or the CPU backend");
     device->cells = makeBuffer(kCellsBinding, cellBytes);
     if (!device->hitsInCells) device->hits = makeBuffer(kHitsBinding, voxels * sizeof(std::uint32_t));
     std::vector<std::uint32_t> bits((voxels + 31) / 32, 0u);
