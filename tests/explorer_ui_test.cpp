@@ -340,10 +340,9 @@ TEST_F(ExplorerUi, ASearchShowsItsProgressAndCanBeCancelled) {
   frame();
   click("Search (F3)");
   ASSERT_TRUE(state.services.search.busy());
-  for (int i = 0; i < 200 && state.services.searchTried->load() < 3; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    frame();
-  }
+  ASSERT_TRUE(state.services.searchProgress);
+  test::waitFor(*state.services.searchProgress, [&] { return state.services.searchTried->load() >= 3; });
+  frame();
   EXPECT_GE(state.services.searchTried->load(), 3) << "its tries are counted";
   frame();
   click("explore/Cancel search");
@@ -1459,6 +1458,7 @@ TEST_F(ExplorerUi, RefinementStopsAtTheNoiseTargetAndTheWorkersSleep) {
   EXPECT_EQ(app::convergenceText(rested).rfind("at rest: the noise reached its target", 0), 0u)
       << app::convergenceText(rested);
   const long long ticks = processThreadTicks();
+  // A fixed wait, as this proves that something does NOT happen: no points and no CPU at rest.
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
   EXPECT_EQ(session.status().stats.points, rested.stats.points) << "no points are added at rest";
   // Two busy workers would use about 120 ticks in that time; sleeping ones use none.
@@ -1529,6 +1529,7 @@ TEST_F(ExplorerUi, TheCapEndsAFlowThatNeverReachesItsTargetAndRefineFurtherKeeps
   EXPECT_LE(capped.pointsPerVoxel, capped.capPointsPerVoxel * 1.05) << "it stops at the cap";
   EXPECT_EQ(app::convergenceText(capped).rfind("at rest: the cap of ", 0), 0u) << app::convergenceText(capped);
   const long long ticks = processThreadTicks();
+  // A fixed wait, as this proves that something does NOT happen: no points and no CPU at the cap.
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
   EXPECT_EQ(session.status().stats.points, capped.stats.points) << "no points are added at rest";
   EXPECT_LE(processThreadTicks() - ticks, 3) << "the threads sleep at the cap";
@@ -1621,6 +1622,7 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
     return static_cast<double>(volume.points) >= dragBurst;
   });
   EXPECT_GE(static_cast<double>(volume.points), dragBurst);
+  // A fixed wait, as this proves that something does NOT happen: the burst going on past the drag's.
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   session.takeProxyIfNewer(volume);
   EXPECT_LT(static_cast<double>(volume.points), 0.5 * app::ExplorerSession::kProxyPointsPerVoxel * insideVoxels)
@@ -1651,7 +1653,8 @@ TEST_F(ExplorerUi, AnOrbitHoldsEvenAGridWithoutAProxyAndAnEditEndsIt) {
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.stats.points > 100'000; }));
   session.setRefinement(0.0, false, true, true);
-  // The batches under way finish; then nothing more is added.
+  // The batches under way finish (the session says nothing of its workers going to sleep, so this
+  // waits long enough for them); then nothing more is added, which only a fixed wait can show.
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   const std::uint64_t held = session.status().stats.points;
   std::this_thread::sleep_for(std::chrono::milliseconds(300));

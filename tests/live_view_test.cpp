@@ -342,6 +342,7 @@ TEST_F(LiveViewTest, TheFirstEditOfADragLeavesTheLargeGridHeld) {
   edit([&](core::Scene& scene) { scene.layers[0].params[0] *= 1.02; });
   ASSERT_TRUE(frame(view).patternPosted);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
+  // A fixed wait, as this proves that something does NOT happen: the large grid starting later on.
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   EXPECT_EQ(session.status().stats.generation, generation) << "the large grid never started on the drag's edit";
 
