@@ -127,7 +127,8 @@ std::filesystem::path defaultAutosaveFolder() {
 
 Autosave::Autosave(Options options)
     : owner_(SessionOwner::current()),
-      interval_(std::chrono::duration_cast<std::chrono::steady_clock::duration>(options.interval)) {
+      interval_(std::chrono::duration_cast<std::chrono::steady_clock::duration>(options.interval)),
+      clock_(std::move(options.clock)) {
   const std::filesystem::path folder = options.folder.empty() ? defaultAutosaveFolder() : options.folder;
   if (!folder.empty()) file_ = folder / fileNameOf(owner_);
   writer_ = std::jthread([this](std::stop_token stop) { writerLoop(stop); });
@@ -140,7 +141,7 @@ Autosave::~Autosave() {
 
 bool Autosave::update(const core::Scene& scene) {
   if (finished_ || file_.empty()) return true;  // nothing to look for, now or later
-  const auto now = std::chrono::steady_clock::now();
+  const auto now = clock_ ? clock_() : std::chrono::steady_clock::now();
   if (haveBaseline_ && now - lastCheck_ < interval_) return false;
   lastCheck_ = now;
   std::string preset, base;

@@ -22,6 +22,7 @@
 #include <condition_variable>
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <string>
@@ -50,6 +51,9 @@ class Autosave {
   struct Options {
     std::filesystem::path folder;              // empty: defaultAutosaveFolder()
     std::chrono::milliseconds interval{3000};  // between checks for a change
+    // What the interval is measured on (empty: std::chrono::steady_clock::now). Tests step a clock
+    // of their own through the interval instead of waiting for it.
+    std::function<std::chrono::steady_clock::time_point()> clock;
   };
 
   Autosave() : Autosave(Options{}) {}
@@ -90,6 +94,7 @@ class Autosave {
   std::filesystem::path file_;
   SessionOwner owner_;
   std::chrono::steady_clock::duration interval_;
+  std::function<std::chrono::steady_clock::time_point()> clock_;
   std::chrono::steady_clock::time_point lastCheck_{};
   bool haveBaseline_ = false;
   bool finished_ = false;

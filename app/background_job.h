@@ -6,8 +6,11 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <exception>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <pthread.h>
 #include <stop_token>
@@ -38,13 +41,25 @@ class BackgroundJob {
       } catch (...) {
         slot->error = std::current_exception();
       }
-      slot->ready.store(true, std::memory_order_release);
+      {
+        std::lock_guard lock(slot->mutex);  // so waitUntilReady cannot miss the notification
+        slot->ready.store(true, std::memory_order_release);
+      }
+      slot->finished.notify_all();
     });
   }
 
   // Started and its result not yet taken (it may be finished).
   bool busy() const { return slot_ != nullptr; }
   bool ready() const { return slot_ && slot_->ready.load(std::memory_order_acquire); }
+
+  // Blocks until the work has finished (true; also when nothing was started) or `timeout` passes
+  // (false). For tests and scripted runs: the frame loop never waits.
+  bool waitUntilReady(std::chrono::duration<double> timeout) const {
+    if (!slot_) return true;
+    std::unique_lock lock(slot_->mutex);
+    return slot_->finished.wait_for(lock, timeout, [&] { return slot_->ready.load(std::memory_order_acquire); });
+  }
 
   // The result once the work has finished (rethrowing what it threw), else nothing. Never waits:
   // the thread has already returned when `ready` is set, so the join is immediate.
@@ -70,6 +85,8 @@ class BackgroundJob {
     std::optional<Result> result;
     std::exception_ptr error;
     std::atomic<bool> ready{false};
+    std::mutex mutex;  // only for waitUntilReady's wait
+    std::condition_variable finished;
   };
   std::shared_ptr<Slot> slot_;
   std::jthread thread_;

@@ -1,6 +1,7 @@
 #include "preset_library.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cctype>
 #include <cmath>
 #include <fstream>
@@ -252,6 +253,11 @@ void PresetLibrary::refresh() {
   wake_.notify_one();
 }
 
+bool PresetLibrary::waitUntilIdle(double timeoutSeconds) const {
+  std::unique_lock lock(mutex_);
+  return idle_.wait_for(lock, std::chrono::duration<double>(timeoutSeconds), [this] { return !busy_.load(); });
+}
+
 PresetLibrary::Entries PresetLibrary::entries() const {
   const std::lock_guard lock(mutex_);
   return entries_;
@@ -275,7 +281,10 @@ void PresetLibrary::run(std::stop_token stop) {
   for (;;) {
     {
       std::unique_lock lock(mutex_);
-      if (!refreshRequested_) busy_ = false;
+      if (!refreshRequested_) {
+        busy_ = false;
+        idle_.notify_all();
+      }
       wake_.wait(lock, stop, [this] { return refreshRequested_; });
       if (stop.stop_requested()) return;
       refreshRequested_ = false;

@@ -103,6 +103,9 @@ class PresetLibrary {
   Entries entries() const;
   std::uint64_t version() const { return version_.load(); }
   bool busy() const { return busy_.load(); }
+  // Blocks until a scan and its thumbnails are done (!busy(), true) or `timeoutSeconds` pass
+  // (false). For tests and scripted runs: the UI only asks busy().
+  bool waitUntilIdle(double timeoutSeconds) const;
 
   // savePresetAs into the user folder, then refresh(). Throws core::Error for the window.
   std::filesystem::path saveAs(const core::Scene& scene, const std::string& displayName, const Thumbnail& thumbnail,
@@ -119,6 +122,7 @@ class PresetLibrary {
   const std::filesystem::path userFolder_;
   mutable std::mutex mutex_;
   std::condition_variable_any wake_;
+  mutable std::condition_variable idle_;  // notified when busy_ turns false
   bool refreshRequested_ = true;
   Entries entries_;
   std::atomic<std::uint64_t> version_{0};

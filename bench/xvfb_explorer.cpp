@@ -1,14 +1,19 @@
 #include "xvfb_explorer.h"
 
+#include <X11/Xatom.h>
+#include <X11/Xlib.h>
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <string_view>
 #include <thread>
 
 extern char** environ;
@@ -52,6 +57,77 @@ bool XvfbServer::running() const {
 
 int XvfbServer::xdotool(const std::string& arguments) const {
   return std::system(("env " + environment() + " timeout 120 xdotool " + arguments + " >/dev/null").c_str());
+}
+
+namespace {
+
+// A window may go between the listing of the windows and a request about it (BadWindow): Xlib's
+// default handler would end the process.
+int ignoreXErrors(Display*, XErrorEvent*) {
+  return 0;
+}
+
+// Whether a title property (WM_NAME or _NET_WM_NAME, whatever its encoding) of `window` holds
+// `text`; the request's round trip also sends the requests queued before it.
+bool titleHolds(Display* display, Window window, Atom property, const std::string& text) {
+  Atom type = None;
+  int format = 0;
+  unsigned long count = 0, after = 0;
+  unsigned char* data = nullptr;
+  if (XGetWindowProperty(display, window, property, 0, 1024, False, AnyPropertyType, &type, &format, &count, &after,
+                         &data) != Success)
+    return false;
+  const bool holds =
+      data && format == 8 && std::string(reinterpret_cast<char*>(data), count).find(text) != std::string::npos;
+  if (data) XFree(data);
+  return holds;
+}
+
+}  // namespace
+
+bool XvfbServer::waitForTitle(const std::string& text, std::chrono::milliseconds limit) const {
+  const auto deadline = std::chrono::steady_clock::now() + limit;
+  char name[32];
+  std::snprintf(name, sizeof name, ":%d", display_);
+  Display* display = XOpenDisplay(name);
+  if (!display) return false;
+  const auto previousHandler = XSetErrorHandler(ignoreXErrors);
+  const Window root = DefaultRootWindow(display);
+  const Atom netName = XInternAtom(display, "_NET_WM_NAME", False);
+  XSelectInput(display, root, SubstructureNotifyMask);  // windows created (and mapped) from now on
+  // Asks for every top-level window's property changes, then reads its title: a title set after
+  // the read is an event on the connection.
+  const auto anyTitleHolds = [&] {
+    Window rootReturn = 0, parent = 0, *children = nullptr;
+    unsigned count = 0;
+    bool holds = false;
+    if (XQueryTree(display, root, &rootReturn, &parent, &children, &count)) {
+      for (unsigned i = 0; i < count && !holds; ++i) {
+        XSelectInput(display, children[i], PropertyChangeMask);
+        holds = titleHolds(display, children[i], XA_WM_NAME, text) || titleHolds(display, children[i], netName, text);
+      }
+      if (children) XFree(children);
+    }
+    return holds;
+  };
+  bool found = anyTitleHolds();
+  while (!found) {
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (left <= std::chrono::milliseconds(0)) break;
+    if (XPending(display) == 0) {
+      pollfd connection{ConnectionNumber(display), POLLIN, 0};
+      if (poll(&connection, 1, static_cast<int>(left.count())) <= 0) continue;
+    }
+    while (XPending(display) > 0) {  // what happened matters less than that something did
+      XEvent event;
+      XNextEvent(display, &event);
+    }
+    found = anyTitleHolds();
+  }
+  XCloseDisplay(display);
+  XSetErrorHandler(previousHandler);
+  return found;
 }
 
 bool haveXvfbAndXdotool() {

@@ -30,6 +30,9 @@ class XvfbServer {
   // Runs xdotool on this display (a shell-quoted argument string); its exit status. A window
   // search waits at most two minutes.
   int xdotool(const std::string& arguments) const;
+  // Waits until the title of a window on this display contains `text` (true), or `limit` passes
+  // (false). Sleeps on the server's events (a title set, a window created), not on a timer.
+  bool waitForTitle(const std::string& text, std::chrono::milliseconds limit) const;
 
  private:
   int display_ = -1;

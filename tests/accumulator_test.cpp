@@ -548,10 +548,7 @@ TEST(Accumulator, NaNNeverReachesTheGrid) {
     EXPECT_TRUE(accumulator.stats().problem.empty()) << accumulator.stats().problem;
     // Past the target, threads still finish the batch they are in; wait until they rest so the
     // snapshot and the point count describe the same grid.
-    for (std::uint64_t before = ~std::uint64_t{0}; before != accumulator.stats().points;) {
-      before = accumulator.stats().points;
-      std::this_thread::sleep_for(std::chrono::milliseconds(200));
-    }
+    ASSERT_TRUE(accumulator.waitUntilIdle(60.0)) << layer.attractor;
     VolumeSnapshot snapshot;
     accumulator.snapshot(snapshot);
     double total = 0.0;
@@ -808,10 +805,7 @@ void accumulateInto(Accumulator& accumulator, CollectingSink& sink, const std::v
   accumulator.setTargetPoints(points);
   accumulator.setPattern(layers, seed);
   ASSERT_TRUE(accumulator.waitUntilDone(60.0));
-  for (std::uint64_t before = ~std::uint64_t{0}; before != accumulator.stats().points;) {
-    before = accumulator.stats().points;
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
+  ASSERT_TRUE(accumulator.waitUntilIdle(60.0));
 }
 
 }  // namespace

@@ -1,7 +1,7 @@
 // A stand-in for an explorer session, for the autosave tests: autosaves the edited scene into
-// the folder given, creates the file READY_FILE, then waits to be killed. A separate program
-// rather than a fork, so that the tests also run under ThreadSanitizer (which refuses threads
-// started in a forked child).
+// the folder given, writes a line to READY_FILE (the tests pass a pipe's end, /dev/fd/N, and wait
+// for the line), then waits to be killed. A separate program rather than a fork, so that the
+// tests also run under ThreadSanitizer (which refuses threads started in a forked child).
 #include <unistd.h>
 
 #include <chrono>

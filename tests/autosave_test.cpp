@@ -1,14 +1,18 @@
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <cstring>
 #include <string>
 #include <thread>
 
@@ -19,6 +23,7 @@
 #include "core/scene.h"
 #include "core/scene_io.h"
 #include "test_support.h"
+#include "wait_for.h"
 
 using voxflame::app::Autosave;
 using voxflame::app::findRecoverable;
@@ -54,24 +59,37 @@ pid_t deadPid() {
 }
 
 // Runs an "explorer" in another process (autosave_helper): it autosaves the edited scene and
-// then waits to be killed. Returns its pid once the autosave is on disk.
+// then waits to be killed. Returns its pid once the autosave is on disk, which the helper says by
+// writing a line into a pipe (its READY_FILE is the pipe's end): this sleeps in poll() until the
+// line comes, or the pipe closes because the helper ended early.
 pid_t startAutosavingChild(const std::filesystem::path& folder) {
-  const std::filesystem::path ready = folder / "helper.ready";
-  std::filesystem::remove(ready);
-  std::string helper = VOXFLAME_AUTOSAVE_HELPER, folderArg = folder.string(), readyArg = ready.string();
+  int fds[2];
+  if (pipe2(fds, O_CLOEXEC) != 0) {
+    ADD_FAILURE() << "pipe2: " << std::strerror(errno);
+    return -1;
+  }
+  // The helper gets the write end as descriptor 3 (dup2 clears its close-on-exec there); one that
+  // is already 3 moves first, as a dup2 onto itself would keep the flag.
+  if (fds[1] == 3) {
+    const int moved = fcntl(fds[1], F_DUPFD_CLOEXEC, 4);
+    close(fds[1]);
+    fds[1] = moved;
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], 3);
+  std::string helper = VOXFLAME_AUTOSAVE_HELPER, folderArg = folder.string(), readyArg = "/dev/fd/3";
   char* argv[] = {helper.data(), folderArg.data(), readyArg.data(), nullptr};
   pid_t pid = -1;
-  EXPECT_EQ(posix_spawn(&pid, helper.c_str(), nullptr, nullptr, argv, environ), 0);
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (!std::filesystem::exists(ready) && std::chrono::steady_clock::now() < deadline) {
-    if (waitpid(pid, nullptr, WNOHANG) == pid) {
-      ADD_FAILURE() << "autosave_helper ended early";
-      return pid;
-    }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  EXPECT_TRUE(std::filesystem::exists(ready));
-  std::filesystem::remove(ready);
+  EXPECT_EQ(posix_spawn(&pid, helper.c_str(), &actions, nullptr, argv, environ), 0);
+  posix_spawn_file_actions_destroy(&actions);
+  close(fds[1]);  // only the helper's end is left: the pipe closes if it ends
+  pollfd ready{fds[0], POLLIN, 0};
+  const int polled = poll(&ready, 1, static_cast<int>(voxflame::test::kEventTimeout.count() * 1000));
+  char line[16] = {};
+  const ssize_t got = polled == 1 ? read(fds[0], line, sizeof line - 1) : -1;
+  close(fds[0]);
+  EXPECT_GT(got, 0) << (polled == 1 ? "autosave_helper ended early" : "autosave_helper never got ready");
   return pid;
 }
 
@@ -153,22 +171,29 @@ TEST(Autosave, WritesOnlyChangesAndAtMostOncePerInterval) {
   TemporaryFolder folder;
   Autosave::Options options = immediate(folder.path());
   options.interval = std::chrono::milliseconds(300);
+  // The interval passes on a clock of the test's own, stepped instead of waited for.
+  auto now = std::chrono::steady_clock::time_point{} + std::chrono::hours(1);
+  options.clock = [&now] { return now; };
   Autosave autosave(options);
   autosave.update(voxflame::core::defaultScene());
   autosave.flush();
   EXPECT_FALSE(std::filesystem::exists(autosave.file()));  // the starting scene is not written
-  autosave.update(editedScene());                          // within the interval: not yet looked at
+  EXPECT_FALSE(autosave.update(editedScene()));            // within the interval: not yet looked at
+  now += std::chrono::milliseconds(299);
+  EXPECT_FALSE(autosave.update(editedScene()));
   autosave.flush();
   EXPECT_FALSE(std::filesystem::exists(autosave.file()));
-  std::this_thread::sleep_for(std::chrono::milliseconds(350));
-  autosave.update(editedScene());
+  now += std::chrono::milliseconds(51);
+  EXPECT_TRUE(autosave.update(editedScene()));
   autosave.flush();
   ASSERT_TRUE(std::filesystem::exists(autosave.file()));
-  const auto written = std::filesystem::last_write_time(autosave.file());
-  std::this_thread::sleep_for(std::chrono::milliseconds(350));
-  autosave.update(editedScene());  // unchanged: not written again
+  // Unchanged: not written again. The file goes, so that a write would bring it back (a time
+  // stamp might not move within its resolution).
+  std::filesystem::remove(autosave.file());
+  now += std::chrono::milliseconds(350);
+  EXPECT_TRUE(autosave.update(editedScene()));
   autosave.flush();
-  EXPECT_EQ(std::filesystem::last_write_time(autosave.file()), written);
+  EXPECT_FALSE(std::filesystem::exists(autosave.file())) << "an unchanged scene was written again";
   EXPECT_TRUE(autosave.lastError().empty());
 }
 

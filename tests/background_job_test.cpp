@@ -10,6 +10,7 @@
 #include "background_job.h"
 #include "core/flame/search.h"
 #include "core/lyapunov.h"
+#include "wait_for.h"
 
 using namespace voxflame;
 
@@ -17,7 +18,7 @@ namespace {
 
 template <class Result>
 std::optional<Result> waitForResult(app::BackgroundJob<Result>& job) {
-  for (int i = 0; i < 6000 && !job.ready(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_TRUE(job.waitUntilReady(test::kEventTimeout)) << "the work never finished";
   return job.take();
 }
 
@@ -43,7 +44,7 @@ TEST(BackgroundJob, TheResultIsTakenOnceWhenReady) {
 TEST(BackgroundJob, WhatTheWorkThrowsComesOutOfTake) {
   app::BackgroundJob<int> job;
   job.start([](std::stop_token) -> int { throw std::runtime_error("no luck"); });
-  for (int i = 0; i < 6000 && !job.ready(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  ASSERT_TRUE(job.waitUntilReady(test::kEventTimeout));
   EXPECT_THROW(job.take(), std::runtime_error);
   EXPECT_FALSE(job.busy());
 }
@@ -80,8 +81,16 @@ TEST(BackgroundJob, CancellingStopsTheWorkAndDropsItsResult) {
 
 // Searches that would try thousands of candidates stop at their job's stop request.
 TEST(BackgroundJob, SearchesEndWhenTheirJobIsCancelled) {
+  // Each search says when it is under way, so the cancel below stops a running search.
+  std::atomic<int> started{0};
+  core::ProgressSignal startedSignal;
+  const auto starting = [&] {
+    ++started;
+    startedSignal.notify();
+  };
   app::BackgroundJob<std::size_t> flames;
-  flames.start([](std::stop_token stop) {
+  flames.start([starting](std::stop_token stop) {
+    starting();
     core::FlameSearchOptions options;
     options.maxCandidates = 1'000'000;
     options.count = 1'000;
@@ -90,7 +99,8 @@ TEST(BackgroundJob, SearchesEndWhenTheirJobIsCancelled) {
     return core::searchFlames(std::nullopt, options).size();
   });
   app::BackgroundJob<std::size_t> attractors;
-  attractors.start([](std::stop_token stop) {
+  attractors.start([starting](std::stop_token stop) {
+    starting();
     core::SearchOptions options;
     options.maxCandidates = 100'000'000;
     options.count = 10'000;
@@ -98,7 +108,7 @@ TEST(BackgroundJob, SearchesEndWhenTheirJobIsCancelled) {
     options.stop = stop;
     return core::searchChaos(core::defaultOrbitSpec(core::attractorOrThrow("lorenz")), options).size();
   });
-  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  ASSERT_TRUE(test::waitFor(startedSignal, [&] { return started.load() == 2; }));
   flames.cancel();
   attractors.cancel();
   EXPECT_FALSE(flames.busy());

@@ -1,8 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <fcntl.h>
+#include <poll.h>
 #include <signal.h>
 #include <spawn.h>
+#include <sys/inotify.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -153,13 +155,33 @@ void flyForward(const XvfbServer& server) {
 // Whether the window's title comes to say the scene has unsaved changes within 30 s (the title
 // changes with the frame after the edit, which a loaded machine draws late).
 bool titleSaysUnsaved(const XvfbServer& server) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (server.xdotool("search --onlyvisible --name 'unsaved'") != 0) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  }
-  return true;
+  return server.waitForTitle("unsaved", std::chrono::seconds(30));
 }
+
+// Sleeps until something in `folder` is written or created (inotify), or `limit` passes.
+class FolderWatch {
+ public:
+  explicit FolderWatch(const std::filesystem::path& folder) : fd_(inotify_init1(IN_CLOEXEC | IN_NONBLOCK)) {
+    if (fd_ >= 0) inotify_add_watch(fd_, folder.c_str(), IN_MODIFY | IN_CLOSE_WRITE | IN_CREATE | IN_MOVED_TO);
+  }
+  ~FolderWatch() {
+    if (fd_ >= 0) close(fd_);
+  }
+  FolderWatch(const FolderWatch&) = delete;
+  FolderWatch& operator=(const FolderWatch&) = delete;
+  // True when something happened (the events are drained), false after `limit`.
+  bool waitForChange(std::chrono::milliseconds limit) const {
+    pollfd watch{fd_, POLLIN, 0};
+    if (fd_ < 0 || poll(&watch, 1, static_cast<int>(limit.count())) <= 0) return false;
+    alignas(inotify_event) char events[4096];
+    while (read(fd_, events, sizeof events) > 0) {
+    }
+    return true;
+  }
+
+ private:
+  int fd_;
+};
 
 // Asks to quit and answers the prompt with `key` until the explorer ends: a key sent before a slow
 // frame has drawn the prompt only flies the camera, and a Ctrl+Q tap is now and then lost under a
@@ -242,16 +264,23 @@ TEST_F(Explorer, CtrlFTypesIntoTheAttractorFilterAndTheInputLogSaysWhen) {
     for (std::string line; std::getline(in, line);) last = line;
     return last;
   };
-  // A key may be lost while the suite loads the machine: each step is sent again until it shows.
+  // A key may be lost while the suite loads the machine: each step is sent again until it shows,
+  // the log read again whenever the explorer writes to it (3 s at most a try).
+  const FolderWatch logWritten(folder.path());
   const auto sendUntilLogged = [&](const std::string& keys, const std::string& text) {
+    const auto logged = [&] {
+      const std::string last = lastLogged();
+      return last.size() >= text.size() + 1 &&
+             last.compare(last.size() - text.size() - 1, std::string::npos, "\t" + text) == 0;
+    };
     for (int attempt = 0; attempt < 5; ++attempt) {
       if (server.xdotool(std::string(kFindWindow) + " windowfocus --sync " + keys) != 0) return false;
-      for (int i = 0; i < 30; ++i) {
-        const std::string last = lastLogged();
-        if (last.size() >= text.size() + 1 &&
-            last.compare(last.size() - text.size() - 1, std::string::npos, "\t" + text) == 0)
-          return true;
-        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+      const auto tryEnds = std::chrono::steady_clock::now() + std::chrono::seconds(3);
+      for (;;) {
+        if (logged()) return true;
+        const auto left =
+            std::chrono::duration_cast<std::chrono::milliseconds>(tryEnds - std::chrono::steady_clock::now());
+        if (left <= std::chrono::milliseconds(0) || !logWritten.waitForChange(left)) break;
       }
     }
     return false;
@@ -264,10 +293,6 @@ TEST_F(Explorer, CtrlFTypesIntoTheAttractorFilterAndTheInputLogSaysWhen) {
   ASSERT_TRUE(sendUntilLogged("key ctrl+a sleep 0.3 type lorenz", "lorenz"))
       << "Ctrl+A did not select the filter's text: " << lastLogged();
   ASSERT_EQ(server.xdotool(std::string(kFindWindow) + " windowfocus --sync key Return"), 0);
-  bool unsaved = false;
-  for (int i = 0; i < 100 && !unsaved; ++i) {
-    unsaved = server.xdotool("search --onlyvisible --name 'unsaved'") == 0;
-    if (!unsaved) std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  }
-  EXPECT_TRUE(unsaved) << "Enter did not take the filter's first match";
+  EXPECT_TRUE(server.waitForTitle("unsaved", std::chrono::seconds(10)))
+      << "Enter did not take the filter's first match";
 }

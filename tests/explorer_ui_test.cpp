@@ -25,6 +25,7 @@
 #include "key_codes.h"
 #include "preset_library.h"
 #include "test_support.h"
+#include "wait_for.h"
 
 using namespace voxflame;
 using voxflame::test::TemporaryFolder;
@@ -98,6 +99,33 @@ class ExplorerUi : public ::testing::Test {
       ImGui::NewFrame();
       app::explorerUiFrame(state);
       ImGui::Render();
+    }
+  }
+  // Runs frames until `done()` holds, and between them sleeps until a background job whose result
+  // a frame takes (search, analysis, flat render) has finished: a frame before that would change
+  // nothing. A few frames run while no job is running (a frame may start one, or take a finished
+  // one's result); false when that changes nothing, or after the timeout.
+  bool framesUntil(const std::function<bool()>& done, std::chrono::duration<double> timeout = test::kEventTimeout) {
+    const auto deadline = test::deadlineAfter(timeout);
+    int idleFrames = 0;
+    for (;;) {
+      frame();
+      if (done()) return true;
+      const std::chrono::duration<double> left = deadline - std::chrono::steady_clock::now();
+      if (left.count() <= 0.0) return false;
+      app::Services& jobs = state.services;
+      if (jobs.search.busy() && !jobs.search.ready()) {
+        jobs.search.waitUntilReady(left);
+      } else if (jobs.analysis.busy() && !jobs.analysis.ready()) {
+        jobs.analysis.waitUntilReady(left);
+      } else if (jobs.flatRender.busy() && !jobs.flatRender.ready()) {
+        jobs.flatRender.waitUntilReady(left);
+      } else if (++idleFrames > 3) {
+        return done();
+      } else {
+        continue;
+      }
+      idleFrames = 0;
     }
   }
   app::UiProbe::Rect item(const std::string& name) {
@@ -258,10 +286,7 @@ TEST_F(ExplorerUi, GridResolutionChangesOnlyWhenTheSliderIsReleased) {
 TEST_F(ExplorerUi, SearchFindsAChaoticSetAndTheHistoryGoesBackAndForward) {
   const auto start = state.document.scene.layers[0].params;
   click("Search (F3)");
-  for (int i = 0; i < 600 && state.panels.explore.visited.empty(); ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    frame();
-  }
+  framesUntil([&] { return !state.panels.explore.visited.empty(); });
   ASSERT_EQ(state.panels.explore.visited.size(), 2u) << state.panels.explore.searchMessage;
   const auto found = state.document.scene.layers[0].params;
   EXPECT_NE(found, start);
@@ -293,10 +318,7 @@ TEST_F(ExplorerUi, WhatSearchHandsBackRunsBoundedInTheLiveView) {
     }
     frame();
     pressKey(app::kKeyF3);
-    for (int i = 0; i < 1500 && state.services.search.busy(); ++i) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      frame();
-    }
+    ASSERT_TRUE(framesUntil([&] { return !state.services.search.busy(); })) << "seed " << seed;
     frame();
     ASSERT_EQ(state.panels.explore.searchMessage.rfind("found: ", 0), 0u) << state.panels.explore.searchMessage;
     ASSERT_NE(state.document.scene.layers[0].params, start.layers[0].params) << "seed " << seed;
@@ -318,10 +340,9 @@ TEST_F(ExplorerUi, ASearchShowsItsProgressAndCanBeCancelled) {
   frame();
   click("Search (F3)");
   ASSERT_TRUE(state.services.search.busy());
-  for (int i = 0; i < 200 && state.services.searchTried->load() < 3; ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    frame();
-  }
+  ASSERT_TRUE(state.services.searchProgress);
+  test::waitFor(*state.services.searchProgress, [&] { return state.services.searchTried->load() >= 3; });
+  frame();
   EXPECT_GE(state.services.searchTried->load(), 3) << "its tries are counted";
   frame();
   click("explore/Cancel search");
@@ -411,10 +432,10 @@ TEST_F(ExplorerUi, AParameterChangeBumpsTheGenerationOfTheSession) {
   // The new generation's volume arrives, tagged with the post that asked for it.
   core::PackedVolume volume;
   std::uint64_t reflects = 0;
-  for (int i = 0; i < 300 && reflects != session.status().requestedGeneration; ++i) {
+  test::waitForSession(session, [&] {
     session.takeVolumeIfNewer(volume, &reflects);
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
+    return reflects == session.status().requestedGeneration;
+  });
   EXPECT_EQ(reflects, session.status().requestedGeneration);
 }
 
@@ -620,8 +641,7 @@ TEST_F(ExplorerUi, PresetsPanelListsThumbnailsOpensAndSaves) {
   TemporaryFolder user;
   app::PresetLibrary library(test::sourcePath("presets"), user.path());
   state.services.presets = &library;
-  for (int i = 0; i < 500 && (library.busy() || !library.entries()); ++i)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(library.waitUntilIdle(60.0));
   ASSERT_TRUE(library.entries());
   // Stand-in texture names: the panel only passes them to ImGui.
   unsigned name = 1;
@@ -662,11 +682,13 @@ TEST_F(ExplorerUi, ExportPanelRendersInAChildWithProgressAndShowsThePath) {
   clickForRequest("export/Export now");
   ASSERT_TRUE(state.frame.requests.exportStill.has_value());
   app::startExport(state, job, *state.frame.requests.exportStill);
+  // A frame (which polls the child) whenever the child has news or ends.
   bool sawProgress = false;
-  for (int i = 0; i < 1500 && state.services.exportStatus.state != app::ExportState::Done &&
-                  state.services.exportStatus.state != app::ExportState::Failed;
-       ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  const auto deadline = test::deadlineAfter(std::chrono::seconds(120));
+  while (state.services.exportStatus.state != app::ExportState::Done &&
+         state.services.exportStatus.state != app::ExportState::Failed && std::chrono::steady_clock::now() < deadline) {
+    job.waitForChange(
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()));
     frame();
     sawProgress |= state.services.exportStatus.state == app::ExportState::Running;
   }
@@ -1025,10 +1047,7 @@ class ExplorerFlameUi : public ExplorerUi {
   }
   core::FlameGenome& flame() { return state.document.scene.layers[0].flame; }
   void waitForSearch(std::size_t visited) {
-    for (int i = 0; i < 1500 && state.panels.explore.visited.size() < visited; ++i) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-      frame();
-    }
+    framesUntil([&] { return state.panels.explore.visited.size() >= visited; });
   }
   static double rowLength(const core::Affine3& a, int row) {
     const auto r = static_cast<std::size_t>(row * 4);
@@ -1388,17 +1407,17 @@ long long processThreadTicks() {
 }
 
 // Takes volumes as the frame loop would (the session rests only once the last one is taken)
-// until `done` holds; false after `seconds`.
+// until `done` holds, checking again whenever the session has news; false after `seconds`.
 bool waitForSession(app::ExplorerSession& session, const std::function<bool(const app::SessionStatus&)>& done,
                     double seconds = 60.0) {
   core::PackedVolume volume;
-  const auto start = std::chrono::steady_clock::now();
-  while (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < seconds) {
-    session.takeVolumeIfNewer(volume);
-    if (done(session.status())) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  return false;
+  return test::waitForSession(
+      session,
+      [&] {
+        session.takeVolumeIfNewer(volume);
+        return done(session.status());
+      },
+      std::chrono::duration<double>(seconds));
 }
 
 }  // namespace
@@ -1439,17 +1458,19 @@ TEST_F(ExplorerUi, RefinementStopsAtTheNoiseTargetAndTheWorkersSleep) {
   EXPECT_EQ(app::convergenceText(rested).rfind("at rest: the noise reached its target", 0), 0u)
       << app::convergenceText(rested);
   const long long ticks = processThreadTicks();
+  // A fixed wait, as this proves that something does NOT happen: no points and no CPU at rest.
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
   EXPECT_EQ(session.status().stats.points, rested.stats.points) << "no points are added at rest";
   // Two busy workers would use about 120 ticks in that time; sleeping ones use none.
   EXPECT_LE(processThreadTicks() - ticks, 3) << "the threads sleep once the target is reached";
 
   session.setRefinement(0.0001, false);
-  ASSERT_TRUE(
-      waitForSession(session, [&](const app::SessionStatus& s) { return s.stats.points > rested.stats.points; }))
+  // The points grow as soon as the target is lowered, a moment before the status stops saying
+  // "converged": both are waited for.
+  ASSERT_TRUE(waitForSession(
+      session, [&](const app::SessionStatus& s) { return s.stats.points > rested.stats.points && !s.converged; }))
       << "a lower target starts refining again (rested at " << rested.pointsPerVoxel << " of "
       << rested.capPointsPerVoxel << " points per voxel)";
-  EXPECT_FALSE(session.status().converged);
   EXPECT_EQ(app::convergenceText(session.status()).rfind("refining: ", 0), 0u)
       << app::convergenceText(session.status());
 }
@@ -1509,6 +1530,7 @@ TEST_F(ExplorerUi, TheCapEndsAFlowThatNeverReachesItsTargetAndRefineFurtherKeeps
   EXPECT_LE(capped.pointsPerVoxel, capped.capPointsPerVoxel * 1.05) << "it stops at the cap";
   EXPECT_EQ(app::convergenceText(capped).rfind("at rest: the cap of ", 0), 0u) << app::convergenceText(capped);
   const long long ticks = processThreadTicks();
+  // A fixed wait, as this proves that something does NOT happen: no points and no CPU at the cap.
   std::this_thread::sleep_for(std::chrono::milliseconds(600));
   EXPECT_EQ(session.status().stats.points, capped.stats.points) << "no points are added at rest";
   EXPECT_LE(processThreadTicks() - ticks, 3) << "the threads sleep at the cap";
@@ -1585,10 +1607,7 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
   core::PackedVolume volume;
   auto postShown = [&](Take take) {
     std::uint64_t reflects = 0;
-    const auto start = std::chrono::steady_clock::now();
-    while (!((session.*take)(volume, &reflects) && reflects == 1) &&
-           std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    test::waitForSession(session, [&] { return (session.*take)(volume, &reflects) && reflects == 1; });
     return reflects;
   };
   EXPECT_EQ(postShown(&app::ExplorerSession::takeProxyIfNewer), 1u) << "the proxy shows the edit while the grid holds";
@@ -1599,13 +1618,12 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
   EXPECT_GE(static_cast<double>(volume.points), app::ExplorerSession::kProxyShownPointsPerVoxel * insideVoxels)
       << "no proxy volume is packed with too few points to be shown";
   const double dragBurst = app::ExplorerSession::kProxyDragPointsPerVoxel * insideVoxels * 0.9;
-  const auto burstStart = std::chrono::steady_clock::now();
-  while (static_cast<double>(volume.points) < dragBurst &&
-         std::chrono::steady_clock::now() - burstStart < std::chrono::seconds(30)) {
+  test::waitForSession(session, [&] {
     session.takeProxyIfNewer(volume);
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
+    return static_cast<double>(volume.points) >= dragBurst;
+  });
   EXPECT_GE(static_cast<double>(volume.points), dragBurst);
+  // A fixed wait, as this proves that something does NOT happen: the burst going on past the drag's.
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   session.takeProxyIfNewer(volume);
   EXPECT_LT(static_cast<double>(volume.points), 0.5 * app::ExplorerSession::kProxyPointsPerVoxel * insideVoxels)
@@ -1618,11 +1636,10 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
       << "once the drag ends the grid refines";
   EXPECT_EQ(postShown(&app::ExplorerSession::takeVolumeIfNewer), 1u)
       << "the pattern the drag stopped on, set on the grid after the drag";
-  const auto start = std::chrono::steady_clock::now();
-  while (!(session.takeProxyIfNewer(volume) &&
-           static_cast<double>(volume.points) >= app::ExplorerSession::kProxyPointsPerVoxel * insideVoxels * 0.99) &&
-         std::chrono::steady_clock::now() - start < std::chrono::seconds(30))
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  test::waitForSession(session, [&] {
+    return session.takeProxyIfNewer(volume) &&
+           static_cast<double>(volume.points) >= app::ExplorerSession::kProxyPointsPerVoxel * insideVoxels * 0.99;
+  });
   EXPECT_GE(static_cast<double>(volume.points), app::ExplorerSession::kProxyPointsPerVoxel * insideVoxels * 0.99)
       << "once the drag ends the proxy's burst goes on to the full count";
 }
@@ -1637,7 +1654,8 @@ TEST_F(ExplorerUi, AnOrbitHoldsEvenAGridWithoutAProxyAndAnEditEndsIt) {
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.stats.points > 100'000; }));
   session.setRefinement(0.0, false, true, true);
-  // The batches under way finish; then nothing more is added.
+  // The batches under way finish (the session says nothing of its workers going to sleep, so this
+  // waits long enough for them); then nothing more is added, which only a fixed wait can show.
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   const std::uint64_t held = session.status().stats.points;
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
@@ -1671,10 +1689,7 @@ TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) 
   EXPECT_EQ(app::convergenceText(status), "refining: 65 M points, noise 1.2%");
 
   // The Lyapunov analysis of the pattern runs in the background at first: that is not rest.
-  for (int i = 0; i < 600 && (state.services.analysis.busy() || state.services.search.busy()); ++i) {
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    frame();
-  }
+  ASSERT_TRUE(framesUntil([&] { return !state.services.analysis.busy() && !state.services.search.busy(); }));
   state.frame.session.resting = false;
   EXPECT_EQ(app::frameWaitSeconds(state, true, 10), 0.0) << "refining: every frame is drawn";
   state.frame.session.resting = true;
@@ -1698,12 +1713,7 @@ TEST_F(ExplorerFlameUi, FlatViewRendersTheFlameLayerInTheViewAtItsSizeAndFollows
   edit([&](core::Scene& scene) { scene.flat.scale = 20.0; });
   edit([&](core::Scene& scene) { scene.flat.quality = 2.0; });
   state.panels.flat.on = true;
-  const auto waitForImage = [&] {
-    for (int i = 0; i < 1500 && !state.frame.flatImagePending; ++i) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(10));
-      frame();
-    }
-  };
+  const auto waitForImage = [&] { framesUntil([&] { return state.frame.flatImagePending; }); };
   // As the window loop's upload does: the image becomes the texture drawn.
   const auto upload = [&] {
     state.frame.flatImagePending = false;

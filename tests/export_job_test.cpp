@@ -39,7 +39,8 @@ ExportRequest tinyRequest(const std::filesystem::path& output) {
   return request;
 }
 
-// Polls like the explorer does, once a "frame", until the job ends; every status seen goes to `seen`.
+// Polls like the explorer does until the job ends, a "frame" whenever the child has news (or has
+// ended); every status seen goes to `seen`.
 ExportStatus pollUntilEnded(ExportJob& job, std::vector<ExportStatus>* seen = nullptr, double timeoutSeconds = 120) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutSeconds);
   for (;;) {
@@ -48,8 +49,10 @@ ExportStatus pollUntilEnded(ExportJob& job, std::vector<ExportStatus>* seen = nu
     // poll() must never make a frame wait.
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - poll0).count(), 0.05);
     if (seen) seen->push_back(status);
-    if (status.state != ExportState::Running || std::chrono::steady_clock::now() > deadline) return status;
-    std::this_thread::sleep_for(std::chrono::milliseconds(16));
+    const auto left =
+        std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+    if (status.state != ExportState::Running || left <= std::chrono::milliseconds(0)) return status;
+    job.waitForChange(left);
   }
 }
 

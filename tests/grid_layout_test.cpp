@@ -27,8 +27,10 @@
 #include "core/packed_volume.h"
 #include "core/scene_io.h"
 #include "core/refinement/snapshot_publisher.h"
+#include "wait_for.h"
 
 using namespace voxflame::core;
+using voxflame::test::waitFor;
 
 namespace {
 
@@ -161,15 +163,10 @@ TEST(SnapshotPublisher, TwoPackedVolumesCycleBetweenThePublisherAndItsTaker) {
   const auto mask = fullMask(glm::ivec3(32));
   Accumulator accumulator(mask, 1);
   accumulator.setPattern(defaultScene().layers, 1);  // refines without end
+  EventCounter published;                            // before the publisher, which notifies it until it is joined
   SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(2));
-  auto takeNext = [&](PackedVolume& out) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-    while (!publisher.takeIfNewer(out)) {
-      if (std::chrono::steady_clock::now() > deadline) return false;
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
-    return true;
-  };
+  publisher.setObserver(&published);
+  auto takeNext = [&](PackedVolume& out) { return waitFor(published, [&] { return publisher.takeIfNewer(out); }); };
   PackedVolume shown;
   ASSERT_TRUE(takeNext(shown));
   const std::uint16_t* first = shown.density.data();
@@ -193,33 +190,41 @@ TEST(SnapshotPublisher, AFreshVolumeWaitsForItsTakerUntilThePatternChanges) {
   const auto mask = fullMask(glm::ivec3(64));
   Accumulator accumulator(mask, 1);
   accumulator.setPattern(defaultScene().layers, 1);  // refines without end
+  EventCounter published;
   SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(1));
+  publisher.setObserver(&published);
   PackedVolume volume;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (!publisher.takeIfNewer(volume) && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  ASSERT_TRUE(waitFor(published, [&] { return publisher.takeIfNewer(volume); }));
   ASSERT_GT(volume.points, 0u);
-  // Frames far apart next to a pack (timed here, so a sanitizer's slow one too), so a fresh volume
-  // is always ready by the next.
-  PackedVolume timed;
-  const auto packStart = std::chrono::steady_clock::now();
-  packVolume(accumulator, timed);
-  // The publisher waits kPackShare packs' time after a pack before it looks again.
-  const auto frameInterval = (SnapshotPublisher::kPackShare + 3) * (std::chrono::steady_clock::now() - packStart) +
-                             std::chrono::milliseconds(250);  // a pack on a loaded machine (ctest -j) takes longer
+  // A taker that comes late (a frame far apart): once a fresh volume is packed, the publisher
+  // looks at the newer points that keep landing, twice, and packs nothing over it; the taker then
+  // finds that volume. Waited for by the publisher's own looks, not by a guess at how long a pack
+  // takes (a sanitizer's are many times longer).
+  std::uint64_t taken = publisher.packs();
   for (int frame = 0; frame < 10; ++frame) {
-    std::this_thread::sleep_for(frameInterval);
+    std::uint64_t fresh = 0, looks = 0;
+    ASSERT_TRUE(waitFor(published,
+                        [&] {
+                          fresh = publisher.packs();
+                          looks = publisher.wakeUps();
+                          return fresh > taken;
+                        }))
+        << "frame " << frame << ": no fresh volume";
+    const std::uint64_t points = accumulator.version();
+    ASSERT_TRUE(waitFor(published, [&] { return publisher.wakeUps() >= looks + 2 && accumulator.version() > points; }));
+    EXPECT_EQ(publisher.packs(), fresh) << "frame " << frame << ": a fresh volume was packed over";
     const std::uint64_t before = volume.version;
-    ASSERT_TRUE(publisher.takeIfNewer(volume)) << "frame " << frame << ": the taker found a pack under way";
+    // The taker finds the lock free (the publisher only checks the volume under it, briefly).
+    ASSERT_TRUE(waitFor(published, [&] { return publisher.takeIfNewer(volume); })) << "frame " << frame;
     EXPECT_GT(volume.version, before);
+    taken = fresh;
   }
-  std::this_thread::sleep_for(std::chrono::milliseconds(40));  // a fresh volume of pattern 1 waits
+  // A fresh volume of pattern 1 waits for its taker; the new pattern's replaces it.
+  ASSERT_TRUE(waitFor(published, [&] { return publisher.packs() > taken; }));
   accumulator.setPattern(defaultScene().layers, 2);
-  const auto patternDeadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (!(publisher.takeIfNewer(volume) && volume.generation == accumulator.generation()) &&
-         std::chrono::steady_clock::now() < patternDeadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  EXPECT_EQ(volume.generation, accumulator.generation()) << "the new pattern's volume replaces the waiting one";
+  EXPECT_TRUE(waitFor(published, [&] {
+    return publisher.takeIfNewer(volume) && volume.generation == accumulator.generation();
+  })) << "the new pattern's volume replaces the waiting one";
 }
 
 // A 40³ grid inside everywhere, and one inside only in its lower half, both filled alike.
@@ -294,107 +299,84 @@ TEST(SnapshotPublisher, PacksNothingBelowTheMinimumWhileRefiningNorWhileHeld) {
   const auto mask = fullMask(glm::ivec3(32));
   Accumulator accumulator(mask, 1);
   accumulator.setTargetPoints(200'000);
+  EventCounter looked;
   SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(2));
+  publisher.setObserver(&looked);
   publisher.setHeld(true);
   accumulator.setPattern(defaultScene().layers, 1);
   ASSERT_TRUE(accumulator.waitUntilDone(60.0));
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  // Asked to look at the finished grid, the held publisher does, and packs nothing.
+  const std::uint64_t looksBefore = publisher.wakeUps();
+  publisher.requestNow();
+  ASSERT_TRUE(waitFor(looked, [&] { return publisher.wakeUps() > looksBefore; }));
   PackedVolume volume;
   EXPECT_FALSE(publisher.takeIfNewer(volume)) << "held";
+  EXPECT_EQ(publisher.packs(), 0u) << "held";
   publisher.setMinimumPoints(1'000'000'000);
   publisher.setHeld(false);
-  auto takeWithin = [&](std::chrono::milliseconds limit) {
-    const auto deadline = std::chrono::steady_clock::now() + limit;
-    while (std::chrono::steady_clock::now() < deadline) {
-      if (publisher.takeIfNewer(volume)) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
-    }
-    return false;
-  };
-  ASSERT_TRUE(takeWithin(std::chrono::seconds(30))) << "a grid that stopped below the minimum is packed";
+  auto take = [&] { return waitFor(looked, [&] { return publisher.takeIfNewer(volume); }); };
+  ASSERT_TRUE(take()) << "a grid that stopped below the minimum is packed";
   EXPECT_GE(volume.points, 200'000u);
 
   accumulator.setTargetPoints(0);  // refine without end, far below the minimum for a long while
+  const std::uint64_t packsBefore = publisher.packs();
   accumulator.setPattern(defaultScene().layers, 2);
-  EXPECT_FALSE(takeWithin(std::chrono::milliseconds(300))) << "a refining grid below the minimum is not packed";
+  // Two looks at the new pattern's points, each of which finds them below the minimum.
+  ASSERT_TRUE(waitFor(looked, [&] { return accumulator.stats().points > 0; }));
+  const std::uint64_t looksWithPoints = publisher.wakeUps();
+  ASSERT_TRUE(waitFor(looked, [&] { return publisher.wakeUps() >= looksWithPoints + 2; }));
+  EXPECT_FALSE(publisher.takeIfNewer(volume)) << "a refining grid below the minimum is not packed";
+  EXPECT_EQ(publisher.packs(), packsBefore) << "a refining grid below the minimum is not packed";
   publisher.setMinimumPoints(1);
-  EXPECT_TRUE(takeWithin(std::chrono::seconds(30)));
+  EXPECT_TRUE(take());
   EXPECT_EQ(volume.generation, accumulator.generation());
-}
-
-// A held accumulator starts no batch, even for a pattern set while it is held; released, it refines.
-TEST(Accumulator, AHeldAccumulatorAddsNothingUntilReleased) {
-  const auto mask = fullMask(glm::ivec3(24));
-  Accumulator accumulator(mask, 2);
-  accumulator.setHeld(true);
-  accumulator.setPattern(defaultScene().layers, 1);
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
-  EXPECT_EQ(accumulator.stats().points, 0u);
-  EXPECT_EQ(accumulator.stats().iterations, 0u);
-  accumulator.setTargetPoints(100'000);
-  accumulator.setHeld(false);
-  ASSERT_TRUE(accumulator.waitUntilDone(60.0));
-  EXPECT_GE(accumulator.stats().points, 100'000u);
 }
 
 // An accumulator that rests (its target reached, or held) never wakes its publisher: no timer
 // runs. Progress wakes it, a request too.
 TEST(SnapshotPublisher, MakesNoWakeUpsWhileItsAccumulatorRests) {
+  // Two accumulators, so that one window shows both kinds of rest: one that reached its target,
+  // and one held with work left.
   const auto mask = fullMask(glm::ivec3(32));
-  Accumulator accumulator(mask, 2);
-  accumulator.setTargetPoints(100'000);
-  SnapshotPublisher publisher(accumulator, std::chrono::milliseconds(1));
-  accumulator.setPattern(defaultScene().layers, 1);
-  ASSERT_TRUE(accumulator.waitUntilDone(60.0));
-  PackedVolume volume;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (!publisher.caughtUp() && std::chrono::steady_clock::now() < deadline) {
-    publisher.takeIfNewer(volume);
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  Accumulator resting(mask, 2), held(mask, 2);
+  EventCounter looked;
+  SnapshotPublisher restingPublisher(resting, std::chrono::milliseconds(1)),
+      heldPublisher(held, std::chrono::milliseconds(1));
+  for (SnapshotPublisher* publisher : {&restingPublisher, &heldPublisher}) publisher->setObserver(&looked);
+  for (Accumulator* accumulator : {&resting, &held}) {
+    accumulator->setTargetPoints(100'000);
+    accumulator->setPattern(defaultScene().layers, 1);
   }
-  ASSERT_TRUE(publisher.caughtUp());
+  ASSERT_TRUE(resting.waitUntilDone(60.0));
+  ASSERT_TRUE(held.waitUntilDone(60.0));
+  PackedVolume volume;
+  ASSERT_TRUE(waitFor(looked, [&] {
+    restingPublisher.takeIfNewer(volume);
+    return restingPublisher.caughtUp();
+  }));
   EXPECT_GE(volume.points, 100'000u);
-  const std::uint64_t atRest = publisher.wakeUps();
+  const std::uint64_t atRest = restingPublisher.wakeUps();
   EXPECT_GT(atRest, 0u);
+
+  // Held with work left (the hold first, so no worker starts a batch for the new target): whatever
+  // that stirred up has been looked at once the publisher answers a request made after it (a
+  // request wakes it). From then on nothing may wake it.
+  held.setHeld(true);
+  held.setTargetPoints(0);
+  const std::uint64_t beforeRequest = heldPublisher.wakeUps();
+  heldPublisher.requestNow();
+  ASSERT_TRUE(waitFor(looked, [&] { return heldPublisher.wakeUps() > beforeRequest; })) << "a request wakes it";
+  const std::uint64_t whileHeld = heldPublisher.wakeUps();
+  // A fixed wait, as this proves that something does NOT happen: a publisher on a timer of its
+  // 1 ms interval would wake hundreds of times within it.
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  EXPECT_EQ(publisher.wakeUps(), atRest) << "woken while the accumulator had reached its target";
-
-  // Held with work left: the hold itself is news (a wake-up or two), then nothing.
-  accumulator.setHeld(true);
-  accumulator.setTargetPoints(0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  const std::uint64_t held = publisher.wakeUps();
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  EXPECT_EQ(publisher.wakeUps(), held) << "woken while the accumulator was held";
-
-  publisher.requestNow();
-  const auto requestDeadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-  while (publisher.wakeUps() == held && std::chrono::steady_clock::now() < requestDeadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(1));
-  EXPECT_GT(publisher.wakeUps(), held) << "a request wakes it";
+  EXPECT_EQ(restingPublisher.wakeUps(), atRest) << "woken while the accumulator had reached its target";
+  EXPECT_EQ(heldPublisher.wakeUps(), whileHeld) << "woken while the accumulator was held";
 }
-
-namespace {
-
-// Sleeps on the accumulator's progress signal until `ready` (which must read only atomics) holds;
-// false when `timeout` passes first.
-template <class Ready>
-bool waitForProgress(const Accumulator& accumulator, std::chrono::milliseconds timeout, Ready ready) {
-  std::stop_source expired;
-  std::jthread timer([&expired, timeout](std::stop_token waitEnded) {
-    std::mutex mutex;
-    std::condition_variable_any never;
-    std::unique_lock lock(mutex);
-    if (!never.wait_for(lock, waitEnded, timeout, [] { return false; }) && !waitEnded.stop_requested())
-      expired.request_stop();
-  });
-  return accumulator.progress().wait(expired.get_token(), ready);
-}
-
-}  // namespace
 
 // The first batch after a pause is packed as soon as it lands, not when a timer next fires: the
-// interval (long here) only spaces packs while points keep coming.
+// interval (long here) only spaces packs while points keep coming. On the way: a held accumulator
+// starts no batch, even for a pattern set while it is held; released, it refines.
 TEST(SnapshotPublisher, PicksUpABatchPromptlyWithoutATimer) {
   using namespace std::chrono_literals;
   const auto mask = fullMask(glm::ivec3(32));
@@ -403,24 +385,31 @@ TEST(SnapshotPublisher, PicksUpABatchPromptlyWithoutATimer) {
   accumulator.setTargetPoints(50'000);
   accumulator.setPattern(defaultScene().layers, 1);
   const auto interval = 2s;
+  EventCounter looked;
   SnapshotPublisher publisher(accumulator, interval);
+  publisher.setObserver(&looked);
   // The publisher looks once, finds a held pattern without points (nothing to pack), and sleeps.
   PackedVolume volume;
-  auto deadline = std::chrono::steady_clock::now() + 30s;
-  while (publisher.wakeUps() == 0 && std::chrono::steady_clock::now() < deadline) std::this_thread::sleep_for(1ms);
-  ASSERT_GT(publisher.wakeUps(), 0u);
-  std::this_thread::sleep_for(interval + 100ms);  // a timer of the interval would fire well after the release
+  ASSERT_TRUE(waitFor(looked, [&] { return publisher.wakeUps() > 0; }));
+  // A fixed wait, as this tests a timer: the publisher's pause of one interval after a look runs
+  // out, so what follows is the first batch after a pause (a timer of the interval would fire
+  // well after the release).
+  std::this_thread::sleep_for(interval + 100ms);
   EXPECT_FALSE(publisher.takeIfNewer(volume)) << "a held grid without points was packed";
+  EXPECT_EQ(accumulator.stats().points, 0u) << "a held accumulator added points";
+  EXPECT_EQ(accumulator.stats().iterations, 0u) << "a held accumulator ran a batch";
 
   const std::uint64_t before = accumulator.version();
   accumulator.setHeld(false);
-  ASSERT_TRUE(waitForProgress(accumulator, 30s, [&] { return accumulator.version() > before; }));
+  ASSERT_TRUE(waitFor(accumulator.progress(), [&] { return accumulator.version() > before; }));
   const auto landed = std::chrono::steady_clock::now();
   ASSERT_GT(accumulator.stats().points, 0u);
-  while (!publisher.takeIfNewer(volume) && std::chrono::steady_clock::now() < landed + interval)
-    std::this_thread::sleep_for(1ms);
+  waitFor(
+      looked, [&] { return publisher.takeIfNewer(volume); }, interval);
   EXPECT_GT(volume.points, 0u);
   EXPECT_LT(std::chrono::steady_clock::now() - landed, interval / 2) << "the batch waited for a timer";
+  ASSERT_TRUE(accumulator.waitUntilDone(60.0));
+  EXPECT_GE(accumulator.stats().points, 50'000u) << "released, it refines to its target";
 }
 
 // Two accumulators sharing one core (the explorer's grid and its proxy) both refine to their
@@ -430,7 +419,9 @@ TEST(Accumulator, AccumulatorsSharingACoreBudgetBothFinish) {
   const auto mask = fullMask(glm::ivec3(24));
   Accumulator first(mask, 2, cores), second(mask, 2, cores);
   EXPECT_EQ(first.coreBudget(), cores.get());
+  EventCounter looked;
   SnapshotPublisher publisher(first, std::chrono::milliseconds(1));
+  publisher.setObserver(&looked);
   for (Accumulator* accumulator : {&first, &second}) {
     accumulator->setTargetPoints(200'000);
     accumulator->setPattern(defaultScene().layers, 3);
@@ -440,12 +431,10 @@ TEST(Accumulator, AccumulatorsSharingACoreBudgetBothFinish) {
   EXPECT_GE(first.stats().points, 200'000u);
   EXPECT_GE(second.stats().points, 200'000u);
   PackedVolume volume;
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
-  while (!publisher.caughtUp() && std::chrono::steady_clock::now() < deadline) {
+  EXPECT_TRUE(waitFor(looked, [&] {
     publisher.takeIfNewer(volume);
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  EXPECT_TRUE(publisher.caughtUp());
+    return publisher.caughtUp();
+  }));
   ASSERT_TRUE(cores->try_acquire()) << "a batch or a pack kept its core";
   EXPECT_FALSE(cores->try_acquire());
   cores->release();

@@ -25,6 +25,7 @@
 #include "pipeline.h"
 #include "preset_library.h"
 #include "test_support.h"
+#include "wait_for.h"
 
 using namespace voxflame;
 using voxflame::test::TemporaryFolder;
@@ -103,15 +104,26 @@ class LiveViewTest : public ::testing::Test {
         return;
     }
   }
+  // Runs frames as the window loop does until `done(frame)` holds: while the view has work of its
+  // own (samples to march, an upload, the shadow or points thread) one frame follows another; once
+  // it rests, the next frame waits for the session's news (a volume packed, a status changed), as
+  // anything else would draw the same picture. False after the timeout.
+  bool framesUntil(app::LiveView& view, const std::function<bool(const app::LiveFrame&)>& done,
+                   std::chrono::duration<double> timeout = test::kEventTimeout) {
+    const auto deadline = test::deadlineAfter(timeout);
+    for (;;) {
+      const std::uint64_t seen = session.news();
+      if (done(frame(view))) return true;
+      const std::chrono::duration<double> left = deadline - std::chrono::steady_clock::now();
+      if (left.count() <= 0.0) return false;
+      if (view.resting()) session.waitForNews(seen, left.count());
+    }
+  }
   // Runs frames until a volume of the newest post is on screen; false after 60 s.
   bool runUntilShown(app::LiveView& view) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (std::chrono::steady_clock::now() < deadline) {
-      const app::LiveFrame shown = frame(view);
-      if (shown.newVolumeShown && shown.shownPost == session.status().requestedGeneration) return true;
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-    return false;
+    return framesUntil(view, [&](const app::LiveFrame& shown) {
+      return shown.newVolumeShown && shown.shownPost == session.status().requestedGeneration;
+    });
   }
 };
 
@@ -123,12 +135,8 @@ TEST_F(LiveViewTest, AnEditReachesTheScreenTaggedWithItsPost) {
   ASSERT_TRUE(runUntilShown(view));
   EXPECT_TRUE(view.hasVolume());
   // The first snapshot comes as the pattern starts; a later one has points to show.
-  const auto shownAt = std::chrono::steady_clock::now();
-  while (std::chrono::steady_clock::now() - shownAt < std::chrono::milliseconds(1500)) {
-    frame(view);
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  }
-  EXPECT_GT(canvas.brightest(), 40) << "the pattern is drawn into the framebuffer given";
+  EXPECT_TRUE(framesUntil(view, [&](const app::LiveFrame&) { return canvas.brightest() > 40; }))
+      << "the pattern is drawn into the framebuffer given";
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 
   // A parameter edit: posted by the next frame, shown later with the edit-to-frame metrics.
@@ -159,7 +167,6 @@ TEST_F(LiveViewTest, LiveFramesReadNothingBack) {
     if (i == 8) edit([&](core::Scene& scene) { scene.render.meshDisplay = core::MeshDisplay::Silhouette; });
     if (i == 10) edit([&](core::Scene& scene) { scene.tone.gamma += 0.3; });
     drawn += frame(view).volumeDrawn ? 1 : 0;
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   EXPECT_GT(drawn, 0);
   const std::uint64_t checked = before + static_cast<std::uint64_t>(view.settledChecks() - checksBefore);
@@ -174,11 +181,7 @@ TEST_F(LiveViewTest, SamplesRestartForTheCameraButNotForTheTone) {
   ASSERT_TRUE(runUntilShown(view));
   // Frames until the still view has added up a few samples: the shadow job landing, a fresh
   // snapshot or the frame budget settling may each restart the average once on the way.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (state.frame.samples < 3 && std::chrono::steady_clock::now() < deadline) {
-    frame(view);
-    std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  }
+  framesUntil(view, [&](const app::LiveFrame&) { return state.frame.samples >= 3; });
   const int refined = state.frame.samples;
   ASSERT_GT(refined, 1);
   edit([&](core::Scene& scene) { scene.tone.gamma += 0.5; });
@@ -339,15 +342,12 @@ TEST_F(LiveViewTest, TheFirstEditOfADragLeavesTheLargeGridHeld) {
   edit([&](core::Scene& scene) { scene.layers[0].params[0] *= 1.02; });
   ASSERT_TRUE(frame(view).patternPosted);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
+  // A fixed wait, as this proves that something does NOT happen: the large grid starting later on.
   std::this_thread::sleep_for(std::chrono::milliseconds(200));
   EXPECT_EQ(session.status().stats.generation, generation) << "the large grid never started on the drag's edit";
 
   // The next frame without an edit ends the drag, and the large grid takes the pattern.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-  while (session.status().stats.generation == generation && std::chrono::steady_clock::now() < deadline) {
-    frame(view);
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
+  framesUntil(view, [&](const app::LiveFrame&) { return session.status().stats.generation != generation; });
   EXPECT_GT(session.status().stats.generation, generation) << "the grid refines the pattern the drag stopped on";
   EXPECT_TRUE(runUntilShown(view));
 }
@@ -360,16 +360,20 @@ TEST_F(LiveViewTest, SlowFramesWhileTheCameraMovesLowerTheMarchScale) {
   ASSERT_TRUE(runUntilShown(view));
   for (int i = 0; i < app::FrameBudget::kQuietFrames + 1; ++i) frame(view);
   EXPECT_EQ(state.frame.metrics.marchScale, 1.0f) << "a still view is marched at the preview scale";
-  // An orbit whose frames take far longer than the budget (a slow machine, played by a sleep).
+  // An orbit whose frames take far longer than the budget (a slow machine: each is taken to cost
+  // 60 ms more, which the frame after it measures).
   for (int i = 0; i < 4; ++i) {
     edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 3.0; });
     frame(view);
-    std::this_thread::sleep_for(std::chrono::milliseconds(60));
+    view.addFrameCostForTesting(60.0);
   }
   EXPECT_LT(state.frame.metrics.marchScale, 0.5f);
   EXPECT_GE(state.frame.metrics.marchScale, app::FrameBudget::kDefaultFloor);
-  // Let go: the still view goes back to the preview scale and refines.
-  for (int i = 0; i < app::FrameBudget::kQuietFrames + 2; ++i) frame(view);
+  // Let go: the still view goes back to the preview scale and refines (its first frame measures
+  // the orbit's last).
+  frame(view);
+  view.addFrameCostForTesting(0.0);
+  for (int i = 1; i < app::FrameBudget::kQuietFrames + 2; ++i) frame(view);
   EXPECT_EQ(state.frame.metrics.marchScale, 1.0f);
   // Samples add up there (a fresh snapshot of the volume may restart them once in a while).
   for (int i = 0; i < 30 && state.frame.samples <= 1; ++i) frame(view);
@@ -405,7 +409,7 @@ TEST_F(LiveViewTest, PlaybackFramesWithinTheirBudgetGoSharperThanThePreviewScale
   for (int i = 0; i < 6; ++i) {
     edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 3.0; });
     frame(view);
-    std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    view.addFrameCostForTesting(40.0);  // a slow machine, as above
   }
   EXPECT_LT(state.frame.metrics.marchScale, 0.5f);
 }
@@ -537,11 +541,10 @@ TEST_F(LiveViewTest, AnExportFramesWhatTheViewShows) {
     return lit;
   };
   ASSERT_TRUE(runUntilShown(view));
-  while (!session.status().resting || session.status().stats.points < 2'000'000) {
-    frame(view);
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    if (session.status().stats.points > 20'000'000) break;
-  }
+  framesUntil(view, [&](const app::LiveFrame&) {
+    const app::SessionStatus status = session.status();
+    return (status.resting && status.stats.points >= 2'000'000) || status.stats.points > 20'000'000;
+  });
 
   // The view's pictures first: a still render makes a GL context of its own current.
   const std::vector<bool> same = viewLit(rect.z, rect.w);
@@ -590,14 +593,19 @@ TEST_F(LiveViewTest, AStillViewMarchesAtFullResolutionWhateverThePreviewScale) {
   EXPECT_GE(state.frame.samples, 2);
 }
 
-// Runs the view and the session until both rest (as the window loop sees it); false after 120 s.
+// Runs the view and the session until both rest (as the window loop sees it) for three frames in
+// a row; false after 120 s.
 bool runUntilRest(app::ExplorerSession& session, app::LiveView& view, const std::function<void()>& frame) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  const auto deadline = test::deadlineAfter(std::chrono::seconds(120));
   int restingFrames = 0;
   while (std::chrono::steady_clock::now() < deadline && restingFrames < 3) {
+    const std::uint64_t seen = session.news();
     frame();
-    restingFrames = view.resting() && session.status().resting ? restingFrames + 1 : 0;
-    if (restingFrames == 0) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    const bool sessionRests = session.status().resting;
+    restingFrames = view.resting() && sessionRests ? restingFrames + 1 : 0;
+    // A view at rest beside a session still at work: nothing to draw until the session has news.
+    if (view.resting() && !sessionRests)
+      session.waitForNews(seen, std::chrono::duration<double>(deadline - std::chrono::steady_clock::now()).count());
   }
   return restingFrames >= 3;
 }
@@ -651,13 +659,12 @@ TEST_F(LiveViewTest, APointsViewBuildsUpRestartsWhenTheCameraMovesAndAtRestIsAnE
   bool buildingShown = false;
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
   while (std::chrono::steady_clock::now() < deadline && !view.resting()) {
-    frame(view);
+    frame(view);  // the view works (its points thread): frames follow each other
     const std::string status = app::convergenceText(session.status(), state.frame.view);
     if (status.rfind("points: ", 0) == 0) buildingShown = true;
     if (!state.frame.view.resting) {
       EXPECT_NE(status.rfind("at rest", 0), 0u) << "at rest while the view still works";
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
   }
   EXPECT_TRUE(buildingShown) << "the status line shows the points coming in";
   EXPECT_TRUE(state.frame.view.pointsShown);

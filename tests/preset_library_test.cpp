@@ -288,12 +288,7 @@ TEST(PresetLibrary, BackgroundScanDecodesThumbnailsAndSeesNewPresets) {
   std::ofstream(shipped / "gallery" / "beta.png") << "broken picture";
 
   PresetLibrary library(shipped, user);
-  const auto waitIdle = [&] {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    while (library.busy() && std::chrono::steady_clock::now() < deadline)
-      std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    return !library.busy();
-  };
+  const auto waitIdle = [&] { return library.waitUntilIdle(60.0); };
   ASSERT_TRUE(waitIdle());
   auto entries = library.entries();
   ASSERT_EQ(entries->size(), 2u);

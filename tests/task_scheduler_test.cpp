@@ -42,7 +42,9 @@ TEST(TaskScheduler, ACapLimitsTheThreadsOfOneLoop) {
     int seen = most.load();
     while (now > seen && !most.compare_exchange_weak(seen, now)) {
     }
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));  // long enough for others to start
+    // Work that takes a while (not a wait for anything), so that a loop breaking its cap would
+    // have more bodies running at once.
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
     running.fetch_sub(1);
   });
   EXPECT_LE(most.load(), 2);

@@ -226,6 +226,13 @@ bool ExplorerSession::waitUntilApplied(double timeoutSeconds) {
                                  [&] { return applied_ == requested_ && !working_; });
 }
 
+bool ExplorerSession::waitForNews(std::uint64_t seen, double timeoutSeconds) const {
+  const auto deadline =
+      std::chrono::steady_clock::now() +
+      std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(timeoutSeconds));
+  return news_.waitPast(seen, deadline);
+}
+
 void ExplorerSession::setRefinement(double noiseTarget, bool paused, bool interacting, bool viewMoving,
                                     std::uint64_t gridPointCap) {
   {
@@ -419,6 +426,7 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
             steer(*engine);
           }
         }
+        news_.notify();  // the status may have changed
         continue;
       }
       scene = std::move(*pending_);
@@ -468,6 +476,8 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
           old.reset();
           auto engine =
               std::make_unique<Engine>(key, std::move(mask), std::move(proxyMask), threads_, snapshotInterval_);
+          engine->publisher.setObserver(&news_);
+          if (engine->proxy) engine->proxy->publisher.setObserver(&news_);
           std::lock_guard lock(mutex_);
           engine_ = std::move(engine);
           newMesh_ = std::move(mesh);
@@ -521,6 +531,7 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
     applied_ = post;
     working_ = false;
     appliedSignal_.notify_all();
+    news_.notify();
   }
 }
 

@@ -22,6 +22,7 @@
 #include "core/refinement/accumulator.h"
 #include "core/mesh.h"
 #include "core/packed_volume.h"
+#include "core/progress_signal.h"
 #include "core/scene.h"
 #include "core/refinement/snapshot_publisher.h"
 
@@ -118,6 +119,13 @@ class ExplorerSession {
   void clearError();
   // Blocks until the posted scene is applied (for tests and scripted runs); false on timeout.
   bool waitUntilApplied(double timeoutSeconds);
+  // Counts what the session's threads did that status() or the take calls could show: a look or a
+  // pack of either grid's snapshot thread, a post applied, a steer. A caller that waits for the
+  // session (tests, scripted runs; the window loop never waits) notes news(), checks what it waits
+  // for, then sleeps in waitForNews until the count moves past what it noted (false once
+  // `timeoutSeconds` pass).
+  std::uint64_t news() const { return news_.count(); }
+  bool waitForNews(std::uint64_t seen, double timeoutSeconds) const;
 
   // Refinement stops once the noise estimate reaches noiseTarget (a fraction; 0: refine until
   // the next edit), and is held while `paused` (an export runs: the two would fight over the
@@ -178,6 +186,8 @@ class ExplorerSession {
 
   const int threads_;
   const std::chrono::milliseconds snapshotInterval_;
+  // Before the engine: its snapshot threads notify it until they are joined.
+  mutable core::EventCounter news_;
 
   mutable std::mutex mutex_;  // guards everything below except the control thread's locals
   std::condition_variable_any wake_;

@@ -18,6 +18,7 @@
 
 #include "core/image_io.h"
 #include "core/lyapunov.h"
+#include "core/progress_signal.h"
 #include "core/scene.h"
 #include "document.h"
 #include "explorer_session.h"
@@ -186,6 +187,9 @@ struct Services {
   // itself while it finds nothing).
   std::shared_ptr<std::atomic<int>> searchTried;
   std::shared_ptr<std::atomic<double>> searchStrength;
+  // Notified with each try counted in searchTried: what a caller waiting for the search's progress
+  // (a test) sleeps on; the frames only read the count.
+  std::shared_ptr<core::ProgressSignal> searchProgress;
   // The Lyapunov spectrum of layer 0, analysed off the main thread whenever the pattern changes.
   BackgroundJob<core::OrbitAnalysis> analysis;
   BackgroundJob<core::ImageRGBA> flatRender;  // the flat view's image

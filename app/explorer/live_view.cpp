@@ -411,7 +411,8 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
   const int width = place.z, height = place.w;
   const auto frameStart = std::chrono::steady_clock::now();
   if (lastFrameStart_) {
-    const double lastFrameMs = std::chrono::duration<double, std::milli>(frameStart - *lastFrameStart_).count();
+    const double lastFrameMs =
+        std::chrono::duration<double, std::milli>(frameStart - *lastFrameStart_).count() + testFrameMs_;
     if (lastInBands_) {
       bands_.frameMeasured(lastFrameMs, std::max(0.0, marchMs_), lastFinishMs_);
       // A frame that marched a few bands says little of what a drag's first frame, which marches

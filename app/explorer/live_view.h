@@ -121,6 +121,9 @@ class LiveView {
   const RefineBands& refineBands() const { return bands_; }
   // Tests play a slow GPU with this: each row marched in bands costs this much more time.
   void addMarchCostForTesting(double msPerRow) { testMsPerRow_ = msPerRow; }
+  // And a slow machine with this: every frame is taken to have cost this much more time than it
+  // did (the frame budget's measure), without anyone waiting for it.
+  void addFrameCostForTesting(double ms) { testFrameMs_ = ms; }
 
  private:
   void takeVolume();
@@ -158,6 +161,7 @@ class LiveView {
   bool lastInBands_ = false;   // the last frame refined a still view in bands
   double lastFinishMs_ = 0.0;  // ... and the finish of a new picture it ran (0: none)
   double testMsPerRow_ = 0.0;
+  double testFrameMs_ = 0.0;
   // The volume picture stopped changing visibly: no more samples until the view or volume changes.
   bool settled_ = false;
   std::vector<std::uint8_t> settledReference_;  // the picture shown at the last check (RGBA8)

@@ -175,6 +175,7 @@ std::vector<SearchResult> searchChaos(const OrbitSpec& base, const SearchOptions
     const double jitter = (candidate % 2 == 0 || !options.jitterStart) ? 0.0 : 0.5;
     spec.start += jitter * glm::dvec3(rng.symmetric(), rng.symmetric(), rng.symmetric());
     if (options.tried) options.tried->fetch_add(1, std::memory_order_relaxed);
+    if (options.triedSignal) options.triedSignal->notify();
     const OrbitAnalysis screen = analyseOrbit(spec, options.screen);
     if (screen.verdict != OrbitVerdict::Chaotic) continue;
     if (screen.smallestExtent() < options.minExtentRatio * screen.largestExtent()) continue;

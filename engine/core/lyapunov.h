@@ -18,6 +18,7 @@
 #include <glm/vec3.hpp>
 
 #include "attractor.h"
+#include "progress_signal.h"
 #include "scene.h"
 
 namespace voxflame::core {
@@ -85,6 +86,7 @@ struct SearchOptions {
   // seed), up to this, `maxCandidates` tries at each strength, before it gives up.
   double widenTo = 0.0;
   std::atomic<int>* tried = nullptr;           // counts the candidates as they are tried (progress), if set
+  ProgressSignal* triedSignal = nullptr;       // notified after each count of `tried`, if set (its waiters)
   std::atomic<double>* strengthNow = nullptr;  // the strength being tried now, if set
   // Half the candidates start from a point near the base's start (basins move with the
   // parameters), and a result says where. A caller whose orbits always start at the base's start

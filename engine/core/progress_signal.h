@@ -8,7 +8,9 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
+#include <cstdint>
 #include <mutex>
 #include <stop_token>
 
@@ -38,11 +40,43 @@ class ProgressSignal {
     waiters_.fetch_sub(1, std::memory_order_relaxed);
     return result;
   }
+  // The same with a deadline instead of a stop token: false when it passes before ready() holds.
+  // For tests and scripted runs, whose waits must fail rather than hang.
+  template <class Ready>
+  bool waitUntil(std::chrono::steady_clock::time_point deadline, Ready ready) {
+    std::unique_lock lock(mutex_);
+    waiters_.fetch_add(1, std::memory_order_relaxed);
+    std::atomic_thread_fence(std::memory_order_seq_cst);
+    const bool result = wake_.wait_until(lock, deadline, ready);
+    waiters_.fetch_sub(1, std::memory_order_relaxed);
+    return result;
+  }
 
  private:
   std::atomic<int> waiters_{0};
   std::mutex mutex_;
   std::condition_variable_any wake_;
+};
+
+// A ProgressSignal that counts its notifications, for waiters that have no predicate of their own:
+// one remembers the count it saw, looks at what it waits for, and sleeps until something happens
+// after that (tests and scripted runs waiting on a snapshot thread or a session, see
+// SnapshotPublisher::setObserver).
+class EventCounter {
+ public:
+  void notify() {
+    count_.fetch_add(1, std::memory_order_seq_cst);
+    signal_.notify();
+  }
+  std::uint64_t count() const { return count_.load(std::memory_order_seq_cst); }
+  // Returns once the count differs from `seen` (true), or at `deadline` (false).
+  bool waitPast(std::uint64_t seen, std::chrono::steady_clock::time_point deadline) {
+    return signal_.waitUntil(deadline, [&] { return count() != seen; });
+  }
+
+ private:
+  std::atomic<std::uint64_t> count_{0};
+  ProgressSignal signal_;
 };
 
 }  // namespace voxflame::core

@@ -190,11 +190,13 @@ void startSearch(const Document& document, ExplorePanelState& explore, Services&
     };
     services.searchTried = std::make_shared<std::atomic<int>>(0);
     services.searchStrength = std::make_shared<std::atomic<double>>(strength);
+    services.searchProgress = std::make_shared<core::ProgressSignal>();
     explore.searchMessage = "searching…";
-    services.search.start([layer, spec, options, tried = services.searchTried,
-                           strengthNow = services.searchStrength](std::stop_token stop) mutable {
+    services.search.start([layer, spec, options, tried = services.searchTried, strengthNow = services.searchStrength,
+                           progress = services.searchProgress](std::stop_token stop) mutable {
       options.stop = stop;
       options.tried = tried.get();
+      options.triedSignal = progress.get();
       options.strengthNow = strengthNow.get();
       Outcome outcome;
       const auto results = core::searchChaos(spec, options);

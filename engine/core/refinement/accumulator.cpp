@@ -642,6 +642,12 @@ bool Accumulator::waitUntilDone(double timeoutSeconds) {
                               [&] { return !active_.load() || allStreamsDone(targetPoints_.load()); });
 }
 
+bool Accumulator::waitUntilIdle(double timeoutSeconds) {
+  std::unique_lock lock(wakeMutex_);
+  return doneSignal_.wait_for(lock, std::chrono::duration<double>(timeoutSeconds),
+                              [&] { return sleepingWorkers_ == threadCount(); });
+}
+
 bool Accumulator::streamDone(int stream, std::uint64_t target) const {
   const std::uint64_t quota = (target + kStreams - 1) / kStreams;
   return target > 0 && streamPoints_[static_cast<std::size_t>(stream)].load() >= quota;
@@ -814,6 +820,7 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
       // Nothing left for this thread: say so to waitUntilDone, then sleep until setPattern,
       // setTargetPoints or the stop request wakes it (all notify under wakeMutex_).
       std::unique_lock lock(wakeMutex_);
+      ++sleepingWorkers_;  // seen by waitUntilIdle only once the wait below lets go of the lock
       doneSignal_.notify_all();
       workerWake_[threadIndex].wait(lock, stop, [&] {
         if (wakeAsked_[threadIndex].load()) return true;
@@ -821,6 +828,7 @@ void Accumulator::workerLoop(std::stop_token stop, int threadIndex) {
         const auto target = targetPoints_.load();
         return std::any_of(owned.begin(), owned.end(), [&](int s) { return !streamDone(s, target); });
       });
+      --sleepingWorkers_;
       continue;
     }
     if (cores_) {

@@ -112,6 +112,10 @@ class Accumulator final : public RefinementBackend {
   void setHeld(bool held) override;
   // Waits until the target is reached or the pattern cannot accumulate; false on timeout.
   bool waitUntilDone(double timeoutSeconds) override;
+  // Waits until every worker sleeps for want of work (after waitUntilDone: the batches under way
+  // when the target was reached have landed), so stats and the grid stay as they are; false on
+  // timeout. For tests and tools that read the grid at rest.
+  bool waitUntilIdle(double timeoutSeconds);
 
   AccumulatorStats stats() const override;
   std::uint64_t version() const override { return version_.load(std::memory_order_acquire); }
@@ -228,6 +232,7 @@ class Accumulator final : public RefinementBackend {
   std::unique_ptr<std::condition_variable_any[]> workerWake_;
   std::unique_ptr<std::atomic<bool>[]> wakeAsked_;  // set under wakeMutex_, taken by its worker
   std::condition_variable doneSignal_;
+  int sleepingWorkers_ = 0;  // asleep in workerWake_ (waitUntilIdle); guarded by wakeMutex_
 
   // The work is cut into a fixed number of streams, each with its own orbits and random numbers and
   // a share of the target, and each owned by one thread (stream s by thread s mod threads). What

@@ -88,6 +88,7 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     ++wakeUps_;
     lastLook = std::chrono::steady_clock::now();
     seen = accumulator_.version();
+    tellObserver();  // the look (wakeUps) is news too: a waiter may count looks that packed nothing
     if (stop.stop_requested()) break;
     waitingForPoints = false;
     if (held_) continue;
@@ -118,13 +119,21 @@ void SnapshotPublisher::loop(std::stop_token stop) {
     // it, so a pack does not add a runnable thread beside every worker's. Taken before the lock, so
     // a taker never finds the lock held by a pack that waits for a core. It goes when its
     // accumulator's workers would: the proxy's burst shows through its packs.
-    const HeldCore core(accumulator_.coreBudget(), accumulator_.coresFirst());
-    std::lock_guard lock(mutex_);
-    const auto packStart = std::chrono::steady_clock::now();
-    readyFresh_ = packVolume(accumulator_, ready_, &held_);
-    lastPack_ = std::chrono::steady_clock::now() - packStart;
-    packedGeneration = ready_.generation;
-    if (readyFresh_) publishedVersion_ = ready_.version;
+    {
+      const HeldCore core(accumulator_.coreBudget(), accumulator_.coresFirst());
+      std::lock_guard lock(mutex_);
+      const auto packStart = std::chrono::steady_clock::now();
+      readyFresh_ = packVolume(accumulator_, ready_, &held_);
+      lastPack_ = std::chrono::steady_clock::now() - packStart;
+      packedGeneration = ready_.generation;
+      if (readyFresh_) {
+        publishedVersion_ = ready_.version;
+        ++packs_;
+      }
+    }
+    // Once the lock and the core are free: a waiter woken by the news takes the volume at once
+    // (takeIfNewer never waits for the lock).
+    tellObserver();
   }
 }
 

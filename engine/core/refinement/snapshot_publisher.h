@@ -20,6 +20,7 @@
 
 #include "core/refinement/refinement_backend.h"
 #include "core/packed_volume.h"
+#include "core/progress_signal.h"
 
 namespace voxflame::core {
 
@@ -45,6 +46,12 @@ class SnapshotPublisher {
   bool caughtUp();
   // How often the thread has woken to look at the accumulator (tests: none while it rests).
   std::uint64_t wakeUps() const { return wakeUps_.load(); }
+  // How many volumes the thread has packed (each one fresh for takeIfNewer when packed).
+  std::uint64_t packs() const { return packs_.load(); }
+  // Notified after every look (wakeUps() moved) and every finished pack (packs() moved), so a taker
+  // may sleep until there is news instead of polling: tests, and the session's waitForNews. Null
+  // (the default): nobody. The observer must outlive the publisher or be replaced first.
+  void setObserver(EventCounter* observer) { observer_.store(observer); }
 
   // After a pack of the pattern refining now, the next waits this many times as long as it took
   // (at least the interval): packs take at most a fifth of a core.
@@ -67,6 +74,11 @@ class SnapshotPublisher {
   std::atomic<bool> requested_{false};  // requestNow
   std::atomic<bool> taken_{false};      // a volume was taken while the accumulator had moved on
   std::atomic<std::uint64_t> wakeUps_{0};
+  std::atomic<std::uint64_t> packs_{0};
+  std::atomic<EventCounter*> observer_{nullptr};
+  void tellObserver() {
+    if (EventCounter* observer = observer_.load()) observer->notify();
+  }
   std::mutex wakeMutex_;
   std::condition_variable_any wake_;
   std::jthread thread_;
