@@ -124,6 +124,13 @@ Settings settingsFromJson(const json& root, std::vector<std::string>& problems) 
   reader.path(root, "last_preset", "last_preset", settings.lastPreset);
   reader.number(root, "refine_until_noise_percent", "refine_until_noise_percent", settings.refineUntilNoisePercent, 0.0,
                 100.0);
+  if (std::string backend; reader.string(root, "refinement_backend", "refinement_backend", backend)) {
+    try {
+      settings.refinementBackend = backendChoiceFromString(backend);
+    } catch (const core::Error& error) {
+      reader.note("'refinement_backend': " + std::string(error.what()));
+    }
+  }
   reader.path(root, "user_preset_folder", "user_preset_folder", settings.userPresetFolder);
   if (const json* recent = reader.find(root, "recent")) {
     if (!recent->is_array()) {
@@ -177,6 +184,7 @@ json settingsToJson(const Settings& settings) {
   root["last_preset"] = settings.lastPreset.string();
   root["user_preset_folder"] = settings.userPresetFolder.string();
   root["refine_until_noise_percent"] = settings.refineUntilNoisePercent;
+  root["refinement_backend"] = std::string(toString(settings.refinementBackend));
   json recent = json::array();
   for (const auto& file : settings.recent)
     recent.push_back({{"path", file.path.string()}, {"kind", toString(file.kind)}});

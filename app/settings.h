@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "export_job.h"
+#include "refinement_backends.h"
 
 namespace voxflame::app {
 
@@ -50,6 +51,9 @@ struct Settings {
   // The explorer stops refining once the volume's estimated noise (core/refinement/convergence.h) is this
   // many percent, and the process rests; 0: never stop (refine until the next edit). 0–100.
   double refineUntilNoisePercent = kDefaultRefineUntilNoisePercent;
+  // What refines the explorer's volume ("refinement_backend": cpu, gpu or auto;
+  // refinement_backends.h): auto takes the GPU where the GL renderer is a hardware one.
+  BackendChoice refinementBackend = BackendChoice::Auto;
 
   // Puts `path` (made absolute) first among its kind, removing an earlier mention and the
   // oldest beyond kMaxRecentFiles.

@@ -4,6 +4,7 @@
 // headless GL 4.3 context can be made (llvmpipe in CI).
 #include <gtest/gtest.h>
 
+#include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
 #include <algorithm>
@@ -211,4 +212,21 @@ TEST(GpuBackend, TheSameSeedGivesTheSameGrid) {
   EXPECT_EQ(a.red, b.red);
   const core::GridSums c = refine(gpu, scene, 400'000, 12);
   EXPECT_NE(a.hits, c.hits);
+}
+
+// A backend's context on its own thread shares the process's EGL display with a render's on this
+// one: ending the backend must leave this thread's context working (eglTerminate would end both).
+TEST(GpuBackend, EndingTheBackendLeavesAnotherThreadsContextWorking) {
+  if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
+  gl::HeadlessContext context;
+  {
+    gl::GpuAccumulator gpu(bunnyMask(32));
+    refine(gpu, core::defaultScene(), 50'000, 3);
+  }
+  // A terminated display answers no query: what epoxy's first look-up of a GL function needs.
+  EXPECT_NE(eglQueryString(eglGetCurrentDisplay(), EGL_VERSION), nullptr);
+  EXPECT_NE(glGetString(GL_RENDERER), nullptr);
+  const gl::ShaderProgram program(
+      gl::ShaderSource{"after the backend", "#version 430 core\nlayout(local_size_x = 1) in;\nvoid main() {}\n"});
+  EXPECT_NE(program.id(), 0u);
 }

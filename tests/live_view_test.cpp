@@ -703,3 +703,39 @@ TEST_F(LiveViewTest, APointsViewWhosePatternEscapesRestsOnTheLastBoundedVolume) 
 }
 
 }  // namespace
+
+// The explorer's "refine on" setting reaches the session: with the GPU chosen, an attractor's
+// large grid refines on the GPU backend and its volume reaches the view; a flame refines on the
+// CPU and the status says why; back on the CPU the note goes.
+TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
+  app::ExplorerSession gpuSession{1, std::chrono::milliseconds(50)};
+  gpuSession.setBackendChoice(app::BackendChoice::Gpu);
+  core::Scene scene = core::defaultScene();
+  scene.gridResolution = 48;
+  gpuSession.post(scene);
+  ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
+  EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Gpu) << gpuSession.status().backendNote;
+  EXPECT_TRUE(gpuSession.status().backendNote.empty());
+  core::PackedVolume volume;
+  ASSERT_TRUE(test::waitForSession(gpuSession, [&] {
+    return gpuSession.takeVolumeIfNewer(volume) && volume.points > 0 && volume.maxDensity > 0.0f;
+  }));
+
+  core::Scene flame = scene;
+  flame.layers.front().kind = core::PatternKind::Flame;
+  flame.layers.front().flame = core::defaultFlame();
+  flame.layers.front().color.mode = core::ColorMode::Index;
+  gpuSession.post(flame);
+  ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
+  EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Cpu);
+  EXPECT_NE(gpuSession.status().backendNote.find("refining on the CPU"), std::string::npos)
+      << gpuSession.status().backendNote;
+
+  gpuSession.post(scene);
+  ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
+  EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Gpu);
+  gpuSession.setBackendChoice(app::BackendChoice::Cpu);  // posts the scene again itself
+  ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
+  EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Cpu);
+  EXPECT_TRUE(gpuSession.status().backendNote.empty());
+}

@@ -80,6 +80,7 @@ TEST(Settings, RoundTripKeepsEverything) {
   settings.lastExport.points = 123'456'789;
   settings.lastExport.format = voxflame::app::ExportFormat::Exr;
   settings.lastExportFolder = folder / "renders";
+  settings.refinementBackend = voxflame::app::BackendChoice::Gpu;
   const auto file = folder / "config" / "voxflame" / "settings.json";
   saveSettings(settings, file);
   // Atomic: nothing but the file is left in its folder.
@@ -104,6 +105,17 @@ TEST(Settings, RoundTripKeepsEverything) {
   EXPECT_EQ(s.lastExport.points, 123'456'789u);
   EXPECT_EQ(s.lastExport.format, voxflame::app::ExportFormat::Exr);
   EXPECT_EQ(s.lastExportFolder, folder / "renders");
+  EXPECT_EQ(s.refinementBackend, voxflame::app::BackendChoice::Gpu);
+}
+
+TEST(Settings, AnUnknownRefinementBackendIsNamedAndLeftAtAuto) {
+  TemporaryFolder folder;
+  const auto file = folder / "settings.json";
+  std::ofstream(file) << R"({"refinement_backend": "metal", "refine_until_noise_percent": 2})";
+  const auto loaded = loadSettings(file);
+  EXPECT_EQ(loaded.settings.refinementBackend, voxflame::app::BackendChoice::Auto);
+  EXPECT_EQ(loaded.settings.refineUntilNoisePercent, 2.0);
+  EXPECT_NE(loaded.message.find("unknown refinement backend 'metal'"), std::string::npos) << loaded.message;
 }
 
 TEST(Settings, RecentFilesAreNewestFirstDeduplicatedCappedAndPruned) {

@@ -1,5 +1,7 @@
 #include "explorer_session.h"
 
+#include "refinement_backends.h"
+
 #include <pthread.h>
 #include <algorithm>
 #include <cmath>
@@ -12,6 +14,7 @@
 #include "core/scene_io.h"
 #include "core/scene_schema.h"
 #include "pipeline.h"
+#include "refinement_backends.h"
 
 namespace voxflame::app {
 
@@ -56,7 +59,10 @@ struct ExplorerSession::Proxy {
   // Snapshots of the proxy come quickly: each costs well under a millisecond at 64³.
   static constexpr std::chrono::milliseconds kInterval{15};
   Proxy(std::shared_ptr<const core::InsideMask> insideMask, int threads, std::shared_ptr<core::CoreBudget> cores)
-      : mask(std::move(insideMask)), accumulator(mask, threads, std::move(cores)), publisher(accumulator, kInterval) {
+      : mask(std::move(insideMask)),
+        backend(makeBackend(core::BackendKind::Cpu, mask, threads, std::move(cores))),
+        accumulator(*backend),
+        publisher(accumulator, kInterval) {
     accumulator.setCoresFirst(true);  // its burst is what the next frame shows
     const auto inside = static_cast<double>(std::max<std::uint64_t>(accumulator.insideVoxels(), 1));
     targetPoints = static_cast<std::uint64_t>(kProxyPointsPerVoxel * inside);
@@ -68,7 +74,10 @@ struct ExplorerSession::Proxy {
   std::uint64_t targetPoints = 0, dragTargetPoints = 0;
   void setDragging(bool dragging) { accumulator.setTargetPoints(dragging ? dragTargetPoints : targetPoints); }
   std::shared_ptr<const core::InsideMask> mask;
-  core::Accumulator accumulator;
+  // The CPU's, whatever refines the large grid: a burst of tens of milliseconds on 64³ is over
+  // before a GPU dispatch would have been set up.
+  std::unique_ptr<core::RefinementBackend> backend;
+  core::RefinementBackend& accumulator;
   core::SnapshotPublisher publisher;
   std::uint64_t patternGeneration = 0;
   std::uint64_t patternPost = 0;
@@ -76,14 +85,16 @@ struct ExplorerSession::Proxy {
 
 struct ExplorerSession::Engine {
   Engine(std::string key, std::shared_ptr<const core::InsideMask> insideMask,
-         std::shared_ptr<const core::InsideMask> proxyMask, int threads, std::chrono::milliseconds interval)
+         std::shared_ptr<const core::InsideMask> proxyMask, int threads, std::chrono::milliseconds interval,
+         core::BackendKind kind)
       : shapeKey(std::move(key)),
         mask(std::move(insideMask)),
         // The proxy's burst and the large grid run at once after each edit: they share the cores
         // rather than each keeping a worker runnable per core (twice the cores queueing).
         cores(proxyMask ? std::make_shared<core::CoreBudget>(resolvedThreads(threads)) : nullptr),
         proxy(proxyMask ? std::make_unique<Proxy>(std::move(proxyMask), threads, cores) : nullptr),
-        accumulator(mask, threads, cores),
+        backend(makeBackend(kind, mask, threads, cores)),
+        accumulator(*backend),
         publisher(accumulator, interval) {
     initialCapPoints = std::clamp<std::uint64_t>(
         static_cast<std::uint64_t>(restCapPointsPerVoxel(mask->geometry, accumulator.insideVoxels()) *
@@ -100,7 +111,10 @@ struct ExplorerSession::Engine {
   std::shared_ptr<const core::InsideMask> mask;
   std::shared_ptr<core::CoreBudget> cores;  // shared by the two accumulators; null without a proxy
   std::unique_ptr<Proxy> proxy;             // null for grids no larger than a proxy
-  core::Accumulator accumulator;
+  // The large grid's refinement backend (core/refinement/refinement_backend.h): the CPU's, or the
+  // GPU's (gl::GpuAccumulator) behind the same calls.
+  std::unique_ptr<core::RefinementBackend> backend;
+  core::RefinementBackend& accumulator;
   core::SnapshotPublisher publisher;    // after the accumulator it reads, so it is destroyed first
   std::uint64_t patternGeneration = 0;  // the Accumulator generation of the latest applied post
   std::uint64_t patternPost = 0;        // ... and that post's number
@@ -134,6 +148,7 @@ void ExplorerSession::post(const core::Scene& scene, bool interacting) {
   {
     std::lock_guard lock(mutex_);
     pending_ = scene;
+    lastPosted_ = scene;
     ++requested_;
     if (interacting && !interacting_) {
       interacting_ = true;
@@ -210,9 +225,23 @@ SessionStatus ExplorerSession::status() const {
   status.paused = paused_ && holding_ && !capped_ && !converged_;
   status.escapeNote = escapeNote_;
   status.showingLastBounded = showingLastBounded_;
+  if (engine_) status.backend = engine_->backend->kind();
+  status.backendNote = backendNote_;
   status.resting = engine_ && holding_ && status.stats.done && !buildingShape_ && !pending_ && !working_ &&
                    !steerRequested_ && engine_->publisher.caughtUp();
   return status;
+}
+
+void ExplorerSession::setBackendChoice(BackendChoice choice) {
+  std::lock_guard lock(mutex_);
+  if (backendChoice_ == choice) return;
+  backendChoice_ = choice;
+  // The next post applies it; the scene being shown is posted again so it applies now.
+  if (!pending_ && lastPosted_) {
+    pending_ = *lastPosted_;
+    ++requested_;
+    wake_.notify_all();
+  }
 }
 
 void ExplorerSession::clearError() {
@@ -282,7 +311,7 @@ void ExplorerSession::applyPattern(Engine& engine, const core::Scene& scene, std
   engine.accumulator.setTargetPoints(engine.target);
   // The colour lookup a still makes (pipeline.cpp), so the view's colours are the export's.
   engine.accumulator.setPaletteMode(scene.flat.paletteMode);
-  engine.accumulator.setPattern(scene.layers, scene.seed, core::Accumulator::WhenEscaping::KeepLastBounded);
+  engine.accumulator.setPattern(scene.layers, scene.seed, core::RefinementBackend::WhenEscaping::KeepLastBounded);
   noteEscape(engine.accumulator, scene);
   steer(engine);  // a pause still holds the new pattern (at a preview)
   engine.publisher.requestNow();
@@ -314,7 +343,7 @@ std::string escapeNoteFor(const std::vector<core::PatternLayer>& lastBounded, co
 
 }  // namespace
 
-void ExplorerSession::noteEscape(const core::Accumulator& accumulator, const core::Scene& scene) {
+void ExplorerSession::noteEscape(const core::RefinementBackend& accumulator, const core::Scene& scene) {
   const core::AccumulatorStats stats = accumulator.stats();
   std::string note;
   if (stats.problem.empty())
@@ -436,7 +465,20 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
     }
     std::string error;
     try {
-      const std::string key = shapeKey(scene);
+      // The backend is part of what the grid is: another one rebuilds it, as another mesh does.
+      BackendChoice choice = BackendChoice::Cpu;
+      {
+        std::lock_guard lock(mutex_);
+        choice = backendChoice_;
+      }
+      std::string backendNote;
+      core::BackendKind kind = core::BackendKind::Cpu;
+      try {
+        kind = resolveBackend(choice, scene.layers);
+      } catch (const core::Error& why) {
+        backendNote = std::string(why.what()) + "; refining on the CPU";
+      }
+      const std::string key = shapeKey(scene) + "|" + std::string(core::toString(kind));
       // Only this thread replaces engine_, so it may use it without the lock; the UI reaches it
       // only under the lock, for calls that never wait.
       Engine* current = engine_.get();
@@ -474,8 +516,16 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
             old = std::exchange(engine_, nullptr);
           }
           old.reset();
-          auto engine =
-              std::make_unique<Engine>(key, std::move(mask), std::move(proxyMask), threads_, snapshotInterval_);
+          std::unique_ptr<Engine> engine;
+          try {
+            engine = std::make_unique<Engine>(key, mask, proxyMask, threads_, snapshotInterval_, kind);
+          } catch (const core::Error& why) {
+            if (kind == core::BackendKind::Cpu) throw;
+            // No GPU context here after all (or the grid does not fit it): the CPU refines.
+            backendNote = std::string(why.what()) + "; refining on the CPU";
+            engine = std::make_unique<Engine>(key, std::move(mask), std::move(proxyMask), threads_, snapshotInterval_,
+                                              core::BackendKind::Cpu);
+          }
           engine->publisher.setObserver(&news_);
           if (engine->proxy) engine->proxy->publisher.setObserver(&news_);
           std::lock_guard lock(mutex_);
@@ -491,6 +541,10 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
         }
         current = engine_.get();
       }
+      {
+        std::lock_guard lock(mutex_);
+        backendNote_ = backendNote;
+      }
       if (current) {
         // The proxy first: its grid clears in no time and its burst runs while the large grid is
         // cleared, so the edit is on screen long before the large grid has anything to show.
@@ -498,7 +552,8 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
         if (Proxy* proxy = current->proxy.get()) {
           proxy->setDragging(dragging);
           proxy->accumulator.setPaletteMode(scene.flat.paletteMode);
-          proxy->accumulator.setPattern(scene.layers, scene.seed, core::Accumulator::WhenEscaping::KeepLastBounded);
+          proxy->accumulator.setPattern(scene.layers, scene.seed,
+                                        core::RefinementBackend::WhenEscaping::KeepLastBounded);
           noteEscape(proxy->accumulator, scene);
           proxy->publisher.requestNow();
           std::lock_guard lock(mutex_);

@@ -25,6 +25,7 @@
 #include "core/progress_signal.h"
 #include "core/scene.h"
 #include "core/refinement/snapshot_publisher.h"
+#include "refinement_backends.h"
 
 namespace voxflame::app {
 
@@ -60,6 +61,9 @@ struct SessionStatus {
   // "escapes at a = 1.0948; showing the last bounded value". Empty while it stays bounded.
   std::string escapeNote;
   bool showingLastBounded = false;  // the picture is still the last bounded pattern's (dimmed)
+  // What refines the large grid (setBackendChoice), and why it is not what was chosen, or empty.
+  core::BackendKind backend = core::BackendKind::Cpu;
+  std::string backendNote;
 };
 
 class ExplorerSession {
@@ -143,6 +147,13 @@ class ExplorerSession {
   // points picture (LivePoints).
   void setRefinement(double noiseTarget, bool paused, bool interacting = false, bool viewMoving = false,
                      std::uint64_t gridPointCap = 0);
+  // What refines the large grid from the next pattern on (the explorer's setting, default Cpu):
+  // Auto takes the GPU backend where the GL renderer is a hardware one and it runs the pattern;
+  // Gpu takes it wherever it runs the pattern. A pattern it does not run (a flame) refines on the
+  // CPU, and the status says why. A change of backend rebuilds the grid (the mask comes from the
+  // cache); the proxy always refines on the CPU. Cheap when nothing changed: call it every frame.
+  void setBackendChoice(BackendChoice choice);
+
   // The inside mask of the current shape (null before the first shape is ready): the points
   // picture iterates the pattern over it.
   std::shared_ptr<const core::InsideMask> mask() const;
@@ -182,7 +193,7 @@ class ExplorerSession {
   // Whether the engine's large grid holds for a drag: the user interacts and a proxy shows the edits.
   bool holdsForInteraction(const Engine& engine) const;
   // Control thread, after `accumulator` took `scene`'s pattern: what the status says of an escape.
-  void noteEscape(const core::Accumulator& accumulator, const core::Scene& scene);
+  void noteEscape(const core::RefinementBackend& accumulator, const core::Scene& scene);
 
   const int threads_;
   const std::chrono::milliseconds snapshotInterval_;
@@ -220,6 +231,9 @@ class ExplorerSession {
   std::optional<std::vector<core::PatternLayer>> lastBounded_;
   std::string escapeNote_;
   bool showingLastBounded_ = false;
+  BackendChoice backendChoice_ = BackendChoice::Cpu;
+  std::optional<core::Scene> lastPosted_;  // posted again when the backend choice changes
+  std::string backendNote_;
   std::jthread control_;  // last: started after everything it uses exists
 };
 

@@ -609,6 +609,7 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
   // Under the points method the grid only dims the points: it stops where an export's does, and
   // once the points are being projected, where it was when they started (they are dimmed by that
   // one; refining it further would only take their cores).
+  session_.setBackendChoice(inputs.backend);
   session_.setRefinement(inputs.refineUntilNoise, inputs.exportRunning, held, held && viewOnly,
                          !pointsMethod_                 ? 0
                          : pointsKey_ && !pointsFailed_ ? std::max<std::uint64_t>(pointsGridPoints_, 1)
@@ -665,6 +666,7 @@ LiveInputs liveInputs(const ExplorerState& state) {
   inputs.interacting = state.frame.interacting;
   inputs.refineUntilNoise = 0.01 * state.services.settings.refineUntilNoisePercent;
   inputs.exportRunning = state.services.exportStatus.state == ExportState::Running;
+  inputs.backend = state.services.settings.refinementBackend;
   return inputs;
 }
 

@@ -44,14 +44,15 @@ struct LiveInputs {
   // The document's edit counts: a new pattern count posts the scene to the session, a new view
   // count restarts the samples. Only these say that the scene changed; it is never compared.
   Document::Revisions revisions;
-  core::CameraSettings camera;    // the camera the view shows (viewCamera: widened to hold the export)
-  glm::ivec4 viewRect{0};         // where the picture goes (FrameOutputs::viewRect)
-  float renderScale = 1.0f;       // the march scale's ceiling for a still view
-  float frameBudgetMs = 33.0f;    // ... and the budget that lowers it while something changes
-  bool playing = false;           // playback: the ceiling is the whole window
-  bool interacting = false;       // a widget or the view is held: an edit now is one of a drag's
-  double refineUntilNoise = 0.0;  // refinement rests at this noise (fraction; 0: never)
-  bool exportRunning = false;     // refinement pauses while an export uses the cores
+  core::CameraSettings camera;                 // the camera the view shows (viewCamera: widened to hold the export)
+  glm::ivec4 viewRect{0};                      // where the picture goes (FrameOutputs::viewRect)
+  float renderScale = 1.0f;                    // the march scale's ceiling for a still view
+  float frameBudgetMs = 33.0f;                 // ... and the budget that lowers it while something changes
+  bool playing = false;                        // playback: the ceiling is the whole window
+  bool interacting = false;                    // a widget or the view is held: an edit now is one of a drag's
+  double refineUntilNoise = 0.0;               // refinement rests at this noise (fraction; 0: never)
+  bool exportRunning = false;                  // refinement pauses while an export uses the cores
+  BackendChoice backend = BackendChoice::Cpu;  // what refines the large grid (the settings')
 };
 
 class LiveView {

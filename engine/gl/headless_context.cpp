@@ -4,6 +4,8 @@
 #include <epoxy/gl.h>
 
 #include <cstdlib>
+#include <map>
+#include <mutex>
 #include <vector>
 
 #include "core/error.h"
@@ -16,6 +18,26 @@ bool hasExtension(const char* list, const char* name) {
   if (!list) return false;
   const std::string all = std::string(" ") + list + " ";
   return all.find(std::string(" ") + name + " ") != std::string::npos;
+}
+
+// An EGL display is one per process and platform, shared by every context on it, and
+// eglTerminate ends it for all of them: a context current on another thread (the GPU refinement
+// backend's beside a render's, a test's beside a backend's) would lose its display. So contexts
+// count their display's users, and the last one terminates it; the lock spans a context's making
+// and its ending, so a display is never terminated between another's eglInitialize and its count.
+std::mutex& displayMutex() {
+  static std::mutex mutex;
+  return mutex;
+}
+std::map<EGLDisplay, int>& displayUsers() {
+  static std::map<EGLDisplay, int> users;
+  return users;
+}
+// Under displayMutex(): terminates `display` unless a live context still uses it.
+void releaseDisplay(EGLDisplay display) {
+  const auto it = displayUsers().find(display);
+  if (it != displayUsers().end() && it->second > 0) return;
+  eglTerminate(display);
 }
 
 // Tries the platforms in order of how likely they are to give a working headless context.
@@ -49,6 +71,7 @@ EGLDisplay openDisplay(std::string& tried) {
 }  // namespace
 
 HeadlessContext::HeadlessContext() {
+  const std::lock_guard lock(displayMutex());
   std::string tried;
   EGLDisplay display = openDisplay(tried);
   if (display == EGL_NO_DISPLAY)
@@ -56,7 +79,7 @@ HeadlessContext::HeadlessContext() {
                       "); install Mesa's EGL (libegl-mesa0, libgl1-mesa-dri)");
   display_ = display;
   if (!eglBindAPI(EGL_OPENGL_API)) {
-    eglTerminate(display);
+    releaseDisplay(display);
     throw core::Error("no headless OpenGL: this EGL cannot bind desktop OpenGL");
   }
   const EGLint configAttributes[] = {EGL_SURFACE_TYPE,
@@ -87,21 +110,24 @@ HeadlessContext::HeadlessContext() {
     }
   }
   if (!context_) {
-    eglTerminate(display);
+    releaseDisplay(display);
     throw core::Error("no headless OpenGL: EGL could not create an OpenGL 4.3 core context");
   }
   if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, static_cast<EGLContext>(context_))) {
     eglDestroyContext(display, static_cast<EGLContext>(context_));
-    eglTerminate(display);
+    releaseDisplay(display);
     throw core::Error("no headless OpenGL: EGL could not make a surfaceless context current");
   }
+  ++displayUsers()[display];
 }
 
 HeadlessContext::~HeadlessContext() {
+  const std::lock_guard lock(displayMutex());
   auto display = static_cast<EGLDisplay>(display_);
   eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display, static_cast<EGLContext>(context_));
-  eglTerminate(display);
+  if (--displayUsers()[display] <= 0) displayUsers().erase(display);
+  releaseDisplay(display);
 }
 
 std::string HeadlessContext::renderer() const {

@@ -145,6 +145,19 @@ void renderSection(Ui& ui, ScenePanelState& scenePanel, Services& services) {
         "the volume stops refining (and the explorer rests) once two measurements of its noise in a row are this\n"
         "low, or at the grid's cap of points per voxel, whichever comes first; a lower target refines on from\n"
         "the points already there");
+  // What refines the volume: a setting of the explorer, kept with the others, not in the preset.
+  BackendChoice& backend = services.settings.refinementBackend;
+  int backendIndex = static_cast<int>(backend);
+  const char* backendNames[] = {"cpu", "gpu", "auto"};
+  if (ImGui::Combo("refine on", &backendIndex, backendNames, 3)) backend = static_cast<BackendChoice>(backendIndex);
+  probe(ui, "render/refine_on");
+  if (ImGui::IsItemHovered())
+    ImGui::SetTooltip(
+        "cpu: every core; gpu: compute shaders (attractor layers; a flame refines on the CPU);\n"
+        "auto: the GPU where it is a hardware one. A change refines the volume again from nothing");
+  const SessionStatus& session = ui.frame.session;
+  dimText("refining on the %s backend%s%s", std::string(core::toString(session.backend)).c_str(),
+          session.backendNote.empty() ? "" : ": ", session.backendNote.c_str());
 }
 
 void cameraSection(Ui& ui) {
