@@ -15,11 +15,7 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cctype>
-#include <cerrno>
 #include <chrono>
-#include <cstdlib>
-#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
@@ -28,14 +24,10 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
-#include "core/file_output.h"
 #include "commands.h"
 #include "core/refinement/accumulator.h"
 #include "core/error.h"
 #include "core/scene_schema.h"
-#include "core/file_output.h"
 #include "core/keyframes.h"
 #include "core/packed_volume.h"
 #include "core/volume_export.h"

@@ -1,6 +1,5 @@
 #include "autosave.h"
 
-#include <fcntl.h>
 #include <signal.h>
 #include <unistd.h>
 

@@ -1,7 +1,6 @@
 #include "settings.h"
 
 #include <algorithm>
-#include <cmath>
 #include <fstream>
 #include <sstream>
 

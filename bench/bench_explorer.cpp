@@ -1,4 +1,3 @@
-#include <epoxy/gl.h>
 
 #include <algorithm>
 #include <chrono>
@@ -22,7 +21,6 @@
 #include <sys/syscall.h>
 
 #include "bench.h"
-#include "core/camera.h"
 #include "core/scene_io.h"
 #include "explorer_session.h"
 #include "export_job.h"

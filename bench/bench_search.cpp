@@ -10,7 +10,6 @@
 #include "bench.h"
 #include "core/lyapunov.h"
 #include "core/scene.h"
-#include "core/scene_io.h"
 #include "preset_library.h"
 
 namespace voxflame::bench {

@@ -3,18 +3,15 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <numeric>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "bench.h"
-#include "core/error.h"
 #include "core/image_io.h"
 #include "core/image_metrics.h"
 #include "core/scene.h"

@@ -5,12 +5,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "core/image_io.h"
-#include "core/keyframes.h"
 #include "core/scene.h"
 #include "test_support.h"
 

@@ -1,7 +1,6 @@
 // The chaos game behind flame and quaternion Julia layers, and their place in the preset schema.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -10,7 +9,6 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
-#include <nlohmann/json.hpp>
 
 #include "core/chaos_game.h"
 #include "core/error.h"

@@ -3,9 +3,7 @@
 // file. The job scripts run under bash as Slurm array tasks would; scripts/test_farm.sh submits
 // them to a real one-node cluster.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>

@@ -2,10 +2,8 @@
 // read as text, run by bash as an array task would be, and submitted to a stand-in sbatch.
 // scripts/test_farm.sh runs the same on a real one-node cluster.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>

@@ -14,7 +14,6 @@
 #include <nlohmann/json.hpp>
 
 #include "core/chaos_game.h"
-#include "core/error.h"
 #include "core/flame/variations.h"
 #include "core/flame/xml.h"
 #include "core/keyframes.h"

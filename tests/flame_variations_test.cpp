@@ -16,8 +16,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/vec3.hpp>
-
 #include "core/chaos_game.h"
 #include "core/error.h"
 #include "core/flame/noise.h"

@@ -3,7 +3,6 @@
 // scripts/update_golden.sh renders them again (VOXFLAME_UPDATE_GOLDEN=1); look at the new ones before committing them.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 

@@ -10,7 +10,6 @@
 
 #include "core/flame/image.h"
 #include "core/packed_volume.h"
-#include "core/scene_io.h"
 #include "gl/canvas.h"
 #include "gl/flame_finisher.h"
 #include "gl/headless_context.h"

@@ -6,10 +6,10 @@
 #include <string>
 #include <imgui.h>
 
-#include "core/scene.h"
 #include "core/scene_io.h"
 #include "explorer_ui.h"
 #include "input_queue.h"
+#include "key_codes.h"
 
 using namespace voxflame;
 

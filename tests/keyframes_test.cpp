@@ -2,8 +2,6 @@
 
 #include <string>
 
-#include <nlohmann/json.hpp>
-
 #include "core/error.h"
 #include "core/keyframes.h"
 #include "core/scene.h"

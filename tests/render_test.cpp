@@ -1,11 +1,10 @@
+#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <numbers>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 #include "commands.h"
 #include "core/camera.h"
@@ -15,7 +14,6 @@
 #include "core/flame/flat_render.h"
 #include "core/scene_io.h"
 #include "gl/headless_context.h"
-#include "gl/volume_renderer.h"
 #include "pipeline.h"
 
 using namespace voxflame;

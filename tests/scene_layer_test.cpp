@@ -3,7 +3,6 @@
 #include <string>
 
 #include "core/color.h"
-#include "core/error.h"
 #include "core/scene.h"
 #include "test_support.h"
 

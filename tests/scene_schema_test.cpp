@@ -12,7 +12,6 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
-#include "core/keyframes.h"
 #include "core/scene_io.h"
 #include "core/scene_schema.h"
 #include "test_support.h"

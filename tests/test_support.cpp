@@ -4,8 +4,6 @@
 #include "core/mesh.h"
 #include "core/scene.h"
 
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <array>
 #include <cstdio>

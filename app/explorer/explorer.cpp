@@ -8,11 +8,8 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
-#include <signal.h>
-
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <csignal>
 #include <chrono>
 #include <optional>
@@ -23,14 +20,13 @@
 #include <fstream>
 #include <iostream>
 
-#include "core/color.h"
-#include "core/camera.h"
 #include "core/error.h"
 #include "pipeline.h"
 #include "explorer_session.h"
 #include "gl/read_back.h"
 #include "explorer_ui.h"
 #include "input_queue.h"
+#include "key_codes.h"
 #include "live_view.h"
 #include "x11_watch.h"
 

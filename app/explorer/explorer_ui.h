@@ -6,7 +6,6 @@
 
 #include <array>
 #include <cstdint>
-#include <deque>
 #include <filesystem>
 #include <memory>
 #include <atomic>
@@ -26,7 +25,6 @@
 #include "background_job.h"
 #include "export_job.h"
 #include "preset_library.h"
-#include "scene_history.h"
 #include "settings.h"
 
 namespace voxflame::app {
@@ -124,17 +122,22 @@ struct TimelinePanelState {
   std::string timelineMessage;
 };
 
+// A flame file with several flames, opened: which one to import (the "Which flame?" list). Declared
+// outside PromptsState: clang, which the include check (scripts/check_includes.py) parses with,
+// finds a nested struct with member initialisers not default-constructible inside the enclosing
+// class, so std::optional of it cannot emplace() (LLVM issue 36032).
+struct FlameChoicePrompt {
+  std::filesystem::path path;
+  std::vector<std::string> names;  // every flame of the file, in order
+  char filter[64] = "";
+  // The next frame gives the filter the keyboard: when the list opens, and after an Enter that
+  // took nothing (ImGui lets go of a field on Enter).
+  bool focusFilter = true;
+};
+
 struct PromptsState {
+  using FlameChoice = FlameChoicePrompt;
   std::string notice;  // an error or a message shown in the window until dismissed
-  // A flame file with several flames, opened: which one to import (the "Which flame?" list).
-  struct FlameChoice {
-    std::filesystem::path path;
-    std::vector<std::string> names;  // every flame of the file, in order
-    char filter[64] = "";
-    // The next frame gives the filter the keyboard: when the list opens, and after an Enter that
-    // took nothing (ImGui lets go of a field on Enter).
-    bool focusFilter = true;
-  };
   std::optional<FlameChoice> flameChoice;
   bool quitPrompt = false;     // the Save / Discard / Cancel prompt is open
   bool quitAfterSave = false;  // Save was chosen there: quit once the save has worked

@@ -2,7 +2,10 @@
 
 #include <imgui.h>
 
+#include <bitset>
 #include <cfloat>
+
+#include "key_codes.h"
 
 namespace voxflame::app {
 

@@ -11,12 +11,9 @@
 #pragma once
 
 #include <array>
-#include <bitset>
 #include <cstddef>
 #include <deque>
 #include <optional>
-
-#include "key_codes.h"
 
 struct ImGuiIO;
 

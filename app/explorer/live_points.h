@@ -8,10 +8,8 @@
 // takes (gl::FrameTarget::setSums) and finishes it on the GPU like a marched picture.
 #pragma once
 
-#include <atomic>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>

@@ -8,7 +8,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "grid.h"
+#include "mesh.h"
 #include "scene.h"
 
 namespace voxflame::core {

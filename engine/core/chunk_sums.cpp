@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "error.h"
-#include "scene_io.h"
 #include "scene_schema.h"
 
 namespace voxflame::core {

@@ -7,7 +7,6 @@
 #include <glm/vec3.hpp>
 
 #include <glm/common.hpp>
-#include <glm/exponential.hpp>
 
 #include "color.h"
 #include "error.h"

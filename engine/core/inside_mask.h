@@ -16,8 +16,6 @@
 #pragma once
 
 #include <cstdint>
-#include <array>
-#include <memory>
 #include <vector>
 
 #include "grid.h"

@@ -12,7 +12,6 @@
 #include <cstdint>
 #include <functional>
 #include <stop_token>
-#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>

@@ -1,8 +1,6 @@
 #include "task_scheduler.h"
 
 #include <algorithm>
-#include <atomic>
-#include <exception>
 #include <memory>
 #include <mutex>
 #include <thread>

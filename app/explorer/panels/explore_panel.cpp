@@ -2,36 +2,16 @@
 // history of what they found (Back, Forward). Changes layer 0's pattern.
 #include "explorer_ui.h"
 
-#include <imgui.h>
-
 #include <algorithm>
-#include <sstream>
-#include <cstdarg>
-#include <cctype>
-#include <cfloat>
-#include <chrono>
-#include <cmath>
 #include <cstdio>
-#include <filesystem>
-#include <utility>
 
 #include "core/refinement/accumulator.h"
 #include "core/attractor.h"
-#include "core/camera.h"
-#include "core/color.h"
 #include "core/error.h"
 #include "core/flame/flame.h"
 #include "core/flame/search.h"
-#include "core/flame/variations.h"
-#include "core/flame/xml.h"
-#include "core/flame/flat_render.h"
-#include "core/grid.h"
-#include "core/keyframes.h"
 #include "core/scene_schema.h"
-#include "commands.h"
-#include "pipeline.h"
 #include "panels.h"
-#include "widgets.h"
 
 namespace voxflame::app::panels {
 

@@ -4,31 +4,13 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <sstream>
 #include <cstdarg>
 #include <cctype>
-#include <cfloat>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <utility>
 
-#include "core/attractor.h"
-#include "core/camera.h"
-#include "core/color.h"
-#include "core/error.h"
-#include "core/flame/flame.h"
-#include "core/flame/search.h"
-#include "core/flame/variations.h"
-#include "core/flame/xml.h"
-#include "core/flame/flat_render.h"
-#include "core/grid.h"
-#include "core/keyframes.h"
 #include "core/scene_schema.h"
-#include "commands.h"
-#include "pipeline.h"
-#include "panels.h"
 #include "widgets.h"
 
 namespace voxflame::app::panels {

@@ -7,13 +7,11 @@
 
 #include <string>
 #include <string_view>
-#include <type_traits>
 #include <variant>
 
 #include "core/color.h"
 #include "core/scene_schema.h"
 #include "explorer_ui.h"
-#include "key_codes.h"
 
 namespace voxflame::app::panels {
 

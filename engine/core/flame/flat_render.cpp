@@ -8,7 +8,6 @@
 #include <vector>
 
 #include <glm/common.hpp>
-#include <glm/exponential.hpp>
 
 #include "core/chaos_game.h"
 #include "core/color.h"

@@ -6,8 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <cstdint>
-#include <string>
 #include <vector>
 
 #include "core/flame/variation_kernels.h"

@@ -4,12 +4,10 @@
 // variation_kernels.h and variations_2d_shared.h for what the files share). Fractorium writes z = 0
 // for these; here z is carried as w·z, as for every 2D variation. Where Fractorium leaves the weight
 // off a term, so does the port (it says so).
-#include <math.h>  // lgamma_r: std::lgamma writes the global signgam, a data race between threads
+#include <math.h>  // IWYU pragma: keep; lgamma_r: std::lgamma writes the global signgam, a data race between threads
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <string>
 #include <vector>
 
 #include "core/flame/variation_kernels.h"

@@ -6,7 +6,6 @@
 // as w·z, as for every 2D variation.
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <string>
 #include <vector>
 

@@ -2,16 +2,9 @@
 // Each variation is a kernel below and one row of the table at the end (see variations.h for
 // the notation and variation_kernels.h for what the files share).
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdint>
-#include <limits>
-#include <numbers>
-#include <string>
-#include <utility>
 #include <vector>
 
-#include "core/flame/noise.h"
 #include "core/flame/variation_kernels.h"
 #include "core/vector_math.h"
 

@@ -5,7 +5,6 @@
 // for what the files share).
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <vector>
 
 #include "core/flame/variation_kernels.h"

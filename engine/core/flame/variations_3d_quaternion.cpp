@@ -5,7 +5,6 @@
 // cos x sinh|v| v/|v|, exp q = eˣ (cos|v| + sin|v| v/|v|), …). The formulas and their guards (Fractorium's Zeps, a
 // zero divisor taken as the double's epsilon) follow Fractorium's classes of the same name (Variations04.h).
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 #include <vector>
 

@@ -5,11 +5,9 @@
 // the end (see variations.h for the notation and variation_kernels.h for what the files share).
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <vector>
 
 #include "core/flame/variation_kernels.h"
-#include "core/flame/variations_2d_shared.h"
 
 namespace voxflame::core {
 

@@ -5,7 +5,6 @@
 // and variation_kernels.h for what the files share).
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <numbers>
 #include <vector>
 

@@ -5,7 +5,6 @@
 // 2D variations; here z is carried (w z), voxflame's rule.
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <vector>
 
 #include "core/flame/variation_kernels.h"

@@ -8,9 +8,6 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <numbers>
-#include <string>
-#include <utility>
 #include <vector>
 
 #include "core/flame/variation_kernels.h"

@@ -14,7 +14,6 @@
 #include <chrono>
 #include <cstdint>
 #include <condition_variable>
-#include <memory>
 #include <mutex>
 #include <thread>
 
