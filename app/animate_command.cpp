@@ -25,7 +25,6 @@
 #include <vector>
 
 #include "commands.h"
-#include "core/refinement/accumulator.h"
 #include "core/error.h"
 #include "core/scene_schema.h"
 #include "core/keyframes.h"

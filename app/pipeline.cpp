@@ -2,19 +2,16 @@
 
 #include "refinement_backends.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <cmath>
 #include <iostream>
 #include <sstream>
-#include <thread>
 
 #include "commands.h"
-#include "refinement_backends.h"
 #include "core/camera.h"
+#include "core/refinement/accumulator.h"
 #include "core/refinement/convergence.h"
 #include "core/error.h"
 #include "core/flame/image.h"

@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include "core/refinement/accumulator.h"
 #include "core/chunk_sums.h"
 #include "core/error.h"
 #include "core/flame/image.h"
@@ -64,7 +63,7 @@ struct StillOptions {
   // > 0: accumulate until the estimated noise (core/refinement/convergence.h, a fraction) is this low, with
   // `points` (when set) as a cap. The volume method only: the points method projects a count.
   double untilNoise = 0.0;
-  int threads = 0;                            // 0: all hardware threads
+  int threads = 0;  // 0: all hardware threads
   // What refines the volume (resolveBackend gives it from the user's choice): the CPU's threads
   // (`threads` of them) or the GPU's compute shaders. A farm's chunks all use one.
   core::BackendKind backend = core::BackendKind::Cpu;
@@ -85,9 +84,9 @@ struct StillResult {
   core::AccumulatorStats stats;
   double accumulateSeconds = 0.0;
   double renderSeconds = 0.0;
-  std::string renderer;               // GL_RENDERER
+  std::string renderer;                                // GL_RENDERER
   core::BackendKind backend = core::BackendKind::Cpu;  // what refined the volume
-  std::string warning;                // e.g. fewer points landed inside the mesh than asked for
+  std::string warning;                                 // e.g. fewer points landed inside the mesh than asked for
   double coverage = 0.0;              // share of the mesh's silhouette where the pattern shows (flame/image.h)
   std::uint64_t pointsProjected = 0;  // points method: points projected into the image (0: volume method)
   double noise = std::numeric_limits<double>::quiet_NaN();  // the grid's final noise estimate (NaN: none)

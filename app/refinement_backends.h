@@ -3,7 +3,6 @@
 // machine, and the backend made for it. Here, above core and gl, because choosing needs both.
 #pragma once
 
-#include <cstdint>
 #include <memory>
 #include <string_view>
 #include <vector>

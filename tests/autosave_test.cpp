@@ -14,7 +14,6 @@
 #include <fstream>
 #include <cstring>
 #include <string>
-#include <thread>
 
 #include <nlohmann/json.hpp>
 

@@ -8,7 +8,6 @@
 #include <fstream>
 #include <optional>
 #include <set>
-#include <thread>
 
 #include "core/error.h"
 #include "core/image_io.h"

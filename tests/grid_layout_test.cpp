@@ -8,15 +8,12 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <condition_variable>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <memory>
-#include <mutex>
-#include <stop_token>
 #include <thread>
 #include <vector>
 

@@ -11,7 +11,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/refinement/accumulator.h"
 #include "core/grid.h"
 #include "core/scene.h"
 #include "core/volume_export.h"

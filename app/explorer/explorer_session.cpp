@@ -1,7 +1,5 @@
 #include "explorer_session.h"
 
-#include "refinement_backends.h"
-
 #include <pthread.h>
 #include <algorithm>
 #include <cmath>
@@ -11,6 +9,8 @@
 
 #include "core/error.h"
 #include "core/mask_cache.h"
+#include "core/refinement/accumulator.h"
+#include "core/refinement/snapshot_publisher.h"
 #include "core/scene_io.h"
 #include "core/scene_schema.h"
 #include "pipeline.h"

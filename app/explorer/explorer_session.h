@@ -19,12 +19,10 @@
 #include <string>
 #include <thread>
 
-#include "core/refinement/accumulator.h"
 #include "core/mesh.h"
 #include "core/packed_volume.h"
 #include "core/progress_signal.h"
 #include "core/scene.h"
-#include "core/refinement/snapshot_publisher.h"
 #include "refinement_backends.h"
 
 namespace voxflame::app {

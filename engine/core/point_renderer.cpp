@@ -1,5 +1,7 @@
 #include "point_renderer.h"
 
+#include "core/refinement/accumulator.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>

@@ -17,7 +17,6 @@
 #include <optional>
 #include <vector>
 
-#include "core/refinement/accumulator.h"
 #include "chunk_sums.h"
 #include "camera.h"
 #include "core/flame/image.h"

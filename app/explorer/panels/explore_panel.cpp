@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "core/refinement/accumulator.h"
 #include "core/attractor.h"
 #include "core/error.h"
 #include "core/flame/flame.h"

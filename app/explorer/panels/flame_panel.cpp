@@ -4,6 +4,8 @@
 
 #include <imgui.h>
 
+#include <glm/trigonometric.hpp>
+
 #include <algorithm>
 #include <sstream>
 #include <cfloat>

@@ -8,23 +8,16 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <iterator>
 #include <new>
-#include <optional>
 
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
 
-#include <glm/common.hpp>
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
-#include <glm/vector_relational.hpp>
 
-#include "core/color.h"
 #include "core/cpu_features.h"
 #include "core/error.h"
-#include "core/order_statistics.h"
 #include "core/random.h"
 
 namespace voxflame::core {

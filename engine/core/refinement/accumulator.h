@@ -15,7 +15,6 @@
 // layout). It never touches GL. Threads are std::jthreads owned here and joined in the destructor.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <atomic>
 #include <condition_variable>
@@ -26,7 +25,6 @@
 #include <shared_mutex>
 #include <string>
 #include <thread>
-#include <type_traits>
 #include <vector>
 
 #include "core/core_budget.h"

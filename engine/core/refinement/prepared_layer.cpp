@@ -1,19 +1,14 @@
 #include "core/refinement/prepared_layer.h"
 
-#include <pthread.h>
 #include <algorithm>
 #include <utility>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
-#include <cstring>
 #include <iterator>
-#include <new>
 #include <optional>
 
 #if defined(__linux__)
-#include <sys/mman.h>
 #endif
 
 #include <glm/common.hpp>
@@ -22,7 +17,6 @@
 #include <glm/vector_relational.hpp>
 
 #include "core/color.h"
-#include "core/cpu_features.h"
 #include "core/error.h"
 #include "core/order_statistics.h"
 #include "core/random.h"

@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/gtc/type_precision.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
