@@ -25,10 +25,12 @@ struct RenderArguments {
   std::optional<std::string> preset;  // PRESET.json, IMAGE.png, FILE.flame or a mesh; none: the default
   std::optional<std::string> output;  // OUT.png, OUT.exr, OUT.vdb or OUT.nrrd
   int width = 1280, height = 720;
-  std::uint64_t points = 0;                     // 0: the preset's
-  int threads = 0;                              // 0: all cores
-  BackendChoice backend = BackendChoice::Auto;  // what refines the volume (refinement_backends.h)
-  std::optional<double> untilNoisePercent;      // stop at this estimated noise (percent), --points a cap
+  std::uint64_t points = 0;  // 0: the preset's
+  int threads = 0;           // 0: all cores
+  // What refines the volume (refinement_backends.h). The CPU until the GPU backend has been measured
+  // on a hardware GPU; `auto` and `gpu` are the user's to ask for.
+  BackendChoice backend = BackendChoice::Cpu;
+  std::optional<double> untilNoisePercent;  // stop at this estimated noise (percent), --points a cap
   std::optional<int> samples, grid, oversample;
   std::optional<double> cameraAzimuthDeg, cameraElevationDeg, time;
   int bitDepth = 8;
@@ -69,8 +71,8 @@ struct AnimateArguments {
   std::optional<int> samples, grid;
   std::uint64_t points = 0;
   int threads = 0;
-  BackendChoice backend = BackendChoice::Auto;  // what refines each frame's volume
-  std::optional<std::string> farm;              // "slurm"
+  BackendChoice backend = BackendChoice::Cpu;  // what refines each frame's volume (as render's)
+  std::optional<std::string> farm;             // "slurm"
   std::optional<int> tasks;
   std::optional<std::string> partition;
   bool submit = false;

@@ -52,8 +52,9 @@ struct Settings {
   // many percent, and the process rests; 0: never stop (refine until the next edit). 0–100.
   double refineUntilNoisePercent = kDefaultRefineUntilNoisePercent;
   // What refines the explorer's volume ("refinement_backend": cpu, gpu or auto;
-  // refinement_backends.h): auto takes the GPU where the GL renderer is a hardware one.
-  BackendChoice refinementBackend = BackendChoice::Auto;
+  // refinement_backends.h): auto takes the GPU where the GL renderer is a hardware one. The CPU by
+  // default, as render's --backend.
+  BackendChoice refinementBackend = BackendChoice::Cpu;
 
   // Puts `path` (made absolute) first among its kind, removing an earlier mention and the
   // oldest beyond kMaxRecentFiles.

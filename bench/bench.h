@@ -13,12 +13,12 @@ namespace voxflame::bench {
 
 struct BenchOptions {
   bool json = false;
-  std::string meshFolder;            // where bunny.obj, dragon.ply, ... are
-  std::string method;                // --method volume|points (export), empty: the benchmark's default
-  std::vector<int> grids;            // --grid N...: the grids `explorer` runs at, empty: 192, 256 and 512;
-                                     // `raymarch` keeps only its cases at these grids
-  bool print = false;                // --print: `export` renders the 16K print instead of the 4K stills
-  std::string backend = "cpu";       // --backend cpu|gpu: what `accumulate` refines with
+  std::string meshFolder;       // where bunny.obj, dragon.ply, ... are
+  std::string method;           // --method volume|points (export), empty: the benchmark's default
+  std::vector<int> grids;       // --grid N...: the grids `explorer` runs at, empty: 192, 256 and 512;
+                                // `raymarch` keeps only its cases at these grids
+  bool print = false;           // --print: `export` renders the 16K print instead of the 4K stills
+  std::string backend = "cpu";  // --backend cpu|gpu: what `accumulate` measures; `explorer`, `rest`, `view`: refine on
   std::vector<std::string> presets;  // `rest`'s presets (files or shipped names), empty: every shipped one;
                                      // `fidelity`'s flame files, empty: its default set
 };

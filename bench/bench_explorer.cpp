@@ -458,6 +458,9 @@ void benchExplorer(const BenchOptions& options) {
     app::ExplorerSession session;
     RunnableThreadSampler runnable(libraryThreads);
     FrameLoop loop(session, initial, software ? 0.5f : 1.0f);
+    // --backend: what refines the large grid (the explorer's "refine on" setting).
+    loop.state.services.settings.refinementBackend =
+        options.backend == "gpu" ? app::BackendChoice::Gpu : app::BackendChoice::Cpu;
     core::Scene& scene = loop.state.document.scene;
     loop.run();  // posts the scene
     session.waitUntilApplied(600.0);
@@ -542,6 +545,7 @@ void benchExplorer(const BenchOptions& options) {
     }
     phases["edits"] = runnableByPhase["edits"];
     report(options, {{"bench", "explorer"},
+                     {"backend", std::string(core::toString(session.status().backend))},
                      {"grid", resolution},
                      {"renderer", context.renderer()},
                      {"render_scale", loop.state.panels.scene.renderScale},

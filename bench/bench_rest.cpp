@@ -84,6 +84,9 @@ void benchRest(const BenchOptions& options) {
     const core::Scene scene = core::loadScene(path);
     app::ExplorerSession session;
     HeadlessFrameLoop loop(session, scene, explorerPreviewScale(context.renderer()));
+    // --backend: what refines the large grid (the explorer's "refine on" setting).
+    loop.state.services.settings.refinementBackend =
+        options.backend == "gpu" ? app::BackendChoice::Gpu : app::BackendChoice::Cpu;
     std::vector<double> frameMs;  // of the frames drawn until rest
     bool measuringFrames = true;
     auto step = [&] {
@@ -109,6 +112,7 @@ void benchRest(const BenchOptions& options) {
     const double toRest = secondsSince(start);
     const app::SessionStatus rested = session.status();
     nlohmann::json measurement = {{"benchmark", "rest"},
+                                  {"backend", std::string(core::toString(session.status().backend))},
                                   {"preset", path.stem().string()},
                                   {"grid", scene.gridResolution},
                                   {"rested", resting},

@@ -66,6 +66,9 @@ void benchView(const BenchOptions& options) {
     const core::Scene scene = core::loadScene(path);
     app::ExplorerSession session;
     HeadlessFrameLoop loop(session, scene, explorerPreviewScale(context.renderer()));
+    // --backend: what refines the large grid (the explorer's "refine on" setting).
+    loop.state.services.settings.refinementBackend =
+        options.backend == "gpu" ? app::BackendChoice::Gpu : app::BackendChoice::Cpu;
     std::vector<double> frameMs, pointsFrameMs;
     auto step = [&] {
       double ms = -1.0;
@@ -105,6 +108,7 @@ void benchView(const BenchOptions& options) {
     const app::SessionStatus rested = session.status();
     const app::ViewRefinement view = loop.state.frame.view;
     nlohmann::json measurement = {{"benchmark", "view"},
+                                  {"backend", std::string(core::toString(session.status().backend))},
                                   {"preset", path.stem().string()},
                                   {"renderer", context.renderer()},
                                   {"method", scene.render.method == core::RenderMethod::Points ? "points" : "volume"},

@@ -82,7 +82,7 @@ CLI::Option* addBackendChoice(CLI::App& command, app::BackendChoice& target) {
       command, "--backend", target, {app::BackendChoice::Cpu, app::BackendChoice::Gpu, app::BackendChoice::Auto},
       [](app::BackendChoice c) { return app::toString(c); },
       "What refines the volume: cpu (every core), gpu (compute shaders; attractor layers and the volume method), "
-      "auto (the GPU where it is a hardware one and runs the pattern, else the CPU; the default). A render's "
+      "auto (the GPU where it is a hardware one and runs the pattern, else the CPU). Default: cpu. A render's "
       "chunks all come from one backend");
 }
 
@@ -407,8 +407,8 @@ Run defineBench(CLI::App& command) {
                    "`voxflame render` of its own: seconds and peak resident memory");
   command
       .add_option("--backend", options->backend,
-                  "`accumulate`: the refinement backend to measure, cpu (the default) or gpu (compute shaders, at 256³ "
-                  "and 512³)")
+                  "The refinement backend to measure, cpu (the default) or gpu: `accumulate` runs the GPU backend "
+                  "at 256³ and 512³; `explorer`, `rest` and `view` set the explorer's \"refine on\" to it")
       ->check(CLI::IsMember({"cpu", "gpu"}));
   command.add_flag("--json", options->json, "One JSON object a line");
   command.footer("Measure performance (Release build). The benchmarks:" + list);

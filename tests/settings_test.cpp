@@ -108,12 +108,12 @@ TEST(Settings, RoundTripKeepsEverything) {
   EXPECT_EQ(s.refinementBackend, voxflame::app::BackendChoice::Gpu);
 }
 
-TEST(Settings, AnUnknownRefinementBackendIsNamedAndLeftAtAuto) {
+TEST(Settings, AnUnknownRefinementBackendIsNamedAndLeftAtTheCpu) {
   TemporaryFolder folder;
   const auto file = folder / "settings.json";
   std::ofstream(file) << R"({"refinement_backend": "metal", "refine_until_noise_percent": 2})";
   const auto loaded = loadSettings(file);
-  EXPECT_EQ(loaded.settings.refinementBackend, voxflame::app::BackendChoice::Auto);
+  EXPECT_EQ(loaded.settings.refinementBackend, voxflame::app::BackendChoice::Cpu);
   EXPECT_EQ(loaded.settings.refineUntilNoisePercent, 2.0);
   EXPECT_NE(loaded.message.find("unknown refinement backend 'metal'"), std::string::npos) << loaded.message;
 }
