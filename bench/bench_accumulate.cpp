@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <memory>
+#include <optional>
 #include <string>
 #include <thread>
 #include <utility>
@@ -48,6 +49,19 @@ Rate measureRate(const core::RefinementBackend& accumulator) {
   return rate;
 }
 
+// A catalogue attractor with its defaults, coloured by speed along a two-stop gradient.
+std::optional<core::PatternLayer> benchLayer(const char* id) {
+  const core::AttractorInfo* info = core::findAttractor(id);
+  if (!info) return std::nullopt;
+  core::PatternLayer layer;
+  layer.attractor = id;
+  layer.params = info->defaultParams();
+  layer.step = info->defaultStep;
+  layer.integrator = info->defaultIntegrator;
+  layer.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
+  return layer;
+}
+
 }  // namespace
 
 void benchAccumulateChaos(const BenchOptions& options, const std::shared_ptr<const core::InsideMask>& mask,
@@ -63,14 +77,8 @@ void benchAccumulate(const BenchOptions& options) {
       std::make_shared<const core::InsideMask>(core::buildInsideMask(mesh, core::gridOverBox(mesh.bounds(), 256)));
   const int allThreads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   for (const char* id : {"lorenz84", "lorenz", "pickover", "polynomial_a"}) {
-    const core::AttractorInfo* info = core::findAttractor(id);
-    if (!info) continue;
-    core::PatternLayer layer;
-    layer.attractor = id;
-    layer.params = info->defaultParams();
-    layer.step = info->defaultStep;
-    layer.integrator = info->defaultIntegrator;
-    layer.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
+    const std::optional<core::PatternLayer> layer = benchLayer(id);
+    if (!layer) continue;
     // Lorenz-84 on 2 threads also runs with the old nearest-voxel deposit, right after the
     // jittered one, so the cost of the anti-aliasing jitter reads off adjacent rows.
     std::vector<std::pair<int, core::Deposit>> runs{{1, core::Deposit::Jittered},
@@ -82,7 +90,7 @@ void benchAccumulate(const BenchOptions& options) {
     for (const auto& [threads, deposit] : runs) {
       core::Accumulator accumulator(mask, threads);
       accumulator.setDeposit(deposit);
-      accumulator.setPattern({layer}, 1);
+      accumulator.setPattern({*layer}, 1);
       const Rate rate = measureRate(accumulator);
       report(options, {{"bench", "accumulate"},
                        {"attractor", id},
@@ -147,16 +155,10 @@ void benchAccumulateGpu(const BenchOptions& options) {
     }
     gl::GpuAccumulator& accumulator = *backend;
     for (const char* id : {"lorenz84", "lorenz", "pickover", "polynomial_a"}) {
-      const core::AttractorInfo* info = core::findAttractor(id);
-      if (!info) continue;
-      core::PatternLayer layer;
-      layer.attractor = id;
-      layer.params = info->defaultParams();
-      layer.step = info->defaultStep;
-      layer.integrator = info->defaultIntegrator;
-      layer.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
+      const std::optional<core::PatternLayer> layer = benchLayer(id);
+      if (!layer) continue;
       accumulator.setTargetPoints(0);
-      accumulator.setPattern({layer}, 1);
+      accumulator.setPattern({*layer}, 1);
       const Rate rate = measureRate(accumulator);
       report(options, {{"bench", "accumulate"},
                        {"backend", "gpu"},

@@ -66,6 +66,17 @@ uint xorshift32(uint r) {
 float jitterOffset(uint r) { return float(r >> 8) * (1.0 / 16777216.0) - 0.5; }
 float symmetric(uint r) { return float(r >> 8) * (2.0 / 16777216.0) - 1.0; }
 
+// One point's colour into its cell: the count goes on, the sums stop at kColourCountLimit points
+// (the CPU's rule, so the sums stay below 2^32 and the long-converged mean stays put).
+void addColour(uint cell, uint colour) {
+  uint before = atomicAdd(cells[cell].w, 1u);
+  if (before < kColourCountLimit) {
+    atomicAdd(cells[cell].x, colour & 0xffu);
+    atomicAdd(cells[cell].y, (colour >> 8) & 0xffu);
+    atomicAdd(cells[cell].z, (colour >> 16) & 0xffu);
+  }
+}
+
 void seedOrbit(inout Orbit o, uint index) {
   uint h = pcgHash(uStreamSeed ^ pcgHash(index * 2654435761u + o.state.z * 40503u));
   vec3 s = seeds[h % max(uSeedCount, 1u)].xyz;
@@ -139,12 +150,7 @@ void main() {
         if ((cells[cell].w & kOutsideBit) != 0u) {
           ++outside;
         } else {
-          uint before = atomicAdd(cells[cell].w, 1u);
-          if (before < kColourCountLimit) {
-            atomicAdd(cells[cell].x, colour & 0xffu);
-            atomicAdd(cells[cell].y, (colour >> 8) & 0xffu);
-            atomicAdd(cells[cell].z, (colour >> 16) & 0xffu);
-          }
+          addColour(cell, colour);  // the cell's count is the voxel's hits
           ++inside;
         }
 #else
@@ -152,12 +158,7 @@ void main() {
           ++outside;
         } else {
           atomicAdd(hits[voxel], 1u);
-          uint before = atomicAdd(cells[cell].w, 1u);
-          if (before < kColourCountLimit) {
-            atomicAdd(cells[cell].x, colour & 0xffu);
-            atomicAdd(cells[cell].y, (colour >> 8) & 0xffu);
-            atomicAdd(cells[cell].z, (colour >> 16) & 0xffu);
-          }
+          addColour(cell, colour);
           ++inside;
         }
 #endif
