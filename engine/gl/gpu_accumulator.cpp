@@ -423,7 +423,7 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
     u.escapeRadius = static_cast<float>(std::min(layer.escapeRadius, 1e30));
     const bool flow = layer.info && layer.info->kind == core::AttractorKind::Flow;
     u.alongStep = flow ? 1.0f : 0.0f;
-    u.hair = flow ? 1e-5f : 0.0f;
+    u.hair = flow ? 1e-5f : 1e-7f;  // as the CPU's orbits start (core's accumulator.cpp says why)
     const core::ColorSettings& color = layer.layer.color;
     double scale = color.scale;
     switch (color.mode) {
