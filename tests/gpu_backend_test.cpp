@@ -119,11 +119,6 @@ TEST(GpuBackend, EveryGpuAttractorStepsAsTheCatalogueDoes) {
       std::vector<float> params(32, 0.0f);
       for (std::size_t i = 0; i < layer.params.size(); ++i) params[i] = static_cast<float>(layer.params[i]);
       glUniform1fv(program.uniform("uParams"), 32, params.data());
-      if (const GLint location = program.uniform("uParamsDouble"); location >= 0) {
-        std::vector<double> exact(32, 0.0);
-        std::copy(layer.params.begin(), layer.params.end(), exact.begin());
-        glUniform1dv(location, 32, exact.data());
-      }
       glUniform1f(program.uniform("uH"), static_cast<float>(step));
       glDispatchCompute(static_cast<GLuint>(starts.size()), 1, 1);
       glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -135,7 +135,6 @@ struct LayerUniforms {
   std::string system;
   bool rk4 = false;
   std::vector<float> params;
-  std::vector<double> exactParams;  // for the maps attractors.glsl iterates in double
   float step = 0.0f;
   glm::mat3 toGrid{1.0f};
   glm::vec3 offset{0.0f};
@@ -412,7 +411,6 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
     u.system = systemDefine(layer.layer.attractor);
     u.rk4 = layer.layer.integrator == core::Integrator::RK4;
     for (double v : layer.layer.params) u.params.push_back(static_cast<float>(v));
-    u.exactParams = layer.layer.params;
     u.step = static_cast<float>(layer.layer.step);
     const glm::dvec3 axisScale = layer.fit.axisScale * layer.fit.scale;
     const glm::dmat3 m =
@@ -600,11 +598,6 @@ void GpuAccumulator::dispatchRound(Device& device) {
     std::array<float, 32> params{};
     std::copy(u.params.begin(), u.params.end(), params.begin());
     glUniform1fv(program.uniform("uParams"), 32, params.data());
-    if (const GLint location = program.uniform("uParamsDouble"); location >= 0) {
-      std::array<double, 32> exact{};
-      std::copy(u.exactParams.begin(), u.exactParams.end(), exact.begin());
-      glUniform1dv(location, 32, exact.data());
-    }
     glUniform1ui(program.uniform("uOrbitCount"), orbits_);
     glUniform1i(program.uniform("uSteps"), steps);
     glUniform1f(program.uniform("uStep"), u.step);

@@ -8,7 +8,7 @@
 layout(local_size_x = 64) in;
 
 struct Orbit {
-  vec4 position;  // w: unused (a double-precision map's state between dispatches: in float)
+  vec4 position;  // w: unused
   vec4 previous;  // the position one step before
   vec4 lastStep;  // the step before that (curvature colouring)
   uvec4 state;    // x: jitter stream (xorshift32, never 0), y: age (kUnseeded: to be seeded), z: reseeds
