@@ -7,7 +7,6 @@
 #include <epoxy/egl.h>
 #include <epoxy/gl.h>
 
-#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
