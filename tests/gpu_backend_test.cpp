@@ -168,8 +168,9 @@ TEST(GpuBackend, AgreesWithTheCpuOnEveryShippedAttractorPreset) {
     const auto expected = [](double cc, double gg) { return std::sqrt(0.5 * (cc * cc + gg * gg)); };
     const double cc = relativeRms(cpuA.hits, cpuB.hits), gg = relativeRms(gpuA.hits, gpuB.hits);
     const double gc = relativeRms(gpuA.hits, cpuA.hits);
-    // Rucklidge's flow sits at the bound (0.080 measured against 0.078), its orbits in float: held
-    // to twice it, so that a real error still fails.
+    // Rucklidge's flow sits at the bound at this count (0.080 against 0.078), by noise: at 15 M
+    // points the GPU is 0.025 from the CPU, under the CPU's own 0.032. Held to twice the bound, so
+    // that a real error still fails.
     const double slack = entry.path().filename() == "rucklidge-teapot.json" ? 2.0 : 1.5;
     EXPECT_LE(gc, slack * expected(cc, gg))
         << "density: CPU against CPU " << cc << ", GPU against GPU " << gg << ", GPU against CPU " << gc;
