@@ -1687,6 +1687,9 @@ TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) 
   EXPECT_EQ(app::convergenceText(status), "refining: 65 M points, noise 1.2% of 0.5%");
   status.noiseTarget = 0.0;
   EXPECT_EQ(app::convergenceText(status), "refining: 65 M points, noise 1.2%");
+  status.backend = core::BackendKind::Gpu;
+  EXPECT_EQ(app::convergenceText(status), "refining on the GPU: 65 M points, noise 1.2%");
+  status.backend = core::BackendKind::Cpu;
 
   // The Lyapunov analysis of the pattern runs in the background at first: that is not rest.
   ASSERT_TRUE(framesUntil([&] { return !state.services.analysis.busy() && !state.services.search.busy(); }));

@@ -18,6 +18,8 @@ std::string convergenceText(const SessionStatus& status) {
   char text[200];
   const double noise = 100.0 * status.noise, target = 100.0 * status.noiseTarget;
   const double millions = static_cast<double>(status.stats.points) * 1e-6;
+  // The GPU backend says so: the user chose it in the Scene panel, and a flame falls back to the CPU.
+  const char* refining = status.backend == core::BackendKind::Gpu ? "refining on the GPU" : "refining";
   if (status.paused)
     std::snprintf(text, sizeof text, "refining paused for the export");
   else if (status.converged)
@@ -26,11 +28,11 @@ std::string convergenceText(const SessionStatus& status) {
     std::snprintf(text, sizeof text, "at rest: the cap of %.0f points per voxel (noise %.2g%%)",
                   status.capPointsPerVoxel, noise);
   else if (!std::isfinite(noise))
-    std::snprintf(text, sizeof text, "refining: %.0f M points, measuring the noise", millions);
+    std::snprintf(text, sizeof text, "%s: %.0f M points, measuring the noise", refining, millions);
   else if (status.noiseTarget > 0.0)
-    std::snprintf(text, sizeof text, "refining: %.0f M points, noise %.2g%% of %.2g%%", millions, noise, target);
+    std::snprintf(text, sizeof text, "%s: %.0f M points, noise %.2g%% of %.2g%%", refining, millions, noise, target);
   else
-    std::snprintf(text, sizeof text, "refining: %.0f M points, noise %.2g%%", millions, noise);
+    std::snprintf(text, sizeof text, "%s: %.0f M points, noise %.2g%%", refining, millions, noise);
   return text;
 }
 
