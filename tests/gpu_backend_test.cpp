@@ -25,7 +25,9 @@
 #include "core/scene_io.h"
 #include "gl/gpu_accumulator.h"
 #include "gl/headless_context.h"
+#include "gl/renderer_kind.h"
 #include "gl/shader_program.h"
+#include "refinement_backends.h"
 #include "test_support.h"
 
 using namespace voxflame;
@@ -216,4 +218,25 @@ TEST(GpuBackend, EndingTheBackendLeavesAnotherThreadsContextWorking) {
   const gl::ShaderProgram program(
       gl::ShaderSource{"after the backend", "#version 430 core\nlayout(local_size_x = 1) in;\nvoid main() {}\n"});
   EXPECT_NE(program.id(), 0u);
+}
+
+// `auto` takes the GPU only where the GL renderer is a hardware one and the GPU runs the pattern.
+TEST(GpuBackend, AutoTakesTheGpuOnlyOnHardwareForWhatItRuns) {
+  if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
+  bool software = true;
+  {
+    const gl::HeadlessContext context;
+    software = gl::softwareRasteriser();
+  }
+  const core::Scene attractor = core::defaultScene();
+  EXPECT_EQ(app::resolveBackend(app::BackendChoice::Auto, attractor.layers),
+            software ? core::BackendKind::Cpu : core::BackendKind::Gpu);
+  EXPECT_EQ(app::resolveBackend(app::BackendChoice::Gpu, attractor.layers), core::BackendKind::Gpu);
+  EXPECT_EQ(app::resolveBackend(app::BackendChoice::Cpu, attractor.layers), core::BackendKind::Cpu);
+  EXPECT_EQ(app::resolveBackend(app::BackendChoice::Auto, attractor.layers, core::RenderMethod::Points),
+            core::BackendKind::Cpu);
+  core::Scene flame = attractor;
+  flame.layers.front().kind = core::PatternKind::Flame;
+  EXPECT_EQ(app::resolveBackend(app::BackendChoice::Auto, flame.layers), core::BackendKind::Cpu);
+  EXPECT_THROW(app::resolveBackend(app::BackendChoice::Gpu, flame.layers), core::Error);
 }
