@@ -394,7 +394,8 @@ core::AccumulatorStats GpuAccumulator::stats() const {
 
 void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, std::uint64_t seed,
                                 WhenEscaping whenEscaping) {
-  const std::string unsupported = gpuUnsupportedReason(core::expandCopies(layers));
+  // Copies (LayerTransform::copies) share their layer's kind and attractor: the layers as given say it.
+  const std::string unsupported = gpuUnsupportedReason(layers);
   std::vector<core::PreparedLayer> prepared;
   std::string problem = unsupported;
   if (unsupported.empty()) {
