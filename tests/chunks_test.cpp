@@ -20,6 +20,7 @@ namespace {
 // A shipped flame (points method) and a shipped attractor (volume method), small and quick.
 const std::string kFlame = std::string(VOXFLAME_SOURCE_DIR) + "/presets/flame-silk-bunny.json";
 const std::string kAttractor = std::string(VOXFLAME_SOURCE_DIR) + "/presets/aizawa-orb.json";
+const std::string kJulia = std::string(VOXFLAME_SOURCE_DIR) + "/presets/qjulia-loop.json";
 const std::string kQuick = " --grid 48 --points 600000";
 
 const std::string kSize = " --width 64 --height 40";
@@ -189,17 +190,21 @@ TEST(ChunkBackends, ChunksOfAnotherBackendAreRefusedAndTheirOwnResume) {
 
 TEST(ChunkBackends, TheGpuBackendRefusesWhatItDoesNotRunWithAMessage) {
   TemporaryFolder folder;
-  auto result = runVoxflame("render " + kFlame + kQuick + kSize + " -o f.png --backend gpu", folder.path());
+  auto result = runVoxflame("render " + kJulia + kQuick + kSize + " -o j.png --backend gpu", folder.path());
   EXPECT_EQ(result.exitStatus, 1) << result.output;
-  EXPECT_TRUE(contains(result.output, "a flame layer needs the CPU backend")) << result.output;
+  EXPECT_TRUE(contains(result.output, "a quaternion_julia layer needs the CPU backend")) << result.output;
   result =
       runVoxflame("render " + kAttractor + kQuick + kSize + " -o p.png --backend gpu --method points", folder.path());
   EXPECT_EQ(result.exitStatus, 1) << result.output;
   EXPECT_TRUE(contains(result.output, "the points method projects its points on the CPU")) << result.output;
   // auto falls back to the CPU for both, whatever the machine.
-  result = runVoxflame("render " + kFlame + kQuick + kSize + " -o f.png --backend auto", folder.path());
+  result = runVoxflame("render " + kJulia + kQuick + kSize + " -o j.png --backend auto", folder.path());
   EXPECT_EQ(result.exitStatus, 0) << result.output;
   EXPECT_TRUE(contains(result.output, "on the cpu backend")) << result.output;
+  // A flame of the GPU's variations runs there (the volume method).
+  result = runVoxflame("render " + kFlame + kQuick + kSize + " -o f.png --method volume --backend gpu", folder.path());
+  EXPECT_EQ(result.exitStatus, 0) << result.output;
+  EXPECT_TRUE(contains(result.output, "on the gpu backend")) << result.output;
   result = runVoxflame("render " + kAttractor + kQuick + kSize + " -o x.png --backend metal", folder.path());
   EXPECT_NE(result.exitStatus, 0);
   EXPECT_TRUE(contains(result.output, "--backend")) << result.output;

@@ -65,6 +65,17 @@ class ChaosGame {
   // the caller may skip reading it.
   bool hidesPoints() const { return hidesPoints_; }
 
+  // What another backend needs to run the same game (the GPU's generated kernel): the pick table
+  // (rows of pickSize() entries, each a transform index: one row without xaos, 1 + transforms
+  // with it, row 0 for a lane's first step and row k + 1 after transform k), and the maps every
+  // drawn point goes through at random (the symmetry group, then JWildfire's post symmetry).
+  static constexpr int pickBits() { return kPickBits; }
+  static constexpr std::size_t pickSize() { return kPickSize; }
+  const std::vector<std::uint8_t>& pickTable() const { return pick_; }
+  bool usesXaos() const { return xaos_; }
+  const std::vector<std::array<double, 12>>& symmetryGroupMaps() const { return group_; }
+  const std::vector<std::array<double, 12>>& postSymmetryImages() const { return postSymmetry_; }
+
  private:
   struct Term {
     VariationFn apply = nullptr;

@@ -17,6 +17,7 @@
 #include "core/chunk_sums.h"
 #include "core/error.h"
 #include "core/random.h"
+#include "gl/flame_kernel.h"
 #include "gl/headless_context.h"
 #include "gl/renderer_kind.h"
 #include "gl/shader_program.h"
@@ -26,9 +27,11 @@ namespace voxflame::gl {
 namespace {
 
 constexpr GLuint kOrbitsBinding = 0, kCellsBinding = 1, kHitsBinding = 2, kSeedsBinding = 3, kCountersBinding = 4,
-                 kPaletteBinding = 5, kMaskBinding = 6, kSampleBinding = 7;
+                 kPaletteBinding = 5, kMaskBinding = 6, kSampleBinding = 7, kFlameDataBinding = 8,
+                 kFlamePickBinding = 9;
 constexpr int kTransientSteps = 32;  // as the CPU's: steps an orbit takes before it may add a point
-constexpr int kOrbitBytes = 64;      // accumulate.comp.glsl's Orbit
+// accumulate.comp.glsl's Orbit: an attractor's, and a chaos game's with its state, colour and stream.
+constexpr int kOrbitBytes = 64, kChaosOrbitBytes = 112;
 
 double nowSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
@@ -110,9 +113,13 @@ GLuint makeBuffer(GLuint binding, std::size_t bytes, const void* data = nullptr)
 
 std::string gpuUnsupportedReason(const std::vector<core::PatternLayer>& layers) {
   for (const core::PatternLayer& layer : layers) {
-    if (layer.kind != core::PatternKind::Attractor)
-      return "the GPU backend runs attractor layers only; a " + std::string(core::toString(layer.kind)) +
-             " layer needs the CPU backend";
+    if (layer.kind != core::PatternKind::Attractor) {
+      const std::string lacking = flameKernelUnsupported(layer);
+      if (!lacking.empty())
+        return "a " + std::string(core::toString(layer.kind)) +
+               " layer needs the CPU backend: the GPU backend does not have " + lacking;
+      continue;
+    }
     if (!gpuKnowsAttractor(layer.attractor))
       return "the GPU backend does not know attractor '" + layer.attractor + "'; it needs the CPU backend";
     if (layer.params.size() > 32)
@@ -132,7 +139,9 @@ bool hardwareGpuAvailable() {
 
 // One layer as the shader runs it.
 struct LayerUniforms {
-  std::string system;
+  std::string system;  // attractor layers: SYSTEM_<ID>
+  bool chaos = false;  // a flame or quaternion Julia layer: the kernel below
+  FlameKernel kernel;
   bool rk4 = false;
   std::vector<float> params;
   float step = 0.0f;
@@ -152,7 +161,7 @@ struct LayerUniforms {
 struct GpuAccumulator::Device {
   std::unique_ptr<HeadlessContext> context;
   GLuint cells = 0, hits = 0, counters = 0, mask = 0, sample = 0;
-  std::vector<GLuint> orbits, seeds, palettes;
+  std::vector<GLuint> orbits, seeds, palettes, flameData, flamePicks;
   std::vector<LayerUniforms> layers;
   std::map<std::string, ShaderProgram> programs;  // by their defines
   bool hitsInCells = true;
@@ -160,20 +169,32 @@ struct GpuAccumulator::Device {
   ~Device() {
     for (GLuint* b : {&cells, &hits, &counters, &mask, &sample})
       if (*b) glDeleteBuffers(1, b);
-    for (auto* list : {&orbits, &seeds, &palettes})
+    for (auto* list : {&orbits, &seeds, &palettes, &flameData, &flamePicks})
       if (!list->empty()) glDeleteBuffers(static_cast<GLsizei>(list->size()), list->data());
     programs.clear();
   }
 
   const ShaderProgram& program(const std::string& file, const std::string& defines, bool withAttractors) {
-    const std::string key = file + "|" + defines;
+    return program(file, defines, withAttractors ? embeddedShader("attractors.glsl").text : std::string());
+  }
+  // `prelude`: GLSL put before the file (the attractor catalogue, or a chaos game's variations and kernel).
+  const ShaderProgram& program(const std::string& file, const std::string& defines, const std::string& prelude) {
+    const std::string key = file + "|" + defines + "|" + prelude;
     auto found = programs.find(key);
     if (found != programs.end()) return found->second;
     const ShaderSource body = embeddedShader(file);
     std::string text = "#version 430 core\n" + defines + (hitsInCells ? "#define HITS_IN_CELLS\n" : "");
-    if (withAttractors) text += embeddedShader("attractors.glsl").text + "\n";
+    text += prelude + "\n";
     text += "#line 1\n" + body.text;
     return programs.emplace(key, ShaderProgram(ShaderSource{body.file, std::move(text)})).first->second;
+  }
+  // The program that runs one layer's steps.
+  const ShaderProgram& layerProgram(const LayerUniforms& u) {
+    if (u.chaos)
+      return program("accumulate.comp.glsl", "",
+                     embeddedShader("flame_variations.glsl").text + "\n#line 1\n" + u.kernel.source);
+    return program("accumulate.comp.glsl", "#define " + u.system + "\n" + (u.rk4 ? "#define INTEGRATOR_RK4\n" : ""),
+                   true);
   }
 
   void bindGrid() const {
@@ -230,7 +251,7 @@ std::size_t GpuAccumulator::gridBytes() const {
   const std::size_t voxels = mask_->geometry.voxelCount();
   const std::size_t hits = colour_.shift == 0 ? 0 : voxels * sizeof(std::uint32_t);
   return hits + colour_.cellCount() * sizeof(core::detail::ColourCell) + voxels / 8 +
-         std::size_t{orbits_} * kOrbitBytes * std::max<std::size_t>(layers_.size(), 1);
+         std::size_t{orbits_} * kChaosOrbitBytes * std::max<std::size_t>(layers_.size(), 1);
 }
 
 void GpuAccumulator::loop(std::stop_token stop, std::exception_ptr* startError, std::mutex* startMutex,
@@ -357,8 +378,9 @@ void GpuAccumulator::setDeposit(core::Deposit deposit) {
   deposit_ = deposit;
 }
 
-void GpuAccumulator::setPaletteMode(core::PaletteMode /*mode*/) {
-  // Only colour index layers (flames, quaternion Julia sets) read it, and they run on the CPU.
+void GpuAccumulator::setPaletteMode(core::PaletteMode mode) {
+  // Only colour index layers (flames, quaternion Julia sets) read it, at the next dispatch.
+  linearPalette_ = mode == core::PaletteMode::Linear;
 }
 
 void GpuAccumulator::setHeld(bool held) {
@@ -408,8 +430,12 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
   std::vector<LayerUniforms> uniforms;
   for (const core::PreparedLayer& layer : prepared) {
     LayerUniforms u;
-    u.runs = layer.bounded && layer.layer.weight > 0.0 && !layer.seeds.empty();
-    u.system = systemDefine(layer.layer.attractor);
+    u.chaos = layer.game != nullptr;
+    u.runs = layer.bounded && layer.layer.weight > 0.0 && (u.chaos || !layer.seeds.empty());
+    if (u.chaos)
+      u.kernel = makeFlameKernel(layer.layer, *layer.game);
+    else
+      u.system = systemDefine(layer.layer.attractor);
     u.rk4 = layer.layer.integrator == core::Integrator::RK4;
     for (double v : layer.layer.params) u.params.push_back(static_cast<float>(v));
     u.step = static_cast<float>(layer.layer.step);
@@ -439,8 +465,11 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
         u.colorMode = 3, scale /= (layer.axisHigh - layer.axisLow);
         break;
       case core::ColorMode::Distance:
-      case core::ColorMode::Index:  // refused for attractor layers by prepareLayers
         u.colorMode = 4, scale /= layer.distanceReference;
+        break;
+      case core::ColorMode::Index:
+        // flam3's lookup takes entry ⌊256 c⌋, as the CPU's kernel does (accumulator.cpp says why).
+        u.colorMode = 5, scale *= 256.0 / 255.0;
         break;
     }
     u.colorScale = static_cast<float>(scale);
@@ -475,23 +504,26 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
     return;
   }
   runOnDevice([&](Device& device) {
-    for (auto* list : {&device.orbits, &device.seeds, &device.palettes})
+    for (auto* list : {&device.orbits, &device.seeds, &device.palettes, &device.flameData, &device.flamePicks})
       if (!list->empty()) {
         glDeleteBuffers(static_cast<GLsizei>(list->size()), list->data());
         list->clear();
       }
     device.layers = std::move(uniforms);
     for (const LayerUniforms& u : device.layers) {
-      device.orbits.push_back(makeBuffer(kOrbitsBinding, std::size_t{orbits_} * kOrbitBytes));
+      device.orbits.push_back(
+          makeBuffer(kOrbitsBinding, std::size_t{orbits_} * (u.chaos ? kChaosOrbitBytes : kOrbitBytes)));
       device.seeds.push_back(makeBuffer(kSeedsBinding, u.seeds.size() * sizeof(glm::vec4), u.seeds.data()));
       device.palettes.push_back(makeBuffer(kPaletteBinding, sizeof(u.palette), u.palette.data()));
+      device.flameData.push_back(
+          makeBuffer(kFlameDataBinding, u.kernel.data.size() * sizeof(float), u.kernel.data.data()));
+      device.flamePicks.push_back(
+          makeBuffer(kFlamePickBinding, u.kernel.pick.size() * sizeof(std::uint32_t), u.kernel.pick.data()));
       // All ones: every orbit reads as unseeded (state.y) and seeds itself at its first step.
       const GLuint ones = 0xFFFFFFFFu;
       glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.orbits.back());
       glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
-      if (u.runs)
-        device.program("accumulate.comp.glsl", "#define " + u.system + "\n" + (u.rk4 ? "#define INTEGRATOR_RK4\n" : ""),
-                       true);
+      if (u.runs) device.layerProgram(u);
     }
     clearGrid(device);
     if (glGetError() != GL_NO_ERROR) throw core::Error("the GPU backend could not set up the pattern's buffers");
@@ -589,16 +621,20 @@ void GpuAccumulator::dispatchRound(Device& device) {
     if (!u.runs) continue;
     const int steps = std::max(1, static_cast<int>(std::ceil(u.stepShare * stepFraction)));
     roundSteps = std::max(roundSteps, steps);
-    const ShaderProgram& program = device.program(
-        "accumulate.comp.glsl", "#define " + u.system + "\n" + (u.rk4 ? "#define INTEGRATOR_RK4\n" : ""), true);
+    const ShaderProgram& program = device.layerProgram(u);
     const GLuint id = program.id();
     glUseProgram(id);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOrbitsBinding, device.orbits[li]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kSeedsBinding, device.seeds[li]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPaletteBinding, device.palettes[li]);
-    std::array<float, 32> params{};
-    std::copy(u.params.begin(), u.params.end(), params.begin());
-    glUniform1fv(program.uniform("uParams"), 32, params.data());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFlameDataBinding, device.flameData[li]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFlamePickBinding, device.flamePicks[li]);
+    if (!u.chaos) {
+      std::array<float, 32> params{};
+      std::copy(u.params.begin(), u.params.end(), params.begin());
+      glUniform1fv(program.uniform("uParams"), 32, params.data());
+    }
+    glUniform1f(program.uniform("uIndexDither"), linearPalette_.load() ? 1.0f : 0.0f);
     glUniform1ui(program.uniform("uOrbitCount"), orbits_);
     glUniform1i(program.uniform("uSteps"), steps);
     glUniform1f(program.uniform("uStep"), u.step);

@@ -1,5 +1,7 @@
 // The GPU backend's chaos step (gpu_accumulator.h): one invocation per orbit, uSteps steps of the
-// layer's attractor (attractors.glsl, put before this file) per dispatch, each point classified the
+// layer's attractor (attractors.glsl, put before this file) or, with CHAOS_GAME, of its flame or
+// quaternion Julia set (flame_variations.glsl and the layer's generated chaosStep, flame_kernel.h)
+// per dispatch, each point classified the
 // way core::Accumulator's classify pass does it (escape test, colour, a jittered voxel, the inside
 // flag) and added to the grid with integer atomics, so the sums come out the same in any order.
 // The grid's layout is the CPU's: hit counts carry the outside flag in their top bit; colour cells
@@ -12,6 +14,11 @@ struct Orbit {
   vec4 previous;  // the position one step before
   vec4 lastStep;  // the step before that (curvature colouring)
   uvec4 state;    // x: jitter stream (xorshift32, never 0), y: age (kUnseeded: to be seeded), z: reseeds
+#ifdef CHAOS_GAME
+  vec4 chaos;         // the iterated state (a quaternion's fourth component in w); position is what is drawn
+  vec4 chaosColour;   // x: flam3's colour index, 0–1
+  uvec4 chaosStream;  // x: the chaos stream (xorshift32, never 0), y: 1 + the transform taken last (xaos)
+#endif
 };
 layout(std430, binding = 0) buffer Orbits { Orbit orbits[]; };
 layout(std430, binding = 1) buffer Cells { uvec4 cells[]; };  // red, green, blue, count
@@ -35,7 +42,8 @@ uniform int uColourShift;
 uniform ivec2 uCellStrides;    // colour cells along x, along x·y
 uniform float uEscapeRadius;
 uniform float uAlongStep;      // 1 for flows: a point lands at a random spot of its last step
-uniform int uColorMode;        // core::ColorMode: 0 speed, 1 curvature, 2 time, 3 axis, 4 distance
+uniform int uColorMode;        // core::ColorMode: 0 speed, 1 curvature, 2 time, 3 axis, 4 distance, 5 index
+uniform float uIndexDither;    // index: 1 takes the next palette entry with the fraction's chance (linear)
 uniform float uColorScale;
 uniform float uInversePeriod;
 uniform vec3 uAxis;
@@ -79,9 +87,19 @@ void addColour(uint cell, uint colour) {
 
 void seedOrbit(inout Orbit o, uint index) {
   uint h = pcgHash(uStreamSeed ^ pcgHash(index * 2654435761u + o.state.z * 40503u));
+#ifdef CHAOS_GAME
+  // As core::ChaosGame::seedLane: anywhere in [-1, 1]³ (and w), any colour; the transient finds the set.
+  uint a = pcgHash(h), b = pcgHash(a), c = pcgHash(b), d = pcgHash(c), e = pcgHash(d);
+  o.chaos = vec4(symmetric(a), symmetric(b), symmetric(c), symmetric(d));
+  o.chaosColour = vec4(float(e >> 8) * (1.0 / 16777216.0), 0.0, 0.0, 0.0);
+  gChaosRandom = pcgHash(e) | 1u;
+  o.chaosStream = uvec4(gChaosRandom, 0u, 0u, 0u);
+  vec3 start = o.chaos.xyz;
+#else
   vec3 s = seeds[h % max(uSeedCount, 1u)].xyz;
   uint a = pcgHash(h), b = pcgHash(a), c = pcgHash(b);
   vec3 start = s + uHair * (1.0 + abs(s)) * vec3(symmetric(a), symmetric(b), symmetric(c));
+#endif
   o.position = vec4(start, 0.0);
   o.previous = o.position;
   o.lastStep = vec4(0.0);
@@ -100,10 +118,21 @@ void main() {
     seedOrbit(o, index);
   }
   uint inside = 0u, outside = 0u, escapes = 0u;
+#ifdef CHAOS_GAME
+  gChaosRandom = o.chaosStream.x;
+#else
   real3 state = real3(o.position.xyz);
+#endif
   for (int step = 0; step < uSteps; ++step) {
+#ifdef CHAOS_GAME
+    vec3 q;
+    float drawnColour;
+    bool visible = chaosStep(o.chaos, o.chaosColour.x, o.chaosStream.y, q, drawnColour);
+#else
+    const bool visible = true;
     real3 next = advance(state, uStep);
     vec3 q = vec3(next);
+#endif
     bool finite = all(lessThan(abs(q), vec3(uEscapeRadius)));  // false for NaN
     vec3 d = q - o.previous.xyz;
     float value;
@@ -117,13 +146,25 @@ void main() {
       value = cycles - floor(cycles);
     } else if (uColorMode == 3) {
       value = dot(q, uAxis) - uAxisOffset;
-    } else {
+    } else if (uColorMode == 4) {
       value = length(q - uCenter);
+    } else {
+#ifdef CHAOS_GAME
+      value = drawnColour;
+#else
+      value = 0.0;
+#endif
     }
-    float t = finite ? clamp(value * uColorScale * 255.0, 0.0, 255.0) : 0.0;
+    float t = value * uColorScale * 255.0;
+    uint r = o.state.x;
+    if (uColorMode == 5 && uIndexDither > 0.0) {
+      r = xorshift32(r);
+      t += uIndexDither * (jitterOffset(r) + 0.5);
+    }
+    t = finite ? clamp(t, 0.0, 255.0) : 0.0;
     uint colour = palette[uint(t)];
 
-    uint r = xorshift32(o.state.x);
+    r = xorshift32(r);
     float along = uAlongStep * (jitterOffset(r) + 0.5);
     vec3 g = uToGrid * (q - along * d) + uGridOffset;
     if (uJittered) {
@@ -136,7 +177,8 @@ void main() {
     }
     o.state.x = r;
     bool inGrid = finite && all(greaterThanEqual(g, vec3(0.0))) && all(lessThan(g, vec3(uGridSize)));
-    bool settled = finite && o.state.y > uint(kTransientSteps);
+    // A point its transform's opacity (or a quaternion slice) hides is not a point at all.
+    bool settled = finite && visible && o.state.y > uint(kTransientSteps);
     if (settled) {
       if (!inGrid) {
         ++outside;
@@ -167,15 +209,22 @@ void main() {
     if (!finite) {
       ++escapes;
       seedOrbit(o, index);
+#ifndef CHAOS_GAME
       state = real3(o.position.xyz);
+#endif
       continue;
     }
+#ifndef CHAOS_GAME
     state = next;
+#endif
     o.lastStep = vec4(d, 0.0);
     o.previous = vec4(q, 0.0);
     o.position = vec4(q, 0.0);
     if (o.state.y < kAgeLimit) ++o.state.y;
   }
+#ifdef CHAOS_GAME
+  o.chaosStream.x = gChaosRandom;
+#endif
   orbits[index] = o;
   if (inside != 0u) atomicAdd(counters[0], inside);
   if (outside != 0u) atomicAdd(counters[1], outside);

@@ -1,0 +1,221 @@
+#include "flame_kernel.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string_view>
+
+#include "core/chaos_game.h"
+#include "core/flame/flame.h"
+#include "core/flame/variations.h"
+#include "core/scene.h"
+
+namespace voxflame::gl {
+
+namespace {
+
+// What flame_variations.glsl defines, as V_<name>.
+const std::vector<std::string> kGpuVariations = {
+    "linear",        "sinusoidal",  "spherical",   "swirl",      "horseshoe",   "polar",      "handkerchief",
+    "heart",         "disc",        "spiral",      "hyperbolic", "diamond",     "ex",         "julia",
+    "bent",          "waves",       "fisheye",     "popcorn",    "exponential", "power",      "cosine",
+    "rings",         "fan",         "blob",        "pdj",        "fan2",        "rings2",     "eyefish",
+    "bubble",        "cylinder",    "perspective", "noise",      "julian",      "juliascope", "blur",
+    "gaussian_blur", "radial_blur", "pie",         "ngon",       "curl",        "rectangles", "linear3D",
+    "spherical3D",   "julia3D",     "julia3Dz",    "bubble3D",   "hemisphere",  "cylinder3D", "sinusoidal3D",
+    "swirl3D",       "curl3D",      "pie3D",       "blur3D",     "zblur",       "zscale",     "ztranslate",
+    "zcone"};
+
+bool gpuHasVariation(std::string_view name) {
+  return std::find(kGpuVariations.begin(), kGpuVariations.end(), name) != kGpuVariations.end();
+}
+
+// Why one transform cannot run on the GPU, or empty.
+std::string xformUnsupported(const core::FlameXform& xform) {
+  if (xform.hasWeightField()) return "a weighting field";
+  for (const core::VariationTerm& term : xform.variations) {
+    if (term.weight == 0.0) continue;
+    const core::VariationInfo* info = core::findVariation(term.name);
+    if (!info) return "variation '" + term.name + "'";
+    if (!gpuHasVariation(info->name)) return "variation '" + term.name + "'";
+    // None of the GPU's variations has these, but a future one might: say so rather than draw wrong.
+    if (info->directColour || info->readsSum || info->replaces != core::VariationInfo::Replaces::Nothing ||
+        info->name == "flatten")
+      return "variation '" + term.name + "'";
+  }
+  return {};
+}
+
+class Generator {
+ public:
+  explicit Generator(FlameKernel& kernel) : k_(kernel) {}
+
+  // Adds `values` to the data block; returns where they start.
+  int put(const double* values, std::size_t count) {
+    const int at = static_cast<int>(k_.data.size());
+    for (std::size_t i = 0; i < count; ++i) k_.data.push_back(static_cast<float>(values[i]));
+    return at;
+  }
+  int put(double value) { return put(&value, 1); }
+
+  // A GLSL function `vec3 <name>(vec3 p, inout float c, inout bool visible)` that runs one
+  // transform as core::ChaosGame::applyGroup does, then its colour blend and opacity draw (`final`:
+  // the final transform's, which always draws for its opacity).
+  void xformFunction(const std::string& name, const core::FlameXform& xform, bool final) {
+    std::string& s = k_.source;
+    const int affine = put(xform.affine.m.data(), 12);
+    s += "vec3 " + name + "(vec3 p, inout float c, inout bool visible) {\n";
+    s += "  int A = " + std::to_string(affine) + ";\n";
+    s += "  vec3 t = vec3(dot(vec3(flameData[A], flameData[A + 1], flameData[A + 2]), p) + flameData[A + 3],\n"
+         "                dot(vec3(flameData[A + 4], flameData[A + 5], flameData[A + 6]), p) + flameData[A + 7],\n"
+         "                dot(vec3(flameData[A + 8], flameData[A + 9], flameData[A + 10]), p) + flameData[A + 11]);\n";
+    struct Term {
+      const core::VariationInfo* info;
+      const core::VariationTerm* term;
+    };
+    std::array<std::vector<Term>, 3> stages;
+    for (const core::VariationStage stage :
+         {core::VariationStage::Pre, core::VariationStage::Normal, core::VariationStage::Post})
+      for (const core::VariationTerm& term : xform.variations) {
+        if (term.weight == 0.0 || core::variationStage(term.name) != stage) continue;
+        stages[static_cast<int>(stage)].push_back({core::findVariation(term.name), &term});
+      }
+    const auto call = [&](const Term& t, const char* point) {
+      const int weight = put(t.term->weight);
+      const int params = static_cast<int>(k_.data.size());
+      put(t.term->params.data(), t.term->params.size());
+      return "V_" + t.info->name + "(" + point + ", flameData[" + std::to_string(weight) + "], " +
+             std::to_string(params) + ", A)";
+    };
+    // A pre_ or post_ term replaces the coordinates its variation maps (or adds to them, for an
+    // additive one) and keeps the others: core's combineStage.
+    const auto combine = [&](const Term& t, const char* point) {
+      std::string code = "  { vec3 r = " + call(t, point) + ";\n";
+      const std::string op = t.info->additive ? " += " : " = ";
+      if (t.info->mapsXY) code += std::string("    ") + point + ".xy" + op + "r.xy;\n";
+      if (t.info->threeD) code += std::string("    ") + point + ".z" + op + "r.z;\n";
+      return code + "  }\n";
+    };
+    for (const Term& t : stages[0]) s += combine(t, "t");
+    s += stages[1].empty() ? "  vec3 o = t;\n" : "  vec3 o = vec3(0.0);\n";
+    for (const Term& t : stages[1]) s += "  o += " + call(t, "t") + ";\n";
+    for (const Term& t : stages[2]) s += combine(t, "o");
+    if (xform.hasPost && !xform.post.isIdentity()) {
+      const int post = put(xform.post.m.data(), 12);
+      s += "  int Q = " + std::to_string(post) + ";\n";
+      s += "  o = vec3(dot(vec3(flameData[Q], flameData[Q + 1], flameData[Q + 2]), o) + flameData[Q + 3],\n"
+           "           dot(vec3(flameData[Q + 4], flameData[Q + 5], flameData[Q + 6]), o) + flameData[Q + 7],\n"
+           "           dot(vec3(flameData[Q + 8], flameData[Q + 9], flameData[Q + 10]), o) + flameData[Q + 11]);\n";
+    }
+    const int keep = put(1.0 - xform.colorSpeed);
+    put(xform.colorSpeed * xform.color);
+    put(xform.opacity);
+    s += "  c = flameData[" + std::to_string(keep) + "] * c + flameData[" + std::to_string(keep + 1) + "];\n";
+    if (final)
+      s += "  visible = visible && psi() < flameData[" + std::to_string(keep + 2) + "];\n";
+    else if (xform.opacity < 1.0)
+      s += "  visible = psi() < flameData[" + std::to_string(keep + 2) + "];\n";
+    else
+      s += "  visible = true;\n";
+    s += "  return o;\n}\n";
+  }
+
+  // `vec3 <name>(vec3 p)`: p through one of `maps` drawn at random (core's throughOneOf).
+  void oneOfFunction(const std::string& name, const std::vector<std::array<double, 12>>& maps) {
+    std::string& s = k_.source;
+    const int first = static_cast<int>(k_.data.size());
+    for (const auto& m : maps) put(m.data(), 12);
+    s += "vec3 " + name + "(vec3 p) {\n";
+    s += "  uint high, low;\n";
+    s += "  psi();\n";  // advances the stream; the draw is its whole word, as the CPU takes it
+    s += "  umulExtended(gChaosRandom, " + std::to_string(maps.size()) + "u, high, low);\n";
+    s += "  int M = " + std::to_string(first) + " + 12 * int(high);\n";
+    s += "  return vec3(dot(vec3(flameData[M], flameData[M + 1], flameData[M + 2]), p) + flameData[M + 3],\n"
+         "              dot(vec3(flameData[M + 4], flameData[M + 5], flameData[M + 6]), p) + flameData[M + 7],\n"
+         "              dot(vec3(flameData[M + 8], flameData[M + 9], flameData[M + 10]), p) + flameData[M + 11]);\n";
+    s += "}\n";
+  }
+
+ private:
+  FlameKernel& k_;
+};
+
+void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, FlameKernel& kernel) {
+  Generator g(kernel);
+  std::string& s = kernel.source;
+  const std::vector<core::FlameXform> xforms = core::expandSymmetry(layer.flame);
+  for (std::size_t k = 0; k < xforms.size(); ++k) g.xformFunction("xform" + std::to_string(k), xforms[k], false);
+  const core::FlameGenome& genome = layer.flame;
+  if (genome.hasFinal) {
+    g.xformFunction("finalXform", genome.finalXform, true);
+    for (std::size_t k = 0; k < genome.chainedFinals.size(); ++k)
+      g.xformFunction("chainedFinal" + std::to_string(k), genome.chainedFinals[k], true);
+  }
+  if (!game.symmetryGroupMaps().empty()) g.oneOfFunction("throughSymmetry", game.symmetryGroupMaps());
+  if (!game.postSymmetryImages().empty()) g.oneOfFunction("throughPostSymmetry", game.postSymmetryImages());
+  const std::vector<std::uint8_t>& pick = game.pickTable();
+  kernel.pick.assign(pick.begin(), pick.end());
+
+  const int shift = 32 - core::ChaosGame::pickBits();
+  s += "bool chaosStep(inout vec4 state, inout float colour, inout uint previous, out vec3 drawn,\n"
+       "               out float drawnColour) {\n";
+  s += "  psi();\n";
+  if (game.usesXaos()) {
+    s += "  uint k = flamePick[(previous << " + std::to_string(core::ChaosGame::pickBits()) + ") | (gChaosRandom >> " +
+         std::to_string(shift) + ")];\n";
+    s += "  previous = k + 1u;\n";
+  } else {
+    s += "  uint k = flamePick[gChaosRandom >> " + std::to_string(shift) + "];\n";
+  }
+  s += "  bool visible = true;\n  vec3 p = state.xyz;\n  switch (k) {\n";
+  for (std::size_t k = 0; k < xforms.size(); ++k)
+    s += "    case " + std::to_string(k) + "u: p = xform" + std::to_string(k) + "(p, colour, visible); break;\n";
+  s += "  }\n  state.xyz = p;\n";
+  // flam3's limit: a state beyond it has escaped (the caller reseeds what is not drawn finite).
+  s += "  bool good = all(lessThan(abs(p), vec3(1e10)));\n";
+  s += "  vec3 o = p;\n  float oc = colour;\n";
+  if (genome.hasFinal) {
+    s += "  o = finalXform(p, oc, visible);\n";
+    for (std::size_t k = 0; k < genome.chainedFinals.size(); ++k)
+      s += "  o = chainedFinal" + std::to_string(k) + "(o, oc, visible);\n";
+  }
+  if (!game.symmetryGroupMaps().empty()) s += "  o = throughSymmetry(o);\n";
+  if (!game.postSymmetryImages().empty()) s += "  o = throughPostSymmetry(o);\n";
+  s += "  drawn = good ? o : vec3(uintBitsToFloat(0x7fc00000u));\n";
+  s += "  drawnColour = oc;\n  return visible;\n}\n";
+}
+
+}  // namespace
+
+const std::vector<std::string>& gpuFlameVariations() {
+  return kGpuVariations;
+}
+
+std::string flameKernelUnsupported(const core::PatternLayer& layer) {
+  // A quaternion Julia set's inverse iteration multiplies a coordinate by the root's scale at every
+  // step; in float a coordinate that wanders small underflows to 0 and stays there, so old orbits
+  // collapse onto a hyperplane the CPU's double orbits do not reach (qjulia-cage-orb drifted to 0.38
+  // relative RMS from the CPU at 15 M points, ten times its noise). Such layers stay on the CPU.
+  if (layer.kind == core::PatternKind::QuaternionJulia) return "the double precision a quaternion Julia set needs";
+  if (layer.kind != core::PatternKind::Flame) return "not a chaos-game layer";
+  const core::FlameGenome& genome = layer.flame;
+  for (const core::FlameXform& xform : genome.xforms)
+    if (std::string why = xformUnsupported(xform); !why.empty()) return why;
+  if (genome.hasFinal) {
+    if (std::string why = xformUnsupported(genome.finalXform); !why.empty()) return why;
+    for (const core::FlameXform& xform : genome.chainedFinals)
+      if (std::string why = xformUnsupported(xform); !why.empty()) return why;
+  }
+  return {};
+}
+
+FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGame& game) {
+  FlameKernel kernel;
+  kernel.source = "#define CHAOS_GAME\n";
+  flameSource(layer, game, kernel);
+  if (kernel.pick.empty()) kernel.pick.push_back(0);  // a buffer is never empty
+  return kernel;
+}
+
+}  // namespace voxflame::gl

@@ -1,0 +1,42 @@
+// The GPU backend's chaos game for one flame layer: GLSL generated per genome
+// (the structure: which transforms, which variations in which stage, final and symmetry maps) and
+// a block of numbers it reads (affine maps, weights, parameters, colours), so a slider that moves a
+// number re-uploads the block and only a change of structure compiles a new program. The code
+// follows core::ChaosGame step for step (core/chaos_game.cpp stays the reference): the same pick
+// table, the same affine → pre_ → ordinary → post_ → post-affine order, flam3's colour blend, the
+// opacity draw, the final transform and its chained ones, the symmetry maps. The variations it
+// calls are shaders/flame_variations.glsl.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace voxflame::core {
+struct PatternLayer;
+class ChaosGame;
+}  // namespace voxflame::core
+
+namespace voxflame::gl {
+
+struct FlameKernel {
+  // GLSL placed after flame_variations.glsl and before accumulate.comp.glsl: defines CHAOS_GAME
+  // and `bool chaosStep(inout vec4 state, inout float colour, inout uint previous, out vec3 drawn,
+  // out float drawnColour)`.
+  std::string source;
+  std::vector<float> data;          // flame_variations.glsl's flameData
+  std::vector<std::uint32_t> pick;  // flamePick: core::ChaosGame::pickTable, one transform index per entry
+};
+
+// Empty when the GPU's chaos game runs `layer` (a flame layer); else what it lacks, for a message
+// ("variation 'bipolar'", "a weighting field").
+std::string flameKernelUnsupported(const core::PatternLayer& layer);
+
+// The kernel of `layer`, whose prepared game is `game` (the same pick table the CPU draws from).
+// Call only when flameKernelUnsupported(layer) is empty.
+FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGame& game);
+
+// The variations the GPU's chaos game has (flame_variations.glsl), in the catalogue's spelling.
+const std::vector<std::string>& gpuFlameVariations();
+
+}  // namespace voxflame::gl
