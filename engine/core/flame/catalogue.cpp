@@ -43,6 +43,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addJwildfireTailVariations(c);
   variation_kernels::addFractoriumBlursMoreVariations(c);
   variation_kernels::addFractorium3DSumVariations(c);
+  variation_kernels::addJwildfireCorpusVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")

@@ -172,6 +172,8 @@ void addJwildfireTailVariations(std::vector<VariationInfo>& catalogue);
 // running sum (variations_3d_sum.cpp).
 void addFractoriumBlursMoreVariations(std::vector<VariationInfo>& catalogue);
 void addFractorium3DSumVariations(std::vector<VariationInfo>& catalogue);
+// Variations that flames of the shared corpus need (variations_jwildfire_corpus.cpp).
+void addJwildfireCorpusVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -159,6 +159,14 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
   }
   if (info.name == "crop_trapezoid" && param == "base_sup") names.push_back(termAttribute + "_Base Sup.");
   if (info.name == "crop_trapezoid" && param == "base_inf") names.push_back(termAttribute + "_Base Inf.");
+  // JWildfire's hamid_js names two parameters "number_lines/circles" and "filled circles", and
+  // dc_booleans before 2021 its type "^/&/|" and its z_scale and z_offset (scale_z, offset_z since).
+  if (info.name == "hamid_js" && param == "number_lines_circles")
+    names.push_back(termAttribute + "_number_lines/circles");
+  if (info.name == "hamid_js" && param == "filled_circles") names.push_back(termAttribute + "_filled circles");
+  if (info.name == "dc_booleans" && param == "type") names.push_back(termAttribute + "_^/&/|");
+  if (info.name == "dc_booleans" && param == "scale_z") names.push_back(termAttribute + "_z_scale");
+  if (info.name == "dc_booleans" && param == "offset_z") names.push_back(termAttribute + "_z_offset");
   if (info.name == "mobius" && param.size() == 4) {
     std::string bare = param;
     bare[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(bare[0])));
@@ -754,6 +762,14 @@ class FlameReader {
           (info->name == "recurrenceplot" && std::trunc(term.params.at(5)) != 0.0)) {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
+      }
+      // dc_booleans paints its true colour (Gradient 0) or the palette's colour nearest to it (1), which
+      // voxflame does not: its luminance, JWildfire's colour index for Gradient 2, stands in.
+      if (info->name == "dc_booleans" && std::trunc(std::clamp(term.params.at(4), 0.0, 2.0)) != 2.0) {
+        lose("true colour of " + withoutCopyMark(name));
+        warn(context + " has " + name +
+             " painting its own colours, which voxflame does not; the colours' "
+             "luminance picks the palette's colour instead");
       }
       // smartcrop reads the point itself (static 2) and cannot keep the last point it let through
       // (cropmode 2), which the plugin's other modes need (variations_plugins.cpp).
