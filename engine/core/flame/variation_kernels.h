@@ -172,6 +172,8 @@ void addJwildfireTailVariations(std::vector<VariationInfo>& catalogue);
 // running sum (variations_3d_sum.cpp).
 void addFractoriumBlursMoreVariations(std::vector<VariationInfo>& catalogue);
 void addFractorium3DSumVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire variations that published JWildfire flames use (variations_jwildfire_holdout.cpp).
+void addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 
