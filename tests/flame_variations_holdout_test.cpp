@@ -1,8 +1,9 @@
-// The variations of core/flame/variations_jwildfire_holdout.cpp (hopalong, szubieta, dc_gnarly), each at points whose
-// expected values were worked out from JWildfire's Java classes (HopalongFunc, SZubietaFunc with DrawFunc's nBlur
-// polygon, DCGnarlyFunc) by a separate Python script in double precision, independently of the code under test. The
-// point is (0.3, −0.7, 0.5) with weight 0.8, so a carried z is 0.4. Random draws are replayed from the lane's seed:
-// xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594 first from 0x9E3779B9.
+// The variations of core/flame/variations_jwildfire_holdout.cpp (hopalong, szubieta, dc_gnarly, dc_triTile), each at
+// points whose expected values were worked out from JWildfire's Java classes (HopalongFunc, SZubietaFunc with
+// DrawFunc's nBlur polygon, DCGnarlyFunc, DCTriTileFunc) by a separate Python script in double precision, independently
+// of the code under test. The point is (0.3, −0.7, 0.5) with weight 0.8, so a carried z is 0.4. Random draws are
+// replayed from the lane's seed: xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594 first from
+// 0x9E3779B9.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -103,6 +104,54 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kLowSeed,
        {0.10724470595730994, -0.26265153548811965, 0.4}},
+      // dc_triTile: a uniform point of the tile a random walk of subdivisions ends on (the point unused); the
+      // comments give the last tile's kind and the path m of the second walk.
+      // kind, m: (2, 1)
+      {"dc_triTile", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.6306701364484335, 0.3611117383547912, 0.4}},
+      // kind, m: (2, 1)
+      {"dc_triTile", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {0.4262260911302109, 0.17991990863096577, 0.4}},
+      // kind, m: (2, 0)
+      {"dc_triTile",
+       {2.0, 2.0, 0.222, 0.868, 0.0, 4.0, 1.0, 2.0, 0.0, 0.0, 1.0, 2.0, 0.0, 0.0, 1.0, 2.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.11610859520733362, 0.0645616562233369, 0.4}},
+      // kind, m: (1, 2)
+      {"dc_triTile",
+       {3.0, 1.0, 0.3, 0.6, 1.0, 2.0, 2.0, 3.0, 1.0, 3.0, 1.0, 2.0, 0.0, 2.0, 1.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.2155975275569492, 0.2720811812372243, 0.4}},
+      // kind, m: (2, 1)
+      {"dc_triTile",
+       {4.0, 1.0, 0.1, 0.9, 0.0, 5.0, 0.0, 0.0, 0.0, 2.0, 2.0, 1.0, 1.0, 3.0, 0.0, 2.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.316436071729844, 0.12105574321767916, 0.4}},
+      // kind, m: (2, 1)
+      {"dc_triTile",
+       {5.0, 2.0, 0.4, 0.55, 0.0, 3.0, 1.0, 2.0, 0.0, 2.0, 1.0, 1.0, 0.0, 2.0, 2.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.07174289833068849, 0.5167467641448974, 0.4}},
+      // kind, m: (2, 3)
+      {"dc_triTile",
+       {6.0, 1.0, 0.2, 0.7, 1.0, 4.0, 2.0, 2.0, 0.0, 3.0, 1.0, 1.0, 1.0, 2.0, 2.0, 2.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.39902406583279104, 0.3957021074416638, 0.4}},
+      // kind, m: (2, 31)
+      {"dc_triTile",
+       {6.0, 2.0, 0.2, 0.7, 0.0, 6.0, 1.0, 1.0, 0.0, 3.0, 2.0, 2.0, 0.0, 4.0, 1.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.016459955645685802, 0.3089374904779719, 0.4}},
   };
   return cases;
 }
@@ -151,6 +200,33 @@ const std::vector<ColourCase>& colourCases() {
        {4.0, 0.05, 0.05, 3.5, 3.5, 2.0, 2.0, 5.0, 5.0, 1.0, 5.0, 5.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0},
        kLowSeed,
        0.5574088588914152},
+      // dc_triTile: (noise(m + 43 or 31) + col1 or col2 of the last tile's kind) mod 1.
+      {"dc_triTile", {}, kHighSeed, 0.10814591374161919},
+      {"dc_triTile", {}, kLowSeed, 0.10814591374161919},
+      {"dc_triTile",
+       {2.0, 2.0, 0.222, 0.868, 0.0, 4.0, 1.0, 2.0, 0.0, 0.0, 1.0, 2.0, 0.0, 0.0, 1.0, 2.0},
+       kHighSeed,
+       0.47167875807158577},
+      {"dc_triTile",
+       {3.0, 1.0, 0.3, 0.6, 1.0, 2.0, 2.0, 3.0, 1.0, 3.0, 1.0, 2.0, 0.0, 2.0, 1.0, 1.0},
+       kLowSeed,
+       0.9792050775509351},
+      {"dc_triTile",
+       {4.0, 1.0, 0.1, 0.9, 0.0, 5.0, 0.0, 0.0, 0.0, 2.0, 2.0, 1.0, 1.0, 3.0, 0.0, 2.0},
+       kHighSeed,
+       0.06984446773763953},
+      {"dc_triTile",
+       {5.0, 2.0, 0.4, 0.55, 0.0, 3.0, 1.0, 2.0, 0.0, 2.0, 1.0, 1.0, 0.0, 2.0, 2.0, 1.0},
+       kLowSeed,
+       0.9081459137416193},
+      {"dc_triTile",
+       {6.0, 1.0, 0.2, 0.7, 1.0, 4.0, 2.0, 2.0, 0.0, 3.0, 1.0, 1.0, 1.0, 2.0, 2.0, 2.0},
+       kHighSeed,
+       0.03456224917180939},
+      {"dc_triTile",
+       {6.0, 2.0, 0.2, 0.7, 0.0, 6.0, 1.0, 1.0, 0.0, 3.0, 2.0, 2.0, 0.0, 4.0, 1.0, 1.0},
+       kLowSeed,
+       0.9959153555780255},
   };
   return cases;
 }
@@ -205,7 +281,7 @@ TEST(FlameVariationJwildfireHoldout, SzubietaDrawsDiscsAtTheGridCells) {
   }
 }
 
-// A JWildfire transform with the three variations, their parameters under JWildfire's names, imports whole.
+// A JWildfire transform with the four variations, their parameters under JWildfire's names, imports whole.
 TEST(FlameVariationJwildfireHoldout, ImportsJwildfiresParameterNames) {
   const std::string text =
       "<flames><flame name=\"t\" size=\"64 64\"><xform weight=\"1\" color=\"0\" "
@@ -216,11 +292,15 @@ TEST(FlameVariationJwildfireHoldout, ImportsJwildfiresParameterNames) {
       R"(dc_gnarly_freqx2="4.0" dc_gnarly_freqy2="2.0" dc_gnarly_freqx3="5.0" dc_gnarly_freqy3="5.0" )"
       R"(dc_gnarly_dc="1" dc_gnarly_color1="15.0" dc_gnarly_color2="24.0" dc_gnarly_fmag="0.9" )"
       R"(dc_gnarly_distort="0.1" dc_gnarly_blur="12.0" dc_gnarly_scale_z="0.2" dc_gnarly_offset_z="0.3" )"
-      R"(dc_gnarly_reset_z="1" coefs="1 0 0 1 0 0"/><color index="0" rgb="255 255 255"/></flame></flames>)";
+      R"(dc_gnarly_reset_z="1" dc_triTile="5.0" dc_triTile_type="2" dc_triTile_t="2" dc_triTile_col1="0.222" )"
+      R"(dc_triTile_col2="0.868" dc_triTile_on="0" dc_triTile_itt="4" dc_triTile_eq="1" dc_triTile_depth="2" )"
+      R"(dc_triTile_on1="1" dc_triTile_itt1="3" dc_triTile_eq1="2" dc_triTile_depth1="1" dc_triTile_on2="0" )"
+      R"(dc_triTile_itt2="2" dc_triTile_eq2="0" dc_triTile_depth2="3" coefs="1 0 0 1 0 0"/>)"
+      R"(<color index="0" rgb="255 255 255"/></flame></flames>)";
   const ImportedFlame flame = readFlameXml(text, "t.flame").flame;
   EXPECT_TRUE(flame.leftOut.empty()) << flame.leftOut.front();
   const auto& terms = flame.genome.xforms.at(0).variations;
-  ASSERT_EQ(terms.size(), 3u);
+  ASSERT_EQ(terms.size(), 4u);
   EXPECT_EQ(terms.at(0).name, "hopalong");
   EXPECT_EQ(terms.at(0).params, (std::vector<double>{3.0, 0.7, 0.4, 0.2, 0.1, -0.1}));
   EXPECT_EQ(terms.at(1).name, "szubieta");
@@ -228,6 +308,10 @@ TEST(FlameVariationJwildfireHoldout, ImportsJwildfiresParameterNames) {
   EXPECT_EQ(terms.at(2).name, "dc_gnarly");
   EXPECT_EQ(terms.at(2).params, (std::vector<double>{2.0, 0.07, 0.066, 7.0, 7.5, 4.0, 2.0, 5.0, 5.0, 1.0, 15.0, 24.0,
                                                      0.9, 0.1, 12.0, 0.2, 0.3, 1.0}));
+  EXPECT_EQ(terms.at(3).name, "dc_triTile");
+  EXPECT_EQ(terms.at(3).weight, 5.0);
+  EXPECT_EQ(terms.at(3).params,
+            (std::vector<double>{2.0, 2.0, 0.222, 0.868, 0.0, 4.0, 1.0, 2.0, 1.0, 3.0, 2.0, 1.0, 0.0, 2.0, 0.0, 3.0}));
 }
 
 }  // namespace

@@ -1,14 +1,15 @@
-// JWildfire variations that published JWildfire flames use: hopalong (an attractor's orbit),
-// szubieta (a grid of coloured discs) and dc_gnarly (a colouring gnarly). Each variation is a
-// kernel below and one row of the table at the end (see variations.h for the notation and
-// variation_kernels.h for what the files share). The formulas follow JWildfire's classes of the same
-// names.
+// JWildfire variations that published JWildfire flames use: hopalong (an attractor's orbit), szubieta
+// (a grid of coloured discs), dc_gnarly (a colouring gnarly) and dc_triTile (tiles of substitution
+// tilings). Each variation is a kernel below and one row of the table at the end (see variations.h
+// for the notation and variation_kernels.h for what the files share). The formulas follow
+// JWildfire's classes of the same names.
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <numbers>
 #include <vector>
 
 #include "core/flame/variation_kernels.h"
@@ -247,6 +248,259 @@ VOXFLAME_VARIATION_TARGETS void dcGnarly(const VariationInput& in, double* __res
   }
 }
 
+// ---- dc_triTile ----------------------------------------------------------------------------------
+
+// dc_triTile (JWildfire's, after eralex61's FiveFold): a random tile of a substitution tiling (type 1
+// FiveFold's Penrose triangles, 2 trihex, 3 equithirds, 4 overlapping Robinson triangles, 5 pinwheel,
+// 6 golden pinwheel; tilings.math.uni-bielefeld.de), found by subdividing one of its two prototiles
+// (t) again and again, one random child each time, and a uniform point of that tile. The colour says
+// which kind of tile it is and which path of kinds led to it. The point itself is not used.
+struct TilePoint {
+  double x, y;
+};
+struct Tile {
+  int type;  // which prototile (1 or 2)
+  double col;
+  TilePoint a, b, c;
+};
+
+inline TilePoint lerp(TilePoint p, TilePoint q, double t) {
+  return {p.x + t * (q.x - p.x), p.y + t * (q.y - p.y)};
+}
+inline TilePoint midpoint(TilePoint p, TilePoint q) {
+  return {(p.x + q.x) / 2.0, (p.y + q.y) / 2.0};
+}
+
+struct TriTiling {
+  int tiling;
+  double alfa, col1, col2;
+  Tile colour(int type, TilePoint a, TilePoint b, TilePoint c) const {
+    return {type, type == 1 ? col1 : col2, a, b, c};
+  }
+};
+
+// The prototile t (1 or 2) of the tiling, and the ratio its subdivision uses (JWildfire's init).
+TriTiling triTiling(int tiling, double col1, double col2) {
+  const double alfa = tiling == 1 || tiling == 4 ? 2.0 * std::cos(kTwoPi / 5.0)
+                      : tiling == 3              ? 1.0 / 3.0
+                      : tiling == 6              ? (1.0 / std::numbers::phi) * (1.0 / std::numbers::phi)
+                                                 : 0.0;
+  return {tiling, alfa, col1, col2};
+}
+
+Tile triPrototile(const TriTiling& s, int t) {
+  const TilePoint o{0.0, 0.0};
+  switch (s.tiling) {
+    case 1:
+      return t == 1
+                 ? s.colour(1, o, {std::cos(kTwoPi / 5.0), std::sin(kTwoPi / 5.0)}, {2.0 * std::cos(kTwoPi / 5.0), 0.0})
+                 : s.colour(2, o, {std::cos(kPi / 5.0), std::sin(kPi / 5.0)}, {2.0 * std::cos(kPi / 5.0), 0.0});
+    case 2:
+      return s.colour(t, o, {std::cos(kPi / 3.0), 0.0}, {0.0, std::sin(kPi / 3.0)});
+    case 3:
+      return t == 1 ? s.colour(1, o, {std::cos(kPi / 3.0), std::sin(kPi / 3.0)}, {2.0 * std::cos(kPi / 3.0), 0.0})
+                    : s.colour(2, o, {std::cos(kPi / 6.0), std::sin(kPi / 6.0)}, {2.0 * std::cos(kPi / 6.0), 0.0});
+    case 4:
+      return s.colour(t, o, {std::cos(kTwoPi / 5.0), std::sin(kTwoPi / 5.0)}, {2.0 * std::cos(kTwoPi / 5.0), 0.0});
+    case 5:
+      return t == 1 ? s.colour(1, o, {0.0, 1.0}, {2.0, 0.0}) : s.colour(2, o, {0.0, 2.0}, {1.0, 0.0});
+    default: {
+      const double inv = 1.0 / std::numbers::phi;
+      return t == 1 ? s.colour(1, o, {inv, std::sqrt(inv)}, {inv, 0.0})
+                    : s.colour(2, o, {0.0, std::sqrt(inv)}, {1.0, 0.0});
+    }
+  }
+}
+
+// One child of `in`, picked by u (JWildfire's devis for each tiling).
+Tile triSubdivide(const TriTiling& s, const Tile& in, double u) {
+  const double al = s.alfa;
+  const TilePoint a = in.a, b = in.b, c = in.c;
+  const bool one = in.type == 1;
+  switch (s.tiling) {
+    case 1:  // FiveFold: Penrose triangles without rotations
+      if (one) {
+        const TilePoint p4 = lerp(b, c, al);
+        return u < al * al ? s.colour(1, c, a, p4) : s.colour(2, b, p4, a);
+      } else {
+        const TilePoint p4 = lerp(c, a, al), p5 = lerp(c, b, al);
+        return u < al * al         ? s.colour(2, b, p4, a)
+               : u < 2.0 * al * al ? s.colour(2, c, p5, p4)
+                                   : s.colour(1, b, p4, p5);
+      }
+    case 2: {  // trihex: two kinds swap places in half the children
+      const TilePoint p4 = midpoint(a, c), p5 = midpoint(b, c), p6 = midpoint(a, p5);
+      const int other = 3 - in.type;
+      return u < 0.25   ? s.colour(in.type, p4, p5, c)
+             : u < 0.5  ? s.colour(other, p4, p5, a)
+             : u < 0.75 ? s.colour(other, p6, p5, b)
+                        : s.colour(in.type, p6, a, b);
+    }
+    case 3:  // equithirds
+      if (one) {
+        const TilePoint p4 = lerp(a, c, 0.5), p5 = lerp(p4, b, al);
+        return u < al ? s.colour(2, b, p5, a) : u < 2.0 * al ? s.colour(2, c, p5, b) : s.colour(2, a, p5, c);
+      } else {
+        const TilePoint p4 = lerp(a, c, al), p5 = lerp(c, a, al);
+        return u < al ? s.colour(2, b, p4, a) : u < 2.0 * al ? s.colour(2, c, p5, b) : s.colour(1, p4, b, p5);
+      }
+    case 4: {  // overlapping Robinson triangles
+      const TilePoint p4 = lerp(b, a, al), p5 = lerp(a, b, al), p6 = lerp(b, c, al);
+      return u < 0.3 ? s.colour(2, p4, b, p6) : u < 0.63 ? s.colour(3 - in.type, p6, a, p5) : s.colour(1, c, a, p6);
+    }
+    case 5: {  // pinwheel: five children, ⌊5u⌋
+      const int k = static_cast<int>(u * 5.0);
+      if (one) {
+        const TilePoint p4 = lerp(b, c, 0.2), p5 = lerp(b, c, 0.6), p6 = lerp(a, c, 0.5), p7 = lerp(a, p4, 0.5);
+        const Tile children[5] = {s.colour(2, p4, a, b), s.colour(2, p7, p6, a), s.colour(1, p7, p4, p6),
+                                  s.colour(1, p5, p6, p4), s.colour(2, p5, c, p6)};
+        return children[std::clamp(k, 0, 4)];
+      }
+      const TilePoint p4 = lerp(c, b, 0.2), p5 = lerp(c, b, 0.6), p6 = lerp(a, b, 0.5), p7 = lerp(a, p4, 0.5);
+      const Tile children[5] = {s.colour(1, p4, c, a), s.colour(1, p7, a, p6), s.colour(2, p7, p6, p4),
+                                s.colour(2, p5, p4, p6), s.colour(1, p5, p6, b)};
+      return children[std::clamp(k, 0, 4)];
+    }
+    default:  // golden pinwheel
+      if (one) {
+        const TilePoint p4 = lerp(a, b, al), p5 = lerp(b, a, al), p6 = lerp(c, b, al), p7 = lerp(a, c, al);
+        return u < 0.146   ? s.colour(1, a, p4, p7)
+               : u < 0.382 ? s.colour(2, p4, p7, p6)
+               : u < 0.618 ? s.colour(2, c, p6, p7)
+               : u < 0.764 ? s.colour(1, p4, p6, p5)
+                           : s.colour(2, p5, p6, b);
+      } else {
+        const TilePoint p4 = lerp(b, a, al), p5 = lerp(b, c, al), p6 = lerp(c, b, al), p7 = lerp(a, c, al);
+        const TilePoint p8 = lerp(c, a, al), p9 = lerp(p4, p7, al), p10 = lerp(p7, p4, al);
+        return u < 0.146   ? s.colour(2, p4, b, p5)
+               : u < 0.236 ? s.colour(1, p4, p5, p9)
+               : u < 0.382 ? s.colour(2, p10, a, p4)
+               : u < 0.472 ? s.colour(1, p7, a, p10)
+               : u < 0.618 ? s.colour(2, p9, p5, p7)
+               : u < 0.764 ? s.colour(2, p6, p5, p7)
+               : u < 0.854 ? s.colour(1, p7, p6, p8)
+                           : s.colour(2, p8, p6, c);
+      }
+  }
+}
+
+// JWildfire's steps and depths have no bound there (a large one makes it subdivide for ever); here a
+// walk stops after this many steps, far below where the tiles become smaller than a double resolves.
+constexpr double kMaxTileSteps = 64.0;
+
+// A walk of subdivisions (JWildfire's loop): `steps` of them, and then, where the tile is not of kind
+// eq, `depth` more (on 0: all at once after the last; on 1: one more per step while the walk is within
+// depth of its end). Each child's kind enters `path` as a binary digit when path is not null.
+struct TileWalk {
+  double steps, on, eq, depth;
+};
+template <typename Draw>
+Tile walkTiles(const TriTiling& s, Tile tile, const TileWalk& walk, std::int32_t* path, Draw&& draw) {
+  double left = walk.steps, k = 1.0, taken = 0.0;
+  while (left > 0.0 && taken < kMaxTileSteps) {
+    tile = triSubdivide(s, tile, draw());
+    taken += 1.0;
+    if (path) *path = wrapAdd(wrapMul(2, *path), tile.type - 1);
+    const bool other = tile.type != walk.eq;
+    if (walk.on == 0.0) {
+      if (k == walk.steps && other) left += walk.depth;
+    } else if (k >= walk.steps && k < walk.steps + walk.depth && other) {
+      left += 1.0;
+    }
+    left -= 1.0;
+    k += 1.0;
+  }
+  return tile;
+}
+
+// JWildfire's discretNoise: Hugo Elias' integer hash (Java's wrapping int arithmetic) over [0, 1].
+inline double discreteNoise(std::int32_t v) {
+  const auto n = static_cast<std::uint32_t>(v);
+  const std::uint32_t h = (n << 13) ^ n;
+  const std::uint32_t r = h * (h * h * 15731u + 789221u) + 1376312589u;
+  return static_cast<double>(r & 0x7fffffffu) / static_cast<double>(0x7fffffff);
+}
+
+// A uniform point of the triangle, as JWildfire's tile blur finds it: the corners sorted by x, then two
+// draws pick a point of a parallelogram over half the triangle and fold it back in.
+template <typename Draw>
+TilePoint pointInTile(const Tile& tile, Draw&& draw) {
+  TilePoint p1, p2, p3;
+  const TilePoint a = tile.a, b = tile.b, c = tile.c;
+  if (a.x <= b.x && a.x <= c.x) {
+    p1 = a, p2 = b.x <= c.x ? b : c, p3 = b.x <= c.x ? c : b;
+  } else if (b.x <= a.x && b.x <= c.x) {
+    p1 = b, p2 = a.x <= c.x ? a : c, p3 = a.x <= c.x ? c : a;
+  } else {
+    p1 = c, p2 = a.x <= b.x ? a : b, p3 = a.x <= b.x ? b : a;
+  }
+  const double r1 = draw(), r2 = draw();
+  TilePoint q;
+  if (p1.x == p2.x && p2.x == p3.x) {
+    double v1, v2;
+    if (p1.y <= p2.y && p1.y <= p3.y) {
+      v1 = p1.y, v2 = p3.y > p2.y ? p2.y : p3.y;
+    } else if (p2.y <= p1.y && p2.y <= p3.y) {
+      v1 = p2.y, v2 = p3.y > p1.y ? p1.y : p3.y;
+    } else {
+      v1 = p3.y, v2 = p2.y > p1.y ? p1.y : p2.y;
+    }
+    q = {p1.x, v1 + r1 * (v2 - v1)};
+  } else if (p1.x == p2.x) {
+    const TilePoint p4 = midpoint(p1, p3);
+    const TilePoint p5{p3.x + p2.x - p4.x, p3.y + p2.y - p4.y}, p6{p1.x + p2.x - p4.x, p1.y + p2.y - p4.y};
+    q = lerp(lerp(p3, p4, r1), lerp(p5, p2, r1), r2);
+    const double edge = p3.y + (p2.y - p3.y) / (p2.x - p3.x) * (q.x - p3.x);
+    const bool above = p2.y > p3.y + (p3.y - p1.y) / (p3.x - p1.x) * (p2.x - p3.x);
+    if (above ? q.y > edge : q.y < edge) q = lerp(lerp(p2, p6, r1), lerp(p4, p1, r1), r2);
+  } else {
+    const TilePoint p4 = midpoint(p1, p3);
+    const TilePoint p5{p1.x + p2.x - p4.x, p1.y + p2.y - p4.y}, p6{p3.x + p2.x - p4.x, p3.y + p2.y - p4.y};
+    q = lerp(lerp(p1, p4, r1), lerp(p5, p2, r1), r2);
+    const double edge = p1.y + (p2.y - p1.y) / (p2.x - p1.x) * (q.x - p1.x);
+    const bool above = p2.y > p1.y + (p3.y - p1.y) / (p3.x - p1.x) * (p2.x - p1.x);
+    if (above ? q.y > edge : q.y < edge) q = lerp(lerp(p2, p6, r1), lerp(p4, p3, r1), r2);
+  }
+  // Degenerate tiles: a point of the segment.
+  if (p1.x == p2.x && p1.y == p2.y) q = lerp(p1, p3, r1);
+  if (p1.x == p3.x && p1.y == p3.y) q = lerp(p1, p2, r1);
+  if (p2.x == p3.x && p2.y == p3.y) q = lerp(p1, p2, r1);
+  return q;
+}
+
+// dc_triTile: w · (a uniform point of the tile the walk ends on), z carried. The first walk (itt, on, eq,
+// depth) starts from prototile t; from the kind it ends on, a second walk (itt1, … for kind 1; itt2, …
+// for kind 2) records the kinds it passes as the binary digits of m. Colour index: (noise(m + 43) for
+// kind 1, noise(m + 31) for kind 2) + col1 or col2 of the last tile's kind, mod 1 (Java's fmod).
+// JWildfire's t other than 1 or 2 leaves its start triangle a point at the origin; here it is clamped.
+VOXFLAME_VARIATION_TARGETS void dcTriTile(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const int tiling = static_cast<int>(jwfLimitedInt(P[0], 1.0, 6.0));
+  const int t = jwfRound(P[1]) <= 1.0 ? 1 : 2;
+  const TriTiling s = triTiling(tiling, P[2], P[3]);
+  const auto limited = [](double v, double low, double high) { return jwfLimitedInt(v, low, high); };
+  const TileWalk first{jwfRound(P[5]), limited(P[4], 0.0, 1.0), limited(P[6], 0.0, 2.0), jwfRound(P[7])};
+  const TileWalk second[2] = {{jwfRound(P[9]), limited(P[8], 0.0, 1.0), limited(P[10], 0.0, 2.0), jwfRound(P[11])},
+                              {jwfRound(P[13]), limited(P[12], 0.0, 1.0), limited(P[14], 0.0, 2.0), jwfRound(P[15])}};
+  const Tile start = triPrototile(s, t);
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto draw = [&] { return laneUniform(rnd[i]); };
+    Tile tile = start;
+    tile.col = 0.0;  // JWildfire's t2 starts with colour 0, which stays where no step is taken
+    tile = walkTiles(s, tile, first, nullptr, draw);
+    const int kind = tile.type;
+    std::int32_t path = 0;
+    tile = walkTiles(s, tile, second[kind == 1 ? 0 : 1], &path, draw);
+    const double base = discreteNoise(wrapAdd(path, kind == 1 ? 43 : 31));
+    const TilePoint q = pointInTile(tile, draw);
+    outX[i] += w * q.x;
+    outY[i] += w * q.y;
+    outZ[i] += w * z[i];
+    colour[i] = std::fmod(base + tile.col, 1.0);
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue) {
@@ -306,6 +560,31 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
        count("reset_z", 0.0, 0.0, 1.0)});
   catalogue.back().directColour = true;
   catalogue.back().readsSum = true;
+  add("dc_triTile",
+      "w q, z: q a uniform point of a tile of a substitution tiling (type 1 FiveFold, 2 trihex, 3 equithirds, 4 "
+      "overlapping Robinson, 5 pinwheel, 6 golden pinwheel) reached from prototile t by itt random subdivisions (depth "
+      "more where the tile is not of kind eq: on 0 after the last, on 1 one per step), then itt1/itt2 more (with on, "
+      "eq, depth of the same suffix) recording the kinds in the binary m; colour index (hash(m + 43 or 31) + col1 or "
+      "col2 of the tile's kind) mod 1; the point itself is not used (JWildfire draws its defaults at random; these "
+      "are in its ranges)",
+      k2D, kRandom, &dcTriTile,
+      {count("type", 1.0, 1.0, 6.0),
+       count("t", 2.0, 1.0, 2.0),
+       {"col1", 0.25, 0.0, 1.0},
+       {"col2", 0.75, 0.0, 1.0},
+       count("on", 0.0, 0.0, 1.0),
+       count("itt", 3.0, 0.0, 10.0),
+       count("eq", 1.0, 0.0, 2.0),
+       count("depth", 1.0, 0.0, 5.0),
+       count("on1", 0.0, 0.0, 1.0),
+       count("itt1", 2.0, 0.0, 10.0),
+       count("eq1", 1.0, 0.0, 2.0),
+       count("depth1", 1.0, 0.0, 5.0),
+       count("on2", 0.0, 0.0, 1.0),
+       count("itt2", 2.0, 0.0, 10.0),
+       count("eq2", 2.0, 0.0, 2.0),
+       count("depth2", 1.0, 0.0, 5.0)});
+  catalogue.back().directColour = true;
 }
 
 }  // namespace voxflame::core
