@@ -152,6 +152,65 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kLowSeed,
        {0.016459955645685802, 0.3089374904779719, 0.4}},
+      // dc_quadtree and dc_ducks: w · (a uniform point of the square, or with ColorOnly the point); z from the grey
+      // level of the pattern's RGB colour (given in the comments) · scale_z + offset_z, with reset_z replacing the
+      // harness's 0.5.
+      // RGB [255, 255, 255]
+      {"dc_quadtree",
+       {1.0, 10000.0, 0.0, 1000.0, 30.0, 0.0, 0.0, 0.0, 0.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.3035731315612793, 0.03626041412353516, -0.5}},
+      // RGB [10, 10, 255]
+      {"dc_quadtree",
+       {1.0, 10000.0, 0.0, 1000.0, 30.0, 0.0, 2.0, 0.5, 0.1, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.14672517776489258, 0.30056557655334476, -0.32941176470588235}},
+      // RGB [99, 99, 255]
+      {"dc_quadtree",
+       {2.5, 10000.0, 1.3, 300.0, 12.0, 0.0, 2.0, 1.0, 0.0, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.3035731315612793, 0.03626041412353516, 0.8549019607843138}},
+      // RGB [43, 43, 255]
+      {"dc_quadtree",
+       {1.5, 10000.0, 0.7, 800.0, 20.0, 1.0, 2.0, -0.4, 0.2, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.24, -0.5599999999999999, 0.4964705882352941}},
+      // RGB [0, 0, 232]
+      {"dc_ducks",
+       {10000.0, 10.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.6071462631225586, 0.07252082824707032, -0.5}},
+      // RGB [232, 232, 232]
+      {"dc_ducks",
+       {10000.0, 10.0, 1.0, 0.0, 2.0, 0.5, 0.1, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.29345035552978516, 0.6011311531066895, 0.05294117647058827}},
+      // RGB [0, 0, 0]
+      {"dc_ducks",
+       {10000.0, 25.0, 2.0, 0.0, 2.0, 1.0, 0.0, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.6071462631225586, 0.07252082824707032, 0.4}},
+      // RGB [0, 0, 232]
+      {"dc_ducks",
+       {10000.0, 3.0, 0.7, 1.0, 2.0, -0.4, 0.2, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.24, -0.5599999999999999, 0.5592156862745099}},
   };
   return cases;
 }
@@ -227,6 +286,15 @@ const std::vector<ColourCase>& colourCases() {
        {6.0, 2.0, 0.2, 0.7, 0.0, 6.0, 1.0, 1.0, 0.0, 3.0, 2.0, 2.0, 0.0, 4.0, 1.0, 1.0},
        kLowSeed,
        0.9959153555780255},
+      // Gradient 2: the grey level; Gradient 0 (RGB) leaves the colour index.
+      {"dc_quadtree", {1.0, 10000.0, 0.0, 1000.0, 30.0, 0.0, 0.0, 0.0, 0.0, 1.0}, kHighSeed, 0.375},
+      {"dc_quadtree", {1.0, 10000.0, 0.0, 1000.0, 30.0, 0.0, 2.0, 0.5, 0.1, 1.0}, kLowSeed, 0.1411764705882353},
+      {"dc_quadtree", {2.5, 10000.0, 1.3, 300.0, 12.0, 0.0, 2.0, 1.0, 0.0, 0.0}, kHighSeed, 0.4549019607843137},
+      {"dc_quadtree", {1.5, 10000.0, 0.7, 800.0, 20.0, 1.0, 2.0, -0.4, 0.2, 0.0}, kHighSeed, 0.25882352941176473},
+      {"dc_ducks", {10000.0, 10.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0}, kHighSeed, 0.375},
+      {"dc_ducks", {10000.0, 10.0, 1.0, 0.0, 2.0, 0.5, 0.1, 1.0}, kLowSeed, 0.9058823529411765},
+      {"dc_ducks", {10000.0, 25.0, 2.0, 0.0, 2.0, 1.0, 0.0, 0.0}, kHighSeed, 0.0},
+      {"dc_ducks", {10000.0, 3.0, 0.7, 1.0, 2.0, -0.4, 0.2, 0.0}, kLowSeed, 0.10196078431372549},
   };
   return cases;
 }
@@ -312,6 +380,32 @@ TEST(FlameVariationJwildfireHoldout, ImportsJwildfiresParameterNames) {
   EXPECT_EQ(terms.at(3).weight, 5.0);
   EXPECT_EQ(terms.at(3).params,
             (std::vector<double>{2.0, 2.0, 0.222, 0.868, 0.0, 4.0, 1.0, 2.0, 1.0, 3.0, 2.0, 1.0, 0.0, 2.0, 0.0, 3.0}));
+}
+
+// dc_quadtree's and dc_ducks' Gradient 0 and 1 give the point an RGB colour, which voxflame cannot carry: the import
+// keeps the variation and says that its colour is not applied; Gradient 2 (a grey level as the index) is whole.
+TEST(FlameVariationJwildfireHoldout, RgbGradientsOfTheDcBaseVariationsAreReportedAsNotApplied) {
+  const auto import = [](const std::string& attributes) {
+    const std::string text = "<flames><flame name=\"t\" size=\"64 64\"><xform weight=\"1\" color=\"0\" " + attributes +
+                             R"( coefs="1 0 0 1 0 0"/><color index="0" rgb="255 255 255"/></flame></flames>)";
+    return readFlameXml(text, "t.flame").flame;
+  };
+  const ImportedFlame rgb =
+      import(R"(dc_quadtree="0.45" dc_quadtree_zoom="1.0" dc_quadtree_seed="10000" dc_quadtree_time="0.0" )"
+             R"(dc_quadtree_width="1000.0" dc_quadtree_levels="30" dc_quadtree_ColorOnly="0" dc_quadtree_Gradient="0" )"
+             R"(dc_quadtree_scale_z="0.0" dc_quadtree_offset_z="0.0" dc_quadtree_reset_z="1")");
+  ASSERT_EQ(rgb.leftOut.size(), 1u);
+  EXPECT_EQ(rgb.leftOut.front(), "direct colour of dc_quadtree");
+  const auto& term = rgb.genome.xforms.at(0).variations.at(0);
+  EXPECT_EQ(term.name, "dc_quadtree");
+  EXPECT_EQ(term.params, (std::vector<double>{1.0, 10000.0, 0.0, 1000.0, 30.0, 0.0, 0.0, 0.0, 0.0, 1.0}));
+  const ImportedFlame grey = import(R"(dc_ducks="1.0" dc_ducks_seed="10000" dc_ducks_time="10.0" dc_ducks_zoom="1.0" )"
+                                    R"(dc_ducks_ColorOnly="0" dc_ducks_Gradient="2" dc_ducks_scale_z="0.0" )"
+                                    R"(dc_ducks_offset_z="0.0" dc_ducks_reset_z="1")");
+  EXPECT_TRUE(grey.leftOut.empty()) << grey.leftOut.front();
+  const ImportedFlame ducksRgb = import(R"(dc_ducks="1.0" dc_ducks_Gradient="1")");
+  ASSERT_EQ(ducksRgb.leftOut.size(), 1u);
+  EXPECT_EQ(ducksRgb.leftOut.front(), "direct colour of dc_ducks");
 }
 
 }  // namespace

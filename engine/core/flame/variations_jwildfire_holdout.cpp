@@ -501,6 +501,123 @@ VOXFLAME_VARIATION_TARGETS void dcTriTile(const VariationInput& in, double* __re
   }
 }
 
+// ---- JWildfire's DC_BaseFunc variations: dc_quadtree, dc_ducks -------------------------------------
+
+// Jesus Sosa's shader-like direct-colour variations (DC_BaseFunc): a random point of a square (or with
+// ColorOnly the point itself) and an RGB colour from a pattern at it. Gradient 0 gives the point that RGB
+// colour and 1 the palette's nearest colour, which a colour index cannot carry: those leave the colour
+// index alone here (the importer says so); Gradient 2 sets the index to the colour's grey level
+// ⌊0.299 R⌋ + ⌊0.587 G⌋ + ⌊0.114 B⌋ over 255 (R, G, B = ⌊256 c⌋ clamped into 0 … 255), which z uses in
+// every case: dz = grey · scale_z + offset_z is added to z, or with reset_z replaces the sum's z.
+struct Rgb {
+  double r, g, b;
+};
+
+inline double rgbByte(double c) {
+  return std::clamp(static_cast<double>(javaInt(std::floor(c * 256.0))), 0.0, 255.0);
+}
+inline double greyLevel(const Rgb& c) {
+  return (std::trunc(rgbByte(c.r) * 0.299) + std::trunc(rgbByte(c.g) * 0.587) + std::trunc(rgbByte(c.b) * 0.114)) /
+         255.0;
+}
+
+// The common tail of the DC_BaseFunc kernels: the point (half-width `half` of the square, or the point
+// itself), the colour and z. P[k …] are ColorOnly, Gradient, scale_z, offset_z, reset_z.
+template <typename Pattern>
+void dcBaseKernel(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz,
+                  std::size_t k, double half, Pattern&& pattern) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const bool colourOnly = jwfLimitedInt(P[k], 0.0, 1.0) == 1.0;
+  const bool grey = jwfLimitedInt(P[k + 1], 0.0, 2.0) == 2.0;
+  const double scaleZ = P[k + 2], offsetZ = P[k + 3];
+  const bool reset = jwfLimitedInt(P[k + 4], 0.0, 1.0) == 1.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    double u, v;
+    if (colourOnly) {
+      u = x[i], v = y[i];
+    } else {
+      u = half * (2.0 * laneUniform(rnd[i]) - 1.0);
+      v = half * (2.0 * laneUniform(rnd[i]) - 1.0);
+    }
+    const double level = greyLevel(pattern(u, v));
+    if (grey) colour[i] = level;
+    outX[i] += w * u;
+    outY[i] += w * v;
+    const double dz = level * scaleZ + offsetZ;
+    outZ[i] = reset ? dz : outZ[i] + w * z[i] + dz;
+  }
+}
+
+// dc_quadtree (after Fabrice Neyret's shadertoy lljSDy): the square [0, 1]² (the point / zoom + ½) cut
+// into quadrants level by level, each cell kept while a hash of its id, ½ + ½ sin(id + time) sin(2.17 id −
+// time) sin(5.7 id + time), is at most 0.7, up to `levels` levels and cells of 1/width; the colour is (0.13
+// n, 0.13 n, 1 + 0.13 n) after n levels, less 1 on a cell's border (0.3 r/width from it, r = 2ⁿ).
+VOXFLAME_VARIATION_TARGETS void dcQuadtree(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  const double* P = in.params;
+  const double zoom = std::isnan(P[0]) ? 0.1 : std::clamp(P[0], 0.1, 50.0), time = P[2];
+  const double width = std::isnan(P[3]) ? 100.0 : std::clamp(P[3], 100.0, 1000.0);
+  const double levels = jwfLimitedInt(P[4], 1.0, 50.0);
+  const auto hash = [time](double p) {
+    return 0.5 + 0.5 * std::sin(p + time) * std::sin(p * 2.17 - time) * std::sin(p * 5.7 + time);
+  };
+  dcBaseKernel(in, ox, oy, oz, 5, 0.5, [&](double px, double py) {
+    double ux = px / zoom + 0.5, uy = py / zoom + 0.5, r = 1.0, id = 1.0;
+    Rgb o{0.0, 0.0, 1.0};
+    for (double level = 0.0; level < levels; level += 1.0) {
+      if (std::min(std::min(ux, 1.0 - ux), std::min(uy, 1.0 - uy)) < 0.3 * r / width) {
+        o = {o.r - 1.0, o.g - 1.0, o.b - 1.0};
+        break;
+      }
+      if (hash(id) > 0.7) break;
+      const double fx = ux < 0.5 ? 0.0 : 1.0, fy = uy < 0.5 ? 0.0 : 1.0;
+      id = 4.0 * id + 2.0 * fy + fx;
+      ux = ux * 2.0 - fx;
+      uy = uy * 2.0 - fy;
+      r *= 2.0;
+      if (r > width) break;
+      o = {o.r + 0.13, o.g + 0.13, o.b + 0.13};
+    }
+    return o;
+  });
+}
+
+// JWildfire's G.atan2: a first-order approximation of the angle (exact at multiples of π/4), which
+// dc_ducks' picture is made with.
+inline double glslAtan2(double y, double x) {
+  constexpr double kQuarter = kPi / 4.0, kThreeQuarters = 3.0 * kQuarter;
+  const double ay = std::abs(y);
+  const double angle =
+      x >= 0.0 ? kQuarter - kQuarter * ((x - ay) / (x + ay)) : kThreeQuarters - kQuarter * ((x + ay) / (ay - x));
+  return y < 0.0 ? -angle : angle;
+}
+
+// dc_ducks (after a shadertoy "ducks" fractal): the point·zoom iterated 50 times through e → (log |e'|, ∠e'
+// − 6.2) + (0.1 sin(t/3) − 0.1, 5 + 0.1 cos(t/5)), e' = (e_x, |e_y|), t = time · 30/65, summing c = Σ |e|;
+// d = 6 log₂ log₂(0.05 c), the colour (⌊½ + 1.1 f⌋/1.1 of f = (0.1 + 0.7 sin d, 0.1 + 0.5 sin(d − 0.7), 0.7
+// + 0.7 cos(d − 0.7))) with its channels turned (b, r, g). Square [−1, 1]².
+VOXFLAME_VARIATION_TARGETS void dcDucks(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  const double* P = in.params;
+  const double t = P[1] / 65.0 * 30.0, zoom = P[2];
+  const double stepX = 0.1 * std::sin(t / 3.0) - 0.1, stepY = 5.0 + 0.1 * std::cos(t / 5.0);
+  dcBaseKernel(in, ox, oy, oz, 3, 1.0, [&](double px, double py) {
+    double ex = px * zoom, ey = py * zoom, c = 0.0;
+    for (int k = 0; k < 50; ++k) {
+      const double ay = std::abs(ey);
+      const double nx = std::log(std::sqrt(ex * ex + ay * ay)), ny = glslAtan2(ay, ex) - 6.2;
+      ex = nx + stepX;
+      ey = ny + stepY;
+      c += std::sqrt(ex * ex + ey * ey);
+    }
+    const double d = std::log(std::log(c * 0.05) / std::log(2.0)) / std::log(2.0) * 6.0;
+    const auto band = [](double f) { return std::floor(0.5 + f * 1.1) / 1.1; };
+    const double fr = band(0.1 + 0.7 * std::sin(d)), fg = band(0.1 + 0.5 * std::sin(d - 0.7)),
+                 fb = band(0.7 + 0.7 * std::cos(d - 0.7));
+    return Rgb{fb, fr, fg};
+  });
+}
+
 }  // namespace
 
 void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue) {
@@ -585,6 +702,37 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
        count("eq2", 2.0, 0.0, 2.0),
        count("depth2", 1.0, 0.0, 5.0)});
   catalogue.back().directColour = true;
+  const auto dcBaseParams = [&](std::vector<VariationParam> own) {
+    own.push_back(count("ColorOnly", 0.0, 0.0, 1.0));
+    own.push_back(count("Gradient", 0.0, 0.0, 2.0));
+    own.push_back({"scale_z", 0.0, -2.0, 2.0});
+    own.push_back({"offset_z", 0.0, -2.0, 2.0});
+    own.push_back(count("reset_z", 1.0, 0.0, 1.0));
+    return own;
+  };
+  add("dc_quadtree",
+      "w q, q = Ψ-uniform in [−½, ½]² (ColorOnly: the point); Gradient 2: colour index the grey level of Neyret's "
+      "quadtree colour at q (cells split while ½ + ½ sin(id + time) sin(2.17 id − time) sin(5.7 id + time) ≤ 0.7, "
+      "up to levels, cells of 1/width, zoom); Gradient 0 and 1 (RGB colours) leave the index; z + grey · scale_z + "
+      "offset_z (reset_z: z = that); seed is JWildfire's clock-driven time, which time overrides",
+      k3D, kRandom, &dcQuadtree,
+      dcBaseParams({{"zoom", 1.0, 0.1, 50.0},
+                    count("seed", 10000.0, 0.0, 10000.0),
+                    {"time", 0.0, 0.0, 100.0},
+                    {"width", 1000.0, 100.0, 1000.0},
+                    count("levels", 30.0, 1.0, 50.0)}));
+  catalogue.back().directColour = true;
+  catalogue.back().readsSum = true;
+  add("dc_ducks",
+      "w q, q = Ψ-uniform in [−1, 1]² (ColorOnly: the point); Gradient 2: colour index the grey level of the "
+      "ducks fractal's colour at q·zoom (50 steps of e → (log |e'|, ∠e' − 6.2) + (0.1 sin(t/3) − 0.1, 5 + 0.1 "
+      "cos(t/5)), e' = (e_x, |e_y|), t = 30 time/65, JWildfire's approximate angle); Gradient 0 and 1 (RGB "
+      "colours) leave the index; z + grey · scale_z + offset_z (reset_z: z = that); seed is JWildfire's "
+      "clock-driven time, which time overrides",
+      k3D, kRandom, &dcDucks,
+      dcBaseParams({count("seed", 10000.0, 0.0, 10000.0), {"time", 10.0, 0.0, 100.0}, {"zoom", 1.0, -10.0, 10.0}}));
+  catalogue.back().directColour = true;
+  catalogue.back().readsSum = true;
 }
 
 }  // namespace voxflame::core
