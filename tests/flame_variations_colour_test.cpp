@@ -498,7 +498,7 @@ TEST(FlameVariationColour, OnlyColourVariationsAreMarkedDirectColour) {
   for (const VariationInfo& info : variationCatalogue()) {
     const bool colours = info.name.starts_with("dc_") || info.name == "randCubes" || info.name == "curl_sp" ||
                          info.name == "falloff2" || info.name == "falloff3" || info.name == "pixel_flow" ||
-                         info.name == "stabilize";
+                         info.name == "stabilize" || info.name == "szubieta";
     EXPECT_EQ(info.directColour, colours) << info.name;
   }
 }

@@ -44,6 +44,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addFractoriumBlursMoreVariations(c);
   variation_kernels::addFractorium3DSumVariations(c);
   variation_kernels::addJwildfireCorpusVariations(c);
+  variation_kernels::addJwildfireHoldoutVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")
@@ -249,8 +250,9 @@ std::string variationsMarkdown() {
         "cylinder_apo 5, waffle 5, xtrb 5. Not here, because they need what a variation's numbers cannot "
         "carry: text_wf\n(fonts), parplot2d_wf, polarplot3d_wf and isosfplot3d_wf (formula text), "
         "obj_mesh_primitive_wf and dla3d_wf\n(meshes and a grown cluster), brush_stroke_wf (images), and "
-        "hopalong, mandelbrot and Fractorium's hexaplay3D and\nhexnix3D (an orbit or a walk over hexagons kept "
-        "from one iteration to the next, where a variation here keeps nothing).\n\n"
+        "mandelbrot and Fractorium's hexaplay3D and hexnix3D\n(an orbit or a walk over hexagons kept "
+        "from one iteration to the next, where a variation here keeps nothing). `hopalong`\nkeeps an orbit "
+        "too, but one that does not depend on the point: it draws a point of the orbit's first 2²⁰ instead.\n\n"
      << "| name | kind | parameters (default, slider range) | formula |\n"
      << "| --- | --- | --- | --- |\n";
   for (const VariationInfo& info : variationCatalogue()) {

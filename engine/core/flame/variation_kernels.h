@@ -174,6 +174,8 @@ void addFractoriumBlursMoreVariations(std::vector<VariationInfo>& catalogue);
 void addFractorium3DSumVariations(std::vector<VariationInfo>& catalogue);
 // Variations that flames of the shared corpus need (variations_jwildfire_corpus.cpp).
 void addJwildfireCorpusVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire variations that published JWildfire flames use (variations_jwildfire_holdout.cpp).
+void addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 
