@@ -361,7 +361,7 @@ TEST(FlameImport, JwildfireWeightingFieldsAreRead) {
       "wfield_var_param1_intensity=\"0.0\" wfield_jitter_intensity=\"0.0\" wfield_noise_seed=\"7\" "
       "wfield_noise_frequency=\"2.5\" wfield_fract_noise_fract_type=\"BILLOW\" wfield_fract_noise_gain=\"0.4\" "
       "wfield_fract_noise_lacunarity=\"2.2\" wfield_fract_noise_octaves=\"4\"/>\n"
-      "<xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.5 0\" wfield_type=\"CELLULAR_NOISE\" "
+      "<xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.5 0\" wfield_type=\"IMAGE_MAP\" "
       "wfield_var_amount_intensity=\"1\"/>\n"
       "<xform weight=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.5 0\" wfield_type=\"SIMPLEX_NOISE\" "
       "wfield_noise_frequency=\"fast\"/>\n"
@@ -377,7 +377,7 @@ TEST(FlameImport, JwildfireWeightingFieldsAreRead) {
   EXPECT_EQ(x.fieldOctaves, 4);
   EXPECT_DOUBLE_EQ(x.fieldGain, 0.4);
   EXPECT_DOUBLE_EQ(x.fieldLacunarity, 2.2);
-  EXPECT_EQ(flame.genome.xforms[1].fieldKind, WeightFieldKind::None);  // cellular: not drawn
+  EXPECT_EQ(flame.genome.xforms[1].fieldKind, WeightFieldKind::None);  // an image map: not drawn
   EXPECT_EQ(flame.genome.xforms[2].fieldKind, WeightFieldKind::None);  // its frequency is not a number
   // JWildfire's GPU export: ordinals and its own names (7: SIMPLEX_FRACTAL_NOISE, input 1: position).
   const FlameXform& gpu = flame.genome.xforms[3];
@@ -385,10 +385,11 @@ TEST(FlameImport, JwildfireWeightingFieldsAreRead) {
   EXPECT_EQ(gpu.fieldInput, WeightFieldInput::Position);
   EXPECT_DOUBLE_EQ(gpu.fieldAmount, 0.2);
   EXPECT_DOUBLE_EQ(gpu.fieldFrequency, 1.5);
-  EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"JWildfire weighting field", "JWildfire weighting field colour"}));
-  EXPECT_TRUE(hasWarningContaining(flame, "CELLULAR_NOISE) of a kind voxflame does not draw")) << allWarnings(flame);
+  EXPECT_EQ(x.fieldNoise, WeightFieldNoise::Perlin);
+  EXPECT_DOUBLE_EQ(x.fieldColor, 0.3);
+  EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"JWildfire weighting field"}));
+  EXPECT_TRUE(hasWarningContaining(flame, "IMAGE_MAP) of a kind voxflame does not draw")) << allWarnings(flame);
   EXPECT_TRUE(hasWarningContaining(flame, "wfield_noise_frequency=\"fast\"")) << allWarnings(flame);
-  EXPECT_TRUE(hasWarningContaining(flame, "also scales its colour")) << allWarnings(flame);
   EXPECT_TRUE(hasWarningContaining(flame, "PERLIN_FRACTAL_NOISE, SIMPLEX_FRACTAL_NOISE) scale the variation weights"))
       << allWarnings(flame);
   // The preset keeps the field and loads it back; a transform without one writes no field.
@@ -417,7 +418,10 @@ TEST(FlameImport, RealWeightingFieldFileImportsItsField) {
   EXPECT_NEAR(withField->fieldAmount, 0.21416904132907888, 1e-15);
   EXPECT_DOUBLE_EQ(withField->fieldFrequency, 1.468);
   EXPECT_EQ(withField->fieldOctaves, 3);
-  EXPECT_TRUE(std::count(flame.leftOut.begin(), flame.leftOut.end(), "JWildfire weighting field colour") == 1 &&
-              std::count(flame.leftOut.begin(), flame.leftOut.end(), "JWildfire weighting field jitter") == 1)
-      << allWarnings(flame);
+  // Its colour and jitter intensities are kept too: nothing of the field is left out.
+  EXPECT_NEAR(withField->fieldColor, 0.26564915787570376, 1e-15);
+  EXPECT_NEAR(withField->fieldJitter, 0.13887944166913668, 1e-15);
+  EXPECT_TRUE(std::none_of(flame.leftOut.begin(), flame.leftOut.end(), [](const std::string& what) {
+    return what.find("weighting field") != std::string::npos;
+  })) << allWarnings(flame);
 }

@@ -170,6 +170,7 @@ VOXFLAME_CHAOS_TARGETS void emitPoints(const double* x, const double* y, const d
 void ChaosLanes::resize(std::size_t lanes) {
   for (auto* v : {&x, &y, &z, &w, &color, &tx, &ty, &tz, &ox, &oy, &oz, &sx, &sy, &sz, &gc, &gs}) v->assign(lanes, 0.0);
   field.assign(lanes, 1.0);
+  fieldNoise.assign(lanes, 0.0);
   random.assign(lanes, 1u);
   groupRandom.assign(lanes, 1u);
   visible.assign(lanes, 1);
@@ -190,6 +191,8 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
   if (xform.hasWeightField()) {
     c.hasField = true;
     c.fieldFromPosition = xform.fieldInput == WeightFieldInput::Position;
+    c.fieldColor = 0.1 * xform.fieldColor;
+    c.fieldJitter = 0.1 * xform.fieldJitter;
     c.field = xform;
     c.field.variations.clear();
     c.field.xaos.clear();
@@ -198,8 +201,38 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
     for (const VariationTerm& term : xform.variations) {
       if (term.weight == 0.0 || variationStage(term.name) != stage) continue;
       const VariationInfo& info = variationOrThrow(term.name);
-      c.terms.push_back({info.apply, term.weight, term.params, stage, info.mapsXY, info.threeD, info.additive,
-                         info.name == "flatten", info.replaces, info.readsSum});
+      c.terms.push_back({info.apply,
+                         term.weight,
+                         term.params,
+                         stage,
+                         info.mapsXY,
+                         info.threeD,
+                         info.additive,
+                         info.name == "flatten",
+                         info.replaces,
+                         info.readsSum,
+                         {},
+                         0.0});
+      if (c.hasField) {
+        // JWildfire's Variation.addWeightingFieldParam: every term of the named variation, the
+        // first entry of a parameter name counting.
+        Term& added = c.terms.back();
+        bool weightSet = false;
+        for (const FlameXform::FieldParam& p : xform.fieldParams()) {
+          if (p.intensity == 0.0 || p.variation != term.name) continue;
+          if (p.name == "amount") {
+            if (!weightSet) added.fieldWeight = p.intensity;
+            weightSet = true;
+            continue;
+          }
+          const int index = info.paramIndex(p.name);
+          if (index < 0 || static_cast<std::size_t>(index) >= added.params.size()) continue;
+          const auto at = static_cast<std::size_t>(index);
+          if (std::none_of(added.fieldParams.begin(), added.fieldParams.end(),
+                           [&](const Term::FieldParam& q) { return q.index == at; }))
+            added.fieldParams.push_back({at, p.intensity, info.params[at].integer});
+        }
+      }
       c.hasNormalTerms = c.hasNormalTerms || stage == VariationStage::Normal;
       c.directColour = c.directColour || info.directColour;
     }
@@ -294,15 +327,42 @@ void combineStage(double* __restrict px, double* __restrict py, double* __restri
 void ChaosGame::fillField(const Compiled& xform, const std::uint32_t* group, std::size_t count, const double* x,
                           const double* y, const double* z, ChaosLanes& lanes) {
   double* field = lanes.field.data();
+  double* noise = lanes.fieldNoise.data();
   const double amount = xform.field.fieldAmount;
   for (std::size_t j = 0; j < count; ++j) {
     const std::uint32_t i = group[j];
     const double n = xform.fieldFromPosition ? weightFieldNoise(xform.field, x[i], y[i], z[i])
                                              : weightFieldNoise(xform.field, lanes.tx[j], lanes.ty[j], lanes.tz[j]);
+    noise[j] = n;
     field[j] = 1.0 + amount * n;
   }
   // The lanes applyGroup rounds the group up to.
-  for (std::size_t j = count; j < std::min((count + 3) & ~std::size_t{3}, lanes.size()); ++j) field[j] = 1.0;
+  for (std::size_t j = count; j < std::min((count + 3) & ~std::size_t{3}, lanes.size()); ++j) {
+    field[j] = 1.0;
+    noise[j] = 0.0;
+  }
+}
+
+void ChaosGame::jitterByField(const Compiled& xform, ChaosLanes& lanes, std::size_t count) {
+  // JWildfire's TransformationApplyWeightMapJitter: each coordinate in turn, the noise read at the
+  // point as moved so far with that coordinate first.
+  double* ox = lanes.ox.data();
+  double* oy = lanes.oy.data();
+  double* oz = lanes.oz.data();
+  const double jitter = xform.fieldJitter;
+  for (std::size_t j = 0; j < count; ++j) {
+    ox[j] += jitter * weightFieldNoise(xform.field, ox[j], oy[j], oz[j]);
+    oy[j] += jitter * weightFieldNoise(xform.field, oy[j], ox[j], oz[j]);
+    oz[j] += jitter * weightFieldNoise(xform.field, oz[j], ox[j], oy[j]);
+  }
+}
+
+void ChaosGame::colourByField(const Compiled& xform, const ChaosLanes& lanes, const std::uint32_t* order,
+                              std::size_t count, double* colour) {
+  // JWildfire's TransformationApplyWeightMapToColorStep, after the colour blend; the index is not
+  // clamped here (the palette lookup clamps it), as in JWildfire.
+  const double* noise = lanes.fieldNoise.data();
+  for (std::size_t j = 0; j < count; ++j) colour[order[j]] *= 1.0 + xform.fieldColor * noise[j];
 }
 
 void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const {
@@ -310,6 +370,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   // never read back, so no lane falls to a loop's scalar tail, where a sin or atan2 costs four
   // times what it costs in a vector call (vector_math.h). A group of a 20-transform flame has about
   // a dozen lanes.
+  const std::size_t groupSize = count;
   count = std::min((count + 3) & ~std::size_t{3}, lanes.size());
   double* __restrict tx = lanes.tx.data();
   double* __restrict ty = lanes.ty.data();
@@ -324,11 +385,17 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
     for (std::size_t j = 0; j < count; ++j) a[j] = b[j] = c[j] = 0.0;
   };
   const double* __restrict field = lanes.field.data();
-  const auto scaleByField = [&](double* a, double* b, double* c) {
+  const double* __restrict noise = lanes.fieldNoise.data();
+  // A term's factor in lane j: the field's, times its own weight's (the field's `amount` parameter).
+  const auto factor = [&](const Term& term, std::size_t j) {
+    return term.fieldWeight == 0.0 ? field[j] : field[j] * (1.0 + noise[j] * term.fieldWeight);
+  };
+  const auto scaleByField = [&](const Term& term, double* a, double* b, double* c) {
     for (std::size_t j = 0; j < count; ++j) {
-      a[j] *= field[j];
-      b[j] *= field[j];
-      c[j] *= field[j];
+      const double f = factor(term, j);
+      a[j] *= f;
+      b[j] *= f;
+      c[j] *= f;
     }
   };
   VariationInput in;
@@ -351,14 +418,41 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
     const bool ordinary = term.stage == VariationStage::Normal;
     in.movableX = ordinary ? tx : nullptr;
     in.movableY = ordinary ? ty : nullptr;
-    term.apply(in, rx, ry, rz);
+    if (term.fieldParams.empty()) {
+      term.apply(in, rx, ry, rz);
+      return;
+    }
+    // Parameters the field scales differ from lane to lane: each lane on its own, with its own
+    // parameters (JWildfire sets them, re-initialises the variation, and restores them).
+    std::vector<double>& params = lanes.fieldParams;
+    for (std::size_t j = 0; j < groupSize; ++j) {
+      params = term.params;
+      for (const Term::FieldParam& p : term.fieldParams) {
+        const double scaled = params[p.index] * (1.0 + noise[j] * p.intensity);
+        params[p.index] = p.integer ? std::round(scaled) : scaled;  // JWildfire's FTOI for an int parameter
+      }
+      VariationInput one = in;
+      one.params = params.data();
+      one.count = 1;
+      one.x = x + j;
+      one.y = y + j;
+      one.z = z + j;
+      one.tx = tx + j;
+      one.ty = ty + j;
+      one.tz = tz + j;
+      one.random = in.random + j;
+      one.colour = in.colour + j;
+      one.movableX = ordinary ? tx + j : nullptr;
+      one.movableY = ordinary ? ty + j : nullptr;
+      term.apply(one, rx + j, ry + j, rz + j);
+    }
   };
   std::size_t k = 0;
   // pre_ terms: each maps the affine point t in place (o is their scratch).
   for (; k < xform.terms.size() && xform.terms[k].stage == VariationStage::Pre; ++k) {
     clear(ox, oy, oz);
     run(xform.terms[k], tx, ty, tz, ox, oy, oz);
-    if (xform.hasField) scaleByField(ox, oy, oz);
+    if (xform.hasField) scaleByField(xform.terms[k], ox, oy, oz);
     combineStage(tx, ty, tz, ox, oy, oz, xform.terms[k].mapsXY, xform.terms[k].mapsZ, xform.terms[k].additive, count);
     if (xform.terms[k].flattens)
       for (std::size_t j = 0; j < count; ++j) tz[j] = 0.0;
@@ -394,18 +488,20 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
       }
       run(xform.terms[k], tx, ty, tz, sx, sy, sz);
       for (std::size_t j = 0; j < count; ++j) {
-        ox[j] += field[j] * (sx[j] - ox[j]);
-        oy[j] += field[j] * (sy[j] - oy[j]);
-        oz[j] += field[j] * (sz[j] - oz[j]);
+        const double f = factor(xform.terms[k], j);
+        ox[j] += f * (sx[j] - ox[j]);
+        oy[j] += f * (sy[j] - oy[j]);
+        oz[j] += f * (sz[j] - oz[j]);
       }
     } else if (xform.hasField) {
       // The term's result scaled per lane (variations are linear in their weight), then summed.
       clear(sx, sy, sz);
       run(xform.terms[k], tx, ty, tz, sx, sy, sz);
       for (std::size_t j = 0; j < count; ++j) {
-        ox[j] += field[j] * sx[j];
-        oy[j] += field[j] * sy[j];
-        oz[j] += field[j] * sz[j];
+        const double f = factor(xform.terms[k], j);
+        ox[j] += f * sx[j];
+        oy[j] += f * sy[j];
+        oz[j] += f * sz[j];
       }
     } else {
       run(xform.terms[k], tx, ty, tz, ox, oy, oz);
@@ -418,12 +514,13 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
   for (; k < xform.terms.size(); ++k) {
     clear(sx, sy, sz);
     run(xform.terms[k], ox, oy, oz, sx, sy, sz);
-    if (xform.hasField) scaleByField(sx, sy, sz);
+    if (xform.hasField) scaleByField(xform.terms[k], sx, sy, sz);
     combineStage(ox, oy, oz, sx, sy, sz, xform.terms[k].mapsXY, xform.terms[k].mapsZ, xform.terms[k].additive, count);
     if (xform.terms[k].flattens)
       for (std::size_t j = 0; j < count; ++j) oz[j] = 0.0;
   }
   if (xform.hasPost) affineInPlace(ox, oy, oz, xform.post.data(), count);
+  if (xform.fieldJitter != 0.0) jitterByField(xform, lanes, groupSize);
 }
 
 void ChaosGame::startDirectColour(const Compiled& xform, ChaosLanes& lanes, const std::uint32_t* group, std::size_t n) {
@@ -503,6 +600,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
       const double* gc = lanes.gc.data();
       for (std::uint32_t j = 0; j < n; ++j) color[group[j]] = gc[j];
     }
+    if (xf.fieldColor != 0.0) colourByField(xf, lanes, group, n, color);
   }
 
   // 4. What is drawn: the state, or the final transform of it (which never feeds back).
@@ -531,6 +629,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     visible[i] &= laneUniform(r) < final_.opacity ? 1 : 0;
     random[i] = r;
   }
+  if (final_.fieldColor != 0.0) colourByField(final_, lanes, order, count, outColor);
   // JWildfire's further final transforms, each bending what the one before drew.
   for (const Compiled& chained : chainedFinals_) {
     gatherAffine(order, count, outX, outY, outZ, random, chained.affine.data(), lanes.tx.data(), lanes.ty.data(),
@@ -550,6 +649,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
       visible[i] &= laneUniform(r) < chained.opacity ? 1 : 0;
       random[i] = r;
     }
+    if (chained.fieldColor != 0.0) colourByField(chained, lanes, order, count, outColor);
   }
   if (!group_.empty()) throughOneOf(group_, lanes, outX, outY, outZ, count);
   if (!postSymmetry_.empty()) throughOneOf(postSymmetry_, lanes, outX, outY, outZ, count);

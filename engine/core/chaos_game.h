@@ -38,7 +38,9 @@ struct ChaosLanes {
   // A direct-colour transform's group: the colour index its variations read and set, and what the
   // colour blend made of it before them (flame.h's directColor blends between the two).
   std::vector<double> gc, gs;
-  std::vector<double> field;  // 1 + amount · noise: a weighting field's factor of the variation weights
+  std::vector<double> field;        // 1 + amount · noise: a weighting field's factor of the variation weights
+  std::vector<double> fieldNoise;   // the weighting field's noise n itself (colour and parameters read it)
+  std::vector<double> fieldParams;  // scratch: one lane's parameters as the field changes them
   std::vector<std::uint32_t> groupRandom;
   void resize(std::size_t lanes);
   std::size_t size() const { return x.size(); }
@@ -86,6 +88,15 @@ class ChaosGame {
     bool flattens = false;                                                // flatten: z is 0 after this stage
     VariationInfo::Replaces replaces = VariationInfo::Replaces::Nothing;  // as an ordinary term
     bool readsSum = false;                                                // as an ordinary term
+    // What the transform's weighting field does to this term besides `field`: parameters it
+    // scales per point (a count rounded), and its own weight (the field's `amount` parameter).
+    struct FieldParam {
+      std::size_t index = 0;
+      double intensity = 0.0;
+      bool integer = false;
+    };
+    std::vector<FieldParam> fieldParams;
+    double fieldWeight = 0.0;
   };
   struct Compiled {
     std::array<double, 12> affine{};
@@ -99,11 +110,17 @@ class ChaosGame {
     // A weighting field (flame.h): `field` keeps the transform's field settings (no variations).
     bool hasField = false;
     bool fieldFromPosition = false;
+    double fieldColor = 0.0, fieldJitter = 0.0;  // JWildfire's intensities times its 0.1
     FlameXform field;
   };
   // lanes.field for a group: the factor each lane's variation weights take.
   static void fillField(const Compiled& xform, const std::uint32_t* group, std::size_t count, const double* x,
                         const double* y, const double* z, ChaosLanes& lanes);
+  // The weighting field's jitter of a group's results o (after the post map), lanes [0, count).
+  static void jitterByField(const Compiled& xform, ChaosLanes& lanes, std::size_t count);
+  // colour[order[j]] · (1 + fieldColor · n) for the group's lanes: the field's colour.
+  static void colourByField(const Compiled& xform, const ChaosLanes& lanes, const std::uint32_t* order,
+                            std::size_t count, double* colour);
   static Compiled compile(const FlameXform& xform);
   // Runs one compiled transform's affine map, variations and post map on a contiguous group.
   void applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const;

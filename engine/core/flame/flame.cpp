@@ -6,7 +6,6 @@
 #include <glm/geometric.hpp>
 
 #include "core/error.h"
-#include "core/flame/noise.h"
 #include "core/flame/variations.h"
 
 namespace voxflame::core {
@@ -63,9 +62,19 @@ void validateXform(const FlameXform& xform, const std::string& where) {
   if (!finite(xform.directColor) || xform.directColor < 0.0 || xform.directColor > 1.0)
     fail("has a direct colour outside [0, 1]");
   if (xform.fieldKind != WeightFieldKind::None) {
-    for (const double v : {xform.fieldAmount, xform.fieldGain, xform.fieldLacunarity})
+    for (const double v :
+         {xform.fieldAmount, xform.fieldGain, xform.fieldLacunarity, xform.fieldColor, xform.fieldJitter,
+          xform.fieldParam1Intensity, xform.fieldParam2Intensity, xform.fieldParam3Intensity})
       if (!finite(v) || std::abs(v) > kFlameCoefficientLimit)
-        fail("has a weighting field amount, gain or lacunarity that is not finite or beyond ±1e6");
+        fail("has a weighting field amount, gain, lacunarity or intensity that is not finite or beyond ±1e6");
+    // A parameter the field scales: a variation may be named that the transform lacks (JWildfire
+    // then scales nothing), but a known variation's parameter must be one it has.
+    for (const FlameXform::FieldParam& p : xform.fieldParams()) {
+      const VariationInfo* info = p.variation.empty() ? nullptr : findVariation(p.variation);
+      if (info && p.name != "amount" && info->paramIndex(p.name) < 0)
+        fail("has a weighting field that scales '" + p.name + "', which variation " + p.variation +
+             " does not have (its parameters, or `amount`)");
+    }
     if (!finite(xform.fieldFrequency) || xform.fieldFrequency < 0.0 || xform.fieldFrequency > kFlameCoefficientLimit)
       fail("has a weighting field frequency that is not a number from 0 to 1e6");
     if (xform.fieldOctaves < 1 || xform.fieldOctaves > kMaxWeightFieldOctaves)
@@ -196,29 +205,6 @@ std::vector<Affine3> postSymmetryMaps(const FlamePostSymmetry& s) {
       break;
   }
   return maps;
-}
-
-double weightFieldNoise(const FlameXform& xform, double x, double y, double z) {
-  if (xform.fieldKind == WeightFieldKind::None) return 0.0;
-  // The seed picks a far-off place of the noise space (irrational steps: no two seeds align).
-  const double seed = static_cast<double>(xform.fieldSeed);
-  const double ox = std::fmod(seed * 0.7548776662466927, 1.0) * 4096.0;
-  const double oy = std::fmod(seed * 0.5698402909980532, 1.0) * 4096.0;
-  const double oz = std::fmod(seed * 0.4301597090019468, 1.0) * 4096.0;
-  double frequency = xform.fieldFrequency;
-  if (xform.fieldKind == WeightFieldKind::Noise)
-    return simplexNoise3D(frequency * x + ox, frequency * y + oy, frequency * z + oz);
-  double sum = 0.0, amplitude = 1.0, bound = 0.0;
-  for (int octave = 0; octave < xform.fieldOctaves; ++octave) {
-    double n = simplexNoise3D(frequency * x + ox, frequency * y + oy, frequency * z + oz);
-    if (xform.fieldFractal == WeightFieldFractal::Billow) n = 2.0 * std::abs(n) - 1.0;
-    if (xform.fieldFractal == WeightFieldFractal::Rigid) n = 1.0 - 2.0 * std::abs(n);
-    sum += amplitude * n;
-    bound += amplitude;
-    amplitude *= xform.fieldGain;
-    frequency *= xform.fieldLacunarity;
-  }
-  return bound > 0.0 ? sum / bound : 0.0;
 }
 
 void validateFlame(const FlameGenome& genome, const std::string& where) {

@@ -45,20 +45,38 @@ struct Affine3 {
   bool operator==(const Affine3&) const = default;
 };
 
-// JWildfire's weighting fields: a noise over space that scales a transform's variations per
-// point. Each variation's weight becomes weight · (1 + amount · n(p)), n the field's noise at p
-// (roughly in [−1, 1]): p the point after the transform's affine map (input `affine`) or the point
-// it starts from (`position`). Noise kinds: `noise` is gradient noise at `frequency` (3D simplex
-// noise, simplexNoise3D, standing in for the Perlin, simplex, value and cubic noise of
-// JWildfire's FastNoise: the same kind of smooth field, not the same values), `fractal` sums
+// JWildfire's weighting fields: a noise n(p) over space (roughly in [−1, 1]) that a transform
+// reads at each point, p the point after the transform's affine map (input `affine`) or the point
+// it starts from (`position`), and that drives, each by its own intensity:
+//  * amount: each variation's weight becomes weight · (1 + amount · n);
+//  * params (up to three): a parameter of the transform's variations of one name becomes
+//    value · (1 + intensity · n) for that point (a count rounded), or, for the parameter `amount`,
+//    that variation's weight alone is scaled so;
+//  * color: after the colour blend the point's colour index becomes c · (1 + 0.1 · color · n);
+//  * jitter: after the post map each coordinate of the result q moves by 0.1 · jitter · n(q), n
+//    read at q with its coordinates turned (x by n(x, y, z), then y by n(y, x, z), z by n(z, x, y)).
+// Noise kinds: `noise` is one noise of the family `noise` at `frequency`, `fractal` sums
 // `octaves` of it, each `lacunarity` times finer and `gain` times weaker (FastNoise's fractal
-// sum: fbm, billow or rigid). `seed` moves the noise to another place of the noise space.
+// sums: fbm, billow or rigid). The families are JWildfire's (FastNoise's): simplex, Perlin
+// (gradient noise on the cube lattice), value (lattice values, smoothly blended), cubic (lattice
+// values, cubic interpolation), cellular (Worley: distances to jittered lattice points, by
+// `cell_distance`, returned as `cell_return` says) and white (a value per coordinate). `seed`
+// picks another noise of the same family: voxflame's hashes and tables, so the same kind of
+// field at the same frequency as JWildfire's, not the same values.
 enum class WeightFieldKind { None, Noise, Fractal };
 inline constexpr std::string_view kWeightFieldKindNames[] = {"none", "noise", "fractal"};
 enum class WeightFieldInput { Affine, Position };
 inline constexpr std::string_view kWeightFieldInputNames[] = {"affine", "position"};
 enum class WeightFieldFractal { Fbm, Billow, Rigid };
 inline constexpr std::string_view kWeightFieldFractalNames[] = {"fbm", "billow", "rigid"};
+enum class WeightFieldNoise { Simplex, Perlin, Value, Cubic, Cellular, White };
+inline constexpr std::string_view kWeightFieldNoiseNames[] = {"simplex", "perlin",   "value",
+                                                              "cubic",   "cellular", "white"};
+enum class CellDistance { Euclidean, Manhattan, Natural };
+inline constexpr std::string_view kCellDistanceNames[] = {"euclidean", "manhattan", "natural"};
+enum class CellReturn { CellValue, Distance, Distance2, Distance2Add, Distance2Sub, Distance2Mul, Distance2Div };
+inline constexpr std::string_view kCellReturnNames[] = {
+    "cell_value", "distance", "distance2", "distance2_add", "distance2_sub", "distance2_mul", "distance2_div"};
 inline constexpr int kMaxWeightFieldOctaves = 10;
 
 // One variation of a transform: its catalogue name, weight and parameters (catalogue order).
@@ -97,7 +115,36 @@ struct FlameXform {
   int fieldSeed = 1337;
   int fieldOctaves = 3;
   double fieldGain = 0.5, fieldLacunarity = 2.0;
-  bool hasWeightField() const { return fieldKind != WeightFieldKind::None && fieldAmount != 0.0; }
+  WeightFieldNoise fieldNoise = WeightFieldNoise::Simplex;
+  CellDistance fieldCellDistance = CellDistance::Euclidean;
+  CellReturn fieldCellReturn = CellReturn::Distance2;  // JWildfire's default
+  double fieldColor = 0.0;                             // JWildfire's "color intensity"
+  double fieldJitter = 0.0;                            // JWildfire's "jitter intensity"
+  // JWildfire's "var param 1–3": variation name, parameter name (or "amount"), intensity.
+  std::string fieldParam1Variation, fieldParam1Name;
+  double fieldParam1Intensity = 0.0;
+  std::string fieldParam2Variation, fieldParam2Name;
+  double fieldParam2Intensity = 0.0;
+  std::string fieldParam3Variation, fieldParam3Name;
+  double fieldParam3Intensity = 0.0;
+  struct FieldParam {
+    const std::string& variation;
+    const std::string& name;
+    double intensity;
+  };
+  std::array<FieldParam, 3> fieldParams() const {
+    return {FieldParam{fieldParam1Variation, fieldParam1Name, fieldParam1Intensity},
+            FieldParam{fieldParam2Variation, fieldParam2Name, fieldParam2Intensity},
+            FieldParam{fieldParam3Variation, fieldParam3Name, fieldParam3Intensity}};
+  }
+  // JWildfire's isWeightingFieldActive: a noise kind and something for it to drive.
+  bool hasWeightField() const {
+    if (fieldKind == WeightFieldKind::None) return false;
+    if (fieldAmount != 0.0 || fieldColor != 0.0 || fieldJitter != 0.0) return true;
+    for (const FieldParam& p : fieldParams())
+      if (p.intensity != 0.0 && !p.variation.empty()) return true;
+    return false;
+  }
   bool operator==(const FlameXform&) const = default;
 };
 

@@ -890,10 +890,10 @@ class FlameReader {
 
   // JWildfire's weighting field of a transform, as JWildfire writes it (wfield_type="PERLIN_NOISE",
   // wfield_var_amount_intensity, wfield_noise_frequency, ...) or as its GPU renderer's export
-  // does (wfield_type="6", the type's ordinal; wfield_var_amount, wfield_scale, ...). The noise
-  // kinds become voxflame's (flame.h: simplex noise for JWildfire's FastNoise, the same kind of
-  // field, not the same values); cellular, white and image-map fields, and a field's colour,
-  // jitter and parameter intensities, are left out.
+  // does (wfield_type="6", the type's ordinal; wfield_var_amount, wfield_scale, ...). Every noise
+  // family becomes voxflame's of the same family (flame.h: the same kind of field, not the same
+  // values), with what it drives: variation weights, colour, jitter and named variation
+  // parameters. Image-map fields and the GPU export's parameters by index are left out.
   void readWeightField(const pugi::xml_node& node, const std::string& context, FlameXform& x) {
     const pugi::xml_attribute typeAttribute = node.attribute("wfield_type");
     if (!typeAttribute) return;
@@ -912,8 +912,7 @@ class FlameReader {
     };
     if (std::find(kTypes.begin(), kTypes.end(), type) == kTypes.end())
       return leaveOut("of a type JWildfire does not have");
-    if (type == "CELLULAR_NOISE" || type == "WHITE_NOISE" || type == "IMAGE_MAP")
-      return leaveOut("of a kind voxflame does not draw");
+    if (type == "IMAGE_MAP") return leaveOut("of a kind voxflame does not draw (an image map)");
     // A number under either of its names; nullopt (after leaveOut) when it is not one.
     bool bad = false;
     const auto number = [&](std::initializer_list<const char*> names, double fallback, double low,
@@ -935,6 +934,16 @@ class FlameReader {
     };
     FlameXform field;
     field.fieldKind = type.find("FRACTAL") != std::string::npos ? WeightFieldKind::Fractal : WeightFieldKind::Noise;
+    field.fieldNoise = type.starts_with("PERLIN")  ? WeightFieldNoise::Perlin
+                       : type.starts_with("VALUE") ? WeightFieldNoise::Value
+                       : type.starts_with("CUBIC") ? WeightFieldNoise::Cubic
+                       : type == "CELLULAR_NOISE"  ? WeightFieldNoise::Cellular
+                       : type == "WHITE_NOISE"     ? WeightFieldNoise::White
+                                                   : WeightFieldNoise::Simplex;
+    field.fieldColor =
+        number({"wfield_color_intensity", "wfield_color_amount"}, 0.0, -kFlameCoefficientLimit, kFlameCoefficientLimit);
+    field.fieldJitter = number({"wfield_jitter_intensity", "wfield_jitter_amount"}, 0.0, -kFlameCoefficientLimit,
+                               kFlameCoefficientLimit);
     field.fieldAmount = number({"wfield_var_amount_intensity", "wfield_var_amount"}, 0.0, -kFlameCoefficientLimit,
                                kFlameCoefficientLimit);
     field.fieldFrequency = number({"wfield_noise_frequency", "wfield_scale"}, 1.0, 0.0, kFlameCoefficientLimit);
@@ -953,6 +962,57 @@ class FlameReader {
       if (fractal == "BILLOW" || fractal == "1") field.fieldFractal = WeightFieldFractal::Billow;
       if (fractal == "RIGID_MULTI" || fractal == "2") field.fieldFractal = WeightFieldFractal::Rigid;
     }
+    // Cellular noise: JWildfire's names (EUCLIDIAN is its spelling) or the GPU export's ordinals.
+    static constexpr std::array<std::string_view, 3> kDistances = {"EUCLIDIAN", "MANHATTAN", "NATURAL"};
+    static constexpr std::array<std::string_view, 7> kReturns = {
+        "CELL_VALUE", "DISTANCE", "DISTANCE2", "DISTANCE_ADD", "DISTANCE_SUB", "DISTANCE_MUL", "DISTANCE_DIV"};
+    const auto choice = [&](std::initializer_list<const char*> names, auto names_, auto set) {
+      for (const char* name : names) {
+        const pugi::xml_attribute attribute = node.attribute(name);
+        if (!attribute) continue;
+        const std::string value = trimmed(attribute.value());
+        for (std::size_t i = 0; i < names_.size(); ++i)
+          if (value == names_[i] || value == std::to_string(i)) return set(i);
+        if (!bad) leaveOut(std::string("whose ") + name + "=\"" + value.substr(0, 40) + "\" is not one JWildfire has");
+        bad = true;
+        return;
+      }
+    };
+    choice({"wfield_cell_noise_dist_function", "wfield_cell_noise_dist_func"}, kDistances,
+           [&](std::size_t i) { field.fieldCellDistance = static_cast<CellDistance>(i); });
+    choice({"wfield_cell_noise_return_type", "wfield_cell_noise_ret_val"}, kReturns,
+           [&](std::size_t i) { field.fieldCellReturn = static_cast<CellReturn>(i); });
+    if (bad) return;
+    // The variation parameters it scales (JWildfire's own attributes; the GPU export names them by
+    // index below): a variation of voxflame's catalogue and one of its parameters, or `amount`.
+    std::vector<std::string> notKept;
+    const std::array<std::string*, 3> variations = {&field.fieldParam1Variation, &field.fieldParam2Variation,
+                                                    &field.fieldParam3Variation};
+    const std::array<std::string*, 3> parameters = {&field.fieldParam1Name, &field.fieldParam2Name,
+                                                    &field.fieldParam3Name};
+    const std::array<double*, 3> intensities = {&field.fieldParam1Intensity, &field.fieldParam2Intensity,
+                                                &field.fieldParam3Intensity};
+    for (std::size_t i = 0; i < 3; ++i) {
+      const std::string prefix = "wfield_var_param" + std::to_string(i + 1) + "_";
+      const double intensity =
+          number({(prefix + "intensity").c_str()}, 0.0, -kFlameCoefficientLimit, kFlameCoefficientLimit);
+      const std::string variation = trimmed(node.attribute((prefix + "var_name").c_str()).value());
+      const std::string parameter = trimmed(node.attribute((prefix + "param_name").c_str()).value());
+      if (intensity == 0.0 || variation.empty()) continue;  // JWildfire scales nothing
+      const VariationInfo* info = variationNamed(withoutCopyMark(variation));
+      if (!info) {
+        notKept.push_back("parameters of " + variation.substr(0, 40) + " (a variation voxflame does not know)");
+        continue;
+      }
+      if (parameter != "amount" && info->paramIndex(parameter) < 0) {
+        notKept.push_back("parameter " + parameter.substr(0, 40) + " of " + info->name + " (which voxflame's " +
+                          info->name + " does not have)");
+        continue;
+      }
+      *variations[i] = info->name;
+      *parameters[i] = parameter;
+      *intensities[i] = intensity;
+    }
     if (bad) return;
     // What the field does besides scaling the variations' weights.
     // (A value that is not a number counts as one that is not 0.)
@@ -962,12 +1022,8 @@ class FlameReader {
         return attribute && parseNumber(attribute.value()) != std::optional<double>(0.0);
       });
     };
-    std::vector<std::string> notKept;
-    if (nonZero({"wfield_color_intensity", "wfield_color_amount"})) notKept.push_back("colour");
-    if (nonZero({"wfield_jitter_intensity", "wfield_jitter_amount"})) notKept.push_back("jitter");
-    if (nonZero({"wfield_var_param1_intensity", "wfield_var_param2_intensity", "wfield_var_param3_intensity",
-                 "wfield_param1_amount", "wfield_param2_amount", "wfield_param3_amount"}))
-      notKept.push_back("variation parameters");
+    if (nonZero({"wfield_param1_amount", "wfield_param2_amount", "wfield_param3_amount"}))
+      notKept.push_back("variation parameters (by index, as JWildfire's GPU export names them)");
     std::string also;
     for (const std::string& what : notKept) {
       lose("JWildfire weighting field " + what);
@@ -982,10 +1038,24 @@ class FlameReader {
     x.fieldOctaves = field.fieldOctaves;
     x.fieldGain = field.fieldGain;
     x.fieldLacunarity = field.fieldLacunarity;
+    x.fieldNoise = field.fieldNoise;
+    x.fieldCellDistance = field.fieldCellDistance;
+    x.fieldCellReturn = field.fieldCellReturn;
+    x.fieldColor = field.fieldColor;
+    x.fieldJitter = field.fieldJitter;
+    x.fieldParam1Variation = field.fieldParam1Variation;
+    x.fieldParam1Name = field.fieldParam1Name;
+    x.fieldParam1Intensity = field.fieldParam1Intensity;
+    x.fieldParam2Variation = field.fieldParam2Variation;
+    x.fieldParam2Name = field.fieldParam2Name;
+    x.fieldParam2Intensity = field.fieldParam2Intensity;
+    x.fieldParam3Variation = field.fieldParam3Variation;
+    x.fieldParam3Name = field.fieldParam3Name;
+    x.fieldParam3Intensity = field.fieldParam3Intensity;
     weightFields_.insert(type);
     if (!also.empty())
       warn(context + " has a JWildfire weighting field that also scales its " + also +
-           ", which voxflame does not; only the variation weights are scaled");
+           ", which voxflame does not; the rest of the field is kept");
   }
 
   // --- motion: flam3's <motion> elements and JWildfire's motion curves, kept as keyframes ---
@@ -1138,6 +1208,12 @@ class FlameReader {
           high = 1.0;
           scale = -0.5;
           offset = 0.5;
+        } else if (const auto target = weightFieldTarget(property)) {
+          // A weighting-field value (readWeightField): keyed on the transform's field, which changes
+          // nothing while the transform has none, as in JWildfire.
+          field = target->path;
+          low = target->low;
+          high = target->high;
         } else if (property.ends_with("_amount")) {
           const std::string variation = property.substr(0, property.size() - 7);
           if (const VariationInfo* info = variationNamed(withoutCopyMark(variation));
@@ -1181,6 +1257,35 @@ class FlameReader {
       channel.smooth = interpolation != "LINEAR";
       if (interpolation != "LINEAR") approximatedCurves_.insert(interpolation.substr(0, 20));
     }
+  }
+
+  // The preset value a JWildfire weighting-field property's curve keys, and its range.
+  struct CurveTarget {
+    std::string path;
+    double low, high;
+  };
+  static std::optional<CurveTarget> weightFieldTarget(const std::string& property) {
+    static const std::array<std::pair<std::string_view, std::string_view>, 11> kTargets = {{
+        {"weightingFieldVarAmountIntensity", "field/amount"},
+        {"weightingFieldColorIntensity", "field/color"},
+        {"weightingFieldJitterIntensity", "field/jitter"},
+        {"weightingFieldNoiseFrequency", "field/frequency"},
+        {"weightingFieldNoiseSeed", "field/seed"},
+        {"weightingFieldFractalNoiseOctaves", "field/octaves"},
+        {"weightingFieldFractalNoiseGain", "field/gain"},
+        {"weightingFieldFractalNoiseLacunarity", "field/lacunarity"},
+        {"weightingFieldVarParam1Intensity", "field/param1_intensity"},
+        {"weightingFieldVarParam2Intensity", "field/param2_intensity"},
+        {"weightingFieldVarParam3Intensity", "field/param3_intensity"},
+    }};
+    for (const auto& [name, path] : kTargets) {
+      if (property != name) continue;
+      if (path == "field/frequency") return CurveTarget{std::string(path), 0.0, kFlameCoefficientLimit};
+      if (path == "field/seed") return CurveTarget{std::string(path), -2147483648.0, 2147483647.0};
+      if (path == "field/octaves") return CurveTarget{std::string(path), 1.0, kMaxWeightFieldOctaves};
+      return CurveTarget{std::string(path), -kFlameCoefficientLimit, kFlameCoefficientLimit};
+    }
+    return std::nullopt;
   }
 
   // A JWildfire curve's points (frame, offset + scale · y); nullopt, after leaveOut(why), when
@@ -1347,9 +1452,9 @@ class FlameReader {
       std::string types;
       for (const std::string& type : weightFields_) types += (types.empty() ? "" : ", ") + type;
       out.push_back("JWildfire's weighting fields (" + types +
-                    ") scale the variation weights per point as JWildfire's do, with voxflame's simplex noise "
-                    "standing in for JWildfire's FastNoise: the same kind of field at the same frequency, not the "
-                    "same values");
+                    ") scale the variation weights per point (and the colour, jitter and parameters they name) as "
+                    "JWildfire's do, with voxflame's noise of the same family standing in for JWildfire's "
+                    "FastNoise: the same kind of field at the same frequency, not the same values");
     }
     return out;
   }
@@ -1934,6 +2039,20 @@ double motionFunction(char function, double t) {
 // The value a channel animates, as the transform holds it.
 double channelBase(const FlameXform& x, const std::string& field) {
   if (field == "weight") return x.weight;
+  if (field.starts_with("field/")) {
+    const std::string key = field.substr(6);
+    if (key == "amount") return x.fieldAmount;
+    if (key == "color") return x.fieldColor;
+    if (key == "jitter") return x.fieldJitter;
+    if (key == "frequency") return x.fieldFrequency;
+    if (key == "seed") return x.fieldSeed;
+    if (key == "octaves") return x.fieldOctaves;
+    if (key == "gain") return x.fieldGain;
+    if (key == "lacunarity") return x.fieldLacunarity;
+    if (key == "param1_intensity") return x.fieldParam1Intensity;
+    if (key == "param2_intensity") return x.fieldParam2Intensity;
+    return x.fieldParam3Intensity;
+  }
   if (field == "color") return x.color;
   if (field == "color_speed") return x.colorSpeed;
   if (field == "opacity") return x.opacity;
