@@ -721,11 +721,17 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
     return gpuSession.takeVolumeIfNewer(volume) && volume.points > 0 && volume.maxDensity > 0.0f;
   }));
 
+  // A flame of the GPU's variations refines there; a quaternion Julia set falls back to the CPU, saying why.
   core::Scene flame = scene;
   flame.layers.front().kind = core::PatternKind::Flame;
   flame.layers.front().flame = core::defaultFlame();
   flame.layers.front().color.mode = core::ColorMode::Index;
   gpuSession.post(flame);
+  ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
+  EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Gpu) << gpuSession.status().backendNote;
+  core::Scene julia = flame;
+  julia.layers.front().kind = core::PatternKind::QuaternionJulia;
+  gpuSession.post(julia);
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Cpu);
   EXPECT_NE(gpuSession.status().backendNote.find("refining on the CPU"), std::string::npos)
