@@ -679,7 +679,7 @@ TEST_F(ExplorerUi, ExportPanelRendersInAChildWithProgressAndShowsThePath) {
   const auto output = folder.path() / "still.png";
   std::snprintf(state.panels.scene.exportPath, sizeof state.panels.scene.exportPath, "%s", output.string().c_str());
   click("header/Export");
-  // The panel asks; the window loop (app::LiveView) starts the job. Do what it does.
+  // The panel asks; the window loop (app::PanelRequests) starts the job. Do what it does.
   clickForRequest("export/Export now");
   ASSERT_TRUE(state.frame.requests.exportStill.has_value());
   app::startExport(state, job, *state.frame.requests.exportStill);
