@@ -24,8 +24,7 @@ inline float explorerPreviewScale(const std::string& glRenderer) {
 
 struct HeadlessFrameLoop {
   static constexpr int kWidth = 1280, kHeight = 720;
-  HeadlessFrameLoop(app::ExplorerSession& session, const core::Scene& scene, float renderScale)
-      : view(session, nullptr, nullptr) {
+  HeadlessFrameLoop(app::ExplorerSession& session, const core::Scene& scene, float renderScale) : view(session) {
     app::resetExplorerState(state, scene);
     state.panels.scene.renderScale = renderScale;
     glGenRenderbuffers(1, &colour);

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 #include <functional>
 #include <fstream>
 #include <thread>
@@ -678,7 +679,7 @@ TEST_F(ExplorerUi, ExportPanelRendersInAChildWithProgressAndShowsThePath) {
   const auto output = folder.path() / "still.png";
   std::snprintf(state.panels.scene.exportPath, sizeof state.panels.scene.exportPath, "%s", output.string().c_str());
   click("header/Export");
-  // The panel asks; the window loop (app::LiveView) starts the job. Do what it does.
+  // The panel asks; the window loop (app::PanelRequests) starts the job. Do what it does.
   clickForRequest("export/Export now");
   ASSERT_TRUE(state.frame.requests.exportStill.has_value());
   app::startExport(state, job, *state.frame.requests.exportStill);
@@ -1623,10 +1624,14 @@ TEST_F(ExplorerUi, TheLargeGridHoldsWhileTheUserDragsAndTheProxyShowsEachEdit) {
     return static_cast<double>(volume.points) >= dragBurst;
   });
   EXPECT_GE(static_cast<double>(volume.points), dragBurst);
-  // A fixed wait, as this proves that something does NOT happen: the burst going on past the drag's.
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
-  session.takeProxyIfNewer(volume);
-  EXPECT_LT(static_cast<double>(volume.points), 0.5 * app::ExplorerSession::kProxyPointsPerVoxel * insideVoxels)
+  // The burst ends: the proxy's backend is done, its workers asleep at their target, and no more
+  // points come until the target changes. It ended well short of the full burst.
+  ASSERT_TRUE(test::waitForSession(session, [&] {
+    const std::optional<core::AccumulatorStats> proxy = session.proxyStats();
+    return proxy && proxy->done;
+  }));
+  EXPECT_LT(static_cast<double>(session.proxyStats()->points),
+            0.5 * app::ExplorerSession::kProxyPointsPerVoxel * insideVoxels)
       << "a drag's proxy burst is a third of the full one";
   const std::uint64_t held = session.status().stats.points;
   EXPECT_EQ(held, 0u) << "the large grid adds nothing while the user drags";
@@ -1654,10 +1659,10 @@ TEST_F(ExplorerUi, AnOrbitHoldsEvenAGridWithoutAProxyAndAnEditEndsIt) {
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   ASSERT_TRUE(waitForSession(session, [](const app::SessionStatus& s) { return s.stats.points > 100'000; }));
   session.setRefinement(0.0, false, true, true);
-  // The batches under way finish (the session says nothing of its workers going to sleep, so this
-  // waits long enough for them); then nothing more is added, which only a fixed wait can show.
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  // The batches under way when the hold came land, and the workers go to sleep: the backend is idle.
+  ASSERT_TRUE(test::waitForSession(session, [&] { return session.gridIdle(); })) << "the held grid kept working";
   const std::uint64_t held = session.status().stats.points;
+  // A fixed wait, as this proves that something does NOT happen: points added while the view moves.
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   EXPECT_EQ(session.status().stats.points, held) << "the grid adds nothing while the view moves";
 

@@ -7,9 +7,9 @@
 #include <epoxy/gl.h>
 
 #include <chrono>
+#include <optional>
 #include <cstdlib>
 #include <fstream>
-#include <thread>
 
 #include "core/camera.h"
 #include "core/image_io.h"
@@ -22,6 +22,7 @@
 #include "gl/headless_context.h"
 #include "gl/read_back.h"
 #include "live_view.h"
+#include "panel_requests.h"
 #include "pipeline.h"
 #include "preset_library.h"
 #include "test_support.h"
@@ -91,8 +92,12 @@ class LiveViewTest : public ::testing::Test {
     change(changed);
     state.document.replace(changed);
   }
+  // The panels' requests, served after each frame as the window loop serves them (when set).
+  app::PanelRequests* panelRequests = nullptr;
   app::LiveFrame frame(app::LiveView& view) {
-    return app::liveFrame(view, state, kWidth, kHeight, canvas.framebuffer());
+    const app::LiveFrame drawn = app::liveFrame(view, state, kWidth, kHeight, canvas.framebuffer());
+    if (panelRequests) panelRequests->serve(state, view, canvas.framebuffer());
+    return drawn;
   }
   // Runs a few frames, then on until the picture shown is a whole pass at the full scale (a
   // still view's first pass takes a few frames of bands, and a view change, such as the mesh
@@ -128,7 +133,7 @@ class LiveViewTest : public ::testing::Test {
 };
 
 TEST_F(LiveViewTest, AnEditReachesTheScreenTaggedWithItsPost) {
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   const app::LiveFrame first = frame(view);
   EXPECT_TRUE(first.patternPosted) << "the first frame posts the scene";
   EXPECT_FALSE(first.volumeDrawn);
@@ -156,7 +161,7 @@ TEST_F(LiveViewTest, LiveFramesReadNothingBack) {
   // The finish runs on the GPU: a frame that marches, finishes and draws (with the mesh ghost and
   // silhouette, and after a tone edit) never waits for the GPU to hand pixels back, except to see
   // whether a still picture has settled (once per doubling of its samples).
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   frame(view);
   ASSERT_TRUE(runUntilShown(view));
   const std::uint64_t before = gl::readBackCount();
@@ -176,7 +181,7 @@ TEST_F(LiveViewTest, LiveFramesReadNothingBack) {
 }
 
 TEST_F(LiveViewTest, SamplesRestartForTheCameraButNotForTheTone) {
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   frame(view);
   ASSERT_TRUE(runUntilShown(view));
   // Frames until the still view has added up a few samples: the shadow job landing, a fresh
@@ -204,7 +209,9 @@ TEST_F(LiveViewTest, SaveAsAndExportAreAnsweredBeforeAnyVolumeIsShown) {
   edit([&](core::Scene& scene) { scene.embedded = false; });
   app::PresetLibrary presets(folder.path() / "shipped", folder.path() / "mine");
   app::ExportJob exports;
-  app::LiveView view(session, &presets, &exports);
+  app::LiveView view(session);
+  app::PanelRequests requests(session, &presets, &exports);
+  panelRequests = &requests;
   frame(view);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
   frame(view);
@@ -242,7 +249,7 @@ TEST_F(LiveViewTest, SaveAsAndExportAreAnsweredBeforeAnyVolumeIsShown) {
 TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBrightness) {
   // A grid large enough to have a proxy; a still view, refined at the full scale.
   edit([&](core::Scene& scene) { scene.gridResolution = 2 * app::ExplorerSession::kProxyAbove; });
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   frame(view);
   ASSERT_TRUE(session.waitUntilApplied(120.0));
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(180);
@@ -332,18 +339,23 @@ TEST_F(LiveViewTest, TheProxyShowsAnEditFirstAndTheFullGridReplacesItAtTheSameBr
 // held: only the proxy runs it, and the large grid gets the pattern the drag ends on.
 TEST_F(LiveViewTest, TheFirstEditOfADragLeavesTheLargeGridHeld) {
   edit([&](core::Scene& scene) { scene.gridResolution = 2 * app::ExplorerSession::kProxyAbove; });
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   frame(view);
   ASSERT_TRUE(session.waitUntilApplied(120.0));
   ASSERT_TRUE(runUntilShown(view));
   const std::uint64_t generation = session.status().stats.generation;
+  const std::uint64_t proxyGeneration = session.proxyStats().value().generation;
 
   state.frame.interacting = true;  // the slider is pressed on this frame and moves at once
   edit([&](core::Scene& scene) { scene.layers[0].params[0] *= 1.02; });
   ASSERT_TRUE(frame(view).patternPosted);
   ASSERT_TRUE(session.waitUntilApplied(60.0));
-  // A fixed wait, as this proves that something does NOT happen: the large grid starting later on.
-  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  // The proxy runs the drag's edit to the end of its burst; all that while, and after, the large
+  // grid stays on the pattern before the drag.
+  ASSERT_TRUE(test::waitForSession(session, [&] {
+    const std::optional<core::AccumulatorStats> proxy = session.proxyStats();
+    return proxy && proxy->generation > proxyGeneration && proxy->done;
+  }));
   EXPECT_EQ(session.status().stats.generation, generation) << "the large grid never started on the drag's edit";
 
   // The next frame without an edit ends the drag, and the large grid takes the pattern.
@@ -355,7 +367,7 @@ TEST_F(LiveViewTest, TheFirstEditOfADragLeavesTheLargeGridHeld) {
 TEST_F(LiveViewTest, SlowFramesWhileTheCameraMovesLowerTheMarchScale) {
   state.panels.scene.renderScale = 1.0f;
   state.panels.scene.frameBudgetMs = 10.0f;
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   frame(view);
   ASSERT_TRUE(runUntilShown(view));
   for (int i = 0; i < app::FrameBudget::kQuietFrames + 1; ++i) frame(view);
@@ -386,7 +398,7 @@ TEST_F(LiveViewTest, SlowFramesWhileTheCameraMovesLowerTheMarchScale) {
 TEST_F(LiveViewTest, PlaybackFramesWithinTheirBudgetGoSharperThanThePreviewScale) {
   state.panels.scene.renderScale = 0.5f;
   state.panels.scene.frameBudgetMs = 2000.0f;  // every frame of this small picture is well within it
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   frame(view);
   ASSERT_TRUE(runUntilShown(view));
   float orbitScale = 0.0f;
@@ -422,7 +434,7 @@ TEST_F(LiveViewTest, ASlowStillViewRefinesInBandsWithinItsBudgetUntilEveryBandHa
   state.panels.scene.renderScale = 1.0f;
   state.panels.scene.frameBudgetMs = 20.0f;
   state.services.settings.refineUntilNoisePercent = 40.0;
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   view.addMarchCostForTesting(1.0);
   frame(view);
   ASSERT_TRUE(runUntilShown(view));
@@ -467,7 +479,7 @@ TEST_F(LiveViewTest, FresherVolumesComingFasterThanAPassStillGetShown) {
   state.panels.scene.renderScale = 1.0f;
   state.panels.scene.frameBudgetMs = 20.0f;
   state.services.settings.refineUntilNoisePercent = 0.0;  // refine on: a fresh volume every snapshot
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   view.addMarchCostForTesting(12.0);
   frame(view);
   ASSERT_TRUE(runUntilShown(view));
@@ -513,7 +525,7 @@ TEST_F(LiveViewTest, AnExportFramesWhatTheViewShows) {
   edit([&](core::Scene& scene) { scene.camera.target = glm::dvec3(0.08, -0.05, 0.0); });
   state.frame.viewRect = glm::ivec4(24, 12, 112, 72);  // the space the docked panels leave
   const glm::ivec4 rect = state.frame.viewRect;
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   // The view's refined picture for an export of width × height, as lit pixels (rows top down).
   auto viewLit = [&](int width, int height) {
     state.services.settings.lastExport.width = width;
@@ -581,7 +593,7 @@ TEST_F(LiveViewTest, AStillViewMarchesAtFullResolutionWhateverThePreviewScale) {
   // Software GL previews at half the pixels while something moves; once still, the view refines
   // every pixel, as an export of it does.
   state.panels.scene.renderScale = 0.5f;
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   frame(view);
   ASSERT_TRUE(runUntilShown(view));
   edit([&](core::Scene& scene) { scene.camera.azimuthDeg += 20.0; });
@@ -611,7 +623,7 @@ bool runUntilRest(app::ExplorerSession& session, app::LiveView& view, const std:
 }
 
 TEST_F(LiveViewTest, AVolumeViewAtRestIsAnExportOfTheView) {
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   ASSERT_TRUE(runUntilRest(session, view, [&] { frame(view); }));
   // At rest nothing of the view's works, and the status line says so only now.
   EXPECT_EQ(app::convergenceText(session.status(), state.frame.view).rfind("at rest", 0), 0u)
@@ -640,7 +652,7 @@ TEST_F(LiveViewTest, APointsViewBuildsUpRestartsWhenTheCameraMovesAndAtRestIsAnE
     scene.render.method = core::RenderMethod::Points;
     scene.points = 3'000'000;
   });
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   ASSERT_TRUE(runUntilRest(session, view, [&] { frame(view); }));
   ASSERT_TRUE(view.pointsProgress().finished);
   EXPECT_TRUE(state.frame.view.pointsShown) << "the points picture replaced the volume picture";
@@ -692,7 +704,7 @@ TEST_F(LiveViewTest, APointsViewWhosePatternEscapesRestsOnTheLastBoundedVolume) 
     scene.render.method = core::RenderMethod::Points;
     scene.points = 2'000'000;
   });
-  app::LiveView view(session, nullptr, nullptr);
+  app::LiveView view(session);
   ASSERT_TRUE(runUntilRest(session, view, [&] { frame(view); }));
   ASSERT_TRUE(state.frame.view.pointsShown);
   edit([&](core::Scene& scene) { scene.layers[0].params[1] = 2.0; });
@@ -744,4 +756,32 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Cpu);
   EXPECT_TRUE(gpuSession.status().backendNote.empty());
+}
+
+// The session's gridIdle on either backend (RefinementBackend::idle): false while the large grid
+// refines, true once a hold has let the work under way land, and from then on the grid adds
+// nothing for as long as the hold lasts (checked at the session's next news: a steer of its
+// control thread, a look of its publishers).
+TEST_F(LiveViewTest, AHeldGridOnEitherBackendBecomesIdleAndAddsNothing) {
+  for (const app::BackendChoice choice : {app::BackendChoice::Cpu, app::BackendChoice::Gpu}) {
+    app::ExplorerSession refining{1, std::chrono::milliseconds(50)};
+    refining.setBackendChoice(choice);
+    refining.setRefinement(0.0, false);  // refine until the next edit
+    core::Scene scene = core::defaultScene();
+    scene.gridResolution = 48;  // no proxy: the large grid is the only one
+    refining.post(scene);
+    ASSERT_TRUE(refining.waitUntilApplied(120.0));
+    SCOPED_TRACE(std::string(core::toString(refining.status().backend)));
+    ASSERT_TRUE(test::waitForSession(refining, [&] { return refining.status().stats.points > 100'000; }));
+    EXPECT_FALSE(refining.gridIdle()) << "idle while it refines";
+    refining.setRefinement(0.0, false, true, true);  // an orbit holds even a grid without a proxy
+    ASSERT_TRUE(test::waitForSession(refining, [&] { return refining.gridIdle(); })) << "the held grid kept working";
+    const std::uint64_t held = refining.status().stats.points;
+    const std::uint64_t seen = refining.news();
+    ASSERT_TRUE(refining.waitForNews(seen, 60.0));
+    EXPECT_EQ(refining.status().stats.points, held) << "an idle grid added points";
+    EXPECT_TRUE(refining.gridIdle());
+    refining.setRefinement(0.0, false);  // the orbit ends: it refines again
+    ASSERT_TRUE(test::waitForSession(refining, [&] { return refining.status().stats.points > held; }));
+  }
 }

@@ -42,9 +42,11 @@ TEST(TaskScheduler, ACapLimitsTheThreadsOfOneLoop) {
     int seen = most.load();
     while (now > seen && !most.compare_exchange_weak(seen, now)) {
     }
-    // Work that takes a while (not a wait for anything), so that a loop breaking its cap would
-    // have more bodies running at once.
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    // Work that takes a while (busy, not a wait for anything), so that a loop breaking its cap
+    // would have more bodies running at once.
+    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(2);
+    while (std::chrono::steady_clock::now() < until) {
+    }
     running.fetch_sub(1);
   });
   EXPECT_LE(most.load(), 2);

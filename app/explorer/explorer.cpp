@@ -28,6 +28,7 @@
 #include "input_queue.h"
 #include "key_codes.h"
 #include "live_view.h"
+#include "panel_requests.h"
 #include "x11_watch.h"
 
 namespace voxflame::app {
@@ -291,14 +292,18 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
     std::optional<Autosave> autosave;
     if (!scripted) autosave.emplace();
     std::optional<std::uint64_t> autosavedRevision;  // the edit count autosave last looked at
-    LiveView view(session, &presets, &exportJob);
+    LiveView view(session);
+    // The panels' requests for the session, the presets and the export child (save as takes the
+    // picture the view just drew).
+    PanelRequests requests(session, &presets, &exportJob);
     std::uint32_t frame = 0;
     int framesWithVolume = 0;
     auto lastFrame = std::chrono::steady_clock::now();
 
     // The canonical ImGui loop: events, the panels (which only edit state and ask for things),
-    // the view under them (app::LiveView), the panels' drawing on top, swap. Once the window is
-    // gone (x11.windowGone()), what GLFW read from it is garbage: each read is checked before use.
+    // the view under them (app::LiveView), the panels' requests served over it
+    // (app::PanelRequests), the panels' drawing on top, swap. Once the window is gone
+    // (x11.windowGone()), what GLFW read from it is garbage: each read is checked before use.
     int restingFrames = 0;
     std::optional<RestSignature> drawnAtRest;  // what the last frame drawn at rest showed
     while (!glfwWindowShouldClose(window)) {
@@ -376,7 +381,9 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
       glfwGetFramebufferSize(window, &width, &height);
       if (x11.windowGone()) break;
       liveFrame(view, state, width, height);
-      // Save, chosen in the quit prompt, has been served by the frame: it asks to quit once it worked.
+      // After the picture is drawn and before the panels go over it, so a thumbnail shows the view alone.
+      requests.serve(state, view);
+      // Save, chosen in the quit prompt, has been served: it asks to quit once it worked.
       if (state.frame.requests.quit) glfwSetWindowShouldClose(window, GLFW_TRUE);
       // Input gets a few frames of its own: ImGui settles hover and layout a frame late.
       const ImGuiIO& io = ImGui::GetIO();

@@ -184,6 +184,50 @@ bool ExplorerSession::takeProxyIfNewer(core::PackedVolume& out, std::uint64_t* r
   return true;
 }
 
+bool ExplorerSession::showProxyVolume(const core::PackedVolume& proxy, std::uint64_t reflectsPost) {
+  if (reflectsPost <= takeover_.mainPost ||
+      static_cast<double>(proxy.points) < kProxyShownPointsPerVoxel * proxy.insideVoxels)
+    return false;
+  takeover_.shown = ShownGrid::Proxy;
+  takeover_.proxyPost = reflectsPost;
+  takeover_.proxyPoints = proxy.points;
+  takeover_.proxyInsideVoxels = proxy.insideVoxels;
+  return true;
+}
+
+bool ExplorerSession::uploadMainVolume(const core::PackedVolume& volume, std::uint64_t reflectsPost) const {
+  // While the proxy is shown: a volume of its post with fewer points would not replace it, nor
+  // would one of an older pattern (0) while the proxy shows a newer one.
+  if (takeover_.shown != ShownGrid::Proxy) return true;
+  return reflectsPost != 0 ? reflectsPost != takeover_.proxyPost || volume.points >= takeoverPoints()
+                           : takeover_.proxyPost <= takeover_.mainPost;
+}
+
+bool ExplorerSession::mainVolumeUploaded(const core::PackedVolume& volume, std::uint64_t reflectsPost) {
+  // 0 means an older post than the newest applied one: older than any proxy shown since.
+  if (reflectsPost != 0) takeover_.mainPost = reflectsPost;
+  const std::uint64_t proxyPost = takeover_.proxyPost;
+  // The main grid takes over once it shows the proxy's post (or a later one) with at least
+  // takeoverPoints(): with voxels no larger than pixels the picture's noise depends on the points
+  // per pixel, so it is then as smooth as the proxy and sharper. A proxy of a newer post stays.
+  const bool proxyAhead =
+      proxyPost != 0 && (reflectsPost == 0 ? proxyPost > takeover_.mainPost : proxyPost > reflectsPost);
+  const bool caughtUp =
+      reflectsPost != 0 && reflectsPost >= proxyPost && (reflectsPost > proxyPost || volume.points >= takeoverPoints());
+  if (proxyAhead || !(caughtUp || proxyPost == 0 || reflectsPost == 0)) return false;
+  takeover_.shown = ShownGrid::Main;
+  return true;
+}
+
+std::uint64_t ExplorerSession::takeoverPoints() const {
+  // The proxy's count, but no more than its burst asks for: the last batches of its streams go
+  // past that by up to a third, and the large grid's first volume, packed as soon as it holds the
+  // burst's count, would otherwise be dropped (hundreds of milliseconds at 512³) for a difference
+  // in noise nobody sees.
+  const auto burst = static_cast<std::uint64_t>(kProxyPointsPerVoxel * takeover_.proxyInsideVoxels);
+  return std::min(takeover_.proxyPoints, burst);
+}
+
 std::optional<core::TriangleMesh> ExplorerSession::takeNewMesh() {
   std::lock_guard lock(mutex_);
   return std::exchange(newMesh_, std::nullopt);
@@ -253,6 +297,17 @@ bool ExplorerSession::waitUntilApplied(double timeoutSeconds) {
   std::unique_lock lock(mutex_);
   return appliedSignal_.wait_for(lock, std::chrono::duration<double>(timeoutSeconds),
                                  [&] { return applied_ == requested_ && !working_; });
+}
+
+std::optional<core::AccumulatorStats> ExplorerSession::proxyStats() const {
+  std::lock_guard lock(mutex_);
+  if (!engine_ || !engine_->proxy) return std::nullopt;
+  return engine_->proxy->accumulator.stats();
+}
+
+bool ExplorerSession::gridIdle() const {
+  std::lock_guard lock(mutex_);
+  return engine_ && engine_->accumulator.idle();
 }
 
 bool ExplorerSession::waitForNews(std::uint64_t seen, double timeoutSeconds) const {

@@ -95,6 +95,32 @@ class ExplorerSession {
   // The same for the proxy's volume; false when the shape has no proxy (a small grid).
   bool takeProxyIfNewer(core::PackedVolume& out, std::uint64_t* reflectsPost = nullptr);
 
+  // The takeover: which grid's volume the live view shows, the proxy's or the main grid's. The
+  // live view asks as volumes arrive (UI thread only, like the take calls) and does what it is
+  // told; the session keeps what is on screen for the answers. A proxy volume goes on screen as
+  // soon as it shows a newer post than the main grid's last whole volume with at least
+  // kProxyShownPointsPerVoxel (one with hardly any points yet would be all noise). The main grid's
+  // volume replaces it once it shows the proxy's post with takeoverPoints(), or a later post; a
+  // volume that could not do that is not even uploaded (at 512³ the upload alone costs frames).
+  enum class ShownGrid { Main, Proxy };
+  // A proxy volume just taken (takeProxyIfNewer), of post `reflectsPost`: true when it is to be
+  // shown now, in place of whatever is shown.
+  bool showProxyVolume(const core::PackedVolume& proxy, std::uint64_t reflectsPost);
+  // A main grid volume just taken (takeVolumeIfNewer): false when it is not worth uploading, as
+  // the proxy on screen would stay (too few points for the proxy's post, or an older pattern while
+  // the proxy shows a newer one).
+  bool uploadMainVolume(const core::PackedVolume& volume, std::uint64_t reflectsPost) const;
+  // A main grid volume of post `reflectsPost` (0: an older one than the newest applied) is whole in
+  // the renderer: true when it is shown now, in place of the proxy.
+  bool mainVolumeUploaded(const core::PackedVolume& volume, std::uint64_t reflectsPost);
+  // The points a main grid volume of the proxy's post needs to replace the proxy on screen.
+  std::uint64_t takeoverPoints() const;
+  ShownGrid shownGrid() const { return takeover_.shown; }
+  // The post of the main grid's last whole volume (0: none, or one older than any proxy shown).
+  std::uint64_t shownMainPost() const { return takeover_.mainPost; }
+  // A new live view on this session: nothing is on screen yet.
+  void restartTakeover() { takeover_ = Takeover{}; }
+
   // The proxy grid's longest side, and the grids that get one: those whose longest side is more
   // than half as long again (smaller ones fill and upload about as fast as the proxy).
   static constexpr int kProxyResolution = 64;
@@ -128,6 +154,11 @@ class ExplorerSession {
   // `timeoutSeconds` pass).
   std::uint64_t news() const { return news_.count(); }
   bool waitForNews(std::uint64_t seen, double timeoutSeconds) const;
+  // What such a caller may wait for besides the status (the window loop never asks): the proxy's
+  // refinement (empty without a proxy; `done` once its burst is over), and whether the large grid's
+  // backend is idle (RefinementBackend::idle: the batches under way when it was held have landed).
+  std::optional<core::AccumulatorStats> proxyStats() const;
+  bool gridIdle() const;
 
   // Refinement stops once the noise estimate reaches noiseTarget (a fraction; 0: refine until
   // the next edit), and is held while `paused` (an export runs: the two would fight over the
@@ -192,6 +223,16 @@ class ExplorerSession {
   bool holdsForInteraction(const Engine& engine) const;
   // Control thread, after `accumulator` took `scene`'s pattern: what the status says of an escape.
   void noteEscape(const core::RefinementBackend& accumulator, const core::Scene& scene);
+
+  // What the live view shows (the takeover's calls; UI thread only, so no lock).
+  struct Takeover {
+    ShownGrid shown = ShownGrid::Main;
+    std::uint64_t proxyPost = 0;    // the post of the proxy volume last shown (0: none yet)
+    std::uint64_t proxyPoints = 0;  // ... its points, and the voxels inside its mask
+    double proxyInsideVoxels = 0.0;
+    std::uint64_t mainPost = 0;  // shownMainPost()
+  };
+  Takeover takeover_;
 
   const int threads_;
   const std::chrono::milliseconds snapshotInterval_;

@@ -9,7 +9,6 @@
 #include "core/camera.h"
 #include "core/color.h"
 #include "core/error.h"
-#include "core/scene_schema.h"
 #include "gl/read_back.h"
 #include "pipeline.h"
 
@@ -26,15 +25,6 @@ constexpr std::size_t kStillUploadBytesPerFrame = 160u << 20;
 // ... at most: a still frame uploads what its budget leaves room for at the rate uploads have
 // gone (the march waits meanwhile, but the frame still has its budget to keep).
 constexpr double kStillUploadShareOfBudget = 0.6;
-
-// The framebuffer's picture as a thumbnail (rows top to bottom, opaque).
-Thumbnail readThumbnail(unsigned framebuffer, glm::ivec4 place) {
-  Thumbnail thumbnail;
-  thumbnail.width = place.z;
-  thumbnail.height = place.w;
-  thumbnail.rgba = gl::readRgba8(framebuffer, {place.x, place.y, place.z, place.w}, gl::ReadAlpha::Opaque);
-  return thumbnail;
-}
 
 // The view rectangle within a framebuffer of this size; an empty one is all of it.
 glm::ivec4 placeWithin(glm::ivec4 rect, int width, int height) {
@@ -71,26 +61,25 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 }  // namespace
 
-LiveView::LiveView(ExplorerSession& session, PresetLibrary* presets, ExportJob* exportJob)
-    : session_(session), presets_(presets), exportJob_(exportJob) {}
+LiveView::LiveView(ExplorerSession& session) : session_(session) {
+  session_.restartTakeover();  // nothing of this view's is on screen yet
+}
 
 LiveView::~LiveView() = default;
 
 void LiveView::takeVolume() {
   newVolumeShown_ = false;
-  // The proxy of a newer post than the main grid shows goes up whole (a few megabytes) and is
-  // shown until the main grid has caught up. One with hardly any points yet would be all noise.
+  // Which grid's volume is shown is the session's answer (its takeover); a proxy volume it shows
+  // goes up whole (a few megabytes) and is marched until the main grid takes over.
   if (proxySpare_.use_count() > 1) proxySpare_ = std::make_shared<core::PackedVolume>();
   std::uint64_t proxyReflects = 0;
-  if (session_.takeProxyIfNewer(*proxySpare_, &proxyReflects) && proxyReflects > mainPost_ &&
-      static_cast<double>(proxySpare_->points) >=
-          ExplorerSession::kProxyShownPointsPerVoxel * proxySpare_->insideVoxels) {
+  if (session_.takeProxyIfNewer(*proxySpare_, &proxyReflects) &&
+      session_.showProxyVolume(*proxySpare_, proxyReflects)) {
     std::swap(proxySpare_, proxyShown_);
     renderer_.uploadProxy(*proxyShown_);
-    proxyPost_ = proxyReflects;
     renderer_.marchFrom(gl::VolumeRenderer::Source::Proxy);
     newVolumeShown_ = true;
-    shownPost_ = proxyPost_;
+    shownPost_ = proxyReflects;
     restartSamples();
   }
 
@@ -102,14 +91,9 @@ void LiveView::takeVolume() {
     std::shared_ptr<core::PackedVolume> next = shown_.use_count() > 1 ? std::make_shared<core::PackedVolume>() : shown_;
     if (session_.takeVolumeIfNewer(*next, &reflects)) {
       shown_ = std::move(next);
-      // A volume of the proxy's pattern with fewer points than the proxy would not be shown
-      // (see the takeover below), nor would one of an older pattern (reflects 0) while the proxy
-      // shows a newer one: at 512³ the upload alone would cost several frames.
-      const bool marchingProxy = proxyShown_ && renderer_.marchedSource() == gl::VolumeRenderer::Source::Proxy;
-      const bool behindProxy =
-          marchingProxy &&
-          (reflects != 0 ? reflects == proxyPost_ && shown_->points < takeoverPoints() : proxyPost_ > mainPost_);
-      if (!behindProxy) {
+      // One that would not replace the proxy on screen is not uploaded: at 512³ the upload alone
+      // would cost several frames.
+      if (session_.uploadMainVolume(*shown_, reflects)) {
         renderer_.beginUpload(*shown_);
         uploadInProgress_ = true;
         uploadedBytes_ = 0;
@@ -143,16 +127,7 @@ void LiveView::takeVolume() {
                          renderer_.marchedSource() == gl::VolumeRenderer::Source::Main &&
                          renderer_.hasVolume(gl::VolumeRenderer::Source::Main);
     mainGeneration_ = shown_->generation;
-    // 0 means an older post than the newest applied one: older than any proxy shown since.
-    if (uploadingPost_ != 0) mainPost_ = uploadingPost_;
-    // The main grid takes over once it shows the proxy's post (or a later one) with at least as
-    // many points: with voxels no larger than pixels the picture's noise depends on the points
-    // per pixel, so it is then as smooth as the proxy and sharper.
-    const bool proxyAhead = renderer_.hasVolume(gl::VolumeRenderer::Source::Proxy) &&
-                            (uploadingPost_ == 0 ? proxyPost_ > mainPost_ : proxyPost_ > uploadingPost_);
-    const bool caughtUp = uploadingPost_ != 0 && uploadingPost_ >= proxyPost_ &&
-                          (uploadingPost_ > proxyPost_ || !proxyShown_ || shown_->points >= takeoverPoints());
-    if (!proxyAhead && (caughtUp || proxyPost_ == 0 || uploadingPost_ == 0)) {
+    if (session_.mainVolumeUploaded(*shown_, uploadingPost_)) {
       renderer_.marchFrom(gl::VolumeRenderer::Source::Main);
       newVolumeShown_ = true;
       shownPost_ = uploadingPost_;
@@ -161,15 +136,6 @@ void LiveView::takeVolume() {
   }
   // While a volume of another pattern streams into the main grid, its slabs are of two patterns.
   mainMixed_ = uploadInProgress_ && shown_->generation != mainGeneration_;
-}
-
-std::uint64_t LiveView::takeoverPoints() const {
-  // The proxy's count, but no more than its burst asks for: the last batches of its streams go
-  // past that by up to a third, and the large grid's first volume, packed as soon as it holds the
-  // burst's count, would otherwise be dropped (hundreds of milliseconds at 512³) for a difference
-  // in noise nobody sees.
-  const auto burst = static_cast<std::uint64_t>(ExplorerSession::kProxyPointsPerVoxel * proxyShown_->insideVoxels);
-  return std::min(proxyShown_->points, burst);
 }
 
 void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
@@ -329,8 +295,8 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
     // The points are dimmed by the grid in front of them: they start once the main grid shows the
     // pattern, whole (a proxy's or a half-uploaded grid's transmittance would be another picture's).
     const bool gridShowsPattern = renderer_.marchedSource() == gl::VolumeRenderer::Source::Main &&
-                                  renderer_.hasVolume(gl::VolumeRenderer::Source::Main) && mainPost_ >= lastPost_ &&
-                                  !mainMixed_ && !uploadInProgress_;
+                                  renderer_.hasVolume(gl::VolumeRenderer::Source::Main) &&
+                                  session_.shownMainPost() >= lastPost_ && !mainMixed_ && !uploadInProgress_;
     std::shared_ptr<const core::InsideMask> mask = gridShowsPattern ? session_.mask() : nullptr;
     if (!mask || mask->geometry.size != shown_->geometry.size) return false;
     LivePointsRequest request;
@@ -381,6 +347,16 @@ bool LiveView::finishStrips(const gl::FrameTarget& target, const gl::RenderSetti
     glFinish();  // the strips' cost is known only once they are done
   } while (!whole && millisecondsSince(frameStart) < kFinishShareOfBudget * budget_.budgetMs());
   return whole;
+}
+
+Thumbnail LiveView::drawnPicture(unsigned framebuffer) const {
+  const glm::ivec4 place = lastPlace_;
+  Thumbnail picture;
+  picture.width = place.z;
+  picture.height = place.w;
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  picture.rgba = gl::readRgba8(framebuffer, {place.x, place.y, place.z, place.w}, gl::ReadAlpha::Opaque);
+  return picture;
 }
 
 void LiveView::checkSettled(unsigned framebuffer, glm::ivec4 place) {
@@ -619,42 +595,6 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
   return result;
 }
 
-void LiveView::serveRequests(ExplorerState& state, unsigned framebuffer) {
-  const glm::ivec4 place = lastPlace_;
-  if (std::exchange(state.frame.requests.refineFurther, false)) session_.refineFurther();
-  if (state.frame.requests.saveAs) {
-    // Saved whatever is on screen: the volume, or the background while a shape builds or after a
-    // bad mesh. The preset is what matters; the thumbnail is the view as it is now.
-    if (!presets_) {
-      state.panels.prompts.notice = "there is no preset library to save into";
-    } else {
-      try {
-        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
-        const std::filesystem::path saved =
-            presets_->saveAs(state.document.scene, *state.frame.requests.saveAs, readThumbnail(framebuffer, place),
-                             state.frame.requests.saveReplacing);
-        state.panels.scene.presetMessage = "saved " + saved.string();
-        state.services.settings.addRecent(RecentKind::Preset, saved);
-        // The document is now the saved preset: its name (the window's title) and nothing unsaved.
-        state.document.scene.name = *state.frame.requests.saveAs;
-        state.document.edited(core::Affects::None);
-        state.document.markSaved();
-        if (state.panels.prompts.quitAfterSave) state.frame.requests.quit = true;  // Save in the quit prompt: now quit
-      } catch (const core::Error& e) {
-        state.panels.prompts.notice = e.what();
-        state.panels.prompts.quitAfterSave = false;  // the changes are not saved: stay
-      }
-    }
-    state.frame.requests.saveAs.reset();
-  }
-  if (state.frame.requests.exportStill) {
-    if (!exportJob_)
-      state.panels.prompts.notice = "exports are not available here";
-    else
-      startExport(state, *exportJob_, *state.frame.requests.exportStill);
-    state.frame.requests.exportStill.reset();
-  }
-}
 LiveInputs liveInputs(const ExplorerState& state) {
   LiveInputs inputs;
   inputs.revisions = state.document.revisions();
@@ -675,9 +615,6 @@ LiveFrame liveFrame(LiveView& view, ExplorerState& state, int width, int height,
       view.frame(state.document.scene, liveInputs(state), state.frame.metrics, width, height, framebuffer);
   state.frame.samples = result.samples;
   state.frame.view = result.view;
-  // Requests are served after the picture is drawn and before the panels go over it, so a
-  // thumbnail shows the view alone.
-  view.serveRequests(state, framebuffer);
   return result;
 }
 

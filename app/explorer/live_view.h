@@ -3,9 +3,10 @@
 // each new mesh and volume, uploads volumes a slice per frame, keeps the shadow volume in step on
 // a background job, restarts the sample average when what a ray sees changes, marches the next
 // bands of a sample (a whole pass while something changes, as many bands as the frame budget
-// allows while the view is still), resolves the last whole pass into the output framebuffer,
-// and answers the panels' save-as and export
-// requests whether or not a volume is shown yet. The explorer's window loop, `voxflame bench
+// allows while the view is still), and resolves the last whole pass into the output framebuffer.
+// Which grid's volume it shows, the proxy's or the main grid's, is the session's answer
+// (ExplorerSession's takeover); the panels' requests are the window loop's (PanelRequests), which
+// reads the picture just drawn through drawnPicture(). The explorer's window loop, `voxflame bench
 // explorer` and the headless tests all run this very code, so the benchmark measures what users
 // get. GL is touched only from the thread that calls frame() (the one whose context is current).
 #pragma once
@@ -57,9 +58,8 @@ struct LiveInputs {
 
 class LiveView {
  public:
-  // presets and exports may be null (the benchmark has neither); requests for them then only
-  // leave a notice.
-  LiveView(ExplorerSession& session, PresetLibrary* presets, ExportJob* exportJob);
+  // Restarts the session's takeover: nothing of this view's is on screen yet.
+  explicit LiveView(ExplorerSession& session);
   ~LiveView();  // cancels a shadow job still running
   LiveView(const LiveView&) = delete;
   LiveView& operator=(const LiveView&) = delete;
@@ -70,10 +70,10 @@ class LiveView {
   // displayed frame.
   LiveFrame frame(const core::Scene& scene, const LiveInputs& inputs, FrameMetrics& metrics, int width, int height,
                   unsigned framebuffer = 0);
-  // The panels' requests that need the session or the picture just drawn (a save's thumbnail):
-  // refine further, save as (writes the document's name and saved mark, a notice or the presets'
-  // message), export. Call after frame(), before the panels are drawn over the picture.
-  void serveRequests(ExplorerState& state, unsigned framebuffer = 0);
+  // The picture the last frame drew into `framebuffer` (its place there: the view rectangle),
+  // read back (rows top to bottom, opaque): what a save's thumbnail shows. Call after frame(),
+  // before the panels are drawn over it. A read-back, so only on request, never per frame.
+  Thumbnail drawnPicture(unsigned framebuffer = 0) const;
 
   bool hasVolume() const { return renderer_.hasVolume(); }
   // The picture is final: the volume picture's samples stopped changing it visibly (or reached
@@ -135,13 +135,9 @@ class LiveView {
   // changes; as many as the budget allows while the view is still); true when that ended a pass,
   // whose picture is then the one shown.
   bool marchBands(const gl::RenderSettings& settings, bool still, double budgetMs);
-  // The points a main grid volume of the proxy's pattern needs to replace the proxy on screen.
-  std::uint64_t takeoverPoints() const;
   void keepShadowInStep(const core::RenderSettingsDoc& render);
 
   ExplorerSession& session_;
-  PresetLibrary* presets_;
-  ExportJob* exportJob_;
   gl::VolumeRenderer renderer_;
   gl::FrameTarget target_;
   // A still view refines target_ in bands over several frames; what is shown is the picture of
@@ -214,15 +210,14 @@ class LiveView {
   std::uint64_t uploadingPost_ = 0;
   bool newVolumeShown_ = false;
   std::uint64_t shownPost_ = 0;  // the post of the volume drawn (main grid or proxy)
-  // The main grid: the post and generation of its last complete volume, and whether a volume of
-  // another generation is streaming into it.
-  std::uint64_t mainPost_ = 0, mainGeneration_ = 0;
+  // The main grid: the generation of its last complete volume (its post is the session's
+  // shownMainPost()), and whether a volume of another generation is streaming into it.
+  std::uint64_t mainGeneration_ = 0;
   bool mainMixed_ = false;
   bool mainMixedShown() const { return mainMixed_ && renderer_.marchedSource() == gl::VolumeRenderer::Source::Main; }
-  // The proxy: shown after an edit until the main grid has caught up with it.
+  // The proxy: shown after an edit until the main grid takes over.
   std::shared_ptr<core::PackedVolume> proxyShown_ = std::make_shared<core::PackedVolume>();
   std::shared_ptr<core::PackedVolume> proxySpare_ = std::make_shared<core::PackedVolume>();
-  std::uint64_t proxyPost_ = 0;
 
   BackgroundJob<core::ShadowVolume> shadowJob_;
   struct ShadowInputs {
@@ -261,7 +256,7 @@ class LiveView {
 // The frame's inputs from the explorer's state.
 LiveInputs liveInputs(const ExplorerState& state);
 // The explorer's frame: LiveView::frame of the document with the state's inputs, its samples and
-// metrics into state.frame, then the panels' requests served (LiveView::serveRequests).
+// metrics into state.frame. The panels' requests are served after it (PanelRequests::serve).
 LiveFrame liveFrame(LiveView& view, ExplorerState& state, int width, int height, unsigned framebuffer = 0);
 
 }  // namespace voxflame::app

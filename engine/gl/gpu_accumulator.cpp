@@ -327,13 +327,21 @@ void GpuAccumulator::loop(std::stop_token stop, std::exception_ptr* startError, 
       lock.lock();
       continue;
     }
+    waiting_ = true;
     wake_.wait(lock, stop, [&] { return !tasks_.empty() || (active_.load() && !held_.load() && !targetReached()); });
+    waiting_ = false;
   }
   // Tasks still queued belong to callers that are being destroyed with us; their waits end with
   // the stop (runOnDevice is never called concurrently with the destructor).
   tasks_.clear();
   lock.unlock();
   device.reset();  // GL objects go while the context is current
+}
+
+bool GpuAccumulator::idle() const {
+  std::lock_guard lock(mutex_);
+  // Asleep, and nothing has been asked of it since (a change of work wakes it under this mutex).
+  return waiting_ && tasks_.empty() && !(active_.load() && !held_.load() && !targetReached());
 }
 
 void GpuAccumulator::runOnDevice(const std::function<void(Device&)>& task) const {

@@ -63,6 +63,7 @@ class GpuAccumulator final : public core::RefinementBackend {
   void setDeepSeeds(bool deep) override { deepSeeds_.store(deep); }
   void setHeld(bool held) override;
   bool waitUntilDone(double timeoutSeconds) override;
+  bool idle() const override;  // the GPU thread waits with no task and no dispatch to make
 
   core::AccumulatorStats stats() const override;
   std::uint64_t version() const override { return version_.load(std::memory_order_acquire); }
@@ -111,6 +112,7 @@ class GpuAccumulator final : public core::RefinementBackend {
   mutable std::mutex mutex_;
   mutable std::condition_variable_any wake_;  // tasks, holds, targets, patterns, stop
   mutable std::deque<std::function<void(Device&)>> tasks_;
+  bool waiting_ = false;                     // the GPU thread sleeps in wake_ (idle())
   std::vector<core::PreparedLayer> layers_;  // the current generation's (set under mutex_)
   std::uint64_t seed_ = 1;
   std::uint64_t chunk_ = 0;

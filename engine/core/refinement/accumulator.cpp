@@ -641,6 +641,15 @@ bool Accumulator::waitUntilIdle(double timeoutSeconds) {
                               [&] { return sleepingWorkers_ == threadCount(); });
 }
 
+bool Accumulator::idle() const {
+  std::lock_guard lock(wakeMutex_);
+  if (sleepingWorkers_ != threadCount()) return false;
+  // A worker asked to wake (a change of work) is not asleep for want of work any more.
+  for (int thread = 0; thread < threadCount(); ++thread)
+    if (wakeAsked_[static_cast<std::size_t>(thread)].load()) return false;
+  return true;
+}
+
 bool Accumulator::streamDone(int stream, std::uint64_t target) const {
   const std::uint64_t quota = (target + kStreams - 1) / kStreams;
   return target > 0 && streamPoints_[static_cast<std::size_t>(stream)].load() >= quota;

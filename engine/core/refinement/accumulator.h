@@ -114,6 +114,8 @@ class Accumulator final : public RefinementBackend {
   // when the target was reached have landed), so stats and the grid stay as they are; false on
   // timeout. For tests and tools that read the grid at rest.
   bool waitUntilIdle(double timeoutSeconds);
+  // Every worker sleeps and none is asked to wake.
+  bool idle() const override;
 
   AccumulatorStats stats() const override;
   std::uint64_t version() const override { return version_.load(std::memory_order_acquire); }
@@ -223,7 +225,7 @@ class Accumulator final : public RefinementBackend {
 
   void notifyWorkChanged();  // wakes idle workers and waitUntilDone, under wakeMutex_, and progress_
   mutable ProgressSignal progress_;
-  std::mutex wakeMutex_;
+  mutable std::mutex wakeMutex_;
   // Workers sleep here when idle, each on its own condition. A change of work wakes the first, and
   // each passes the wake-up on to the next once it holds a core of the budget (or finds it has no
   // work): all woken at once, they would queue together for the cores as runnable threads.

@@ -179,6 +179,11 @@ class RefinementBackend {
   virtual void setHeld(bool held) = 0;
   // Waits until the target is reached or the pattern cannot accumulate; false on timeout.
   virtual bool waitUntilDone(double timeoutSeconds) = 0;
+  // Nothing refines now, nor will until the pattern, target or hold changes: held, done or
+  // without a pattern, with no batch (or dispatch) under way, so stats and the grid stay as they
+  // are. Never waits: for a caller that waits on the backend's progress (a test) to see that the
+  // work in flight when it held the backend has landed.
+  virtual bool idle() const = 0;
 
   virtual AccumulatorStats stats() const = 0;
   // Moves with every batch of points that lands, and every change of pattern.
