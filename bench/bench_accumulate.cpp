@@ -1,10 +1,12 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
 #include <thread>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -14,7 +16,9 @@
 #include "core/grid.h"
 #include "core/inside_mask.h"
 #include "core/mesh.h"
+#include "core/flame/xml.h"
 #include "core/scene.h"
+#include "flam3_runs.h"
 #include "gl/gpu_accumulator.h"
 
 namespace voxflame::bench {
@@ -60,6 +64,46 @@ std::optional<core::PatternLayer> benchLayer(const char* id) {
   layer.integrator = info->defaultIntegrator;
   layer.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
   return layer;
+}
+
+// The heaviest flame of the corpus (most variation terms, then transforms) that imports whole and
+// the GPU backend runs: the flame the GPU's goal names, measured on both backends.
+std::optional<std::pair<std::string, core::PatternLayer>> heaviestGpuCorpusFlame() {
+  std::optional<std::pair<std::string, core::PatternLayer>> best;
+  std::size_t bestTerms = 0, bestTransforms = 0;
+  for (const std::filesystem::path& file : corpusFlameFiles()) {
+    std::size_t count = 0;
+    try {
+      count = core::loadFlameFile(file).names.size();
+    } catch (const core::Error&) {
+      continue;
+    }
+    for (std::size_t index = 0; index < count; ++index) {
+      core::FlameImportOptions import;
+      import.index = index;
+      try {
+        const core::ImportedFlame flame = core::loadFlameFile(file, import).flame;
+        if (!flame.leftOut.empty() || !flame.otherLayers.empty()) continue;
+        core::PatternLayer layer;
+        layer.kind = core::PatternKind::Flame;
+        layer.attractor.clear();
+        layer.flame = flame.genome;
+        layer.color.mode = core::ColorMode::Index;
+        layer.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
+        if (!gl::gpuSupports({layer})) continue;
+        std::size_t terms = flame.genome.hasFinal ? flame.genome.finalXform.variations.size() : 0;
+        for (const core::FlameXform& x : flame.genome.xforms) terms += x.variations.size();
+        const std::size_t transforms = flame.genome.xforms.size();
+        if (best && std::tie(terms, transforms) <= std::tie(bestTerms, bestTransforms)) continue;
+        bestTerms = terms;
+        bestTransforms = transforms;
+        best.emplace(file.filename().string() + " #" + std::to_string(index), std::move(layer));
+      } catch (const core::Error&) {
+        continue;
+      }
+    }
+  }
+  return best;
 }
 
 }  // namespace
@@ -119,8 +163,11 @@ void benchAccumulateChaos(const BenchOptions& options, const std::shared_ptr<con
   flame.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
   core::PatternLayer julia = flame;
   julia.kind = core::PatternKind::QuaternionJulia;
-  for (const auto& [name, layer] : {std::pair<const char*, core::PatternLayer>{"flame (default, 3 transforms)", flame},
-                                    std::pair<const char*, core::PatternLayer>{"quaternion_julia", julia}}) {
+  std::vector<std::pair<std::string, core::PatternLayer>> patterns{{"flame (default, 3 transforms)", flame},
+                                                                   {"quaternion_julia", julia}};
+  if (auto heaviest = heaviestGpuCorpusFlame())
+    patterns.emplace_back("heaviest corpus flame the GPU runs: " + heaviest->first, heaviest->second);
+  for (const auto& [name, layer] : patterns) {
     for (const int threads : {1, allThreads}) {
       core::Accumulator accumulator(mask, threads);
       accumulator.setPattern({layer}, 1);
@@ -154,16 +201,26 @@ void benchAccumulateGpu(const BenchOptions& options) {
       continue;
     }
     gl::GpuAccumulator& accumulator = *backend;
-    for (const char* id : {"lorenz84", "lorenz", "pickover", "polynomial_a"}) {
-      const std::optional<core::PatternLayer> layer = benchLayer(id);
-      if (!layer) continue;
+    std::vector<std::pair<std::string, core::PatternLayer>> patterns;
+    for (const char* id : {"lorenz84", "lorenz", "pickover", "polynomial_a"})
+      if (const std::optional<core::PatternLayer> layer = benchLayer(id)) patterns.emplace_back(id, *layer);
+    core::PatternLayer flame;
+    flame.kind = core::PatternKind::Flame;
+    flame.attractor.clear();
+    flame.flame = core::defaultFlame();
+    flame.color.mode = core::ColorMode::Index;
+    flame.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
+    patterns.emplace_back("flame (default, 3 transforms)", flame);
+    if (auto heaviest = heaviestGpuCorpusFlame())
+      patterns.emplace_back("heaviest corpus flame the GPU runs: " + heaviest->first, heaviest->second);
+    for (const auto& [id, layer] : patterns) {
       accumulator.setTargetPoints(0);
-      accumulator.setPattern({*layer}, 1);
+      accumulator.setPattern({layer}, 1);
       const Rate rate = measureRate(accumulator);
       report(options, {{"bench", "accumulate"},
                        {"backend", "gpu"},
                        {"renderer", accumulator.renderer()},
-                       {"attractor", id},
+                       {layer.kind == core::PatternKind::Attractor ? "attractor" : "pattern", id},
                        {"grid", grid},
                        {"orbits", accumulator.orbitsPerLayer()},
                        {"colour_cell_voxels", 1 << (3 * accumulator.colourLayout().shift)},
