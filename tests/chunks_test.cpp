@@ -21,6 +21,22 @@ namespace {
 const std::string kFlame = std::string(VOXFLAME_SOURCE_DIR) + "/presets/flame-silk-bunny.json";
 const std::string kAttractor = std::string(VOXFLAME_SOURCE_DIR) + "/presets/aizawa-orb.json";
 const std::string kJulia = std::string(VOXFLAME_SOURCE_DIR) + "/presets/qjulia-loop.json";
+
+// The silk bunny with a variation the GPU's chaos game does not have (bipolar), written into `folder`.
+std::string flameTheGpuLacks(const std::filesystem::path& folder) {
+  std::ifstream in(kFlame);
+  std::stringstream text;
+  text << in.rdbuf();
+  std::string json = text.str();
+  const std::string hyperbolic = "\"name\": \"hyperbolic\"";
+  json.replace(json.find(hyperbolic), hyperbolic.size(), "\"name\": \"bipolar\"");
+  // The mesh path is relative to the preset: the copy names the shipped one.
+  const std::string mesh = "\"meshes/bunny.obj\"";
+  json.replace(json.find(mesh), mesh.size(), "\"" + std::string(VOXFLAME_SOURCE_DIR) + "/presets/meshes/bunny.obj\"");
+  const std::filesystem::path path = folder / "bipolar.json";
+  std::ofstream(path) << json;
+  return path.string();
+}
 const std::string kQuick = " --grid 48 --points 600000";
 
 const std::string kSize = " --width 64 --height 40";
@@ -190,21 +206,30 @@ TEST(ChunkBackends, ChunksOfAnotherBackendAreRefusedAndTheirOwnResume) {
 
 TEST(ChunkBackends, TheGpuBackendRefusesWhatItDoesNotRunWithAMessage) {
   TemporaryFolder folder;
-  auto result = runVoxflame("render " + kJulia + kQuick + kSize + " -o j.png --backend gpu", folder.path());
+  const std::string lacking = flameTheGpuLacks(folder.path());
+  auto result =
+      runVoxflame("render " + lacking + kQuick + kSize + " -o f.png --method volume --backend gpu", folder.path());
   EXPECT_EQ(result.exitStatus, 1) << result.output;
-  EXPECT_TRUE(contains(result.output, "a quaternion_julia layer needs the CPU backend")) << result.output;
+  EXPECT_TRUE(contains(result.output,
+                       "a flame layer needs the CPU backend: the GPU backend does not have variation "
+                       "'bipolar'"))
+      << result.output;
   result =
       runVoxflame("render " + kAttractor + kQuick + kSize + " -o p.png --backend gpu --method points", folder.path());
   EXPECT_EQ(result.exitStatus, 1) << result.output;
   EXPECT_TRUE(contains(result.output, "the points method projects its points on the CPU")) << result.output;
   // auto falls back to the CPU for both, whatever the machine.
-  result = runVoxflame("render " + kJulia + kQuick + kSize + " -o j.png --backend auto", folder.path());
+  result =
+      runVoxflame("render " + lacking + kQuick + kSize + " -o f.png --method volume --backend auto", folder.path());
   EXPECT_EQ(result.exitStatus, 0) << result.output;
   EXPECT_TRUE(contains(result.output, "on the cpu backend")) << result.output;
-  // A flame of the GPU's variations runs there (the volume method).
-  result = runVoxflame("render " + kFlame + kQuick + kSize + " -o f.png --method volume --backend gpu", folder.path());
-  EXPECT_EQ(result.exitStatus, 0) << result.output;
-  EXPECT_TRUE(contains(result.output, "on the gpu backend")) << result.output;
+  // A flame of the GPU's variations, and a quaternion Julia set, run there (the volume method).
+  for (const std::string& preset : {kFlame, kJulia}) {
+    result =
+        runVoxflame("render " + preset + kQuick + kSize + " -o g.png --method volume --backend gpu", folder.path());
+    EXPECT_EQ(result.exitStatus, 0) << result.output;
+    EXPECT_TRUE(contains(result.output, "on the gpu backend")) << result.output;
+  }
   result = runVoxflame("render " + kAttractor + kQuick + kSize + " -o x.png --backend metal", folder.path());
   EXPECT_NE(result.exitStatus, 0);
   EXPECT_TRUE(contains(result.output, "--backend")) << result.output;

@@ -733,7 +733,7 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
     return gpuSession.takeVolumeIfNewer(volume) && volume.points > 0 && volume.maxDensity > 0.0f;
   }));
 
-  // A flame of the GPU's variations refines there; a quaternion Julia set falls back to the CPU, saying why.
+  // A flame of the GPU's variations refines there; one with a variation it lacks falls back to the CPU, saying why.
   core::Scene flame = scene;
   flame.layers.front().kind = core::PatternKind::Flame;
   flame.layers.front().flame = core::defaultFlame();
@@ -741,9 +741,9 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
   gpuSession.post(flame);
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Gpu) << gpuSession.status().backendNote;
-  core::Scene julia = flame;
-  julia.layers.front().kind = core::PatternKind::QuaternionJulia;
-  gpuSession.post(julia);
+  core::Scene lacking = flame;
+  lacking.layers.front().flame.xforms.front().variations.push_back({"bipolar", 0.5, {0.0}});
+  gpuSession.post(lacking);
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Cpu);
   EXPECT_NE(gpuSession.status().backendNote.find("refining on the CPU"), std::string::npos)

@@ -144,6 +144,7 @@ class Generator {
 void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, FlameKernel& kernel) {
   Generator g(kernel);
   std::string& s = kernel.source;
+  s += "#define CHAOS_STATE vec4\n";
   const std::vector<core::FlameXform> xforms = core::expandSymmetry(layer.flame);
   for (std::size_t k = 0; k < xforms.size(); ++k) g.xformFunction("xform" + std::to_string(k), xforms[k], false);
   const core::FlameGenome& genome = layer.flame;
@@ -158,7 +159,7 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, F
   kernel.pick.assign(pick.begin(), pick.end());
 
   const int shift = 32 - core::ChaosGame::pickBits();
-  s += "bool chaosStep(inout vec4 state, inout float colour, inout uint previous, out vec3 drawn,\n"
+  s += "bool chaosStep(inout CHAOS_STATE state, inout float colour, inout uint previous, out vec3 drawn,\n"
        "               out float drawnColour) {\n";
   s += "  psi();\n";
   if (game.usesXaos()) {
@@ -186,6 +187,44 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, F
   s += "  drawnColour = oc;\n  return visible;\n}\n";
 }
 
+// core::ChaosGame::stepJulia in double: the inverse iteration multiplies each coordinate by the
+// root's scale at every step, and a coordinate that wanders small would underflow to 0 in float
+// and stay there, collapsing old orbits onto a hyperplane the CPU's double orbits do not reach
+// (qjulia-cage-orb drifted to 0.38 relative RMS from the CPU at 15 M points in float). The step is
+// a square root and a few products, cheap even at a GPU's double rate.
+void juliaSource(const core::PatternLayer& layer, FlameKernel& kernel) {
+  Generator g(kernel);
+  const core::QuaternionJuliaSettings& q = layer.julia;
+  const double turn = q.turnDeg * 3.14159265358979323846 / 180.0;
+  const std::array<double, 8> values{q.c.x, q.c.y, q.c.z, q.c.w, std::cos(turn), std::sin(turn), q.sliceW, q.thickness};
+  g.put(values.data(), values.size());
+  std::string& s = kernel.source;
+  s += "#define CHAOS_STATE dvec4\n";
+  s += "bool chaosStep(inout dvec4 state, inout float colour, inout uint previous, out vec3 drawn,\n"
+       "               out float drawnColour) {\n"
+       // The constant in double from its float halves would still be a float: the numbers it needs
+       // in double are the state's, which the step keeps exact.
+       "  dvec4 q = state - dvec4(flameData[0], flameData[1], flameData[2], flameData[3]);\n"
+       "  double vectorPart = length(q.yzw);\n"
+       "  double norm = sqrt(q.x * q.x + vectorPart * vectorPart);\n"
+       "  double real = sqrt(max(0.0lf, 0.5lf * (norm + q.x)));\n"
+       "  double imaginary = sqrt(max(0.0lf, 0.5lf * (norm - q.x)));\n"
+       "  bool axis = vectorPart < 1e-300lf;\n"
+       "  double scale = axis ? 0.0lf : imaginary / vectorPart;\n"
+       "  psi();\n"
+       "  bool negative = (gChaosRandom >> 31) != 0u;\n"
+       "  double sgn = negative ? -1.0lf : 1.0lf;\n"
+       "  state = sgn * dvec4(real, axis ? imaginary : q.y * scale, q.z * scale, q.w * scale);\n"
+       "  colour = 0.5 * colour + (negative ? 0.5 : 0.0);\n"
+       "  double turnedZ = double(flameData[4]) * state.z - double(flameData[5]) * state.w;\n"
+       "  double turnedW = double(flameData[5]) * state.z + double(flameData[4]) * state.w;\n"
+       "  drawn = vec3(state.x, state.y, turnedZ);\n"
+       "  drawnColour = colour;\n";
+  s += q.view == core::QuaternionView::Slice ? "  return abs(turnedW - double(flameData[6])) < double(flameData[7]);\n"
+                                             : "  return true;\n";
+  s += "}\n";
+}
+
 }  // namespace
 
 const std::vector<std::string>& gpuFlameVariations() {
@@ -193,11 +232,7 @@ const std::vector<std::string>& gpuFlameVariations() {
 }
 
 std::string flameKernelUnsupported(const core::PatternLayer& layer) {
-  // A quaternion Julia set's inverse iteration multiplies a coordinate by the root's scale at every
-  // step; in float a coordinate that wanders small underflows to 0 and stays there, so old orbits
-  // collapse onto a hyperplane the CPU's double orbits do not reach (qjulia-cage-orb drifted to 0.38
-  // relative RMS from the CPU at 15 M points, ten times its noise). Such layers stay on the CPU.
-  if (layer.kind == core::PatternKind::QuaternionJulia) return "the double precision a quaternion Julia set needs";
+  if (layer.kind == core::PatternKind::QuaternionJulia) return {};
   if (layer.kind != core::PatternKind::Flame) return "not a chaos-game layer";
   const core::FlameGenome& genome = layer.flame;
   for (const core::FlameXform& xform : genome.xforms)
@@ -213,7 +248,10 @@ std::string flameKernelUnsupported(const core::PatternLayer& layer) {
 FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGame& game) {
   FlameKernel kernel;
   kernel.source = "#define CHAOS_GAME\n";
-  flameSource(layer, game, kernel);
+  if (layer.kind == core::PatternKind::QuaternionJulia)
+    juliaSource(layer, kernel);
+  else
+    flameSource(layer, game, kernel);
   if (kernel.pick.empty()) kernel.pick.push_back(0);  // a buffer is never empty
   return kernel;
 }

@@ -1,4 +1,4 @@
-// The GPU backend's chaos game for one flame layer: GLSL generated per genome
+// The GPU backend's chaos game for one flame or quaternion Julia layer: GLSL generated per genome
 // (the structure: which transforms, which variations in which stage, final and symmetry maps) and
 // a block of numbers it reads (affine maps, weights, parameters, colours), so a slider that moves a
 // number re-uploads the block and only a change of structure compiles a new program. The code
@@ -20,16 +20,17 @@ class ChaosGame;
 namespace voxflame::gl {
 
 struct FlameKernel {
-  // GLSL placed after flame_variations.glsl and before accumulate.comp.glsl: defines CHAOS_GAME
-  // and `bool chaosStep(inout vec4 state, inout float colour, inout uint previous, out vec3 drawn,
+  // GLSL placed after flame_variations.glsl and before accumulate.comp.glsl: defines CHAOS_GAME,
+  // CHAOS_STATE (vec4 for a flame, dvec4 for a quaternion Julia set, which needs double) and `bool
+  // chaosStep(inout CHAOS_STATE state, inout float colour, inout uint previous, out vec3 drawn,
   // out float drawnColour)`.
   std::string source;
   std::vector<float> data;          // flame_variations.glsl's flameData
   std::vector<std::uint32_t> pick;  // flamePick: core::ChaosGame::pickTable, one transform index per entry
 };
 
-// Empty when the GPU's chaos game runs `layer` (a flame layer); else what it lacks, for a message
-// ("variation 'bipolar'", "a weighting field").
+// Empty when the GPU's chaos game runs `layer` (a flame or quaternion Julia layer); else what it
+// lacks, for a message ("variation 'bipolar'", "a weighting field").
 std::string flameKernelUnsupported(const core::PatternLayer& layer);
 
 // The kernel of `layer`, whose prepared game is `game` (the same pick table the CPU draws from).

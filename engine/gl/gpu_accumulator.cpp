@@ -30,8 +30,9 @@ constexpr GLuint kOrbitsBinding = 0, kCellsBinding = 1, kHitsBinding = 2, kSeeds
                  kPaletteBinding = 5, kMaskBinding = 6, kSampleBinding = 7, kFlameDataBinding = 8,
                  kFlamePickBinding = 9;
 constexpr int kTransientSteps = 32;  // as the CPU's: steps an orbit takes before it may add a point
-// accumulate.comp.glsl's Orbit: an attractor's, and a chaos game's with its state, colour and stream.
-constexpr int kOrbitBytes = 64, kChaosOrbitBytes = 112;
+// accumulate.comp.glsl's Orbit: an attractor's, and a chaos game's with its state, colour and stream
+// (112 bytes with a float state, 128 with a double one: the larger serves both).
+constexpr int kOrbitBytes = 64, kChaosOrbitBytes = 128;
 
 double nowSeconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();

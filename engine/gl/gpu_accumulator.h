@@ -9,9 +9,9 @@
 // (readSlabs, snapshot) copies it back to host memory; the density sample for the convergence meter
 // is gathered on the GPU and reads back kilobytes.
 //
-// What it runs: the attractor layers of the catalogue, both integrators, and flame layers whose
-// variations the GPU has (flame_kernel.h: a kernel generated per genome). Other flames and
-// quaternion Julia sets are the CPU's: setPattern says so in the stats' problem (gpuSupports tells beforehand).
+// What it runs: the attractor layers of the catalogue, both integrators, quaternion Julia layers,
+// and flame layers whose variations the GPU has (flame_kernel.h: a kernel generated per genome).
+// Other flames are the CPU's: setPattern says so in the stats' problem (gpuSupports tells beforehand).
 // The same seed gives the same grid on the same kind of device (software or hardware renderer):
 // each orbit's random numbers depend on the seed, the chunk and its index alone, integer sums do not
 // depend on the order of the adds, and the steps of each dispatch follow from the counts alone.
@@ -57,7 +57,7 @@ class GpuAccumulator final : public core::RefinementBackend {
   void setPattern(const std::vector<core::PatternLayer>& layers, std::uint64_t seed,
                   WhenEscaping whenEscaping = WhenEscaping::Clear) override;
   void setDeposit(core::Deposit deposit) override;
-  void setPaletteMode(core::PaletteMode mode) override;  // colour index layers (flames)
+  void setPaletteMode(core::PaletteMode mode) override;  // colour index layers (flames, Julia sets)
   void setTargetPoints(std::uint64_t target) override;
   void setChunk(std::uint64_t chunk, bool clearGrid) override;
   void setDeepSeeds(bool deep) override { deepSeeds_.store(deep); }

@@ -138,8 +138,8 @@ void renderSection(Ui& ui, ScenePanelState& scenePanel, Services& services) {
   probe(ui, "render/refine_on");
   if (ImGui::IsItemHovered())
     ImGui::SetTooltip(
-        "cpu: every core; gpu: compute shaders (attractors, and flames of the variations it has;\n"
-        "other flames and quaternion Julia sets refine on the CPU);\n"
+        "cpu: every core; gpu: compute shaders (attractors, quaternion Julia sets, and flames of the\n"
+        "variations it has; other flames refine on the CPU);\n"
         "auto: the GPU where it is a hardware one. A change refines the volume again from nothing");
   const SessionStatus& session = ui.frame.session;
   dimText("refining on the %s backend%s%s", std::string(core::toString(session.backend)).c_str(),

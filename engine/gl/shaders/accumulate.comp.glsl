@@ -15,7 +15,7 @@ struct Orbit {
   vec4 lastStep;  // the step before that (curvature colouring)
   uvec4 state;    // x: jitter stream (xorshift32, never 0), y: age (kUnseeded: to be seeded), z: reseeds
 #ifdef CHAOS_GAME
-  vec4 chaos;         // the iterated state (a quaternion's fourth component in w); position is what is drawn
+  CHAOS_STATE chaos;  // the iterated state (a quaternion's fourth component in w; dvec4 for one); position is what is drawn
   vec4 chaosColour;   // x: flam3's colour index, 0–1
   uvec4 chaosStream;  // x: the chaos stream (xorshift32, never 0), y: 1 + the transform taken last (xaos)
 #endif
@@ -90,11 +90,11 @@ void seedOrbit(inout Orbit o, uint index) {
 #ifdef CHAOS_GAME
   // As core::ChaosGame::seedLane: anywhere in [-1, 1]³ (and w), any colour; the transient finds the set.
   uint a = pcgHash(h), b = pcgHash(a), c = pcgHash(b), d = pcgHash(c), e = pcgHash(d);
-  o.chaos = vec4(symmetric(a), symmetric(b), symmetric(c), symmetric(d));
+  o.chaos = CHAOS_STATE(symmetric(a), symmetric(b), symmetric(c), symmetric(d));
   o.chaosColour = vec4(float(e >> 8) * (1.0 / 16777216.0), 0.0, 0.0, 0.0);
   gChaosRandom = pcgHash(e) | 1u;
   o.chaosStream = uvec4(gChaosRandom, 0u, 0u, 0u);
-  vec3 start = o.chaos.xyz;
+  vec3 start = vec3(o.chaos.xyz);
 #else
   vec3 s = seeds[h % max(uSeedCount, 1u)].xyz;
   uint a = pcgHash(h), b = pcgHash(a), c = pcgHash(b);
