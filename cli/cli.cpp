@@ -81,8 +81,8 @@ CLI::Option* addBackendChoice(CLI::App& command, app::BackendChoice& target) {
   return addChoice(
       command, "--backend", target, {app::BackendChoice::Cpu, app::BackendChoice::Gpu, app::BackendChoice::Auto},
       [](app::BackendChoice c) { return app::toString(c); },
-      "What refines the volume: cpu (every core), gpu (compute shaders; attractor layers, flame layers of the "
-      "variations it has, and the volume method), "
+      "What refines the volume: cpu (every core), gpu (compute shaders; attractor and quaternion Julia layers, "
+      "flame layers of the variations it has, and the volume method), "
       "auto (the GPU where it is a hardware one and runs the pattern, else the CPU). Default: cpu. A render's "
       "chunks all come from one backend");
 }
