@@ -425,3 +425,85 @@ TEST(FlameImport, RealWeightingFieldFileImportsItsField) {
     return what.find("weighting field") != std::string::npos;
   })) << allWarnings(flame);
 }
+
+// JWildfire's motion curves of flame values key the paths where the import keeps those values: a
+// camPitchCurve (degrees, as JWildfire's Flame holds it) the flat view's camera pitch, a centreXCurve
+// its centre, with their interpolation; the centre also moves the frame in the mesh, so that an
+// animation plays it; a curve of a value voxflame does not have is named and left out.
+TEST(FlameImport, JwildfireFlameCurvesKeyTheViewAndCamera) {
+  const std::string curves =
+      "version=\"JWildfire V8.00\" fps=\"25\" frame_count=\"51\" center=\"0.5 0\" cam_pitch=\"0\" "
+      "camPitchCurve_enabled=\"true\" camPitchCurve_interpolation=\"LINEAR\" camPitchCurve_point_count=\"2\" "
+      "camPitchCurve_x0=\"1\" camPitchCurve_y0=\"0\" camPitchCurve_x1=\"51\" camPitchCurve_y1=\"60\" "
+      "centreXCurve_enabled=\"true\" centreXCurve_interpolation=\"SPLINE\" centreXCurve_point_count=\"3\" "
+      "centreXCurve_x0=\"1\" centreXCurve_y0=\"0.5\" centreXCurve_x1=\"26\" centreXCurve_y1=\"1\" "
+      "centreXCurve_x2=\"51\" centreXCurve_y2=\"0.5\" "
+      "contrastCurve_enabled=\"true\" contrastCurve_point_count=\"1\" contrastCurve_x0=\"1\" contrastCurve_y0=\"2\"";
+  const ImportedFlame flame =
+      importFlat(flameFile("<xform weight=\"1\" color=\"0\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>\n"
+                           "<xform weight=\"1\" color=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.5 0.5\"/>\n",
+                           curves));
+  EXPECT_EQ(flame.leftOut, std::vector<std::string>{"JWildfire flame motion curve contrastCurve"})
+      << allWarnings(flame);
+  EXPECT_TRUE(hasWarningContaining(flame, "the flame animates contrastCurve with JWildfire motion curves"))
+      << allWarnings(flame);
+  EXPECT_TRUE(hasWarningContaining(flame, "JWildfire's motion curves became 2 keyframe tracks")) << allWarnings(flame);
+  // The pitch curve turns JWildfire's camera on although the file's own pitch is 0.
+  EXPECT_EQ(flame.flat.cameraModel, FlatCameraModel::Jwildfire);
+  EXPECT_DOUBLE_EQ(flame.animation.duration, 2.0);  // frame 51 at 25 fps from frame 1
+  const Scene scene = sceneFromImportedFlame(flame, defaultScene());
+  const auto track = [&](const std::string& path) {
+    const auto found = std::find_if(scene.keyframes.begin(), scene.keyframes.end(),
+                                    [&](const KeyframeTrack& t) { return t.path == path; });
+    EXPECT_NE(found, scene.keyframes.end()) << path;
+    return found == scene.keyframes.end() ? KeyframeTrack{} : *found;
+  };
+  EXPECT_EQ(track("/flat/camera_pitch").interpolation, Interpolation::Linear);
+  EXPECT_EQ(track("/flat/center_x").interpolation, Interpolation::Smooth);
+  EXPECT_DOUBLE_EQ(numberAt(scene, "/flat/camera_pitch", 0.0), 0.0);
+  EXPECT_DOUBLE_EQ(numberAt(scene, "/flat/camera_pitch", 1.0), 30.0);  // frame 26, halfway
+  EXPECT_DOUBLE_EQ(numberAt(scene, "/flat/center_x", 0.0), 0.5);
+  EXPECT_DOUBLE_EQ(numberAt(scene, "/flat/center_x", 1.0), 1.0);  // frame 26, the middle point
+  // What `animate` renders: the scene at each frame's time. The flat view moves with the curves,
+  // and the flame's place in the mesh follows the centre.
+  const Scene first = sceneAtTime(scene, 0.0), middle = sceneAtTime(scene, 1.0);
+  EXPECT_DOUBLE_EQ(middle.flat.cameraPitchDeg, 30.0);
+  EXPECT_DOUBLE_EQ(middle.flat.centerX, 1.0);
+  EXPECT_DOUBLE_EQ(first.layers[0].transform.lockedCenter.x, 0.5);
+  EXPECT_DOUBLE_EQ(middle.layers[0].transform.lockedCenter.x, 1.0);
+  EXPECT_EQ(middle.layers[0].transform.lockedScale, first.layers[0].transform.lockedScale);
+  const std::string saved = sceneToJson(scene);
+  EXPECT_EQ(sceneToJson(sceneFromJson(saved, "flame-curves.json")), saved);
+}
+
+// pixelsPerUnit and camZoom both make the flat view's scale (pixels per unit × cam_zoom): a curve of
+// one keys it with the other's value, and the roll (JWildfire's camRoll, flam3's rotate) turns the
+// frame in the mesh as well as in the flat view.
+TEST(FlameImport, JwildfireScaleAndRollCurvesMoveTheFrame) {
+  const ImportedFlame flame = importFlat(
+      flameFile("<xform weight=\"1\" color=\"0\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>\n"
+                "<xform weight=\"1\" color=\"1\" linear=\"1\" coefs=\"0.5 0 0 0.5 0.5 0.5\"/>\n",
+                "version=\"JWildfire V8.00\" fps=\"10\" scale=\"40\" cam_zoom=\"2\" rotate=\"0\" "
+                "camZoomCurve_enabled=\"true\" camZoomCurve_interpolation=\"LINEAR\" camZoomCurve_point_count=\"2\" "
+                "camZoomCurve_x0=\"1\" camZoomCurve_y0=\"2\" camZoomCurve_x1=\"11\" camZoomCurve_y1=\"4\" "
+                "camRollCurve_enabled=\"true\" camRollCurve_interpolation=\"LINEAR\" camRollCurve_point_count=\"2\" "
+                "camRollCurve_x0=\"1\" camRollCurve_y0=\"0\" camRollCurve_x1=\"11\" camRollCurve_y1=\"90\""));
+  EXPECT_TRUE(flame.leftOut.empty()) << allWarnings(flame);
+  EXPECT_DOUBLE_EQ(flame.flat.scale, 80.0);
+  const Scene scene = sceneFromImportedFlame(flame, defaultScene());
+  EXPECT_DOUBLE_EQ(numberAt(scene, "/flat/scale", 0.0), 80.0);
+  EXPECT_DOUBLE_EQ(numberAt(scene, "/flat/scale", 0.5), 120.0);  // 40 × 3
+  EXPECT_DOUBLE_EQ(numberAt(scene, "/flat/rotate", 0.5), 45.0);
+  const Scene first = sceneAtTime(scene, 0.0), middle = sceneAtTime(scene, 0.5), last = sceneAtTime(scene, 1.0);
+  EXPECT_NEAR(middle.layers[0].transform.lockedScale / first.layers[0].transform.lockedScale, 1.5, 1e-12);
+  // The frame in the mesh turns as placing the flame with that roll would turn it.
+  for (const Scene* at : {&middle, &last}) {
+    ImportedFlame still = flame;
+    still.flat.rotateDeg = at->flat.rotateDeg;
+    still.keyframes.clear();
+    const glm::dvec3 expected = sceneFromImportedFlame(still, defaultScene()).layers[0].transform.rotationDeg;
+    const glm::dvec3 turned = at->layers[0].transform.rotationDeg;
+    for (int axis = 0; axis < 3; ++axis)
+      EXPECT_NEAR(std::remainder(turned[axis] - expected[axis], 360.0), 0.0, 0.05) << axis << " " << at->flat.rotateDeg;
+  }
+}

@@ -930,9 +930,9 @@ TEST(FlameXml, FlameLevelFeaturesVoxflameDoesNotKeepAreNamed) {
   const std::string attributes =
       "version=\"JWildfire V7.50\" post_symmetry_type=\"POINT\" post_symmetry_order=\"3\" cam_pitch=\"0.5\" "
       "cam_yaw=\"0\" cam_dof=\"0.2\" new_dof=\"1\" cam_dof_shape=\"HEART\" cam_zdimish=\"0.5\" "
-      "sld_render_enabled=\"true\" camPitchCurve_enabled=\"true\"";
+      "sld_render_enabled=\"true\" contrastCurve_enabled=\"true\"";
   const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, "", attributes), "p.flame").flame;
-  for (const char* lost : {"JWildfire solid rendering", "3D camera", "JWildfire flame motion curve"})
+  for (const char* lost : {"JWildfire solid rendering", "3D camera", "JWildfire flame motion curve contrastCurve"})
     EXPECT_NE(std::find(flame.leftOut.begin(), flame.leftOut.end(), lost), flame.leftOut.end()) << lost;
   EXPECT_EQ(flame.genome.postSymmetry.kind, PostSymmetryKind::Point);
   for (const char* part : {"new_dof", "HEART", "cam_zdimish"}) EXPECT_TRUE(hasWarningContaining(flame, part)) << part;

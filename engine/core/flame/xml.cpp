@@ -20,6 +20,7 @@
 
 #include <glm/common.hpp>
 #include <glm/mat3x3.hpp>
+#include <nlohmann/json.hpp>
 #include <pugixml.hpp>
 
 #include "core/chaos_game.h"
@@ -41,6 +42,8 @@ constexpr std::size_t kMaxParameterSuffix = 64;
 constexpr std::size_t kMaxMotionsPerXform = 64;
 constexpr int kMaxMotionFrequency = 64;
 constexpr std::size_t kMaxCurvePoints = 4096;
+// Keys between two points of JWildfire's pixels-per-unit and zoom curves when both move the scale.
+constexpr std::size_t kFlameScaleSamplesBetween = 8;
 constexpr double kFlam3LoopFrames = 128.0, kFlam3LoopFps = 30.0;
 constexpr int kMaxKeysPerPeriod = 32;
 constexpr std::size_t kMaxWaveKeys = 256;
@@ -1075,6 +1078,7 @@ class FlameReader {
     bool isFinal = false;
     std::string field;       // "weight", "affine/3", "variations/2/power"
     std::string layerField;  // instead of field: a value of the layer itself ("weight")
+    std::string scenePath;   // instead of both: a value of the scene's flat view or tone ("/flat/center_x")
     double low = -kFlameCoefficientLimit, high = kFlameCoefficientLimit;
     std::vector<MotionWave> waves;
     std::vector<std::pair<double, double>> points;  // (JWildfire frame, value)
@@ -1394,6 +1398,11 @@ class FlameReader {
   // The channels the last xform() call found, for readGenome to give their transform.
   std::vector<MotionChannel> takePendingChannels() { return std::exchange(pendingChannels_, {}); }
   const std::set<std::string>& approximatedCurves() const { return approximatedCurves_; }
+  // A JWildfire interpolation other than LINEAR, played as Catmull-Rom (named in the motion's warning).
+  void noteApproximatedCurve(const std::string& kind) { approximatedCurves_.insert(kind.substr(0, 20)); }
+  // Other ways the curves are played that the motion's warning names.
+  void noteCurves(std::string note) { curveNotes_.push_back(std::move(note)); }
+  const std::vector<std::string>& curveNotes() const { return curveNotes_; }
 
   void warn(std::string text) { warnings_.push_back(std::move(text)); }
 
@@ -1472,7 +1481,8 @@ class FlameReader {
   std::vector<std::string> warnings_;
   std::vector<MotionChannel> pendingChannels_;
   std::set<std::string> approximatedCurves_;  // JWildfire interpolations played as Catmull-Rom
-  std::set<std::string> weightFields_;        // JWildfire weighting field types read
+  std::vector<std::string> curveNotes_;
+  std::set<std::string> weightFields_;  // JWildfire weighting field types read
 };
 
 // --- palettes -------------------------------------------------------------------------------
@@ -1703,9 +1713,8 @@ bool writtenByJwildfire(const pugi::xml_node& flame) {
 }
 
 // JWildfire's flame-level features that neither the flat view nor the mesh keeps, named as lost
-// when a file turns them on: solid rendering (lights, materials, ambient occlusion), the parts of
-// its 3D camera the flat view does not draw and motion curves on flame values (the camera's, the
-// brightness').
+// when a file turns them on: solid rendering (lights, materials, ambient occlusion) and the parts of
+// its 3D camera the flat view does not draw (readFlameCurves names the motion curves it leaves out).
 void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader) {
   const std::string solid = flame.attribute("sld_render_enabled").as_string("false");
   if (solid == "true" || solid == "1") {
@@ -1736,17 +1745,175 @@ void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader)
         "the flame's JWildfire 3D camera has " + camera +
         ", which the flat view does not draw; the camera's turn, perspective and plain depth of field are kept");
   }
-  std::string curves;
-  for (const pugi::xml_attribute& attribute : flame.attributes()) {
-    const std::string_view name = attribute.name();
-    if (name.ends_with("Curve_enabled") && std::string_view(attribute.value()) == "true")
-      curves += (curves.empty() ? "" : ", ") + std::string(name.substr(0, name.size() - 13));
+}
+
+// --- JWildfire's motion curves of flame values -----------------------------------------------
+
+// A flame value a JWildfire motion curve animates (Flame.java's `<property>Curve`) and where the
+// import keeps that value: a path of the scene's flat view or tone, or below every layer (JWildfire's
+// post symmetry, which every layer draws through), with the range there. The curves hold the values
+// as JWildfire's Flame does: angles in degrees (its file writes cam_pitch, cam_yaw and cam_roll, which
+// is camBank, in radians, and camRoll as `rotate`), the rest as the file writes them.
+struct FlameCurveTarget {
+  std::string_view curve;
+  std::string_view path;
+  double low, high;
+  bool everyLayer = false;  // path is below /layers/N/
+  bool magnitude = false;   // the value's size is kept (cam_dof, as readFlat reads it)
+};
+
+constexpr std::array<FlameCurveTarget, 24> kFlameCurveTargets = {{
+    {"centreXCurve", "/flat/center_x", -1e6, 1e6},
+    {"centreYCurve", "/flat/center_y", -1e6, 1e6},
+    {"camRollCurve", "/flat/rotate", -3600.0, 3600.0},
+    {"camPitchCurve", "/flat/camera_pitch", -360.0, 360.0},
+    {"camYawCurve", "/flat/camera_yaw", -360.0, 360.0},
+    {"camBankCurve", "/flat/camera_bank", -360.0, 360.0},
+    {"camPerspectiveCurve", "/flat/camera_perspective", -1e6, 1e6},
+    {"camZCurve", "/flat/camera_z", -1e6, 1e6},
+    {"camPosXCurve", "/flat/camera_position/0", -1e6, 1e6},
+    {"camPosYCurve", "/flat/camera_position/1", -1e6, 1e6},
+    {"camPosZCurve", "/flat/camera_position/2", -1e6, 1e6},
+    {"camDOFCurve", "/flat/camera_dof", 0.0, 1e6, false, true},
+    {"camDOFScaleCurve", "/flat/camera_dof_scale", 0.0, 1e6},
+    {"camDOFFadeCurve", "/flat/camera_dof_fade", 0.0, 1.0},
+    {"brightnessCurve", "/tone/brightness", 0.0, 1000.0},
+    {"gammaCurve", "/tone/gamma", 0.1, 10.0},
+    {"gammaThresholdCurve", "/tone/gamma_threshold", 0.0, 1.0},
+    {"vibrancyCurve", "/tone/vibrancy", 0.0, 1.0},
+    {"postSymmetryOrderCurve", "flame/post_symmetry/order", 1.0, static_cast<double>(kMaxPostSymmetryOrder), true},
+    {"postSymmetryCentreXCurve", "flame/post_symmetry/center_x", -kFlameCoefficientLimit, kFlameCoefficientLimit, true},
+    {"postSymmetryCentreYCurve", "flame/post_symmetry/center_y", -kFlameCoefficientLimit, kFlameCoefficientLimit, true},
+    {"postSymmetryDistanceCurve", "flame/post_symmetry/distance", -kFlameCoefficientLimit, kFlameCoefficientLimit,
+     true},
+    {"postSymmetryRotationCurve", "flame/post_symmetry/rotation", -kFlameCoefficientLimit, kFlameCoefficientLimit,
+     true},
+    // pixelsPerUnitCurve and camZoomCurve: the flat view's scale (readFlameCurves).
+    {"pixelsPerUnitCurve", "/flat/scale", 1e-6, 1e6},
+}};
+
+// A curve's value at a JWildfire frame, interpolated as its keyframe track will be (times in frames:
+// Catmull-Rom with uneven spacing and linear keys are the same curve under finishMotion's affine
+// map of frames to seconds).
+double curveValueAt(const FlameReader::MotionChannel& channel, double frame) {
+  KeyframeTrack track;
+  track.interpolation = channel.smooth ? Interpolation::Smooth : Interpolation::Linear;
+  const double origin = channel.points.front().first;
+  for (const auto& [at, value] : channel.points) track.keys.push_back({at - origin, {value}});
+  return evaluateTrack(track, std::max(0.0, frame - origin), track.keys.back().time, false).get<double>();
+}
+
+// A number attribute of the flame as readFlat reads it, or `fallback`.
+double flameNumber(const pugi::xml_node& flame, const char* key, double fallback) {
+  const auto value = parseNumber(flame.attribute(key).as_string(""));
+  return value && finiteWithin(*value, kFlameCoefficientLimit) ? *value : fallback;
+}
+
+// JWildfire's motion curves of flame values (the camera's, the view's, the tone's, the post
+// symmetry's) as channels that finishMotion keys with the transforms' curves, on the paths where
+// readFlat, readTone and readPostSymmetry keep the values: flame-wide ones in the first layer's
+// channels (they name their scene path), the post symmetry's in every layer's. JWildfire draws with
+// pixels per unit × cam_zoom (readFlat's scale): a curve of either keys the flat view's scale with
+// the other's value, and curves of both their product, sampled between their points. Curves of
+// values voxflame does not have are named and left out.
+void readFlameCurves(const pugi::xml_node& flame, FlameReader& reader,
+                     std::vector<std::vector<FlameReader::MotionChannel>>& channels) {
+  std::map<std::string, pugi::xml_attribute, std::less<>> byName;
+  for (const pugi::xml_attribute& attribute : flame.attributes()) byName.emplace(reader.nameOf(attribute), attribute);
+  // A curve's parent is written beside it as `parent<hash>Curve_*`: not a value of the flame.
+  std::set<std::string, std::less<>> parents;
+  for (const auto& [name, attribute] : byName)
+    if (name.ends_with("_parent_curve")) parents.insert(attribute.value());
+  const bool jwildfire = writtenByJwildfire(flame);
+  std::string unkept;
+  std::optional<FlameReader::MotionChannel> pixelsPerUnit, zoom;
+  for (const auto& [attributeName, attribute] : byName) {
+    if (!attributeName.ends_with("Curve_enabled") || std::string_view(attribute.value()) != "true") continue;
+    const std::string curve = attributeName.substr(0, attributeName.size() - std::string_view("_enabled").size());
+    if (parents.contains(curve)) continue;
+    const auto leaveOut = [&](const std::string& why) {
+      reader.lose("JWildfire flame motion curve " + curve);
+      reader.warn("the flame has a JWildfire motion curve of " + curve + ", " + why +
+                  "; the value as it stands is used");
+    };
+    const auto target = std::find_if(kFlameCurveTargets.begin(), kFlameCurveTargets.end(),
+                                     [&](const FlameCurveTarget& t) { return t.curve == curve; });
+    if (!jwildfire || (target == kFlameCurveTargets.end() && curve != "camZoomCurve")) {
+      reader.lose("JWildfire flame motion curve " + curve);
+      unkept += (unkept.empty() ? "" : ", ") + curve;
+      continue;
+    }
+    if (byName.contains(curve + "_parent_curve")) {
+      leaveOut("which adds a parent curve voxflame does not read");
+      continue;
+    }
+    auto points = reader.curvePoints(byName, curve, 1.0, 0.0, leaveOut);
+    if (!points) continue;
+    FlameReader::MotionChannel channel;
+    const auto interpolation = byName.find(curve + "_interpolation");
+    const std::string kind = interpolation == byName.end() ? "SPLINE" : interpolation->second.value();
+    channel.smooth = kind != "LINEAR";
+    if (channel.smooth) reader.noteApproximatedCurve(kind);
+    channel.points = std::move(*points);
+    if (curve == "camZoomCurve") {
+      zoom = std::move(channel);
+      continue;
+    }
+    if (curve == "pixelsPerUnitCurve") {
+      pixelsPerUnit = std::move(channel);
+      continue;
+    }
+    if (target->magnitude)
+      for (auto& point : channel.points) point.second = std::abs(point.second);
+    channel.low = target->low;
+    channel.high = target->high;
+    if (target->everyLayer) {
+      channel.layerField = std::string(target->path);
+      for (auto& layerChannels : channels) layerChannels.push_back(channel);
+    } else {
+      channel.scenePath = std::string(target->path);
+      channels.front().push_back(std::move(channel));
+    }
   }
-  if (!curves.empty()) {
-    reader.lose("JWildfire flame motion curve");
-    reader.warn("the flame animates " + curves.substr(0, 200) +
-                " with JWildfire motion curves, which voxflame does not keyframe; the values as they stand are used");
+  if (pixelsPerUnit || zoom) {
+    // The flat view's scale: pixels per unit × cam_zoom, each the curve's value or the file's.
+    FlameReader::MotionChannel scale;
+    if (pixelsPerUnit && zoom) {
+      std::set<double> frames;
+      for (const auto* channel : {&*pixelsPerUnit, &*zoom})
+        for (const auto& point : channel->points) frames.insert(point.first);
+      // The product of two interpolated curves is not one through their points: it is sampled
+      // between them, within the points a curve may have.
+      const std::size_t between =
+          std::clamp<std::size_t>(kMaxCurvePoints / frames.size(), 1, kFlameScaleSamplesBetween);
+      const std::vector<double> at(frames.begin(), frames.end());
+      for (std::size_t i = 0; i < at.size(); ++i)
+        for (std::size_t k = 0; k < (i + 1 < at.size() ? between : 1); ++k) {
+          const double frame =
+              at[i] +
+              (i + 1 < at.size() ? (at[i + 1] - at[i]) * static_cast<double>(k) / static_cast<double>(between) : 0.0);
+          scale.points.emplace_back(frame, curveValueAt(*pixelsPerUnit, frame) * curveValueAt(*zoom, frame));
+        }
+      scale.smooth = pixelsPerUnit->smooth || zoom->smooth;
+      reader.noteCurves("the flame's pixelsPerUnit and camZoom curves both move its scale: their product is keyed at " +
+                        std::to_string(scale.points.size()) + " frames");
+    } else if (pixelsPerUnit) {
+      scale = std::move(*pixelsPerUnit);
+      const double factor = flameNumber(flame, "cam_zoom", 1.0);
+      for (auto& point : scale.points) point.second *= factor;
+    } else {
+      scale = std::move(*zoom);
+      const double factor = flameNumber(flame, "scale", FlatViewSettings{}.scale);
+      for (auto& point : scale.points) point.second *= factor;
+    }
+    scale.scenePath = "/flat/scale";
+    scale.low = 1e-6;
+    scale.high = 1e6;
+    channels.front().push_back(std::move(scale));
   }
+  if (!unkept.empty())
+    reader.warn("the flame animates " + unkept.substr(0, 300) +
+                " with JWildfire motion curves, which voxflame has no value for; the values as they stand are used");
 }
 
 // --- tone -----------------------------------------------------------------------------------
@@ -1801,7 +1968,7 @@ ToneMapSettings readTone(const pugi::xml_node& flame, FlameReader& reader) {
 
 // flam3's framing of the flame (FlatViewSettings' defaults are flam3's). Values outside the
 // preset's ranges are brought into them with a warning, as the tone keys are.
-FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader) {
+FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader, bool cameraAnimated) {
   FlatViewSettings flat;
   const auto clamped = [&](const char* name, double value, double low, double high) {
     const double kept = std::clamp(value, low, high);
@@ -1902,8 +2069,8 @@ FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader) {
     key("cam_dof_scale", camera.cameraDofScale, 0.0, 1e6);
     key("cam_dof_fade", camera.cameraDofFade, 0.0, 1.0);
     // Without a 3D camera JWildfire draws the flame flat, turned about the centre as flam3 does:
-    // nothing of the camera is kept then.
-    if (camera.hasCamera()) flat = camera;
+    // nothing of the camera is kept then, unless a motion curve moves it.
+    if (camera.hasCamera() || cameraAnimated) flat = camera;
   }
   if (const pugi::xml_attribute shape = flame.attribute("filter_shape");
       shape && std::string_view(shape.value()) != "gaussian") {
@@ -2090,11 +2257,14 @@ KeyframeTrack motionTrack(const FlameGenome& genome, const MotionChannel& channe
                           const MotionTiming& timing, MotionNotes& notes) {
   const FlameXform& x = channel.isFinal ? genome.finalXform : genome.xforms.at(channel.xform);
   KeyframeTrack track;
-  track.path = "/layers/" + std::to_string(layer) + "/" +
-               (!channel.layerField.empty()
-                    ? channel.layerField
-                    : "flame/" + (channel.isFinal ? std::string("final") : "xforms/" + std::to_string(channel.xform)) +
-                          "/" + channel.field);
+  track.path =
+      !channel.scenePath.empty()
+          ? channel.scenePath
+          : "/layers/" + std::to_string(layer) + "/" +
+                (!channel.layerField.empty()
+                     ? channel.layerField
+                     : "flame/" + (channel.isFinal ? std::string("final") : "xforms/" + std::to_string(channel.xform)) +
+                           "/" + channel.field);
   track.kind = KeyKind::Number;
   const auto keep = [&](double v) {
     const double kept = std::clamp(v, channel.low, channel.high);
@@ -2198,6 +2368,8 @@ void finishMotion(ImportedFlame& flame, const std::vector<std::vector<MotionChan
 
   // Each track alone in the scene the import makes.
   Scene check;
+  check.tone = flame.tone;
+  check.flat = flame.flat;
   check.layers = {importedFlameLayer(flame.genome, flame.palette, flame.weight)};
   for (const ImportedFlameLayer& other : flame.otherLayers)
     check.layers.push_back(importedFlameLayer(other.genome, other.palette, other.weight));
@@ -2258,6 +2430,7 @@ void finishMotion(ImportedFlame& flame, const std::vector<std::vector<MotionChan
       say << "; its " << kinds
           << " curves are played as Catmull-Rom curves through the same points, an approximation of JWildfire's";
     }
+    for (const std::string& note : reader.curveNotes()) say << "; " << note;
   }
   if (notes.clamped) say << "; values beyond voxflame's ranges are held at their ends";
   if (notes.linearised) say << "; smooth tracks that would overshoot their value's range are keyed linearly";
@@ -2398,9 +2571,15 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
     flame.palette = gradientOf(readPalette(node, reader));
     flame.depthAdded = finishGenome(flame.genome, "");
   }
-  finishMotion(flame, channels, node, reader);
+  readFlameCurves(node, reader, channels);
   flame.tone = readTone(node, reader);
-  flame.flat = readFlat(node, reader);
+  // A curve of the 3D camera turns JWildfire's camera on even where the file's own values leave it off.
+  const bool cameraAnimated = std::any_of(channels.front().begin(), channels.front().end(), [](const MotionChannel& c) {
+    return c.scenePath.starts_with("/flat/camera_");
+  });
+  flame.flat = readFlat(node, reader, cameraAnimated);
+  // After the tone and the flat view: their tracks are checked against them.
+  finishMotion(flame, channels, node, reader);
   reportUnkeptFlameFeatures(node, reader);
   flame.warnings = reader.finishWarnings();
   flame.leftOut = reader.finishLeftOut();
@@ -2622,6 +2801,12 @@ glm::dmat3 turnAbout(int axis, double degrees) {
   return m;
 }
 
+// The layers' turn for a frame turned by `rotateDeg` (placeAsFramed).
+glm::dmat3 frameTurn(const CameraSettings& camera, double rotateDeg) {
+  return turnAbout(1, camera.azimuthDeg) * turnAbout(0, -camera.elevationDeg) * turnAbout(0, 180.0) *
+         turnAbout(2, -rotateDeg);
+}
+
 // Places an imported flame in the mesh as its author framed it in 2D (the flat view), instead of
 // fitting the box of all its points: flames often scatter a faint haze far beyond the part their
 // author framed (Ethereal passage's frame is a twentieth of its robust box, which left the framed
@@ -2656,10 +2841,69 @@ bool placeAsFramed(std::vector<PatternLayer>& layers, const FlatViewSettings& fl
   // up (x by 180° turns y, and z to stay a rotation, over); then the frame's normal (+z) turns to
   // the eye: down by the elevation, round by the azimuth (camera.cpp's orbit). The other layers
   // take the first one's fit (FitMode::Previous) and this turn.
-  const glm::dmat3 turn = turnAbout(1, camera.azimuthDeg) * turnAbout(0, -camera.elevationDeg) * turnAbout(0, 180.0) *
-                          turnAbout(2, -flat.rotateDeg);
-  for (PatternLayer& layer : layers) layer.transform.rotationDeg = eulerDegrees(turn);
+  for (PatternLayer& layer : layers) layer.transform.rotationDeg = eulerDegrees(frameTurn(camera, flat.rotateDeg));
   return true;
+}
+
+// The flat view's motion (JWildfire's centre, scale and roll curves) moves the frame placeAsFramed
+// puts in the mesh, so that an animation in the mesh pans, zooms and turns as the flat view does:
+// the centre and the scale key the locked fit through the same keys (both are linear in them, so
+// the tracks are the same curves), the roll keys the layers' turn, whose Euler angles are not
+// linear in it: they are sampled every kTurnSampleDeg of roll or less, unwrapped, and keyed linearly.
+constexpr double kTurnSampleDeg = 2.0;
+constexpr std::size_t kMaxTurnKeys = 2048;
+
+void keyFramedPlacement(Scene& scene, const CameraSettings& camera, int gridResolution) {
+  const FlatViewSettings& flat = scene.flat;
+  const double voxelsPerPixel = static_cast<double>(gridResolution) * std::exp2(flat.zoom) /
+                                static_cast<double>(std::max(flat.width, flat.height));
+  std::vector<KeyframeTrack> placement;
+  for (const KeyframeTrack& track : scene.keyframes) {
+    if (track.path == "/flat/center_x" || track.path == "/flat/center_y" || track.path == "/flat/scale") {
+      KeyframeTrack fit = track;
+      if (track.path == "/flat/scale") {
+        fit.path = "/layers/0/transform/locked_fit/scale";
+        for (Keyframe& key : fit.keys) key.values[0] = std::clamp(key.values[0] * voxelsPerPixel, 1e-9, 1e9);
+      } else {
+        fit.path = std::string("/layers/0/transform/locked_fit/center/") + (track.path.back() == 'x' ? "0" : "1");
+      }
+      placement.push_back(std::move(fit));
+    } else if (track.path == "/flat/rotate" && !track.keys.empty()) {
+      const double duration = animationDuration(scene);
+      const double start = track.keys.front().time, end = track.keys.back().time;
+      double travelled = 0.0;  // degrees of roll over the track, at its keys
+      for (std::size_t i = 1; i < track.keys.size(); ++i)
+        travelled += std::abs(track.keys[i].values[0] - track.keys[i - 1].values[0]);
+      const std::size_t steps =
+          end > start ? std::clamp<std::size_t>(static_cast<std::size_t>(std::ceil(travelled / kTurnSampleDeg)) *
+                                                    (track.interpolation == Interpolation::Smooth ? 2 : 1),
+                                                1, kMaxTurnKeys - 1)
+                      : 0;
+      KeyframeTrack turn;
+      turn.path = "/layers/0/transform/rotation_deg";
+      turn.kind = KeyKind::Array;
+      turn.interpolation = Interpolation::Linear;
+      for (std::size_t k = 0; k <= steps; ++k) {
+        const double t =
+            steps == 0 ? start : start + (end - start) * static_cast<double>(k) / static_cast<double>(steps);
+        const double roll = evaluateTrack(track, t, duration, scene.animation.loop).get<double>();
+        glm::dvec3 angles = eulerDegrees(frameTurn(camera, roll));
+        // The nearest whole turn to the angles before: no spin back at ±180°.
+        if (!turn.keys.empty())
+          for (int axis = 0; axis < 3; ++axis)
+            angles[axis] =
+                std::clamp(angles[axis] - 360.0 * std::round((angles[axis] - turn.keys.back().values[axis]) / 360.0),
+                           -3600.0, 3600.0);
+        turn.keys.push_back({t, {angles.x, angles.y, angles.z}});
+      }
+      // Every layer turns with the first (placeAsFramed).
+      for (std::size_t layer = 0; layer < scene.layers.size(); ++layer) {
+        turn.path = "/layers/" + std::to_string(layer) + "/transform/rotation_deg";
+        placement.push_back(turn);
+      }
+    }
+  }
+  for (KeyframeTrack& track : placement) scene.keyframes.push_back(std::move(track));
 }
 
 }  // namespace
@@ -2673,7 +2917,7 @@ Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base) {
     scene.layers.push_back(importedFlameLayer(other.genome, other.palette, other.weight));
     scene.layers.back().transform.fit = FitMode::Previous;
   }
-  placeAsFramed(scene.layers, flame.flat, base.camera, base.gridResolution);
+  const bool framed = placeAsFramed(scene.layers, flame.flat, base.camera, base.gridResolution);
   scene.tone = flame.tone;
   scene.flat = flame.flat;
   // Whatever the scene it replaces had: a flame's filaments survive projecting every point (the
@@ -2681,6 +2925,7 @@ Scene sceneFromImportedFlame(const ImportedFlame& flame, const Scene& base) {
   scene.render.method = defaultRenderMethod(scene.layers);
   scene.animation = flame.animation;
   scene.keyframes = flame.keyframes;
+  if (framed) keyFramedPlacement(scene, base.camera, base.gridResolution);
   return scene;
 }
 
