@@ -35,12 +35,25 @@ struct Rate {
   core::AccumulatorStats stats;
 };
 
+// Polls (benchmarks may) until the backend's version moves on, at most `limit` seconds: the GPU
+// backend's counts move once a dispatch round, which on a software rasteriser running a heavy flame
+// takes longer than the measuring window, so the window starts and ends where a round ends.
+void waitForNextVersion(const core::RefinementBackend& accumulator, double limit) {
+  const std::uint64_t version = accumulator.version();
+  const auto start = std::chrono::steady_clock::now();
+  while (accumulator.version() == version &&
+         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() < limit)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+}
+
 Rate measureRate(const core::RefinementBackend& accumulator) {
   std::this_thread::sleep_for(std::chrono::milliseconds(300));  // warm-up
+  waitForNextVersion(accumulator, 120.0);
   const auto before = accumulator.stats();
   const double cpuBefore = cpuSeconds(RUSAGE_SELF);
   const auto start = std::chrono::steady_clock::now();
   std::this_thread::sleep_for(std::chrono::seconds(2));
+  waitForNextVersion(accumulator, 120.0);
   Rate rate;
   rate.stats = accumulator.stats();
   const double cpuUsed = cpuSeconds(RUSAGE_SELF) - cpuBefore;
@@ -213,22 +226,30 @@ void benchAccumulateGpu(const BenchOptions& options) {
     patterns.emplace_back("flame (default, 3 transforms)", flame);
     if (auto heaviest = heaviestGpuCorpusFlame())
       patterns.emplace_back("heaviest corpus flame the GPU runs: " + heaviest->first, heaviest->second);
+    const bool defaultGroupChoice = accumulator.groupChoice();
     for (const auto& [id, layer] : patterns) {
-      accumulator.setTargetPoints(0);
-      accumulator.setPattern({layer}, 1);
-      const Rate rate = measureRate(accumulator);
-      report(options, {{"bench", "accumulate"},
-                       {"backend", "gpu"},
-                       {"renderer", accumulator.renderer()},
-                       {layer.kind == core::PatternKind::Attractor ? "attractor" : "pattern", id},
-                       {"grid", grid},
-                       {"orbits", accumulator.orbitsPerLayer()},
-                       {"colour_cell_voxels", 1 << (3 * accumulator.colourLayout().shift)},
-                       {"deposit", "jittered"},
-                       {"points_per_s", rate.perSecond},
-                       {"deposits_per_s", rate.depositsPerSecond},
-                       {"inside_fraction", rate.stats.insideFraction()},
-                       {"cpu_seconds_per_second", rate.cpuSecondsPerSecond}});
+      // A flame both ways: each orbit drawing its transform, and groups of orbits sharing one
+      // (the hardware default, flame_kernel.h).
+      const bool isFlame = layer.kind == core::PatternKind::Flame;
+      for (const bool groupChoice : isFlame ? std::vector<bool>{false, true} : std::vector<bool>{defaultGroupChoice}) {
+        accumulator.setGroupChoice(groupChoice);
+        accumulator.setTargetPoints(0);
+        accumulator.setPattern({layer}, 1);
+        const Rate rate = measureRate(accumulator);
+        report(options, {{"bench", "accumulate"},
+                         {"backend", "gpu"},
+                         {"renderer", accumulator.renderer()},
+                         {layer.kind == core::PatternKind::Attractor ? "attractor" : "pattern", id},
+                         {"grid", grid},
+                         {"orbits", accumulator.orbitsPerLayer()},
+                         {"colour_cell_voxels", 1 << (3 * accumulator.colourLayout().shift)},
+                         {"transform_draw", isFlame ? (groupChoice ? "group" : "orbit") : "-"},
+                         {"deposit", "jittered"},
+                         {"points_per_s", rate.perSecond},
+                         {"deposits_per_s", rate.depositsPerSecond},
+                         {"inside_fraction", rate.stats.insideFraction()},
+                         {"cpu_seconds_per_second", rate.cpuSecondsPerSecond}});
+      }
     }
   }
 }

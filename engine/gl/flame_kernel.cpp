@@ -141,7 +141,7 @@ class Generator {
   FlameKernel& k_;
 };
 
-void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, FlameKernel& kernel) {
+void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, bool groupChoice, FlameKernel& kernel) {
   Generator g(kernel);
   std::string& s = kernel.source;
   s += "#define CHAOS_STATE vec4\n";
@@ -159,6 +159,14 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, F
   kernel.pick.assign(pick.begin(), pick.end());
 
   const int shift = 32 - core::ChaosGame::pickBits();
+  // Without xaos, a group of orbits may share each step's transform (GROUP_CHOICE in
+  // accumulate.comp.glsl): the draw is then the group's, and chaosStepWith runs the one it names.
+  // A flame with xaos picks per orbit, by the transform each took last.
+  kernel.groupChoice = groupChoice && !game.usesXaos() && xforms.size() > 1;
+  if (kernel.groupChoice) s += "#define GROUP_CHOICE\n";
+  s += "uint pickTransform(uint draw) { return flamePick[draw >> " + std::to_string(shift) + "]; }\n";
+  s += "bool chaosStepWith(uint k, inout CHAOS_STATE state, inout float colour, out vec3 drawn,\n"
+       "                   out float drawnColour);\n";
   s += "bool chaosStep(inout CHAOS_STATE state, inout float colour, inout uint previous, out vec3 drawn,\n"
        "               out float drawnColour) {\n";
   s += "  psi();\n";
@@ -167,8 +175,11 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, F
          std::to_string(shift) + ")];\n";
     s += "  previous = k + 1u;\n";
   } else {
-    s += "  uint k = flamePick[gChaosRandom >> " + std::to_string(shift) + "];\n";
+    s += "  uint k = pickTransform(gChaosRandom);\n";
   }
+  s += "  return chaosStepWith(k, state, colour, drawn, drawnColour);\n}\n";
+  s += "bool chaosStepWith(uint k, inout CHAOS_STATE state, inout float colour, out vec3 drawn,\n"
+       "                   out float drawnColour) {\n";
   s += "  bool visible = true;\n  vec3 p = state.xyz;\n  switch (k) {\n";
   for (std::size_t k = 0; k < xforms.size(); ++k)
     s += "    case " + std::to_string(k) + "u: p = xform" + std::to_string(k) + "(p, colour, visible); break;\n";
@@ -245,13 +256,13 @@ std::string flameKernelUnsupported(const core::PatternLayer& layer) {
   return {};
 }
 
-FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGame& game) {
+FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGame& game, bool groupChoice) {
   FlameKernel kernel;
   kernel.source = "#define CHAOS_GAME\n";
   if (layer.kind == core::PatternKind::QuaternionJulia)
     juliaSource(layer, kernel);
   else
-    flameSource(layer, game, kernel);
+    flameSource(layer, game, groupChoice, kernel);
   if (kernel.pick.empty()) kernel.pick.push_back(0);  // a buffer is never empty
   return kernel;
 }

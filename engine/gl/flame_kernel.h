@@ -27,6 +27,9 @@ struct FlameKernel {
   std::string source;
   std::vector<float> data;          // flame_variations.glsl's flameData
   std::vector<std::uint32_t> pick;  // flamePick: core::ChaosGame::pickTable, one transform index per entry
+  // Groups of orbits share each step's transform (accumulate.comp.glsl's GROUP_CHOICE): the
+  // program's workgroups are then 256 orbits, not 64.
+  bool groupChoice = false;
 };
 
 // Empty when the GPU's chaos game runs `layer` (a flame or quaternion Julia layer); else what it
@@ -34,8 +37,9 @@ struct FlameKernel {
 std::string flameKernelUnsupported(const core::PatternLayer& layer);
 
 // The kernel of `layer`, whose prepared game is `game` (the same pick table the CPU draws from).
-// Call only when flameKernelUnsupported(layer) is empty.
-FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGame& game);
+// `groupChoice`: groups of orbits share each step's transform where the flame allows it (no xaos,
+// two transforms or more). Call only when flameKernelUnsupported(layer) is empty.
+FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGame& game, bool groupChoice);
 
 // The variations the GPU's chaos game has (flame_variations.glsl), in the catalogue's spelling.
 const std::vector<std::string>& gpuFlameVariations();

@@ -266,7 +266,7 @@ void GpuAccumulator::loop(std::stop_token stop, std::exception_ptr* startError, 
     software_ = softwareRasteriser();
     // A software rasteriser runs a dispatch on the CPU's cores: as many orbits as the CPU backend
     // has (16 streams of 256) keep a dispatch at milliseconds. A GPU wants a million in flight.
-    orbits_ = software_ ? 4096u : 1u << 20;
+    orbits_ = software_ ? 4096u : 1u << 20;  // whole workgroups of 256 (GROUP_CHOICE's)
     stepsPerDispatch_ = software_ ? 64 : 256;
     const core::GridGeometry& g = mask_->geometry;
     const std::size_t voxels = g.voxelCount();
@@ -442,7 +442,7 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
     u.chaos = layer.game != nullptr;
     u.runs = layer.bounded && layer.layer.weight > 0.0 && (u.chaos || !layer.seeds.empty());
     if (u.chaos)
-      u.kernel = makeFlameKernel(layer.layer, *layer.game);
+      u.kernel = makeFlameKernel(layer.layer, *layer.game, groupChoice_.load());
     else
       u.system = systemDefine(layer.layer.attractor);
     u.rk4 = layer.layer.integrator == core::Integrator::RK4;
@@ -666,7 +666,8 @@ void GpuAccumulator::dispatchRound(Device& device) {
     glUniform1f(program.uniform("uAxisOffset"), u.axisOffset);
     glUniform3fv(program.uniform("uCenter"), 1, &u.center[0]);
     glUniform1i(program.uniform("uJittered"), deposit_.load() == core::Deposit::Jittered ? 1 : 0);
-    glDispatchCompute((orbits_ + 63u) / 64u, 1, 1);
+    const GLuint workgroup = u.kernel.groupChoice ? 256u : 64u;  // accumulate.comp.glsl's local size
+    glDispatchCompute((orbits_ + workgroup - 1u) / workgroup, 1, 1);
     iterations += std::uint64_t{orbits_} * static_cast<std::uint64_t>(steps);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);

@@ -61,6 +61,11 @@ class GpuAccumulator final : public core::RefinementBackend {
   void setTargetPoints(std::uint64_t target) override;
   void setChunk(std::uint64_t chunk, bool clearGrid) override;
   void setDeepSeeds(bool deep) override { deepSeeds_.store(deep); }
+  // Whether groups of a flame's orbits share each step's transform (flame_kernel.h): the default
+  // (bench accumulate on llvmpipe: the default flame 1.5× the steps per second of orbits that draw
+  // one by one). From the next setPattern on; the tests and the benchmark run both ways.
+  void setGroupChoice(bool group) { groupChoice_.store(group); }
+  bool groupChoice() const { return groupChoice_.load(); }
   void setHeld(bool held) override;
   bool waitUntilDone(double timeoutSeconds) override;
   bool idle() const override;  // the GPU thread waits with no task and no dispatch to make
@@ -121,6 +126,7 @@ class GpuAccumulator final : public core::RefinementBackend {
   std::atomic<core::Deposit> deposit_{core::Deposit::Jittered};
   std::atomic<bool> deepSeeds_{false};
   std::atomic<bool> linearPalette_{false};  // PaletteMode::Linear: colour indices dither to the next entry
+  std::atomic<bool> groupChoice_{true};     // setGroupChoice
   std::atomic<bool> held_{false};
   std::atomic<bool> active_{false};
   std::atomic<std::uint64_t> targetPoints_{0};

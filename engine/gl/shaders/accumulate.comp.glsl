@@ -7,7 +7,23 @@
 // The grid's layout is the CPU's: hit counts carry the outside flag in their top bit; colour cells
 // hold red, green, blue and a count, and where a cell is one voxel (HITS_IN_CELLS) its count is
 // the voxel's hits.
+#ifdef GROUP_CHOICE
+// A flame's transforms are branches: orbits side by side in one SIMD group that take different
+// transforms run each other's code, so a 50-transform flame ran at a fiftieth of its speed. With
+// GROUP_CHOICE (flame_kernel.h: flames without xaos) each group of kGroupSize orbits takes one
+// transform per step, drawn from its weights, and after every step the workgroup's points are dealt
+// to other lanes by a random affine permutation (cuburn's way): each point's transforms are still
+// drawn independently from the weights, and points that shared a step part at the next.
+layout(local_size_x = 256) in;
+const uint kGroupSize = 32u;
+shared uint groupChoice[256 / 32];
+shared uvec2 dealing;             // the permutation's multiplier (odd) and offset
+shared vec4 dealtChaos[256];      // the chaos state
+shared vec4 dealtPosition[256];   // xyz: the point drawn last, w: its colour index
+shared vec4 dealtLastStep[256];   // xyz: the step before, w: the orbit's age (its bits)
+#else
 layout(local_size_x = 64) in;
+#endif
 
 struct Orbit {
   vec4 position;  // w: unused
@@ -123,8 +139,26 @@ void main() {
 #else
   real3 state = real3(o.position.xyz);
 #endif
+#ifdef GROUP_CHOICE
+  uint lane = gl_LocalInvocationIndex;
+#endif
   for (int step = 0; step < uSteps; ++step) {
-#ifdef CHAOS_GAME
+#ifdef GROUP_CHOICE
+    if (lane % kGroupSize == 0u) {
+      psi();
+      groupChoice[lane / kGroupSize] = pickTransform(gChaosRandom);
+    }
+    if (lane == 0u) {
+      psi();
+      // An odd multiplier of at least 33 sends the 32 orbits of a group into every group.
+      dealing = uvec2(33u + 2u * (gChaosRandom % 112u), gChaosRandom >> 8);
+    }
+    memoryBarrierShared();
+    barrier();
+    vec3 q;
+    float drawnColour;
+    bool visible = chaosStepWith(groupChoice[lane / kGroupSize], o.chaos, o.chaosColour.x, q, drawnColour);
+#elif defined(CHAOS_GAME)
     vec3 q;
     float drawnColour;
     bool visible = chaosStep(o.chaos, o.chaosColour.x, o.chaosStream.y, q, drawnColour);
@@ -212,15 +246,33 @@ void main() {
 #ifndef CHAOS_GAME
       state = real3(o.position.xyz);
 #endif
-      continue;
-    }
+    } else {
 #ifndef CHAOS_GAME
-    state = next;
+      state = next;
 #endif
-    o.lastStep = vec4(d, 0.0);
-    o.previous = vec4(q, 0.0);
-    o.position = vec4(q, 0.0);
-    if (o.state.y < kAgeLimit) ++o.state.y;
+      o.lastStep = vec4(d, 0.0);
+      o.previous = vec4(q, 0.0);
+      o.position = vec4(q, 0.0);
+      if (o.state.y < kAgeLimit) ++o.state.y;
+    }
+#ifdef GROUP_CHOICE
+    // Deal the points: what travels is the orbit (state, colour, last point and step, age); the
+    // lane keeps its random streams and reseed count.
+    uint slot = (lane * dealing.x + dealing.y) & 255u;
+    dealtChaos[slot] = o.chaos;
+    dealtPosition[slot] = vec4(o.position.xyz, o.chaosColour.x);
+    dealtLastStep[slot] = vec4(o.lastStep.xyz, uintBitsToFloat(o.state.y));
+    memoryBarrierShared();
+    barrier();
+    o.chaos = dealtChaos[lane];
+    o.position = vec4(dealtPosition[lane].xyz, 0.0);
+    o.previous = o.position;
+    o.chaosColour.x = dealtPosition[lane].w;
+    o.lastStep = vec4(dealtLastStep[lane].xyz, 0.0);
+    o.state.y = floatBitsToUint(dealtLastStep[lane].w);
+    memoryBarrierShared();
+    barrier();
+#endif
   }
 #ifdef CHAOS_GAME
   o.chaosStream.x = gChaosRandom;
