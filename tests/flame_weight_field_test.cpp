@@ -221,7 +221,9 @@ TEST(WeightFieldEffects, JitterMovesThePointByTheStatedAmount) {
   EXPECT_GT(moved, 0.05) << "the jitter hardly moved a point: the test shows nothing";
 }
 
-// The parameter `amount` scales julian's weight alone by 1 + I · n for that point.
+// JWildfire's semantics: julian's power, an int in JWildfire, becomes FTOI(4 · (1 + I · n)) for
+// that point, and `amount` scales its weight by 1 + I · n: the point is the one a plain transform
+// with that power and weight makes (to rounding: the weight is folded in elsewhere).
 TEST(WeightFieldEffects, ParametersScaleByTheNoisePerPoint) {
   FlameXform x = plainTransform();
   x.variations = {{"linear", 0.3, {}}, {"julian", 0.8, {4.0, 1.0}}};
@@ -231,7 +233,7 @@ TEST(WeightFieldEffects, ParametersScaleByTheNoisePerPoint) {
   x.fieldFrequency = 2.3;
   x.fieldParam1Variation = "julian";
   x.fieldParam1Name = "power";
-  x.fieldParam1Intensity = 0.0;  // the power's modulation: not yet checked exactly
+  x.fieldParam1Intensity = 0.6;
   x.fieldParam2Variation = "julian";
   x.fieldParam2Name = "amount";
   x.fieldParam2Intensity = 0.5;
@@ -249,7 +251,132 @@ TEST(WeightFieldEffects, ParametersScaleByTheNoisePerPoint) {
     EXPECT_NEAR(field.x[i], plain.x[i], 1e-12) << i;
     EXPECT_NEAR(field.y[i], plain.y[i], 1e-12) << i;
   }
-  EXPECT_EQ(powers.size(), 1u);
+  EXPECT_GE(powers.size(), 2u) << "the field moved no lane's power: the test shows nothing";
+}
+
+namespace {
+
+// A field transform and a plain one beside it, so that the field's group has lanes of no
+// particular number (not a multiple of 4: the group's call is rounded up to whole vectors).
+struct TwoTransforms {
+  PatternLayer layer;
+  TwoTransforms(const FlameXform& withField) {
+    layer.kind = PatternKind::Flame;
+    FlameXform other;
+    other.weight = 0.7;
+    other.affine.m = {0.4, 0, 0, -0.3, 0, 0.4, 0, 0.2, 0, 0, 0.4, 0};
+    layer.flame.xforms = {withField, other};
+  }
+};
+
+constexpr std::size_t kOddLanes = 37;
+
+// lanes seeded as a layer's chaos game seeds them, and one step of them.
+struct SeededStep {
+  ChaosLanes before;
+  std::vector<double> x, y, z, c;
+};
+SeededStep seededStep(const ChaosGame& game) {
+  SeededStep s;
+  s.before.resize(kOddLanes);
+  SplitMix64 rng(5);
+  for (std::size_t i = 0; i < kOddLanes; ++i) game.seedLane(s.before, i, rng);
+  ChaosLanes lanes = s.before;
+  for (auto* v : {&s.x, &s.y, &s.z, &s.c}) v->assign(kOddLanes, 0.0);
+  game.step(lanes, s.x.data(), s.y.data(), s.z.data(), s.c.data(), kOddLanes);
+  return s;
+}
+
+}  // namespace
+
+// The per-point parameters exactly: lane for lane, the point is what linear and julian make when
+// run by hand on that lane alone, julian with the lane's own scaled parameters and random state,
+// each scaled by the lane's factors as the chaos game scales a term under a field (its weight
+// times 1 + amount · n, julian's times 1 + I · n for its `amount` too). Once for the power (an
+// int in JWildfire: rounded), once for dist (a real number).
+TEST(WeightFieldEffects, ParametersScaleLaneByLaneExactly) {
+  const VariationInfo& julian = variationOrThrow("julian");
+  for (const std::string parameter : {"power", "dist"}) {
+    SCOPED_TRACE(parameter);
+    FlameXform x = plainTransform();
+    x.variations = {{"linear", 0.3, {}}, {"julian", 0.8, {4.0, 1.0}}};
+    x.fieldKind = WeightFieldKind::Noise;
+    x.fieldNoise = WeightFieldNoise::Perlin;
+    x.fieldFrequency = 2.3;
+    x.fieldAmount = 0.4;
+    x.fieldParam1Variation = "julian";
+    x.fieldParam1Name = parameter;
+    x.fieldParam1Intensity = 0.6;
+    x.fieldParam2Variation = "julian";
+    x.fieldParam2Name = "amount";
+    x.fieldParam2Intensity = 0.5;
+    const TwoTransforms two(x);
+    const ChaosGame game(two.layer, "field");
+    const SeededStep step = seededStep(game);
+    std::size_t group = 0;
+    std::set<double> values;
+    for (std::size_t i = 0; i < kOddLanes; ++i) {
+      // The transform the lane draws, as the chaos game draws it.
+      std::uint32_t random = laneNext(step.before.random[i]);
+      if (game.pickTable()[random >> (32 - ChaosGame::pickBits())] != 0) continue;
+      ++group;
+      const glm::dvec3 t = x.affine.apply({step.before.x[i], step.before.y[i], step.before.z[i]});
+      const double n = weightFieldNoise(x, t.x, t.y, t.z);
+      std::vector<double> params = x.variations[1].params;
+      const std::size_t at = parameter == "power" ? 0 : 1;
+      params[at] *= 1.0 + 0.6 * n;
+      if (parameter == "power") params[at] = std::round(params[at]);
+      values.insert(params[at]);
+      double jx = 0.0, jy = 0.0, jz = 0.0;
+      VariationInput in;
+      in.x = in.tx = &t.x;
+      in.y = in.ty = &t.y;
+      in.z = in.tz = &t.z;
+      in.random = &random;
+      in.count = 1;
+      in.weight = 0.8;
+      in.params = params.data();
+      in.affine = x.affine.m.data();
+      double colour = 0.0;
+      in.colour = &colour;
+      julian.apply(in, &jx, &jy, &jz);
+      const double field = 1.0 + 0.4 * n;
+      const double julianFactor = field * (1.0 + n * 0.5);
+      EXPECT_EQ(step.x[i], field * (0.3 * t.x) + julianFactor * jx) << i;
+      EXPECT_EQ(step.y[i], field * (0.3 * t.y) + julianFactor * jy) << i;
+      EXPECT_EQ(step.z[i], field * (0.3 * t.z) + julianFactor * jz) << i;
+    }
+    EXPECT_NE(group % 4, 0u) << "the field's group is whole vectors: pick another seed";
+    EXPECT_GE(values.size(), 3u) << "the field hardly changed the parameter: the test shows nothing";
+  }
+}
+
+// A parameter the field drives at intensity 0 is no field at all; at 1e-9 julian's power rounds
+// to 4 on every lane, and the points are the plain transform's, bit for bit.
+TEST(WeightFieldEffects, ParametersTheFieldLeavesAloneChangeNothing) {
+  FlameXform plain = plainTransform();
+  plain.variations = {{"linear", 0.3, {}}, {"julian", 0.8, {4.0, 1.0}}};
+  const ChaosGame plainGame(TwoTransforms(plain).layer, "plain");
+  const SeededStep expected = seededStep(plainGame);
+  for (const double intensity : {0.0, 1e-9}) {
+    SCOPED_TRACE(intensity);
+    FlameXform x = plain;
+    x.fieldKind = WeightFieldKind::Noise;
+    x.fieldNoise = WeightFieldNoise::Perlin;
+    x.fieldFrequency = 2.3;
+    x.fieldParam1Variation = "julian";
+    x.fieldParam1Name = "power";
+    x.fieldParam1Intensity = intensity;
+    EXPECT_EQ(x.hasWeightField(), intensity != 0.0);
+    const ChaosGame game(TwoTransforms(x).layer, "field");
+    const SeededStep step = seededStep(game);
+    for (std::size_t i = 0; i < kOddLanes; ++i) {
+      EXPECT_EQ(step.x[i], expected.x[i]) << i;
+      EXPECT_EQ(step.y[i], expected.y[i]) << i;
+      EXPECT_EQ(step.z[i], expected.z[i]) << i;
+      EXPECT_EQ(step.c[i], expected.c[i]) << i;
+    }
+  }
 }
 
 namespace {

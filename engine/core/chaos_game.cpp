@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <numbers>
 #include <utility>
@@ -230,7 +231,7 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
           const auto at = static_cast<std::size_t>(index);
           if (std::none_of(added.fieldParams.begin(), added.fieldParams.end(),
                            [&](const Term::FieldParam& q) { return q.index == at; }))
-            added.fieldParams.push_back({at, p.intensity, info.params[at].integer});
+            added.fieldParams.push_back({at, p.intensity, info.params[at].integer || info.params[at].jwildfireInt});
         }
       }
       c.hasNormalTerms = c.hasNormalTerms || stage == VariationStage::Normal;
@@ -422,17 +423,33 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
       term.apply(in, rx, ry, rz);
       return;
     }
-    // Parameters the field scales differ from lane to lane: each lane on its own, with its own
-    // parameters (JWildfire sets them, re-initialises the variation, and restores them).
+    // Parameters the field scales differ from lane to lane (JWildfire sets them, re-initialises the
+    // variation, and restores them): lane j's at params[j · size, (j + 1) · size).
+    const std::size_t size = term.params.size();
     std::vector<double>& params = lanes.fieldParams;
+    params.resize(groupSize * size);
+    bool alike = true;
     for (std::size_t j = 0; j < groupSize; ++j) {
-      params = term.params;
+      double* const own = params.data() + j * size;
+      std::copy(term.params.begin(), term.params.end(), own);
       for (const Term::FieldParam& p : term.fieldParams) {
-        const double scaled = params[p.index] * (1.0 + noise[j] * p.intensity);
-        params[p.index] = p.integer ? std::round(scaled) : scaled;  // JWildfire's FTOI for an int parameter
+        const double scaled = own[p.index] * (1.0 + noise[j] * p.intensity);
+        own[p.index] = p.integer ? std::round(scaled) : scaled;  // JWildfire's FTOI for an int parameter
       }
+      alike = alike && std::memcmp(own, params.data(), size * sizeof(double)) == 0;
+    }
+    if (alike && groupSize > 0) {
+      // Every lane's the same (a whole number the field moved past no rounding step): the group
+      // in one call, as without the field. Lane by lane, a variation computes in libm's scalar
+      // functions where the group's call uses libmvec's vector ones (vector_math.h), whose results
+      // differ in the last bits; this way the same parameters give the same points, and the speed.
+      in.params = params.data();
+      term.apply(in, rx, ry, rz);
+      return;
+    }
+    for (std::size_t j = 0; j < groupSize; ++j) {
       VariationInput one = in;
-      one.params = params.data();
+      one.params = params.data() + j * size;
       one.count = 1;
       one.x = x + j;
       one.y = y + j;

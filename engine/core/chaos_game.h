@@ -40,7 +40,7 @@ struct ChaosLanes {
   std::vector<double> gc, gs;
   std::vector<double> field;        // 1 + amount · noise: a weighting field's factor of the variation weights
   std::vector<double> fieldNoise;   // the weighting field's noise n itself (colour and parameters read it)
-  std::vector<double> fieldParams;  // scratch: one lane's parameters as the field changes them
+  std::vector<double> fieldParams;  // scratch: each lane's parameters of a term as the field changes them
   std::vector<std::uint32_t> groupRandom;
   void resize(std::size_t lanes);
   std::size_t size() const { return x.size(); }
@@ -89,7 +89,8 @@ class ChaosGame {
     VariationInfo::Replaces replaces = VariationInfo::Replaces::Nothing;  // as an ordinary term
     bool readsSum = false;                                                // as an ordinary term
     // What the transform's weighting field does to this term besides `field`: parameters it
-    // scales per point (a count rounded), and its own weight (the field's `amount` parameter).
+    // scales per point (rounded where it is a count, or an int in JWildfire), and its own weight (the
+    // field's `amount` parameter).
     struct FieldParam {
       std::size_t index = 0;
       double intensity = 0.0;

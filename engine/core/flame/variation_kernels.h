@@ -48,6 +48,10 @@ class CatalogueAdder {
   static VariationParam count(std::string name, double value, double low, double high) {
     return VariationParam{std::move(name), value, low, high, true};
   }
+  // A real number here (flam3's), an int in JWildfire (VariationParam::jwildfireInt).
+  static VariationParam jwildfireInt(std::string name, double value, double low, double high) {
+    return VariationParam{std::move(name), value, low, high, false, true};
+  }
 
  private:
   std::vector<VariationInfo>& catalogue_;

@@ -90,6 +90,10 @@ struct VariationParam {
   double sliderMin = 0.0;
   double sliderMax = 1.0;
   bool integer = false;  // a count (sides, power, slices): rounded where used, 0 taken as 1
+  // JWildfire holds it as an int where voxflame takes flam3's real number (julian's power): used
+  // as it is, but a weighting field's scaled value of it is rounded (JWildfire's Tools.FTOI), as
+  // that of an `integer` one is.
+  bool jwildfireInt = false;
 };
 
 struct VariationInfo {

@@ -548,6 +548,7 @@ void variation_kernels::addFlam3ClassicVariations(std::vector<VariationInfo>& ca
   [[maybe_unused]] constexpr bool k2D = CatalogueAdder::k2D, k3D = CatalogueAdder::k3D,
                                   kRandom = CatalogueAdder::kRandom, kFixed = CatalogueAdder::kFixed;
   [[maybe_unused]] const auto count = &CatalogueAdder::count;
+  const auto jwildfireInt = &CatalogueAdder::jwildfireInt;
 
   // flam3's classics (variations.c), in flam3's order.
   add("linear", "(x, y, z)", k2D, kFixed, &linear);
@@ -594,9 +595,9 @@ void variation_kernels::addFlam3ClassicVariations(std::vector<VariationInfo>& ca
       {{"angle", 0.5, -1.0, 1.0}, {"dist", 2.0, 0.5, 5.0}});
   add("noise", "Ψ₂ (x cos 2πΨ₁, y sin 2πΨ₁), z", k2D, kRandom, &noise);
   add("julian", "r^(dist/power)·(cos α, sin α), z; α = (φ + 2πk)/power, k = trunc(|power|·Ψ)", k2D, kRandom, &julian,
-      {{"power", 4.0, -12.0, 12.0}, {"dist", 1.0, -3.0, 3.0}});
+      {jwildfireInt("power", 4.0, -12.0, 12.0), {"dist", 1.0, -3.0, 3.0}});
   add("juliascope", "r^(dist/power)·(cos α, sin α), z; α = (2πk ± φ)/power, k = trunc(|power|·Ψ), − for odd k", k2D,
-      kRandom, &juliascope, {{"power", 4.0, -12.0, 12.0}, {"dist", 1.0, -3.0, 3.0}});
+      kRandom, &juliascope, {jwildfireInt("power", 4.0, -12.0, 12.0), {"dist", 1.0, -3.0, 3.0}});
   add("blur", "Ψ₂ (cos 2πΨ₁, sin 2πΨ₁), z", k2D, kRandom, &blur);
   add("gaussian_blur", "G (cos 2πΨ, sin 2πΨ), z; G = Ψ + Ψ + Ψ + Ψ − 2", k2D, kRandom, &gaussianBlur);
   add("radial_blur",
