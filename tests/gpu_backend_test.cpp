@@ -8,6 +8,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -23,7 +24,10 @@
 #include "core/inside_mask.h"
 #include "core/mesh.h"
 #include "core/refinement/accumulator.h"
+#include "core/flame/variations.h"
+#include "core/random.h"
 #include "core/scene_io.h"
+#include "gl/flame_kernel.h"
 #include "gl/gpu_accumulator.h"
 #include "gl/headless_context.h"
 #include "gl/renderer_kind.h"
@@ -146,6 +150,111 @@ TEST(GpuBackend, EveryGpuAttractorStepsAsTheCatalogueDoes) {
     }
   }
   EXPECT_EQ(checked, static_cast<int>(2 * core::attractorCatalogue().size()));
+}
+
+// Every variation of flame_variations.glsl against the catalogue's kernel of the same name, at
+// points spread over [-2, 2]³ with the parameters' defaults (and, for those that read the
+// transform's pre-affine, a sheared one): the same random draws (one xorshift32 stream per point,
+// as the CPU's lanes), float against double. A variation with a discontinuity (a floor, a modulo,
+// a branch on a sign) may land on the other side of it at a few points; everywhere else it must
+// agree to float's precision.
+TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
+  if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
+  gl::HeadlessContext context;
+  constexpr std::size_t kPoints = 512;
+  std::vector<float> input(kPoints * 4);
+  std::vector<std::uint32_t> streams(kPoints);
+  core::SplitMix64 rng(7);
+  for (std::size_t i = 0; i < kPoints; ++i) {
+    for (int a = 0; a < 3; ++a) input[4 * i + static_cast<std::size_t>(a)] = static_cast<float>(2.0 * rng.symmetric());
+    streams[i] = static_cast<std::uint32_t>(rng.next() >> 32) | 1u;
+  }
+  const std::array<double, 12> affine{0.9, 0.3, 0.0, 0.2, -0.25, 1.1, 0.0, -0.4, 0.0, 0.0, 1.0, 0.0};
+  int checked = 0;
+  for (const std::string& name : gl::gpuFlameVariations()) {
+    SCOPED_TRACE(name);
+    const core::VariationInfo* info = core::findVariation(name);
+    ASSERT_NE(info, nullptr);
+    const std::vector<double> params = info->defaultParams();
+    const double weight = 0.8;
+    std::vector<float> data(affine.begin(), affine.end());
+    data.push_back(static_cast<float>(weight));
+    for (double v : params) data.push_back(static_cast<float>(v));
+    const std::string text = "#version 430 core\n" + gl::embeddedShader("flame_variations.glsl").text +
+                             "\nlayout(local_size_x = 64) in;\n"
+                             "layout(std430, binding = 0) buffer Points { vec4 points[]; };\n"
+                             "layout(std430, binding = 1) buffer Streams { uint streams[]; };\n"
+                             "void main() {\n"
+                             "  uint i = gl_GlobalInvocationID.x;\n"
+                             "  gChaosRandom = streams[i];\n"
+                             "  points[i].xyz = V_" +
+                             name +
+                             "(points[i].xyz, flameData[12], 13, 0);\n"
+                             "  streams[i] = gChaosRandom;\n"
+                             "}\n";
+    const gl::ShaderProgram program(gl::ShaderSource{"flame_variations.glsl (" + name + ")", text});
+    std::vector<float> points = input;
+    std::vector<std::uint32_t> gpuStreams = streams;
+    std::array<GLuint, 3> buffers{};
+    glGenBuffers(3, buffers.data());
+    const auto upload = [](GLuint buffer, GLuint binding, std::size_t bytes, const void* values) {
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), values, GL_DYNAMIC_DRAW);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
+    };
+    upload(buffers[0], 0, points.size() * sizeof(float), points.data());
+    upload(buffers[1], 1, gpuStreams.size() * sizeof(std::uint32_t), gpuStreams.data());
+    upload(buffers[2], 8, data.size() * sizeof(float), data.data());
+    glUseProgram(program.id());
+    glDispatchCompute(kPoints / 64, 1, 1);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[0]);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(points.size() * sizeof(float)),
+                       points.data());
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[1]);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(gpuStreams.size() * sizeof(std::uint32_t)),
+                       gpuStreams.data());
+    glDeleteBuffers(3, buffers.data());
+
+    // The catalogue's kernel on the same points (as doubles of the same floats) and streams.
+    std::vector<double> x(kPoints), y(kPoints), z(kPoints), ox(kPoints, 0.0), oy(kPoints, 0.0), oz(kPoints, 0.0);
+    std::vector<double> colour(kPoints, 0.5);
+    for (std::size_t i = 0; i < kPoints; ++i) {
+      x[i] = input[4 * i];
+      y[i] = input[4 * i + 1];
+      z[i] = input[4 * i + 2];
+    }
+    std::vector<std::uint32_t> cpuStreams = streams;
+    core::VariationInput in;
+    in.x = in.tx = x.data();
+    in.y = in.ty = y.data();
+    in.z = in.tz = z.data();
+    in.random = cpuStreams.data();
+    in.count = kPoints;
+    in.weight = weight;
+    in.params = params.data();
+    in.affine = affine.data();
+    in.colour = colour.data();
+    info->apply(in, ox.data(), oy.data(), oz.data());
+    std::size_t compared = 0, apart = 0;
+    for (std::size_t i = 0; i < kPoints; ++i) {
+      const double expected[3] = {ox[i], oy[i], oz[i]};
+      if (!std::isfinite(expected[0] + expected[1] + expected[2])) continue;
+      if (std::max({std::abs(expected[0]), std::abs(expected[1]), std::abs(expected[2])}) > 1e3) continue;
+      ++compared;
+      EXPECT_EQ(gpuStreams[i], cpuStreams[i]) << "point " << i << ": another number of random draws";
+      bool near = true;
+      for (int a = 0; a < 3; ++a) {
+        const double tolerance = 1e-3 * (1.0 + std::abs(expected[a]));
+        near = near && std::abs(points[4 * i + static_cast<std::size_t>(a)] - expected[a]) <= tolerance;
+      }
+      if (!near) ++apart;
+    }
+    EXPECT_GE(compared, kPoints / 2) << "too few points give finite values to compare";
+    EXPECT_LE(apart, compared / 50) << apart << " of " << compared << " points apart";
+    ++checked;
+  }
+  EXPECT_EQ(checked, static_cast<int>(gl::gpuFlameVariations().size()));
 }
 
 TEST(GpuBackend, AgreesWithTheCpuOnEveryShippedPreset) {
