@@ -17,15 +17,18 @@ namespace {
 
 // What flame_variations.glsl defines, as V_<name>.
 const std::vector<std::string> kGpuVariations = {
-    "linear",        "sinusoidal",  "spherical",   "swirl",      "horseshoe",   "polar",      "handkerchief",
-    "heart",         "disc",        "spiral",      "hyperbolic", "diamond",     "ex",         "julia",
-    "bent",          "waves",       "fisheye",     "popcorn",    "exponential", "power",      "cosine",
-    "rings",         "fan",         "blob",        "pdj",        "fan2",        "rings2",     "eyefish",
-    "bubble",        "cylinder",    "perspective", "noise",      "julian",      "juliascope", "blur",
-    "gaussian_blur", "radial_blur", "pie",         "ngon",       "curl",        "rectangles", "linear3D",
-    "spherical3D",   "julia3D",     "julia3Dz",    "bubble3D",   "hemisphere",  "cylinder3D", "sinusoidal3D",
-    "swirl3D",       "curl3D",      "pie3D",       "blur3D",     "zblur",       "zscale",     "ztranslate",
-    "zcone"};
+    "linear", "sinusoidal", "spherical", "swirl", "horseshoe", "polar", "handkerchief", "heart", "disc", "spiral",
+    "hyperbolic", "diamond", "ex", "julia", "bent", "waves", "fisheye", "popcorn", "exponential", "power", "cosine",
+    "rings", "fan", "blob", "pdj", "fan2", "rings2", "eyefish", "bubble", "cylinder", "perspective", "noise", "julian",
+    "juliascope", "blur", "gaussian_blur", "radial_blur", "pie", "ngon", "curl", "rectangles", "linear3D",
+    "spherical3D", "julia3D", "julia3Dz", "bubble3D", "hemisphere", "cylinder3D", "sinusoidal3D", "swirl3D", "curl3D",
+    "pie3D", "blur3D", "zblur", "zscale", "ztranslate", "zcone",
+    // the rest of flam3's (variations_flam3.cpp), and flatten (a stage's z set to 0)
+    "flatten", "arch", "tangent", "square", "rays", "blade", "secant2", "twintrian", "cross", "disc2", "super_shape",
+    "flower", "conic", "parabola", "bent2", "bipolar", "boarders", "butterfly", "cell", "cpow", "curve", "edisc",
+    "elliptic", "escher", "foci", "lazysusan", "loonie", "modulus", "oscilloscope", "polar2", "popcorn2", "scry",
+    "separation", "split", "splits", "stripes", "wedge", "wedge_julia", "wedge_sph", "whorl", "waves2", "exp", "log",
+    "sin", "cos", "tan", "sec", "csc", "cot", "sinh", "cosh", "tanh", "sech", "csch", "coth", "auger"};
 
 bool gpuHasVariation(std::string_view name) {
   return std::find(kGpuVariations.begin(), kGpuVariations.end(), name) != kGpuVariations.end();
@@ -40,8 +43,7 @@ std::string xformUnsupported(const core::FlameXform& xform) {
     if (!info) return "variation '" + term.name + "'";
     if (!gpuHasVariation(info->name)) return "variation '" + term.name + "'";
     // None of the GPU's variations has these, but a future one might: say so rather than draw wrong.
-    if (info->directColour || info->readsSum || info->replaces != core::VariationInfo::Replaces::Nothing ||
-        info->name == "flatten")
+    if (info->directColour || info->readsSum || info->replaces != core::VariationInfo::Replaces::Nothing)
       return "variation '" + term.name + "'";
   }
   return {};
@@ -95,11 +97,17 @@ class Generator {
       const std::string op = t.info->additive ? " += " : " = ";
       if (t.info->mapsXY) code += std::string("    ") + point + ".xy" + op + "r.xy;\n";
       if (t.info->threeD) code += std::string("    ") + point + ".z" + op + "r.z;\n";
+      if (t.info->name == "flatten") code += std::string("    ") + point + ".z = 0.0;\n";
       return code + "  }\n";
     };
     for (const Term& t : stages[0]) s += combine(t, "t");
     s += stages[1].empty() ? "  vec3 o = t;\n" : "  vec3 o = vec3(0.0);\n";
-    for (const Term& t : stages[1]) s += "  o += " + call(t, "t") + ";\n";
+    bool flatten = false;
+    for (const Term& t : stages[1]) {
+      s += "  o += " + call(t, "t") + ";\n";
+      flatten = flatten || t.info->name == "flatten";
+    }
+    if (flatten) s += "  o.z = 0.0;\n";  // as core's applyGroup: the sum's z, after every ordinary term
     for (const Term& t : stages[2]) s += combine(t, "o");
     if (xform.hasPost && !xform.post.isIdentity()) {
       const int post = put(xform.post.m.data(), 12);
