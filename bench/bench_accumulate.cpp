@@ -79,6 +79,17 @@ std::optional<core::PatternLayer> benchLayer(const char* id) {
   return layer;
 }
 
+// A flame layer of `genome`, coloured by its colour index along the benchmarks' two-stop gradient.
+core::PatternLayer benchFlameLayer(const core::FlameGenome& genome) {
+  core::PatternLayer layer;
+  layer.kind = core::PatternKind::Flame;
+  layer.attractor.clear();
+  layer.flame = genome;
+  layer.color.mode = core::ColorMode::Index;
+  layer.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
+  return layer;
+}
+
 // The heaviest flame of the corpus (most variation terms, then transforms) that imports whole and
 // the GPU backend runs: the flame the GPU's goal names, measured on both backends.
 std::optional<std::pair<std::string, core::PatternLayer>> heaviestGpuCorpusFlame() {
@@ -97,12 +108,7 @@ std::optional<std::pair<std::string, core::PatternLayer>> heaviestGpuCorpusFlame
       try {
         const core::ImportedFlame flame = core::loadFlameFile(file, import).flame;
         if (!flame.leftOut.empty() || !flame.otherLayers.empty()) continue;
-        core::PatternLayer layer;
-        layer.kind = core::PatternKind::Flame;
-        layer.attractor.clear();
-        layer.flame = flame.genome;
-        layer.color.mode = core::ColorMode::Index;
-        layer.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
+        core::PatternLayer layer = benchFlameLayer(flame.genome);
         if (!gl::gpuSupports({layer})) continue;
         std::size_t terms = flame.genome.hasFinal ? flame.genome.finalXform.variations.size() : 0;
         for (const core::FlameXform& x : flame.genome.xforms) terms += x.variations.size();
@@ -168,12 +174,7 @@ void benchAccumulate(const BenchOptions& options) {
 // spherical and sinusoidal terms, colour index) and a quaternion Julia set, on one thread and on all.
 void benchAccumulateChaos(const BenchOptions& options, const std::shared_ptr<const core::InsideMask>& mask,
                           int allThreads) {
-  core::PatternLayer flame;
-  flame.kind = core::PatternKind::Flame;
-  flame.attractor.clear();
-  flame.flame = core::defaultFlame();
-  flame.color.mode = core::ColorMode::Index;
-  flame.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
+  const core::PatternLayer flame = benchFlameLayer(core::defaultFlame());
   core::PatternLayer julia = flame;
   julia.kind = core::PatternKind::QuaternionJulia;
   std::vector<std::pair<std::string, core::PatternLayer>> patterns{{"flame (default, 3 transforms)", flame},
@@ -217,13 +218,7 @@ void benchAccumulateGpu(const BenchOptions& options) {
     std::vector<std::pair<std::string, core::PatternLayer>> patterns;
     for (const char* id : {"lorenz84", "lorenz", "pickover", "polynomial_a"})
       if (const std::optional<core::PatternLayer> layer = benchLayer(id)) patterns.emplace_back(id, *layer);
-    core::PatternLayer flame;
-    flame.kind = core::PatternKind::Flame;
-    flame.attractor.clear();
-    flame.flame = core::defaultFlame();
-    flame.color.mode = core::ColorMode::Index;
-    flame.color.gradient = {{0.0f, {0.1f, 0.2f, 1.0f}}, {1.0f, {1.0f, 0.6f, 0.1f}}};
-    patterns.emplace_back("flame (default, 3 transforms)", flame);
+    patterns.emplace_back("flame (default, 3 transforms)", benchFlameLayer(core::defaultFlame()));
     if (auto heaviest = heaviestGpuCorpusFlame())
       patterns.emplace_back("heaviest corpus flame the GPU runs: " + heaviest->first, heaviest->second);
     const bool defaultGroupChoice = accumulator.groupChoice();
