@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/vec3.hpp>
 
 #include "core/flame/variations.h"
 #include "core/flame/xml.h"

@@ -14,7 +14,6 @@
 #include "core/chaos_game.h"
 #include "core/flame/variations.h"
 #include "core/flame/xml.h"
-#include "core/keyframes.h"
 #include "core/random.h"
 #include "core/scene.h"
 #include "core/scene_io.h"
