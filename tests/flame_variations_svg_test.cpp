@@ -218,6 +218,12 @@ TEST(SvgWf, AFlameWithSvgWfImportsItsDocumentAndKeepsItInTheScene) {
       "coefs=\"1 0 0 1 0 0\"/></flame></flames>";
   const core::ImportedFlame oddFlame = core::readFlameXml(odd, "odd.flame").flame;
   EXPECT_NE(std::find(oddFlame.leftOut.begin(), oddFlame.leftOut.end(), "svg_wf_svg"), oddFlame.leftOut.end());
+  // Bytes that are not UTF-8 (a Latin-1 é in a comment) are read as Latin-1, so the scene can be saved.
+  const std::string latin1 = "<flames><flame name=\"svg\"><xform weight=\"1\" svg_wf=\"1\" svg_wf_svg=\"" +
+                             hexOf("<!-- caf\xE9 -->" + kSquare) + "\" coefs=\"1 0 0 1 0 0\"/></flame></flames>";
+  const core::ImportedFlame latin1Flame = core::readFlameXml(latin1, "latin1.flame").flame;
+  EXPECT_EQ(latin1Flame.genome.xforms.at(0).variations.at(0).texts.at(0), "<!-- caf\u00E9 -->" + kSquare);
+  EXPECT_NO_THROW(core::sceneToJson(core::sceneFromImportedFlame(latin1Flame, core::defaultScene())));
   // A document that paints nothing is reported too.
   const std::string empty = "<flames><flame name=\"svg\"><xform weight=\"1\" svg_wf=\"1\" svg_wf_svg=\"" +
                             hexOf("<svg width=\"10\" height=\"10\"/>") + "\" coefs=\"1 0 0 1 0 0\"/></flame></flames>";

@@ -767,7 +767,11 @@ class FlameReader {
         if (param == byLowerName.end()) continue;
         consumed.insert(param->second.first);
         if (std::optional<std::string> text = jwildfireResourceText(param->second.second.value())) {
-          term.texts[i] = std::move(*text);
+          // Scenes are JSON, which holds UTF-8 only: other bytes are read as Latin-1 (as elsewhere here).
+          bool changed = false;
+          term.texts[i] = asUtf8(*text, changed);
+          if (changed)
+            warn(context + " gives " + param->second.first + " text that is not UTF-8; it was read as Latin-1");
         } else {
           lose(withoutCopyMark(name) + "_" + info->textParams[i].name);
           warn(context + " gives " + param->second.first +
@@ -778,7 +782,8 @@ class FlameReader {
       if (info->name == "svg_wf" && term.weight != 0.0) {
         const SvgRaster raster =
             rasteriseSvg(term.texts.at(0), term.params.at(1), std::round(term.params.at(3)) != 0.0);
-        for (const std::string& problem : raster.problems) warn(context + " has " + name + " whose SVG has " + problem);
+        for (const std::string& problem : raster.problems)
+          warn(context + " has " + name + " whose SVG voxflame cannot draw in full: " + problem);
         if (raster.column.size() < 2) {
           lose("picture of " + withoutCopyMark(name));
           warn(context + " has " + name +
