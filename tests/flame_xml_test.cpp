@@ -408,8 +408,8 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
     else if (info.name == "truchet" || info.name == "recurrenceplot" || info.name == "spirograph3D" ||
              info.name == "inversion")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"direct colour of " + info.name}));
-    else if (info.name == "smartcrop")  // static −1 reads the transform's state, which is not kept
-      EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"static or cropmode 2 of smartcrop"}));
+    else if (info.name == "svg_wf")  // JWildfire colours its points by the SVG's colours
+      EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour of svg_wf"}));
     else
       EXPECT_TRUE(flame.warnings.empty()) << info.name << ": " << flame.warnings.front();
   }

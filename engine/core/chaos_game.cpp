@@ -174,6 +174,7 @@ void ChaosLanes::resize(std::size_t lanes) {
   fieldNoise.assign(lanes, 0.0);
   random.assign(lanes, 1u);
   groupRandom.assign(lanes, 1u);
+  termState.clear();
   visible.assign(lanes, 1);
   choice.assign(lanes, 0);
   previous.assign(lanes, 0);
@@ -214,6 +215,8 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
                          info.readsSum,
                          {},
                          0.0});
+      c.terms.back().texts = term.texts.size() == info.textParams.size() ? term.texts : info.defaultTexts();
+      c.terms.back().laneState = info.laneState;
       if (c.hasField) {
         // JWildfire's Variation.addWeightingFieldParam: every term of the named variation, the
         // first entry of a parameter name counting.
@@ -282,6 +285,15 @@ ChaosGame::ChaosGame(const PatternLayer& layer, const std::string& where) {
     final_ = compile(layer.flame.finalXform);
     for (const FlameXform& chained : layer.flame.chainedFinals) chainedFinals_.push_back(compile(chained));
   }
+  // Each term that keeps per-lane memory gets its own array of it.
+  std::size_t slots = 0;
+  const auto assignSlots = [&](Compiled& c) {
+    for (Term& term : c.terms)
+      if (term.laneState > 0) term.stateSlot = slots++;
+  };
+  for (Compiled& x : xforms_) assignSlots(x);
+  if (hasFinal_) assignSlots(final_);
+  for (Compiled& x : chainedFinals_) assignSlots(x);
   for (const Compiled& x : xforms_) hidesPoints_ = hidesPoints_ || x.opacity < 1.0;
   hidesPoints_ = hidesPoints_ || (hasFinal_ && final_.opacity < 1.0);
   for (const Compiled& x : chainedFinals_) hidesPoints_ = hidesPoints_ || x.opacity < 1.0;
@@ -366,7 +378,8 @@ void ChaosGame::colourByField(const Compiled& xform, const ChaosLanes& lanes, co
   for (std::size_t j = 0; j < count; ++j) colour[order[j]] *= 1.0 + xform.fieldColor * noise[j];
 }
 
-void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const {
+void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, const std::uint32_t* group,
+                           std::size_t count) const {
   // Whole vectors only: the lanes past the group (to the next multiple of 4) are worked on too and
   // never read back, so no lane falls to a loop's scalar tail, where a sin or atan2 costs four
   // times what it costs in a vector call (vector_math.h). A group of a 20-transform flame has about
@@ -415,6 +428,19 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
     in.weight = term.weight;
     in.params = term.params.data();
     in.stage = term.stage;
+    in.texts = term.texts.empty() ? nullptr : term.texts.data();
+    in.count = count;
+    in.state = nullptr;
+    in.lanes = nullptr;
+    if (term.laneState > 0) {
+      if (lanes.termState.size() <= term.stateSlot) lanes.termState.resize(term.stateSlot + 1);
+      std::vector<double>& memory = lanes.termState[term.stateSlot];
+      if (memory.size() != lanes.size() * term.laneState) memory.assign(lanes.size() * term.laneState, 0.0);
+      in.state = memory.data();
+      in.lanes = group;
+      // The lanes past the group that the others work on belong to other groups: this one's own only.
+      in.count = groupSize;
+    }
     // An ordinary term maps t itself, which crob may move for the terms after it.
     const bool ordinary = term.stage == VariationStage::Normal;
     in.movableX = ordinary ? tx : nullptr;
@@ -459,6 +485,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
       one.tz = tz + j;
       one.random = in.random + j;
       one.colour = in.colour + j;
+      one.lanes = in.lanes ? in.lanes + j : nullptr;
       one.movableX = ordinary ? tx + j : nullptr;
       one.movableY = ordinary ? ty + j : nullptr;
       term.apply(one, rx + j, ry + j, rz + j);
@@ -608,7 +635,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
                  lanes.groupRandom.data());
     if (xf.directColour) startDirectColour(xf, lanes, group, n);
     if (xf.hasField) fillField(xf, group, n, x, y, z, lanes);
-    applyGroup(xf, lanes, n);
+    applyGroup(xf, lanes, group, n);
     scatterGroup(group, n, lanes.ox.data(), lanes.oy.data(), lanes.oz.data(), lanes.groupRandom.data(), x, y, z, color,
                  random, visible, 1.0 - xf.colorSpeed, xf.colorSpeed * xf.color, xf.opacity);
     if (xf.directColour) {
@@ -632,7 +659,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
                lanes.groupRandom.data());
   if (final_.directColour) startDirectColour(final_, lanes, order, count);
   if (final_.hasField) fillField(final_, order, count, x, y, z, lanes);
-  applyGroup(final_, lanes, count);
+  applyGroup(final_, lanes, order, count);
   if (final_.directColour) finishDirectColour(final_, lanes, count);
   const double keep = 1.0 - final_.colorSpeed, pull = final_.colorSpeed * final_.color;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
@@ -655,7 +682,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     if (chained.directColour)  // as startDirectColour, from the colour the final before it drew
       for (std::size_t i = 0; i < count; ++i) lanes.gs[i] = lanes.gc[i] = chainedKeep * outColor[i] + chainedPull;
     if (chained.hasField) fillField(chained, order, count, outX, outY, outZ, lanes);
-    applyGroup(chained, lanes, count);
+    applyGroup(chained, lanes, order, count);
     if (chained.directColour) finishDirectColour(chained, lanes, count);
     for (std::size_t i = 0; i < count; ++i) {
       outX[i] = std::isnan(outX[i]) ? kNaN : lanes.ox[i];

@@ -42,6 +42,9 @@ struct ChaosLanes {
   std::vector<double> fieldNoise;   // the weighting field's noise n itself (colour and parameters read it)
   std::vector<double> fieldParams;  // scratch: each lane's parameters of a term as the field changes them
   std::vector<std::uint32_t> groupRandom;
+  // Memory of the variations that keep some per lane (VariationInfo::laneState), one array per such
+  // term of the game (Term::stateSlot), laneState doubles per lane; made on first use, 0 at first.
+  std::vector<std::vector<double>> termState;
   void resize(std::size_t lanes);
   std::size_t size() const { return x.size(); }
 };
@@ -98,6 +101,9 @@ class ChaosGame {
     };
     std::vector<FieldParam> fieldParams;
     double fieldWeight = 0.0;
+    std::vector<std::string> texts{};  // its text parameters, all of them
+    std::size_t laneState = 0;         // VariationInfo::laneState
+    std::size_t stateSlot = 0;         // its array in ChaosLanes::termState when laneState > 0
   };
   struct Compiled {
     std::array<double, 12> affine{};
@@ -123,8 +129,9 @@ class ChaosGame {
   static void colourByField(const Compiled& xform, const ChaosLanes& lanes, const std::uint32_t* order,
                             std::size_t count, double* colour);
   static Compiled compile(const FlameXform& xform);
-  // Runs one compiled transform's affine map, variations and post map on a contiguous group.
-  void applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t count) const;
+  // Runs one compiled transform's affine map, variations and post map on a contiguous group, whose
+  // entry j is lane group[j] (what variations that keep per-lane memory index it by).
+  void applyGroup(const Compiled& xform, ChaosLanes& lanes, const std::uint32_t* group, std::size_t count) const;
   // A direct-colour transform's colour: lanes.gc as the colour blend of `color` makes it (and gs a copy)
   // before applyGroup; after it, gc blended back towards gs by directColor.
   static void startDirectColour(const Compiled& xform, ChaosLanes& lanes, const std::uint32_t* group, std::size_t n);

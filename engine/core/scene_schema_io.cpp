@@ -264,6 +264,12 @@ VariationTerm readVariation(const json& value, const std::string& source, const 
   for (std::size_t i = 0; i < info.params.size(); ++i)
     term.params[i] = reader.number(info.params[i].name, info.params[i].defaultValue, -kFlameCoefficientLimit,
                                    kFlameCoefficientLimit);
+  // Text parameters (svg_wf's SVG): kept only when the variation has them.
+  if (!info.textParams.empty()) {
+    term.texts = info.defaultTexts();
+    for (std::size_t i = 0; i < info.textParams.size(); ++i)
+      term.texts[i] = reader.string(info.textParams[i].name, info.textParams[i].defaultValue);
+  }
   reader.finish();
   return term;
 }
@@ -430,6 +436,8 @@ json xformJson(const FlameXform& xform, bool isFinal, bool complete) {
     const VariationInfo& info = variationOrThrow(term.name);
     for (std::size_t i = 0; i < info.params.size() && i < term.params.size(); ++i)
       v[info.params[i].name] = term.params[i];
+    for (std::size_t i = 0; i < info.textParams.size() && i < term.texts.size(); ++i)
+      v[info.textParams[i].name] = term.texts[i];
     variations.push_back(v);
   }
   out["variations"] = variations;

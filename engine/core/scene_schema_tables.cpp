@@ -288,8 +288,8 @@ const XF kXformFields[] = {
      .rangeText = "each −10⁶–10⁶",
      .defaultText = "identity"},
     {.key = "variations",
-     .help = "each `{\"name\": N, \"weight\": W, PARAM: V, ...}`; parameters left out take their defaults; none "
-             "acts as linear",
+     .help = "each `{\"name\": N, \"weight\": W, PARAM: V, ...}`; parameters left out take their defaults; V is "
+             "a number, or text for a text parameter (svg_wf's `svg`); none acts as linear",
      .affects = kPattern,
      .typeText = "array",
      .rangeText = "0–16",

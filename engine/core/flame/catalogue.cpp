@@ -45,6 +45,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addFractorium3DSumVariations(c);
   variation_kernels::addJwildfireCorpusVariations(c);
   variation_kernels::addJwildfireHoldoutVariations(c);
+  variation_kernels::addSvgVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")
@@ -64,6 +65,19 @@ std::vector<double> VariationInfo::defaultParams() const {
   std::vector<double> values;
   values.reserve(params.size());
   for (const auto& p : params) values.push_back(p.defaultValue);
+  return values;
+}
+
+int VariationInfo::textParamIndex(std::string_view paramName) const {
+  for (std::size_t i = 0; i < textParams.size(); ++i)
+    if (textParams[i].name == paramName) return static_cast<int>(i);
+  return -1;
+}
+
+std::vector<std::string> VariationInfo::defaultTexts() const {
+  std::vector<std::string> values;
+  values.reserve(textParams.size());
+  for (const auto& p : textParams) values.push_back(p.defaultValue);
   return values;
 }
 

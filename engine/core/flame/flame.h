@@ -84,6 +84,7 @@ struct VariationTerm {
   std::string name;
   double weight = 1.0;
   std::vector<double> params;
+  std::vector<std::string> texts{};  // its text parameters (catalogue order); empty: the defaults
   bool operator==(const VariationTerm&) const = default;
 };
 

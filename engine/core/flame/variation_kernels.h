@@ -180,6 +180,8 @@ void addFractorium3DSumVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireCorpusVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire variations that published JWildfire flames use (variations_jwildfire_holdout.cpp).
 void addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire's svg_wf, points of an SVG drawing (variations_svg.cpp).
+void addSvgVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -79,6 +79,15 @@ struct VariationInput {
   // variation that writes it reads x and y through unrestricted pointers, as they alias.
   double* movableX = nullptr;
   double* movableY = nullptr;
+  // The variation's text parameters (VariationInfo::textParams), in the catalogue's order, or
+  // nullptr: then their defaults hold. JWildfire's svg_wf reads its picture from one.
+  const std::string* texts = nullptr;
+  // Per-lane memory that lasts from step to step, for a variation with VariationInfo::laneState > 0
+  // (Fractorium's smartcrop keeps the last point it let through): lane i of this call owns
+  // laneState doubles at state + laneState · (lanes ? lanes[i] : i), all 0 at first. nullptr where
+  // no game keeps it (a single evaluation): the variation then starts from zeros each call.
+  double* state = nullptr;
+  const std::uint32_t* lanes = nullptr;
 };
 
 // Adds weight · V(p) to (outX, outY, outZ) for every lane of `in`.
@@ -96,13 +105,20 @@ struct VariationParam {
   bool jwildfireInt = false;
 };
 
+// A parameter whose value is text (JWildfire's "resources": svg_wf's SVG document).
+struct VariationTextParam {
+  std::string name;
+  std::string defaultValue;
+};
+
 struct VariationInfo {
   std::string name;  // flam3's / JWildfire's name: what flame files say
   std::vector<VariationParam> params;
-  std::string formula;  // V(p) in the notation above, for the docs and the UI's tooltip
-  bool threeD = false;  // acts on z itself (not only carried through)
-  bool random = false;  // draws random numbers (Ψ)
-  bool mapsXY = true;   // false for the variations that act on z alone (zscale, zcone, ...)
+  std::vector<VariationTextParam> textParams;  // after the numbers; VariationTerm::texts holds them
+  std::string formula;                         // V(p) in the notation above, for the docs and the UI's tooltip
+  bool threeD = false;                         // acts on z itself (not only carried through)
+  bool random = false;                         // draws random numbers (Ψ)
+  bool mapsXY = true;                          // false for the variations that act on z alone (zscale, zcone, ...)
   // Its result does not depend on the point (blurs, ztranslate): a pre_/post_ form adds to the
   // point instead of replacing it. Worked out from the function when the catalogue is built.
   bool additive = false;
@@ -119,10 +135,14 @@ struct VariationInfo {
   // Reads or writes the point's colour index (VariationInput::colour): Fractorium's dc_ variations.
   // The chaos game sets up the colour array and blends by direct_color only for transforms with one.
   bool directColour = false;
+  // How many doubles of memory per lane the variation keeps from step to step (VariationInput::state).
+  std::size_t laneState = 0;
   VariationFn apply = nullptr;
 
   int paramIndex(std::string_view paramName) const;  // -1 when absent
   std::vector<double> defaultParams() const;
+  int textParamIndex(std::string_view paramName) const;  // -1 when absent
+  std::vector<std::string> defaultTexts() const;
 };
 
 VariationStage variationStage(std::string_view name);

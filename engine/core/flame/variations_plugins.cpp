@@ -94,17 +94,24 @@ VOXFLAME_VARIATION_TARGETS void crackle(const VariationInput& in, double* __rest
 // Zy0rg's post_smartcrop (Fractorium's, which the corpus's flames come from; JWildfire's lacks the
 // rotation): keeps the point inside a rounded polygon of `power` sides and radius `radius` (a
 // sector of power·π when |power| < 2) and moves what lies outside back onto its edge, or beyond it
-// by scatter and offset (cropmode 1), to the origin (0), or keeps the radius and turns it
-// (cropmode −1). A negative radius or power keeps the outside instead. Its input is the point
-// itself (static 2, the usual post_ use); static 0, 1 and 3 and cropmode 2 (the last kept point)
-// read the transform's state, which a stateless variation has not: the importer reports them.
-// cropmode 2 drops the point here, which draws what the plugin draws apart from a repeated point.
+// by scatter and offset (cropmode 1), to the origin (0), keeps the radius and turns it (−1), or
+// puts the last point it let through there instead, with that point's colour (2). A negative
+// radius or power keeps the outside instead. Fractorium's `static` picks what it reads and what it
+// returns (compared as the real numbers they are, as Fractorium does): the point it maps p (static
+// > 1, the usual post_ use) or the transform's point t after its affine map (≤ 1) is the one
+// cropped, q; a kept q returns w q (static > 0; static 3 keeps and returns w t) or p + w q (≤ 0); a
+// cropped one returns its new place (static > 1 or −1) or p plus it (else). Cropmode 0 with static
+// 0 or 1 leaves Fractorium's output as the variation before it left it; p stands in for that here.
+// The last point let through is each lane's own memory (Fractorium keeps it per iterating thread),
+// 0 and colour 0 at first.
+constexpr std::size_t kSmartcropState = 4;  // x, y, z, colour of the last point let through
+
 VOXFLAME_VARIATION_TARGETS void smartcrop(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                           double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double power = P[0], radius = P[1], roundstr = P[2], roundwidth = P[3], distortion = P[4];
   const double edge = P[5], scatter = P[6], offset = P[7], rotation = P[8];
-  const double cropmode = std::round(P[9]);
+  const double cropmode = P[9], staticMode = P[10];
   const bool keepInside = (power > 0.0) == (radius > 0.0);
   const double workRadius = std::abs(radius);
   double workPower = power == 0.0 ? kFractoriumEps : std::abs(power);
@@ -114,26 +121,38 @@ VOXFLAME_VARIATION_TARGETS void smartcrop(const VariationInput& in, double* __re
   const double halfSin = std::sin(alpha / 2.0);
   const double roundCoeff = roundstr / (halfSin == 0.0 ? kFractoriumEps : halfSin) / workPower * 2.0;
   const double turn = rotation * alpha;
-  constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+  const bool readsPoint = staticMode > 1.0;                          // else the transform's point
+  const bool cropReplaces = staticMode > 1.0 || staticMode == -1.0;  // a cropped point: its place alone
+  const bool keepReplaces = staticMode > 0.0;                        // a kept point: w q alone
+  const bool keepsTransformPoint = staticMode == 3.0;
+  const double* __restrict tx = in.tx;
+  const double* __restrict ty = in.ty;
+  const double* __restrict tz = in.tz;
   for (std::size_t i = 0; i < n; ++i) {
-    const double angle = std::atan2(y[i], x[i]);
-    const double rad = std::sqrt(x[i] * x[i] + y[i] * y[i]);
-    double px = x[i], py = y[i], pz = z[i];
+    // The lane's memory; a single evaluation (no game) starts from Fractorium's zeros.
+    double scratch[kSmartcropState] = {0.0, 0.0, 0.0, 0.0};
+    double* memory = in.state ? in.state + kSmartcropState * (in.lanes ? in.lanes[i] : i) : scratch;
+    const double qx = readsPoint ? x[i] : tx[i], qy = readsPoint ? y[i] : ty[i], qz = readsPoint ? z[i] : tz[i];
+    const double angle = std::atan2(qy, qx);
+    const double rad = std::sqrt(qx * qx + qy * qy);
     // The plugin draws only what a branch uses; drawing all of them, in its order, gives the same
-    // numbers to the branch taken and keeps the loop free of data-dependent draws.
+    // numbers to the branch taken.
     const double a = laneUniform(rnd[i]), b = laneUniform(rnd[i]), c = laneUniform(rnd[i]);
+    bool cropped = false, toMemory = false, toOrigin = false;
+    double px = 0.0, py = 0.0;  // a cropped point's new place (w · ...)
     if (radial) {
       const double jitter = edge * (a - 0.5);
       double sector = angle / kTwoPi + 1.0 + jitter;
       sector = (sector - std::trunc(sector)) * kTwoPi;
       if ((sector > workPower) == keepInside) {
+        cropped = true;
         if (cropmode == 2.0) {
-          px = py = pz = kNaN;
+          toMemory = true;
         } else {
           const double spread = (c * scatter + offset + jitter) * kPi;
           const double turned = std::trunc(b * 2.0) > 0.0 ? workPower + spread : -spread;
-          px = rad * std::cos(turned);
-          py = rad * std::sin(turned);
+          px = w * rad * std::cos(turned);
+          py = w * rad * std::sin(turned);
         }
       }
     } else {
@@ -152,20 +171,59 @@ VOXFLAME_VARIATION_TARGETS void smartcrop(const VariationInput& in, double* __re
       }
       const double reach = coeff * (edge != 0.0 ? workRadius + edge * (a - 0.5) : workRadius);
       if ((rad > reach) == keepInside) {
+        cropped = true;
         if (cropmode == 2.0) {
-          px = py = pz = kNaN;
+          toMemory = true;
         } else if (cropmode == 0.0) {
-          px = py = pz = 0.0;
+          toOrigin = true;
         } else {
           const double r = cropmode == -1.0 ? rad : reach + coeff * ((edge != 0.0 ? b : a) * scatter + offset);
-          px = r * std::cos(angle + turn);
-          py = r * std::sin(angle + turn);
+          px = w * r * std::cos(angle + turn);
+          py = w * r * std::sin(angle + turn);
         }
       }
     }
-    outX[i] += w * px;
-    outY[i] += w * py;
-    outZ[i] += w * pz;
+    double rx, ry, rz;
+    if (!cropped) {
+      memory[0] = w * (keepsTransformPoint ? tx[i] : qx);
+      memory[1] = w * (keepsTransformPoint ? ty[i] : qy);
+      memory[2] = w * (keepsTransformPoint ? tz[i] : qz);
+      if (cropmode == 2.0) memory[3] = colour[i];
+      rx = memory[0];
+      ry = memory[1];
+      rz = memory[2];
+      if (!keepReplaces) {
+        rx += x[i];
+        ry += y[i];
+        rz += z[i];
+      }
+    } else if (toMemory) {
+      rx = memory[0];
+      ry = memory[1];
+      rz = memory[2];
+      colour[i] = memory[3];
+      if (!cropReplaces) {
+        rx += x[i];
+        ry += y[i];
+        rz += z[i];
+      }
+    } else if (toOrigin) {
+      rx = cropReplaces ? 0.0 : x[i];
+      ry = cropReplaces ? 0.0 : y[i];
+      rz = cropReplaces ? 0.0 : z[i];
+    } else {
+      rx = px;
+      ry = py;
+      rz = w * qz;
+      if (!cropReplaces) {
+        rx += x[i];
+        ry += y[i];
+        rz += z[i];
+      }
+    }
+    outX[i] += rx;
+    outY[i] += ry;
+    outZ[i] += rz;
   }
 }
 
@@ -773,8 +831,10 @@ void variation_kernels::addPluginVariations(std::vector<VariationInfo>& catalogu
       "roundwidth; the edge jittered by edge · (Ψ − ½)); outside: r (cos(φ + rotation·2π/power), sin(…)), z "
       "with r = edge + c (Ψ scatter + offset) (cropmode 1), |p| (−1), or the origin (0); for |power| < 2 the "
       "sector |power|·π instead, outside turned to a random side of it; power < 0 or radius < 0 (not both) "
-      "keeps the outside; cropmode 2 drops the point (Zy0rg's post_smartcrop as Fractorium has it; only "
-      "static 2, the point itself, is supported)",
+      "keeps the outside; cropmode 2: the last point let through, and its colour index; the values are w times "
+      "these; q = p (static > 1) or t is what is cropped; a kept q gives w q (static > 0; w t for static 3) or "
+      "p + w q (≤ 0), a cropped one its new place (static > 1 or −1) or p plus it (Zy0rg's post_smartcrop as "
+      "Fractorium has it)",
       k3D, kRandom, &smartcrop,
       {{"power", 4.0, -10.0, 10.0},
        {"radius", 1.0, -3.0, 3.0},
@@ -787,6 +847,9 @@ void variation_kernels::addPluginVariations(std::vector<VariationInfo>& catalogu
        {"rotation", 0.0, -1.0, 1.0},
        count("cropmode", 1.0, -1.0, 2.0),
        count("static", 2.0, -1.0, 3.0)});
+  // cropmode 2 sets the colour index to the last kept point's, which each lane remembers.
+  catalogue.back().directColour = true;
+  catalogue.back().laneState = kSmartcropState;
   add("epispiral_wf", "(½ / cos(waves·θ)) (sin θ, cos θ), z; nothing where the cosine is 0 (JWildfire's)", k2D, kFixed,
       &epispiralWf, {{"waves", 4.0, -20.0, 20.0}});
   add("blur_circle",

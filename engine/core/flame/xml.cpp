@@ -26,6 +26,7 @@
 #include "core/chaos_game.h"
 #include "core/error.h"
 #include "core/keyframes.h"
+#include "core/flame/svg_raster.h"
 #include "core/flame/variations.h"
 #include "core/random.h"
 
@@ -323,6 +324,26 @@ bool isJwildfireResource(const VariationInfo& info, std::string_view param) {
 }
 bool jwildfireResourceMatters(const VariationInfo& info, std::string_view value) {
   return info.name == "plane_wf" && !value.empty();
+}
+
+// A resource's text as JWildfire writes it (Tools.hexStringToByteArray's input: two hex digits per
+// byte); nullopt when the value is not that.
+std::optional<std::string> jwildfireResourceText(std::string_view hex) {
+  if (hex.size() % 2 != 0) return std::nullopt;
+  std::string text;
+  text.reserve(hex.size() / 2);
+  const auto digit = [](char c) -> int {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+    return -1;
+  };
+  for (std::size_t i = 0; i < hex.size(); i += 2) {
+    const int high = digit(hex[i]), low = digit(hex[i + 1]);
+    if (high < 0 || low < 0) return std::nullopt;
+    text.push_back(static_cast<char>(high * 16 + low));
+  }
+  return text;
 }
 
 // JWildfire stores a motion curve beside any variation parameter (`<variation>_<parameter>_enabled`,
@@ -739,6 +760,41 @@ class FlameReader {
           consumed.insert(param->second.first);
           break;
         }
+      // Text parameters (JWildfire's resources, which it writes as the hex of their bytes).
+      if (!info->textParams.empty()) term.texts = info->defaultTexts();
+      for (std::size_t i = 0; i < info->textParams.size(); ++i) {
+        const auto param = byLowerName.find(lowered(name + "_" + info->textParams[i].name));
+        if (param == byLowerName.end()) continue;
+        consumed.insert(param->second.first);
+        if (std::optional<std::string> text = jwildfireResourceText(param->second.second.value())) {
+          // Scenes are JSON, which holds UTF-8 only: other bytes are read as Latin-1 (as elsewhere here).
+          bool changed = false;
+          term.texts[i] = asUtf8(*text, changed);
+          if (changed)
+            warn(context + " gives " + param->second.first + " text that is not UTF-8; it was read as Latin-1");
+        } else {
+          lose(withoutCopyMark(name) + "_" + info->textParams[i].name);
+          warn(context + " gives " + param->second.first +
+               " a value that is not JWildfire's hex of a text; the default was used");
+        }
+      }
+      // svg_wf's drawing: say what of it cannot be drawn, and whether anything is left.
+      if (info->name == "svg_wf" && term.weight != 0.0) {
+        const SvgRaster raster =
+            rasteriseSvg(term.texts.at(0), term.params.at(1), std::round(term.params.at(3)) != 0.0);
+        for (const std::string& problem : raster.problems)
+          warn(context + " has " + name + " whose SVG voxflame cannot draw in full: " + problem);
+        if (raster.column.size() < 2) {
+          lose("picture of " + withoutCopyMark(name));
+          warn(context + " has " + name +
+               " whose SVG paints nothing; it draws a unit square's random points, as "
+               "JWildfire does");
+        }
+        // JWildfire colours each point by the palette's entry nearest to its pixel's colour (or the
+        // pixel's own colour with true_color), which voxflame does not.
+        lose("colour of " + withoutCopyMark(name));
+        warn(context + " has " + name + ", which JWildfire colours by the SVG's colours; voxflame does not");
+      }
       // A variation of weight 0 draws nothing, unless a motion gives it weight (motion below).
       if (term.weight == 0.0) {
         zeroTerms.emplace(name, std::move(term));
@@ -777,15 +833,6 @@ class FlameReader {
              " painting its own colours, which voxflame does not; the colours' "
              "luminance picks the palette's colour instead");
       }
-      // smartcrop reads the point itself (static 2) and cannot keep the last point it let through
-      // (cropmode 2), which the plugin's other modes need (variations_plugins.cpp).
-      if (info->name == "smartcrop" &&
-          (std::round(term.params.at(10)) != 2.0 || std::round(term.params.at(9)) == 2.0)) {
-        lose("static or cropmode 2 of " + withoutCopyMark(name));
-        warn(context + " has " + name +
-             " reading the transform's state (static other than 2, or cropmode 2), which voxflame does not keep; "
-             "it crops the point itself and drops what cropmode 2 would replace");
-      }
       // JWildfire runs a prepost_ variation as a pre_ term (its inverse map) and as a post_ term (the map
       // itself): the catalogue has the two halves as pre_prepost_X and prepost_X.
       if (info->name.starts_with("prepost_") && term.name == info->name) {
@@ -822,7 +869,8 @@ class FlameReader {
         const std::string rest = name.substr(cut + 1);
         if (const VariationInfo* info = variationNamed(withoutCopyMark(prefix))) {
           // A known variation's own parameter counts even when the variation is absent (weight 0).
-          if (info->paramIndex(rest) >= 0 || isJwildfireParamCurve(rest) || isDerivedParam(*info, rest)) {
+          if (info->paramIndex(rest) >= 0 || info->textParamIndex(rest) >= 0 || isJwildfireParamCurve(rest) ||
+              isDerivedParam(*info, rest)) {
             parameter = true;
           } else if (isJwildfireResource(*info, rest)) {
             parameter = true;
