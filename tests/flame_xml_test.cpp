@@ -410,6 +410,10 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"direct colour of " + info.name}));
     else if (info.name == "smartcrop")  // static −1 reads the transform's state, which is not kept
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"static or cropmode 2 of smartcrop"}));
+    else if (!info.textParam.empty())  // no flame embedded; colour mode −2 and a flame sequence are not kept
+      EXPECT_EQ(flame.leftOut,
+                (std::vector<std::string>{"embedded flame of " + info.name, "flame sequence of " + info.name,
+                                          "true colour of " + info.name}));
     else
       EXPECT_TRUE(flame.warnings.empty()) << info.name << ": " << flame.warnings.front();
   }

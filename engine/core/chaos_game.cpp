@@ -205,6 +205,7 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
       c.terms.push_back({info.apply,
                          term.weight,
                          term.params,
+                         term.text,
                          stage,
                          info.mapsXY,
                          info.threeD,
@@ -414,6 +415,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, std::size_t
     in.z = z;
     in.weight = term.weight;
     in.params = term.params.data();
+    in.text = term.text;
     in.stage = term.stage;
     // An ordinary term maps t itself, which crob may move for the terms after it.
     const bool ordinary = term.stage == VariationStage::Normal;

@@ -11,6 +11,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "core/flame/flame.h"
@@ -83,6 +84,7 @@ class ChaosGame {
     VariationFn apply = nullptr;
     double weight = 1.0;
     std::vector<double> params;
+    std::string text;  // VariationTerm::text
     VariationStage stage = VariationStage::Normal;
     bool mapsXY = true, mapsZ = false, additive = false;                  // how a pre_/post_ form combines
     bool flattens = false;                                                // flatten: z is 0 after this stage

@@ -264,6 +264,8 @@ VariationTerm readVariation(const json& value, const std::string& source, const 
   for (std::size_t i = 0; i < info.params.size(); ++i)
     term.params[i] = reader.number(info.params[i].name, info.params[i].defaultValue, -kFlameCoefficientLimit,
                                    kFlameCoefficientLimit);
+  // A variation's text parameter (subflame_wf's embedded flame) is a string under its own name.
+  if (!info.textParam.empty()) term.text = reader.string(info.textParam, "");
   reader.finish();
   return term;
 }
@@ -430,6 +432,7 @@ json xformJson(const FlameXform& xform, bool isFinal, bool complete) {
     const VariationInfo& info = variationOrThrow(term.name);
     for (std::size_t i = 0; i < info.params.size() && i < term.params.size(); ++i)
       v[info.params[i].name] = term.params[i];
+    if (!info.textParam.empty() && (complete || !term.text.empty())) v[info.textParam] = term.text;
     variations.push_back(v);
   }
   out["variations"] = variations;

@@ -289,7 +289,7 @@ const XF kXformFields[] = {
      .defaultText = "identity"},
     {.key = "variations",
      .help = "each `{\"name\": N, \"weight\": W, PARAM: V, ...}`; parameters left out take their defaults; none "
-             "acts as linear",
+             "acts as linear; subflame_wf's and glynns3subfl's `flame` is a string, the XML of the flame they embed",
      .affects = kPattern,
      .typeText = "array",
      .rangeText = "0–16",

@@ -84,6 +84,9 @@ struct VariationTerm {
   std::string name;
   double weight = 1.0;
   std::vector<double> params;
+  // The variation's text parameter (VariationInfo::textParam), empty when it has none or leaves it
+  // unset (the variation's own default then).
+  std::string text = {};
   bool operator==(const VariationTerm&) const = default;
 };
 

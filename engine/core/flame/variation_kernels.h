@@ -180,6 +180,8 @@ void addFractorium3DSumVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireCorpusVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire variations that published JWildfire flames use (variations_jwildfire_holdout.cpp).
 void addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire's subflame variations, which embed a whole flame (variations_subflame.cpp).
+void addSubflameVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -79,6 +79,9 @@ struct VariationInput {
   // variation that writes it reads x and y through unrestricted pointers, as they alias.
   double* movableX = nullptr;
   double* movableY = nullptr;
+  // The term's text parameter (VariationInfo::textParam: subflame_wf's embedded flame), empty when
+  // the variation has none or the term leaves it unset.
+  std::string_view text;
 };
 
 // Adds weight · V(p) to (outX, outY, outZ) for every lane of `in`.
@@ -119,6 +122,12 @@ struct VariationInfo {
   // Reads or writes the point's colour index (VariationInput::colour): Fractorium's dc_ variations.
   // The chaos game sets up the colour array and blends by direct_color only for transforms with one.
   bool directColour = false;
+  // The name of the variation's one text parameter, empty when it has none: JWildfire's subflame
+  // variations carry a whole flame as text (VariationTerm::text, VariationInput::text). Files and
+  // scenes write it under this name beside the numeric parameters. The catalogue does not run such a
+  // variation while it is being built (its text may name other variations), so `additive` is set by
+  // its table row.
+  std::string textParam;
   VariationFn apply = nullptr;
 
   int paramIndex(std::string_view paramName) const;  // -1 when absent
