@@ -410,6 +410,10 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"direct colour of " + info.name}));
     else if (info.name == "svg_wf")  // JWildfire colours its points by the SVG's colours
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour of svg_wf"}));
+    else if (info.name == "subflame_wf" || info.name == "glynns3subfl")  // no flame embedded; colour mode −2
+      EXPECT_EQ(flame.leftOut,                                           // and a flame sequence are not kept
+                (std::vector<std::string>{"embedded flame of " + info.name, "flame sequence of " + info.name,
+                                          "true colour of " + info.name}));
     else
       EXPECT_TRUE(flame.warnings.empty()) << info.name << ": " << flame.warnings.front();
   }

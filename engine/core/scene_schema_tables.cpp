@@ -289,7 +289,8 @@ const XF kXformFields[] = {
      .defaultText = "identity"},
     {.key = "variations",
      .help = "each `{\"name\": N, \"weight\": W, PARAM: V, ...}`; parameters left out take their defaults; V is "
-             "a number, or text for a text parameter (svg_wf's `svg`); none acts as linear",
+             "a number, or text for a text parameter (svg_wf's `svg`; subflame_wf's and glynns3subfl's `flame`, "
+             "the XML of the flame they embed); none acts as linear",
      .affects = kPattern,
      .typeText = "array",
      .rangeText = "0–16",

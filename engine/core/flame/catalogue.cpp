@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/flame/subflame.h"
 #include "core/flame/variation_kernels.h"
 
 namespace voxflame::core {
@@ -46,6 +47,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addJwildfireCorpusVariations(c);
   variation_kernels::addJwildfireHoldoutVariations(c);
   variation_kernels::addSvgVariations(c);
+  variation_kernels::addSubflameVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")
@@ -117,7 +119,8 @@ bool resultIgnoresThePoint(const VariationInfo& info) {
 const std::vector<VariationInfo>& variationCatalogue() {
   static const std::vector<VariationInfo> catalogue = [] {
     std::vector<VariationInfo> c = buildCatalogue();
-    for (VariationInfo& info : c) info.additive = resultIgnoresThePoint(info);
+    for (VariationInfo& info : c)
+      if (!embedsFlame(info)) info.additive = resultIgnoresThePoint(info);
     return c;
   }();
   return catalogue;

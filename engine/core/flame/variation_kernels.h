@@ -182,6 +182,8 @@ void addJwildfireCorpusVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's svg_wf, points of an SVG drawing (variations_svg.cpp).
 void addSvgVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire's subflame variations, which embed a whole flame (variations_subflame.cpp).
+void addSubflameVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

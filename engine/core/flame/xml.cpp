@@ -26,6 +26,7 @@
 #include "core/chaos_game.h"
 #include "core/error.h"
 #include "core/keyframes.h"
+#include "core/flame/subflame.h"
 #include "core/flame/svg_raster.h"
 #include "core/flame/variations.h"
 #include "core/random.h"
@@ -169,6 +170,10 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
     names.push_back(termAttribute + "_number_lines/circles");
   if (info.name == "hamid_js" && param == "filled_circles") names.push_back(termAttribute + "_filled circles");
   if (info.name == "dc_booleans" && param == "type") names.push_back(termAttribute + "_^/&/|");
+  // glynns3subfl's chance of the inversion is its "weight" (a term's own key here) and its show its
+  // "show/hide(1/0)".
+  if (info.name == "glynns3subfl" && param == "probability") names.push_back(termAttribute + "_weight");
+  if (info.name == "glynns3subfl" && param == "show") names.push_back(termAttribute + "_show/hide(1/0)");
   if (info.name == "dc_booleans" && param == "scale_z") names.push_back(termAttribute + "_z_scale");
   if (info.name == "dc_booleans" && param == "offset_z") names.push_back(termAttribute + "_z_offset");
   if (info.name == "mobius" && param.size() == 4) {
@@ -320,30 +325,11 @@ bool isDerivedParam(const VariationInfo& info, std::string_view param) {
 // an empty name (no image) loses nothing, a named image is left out.
 bool isJwildfireResource(const VariationInfo& info, std::string_view param) {
   return (info.name == "plane_wf" && (param == "colormap_filename" || param == "displ_map_filename")) ||
-         (info.name == "recurrenceplot" && param == "func_id_reference");
+         (info.name == "recurrenceplot" && param == "func_id_reference") ||
+         (embedsFlame(info) && param == "flame_filename");
 }
 bool jwildfireResourceMatters(const VariationInfo& info, std::string_view value) {
   return info.name == "plane_wf" && !value.empty();
-}
-
-// A resource's text as JWildfire writes it (Tools.hexStringToByteArray's input: two hex digits per
-// byte); nullopt when the value is not that.
-std::optional<std::string> jwildfireResourceText(std::string_view hex) {
-  if (hex.size() % 2 != 0) return std::nullopt;
-  std::string text;
-  text.reserve(hex.size() / 2);
-  const auto digit = [](char c) -> int {
-    if (c >= '0' && c <= '9') return c - '0';
-    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-    if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-    return -1;
-  };
-  for (std::size_t i = 0; i < hex.size(); i += 2) {
-    const int high = digit(hex[i]), low = digit(hex[i + 1]);
-    if (high < 0 || low < 0) return std::nullopt;
-    text.push_back(static_cast<char>(high * 16 + low));
-  }
-  return text;
 }
 
 // JWildfire stores a motion curve beside any variation parameter (`<variation>_<parameter>_enabled`,
@@ -762,11 +748,13 @@ class FlameReader {
         }
       // Text parameters (JWildfire's resources, which it writes as the hex of their bytes).
       if (!info->textParams.empty()) term.texts = info->defaultTexts();
-      for (std::size_t i = 0; i < info->textParams.size(); ++i) {
+      // An embedded flame is read, checked and said of at once (readTermText).
+      if (embedsFlame(*info)) readTermText(name, *info, byLowerName, context, term, consumed);
+      for (std::size_t i = 0; i < info->textParams.size() && !embedsFlame(*info); ++i) {
         const auto param = byLowerName.find(lowered(name + "_" + info->textParams[i].name));
         if (param == byLowerName.end()) continue;
         consumed.insert(param->second.first);
-        if (std::optional<std::string> text = jwildfireResourceText(param->second.second.value())) {
+        if (std::optional<std::string> text = decodeJwildfireResource(param->second.second.value())) {
           // Scenes are JSON, which holds UTF-8 only: other bytes are read as Latin-1 (as elsewhere here).
           bool changed = false;
           term.texts[i] = asUtf8(*text, changed);
@@ -937,6 +925,67 @@ class FlameReader {
     readFlam3Motion(node, context, x, isFinal, termFor);
     readJwildfireCurves(node, context, x, isFinal, termFor);
     return x;
+  }
+
+  // A variation's text parameter (subflame_wf's embedded flame, `<variation>_flame`), which JWildfire
+  // writes as the hex digits of its bytes; checked here (imported and iterated: the cloud it makes is
+  // kept for the render), so what becomes of it is said at import, not silently at render time.
+  template <class ByLowerName>
+  void readTermText(const std::string& attribute, const VariationInfo& info, const ByLowerName& byLowerName,
+                    const std::string& context, VariationTerm& term, std::set<std::string>& consumed) {
+    const std::string variation = withoutCopyMark(attribute);
+    const auto found = byLowerName.find(lowered(attribute + "_" + info.textParams.at(0).name));
+    if (found == byLowerName.end()) {
+      lose("embedded flame of " + variation);
+      warn(context + " has " + attribute +
+           " without the flame it embeds (JWildfire then draws a default flame of its own); a Sierpinski gasket "
+           "stands in");
+    } else {
+      consumed.insert(found->second.first);
+      const std::string_view value = found->second.second.value();
+      term.texts.at(0) = decodeJwildfireResource(value).value_or(std::string(value));
+      const EmbeddedFlameCheck check = checkEmbeddedFlame(term.texts.at(0));
+      if (!check.error.empty()) {
+        lose("embedded flame of " + variation);
+        warn(context + " has " + attribute + " whose embedded flame cannot be read (" + check.error.substr(0, 300) +
+             "); it adds nothing");
+      } else if (check.escapes) {
+        lose("embedded flame of " + variation);
+        warn(context + " has " + attribute + " whose embedded flame gives no finite point; it adds nothing");
+      }
+      if (check.nested) {
+        lose("subflame inside the flame " + variation + " embeds");
+        warn(context + " has " + attribute +
+             " whose embedded flame embeds a flame itself; voxflame leaves the inner one out");
+      }
+      for (const std::string& item : check.leftOut) lose(item + " in the flame " + variation + " embeds");
+      if (!check.leftOut.empty())
+        warn(context + " has " + attribute + " whose embedded flame was imported without some of it (" +
+             check.leftOut.front() + (check.leftOut.size() > 1 ? ", ..." : "") + ")");
+    }
+    // The flame file (a sequence of them, or the file the embedded flame came from), read where the
+    // variation is: its name extends the text attribute's, which would otherwise claim it.
+    if (const auto file = byLowerName.find(lowered(attribute + "_flame_filename")); file != byLowerName.end()) {
+      consumed.insert(file->second.first);
+      if (*file->second.second.value() != '\0') {
+        lose("flame file of " + variation);
+        warn(context + " gives '" + file->second.first +
+             "' a flame file, which voxflame does not read; the flame it embeds is drawn instead");
+      }
+    }
+    const int modeAt = info.paramIndex("color_mode");
+    const double mode = modeAt >= 0 ? std::round(term.params.at(static_cast<std::size_t>(modeAt))) : -1.0;
+    if (mode == -2.0 || (mode >= 1.0 && mode <= 4.0)) {
+      lose("true colour of " + variation);
+      warn(context + " has " + attribute + " with color_mode " + formatted(mode) +
+           " (the embedded flame's true colour), which voxflame does not paint; its colour index stands in");
+    }
+    const int sequenceAt = info.paramIndex("flame_is_sequence");
+    if (sequenceAt >= 0 && std::round(term.params.at(static_cast<std::size_t>(sequenceAt))) != 0.0) {
+      lose("flame sequence of " + variation);
+      warn(context + " has " + attribute +
+           " drawing a sequence of flames over the frames, which voxflame does not; the embedded one is drawn");
+    }
   }
 
   // JWildfire's weighting field of a transform, as JWildfire writes it (wfield_type="PERLIN_NOISE",
