@@ -22,18 +22,18 @@ const std::string kFlame = std::string(VOXFLAME_SOURCE_DIR) + "/presets/flame-si
 const std::string kAttractor = std::string(VOXFLAME_SOURCE_DIR) + "/presets/aizawa-orb.json";
 const std::string kJulia = std::string(VOXFLAME_SOURCE_DIR) + "/presets/qjulia-loop.json";
 
-// The silk bunny with a variation the GPU's chaos game does not have (bipolar), written into `folder`.
+// The silk bunny with a variation the GPU's chaos game does not have (sineblur), written into `folder`.
 std::string flameTheGpuLacks(const std::filesystem::path& folder) {
   std::ifstream in(kFlame);
   std::stringstream text;
   text << in.rdbuf();
   std::string json = text.str();
   const std::string hyperbolic = "\"name\": \"hyperbolic\"";
-  json.replace(json.find(hyperbolic), hyperbolic.size(), "\"name\": \"bipolar\"");
+  json.replace(json.find(hyperbolic), hyperbolic.size(), "\"name\": \"sineblur\"");
   // The mesh path is relative to the preset: the copy names the shipped one.
   const std::string mesh = "\"meshes/bunny.obj\"";
   json.replace(json.find(mesh), mesh.size(), "\"" + std::string(VOXFLAME_SOURCE_DIR) + "/presets/meshes/bunny.obj\"");
-  const std::filesystem::path path = folder / "bipolar.json";
+  const std::filesystem::path path = folder / "sineblur.json";
   std::ofstream(path) << json;
   return path.string();
 }
@@ -212,7 +212,7 @@ TEST(ChunkBackends, TheGpuBackendRefusesWhatItDoesNotRunWithAMessage) {
   EXPECT_EQ(result.exitStatus, 1) << result.output;
   EXPECT_TRUE(contains(result.output,
                        "a flame layer needs the CPU backend: the GPU backend does not have variation "
-                       "'bipolar'"))
+                       "'sineblur'"))
       << result.output;
   result =
       runVoxflame("render " + kAttractor + kQuick + kSize + " -o p.png --backend gpu --method points", folder.path());

@@ -444,7 +444,7 @@ TEST(GpuBackend, AutoTakesTheGpuOnlyOnHardwareForWhatItRuns) {
   flame.layers.front().kind = core::PatternKind::Flame;
   flame.layers.front().flame = core::defaultFlame();
   // A variation the GPU's chaos game does not have keeps the layer on the CPU.
-  flame.layers.front().flame.xforms.front().variations.push_back({"bipolar", 0.5, {0.0}});
+  flame.layers.front().flame.xforms.front().variations.push_back({"sineblur", 0.5, {1.0}});
   EXPECT_EQ(app::resolveBackend(app::BackendChoice::Auto, flame.layers), core::BackendKind::Cpu);
   EXPECT_THROW(app::resolveBackend(app::BackendChoice::Gpu, flame.layers), core::Error);
 }

@@ -742,7 +742,7 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Gpu) << gpuSession.status().backendNote;
   core::Scene lacking = flame;
-  lacking.layers.front().flame.xforms.front().variations.push_back({"bipolar", 0.5, {0.0}});
+  lacking.layers.front().flame.xforms.front().variations.push_back({"sineblur", 0.5, {1.0}});
   gpuSession.post(lacking);
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Cpu);

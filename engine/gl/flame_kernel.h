@@ -33,7 +33,7 @@ struct FlameKernel {
 };
 
 // Empty when the GPU's chaos game runs `layer` (a flame or quaternion Julia layer); else what it
-// lacks, for a message ("variation 'bipolar'", "a weighting field").
+// lacks, for a message ("variation 'sineblur'", "a weighting field").
 std::string flameKernelUnsupported(const core::PatternLayer& layer);
 
 // The kernel of `layer`, whose prepared game is `game` (the same pick table the CPU draws from).
