@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-
 #include "core/flame/variations.h"
 #include "core/flame/xml.h"
 #include "variation_point_case.h"

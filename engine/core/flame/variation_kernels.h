@@ -9,6 +9,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
+#include <mutex>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -146,6 +148,34 @@ inline std::int32_t wrapMul(std::int32_t a, std::int32_t b) {
   const double a = laneUniform(state), b = laneUniform(state), c = laneUniform(state), d = laneUniform(state);
   return a + b + c + d - 2.0;
 }
+
+// What a variation builds from its parameters alone and draws from at every call (hopalong's
+// orbit, svg_wf's painted pixels, subflame_wf's cloud of an embedded flame), shared so that a render
+// builds each once: every thread keeps the last one it used (`last`, a thread_local of the caller),
+// and the `kept` most recent ones are kept for all threads (an animation changes the parameters
+// every frame). `same(value)` says whether a kept one is for these parameters; `build()` makes a new
+// one, under the lock, so one thread builds while the others wait for it instead of building too.
+template <class Value>
+class RecentBuilds {
+ public:
+  explicit RecentBuilds(std::size_t kept) : kept_(kept) {}
+  template <class Same, class Build>
+  std::shared_ptr<const Value> get(std::shared_ptr<const Value>& last, const Same& same, const Build& build) {
+    if (last && same(*last)) return last;
+    const std::scoped_lock lock(mutex_);
+    for (const auto& value : recent_)
+      if (same(*value)) return last = value;
+    std::shared_ptr<const Value> built = build();
+    if (recent_.size() >= kept_) recent_.erase(recent_.begin());
+    recent_.push_back(built);
+    return last = built;
+  }
+
+ private:
+  std::size_t kept_;
+  std::mutex mutex_;
+  std::vector<std::shared_ptr<const Value>> recent_;
+};
 
 // The families' tables (one file each), in the catalogue's order.
 void addFlam3ClassicVariations(std::vector<VariationInfo>& catalogue);

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
-#include <mutex>
 #include <numbers>
 #include <vector>
 
@@ -70,26 +69,22 @@ bool sameKey(const double (&key)[5], const double (&other)[5]) {
 // few recent ones are kept for all threads (an animation changes them every frame).
 std::shared_ptr<const HopalongOrbit> hopalongOrbit(const double (&key)[5]) {
   thread_local std::shared_ptr<const HopalongOrbit> last;
-  if (last && sameKey(last->key, key)) return last;
-  static std::mutex mutex;
-  static std::vector<std::shared_ptr<const HopalongOrbit>> recent;
-  const std::scoped_lock lock(mutex);
-  for (const auto& orbit : recent)
-    if (sameKey(orbit->key, key)) return last = orbit;
-  auto orbit = std::make_shared<HopalongOrbit>();
-  std::copy(std::begin(key), std::end(key), std::begin(orbit->key));
-  orbit->x.resize(kHopalongPoints);
-  orbit->y.resize(kHopalongPoints);
-  double px = key[3], py = key[4];
-  for (std::size_t k = 0; k < kHopalongPoints; ++k) {
-    const HopalongStep next = hopalongStep(px, py, key[0], key[1], key[2]);
-    px = orbit->x[k] = next.x;
-    py = orbit->y[k] = next.y;
-  }
-  constexpr std::size_t kKept = 2;
-  if (recent.size() >= kKept) recent.erase(recent.begin());
-  recent.push_back(orbit);
-  return last = orbit;
+  static RecentBuilds<HopalongOrbit> orbits(2);
+  return orbits.get(
+      last, [&](const HopalongOrbit& orbit) { return sameKey(orbit.key, key); },
+      [&] {
+        auto orbit = std::make_shared<HopalongOrbit>();
+        std::copy(std::begin(key), std::end(key), std::begin(orbit->key));
+        orbit->x.resize(kHopalongPoints);
+        orbit->y.resize(kHopalongPoints);
+        double px = key[3], py = key[4];
+        for (std::size_t k = 0; k < kHopalongPoints; ++k) {
+          const HopalongStep next = hopalongStep(px, py, key[0], key[1], key[2]);
+          px = orbit->x[k] = next.x;
+          py = orbit->y[k] = next.y;
+        }
+        return std::shared_ptr<const HopalongOrbit>(std::move(orbit));
+      });
 }
 
 // hopalong: w · (point k of the orbit of (startx, starty) under the hopalong map), k = 1 + ⌊Ψ 2²⁰⌋;

@@ -14,7 +14,6 @@
 #include <cmath>
 #include <exception>
 #include <memory>
-#include <mutex>
 #include <numbers>
 #include <string>
 #include <string_view>
@@ -130,28 +129,25 @@ std::shared_ptr<const EmbeddedCloud> embeddedCloud(std::string_view text) {
   thread_local std::shared_ptr<const EmbeddedCloud> last;
   if (last && last->text == text) return last;
   if (buildingCloud) return nullptr;
-  static std::mutex mutex;
-  static std::vector<std::shared_ptr<const EmbeddedCloud>> recent;
-  const std::scoped_lock lock(mutex);
-  for (const auto& cloud : recent)
-    if (cloud->text == text) return last = cloud;
-  auto cloud = std::make_shared<EmbeddedCloud>();
-  cloud->text = text;
-  buildingCloud = true;
-  try {
-    buildCloud(*cloud);
-  } catch (const std::exception& e) {
-    cloud->check.error = e.what();
-  }
-  buildingCloud = false;
-  if (!cloud->check.error.empty()) {
-    for (auto* v : {&cloud->x, &cloud->y, &cloud->z, &cloud->colour}) v->clear();
-    cloud->check.escapes = false;
-  }
-  constexpr std::size_t kKept = 2;
-  if (recent.size() >= kKept) recent.erase(recent.begin());
-  recent.push_back(cloud);
-  return last = cloud;
+  static RecentBuilds<EmbeddedCloud> clouds(2);
+  return clouds.get(
+      last, [&](const EmbeddedCloud& cloud) { return cloud.text == text; },
+      [&] {
+        auto cloud = std::make_shared<EmbeddedCloud>();
+        cloud->text = text;
+        buildingCloud = true;
+        try {
+          buildCloud(*cloud);
+        } catch (const std::exception& e) {
+          cloud->check.error = e.what();
+        }
+        buildingCloud = false;
+        if (!cloud->check.error.empty()) {
+          for (auto* v : {&cloud->x, &cloud->y, &cloud->z, &cloud->colour}) v->clear();
+          cloud->check.escapes = false;
+        }
+        return std::shared_ptr<const EmbeddedCloud>(std::move(cloud));
+      });
 }
 
 // JWildfire's colour modes: −2 the embedded point's true colour (voxflame has no true colour: its

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
-#include <mutex>
 #include <string>
 #include <vector>
 
@@ -72,17 +71,8 @@ std::shared_ptr<const SvgPoints> svgPoints(double resolution, bool antialias, co
     return p.resolution == resolution && p.antialias == antialias && p.document == document;
   };
   thread_local std::shared_ptr<const SvgPoints> last;
-  if (last && same(*last)) return last;
-  static std::mutex mutex;
-  static std::vector<std::shared_ptr<const SvgPoints>> recent;
-  const std::scoped_lock lock(mutex);
-  for (const auto& points : recent)
-    if (same(*points)) return last = points;
-  std::shared_ptr<const SvgPoints> built = buildPoints(resolution, antialias, document);
-  constexpr std::size_t kKept = 4;
-  if (recent.size() >= kKept) recent.erase(recent.begin());
-  recent.push_back(built);
-  return last = built;
+  static RecentBuilds<SvgPoints> pictures(4);
+  return pictures.get(last, same, [&] { return buildPoints(resolution, antialias, document); });
 }
 
 // svg_wf: (s_x X + o_x, s_y Y + o_y) with (X, Y) a painted pixel (Ψ₁ picks it) moved by the blur
