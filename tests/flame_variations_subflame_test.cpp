@@ -13,8 +13,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/vec3.hpp>
-
 #include "core/error.h"
 #include "core/flame/subflame.h"
 #include "core/flame/variations.h"

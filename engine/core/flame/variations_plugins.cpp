@@ -3,7 +3,6 @@
 // the notation and variation_kernels.h for what the files share).
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <vector>
 
 #include "core/flame/noise.h"
