@@ -12,7 +12,6 @@
 // expect dropoff less the start value the check adds to (0.125, −0.25).
 #include <gtest/gtest.h>
 
-#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -25,9 +24,6 @@ using namespace voxflame::core;
 namespace {
 
 using namespace voxflame::test;
-
-constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
-constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
 
 const std::vector<PointCase>& pointCases() {
   static const std::vector<PointCase> cases = {

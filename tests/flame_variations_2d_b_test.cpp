@@ -7,7 +7,6 @@
 // row's seed (xorshift32, as variations.h's laneUniform); for the others the seed is unused.
 #include <gtest/gtest.h>
 
-#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,9 +19,6 @@ using namespace voxflame::core;
 namespace {
 
 using namespace voxflame::test;
-
-constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466, then 0.545326
-constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594, then 0.875707
 
 const std::vector<PointCase>& pointCases() {
   static const std::vector<PointCase> cases = {

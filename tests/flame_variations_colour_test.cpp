@@ -32,9 +32,6 @@ namespace {
 
 using namespace voxflame::test;
 
-constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
-constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
-
 // dc_perlin with select_range 2: the notch is [−2, 2], wider than the noise (|N| < 1.5 for two octaves), so the first
 // draw is kept and the point is w (vx, vy) of it.
 std::vector<double> perlinParams(double shape) {

@@ -27,8 +27,6 @@ namespace {
 
 using namespace voxflame::test;
 
-constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
-constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
 constexpr glm::dvec3 kPoint{0.3, -0.7, 0.5};
 
 // hamid_js' parameters: presetId, N, filled, then a … p.

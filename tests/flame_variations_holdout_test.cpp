@@ -22,9 +22,6 @@ namespace {
 
 using namespace voxflame::test;
 
-constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
-constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
-
 const std::vector<PointCase>& pointCases() {
   static const std::vector<PointCase> cases = {
       // hopalong: w · (iterate k + 1 of the start under (x, y) → (y − sign x √|b x − c|, a − x)), k = ⌊2²⁰ Ψ⌋, the

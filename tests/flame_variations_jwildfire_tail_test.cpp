@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
 #include <string>
 #include <utility>
 #include <vector>
@@ -25,9 +24,6 @@ using namespace voxflame::core;
 namespace {
 
 using namespace voxflame::test;
-
-constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
-constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
 
 const std::vector<PointCase>& pointCases() {
   // Notes on the rows: dustpoint takes (x/3, y/3) + (⅔, 0) for Ψ₂ ≥ ¾ and (x/3, y/3) for Ψ₂ in [½, ¾); rose_wf fills

@@ -9,7 +9,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -25,8 +24,6 @@ namespace {
 
 using namespace voxflame::test;
 
-constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
-constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
 constexpr glm::dvec3 kPoint{0.3, -0.7, 0.5};
 
 const std::vector<PointCase>& pointCases() {

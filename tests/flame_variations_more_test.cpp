@@ -8,7 +8,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <set>
 #include <string>
 #include <vector>
@@ -24,9 +23,6 @@ using namespace voxflame::core;
 namespace {
 
 using namespace voxflame::test;
-
-constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
-constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
 
 const std::vector<PointCase>& pointCases() {
   static const std::vector<PointCase> cases = {

@@ -27,9 +27,6 @@ namespace {
 
 using namespace voxflame::test;
 
-constexpr std::uint32_t kHighSeed = 0x2545F491u;  // first Ψ = 0.879466
-constexpr std::uint32_t kLowSeed = 0x9E3779B9u;   // first Ψ = 0.316594
-
 // glynns3subfl's parameters: probability, show, radius, thickness, contrast, pow, type, phi1, phi2, then the
 // subflame's (scale, angle, offset_x, offset_y, offset_z, colorscale_z, color_mode, and five of JWildfire's flame
 // sequence).
