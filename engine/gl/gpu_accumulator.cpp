@@ -104,8 +104,11 @@ GLuint makeBuffer(GLuint binding, std::size_t bytes, const void* data = nullptr)
   GLuint buffer = 0;
   glGenBuffers(1, &buffer);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, 16)), data,
+  // A binding is never empty, so a buffer holds at least 16 bytes; only the caller's bytes are read from data.
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, 16)), nullptr,
                GL_DYNAMIC_DRAW);
+  if (data != nullptr && bytes > 0)
+    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(bytes), data);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
   return buffer;
 }
