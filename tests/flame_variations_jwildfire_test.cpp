@@ -461,9 +461,68 @@ INSTANTIATE_TEST_SUITE_P(Jwildfire, JwildfireVariationAtPoint, testing::ValuesIn
 
 const PointCaseTableRegistration registered(&pointCases);
 
+// The colour index JWildfire's direct colour leaves in every one of 37 lanes (the harness's colour was 0.375), from
+// the same transcription: plane_wf's (u, v) are ½ − Ψ₁ and ½ − Ψ₂ (swapped on the plane zx), spirograph3D's t is
+// tmin + (tmax − tmin) Ψ₁, recurrenceplot colours the running sum (the harness's start (0.125, −0.25) plus the pair
+// of its point row above: (0.3028571, 0.0354286)), and truchet the distance to the corner of the arc the point is on.
+struct ColourCase {
+  std::string name;
+  std::vector<double> params;
+  glm::dvec3 point;
+  std::uint32_t seed;
+  double colour;
+};
+
+const std::vector<ColourCase>& colourCases() {
+  static const std::vector<ColourCase> cases = {
+      // plane_wf: color_mode 3 (u + ½)(v + ½), on zx (the default) and on yz; 1: u + ½; 2: v + ½; direct_color 0 and
+      // color_mode 0 (a colour image, none here) leave the colour.
+      {"plane_wf", {}, kPoint, kHighSeed, 0.05480354561447598},
+      {"plane_wf", {-1.5, 4.0, 1, 1, 3, 0, 0, 0, 0, 0}, kPoint, kHighSeed, 0.05480354561447598},
+      {"plane_wf", {-1.5, 4.0, 0, 1, 1, 0, 0, 0, 0, 0}, kPoint, kLowSeed, 0.6834064722061157},
+      {"plane_wf", {-1.5, 4.0, 0, 1, 2, 0, 0, 0, 0, 0}, kPoint, kLowSeed, 0.12429302930831909},
+      {"plane_wf", {-1.5, 4.0, 2, 1, 2, 0, 0, 0, 0, 0}, kPoint, kHighSeed, 0.12053358554840088},
+      {"plane_wf", {-1.5, 4.0, 2, 0, 3, 0, 0, 0, 0, 0}, kPoint, kHighSeed, 0.375},
+      {"plane_wf", {-1.5, 4.0, 2, 1, 0, 0, 0, 0, 0, 0}, kPoint, kHighSeed, 0.375},
+      // spirograph3D: (t/2π) mod 1, negative below t = 0 as JWildfire's fmod; direct_color 0 leaves it.
+      {"spirograph3D", {1.0, -0.3, 0.4, 0.0, 1000.0, 0.0, 0, 1}, kPoint, kHighSeed, 0.9714271432775092},
+      {"spirograph3D", {1.0, -0.3, 0.4, -50.0, 10.0, 0.0, 0, 1}, kPoint, kLowSeed, -0.9345016606368848},
+      {"spirograph3D", {}, kPoint, kHighSeed, 0.375},
+      // recurrenceplot: dc 2 |½((x cos a + y sin a + offset)/scale + 1)| mod 1, dc 1 |½ x y/scale + offset| mod 1.
+      {"recurrenceplot", {2, 0.0, 0.0, 0, 700, 2, 1.0, 0.0, 0.0, 5.0}, kPoint, kHighSeed, 0.7139285714285715},
+      {"recurrenceplot", {2, 0.0, 0.0, 0, 700, 2, 2.0, 0.7, 0.1, 5.0}, kPoint, kHighSeed, 0.5722531208816439},
+      {"recurrenceplot", {2, 0.0, 0.0, 0, 700, 1, 0.5, 0.0, 0.3, 5.0}, kPoint, kHighSeed, 0.20819408163265304},
+      {"recurrenceplot", {2, 0.0, 0.0, 0, 700, 0, 0.5, 0.0, 0.3, 5.0}, kPoint, kHighSeed, 0.375},
+      // truchet (weight 0.8, so the cell coordinates are 1.25 p): (0.35, 0.05) lies on the first arc (‖q‖ =
+      // 0.56596), (0.05, 0.4) on the second (1 − ‖q − (1, 1)‖ = 0.49611), (0.45, 0.4) on neither.
+      {"truchet", {0, 2.0, 0.5, 0.0, 1.0, 50.0, 1}, {0.35, 0.05, 0.5}, kHighSeed, 0.5659615711335886},
+      {"truchet", {0, 2.0, 0.5, 0.0, 1.0, 50.0, 1}, {0.05, 0.4, 0.5}, kHighSeed, 0.4961088907313407},
+      {"truchet", {0, 2.0, 0.5, 0.0, 1.0, 50.0, 1}, {0.45, 0.4, 0.5}, kHighSeed, 0.375},
+      {"truchet", {0, 2.0, 0.5, 0.0, 1.0, 50.0, 0}, {0.35, 0.05, 0.5}, kHighSeed, 0.375},
+  };
+  return cases;
+}
+
+class JwildfireVariationSetsColour : public testing::TestWithParam<ColourCase> {};
+
+TEST_P(JwildfireVariationSetsColour, ToTheHandComputedValue) {
+  const ColourCase& c = GetParam();
+  const VariationInfo& info = variationOrThrow(c.name);
+  EXPECT_TRUE(info.directColour);
+  const Outputs out = run(info, c.params.empty() ? info.defaultParams() : c.params, c.point, 0.8, c.seed, 37);
+  for (std::size_t lane = 0; lane < out.colour.size(); ++lane)
+    EXPECT_NEAR(out.colour[lane], c.colour, 1e-12) << "lane " << lane;
+}
+
+std::string colourCaseLabel(const testing::TestParamInfo<ColourCase>& info) {
+  return info.param.name + "_" + std::to_string(info.index);
+}
+
+INSTANTIATE_TEST_SUITE_P(Jwildfire, JwildfireVariationSetsColour, testing::ValuesIn(colourCases()), colourCaseLabel);
+
 // A file's parameters as JWildfire writes them (recurrenceplot's capitalised Density, plane_wf's image names) are
-// read, and the colour these variations would set is reported as lost.
-TEST(FlameVariationJwildfire, ImportReadsTheParametersAndReportsLostColour) {
+// read, and the direct colour is kept.
+TEST(FlameVariationJwildfire, ImportReadsTheParametersAndKeepsTheirColour) {
   const auto importXform = [](const std::string& xform) {
     const std::string text = "<flames><flame name=\"t\" size=\"64 64\"><xform weight=\"1\" color=\"0\" " + xform +
                              "/><color index=\"0\" rgb=\"255 255 255\"/></flame></flames>";
@@ -477,10 +536,14 @@ TEST(FlameVariationJwildfire, ImportReadsTheParametersAndReportsLostColour) {
   EXPECT_EQ(term.params.at(0), 2.0);
   EXPECT_EQ(term.params.at(4), 500.0);
   const ImportedFlame coloured = importXform(R"(recurrenceplot="1" recurrenceplot_dc="2" coefs="1 0 0 1 0 0")");
-  EXPECT_EQ(coloured.leftOut, (std::vector<std::string>{"direct colour of recurrenceplot"}));
-  const ImportedFlame plane = importXform(
-      R"(plane_wf="1" plane_wf_direct_color="0" plane_wf_colormap_filename="" plane_wf_displ_map_filename="" coefs="1 0 0 1 0 0")");
-  EXPECT_TRUE(plane.leftOut.empty()) << plane.leftOut.front();
+  EXPECT_TRUE(coloured.leftOut.empty()) << coloured.leftOut.front();
+  for (const char* direct : {"0", "1"}) {
+    const ImportedFlame plane = importXform(std::string(R"(plane_wf="1" plane_wf_direct_color=")") + direct +
+                                            R"(" plane_wf_color_mode="2" plane_wf_colormap_filename="" )"
+                                            R"(plane_wf_displ_map_filename="" coefs="1 0 0 1 0 0")");
+    EXPECT_TRUE(plane.leftOut.empty()) << plane.leftOut.front();
+    EXPECT_EQ(plane.genome.xforms.at(0).variations.at(0).params.at(3), direct[0] == '1' ? 1.0 : 0.0);
+  }
   const ImportedFlame symmetry = importXform(
       R"(linear="1" post_point_symmetry_wf="1" post_point_symmetry_wf_colorshift="0.1" coefs="1 0 0 1 0 0")");
   EXPECT_EQ(symmetry.leftOut, (std::vector<std::string>{"colour shift of post_point_symmetry_wf"}));

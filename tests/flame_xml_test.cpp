@@ -405,8 +405,7 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
     // Their colour shifts, set here, are the parameters not applied.
     if (info.name == "axis_symmetry_wf" || info.name == "point_symmetry_wf" || info.name == "mirror_wf")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour shift of " + info.name}));
-    else if (info.name == "truchet" || info.name == "recurrenceplot" || info.name == "spirograph3D" ||
-             info.name == "inversion")
+    else if (info.name == "inversion")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"direct colour of " + info.name}));
     else if (info.name == "svg_wf")  // JWildfire colours its points by the SVG's colours
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour of svg_wf"}));

@@ -113,6 +113,7 @@ VOXFLAME_VARIATION_TARGETS void truchet(const VariationInput& in, double* __rest
   const double exponent = std::clamp(P[1], 0.001, 2.0), width = std::clamp(P[2], 0.001, 1.0);
   const double rotation = P[3], size = std::clamp(P[4], 0.001, 10.0);
   const double seed = std::abs(P[5]);
+  const bool directColour = std::clamp(std::round(P[6]), 0.0, 1.0) == 1.0;  // Tools.FTOI
   const double seed2 = std::sqrt(seed + seed / 2.0 + 1e-300) / (seed * 0.5 + 1e-300) * 0.25;
   const double rMax = 0.5 * (std::pow(2.0, 1.0 / exponent) - 1.0) * width;
   const double scale = (std::cos(-rotation) - std::sin(-rotation)) / w;
@@ -149,10 +150,12 @@ VOXFLAME_VARIATION_TARGETS void truchet(const VariationInput& in, double* __rest
     const double r1 = diagonal ? norm(tx - 1.0, ty - 1.0) : norm(tx, ty - 1.0);
     const double px = size * (tx + std::floor(x[i])), py = size * (ty + std::floor(y[i]));
     if (std::abs(r0 - 0.5) / rMax < 1.0) {
+      if (directColour) colour[i] = std::clamp(r0, 0.0, 1.0);
       outX[i] += px;
       outY[i] += py;
     }
     if (std::abs(r1 - 0.5) / rMax < 1.0) {
+      if (directColour) colour[i] = std::clamp(1.0 - r1, 0.0, 1.0);
       outX[i] += px;
       outY[i] += py;
       outZ[i] += w * z[i];
@@ -413,7 +416,8 @@ void variation_kernels::addJwildfireVariations(std::vector<VariationInfo>& catal
       "nothing; q the point's place in its unit cell after scaling by (cos r − sin r)/w (r = −rotation, w the "
       "weight), the arcs round the corners (0, 0) and (1, 1) or (1, 0) and (0, 1) by a hash of the cell and seed, "
       "rmax = (2^(1/exponent) − 1) arc_width/2; z (w z from the second arc only); the weight is not applied "
-      "otherwise (JWildfire's; direct_color is not applied)",
+      "otherwise; direct_color sets the colour index to ‖q − corner‖ on the first arc and 1 − ‖q − corner‖ on the "
+      "second, held within 0…1 (JWildfire's)",
       k2D, kFixed, &truchet,
       {count("extended", 0.0, 0.0, 1.0),
        {"exponent", 2.0, 0.001, 2.0},
@@ -422,6 +426,7 @@ void variation_kernels::addJwildfireVariations(std::vector<VariationInfo>& catal
        {"size", 1.0, 0.001, 10.0},
        {"seed", 50.0, 0.0, 1000.0},
        count("direct_color", 0.0, 0.0, 1.0)});
+  catalogue.back().directColour = true;
   add("nBlur",
       "a random point of a regular numEdges-gon (corners favoured by highlightEdges; its stripes with numStripes, "
       "their widths by ratioStripes; a hole of ratioHole; its circumcircle with circumCircle; uniform with "

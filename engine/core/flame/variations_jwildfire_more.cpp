@@ -307,8 +307,10 @@ VOXFLAME_VARIATION_TARGETS void spirograph3D(const VariationInput& in, double* _
   const double a = P[0], b = P[1], c = P[2], tMin = P[3], tMax = P[4], width = P[5];
   const double mode = std::clamp(std::round(P[6]), 0.0, 4.0);
   const double ab = a + b, ratio = (a + b) / b;
+  const bool directColour = std::clamp(std::round(P[7]), 0.0, 1.0) == 1.0;  // Tools.FTOI
   for (std::size_t i = 0; i < n; ++i) {
     const double t = (tMax - tMin) * laneUniform(rnd[i]) + tMin;
+    if (directColour) colour[i] = std::fmod(t / kTwoPi, 1.0);  // negative below t = 0, as JWildfire's
     double w1 = 0.0, w2 = 0.0, w3 = 0.0;
     if (mode == 0.0) {
       w1 = w2 = w3 = width * laneUniform(rnd[i]) - width / 2.0;
@@ -794,8 +796,8 @@ void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& c
        count("mode", 0.0, 0.0, 1.0)});
   add("spirograph3D",
       "((a + b) cos t − c cos(q t), (a + b) sin t − c sin(q t), c sin(q t)) + offsets of width (by mode), q = (a + "
-      "b)/b, t = tmin + (tmax − tmin)Ψ; the point itself is not used (as JWildfire has it; its direct colour is not "
-      "applied)",
+      "b)/b, t = tmin + (tmax − tmin)Ψ; the point itself is not used; direct_color sets the colour index to (t/2π) "
+      "mod 1 (as JWildfire has it)",
       k3D, kRandom, &spirograph3D,
       {{"a", 1.0, -2.0, 2.0},
        {"b", -0.3, -2.0, 2.0},
@@ -805,6 +807,7 @@ void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& c
        {"width", 0.0, 0.0, 1.0},
        count("mode", 0.0, 0.0, 4.0),
        count("direct_color", 0.0, 0.0, 1.0)});
+  catalogue.back().directColour = true;
   add("rhodonea",
       "the rose (cos(k t) + radial_offset (+ fill (Ψ − ½)))·(cos t, sin t), k = knumer/kdenom, t = cycles (φ + 2π "
       "cycle_offset), spread by the point's distance per inner_mode/outer_mode (0–6), times w + metacycle_expansion "

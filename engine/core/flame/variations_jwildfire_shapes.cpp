@@ -143,8 +143,19 @@ VOXFLAME_VARIATION_TARGETS void planeWf(const VariationInput& in, double* __rest
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double position = P[0], size = P[1];
   const double axis = std::clamp(jwfFtoi(P[2]), 0.0, 2.0);
+  const bool direct = std::clamp(jwfFtoi(P[3]), 0.0, 1.0) == 1.0;
+  const double colourMode = std::clamp(jwfFtoi(P[4]), 0.0, 3.0);
   for (std::size_t i = 0; i < n; ++i) {
-    const double u = (0.5 - laneUniform(rnd[i])) * size, v = (0.5 - laneUniform(rnd[i])) * size;
+    const double a = 0.5 - laneUniform(rnd[i]), b = 0.5 - laneUniform(rnd[i]);
+    if (direct) {
+      // JWildfire colours by the square's own coordinates (u, v), which on the plane zx are (z, x).
+      const double cu = (axis == 2.0 ? b : a) + 0.5, cv = (axis == 2.0 ? a : b) + 0.5;
+      if (colourMode == 1.0) colour[i] = cu;
+      if (colourMode == 2.0) colour[i] = cv;
+      if (colourMode == 3.0) colour[i] = cu * cv;
+      colour[i] = std::clamp(colour[i], 0.0, 1.0);
+    }
+    const double u = a * size, v = b * size;
     double px = u, py = v, pz = position;  // axis 0: the plane xy
     if (axis == 1.0) {
       px = position;
@@ -493,7 +504,10 @@ double recurrenceSignal(const RecurrenceSetup& s, double i) {
 // y(j)| < tolerance; the point itself is not used. JWildfire repeats the last point drawn when a
 // pair misses (a variation here has no memory); here pairs are drawn again until one is near, up to
 // 1000 times, and the point is dropped (NaN, the chaos game's escape) if none is. k is held within
-// 0…1000 (the Fourier series' terms). Its direct colour (dc) is not applied; the importer says so.
+// 0…1000 (the Fourier series' terms). Direct colour dc 1 sets the colour index to |½ x y / scale + offset|
+// mod 1 and dc 2 to |½ ((c x + s y + offset) / scale + 1)| mod 1 (c, s the cosine and sine of angle), at
+// the running sum (x, y) as JWildfire's pVarTP holds it (an ordinary term's output arrays; a pre_ or post_
+// term's start from 0, so its input point is added), with a zero scale taken as 1e-5 as JWildfire's.
 VOXFLAME_VARIATION_TARGETS void recurrencePlot(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                                double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
@@ -503,6 +517,10 @@ VOXFLAME_VARIATION_TARGETS void recurrencePlot(const VariationInput& in, double*
   s.b = P[2];
   s.k = std::clamp(javaInt(P[3]), 0, 1000);
   s.n = static_cast<double>(javaInt(P[4]));
+  const int directColour = javaInt(P[5]);
+  const double colourScale = 1.0 / (P[6] == 0.0 ? 1e-5 : P[6]);
+  const double cosAngle = std::cos(P[7]), sinAngle = std::sin(P[7]), colourOffset = P[8];
+  const double runningSum = in.stage == VariationStage::Normal ? 0.0 : 1.0;
   const double tolerance = P[9];
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   constexpr int kTries = 1000;
@@ -521,6 +539,11 @@ VOXFLAME_VARIATION_TARGETS void recurrencePlot(const VariationInput& in, double*
     outX[i] += w * px;
     outY[i] += w * py;
     outZ[i] += w * z[i];
+    if (directColour == 0 || std::isnan(px)) continue;
+    const double sx = outX[i] + runningSum * x[i], sy = outY[i] + runningSum * y[i];
+    const double index = directColour == 1 ? 0.5 * colourScale * sx * sy + colourOffset
+                                           : 0.5 * (colourScale * (cosAngle * sx + sinAngle * sy + colourOffset) + 1.0);
+    if (directColour == 1 || directColour == 2) colour[i] = laneFmod(std::abs(index), 1.0);
   }
 }
 
@@ -629,8 +652,9 @@ void variation_kernels::addJwildfireShapeVariations(std::vector<VariationInfo>& 
   add("plane_wf",
       "a random point of a square of side `size` in the plane xy (axis 0: (size(½ − Ψ₁), size(½ − Ψ₂), position)), "
       "yz (axis 1: (position, size(½ − Ψ₁), size(½ − Ψ₂))) or zx (axis 2: (size(½ − Ψ₁), position, size(½ − "
-      "Ψ₂))); the point itself is not used (JWildfire's; its direct colour and colour and displacement images are not "
-      "applied)",
+      "Ψ₂))); the point itself is not used; direct_color sets the colour index to the square's u + ½ (color_mode 1), "
+      "v + ½ (2) or their product (3), (u, v) = (½ − Ψ₁, ½ − Ψ₂) on xy and yz, (½ − Ψ₂, ½ − Ψ₁) on zx (JWildfire's; "
+      "its colour and displacement images are not applied)",
       k3D, kRandom, &planeWf,
       {{"position", 3.0, -5.0, 5.0},
        {"size", 10.0, 0.0, 20.0},
@@ -642,6 +666,7 @@ void variation_kernels::addJwildfireShapeVariations(std::vector<VariationInfo>& 
        count("blend_displ_map", 0.0, 0.0, 1.0),
        count("calc_color_idx", 0.0, 0.0, 1.0),
        count("receive_only_shadows", 0.0, 0.0, 1.0)});
+  catalogue.back().directColour = true;
   add("point_symmetry_wf",
       "c + R(2πk/order)·w(p − c), c = (centre_x, centre_y), k = ⌊Ψ·order⌋, R turning clockwise; z: the point "
       "itself, the weight scaling its offset from c (JWildfire's post_point_symmetry_wf; its colour shift is not "
@@ -699,8 +724,9 @@ void variation_kernels::addJwildfireShapeVariations(std::vector<VariationInfo>& 
   add("recurrenceplot",
       "(i/N − ½, j/N − ½, z) for a random pair of samples i, j = ⌊NΨ⌋ of the signal func_id (30 of them) with |y(i) − "
       "y(j)| < tolerance, N = Density; the point itself is not used; pairs are drawn again until one is near (up to "
-      "1000 times, then the point is dropped) where JWildfire repeats its last point (Jesus Sosa's; its direct "
-      "colour dc is not applied)",
+      "1000 times, then the point is dropped) where JWildfire repeats its last point (Jesus Sosa's); dc 1: colour "
+      "index |½ x y / scale + offset| mod 1, dc 2: |½ ((x cos angle + y sin angle + offset) / scale + 1)| mod 1, at "
+      "the sum",
       k2D, kRandom, &recurrencePlot,
       {count("func_id", 0.0, 0.0, 29.0),
        {"a", 0.5, 0.0, 10.0},
@@ -712,6 +738,7 @@ void variation_kernels::addJwildfireShapeVariations(std::vector<VariationInfo>& 
        {"angle", 0.0, -kPi, kPi},
        {"offset", 0.0, 0.0, 1.0},
        {"tolerance", 5.0, 0.0, 50.0}});
+  catalogue.back().directColour = true;
   add("minkowskope",
       "−p where |y| ≤ t, else p; z; t = amplitude e^(−damping |x|) M(frequencyx x/2 − 1 + perturbation M(frequencyy "
       "y/2)) + separation, M a wave of Minkowski's question-mark function (dark-beam's, as JWildfire has it; files may "

@@ -799,14 +799,10 @@ class FlameReader {
         lose("colour shift of " + withoutCopyMark(name));
         warn(context + " has " + name + " with a colour shift, which voxflame does not apply");
       }
-      // truchet's, plane_wf's, spirograph3D's, inversion's, recurrenceplot's and others' direct colour (the
-      // point's colour set by the variation, JWildfire's way) is not applied either.
-      if ((info->name == "truchet" && std::round(term.params.at(6)) == 1.0) ||
-          (info->name == "plane_wf" && std::round(term.params.at(3)) == 1.0) ||
-          (info->name == "spirograph3D" && std::round(term.params.at(7)) != 0.0) ||
-          (info->name == "inversion" && std::trunc(term.params.at(21)) >= 1.0 &&
+      // inversion's direct colour, and dc_quadtree's and dc_ducks' RGB colours (the point's colour set
+      // by the variation, JWildfire's way), are not applied either.
+      if ((info->name == "inversion" && std::trunc(term.params.at(21)) >= 1.0 &&
            std::trunc(term.params.at(21)) <= 4.0) ||
-          (info->name == "recurrenceplot" && std::trunc(term.params.at(5)) != 0.0) ||
           // dc_quadtree's and dc_ducks' Gradient 0 and 1 (an RGB colour; 2 is a grey level as the index).
           (info->name == "dc_quadtree" && !(term.params.at(6) >= 2.0)) ||
           (info->name == "dc_ducks" && !(term.params.at(4) >= 2.0))) {
