@@ -130,6 +130,19 @@ TEST(FlameImport, UnknownVariationsExtendingAKnownNameAreUnknownVariations) {
       << allWarnings(flame);
 }
 
+// A transform's own attributes own no parameters: post_zzstroke_wf (a name the catalogue will never have) beside
+// the post-affine `post` is a variation voxflame does not know, named with its weight, not post's parameter
+// dropped without a word; its own parameters go with it, and so does color_type beside `color`.
+TEST(FlameImport, AnUnknownVariationExtendingATransformAttributeIsNamed) {
+  const ImportedFlame flame =
+      importFlat(flameFile("<xform weight=\"1\" color=\"0.5\" opacity=\"0\" waves2=\"1\" post_zzstroke_wf=\"1\" "
+                           "post_zzstroke_wf_blend=\"0.25\" coefs=\"1 0 0 1 0 0\" post=\"0.12 0 0 1 0 0\"/>\n"
+                           "<xform weight=\"1\" color=\"0\" linear=\"1\" coefs=\"0.5 0 0 0.5 0 0\"/>\n"));
+  EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"variation post_zzstroke_wf"})) << allWarnings(flame);
+  EXPECT_TRUE(hasWarningContaining(flame, "left out: post_zzstroke_wf")) << allWarnings(flame);
+  EXPECT_FALSE(hasWarningContaining(flame, "post_zzstroke_wf_blend")) << allWarnings(flame);
+}
+
 namespace {
 
 double numberAt(const Scene& scene, const std::string& path, double seconds) {

@@ -136,6 +136,13 @@ const VariationInfo* variationNamed(std::string_view name) {
   const std::string wanted = lowered(name);
   for (const VariationInfo& info : variationCatalogue())
     if (lowered(info.name) == wanted) return &info;
+  // ...and capitalised after a pre_ or post_ (Apophysis' post_Mobius, post_Spherical3D).
+  for (const std::string_view stage : {std::string_view("pre_"), std::string_view("post_")}) {
+    if (!wanted.starts_with(stage)) continue;
+    const std::string_view rest = std::string_view(wanted).substr(stage.size());
+    for (const VariationInfo& info : variationCatalogue())
+      if (lowered(info.name) == rest) return &info;
+  }
   return nullptr;
 }
 
@@ -189,10 +196,10 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
 
 // The name a term keeps: the catalogue's spelling, with the file's pre_/post_ prefix.
 std::string termName(std::string_view fileName, const VariationInfo& info) {
-  if (findVariation(fileName) == &info && fileName != info.name) {
-    if (fileName.starts_with("pre_")) return "pre_" + info.name;
-    if (fileName.starts_with("post_")) return "post_" + info.name;
-  }
+  const std::string name = lowered(fileName);
+  if (name == lowered(info.name)) return info.name;  // the catalogue's own pre_blur among them
+  if (name.starts_with("pre_")) return "pre_" + info.name;
+  if (name.starts_with("post_")) return "post_" + info.name;
   return info.name;
 }
 
@@ -867,7 +874,9 @@ class FlameReader {
           }
           break;
         }
-        if (byName.contains(prefix)) {
+        // (The transform's own attributes are no variation: post_brush_stroke_wf beside a post-affine
+        // `post` is a variation of its own, not post's parameter.)
+        if (byName.contains(prefix) && !knownXformAttributes().contains(prefix)) {
           parameter = true;  // of an unknown variation, left out with it
           break;
         }
