@@ -496,7 +496,7 @@ TEST(FlameVariationColour, OnlyColourVariationsAreMarkedDirectColour) {
     const bool colours = info.name.starts_with("dc_") || info.name == "randCubes" || info.name == "curl_sp" ||
                          info.name == "falloff2" || info.name == "falloff3" || info.name == "pixel_flow" ||
                          info.name == "stabilize" || info.name == "szubieta" || info.name == "subflame_wf" ||
-                         info.name == "glynns3subfl" ||
+                         info.name == "glynns3subfl" || info.name == "parplot2d_wf" ||
                          info.name == "smartcrop";  // cropmode 2 restores the kept point's colour
     EXPECT_EQ(info.directColour, colours) << info.name;
   }
