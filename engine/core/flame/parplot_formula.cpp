@@ -246,6 +246,8 @@ void ParplotEvaluator::setParams(const double* sixParams) {
   std::copy(sixParams, sixParams + 6, impl_->vars.params);
 }
 
+// One Eval per formula and point, not muParser's bulk mode: Debian builds muParser with OpenMP, and
+// its bulk mode would start OpenMP's threads inside the chaos game's own workers.
 std::array<double, 3> ParplotEvaluator::operator()(double u, double v) {
   if (!impl_->ok) {
     constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
