@@ -497,7 +497,7 @@ TEST(FlameVariationColour, OnlyColourVariationsAreMarkedDirectColour) {
                          info.name == "falloff2" || info.name == "falloff3" || info.name == "pixel_flow" ||
                          info.name == "stabilize" || info.name == "szubieta" || info.name == "subflame_wf" ||
                          info.name == "glynns3subfl" || info.name == "plane_wf" || info.name == "truchet" ||
-                         info.name == "spirograph3D" || info.name == "recurrenceplot" ||
+                         info.name == "spirograph3D" || info.name == "recurrenceplot" || info.name == "parplot2d_wf" ||
                          info.name == "smartcrop";  // cropmode 2 restores the kept point's colour
     EXPECT_EQ(info.directColour, colours) << info.name;
   }

@@ -214,6 +214,8 @@ void addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue);
 void addSvgVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's subflame variations, which embed a whole flame (variations_subflame.cpp).
 void addSubflameVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire's parplot2d_wf, a parametric surface of formulas (variations_parplot.cpp).
+void addParplotVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

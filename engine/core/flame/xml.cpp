@@ -26,6 +26,7 @@
 #include "core/chaos_game.h"
 #include "core/error.h"
 #include "core/keyframes.h"
+#include "core/flame/parplot_formula.h"
 #include "core/flame/subflame.h"
 #include "core/flame/svg_raster.h"
 #include "core/flame/variations.h"
@@ -331,12 +332,14 @@ bool isDerivedParam(const VariationInfo& info, std::string_view param) {
 // colour and displacement images and recurrenceplot's reference document. voxflame reads no images:
 // an empty name (no image) loses nothing, a named image is left out.
 bool isJwildfireResource(const VariationInfo& info, std::string_view param) {
-  return (info.name == "plane_wf" && (param == "colormap_filename" || param == "displ_map_filename")) ||
+  const bool imageMaps = info.name == "plane_wf" || info.name == "parplot2d_wf";
+  return (imageMaps && (param == "colormap_filename" || param == "displ_map_filename")) ||
          (info.name == "recurrenceplot" && param == "func_id_reference") ||
+         (info.name == "parplot2d_wf" && param == "preset_id_reference") ||
          (embedsFlame(info) && param == "flame_filename");
 }
-bool jwildfireResourceMatters(const VariationInfo& info, std::string_view value) {
-  return info.name == "plane_wf" && !value.empty();
+bool jwildfireResourceMatters(const VariationInfo& info, std::string_view param, std::string_view value) {
+  return (info.name == "plane_wf" || info.name == "parplot2d_wf") && param.ends_with("_filename") && !value.empty();
 }
 
 // JWildfire stores a motion curve beside any variation parameter (`<variation>_<parameter>_enabled`,
@@ -790,6 +793,24 @@ class FlameReader {
         lose("colour of " + withoutCopyMark(name));
         warn(context + " has " + name + ", which JWildfire colours by the SVG's colours; voxflame does not");
       }
+      // parplot2d_wf's formulas: a file normally gives all three (JWildfire writes a preset's formulas
+      // beside its preset_id too, so presets need not be looked up). One muParser cannot read makes
+      // the term add nothing.
+      if (info->name == "parplot2d_wf" && term.weight != 0.0) {
+        for (std::size_t i = 0; i < info->textParams.size(); ++i) {
+          const std::string& key = info->textParams[i].name;
+          if (!byLowerName.contains(lowered(name + "_" + key))) {
+            lose(key + " of " + withoutCopyMark(name));
+            warn(context + " has " + name + " without its " + key + "; voxflame's default (a torus's) stands in");
+          } else if (const std::optional<std::string> error = parplotFormulaError(term.texts[i])) {
+            const std::string& formula = term.texts[i];
+            lose(key + " of " + withoutCopyMark(name));
+            warn(context + " has " + name + " whose " + key + " \"" +
+                 (formula.size() > 120 ? formula.substr(0, 120) + "..." : formula) +
+                 "\" cannot be evaluated (muParser: " + *error + "); the variation adds nothing");
+          }
+        }
+      }
       // A variation of weight 0 draws nothing, unless a motion gives it weight (motion below).
       if (term.weight == 0.0) {
         zeroTerms.emplace(name, std::move(term));
@@ -865,7 +886,7 @@ class FlameReader {
             parameter = true;
           } else if (isJwildfireResource(*info, rest)) {
             parameter = true;
-            if (jwildfireResourceMatters(*info, attribute.value())) {
+            if (jwildfireResourceMatters(*info, rest, attribute.value())) {
               lose("image " + withoutCopyMark(prefix) + "_" + rest);
               warn(context + " gives '" + name + "' an image, which voxflame does not read; it was left out");
             }

@@ -1,0 +1,45 @@
+// JWildfire's parplot2d_wf draws a parametric surface (x, y, z) = (X(u, v), Y(u, v), Z(u, v)) whose
+// three formulas are text parameters. JWildfire compiles them as Java expressions (Janino) with
+// MathLib's static functions and constants in scope, `pi`, u, v and param_a … param_f; voxflame
+// evaluates them with muParser, after rewriting what of Java muParser reads otherwise (parplot_formula.cpp
+// says what). A compiled evaluator is not safe to share between threads: each thread compiles its
+// own, once per set of formulas (parplotEvaluator), never per point.
+#pragma once
+
+#include <array>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace voxflame::core {
+
+// Why one formula cannot be evaluated (muParser's message), or nullopt when it can. An empty
+// formula is 0, as in JWildfire.
+std::optional<std::string> parplotFormulaError(const std::string& formula);
+
+// The three formulas compiled for one thread. Not copyable: muParser holds the addresses of u, v
+// and the parameters.
+class ParplotEvaluator {
+ public:
+  ParplotEvaluator(const std::string& x, const std::string& y, const std::string& z);
+  ~ParplotEvaluator();
+  ParplotEvaluator(const ParplotEvaluator&) = delete;
+  ParplotEvaluator& operator=(const ParplotEvaluator&) = delete;
+
+  bool ok() const;  // false when a formula does not compile: it then evaluates to nothing
+  bool isFor(const std::string& x, const std::string& y, const std::string& z) const;
+  // param_a … param_f, read by every evaluation after this.
+  void setParams(const double* sixParams);
+  // (X, Y, Z) at (u, v); NaN or infinite where the formulas are (sqrt of a negative, 1/0).
+  std::array<double, 3> operator()(double u, double v);
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+// This thread's evaluator for these formulas: the few it used last are kept compiled. The
+// reference holds until this thread's next call.
+ParplotEvaluator& parplotEvaluator(const std::string& x, const std::string& y, const std::string& z);
+
+}  // namespace voxflame::core
