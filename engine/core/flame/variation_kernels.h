@@ -214,6 +214,8 @@ void addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue);
 void addSvgVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's subflame variations, which embed a whole flame (variations_subflame.cpp).
 void addSubflameVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire's obj_mesh_primitive_wf, points on built-in meshes (variations_jwildfire_mesh.cpp).
+void addJwildfireMeshVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 
