@@ -91,6 +91,11 @@ double jwfFtoi(double value) {
 // SimpleMesh: float vertices, merged when FTOI(coordinate · 10000) agree in all three.
 class MeshBuilder {
  public:
+  void reserve(std::size_t vertices, std::size_t faces) {
+    index_.reserve(vertices);
+    mesh_.vertices.reserve(3 * vertices);
+    mesh_.faces.reserve(3 * faces);
+  }
   std::uint32_t vertex(double x, double y, double z) {
     const std::array<std::int64_t, 3> key = {keyOf(x), keyOf(y), keyOf(z)};
     const auto [it, added] = index_.try_emplace(key, static_cast<std::uint32_t>(mesh_.vertices.size() / 3));
@@ -383,6 +388,8 @@ void wedge(MeshBuilder& builder) {
 // SimpleMesh.interpolate: each triangle into four at its edges' midpoints (floats, as JWildfire's).
 PrimitiveMesh subdivide(const PrimitiveMesh& mesh) {
   MeshBuilder builder;
+  // A closed mesh gains one vertex per edge (3/2 per face).
+  builder.reserve(mesh.vertices.size() / 3 + 3 * mesh.faceCount() / 2, 4 * mesh.faceCount());
   const auto corner = [&](std::uint32_t v) {
     return std::array<float, 3>{mesh.vertices[3 * v], mesh.vertices[3 * v + 1], mesh.vertices[3 * v + 2]};
   };
@@ -407,24 +414,39 @@ PrimitiveMesh subdivide(const PrimitiveMesh& mesh) {
 // SimpleMesh.taubinSmooth: per pass a Laplacian step by lambda, then one by mu; each moves a vertex
 // with more than one neighbour by strength times the mean of (neighbour − vertex).
 void taubinSmooth(PrimitiveMesh& mesh, int passes, double lambda, double mu) {
+  if (passes <= 0) return;
   const std::size_t count = mesh.vertices.size() / 3;
-  std::vector<std::vector<std::uint32_t>> neighbours(count);
-  const auto link = [&](std::uint32_t from, std::uint32_t to) {
-    auto& list = neighbours[from];
-    if (std::find(list.begin(), list.end(), to) == list.end()) list.push_back(to);
-  };
+  // Each vertex's neighbours in the order JWildfire's NeightboursList meets them (faces in order, per
+  // face a→b, a→c, b→a, b→c, c→a, c→b), each once: every link in a flat list grouped by vertex
+  // (a subdivided mesh has millions of vertices: no list per vertex), then duplicates dropped.
+  std::vector<std::uint32_t> start(count + 1, 0);
+  for (const std::uint32_t v : mesh.faces) start[v + 1] += 2;
+  for (std::size_t v = 0; v < count; ++v) start[v + 1] += start[v];
+  std::vector<std::uint32_t> links(start.back()), filled(start.begin(), start.end() - 1);
   for (std::size_t f = 0; f < mesh.faceCount(); ++f) {
     const std::uint32_t a = mesh.faces[3 * f], b = mesh.faces[3 * f + 1], c = mesh.faces[3 * f + 2];
-    link(a, b), link(a, c), link(b, a), link(b, c), link(c, a), link(c, b);
+    links[filled[a]++] = b, links[filled[a]++] = c;
+    links[filled[b]++] = a, links[filled[b]++] = c;
+    links[filled[c]++] = a, links[filled[c]++] = b;
   }
+  std::vector<std::uint32_t> first(count + 1, 0), neighbours;
+  neighbours.reserve(links.size() / 2);
+  for (std::size_t v = 0; v < count; ++v) {
+    first[v] = static_cast<std::uint32_t>(neighbours.size());
+    for (std::uint32_t k = start[v]; k < start[v + 1]; ++k)
+      if (std::find(neighbours.begin() + first[v], neighbours.end(), links[k]) == neighbours.end())
+        neighbours.push_back(links[k]);
+  }
+  first[count] = static_cast<std::uint32_t>(neighbours.size());
   std::vector<float> displacement(mesh.vertices.size());
   const auto step = [&](double strength) {
     std::fill(displacement.begin(), displacement.end(), 0.0f);
     for (std::size_t v = 0; v < count; ++v) {
-      if (neighbours[v].size() <= 1) continue;
-      const double weight = 1.0 / static_cast<double>(neighbours[v].size());
-      for (const std::uint32_t u : neighbours[v])
-        for (int c = 0; c < 3; ++c)
+      const std::uint32_t size = first[v + 1] - first[v];
+      if (size <= 1) continue;
+      const double weight = 1.0 / static_cast<double>(size);
+      for (std::uint32_t k = first[v]; k < first[v + 1]; ++k)
+        for (std::size_t u = neighbours[k], c = 0; c < 3; ++c)
           displacement[3 * v + c] =
               static_cast<float>(displacement[3 * v + c] +
                                  static_cast<double>(mesh.vertices[3 * u + c] - mesh.vertices[3 * v + c]) * weight);
