@@ -407,6 +407,8 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour shift of " + info.name}));
     else if (info.name == "inversion")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"direct colour of " + info.name}));
+    else if (info.name == "obj_mesh_primitive_wf")  // receive_only_shadows 1: a setting of solid rendering
+      EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"receive_only_shadows of " + info.name}));
     else if (info.name == "svg_wf")  // JWildfire colours its points by the SVG's colours
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour of svg_wf"}));
     else if (info.name == "subflame_wf" || info.name == "glynns3subfl")  // no flame embedded; colour mode −2

@@ -49,6 +49,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addSvgVariations(c);
   variation_kernels::addSubflameVariations(c);
   variation_kernels::addParplotVariations(c);
+  variation_kernels::addJwildfireMeshVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")

@@ -216,6 +216,8 @@ void addSvgVariations(std::vector<VariationInfo>& catalogue);
 void addSubflameVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's parplot2d_wf, a parametric surface of formulas (variations_parplot.cpp).
 void addParplotVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire's obj_mesh_primitive_wf, points on built-in meshes (variations_jwildfire_mesh.cpp).
+void addJwildfireMeshVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

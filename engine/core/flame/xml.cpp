@@ -27,6 +27,7 @@
 #include "core/error.h"
 #include "core/keyframes.h"
 #include "core/flame/parplot_formula.h"
+#include "core/flame/obj_mesh_primitives.h"
 #include "core/flame/subflame.h"
 #include "core/flame/svg_raster.h"
 #include "core/flame/variations.h"
@@ -329,17 +330,20 @@ bool isDerivedParam(const VariationInfo& info, std::string_view param) {
 }
 
 // JWildfire writes a variation's resources (file names, references) beside its parameters: plane_wf's
-// colour and displacement images and recurrenceplot's reference document. voxflame reads no images:
-// an empty name (no image) loses nothing, a named image is left out.
+// and obj_mesh_primitive_wf's colour and displacement images, recurrenceplot's and
+// obj_mesh_primitive_wf's reference documents. voxflame reads no images: an empty name (no image)
+// loses nothing, a named image is left out (the image file does not travel with the flame).
 bool isJwildfireResource(const VariationInfo& info, std::string_view param) {
-  const bool imageMaps = info.name == "plane_wf" || info.name == "parplot2d_wf";
+  const bool imageMaps = info.name == "plane_wf" || info.name == "parplot2d_wf" || info.name == "obj_mesh_primitive_wf";
   return (imageMaps && (param == "colormap_filename" || param == "displ_map_filename")) ||
          (info.name == "recurrenceplot" && param == "func_id_reference") ||
          (info.name == "parplot2d_wf" && param == "preset_id_reference") ||
+         (info.name == "obj_mesh_primitive_wf" && param == "primitive_reference") ||
          (embedsFlame(info) && param == "flame_filename");
 }
 bool jwildfireResourceMatters(const VariationInfo& info, std::string_view param, std::string_view value) {
-  return (info.name == "plane_wf" || info.name == "parplot2d_wf") && param.ends_with("_filename") && !value.empty();
+  return (info.name == "plane_wf" || info.name == "parplot2d_wf" || info.name == "obj_mesh_primitive_wf") &&
+         param.ends_with("_filename") && !value.empty();
 }
 
 // JWildfire stores a motion curve beside any variation parameter (`<variation>_<parameter>_enabled`,
@@ -811,6 +815,7 @@ class FlameReader {
           }
         }
       }
+      if (info->name == "obj_mesh_primitive_wf" && term.weight != 0.0) checkObjMeshPrimitive(name, context, term);
       // A variation of weight 0 draws nothing, unless a motion gives it weight (motion below).
       if (term.weight == 0.0) {
         zeroTerms.emplace(name, std::move(term));
@@ -951,6 +956,30 @@ class FlameReader {
     readFlam3Motion(node, context, x, isFinal, termFor);
     readJwildfireCurves(node, context, x, isFinal, termFor);
     return x;
+  }
+
+  // obj_mesh_primitive_wf: say which of JWildfire's built-in meshes voxflame does not build (the
+  // term then draws nothing), and that the solid renderer's shadow setting is not followed.
+  void checkObjMeshPrimitive(const std::string& attribute, const std::string& context, const VariationTerm& term) {
+    const std::string variation = withoutCopyMark(attribute);
+    const double value = term.params.at(0);
+    const std::size_t index = objMeshPrimitiveIndex(value);
+    if (index == kObjMeshPrimitiveCount) {
+      warn(context + " has " + attribute + " with primitive " + formatted(value) +
+           ", outside JWildfire's list (0–25): it draws JWildfire's stand-in, a cube from −1 to 1");
+    } else if (!objMeshPrimitiveReproduced(index)) {
+      lose(std::string("primitive ") + objMeshPrimitiveName(index) + " of " + variation);
+      warn(context + " has " + attribute + " with primitive " + std::to_string(index) + " (JWildfire's " +
+           objMeshPrimitiveName(index) + " mesh), which voxflame does not build; it draws nothing");
+    }
+    // receive_only_shadows (JWildfire's limitIntVal(FTOI(v), 0, 1)): the points take shadows in
+    // JWildfire's solid rendering but cast none.
+    if (const double shadows = term.params.at(14); std::isfinite(shadows) && std::round(shadows) >= 1.0) {
+      lose("receive_only_shadows of " + variation);
+      warn(context + " has " + attribute +
+           " with receive_only_shadows, a setting of JWildfire's solid rendering (its points cast no shadow), which "
+           "voxflame does not follow");
+    }
   }
 
   // A variation's text parameter (subflame_wf's embedded flame, `<variation>_flame`), which JWildfire
