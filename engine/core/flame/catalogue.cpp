@@ -266,12 +266,12 @@ std::string variationsMarkdown() {
         "completed: synth 33, text_wf 29, bwraps7 12, blob3D 11,\ndc_linear 11, parplot2d_wf 11, spirograph "
         "10, yin_yang 10, waves2b 8, affine3D 7, boarders2 7, juliac 7, plane_wf 7,\npoint_symmetry_wf 7, "
         "cannabiscurve_wf 6, recurrenceplot 6, waves2_3D 6, barycentroid 5, blade3D 5, butterfly3D 5,\n"
-        "cylinder_apo 5, waffle 5, xtrb 5. Not here, because they need what a variation's numbers cannot "
-        "carry: text_wf\n(fonts), parplot2d_wf, polarplot3d_wf and isosfplot3d_wf (formula text), "
-        "obj_mesh_primitive_wf and dla3d_wf\n(meshes and a grown cluster), brush_stroke_wf (images), and "
-        "mandelbrot and Fractorium's hexaplay3D and hexnix3D\n(an orbit or a walk over hexagons kept "
-        "from one iteration to the next, where a variation here keeps nothing). `hopalong`\nkeeps an orbit "
-        "too, but one that does not depend on the point: it draws a point of the orbit's first 2²⁰ instead.\n\n"
+        "cylinder_apo 5, waffle 5, xtrb 5. parplot2d_wf's formula text is evaluated by muParser, and\n"
+        "obj_mesh_primitive_wf's meshes are built in code. Not here: text_wf (fonts), polarplot3d_wf and "
+        "isosfplot3d_wf\n(formula text of other shapes), obj_mesh_wf (a mesh file beside the flame), dla3d_wf "
+        "(a grown cluster),\nbrush_stroke_wf (images), and mandelbrot and Fractorium's hexaplay3D and hexnix3D "
+        "(an orbit or a walk over\nhexagons kept from one iteration to the next). `hopalong` keeps an orbit too, "
+        "but one that does not depend on the\npoint: it draws a point of the orbit's first 2²⁰ instead.\n\n"
      << "| name | kind | parameters (default, slider range) | formula |\n"
      << "| --- | --- | --- | --- |\n";
   for (const VariationInfo& info : variationCatalogue()) {
