@@ -493,12 +493,13 @@ TEST(FlameVariationColour, LinearAsPrePostColoursByItsInputPlusItsResult) {
 // Only the variations that read or set the colour say so.
 TEST(FlameVariationColour, OnlyColourVariationsAreMarkedDirectColour) {
   for (const VariationInfo& info : variationCatalogue()) {
-    const bool colours = info.name.starts_with("dc_") || info.name == "randCubes" || info.name == "curl_sp" ||
-                         info.name == "falloff2" || info.name == "falloff3" || info.name == "pixel_flow" ||
-                         info.name == "stabilize" || info.name == "szubieta" || info.name == "subflame_wf" ||
-                         info.name == "glynns3subfl" || info.name == "plane_wf" || info.name == "truchet" ||
-                         info.name == "spirograph3D" || info.name == "recurrenceplot" || info.name == "parplot2d_wf" ||
-                         info.name == "smartcrop";  // cropmode 2 restores the kept point's colour
+    const bool colours =
+        info.name.starts_with("dc_") || info.name == "randCubes" || info.name == "curl_sp" || info.name == "falloff2" ||
+        info.name == "falloff3" || info.name == "pixel_flow" || info.name == "stabilize" || info.name == "szubieta" ||
+        info.name == "subflame_wf" || info.name == "glynns3subfl" || info.name == "plane_wf" ||
+        info.name == "truchet" || info.name == "spirograph3D" || info.name == "recurrenceplot" ||
+        info.name == "parplot2d_wf" || info.name == "point_symmetry_wf" || info.name == "mirror_wf" ||
+        info.name == "axis_symmetry_wf" || info.name == "smartcrop";  // cropmode 2 restores the kept point's colour
     EXPECT_EQ(info.directColour, colours) << info.name;
   }
 }

@@ -499,6 +499,19 @@ const std::vector<ColourCase>& colourCases() {
       {"truchet", {0, 2.0, 0.5, 0.0, 1.0, 50.0, 1}, {0.05, 0.4, 0.5}, kHighSeed, 0.4961088907313407},
       {"truchet", {0, 2.0, 0.5, 0.0, 1.0, 50.0, 1}, {0.45, 0.4, 0.5}, kHighSeed, 0.375},
       {"truchet", {0, 2.0, 0.5, 0.0, 1.0, 50.0, 0}, {0.35, 0.05, 0.5}, kHighSeed, 0.375},
+      // point_symmetry_wf: k = ⌊3Ψ⌋ = 2 (high seed) moves the colour by 2 · colorshift, k = 0 (low seed) not at all;
+      // fmod keeps the sign of a negative sum.
+      {"point_symmetry_wf", {0.25, 0.5, 3, 0.3}, kPoint, kHighSeed, 0.975},
+      {"point_symmetry_wf", {0.25, 0.5, 3, 0.3}, kPoint, kLowSeed, 0.375},
+      {"point_symmetry_wf", {0.25, 0.5, 3, -0.5}, kPoint, kHighSeed, -0.625},
+      // mirror_wf with all three axes: Ψ = 0.879, 0.545, 0.394 mirror z alone (+ zcolorshift); Ψ = 0.317, 0.876,
+      // 0.483 mirror x and z (+ xcolorshift + zcolorshift).
+      {"mirror_wf", {1, 1, 1, 0, 0, 0, 1, 1, 0.1, 0.2, 0.3}, kPoint, kHighSeed, 0.675},
+      {"mirror_wf", {1, 1, 1, 0, 0, 0, 1, 1, 0.1, 0.2, 0.3}, kPoint, kLowSeed, 0.775},
+      // axis_symmetry_wf: Ψ < ½ keeps the near side (+ the axis' first shift), else mirrors (+ its second).
+      {"axis_symmetry_wf", {1, 0.25, 0.5, 0.5, 30, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6}, kPoint, kHighSeed, 0.875},
+      {"axis_symmetry_wf", {1, 0.25, 0.5, 0.5, 30, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6}, kPoint, kLowSeed, 0.575},
+      {"axis_symmetry_wf", {2, 0.25, 0.5, 0.5, 30, 0.1, 0.2, 0.3, 0.4, 0.5, 0.6}, kPoint, kHighSeed, 0.975},
   };
   return cases;
 }
@@ -546,14 +559,16 @@ TEST(FlameVariationJwildfire, ImportReadsTheParametersAndKeepsTheirColour) {
   }
   const ImportedFlame symmetry = importXform(
       R"(linear="1" post_point_symmetry_wf="1" post_point_symmetry_wf_colorshift="0.1" coefs="1 0 0 1 0 0")");
-  EXPECT_EQ(symmetry.leftOut, (std::vector<std::string>{"colour shift of post_point_symmetry_wf"}));
+  EXPECT_TRUE(symmetry.leftOut.empty()) << symmetry.leftOut.front();
+  EXPECT_EQ(symmetry.genome.xforms.at(0).variations.back().params.at(3), 0.1);
   // The Apophysis plugin's names for minkowskope's parameters.
   const ImportedFlame scope = importXform(R"(minkowskope="1" mskope_separation="0.7" coefs="1 0 0 1 0 0")");
   ASSERT_TRUE(scope.leftOut.empty()) << scope.leftOut.front();
   EXPECT_EQ(scope.genome.xforms.at(0).variations.at(0).params.at(0), 0.7);
   const ImportedFlame mirror =
       importXform(R"(linear="1" post_mirror_wf="1" post_mirror_wf_xcolorshift="0.68" coefs="1 0 0 1 0 0")");
-  EXPECT_EQ(mirror.leftOut, (std::vector<std::string>{"colour shift of post_mirror_wf"}));
+  EXPECT_TRUE(mirror.leftOut.empty()) << mirror.leftOut.front();
+  EXPECT_EQ(mirror.genome.xforms.at(0).variations.back().params.at(8), 0.68);
   const ImportedFlame zscale =
       importXform(R"(linear3D="1" post_zscale_wf="0.5" post_zscale_wf_ztranslate="0.25" coefs="1 0 0 1 0 0")");
   ASSERT_TRUE(zscale.leftOut.empty()) << zscale.leftOut.front();

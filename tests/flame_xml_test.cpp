@@ -402,10 +402,7 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
     EXPECT_DOUBLE_EQ(term.weight, 0.7);
     ASSERT_EQ(term.params.size(), expected.size()) << info.name;
     for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_DOUBLE_EQ(term.params[i], expected[i]) << info.name;
-    // Their colour shifts, set here, are the parameters not applied.
-    if (info.name == "axis_symmetry_wf" || info.name == "point_symmetry_wf" || info.name == "mirror_wf")
-      EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"colour shift of " + info.name}));
-    else if (info.name == "inversion")
+    if (info.name == "inversion")
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"direct colour of " + info.name}));
     else if (info.name == "obj_mesh_primitive_wf")  // receive_only_shadows 1: a setting of solid rendering
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"receive_only_shadows of " + info.name}));

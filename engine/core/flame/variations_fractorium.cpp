@@ -59,7 +59,8 @@ VOXFLAME_VARIATION_TARGETS void mirrorZ(const VariationInput& in, double* __rest
 // mirrored across it at random, moved half the weight away from it, then turned by ±rotation
 // degrees about the centre. The weight is the distance, not a factor: the result is the point itself.
 // Its axis-z branch turns about (centre_x, centre_y) in the x–z plane, as JWildfire's does. The
-// colour shifts are not applied (the importer says so when a file sets them).
+// colour index moves by the axis' first colour shift on the near side, its second on the mirrored side
+// (mod 1, negative below 0 as JWildfire's fmod).
 VOXFLAME_VARIATION_TARGETS void axisSymmetryWf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                                double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
@@ -70,10 +71,13 @@ VOXFLAME_VARIATION_TARGETS void axisSymmetryWf(const VariationInput& in, double*
   const double s = std::sin(half), c = std::cos(half);
   const double shift = w / 2.0;
   const bool active = std::abs(w) > kJwfEpsilon;
+  const int axisIndex = static_cast<int>(axis);
+  const double nearShift = P[5 + axisIndex], farShift = P[8 + axisIndex];
   for (std::size_t i = 0; i < n; ++i) {
     const bool near = laneUniform(rnd[i]) < 0.5;
     double px = x[i], py = y[i], pz = z[i];
     if (active) {
+      colour[i] = std::fmod(colour[i] + (near ? nearShift : farShift), 1.0);
       const double sign = near ? 1.0 : -1.0;  // the rotation turns the two sides opposite ways
       if (axis == 0.0) {
         const double d = px - cx;
@@ -587,7 +591,8 @@ void variation_kernels::addFractoriumVariations(std::vector<VariationInfo>& cata
       "u' = u + w/2 when Ψ < ½, else 2cu − u − w/2; then turned about the centre by ±rotation "
       "degrees (the two sides opposite ways) in the plane of u and the next coordinate (x–z for axis z, centred "
       "at (centre_x, centre_y) as JWildfire does); the weight is not applied again (w the weight; JWildfire's "
-      "post_axis_symmetry_wf; its colour shifts are not applied)",
+      "post_axis_symmetry_wf); the colour index moves by x1colorshift (axis x, Ψ < ½) or x2colorshift (axis x, "
+      "mirrored), y1/y2 and z1/z2 likewise, mod 1",
       k3D, kRandom, &axisSymmetryWf,
       {count("axis", 0.0, 0.0, 2.0),
        {"centre_x", 0.25, -2.0, 2.0},
@@ -600,6 +605,7 @@ void variation_kernels::addFractoriumVariations(std::vector<VariationInfo>& cata
        {"x2colorshift", 0.0, -1.0, 1.0},
        {"y2colorshift", 0.0, -1.0, 1.0},
        {"z2colorshift", 0.0, -1.0, 1.0}});
+  catalogue.back().directColour = true;
   add("octagon",
       "s p + t p + (x ± x₀, y ± y₀, z ± z₀); s = 1/(x⁴ + y⁴ + 2z² + 10⁻⁸) where w s < 2, else 1; t = 1/(|x| + |y| "
       "+ 2√z + 10⁻⁸) (√z taken as 0 below z = 0, where JWildfire's is NaN), or 1 when w < 0; ± the sign of each "

@@ -177,7 +177,8 @@ VOXFLAME_VARIATION_TARGETS void zscaleWf(const VariationInput& in, double* __res
 // mirror_wf (JWildfire's post_mirror_wf): with xaxis, half the time (Ψ₁ < ½) x becomes xscale (−x − xshift) and y
 // yscale·y; then with yaxis, half the time (Ψ₂ < ½) x becomes xscale·x and y yscale (−y − yshift); then with zaxis,
 // half the time (Ψ₃ < ½) z becomes −z − zshift. The weight only switches it off (|w| ≤ 10⁻⁸): the result is the point
-// itself. All three numbers are drawn for every point. The colour shifts are not applied (the importer says so).
+// itself. All three numbers are drawn for every point. Each mirroring moves the colour index by its axis' colour shift
+// (mod 1, negative below 0 as JWildfire's fmod).
 VOXFLAME_VARIATION_TARGETS void mirrorWf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                          double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
@@ -185,18 +186,24 @@ VOXFLAME_VARIATION_TARGETS void mirrorWf(const VariationInput& in, double* __res
   const bool xAxis = active && std::round(P[0]) > 0.0, yAxis = active && std::round(P[1]) > 0.0,
              zAxis = active && std::round(P[2]) > 0.0;
   const double xShift = P[3], yShift = P[4], zShift = P[5], xScale = P[6], yScale = P[7];
+  const double xColour = P[8], yColour = P[9], zColour = P[10];
   for (std::size_t i = 0; i < n; ++i) {
     const double psi1 = laneUniform(rnd[i]), psi2 = laneUniform(rnd[i]), psi3 = laneUniform(rnd[i]);
     double px = x[i], py = y[i], pz = z[i];
     if (xAxis && psi1 < 0.5) {
       px = xScale * (-px - xShift);
       py = yScale * py;
+      colour[i] = std::fmod(colour[i] + xColour, 1.0);
     }
     if (yAxis && psi2 < 0.5) {
       px = xScale * px;
       py = yScale * (-py - yShift);
+      colour[i] = std::fmod(colour[i] + yColour, 1.0);
     }
-    if (zAxis && psi3 < 0.5) pz = -pz - zShift;
+    if (zAxis && psi3 < 0.5) {
+      pz = -pz - zShift;
+      colour[i] = std::fmod(colour[i] + zColour, 1.0);
+    }
     outX[i] += px;
     outY[i] += py;
     outZ[i] += pz;
@@ -737,7 +744,8 @@ void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& c
   add("mirror_wf",
       "p, its x mirrored to xscale (−x − xshift) (y to yscale·y) for Ψ₁ < ½ with xaxis, then y to yscale (−y − "
       "yshift) (x to xscale·x) for Ψ₂ < ½ with yaxis, then z to −z − zshift for Ψ₃ < ½ with zaxis: the point "
-      "itself, not weighted (JWildfire's post_mirror_wf; its colour shifts are not applied)",
+      "itself, not weighted; each mirroring adds its axis' colour shift to the colour index (mod 1) (JWildfire's "
+      "post_mirror_wf)",
       k3D, kRandom, &mirrorWf,
       {count("xaxis", 1.0, 0.0, 1.0),
        count("yaxis", 0.0, 0.0, 1.0),
@@ -750,6 +758,7 @@ void variation_kernels::addJwildfireMoreVariations(std::vector<VariationInfo>& c
        {"xcolorshift", 0.0, -1.0, 1.0},
        {"ycolorshift", 0.0, -1.0, 1.0},
        {"zcolorshift", 0.0, -1.0, 1.0}});
+  catalogue.back().directColour = true;
   const auto bs = [](double x1, double x2, double y1, double y2) {
     return std::vector<VariationParam>{
         {"x1", x1, -5.0, 5.0}, {"x2", x2, -5.0, 5.0}, {"y1", y1, -5.0, 5.0}, {"y2", y2, -5.0, 5.0}};

@@ -174,15 +174,16 @@ VOXFLAME_VARIATION_TARGETS void planeWf(const VariationInput& in, double* __rest
 // point_symmetry_wf (JWildfire's post_point_symmetry_wf): the point's offset from the centre,
 // scaled by the weight, turned by a random multiple k·2π/order (k = ⌊Ψ·order⌋) clockwise about
 // it. The result is the point itself, not a weighted term; JWildfire has it only as a post_ term.
-// The colour shift is not applied (the importer says so when a file sets it).
+// The colour index moves by k · colorshift (mod 1, negative below 0 as JWildfire's fmod).
 VOXFLAME_VARIATION_TARGETS void pointSymmetryWf(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                                 double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double cx = P[0], cy = P[1];
   const double order = std::clamp(jwfFtoi(P[2]), 1.0, 2147483647.0);
-  const double step = kTwoPi / order;
+  const double step = kTwoPi / order, colourShift = P[3];
   for (std::size_t i = 0; i < n; ++i) {
     const double k = std::min(std::floor(laneUniform(rnd[i]) * order), order - 1.0);
+    if (colourShift != 0.0) colour[i] = std::fmod(colour[i] + k * colourShift, 1.0);
     const double s = std::sin(k * step), c = std::cos(k * step);
     const double dx = (x[i] - cx) * w, dy = (y[i] - cy) * w;
     outX[i] += cx + dx * c + dy * s;
@@ -669,13 +670,14 @@ void variation_kernels::addJwildfireShapeVariations(std::vector<VariationInfo>& 
   catalogue.back().directColour = true;
   add("point_symmetry_wf",
       "c + R(2πk/order)·w(p − c), c = (centre_x, centre_y), k = ⌊Ψ·order⌋, R turning clockwise; z: the point "
-      "itself, the weight scaling its offset from c (JWildfire's post_point_symmetry_wf; its colour shift is not "
-      "applied)",
+      "itself, the weight scaling its offset from c; the colour index moves by k·colorshift (mod 1) (JWildfire's "
+      "post_point_symmetry_wf)",
       k2D, kRandom, &pointSymmetryWf,
       {{"centre_x", 0.25, -2.0, 2.0},
        {"centre_y", 0.5, -2.0, 2.0},
        count("order", 3.0, 1.0, 12.0),
        {"colorshift", 0.0, -1.0, 1.0}});
+  catalogue.back().directColour = true;
   add("cannabiscurve_wf",
       "r (sin(θ + π/2), cos(θ + π/2)), z; r = (1 + 0.9 cos 8θ)(1 + 0.1 cos 24θ)(0.9 + 0.1 cos 200θ)(1 + sin θ), times "
       "Ψ₂ when Ψ₁ < filled (JWildfire's)",

@@ -821,17 +821,6 @@ class FlameReader {
         zeroTerms.emplace(name, std::move(term));
         continue;
       }
-      // point_symmetry_wf's, mirror_wf's and axis_symmetry_wf's colour shifts are not applied.
-      const bool shiftsColour =
-          (info->name == "point_symmetry_wf" && term.params.at(3) != 0.0) ||
-          (info->name == "mirror_wf" &&
-           std::any_of(term.params.begin() + 8, term.params.end(), [](double v) { return v != 0.0; })) ||
-          (info->name == "axis_symmetry_wf" &&
-           std::any_of(term.params.begin() + 5, term.params.end(), [](double v) { return v != 0.0; }));
-      if (shiftsColour) {
-        lose("colour shift of " + withoutCopyMark(name));
-        warn(context + " has " + name + " with a colour shift, which voxflame does not apply");
-      }
       // inversion's direct colour, and dc_quadtree's and dc_ducks' RGB colours (the point's colour set
       // by the variation, JWildfire's way), are not applied either.
       if ((info->name == "inversion" && std::trunc(term.params.at(21)) >= 1.0 &&
