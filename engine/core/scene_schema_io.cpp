@@ -614,7 +614,8 @@ json sceneDocument(const Scene& scene, bool complete) {
   // Only imported flames have a framing of their own; other presets leave the block out.
   if (complete || scene.flat != FlatViewSettings{}) {
     writeFields(root["flat"], flatFields(), scene.flat, complete);
-    if (complete || scene.flat.solid != FlatSolidSettings{}) root["flat"]["solid"] = solidJson(scene.flat.solid, complete);
+    if (complete || scene.flat.solid != FlatSolidSettings{})
+      root["flat"]["solid"] = solidJson(scene.flat.solid, complete);
   }
   return root;
 }

@@ -462,8 +462,7 @@ std::vector<std::string> animatablePaths(const Scene& scene) {
   for (std::size_t i = 0; i < scene.flat.solid.lights.size(); ++i)
     tablePaths(solidLightFields(), scene.flat.solid.lights[i], "/flat/solid/lights/" + std::to_string(i), out);
   for (std::size_t i = 0; i < scene.flat.solid.materials.size(); ++i)
-    tablePaths(solidMaterialFields(), scene.flat.solid.materials[i], "/flat/solid/materials/" + std::to_string(i),
-               out);
+    tablePaths(solidMaterialFields(), scene.flat.solid.materials[i], "/flat/solid/materials/" + std::to_string(i), out);
   for (std::size_t i = 0; i < scene.layers.size(); ++i) {
     const PatternLayer& layer = scene.layers[i];
     const std::string base = "/layers/" + std::to_string(i);

@@ -367,8 +367,7 @@ FlatRenderResult renderFlatSolid(const Scene& scene, const FlatRenderOptions& op
           nearest.deposit(x, static_cast<int>(y), rasters[t].at(x, static_cast<int>(y)));
   });
 
-  const glm::dvec3 background(
-      glm::clamp(linearToSrgb(scene.tone.background), glm::vec3(0.0f), glm::vec3(1.0f)));
+  const glm::dvec3 background(glm::clamp(linearToSrgb(scene.tone.background), glm::vec3(0.0f), glm::vec3(1.0f)));
   const DensityImage shaded = shadeSolidRaster(solid, nearest, shadowMaps, bucketsPerUnit, background);
   DensityImage filtered;
   spatialFilter(shaded, oversample, flat.filterRadius, filtered);
@@ -387,7 +386,8 @@ FlatRenderResult renderFlatSolid(const Scene& scene, const FlatRenderOptions& op
       const double alpha = std::pow(coverage, 1.0 + 1.0 / gamma);
       float* pixel = result.image.at(x, y);
       for (int channel = 0; channel < 3; ++channel) {
-        const double value = std::clamp(static_cast<double>(v[channel]), 0.0, 1.0) + background[channel] * (1.0 - alpha);
+        const double value =
+            std::clamp(static_cast<double>(v[channel]), 0.0, 1.0) + background[channel] * (1.0 - alpha);
         pixel[channel] = flatPixelLevel(static_cast<float>(value), options.bitDepth);
       }
       pixel[3] = 1.0f;

@@ -100,8 +100,7 @@ glm::dvec3 shadeSolid(const FlatSolidSettings& solid, const glm::dvec3& object, 
   const double aoIntensity = std::clamp(solid.aoIntensity, 0.0, 4.0);
   const double ambient = mix(m0.ambient, m1.ambient), diffuse = mix(m0.diffuse, m1.diffuse);
   const double ambientI = std::max(0.0, solid.aoEnabled ? ambient - ao * aoIntensity : ambient);
-  const double diffuseI =
-      std::max(0.0, solid.aoEnabled ? diffuse - ao * aoIntensity * solid.aoAffectDiffuse : diffuse);
+  const double diffuseI = std::max(0.0, solid.aoEnabled ? diffuse - ao * aoIntensity * solid.aoAffectDiffuse : diffuse);
   const double phong = mix(m0.phong, m1.phong), phongSize = mix(m0.phongSize, m1.phongSize);
   const glm::dvec3 phongColor = m0.phongColor + (m1.phongColor - m0.phongColor) * t;
   const auto response = [&](double cosa) {
@@ -153,8 +152,7 @@ void SolidShadowMap::deposit(const glm::dvec3& p) {
   }
 }
 
-std::vector<SolidShadowMap> makeSolidShadowMaps(const FlatSolidSettings& solid,
-                                                const std::vector<glm::dvec3>& bounds) {
+std::vector<SolidShadowMap> makeSolidShadowMaps(const FlatSolidSettings& solid, const std::vector<glm::dvec3>& bounds) {
   std::vector<SolidShadowMap> maps(solid.lights.size());
   if (solid.shadowType == SolidShadowType::Off || bounds.empty()) return maps;
   for (std::size_t i = 0; i < maps.size(); ++i) {
@@ -188,10 +186,10 @@ namespace {
 
 // JWildfire's NormalsCalculator: the cross products of the vectors to two neighbours, over up to
 // eight of sixteen pairs of neighbours that hold points, summed and normalised.
-constexpr int kNormalPairs[16][4] = {{0, 1, 1, 0},   {1, 0, 0, -1},  {0, -1, -1, 0}, {-1, 0, 0, 1},
-                                     {-1, 1, 1, 1},  {1, 1, 1, -1},  {1, -1, -1, -1}, {-1, -1, -1, 1},
-                                     {0, 1, 1, 1},   {1, 1, 1, 0},   {1, 0, 1, -1},  {1, -1, 0, -1},
-                                     {0, -1, -1, -1}, {-1, -1, -1, 0}, {-1, 0, -1, 1}, {-1, 1, 0, 1}};
+constexpr int kNormalPairs[16][4] = {{0, 1, 1, 0},    {1, 0, 0, -1},   {0, -1, -1, 0},  {-1, 0, 0, 1},
+                                     {-1, 1, 1, 1},   {1, 1, 1, -1},   {1, -1, -1, -1}, {-1, -1, -1, 1},
+                                     {0, 1, 1, 1},    {1, 1, 1, 0},    {1, 0, 1, -1},   {1, -1, 0, -1},
+                                     {0, -1, -1, -1}, {-1, -1, -1, 0}, {-1, 0, -1, 1},  {-1, 1, 0, 1}};
 constexpr int kMaxNormalSamples = 8;
 
 bool normalAt(const SolidRaster& raster, int x, int y, glm::dvec3& normal) {
@@ -334,9 +332,8 @@ DensityImage shadeSolidRaster(const FlatSolidSettings& solid, const SolidRaster&
     }
   const double diagonal = std::sqrt(static_cast<double>(w) * w + static_cast<double>(h) * h);
   const int smoothRadius = std::min(
-      128, static_cast<int>(std::max(0.0, solid.shadowSmoothRadius < kEpsilon ? 0.0
-                                                                             : solid.shadowSmoothRadius * 6.0 *
-                                                                                   diagonal / 1000.0)));
+      128, static_cast<int>(std::max(
+               0.0, solid.shadowSmoothRadius < kEpsilon ? 0.0 : solid.shadowSmoothRadius * 6.0 * diagonal / 1000.0)));
   const bool smooth = solid.shadowType == SolidShadowType::Smooth && smoothRadius >= 1;
 
   DensityImage out;
@@ -365,8 +362,8 @@ DensityImage shadeSolidRaster(const FlatSolidSettings& solid, const SolidRaster&
               for (int m = -smoothRadius; m <= smoothRadius; m += step) {
                 const int sy = static_cast<int>(y) + m;
                 if (sy < 0 || sy >= h) continue;
-                const float s = steps[l][static_cast<std::size_t>(sy) * static_cast<std::size_t>(w) +
-                                         static_cast<std::size_t>(sx)];
+                const float s =
+                    steps[l][static_cast<std::size_t>(sy) * static_cast<std::size_t>(w) + static_cast<std::size_t>(sx)];
                 if (s < 0.0f) continue;
                 const double weight = gaussian(std::hypot(k * inverse, m * inverse));
                 total += weight;
@@ -378,8 +375,9 @@ DensityImage shadeSolidRaster(const FlatSolidSettings& solid, const SolidRaster&
           visibility[l] = std::clamp(v + 1.0 - std::clamp(solid.lights[l].shadowIntensity, 0.0, 1.0), 0.0, 1.0);
         }
         const SolidTexel& t = raster.at(x, static_cast<int>(y));
-        const glm::dvec3 c = shadeSolid(solid, glm::dvec3(t.r, t.g, t.b), normals[i], pickSolidMaterial(solid, t.material),
-                                        ao.empty() ? 0.0 : ao[i], shadows ? visibility.data() : nullptr, background);
+        const glm::dvec3 c =
+            shadeSolid(solid, glm::dvec3(t.r, t.g, t.b), normals[i], pickSolidMaterial(solid, t.material),
+                       ao.empty() ? 0.0 : ao[i], shadows ? visibility.data() : nullptr, background);
         float* o = out.at(x, static_cast<int>(y));
         o[0] = static_cast<float>(c.r);
         o[1] = static_cast<float>(c.g);

@@ -1815,7 +1815,8 @@ bool writtenByJwildfire(const pugi::xml_node& flame) {
 }
 
 // JWildfire's flame-level features that neither the flat view nor the mesh keeps, named as lost
-// when a file turns them on: solid rendering's depth of field and the parts of its 3D camera the flat view does not draw (readFlameCurves names the motion curves it leaves out).
+// when a file turns them on: solid rendering's depth of field and the parts of its 3D camera the flat view does not
+// draw (readFlameCurves names the motion curves it leaves out).
 bool solidRenderingOn(const pugi::xml_node& flame);  // JWildfire's sld_render_enabled (below)
 
 void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader) {
@@ -2123,7 +2124,8 @@ FlatSolidSettings readSolid(const pugi::xml_node& flame, FlameReader& reader) {
     const std::string_view value = attribute.value();
     const auto found = std::find(javaNames.begin(), javaNames.end(), value);
     if (found == javaNames.end()) {
-      reader.warn(name + "=\"" + std::string(value).substr(0, 40) + "\" is not one JWildfire knows; its default is used");
+      reader.warn(name + "=\"" + std::string(value).substr(0, 40) +
+                  "\" is not one JWildfire knows; its default is used");
       return;
     }
     target = static_cast<std::remove_reference_t<decltype(target)>>(found - javaNames.begin());
