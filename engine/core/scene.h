@@ -149,6 +149,54 @@ inline constexpr std::string_view kPaletteModeNames[] = {"step", "linear"};
 enum class FlatCameraModel { Fractorium, Jwildfire };
 inline constexpr std::string_view kFlatCameraModelNames[] = {"fractorium", "jwildfire"};
 
+// JWildfire's solid rendering (its SolidRenderSettings): instead of a glowing density, the flat
+// view keeps per pixel the nearest point (its depth, colour, material and flame coordinates),
+// estimates surface normals from neighbouring pixels' points, and shades each with distant lights
+// (diffuse, ambient, a phong highlight), screen-space ambient occlusion and shadow maps.
+enum class SolidShadowType { Off, Fast, Smooth };
+inline constexpr std::string_view kSolidShadowTypeNames[] = {"off", "fast", "smooth"};
+// How a material's diffuse light answers the cosine a between the normal and the light
+// (JWildfire's LightDiffFuncPreset): a, a², a/2 + ½, (a/2 + ½)².
+enum class SolidDiffuseResponse { Cosa, CosaSquare, CosaHalve, CosaHalveSquare };
+inline constexpr std::string_view kSolidDiffuseResponseNames[] = {"cosa", "cosa_square", "cosa_halve",
+                                                                  "cosa_halve_square"};
+
+// A distant light, from `altitude` degrees above and `azimuth` degrees around (JWildfire's
+// DistantLight), with its colour (linear 0–1 multipliers as JWildfire keeps them).
+struct SolidLight {
+  double altitudeDeg = 60.0, azimuthDeg = -30.0;
+  double intensity = 0.7;
+  glm::dvec3 color{1.0};
+  bool castShadows = false;
+  double shadowIntensity = 0.6;  // 1: a shadow takes all of this light, 0: none
+  bool operator==(const SolidLight&) const = default;
+};
+
+struct SolidMaterial {
+  double diffuse = 0.5, ambient = 1.0;
+  double phong = 1.0, phongSize = 24.0;  // the highlight's strength and exponent
+  glm::dvec3 phongColor{1.0};
+  SolidDiffuseResponse diffuseResponse = SolidDiffuseResponse::Cosa;
+  bool operator==(const SolidMaterial&) const = default;
+};
+
+struct FlatSolidSettings {
+  bool enabled = false;
+  // Ambient occlusion (JWildfire's horizon search over the depth buffer): radii relative to the
+  // image's diagonal (per 500), samples along each ray and around the circle.
+  bool aoEnabled = false;
+  double aoIntensity = 0.6, aoSearchRadius = 4.0, aoBlurRadius = 1.5;
+  int aoRadiusSamples = 6, aoAzimuthSamples = 7;
+  double aoFalloff = 0.5, aoAffectDiffuse = 0.1;
+  SolidShadowType shadowType = SolidShadowType::Off;
+  double shadowSmoothRadius = 1.0;  // SMOOTH: the blur of a shadow's edge, per 1000 of the diagonal · 6
+  int shadowmapSize = 2048;         // texels along each side of a light's shadow map
+  double shadowmapBias = 0.01;      // in flame units along the light
+  std::vector<SolidLight> lights;
+  std::vector<SolidMaterial> materials;
+  bool operator==(const FlatSolidSettings&) const = default;
+};
+
 struct FlatViewSettings {
   int width = 100, height = 100;  // flam3's size, pixels
   double centerX = 0.0, centerY = 0.0;
@@ -172,6 +220,7 @@ struct FlatViewSettings {
   double cameraDof = 0.0;          // cam_dof
   double cameraDofScale = 1.0;     // JWildfire's cam_dof_scale: the blur's radius is scaled by it
   double cameraDofFade = 1.0;      // JWildfire's cam_dof_fade (see FlatCamera)
+  FlatSolidSettings solid;         // JWildfire's solid rendering; off: the glowing flame
   bool hasCamera() const {
     if (cameraModel == FlatCameraModel::Jwildfire)  // JWildfire's is3dProjectionRequired: not cam_zpos alone
       return cameraPitchDeg != 0.0 || cameraYawDeg != 0.0 || cameraBankDeg != 0.0 || cameraPerspective != 0.0 ||

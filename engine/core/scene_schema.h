@@ -114,6 +114,9 @@ Table<CameraSettings> cameraFields();           // camera
 Table<RenderSettingsDoc> renderFields();        // render
 Table<AnimationSettings> animationFields();     // animation
 Table<FlatViewSettings> flatFields();           // flat
+Table<FlatSolidSettings> solidFields();         // flat.solid
+Table<SolidLight> solidLightFields();           // flat.solid.lights[i]
+Table<SolidMaterial> solidMaterialFields();     // flat.solid.materials[i]
 
 // The row of `table` with this key; throws std::out_of_range for a key it does not have (a
 // programming error: the UI and tests name keys that exist).

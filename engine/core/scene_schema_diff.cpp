@@ -108,6 +108,21 @@ SceneDiff diff(const Scene& a, const Scene& b) {
   diffTable(a.render, b.render, renderFields(), "/render", d);
   diffTable(a.animation, b.animation, animationFields(), "/animation", d);
   diffTable(a.flat, b.flat, flatFields(), "/flat", d);
+  diffTable(a.flat.solid, b.flat.solid, solidFields(), "/flat/solid", d);
+  if (a.flat.solid.lights.size() != b.flat.solid.lights.size()) {
+    note(d, "/flat/solid/lights", kStill);
+  } else {
+    for (std::size_t i = 0; i < a.flat.solid.lights.size(); ++i)
+      diffTable(a.flat.solid.lights[i], b.flat.solid.lights[i], solidLightFields(),
+                "/flat/solid/lights/" + std::to_string(i), d);
+  }
+  if (a.flat.solid.materials.size() != b.flat.solid.materials.size()) {
+    note(d, "/flat/solid/materials", kStill);
+  } else {
+    for (std::size_t i = 0; i < a.flat.solid.materials.size(); ++i)
+      diffTable(a.flat.solid.materials[i], b.flat.solid.materials[i], solidMaterialFields(),
+                "/flat/solid/materials/" + std::to_string(i), d);
+  }
   if (a.keyframes != b.keyframes) note(d, "/keyframes", kNothing);
   return d;
 }

@@ -298,7 +298,16 @@ brightness, gamma, vibrancy, highlight power, density estimation, background). A
 the block has flam3's defaults.
 
 )md";
-  out += table(rows(flatFields()));
+  out += table(concat({rows(flatFields()), rows(solidFields(), "solid."), rows(solidLightFields(), "solid.lights[i]."),
+                       rows(solidMaterialFields(), "solid.materials[i].")}));
+  out += R"md(
+`solid` is JWildfire's solid rendering (`sld_render_*` in its files): each pixel keeps the nearest
+point, normals come from the flame coordinates of neighbouring pixels' points, and the distant
+lights shade them with each material's diffuse, ambient and phong terms, with ambient occlusion
+and shadow maps when enabled. A transform's `material` (with `material_speed`) picks the material
+as `color` picks the palette entry.
+
+)md";
   out += R"md(
 ## `animation` (version 2)
 

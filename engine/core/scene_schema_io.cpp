@@ -417,6 +417,61 @@ void readBlock(ObjectReader& root, const std::string& key, Table<Owner> table, O
   reader.finish();
 }
 
+// Hand code: the flat view's solid block, with its arrays of lights and materials.
+constexpr std::size_t kMaxSolidEntries = 64;
+
+template <class Entry>
+std::vector<Entry> readSolidArray(ObjectReader& reader, const std::string& key, Table<Entry> table,
+                                  std::string_view noun) {
+  std::vector<Entry> entries;
+  const json* value = reader.find(key);
+  if (!value) return entries;
+  if (!value->is_array() || value->size() > kMaxSolidEntries)
+    reader.fail("must be an array of at most " + std::to_string(kMaxSolidEntries) + " " + std::string(noun), key);
+  for (std::size_t i = 0; i < value->size(); ++i) {
+    ObjectReader entry((*value)[i], reader.source(), reader.keyPath(key) + "[" + std::to_string(i) + "]");
+    Entry e;
+    readFields(entry, table, e);
+    entry.finish();
+    entries.push_back(e);
+  }
+  return entries;
+}
+
+void readFlat(ObjectReader& root, FlatViewSettings& flat) {
+  const json* value = root.find("flat");
+  if (!value) return;
+  ObjectReader reader(*value, root.source(), "flat");
+  readFields(reader, flatFields(), flat);
+  if (std::optional<ObjectReader> solid = reader.child("solid")) {
+    readFields(*solid, solidFields(), flat.solid);
+    flat.solid.lights = readSolidArray(*solid, "lights", solidLightFields(), "lights");
+    flat.solid.materials = readSolidArray(*solid, "materials", solidMaterialFields(), "materials");
+    solid->finish();
+  }
+  reader.finish();
+}
+
+json solidJson(const FlatSolidSettings& solid, bool complete) {
+  json out = json::object();
+  writeFields(out, solidFields(), solid, complete);
+  json lights = json::array();
+  for (const SolidLight& light : solid.lights) {
+    json entry = json::object();
+    writeFields(entry, solidLightFields(), light, complete);
+    lights.push_back(entry);
+  }
+  out["lights"] = lights;
+  json materials = json::array();
+  for (const SolidMaterial& material : solid.materials) {
+    json entry = json::object();
+    writeFields(entry, solidMaterialFields(), material, complete);
+    materials.push_back(entry);
+  }
+  out["materials"] = materials;
+  return out;
+}
+
 // ---------------------------------------------------------------------------------------------
 // The writer.
 
@@ -537,7 +592,7 @@ Scene sceneFromDocument(const json& document, std::string_view sourceName,
   scene.render.method = defaultRenderMethod(scene.layers);
   readBlock(root, "render", renderFields(), scene.render);
   readBlock(root, "animation", animationFields(), scene.animation);
-  readBlock(root, "flat", flatFields(), scene.flat);
+  readFlat(root, scene.flat);
   root.finish();
   return scene;
 }
@@ -557,7 +612,11 @@ json sceneDocument(const Scene& scene, bool complete) {
   if (complete || !scene.keyframes.empty() || scene.animation != AnimationSettings{})
     writeFields(root["animation"], animationFields(), scene.animation, complete);
   // Only imported flames have a framing of their own; other presets leave the block out.
-  if (complete || scene.flat != FlatViewSettings{}) writeFields(root["flat"], flatFields(), scene.flat, complete);
+  if (complete || scene.flat != FlatViewSettings{}) {
+    writeFields(root["flat"], flatFields(), scene.flat, complete);
+    if (complete || scene.flat.solid != FlatSolidSettings{})
+      root["flat"]["solid"] = solidJson(scene.flat.solid, complete);
+  }
   return root;
 }
 

@@ -155,6 +155,30 @@ ValueRef objectAt(Walk& w, Table<Owner> table, Owner& owner, const std::string& 
   return missing();
 }
 
+// The flat view, with its solid block and that block's arrays of lights and materials.
+template <class Entry>
+ValueRef solidEntryAt(Walk& w, std::vector<Entry>& entries, Table<Entry> table, const std::string& path) {
+  if (w.done()) return other("an array", path);
+  const auto index = arrayIndex(w.next());
+  if (!index || *index >= entries.size()) return missing();
+  return objectAt(w, table, entries[*index], path + "[" + std::to_string(*index) + "]");
+}
+
+ValueRef flatAt(Walk& w, FlatViewSettings& flat) {
+  if (w.done() || w.peek() != "solid") return objectAt(w, flatFields(), flat, "flat");
+  w.next();
+  if (w.done()) return other("an object", "flat.solid");
+  if (w.peek() == "lights") {
+    w.next();
+    return solidEntryAt(w, flat.solid.lights, solidLightFields(), "flat.solid.lights");
+  }
+  if (w.peek() == "materials") {
+    w.next();
+    return solidEntryAt(w, flat.solid.materials, solidMaterialFields(), "flat.solid.materials");
+  }
+  return objectAt(w, solidFields(), flat.solid, "flat.solid");
+}
+
 ValueRef xformAt(Walk& w, FlameXform& xform, const std::string& base, bool isFinal) {
   if (w.done()) return other("an object", base);
   const std::string& key = w.peek();
@@ -312,7 +336,7 @@ ValueRef sceneAt(Walk& w, Scene& scene) {
     const std::string object = w.next();
     if (object == "tone") return objectAt(w, toneFields(), scene.tone, object);
     if (object == "camera") return objectAt(w, cameraFields(), scene.camera, object);
-    if (object == "flat") return objectAt(w, flatFields(), scene.flat, object);
+    if (object == "flat") return flatAt(w, scene.flat);
     return objectAt(w, renderFields(), scene.render, object);
   }
   if (auto ref = fromTable(w, sceneFields(), scene, "")) return *ref;
@@ -434,6 +458,11 @@ std::vector<std::string> animatablePaths(const Scene& scene) {
   tablePaths(cameraFields(), scene.camera, "/camera", out);
   tablePaths(renderFields(), scene.render, "/render", out);
   tablePaths(flatFields(), scene.flat, "/flat", out);
+  tablePaths(solidFields(), scene.flat.solid, "/flat/solid", out);
+  for (std::size_t i = 0; i < scene.flat.solid.lights.size(); ++i)
+    tablePaths(solidLightFields(), scene.flat.solid.lights[i], "/flat/solid/lights/" + std::to_string(i), out);
+  for (std::size_t i = 0; i < scene.flat.solid.materials.size(); ++i)
+    tablePaths(solidMaterialFields(), scene.flat.solid.materials[i], "/flat/solid/materials/" + std::to_string(i), out);
   for (std::size_t i = 0; i < scene.layers.size(); ++i) {
     const PatternLayer& layer = scene.layers[i];
     const std::string base = "/layers/" + std::to_string(i);

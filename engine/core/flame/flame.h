@@ -97,6 +97,9 @@ struct FlameXform {
   double color = 0.0;       // the colour index this transform pulls points towards, 0–1
   double colorSpeed = 0.5;  // how far each step moves a point's colour towards `color`, 0–1
   double opacity = 1.0;     // the chance that a point this transform makes is drawn, 0–1
+  // JWildfire's solid rendering: a point's material index is blended towards `material` as its
+  // colour is towards `color`, m' = m · (1 + materialSpeed) / 2 + material · (1 − materialSpeed) / 2.
+  double material = 0.0, materialSpeed = 0.0;
   // How much of the colour index its direct-colour variations (dc_linear, ...) set is kept, 0–1:
   // Fractorium's and Apophysis 7X's "direct color" (var_color in their files). The point's colour
   // becomes c + directColor · (dc − c), c being what the colour blend above made; 0 ignores them.

@@ -12,7 +12,9 @@
 #include "core/chaos_game.h"
 #include "core/color.h"
 #include "core/error.h"
+#include "core/flame/flat_solid.h"
 #include "core/flame/image.h"
+#include "core/flame/variations.h"
 #include "core/random.h"
 #include "core/task_scheduler.h"
 
@@ -156,6 +158,11 @@ FlatCamera::FlatCamera(const FlatViewSettings& flat)
   }
 }
 
+double FlatCamera::depth(double x, double y, double z) const {
+  if (!jwildfire) z -= z0;
+  return turn[2][0] * x + turn[2][1] * y + turn[2][2] * z + position.z;
+}
+
 glm::dvec2 FlatCamera::project(double x, double y, double z, double angle01, double blur01) const {
   if (!jwildfire) z -= z0;
   const auto row = [&](int i) { return turn[i][0] * x + turn[i][1] * y + turn[i][2] * z; };
@@ -186,6 +193,210 @@ glm::dvec2 FlatCamera::project(double x, double y, double z, double angle01, dou
   return {px / zr, py / zr};
 }
 
+namespace {
+
+bool hasDepthVariation(const FlameGenome& genome) {
+  const auto threeD = [](const FlameXform& x) {
+    return std::any_of(x.variations.begin(), x.variations.end(), [](const VariationTerm& term) {
+      const VariationInfo* info = findVariation(term.name);
+      return info && info->threeD && info->name != "flatten";
+    });
+  };
+  return std::any_of(genome.xforms.begin(), genome.xforms.end(), threeD) ||
+         (genome.hasFinal && threeD(genome.finalXform)) ||
+         std::any_of(genome.chainedFinals.begin(), genome.chainedFinals.end(), threeD);
+}
+
+// JWildfire's solid rendering (flat_solid.h): the chaos game as in renderFlat, but each
+// supersampled pixel keeps its nearest point, which is then shaded; the image is the shaded
+// colour filtered by the spatial filter over the background, as JWildfire's filter and gamma
+// stages draw it: colour Σ w·c plus the background times 1 − (Σ w)^(1 + 1/gamma).
+FlatRenderResult renderFlatSolid(const Scene& scene, const FlatRenderOptions& options, int width, int height,
+                                 double quality) {
+  const FlatViewSettings& flat = scene.flat;
+  const FlatSolidSettings& solid = flat.solid;
+  const PatternLayer& source = flameLayer(scene);
+  // A JWildfire flame with 3D variations keeps its depth: JWildfire's affine maps pass z through.
+  // One without them is flat there too (the z rows are the import's added depth).
+  PatternLayer layer = hasDepthVariation(source.flame) ? source : planarLayer(source);
+  std::vector<Affine3> postSymmetry = postSymmetryMaps(layer.flame.postSymmetry);
+  if (postSymmetry.empty()) postSymmetry.emplace_back();
+  layer.flame.postSymmetry.kind = PostSymmetryKind::None;
+  const ChaosGame game(layer, "the flame layer");
+  const std::array<glm::vec3, 256> palette = filePalette(layer.color);
+  const std::size_t genomeXforms = layer.flame.xforms.size();
+
+  const double sizeScale = options.width || !options.height ? static_cast<double>(width) / flat.width
+                                                            : static_cast<double>(height) / flat.height;
+  const double zoomScale = std::exp2(flat.zoom);
+  const double pixelsPerUnit = flat.scale * zoomScale * sizeScale;
+  const double samples = quality * zoomScale * zoomScale * width * height;
+  if (!(samples <= kMaxSamples))
+    throw Error("the flat view would draw " + std::to_string(samples) + " samples; at most 10¹² are allowed");
+  const int oversample = std::clamp(flat.oversample, 1, 4);
+  const int gutter = static_cast<int>(std::ceil(1.5 * flat.filterRadius)) + 1;
+  const int rasterWidth = (width + 2 * gutter) * oversample, rasterHeight = (height + 2 * gutter) * oversample;
+  const double bucketsPerUnit = pixelsPerUnit * oversample;
+  const double left = flat.centerX - (0.5 * width + gutter) / pixelsPerUnit;
+  const double top = flat.centerY - (0.5 * height + gutter) / pixelsPerUnit;
+  const bool hasCamera = flat.hasCamera();
+  const FlatCamera camera(flat);
+  const double turn = flat.rotateDeg * std::numbers::pi / 180.0;
+  const double cosTurn = std::cos(turn), sinTurn = std::sin(turn);
+  const bool turned = flat.rotateDeg != 0.0 && !(hasCamera && camera.jwildfire);
+
+  // The shadow maps are framed by the first points of an orbit, as JWildfire frames them.
+  std::vector<SolidShadowMap> shadowMaps;
+  if (solid.shadowType != SolidShadowType::Off &&
+      std::any_of(solid.lights.begin(), solid.lights.end(), [](const SolidLight& l) { return l.castShadows; })) {
+    constexpr std::size_t kFramingPoints = 40960;
+    std::vector<glm::dvec3> framing;
+    SplitMix64 rng(options.seed * 0x2545f4914f6cdd1dULL + 7);
+    ChaosLanes lanes;
+    lanes.resize(kLanes);
+    for (std::size_t i = 0; i < kLanes; ++i) game.seedLane(lanes, i, rng);
+    std::vector<double> outX(kLanes), outY(kLanes), outZ(kLanes), outColor(kLanes);
+    for (int step = 0; framing.size() < kFramingPoints && step < 1000; ++step) {
+      game.step(lanes, outX.data(), outY.data(), outZ.data(), outColor.data(), kLanes);
+      if (step < kFuse) continue;
+      for (std::size_t i = 0; i < kLanes; ++i) {
+        if (std::isnan(outX[i])) {
+          game.seedLane(lanes, i, rng);
+          continue;
+        }
+        if (!lanes.visible[i]) continue;
+        for (const Affine3& image : postSymmetry) framing.push_back(image.apply({outX[i], outY[i], outZ[i]}));
+      }
+    }
+    shadowMaps = makeSolidShadowMaps(solid, framing);
+  }
+
+  const double rasterBytes = static_cast<double>(sizeof(SolidTexel)) * rasterWidth * rasterHeight;
+  const int tasks = static_cast<int>(std::clamp(std::floor(kMaxHistogramBytes / rasterBytes), 1.0,
+                                                static_cast<double>(std::max(1, taskConcurrency()))));
+  std::vector<SolidRaster> rasters(static_cast<std::size_t>(tasks));
+  const auto total = static_cast<std::uint64_t>(std::llround(samples));
+  std::atomic<bool> cancelled{false};
+  parallelFor(static_cast<std::size_t>(tasks), 1, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t task = begin; task < end; ++task) {
+      SolidRaster& raster = rasters[task];
+      raster.resize(rasterWidth, rasterHeight);
+      const std::uint64_t quota = total / tasks + (task < total % tasks ? 1 : 0);
+      SplitMix64 rng(options.seed * 0x9e3779b97f4a7c15ULL + task + 1);
+      ChaosLanes lanes;
+      lanes.resize(kLanes);
+      std::vector<int> fuse(kLanes, kFuse), bad(kLanes, 0);
+      std::vector<std::uint64_t> orbitSamples(kLanes, 0);
+      // Each lane's material index, blended by the transform it takes as its colour is
+      // (JWildfire starts it at random).
+      std::vector<double> material(kLanes);
+      const auto seed = [&](std::size_t i) {
+        game.seedLane(lanes, i, rng);
+        material[i] = rng.uniform();
+      };
+      for (std::size_t i = 0; i < kLanes; ++i) seed(i);
+      std::vector<double> outX(kLanes), outY(kLanes), outZ(kLanes), outColor(kLanes);
+      std::uint64_t drawn = 0, steps = 0;
+      while (drawn < quota) {
+        if ((++steps & 255) == 0 &&
+            (cancelled.load(std::memory_order_relaxed) || (options.cancel && options.cancel->load()))) {
+          cancelled = true;
+          return;
+        }
+        game.step(lanes, outX.data(), outY.data(), outZ.data(), outColor.data(), kLanes);
+        for (std::size_t i = 0; i < kLanes && drawn < quota; ++i) {
+          if (std::isnan(outX[i])) {
+            seed(i);
+            if (fuse[i] > 0 || ++bad[i] < kBadRetries) continue;
+            bad[i] = 0;
+            ++drawn;
+            continue;
+          }
+          bad[i] = 0;
+          if (const std::size_t k = lanes.choice[i]; k < genomeXforms) {
+            const FlameXform& x = layer.flame.xforms[k];
+            material[i] = material[i] * (1.0 + x.materialSpeed) * 0.5 + x.material * (1.0 - x.materialSpeed) * 0.5;
+          }
+          if (fuse[i] > 0) {
+            --fuse[i];
+            continue;
+          }
+          ++drawn;
+          const bool visible = lanes.visible[i] != 0;
+          if (++orbitSamples[i] == kSubBatch) {
+            orbitSamples[i] = 0;
+            seed(i);
+            fuse[i] = kFuse;
+          }
+          if (!visible) continue;
+          const glm::vec3 c = flatPaletteColour(palette, outColor[i], flat.paletteMode);
+          for (const Affine3& image : postSymmetry) {
+            const glm::dvec3 q = image.apply({outX[i], outY[i], outZ[i]});
+            for (SolidShadowMap& map : shadowMaps)
+              if (map.active) map.deposit(q);
+            double px = q.x, py = q.y, depth = q.z;
+            if (hasCamera) {
+              // JWildfire's solid rendering moves points by the camera only; its depth of field
+              // is a blur after shading, which the flat view leaves out.
+              const glm::dvec2 p = camera.project(q.x, q.y, q.z, 0.0, 0.0);
+              px = p.x;
+              py = p.y;
+              depth = camera.depth(q.x, q.y, q.z);
+            }
+            if (turned) {
+              const double dx = px - flat.centerX, dy = py - flat.centerY;
+              px = dx * cosTurn - dy * sinTurn + flat.centerX;
+              py = dx * sinTurn + dy * cosTurn + flat.centerY;
+            }
+            const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
+            if (!(bx >= 0.0 && by >= 0.0 && bx < rasterWidth && by < rasterHeight) || !std::isfinite(depth)) continue;
+            raster.deposit(static_cast<int>(bx), static_cast<int>(by),
+                           {static_cast<float>(depth), static_cast<float>(q.x), static_cast<float>(q.y),
+                            static_cast<float>(q.z), c.r, c.g, c.b, static_cast<float>(material[i])});
+          }
+        }
+      }
+    }
+  });
+  if (cancelled) throw FlatRenderCancelled{};
+  SolidRaster& nearest = rasters.front();
+  parallelFor(static_cast<std::size_t>(rasterHeight), 16, [&](std::size_t begin, std::size_t end) {
+    for (std::size_t y = begin; y < end; ++y)
+      for (int x = 0; x < rasterWidth; ++x)
+        for (std::size_t t = 1; t < rasters.size(); ++t)
+          nearest.deposit(x, static_cast<int>(y), rasters[t].at(x, static_cast<int>(y)));
+  });
+
+  const glm::dvec3 background(glm::clamp(linearToSrgb(scene.tone.background), glm::vec3(0.0f), glm::vec3(1.0f)));
+  const DensityImage shaded = shadeSolidRaster(solid, nearest, shadowMaps, bucketsPerUnit, background);
+  DensityImage filtered;
+  spatialFilter(shaded, oversample, flat.filterRadius, filtered);
+  const double gamma = scene.tone.gamma > 0.0 ? scene.tone.gamma : 1.0;
+
+  FlatRenderResult result;
+  result.samples = total;
+  result.quality = quality;
+  result.image.width = width;
+  result.image.height = height;
+  result.image.pixels.resize(4 * static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x) {
+      const float* v = filtered.at(x + gutter, y + gutter);
+      const double coverage = std::clamp(static_cast<double>(v[3]), 0.0, 1.0);
+      const double alpha = std::pow(coverage, 1.0 + 1.0 / gamma);
+      float* pixel = result.image.at(x, y);
+      for (int channel = 0; channel < 3; ++channel) {
+        const double value =
+            std::clamp(static_cast<double>(v[channel]), 0.0, 1.0) + background[channel] * (1.0 - alpha);
+        pixel[channel] = flatPixelLevel(static_cast<float>(value), options.bitDepth);
+      }
+      pixel[3] = 1.0f;
+    }
+  return result;
+}
+
+}  // namespace
+
 FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options) {
   const FlatViewSettings& flat = scene.flat;
   int width = 0, height = 0;
@@ -195,6 +406,7 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   if (!finitePositive(flat.scale) || !std::isfinite(flat.zoom) || !std::isfinite(flat.centerX) ||
       !std::isfinite(flat.centerY) || !std::isfinite(flat.rotateDeg) || !(flat.filterRadius >= 0.0))
     throw Error("the flame's framing (flat) holds a value that is not a finite number");
+  if (flat.solid.enabled) return renderFlatSolid(scene, options, width, height, quality);
   PatternLayer layer = planarLayer(flameLayer(scene));
   // JWildfire's post symmetry draws every point through each of its maps, as JWildfire does (the
   // chaos game alone would draw each through one of them).

@@ -81,6 +81,8 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
 struct FlatCamera {
   explicit FlatCamera(const FlatViewSettings& flat);
   glm::dvec2 project(double x, double y, double z, double angle01, double blur01) const;
+  // The turned point's depth (larger is nearer the eye), as JWildfire's z-buffer keeps it.
+  double depth(double x, double y, double z) const;
   bool jwildfire = false;
   std::array<std::array<double, 3>, 3> turn{};  // rows: the turned point's x, y and depth
   glm::dvec3 position{0.0};                     // JWildfire's c

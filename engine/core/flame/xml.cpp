@@ -653,6 +653,11 @@ class FlameReader {
           (1.0 - number(symmetry, context, -kFlameCoefficientLimit, kFlameCoefficientLimit)) / 2.0, 0.0, 1.0);
     if (const pugi::xml_attribute opacity = node.attribute("opacity"))
       x.opacity = clampedNumber(opacity, context, 0.0, 1.0);
+    // JWildfire's solid rendering: the material index the transform pulls points towards.
+    if (const pugi::xml_attribute material = node.attribute("material"))
+      x.material = clampedNumber(material, context, 0.0, 1000.0);
+    if (const pugi::xml_attribute speed = node.attribute("material_speed"))
+      x.materialSpeed = clampedNumber(speed, context, -1.0, 1.0);
     // Fractorium's and Apophysis 7X's direct colour: how much of what dc_ variations set is kept.
     if (const pugi::xml_attribute direct = node.attribute("var_color"))
       x.directColor = clampedNumber(direct, context, 0.0, 1.0);
@@ -1854,15 +1859,19 @@ bool writtenByJwildfire(const pugi::xml_node& flame) {
 }
 
 // JWildfire's flame-level features that neither the flat view nor the mesh keeps, named as lost
-// when a file turns them on: solid rendering (lights, materials, ambient occlusion) and the parts of
-// its 3D camera the flat view does not draw (readFlameCurves names the motion curves it leaves out).
+// when a file turns them on: solid rendering's depth of field and the parts of its 3D camera the flat view does not
+// draw (readFlameCurves names the motion curves it leaves out).
+bool solidRenderingOn(const pugi::xml_node& flame);  // JWildfire's sld_render_enabled (below)
+
 void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader) {
-  const std::string solid = flame.attribute("sld_render_enabled").as_string("false");
-  if (solid == "true" || solid == "1") {
-    reader.lose("JWildfire solid rendering");
-    reader.warn(
-        "the flame uses JWildfire's solid rendering (lights and materials), which voxflame does not; it is "
-        "drawn as a glowing flame");
+  // Solid rendering is kept (readSolid) but for its depth of field, which JWildfire draws after
+  // shading (a post blur with bokeh) and the flat view leaves sharp.
+  if (solidRenderingOn(flame)) {
+    const auto dof = parseNumber(flame.attribute("cam_dof").as_string("0"));
+    if (dof && std::isfinite(*dof) && *dof != 0.0) {
+      reader.lose("JWildfire solid rendering's depth of field");
+      reader.warn("the solid rendering's depth of field (a blur with bokeh after shading) is not drawn; it is sharp");
+    }
   }
   // The flat view keeps the 3D camera (readFlat) but for these parts of JWildfire's: its depth of
   // field about a focus point (new_dof) and blur shapes other than its bubble, and its depth dimming.
@@ -2105,6 +2114,134 @@ ToneMapSettings readTone(const pugi::xml_node& flame, FlameReader& reader) {
   return tone;
 }
 
+// --- JWildfire's solid rendering ---------------------------------------------------------------
+
+// JWildfire's own defaults (SolidRenderSettings.setupDefaults), which a file's missing keys keep.
+FlatSolidSettings jwildfireSolidDefaults() {
+  FlatSolidSettings solid;
+  solid.aoEnabled = true;
+  solid.lights = {{55.0, -22.0, 0.8, glm::dvec3(1.0), true, 0.8}, {64.0, 55.0, 0.6, glm::dvec3(1.0), false, 0.7}};
+  solid.materials = {{0.7, 0.5, 0.6, 24.0, glm::dvec3(1.0), SolidDiffuseResponse::Cosa}};
+  return solid;
+}
+
+bool solidRenderingOn(const pugi::xml_node& flame) {
+  const std::string_view value = flame.attribute("sld_render_enabled").as_string("0");
+  return value == "1" || value == "true";
+}
+
+// The sld_render_* keys of a JWildfire flame with solid rendering on. A value that is not a number
+// keeps JWildfire's default, one out of range is brought into it, each with a warning; a material's
+// reflection map (an image file beside JWildfire, not in the flame) is named as lost.
+FlatSolidSettings readSolid(const pugi::xml_node& flame, FlameReader& reader) {
+  FlatSolidSettings solid = jwildfireSolidDefaults();
+  solid.enabled = true;
+  const auto number = [&](const std::string& name, double& target, double low, double high) {
+    const pugi::xml_attribute attribute = flame.attribute(name.c_str());
+    if (!attribute) return false;
+    const auto value = parseNumber(attribute.value());
+    if (!value || !std::isfinite(*value)) {
+      reader.warn(name + "=\"" + std::string(attribute.value()).substr(0, 40) +
+                  "\" is not a number; the solid rendering uses JWildfire's default " + formatted(target));
+      return false;
+    }
+    const double kept = std::clamp(*value, low, high);
+    if (kept != *value)
+      reader.warn(name + " " + formatted(*value) + " is outside voxflame's range; " + formatted(kept) + " is used");
+    target = kept;
+    return true;
+  };
+  const auto whole = [&](const std::string& name, int& target, int low, int high) {
+    double value = target;
+    if (number(name, value, low, high)) target = static_cast<int>(std::lround(value));
+  };
+  const auto flag = [&](const std::string& name, bool& target) {
+    if (const pugi::xml_attribute attribute = flame.attribute(name.c_str())) {
+      const std::string_view value = attribute.value();
+      target = value == "1" || value == "true";
+    }
+  };
+  // A JWildfire enum by its Java name; an unknown one keeps the default, as JWildfire does.
+  const auto named = [&](const std::string& name, std::span<const std::string_view> javaNames, auto& target) {
+    const pugi::xml_attribute attribute = flame.attribute(name.c_str());
+    if (!attribute) return;
+    const std::string_view value = attribute.value();
+    const auto found = std::find(javaNames.begin(), javaNames.end(), value);
+    if (found == javaNames.end()) {
+      reader.warn(name + "=\"" + std::string(value).substr(0, 40) +
+                  "\" is not one JWildfire knows; its default is used");
+      return;
+    }
+    target = static_cast<std::remove_reference_t<decltype(target)>>(found - javaNames.begin());
+  };
+  flag("sld_render_ao_enabled", solid.aoEnabled);
+  number("sld_render_ao_intensity", solid.aoIntensity, 0.0, 4.0);
+  number("sld_render_ao_search_radius", solid.aoSearchRadius, 0.25, 120.0);
+  number("sld_render_ao_blur_radius", solid.aoBlurRadius, 0.25, 10.0);
+  whole("sld_render_ao_radius_samples", solid.aoRadiusSamples, 1, 128);
+  whole("sld_render_ao_azimuth_samples", solid.aoAzimuthSamples, 1, 128);
+  number("sld_render_ao_falloff", solid.aoFalloff, 0.0, 10.0);
+  number("sld_render_ao_affect_diffuse", solid.aoAffectDiffuse, 0.0, 1.0);
+  static constexpr std::string_view kShadowTypes[] = {"OFF", "FAST", "SMOOTH"};
+  named("sld_render_shadow_type", kShadowTypes, solid.shadowType);
+  number("sld_render_shadow_smooth_radius", solid.shadowSmoothRadius, 0.0, 100.0);
+  whole("sld_render_shadowmap_size", solid.shadowmapSize, 64, 8192);
+  number("sld_render_shadowmap_bias", solid.shadowmapBias, 0.0, 100.0);
+
+  constexpr int kMaxEntries = 64;
+  int materials = -1, lights = -1;
+  whole("sld_render_material_count", materials, 0, kMaxEntries);
+  whole("sld_render_ligtht_count", lights, 0, kMaxEntries);  // sic: JWildfire's spelling
+  std::vector<std::string> reflectionMaps;
+  if (materials >= 0) {
+    solid.materials.assign(static_cast<std::size_t>(materials), SolidMaterial{});
+    for (int i = 0; i < materials; ++i) {
+      SolidMaterial& m = solid.materials[static_cast<std::size_t>(i)];
+      m.phongColor = glm::dvec3(0.0);  // JWildfire's MaterialSettings starts without a highlight colour
+      const std::string n = std::to_string(i);
+      number("sld_render_material_diffuse" + n, m.diffuse, 0.0, 100.0);
+      number("sld_render_material_ambient" + n, m.ambient, 0.0, 100.0);
+      number("sld_render_material_phong" + n, m.phong, 0.0, 100.0);
+      number("sld_render_material_phong_size" + n, m.phongSize, 0.0, 10000.0);
+      number("sld_render_material_phong_red" + n, m.phongColor.r, 0.0, 100.0);
+      number("sld_render_material_phong_green" + n, m.phongColor.g, 0.0, 100.0);
+      number("sld_render_material_phong_blue" + n, m.phongColor.b, 0.0, 100.0);
+      static constexpr std::string_view kResponses[] = {"COSA", "COSA_SQUARE", "COSA_HALVE", "COSA_HALVE_SQUARE"};
+      named("sld_render_material_light_diif_func" + n, kResponses, m.diffuseResponse);
+      const std::string map = flame.attribute(("sld_render_material_refl_map_filename" + n).c_str()).as_string("");
+      double mapIntensity = 0.5;
+      number("sld_render_material_refl_map_intensity" + n, mapIntensity, 0.0, 100.0);
+      if (!map.empty() && mapIntensity > 0.0) reflectionMaps.push_back(n);
+    }
+  }
+  if (lights >= 0) {
+    solid.lights.assign(static_cast<std::size_t>(lights), SolidLight{});
+    for (int i = 0; i < lights; ++i) {
+      SolidLight& l = solid.lights[static_cast<std::size_t>(i)];
+      // JWildfire's DistantLight starts at altitude and azimuth 0, black, casting shadows.
+      l = {0.0, 0.0, 0.5, glm::dvec3(0.0), true, 0.8};
+      const std::string n = std::to_string(i);
+      number("sld_render_light_altitude" + n, l.altitudeDeg, -3600.0, 3600.0);
+      number("sld_render_light_azimuth" + n, l.azimuthDeg, -3600.0, 3600.0);
+      number("sld_render_light_intensity" + n, l.intensity, 0.0, 100.0);
+      number("sld_render_light_red" + n, l.color.r, 0.0, 100.0);
+      number("sld_render_light_green" + n, l.color.g, 0.0, 100.0);
+      number("sld_render_light_blue" + n, l.color.b, 0.0, 100.0);
+      flag("sld_render_light_shadows" + n, l.castShadows);
+      number("sld_render_light_shadow_intensity" + n, l.shadowIntensity, 0.0, 1.0);
+    }
+  }
+  if (!reflectionMaps.empty()) {
+    std::string which;
+    for (const std::string& n : reflectionMaps) which += (which.empty() ? "" : ", ") + n;
+    reader.lose("JWildfire solid rendering's reflection maps");
+    reader.warn("the solid rendering's material" + std::string(reflectionMaps.size() == 1 ? " " : "s ") + which +
+                " reflect" + (reflectionMaps.size() == 1 ? "s" : "") +
+                " an image file that is not part of the flame; the reflection is left out");
+  }
+  return solid;
+}
+
 // --- the 2D framing -------------------------------------------------------------------------
 
 // flam3's framing of the flame (FlatViewSettings' defaults are flam3's). Values outside the
@@ -2213,6 +2350,7 @@ FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader, bool
     // nothing of the camera is kept then, unless a motion curve moves it.
     if (camera.hasCamera() || cameraAnimated) flat = camera;
   }
+  if (solidRenderingOn(flame)) flat.solid = readSolid(flame, reader);
   if (const pugi::xml_attribute shape = flame.attribute("filter_shape");
       shape && std::string_view(shape.value()) != "gaussian") {
     reader.warn(std::string("the spatial filter '") + shape.value() + "' is drawn as flam3's gaussian");
