@@ -365,13 +365,6 @@ INSTANTIATE_TEST_SUITE_P(Colour, ColourVariationAtPoint, testing::ValuesIn(point
 const PointCaseTableRegistration registered(&pointCases);
 
 // The colour index a row's variation leaves in every one of 37 lanes (the harness's colour was 0.375).
-struct ColourCase {
-  std::string name;
-  std::vector<double> params;  // empty: the defaults
-  glm::dvec3 point;
-  std::uint32_t seed;
-  double colour;
-};
 
 const std::vector<ColourCase>& colourCases() {
   static const std::vector<ColourCase> cases = {
@@ -441,16 +434,7 @@ const std::vector<ColourCase>& colourCases() {
 class ColourVariationSetsColour : public testing::TestWithParam<ColourCase> {};
 
 TEST_P(ColourVariationSetsColour, ToTheHandComputedValue) {
-  const ColourCase& c = GetParam();
-  const VariationInfo& info = variationOrThrow(c.name);
-  EXPECT_TRUE(info.directColour);
-  const Outputs out = run(info, c.params.empty() ? info.defaultParams() : c.params, c.point, 0.8, c.seed, 37);
-  for (std::size_t lane = 0; lane < out.colour.size(); ++lane)
-    EXPECT_NEAR(out.colour[lane], c.colour, 1e-12) << "lane " << lane;
-}
-
-std::string colourCaseLabel(const testing::TestParamInfo<ColourCase>& info) {
-  return info.param.name + "_" + std::to_string(info.index);
+  expectSetsTheHandComputedColour(GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Colour, ColourVariationSetsColour, testing::ValuesIn(colourCases()), colourCaseLabel);

@@ -221,75 +221,84 @@ INSTANTIATE_TEST_SUITE_P(JwildfireHoldout, HoldoutVariationAtPoint, testing::Val
 const PointCaseTableRegistration registered(&pointCases);
 
 // The colour index a row's variation leaves in every one of 37 lanes (the harness's colour was 0.375), from the
-// same script.
-struct ColourCase {
-  std::string name;
-  std::vector<double> params;  // empty: the defaults
-  std::uint32_t seed;
-  double colour;
-};
+// same script, at the point (0.3, −0.7, 0.5).
+constexpr glm::dvec3 kPoint{0.3, -0.7, 0.5};
 
 const std::vector<ColourCase>& colourCases() {
   static const std::vector<ColourCase> cases = {
       // CircleSquares |(i² − 2 (i | j) + j²) mod 255| / 255 at (112, 73) and (40, 67); Square Tile at (12, 39).
-      {"szubieta", {}, kHighSeed, 0.1411764705882353},
-      {"szubieta", {}, kLowSeed, 0.0392156862745098},
-      {"szubieta", {40.0, 60.0, 1.0, 0.8}, kLowSeed, 0.03137254901960784},
+      {"szubieta", {}, kPoint, kHighSeed, 0.1411764705882353},
+      {"szubieta", {}, kPoint, kLowSeed, 0.0392156862745098},
+      {"szubieta", {40.0, 60.0, 1.0, 0.8}, kPoint, kLowSeed, 0.03137254901960784},
       // |cos(x₀ + g_x color1 + s) + sin(y₀ + g_y color2 + s)| mod fmag.
-      {"dc_gnarly", {}, kHighSeed, 0.09727156000757842},
+      {"dc_gnarly", {}, kPoint, kHighSeed, 0.09727156000757842},
       {"dc_gnarly",
        {2.0, 0.07, 0.066, 7.0, 7.668, 4.0, 2.0, 5.0, 5.0, 1.0, 15.0, 24.0, 1.0, 0.0, 15.0, 0.0, 0.0, 0.0},
+       kPoint,
        kLowSeed,
        0.8055933998421834},
       {"dc_gnarly",
        {5.0, 0.254, 0.07, 5.724, 11.0, 2.0, 2.0, 5.0, 5.0, 1.0, 25.0, 15.0, 0.6, 0.3, -0.5, 0.4, 0.1, 1.0},
+       kPoint,
        kLowSeed,
        0.3056437346479085},
       // dc 0 leaves the colour alone.
       {"dc_gnarly",
        {7.0, 0.2, 0.3, 1.5, 2.5, 0.7, 0.9, 1.1, 1.3, 0.0, 5.0, 5.0, 1.0, 0.0, 0.0, 0.5, -0.2, 0.0},
+       kPoint,
        kLowSeed,
        0.375},
       {"dc_gnarly",
        {4.0, 0.05, 0.05, 3.5, 3.5, 2.0, 2.0, 5.0, 5.0, 1.0, 5.0, 5.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+       kPoint,
        kLowSeed,
        0.5574088588914152},
       // dc_triTile: (noise(m + 43 or 31) + col1 or col2 of the last tile's kind) mod 1.
-      {"dc_triTile", {}, kHighSeed, 0.10814591374161919},
-      {"dc_triTile", {}, kLowSeed, 0.10814591374161919},
+      {"dc_triTile", {}, kPoint, kHighSeed, 0.10814591374161919},
+      {"dc_triTile", {}, kPoint, kLowSeed, 0.10814591374161919},
       {"dc_triTile",
        {2.0, 2.0, 0.222, 0.868, 0.0, 4.0, 1.0, 2.0, 0.0, 0.0, 1.0, 2.0, 0.0, 0.0, 1.0, 2.0},
+       kPoint,
        kHighSeed,
        0.47167875807158577},
       {"dc_triTile",
        {3.0, 1.0, 0.3, 0.6, 1.0, 2.0, 2.0, 3.0, 1.0, 3.0, 1.0, 2.0, 0.0, 2.0, 1.0, 1.0},
+       kPoint,
        kLowSeed,
        0.9792050775509351},
       {"dc_triTile",
        {4.0, 1.0, 0.1, 0.9, 0.0, 5.0, 0.0, 0.0, 0.0, 2.0, 2.0, 1.0, 1.0, 3.0, 0.0, 2.0},
+       kPoint,
        kHighSeed,
        0.06984446773763953},
       {"dc_triTile",
        {5.0, 2.0, 0.4, 0.55, 0.0, 3.0, 1.0, 2.0, 0.0, 2.0, 1.0, 1.0, 0.0, 2.0, 2.0, 1.0},
+       kPoint,
        kLowSeed,
        0.9081459137416193},
       {"dc_triTile",
        {6.0, 1.0, 0.2, 0.7, 1.0, 4.0, 2.0, 2.0, 0.0, 3.0, 1.0, 1.0, 1.0, 2.0, 2.0, 2.0},
+       kPoint,
        kHighSeed,
        0.03456224917180939},
       {"dc_triTile",
        {6.0, 2.0, 0.2, 0.7, 0.0, 6.0, 1.0, 1.0, 0.0, 3.0, 2.0, 2.0, 0.0, 4.0, 1.0, 1.0},
+       kPoint,
        kLowSeed,
        0.9959153555780255},
       // Gradient 2: the grey level; Gradient 0 (RGB) leaves the colour index.
-      {"dc_quadtree", {1.0, 10000.0, 0.0, 1000.0, 30.0, 0.0, 0.0, 0.0, 0.0, 1.0}, kHighSeed, 0.375},
-      {"dc_quadtree", {1.0, 10000.0, 0.0, 1000.0, 30.0, 0.0, 2.0, 0.5, 0.1, 1.0}, kLowSeed, 0.1411764705882353},
-      {"dc_quadtree", {2.5, 10000.0, 1.3, 300.0, 12.0, 0.0, 2.0, 1.0, 0.0, 0.0}, kHighSeed, 0.4549019607843137},
-      {"dc_quadtree", {1.5, 10000.0, 0.7, 800.0, 20.0, 1.0, 2.0, -0.4, 0.2, 0.0}, kHighSeed, 0.25882352941176473},
-      {"dc_ducks", {10000.0, 10.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0}, kHighSeed, 0.375},
-      {"dc_ducks", {10000.0, 10.0, 1.0, 0.0, 2.0, 0.5, 0.1, 1.0}, kLowSeed, 0.9058823529411765},
-      {"dc_ducks", {10000.0, 25.0, 2.0, 0.0, 2.0, 1.0, 0.0, 0.0}, kHighSeed, 0.0},
-      {"dc_ducks", {10000.0, 3.0, 0.7, 1.0, 2.0, -0.4, 0.2, 0.0}, kLowSeed, 0.10196078431372549},
+      {"dc_quadtree", {1.0, 10000.0, 0.0, 1000.0, 30.0, 0.0, 0.0, 0.0, 0.0, 1.0}, kPoint, kHighSeed, 0.375},
+      {"dc_quadtree", {1.0, 10000.0, 0.0, 1000.0, 30.0, 0.0, 2.0, 0.5, 0.1, 1.0}, kPoint, kLowSeed, 0.1411764705882353},
+      {"dc_quadtree", {2.5, 10000.0, 1.3, 300.0, 12.0, 0.0, 2.0, 1.0, 0.0, 0.0}, kPoint, kHighSeed, 0.4549019607843137},
+      {"dc_quadtree",
+       {1.5, 10000.0, 0.7, 800.0, 20.0, 1.0, 2.0, -0.4, 0.2, 0.0},
+       kPoint,
+       kHighSeed,
+       0.25882352941176473},
+      {"dc_ducks", {10000.0, 10.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0}, kPoint, kHighSeed, 0.375},
+      {"dc_ducks", {10000.0, 10.0, 1.0, 0.0, 2.0, 0.5, 0.1, 1.0}, kPoint, kLowSeed, 0.9058823529411765},
+      {"dc_ducks", {10000.0, 25.0, 2.0, 0.0, 2.0, 1.0, 0.0, 0.0}, kPoint, kHighSeed, 0.0},
+      {"dc_ducks", {10000.0, 3.0, 0.7, 1.0, 2.0, -0.4, 0.2, 0.0}, kPoint, kLowSeed, 0.10196078431372549},
   };
   return cases;
 }
@@ -297,16 +306,7 @@ const std::vector<ColourCase>& colourCases() {
 class HoldoutVariationSetsColour : public testing::TestWithParam<ColourCase> {};
 
 TEST_P(HoldoutVariationSetsColour, ToTheHandComputedValue) {
-  const ColourCase& c = GetParam();
-  const VariationInfo& info = variationOrThrow(c.name);
-  EXPECT_TRUE(info.directColour);
-  const Outputs out = run(info, c.params.empty() ? info.defaultParams() : c.params, {0.3, -0.7, 0.5}, 0.8, c.seed, 37);
-  for (std::size_t lane = 0; lane < out.colour.size(); ++lane)
-    EXPECT_NEAR(out.colour[lane], c.colour, 1e-12) << "lane " << lane;
-}
-
-std::string colourCaseLabel(const testing::TestParamInfo<ColourCase>& info) {
-  return info.param.name + "_" + std::to_string(info.index);
+  expectSetsTheHandComputedColour(GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(JwildfireHoldout, HoldoutVariationSetsColour, testing::ValuesIn(colourCases()),

@@ -465,13 +465,6 @@ const PointCaseTableRegistration registered(&pointCases);
 // the same transcription: plane_wf's (u, v) are ½ − Ψ₁ and ½ − Ψ₂ (swapped on the plane zx), spirograph3D's t is
 // tmin + (tmax − tmin) Ψ₁, recurrenceplot colours the running sum (the harness's start (0.125, −0.25) plus the pair
 // of its point row above: (0.3028571, 0.0354286)), and truchet the distance to the corner of the arc the point is on.
-struct ColourCase {
-  std::string name;
-  std::vector<double> params;
-  glm::dvec3 point;
-  std::uint32_t seed;
-  double colour;
-};
 
 const std::vector<ColourCase>& colourCases() {
   static const std::vector<ColourCase> cases = {
@@ -519,16 +512,7 @@ const std::vector<ColourCase>& colourCases() {
 class JwildfireVariationSetsColour : public testing::TestWithParam<ColourCase> {};
 
 TEST_P(JwildfireVariationSetsColour, ToTheHandComputedValue) {
-  const ColourCase& c = GetParam();
-  const VariationInfo& info = variationOrThrow(c.name);
-  EXPECT_TRUE(info.directColour);
-  const Outputs out = run(info, c.params.empty() ? info.defaultParams() : c.params, c.point, 0.8, c.seed, 37);
-  for (std::size_t lane = 0; lane < out.colour.size(); ++lane)
-    EXPECT_NEAR(out.colour[lane], c.colour, 1e-12) << "lane " << lane;
-}
-
-std::string colourCaseLabel(const testing::TestParamInfo<ColourCase>& info) {
-  return info.param.name + "_" + std::to_string(info.index);
+  expectSetsTheHandComputedColour(GetParam());
 }
 
 INSTANTIATE_TEST_SUITE_P(Jwildfire, JwildfireVariationSetsColour, testing::ValuesIn(colourCases()), colourCaseLabel);

@@ -101,4 +101,30 @@ inline void expectMatchesTheHandComputedValue(const PointCase& c) {
   }
 }
 
+// One direct-colour variation at one point: the colour index it leaves in every one of 37 lanes (the harness starts
+// each at kStartColour, weight 0.8), against a value worked out by hand.
+struct ColourCase {
+  std::string name;
+  std::vector<double> params;  // empty: the catalogue's defaults
+  glm::dvec3 point;
+  std::uint32_t seed;
+  double colour;
+};
+
+[[maybe_unused]] inline void PrintTo(const ColourCase& c, std::ostream* os) {
+  *os << c.name;
+}
+
+inline std::string colourCaseLabel(const testing::TestParamInfo<ColourCase>& info) {
+  return info.param.name + "_" + std::to_string(info.index);
+}
+
+inline void expectSetsTheHandComputedColour(const ColourCase& c) {
+  const core::VariationInfo& info = core::variationOrThrow(c.name);
+  EXPECT_TRUE(info.directColour);
+  const Outputs out = run(info, c.params.empty() ? info.defaultParams() : c.params, c.point, 0.8, c.seed, 37);
+  for (std::size_t lane = 0; lane < out.colour.size(); ++lane)
+    EXPECT_NEAR(out.colour[lane], c.colour, 1e-12) << "lane " << lane;
+}
+
 }  // namespace voxflame::test
