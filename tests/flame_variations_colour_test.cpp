@@ -365,7 +365,6 @@ INSTANTIATE_TEST_SUITE_P(Colour, ColourVariationAtPoint, testing::ValuesIn(point
 const PointCaseTableRegistration registered(&pointCases);
 
 // The colour index a row's variation leaves in every one of 37 lanes (the harness's colour was 0.375).
-
 const std::vector<ColourCase>& colourCases() {
   static const std::vector<ColourCase> cases = {
       // |(S + centre)|² / scale mod 1 at the running sum S = (0.125, −0.25) + (s x, s y).

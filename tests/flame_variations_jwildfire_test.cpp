@@ -465,7 +465,6 @@ const PointCaseTableRegistration registered(&pointCases);
 // the same transcription: plane_wf's (u, v) are ½ − Ψ₁ and ½ − Ψ₂ (swapped on the plane zx), spirograph3D's t is
 // tmin + (tmax − tmin) Ψ₁, recurrenceplot colours the running sum (the harness's start (0.125, −0.25) plus the pair
 // of its point row above: (0.3028571, 0.0354286)), and truchet the distance to the corner of the arc the point is on.
-
 const std::vector<ColourCase>& colourCases() {
   static const std::vector<ColourCase> cases = {
       // plane_wf: color_mode 3 (u + ½)(v + ½), on zx (the default) and on yz; 1: u + ½; 2: v + ½; direct_color 0 and
