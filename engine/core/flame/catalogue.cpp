@@ -50,6 +50,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addSubflameVariations(c);
   variation_kernels::addParplotVariations(c);
   variation_kernels::addJwildfireMeshVariations(c);
+  variation_kernels::addTextVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")
@@ -266,9 +267,10 @@ std::string variationsMarkdown() {
         "completed: synth 33, text_wf 29, bwraps7 12, blob3D 11,\ndc_linear 11, parplot2d_wf 11, spirograph "
         "10, yin_yang 10, waves2b 8, affine3D 7, boarders2 7, juliac 7, plane_wf 7,\npoint_symmetry_wf 7, "
         "cannabiscurve_wf 6, recurrenceplot 6, waves2_3D 6, barycentroid 5, blade3D 5, butterfly3D 5,\n"
-        "cylinder_apo 5, waffle 5, xtrb 5. parplot2d_wf's formula text is evaluated by muParser, and\n"
-        "obj_mesh_primitive_wf's meshes are built in code. Not here: text_wf (fonts), polarplot3d_wf and "
-        "isosfplot3d_wf\n(formula text of other shapes), obj_mesh_wf (a mesh file beside the flame), dla3d_wf "
+        "cylinder_apo 5, waffle 5, xtrb 5. parplot2d_wf's formula text is evaluated by muParser,\n"
+        "obj_mesh_primitive_wf's meshes are built in code and text_wf's text is drawn by FreeType. Not here: "
+        "polarplot3d_wf and\nisosfplot3d_wf (formula text of other shapes), obj_mesh_wf (a mesh file beside the "
+        "flame), dla3d_wf "
         "(a grown cluster),\nbrush_stroke_wf (images), and mandelbrot and Fractorium's hexaplay3D and hexnix3D "
         "(an orbit or a walk over\nhexagons kept from one iteration to the next). `hopalong` keeps an orbit too, "
         "but one that does not depend on the\npoint: it draws a point of the orbit's first 2²⁰ instead.\n\n"

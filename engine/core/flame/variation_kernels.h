@@ -218,6 +218,8 @@ void addSubflameVariations(std::vector<VariationInfo>& catalogue);
 void addParplotVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's obj_mesh_primitive_wf, points on built-in meshes (variations_jwildfire_mesh.cpp).
 void addJwildfireMeshVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire's text_wf, points of a line of text drawn by FreeType (variations_text.cpp).
+void addTextVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

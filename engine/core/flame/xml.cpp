@@ -30,6 +30,7 @@
 #include "core/flame/obj_mesh_primitives.h"
 #include "core/flame/subflame.h"
 #include "core/flame/svg_raster.h"
+#include "core/flame/text_raster.h"
 #include "core/flame/variations.h"
 #include "core/random.h"
 
@@ -801,6 +802,22 @@ class FlameReader {
         // pixel's own colour with true_color), which voxflame does not.
         lose("colour of " + withoutCopyMark(name));
         warn(context + " has " + name + ", which JWildfire colours by the SVG's colours; voxflame does not");
+      }
+      // text_wf's font: one that is not installed here is drawn in the family fontconfig offers
+      // instead (Java2D falls back the same way), which the importer names; the text itself is kept.
+      if (info->name == "text_wf" && term.weight != 0.0) {
+        const std::string& font = term.texts.at(1);
+        if (const std::string standIn = substituteFontFamily(font); !standIn.empty())
+          warn(context + " has " + name + " in the font '" + font.substr(0, 80) + "', which is not installed here; '" +
+               standIn + "' draws its text");
+        if (const TextRaster raster = rasteriseText(term.texts.at(0), font, static_cast<int>(term.params.at(0)),
+                                                    static_cast<int>(term.params.at(6)));
+            raster.column.size() < 2) {
+          lose("text of " + withoutCopyMark(name));
+          warn(context + " has " + name + " whose text paints nothing" +
+               (raster.problem.empty() ? std::string() : " (" + raster.problem + ")") +
+               "; it draws a unit square's random points, as JWildfire does");
+        }
       }
       // parplot2d_wf's formulas: a file normally gives all three (JWildfire writes a preset's formulas
       // beside its preset_id too, so presets need not be looked up). One muParser cannot read makes
