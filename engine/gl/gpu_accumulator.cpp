@@ -107,8 +107,7 @@ GLuint makeBuffer(GLuint binding, std::size_t bytes, const void* data = nullptr)
   // A binding is never empty, so a buffer holds at least 16 bytes; only the caller's bytes are read from data.
   glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(bytes, 16)), nullptr,
                GL_DYNAMIC_DRAW);
-  if (data != nullptr && bytes > 0)
-    glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(bytes), data);
+  if (data != nullptr && bytes > 0) glBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(bytes), data);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
   return buffer;
 }
