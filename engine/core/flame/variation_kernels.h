@@ -218,6 +218,8 @@ void addSubflameVariations(std::vector<VariationInfo>& catalogue);
 void addParplotVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's obj_mesh_primitive_wf, points on built-in meshes (variations_jwildfire_mesh.cpp).
 void addJwildfireMeshVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire's glsl_apollonian, dc_crackle_wf and fract_mandelbrot_wf (variations_jwildfire_glsl.cpp).
+void addJwildfireGlslVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 
