@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -310,6 +311,22 @@ TEST(FlameVariationJwildfireGlsl, PerlinColorSeedTurnsTheColourIndex) {
   }
   params[static_cast<std::size_t>(seedIndex)] = std::nan("");
   EXPECT_EQ(run(info, params, {0.3, -0.7, 0.5}, 0.8, kHighSeed, 5).colour[0], plain.colour[0]);
+}
+
+// A NaN, infinite or huge parameter, one at a time, never leaves a NaN colour index (dc_perlin: its color_seed).
+TEST(FlameVariationJwildfireGlsl, OddParametersNeverLeaveANanColour) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (const char* name : {"glsl_apollonian", "dc_crackle_wf", "fract_mandelbrot_wf", "dc_perlin"}) {
+    const VariationInfo& info = variationOrThrow(name);
+    for (std::size_t k = std::string(name) == "dc_perlin" ? info.params.size() - 1 : 0; k < info.params.size(); ++k)
+      for (const double odd : {std::nan(""), inf, -inf, 1e300, -1e300, 0.0}) {
+        std::vector<double> params = info.defaultParams();
+        params[k] = odd;
+        const Outputs out = run(info, params, {0.3, -0.7, 0.5}, 0.8, kLowSeed, 3);
+        for (std::size_t lane = 0; lane < 3; ++lane)
+          EXPECT_FALSE(std::isnan(out.colour[lane])) << name << " " << info.params[k].name << " = " << odd;
+      }
+  }
 }
 
 ImportedFlame importXform(const std::string& attributes) {
