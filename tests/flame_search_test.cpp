@@ -98,6 +98,16 @@ TEST(FlameSearch, FillTestRejectsCollapseAndEscapeAndKeepsAVolume) {
   EXPECT_TRUE(core::measureFlameFill(core::defaultFlame(), 3).passes) << "the default flame is a volume";
 }
 
+// Mutation draws parameters within their sliders, so every slider lies within what a flame may hold: a slider past
+// ±kFlameCoefficientLimit (hopalong's seed once reached 10⁷) made a mutated flame invalid.
+TEST(FlameSearch, EverySliderLiesWithinWhatAFlameMayHold) {
+  for (const core::VariationInfo& info : core::variationCatalogue())
+    for (const core::VariationParam& p : info.params) {
+      EXPECT_LE(std::abs(p.sliderMin), core::kFlameCoefficientLimit) << info.name << " " << p.name;
+      EXPECT_LE(std::abs(p.sliderMax), core::kFlameCoefficientLimit) << info.name << " " << p.name;
+    }
+}
+
 TEST(FlameSearch, MutateWithStrengthZeroChangesNothingAndStaysValid) {
   const core::FlameGenome base = core::defaultFlame();
   EXPECT_EQ(core::mutateFlame(base, 0.0, 5), base);

@@ -35,7 +35,7 @@ using namespace voxflame::test;
 // dc_perlin with select_range 2: the notch is [−2, 2], wider than the noise (|N| < 1.5 for two octaves), so the first
 // draw is kept and the point is w (vx, vy) of it.
 std::vector<double> perlinParams(double shape) {
-  return {shape, 0.0, 0.0, 2.0, 0.25, 0.25, 0.0, 1.0, 2.0, 2.0, 2.0, 0.0, 10.0};
+  return {shape, 0.0, 0.0, 2.0, 0.25, 0.25, 0.0, 1.0, 2.0, 2.0, 2.0, 0.0, 10.0, 0.0};
 }
 
 const std::vector<PointCase>& pointCases() {
@@ -482,7 +482,8 @@ TEST(FlameVariationColour, OnlyColourVariationsAreMarkedDirectColour) {
         info.name == "subflame_wf" || info.name == "glynns3subfl" || info.name == "plane_wf" ||
         info.name == "truchet" || info.name == "spirograph3D" || info.name == "recurrenceplot" ||
         info.name == "parplot2d_wf" || info.name == "point_symmetry_wf" || info.name == "mirror_wf" ||
-        info.name == "axis_symmetry_wf" || info.name == "smartcrop";  // cropmode 2 restores the kept point's colour
+        info.name == "axis_symmetry_wf" || info.name == "glsl_apollonian" || info.name == "fract_mandelbrot_wf" ||
+        info.name == "smartcrop";  // cropmode 2 restores the kept point's colour
     EXPECT_EQ(info.directColour, colours) << info.name;
   }
 }

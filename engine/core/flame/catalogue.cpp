@@ -51,6 +51,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addParplotVariations(c);
   variation_kernels::addJwildfireMeshVariations(c);
   variation_kernels::addTextVariations(c);
+  variation_kernels::addJwildfireGlslVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")

@@ -5,6 +5,7 @@
 // flame's cells have the plugin's size, spread and jitter but not the very same places.
 #include "core/flame/noise.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -114,6 +115,67 @@ double simplexNoise3D(double x, double y, double z) {
     }
   }
   return 32.0 * total;
+}
+
+namespace {
+
+// Crackle's cell centres (the plugin's `position`): the cell (cx, cy) jittered by two noises whose
+// x and y cross over, as in the plugin, so they do not correlate.
+struct CrackleCells {
+  double halfSize, distort, slice;
+  void centre(double cx, double cy, double* out) const {
+    const double nx = simplexNoise3D(cx * 2.5, cy * 2.5, slice * 2.5);
+    const double ny = simplexNoise3D(cy * 2.5 + 30.2, cx * 2.5 - 12.1, slice * 2.5 + 19.8);
+    out[0] = (cx + distort * nx) * halfSize;
+    out[1] = (cy + distort * ny) * halfSize;
+  }
+  // The 3×3 block of centres around cell (cx, cy), column by column (x outer, y inner).
+  void block(double cx, double cy, double (*centres)[2]) const {
+    int k = 0;
+    for (int di = -1; di <= 1; ++di)
+      for (int dj = -1; dj <= 1; ++dj) centre(cx + di, cy + dj, centres[k++]);
+  }
+};
+
+// Java's (int) floor(v), which saturates, as a double.
+double javaFloorToInt(double v) {
+  const double f = std::floor(v);
+  if (!(f == f)) return 0.0;
+  return std::clamp(f, -2147483648.0, 2147483647.0);
+}
+
+}  // namespace
+
+CrackleStep crackleStep(double ux, double uy, double halfSize, double distort, double slice, double power,
+                        double scale) {
+  const CrackleCells cells{halfSize, distort, slice};
+  double cx = javaFloorToInt(ux / halfSize), cy = javaFloorToInt(uy / halfSize);
+  double centres[9][2];
+  cells.block(cx, cy, centres);
+  // Re-centre the block on the nearest centre, so that its cell is surrounded on all sides.
+  int nearest = 0;
+  double nearestD2 = 1.0e100;
+  for (int k = 0; k < 9; ++k) {
+    const double dx = centres[k][0] - ux, dy = centres[k][1] - uy, d2 = dx * dx + dy * dy;
+    if (d2 < nearestD2) nearestD2 = d2, nearest = k;
+  }
+  if (nearest != 4) {
+    cx += nearest / 3 - 1;
+    cy += nearest % 3 - 1;
+    cells.block(cx, cy, centres);
+  }
+  // Voronoi distance from centre 4: the largest ratio over its neighbours (1 on a shared edge).
+  double distance = -1.0e100;
+  for (int k = 0; k < 9; ++k) {
+    if (k == 4) continue;
+    const double px = centres[k][0] - centres[4][0], py = centres[k][1] - centres[4][1];
+    const double ratio = px == 0.0 && py == 0.0
+                             ? 1.0
+                             : 2.0 * ((ux - centres[4][0]) * px + (uy - centres[4][1]) * py) / (px * px + py * py);
+    distance = std::max(distance, ratio);
+  }
+  const double pull = std::pow(distance + 1e-100, power) * scale / (distance + 1e-100);
+  return {(ux - centres[4][0]) * pull + centres[4][0], (uy - centres[4][1]) * pull + centres[4][1], distance};
 }
 
 }  // namespace voxflame::core

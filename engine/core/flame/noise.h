@@ -8,4 +8,15 @@ namespace voxflame::core {
 // 3D simplex noise at (x, y, z), roughly in [−1, 1]; 0 at every lattice point.
 double simplexNoise3D(double x, double y, double z);
 
+// One step of slobo777's crackle (JWildfire's CrackleFunc, which dc_crackle_wf extends): the cells
+// form a square grid of side halfSize whose centres move by distort · simplex noise of the cell's
+// coordinates (noise slice `slice`); the point u is pulled towards the centre C of its Voronoi cell
+// to C + (u − C) L^power · scale / L, L the Voronoi distance of u from C (0 at C, 1 on the edge).
+struct CrackleStep {
+  double x, y;      // the pulled point
+  double distance;  // L
+};
+CrackleStep crackleStep(double ux, double uy, double halfSize, double distort, double slice, double power,
+                        double scale);
+
 }  // namespace voxflame::core

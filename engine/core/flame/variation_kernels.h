@@ -220,6 +220,8 @@ void addParplotVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireMeshVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's text_wf, points of a line of text drawn by FreeType (variations_text.cpp).
 void addTextVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire's glsl_apollonian, dc_crackle_wf and fract_mandelbrot_wf (variations_jwildfire_glsl.cpp).
+void addJwildfireGlslVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

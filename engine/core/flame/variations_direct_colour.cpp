@@ -193,7 +193,9 @@ double perlinNoise(double x, double y, double z, double amps, double freqs, int 
 // dc_perlin: a random point of a square, disc or blur (shape) in the unit square about the origin,
 // mapped (flat, spherical, ...) into noise space; points whose noise (with the edge effect) falls
 // outside the notch select_centre ± select_range are drawn again, up to select_bailout times; the
-// colour is centre + range · noise, mod 1.
+// colour is centre + range · noise + color_seed, mod 1. color_seed is pyr3's (a web renderer whose
+// dc_perlin colours by a hue from the noise, turned round the hue circle by color_seed): here it
+// turns the index round the palette the same way; its default 0 is Fractorium's and JWildfire's.
 void dcPerlin(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const double shape = fractoriumInteger(P[0], 0.0, 2.0), map = fractoriumInteger(P[1], 0.0, 5.0);
@@ -202,6 +204,8 @@ void dcPerlin(const VariationInput& in, double* __restrict ox, double* __restric
   const int octaves = static_cast<int>(fractoriumInteger(P[8], 1.0, 5.0));
   const double amps = P[9], freqs = P[10], z0 = P[11];
   const int bailout = static_cast<int>(fractoriumInteger(P[12], 2.0, 1000.0));
+  // A non-finite seed would make every colour NaN: it turns nothing then.
+  const double seed = std::isfinite(P[13]) ? P[13] : 0.0;
   double bottom = selectCentre - selectRange, top = selectCentre + selectRange;
   bottom = bottom > 0.75 ? 0.75 : (bottom < -2.0 ? -3.0 : bottom);
   top = top < -0.75 ? -0.75 : (top > 3.0 ? 3.0 : top);
@@ -244,7 +248,7 @@ void dcPerlin(const VariationInput& in, double* __restrict ox, double* __restric
     outX[i] += w * vx;
     outY[i] += w * vy;
     outZ[i] += w * z[i];
-    const double c = centre + range * p;
+    const double c = centre + range * p + seed;
     colour[i] = c - std::floor(c);
   }
 }
@@ -449,7 +453,8 @@ void variation_kernels::addDirectColourVariations(std::vector<VariationInfo>& ca
       "a random (vx, vy) in a square, disc or blur (shape 0–2) of size 1 + edge, mapped into noise space (map 0–5: "
       "flat, spherical, half/quarter sphere, bubbles) times scale, with octaves of simplex noise N (amps, freqs); "
       "redrawn while N with its edge effect is outside select_centre ± select_range (at most select_bailout "
-      "times); w (vx, vy), z; colour centre + range N mod 1 (Fractorium's, with voxflame's own noise)",
+      "times); w (vx, vy), z; colour centre + range N + color_seed mod 1 (Fractorium's, with voxflame's own noise; "
+      "color_seed is pyr3's turn of the colour cycle)",
       k2D, kRandom, &dcPerlin,
       {count("shape", 0.0, 0.0, 2.0),
        count("map", 0.0, 0.0, 5.0),
@@ -463,7 +468,8 @@ void variation_kernels::addDirectColourVariations(std::vector<VariationInfo>& ca
        {"amps", 2.0, 0.0, 4.0},
        {"freqs", 2.0, 0.0, 4.0},
        {"z", 0.0, -2.0, 2.0},
-       count("select_bailout", 10.0, 2.0, 1000.0)});
+       count("select_bailout", 10.0, 2.0, 1000.0),
+       {"color_seed", 0.0, 0.0, 1.0}});
   direct();
   add("dc_triangle",
       "the point in barycentric coordinates (u, v) of the triangle (e, f) + u (a, b) − v (c, d) of the transform's "

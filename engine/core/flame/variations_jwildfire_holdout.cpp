@@ -627,7 +627,7 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
       "adds the orbit's next point each call; a variation here keeps nothing between calls, so it draws one of the "
       "orbit's first 2²⁰ points. random (JWildfire's seed for a, b, c and the start) is overridden by them in files",
       k2D, kRandom, &hopalong,
-      {count("random", 1.0, 0.0, 10000000.0),
+      {count("random", 1.0, 0.0, 1000000.0),
        {"a", 0.75, -1.0, 1.0},
        {"b", 0.5, -1.0, 1.0},
        {"c", 0.25, -1.0, 1.0},

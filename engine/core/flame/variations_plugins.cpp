@@ -17,29 +17,6 @@ using namespace variation_kernels;
 
 // ---- JWildfire / Apophysis / Fractorium plugins (issue 25: what real flame files use) -------------
 
-// slobo777's crackle (Apophysis plugin, JWildfire's CrackleFunc): a Voronoi cell pattern. Each
-// point is a fresh random one on a blurred unit disc, pulled towards the centre of its cell by
-// L^power · scale / L, L the point's Voronoi distance (0 at the centre, 1 at the edge). The cells
-// form a square grid of side cellsize/2 whose centres move by distort · simplex noise of the cell's
-// coordinates (slice z of the noise), as in the plugin; the plugin caches the centres near the
-// origin, which changes nothing but speed, so they are worked out here each time.
-struct CrackleCells {
-  double halfSize, distort, slice;
-  void centre(double cx, double cy, double* out) const {
-    const double nx = simplexNoise3D(cx * 2.5, cy * 2.5, slice * 2.5);
-    // Cross-over of x and y as in the plugin, so the two noises do not correlate.
-    const double ny = simplexNoise3D(cy * 2.5 + 30.2, cx * 2.5 - 12.1, slice * 2.5 + 19.8);
-    out[0] = (cx + distort * nx) * halfSize;
-    out[1] = (cy + distort * ny) * halfSize;
-  }
-  // The 3×3 block of centres around cell (cx, cy), column by column (x outer, y inner).
-  void block(double cx, double cy, double (*centres)[2]) const {
-    int k = 0;
-    for (int di = -1; di <= 1; ++di)
-      for (int dj = -1; dj <= 1; ++dj) centre(cx + di, cy + dj, centres[k++]);
-  }
-};
-
 // Java's (int) floor(v), which saturates, as a double.
 inline double javaFloorToInt(double v) {
   const double f = std::floor(v);
@@ -47,46 +24,24 @@ inline double javaFloorToInt(double v) {
   return std::clamp(f, -2147483648.0, 2147483647.0);
 }
 
+// slobo777's crackle (Apophysis plugin, JWildfire's CrackleFunc): a Voronoi cell pattern. Each
+// point is a fresh random one on a blurred unit disc, pulled towards the centre of its cell
+// (crackleStep, noise.h). The plugin caches the centres near the origin, which changes nothing but
+// speed, so they are worked out here each time.
 VOXFLAME_VARIATION_TARGETS void crackle(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                         double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double cellsize = P[0], power = P[1], scale = P[3];
-  const CrackleCells cells{cellsize / 2.0, P[2], P[4]};
+  const double cellsize = P[0], power = P[1], distort = P[2], scale = P[3], slice = P[4];
   for (std::size_t i = 0; i < n; ++i) {
     outZ[i] += w * z[i];
     if (cellsize == 0.0) continue;  // the plugin's guard: no cells, nothing drawn
     const double a = laneUniform(rnd[i]), b = laneUniform(rnd[i]), c = laneUniform(rnd[i]);
     const double blurred = (a + b) / 2.0 + (c - 0.5) / 4.0;
     const double theta = kTwoPi * laneUniform(rnd[i]);
-    const double ux = blurred * std::sin(theta), uy = blurred * std::cos(theta);
-    double cx = javaFloorToInt(ux / cells.halfSize), cy = javaFloorToInt(uy / cells.halfSize);
-    double centres[9][2];
-    cells.block(cx, cy, centres);
-    // Re-centre the block on the nearest centre, so that its cell is surrounded on all sides.
-    int nearest = 0;
-    double nearestD2 = 1.0e100;
-    for (int k = 0; k < 9; ++k) {
-      const double dx = centres[k][0] - ux, dy = centres[k][1] - uy, d2 = dx * dx + dy * dy;
-      if (d2 < nearestD2) nearestD2 = d2, nearest = k;
-    }
-    if (nearest != 4) {
-      cx += nearest / 3 - 1;
-      cy += nearest % 3 - 1;
-      cells.block(cx, cy, centres);
-    }
-    // Voronoi distance from centre 4: the largest ratio over its neighbours (1 on a shared edge).
-    double distance = -1.0e100;
-    for (int k = 0; k < 9; ++k) {
-      if (k == 4) continue;
-      const double px = centres[k][0] - centres[4][0], py = centres[k][1] - centres[4][1];
-      const double ratio = px == 0.0 && py == 0.0
-                               ? 1.0
-                               : 2.0 * ((ux - centres[4][0]) * px + (uy - centres[4][1]) * py) / (px * px + py * py);
-      distance = std::max(distance, ratio);
-    }
-    const double pull = std::pow(distance + 1e-100, power) * scale / (distance + 1e-100);
-    outX[i] += w * ((ux - centres[4][0]) * pull + centres[4][0]);
-    outY[i] += w * ((uy - centres[4][1]) * pull + centres[4][1]);
+    const CrackleStep step =
+        crackleStep(blurred * std::sin(theta), blurred * std::cos(theta), cellsize / 2.0, distort, slice, power, scale);
+    outX[i] += w * step.x;
+    outY[i] += w * step.y;
   }
 }
 

@@ -843,13 +843,15 @@ class FlameReader {
         zeroTerms.emplace(name, std::move(term));
         continue;
       }
-      // inversion's direct colour, and dc_quadtree's and dc_ducks' RGB colours (the point's colour set
-      // by the variation, JWildfire's way), are not applied either.
+      // inversion's direct colour, and dc_quadtree's, dc_ducks' and glsl_apollonian's RGB colours (the
+      // point's colour set by the variation, JWildfire's way), are not applied either.
       if ((info->name == "inversion" && std::trunc(term.params.at(21)) >= 1.0 &&
            std::trunc(term.params.at(21)) <= 4.0) ||
           // dc_quadtree's and dc_ducks' Gradient 0 and 1 (an RGB colour; 2 is a grey level as the index).
           (info->name == "dc_quadtree" && !(term.params.at(6) >= 2.0)) ||
-          (info->name == "dc_ducks" && !(term.params.at(4) >= 2.0))) {
+          (info->name == "dc_ducks" && !(term.params.at(4) >= 2.0)) ||
+          // glsl_apollonian's Gradient 0 (an RGB colour; 1 is r·g as the index).
+          (info->name == "glsl_apollonian" && !(term.params.at(3) >= 1.0))) {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
       }
