@@ -803,6 +803,15 @@ class FlameReader {
         lose("colour of " + withoutCopyMark(name));
         warn(context + " has " + name + ", which JWildfire colours by the SVG's colours; voxflame does not");
       }
+      // Only pyr3 writes dc_perlin's color_seed, and pyr3's dc_perlin is a variation of its own: it
+      // leaves the point where it is and paints it an RGB colour from noise there, where voxflame's
+      // (Fractorium's) moves the point into a noisy square and sets the colour index.
+      if (info->name == "dc_perlin" && term.weight != 0.0 && byLowerName.contains(lowered(name + "_color_seed"))) {
+        lose("pyr3's " + withoutCopyMark(name));
+        warn(context + " has " + name +
+             " with a color_seed, which only pyr3 writes: pyr3's dc_perlin leaves the point where it is and paints "
+             "it an RGB colour from noise, which voxflame's (Fractorium's) does not; it was read as Fractorium's");
+      }
       // text_wf's font: one that is not installed here is drawn in the family fontconfig offers
       // instead (Java2D falls back the same way), which the importer names; the text itself is kept.
       if (info->name == "text_wf" && term.weight != 0.0) {
