@@ -121,6 +121,22 @@ TEST(FlatDof, EveryShapeSpreadsScalesAndTurns) {
     }
     EXPECT_GT(sum / static_cast<double>(points.size()), 0.05);
     EXPECT_LT(largest(points), 8.0);
+    // The shapes' own sizes for ρ = 1: sineblur's and starblur's unit discs (the star's points
+    // reach 1), heart's xheart of a point in [−2, 2]² (below 2), flower's 2 (Ψ − holes) cos(·)
+    // (below 2 · 1.4), taurus' ¼ (|R| + 1) with R = inv r + (1 − inv) r cos(n x) (below ¼ · 7).
+    if (shape == core::FlatDofShape::SineBlur || shape == core::FlatDofShape::StarBlur) {
+      EXPECT_LE(largest(points), 1.0 + 1e-9);
+      EXPECT_GT(largest(points), 0.8);
+    }
+    if (shape == core::FlatDofShape::Heart) {
+      EXPECT_LT(largest(points), 2.0);
+    }
+    if (shape == core::FlatDofShape::Flower) {
+      EXPECT_LT(largest(points), 2.8);
+    }
+    if (shape == core::FlatDofShape::Taurus) {
+      EXPECT_LE(largest(points), 1.75 + 1e-9);
+    }
     // Twice the scale: twice the offset, for the same draws.
     core::FlatViewSettings twice = flat;
     twice.cameraDofScale = 2.0;
