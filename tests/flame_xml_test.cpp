@@ -940,19 +940,20 @@ namespace {
 
 // What a flame turns on at its own level that voxflame does not keep is named, never passed over.
 TEST(FlameXml, FlameLevelFeaturesVoxflameDoesNotKeepAreNamed) {
-  // JWildfire's 3D camera is kept (its own model) but for its depth of field about a focus point,
-  // blur shapes other than the bubble and depth dimming; its solid rendering but for the depth of
-  // field JWildfire draws after shading.
+  // JWildfire's 3D camera is kept (its own model) but for the depth of field blur shapes that need
+  // more than numbers (snowflake, brush stroke, sub-flame) and depth dimming; its solid rendering
+  // but for the depth of field JWildfire draws after shading.
   const std::string attributes =
       "version=\"JWildfire V7.50\" post_symmetry_type=\"POINT\" post_symmetry_order=\"3\" cam_pitch=\"0.5\" "
-      "cam_yaw=\"0\" cam_dof=\"0.2\" new_dof=\"1\" cam_dof_shape=\"HEART\" cam_zdimish=\"0.5\" "
+      "cam_yaw=\"0\" cam_dof=\"0.2\" new_dof=\"1\" cam_dof_shape=\"SNOWFLAKE\" cam_zdimish=\"0.5\" "
       "sld_render_enabled=\"true\" contrastCurve_enabled=\"true\"";
   const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, "", attributes), "p.flame").flame;
   for (const char* lost :
        {"JWildfire solid rendering's depth of field", "3D camera", "JWildfire flame motion curve contrastCurve"})
     EXPECT_NE(std::find(flame.leftOut.begin(), flame.leftOut.end(), lost), flame.leftOut.end()) << lost;
   EXPECT_EQ(flame.genome.postSymmetry.kind, PostSymmetryKind::Point);
-  for (const char* part : {"new_dof", "HEART", "cam_zdimish"}) EXPECT_TRUE(hasWarningContaining(flame, part)) << part;
+  for (const char* part : {"SNOWFLAKE", "cam_zdimish"}) EXPECT_TRUE(hasWarningContaining(flame, part)) << part;
+  EXPECT_FALSE(hasWarningContaining(flame, "new_dof"));
   EXPECT_TRUE(flame.flat.hasCamera());
   EXPECT_EQ(flame.flat.cameraModel, FlatCameraModel::Jwildfire);
   EXPECT_NEAR(flame.flat.cameraPitchDeg, 0.5 * 180.0 / std::numbers::pi, 1e-9);

@@ -149,6 +149,26 @@ inline constexpr std::string_view kPaletteModeNames[] = {"step", "linear"};
 enum class FlatCameraModel { Fractorium, Jwildfire };
 inline constexpr std::string_view kFlatCameraModelNames[] = {"fractorium", "jwildfire"};
 
+// The shape JWildfire's depth of field spreads an out-of-focus point into (its cam_dof_shape, the
+// DOFBlurShape classes; FlatCamera in flame/flat_render.h draws each): a disc (bubble), a rectangle,
+// and shapes drawn by variations of the catalogue. The names are JWildfire's, in lower case.
+enum class FlatDofShape {
+  Bubble,
+  Rect,
+  Cloverleaf,
+  Heart,
+  Flower,
+  NBlur,
+  PerlinNoise,
+  SineBlur,
+  StarBlur,
+  Taurus,
+  CannabisCurve
+};
+inline constexpr std::string_view kFlatDofShapeNames[] = {"bubble",   "rect",   "cloverleaf",   "heart",
+                                                          "flower",   "nblur",  "perlin_noise", "sineblur",
+                                                          "starblur", "taurus", "cannabiscurve"};
+
 // JWildfire's solid rendering (its SolidRenderSettings): instead of a glowing density, the flat
 // view keeps per pixel the nearest point (its depth, colour, material and flame coordinates),
 // estimates surface normals from neighbouring pixels' points, and shades each with distant lights
@@ -220,7 +240,20 @@ struct FlatViewSettings {
   double cameraDof = 0.0;          // cam_dof
   double cameraDofScale = 1.0;     // JWildfire's cam_dof_scale: the blur's radius is scaled by it
   double cameraDofFade = 1.0;      // JWildfire's cam_dof_fade (see FlatCamera)
-  FlatSolidSettings solid;         // JWildfire's solid rendering; off: the glowing flame
+  // JWildfire's "new" depth of field (new_dof): points blur with their distance from a focus point
+  // instead of with their depth in front of camera_z; those within `area` of it stay sharp, with a
+  // smooth fade at its rim (FlatCamera). The distance is (|q − focus|²)^(1/exponent).
+  bool cameraDofNew = false;
+  glm::dvec3 cameraDofFocus{0.0};  // cam_xfocus, cam_yfocus, cam_zfocus: in the turned, moved space
+  double cameraDofArea = 0.5;      // cam_dof_area
+  double cameraDofExponent = 2.0;  // cam_dof_exponent
+  // The blur's shape (cam_dof_shape), its turn in degrees (cam_dof_rotate) and its parameters
+  // (cam_dof_param1–6, their meaning per shape: FlatCamera).
+  FlatDofShape cameraDofShape = FlatDofShape::Bubble;
+  double cameraDofRotateDeg = 0.0;
+  double cameraDofParam1 = 0.0, cameraDofParam2 = 0.0, cameraDofParam3 = 0.0;
+  double cameraDofParam4 = 0.0, cameraDofParam5 = 0.0, cameraDofParam6 = 0.0;
+  FlatSolidSettings solid;  // JWildfire's solid rendering; off: the glowing flame
   bool hasCamera() const {
     if (cameraModel == FlatCameraModel::Jwildfire)  // JWildfire's is3dProjectionRequired: not cam_zpos alone
       return cameraPitchDeg != 0.0 || cameraYawDeg != 0.0 || cameraBankDeg != 0.0 || cameraPerspective != 0.0 ||

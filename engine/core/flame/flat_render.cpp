@@ -2,12 +2,17 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
+#include <initializer_list>
+#include <string_view>
+#include <utility>
 #include <cmath>
 #include <limits>
 #include <numbers>
 #include <vector>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "core/chaos_game.h"
 #include "core/color.h"
@@ -142,6 +147,41 @@ Matrix3 turnAbout(int axis, double degrees) {
 
 }  // namespace
 
+namespace {
+
+// A variation of the catalogue that a depth of field shape draws with, and its parameters: the
+// catalogue's defaults (JWildfire's, for those the shape leaves alone), then the shape's by name.
+void useShapeVariation(FlatCamera& camera, std::string_view name,
+                       std::initializer_list<std::pair<std::string_view, double>> params) {
+  const VariationInfo& info = variationOrThrow(name);
+  camera.shapeVariation = &info;
+  camera.shapeParams = info.defaultParams();
+  for (const auto& [param, value] : params) {
+    const int index = info.paramIndex(param);
+    if (index >= 0) camera.shapeParams[static_cast<std::size_t>(index)] = value;
+  }
+}
+
+// Ken Perlin's smootherstep (JWildfire's GfxMathLib.smootherstep from 0 to 1): t clamped into
+// [0, 1], then t³(6t² − 15t + 10).
+double smootherstep(double t) {
+  t = std::clamp(t, 0.0, 1.0);
+  return t * t * t * (t * (t * 6.0 - 15.0) + 10.0);
+}
+
+// The generator of a shape's further draws, seeded by the point's two draws (never 0).
+std::uint32_t shapeSeed(double angle01, double blur01) {
+  std::uint64_t h = std::bit_cast<std::uint64_t>(angle01) * 0x9e3779b97f4a7c15ULL ^
+                    std::bit_cast<std::uint64_t>(blur01) * 0xc2b2ae3d27d4eb4fULL;
+  h ^= h >> 31;
+  h *= 0xbf58476d1ce4e5b9ULL;
+  h ^= h >> 29;
+  const auto seed = static_cast<std::uint32_t>(h >> 32) ^ static_cast<std::uint32_t>(h);
+  return seed == 0 ? 0x6d2b79f5U : seed;
+}
+
+}  // namespace
+
 FlatCamera::FlatCamera(const FlatViewSettings& flat)
     : jwildfire(flat.cameraModel == FlatCameraModel::Jwildfire),
       z0(flat.cameraZ),
@@ -149,12 +189,63 @@ FlatCamera::FlatCamera(const FlatViewSettings& flat)
       dofScale(0.1 * flat.cameraDof),
       dofFade(flat.cameraDofFade) {
   const Matrix3 yaw = turnAbout(2, -flat.cameraYawDeg), pitch = turnAbout(0, flat.cameraPitchDeg);
-  if (jwildfire) {
-    turn = turnAbout(2, flat.rotateDeg) * pitch * turnAbout(1, flat.cameraBankDeg) * yaw;
-    position = flat.cameraPosition;
-    dofScale *= flat.cameraDofScale;
-  } else {
+  if (!jwildfire) {
     turn = pitch * yaw;
+    return;
+  }
+  turn = turnAbout(2, flat.rotateDeg) * pitch * turnAbout(1, flat.cameraBankDeg) * yaw;
+  position = flat.cameraPosition;
+  dofScale *= flat.cameraDofScale;
+  newDof = flat.cameraDofNew;
+  focus = flat.cameraDofFocus;
+  area = flat.cameraDofArea;
+  fadeBand = area / 2.25;
+  inverseExponent = 1.0 / flat.cameraDofExponent;
+  shape = flat.cameraDofShape;
+  // JWildfire turns the offset only for a rotate above its EPSILON.
+  const double rotate = flat.cameraDofRotateDeg * std::numbers::pi / 180.0;
+  shapeTurned = std::abs(flat.cameraDofRotateDeg) > 1e-8;
+  shapeCos = std::cos(rotate);
+  shapeSin = std::sin(rotate);
+  const double p1 = flat.cameraDofParam1, p2 = flat.cameraDofParam2, p3 = flat.cameraDofParam3;
+  const double p4 = flat.cameraDofParam4, p5 = flat.cameraDofParam5;
+  switch (shape) {
+    case FlatDofShape::Bubble:
+      break;
+    case FlatDofShape::Rect:
+      rectWidth = flat.cameraDofParam1;
+      useShapeVariation(*this, "square", {});
+      break;
+    case FlatDofShape::Cloverleaf:
+      useShapeVariation(*this, "cloverleaf_wf", {{"filled", 1.0}});
+      break;
+    case FlatDofShape::CannabisCurve:
+      useShapeVariation(*this, "cannabiscurve_wf", {{"filled", 1.0}});
+      break;
+    case FlatDofShape::Heart:  // JWildfire's xheart_blur_wf: xheart of a random point
+      useShapeVariation(*this, "xheart", {{"angle", p1}, {"ratio", p2}});
+      break;
+    case FlatDofShape::Flower:
+      useShapeVariation(*this, "flower", {{"holes", p1}, {"petals", p2}});
+      break;
+    case FlatDofShape::NBlur:
+      useShapeVariation(
+          *this, "nBlur",
+          {{"numEdges", p1}, {"numStripes", p2}, {"ratioStripes", p3}, {"ratioHole", p4}, {"circumCircle", p5}});
+      break;
+    case FlatDofShape::PerlinNoise:
+      useShapeVariation(*this, "dc_perlin",
+                        {{"shape", p1}, {"amps", p2}, {"freqs", p3}, {"centre", p4}, {"range", p5}});
+      break;
+    case FlatDofShape::SineBlur:
+      useShapeVariation(*this, "sineblur", {{"power", p1}});
+      break;
+    case FlatDofShape::StarBlur:
+      useShapeVariation(*this, "starblur", {{"power", p1}, {"range", p2}});
+      break;
+    case FlatDofShape::Taurus:
+      useShapeVariation(*this, "taurus", {{"r", p1}, {"n", p2}, {"inv", p3}, {"sor", p4}});
+      break;
   }
 }
 
@@ -164,12 +255,92 @@ double FlatCamera::depth(double x, double y, double z) const {
 }
 
 glm::dvec2 FlatCamera::project(double x, double y, double z, double angle01, double blur01) const {
+  return projectTurned(x, y, z, true, angle01, blur01);
+}
+
+glm::dvec2 FlatCamera::projectSharp(double x, double y, double z) const {
+  return projectTurned(x, y, z, false, 0.0, 0.0);
+}
+
+glm::dvec2 FlatCamera::dofOffset(double px, double py, double distance, double angle01, double blur01) const {
+  const double radius = dofScale * distance;
+  if (shape == FlatDofShape::Bubble) {
+    const double fade = dofFade <= 1e-8         ? 1.0
+                        : dofFade >= 1.0 - 1e-8 ? blur01
+                        : blur01 <= dofFade     ? blur01 / dofFade
+                                                : 1.0;
+    // In this order, so the legacy bubble draws exactly as it did before the other shapes came.
+    const double angle = 2.0 * std::numbers::pi * angle01, r = fade * dofScale * distance;
+    return {r * std::cos(angle), r * std::sin(angle)};
+  }
+  std::uint32_t random = shapeSeed(angle01, blur01);
+  const auto draw = [&] { return laneUniform(random); };
+  // JWildfire's AbstractDOFBlurShape.doFade.
+  const auto fadeDraw = [&] {
+    if (dofFade <= 1e-8) return 1.0;
+    if (dofFade >= 1.0 - 1e-8) return draw();
+    return draw() <= dofFade ? draw() : 1.0;
+  };
+  double sx = px, sy = py, weight = 0.0;
+  switch (shape) {
+    case FlatDofShape::Cloverleaf:
+    case FlatDofShape::CannabisCurve: {
+      const double fade = fadeDraw();
+      weight = std::abs(radius * (shape == FlatDofShape::Cloverleaf ? fadeDraw() : fade));
+      sx = (1.0 - 2.0 * draw()) * fade;
+      sy = (1.0 - 2.0 * draw()) * fade;
+      break;
+    }
+    case FlatDofShape::Heart:
+      weight = std::abs(radius * fadeDraw());
+      sx = 2.0 - 4.0 * draw();
+      sy = 2.0 - 4.0 * draw();
+      break;
+    case FlatDofShape::Flower:
+      weight = 2.0 * std::abs(radius * fadeDraw());
+      sx = 1.0 - 2.0 * draw();
+      sy = 1.0 - 2.0 * draw();
+      break;
+    case FlatDofShape::Taurus: {
+      const double fade = fadeDraw();
+      weight = 0.25 * std::abs(radius * fade);
+      sx = (2.0 - 4.0 * draw()) * std::numbers::pi * fade;
+      sy = (2.0 - 4.0 * draw()) * std::numbers::pi * fade;
+      break;
+    }
+    default:  // rect, nblur, perlin_noise, sineblur, starblur: the variation of the point itself
+      weight = radius * fadeDraw();
+      break;
+  }
+  double sz = 0.0, ox = 0.0, oy = 0.0, oz = 0.0, colour = 0.0;
+  static constexpr double kIdentity[12] = {1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0};
+  VariationInput in;
+  in.x = in.tx = &sx;
+  in.y = in.ty = &sy;
+  in.z = in.tz = &sz;
+  in.random = &random;
+  in.count = 1;
+  in.weight = weight;
+  in.params = shapeParams.data();
+  in.affine = kIdentity;
+  in.colour = &colour;  // dc_perlin colours the point; JWildfire plots the colour it had before
+  shapeVariation->apply(in, &ox, &oy, &oz);
+  if (shape == FlatDofShape::Rect) ox *= rectWidth;
+  if (shapeTurned && shape != FlatDofShape::SineBlur) {
+    const double rx = ox * shapeCos - oy * shapeSin, ry = ox * shapeSin + oy * shapeCos;
+    ox = rx;
+    oy = ry;
+  }
+  return {ox, oy};
+}
+
+glm::dvec2 FlatCamera::projectTurned(double x, double y, double z, bool blurred, double angle01, double blur01) const {
   if (!jwildfire) z -= z0;
   const auto row = [&](int i) { return turn[i][0] * x + turn[i][1] * y + turn[i][2] * z; };
   double px = row(0) + position.x, py = row(1) + position.y;
   const double depth = row(2) + position.z;
   if (!jwildfire) {
-    if (dofScale != 0.0) {
+    if (blurred && dofScale != 0.0) {
       const double angle = 2.0 * std::numbers::pi * angle01, r = blur01 * dofScale * depth;
       px += r * std::cos(angle);
       py += r * std::sin(angle);
@@ -180,15 +351,23 @@ glm::dvec2 FlatCamera::project(double x, double y, double z, double angle01, dou
   }
   const double zr = 1.0 - perspective * depth + position.z;
   if (!(zr >= 1e-8)) return glm::dvec2(std::numeric_limits<double>::quiet_NaN());  // behind the eye
-  const double inFront = z0 - depth;
-  if (dofScale != 0.0 && inFront > 0.0) {
-    const double fade = dofFade <= 1e-8         ? 1.0
-                        : dofFade >= 1.0 - 1e-8 ? blur01
-                        : blur01 <= dofFade     ? blur01 / dofFade
-                                                : 1.0;
-    const double angle = 2.0 * std::numbers::pi * angle01, r = fade * dofScale * inFront;
-    px += r * std::cos(angle);
-    py += r * std::sin(angle);
+  if (blurred && dofScale != 0.0) {
+    double distance = 0.0;  // JWildfire's dofDist; 0: sharp
+    if (!newDof) {
+      distance = std::max(z0 - depth, 0.0);
+    } else {
+      const glm::dvec3 d = glm::dvec3(px, py, depth) - focus;
+      const double dist = std::pow(glm::dot(d, d), inverseExponent);
+      if (dist > area)
+        distance = dist;
+      else if (dist > area - fadeBand)
+        distance = smootherstep((dist - (area - fadeBand)) / fadeBand) * dist;
+    }
+    if (distance > 0.0) {
+      const glm::dvec2 offset = dofOffset(px, py, distance, angle01, blur01);
+      px += offset.x;
+      py += offset.y;
+    }
   }
   return {px / zr, py / zr};
 }
@@ -338,7 +517,7 @@ FlatRenderResult renderFlatSolid(const Scene& scene, const FlatRenderOptions& op
             if (hasCamera) {
               // JWildfire's solid rendering moves points by the camera only; its depth of field
               // is a blur after shading, which the flat view leaves out.
-              const glm::dvec2 p = camera.project(q.x, q.y, q.z, 0.0, 0.0);
+              const glm::dvec2 p = camera.projectSharp(q.x, q.y, q.z);
               px = p.x;
               py = p.y;
               depth = camera.depth(q.x, q.y, q.z);

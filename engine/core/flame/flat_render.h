@@ -16,11 +16,13 @@
 #include <atomic>
 #include <cstdint>
 #include <optional>
+#include <vector>
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/image_io.h"
+#include "core/flame/variations.h"
 #include "core/scene.h"
 
 namespace voxflame::core {
@@ -73,20 +75,53 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
 //    towards angle01 · 2π; then divided by 1 − perspective · q_z.
 //  * JWildfire's (FlameRendererView's camera matrix and project): q = R_z(rotate) R_x(pitch)
 //    R_y(bank) R_z(−yaw) p + c, c the camera position; zr = 1 − perspective · q_z + c_z, a point
-//    with zr below 10⁻⁸ is not drawn (NaN). With depth of field a point in front of the depth in
-//    focus z₀ (z₀ − q_z > 0) moves by f · 0.1 dof · scale · (z₀ − q_z) towards angle01 · 2π before
-//    the division, f being JWildfire's fade of its bubble blur: blur01 for fade ≥ 1, 1 for fade 0,
-//    and between them blur01 / fade when blur01 ≤ fade, else 1. The picture's `rotate` is part of
-//    this camera (about the origin), so the flat view does not turn the picture again.
+//    with zr below 10⁻⁸ is not drawn (NaN). With depth of field the point moves by a blur of
+//    radius ρ = 0.1 dof · scale · D before the division, where D is
+//      - legacy: the depth in front of the depth in focus, z₀ − q_z, for points with D > 0;
+//      - new_dof: d = (|q − focus|²)^(1/exponent): D = d beyond `area`, D = S(t) d between
+//        area − area/2.25 and area with t the place in that band and S the smootherstep
+//        t³(6t² − 15t + 10), none nearer (sharp).
+//    The blur is its shape's (JWildfire's DOFBlurShape) with f = JWildfire's fade draw: Ψ for
+//    fade ≥ 1, 1 for fade 0, and between them a fresh Ψ for the share `fade` of the points, else 1:
+//      bubble: f ρ towards a random angle (f drawn from blur01, the angle from angle01);
+//      rect: f ρ (Ψ₁ − ½, Ψ₂ − ½), x times width (param1);
+//      cloverleaf, cannabiscurve: |f₂ ρ| V(s), V the catalogue's filled (filled = 1) curve at
+//        s = f₁ (1 − 2Ψ₁, 1 − 2Ψ₂);
+//      heart: |f ρ| xheart(2 − 4Ψ₁, 2 − 4Ψ₂) with angle, ratio (param1, 2);
+//      flower: 2 |f ρ| flower(1 − 2Ψ₁, 1 − 2Ψ₂) with holes, petals (param1, 2);
+//      nblur, perlin_noise, sineblur, starblur: f ρ V(q) of the catalogue's nBlur, dc_perlin,
+//        sineblur, starblur with their parameters (camera_dof_shape's help lists them);
+//      taurus: ¼ |f ρ| taurus(f (2π − 4πΨ₁), f (2π − 4πΨ₂)) with r, n, inv, sor;
+//    each offset but bubble's and sineblur's turned by the shape's rotate. The draws after angle01
+//    and blur01 come from a generator seeded by those two. The picture's `rotate` is part of this
+//    camera (about the origin), so the flat view does not turn the picture again.
 struct FlatCamera {
   explicit FlatCamera(const FlatViewSettings& flat);
   glm::dvec2 project(double x, double y, double z, double angle01, double blur01) const;
+  // The point without depth of field: JWildfire's solid rendering moves points by the camera only.
+  glm::dvec2 projectSharp(double x, double y, double z) const;
   // The turned point's depth (larger is nearer the eye), as JWildfire's z-buffer keeps it.
   double depth(double x, double y, double z) const;
+  // The blur's offset (before the perspective division) for a turned point (px, py) at blur
+  // distance D (JWildfire's dofDist), as above.
+  glm::dvec2 dofOffset(double px, double py, double distance, double angle01, double blur01) const;
   bool jwildfire = false;
   std::array<std::array<double, 3>, 3> turn{};  // rows: the turned point's x, y and depth
   glm::dvec3 position{0.0};                     // JWildfire's c
   double z0 = 0.0, perspective = 0.0, dofScale = 0.0, dofFade = 1.0;
+  // JWildfire's new_dof (FlatViewSettings::cameraDofNew).
+  bool newDof = false;
+  glm::dvec3 focus{0.0};
+  double area = 0.5, fadeBand = 0.5 / 2.25, inverseExponent = 0.5;
+  FlatDofShape shape = FlatDofShape::Bubble;
+  bool shapeTurned = false;
+  double shapeCos = 1.0, shapeSin = 0.0;
+  double rectWidth = 0.0;
+  const VariationInfo* shapeVariation = nullptr;  // the catalogue's variation the shape draws with
+  std::vector<double> shapeParams;                // its parameters, in the catalogue's order
+
+ private:
+  glm::dvec2 projectTurned(double x, double y, double z, bool blurred, double angle01, double blur01) const;
 };
 
 }  // namespace voxflame::core

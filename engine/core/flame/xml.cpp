@@ -1891,6 +1891,13 @@ bool writtenByJwildfire(const pugi::xml_node& flame) {
 // draw (readFlameCurves names the motion curves it leaves out).
 bool solidRenderingOn(const pugi::xml_node& flame);  // JWildfire's sld_render_enabled (below)
 
+// JWildfire's depth of field shapes that the flat view draws as bubbles: its snowflake grows a
+// crystal (snowflake_wf, not in the catalogue), its brush stroke paints an image and its sub-flame
+// renders a flame of its own.
+bool unkeptDofShape(std::string_view shape) {
+  return shape == "SNOWFLAKE" || shape == "BRUSH_STROKE" || shape == "SUB_FLAME";
+}
+
 void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader) {
   // Solid rendering is kept (readSolid) but for its depth of field, which JWildfire draws after
   // shading (a post blur with bokeh) and the flat view leaves sharp.
@@ -1901,8 +1908,8 @@ void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader)
       reader.warn("the solid rendering's depth of field (a blur with bokeh after shading) is not drawn; it is sharp");
     }
   }
-  // The flat view keeps the 3D camera (readFlat) but for these parts of JWildfire's: its depth of
-  // field about a focus point (new_dof) and blur shapes other than its bubble, and its depth dimming.
+  // The flat view keeps the 3D camera (readFlat) but for these parts of JWildfire's: three of its
+  // depth of field's blur shapes, and its depth dimming.
   std::string camera;
   if (writtenByJwildfire(flame)) {
     const auto set = [&](const char* key) {
@@ -1911,9 +1918,13 @@ void reportUnkeptFlameFeatures(const pugi::xml_node& flame, FlameReader& reader)
     };
     const auto add = [&](const std::string& part) { camera += (camera.empty() ? "" : ", ") + part; };
     if (set("cam_dof")) {
-      if (set("new_dof")) add("depth of field about a focus point (new_dof)");
       const std::string shape = flame.attribute("cam_dof_shape").as_string("BUBBLE");
-      if (shape != "BUBBLE") add("the depth of field's blur shape " + shape.substr(0, 40));
+      if (unkeptDofShape(shape))
+        add("the depth of field's blur shape " + shape + " (drawn as BUBBLE; it needs " +
+            (shape == "SNOWFLAKE"   ? "a grown snowflake"
+             : shape == "SUB_FLAME" ? "a flame"
+                                    : "a brush image") +
+            ")");
     }
     if (set("cam_zdimish")) add("depth dimming (cam_zdimish)");
   }
@@ -2374,6 +2385,34 @@ FlatViewSettings readFlat(const pugi::xml_node& flame, FlameReader& reader, bool
     if (double dof = 0.0; key("cam_dof", dof, -1e6, 1e6)) camera.cameraDof = std::abs(dof);
     key("cam_dof_scale", camera.cameraDofScale, 0.0, 1e6);
     key("cam_dof_fade", camera.cameraDofFade, 0.0, 1.0);
+    // JWildfire's depth of field about a focus point (its reader takes new_dof="1" alone as on).
+    camera.cameraDofNew = std::string_view(flame.attribute("new_dof").as_string()) == "1";
+    key("cam_xfocus", camera.cameraDofFocus.x, -1e6, 1e6);
+    key("cam_yfocus", camera.cameraDofFocus.y, -1e6, 1e6);
+    key("cam_zfocus", camera.cameraDofFocus.z, -1e6, 1e6);
+    key("cam_dof_area", camera.cameraDofArea, -1e6, 1e6);
+    key("cam_dof_exponent", camera.cameraDofExponent, 1e-3, 1e3);
+    // The blur's shape: JWildfire's names in capitals. Its reader takes an unknown name as BUBBLE;
+    // the shapes the flat view does not draw (reportUnkeptFlameFeatures names them) are drawn as
+    // bubbles too.
+    if (const pugi::xml_attribute shape = flame.attribute("cam_dof_shape")) {
+      std::string name = shape.value();
+      std::transform(name.begin(), name.end(), name.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      const auto known = std::find(std::begin(kFlatDofShapeNames), std::end(kFlatDofShapeNames), name);
+      if (known != std::end(kFlatDofShapeNames))
+        camera.cameraDofShape = static_cast<FlatDofShape>(known - std::begin(kFlatDofShapeNames));
+      else if (!unkeptDofShape(shape.value()))
+        reader.warn("cam_dof_shape \"" + std::string(shape.value()).substr(0, 40) +
+                    "\" is not one of JWildfire's; its depth of field is drawn as BUBBLE, as JWildfire does");
+    }
+    key("cam_dof_rotate", camera.cameraDofRotateDeg, -3600.0, 3600.0);
+    key("cam_dof_param1", camera.cameraDofParam1, -1e6, 1e6);
+    key("cam_dof_param2", camera.cameraDofParam2, -1e6, 1e6);
+    key("cam_dof_param3", camera.cameraDofParam3, -1e6, 1e6);
+    key("cam_dof_param4", camera.cameraDofParam4, -1e6, 1e6);
+    key("cam_dof_param5", camera.cameraDofParam5, -1e6, 1e6);
+    key("cam_dof_param6", camera.cameraDofParam6, -1e6, 1e6);
     // Without a 3D camera JWildfire draws the flame flat, turned about the centre as flam3 does:
     // nothing of the camera is kept then, unless a motion curve moves it.
     if (camera.hasCamera() || cameraAnimated) flat = camera;
