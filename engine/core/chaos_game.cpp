@@ -7,6 +7,9 @@
 #include <numbers>
 #include <utility>
 
+#include <glm/common.hpp>
+
+#include "color.h"
 #include "error.h"
 #include "scene.h"
 
@@ -170,6 +173,8 @@ VOXFLAME_CHAOS_TARGETS void emitPoints(const double* x, const double* y, const d
 
 void ChaosLanes::resize(std::size_t lanes) {
   for (auto* v : {&x, &y, &z, &w, &color, &tx, &ty, &tz, &ox, &oy, &oz, &sx, &sy, &sz, &gc, &gs}) v->assign(lanes, 0.0);
+  rgb.assign(lanes, 0u);
+  groupRgb.assign(lanes, 0u);
   field.assign(lanes, 1.0);
   fieldNoise.assign(lanes, 0.0);
   random.assign(lanes, 1u);
@@ -239,6 +244,7 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
       }
       c.hasNormalTerms = c.hasNormalTerms || stage == VariationStage::Normal;
       c.directColour = c.directColour || info.directColour;
+      c.paintsRgb = c.paintsRgb || info.paintsRgb;
     }
   return c;
 }
@@ -297,6 +303,25 @@ ChaosGame::ChaosGame(const PatternLayer& layer, const std::string& where) {
   for (const Compiled& x : xforms_) hidesPoints_ = hidesPoints_ || x.opacity < 1.0;
   hidesPoints_ = hidesPoints_ || (hasFinal_ && final_.opacity < 1.0);
   for (const Compiled& x : chainedFinals_) hidesPoints_ = hidesPoints_ || x.opacity < 1.0;
+  for (const Compiled& x : xforms_) paintsRgb_ = paintsRgb_ || x.paintsRgb;
+  paintsRgb_ = paintsRgb_ || (hasFinal_ && final_.paintsRgb);
+  for (const Compiled& x : chainedFinals_) paintsRgb_ = paintsRgb_ || x.paintsRgb;
+  if (paintsRgb_) {
+    // The palette as the file writes it (the import keeps it as linear stops), in bytes: what
+    // JWildfire's nearest-colour searches compare a painted colour with.
+    const std::vector<GradientStop> stops = layer.color.gradient.empty() && !layer.color.palette.empty()
+                                                ? paletteStops(layer.color.palette)
+                                                : layer.color.gradient;
+    if (!stops.empty()) {
+      const Gradient gradient(stops);
+      for (std::size_t i = 0; i < palette_.size(); ++i) {
+        const glm::vec3 c =
+            glm::clamp(linearToSrgb(gradient.at(static_cast<float>(i) / 255.0f)), 0.0f, 1.0f) * 255.0f + 0.5f;
+        palette_[i] = static_cast<std::uint32_t>(c.r) | static_cast<std::uint32_t>(c.g) << 8 |
+                      static_cast<std::uint32_t>(c.b) << 16;
+      }
+    }
+  }
 }
 
 void ChaosGame::seedLane(ChaosLanes& lanes, std::size_t i, SplitMix64& rng) const {
@@ -415,6 +440,12 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, const std::
   VariationInput in;
   in.random = lanes.groupRandom.data();
   in.colour = lanes.gc.data();  // read and set only by direct-colour terms (startDirectColour fills it)
+  if (xform.paintsRgb) {
+    // JWildfire clears a point's rgbColor flag as each transform starts: nothing painted yet.
+    in.rgb = lanes.groupRgb.data();
+    std::fill_n(in.rgb, count, 0u);
+    in.palette = palette_.data();
+  }
   in.count = count;
   in.affine = xform.affine.data();
   in.tx = tx;
@@ -485,6 +516,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, const std::
       one.tz = tz + j;
       one.random = in.random + j;
       one.colour = in.colour + j;
+      one.rgb = in.rgb ? in.rgb + j : nullptr;
       one.lanes = in.lanes ? in.lanes + j : nullptr;
       one.movableX = ordinary ? tx + j : nullptr;
       one.movableY = ordinary ? ty + j : nullptr;
@@ -586,6 +618,23 @@ void ChaosGame::finishDirectColour(const Compiled& xform, ChaosLanes& lanes, std
   }
 }
 
+void ChaosGame::keepPaintedRgb(const Compiled& xform, ChaosLanes& lanes, const std::uint32_t* group, std::size_t n,
+                               bool final) {
+  // A transform's true colour replaces the point's. Where it paints none, a transform leaves the
+  // point to its colour index (JWildfire gives a transform the colour type DIFFUSION unless the file
+  // says otherwise, whose colour step takes the palette's colour unless rgbColor is set), and a
+  // final transform keeps the colour the point came with (JWildfire's final transforms default to
+  // the colour type NONE, which has no colour step).
+  std::uint32_t* rgb = lanes.rgb.data();
+  const std::uint32_t* painted = lanes.groupRgb.data();
+  if (!xform.paintsRgb) {
+    if (!final)
+      for (std::size_t j = 0; j < n; ++j) rgb[group[j]] = 0u;
+    return;
+  }
+  for (std::size_t j = 0; j < n; ++j) rgb[group[j]] = painted[j] != 0u || !final ? painted[j] : rgb[group[j]];
+}
+
 void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
                           std::size_t count) const {
   // 1. Every lane draws its transform.
@@ -645,6 +694,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
       for (std::uint32_t j = 0; j < n; ++j) color[group[j]] = gc[j];
     }
     if (xf.fieldColor != 0.0) colourByField(xf, lanes, group, n, color);
+    if (paintsRgb_) keepPaintedRgb(xf, lanes, group, n, false);
   }
 
   // 4. What is drawn: the state, or the final transform of it (which never feeds back).
@@ -661,6 +711,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
   if (final_.hasField) fillField(final_, order, count, x, y, z, lanes);
   applyGroup(final_, lanes, order, count);
   if (final_.directColour) finishDirectColour(final_, lanes, count);
+  if (paintsRgb_) keepPaintedRgb(final_, lanes, order, count, true);
   const double keep = 1.0 - final_.colorSpeed, pull = final_.colorSpeed * final_.color;
   constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t i = 0; i < count; ++i) {
@@ -684,6 +735,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     if (chained.hasField) fillField(chained, order, count, outX, outY, outZ, lanes);
     applyGroup(chained, lanes, order, count);
     if (chained.directColour) finishDirectColour(chained, lanes, count);
+    if (paintsRgb_) keepPaintedRgb(chained, lanes, order, count, true);
     for (std::size_t i = 0; i < count; ++i) {
       outX[i] = std::isnan(outX[i]) ? kNaN : lanes.ox[i];
       outY[i] = lanes.oy[i];

@@ -39,6 +39,10 @@ struct ChaosLanes {
   // A direct-colour transform's group: the colour index its variations read and set, and what the
   // colour blend made of it before them (flame.h's directColor blends between the two).
   std::vector<double> gc, gs;
+  // Only for a game whose paintsRgb() is true: each lane's drawn point's true colour (what its
+  // transform, or a final transform after it, painted: VariationInput::rgb's packing; 0 where none
+  // painted it, and the colour index's palette entry stands), and a group's scratch of the same.
+  std::vector<std::uint32_t> rgb, groupRgb;
   std::vector<double> field;        // 1 + amount · noise: a weighting field's factor of the variation weights
   std::vector<double> fieldNoise;   // the weighting field's noise n itself (colour and parameters read it)
   std::vector<double> fieldParams;  // scratch: each lane's parameters of a term as the field changes them
@@ -70,6 +74,9 @@ class ChaosGame {
   // Whether lanes.visible can ever be 0 (a translucent transform, a quaternion slice); when not,
   // the caller may skip reading it.
   bool hidesPoints() const { return hidesPoints_; }
+  // Whether a variation may paint points a true colour (VariationInfo::paintsRgb): then step fills
+  // lanes.rgb, which whoever colours the drawn points reads before the colour index.
+  bool paintsRgb() const { return paintsRgb_; }
 
   // What another backend needs to run the same game (the GPU's generated kernel): the pick table
   // (rows of pickSize() entries, each a transform index: one row without xaos, 1 + transforms
@@ -115,6 +122,7 @@ class ChaosGame {
     double color = 0.0, colorSpeed = 0.5, opacity = 1.0;
     bool directColour = false;  // has a term that reads or sets the colour index (VariationInfo::directColour)
     double directColor = 1.0;
+    bool paintsRgb = false;  // has a term that may paint a true colour (VariationInfo::paintsRgb)
     // A weighting field (flame.h): `field` keeps the transform's field settings (no variations).
     bool hasField = false;
     bool fieldFromPosition = false;
@@ -145,8 +153,16 @@ class ChaosGame {
   void stepJulia(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
                  std::size_t count) const;
 
+  // A group after applyGroup, in a game with true colours: what its transform painted into the
+  // lanes' rgb (lane j of the group is lane group[j]); where it painted nothing, 0 (the colour
+  // index's colour) after an ordinary transform and the colour the point had after a final one.
+  static void keepPaintedRgb(const Compiled& xform, ChaosLanes& lanes, const std::uint32_t* group, std::size_t n,
+                             bool final);
+
   bool julia_ = false;
   bool hidesPoints_ = false;
+  bool paintsRgb_ = false;
+  std::array<std::uint32_t, 256> palette_{};  // the file's palette, VariationInput::palette
   std::vector<Compiled> xforms_;
   bool hasFinal_ = false;
   Compiled final_;

@@ -42,7 +42,8 @@ std::string xformUnsupported(const core::FlameXform& xform) {
     if (!info) return "variation '" + term.name + "'";
     if (!gpuHasVariation(info->name)) return "variation '" + term.name + "'";
     // None of the GPU's variations has these, but a future one might: say so rather than draw wrong.
-    if (info->directColour || info->readsSum || info->replaces != core::VariationInfo::Replaces::Nothing)
+    if (info->directColour || info->paintsRgb || info->readsSum ||
+        info->replaces != core::VariationInfo::Replaces::Nothing)
       return "variation '" + term.name + "'";
   }
   return {};

@@ -114,6 +114,15 @@ glm::vec3 flatPaletteColour(const std::array<glm::vec3, 256>& palette, double in
   return palette[entry] * (1.0f - fraction) + palette[entry + 1] * fraction;
 }
 
+glm::vec3 flatPointColour(const std::array<glm::vec3, 256>& palette, double index, PaletteMode mode,
+                          std::uint32_t rgb) {
+  if (!(rgb & kRgbPainted)) return flatPaletteColour(palette, index, mode);
+  // A painted colour's bytes are display values, as the palette's entries are (filePalette).
+  return glm::vec3(static_cast<float>(rgb & 255u), static_cast<float>(rgb >> 8 & 255u),
+                   static_cast<float>(rgb >> 16 & 255u)) /
+         255.0f;
+}
+
 float flatPixelLevel(float value, int bitDepth) {
   const float a = std::clamp(value * 256.0f, 0.0f, 255.0f);  // NaN: 0
   if (!(a > 0.0f)) return 0.0f;
@@ -403,6 +412,7 @@ FlatRenderResult renderFlatSolid(const Scene& scene, const FlatRenderOptions& op
   layer.flame.postSymmetry.kind = PostSymmetryKind::None;
   const ChaosGame game(layer, "the flame layer");
   const std::array<glm::vec3, 256> palette = filePalette(layer.color);
+  const bool paintsRgb = game.paintsRgb();
   const std::size_t genomeXforms = layer.flame.xforms.size();
 
   const double sizeScale = options.width || !options.height ? static_cast<double>(width) / flat.width
@@ -508,7 +518,8 @@ FlatRenderResult renderFlatSolid(const Scene& scene, const FlatRenderOptions& op
             fuse[i] = kFuse;
           }
           if (!visible) continue;
-          const glm::vec3 c = flatPaletteColour(palette, outColor[i], flat.paletteMode);
+          const glm::vec3 c = paintsRgb ? flatPointColour(palette, outColor[i], flat.paletteMode, lanes.rgb[i])
+                                        : flatPaletteColour(palette, outColor[i], flat.paletteMode);
           for (const Affine3& image : postSymmetry) {
             const glm::dvec3 q = image.apply({outX[i], outY[i], outZ[i]});
             for (SolidShadowMap& map : shadowMaps)
@@ -594,6 +605,7 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   layer.flame.postSymmetry.kind = PostSymmetryKind::None;
   const ChaosGame game(layer, "the flame layer");
   const std::array<glm::vec3, 256> palette = filePalette(layer.color);
+  const bool paintsRgb = game.paintsRgb();
 
   // flam3's camera (rect.c): pixels per unit scale · 2^zoom, scaled with the image when its size
   // differs from the flame's (as flam3-render's ss does); samples quality · 4^zoom per pixel.
@@ -683,7 +695,8 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
             fuse[i] = kFuse;
           }
           if (!visible) continue;
-          const glm::vec3 c = flatPaletteColour(palette, outColor[i], flat.paletteMode);
+          const glm::vec3 c = paintsRgb ? flatPointColour(palette, outColor[i], flat.paletteMode, lanes.rgb[i])
+                                        : flatPaletteColour(palette, outColor[i], flat.paletteMode);
           for (const Affine3& image : postSymmetry) {
             const glm::dvec3 q = image.apply({outX[i], outY[i], outZ[i]});
             double px = q.x, py = q.y;

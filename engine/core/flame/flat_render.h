@@ -58,6 +58,9 @@ void flatRenderSize(const FlatViewSettings& flat, const FlatRenderOptions& optio
 // linear mode entries i and i + 1 around index · 256 blended by its fraction; an index below 0
 // takes entry 0 and one at or past 255/256 entry 255 in both modes.
 glm::vec3 flatPaletteColour(const std::array<glm::vec3, 256>& palette, double index, PaletteMode mode);
+// A drawn point's colour: the true colour a variation painted it (ChaosLanes::rgb, VariationInput::rgb's
+// packing, when kRgbPainted is set), else its colour index's as above.
+glm::vec3 flatPointColour(const std::array<glm::vec3, 256>& palette, double index, PaletteMode mode, std::uint32_t rgb);
 
 // flam3's output levels (rect.c): a channel value v (1 standing for its 256) becomes
 // a = min(256 v, 255), written as ⌊a⌋ in 8 bits and ⌊256 a⌋ in 16; returned as the fraction of

@@ -88,7 +88,43 @@ struct VariationInput {
   // no game keeps it (a single evaluation): the variation then starts from zeros each call.
   double* state = nullptr;
   const std::uint32_t* lanes = nullptr;
+  // JWildfire's true colour per point (XYZPoint.rgbColor): a variation that paints an RGB colour
+  // instead of (or besides) a colour index (VariationInfo::paintsRgb) writes paintedRgb(r, g, b) to
+  // lane i's entry; the chaos game clears the entries before each transform, since JWildfire's flag
+  // lasts one transform only. nullptr where nothing draws the colour (a single evaluation, or a
+  // transform without such a variation): the variation then paints nothing.
+  std::uint32_t* rgb = nullptr;
+  // The flame's palette as the file writes it, 256 entries of r | g << 8 | b << 16 (bytes), for
+  // the variations that pick the palette's entry nearest to a colour; nullptr outside a game.
+  const std::uint32_t* palette = nullptr;
 };
+
+// A painted true colour as VariationInput::rgb holds it: the channels (bytes) with kRgbPainted set,
+// so 0 means "not painted, the colour index's palette entry".
+inline constexpr std::uint32_t kRgbPainted = 1u << 24;
+inline constexpr std::uint32_t paintedRgb(std::uint32_t r, std::uint32_t g, std::uint32_t b) {
+  return kRgbPainted | (r & 255u) | (g & 255u) << 8 | (b & 255u) << 16;
+}
+// The entry of a packed 256-entry palette nearest to (r, g, b) in RGB distance, the first of equals:
+// JWildfire's DC_BaseFunc.findKey and SVGWFFunc.getColorIdx.
+inline std::size_t nearestPaletteEntry(const std::uint32_t* palette, std::uint32_t red, std::uint32_t green,
+                                       std::uint32_t blue) {
+  const auto r = static_cast<std::int32_t>(red), g = static_cast<std::int32_t>(green),
+             b = static_cast<std::int32_t>(blue);
+  std::size_t best = 0;
+  std::int32_t bestDistance = 0x7fffffff;
+  for (std::size_t k = 0; k < 256; ++k) {
+    const std::int32_t dr = static_cast<std::int32_t>(palette[k] & 255u) - r;
+    const std::int32_t dg = static_cast<std::int32_t>(palette[k] >> 8 & 255u) - g;
+    const std::int32_t db = static_cast<std::int32_t>(palette[k] >> 16 & 255u) - b;
+    const std::int32_t d = dr * dr + dg * dg + db * db;
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = k;
+    }
+  }
+  return best;
+}
 
 // Adds weight · V(p) to (outX, outY, outZ) for every lane of `in`.
 using VariationFn = void (*)(const VariationInput& in, double* outX, double* outY, double* outZ);
@@ -135,6 +171,9 @@ struct VariationInfo {
   // Reads or writes the point's colour index (VariationInput::colour): Fractorium's dc_ variations.
   // The chaos game sets up the colour array and blends by direct_color only for transforms with one.
   bool directColour = false;
+  // May paint a point's true colour (VariationInput::rgb), JWildfire's XYZPoint.rgbColor: dc_quadtree's
+  // Gradient 0. The chaos game keeps true colours only for flames with such a variation.
+  bool paintsRgb = false;
   // How many doubles of memory per lane the variation keeps from step to step (VariationInput::state).
   std::size_t laneState = 0;
   VariationFn apply = nullptr;

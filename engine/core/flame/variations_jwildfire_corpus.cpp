@@ -241,9 +241,9 @@ inline double fract(double value) {
 
 // dc_booleans' colour at (u, v) (after zoom and offset): t = ⌊u⌋ op ⌊v⌋ (Java's int truncation and
 // xor, and, or for type 0, 1, 2), the colour of hue sin t, saturation 1, value cos t (Sam Hocevar's
-// GLSL hsv2rgb, which JWildfire's follows), in whole steps of 1/256 clamped into 0–255, and its
+// GLSL hsv2rgb, which JWildfire's follows), in whole steps of 1/256 clamped into 0–255 (`bytes`), and its
 // luminance as JWildfire weighs it (each channel's share truncated) over 255.
-inline double booleansLuminance(double u, double v, int type) {
+inline double booleansColour(double u, double v, int type, std::uint32_t (&bytes)[3]) {
   const std::int32_t a = javaInt(u), b = javaInt(v);
   const std::int32_t bits = type == 0 ? (a ^ b) : type == 1 ? (a & b) : (a | b);
   const double t = static_cast<double>(bits);
@@ -254,6 +254,7 @@ inline double booleansLuminance(double u, double v, int type) {
   for (int c = 0; c < 3; ++c) {
     const double channel = value * std::clamp(std::abs(fract(hue + kOffsets[c]) * 6.0 - 3.0) - 1.0, 0.0, 1.0);
     const double level = std::clamp(std::floor(channel * 256.0), 0.0, 255.0);
+    bytes[c] = static_cast<std::uint32_t>(level);
     luminance += static_cast<std::int32_t>(level * kShares[c]);
   }
   return static_cast<double>(luminance) / 255.0;
@@ -262,9 +263,10 @@ inline double booleansLuminance(double u, double v, int type) {
 // dc_booleans: a uniform point of the square [−½, ½]² (or the point itself with ColorOnly = 1) times
 // the weight; its colour from booleansLuminance at the point times zoom plus an offset that
 // java.util.Random seeded with randomize draws (randomize · nextDouble for each axis). That luminance
-// is JWildfire's colour index for Gradient = 2; for 0 and 1 JWildfire paints the colour itself (or
-// the palette's nearest), which voxflame has no way to do, and the luminance stands in for it (the
-// import names the loss). z = luminance · scale_z + offset_z, unweighted; with reset_z = 1 it replaces
+// is JWildfire's colour index for Gradient = 2; for 0 it paints the colour itself and for 1 the palette's
+// entry nearest to it (VariationInput::rgb), leaving the index alone. Where nothing keeps a true colour
+// (a single evaluation) the luminance stands in as the index, as before true colours were followed.
+// z = luminance · scale_z + offset_z, unweighted; with reset_z = 1 it replaces
 // the z of the terms before it (an ordinary term rewrites the running sum, VariationInfo::readsSum).
 // The integer parameters are clamped and truncated as JWildfire sets them.
 VOXFLAME_VARIATION_TARGETS void dcBooleans(const VariationInput& in, double* __restrict ox, double* __restrict oy,
@@ -280,6 +282,9 @@ VOXFLAME_VARIATION_TARGETS void dcBooleans(const VariationInput& in, double* __r
   const int type = javaLimited(P[1], 0.0, 2.0);
   const double zoom = P[2];
   const bool colourOnly = javaLimited(P[3], 0.0, 1.0) == 1;
+  const int gradient = javaLimited(P[4], 0.0, 2.0);
+  std::uint32_t* __restrict rgb = gradient == 2 ? nullptr : in.rgb;
+  const std::uint32_t* palette = gradient == 1 ? in.palette : nullptr;
   const double scaleZ = P[5], offsetZ = P[6];
   const bool resets = javaLimited(P[7], 0.0, 1.0) == 1 && in.stage == VariationStage::Normal;
   for (std::size_t i = 0; i < n; ++i) {
@@ -288,8 +293,17 @@ VOXFLAME_VARIATION_TARGETS void dcBooleans(const VariationInput& in, double* __r
       u = laneUniform(rnd[i]) - 0.5;
       v = laneUniform(rnd[i]) - 0.5;
     }
-    const double luminance = booleansLuminance(u * zoom + offsetX, v * zoom + offsetY, type);
-    colour[i] = luminance;
+    std::uint32_t bytes[3];
+    const double luminance = booleansColour(u * zoom + offsetX, v * zoom + offsetY, type, bytes);
+    if (!rgb) {
+      colour[i] = luminance;
+    } else if (gradient == 0) {
+      rgb[i] = paintedRgb(bytes[0], bytes[1], bytes[2]);
+    } else if (palette) {
+      rgb[i] = kRgbPainted | palette[nearestPaletteEntry(palette, bytes[0], bytes[1], bytes[2])];
+    } else {
+      colour[i] = luminance;
+    }
     outX[i] += w * u;
     outY[i] += w * v;
     const double dz = luminance * scaleZ + offsetZ;
@@ -334,9 +348,10 @@ void variation_kernels::addJwildfireCorpusVariations(std::vector<VariationInfo>&
        {"o", 1.0, -4.0, 4.0},
        {"p", 1.0, -4.0, 4.0}});
   add("dc_booleans",
-      "w (Ψ₁ − ½, Ψ₂ − ½) (w p with ColorOnly), colour L, the luminance of hsv(sin t, 1, cos t), t = ⌊zoom u + x0⌋ "
-      "op ⌊zoom v + y0⌋ (xor, and, or by type; (x0, y0) from java.util.Random seeded with randomize); z L scale_z "
-      "+ offset_z unweighted, replacing the z before it with reset_z (JWildfire's; L stands in for its true colour)",
+      "w (Ψ₁ − ½, Ψ₂ − ½) (w p with ColorOnly), C = hsv(sin t, 1, cos t), t = ⌊zoom u + x0⌋ op ⌊zoom v + y0⌋ "
+      "(xor, and, or by type; (x0, y0) from java.util.Random seeded with randomize); Gradient 0 paints the point C, "
+      "1 the palette's entry nearest to C, 2 sets the colour index to C's luminance L; z L scale_z + offset_z "
+      "unweighted, replacing the z before it with reset_z (JWildfire's)",
       k3D, kRandom, &dcBooleans,
       {count("randomize", 1000.0, 0.0, 100000.0),
        count("type", 1.0, 0.0, 2.0),
@@ -348,6 +363,7 @@ void variation_kernels::addJwildfireCorpusVariations(std::vector<VariationInfo>&
        count("reset_z", 1.0, 0.0, 1.0)});
   catalogue.back().directColour = true;
   catalogue.back().readsSum = true;
+  catalogue.back().paintsRgb = true;
 }
 
 }  // namespace voxflame::core

@@ -499,10 +499,10 @@ VOXFLAME_VARIATION_TARGETS void dcTriTile(const VariationInput& in, double* __re
 // ---- JWildfire's DC_BaseFunc variations: dc_quadtree, dc_ducks -------------------------------------
 
 // Jesus Sosa's shader-like direct-colour variations (DC_BaseFunc): a random point of a square (or with
-// ColorOnly the point itself) and an RGB colour from a pattern at it. Gradient 0 gives the point that RGB
-// colour and 1 the palette's nearest colour, which a colour index cannot carry: those leave the colour
-// index alone here (the importer says so); Gradient 2 sets the index to the colour's grey level
-// ⌊0.299 R⌋ + ⌊0.587 G⌋ + ⌊0.114 B⌋ over 255 (R, G, B = ⌊256 c⌋ clamped into 0 … 255), which z uses in
+// ColorOnly the point itself) and an RGB colour from a pattern at it. Gradient 0 paints the point that
+// RGB colour (R, G, B = ⌊256 c⌋ clamped into 0 … 255) and 1 the palette's entry nearest to it
+// (VariationInput::rgb, JWildfire's XYZPoint.rgbColor), both leaving the colour index alone; Gradient 2
+// sets the index to the colour's grey level ⌊0.299 R⌋ + ⌊0.587 G⌋ + ⌊0.114 B⌋ over 255, which z uses in
 // every case: dz = grey · scale_z + offset_z is added to z, or with reset_z replaces the sum's z.
 struct Rgb {
   double r, g, b;
@@ -523,7 +523,10 @@ void dcBaseKernel(const VariationInput& in, double* __restrict ox, double* __res
                   std::size_t k, double half, Pattern&& pattern) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   const bool colourOnly = jwfLimitedInt(P[k], 0.0, 1.0) == 1.0;
-  const bool grey = jwfLimitedInt(P[k + 1], 0.0, 2.0) == 2.0;
+  const double gradient = jwfLimitedInt(P[k + 1], 0.0, 2.0);
+  const bool grey = gradient == 2.0;
+  std::uint32_t* __restrict rgb = grey ? nullptr : in.rgb;
+  const std::uint32_t* palette = gradient == 1.0 ? in.palette : nullptr;
   const double scaleZ = P[k + 2], offsetZ = P[k + 3];
   const bool reset = jwfLimitedInt(P[k + 4], 0.0, 1.0) == 1.0;
   for (std::size_t i = 0; i < n; ++i) {
@@ -534,8 +537,16 @@ void dcBaseKernel(const VariationInput& in, double* __restrict ox, double* __res
       u = half * (2.0 * laneUniform(rnd[i]) - 1.0);
       v = half * (2.0 * laneUniform(rnd[i]) - 1.0);
     }
-    const double level = greyLevel(pattern(u, v));
+    const Rgb c = pattern(u, v);
+    const double level = greyLevel(c);
     if (grey) colour[i] = level;
+    if (rgb) {
+      const auto r = static_cast<std::uint32_t>(rgbByte(c.r)), g = static_cast<std::uint32_t>(rgbByte(c.g)),
+                 b = static_cast<std::uint32_t>(rgbByte(c.b));
+      // Gradient 1 without a palette at hand (a single evaluation) paints nothing, as one without rgb.
+      rgb[i] = !palette ? (gradient == 0.0 ? paintedRgb(r, g, b) : 0u)
+                        : kRgbPainted | palette[nearestPaletteEntry(palette, r, g, b)];
+    }
     outX[i] += w * u;
     outY[i] += w * v;
     const double dz = level * scaleZ + offsetZ;
@@ -708,7 +719,8 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
   add("dc_quadtree",
       "w q, q = Ψ-uniform in [−½, ½]² (ColorOnly: the point); Gradient 2: colour index the grey level of Neyret's "
       "quadtree colour at q (cells split while ½ + ½ sin(id + time) sin(2.17 id − time) sin(5.7 id + time) ≤ 0.7, "
-      "up to levels, cells of 1/width, zoom); Gradient 0 and 1 (RGB colours) leave the index; z + grey · scale_z + "
+      "up to levels, cells of 1/width, zoom); Gradient 0 paints the point that RGB colour, 1 the palette's entry "
+      "nearest to it, both leaving the index; z + grey · scale_z + "
       "offset_z (reset_z: z = that); seed is JWildfire's clock-driven time, which time overrides",
       k3D, kRandom, &dcQuadtree,
       dcBaseParams({{"zoom", 1.0, 0.1, 50.0},
@@ -718,16 +730,19 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
                     count("levels", 30.0, 1.0, 50.0)}));
   catalogue.back().directColour = true;
   catalogue.back().readsSum = true;
+  catalogue.back().paintsRgb = true;
   add("dc_ducks",
       "w q, q = Ψ-uniform in [−1, 1]² (ColorOnly: the point); Gradient 2: colour index the grey level of the "
       "ducks fractal's colour at q·zoom (50 steps of e → (log |e'|, ∠e' − 6.2) + (0.1 sin(t/3) − 0.1, 5 + 0.1 "
-      "cos(t/5)), e' = (e_x, |e_y|), t = 30 time/65, JWildfire's approximate angle); Gradient 0 and 1 (RGB "
-      "colours) leave the index; z + grey · scale_z + offset_z (reset_z: z = that); seed is JWildfire's "
+      "cos(t/5)), e' = (e_x, |e_y|), t = 30 time/65, JWildfire's approximate angle); Gradient 0 paints the point "
+      "that RGB colour, 1 the palette's entry nearest to it, both leaving the index; z + grey · scale_z + offset_z "
+      "(reset_z: z = that); seed is JWildfire's "
       "clock-driven time, which time overrides",
       k3D, kRandom, &dcDucks,
       dcBaseParams({count("seed", 10000.0, 0.0, 10000.0), {"time", 10.0, 0.0, 100.0}, {"zoom", 1.0, -10.0, 10.0}}));
   catalogue.back().directColour = true;
   catalogue.back().readsSum = true;
+  catalogue.back().paintsRgb = true;
 }
 
 }  // namespace voxflame::core

@@ -852,25 +852,13 @@ class FlameReader {
         zeroTerms.emplace(name, std::move(term));
         continue;
       }
-      // inversion's direct colour, and dc_quadtree's, dc_ducks' and glsl_apollonian's RGB colours (the
-      // point's colour set by the variation, JWildfire's way), are not applied either.
+      // inversion's direct colour and glsl_apollonian's Gradient 0 (an RGB colour; 1 is r·g as the index) are
+      // not applied either. (dc_quadtree's, dc_ducks' and dc_booleans' RGB colours are: VariationInfo::paintsRgb.)
       if ((info->name == "inversion" && std::trunc(term.params.at(21)) >= 1.0 &&
            std::trunc(term.params.at(21)) <= 4.0) ||
-          // dc_quadtree's and dc_ducks' Gradient 0 and 1 (an RGB colour; 2 is a grey level as the index).
-          (info->name == "dc_quadtree" && !(term.params.at(6) >= 2.0)) ||
-          (info->name == "dc_ducks" && !(term.params.at(4) >= 2.0)) ||
-          // glsl_apollonian's Gradient 0 (an RGB colour; 1 is r·g as the index).
           (info->name == "glsl_apollonian" && !(term.params.at(3) >= 1.0))) {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
-      }
-      // dc_booleans paints its true colour (Gradient 0) or the palette's colour nearest to it (1), which
-      // voxflame does not: its luminance, JWildfire's colour index for Gradient 2, stands in.
-      if (info->name == "dc_booleans" && std::trunc(std::clamp(term.params.at(4), 0.0, 2.0)) != 2.0) {
-        lose("true colour of " + withoutCopyMark(name));
-        warn(context + " has " + name +
-             " painting its own colours, which voxflame does not; the colours' "
-             "luminance picks the palette's colour instead");
       }
       // JWildfire runs a prepost_ variation as a pre_ term (its inverse map) and as a post_ term (the map
       // itself): the catalogue has the two halves as pre_prepost_X and prepost_X.

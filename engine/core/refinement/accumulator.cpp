@@ -1030,6 +1030,16 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
     for (std::size_t c = 0; c < 256; ++c)
       packedPalette[c] = std::uint32_t{layer.palette[c].r} | std::uint32_t{layer.palette[c].g} << 8 |
                          std::uint32_t{layer.palette[c].b} << 16;
+    // A point's packed colour: its palette entry, or for a flame whose variations paint true colours
+    // (coloured by its own colours, ColorMode::Index) the colour painted, when one was. The loops
+    // below are built once for each, so a flame without true colours runs the plain lookup.
+    const auto paletteColour = [&](std::size_t i) { return packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])]; };
+    const std::uint32_t* painted = b.chaos.rgb.data();
+    const auto paintedColour = [&](std::size_t i) {
+      const std::uint32_t rgb = painted[i];
+      return rgb & kRgbPainted ? rgb & 0xffffffu : packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])];
+    };
+    const bool trueColours = game && game->paintsRgb() && layer.layer.color.mode == ColorMode::Index;
     for (int s = 0; s < steps; ++s) {
       if (game) {
         game->step(b.chaos, b.x.data(), b.y.data(), b.z.data(), b.colorCoord.data(), kOrbitsPerBatch);
@@ -1045,7 +1055,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
       }
       iterations += kOrbitsPerBatch;
       std::int32_t escapedHere = 0;
-      if (sink_) {
+      const auto appendPoints = [&](const auto& colourOf) {
         // Points for the sink: the exact test (the voxel's mask flag) here, since no grid cell is
         // fetched later; branch-free like the grid's append below.
         const std::uint8_t* inside = mask_->inside.data();
@@ -1059,7 +1069,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
           outX[n] = b.gx[i];
           outY[n] = b.gy[i];
           outZ[n] = b.gz[i];
-          outRgb[n] = packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])];
+          outRgb[n] = colourOf(i);
           // Integer arithmetic for the same reason as the grid's append below: no branch to mispredict.
           const std::uint64_t valid = (static_cast<std::uint32_t>(v) >> 31) ^ 1u;        // v >= 0
           const std::uint64_t settled = (static_cast<std::uint32_t>(v + 1) >> 31) ^ 1u;  // v >= -1
@@ -1069,8 +1079,8 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
           escapedHere += b.escaped[i];
         }
         splats.pointCount = n;
-        if (n >= kFlushThreshold) points += flushPoints(threadIndex, streamId, splats);
-      } else {
+      };
+      const auto appendSplats = [&](const auto& colourOf) {
         // Branch-free append of every settled point in a brick that touches the mask (a 4×4×4-voxel
         // bitmap small enough to stay in L1/L2 drops most outside points here); the exact test
         // happens at the flush, where the voxel's cell (which carries the inside flag) is fetched anyway.
@@ -1079,9 +1089,8 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
         std::size_t n = splats.count;
         for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
           const std::int32_t v = b.voxel[i];
-          out[n] = Splat{
-              static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(b.cell[i]),
-              packedPalette[static_cast<std::uint8_t>(b.colorIndex[i])] | static_cast<std::uint32_t>(b.slab[i]) << 24};
+          out[n] = Splat{static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(b.cell[i]),
+                         colourOf(i) | static_cast<std::uint32_t>(b.slab[i]) << 24};
           const auto brickIndex = static_cast<std::uint32_t>(b.brick[i]);
           // Integer arithmetic, not bools: GCC turned the bool form into a bit-test branch, which
           // mispredicts about every other point of a pattern spread over the grid (a flame).
@@ -1094,6 +1103,17 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
           escapedHere += b.escaped[i];
         }
         splats.count = n;
+      };
+      if (sink_) {
+        if (trueColours)
+          appendPoints(paintedColour);
+        else
+          appendPoints(paletteColour);
+        if (splats.pointCount >= kFlushThreshold) points += flushPoints(threadIndex, streamId, splats);
+      } else if (trueColours) {
+        appendSplats(paintedColour);
+      } else {
+        appendSplats(paletteColour);
       }
       if (escapedHere > 0) [[unlikely]] {
         escapes += static_cast<std::uint64_t>(escapedHere);
