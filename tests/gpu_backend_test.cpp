@@ -170,16 +170,68 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     streams[i] = static_cast<std::uint32_t>(rng.next() >> 32) | 1u;
   }
   const std::array<double, 12> affine{0.9, 0.3, 0.0, 0.2, -0.25, 1.1, 0.0, -0.4, 0.0, 0.0, 1.0, 0.0};
+  // Every variation with its defaults, and again with parameters that reach what the defaults leave
+  // untried (mobius's defaults are the identity, crop's and circlecrop's scatter nothing, crackle's
+  // cells do not move without distort, so its noise would go unchecked).
+  struct Case {
+    std::string name;
+    std::vector<double> params;  // empty: the defaults
+  };
+  std::vector<Case> cases;
+  for (const std::string& name : gl::gpuFlameVariations()) cases.push_back({name, {}});
+  const std::vector<Case> more = {
+      {"mobius", {0.7, 0.3, -0.2, 0.4, 0.5, -0.6, 1.1, 0.2}},
+      {"crop", {-0.6, -0.8, 0.9, 0.7, 0.5, 0.0}},
+      {"crop", {0.9, 0.7, -0.6, -0.8, -0.4, 1.0}},
+      {"circlecrop", {0.9, 0.2, -0.3, 0.6, 0.0}},
+      {"bwraps", {0.9, 0.4, 1.6, 0.8, -0.5}},
+      {"epispiral", {5.0, 0.7, 0.4}},
+      {"sineblur", {2.5}},
+      {"juni", {3.0, 1.0, 1.4}},
+      {"juni", {-2.0, 0.0, 0.8}},
+      {"eJulia", {-3.0}},
+      {"eMotion", {0.4, 0.9}},
+      {"hypertile", {4.0, 6.0, 2.0}},
+      {"hypertile1", {5.0, 4.0}},
+      {"hypertile2", {4.5, 5.0}},
+      {"depth", {0.6}},
+      {"exblur", {0.3, 0.6, 0.2, -0.3, 0.1}},
+      {"julian2", {-4.0, 0.7, 0.9, 0.3, -0.2, 1.1, 0.1, -0.3}},
+      {"blur_linear", {1.7, -2.1}},
+      {"blur_zoom", {0.9, -0.4, 0.6}},
+      {"crackle", {0.8, 0.4, 0.7, 1.3, 0.6}},
+      {"crackle", {1.5, -0.5, -1.2, 0.8, -2.0}},
+      {"julian3Dx", {1.5, -3.0, 0.9, 0.3, -0.2, 1.1, 0.1, -0.3}},
+      {"hypertile3D1", {4.5, 5.0}},
+      {"hypertile3D2", {6.0, 4.0}},
+      {"cropn", {-4.0, 0.8, 0.4, 1.0}},
+      {"hexes", {0.7, -0.6, 0.3, 1.2}},
+      {"octagon", {0.2, -0.3, 0.1}},
+      {"bcircle", {1.3, 0.7}},
+      {"waves4_wf", {0.4, -0.3, 2.1, -1.3, 0.0, 1.0, 0.3, -0.2}},
+      {"glynnSim1", {1.2, 0.4, 60.0, 0.3, -2.0, 0.8}},
+      {"zscale_wf", {0.3}},
+      {"lazyTravis", {-0.7, 1.3, 0.4}},
+  };
+  cases.insert(cases.end(), more.begin(), more.end());
   int checked = 0;
-  for (const std::string& name : gl::gpuFlameVariations()) {
+  for (const Case& c : cases) {
+    const std::string& name = c.name;
     SCOPED_TRACE(name);
     const core::VariationInfo* info = core::findVariation(name);
     ASSERT_NE(info, nullptr);
-    const std::vector<double> params = info->defaultParams();
+    const std::vector<double> params = c.params.empty() ? info->defaultParams() : c.params;
+    ASSERT_EQ(params.size(), info->params.size());
     const double weight = 0.8;
     std::vector<float> data(affine.begin(), affine.end());
     data.push_back(static_cast<float>(weight));
     for (double v : params) data.push_back(static_cast<float>(v));
+    if (gl::gpuVariationReadsNoise(name)) {  // what it reads after its parameters, then the tables
+      const std::vector<float> extras = gl::gpuNoiseExtras(params, static_cast<int>(data.size() + 3));
+      data.insert(data.end(), extras.begin(), extras.end());
+      const std::vector<float> tables = gl::gpuNoiseTables();
+      data.insert(data.end(), tables.begin(), tables.end());
+    }
     const std::string text = "#version 430 core\n" + gl::embeddedShader("flame_variations.glsl").text +
                              "\nlayout(local_size_x = 64) in;\n"
                              "layout(std430, binding = 0) buffer Points { vec4 points[]; };\n"
@@ -187,6 +239,7 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
                              "void main() {\n"
                              "  uint i = gl_GlobalInvocationID.x;\n"
                              "  gChaosRandom = streams[i];\n"
+                             "  gVariationT = points[i].xyz;\n"
                              "  points[i].xyz = V_" +
                              name +
                              "(points[i].xyz, flameData[12], 13, 0);\n"
@@ -254,7 +307,7 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     EXPECT_LE(apart, compared / 50) << apart << " of " << compared << " points apart";
     ++checked;
   }
-  EXPECT_EQ(checked, static_cast<int>(gl::gpuFlameVariations().size()));
+  EXPECT_EQ(checked, static_cast<int>(cases.size()));
 }
 
 TEST(GpuBackend, AgreesWithTheCpuOnEveryShippedPreset) {
@@ -387,6 +440,28 @@ TEST(GpuBackend, AgreesWithTheCpuOnEveryPartOfAGenome) {
   expectAgreement(scene, true, "genome parts, transforms drawn per group", 1.22);
 }
 
+// The terms whose GLSL reads more than the point and its parameters, in one flame: flam3's pre_blur
+// (a pre_ term that adds), post_depth after a pre_ term (it reads the transform's point after the
+// pre_ stage), crackle in two transforms (its noise tables put into the data block once), one with
+// moving cells (their noise read at its slice, in double).
+TEST(GpuBackend, AgreesWithTheCpuOnTermsThatReadMoreThanThePoint) {
+  if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
+  core::Scene scene = core::defaultScene();
+  core::PatternLayer& layer = scene.layers.front();
+  layer.kind = core::PatternKind::Flame;
+  layer.color.mode = core::ColorMode::Index;
+  core::FlameGenome& flame = layer.flame;
+  flame = core::defaultFlame();
+  ASSERT_GE(flame.xforms.size(), 3u);
+  // The moving cells, whose noise is slow on llvmpipe, in the transform drawn least.
+  flame.xforms[0].variations = {
+      {"pre_blur", 0.2, {}}, {"crackle", 0.6, {0.6, 0.3, 0.0, 1.1, 0.0}}, {"linear", 0.4, {}}};
+  flame.xforms[1].variations = {{"pre_sinusoidal", 0.5, {}}, {"spherical", 0.5, {}}, {"post_depth", 0.3, {0.7}}};
+  flame.xforms[2].variations.push_back({"crackle", 0.3, {1.0, 0.2, -0.5, 1.0, 0.4}});
+  ASSERT_TRUE(gl::gpuSupports(scene.layers)) << gl::gpuUnsupportedReason(scene.layers);
+  expectAgreement(scene, true, "pre_blur, crackle, post_depth");
+}
+
 // The shipped flames with every orbit drawing its own transform (the agreement test above draws per
 // group of orbits, the default).
 TEST(GpuBackend, FlameOrbitsDrawnOneByOneAgreeToo) {
@@ -444,7 +519,8 @@ TEST(GpuBackend, AutoTakesTheGpuOnlyOnHardwareForWhatItRuns) {
   flame.layers.front().kind = core::PatternKind::Flame;
   flame.layers.front().flame = core::defaultFlame();
   // A variation the GPU's chaos game does not have keeps the layer on the CPU.
-  flame.layers.front().flame.xforms.front().variations.push_back({"sineblur", 0.5, {1.0}});
+  flame.layers.front().flame.xforms.front().variations.push_back(
+      {"falloff2", 0.5, core::variationOrThrow("falloff2").defaultParams()});
   EXPECT_EQ(app::resolveBackend(app::BackendChoice::Auto, flame.layers), core::BackendKind::Cpu);
   EXPECT_THROW(app::resolveBackend(app::BackendChoice::Gpu, flame.layers), core::Error);
 }

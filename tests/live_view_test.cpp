@@ -12,6 +12,7 @@
 #include <fstream>
 
 #include "core/camera.h"
+#include "core/flame/variations.h"
 #include "core/image_io.h"
 #include "core/image_metrics.h"
 #include "core/scene.h"
@@ -742,7 +743,8 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Gpu) << gpuSession.status().backendNote;
   core::Scene lacking = flame;
-  lacking.layers.front().flame.xforms.front().variations.push_back({"sineblur", 0.5, {1.0}});
+  lacking.layers.front().flame.xforms.front().variations.push_back(
+      {"falloff2", 0.5, core::variationOrThrow("falloff2").defaultParams()});
   gpuSession.post(lacking);
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Cpu);

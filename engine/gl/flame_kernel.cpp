@@ -2,11 +2,13 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <string_view>
 
 #include "core/chaos_game.h"
 #include "core/flame/flame.h"
+#include "core/flame/noise.h"
 #include "core/flame/variations.h"
 #include "core/scene.h"
 
@@ -27,7 +29,13 @@ const std::vector<std::string> kGpuVariations = {
     "flower", "conic", "parabola", "bent2", "bipolar", "boarders", "butterfly", "cell", "cpow", "curve", "edisc",
     "elliptic", "escher", "foci", "lazysusan", "loonie", "modulus", "oscilloscope", "polar2", "popcorn2", "scry",
     "separation", "split", "splits", "stripes", "wedge", "wedge_julia", "wedge_sph", "whorl", "waves2", "exp", "log",
-    "sin", "cos", "tan", "sec", "csc", "cot", "sinh", "cosh", "tanh", "sech", "csch", "coth", "auger"};
+    "sin", "cos", "tan", "sec", "csc", "cot", "sinh", "cosh", "tanh", "sech", "csch", "coth", "auger",
+    // plugins of Apophysis, JWildfire and Fractorium that the corpus's flames use most
+    "pre_blur", "mobius", "unpolar", "sineblur", "glynnia", "epispiral", "crop", "julian2", "epispiral_wf",
+    "blur_circle", "blur_linear", "exblur", "twoface", "hypertile", "hypertile1", "hypertile2", "rotate_x", "rotate_y",
+    "rotate_z", "foci_3D", "circlecrop", "bwraps", "juni", "blur_zoom", "eJulia", "eMotion", "depth", "crackle",
+    "julian3Dx", "inflateZ_3", "bi_linear", "acoth", "acosh", "glynnSim1", "hypertile3D1", "hypertile3D2", "cropn",
+    "hexes", "octagon", "bcircle", "waves23", "wdisc", "waves4_wf", "rblur", "zscale_wf", "lazyTravis"};
 
 bool gpuHasVariation(std::string_view name) {
   return std::find(kGpuVariations.begin(), kGpuVariations.end(), name) != kGpuVariations.end();
@@ -84,9 +92,20 @@ class Generator {
         stages[static_cast<int>(stage)].push_back({core::findVariation(term.name), &term});
       }
     const auto call = [&](const Term& t, const char* point) {
+      // Crackle's noise tables go in before its numbers, which must follow one another.
+      const int tables = gpuVariationReadsNoise(t.info->name) ? noiseTables() : -1;
       const int weight = put(t.term->weight);
       const int params = static_cast<int>(k_.data.size());
       put(t.term->params.data(), t.term->params.size());
+      if (gpuVariationReadsNoise(t.info->name)) {
+        // Its parameters in full (defaults for any missing), then what crackle reads after them.
+        std::vector<double> full = t.term->params;
+        for (std::size_t i = full.size(); i < t.info->params.size(); ++i)
+          full.push_back(t.info->params[i].defaultValue);
+        put(full.data() + t.term->params.size(), full.size() - t.term->params.size());
+        const std::vector<float> extras = gpuNoiseExtras(full, tables);
+        k_.data.insert(k_.data.end(), extras.begin(), extras.end());
+      }
       return "V_" + t.info->name + "(" + point + ", flameData[" + std::to_string(weight) + "], " +
              std::to_string(params) + ", A)";
     };
@@ -100,7 +119,16 @@ class Generator {
       if (t.info->name == "flatten") code += std::string("    ") + point + ".z = 0.0;\n";
       return code + "  }\n";
     };
-    for (const Term& t : stages[0]) s += combine(t, "t");
+    // depth reads the transform's point (gVariationT): for a pre_ term the point it maps, for the
+    // others the point after the pre_ terms (core's VariationInput::tx).
+    bool readsT = false;
+    for (const auto& stage : stages)
+      for (const Term& t : stage) readsT = readsT || t.info->name == "depth";
+    for (const Term& t : stages[0]) {
+      if (readsT) s += "  gVariationT = t;\n";
+      s += combine(t, "t");
+    }
+    if (readsT) s += "  gVariationT = t;\n";
     s += stages[1].empty() ? "  vec3 o = t;\n" : "  vec3 o = vec3(0.0);\n";
     bool flatten = false;
     for (const Term& t : stages[1]) {
@@ -145,8 +173,19 @@ class Generator {
     s += "}\n";
   }
 
+  // Where the noise tables lie in the data block, put there the first time a term asks.
+  int noiseTables() {
+    if (noise_ < 0) {
+      const std::vector<float> tables = gpuNoiseTables();
+      noise_ = static_cast<int>(k_.data.size());
+      k_.data.insert(k_.data.end(), tables.begin(), tables.end());
+    }
+    return noise_;
+  }
+
  private:
   FlameKernel& k_;
+  int noise_ = -1;
 };
 
 void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, bool groupChoice, FlameKernel& kernel) {
@@ -245,6 +284,25 @@ void juliaSource(const core::PatternLayer& layer, FlameKernel& kernel) {
 }
 
 }  // namespace
+
+bool gpuVariationReadsNoise(std::string_view name) {
+  return name == "crackle";
+}
+
+std::vector<float> gpuNoiseExtras(const std::vector<double>& params, int tables) {
+  // The slice's bits, low word first (GLSL's packDouble2x32), carried in floats that are only
+  // copied, never computed with.
+  const auto bits = std::bit_cast<std::uint64_t>(params.at(4));
+  return {std::bit_cast<float>(static_cast<std::uint32_t>(bits)),
+          std::bit_cast<float>(static_cast<std::uint32_t>(bits >> 32)), static_cast<float>(tables)};
+}
+
+std::vector<float> gpuNoiseTables() {
+  const core::SimplexNoiseTables& tables = core::simplexNoiseTables();
+  std::vector<float> values(tables.hash.begin(), tables.hash.end());
+  values.insert(values.end(), tables.gradients.begin(), tables.gradients.end());
+  return values;
+}
 
 const std::vector<std::string>& gpuFlameVariations() {
   return kGpuVariations;

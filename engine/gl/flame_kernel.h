@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace voxflame::core {
@@ -33,7 +34,7 @@ struct FlameKernel {
 };
 
 // Empty when the GPU's chaos game runs `layer` (a flame or quaternion Julia layer); else what it
-// lacks, for a message ("variation 'sineblur'", "a weighting field").
+// lacks, for a message ("variation 'falloff2'", "a weighting field").
 std::string flameKernelUnsupported(const core::PatternLayer& layer);
 
 // The kernel of `layer`, whose prepared game is `game` (the same pick table the CPU draws from).
@@ -43,5 +44,15 @@ FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGa
 
 // The variations the GPU's chaos game has (flame_variations.glsl), in the catalogue's spelling.
 const std::vector<std::string>& gpuFlameVariations();
+
+// Whether the GPU's variation `name` reads simplex noise (crackle): its term's parameters (all of
+// them) are then followed in flameData by gpuNoiseExtras.
+bool gpuVariationReadsNoise(std::string_view name);
+// What crackle reads after its parameters `params`: its slice z in double (its bits in two floats)
+// and `tables`, where gpuNoiseTables() lie in flameData (the kernel puts them in once).
+std::vector<float> gpuNoiseExtras(const std::vector<double>& params, int tables);
+// core::simplexNoiseTables() as flame_variations.glsl reads them: the hash (1024 entries), then the
+// gradients (1024 × 3).
+std::vector<float> gpuNoiseTables();
 
 }  // namespace voxflame::gl

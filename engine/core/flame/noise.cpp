@@ -17,12 +17,7 @@ namespace voxflame::core {
 
 namespace {
 
-constexpr std::size_t kTableSize = 1024;
-
-struct NoiseTables {
-  std::array<std::uint16_t, kTableSize> hash{};
-  std::array<double, kTableSize * 3> gradients{};
-};
+constexpr std::size_t kTableSize = SimplexNoiseTables::kSize;
 
 // splitmix64 (Steele, Lea and Flood 2014): a fixed, well-mixed sequence for the shuffle.
 std::uint64_t splitMix(std::uint64_t& state) {
@@ -32,9 +27,9 @@ std::uint64_t splitMix(std::uint64_t& state) {
   return z ^ (z >> 31);
 }
 
-const NoiseTables& tables() {
-  static const NoiseTables built = [] {
-    NoiseTables t;
+const SimplexNoiseTables& tables() {
+  static const SimplexNoiseTables built = [] {
+    SimplexNoiseTables t;
     for (std::size_t i = 0; i < kTableSize; ++i) t.hash[i] = static_cast<std::uint16_t>(i);
     std::uint64_t state = 0x766F78666C616D65ull;  // "voxflame"
     for (std::size_t i = kTableSize - 1; i > 0; --i) std::swap(t.hash[i], t.hash[splitMix(state) % (i + 1)]);
@@ -68,6 +63,10 @@ int hashed(std::int64_t index) {
 }
 
 }  // namespace
+
+const SimplexNoiseTables& simplexNoiseTables() {
+  return tables();
+}
 
 double simplexNoise3D(double x, double y, double z) {
   constexpr double kSkew = 1.0 / 3.0, kUnskew = 1.0 / 6.0;

@@ -3,7 +3,20 @@
 // centres. Its tables are voxflame's own (flame_noise.cpp says why).
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
 namespace voxflame::core {
+
+// The tables simplexNoise3D hashes with, for a copy elsewhere (the GPU's crackle): `hash` a
+// permutation of 0–1023, gradient g (a unit vector) at gradients[3g], [3g + 1], [3g + 2].
+struct SimplexNoiseTables {
+  static constexpr std::size_t kSize = 1024;
+  std::array<std::uint16_t, kSize> hash{};
+  std::array<double, kSize * 3> gradients{};
+};
+const SimplexNoiseTables& simplexNoiseTables();
 
 // 3D simplex noise at (x, y, z), roughly in [−1, 1]; 0 at every lattice point.
 double simplexNoise3D(double x, double y, double z);

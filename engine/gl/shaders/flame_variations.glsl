@@ -717,3 +717,662 @@ vec3 V_auger(vec3 p, float w, int P, int A) {
   float dx = p.x + augerWeight * (scale * t / 2.0 + abs(p.x) * t);
   return vec3(w * (p.x + sym * (dx - p.x)), w * dy, w * p.z);
 }
+
+// ---- the plugins flames use most (variations_apophysis.cpp, variations_plugins.cpp, ...) --------
+
+// The transform's point after its affine map and pre_ terms, which its ordinary terms map (core's
+// VariationInput::tx): the point itself for a pre_ or ordinary term, the point the sum came from
+// for a post_ one. Only depth reads it; flame_kernel.cpp sets it where a transform has depth.
+vec3 gVariationT;
+
+// flam3's own pre_blur: a Gaussian blur the transform adds to its point before the other terms.
+vec3 V_pre_blur(vec3 p, float w, int P, int A) {
+  float g = w * gaussPsi();
+  float a = kTwoPi * psi();
+  return vec3(g * cos(a), g * sin(a), w * p.z);
+}
+vec3 V_mobius(vec3 p, float w, int P, int A) {
+  float reA = P_(P, 0), imA = P_(P, 1), reB = P_(P, 2), imB = P_(P, 3);
+  float reC = P_(P, 4), imC = P_(P, 5), reD = P_(P, 6), imD = P_(P, 7);
+  float reU = reA * p.x - imA * p.y + reB, imU = reA * p.y + imA * p.x + imB;
+  float reV = reC * p.x - imC * p.y + reD, imV = reC * p.y + imC * p.x + imD;
+  float s = w / (reV * reV + imV * imV + kEpsilon);
+  return vec3(s * (reU * reV + imU * imV), s * (imU * reV - reU * imV), w * p.z);
+}
+vec3 V_unpolar(vec3 p, float w, int P, int A) {
+  float r = w / kPi * 0.5 * exp(p.y);
+  return vec3(r * sin(p.x), r * cos(p.x), w * p.z);
+}
+vec3 V_sineblur(vec3 p, float w, int P, int A) {
+  float powerP = max(0.0, P_(P, 0));
+  float a = kTwoPi * psi();
+  float u = psi();
+  float r = w * (powerP == 1.0 ? acos(u * 2.0 - 1.0) : acos(exp(log(u) * powerP) * 2.0 - 1.0)) / kPi;
+  return vec3(r * cos(a), r * sin(a), w * p.z);
+}
+// A point where a root is 0 is carried through unmapped, as on the CPU.
+vec3 V_glynnia(vec3 p, float w, int P, int A) {
+  float half_ = w * sqrt(2.0) / 2.0;
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  float side = r >= 1.0 ? 1.0 : -1.0;
+  vec3 o = vec3(0.0, 0.0, w * p.z);
+  if (psi() > 0.5) {
+    float d = sqrt(r + p.x);
+    if (d != 0.0) o.xy = vec2(side * half_ * d, -half_ / d * p.y);
+  } else {
+    float d = r + p.x;
+    float dx = sqrt(r * (p.y * p.y + d * d));
+    if (dx != 0.0) o.xy = vec2(side * w / dx * d, w / dx * p.y);
+  }
+  return o;
+}
+vec3 V_epispiral(vec3 p, float w, int P, int A) {
+  float waves = P_(P, 0), thickness = P_(P, 1), holes = P_(P, 2);
+  float theta = atan2c(p.y, p.x);
+  float c = cos(waves * theta);
+  float t = psi() * thickness / (c == 0.0 ? kEpsilon : c) - holes;
+  return vec3(w * t * cos(theta), w * t * sin(theta), w * p.z);
+}
+vec3 V_crop(vec3 p, float w, int P, int A) {
+  float x0 = min(P_(P, 0), P_(P, 2)), x1 = max(P_(P, 0), P_(P, 2));
+  float y0 = min(P_(P, 1), P_(P, 3)), y1 = max(P_(P, 1), P_(P, 3));
+  float scatter = clamp(P_(P, 4), -1.0, 1.0);
+  float bandX = (x1 - x0) * 0.5 * scatter, bandY = (y1 - y0) * 0.5 * scatter;
+  bool zero = sign(P_(P, 5)) * floor(abs(P_(P, 5)) + 0.5) >= 1.0;
+  float a = psi(), b = psi();
+  bool outside = p.x < x0 || p.x > x1 || p.y < y0 || p.y > y1;
+  float px = p.x < x0 ? x0 + a * bandX : p.x > x1 ? x1 - a * bandX : p.x;
+  float py = p.y < y0 ? y0 + b * bandY : p.y > y1 ? y1 - b * bandY : p.y;
+  if (outside && zero) px = py = 0.0;
+  return w * vec3(px, py, p.z);
+}
+vec3 V_julian2(vec3 p, float w, int P, int A) {
+  float powerN = countParam(P_(P, 0)), exponent = P_(P, 1) / powerN * 0.5, rootCount = abs(powerN);
+  float a = P_(P, 2), b = P_(P, 3), c = P_(P, 4), d = P_(P, 5), e = P_(P, 6), f = P_(P, 7);
+  float px = a * p.x + b * p.y + e, py = c * p.x + d * p.y + f;
+  float root = trunc(rootCount * psi());
+  float angle = (atan2c(py, px) + kTwoPi * root) / powerN;
+  float r = w * pow(px * px + py * py, exponent);
+  return vec3(r * cos(angle), r * sin(angle), w * p.z);
+}
+vec3 V_epispiral_wf(vec3 p, float w, int P, int A) {
+  float theta = atan2c(p.x, p.y);
+  float d = cos(P_(P, 0) * theta);
+  vec3 o = vec3(0.0, 0.0, w * p.z);
+  if (d != 0.0) o.xy = w * (0.5 / d) * vec2(sin(theta), cos(theta));  // JWildfire skips the point there
+  return o;
+}
+vec3 V_blur_circle(vec3 p, float w, int P, int A) {
+  float sx = 2.0 * psi() - 1.0, sy = 2.0 * psi() - 1.0;
+  float ax = abs(sx), ay = abs(sy);
+  float perimeter, side;
+  if (ax >= ay) {
+    perimeter = sx >= ay ? ax + sy : 5.0 * ax - sy;
+    side = ax;
+  } else {
+    perimeter = sy >= ax ? 3.0 * ay - sx : 7.0 * ay + sx;
+    side = ay;
+  }
+  float a = kPi / 4.0 * perimeter / side - kPi / 4.0;
+  return vec3(w * side * cos(a), w * side * sin(a), w * p.z);
+}
+vec3 V_blur_linear(vec3 p, float w, int P, int A) {
+  float r = P_(P, 0) * psi();
+  return w * vec3(p.x + r * cos(P_(P, 1)), p.y + r * sin(P_(P, 1)), p.z);
+}
+vec3 V_exblur(vec3 p, float w, int P, int A) {
+  float dist = P_(P, 0), spread = P_(P, 1);
+  vec3 d = vec3(p.x - P_(P, 2), p.y + P_(P, 3), p.z - P_(P, 4));  // y's origin added, as JWildfire has it
+  float n2 = dot(d, d);
+  float u = psi() * kTwoPi, v = psi() * kTwoPi;
+  float rr = w * pow(n2, dist) * gaussPsi();
+  float theta = atan2c(d.y, d.x), phi = acos(d.z / sqrt(n2));
+  float sv = sin(phi), rsv = spread * sin(v);
+  return rr * vec3(sv * cos(theta) + rsv * cos(u), sv * sin(theta) + rsv * sin(u), cos(phi) + spread * cos(v));
+}
+vec3 V_twoface(vec3 p, float w, int P, int A) {
+  float r = p.x > 0.0 ? w / (p.x * p.x + p.y * p.y) : w;
+  return vec3(r * p.x, r * p.y, w * p.z);
+}
+// Fractorium's Zeps(): a zero divisor becomes the double's machine epsilon, a normal float too.
+const float kFractoriumEps = 2.220446049250313e-16;
+float fractoriumZeps(float v) { return v == 0.0 ? kFractoriumEps : v; }
+// Zueuk's hyperbolic tilings (variations_plugins.cpp): p and q any real number, 0 as Fractorium's
+// epsilon.
+float hypertileDistance(float p, float q) {
+  float cp = cos(kTwoPi / p);
+  float r2 = 1.0 - (cp - 1.0) / (cp + cos(kTwoPi / q));
+  return r2 > 0.0 ? 1.0 / sqrt(r2) : 1.0;
+}
+float tilingTurn(float u, float p) { return p == roundEven(p) ? trunc(u * abs(p)) * kTwoPi / p : kTwoPi * u; }
+vec2 hypertileMap(vec2 p, float re, float im, float w) {
+  float a = p.x + re, b = p.y - im;
+  float c = re * p.x - im * p.y + 1.0, d = re * p.y + im * p.x;
+  float vr = w / (c * c + d * d);
+  return vr * vec2(a * c + b * d, b * c - a * d);
+}
+vec3 V_hypertile(vec3 p, float w, int P, int A) {
+  float pp = fractoriumZeps(P_(P, 0)), q = fractoriumZeps(P_(P, 1));
+  float a = P_(P, 2) * kTwoPi / pp, r = hypertileDistance(pp, q);
+  return vec3(hypertileMap(p.xy, r * cos(a), r * sin(a), w), w * p.z);
+}
+vec3 V_hypertile1(vec3 p, float w, int P, int A) {
+  float pp = fractoriumZeps(P_(P, 0)), q = fractoriumZeps(P_(P, 1));
+  float r = hypertileDistance(pp, q);
+  float a = floor(psi() * trunc(pp)) * kTwoPi / pp;
+  return vec3(hypertileMap(p.xy, r * cos(a), r * sin(a), w), w * p.z);
+}
+vec3 V_hypertile2(vec3 p, float w, int P, int A) {
+  float pp = fractoriumZeps(P_(P, 0)), q = fractoriumZeps(P_(P, 1));
+  float r = hypertileDistance(pp, q);
+  float a = p.x + r, b = p.y;
+  float c = r * p.x + 1.0, d = r * p.y;
+  float mx = a * c + b * d, my = b * c - a * d;
+  float vr = w / (c * c + d * d);
+  float turn = tilingTurn(psi(), pp);
+  float s = sin(turn), co = cos(turn);
+  return vec3(vr * (mx * co + my * s), vr * (my * co - mx * s), w * p.z);
+}
+// The weight is the angle: these return the turned point itself (variations_plugins.cpp).
+vec3 V_rotate_x(vec3 p, float w, int P, int A) {
+  float s = sin(w * kPi / 2.0), c = cos(w * kPi / 2.0);
+  return vec3(p.x, s * p.z + c * p.y, c * p.z - s * p.y);
+}
+vec3 V_rotate_y(vec3 p, float w, int P, int A) {
+  float s = sin(w * kPi / 2.0), c = cos(w * kPi / 2.0);
+  return vec3(c * p.x - s * p.z, p.y, s * p.x + c * p.z);
+}
+vec3 V_rotate_z(vec3 p, float w, int P, int A) {
+  float s = sin(w * kPi / 2.0), c = cos(w * kPi / 2.0);
+  return vec3(s * p.y + c * p.x, c * p.y - s * p.x, p.z);
+}
+vec3 V_foci_3D(vec3 p, float w, int P, int A) {
+  float expx = exp(p.x) * 0.5, expnx = 0.25 / expx;
+  float boot = p.z == 0.0 ? atan2c(p.y, p.x) : p.z;
+  float t = w / (expx + expnx - cos(p.y) * cos(boot));
+  return t * vec3(expx - expnx, sin(p.y), sin(boot));
+}
+vec3 V_circlecrop(vec3 p, float w, int P, int A) {
+  float radius = P_(P, 0), x0 = P_(P, 1), y0 = P_(P, 2), scatter = clamp(P_(P, 3), -1.0, 1.0);
+  bool zero = sign(P_(P, 4)) * floor(abs(P_(P, 4)) + 0.5) == 1.0;
+  float dx = p.x - x0, dy = p.y - y0;
+  float edge = radius + psi() * 0.5 * scatter;
+  vec3 o = vec3(0.0, 0.0, w * p.z);
+  if (sqrt(dx * dx + dy * dy) > radius) {
+    if (!zero) {
+      float a = atan2c(dy, dx);
+      o.xy = vec2(w * edge * cos(a) + x0, w * edge * sin(a) + y0);
+    }
+  } else {
+    o.xy = vec2(w * dx + x0, w * dy + y0);
+  }
+  return o;
+}
+vec3 V_bwraps(vec3 p, float w, int P, int A) {
+  float cellsize = P_(P, 0), space = P_(P, 1), gain = P_(P, 2), innerTwist = P_(P, 3), outerTwist = P_(P, 4);
+  float radius = 0.5 * (cellsize / (1.0 + space * space));
+  float g2 = gain * gain + 1e-6;
+  float maxBubble = g2 * radius;
+  maxBubble = maxBubble > 2.0 ? 1.0 : maxBubble / (maxBubble * maxBubble / 4.0 + 1.0);
+  float r2 = radius * radius == 0.0 ? kFractoriumEps : radius * radius;
+  float rfactor = radius / maxBubble;
+  vec2 q = p.xy;
+  if (cellsize != 0.0) {
+    vec2 centre = (floor(p.xy / cellsize) + 0.5) * cellsize;
+    vec2 l = p.xy - centre;
+    if (dot(l, l) <= r2) {
+      l *= g2;
+      float d = dot(l, l) / 4.0 + 1.0;
+      l *= rfactor / (d == 0.0 ? kFractoriumEps : d);
+      float t = dot(l, l) / r2;
+      float theta = innerTwist * (1.0 - t) + outerTwist * t;
+      float s = sin(theta), c = cos(theta);
+      q = vec2(centre.x + c * l.x + s * l.y, centre.y - s * l.x + c * l.y);
+    }
+  }
+  return w * vec3(q, p.z);
+}
+// The root is drawn at every point, used or not, as on the CPU.
+vec3 V_juni(vec3 p, float w, int P, int A) {
+  float power = countParam(P_(P, 0)), absn = abs(power);
+  bool invert = sign(P_(P, 1)) * floor(abs(P_(P, 1)) + 0.5) >= 1.0;
+  float cn = (P_(P, 2) / power - 1.0) / 2.0;
+  float a = flameData[A], b = flameData[A + 1], c = flameData[A + 3];
+  float d = flameData[A + 4], e = flameData[A + 5], f = flameData[A + 7];
+  float zz = p.z / absn;
+  float r2 = p.x * p.x + p.y * p.y;
+  float r = w * pow(r2 + zz * zz, cn);
+  float root = trunc(psi() * absn);
+  bool plain = invert ? (r2 < w * w && r2 != 0.0) : (r2 > w * w || r2 == 0.0);
+  if (plain) return vec3(w * p.x, w * p.y, r * zz);
+  float xx = a * p.x + b * p.y + c, yy = d * p.x + e * p.y + f;
+  float alpha = (atan2c(yy, xx) + kTwoPi * root) / power;
+  float gamma = r * sqrt(r2);
+  return vec3(gamma * cos(alpha), gamma * sin(alpha), r * zz);
+}
+vec3 V_blur_zoom(vec3 p, float w, int P, int A) {
+  float cx = P_(P, 1), cy = P_(P, 2);
+  float zoom = 1.0 + P_(P, 0) * psi();
+  return w * vec3((p.x - cx) * zoom + cx, (p.y + cy) * zoom - cy, p.z);
+}
+// Michael Faber's elliptic coordinates (μ, ν) of p, as variations_plugins.cpp's toElliptic.
+vec2 toElliptic(float x, float y, float r2) {
+  float t = r2 + 1.0, x2 = 2.0 * x;
+  float xmax = max(1.0, (sqrt(max(t + x2, 0.0)) + sqrt(max(t - x2, 0.0))) * 0.5);
+  float mu = log(sqrt(xmax * xmax - 1.0) + xmax);
+  float nu = acos(clamp(x / xmax, -1.0, 1.0));
+  return vec2(mu, y < 0.0 ? -nu : nu);
+}
+vec3 V_eJulia(vec3 p, float w, int P, int A) {
+  float power = countParam(P_(P, 0));
+  float r2 = p.x * p.x + p.y * p.y, px = p.x;
+  if (power < 0.0) {
+    r2 = 1.0 / r2;
+    px = p.x * r2;
+  }
+  vec2 e = toElliptic(px, p.y, r2);
+  e.y = e.y / power + kTwoPi / power * floor(psi() * power);
+  e.x /= power;
+  return vec3(w * cosh(e.x) * cos(e.y), w * sinh(e.x) * sin(e.y), w * p.z);
+}
+vec3 V_eMotion(vec3 p, float w, int P, int A) {
+  float move = P_(P, 0), rotate = P_(P, 1);
+  vec2 e = toElliptic(p.x, p.y, p.x * p.x + p.y * p.y);
+  e.x += e.y < 0.0 ? move : -move;
+  if (e.x <= 0.0) e = -e;
+  e.y += rotate;
+  return vec3(w * cosh(e.x) * cos(e.y), w * sinh(e.x) * sin(e.y), w * p.z);
+}
+// Fractorium's depth: t + p |z|^power, t the transform's point (gVariationT).
+vec3 V_depth(vec3 p, float w, int P, int A) {
+  float power = P_(P, 0);
+  float coeff = abs(p.z);
+  if (coeff != 0.0 && power != 1.0) coeff = exp(log(coeff) * power);
+  return w * (gVariationT + p * coeff);
+}
+
+// core's simplexNoise3D (flame/noise.cpp) with its tables in flameData at N: the hash (1024
+// permutation entries) and then the gradients (1024 unit vectors, three numbers each). Which
+// simplex a point lies in is worked out in double, as the CPU does: 3D simplex noise with the
+// plugin's falloff radius (0.6) jumps where the simplex changes, and crackle asks for it at half
+// and whole numbers, on those very boundaries, where a float's rounding would tip the choice.
+float simplexNoise3D(int N, dvec3 v) {
+  precise double skew = (v.x + v.y + v.z) * (1.0lf / 3.0lf);
+  ivec3 cell = ivec3(floor(v + skew));
+  precise double t = double(cell.x + cell.y + cell.z) * (1.0lf / 6.0lf);
+  precise dvec3 offset = v - (dvec3(cell) - t);
+  ivec3 s1, s2;
+  if (offset.x >= offset.y) {
+    if (offset.y >= offset.z) {
+      s1 = ivec3(1, 0, 0);
+      s2 = ivec3(1, 1, 0);
+    } else if (offset.x >= offset.z) {
+      s1 = ivec3(1, 0, 0);
+      s2 = ivec3(1, 0, 1);
+    } else {
+      s1 = ivec3(0, 0, 1);
+      s2 = ivec3(1, 0, 1);
+    }
+  } else if (offset.y < offset.z) {
+    s1 = ivec3(0, 0, 1);
+    s2 = ivec3(0, 1, 1);
+  } else if (offset.x < offset.z) {
+    s1 = ivec3(0, 1, 0);
+    s2 = ivec3(0, 1, 1);
+  } else {
+    s1 = ivec3(0, 1, 0);
+    s2 = ivec3(1, 1, 0);
+  }
+  // The value itself is continuous in the offsets: float from here on.
+  const float kUnskew = 1.0 / 6.0;
+  vec3 c0 = vec3(offset);
+  float total = 0.0;
+  for (int c = 0; c < 4; ++c) {
+    ivec3 s = c == 0 ? ivec3(0) : c == 1 ? s1 : c == 2 ? s2 : ivec3(1);
+    vec3 corner = c0 - vec3(s) + float(c) * kUnskew;
+    int h = int(flameData[N + (((cell.z & 1023) + s.z) & 1023)]);
+    h = int(flameData[N + (((cell.y & 1023) + s.y + h) & 1023)]);
+    int g = N + 1024 + 3 * int(flameData[N + (((cell.x & 1023) + s.x + h) & 1023)]);
+    float falloff = 0.6 - dot(corner, corner);
+    if (falloff > 0.0) {
+      falloff *= falloff;
+      total += falloff * falloff * dot(vec3(flameData[g], flameData[g + 1], flameData[g + 2]), corner);
+    }
+  }
+  return 32.0 * total;
+}
+// Java's (int) floor(v), which saturates (NaN as 0), as a float.
+float javaFloorToInt(float v) {
+  float f = floor(v);
+  return isnan(f) ? 0.0 : clamp(f, -2147483648.0, 2147483647.0);
+}
+// The centre of crackle's cell (cx, cy), moved by distort · noise (none without distort, which
+// spares the noise: it is finite, so 0 · noise is 0 on the CPU too).
+// The noise's arguments are the CPU's to the last bit: whole cell numbers, and the slice in double.
+// The two noises come from one call in a loop, and so do the cells of V_crackle below, without
+// arrays: a compiler unrolls a loop that indexes an array by its counter, and the noise copied into
+// every unrolled step made a crackle flame's program take most of a minute to build on llvmpipe.
+vec2 crackleCentre(int N, vec2 cell, float halfSize, float distort, double slice) {
+  if (distort == 0.0) return cell * halfSize;
+  precise dvec2 c = dvec2(cell) * 2.5lf;
+  precise double z = slice * 2.5lf;
+  // Cross-over of x and y for the second, as in the plugin, so the two noises do not correlate.
+  precise dvec3 crossed = dvec3(c.y + 30.2lf, c.x - 12.1lf, z + 19.8lf);
+  vec2 noise;
+  for (int axis = 0; axis < 2; ++axis) {
+    float n = simplexNoise3D(N, axis == 0 ? dvec3(c.x, c.y, z) : crossed);
+    if (axis == 0)
+      noise.x = n;
+    else
+      noise.y = n;
+  }
+  return (cell + distort * noise) * halfSize;
+}
+// slobo777's crackle as variations_plugins.cpp has it. After its parameters (flame_kernel.cpp puts
+// them there): its slice z as a double's two halves, then the noise tables' place in flameData.
+vec3 V_crackle(vec3 p, float w, int P, int A) {
+  float cellsize = P_(P, 0), power = P_(P, 1), distort = P_(P, 2), scale = P_(P, 3);
+  double slice = packDouble2x32(uvec2(floatBitsToUint(P_(P, 5)), floatBitsToUint(P_(P, 6))));
+  int N = int(P_(P, 7));
+  vec3 o = vec3(0.0, 0.0, w * p.z);
+  if (cellsize == 0.0) return o;  // the plugin's guard: no cells, nothing drawn
+  float halfSize = cellsize / 2.0;
+  float a = psi(), b = psi(), c = psi();
+  float blurred = (a + b) / 2.0 + (c - 0.5) / 4.0;
+  float theta = kTwoPi * psi();
+  vec2 u = blurred * vec2(sin(theta), cos(theta));
+  vec2 cell = vec2(javaFloorToInt(u.x / halfSize), javaFloorToInt(u.y / halfSize));
+  // The centre nearest u among the 3×3 block around its cell (the first of equals, as the CPU
+  // takes it); the block is then re-centred on it, so that its cell is surrounded on all sides.
+  int nearest = 0;
+  float nearestD2 = 3.0e38;
+  vec2 centre = vec2(0.0);
+  for (int k = 0; k < 9; ++k) {
+    vec2 at = crackleCentre(N, cell + vec2(k / 3 - 1, k % 3 - 1), halfSize, distort, slice);
+    float d2 = dot(at - u, at - u);
+    if (d2 < nearestD2) {
+      nearestD2 = d2;
+      nearest = k;
+      centre = at;
+    }
+  }
+  cell += vec2(nearest / 3 - 1, nearest % 3 - 1);
+  // Voronoi distance from that centre: the largest ratio over its neighbours (1 on a shared edge).
+  float distance = -3.0e38;
+  for (int k = 0; k < 9; ++k) {
+    if (k == 4) continue;
+    vec2 q = crackleCentre(N, cell + vec2(k / 3 - 1, k % 3 - 1), halfSize, distort, slice) - centre;
+    float ratio = q == vec2(0.0) ? 1.0 : 2.0 * dot(u - centre, q) / dot(q, q);
+    distance = max(distance, ratio);
+  }
+  // The CPU's 1e-100 guard is 0 in float; 1e-30 keeps 0/0 away as it does.
+  float pull = pow(distance + 1e-30, power) * scale / (distance + 1e-30);
+  o.xy = w * ((u - centre) * pull + centre);
+  return o;
+}
+
+// ---- more plugins (variations_plugins.cpp, variations_fractorium.cpp, ...) -----------------------
+
+vec3 V_julian3Dx(vec3 p, float w, int P, int A) {
+  float power = countParam(P_(P, 1)), absn = abs(power), cn = (P_(P, 0) / power - 1.0) / 2.0;
+  float a = P_(P, 2), b = P_(P, 3), c = P_(P, 4), d = P_(P, 5), e = P_(P, 6), f = P_(P, 7);
+  float zz = p.z / absn;
+  float r2 = p.x * p.x + p.y * p.y;
+  float radius = w * pow(r2 + zz * zz, cn);
+  float px = a * p.x + b * p.y + e, py = c * p.x + d * p.y + f;
+  float root = trunc(psi() * absn);
+  float alpha = (atan2c(py, px) + kTwoPi * root) / power;
+  float gamma = radius * sqrt(r2);
+  return vec3(gamma * cos(alpha), gamma * sin(alpha), radius * zz);
+}
+// Adds to z alone (the catalogue's mapsXY is false for it).
+vec3 V_inflateZ_3(vec3 p, float w, int P, int A) {
+  float angle = atan2c(p.y, p.x);
+  return vec3(0.0, 0.0, w * 0.2 * (kPi - angle) * cos(3.0 * angle + (p.y - p.x)));
+}
+vec3 V_bi_linear(vec3 p, float w, int P, int A) { return w * vec3(p.y, p.x, p.z); }
+// JWildfire's complex helpers: 1/|q|² with |q|² < 1e-100 taken as 1 (below float's range: 0 there).
+float guardedInverseNorm(float re, float im) {
+  float m2 = re * re + im * im;
+  return m2 == 0.0 ? 1.0 : 1.0 / m2;
+}
+vec3 V_acoth(vec3 p, float w, int P, int A) {
+  float inv = guardedInverseNorm(p.x, p.y);
+  float re = p.x * inv, im = -p.y * inv;
+  float nre = re + 1.0, nim = im, dre = -(re - 1.0), dim = -im;
+  float dinv = guardedInverseNorm(dre, dim);
+  float qre = (nim * dim + nre * dre) * dinv, qim = (nim * dre - nre * dim) * dinv;
+  float logRe = 0.5 * log(qre * qre + qim * qim + 1e-20), logIm = atan2c(qim, qre);
+  float s = w * 2.0 / kPi * 0.5;
+  return vec3(s * logIm, s * logRe, w * p.z);
+}
+vec3 V_acosh(vec3 p, float w, int P, int A) {
+  float dr = p.x * p.x - p.y * p.y - 1.0, di = 2.0 * p.x * p.y;
+  float radius = length(vec2(dr, di));
+  float sr = sqrt(max(0.0, 0.5 * (radius + dr))), si = (di < 0.0 ? -1.0 : 1.0) * sqrt(max(0.0, 0.5 * (radius - dr)));
+  float ar = p.x + sr, ai = p.y + si;
+  float re = 0.5 * log(ar * ar + ai * ai + 1e-20), im = atan2c(ai, ar);
+  float s = psi() < 0.5 ? w * 2.0 / kPi : -w * 2.0 / kPi;
+  return vec3(s * re, s * im, w * p.z);
+}
+// All three numbers drawn at every point, as on the CPU.
+vec3 V_glynnSim1(vec3 p, float w, int P, int A) {
+  float radius = P_(P, 0), radius1 = P_(P, 1), thickness = P_(P, 3), absPow = abs(P_(P, 4)), contrast = P_(P, 5);
+  float phi1 = kPi * P_(P, 2) / 180.0;
+  float x1 = radius * cos(phi1), y1 = radius * sin(phi1);
+  float pick = psi(), ringU = psi(), ringA = psi();
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  float alpha = radius / r;
+  bool onRing = r < radius;
+  vec2 q = p.xy;
+  float u = pick, a = ringU;
+  if (!onRing) {
+    if (pick <= contrast * pow(alpha, absPow)) q = alpha * alpha * p.xy;
+    onRing = (q.x - x1) * (q.x - x1) + (q.y - y1) * (q.y - y1) < radius1 * radius1;
+    u = ringU;
+    a = ringA;
+  }
+  if (onRing) {
+    float ring = radius1 * (thickness + (1.0 - thickness) * u);
+    q = vec2(ring * cos(kTwoPi * a) + x1, ring * sin(kTwoPi * a) + y1);
+  }
+  return w * vec3(q, p.z);
+}
+vec3 V_hypertile3D1(vec3 p, float w, int P, int A) {
+  float pp = fractoriumZeps(P_(P, 0)), q = fractoriumZeps(P_(P, 1));
+  float pa = kTwoPi / pp, qa = kTwoPi / q;
+  float t = -(cos(pa) - 1.0) / (cos(pa) + cos(qa));
+  float r = t > 0.0 ? 1.0 / sqrt(1.0 + t) : 1.0;
+  float r2c = r * r, sz = 1.0 - r2c;
+  float turn = tilingTurn(psi(), pp);
+  float cx = r * cos(turn), cy = r * sin(turn);
+  float sx = 1.0 + cx * cx - cy * cy, sy = 1.0 + cy * cy - cx * cx;
+  float r2 = dot(p, p);
+  float tx = 2.0 * cx * p.x, ty = 2.0 * cy * p.y;
+  float d = w / fractoriumZeps(r2c * r2 + tx - ty + 1.0);
+  return d * vec3(p.x * sx - cx * (ty - r2 - 1.0), p.y * sy + cy * (-tx - r2 - 1.0), p.z * sz);
+}
+vec3 V_hypertile3D2(vec3 p, float w, int P, int A) {
+  float pp = fractoriumZeps(P_(P, 0)), q = fractoriumZeps(P_(P, 1));
+  float pa = kTwoPi / pp, qa = kTwoPi / q;
+  float t = -(cos(pa) - 1.0) / (cos(pa) + cos(qa));
+  float cx = t > 0.0 ? 1.0 / sqrt(1.0 + t) : 1.0;
+  float c2 = cx * cx, sx = 1.0 + c2, sy = 1.0 - c2;
+  float r2 = dot(p, p);
+  float mx = p.x * sx - cx * (-r2 - 1.0), my = p.y * sy;
+  float vr = w / (c2 * r2 + 2.0 * cx * p.x + 1.0);
+  float turn = tilingTurn(psi(), pp);
+  float s = sin(turn), co = cos(turn);
+  return vec3(vr * (mx * co + my * s), vr * (my * co - mx * s), vr * p.z * sy);
+}
+vec3 V_cropn(vec3 p, float w, int P, int A) {
+  float power = P_(P, 0), radius = P_(P, 1), scatter = P_(P, 2);
+  bool zero = P_(P, 3) == 0.0;
+  float alpha = kTwoPi / max(2.0, abs(power)), half_ = alpha / 2.0;
+  float u = psi();
+  float r2 = p.x * p.x + p.y * p.y;
+  float around = fmodc(atan2c(p.y, p.x) + kPi, alpha);
+  float c = cos(around < half_ ? around : alpha - around);
+  float reach = c > 0.0 ? radius / c : 1.0;
+  float s = w;
+  if ((r2 > reach * reach) == (power > 0.0)) {
+    float r = sqrt(r2);
+    s = zero ? 0.0 : (reach + u * scatter) * w / (r == 0.0 ? kFractoriumEps : r);
+  }
+  return vec3(s * p.x, s * p.y, w * p.z);
+}
+// slobo777's plugins' Voronoi distance of u from centres[q]: the largest ratio over the others.
+float voronoiDistance7(vec2 centres[7], vec2 u) {
+  float distance = -3.0e38;
+  for (int k = 1; k < 7; ++k) {
+    vec2 q = centres[k] - centres[0];
+    float ratio = q == vec2(0.0) ? 1.0 : 2.0 * dot(u - centres[0], q) / dot(q, q);
+    distance = max(distance, ratio);
+  }
+  return distance;
+}
+vec2 hexCentre(float hx, float hy, float s) {
+  return vec2(1.5 * hx - 1.5 * hy, 1.7320508075688772 / 2.0 * (hx + hy)) * s;
+}
+vec3 V_hexes(vec3 p, float w, int P, int A) {
+  float s = P_(P, 0), power = P_(P, 1), scale = P_(P, 3);
+  float rotSin = sin(P_(P, 2) * kTwoPi), rotCos = cos(P_(P, 2) * kTwoPi);
+  const float kRoot3 = 1.7320508075688772;
+  vec3 o = vec3(0.0, 0.0, w * p.z);
+  if (s == 0.0) return o;  // the plugin's guard
+  vec2 u = p.xy;
+  float hx = javaFloorToInt((u.x / 3.0 + kRoot3 / 3.0 * u.y) / s);
+  float hy = javaFloorToInt((-u.x / 3.0 + kRoot3 / 3.0 * u.y) / s);
+  int nearest = 0;
+  float nearestD2 = 3.0e38;
+  for (int k = 0; k < 9; ++k) {
+    vec2 d = hexCentre(hx + float(k / 3 - 1), hy + float(k % 3 - 1), s) - u;
+    if (dot(d, d) < nearestD2) {
+      nearestD2 = dot(d, d);
+      nearest = k;
+    }
+  }
+  hx += float(nearest / 3 - 1);
+  hy += float(nearest % 3 - 1);
+  // The chosen hexagon first, then its six neighbours.
+  const vec2 around[7] = vec2[](vec2(0, 0), vec2(0, 1), vec2(1, 1), vec2(1, 0), vec2(0, -1), vec2(-1, -1), vec2(-1, 0));
+  vec2 centres[7];
+  for (int k = 0; k < 7; ++k) centres[k] = hexCentre(hx + around[k].x, hy + around[k].y, s);
+  float l1 = voronoiDistance7(centres, u);
+  vec2 d = u - centres[0];
+  float target = pow(l1 + 1e-30, power) * scale;
+  vec2 v = vec2(d.x * rotCos + d.y * rotSin, -d.x * rotSin + d.y * rotCos);
+  float l2 = voronoiDistance7(centres, v + centres[0]);
+  float l = max(l1, l2);
+  float r = l < 0.5 ? target / l1 : l > 0.8 ? target / l2 : ((target / l1) * (0.8 - l) + (target / l2) * (l - 0.5)) / 0.3;
+  o.xy = w * (v * r + centres[0]);
+  return o;
+}
+vec3 V_octagon(vec3 p, float w, int P, int A) {
+  vec3 off = vec3(P_(P, 0), P_(P, 1), P_(P, 2));
+  vec3 q2 = p * p;
+  float r = w / (q2.x * q2.x + q2.z + q2.y * q2.y + q2.z + 1e-8);
+  vec3 o = (r < 2.0 ? r : w) * p;
+  float rootZ = sqrt(max(p.z, 0.0));
+  float t = w / (abs(p.x) + rootZ + abs(p.y) + rootZ + 1e-8);
+  o += (r >= 0.0 ? t : w) * p;
+  o += w * vec3(p.x >= 0.0 ? p.x + off.x : p.x - off.x, p.y >= 0.0 ? p.y + off.y : p.y - off.y,
+                p.z >= 0.0 ? p.z + off.z : p.z - off.z);
+  return o;
+}
+vec3 V_bcircle(vec3 p, float w, int P, int A) {
+  float scale = P_(P, 0), border = abs(P_(P, 1));
+  float u = psi();
+  vec2 s = p.xy * scale;
+  float r = length(s);
+  vec2 q = vec2(0.0);
+  if (r <= 1.0) {
+    q = s;
+  } else if (border != 0.0) {
+    float a = atan2c(s.y, s.x), radius = 0.2 * border * u + 1.0;
+    q = radius * vec2(cos(a), sin(a));
+  }
+  return w * vec3(q, p.z);
+}
+vec3 V_waves23(vec3 p, float w, int P, int A) {
+  float scaleX = P_(P, 0), scaleY = P_(P, 1), freqX = P_(P, 2), freqY = P_(P, 3);
+  float mx = p.y * freqX / kTwoPi, my = p.x * freqY / kTwoPi;
+  float fx = mx - floor(mx), fy = my - floor(my);
+  if (fx > 0.5) fx = 0.5 - fx;
+  if (fy > 0.5) fy = 0.5 - fy;
+  return w * vec3(p.x + fx * scaleX, p.y + fy * scaleY, p.z);
+}
+vec3 V_wdisc(vec3 p, float w, int P, int A) {
+  float a = kPi / (sqrt(p.x * p.x + p.y * p.y) + 1.0);
+  float r = atan2c(p.y, p.x) / kPi;
+  if (r > 0.0) a = kPi - a;
+  return vec3(w * r * cos(a), w * r * sin(a), w * p.z);
+}
+vec3 V_waves4_wf(vec3 p, float w, int P, int A) {
+  float scaleX = P_(P, 0), scaleY = P_(P, 1), freqX = P_(P, 2), freqY = P_(P, 3);
+  bool cosX = sign(P_(P, 4)) * floor(abs(P_(P, 4)) + 0.5) == 1.0;
+  bool cosY = sign(P_(P, 5)) * floor(abs(P_(P, 5)) + 0.5) == 1.0;
+  float dampX = abs(P_(P, 6)) < 1e-8 ? 1.0 : exp(P_(P, 6));
+  float dampY = abs(P_(P, 7)) < 1e-8 ? 1.0 : exp(P_(P, 7));
+  float sx = sin(p.y * freqX), cx = cos(p.y * freqX);
+  float sy = sin(p.x * freqY), cy = cos(p.x * freqY);
+  float waveX = cosX ? cx * sx * cx : sx * cx * sx, waveY = cosY ? cy * sy * cy : sy * cy * sy;
+  return vec3(w * (p.x + dampX * scaleX * waveX) * dampX, w * (p.y + dampY * scaleY * waveY) * dampY, w * p.z);
+}
+vec3 V_rblur(vec3 p, float w, int P, int A) {
+  float s2 = 2.0 * P_(P, 0), offset = P_(P, 1), cx = P_(P, 2), cy = P_(P, 3);
+  float r = length(vec2(p.x - cx, p.y - cy)) - offset;
+  r = (r < 0.0 ? 0.0 : r) * s2;
+  float a = psi(), b = psi();
+  return w * vec3(p.x + (a - 0.5) * r, p.y + (b - 0.5) * r, p.z);
+}
+// Maps z alone (the catalogue's mapsXY is false for it).
+vec3 V_zscale_wf(vec3 p, float w, int P, int A) { return vec3(0.0, 0.0, w * p.z + P_(P, 0)); }
+vec3 V_lazyTravis(vec3 p, float w, int P, int A) {
+  float spinIn = 4.0 * P_(P, 0), spinOut = 4.0 * P_(P, 1), space = P_(P, 2);
+  float ax = abs(p.x), ay = abs(p.y);
+  bool outside = ax > w || ay > w;
+  float spin = outside ? spinOut : spinIn;
+  float s, q;
+  if (ax > ay) {
+    s = ax;
+    q = p.x > 0.0 ? s + p.y + s * spin : 5.0 * s - p.y + s * spin;
+  } else {
+    s = ay;
+    q = p.y > 0.0 ? 3.0 * s - p.x + s * spin : 7.0 * s + p.x + s * spin;
+  }
+  q = fmodc(q, s * 8.0);
+  float px, py;
+  if (outside) {
+    if (q <= 2.0 * s) {
+      px = s + space;
+      py = -(s - q);
+      py = py + py / s * space;
+    } else if (q <= 4.0 * s) {
+      py = s + space;
+      px = 3.0 * s - q;
+      px = px + px / s * space;
+    } else if (q <= 6.0 * s) {
+      px = -(s + space);
+      py = 5.0 * s - q;
+      py = py + py / s * space;
+    } else {
+      py = -(s + space);
+      px = -(7.0 * s - q);
+      px = px + px / s * space;
+    }
+  } else if (q <= 2.0 * s) {
+    px = s;
+    py = -(s - q);
+  } else if (q <= 4.0 * s) {
+    px = 3.0 * s - q;
+    py = s;
+  } else if (q <= 6.0 * s) {
+    px = -s;
+    py = 5.0 * s - q;
+  } else {
+    px = -(7.0 * s - q);
+    py = -s;
+  }
+  return vec3(w * px, w * py, w * p.z);
+}
