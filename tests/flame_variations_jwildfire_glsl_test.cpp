@@ -335,14 +335,49 @@ ImportedFlame importXform(const std::string& attributes) {
   return readFlameXml(text, "t.flame").flame;
 }
 
-// JWildfire writes glsl_apollonian's "Density Pixels" with its space; the import reads it, and names Gradient 0's RGB
-// colour as not applied (Gradient 1, the index, is whole).
+// glsl_apollonian's Gradient 0 paints the pattern's colour at the pixel as JWildfire's dbl2int bytes (⌊256 c⌋ held
+// within 0 … 255), from the same transcription: (1.0957, 0.3048, 0.7743) → (255, 78, 198) at pixel (879466, 545325)
+// of the default grid; (1.0240, 0.8990, 0.0256) → (255, 230, 6) on a 1000-wide grid at time 7.5. The index is left.
+TEST(FlameVariationJwildfireGlsl, ApollonianGradientZeroPaintsThePatternsColour) {
+  const VariationInfo& info = variationOrThrow("glsl_apollonian");
+  EXPECT_TRUE(info.paintsRgb);
+  const struct {
+    std::vector<double> params;
+    std::uint32_t seed;
+    std::uint32_t painted;
+  } cases[] = {{{1000000.0, 10000.0, 0.0, 0.0}, kHighSeed, paintedRgb(255, 78, 198)},
+               {{1000.0, 10000.0, 7.5, 0.0}, kLowSeed, paintedRgb(255, 230, 6)}};
+  for (const auto& c : cases) {
+    constexpr std::size_t kLanes = 37;
+    std::vector<double> xs(kLanes, 0.3), ys(kLanes, -0.7), zs(kLanes, 0.5), ox(kLanes), oy(kLanes), oz(kLanes),
+        colour(kLanes, 0.375);
+    std::vector<std::uint32_t> random(kLanes, c.seed), rgb(kLanes, 0u);
+    VariationInput in;
+    in.x = in.tx = xs.data();
+    in.y = in.ty = ys.data();
+    in.z = in.tz = zs.data();
+    in.random = random.data();
+    in.count = kLanes;
+    in.weight = 0.8;
+    in.params = c.params.data();
+    in.affine = kAffine;
+    in.colour = colour.data();
+    in.rgb = rgb.data();
+    info.apply(in, ox.data(), oy.data(), oz.data());
+    for (std::size_t lane = 0; lane < kLanes; ++lane) {
+      EXPECT_EQ(rgb[lane], c.painted) << "lane " << lane;
+      EXPECT_EQ(colour[lane], 0.375);
+    }
+  }
+}
+
+// JWildfire writes glsl_apollonian's "Density Pixels" with its space; the import reads it, and both Gradients (0 an
+// RGB colour, 1 the index) are whole.
 TEST(FlameVariationJwildfireGlsl, ImportsJwildfiresParameterNames) {
   const ImportedFlame rgb =
       importXform(R"(glsl_apollonian="0.7" glsl_apollonian_Density Pixels="2500" glsl_apollonian_seed="42" )"
                   R"(glsl_apollonian_time="3.5" glsl_apollonian_Gradient="0")");
-  ASSERT_EQ(rgb.leftOut.size(), 1u);
-  EXPECT_EQ(rgb.leftOut.front(), "direct colour of glsl_apollonian");
+  EXPECT_TRUE(rgb.leftOut.empty()) << rgb.leftOut.front();
   const auto& apollonian = rgb.genome.xforms.at(0).variations.at(0);
   EXPECT_EQ(apollonian.name, "glsl_apollonian");
   EXPECT_EQ(apollonian.params, (std::vector<double>{2500.0, 42.0, 3.5, 0.0}));

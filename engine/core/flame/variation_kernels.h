@@ -135,6 +135,11 @@ inline std::int32_t javaInt(double value) {
   if (value <= -2147483648.0) return std::numeric_limits<std::int32_t>::min();
   return static_cast<std::int32_t>(value);
 }
+
+// JWildfire's dbl2int of a colour channel in [0, 1]: ⌊256 c⌋ as Java's int, held within 0 … 255 (a byte).
+inline double rgbByte(double c) {
+  return std::clamp(static_cast<double>(javaInt(std::floor(c * 256.0))), 0.0, 255.0);
+}
 // Java's int + and ×, which wrap around.
 inline std::int32_t wrapAdd(std::int32_t a, std::int32_t b) {
   return static_cast<std::int32_t>(static_cast<std::uint32_t>(a) + static_cast<std::uint32_t>(b));

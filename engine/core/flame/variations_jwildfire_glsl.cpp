@@ -81,22 +81,28 @@ struct Apollonian {
 // ½, j/10⁶ − ½); the pattern's colour at the pixel's centre. JWildfire sets its grid's height from its
 // width once, when the variation is made, so a file's "Density Pixels" changes the width alone; so here.
 // Gradient 1 makes the colour index r·g (JWildfire leaves it unclamped; the palette lookup clamps);
-// Gradient 0 paints the point the RGB colour itself, which a colour index cannot carry: the index is
-// left alone (the importer says so). A NaN colour (a pixel where the fold divides by 0) leaves it too.
+// Gradient 0 paints the point the RGB colour itself (VariationInput::rgb; JWildfire's dbl2int bytes) and
+// leaves the index. A NaN colour (a pixel where the fold divides by 0) leaves the index, and paints black.
 VOXFLAME_VARIATION_TARGETS void glslApollonian(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                                double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   constexpr double kHeight = 1000000.0;
   const double width = std::isnan(P[0]) ? 100.0 : std::trunc(std::clamp(P[0], 100.0, 10000000.0));
   const bool index = jwfCount(P[3], 0.0, 1.0, 0.0) == 1;
+  std::uint32_t* __restrict rgb = index ? nullptr : in.rgb;
   const Apollonian pattern(std::isfinite(P[2]) ? P[2] : 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     const double pi = std::trunc(laneUniform(rnd[i]) * width), pj = std::trunc(laneUniform(rnd[i]) * kHeight);
     outX[i] += w * (pi / width - 0.5);
     outY[i] += w * (pj / kHeight - 0.5);
     outZ[i] += w * z[i];
-    if (!index) continue;
+    if (!index && !rgb) continue;
     const Vec3 c = pattern.colour(2.0 * (pi + 0.5) / width - 1.0, 2.0 * (pj + 0.5) / kHeight - 1.0);
+    if (rgb) {
+      rgb[i] = paintedRgb(static_cast<std::uint32_t>(rgbByte(c.x)), static_cast<std::uint32_t>(rgbByte(c.y)),
+                          static_cast<std::uint32_t>(rgbByte(c.z)));
+      continue;
+    }
     const double grey = c.x * c.y;
     if (grey == grey) colour[i] = grey;
   }
@@ -334,14 +340,15 @@ void variation_kernels::addJwildfireGlslVariations(std::vector<VariationInfo>& c
       "w (i/Density Pixels − ½, j/10⁶ − ½), z: pixel i = ⌊Ψ₁ Density Pixels⌋, j = ⌊Ψ₂ 10⁶⌋; Gradient 1: colour index "
       "r·g of Sosa's Apollonian pattern at the pixel (v = f m (2 uv, 0) folded 50 times v → |k m v/(v·v)/2 − ½|·2 − "
       "1, colour 0.6 sin v + ½; m the rotation by time/20 + (1, 2, 3), k = 1.2 + 0.1 sin(time/10), f = 2 + 0.25 "
-      "sin(0.3 time)); Gradient 0 (an RGB colour) leaves the index; seed is JWildfire's random time, which time "
-      "overrides",
+      "sin(0.3 time)); Gradient 0 paints the point that RGB colour and leaves the index; seed is JWildfire's random "
+      "time, which time overrides",
       k2D, kRandom, &glslApollonian,
       {count("Density Pixels", 1000000.0, 100.0, 1000000.0),
        count("seed", 10000.0, 0.0, 10000.0),
        {"time", 0.0, 0.0, 5000.0},
        count("Gradient", 0.0, 0.0, 1.0)});
   catalogue.back().directColour = true;
+  catalogue.back().paintsRgb = true;
   add("dc_crackle_wf",
       "crackle's C + (U − C) L^power·scale / L, z (U random on the blurred disc; with weight 0 the point itself); "
       "colour index L color_scale + color_offset clamped into [0, 1] (JWildfire's)",

@@ -508,9 +508,6 @@ struct Rgb {
   double r, g, b;
 };
 
-inline double rgbByte(double c) {
-  return std::clamp(static_cast<double>(javaInt(std::floor(c * 256.0))), 0.0, 255.0);
-}
 inline double greyLevel(const Rgb& c) {
   return (std::trunc(rgbByte(c.r) * 0.299) + std::trunc(rgbByte(c.g) * 0.587) + std::trunc(rgbByte(c.b) * 0.114)) /
          255.0;

@@ -852,11 +852,9 @@ class FlameReader {
         zeroTerms.emplace(name, std::move(term));
         continue;
       }
-      // inversion's direct colour and glsl_apollonian's Gradient 0 (an RGB colour; 1 is r·g as the index) are
-      // not applied either. (dc_quadtree's, dc_ducks' and dc_booleans' RGB colours are: VariationInfo::paintsRgb.)
-      if ((info->name == "inversion" && std::trunc(term.params.at(21)) >= 1.0 &&
-           std::trunc(term.params.at(21)) <= 4.0) ||
-          (info->name == "glsl_apollonian" && !(term.params.at(3) >= 1.0))) {
+      // inversion's direct colour is not applied either. (dc_quadtree's, dc_ducks', dc_booleans' and
+      // glsl_apollonian's RGB colours are: VariationInfo::paintsRgb.)
+      if (info->name == "inversion" && std::trunc(term.params.at(21)) >= 1.0 && std::trunc(term.params.at(21)) <= 4.0) {
         lose("direct colour of " + withoutCopyMark(name));
         warn(context + " has " + name + " with direct colour, which voxflame does not apply");
       }
