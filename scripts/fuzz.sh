@@ -59,8 +59,11 @@ run() {
   local status=0
   # Leaks are checked after every input (LeakSanitizer through libFuzzer); UBSan's first report
   # stops the run (the targets are built with -fno-sanitize-recover).
+  # System libraries' one-time allocations (fontconfig's configuration, which text_wf reads) are
+  # theirs: the suppressions CI's sanitizer stage uses apply here too.
   # shellcheck disable=SC2086 # $options holds zero or more flags
   ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=1" \
+    LSAN_OPTIONS="${LSAN_OPTIONS:+$LSAN_OPTIONS:}suppressions=$root/.ci/lsan.supp:print_suppressions=0" \
     UBSAN_OPTIONS="${UBSAN_OPTIONS:+$UBSAN_OPTIONS:}print_stacktrace=1:halt_on_error=1" \
     "$build/fuzz/$name" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len="$max_len" \
     -dict="$root/fuzz/${name%_fuzzer}.dict" -use_value_profile=1 -print_final_stats=1 $options \

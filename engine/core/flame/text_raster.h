@@ -21,7 +21,7 @@ struct TextRaster {
 
 // The image is at most kTextRasterMaxSide pixels a side: a larger font size is drawn smaller (the
 // variation scales the picture to its own size anyway), so no file takes unbounded time or memory.
-inline constexpr int kTextRasterMaxSide = 4096;
+inline constexpr int kTextRasterMaxSide = 2048;
 
 // `text` is UTF-8; lines are cut at '\n', each centred, as JWildfire's rows. `fontSize` is in
 // pixels (Java's points at 72 dpi); `baseline` moves every line down by that many pixels.

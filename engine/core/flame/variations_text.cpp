@@ -75,13 +75,14 @@ VOXFLAME_VARIATION_TARGETS void textWf(const VariationInput& in, double* __restr
   const double blurRadius = P[1];
   const double scaleX = P[2], scaleY = P[3], offsetX = P[4], offsetY = P[5];
   const int baseline = wholePixels(P[6], -kTextRasterMaxSide, kTextRasterMaxSide);
-  static const std::string kText = kDefaultText, kFont = kDefaultFont;
-  const std::string& text = in.texts ? in.texts[0] : kText;
-  const std::string& font = in.texts ? in.texts[1] : kFont;
-  const std::shared_ptr<const TextPoints> points = textPoints(text, font, size, baseline);
-  const std::size_t count = points->x.size();
-  const double* __restrict px = points->x.data();
-  const double* __restrict py = points->y.data();
+  // A single evaluation without the term's texts (the catalogue probes every variation once as it is
+  // built) draws no text: the chaos game always passes them (the defaults where a preset has none), and
+  // drawing here would start fontconfig in every process that looks a variation up.
+  std::shared_ptr<const TextPoints> points;
+  if (in.texts) points = textPoints(in.texts[0], in.texts[1], size, baseline);
+  const std::size_t count = points ? points->x.size() : 0;
+  const double* __restrict px = points ? points->x.data() : nullptr;
+  const double* __restrict py = points ? points->y.data() : nullptr;
   const bool blur = blurRadius > 0.01;
   for (std::size_t i = 0; i < n; ++i) {
     if (count > 1) {
