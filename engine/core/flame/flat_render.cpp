@@ -395,6 +395,59 @@ bool hasDepthVariation(const FlameGenome& genome) {
          std::any_of(genome.chainedFinals.begin(), genome.chainedFinals.end(), threeD);
 }
 
+// One task of the flat view's chaos game: kLanes orbits, each fused for kFuse steps, restarted
+// after kSubBatch points (flam3's sub-batches) and after a bad value (kBadRetries tries, then the
+// sample counts as drawn); `quota` points are drawn. seeded(i) runs after every seedLane of lane i
+// (the solid view draws a lane's material there), chosen(i) after each good step of lane i before
+// its fuse is counted, and draw(i, x, y, z, colour) for every visible point. Returns false when the
+// render was cancelled. The glowing and the solid view share it, so they draw the same orbits.
+template <typename Seeded, typename Chosen, typename Draw>
+bool runFlatTask(const ChaosGame& game, SplitMix64& rng, std::uint64_t quota, const FlatRenderOptions& options,
+                 std::atomic<bool>& cancelled, ChaosLanes& lanes, Seeded&& seeded, Chosen&& chosen, Draw&& draw) {
+  lanes.resize(kLanes);
+  std::vector<int> fuse(kLanes, kFuse), bad(kLanes, 0);
+  std::vector<std::uint64_t> orbitSamples(kLanes, 0);
+  const auto seed = [&](std::size_t i) {
+    game.seedLane(lanes, i, rng);
+    seeded(i);
+  };
+  for (std::size_t i = 0; i < kLanes; ++i) seed(i);
+  std::vector<double> outX(kLanes), outY(kLanes), outZ(kLanes), outColor(kLanes);
+  std::uint64_t drawn = 0, steps = 0;
+  while (drawn < quota) {
+    if ((++steps & 255) == 0 &&
+        (cancelled.load(std::memory_order_relaxed) || (options.cancel && options.cancel->load()))) {
+      cancelled = true;
+      return false;
+    }
+    game.step(lanes, outX.data(), outY.data(), outZ.data(), outColor.data(), kLanes);
+    for (std::size_t i = 0; i < kLanes && drawn < quota; ++i) {
+      if (std::isnan(outX[i])) {  // a bad value: on from a random point, as flam3 goes on
+        seed(i);
+        if (fuse[i] > 0 || ++bad[i] < kBadRetries) continue;
+        bad[i] = 0;
+        ++drawn;
+        continue;
+      }
+      bad[i] = 0;
+      chosen(i);
+      if (fuse[i] > 0) {
+        --fuse[i];
+        continue;
+      }
+      ++drawn;
+      const bool visible = lanes.visible[i] != 0;
+      if (++orbitSamples[i] == kSubBatch) {  // this orbit's sub-batch is drawn: the next starts afresh
+        orbitSamples[i] = 0;
+        seed(i);
+        fuse[i] = kFuse;
+      }
+      if (visible) draw(i, outX[i], outY[i], outZ[i], outColor[i]);
+    }
+  }
+  return true;
+}
+
 // JWildfire's solid rendering (flat_solid.h): the chaos game as in renderFlat, but each
 // supersampled pixel keeps its nearest point, which is then shaded; the image is the shaded
 // colour filtered by the spatial filter over the background, as JWildfire's filter and gamma
@@ -473,79 +526,45 @@ FlatRenderResult renderFlatSolid(const Scene& scene, const FlatRenderOptions& op
       const std::uint64_t quota = total / tasks + (task < total % tasks ? 1 : 0);
       SplitMix64 rng(options.seed * 0x9e3779b97f4a7c15ULL + task + 1);
       ChaosLanes lanes;
-      lanes.resize(kLanes);
-      std::vector<int> fuse(kLanes, kFuse), bad(kLanes, 0);
-      std::vector<std::uint64_t> orbitSamples(kLanes, 0);
       // Each lane's material index, blended by the transform it takes as its colour is
       // (JWildfire starts it at random).
       std::vector<double> material(kLanes);
-      const auto seed = [&](std::size_t i) {
-        game.seedLane(lanes, i, rng);
-        material[i] = rng.uniform();
+      const auto seeded = [&](std::size_t i) { material[i] = rng.uniform(); };
+      const auto chosen = [&](std::size_t i) {
+        if (const std::size_t k = lanes.choice[i]; k < genomeXforms) {
+          const FlameXform& x = layer.flame.xforms[k];
+          material[i] = material[i] * (1.0 + x.materialSpeed) * 0.5 + x.material * (1.0 - x.materialSpeed) * 0.5;
+        }
       };
-      for (std::size_t i = 0; i < kLanes; ++i) seed(i);
-      std::vector<double> outX(kLanes), outY(kLanes), outZ(kLanes), outColor(kLanes);
-      std::uint64_t drawn = 0, steps = 0;
-      while (drawn < quota) {
-        if ((++steps & 255) == 0 &&
-            (cancelled.load(std::memory_order_relaxed) || (options.cancel && options.cancel->load()))) {
-          cancelled = true;
-          return;
+      const auto draw = [&](std::size_t i, double x, double y, double z, double colour) {
+        const glm::vec3 c = paintsRgb ? flatPointColour(palette, colour, flat.paletteMode, lanes.rgb[i])
+                                      : flatPaletteColour(palette, colour, flat.paletteMode);
+        for (const Affine3& image : postSymmetry) {
+          const glm::dvec3 q = image.apply({x, y, z});
+          for (SolidShadowMap& map : shadowMaps)
+            if (map.active) map.deposit(q);
+          double px = q.x, py = q.y, depth = q.z;
+          if (hasCamera) {
+            // JWildfire's solid rendering moves points by the camera only; its depth of field
+            // is a blur after shading, which the flat view leaves out.
+            const glm::dvec2 p = camera.projectSharp(q.x, q.y, q.z);
+            px = p.x;
+            py = p.y;
+            depth = camera.depth(q.x, q.y, q.z);
+          }
+          if (turned) {
+            const double dx = px - flat.centerX, dy = py - flat.centerY;
+            px = dx * cosTurn - dy * sinTurn + flat.centerX;
+            py = dx * sinTurn + dy * cosTurn + flat.centerY;
+          }
+          const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
+          if (!(bx >= 0.0 && by >= 0.0 && bx < rasterWidth && by < rasterHeight) || !std::isfinite(depth)) continue;
+          raster.deposit(static_cast<int>(bx), static_cast<int>(by),
+                         {static_cast<float>(depth), static_cast<float>(q.x), static_cast<float>(q.y),
+                          static_cast<float>(q.z), c.r, c.g, c.b, static_cast<float>(material[i])});
         }
-        game.step(lanes, outX.data(), outY.data(), outZ.data(), outColor.data(), kLanes);
-        for (std::size_t i = 0; i < kLanes && drawn < quota; ++i) {
-          if (std::isnan(outX[i])) {
-            seed(i);
-            if (fuse[i] > 0 || ++bad[i] < kBadRetries) continue;
-            bad[i] = 0;
-            ++drawn;
-            continue;
-          }
-          bad[i] = 0;
-          if (const std::size_t k = lanes.choice[i]; k < genomeXforms) {
-            const FlameXform& x = layer.flame.xforms[k];
-            material[i] = material[i] * (1.0 + x.materialSpeed) * 0.5 + x.material * (1.0 - x.materialSpeed) * 0.5;
-          }
-          if (fuse[i] > 0) {
-            --fuse[i];
-            continue;
-          }
-          ++drawn;
-          const bool visible = lanes.visible[i] != 0;
-          if (++orbitSamples[i] == kSubBatch) {
-            orbitSamples[i] = 0;
-            seed(i);
-            fuse[i] = kFuse;
-          }
-          if (!visible) continue;
-          const glm::vec3 c = paintsRgb ? flatPointColour(palette, outColor[i], flat.paletteMode, lanes.rgb[i])
-                                        : flatPaletteColour(palette, outColor[i], flat.paletteMode);
-          for (const Affine3& image : postSymmetry) {
-            const glm::dvec3 q = image.apply({outX[i], outY[i], outZ[i]});
-            for (SolidShadowMap& map : shadowMaps)
-              if (map.active) map.deposit(q);
-            double px = q.x, py = q.y, depth = q.z;
-            if (hasCamera) {
-              // JWildfire's solid rendering moves points by the camera only; its depth of field
-              // is a blur after shading, which the flat view leaves out.
-              const glm::dvec2 p = camera.projectSharp(q.x, q.y, q.z);
-              px = p.x;
-              py = p.y;
-              depth = camera.depth(q.x, q.y, q.z);
-            }
-            if (turned) {
-              const double dx = px - flat.centerX, dy = py - flat.centerY;
-              px = dx * cosTurn - dy * sinTurn + flat.centerX;
-              py = dx * sinTurn + dy * cosTurn + flat.centerY;
-            }
-            const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
-            if (!(bx >= 0.0 && by >= 0.0 && bx < rasterWidth && by < rasterHeight) || !std::isfinite(depth)) continue;
-            raster.deposit(static_cast<int>(bx), static_cast<int>(by),
-                           {static_cast<float>(depth), static_cast<float>(q.x), static_cast<float>(q.y),
-                            static_cast<float>(q.z), c.r, c.g, c.b, static_cast<float>(material[i])});
-          }
-        }
-      }
+      };
+      if (!runFlatTask(game, rng, quota, options, cancelled, lanes, seeded, chosen, draw)) return;
     }
   });
   if (cancelled) throw FlatRenderCancelled{};
@@ -660,68 +679,35 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
       const std::uint64_t quota = total / tasks + (task < total % tasks ? 1 : 0);
       SplitMix64 rng(options.seed * 0x9e3779b97f4a7c15ULL + task + 1);
       ChaosLanes lanes;
-      lanes.resize(kLanes);
-      std::vector<int> fuse(kLanes, kFuse), bad(kLanes, 0);
-      std::vector<std::uint64_t> orbitSamples(kLanes, 0);
-      for (std::size_t i = 0; i < kLanes; ++i) game.seedLane(lanes, i, rng);
-      std::vector<double> outX(kLanes), outY(kLanes), outZ(kLanes), outColor(kLanes);
-      std::uint64_t drawn = 0;
-      std::uint64_t steps = 0;
-      while (drawn < quota) {
-        if ((++steps & 255) == 0 &&
-            (cancelled.load(std::memory_order_relaxed) || (options.cancel && options.cancel->load()))) {
-          cancelled = true;
-          return;
+      const auto draw = [&](std::size_t i, double x, double y, double z, double colour) {
+        const glm::vec3 c = paintsRgb ? flatPointColour(palette, colour, flat.paletteMode, lanes.rgb[i])
+                                      : flatPaletteColour(palette, colour, flat.paletteMode);
+        for (const Affine3& image : postSymmetry) {
+          const glm::dvec3 q = image.apply({x, y, z});
+          double px = q.x, py = q.y;
+          if (hasCamera) {
+            const double angle = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
+            const double blur = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
+            const glm::dvec2 p = camera.project(px, py, q.z, angle, blur);
+            px = p.x;
+            py = p.y;
+          }
+          if (turned) {
+            const double dx = px - flat.centerX, dy = py - flat.centerY;
+            px = dx * cosTurn - dy * sinTurn + flat.centerX;
+            py = dx * sinTurn + dy * cosTurn + flat.centerY;
+          }
+          const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
+          if (!(bx >= drawnLeft && by >= drawnTop && bx < drawnRight && by < drawnBottom)) continue;
+          float* v = histogram.at(static_cast<int>(bx), static_cast<int>(by));
+          v[0] += c.r;
+          v[1] += c.g;
+          v[2] += c.b;
+          v[3] += 1.0f;
         }
-        game.step(lanes, outX.data(), outY.data(), outZ.data(), outColor.data(), kLanes);
-        for (std::size_t i = 0; i < kLanes && drawn < quota; ++i) {
-          if (std::isnan(outX[i])) {  // a bad value: on from a random point, as flam3 goes on
-            game.seedLane(lanes, i, rng);
-            if (fuse[i] > 0 || ++bad[i] < kBadRetries) continue;
-            bad[i] = 0;
-            ++drawn;
-            continue;
-          }
-          bad[i] = 0;
-          if (fuse[i] > 0) {
-            --fuse[i];
-            continue;
-          }
-          ++drawn;
-          const bool visible = lanes.visible[i] != 0;
-          if (++orbitSamples[i] == kSubBatch) {  // this orbit's sub-batch is drawn: the next starts afresh
-            orbitSamples[i] = 0;
-            game.seedLane(lanes, i, rng);
-            fuse[i] = kFuse;
-          }
-          if (!visible) continue;
-          const glm::vec3 c = paintsRgb ? flatPointColour(palette, outColor[i], flat.paletteMode, lanes.rgb[i])
-                                        : flatPaletteColour(palette, outColor[i], flat.paletteMode);
-          for (const Affine3& image : postSymmetry) {
-            const glm::dvec3 q = image.apply({outX[i], outY[i], outZ[i]});
-            double px = q.x, py = q.y;
-            if (hasCamera) {
-              const double angle = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
-              const double blur = camera.dofScale != 0.0 ? rng.uniform() : 0.0;
-              const glm::dvec2 p = camera.project(px, py, q.z, angle, blur);
-              px = p.x;
-              py = p.y;
-            }
-            if (turned) {
-              const double dx = px - flat.centerX, dy = py - flat.centerY;
-              px = dx * cosTurn - dy * sinTurn + flat.centerX;
-              py = dx * sinTurn + dy * cosTurn + flat.centerY;
-            }
-            const double bx = (px - left) * bucketsPerUnit, by = (py - top) * bucketsPerUnit;
-            if (!(bx >= drawnLeft && by >= drawnTop && bx < drawnRight && by < drawnBottom)) continue;
-            float* v = histogram.at(static_cast<int>(bx), static_cast<int>(by));
-            v[0] += c.r;
-            v[1] += c.g;
-            v[2] += c.b;
-            v[3] += 1.0f;
-          }
-        }
-      }
+      };
+      const auto nothing = [](std::size_t) {};
+      if (!runFlatTask(game, rng, quota, options, cancelled, lanes, nothing, nothing, draw)) return;
     }
   });
   if (cancelled) throw FlatRenderCancelled{};
