@@ -27,6 +27,26 @@ using core::VariationInfo;
 // A family no machine has: fontconfig offers its default sans-serif instead.
 constexpr const char* kMissingFont = "Zz No Such Family";
 
+// text_wf once at the point (0.3, −0.7, 0.5), weight 0.8, with these parameters and texts (text, font_name).
+glm::dvec3 runTextWf(const std::vector<double>& params, const std::vector<std::string>& texts, std::uint32_t seed) {
+  const VariationInfo& info = core::variationOrThrow("text_wf");
+  double x = 0.3, y = -0.7, z = 0.5, ox = 0.0, oy = 0.0, oz = 0.0, colour = 0.375;
+  std::uint32_t random = seed;
+  core::VariationInput in;
+  in.x = in.tx = &x;
+  in.y = in.ty = &y;
+  in.z = in.tz = &z;
+  in.random = &random;
+  in.count = 1;
+  in.weight = 0.8;
+  in.params = params.data();
+  in.affine = kAffine;
+  in.colour = &colour;
+  in.texts = texts.data();
+  info.apply(in, &ox, &oy, &oz);
+  return {ox, oy, oz};
+}
+
 // At font size 0 nothing is painted (Java draws nothing): JWildfire then adds a unit square's random point (Ψ₁, Ψ₂),
 // unweighted; z carried.
 const std::vector<PointCase>& pointCases() {
@@ -50,26 +70,10 @@ INSTANTIATE_TEST_SUITE_P(Cases, FlameVariationTextAtPoint, testing::ValuesIn(poi
 
 // The same with a text that is empty.
 TEST(FlameVariationText, EmptyTextAddsAUnitSquaresRandomPoint) {
-  const VariationInfo& info = core::variationOrThrow("text_wf");
-  const std::vector<double> params = {320, 0.5, 1, 1, 0, 0, 0};
-  const std::vector<std::string> texts = {"", "Arial"};
-  double x = 0.3, y = -0.7, z = 0.5, ox = 0.0, oy = 0.0, oz = 0.0, colour = 0.375;
-  std::uint32_t random = kHighSeed;
-  core::VariationInput in;
-  in.x = in.tx = &x;
-  in.y = in.ty = &y;
-  in.z = in.tz = &z;
-  in.random = &random;
-  in.count = 1;
-  in.weight = 0.8;
-  in.params = params.data();
-  in.affine = kAffine;
-  in.colour = &colour;
-  in.texts = texts.data();
-  info.apply(in, &ox, &oy, &oz);
-  EXPECT_DOUBLE_EQ(ox, 0.8794664144515991);
-  EXPECT_DOUBLE_EQ(oy, 0.545325517654419);
-  EXPECT_DOUBLE_EQ(oz, 0.4);
+  const glm::dvec3 out = runTextWf({320, 0.5, 1, 1, 0, 0, 0}, {"", "Arial"}, kHighSeed);
+  EXPECT_DOUBLE_EQ(out.x, 0.8794664144515991);
+  EXPECT_DOUBLE_EQ(out.y, 0.545325517654419);
+  EXPECT_DOUBLE_EQ(out.z, 0.4);
 }
 
 // The picture's layout is JWildfire's TextTransformer's: the text's size plus the font size on every
@@ -109,34 +113,20 @@ TEST(FlameVariationText, TheTextIsCentredInAnImageOfItsSizePlusTheFontSizeOnEver
 // text_wf adds 3 (scale X + offset) of the pixel Ψ₁ picks, (X, Y) its place in the picture over the picture's width
 // and height; the weight does not scale it.
 TEST(FlameVariationText, TheKernelAddsThePickedPixelScaledAndMoved) {
-  const VariationInfo& info = core::variationOrThrow("text_wf");
   const std::vector<std::string> texts = {"Hello", kMissingFont};
   const TextRaster raster = rasteriseText(texts[0], texts[1], 64, 0);
   ASSERT_GT(raster.column.size(), 1u);
   const std::vector<double> params = {64, 0.0, 1.5, -0.5, 0.25, 0.125, 0};  // antialias 0: no blur
   for (const std::uint32_t seed : {kHighSeed, kLowSeed}) {
-    double x = 0.3, y = -0.7, z = 0.5, ox = 0.0, oy = 0.0, oz = 0.0, colour = 0.375;
-    std::uint32_t random = seed;
-    core::VariationInput in;
-    in.x = in.tx = &x;
-    in.y = in.ty = &y;
-    in.z = in.tz = &z;
-    in.random = &random;
-    in.count = 1;
-    in.weight = 0.8;
-    in.params = params.data();
-    in.affine = kAffine;
-    in.colour = &colour;
-    in.texts = texts.data();
-    info.apply(in, &ox, &oy, &oz);
+    const glm::dvec3 out = runTextWf(params, texts, seed);
     std::uint32_t replay = seed;
     const double psi = core::laneUniform(replay);
     const auto k = static_cast<std::size_t>(psi * static_cast<double>(raster.column.size()));
     const double px = (raster.column[k] - raster.width / 2.0) / raster.width;
     const double py = (raster.row[k] - raster.height / 2.0) / raster.height;
-    EXPECT_NEAR(ox, 3.0 * (1.5 * px + 0.25), 1e-12);
-    EXPECT_NEAR(oy, 3.0 * (-0.5 * py + 0.125), 1e-12);
-    EXPECT_NEAR(oz, 0.4, 1e-12);
+    EXPECT_NEAR(out.x, 3.0 * (1.5 * px + 0.25), 1e-12);
+    EXPECT_NEAR(out.y, 3.0 * (-0.5 * py + 0.125), 1e-12);
+    EXPECT_NEAR(out.z, 0.4, 1e-12);
   }
 }
 
@@ -151,25 +141,10 @@ TEST(FlameVariationText, OddSizesAndLongTextsStayBounded) {
   EXPECT_TRUE(none.column.empty());
   const TextRaster longText = rasteriseText(std::string(100000, 'x'), kMissingFont, 50, 0);
   EXPECT_LE(longText.width, 2 * core::kTextRasterMaxSide);
-  const VariationInfo& info = core::variationOrThrow("text_wf");
   const std::vector<std::string> texts = {"Hi", kMissingFont};
   for (const double size : {std::nan(""), 0.0, -5.0, 1e300}) {
-    const std::vector<double> params = {size, 0.5, 1, 1, 0, 0, 0};
-    double x = 0.3, y = -0.7, z = 0.5, ox = 0.0, oy = 0.0, oz = 0.0, colour = 0.375;
-    std::uint32_t random = kLowSeed;
-    core::VariationInput in;
-    in.x = in.tx = &x;
-    in.y = in.ty = &y;
-    in.z = in.tz = &z;
-    in.random = &random;
-    in.count = 1;
-    in.weight = 0.8;
-    in.params = params.data();
-    in.affine = kAffine;
-    in.colour = &colour;
-    in.texts = texts.data();
-    info.apply(in, &ox, &oy, &oz);
-    EXPECT_TRUE(std::isfinite(ox) && std::isfinite(oy)) << size;
+    const glm::dvec3 out = runTextWf({size, 0.5, 1, 1, 0, 0, 0}, texts, kLowSeed);
+    EXPECT_TRUE(std::isfinite(out.x) && std::isfinite(out.y)) << size;
   }
 }
 
