@@ -14,8 +14,6 @@
 #include <string>
 #include <vector>
 
-#include <glm/vec3.hpp>
-
 #include "core/chaos_game.h"
 #include "core/error.h"
 #include "core/flame/flame.h"
