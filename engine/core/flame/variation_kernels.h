@@ -136,6 +136,22 @@ inline std::int32_t javaInt(double value) {
   return static_cast<std::int32_t>(value);
 }
 
+// A painted pixel of a picture JWildfire's svg_wf and text_wf draw from: pixel ⌊Ψ₁ count⌋ of (px, py),
+// moved by JWildfire's blur (e^{radius √(−ln(1 − Ψ₂))} − 1) / 1000 along 2πΨ₃ when radius > 0.01 (JWildfire
+// takes −ln Ψ₂, infinite at 0; 1 − Ψ₂ has the same distribution and never is). count must be at least 1.
+inline void pickBlurredPixel(const double* px, const double* py, std::size_t count, double radius, std::uint32_t& state,
+                             double& x, double& y) {
+  const auto k = std::min(static_cast<std::size_t>(laneUniform(state) * static_cast<double>(count)), count - 1);
+  x = px[k];
+  y = py[k];
+  if (radius > 0.01) {
+    const double dr = (std::exp(radius * std::sqrt(-std::log(1.0 - laneUniform(state)))) - 1.0) * 0.001;
+    const double da = laneUniform(state) * kTwoPi;
+    x += dr * std::cos(da);
+    y += dr * std::sin(da);
+  }
+}
+
 // JWildfire's dbl2int of a colour channel in [0, 1]: ⌊256 c⌋ as Java's int, held within 0 … 255 (a byte).
 inline double rgbByte(double c) {
   return std::clamp(static_cast<double>(javaInt(std::floor(c * 256.0))), 0.0, 255.0);

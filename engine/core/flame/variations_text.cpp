@@ -83,17 +83,10 @@ VOXFLAME_VARIATION_TARGETS void textWf(const VariationInput& in, double* __restr
   const std::size_t count = points ? points->x.size() : 0;
   const double* __restrict px = points ? points->x.data() : nullptr;
   const double* __restrict py = points ? points->y.data() : nullptr;
-  const bool blur = blurRadius > 0.01;
   for (std::size_t i = 0; i < n; ++i) {
     if (count > 1) {
-      const auto k = std::min(static_cast<std::size_t>(laneUniform(rnd[i]) * static_cast<double>(count)), count - 1);
-      double rawX = px[k], rawY = py[k];
-      if (blur) {
-        const double dr = (std::exp(blurRadius * std::sqrt(-std::log(1.0 - laneUniform(rnd[i])))) - 1.0) * 0.001;
-        const double da = laneUniform(rnd[i]) * kTwoPi;
-        rawX += dr * std::cos(da);
-        rawY += dr * std::sin(da);
-      }
+      double rawX, rawY;
+      pickBlurredPixel(px, py, count, blurRadius, rnd[i], rawX, rawY);
       outX[i] += (rawX * scaleX + offsetX) * kTextScale;
       outY[i] += (rawY * scaleY + offsetY) * kTextScale;
     } else {
