@@ -41,8 +41,8 @@ core::BackendKind resolveBackend(BackendChoice choice, const std::vector<core::P
 
 std::unique_ptr<core::RefinementBackend> makeBackend(core::BackendKind kind,
                                                      std::shared_ptr<const core::InsideMask> mask, int threads,
-                                                     std::shared_ptr<core::CoreBudget> cores) {
-  if (kind == core::BackendKind::Gpu) return std::make_unique<gl::GpuAccumulator>(std::move(mask));
+                                                     std::shared_ptr<core::CoreBudget> cores, gl::ShareGroup renderer) {
+  if (kind == core::BackendKind::Gpu) return std::make_unique<gl::GpuAccumulator>(std::move(mask), renderer);
   return std::make_unique<core::Accumulator>(std::move(mask), threads, std::move(cores));
 }
 

@@ -11,6 +11,7 @@
 #include "core/inside_mask.h"
 #include "core/refinement/refinement_backend.h"
 #include "core/scene.h"
+#include "gl/headless_context.h"
 
 namespace voxflame::app {
 
@@ -27,8 +28,12 @@ core::BackendKind resolveBackend(BackendChoice choice, const std::vector<core::P
                                  core::RenderMethod method = core::RenderMethod::Volume);
 
 // A backend of `kind` on `mask`. threads and cores are the CPU's (0: every hardware thread).
+// `renderer`: the context of the renderer that will draw the grid (gl::currentShareGroup() on its
+// thread; empty: none, or another process's). A GPU backend sharing it hands its grid to the
+// renderer on the GPU (RefinementBackend::packOnDevice).
 std::unique_ptr<core::RefinementBackend> makeBackend(core::BackendKind kind,
                                                      std::shared_ptr<const core::InsideMask> mask, int threads = 0,
-                                                     std::shared_ptr<core::CoreBudget> cores = nullptr);
+                                                     std::shared_ptr<core::CoreBudget> cores = nullptr,
+                                                     gl::ShareGroup renderer = {});
 
 }  // namespace voxflame::app

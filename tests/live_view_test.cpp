@@ -760,6 +760,39 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
   EXPECT_TRUE(gpuSession.status().backendNote.empty());
 }
 
+// With the GPU backend the grid never leaves the device: the backend shares the view's context,
+// packs its grid there, and the view copies it and sweeps its shadow there. The picture at rest is
+// the one the CPU backend's grid gives (another sampling of the same pattern), lit alike.
+TEST_F(LiveViewTest, TheGpuBackendsGridReachesTheViewOnTheGpuAndLooksLikeTheCpus) {
+  edit([&](core::Scene& scene) {
+    scene.render.lighting = true;
+    scene.points = 3'000'000;
+  });
+  std::vector<std::uint8_t> pictures[2];
+  for (const app::BackendChoice choice : {app::BackendChoice::Cpu, app::BackendChoice::Gpu}) {
+    SCOPED_TRACE(std::string(app::toString(choice)));
+    app::ExplorerSession refining{1, std::chrono::milliseconds(50)};
+    state.services.settings.refinementBackend = choice;
+    app::LiveView view(refining);
+    ASSERT_TRUE(
+        runUntilRest(refining, view, [&] { app::liveFrame(view, state, kWidth, kHeight, canvas.framebuffer()); }));
+    const app::SessionStatus status = refining.status();
+    EXPECT_EQ(status.backend, choice == app::BackendChoice::Gpu ? core::BackendKind::Gpu : core::BackendKind::Cpu);
+    EXPECT_EQ(status.gridOnDevice, choice == app::BackendChoice::Gpu);
+    canvas.save(std::string("gpu_grid_") + std::string(app::toString(choice)));
+    pictures[choice == app::BackendChoice::Gpu ? 1 : 0] = canvas.pixels();
+  }
+  state.services.settings.refinementBackend = app::BackendChoice::Cpu;
+  double difference = 0.0, total = 0.0;
+  for (std::size_t i = 0; i < pictures[0].size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c) {
+      difference += std::abs(static_cast<int>(pictures[0][i + c]) - static_cast<int>(pictures[1][i + c]));
+      total += pictures[0][i + c];
+    }
+  ASSERT_GT(total, 0.0);
+  EXPECT_LT(difference / total, 0.08) << "the GPU's grid drew another picture";
+}
+
 // The session's gridIdle on either backend (RefinementBackend::idle): false while the large grid
 // refines, true once a hold has let the work under way land, and from then on the grid adds
 // nothing for as long as the hold lasts (checked at the session's next news: a steer of its

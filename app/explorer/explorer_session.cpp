@@ -86,14 +86,14 @@ struct ExplorerSession::Proxy {
 struct ExplorerSession::Engine {
   Engine(std::string key, std::shared_ptr<const core::InsideMask> insideMask,
          std::shared_ptr<const core::InsideMask> proxyMask, int threads, std::chrono::milliseconds interval,
-         core::BackendKind kind)
+         core::BackendKind kind, gl::ShareGroup renderer)
       : shapeKey(std::move(key)),
         mask(std::move(insideMask)),
         // The proxy's burst and the large grid run at once after each edit: they share the cores
         // rather than each keeping a worker runnable per core (twice the cores queueing).
         cores(proxyMask ? std::make_shared<core::CoreBudget>(resolvedThreads(threads)) : nullptr),
         proxy(proxyMask ? std::make_unique<Proxy>(std::move(proxyMask), threads, cores) : nullptr),
-        backend(makeBackend(kind, mask, threads, cores)),
+        backend(makeBackend(kind, mask, threads, cores, renderer)),
         accumulator(*backend),
         publisher(accumulator, interval) {
     initialCapPoints = std::clamp<std::uint64_t>(
@@ -269,17 +269,21 @@ SessionStatus ExplorerSession::status() const {
   status.paused = paused_ && holding_ && !capped_ && !converged_;
   status.escapeNote = escapeNote_;
   status.showingLastBounded = showingLastBounded_;
-  if (engine_) status.backend = engine_->backend->kind();
+  if (engine_) {
+    status.backend = engine_->backend->kind();
+    status.gridOnDevice = engine_->backend->packsOnDevice();
+  }
   status.backendNote = backendNote_;
   status.resting = engine_ && holding_ && status.stats.done && !buildingShape_ && !pending_ && !working_ &&
                    !steerRequested_ && engine_->publisher.caughtUp();
   return status;
 }
 
-void ExplorerSession::setBackendChoice(BackendChoice choice) {
+void ExplorerSession::setBackendChoice(BackendChoice choice, core::RenderMethod method) {
   std::lock_guard lock(mutex_);
-  if (backendChoice_ == choice) return;
+  if (backendChoice_ == choice && backendMethod_ == method) return;
   backendChoice_ = choice;
+  backendMethod_ = method;
   // The next post applies it; the scene being shown is posted again so it applies now.
   if (!pending_ && lastPosted_) {
     pending_ = *lastPosted_;
@@ -522,14 +526,17 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
     try {
       // The backend is part of what the grid is: another one rebuilds it, as another mesh does.
       BackendChoice choice = BackendChoice::Cpu;
+      core::RenderMethod method = core::RenderMethod::Volume;
       {
         std::lock_guard lock(mutex_);
         choice = backendChoice_;
+        method = backendMethod_;
       }
       std::string backendNote;
       core::BackendKind kind = core::BackendKind::Cpu;
       try {
-        kind = resolveBackend(choice, scene.layers);
+        // The points method projects the grid's points on the CPU, dimmed by a grid in host memory.
+        kind = resolveBackend(choice, scene.layers, method);
       } catch (const core::Error& why) {
         backendNote = std::string(why.what()) + "; refining on the CPU";
       }
@@ -573,13 +580,14 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
           old.reset();
           std::unique_ptr<Engine> engine;
           try {
-            engine = std::make_unique<Engine>(key, mask, proxyMask, threads_, snapshotInterval_, kind);
+            engine =
+                std::make_unique<Engine>(key, mask, proxyMask, threads_, snapshotInterval_, kind, rendererShareGroup());
           } catch (const core::Error& why) {
             if (kind == core::BackendKind::Cpu) throw;
             // No GPU context here after all (or the grid does not fit it): the CPU refines.
             backendNote = std::string(why.what()) + "; refining on the CPU";
             engine = std::make_unique<Engine>(key, std::move(mask), std::move(proxyMask), threads_, snapshotInterval_,
-                                              core::BackendKind::Cpu);
+                                              core::BackendKind::Cpu, gl::ShareGroup{});
           }
           engine->publisher.setObserver(&news_);
           if (engine->proxy) engine->proxy->publisher.setObserver(&news_);

@@ -62,6 +62,9 @@ struct SessionStatus {
   // What refines the large grid (setBackendChoice), and why it is not what was chosen, or empty.
   core::BackendKind backend = core::BackendKind::Cpu;
   std::string backendNote;
+  // The GPU backend hands its grid to the renderer on the GPU (PackedVolume::device); else the grid
+  // is read back and uploaded (a window whose context is not EGL's cannot share it).
+  bool gridOnDevice = false;
 };
 
 class ExplorerSession {
@@ -181,7 +184,15 @@ class ExplorerSession {
   // Gpu takes it wherever it runs the pattern. A pattern it does not run (a flame) refines on the
   // CPU, and the status says why. A change of backend rebuilds the grid (the mask comes from the
   // cache); the proxy always refines on the CPU. Cheap when nothing changed: call it every frame.
-  void setBackendChoice(BackendChoice choice);
+  // `method`: the points method projects the grid's points on the CPU, so it refines there.
+  void setBackendChoice(BackendChoice choice, core::RenderMethod method = core::RenderMethod::Volume);
+  // The context of the renderer that draws this session's volumes (gl::currentShareGroup() on the
+  // thread that draws): a GPU backend made from then on shares it and hands its grid over on the
+  // GPU, with no read-back or upload (PackedVolume::device). Empty (the default): through host memory.
+  void setRendererShareGroup(gl::ShareGroup renderer) {
+    std::lock_guard lock(mutex_);
+    renderer_ = renderer;
+  }
 
   // The inside mask of the current shape (null before the first shape is ready): the points
   // picture iterates the pattern over it.
@@ -271,6 +282,12 @@ class ExplorerSession {
   std::string escapeNote_;
   bool showingLastBounded_ = false;
   BackendChoice backendChoice_ = BackendChoice::Cpu;
+  core::RenderMethod backendMethod_ = core::RenderMethod::Volume;
+  gl::ShareGroup renderer_;  // setRendererShareGroup
+  gl::ShareGroup rendererShareGroup() const {
+    std::lock_guard lock(mutex_);
+    return renderer_;
+  }
   std::optional<core::Scene> lastPosted_;  // posted again when the backend choice changes
   std::string backendNote_;
   std::jthread control_;  // last: started after everything it uses exists

@@ -63,9 +63,13 @@ double millisecondsSince(std::chrono::steady_clock::time_point start) {
 
 LiveView::LiveView(ExplorerSession& session) : session_(session) {
   session_.restartTakeover();  // nothing of this view's is on screen yet
+  // A GPU backend made from now on fills textures this context reads (on this, the drawing thread).
+  session_.setRendererShareGroup(gl::currentShareGroup());
 }
 
-LiveView::~LiveView() = default;
+LiveView::~LiveView() {
+  session_.setRendererShareGroup({});  // this view's context goes with it
+}
 
 void LiveView::takeVolume() {
   newVolumeShown_ = false;
@@ -169,6 +173,16 @@ void LiveView::keepShadowInStep(const core::RenderSettingsDoc& render) {
     const glm::dvec3 light = core::lightDirection(render.lightAzimuthDeg, render.lightElevationDeg);
     // The proxy is small: full-resolution shadows cost little there.
     const int downsample = proxy ? 1 : kShadowDownsample;
+    if (volume->onDevice()) {
+      // Packed on the GPU, the volume has no host copy: its shadow is swept there too, from the
+      // textures just copied (a millisecond or so on a GPU), in this frame.
+      const bool hadShadow = renderer_.hasShadow();
+      renderer_.computeShadow(renderer_.marchedSource(), light, core::kAbsorptionPerDensity, downsample);
+      shadowShown_ = wanted;
+      shadowSourceSize_ = volume->geometry.size;
+      restartSamples(hadShadow);
+      return;
+    }
     shadowJob_.start([volume, light, downsample](std::stop_token stop) {
       core::ShadowVolume shadow;
       core::computeShadowVolume(*volume, light, core::kAbsorptionPerDensity, downsample, shadow, stop);
@@ -298,7 +312,9 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
                                   renderer_.hasVolume(gl::VolumeRenderer::Source::Main) &&
                                   session_.shownMainPost() >= lastPost_ && !mainMixed_ && !uploadInProgress_;
     std::shared_ptr<const core::InsideMask> mask = gridShowsPattern ? session_.mask() : nullptr;
-    if (!mask || mask->geometry.size != shown_->geometry.size) return false;
+    // A volume packed on the GPU has no host copy to dim the points by; the session refines on the
+    // CPU under the points method, so one only shows until that grid's first volume.
+    if (!mask || mask->geometry.size != shown_->geometry.size || shown_->onDevice()) return false;
     LivePointsRequest request;
     request.scene = scene;
     request.mask = std::move(mask);
@@ -585,7 +601,7 @@ LiveFrame LiveView::frame(const core::Scene& scene, const LiveInputs& inputs, Fr
   // Under the points method the grid only dims the points: it stops where an export's does, and
   // once the points are being projected, where it was when they started (they are dimmed by that
   // one; refining it further would only take their cores).
-  session_.setBackendChoice(inputs.backend);
+  session_.setBackendChoice(inputs.backend, scene.render.method);
   session_.setRefinement(inputs.refineUntilNoise, inputs.exportRunning, held, held && viewOnly,
                          !pointsMethod_                 ? 0
                          : pointsKey_ && !pointsFailed_ ? std::max<std::uint64_t>(pointsGridPoints_, 1)

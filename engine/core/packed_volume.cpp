@@ -104,6 +104,7 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
   ColourLayout perVoxel;
   perVoxel.size = g.size;
   prepare(out, g, perVoxel);
+  out.device.reset();
   out.packedFromGrid = 0;
   out.version = snapshot.version;
   out.generation = snapshot.generation;
@@ -144,6 +145,12 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out) {
 }
 
 bool packVolume(const RefinementBackend& accumulator, PackedVolume& out, const std::atomic<bool>* cancel) {
+  if (accumulator.packOnDevice(out)) return true;
+  return packVolumeOnHost(accumulator, out, cancel);
+}
+
+bool packVolumeOnHost(const RefinementBackend& accumulator, PackedVolume& out, const std::atomic<bool>* cancel) {
+  out.device.reset();
   const GridGeometry& g = accumulator.mask().geometry;
   const ColourLayout& colour = accumulator.colourLayout();
   prepare(out, g, colour);

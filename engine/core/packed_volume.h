@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -26,6 +27,13 @@ inline constexpr int kBrickSize = 1 << kBrickShift;
 // Empty distances stop here (an R8UI texel): a ray in the middle of nothing leaps at most this
 // many bricks at once.
 inline constexpr int kMaxEmptyDistance = 255;
+
+// A packed volume that lives in the GPU's memory instead of the host's: what a GPU refinement backend
+// packs where the renderer can read it (gl/gpu_volume.h). Opaque here: core knows no GL.
+class DeviceVolume {
+ public:
+  virtual ~DeviceVolume() = default;
+};
 
 struct PackedVolume {
   GridGeometry geometry;
@@ -57,6 +65,11 @@ struct PackedVolume {
   // The accumulator last packed into this buffer (GridReading::gridId; 0: none): a buffer it
   // packed before already holds zeros wherever its mask has no voxel, so those rows are skipped.
   std::uint64_t packedFromGrid = 0;
+  // Set where the volume was packed on the GPU (RefinementBackend::packOnDevice): the textures are
+  // there, and density, colours, occupancy and emptyDistance above are empty (maxDensity and
+  // meanDensity are not measured). The renderer copies it on the GPU instead of uploading.
+  std::shared_ptr<DeviceVolume> device;
+  bool onDevice() const { return device != nullptr; }
 };
 
 // From a snapshot (stills, tests): a colour cell per voxel.
@@ -66,7 +79,11 @@ void packVolume(const VolumeSnapshot& snapshot, PackedVolume& out);
 // reads true the remaining slabs are skipped and false is returned: `out` is then not a volume to
 // show (its packedFromGrid still says whether its outside rows are zero). A pack at 512³ takes
 // half a second of a core, which the frames of a drag that began meanwhile need more.
+// A backend that packs on the GPU for the renderer (RefinementBackend::packOnDevice) packs there.
 bool packVolume(const RefinementBackend& accumulator, PackedVolume& out, const std::atomic<bool>* cancel = nullptr);
+// The same pack into host memory whatever the backend (a still's, a test's).
+bool packVolumeOnHost(const RefinementBackend& accumulator, PackedVolume& out,
+                      const std::atomic<bool>* cancel = nullptr);
 
 // The bytes a packed volume of this grid holds (and the renderer's textures, which mirror it).
 std::size_t packedVolumeBytes(const GridGeometry& grid);

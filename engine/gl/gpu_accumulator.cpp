@@ -17,7 +17,9 @@
 #include "core/chunk_sums.h"
 #include "core/error.h"
 #include "core/random.h"
+#include "core/packed_volume.h"
 #include "gl/flame_kernel.h"
+#include "gl/gpu_volume.h"
 #include "gl/headless_context.h"
 #include "gl/renderer_kind.h"
 #include "gl/shader_program.h"
@@ -28,7 +30,7 @@ namespace {
 
 constexpr GLuint kOrbitsBinding = 0, kCellsBinding = 1, kHitsBinding = 2, kSeedsBinding = 3, kCountersBinding = 4,
                  kPaletteBinding = 5, kMaskBinding = 6, kSampleBinding = 7, kFlameDataBinding = 8,
-                 kFlamePickBinding = 9;
+                 kFlamePickBinding = 9, kDistanceInBinding = 10, kDistanceOutBinding = 11;
 constexpr int kTransientSteps = 32;  // as the CPU's: steps an orbit takes before it may add a point
 // accumulate.comp.glsl's Orbit: an attractor's, and a chaos game's with its state, colour and stream
 // (112 bytes with a float state, 128 with a double one: the larger serves both).
@@ -168,9 +170,14 @@ struct GpuAccumulator::Device {
   std::vector<LayerUniforms> layers;
   std::map<std::string, ShaderProgram> programs;  // by their defines
   bool hitsInCells = true;
+  // The volumes packed for the renderer (packOnDevice): one is free to pack into again when only
+  // this list holds it. The bricks' distance buffers of the pack, ping and pong.
+  std::vector<std::shared_ptr<GpuVolume>> volumes;
+  GLuint distance[2] = {0, 0};
 
   ~Device() {
-    for (GLuint* b : {&cells, &hits, &counters, &mask, &sample})
+    for (const std::shared_ptr<GpuVolume>& volume : volumes) deleteVolume(*volume);
+    for (GLuint* b : {&cells, &hits, &counters, &mask, &sample, &distance[0], &distance[1]})
       if (*b) glDeleteBuffers(1, b);
     for (auto* list : {&orbits, &seeds, &palettes, &flameData, &flamePicks})
       if (!list->empty()) glDeleteBuffers(static_cast<GLsizei>(list->size()), list->data());
@@ -204,9 +211,67 @@ struct GpuAccumulator::Device {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCellsBinding, cells);
     if (hits) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kHitsBinding, hits);
   }
+
+  // Deletes a volume's textures once no copy of them is under way or pending: a renderer still
+  // holding the volume then finds it gone (GpuVolume::alive) and copies nothing.
+  static void deleteVolume(GpuVolume& volume) {
+    GLsync copied = nullptr;
+    {
+      std::lock_guard lock(volume.mutex);
+      volume.alive = false;
+      copied = std::exchange(volume.copied, nullptr);
+    }
+    if (copied) {
+      // The copy was flushed with its sync (VolumeRenderer), so this wait ends; a second bounds a lost device.
+      glClientWaitSync(copied, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000);
+      glDeleteSync(copied);
+    }
+    if (volume.packed) glDeleteSync(std::exchange(volume.packed, nullptr));
+    for (GLuint* texture : {&volume.colour, &volume.density, &volume.emptyDistance})
+      if (*texture) glDeleteTextures(1, texture);
+  }
+
+  // A volume of these sizes to pack into: a free one, else a new one (volumes of other sizes,
+  // from before a change of grid, are deleted once free).
+  GpuVolume& freeVolume(glm::ivec3 size, glm::ivec3 colourSize, glm::ivec3 brickCount) {
+    std::shared_ptr<GpuVolume> found;
+    for (auto it = volumes.begin(); it != volumes.end();) {
+      const bool free = it->use_count() == 1;
+      const bool fits = (*it)->size == size && (*it)->colourSize == colourSize;
+      if (free && fits && !found) {
+        found = *it;
+      } else if (free && !fits) {
+        deleteVolume(**it);
+        it = volumes.erase(it);
+        continue;
+      }
+      ++it;
+    }
+    if (found) return *found;
+    auto volume = std::make_shared<GpuVolume>();
+    volume->size = size;
+    volume->colourSize = colourSize;
+    volume->brickCount = brickCount;
+    auto texture = [](GLenum format, glm::ivec3 extent) {
+      GLuint id = 0;
+      glGenTextures(1, &id);
+      glBindTexture(GL_TEXTURE_3D, id);
+      glTexStorage3D(GL_TEXTURE_3D, 1, format, extent.x, extent.y, extent.z);
+      glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+      return id;
+    };
+    volume->colour = texture(GL_RGBA16F, colourSize);
+    volume->density = texture(GL_R16F, size);
+    volume->emptyDistance = texture(GL_R8UI, brickCount);
+    glBindTexture(GL_TEXTURE_3D, 0);
+    volumes.push_back(volume);
+    return *volume;
+  }
 };
 
-GpuAccumulator::GpuAccumulator(std::shared_ptr<const core::InsideMask> mask) : mask_(std::move(mask)) {
+GpuAccumulator::GpuAccumulator(std::shared_ptr<const core::InsideMask> mask, ShareGroup shareWith)
+    : mask_(std::move(mask)), shareWith_(shareWith) {
   if (!mask_) throw core::Error("the GPU backend needs an inside mask");
   const core::GridGeometry& g = mask_->geometry;
   const std::size_t voxels = g.voxelCount();
@@ -263,7 +328,17 @@ void GpuAccumulator::loop(std::stop_token stop, std::exception_ptr* startError, 
   std::unique_ptr<Device> device;
   try {
     device = std::make_unique<Device>();
-    device->context = std::make_unique<HeadlessContext>();
+    if (!shareWith_.empty()) {
+      // Where the renderer's context cannot share (another process's display, a driver that
+      // refuses), the backend still runs, and its grid reaches the renderer through host memory.
+      try {
+        device->context = std::make_unique<HeadlessContext>(shareWith_);
+        sharesWithRenderer_ = true;
+      } catch (const core::Error&) {
+        device->context.reset();
+      }
+    }
+    if (!device->context) device->context = std::make_unique<HeadlessContext>();
     renderer_ = device->context->renderer();
     software_ = softwareRasteriser();
     // A software rasteriser runs a dispatch on the CPU's cores: as many orbits as the CPU backend
@@ -754,6 +829,101 @@ void GpuAccumulator::sampleDensity(core::DensitySample& out) const {
     glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(count * sizeof(std::uint32_t)),
                        out.hits.data());
   });
+}
+
+bool GpuAccumulator::packOnDevice(core::PackedVolume& out) const {
+  if (!sharesWithRenderer_) return false;
+  // The volume this buffer held goes back to the pool first, so the pack can reuse its textures.
+  out.device.reset();
+  const core::GridGeometry& g = mask_->geometry;
+  const glm::ivec3 bricks = (g.size + (core::kBrickSize - 1)) / core::kBrickSize;
+  const std::size_t brickCount = static_cast<std::size_t>(bricks.x) * bricks.y * bricks.z;
+  runOnDevice([&](Device& device) {
+    out.geometry = g;
+    out.colour = colour_;
+    out.brickCount = bricks;
+    out.version = version_.load();
+    out.generation = generation_.load();
+    out.points = points_.load();
+    // Texels hold density relative to the mesh's mean, as core::packVolume's do.
+    const double inside = static_cast<double>(std::max<std::uint64_t>(insideVoxels_, 1));
+    out.referenceDensity = out.points > 0 ? static_cast<double>(out.points) / inside : 1.0;
+    out.insideVoxels = inside;
+    out.texelDensity = static_cast<float>(out.referenceDensity);
+    const float inverseScale = 1.0f / out.texelDensity;
+
+    GpuVolume& volume = device.freeVolume(g.size, colour_.size, bricks);
+    {
+      std::lock_guard lock(volume.mutex);
+      // The renderer's last copy of these textures must be done before they are written again.
+      if (volume.copied) {
+        glWaitSync(volume.copied, 0, GL_TIMEOUT_IGNORED);
+        glDeleteSync(std::exchange(volume.copied, nullptr));
+      }
+      if (volume.packed) glDeleteSync(std::exchange(volume.packed, nullptr));
+    }
+    for (GLuint& buffer : device.distance) {
+      if (!buffer) glGenBuffers(1, &buffer);
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+      GLint64 bytes = 0;
+      glGetBufferParameteri64v(GL_SHADER_STORAGE_BUFFER, GL_BUFFER_SIZE, &bytes);
+      if (static_cast<std::size_t>(bytes) != brickCount * sizeof(GLuint))
+        glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(brickCount * sizeof(GLuint)), nullptr,
+                     GL_DYNAMIC_COPY);
+    }
+    const GLuint empty = core::kMaxEmptyDistance;
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.distance[0]);
+    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+
+    auto bindPass = [&](const char* define) -> const ShaderProgram& {
+      const ShaderProgram& program = device.program("pack_volume.comp.glsl", define, false);
+      glUseProgram(program.id());
+      glUniform3i(program.uniform("uSize"), g.size.x, g.size.y, g.size.z);
+      glUniform3i(program.uniform("uColourSize"), colour_.size.x, colour_.size.y, colour_.size.z);
+      glUniform1i(program.uniform("uColourShift"), colour_.shift);
+      glUniform3i(program.uniform("uBricks"), bricks.x, bricks.y, bricks.z);
+      glUniform1f(program.uniform("uInverseScale"), inverseScale);
+      return program;
+    };
+    auto groups = [](std::size_t invocations) { return static_cast<GLuint>((invocations + 255) / 256); };
+    device.bindGrid();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDistanceInBinding, device.distance[0]);
+    glBindImageTexture(0, volume.density, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R16F);
+    glBindImageTexture(1, volume.colour, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glBindImageTexture(2, volume.emptyDistance, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R8UI);
+    bindPass("#define PACK_VOXELS\n");
+    glDispatchCompute(groups(g.voxelCount()), 1, 1);
+    bindPass("#define PACK_CELLS\n");
+    glDispatchCompute(groups(colour_.cellCount()), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    const ShaderProgram& distance = bindPass("#define EMPTY_DISTANCE\n");
+    for (int axis = 0; axis < 3; ++axis) {
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDistanceInBinding, device.distance[axis % 2]);
+      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDistanceOutBinding, device.distance[(axis + 1) % 2]);
+      glUniform1i(distance.uniform("uAxis"), axis);
+      glUniform1i(distance.uniform("uLastAxis"), axis == 2 ? 1 : 0);
+      glDispatchCompute(groups(brickCount), 1, 1);
+      glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    }
+    // Image stores are made visible to the renderer's copy by the barrier, then the sync it waits on.
+    glMemoryBarrier(GL_ALL_BARRIER_BITS);
+    {
+      std::lock_guard lock(volume.mutex);
+      volume.packed = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+    }
+    glFlush();  // the renderer's context waits on the sync: its commands must reach the device
+    if (glGetError() != GL_NO_ERROR) throw core::Error("the GPU backend could not pack its grid for the renderer");
+    for (const std::shared_ptr<GpuVolume>& held : device.volumes)
+      if (held.get() == &volume) out.device = held;
+  });
+  out.packedFromGrid = 0;  // the host buffers hold nothing of it
+  out.density.clear();
+  out.colours.clear();
+  out.occupancy.clear();
+  out.emptyDistance.clear();
+  out.maxDensity = 0.0f;
+  out.meanDensity = 0.0f;
+  return true;
 }
 
 void GpuAccumulator::snapshot(core::VolumeSnapshot& out) const {

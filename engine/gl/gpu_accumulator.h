@@ -31,6 +31,7 @@
 #include "core/inside_mask.h"
 #include "core/progress_signal.h"
 #include "core/refinement/refinement_backend.h"
+#include "gl/headless_context.h"
 
 namespace voxflame::gl {
 
@@ -47,8 +48,9 @@ bool hardwareGpuAvailable();
 class GpuAccumulator final : public core::RefinementBackend {
  public:
   // Starts the GPU thread and its context; throws core::Error when no OpenGL 4.3 context can be made
-  // or the grid does not fit.
-  explicit GpuAccumulator(std::shared_ptr<const core::InsideMask> mask);
+  // or the grid does not fit. With `shareWith` (the renderer's context, currentShareGroup() on its
+  // thread) the context shares its objects, and packOnDevice hands the renderer GPU textures.
+  explicit GpuAccumulator(std::shared_ptr<const core::InsideMask> mask, ShareGroup shareWith = {});
   ~GpuAccumulator() override;  // stops and joins the GPU thread
   GpuAccumulator(const GpuAccumulator&) = delete;
   GpuAccumulator& operator=(const GpuAccumulator&) = delete;
@@ -81,6 +83,11 @@ class GpuAccumulator final : public core::RefinementBackend {
   std::size_t gridBytes() const override;
   void snapshot(core::VolumeSnapshot& out) const override;
   void sampleDensity(core::DensitySample& out) const override;
+  // Packs on the GPU into textures of the renderer's share group (gpu_volume.h), when this backend
+  // was made sharing the renderer's context; the grid never leaves the device.
+  bool packOnDevice(core::PackedVolume& out) const override;
+  bool sharesWithRenderer() const { return sharesWithRenderer_; }
+  bool packsOnDevice() const override { return sharesWithRenderer_; }
 
   std::string renderer() const { return renderer_; }  // GL_RENDERER of its context
   bool softwareRenderer() const { return software_; }
@@ -103,6 +110,8 @@ class GpuAccumulator final : public core::RefinementBackend {
   void notifyWorkChanged();
 
   std::shared_ptr<const core::InsideMask> mask_;
+  ShareGroup shareWith_;
+  bool sharesWithRenderer_ = false;  // its context shares the renderer's (set before the constructor returns)
   core::ColourLayout colour_;
   std::uint64_t insideVoxels_ = 0;
   core::InsideBox insideBox_;

@@ -70,55 +70,90 @@ EGLDisplay openDisplay(std::string& tried) {
 
 }  // namespace
 
-HeadlessContext::HeadlessContext() {
-  const std::lock_guard lock(displayMutex());
-  std::string tried;
-  EGLDisplay display = openDisplay(tried);
-  if (display == EGL_NO_DISPLAY)
-    throw core::Error("no headless OpenGL: EGL found no usable display (tried:" + tried +
-                      "); install Mesa's EGL (libegl-mesa0, libgl1-mesa-dri)");
-  display_ = display;
-  if (!eglBindAPI(EGL_OPENGL_API)) {
-    releaseDisplay(display);
-    throw core::Error("no headless OpenGL: this EGL cannot bind desktop OpenGL");
-  }
-  const EGLint configAttributes[] = {EGL_SURFACE_TYPE,
-                                     EGL_PBUFFER_BIT,
-                                     EGL_RENDERABLE_TYPE,
-                                     EGL_OPENGL_BIT,
-                                     EGL_RED_SIZE,
-                                     8,
-                                     EGL_GREEN_SIZE,
-                                     8,
-                                     EGL_BLUE_SIZE,
-                                     8,
-                                     EGL_NONE};
+ShareGroup currentShareGroup() {
+  ShareGroup group;
+  const EGLContext context = eglGetCurrentContext();
+  if (context == EGL_NO_CONTEXT) return group;
+  group.display = eglGetCurrentDisplay();
+  group.context = context;
+  return group;
+}
+
+namespace {
+
+// The config a shared context is made with: the share context's own, so the two are compatible.
+EGLConfig configOf(EGLDisplay display, EGLContext context) {
+  EGLint id = 0;
+  if (!eglQueryContext(display, context, EGL_CONFIG_ID, &id) || id == 0) return nullptr;
+  const EGLint attributes[] = {EGL_CONFIG_ID, id, EGL_NONE};
   EGLConfig config = nullptr;
-  EGLint configCount = 0;
-  if (!eglChooseConfig(display, configAttributes, &config, 1, &configCount) || configCount == 0)
-    config = nullptr;  // surfaceless contexts need no config where EGL_KHR_no_config_context exists
+  EGLint count = 0;
+  if (!eglChooseConfig(display, attributes, &config, 1, &count) || count == 0) return nullptr;
+  return config;
+}
+
+}  // namespace
+
+HeadlessContext::HeadlessContext(const ShareGroup& shareWith) {
+  const std::lock_guard lock(displayMutex());
+  EGLDisplay display = EGL_NO_DISPLAY;
+  EGLConfig config = nullptr;
+  const auto share = static_cast<EGLContext>(shareWith.context);
+  if (!shareWith.empty()) {
+    // The share group's display is initialised already; it is counted only where this file opened
+    // it (another HeadlessContext's), a window's belongs to the window.
+    display = static_cast<EGLDisplay>(shareWith.display);
+    countsDisplay_ = displayUsers().count(display) > 0;
+    config = configOf(display, share);
+  } else {
+    std::string tried;
+    display = openDisplay(tried);
+    if (display == EGL_NO_DISPLAY)
+      throw core::Error("no headless OpenGL: EGL found no usable display (tried:" + tried +
+                        "); install Mesa's EGL (libegl-mesa0, libgl1-mesa-dri)");
+  }
+  display_ = display;
+  auto giveUp = [&](const std::string& why) {
+    if (countsDisplay_) releaseDisplay(display);
+    throw core::Error(why);
+  };
+  if (!eglBindAPI(EGL_OPENGL_API)) giveUp("no headless OpenGL: this EGL cannot bind desktop OpenGL");
+  if (shareWith.empty()) {
+    const EGLint configAttributes[] = {EGL_SURFACE_TYPE,
+                                       EGL_PBUFFER_BIT,
+                                       EGL_RENDERABLE_TYPE,
+                                       EGL_OPENGL_BIT,
+                                       EGL_RED_SIZE,
+                                       8,
+                                       EGL_GREEN_SIZE,
+                                       8,
+                                       EGL_BLUE_SIZE,
+                                       8,
+                                       EGL_NONE};
+    EGLint configCount = 0;
+    if (!eglChooseConfig(display, configAttributes, &config, 1, &configCount) || configCount == 0)
+      config = nullptr;  // surfaceless contexts need no config where EGL_KHR_no_config_context exists
+  }
 
   for (const int minor : {6, 5, 3}) {
     const EGLint contextAttributes[] = {
         EGL_CONTEXT_MAJOR_VERSION,           4,       EGL_CONTEXT_MINOR_VERSION, minor, EGL_CONTEXT_OPENGL_PROFILE_MASK,
         EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT, EGL_NONE};
-    EGLContext context =
-        eglCreateContext(display, config ? config : EGL_NO_CONFIG_KHR, EGL_NO_CONTEXT, contextAttributes);
+    EGLContext context = eglCreateContext(display, config ? config : EGL_NO_CONFIG_KHR,
+                                          shareWith.empty() ? EGL_NO_CONTEXT : share, contextAttributes);
     if (context != EGL_NO_CONTEXT) {
       context_ = context;
       break;
     }
   }
-  if (!context_) {
-    releaseDisplay(display);
-    throw core::Error("no headless OpenGL: EGL could not create an OpenGL 4.3 core context");
-  }
+  if (!context_)
+    giveUp(shareWith.empty() ? "no headless OpenGL: EGL could not create an OpenGL 4.3 core context"
+                             : "EGL could not create an OpenGL 4.3 core context sharing the renderer's");
   if (!eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, static_cast<EGLContext>(context_))) {
     eglDestroyContext(display, static_cast<EGLContext>(context_));
-    releaseDisplay(display);
-    throw core::Error("no headless OpenGL: EGL could not make a surfaceless context current");
+    giveUp("no headless OpenGL: EGL could not make a surfaceless context current");
   }
-  ++displayUsers()[display];
+  if (countsDisplay_) ++displayUsers()[display];
 }
 
 HeadlessContext::~HeadlessContext() {
@@ -126,6 +161,7 @@ HeadlessContext::~HeadlessContext() {
   auto display = static_cast<EGLDisplay>(display_);
   eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display, static_cast<EGLContext>(context_));
+  if (!countsDisplay_) return;
   if (--displayUsers()[display] <= 0) displayUsers().erase(display);
   releaseDisplay(display);
 }

@@ -11,6 +11,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "core/error.h"
+#include "gpu_volume.h"
 #include "read_back.h"
 #include "renderer_kind.h"
 
@@ -236,6 +237,8 @@ VolumeRenderer::~VolumeRenderer() {
     glDeleteTextures(1, &slot.emptyDistance);
   }
   glDeleteTextures(1, &shadowTexture_);
+  for (GLuint* buffer : {&shadowSigma_, &shadowDepth_})
+    if (*buffer) glDeleteBuffers(1, buffer);
   glDeleteVertexArrays(1, &vertexArray_);
   glDeleteVertexArrays(1, &meshArray_);
   glDeleteBuffers(1, &meshVertices_);
@@ -288,14 +291,23 @@ void VolumeRenderer::allocate(Slot& slot, glm::ivec3 size, const core::ColourLay
 }
 
 void VolumeRenderer::beginUpload(const core::PackedVolume& volume) {
+  pending_ = nullptr;
+  allocate(slots_[kMain], volume.geometry.size, volume.colour);
+  if (volume.onDevice()) {
+    copyFromDevice(slots_[kMain], volume);
+    return;
+  }
   pending_ = &volume;
   pendingZ_ = 0;
-  allocate(slots_[kMain], volume.geometry.size, volume.colour);
 }
 
 void VolumeRenderer::uploadProxy(const core::PackedVolume& volume) {
   Slot& slot = slots_[kProxy];
   allocate(slot, volume.geometry.size, volume.colour);
+  if (volume.onDevice()) {
+    copyFromDevice(slot, volume);
+    return;
+  }
   uploadSlab(slot, volume, 0, volume.geometry.size.z);
   finishUpload(slot, volume);
 }
@@ -336,6 +348,36 @@ bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
   return true;
 }
 
+void VolumeRenderer::copyFromDevice(Slot& slot, const core::PackedVolume& volume) {
+  auto* source = dynamic_cast<GpuVolume*>(volume.device.get());
+  if (!source) throw core::Error("a volume on the GPU that this renderer cannot read");
+  const glm::ivec3 size = volume.geometry.size, cells = volume.colour.size, bricks = volume.brickCount;
+  glBindTexture(GL_TEXTURE_3D, slot.emptyDistance);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, bricks.x, bricks.y, bricks.z, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+  {
+    // Held until the copy's sync is made, so the backend cannot delete the textures meanwhile.
+    std::lock_guard lock(source->mutex);
+    if (!source->alive || !source->packed || source->size != size || source->colourSize != cells) {
+      slot.version = 0;  // the backend is gone: nothing to show from it
+      return;
+    }
+    glWaitSync(source->packed, 0, GL_TIMEOUT_IGNORED);  // the pack's commands come first on the device
+    glCopyImageSubData(source->colour, GL_TEXTURE_3D, 0, 0, 0, 0, slot.volume, GL_TEXTURE_3D, 0, 0, 0, 0, cells.x,
+                       cells.y, cells.z);
+    if (slot.hasDensity)
+      glCopyImageSubData(source->density, GL_TEXTURE_3D, 0, 0, 0, 0, slot.density, GL_TEXTURE_3D, 0, 0, 0, 0, size.x,
+                         size.y, size.z);
+    glCopyImageSubData(source->emptyDistance, GL_TEXTURE_3D, 0, 0, 0, 0, slot.emptyDistance, GL_TEXTURE_3D, 0, 0, 0, 0,
+                       bricks.x, bricks.y, bricks.z);
+    if (source->copied) glDeleteSync(source->copied);
+    source->copied = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+  }
+  glFlush();  // the backend's next pack into these textures waits on the sync
+  copiedBytes_ += 4 * sizeof(std::uint16_t) * static_cast<std::uint64_t>(cells.x) * cells.y * cells.z +
+                  (slot.hasDensity ? sizeof(std::uint16_t) * volume.geometry.voxelCount() : 0);
+  setSlotVolume(slot, volume);
+}
+
 void VolumeRenderer::finishUpload(Slot& slot, const core::PackedVolume& volume) {
   // The empty distances are small (a byte per 4³ voxels); they go up whole, with the last slab, so
   // they match the volume.
@@ -344,6 +386,10 @@ void VolumeRenderer::finishUpload(Slot& slot, const core::PackedVolume& volume) 
   glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, volume.brickCount.x, volume.brickCount.y, volume.brickCount.z, 0,
                GL_RED_INTEGER, GL_UNSIGNED_BYTE, volume.emptyDistance.data());
   uploadedBytes_ += volume.emptyDistance.size();
+  setSlotVolume(slot, volume);
+}
+
+void VolumeRenderer::setSlotVolume(Slot& slot, const core::PackedVolume& volume) {
   slot.geometry = volume.geometry;
   slot.brickCount = volume.brickCount;
   slot.texelDensity = volume.texelDensity;
@@ -361,6 +407,88 @@ void VolumeRenderer::uploadShadow(const core::ShadowVolume& shadow, int downsamp
   shadowSize_ = shadow.size;
   shadowDownsample_ = std::max(1, downsample);
   shadowSource_ = sourceSize == glm::ivec3(0) ? slots_[kMain].geometry.size : sourceSize;
+}
+
+void VolumeRenderer::computeShadow(Source source, glm::dvec3 towardLight, double extinctionScale, int downsample) {
+  const Slot& slot = slots_[source == Source::Main ? kMain : kProxy];
+  if (slot.version == 0) return;
+  const glm::ivec3 voxels = slot.geometry.size;
+  downsample = std::max(1, downsample);
+  const glm::ivec3 cells = (voxels + (downsample - 1)) / downsample;
+  const std::size_t cellCount = static_cast<std::size_t>(cells.x) * cells.y * cells.z;
+  auto program = [&](int pass) -> const ShaderProgram& {
+    static constexpr const char* kDefines[] = {"#define SIGMA\n", "#define SWEEP\n", "#define TRANSMITTANCE\n"};
+    ShaderProgram& built = shadowPrograms_[pass];
+    if (!built.id()) {
+      const ShaderSource body = embeddedShader("shadow.comp.glsl");
+      built = ShaderProgram(
+          ShaderSource{body.file, std::string("#version 430 core\n") + kDefines[pass] + "#line 1\n" + body.text});
+    }
+    glUseProgram(built.id());
+    glUniform3i(built.uniform("uVoxels"), voxels.x, voxels.y, voxels.z);
+    glUniform3i(built.uniform("uCells"), cells.x, cells.y, cells.z);
+    return built;
+  };
+  for (GLuint* buffer : {&shadowSigma_, &shadowDepth_}) {
+    if (!*buffer) glGenBuffers(1, buffer);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, *buffer);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(std::max<std::size_t>(cellCount, 4) * sizeof(float)),
+                 nullptr, GL_DYNAMIC_COPY);
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, shadowSigma_);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 13, shadowDepth_);
+  auto groups = [](std::size_t invocations) { return static_cast<GLuint>((invocations + 255) / 256); };
+
+  // As core::computeShadowVolume: extinction per cell edge from densities relative to the mesh's mean.
+  const ShaderProgram& sigma = program(0);
+  const bool inAlpha = !slot.hasDensity;
+  glActiveTexture(GL_TEXTURE0);
+  glBindTexture(GL_TEXTURE_3D, inAlpha ? slot.volume : slot.density);
+  glUniform1i(sigma.uniform("uDensity"), 0);
+  glUniform1i(sigma.uniform("uDensityInAlpha"), inAlpha ? 1 : 0);
+  glUniform1i(sigma.uniform("uDownsample"), downsample);
+  const double toRelative = slot.texelDensity / std::max(slot.referenceDensity, 1e-30);
+  const double perVoxel = extinctionScale / std::max({voxels.x, voxels.y, voxels.z, 1});
+  glUniform1f(sigma.uniform("uPerVoxelWeight"),
+              static_cast<float>(toRelative * perVoxel / (static_cast<double>(downsample) * downsample)));
+  glDispatchCompute(groups(cellCount), 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  // Sweep along the axis the light is most aligned with, from the light's side.
+  const glm::dvec3 light =
+      glm::length(towardLight) > 0.0 ? towardLight / glm::length(towardLight) : glm::dvec3(0, 1, 0);
+  const glm::dvec3 magnitude = glm::abs(light);
+  const int axis = magnitude.x >= magnitude.y && magnitude.x >= magnitude.z ? 0 : (magnitude.y >= magnitude.z ? 1 : 2);
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const double along = light[axis];
+  const int towardLightStep = along >= 0.0 ? 1 : -1;
+  const ShaderProgram& sweep = program(1);
+  glUniform1i(sweep.uniform("uAxis"), axis);
+  glUniform1i(sweep.uniform("uU"), u);
+  glUniform1i(sweep.uniform("uV"), v);
+  glUniform2f(sweep.uniform("uShift"), static_cast<float>(light[u] / std::abs(along)),
+              static_cast<float>(light[v] / std::abs(along)));
+  glUniform1f(sweep.uniform("uPathPerSlice"), static_cast<float>(1.0 / std::abs(along)));
+  const int slices = cells[axis];
+  const GLint sliceLocation = sweep.uniform("uSlice"), previousLocation = sweep.uniform("uPrevious");
+  for (int step = 0; step < slices; ++step) {
+    const int a = towardLightStep > 0 ? slices - 1 - step : step;
+    const int previous = a + towardLightStep;
+    glUniform1i(sliceLocation, a);
+    glUniform1i(previousLocation, previous >= 0 && previous < slices ? previous : -1);
+    glDispatchCompute(groups(static_cast<std::size_t>(cells[u]) * cells[v]), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  }
+
+  glBindTexture(GL_TEXTURE_3D, shadowTexture_);
+  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8, cells.x, cells.y, cells.z, 0, GL_RED, GL_UNSIGNED_BYTE, nullptr);
+  program(2);
+  glBindImageTexture(3, shadowTexture_, 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_R8);
+  glDispatchCompute(groups(cellCount), 1, 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  shadowSize_ = cells;
+  shadowDownsample_ = downsample;
+  shadowSource_ = voxels;
 }
 
 void VolumeRenderer::setMesh(const core::TriangleMesh& mesh) {

@@ -103,7 +103,9 @@ class VolumeRenderer {
   VolumeRenderer(const VolumeRenderer&) = delete;
   VolumeRenderer& operator=(const VolumeRenderer&) = delete;
 
-  // Uploads a packed volume, reallocating the textures when the grid's size changed.
+  // Uploads a packed volume, reallocating the textures when the grid's size changed. A volume packed
+  // on the GPU (PackedVolume::device, by a backend sharing this renderer's context) is copied there
+  // instead, whole, with no upload: beginUpload completes it and continueUpload has nothing to do.
   void upload(const core::PackedVolume& volume);
   // Uploads at most `budgetBytes` of the pending volume (whole z-slabs) and returns whether the
   // upload is complete, so a frame never stalls on a large grid. beginUpload keeps a pointer:
@@ -128,6 +130,10 @@ class VolumeRenderer {
   // the grid box, so a shadow made from the main volume also lights the proxy and vice versa.
   void uploadShadow(const core::ShadowVolume& shadow, int downsample, glm::ivec3 sourceSize = glm::ivec3(0));
   bool hasShadow() const { return shadowDownsample_ > 0; }
+  // The same shadow (core::computeShadowVolume's sweep), computed here on the GPU from the volume
+  // `source` holds: what a volume that was packed on the GPU and never was in host memory gets
+  // (PackedVolume::device). Milliseconds on a GPU; it replaces the shadow in use.
+  void computeShadow(Source source, glm::dvec3 towardLight, double extinctionScale, int downsample);
 
   // How a sample is marched: by a compute program (the default), or a fragment program drawn over
   // the target. Both give the same sums. Compute is much faster on GPUs that run fragment work on
@@ -147,6 +153,9 @@ class VolumeRenderer {
   // Bytes of volume data sent to GL so far (density, colour and empty distances), for tests and
   // benches.
   std::uint64_t uploadedBytes() const { return uploadedBytes_; }
+  // Bytes of volume data copied on the GPU from volumes packed there (PackedVolume::device): none of
+  // them passed through host memory.
+  std::uint64_t copiedBytes() const { return copiedBytes_; }
 
   // Adds one jittered sub-sample of the view to `target` (a running average). `sampleIndex`
   // picks the jitter; `tile` selects part of a larger image (x, y, full width, full height).
@@ -213,6 +222,9 @@ class VolumeRenderer {
   void allocate(Slot& slot, glm::ivec3 size, const core::ColourLayout& colour);
   void uploadSlab(Slot& slot, const core::PackedVolume& volume, int firstZ, int endZ);
   void finishUpload(Slot& slot, const core::PackedVolume& volume);
+  // A volume packed on the GPU (PackedVolume::device) is copied there, whole, in place of an upload.
+  void copyFromDevice(Slot& slot, const core::PackedVolume& volume);
+  void setSlotVolume(Slot& slot, const core::PackedVolume& volume);  // what a march needs to know of it
 
   // The march programs, built when first used, one per combination of the bits of MarchVariant:
   // features a draw does not use are compiled out, since a software rasteriser runs both sides of
@@ -227,6 +239,7 @@ class VolumeRenderer {
   bool softwareRasteriser_ = false;
   DensityFetch densityFetch_ = DensityFetch::Automatic;
   std::uint64_t uploadedBytes_ = 0;
+  std::uint64_t copiedBytes_ = 0;
   MarchStage marchStage_ = MarchStage::Compute;
   ShaderProgram blitProgram_;
   ShaderProgram meshProgram_;
@@ -238,6 +251,8 @@ class VolumeRenderer {
   glm::ivec3 shadowSize_{0};
   glm::ivec3 shadowSource_{0};  // the grid it was made from, in voxels
   int shadowDownsample_ = 0;
+  ShaderProgram shadowPrograms_[3];           // computeShadow's passes, built when first used
+  GLuint shadowSigma_ = 0, shadowDepth_ = 0;  // ... and their per-cell buffers
   const core::PackedVolume* pending_ = nullptr;
   int pendingZ_ = 0;
 

@@ -19,7 +19,10 @@ std::string convergenceText(const SessionStatus& status) {
   const double noise = 100.0 * status.noise, target = 100.0 * status.noiseTarget;
   const double millions = static_cast<double>(status.stats.points) * 1e-6;
   // The GPU backend says so: the user chose it in the Scene panel, and a flame falls back to the CPU.
-  const char* refining = status.backend == core::BackendKind::Gpu ? "refining on the GPU" : "refining";
+  // Where its grid reaches the view through host memory, the status says that too (it costs frames).
+  const char* refining = status.backend != core::BackendKind::Gpu ? "refining"
+                         : status.gridOnDevice                    ? "refining on the GPU"
+                                                                  : "refining on the GPU (grid read back)";
   if (status.paused)
     std::snprintf(text, sizeof text, "refining paused for the export");
   else if (status.converged)

@@ -145,6 +145,8 @@ struct GridReading {
 enum class BackendKind { Cpu, Gpu };
 inline constexpr std::string_view kBackendKindNames[] = {"cpu", "gpu"};
 
+struct PackedVolume;  // core/packed_volume.h, which reads a backend's grid
+
 class RefinementBackend {
  public:
   virtual ~RefinementBackend() = default;
@@ -220,6 +222,11 @@ class RefinementBackend {
   // The hit counts of every convergenceSampleStride()-th voxel, for a ConvergenceMeter: a few
   // milliseconds at any grid size, safe to call while refinement runs.
   virtual void sampleDensity(DensitySample& out) const = 0;
+  // Packs the grid for the renderer where it lies, on the GPU (PackedVolume::device), when this
+  // backend can hand its textures to the renderer's context; false (nothing done) otherwise, and
+  // then core::packVolume reads the grid through readSlabs.
+  virtual bool packOnDevice(PackedVolume& /*out*/) const { return false; }
+  virtual bool packsOnDevice() const { return false; }  // whether packOnDevice does
 
  protected:
   virtual void readSlabsImpl(GridReading& reading, void (*visit)(const GridSlabView&, void*), void* context) const = 0;
