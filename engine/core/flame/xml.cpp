@@ -812,6 +812,24 @@ class FlameReader {
              " with a color_seed, which only pyr3 writes: pyr3's dc_perlin leaves the point where it is and paints "
              "it an RGB colour from noise, which voxflame's (Fractorium's) does not; it was read as Fractorium's");
       }
+      // colormap_wf reads no picture file and no inlined image: only JWildfire's default picture (the
+      // four-corner gradient it paints from when neither is given) is drawn.
+      if (info->name == "colormap_wf" && term.weight != 0.0) {
+        if (!term.texts.at(0).empty() || !term.texts.at(1).empty()) {
+          lose("picture of " + withoutCopyMark(name));
+          warn(context + " has " + name + " with " +
+               (term.texts.at(1).empty() ? "the picture file '" + term.texts.at(0).substr(0, 120) + "'"
+                                         : std::string("an inlined picture")) +
+               ", which voxflame does not read; JWildfire's default picture (its four-corner gradient) stands in");
+        }
+        // with_alpha hides the points that land on transparent pixels (outside the picture when it is not
+        // tiled); voxflame's chaos game has no per-point hiding that lasts, so they are drawn.
+        if (std::round(term.params.at(11)) != 0.0) {
+          lose("with_alpha of " + withoutCopyMark(name));
+          warn(context + " has " + name +
+               " with with_alpha, which hides points on the picture's transparent pixels; voxflame draws them");
+        }
+      }
       // text_wf's font: one that is not installed here is drawn in the family fontconfig offers
       // instead (Java2D falls back the same way), which the importer names; the text itself is kept.
       if (info->name == "text_wf" && term.weight != 0.0) {
@@ -2864,10 +2882,31 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
         reader.readLayerCurves(layer, context, factor);
         for (MotionChannel& channel : reader.takePendingChannels()) layerChannels.push_back(std::move(channel));
       }
+      // JWildfire's background transforms paint the picture's background (FlameGenome::backgroundXforms).
+      // The flat view draws them; a 3D render has no such picture plane and shows the plain background.
       if (layer.child("bgxform")) {
-        reader.lose("JWildfire background transforms");
+        std::size_t bgNumber = 0;
+        for (const pugi::xml_node bg : layer.children("bgxform")) {
+          if (genome.backgroundXforms.size() == kMaxFlameXforms) {
+            reader.lose("background transforms after the " + std::to_string(kMaxFlameXforms) + "th");
+            reader.warn("JWildfire " + context + " has more than " + std::to_string(kMaxFlameXforms) +
+                        " background transforms; the rest were left out");
+            break;
+          }
+          const std::string bgWhere =
+              (layerContext.empty() ? "" : layerContext + " ") + "background transform " + std::to_string(++bgNumber);
+          genome.backgroundXforms.push_back(reader.xform(bg, bgWhere, false));
+          if (!reader.takePendingChannels().empty()) {
+            reader.lose("motion of background transforms");
+            reader.warn(bgWhere + " is animated, which voxflame does not keyframe; it stands still");
+          }
+        }
+        if (const auto zoom = parseNumber(node.attribute("cam_zoom").value()); zoom && *zoom > 0.0 && *zoom < 1e6)
+          genome.backgroundZoom = *zoom;
+        reader.lose("JWildfire background transforms in 3D renders");
         reader.warn("JWildfire " + context +
-                    " has background transforms (<bgxform>), which paint JWildfire's background; they were left out");
+                    " has background transforms (<bgxform>), which paint JWildfire's background: the flat view "
+                    "draws them, a 3D render shows the plain background colour");
       }
       const std::vector<GradientStop> palette = gradientOf(readPalette(layer, reader));
       const bool depthAdded = finishGenome(genome, layerContext);
