@@ -6,9 +6,14 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
+#include "core/chaos_game.h"
 #include "core/flame/variations.h"
+#include "core/flame/xml.h"
+#include "core/random.h"
+#include "core/scene.h"
 #include "variation_point_case.h"
 
 using namespace voxflame::core;
@@ -204,6 +209,53 @@ TEST(FlameVariationColormap, PreAndPostTermsKeepThePoint) {
   EXPECT_EQ(ordinary.x[0], 0.0);
   EXPECT_EQ(ordinary.y[0], 0.0);
   EXPECT_NEAR(ordinary.z[0], 0.20087411764705881, 1e-12);
+}
+
+// with_alpha: a point on a transparent pixel (outside the untiled picture, x > 0.506 here) is hidden, and stays
+// hidden through transforms without colormap_wf (JWildfire's doHide lasts from point to point) until a colormap_wf
+// term shows it again. Both transforms are the identity, so every lane keeps its x: a lane at x = 0.9 is drawn
+// until it first takes transform 0, and never after; one at x = 0.1 always. Without with_alpha nothing is hidden.
+TEST(FlameVariationColormap, WithAlphaHidesPointsOnTransparentPixelsUntilShown) {
+  std::string palette;
+  for (int k = 0; k < 256; ++k) palette += "<color index=\"" + std::to_string(k) + "\" rgb=\"200 100 50\"/>";
+  const auto flame = [&](int withAlpha) {
+    const std::string text =
+        "<flames><flame name=\"t\" version=\"JWildfire V8.00\" size=\"48 48\" center=\"0 0\" scale=\"40\">"
+        "<xform weight=\"1\" color=\"0\" linear=\"1\" colormap_wf=\"1\" colormap_wf_tile_x=\"0\" "
+        "colormap_wf_tile_y=\"0\" colormap_wf_with_alpha=\"" +
+        std::to_string(withAlpha) +
+        "\" coefs=\"1 0 0 1 0 0\"/><xform weight=\"1\" color=\"0\" linear=\"1\" coefs=\"1 0 0 1 0 0\"/>" + palette +
+        "</flame></flames>";
+    const ImportedFlame imported = readFlameXml(text, "t.flame").flame;
+    EXPECT_TRUE(imported.leftOut.empty());
+    return sceneFromImportedFlame(imported, Scene{}).layers.at(0);
+  };
+  for (const int withAlpha : {1, 0}) {
+    const ChaosGame game(flame(withAlpha), "the test flame");
+    EXPECT_TRUE(game.hidesPoints());
+    constexpr std::size_t kLanes = 64;
+    ChaosLanes lanes;
+    lanes.resize(kLanes);
+    SplitMix64 rng(11);
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      game.seedLane(lanes, i, rng);
+      lanes.x[i] = i % 2 ? 0.9 : 0.1;
+      lanes.y[i] = 0.0;
+    }
+    std::vector<double> x(kLanes), y(kLanes), z(kLanes), c(kLanes);
+    std::vector<bool> tookFirst(kLanes, false);
+    std::size_t hidden = 0;
+    for (int step = 0; step < 12; ++step) {
+      game.step(lanes, x.data(), y.data(), z.data(), c.data(), kLanes);
+      for (std::size_t i = 0; i < kLanes; ++i) {
+        tookFirst[i] = tookFirst[i] || lanes.choice[i] == 0;
+        const bool shown = withAlpha == 0 || i % 2 == 0 || !tookFirst[i];
+        EXPECT_EQ(lanes.visible[i] != 0, shown) << "lane " << i << ", step " << step;
+        hidden += lanes.visible[i] == 0;
+      }
+    }
+    EXPECT_EQ(hidden > 100u, withAlpha == 1);
+  }
 }
 
 }  // namespace

@@ -412,8 +412,6 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
       EXPECT_EQ(flame.leftOut,                                           // and a flame sequence are not kept
                 (std::vector<std::string>{"embedded flame of " + info.name, "flame sequence of " + info.name,
                                           "true colour of " + info.name}));
-    else if (info.name == "colormap_wf")  // with_alpha hides points on transparent pixels, which voxflame does not
-      EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"with_alpha of colormap_wf"}));
     else if (info.name == "dc_perlin")  // a color_seed, set here, is pyr3's: its dc_perlin is another variation
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"pyr3's dc_perlin"}));
     else if (info.name == "text_wf")  // its default font, Arial, may not be installed: the stand-in is named

@@ -130,7 +130,8 @@ VOXFLAME_VARIATION_TARGETS void colormapWf(const VariationInput& in, double* __r
   const double scaleX = P[0], scaleY = P[1], scaleZ = P[2], offsetX = P[3], offsetY = P[4], offsetZ = P[5];
   const bool tileX = ftoi(P[6]) == 1, tileY = ftoi(P[7]) == 1, resetZ = ftoi(P[8]) != 0;
   const std::int32_t dcColor = ftoi(P[9]);
-  const bool blend = ftoi(P[10]) > 0;
+  const bool blend = ftoi(P[10]) > 0, withAlpha = ftoi(P[11]) > 0;
+  std::uint8_t* __restrict hidden = in.hidden;
   std::uint32_t* __restrict rgb = dcColor == 0 ? in.rgb : nullptr;
   const std::uint32_t* palette = dcColor > 0 ? in.palette : nullptr;
   // In place for a pre_ or post_ term (JWildfire changes the point it is handed, and keeps x and y); an
@@ -175,6 +176,9 @@ VOXFLAME_VARIATION_TARGETS void colormapWf(const VariationInput& in, double* __r
     }
     // dc_color > 0: the colour index of the render palette's entry nearest to it; below 0 neither.
     if (palette) colour[i] = nearestRenderIndex(palette, ftoi(c.r), ftoi(c.g), ftoi(c.b));
+    // JWildfire's doHide: with_alpha hides the point on a pixel of alpha at most 0.1 (outside the picture;
+    // the default picture is opaque), and without it a colormap_wf term shows the point again.
+    if (hidden) hidden[i] = withAlpha && c.a <= 0.1 ? 1u : 0u;
     double dz = offsetZ;
     if (std::abs(scaleZ) > kJwfEpsilon) dz += scaleZ * (0.299 * c.r + 0.588 * c.g + 0.113 * c.b) / 255.0;
     outX[i] += inPlace ? x[i] : 0.0;  // not 0 · x, which a NaN point would make NaN
@@ -196,7 +200,9 @@ void variation_kernels::addColormapVariations(std::vector<VariationInfo>& catalo
       "256 four-corner gradient red, yellow / cyan, blue) at pixel (u, v) = ((p − offset − ½ + 1)/scale · 254), "
       "rounded (blend_colormap: truncated and bilinearly blended), tiled with tile_x/y = 1 (else black outside); "
       "dc_color 1: colour index of the nearest entry of the palette scaled by 200/256, 0: paints the point that "
-      "colour; z = dz (reset_z) or z + dz, dz = offset_z + scale_z (0.299 R + 0.588 G + 0.113 B)/255. A picture "
+      "colour; with_alpha hides points on transparent pixels (outside the picture), which stay hidden until a "
+      "colormap_wf term shows them; z = dz (reset_z) or z + dz, dz = offset_z + scale_z (0.299 R + 0.588 G + 0.113 "
+      "B)/255. A picture "
       "file or inlined image is not read (the import names it lost)",
       k3D, kFixed, &colormapWf,
       {{"scale_x", 1.0, 0.5, 2.5},
@@ -219,6 +225,7 @@ void variation_kernels::addColormapVariations(std::vector<VariationInfo>& catalo
   catalogue.back().directColour = true;
   catalogue.back().readsSum = true;
   catalogue.back().paintsRgb = true;
+  catalogue.back().hidesPoints = true;
 }
 
 }  // namespace voxflame::core

@@ -822,13 +822,6 @@ class FlameReader {
                                          : std::string("an inlined picture")) +
                ", which voxflame does not read; JWildfire's default picture (its four-corner gradient) stands in");
         }
-        // with_alpha hides the points that land on transparent pixels (outside the picture when it is not
-        // tiled); voxflame's chaos game has no per-point hiding that lasts, so they are drawn.
-        if (std::round(term.params.at(11)) != 0.0) {
-          lose("with_alpha of " + withoutCopyMark(name));
-          warn(context + " has " + name +
-               " with with_alpha, which hides points on the picture's transparent pixels; voxflame draws them");
-        }
       }
       // text_wf's font: one that is not installed here is drawn in the family fontconfig offers
       // instead (Java2D falls back the same way), which the importer names; the text itself is kept.
