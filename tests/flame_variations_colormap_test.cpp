@@ -5,13 +5,19 @@
 
 #include <cmath>
 #include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
 
 #include "core/chaos_game.h"
+#include "core/error.h"
 #include "core/flame/variations.h"
+#include "core/flame/variations_colormap.h"
 #include "core/flame/xml.h"
+#include "core/image_io.h"
 #include "core/random.h"
 #include "core/scene.h"
 #include "variation_point_case.h"
@@ -127,16 +133,18 @@ INSTANTIATE_TEST_SUITE_P(Colormap, ColormapVariationSetsColour, testing::ValuesI
 struct Painted {
   std::vector<std::uint32_t> rgb;
   std::vector<double> colour, x, y, z;
+  std::vector<std::uint8_t> hidden;  // the doHide flags, where texts were given (0 before)
 };
 
 // colormap_wf over 9 lanes at one point, with a true-colour array and, when given, a palette.
 Painted paint(const std::vector<double>& params, double px, double py, const std::uint32_t* palette,
-              VariationStage stage = VariationStage::Normal) {
+              VariationStage stage = VariationStage::Normal, const std::vector<std::string>* texts = nullptr) {
   constexpr std::size_t kLanes = 9;
   std::vector<double> xs(kLanes, px), ys(kLanes, py), zs(kLanes, 0.5);
   std::vector<std::uint32_t> random(kLanes, kHighSeed);
   Painted out{std::vector<std::uint32_t>(kLanes, 0u), std::vector<double>(kLanes, kStartColour),
-              std::vector<double>(kLanes, 0.0), std::vector<double>(kLanes, 0.0), std::vector<double>(kLanes, 0.0)};
+              std::vector<double>(kLanes, 0.0),       std::vector<double>(kLanes, 0.0),
+              std::vector<double>(kLanes, 0.0),       std::vector<std::uint8_t>(kLanes, 0u)};
   VariationInput in;
   in.x = in.tx = xs.data();
   in.y = in.ty = ys.data();
@@ -150,6 +158,9 @@ Painted paint(const std::vector<double>& params, double px, double py, const std
   in.rgb = out.rgb.data();
   in.palette = palette;
   in.stage = stage;
+  in.texts = texts ? texts->data() : nullptr;
+  out.hidden.assign(kLanes, 0u);
+  in.hidden = texts ? out.hidden.data() : nullptr;
   variationOrThrow("colormap_wf").apply(in, out.x.data(), out.y.data(), out.z.data());
   return out;
 }
@@ -256,6 +267,81 @@ TEST(FlameVariationColormap, WithAlphaHidesPointsOnTransparentPixelsUntilShown) 
     }
     EXPECT_EQ(hidden > 100u, withAlpha == 1);
   }
+}
+
+// A 4 × 3 PNG of distinct opaque colours (pixel (i, j) = (60 i, 80 j, 200)) but for a transparent bottom-right
+// pixel, as JWildfire inlines a picture: the hex of the file's bytes.
+std::string inlinedPicture() {
+  ImageRGBA image;
+  image.width = 4;
+  image.height = 3;
+  image.pixels.resize(4 * 12);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 4; ++i) {
+      float* p = image.at(i, j);
+      p[0] = static_cast<float>(60 * i) / 255.0f;
+      p[1] = static_cast<float>(80 * j) / 255.0f;
+      p[2] = 200.0f / 255.0f;
+      p[3] = i == 3 && j == 2 ? 0.0f : 1.0f;
+    }
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "voxflame_colormap_inlined.png";
+  writePng(path, image, 8, {});
+  std::ifstream file(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(path);
+  std::string hex;
+  for (const char c : bytes) {
+    constexpr const char* kDigits = "0123456789abcdef";
+    hex += kDigits[static_cast<unsigned char>(c) >> 4];
+    hex += kDigits[static_cast<unsigned char>(c) & 15u];
+  }
+  return hex;
+}
+
+// An inlined picture replaces the default one, scaled by its size − 2: (0.3, 0.2) reads pixel (⌊1.6⌉, ⌊0.7⌉) =
+// (2, 1) = (120, 80, 200), (0.6, −0.1) pixel (2, 0); the transparent pixel (3, 2), reached from (1, 1.5), keeps
+// its colour (180, 160, 200), as JWildfire's pixel does, and with_alpha hides a point there (or outside).
+TEST(FlameVariationColormap, AnInlinedPngIsThePicture) {
+  const std::vector<std::string> texts = {"", inlinedPicture(), "", ""};
+  std::vector<double> params = colormap(0.0, 0.0, 1.0, 1.0, 0.0, 0.0);
+  EXPECT_EQ(paint(params, 0.3, 0.2, nullptr, VariationStage::Normal, &texts).rgb[0], paintedRgb(120, 80, 200));
+  EXPECT_EQ(paint(params, 0.6, -0.1, nullptr, VariationStage::Normal, &texts).rgb[0], paintedRgb(120, 0, 200));
+  const Painted transparent = paint(params, 1.0, 1.5, nullptr, VariationStage::Normal, &texts);
+  EXPECT_EQ(transparent.rgb[0], paintedRgb(180, 160, 200));
+  EXPECT_EQ(transparent.hidden[0], 0u);  // without with_alpha
+  params[11] = 1.0;
+  EXPECT_EQ(paint(params, 1.0, 1.5, nullptr, VariationStage::Normal, &texts).hidden[0], 1u);
+  EXPECT_EQ(paint(params, 0.3, 0.2, nullptr, VariationStage::Normal, &texts).hidden[0], 0u);
+  params[6] = params[7] = 0.0;  // untiled: outside the picture is transparent black
+  EXPECT_EQ(paint(params, 5.0, 0.2, nullptr, VariationStage::Normal, &texts).hidden[0], 1u);
+  params = colormap(0.0, 0.0, 1.0, 1.0, 0.0, 0.0);
+  EXPECT_TRUE(colormapPictureProblem(texts[1]).empty());
+  // Garbage in the text draws the default picture, and says why.
+  const std::vector<std::string> garbage = {"", "6e6f742061207069637475726521", "", ""};
+  EXPECT_EQ(paint(params, 0.3, -0.7, nullptr, VariationStage::Normal, &garbage).rgb[0], paintedRgb(50, 81, 205));
+  EXPECT_NE(colormapPictureProblem(garbage[1]).find("PNG"), std::string::npos);
+  EXPECT_FALSE(colormapPictureProblem("zz").empty());
+}
+
+// The importer keeps an inlined PNG (as its hex) and names a picture it cannot draw: a file the flame only names,
+// or an inlined picture that is not a PNG.
+TEST(FlameVariationColormap, TheImportKeepsAnInlinedPngAndNamesAPictureItCannotDraw) {
+  const auto import = [](const std::string& resources) {
+    return readFlameXml(
+               "<flames><flame name=\"t\" version=\"JWildfire V8.00\" size=\"48 48\" center=\"0 0\" "
+               "scale=\"40\"><xform weight=\"1\" color=\"0\" colormap_wf=\"1\" " +
+                   resources + " coefs=\"1 0 0 1 0 0\"/></flame></flames>",
+               "t.flame")
+        .flame;
+  };
+  const std::string png = inlinedPicture();
+  const ImportedFlame inlined = import("colormap_wf_image_filename=\"\" colormap_wf_inlined_image=\"" + png + "\"");
+  EXPECT_TRUE(inlined.leftOut.empty());
+  EXPECT_EQ(inlined.genome.xforms.at(0).variations.at(0).texts.at(1), png);
+  const ImportedFlame file = import("colormap_wf_image_filename=\"2f746d702f612e706e67\"");  // "/tmp/a.png"
+  EXPECT_EQ(file.leftOut, (std::vector<std::string>{"picture of colormap_wf"}));
+  const ImportedFlame jpeg = import("colormap_wf_inlined_image=\"ffd8ffe000104a464946\"");
+  EXPECT_EQ(jpeg.leftOut, (std::vector<std::string>{"picture of colormap_wf"}));
 }
 
 }  // namespace

@@ -32,6 +32,7 @@
 #include "core/flame/svg_raster.h"
 #include "core/flame/text_raster.h"
 #include "core/flame/variations.h"
+#include "core/flame/variations_colormap.h"
 #include "core/random.h"
 
 namespace voxflame::core {
@@ -774,7 +775,11 @@ class FlameReader {
         const auto param = byLowerName.find(lowered(name + "_" + info->textParams[i].name));
         if (param == byLowerName.end()) continue;
         consumed.insert(param->second.first);
-        if (std::optional<std::string> text = decodeJwildfireResource(param->second.second.value())) {
+        // colormap_wf's inlined picture is a file's bytes, which JSON's UTF-8 text cannot hold: its hex is kept.
+        if (info->name == "colormap_wf" && info->textParams[i].name == "inlined_image" &&
+            decodeJwildfireResource(param->second.second.value())) {
+          term.texts[i] = param->second.second.value();
+        } else if (std::optional<std::string> text = decodeJwildfireResource(param->second.second.value())) {
           // Scenes are JSON, which holds UTF-8 only: other bytes are read as Latin-1 (as elsewhere here).
           bool changed = false;
           term.texts[i] = asUtf8(*text, changed);
@@ -812,15 +817,19 @@ class FlameReader {
              " with a color_seed, which only pyr3 writes: pyr3's dc_perlin leaves the point where it is and paints "
              "it an RGB colour from noise, which voxflame's (Fractorium's) does not; it was read as Fractorium's");
       }
-      // colormap_wf reads no picture file and no inlined image: only JWildfire's default picture (the
-      // four-corner gradient it paints from when neither is given) is drawn.
+      // colormap_wf draws an inlined PNG; a picture file the flame only names is not in it, and an inlined
+      // picture of another format is not read: JWildfire's default picture (its four-corner gradient) stands in.
       if (info->name == "colormap_wf" && term.weight != 0.0) {
-        if (!term.texts.at(0).empty() || !term.texts.at(1).empty()) {
+        if (!term.texts.at(1).empty()) {
+          if (const std::string problem = colormapPictureProblem(term.texts.at(1)); !problem.empty()) {
+            lose("picture of " + withoutCopyMark(name));
+            warn(context + " has " + name + " whose inlined picture voxflame cannot read (" + problem +
+                 "); JWildfire's default picture (its four-corner gradient) stands in");
+          }
+        } else if (!term.texts.at(0).empty()) {
           lose("picture of " + withoutCopyMark(name));
-          warn(context + " has " + name + " with " +
-               (term.texts.at(1).empty() ? "the picture file '" + term.texts.at(0).substr(0, 120) + "'"
-                                         : std::string("an inlined picture")) +
-               ", which voxflame does not read; JWildfire's default picture (its four-corner gradient) stands in");
+          warn(context + " has " + name + " with the picture file '" + term.texts.at(0).substr(0, 120) +
+               "', which the flame does not hold; JWildfire's default picture (its four-corner gradient) stands in");
         }
       }
       // text_wf's font: one that is not installed here is drawn in the family fontconfig offers
