@@ -175,6 +175,8 @@ void ChaosLanes::resize(std::size_t lanes) {
   for (auto* v : {&x, &y, &z, &w, &color, &tx, &ty, &tz, &ox, &oy, &oz, &sx, &sy, &sz, &gc, &gs}) v->assign(lanes, 0.0);
   rgb.assign(lanes, 0u);
   groupRgb.assign(lanes, 0u);
+  hidden.assign(lanes, 0u);
+  groupHidden.assign(lanes, 0u);
   field.assign(lanes, 1.0);
   fieldNoise.assign(lanes, 0.0);
   random.assign(lanes, 1u);
@@ -245,6 +247,7 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
       c.hasNormalTerms = c.hasNormalTerms || stage == VariationStage::Normal;
       c.directColour = c.directColour || info.directColour;
       c.paintsRgb = c.paintsRgb || info.paintsRgb;
+      c.hidesByTerm = c.hidesByTerm || info.hidesPoints;
     }
   return c;
 }
@@ -303,6 +306,10 @@ ChaosGame::ChaosGame(const PatternLayer& layer, const std::string& where) {
   for (const Compiled& x : xforms_) hidesPoints_ = hidesPoints_ || x.opacity < 1.0;
   hidesPoints_ = hidesPoints_ || (hasFinal_ && final_.opacity < 1.0);
   for (const Compiled& x : chainedFinals_) hidesPoints_ = hidesPoints_ || x.opacity < 1.0;
+  for (const Compiled& x : xforms_) hidesByTerm_ = hidesByTerm_ || x.hidesByTerm;
+  hidesByTerm_ = hidesByTerm_ || (hasFinal_ && final_.hidesByTerm);
+  for (const Compiled& x : chainedFinals_) hidesByTerm_ = hidesByTerm_ || x.hidesByTerm;
+  hidesPoints_ = hidesPoints_ || hidesByTerm_;
   for (const Compiled& x : xforms_) paintsRgb_ = paintsRgb_ || x.paintsRgb;
   paintsRgb_ = paintsRgb_ || (hasFinal_ && final_.paintsRgb);
   for (const Compiled& x : chainedFinals_) paintsRgb_ = paintsRgb_ || x.paintsRgb;
@@ -333,6 +340,7 @@ void ChaosGame::seedLane(ChaosLanes& lanes, std::size_t i, SplitMix64& rng) cons
   lanes.random[i] = static_cast<std::uint32_t>(rng.next() >> 32) | 1u;
   lanes.visible[i] = 0;
   lanes.previous[i] = 0;
+  if (i < lanes.hidden.size()) lanes.hidden[i] = 0;
 }
 
 void ChaosGame::step(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
@@ -446,6 +454,11 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, const std::
     std::fill_n(in.rgb, count, 0u);
     in.palette = palette_.data();
   }
+  if (xform.hidesByTerm) {
+    // The group's doHide flags as the points bring them; written back after the terms.
+    in.hidden = lanes.groupHidden.data();
+    for (std::size_t j = 0; j < count; ++j) in.hidden[j] = j < groupSize ? lanes.hidden[group[j]] : 0u;
+  }
   in.count = count;
   in.affine = xform.affine.data();
   in.tx = tx;
@@ -517,6 +530,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, const std::
       one.random = in.random + j;
       one.colour = in.colour + j;
       one.rgb = in.rgb ? in.rgb + j : nullptr;
+      one.hidden = in.hidden ? in.hidden + j : nullptr;
       one.lanes = in.lanes ? in.lanes + j : nullptr;
       one.movableX = ordinary ? tx + j : nullptr;
       one.movableY = ordinary ? ty + j : nullptr;
@@ -597,6 +611,8 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, const std::
   }
   if (xform.hasPost) affineInPlace(ox, oy, oz, xform.post.data(), count);
   if (xform.fieldJitter != 0.0) jitterByField(xform, lanes, groupSize);
+  if (xform.hidesByTerm)
+    for (std::size_t j = 0; j < groupSize; ++j) lanes.hidden[group[j]] = lanes.groupHidden[j];
 }
 
 void ChaosGame::startDirectColour(const Compiled& xform, ChaosLanes& lanes, const std::uint32_t* group, std::size_t n) {
@@ -697,8 +713,14 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     if (paintsRgb_) keepPaintedRgb(xf, lanes, group, n, false);
   }
 
-  // 4. What is drawn: the state, or the final transform of it (which never feeds back).
+  // 4. What is drawn: the state, or the final transform of it (which never feeds back). A point a
+  // variation hid (JWildfire's doHide) is not drawn, though it goes on moving.
+  const auto maskHidden = [&] {
+    if (hidesByTerm_)
+      for (std::size_t i = 0; i < count; ++i) visible[i] &= lanes.hidden[i] ? 0 : 1;
+  };
   if (!hasFinal_) {
+    maskHidden();
     emitPoints(x, y, z, color, outX, outY, outZ, outColor, count);
     if (!group_.empty()) throughOneOf(group_, lanes, outX, outY, outZ, count);
     if (!postSymmetry_.empty()) throughOneOf(postSymmetry_, lanes, outX, outY, outZ, count);
@@ -747,6 +769,7 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
     }
     if (chained.fieldColor != 0.0) colourByField(chained, lanes, order, count, outColor);
   }
+  maskHidden();
   if (!group_.empty()) throughOneOf(group_, lanes, outX, outY, outZ, count);
   if (!postSymmetry_.empty()) throughOneOf(postSymmetry_, lanes, outX, outY, outZ, count);
 }

@@ -43,6 +43,9 @@ struct ChaosLanes {
   // transform, or a final transform after it, painted: VariationInput::rgb's packing; 0 where none
   // painted it, and the colour index's palette entry stands), and a group's scratch of the same.
   std::vector<std::uint32_t> rgb, groupRgb;
+  // Only for a game with a variation that hides points: each lane's JWildfire doHide flag (it lasts from
+  // step to step; 0 at a fresh start), and a group's scratch of the same.
+  std::vector<std::uint8_t> hidden, groupHidden;
   std::vector<double> field;        // 1 + amount · noise: a weighting field's factor of the variation weights
   std::vector<double> fieldNoise;   // the weighting field's noise n itself (colour and parameters read it)
   std::vector<double> fieldParams;  // scratch: each lane's parameters of a term as the field changes them
@@ -122,7 +125,8 @@ class ChaosGame {
     double color = 0.0, colorSpeed = 0.5, opacity = 1.0;
     bool directColour = false;  // has a term that reads or sets the colour index (VariationInfo::directColour)
     double directColor = 1.0;
-    bool paintsRgb = false;  // has a term that may paint a true colour (VariationInfo::paintsRgb)
+    bool paintsRgb = false;    // has a term that may paint a true colour (VariationInfo::paintsRgb)
+    bool hidesByTerm = false;  // has a term that may hide the point (VariationInfo::hidesPoints)
     // A weighting field (flame.h): `field` keeps the transform's field settings (no variations).
     bool hasField = false;
     bool fieldFromPosition = false;
@@ -162,6 +166,7 @@ class ChaosGame {
   bool julia_ = false;
   bool hidesPoints_ = false;
   bool paintsRgb_ = false;
+  bool hidesByTerm_ = false;                  // a term may hide points: lanes.hidden is kept and masks lanes.visible
   std::array<std::uint32_t, 256> palette_{};  // the file's palette, VariationInput::palette
   std::vector<Compiled> xforms_;
   bool hasFinal_ = false;

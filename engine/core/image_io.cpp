@@ -145,17 +145,19 @@ bool readPngFile(std::FILE* file, std::uint64_t maxPixels, PngInfo& out, std::ve
   return true;
 }
 
-}  // namespace
-
-PngInfo readPng(const std::filesystem::path& path, std::uint64_t maxPixels) {
-  FilePtr file(std::fopen(path.c_str(), "rb"));
-  if (!file) throw Error("cannot open image '" + path.string() + "'");
+// The pixels readPngFile decoded, as floats in [0, 1].
+PngInfo pngFrom(std::FILE* file, std::uint64_t maxPixels, const std::string& what) {
   PngInfo info;
   std::vector<std::uint8_t> data;
   std::vector<png_bytep> rows;
   std::string reason;
-  if (!readPngFile(file.get(), maxPixels, info, data, rows, reason))
-    throw Error("'" + path.string() + "' is not a readable PNG" + (reason.empty() ? "" : ": " + reason));
+  if (!readPngFile(file, maxPixels, info, data, rows, reason)) {
+    // Appended piece by piece: GCC 12 warns falsely (-Wrestrict) about chained concatenations here.
+    std::string message = what;
+    message.append(" is not a readable PNG");
+    if (!reason.empty()) message.append(": ").append(reason);
+    throw Error(message);
+  }
   const std::size_t samples =
       4 * static_cast<std::size_t>(info.image.width) * static_cast<std::size_t>(info.image.height);
   info.image.pixels.resize(samples);
@@ -163,6 +165,24 @@ PngInfo readPng(const std::filesystem::path& path, std::uint64_t maxPixels) {
     info.image.pixels[i] = info.bitDepth == 16 ? static_cast<float>(data[2 * i] | (data[2 * i + 1] << 8)) / 65535.0f
                                                : static_cast<float>(data[i]) / 255.0f;
   return info;
+}
+
+}  // namespace
+
+PngInfo readPng(const std::filesystem::path& path, std::uint64_t maxPixels) {
+  FilePtr file(std::fopen(path.c_str(), "rb"));
+  if (!file) throw Error("cannot open image '" + path.string() + "'");
+  std::string what = "'";
+  what.append(path.string()).append("'");
+  return pngFrom(file.get(), maxPixels, what);
+}
+
+PngInfo readPngBytes(std::string_view bytes, const std::string& what, std::uint64_t maxPixels) {
+  if (bytes.empty()) throw Error(what + " is empty");
+  // POSIX's stream over a buffer, so libpng reads it as it reads a file.
+  FilePtr file(fmemopen(const_cast<char*>(bytes.data()), bytes.size(), "rb"));
+  if (!file) throw Error("cannot read " + what);
+  return pngFrom(file.get(), maxPixels, what);
 }
 
 namespace {

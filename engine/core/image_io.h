@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <map>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace voxflame::core {
@@ -44,6 +45,8 @@ struct PngInfo {
 // Throws core::Error naming the file when it cannot, or when it holds more than `maxPixels`
 // (checked before the pixels are decoded).
 PngInfo readPng(const std::filesystem::path& path, std::uint64_t maxPixels = UINT64_MAX);
+// The same for a PNG held in memory (a picture a flame file inlines); the error names `what`.
+PngInfo readPngBytes(std::string_view bytes, const std::string& what, std::uint64_t maxPixels = UINT64_MAX);
 
 // `image` shrunk to at most `maxWidth` pixels wide (never enlarged; at least 1), the height in
 // proportion (rounded down, at least 1). Each output pixel is the area average of the source

@@ -72,6 +72,8 @@ void diffLayer(const PatternLayer& a, const PatternLayer& b, const std::string& 
     else if (a.flame.finalXform != b.flame.finalXform)
       diffXform(a.flame.finalXform, b.flame.finalXform, flame + "/final", d);
     if (a.flame.chainedFinals != b.flame.chainedFinals) note(d, flame + "/final_chain", kPattern);
+    if (a.flame.backgroundXforms != b.flame.backgroundXforms) note(d, flame + "/background_xforms", kPattern);
+    if (a.flame.backgroundZoom != b.flame.backgroundZoom) note(d, flame + "/background_zoom", kPattern);
     diffTable(a.flame.symmetry, b.flame.symmetry, symmetryFields(), flame + "/symmetry", d);
     diffTable(a.flame.postSymmetry, b.flame.postSymmetry, postSymmetryFields(), flame + "/post_symmetry", d);
   }

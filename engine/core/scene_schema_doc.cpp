@@ -136,11 +136,12 @@ std::vector<DocRow> layerRows() {
 }
 
 std::vector<DocRow> flameRows() {
-  const std::vector<DocRow> flame = rows(flameFields(), "flame.");  // xforms, final
+  // xforms, then its transforms' keys, then the flame's other keys (final, final_chain, the background's).
+  const std::vector<DocRow> flame = rows(flameFields(), "flame.");
   return concat({{flame.front()},
                  rows(xformFields(), "flame.xforms[j]."),
                  rows(variationFields(), "flame.xforms[j].variations[k]."),
-                 {flame.back()},
+                 std::vector<DocRow>(flame.begin() + 1, flame.end()),
                  rows(symmetryFields(), "flame.symmetry."),
                  rows(postSymmetryFields(), "flame.post_symmetry.")});
 }

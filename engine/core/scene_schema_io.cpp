@@ -328,6 +328,20 @@ FlameGenome readFlame(ObjectReader& parent) {
       genome.chainedFinals.push_back(
           readXform((*chain)[i], parent.source(), reader.keyPath("final_chain") + "[" + std::to_string(i) + "]", true));
   }
+  if (const json* background = reader.find("background_xforms")) {
+    if (!background->is_array() || background->size() > kMaxFlameXforms)
+      reader.fail("must be an array of at most " + std::to_string(kMaxFlameXforms) + " transforms",
+                  "background_xforms");
+    for (std::size_t i = 0; i < background->size(); ++i)
+      genome.backgroundXforms.push_back(readXform((*background)[i], parent.source(),
+                                                  reader.keyPath("background_xforms") + "[" + std::to_string(i) + "]",
+                                                  false));
+  }
+  if (const json* zoom = reader.find("background_zoom")) {
+    if (!zoom->is_number() || !(zoom->get<double>() > 0.0) || !(zoom->get<double>() < 1e6))
+      reader.fail("must be a number above 0 and below 10⁶", "background_zoom");
+    genome.backgroundZoom = zoom->get<double>();
+  }
   if (std::optional<ObjectReader> symmetry = reader.child("symmetry")) {
     readFields(*symmetry, symmetryFields(), genome.symmetry);
     failOn(*symmetry, zeroAxisFailure(genome.symmetry.axis));
@@ -510,6 +524,13 @@ json flameJson(const FlameGenome& genome, bool complete) {
     for (const FlameXform& x : genome.chainedFinals) chain.push_back(xformJson(x, true, complete));
     out["final_chain"] = chain;
   }
+  if (!genome.backgroundXforms.empty()) {
+    json background = json::array();
+    for (const FlameXform& x : genome.backgroundXforms) background.push_back(xformJson(x, false, complete));
+    out["background_xforms"] = background;
+  }
+  // Only where it frames something: it is not a value a scene animates.
+  if (!genome.backgroundXforms.empty() || genome.backgroundZoom != 1.0) out["background_zoom"] = genome.backgroundZoom;
   if (complete || genome.symmetry != FlameSymmetry{})
     writeFields(out["symmetry"], symmetryFields(), genome.symmetry, complete);
   if (complete || genome.postSymmetry != FlamePostSymmetry{})

@@ -269,6 +269,20 @@ const FF kFlameFields[] = {
      .typeText = "array",
      .rangeText = "0–16 transforms without `weight`; needs `final`",
      .defaultText = "none"},
+    {.key = "background_xforms",
+     .help = "JWildfire's background transforms: each pixel's place goes once through each, and its colour "
+             "times the transform's weight is added to the background (the flat view draws them)",
+     .affects = kPattern,
+     .typeText = "array",
+     .rangeText = "0–128 transforms",
+     .defaultText = "none"},
+    {.key = "background_zoom",
+     .help = "JWildfire's cam_zoom, which frames the background transforms: a pixel's place is its offset "
+             "from the centre over half the image's diagonal, times 1.41 / background_zoom",
+     .affects = kPattern,
+     .typeText = "number",
+     .rangeText = "above 0, below 10⁶",
+     .defaultText = "1"},
 };
 
 using XF = Field<FlameXform>;

@@ -47,6 +47,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addJwildfireCorpusVariations(c);
   variation_kernels::addJwildfireHoldoutVariations(c);
   variation_kernels::addSvgVariations(c);
+  variation_kernels::addColormapVariations(c);
   variation_kernels::addSubflameVariations(c);
   variation_kernels::addParplotVariations(c);
   variation_kernels::addJwildfireMeshVariations(c);

@@ -224,6 +224,13 @@ void validateFlame(const FlameGenome& genome, const std::string& where) {
                 " final transforms after the first; at most " + std::to_string(kMaxChainedFinals) + " are allowed");
   for (std::size_t i = 0; i < genome.chainedFinals.size(); ++i)
     validateXform(genome.chainedFinals[i], where + " chained final transform " + std::to_string(i + 1));
+  if (genome.backgroundXforms.size() > kMaxFlameXforms)
+    throw Error(where + " has " + std::to_string(genome.backgroundXforms.size()) + " background transforms; at most " +
+                std::to_string(kMaxFlameXforms) + " are allowed");
+  for (std::size_t i = 0; i < genome.backgroundXforms.size(); ++i)
+    validateXform(genome.backgroundXforms[i], where + " background transform " + std::to_string(i + 1));
+  if (!(genome.backgroundZoom > 0.0) || !finite(genome.backgroundZoom))
+    throw Error(where + " has a background zoom that is not a positive finite number");
   const FlameSymmetry& s = genome.symmetry;
   if (s.rotational < 1 || s.rotational > kMaxFlameSymmetry)
     throw Error(where + " has rotational symmetry " + std::to_string(s.rotational) + "; it must be 1 to " +

@@ -199,6 +199,13 @@ struct FlameGenome {
   // Further final transforms, applied one after the other after finalXform (JWildfire chains
   // several); used only with hasFinal.
   std::vector<FlameXform> chainedFinals;
+  // JWildfire's background transforms (<bgxform>): they draw no points; each paints the picture's
+  // background. Every pixel's place, (pixel − centre) / half the image's diagonal · 1.41 / backgroundZoom
+  // (y down), goes once through each of them from colour index 0, and the colour it comes out with (the
+  // palette's entry, scaled by 200/256 as JWildfire's render palette is, or the RGB a variation painted)
+  // times the transform's weight is added to the background colour. The flat view draws them.
+  std::vector<FlameXform> backgroundXforms;
+  double backgroundZoom = 1.0;  // JWildfire's cam_zoom, which alone frames the background
   FlameSymmetry symmetry;
   FlamePostSymmetry postSymmetry;
   bool operator==(const FlameGenome&) const = default;

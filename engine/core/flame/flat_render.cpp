@@ -81,6 +81,90 @@ std::array<glm::vec3, 256> filePalette(const ColorSettings& color) {
   return palette;
 }
 
+// JWildfire's background transforms (FlameGenome::backgroundXforms, LogDensityFilter's background): the
+// picture's background, per output pixel in display values 0–1, rows top to bottom; empty when the first
+// flame layer has none (JWildfire then paints none, whatever the other layers hold). The background colour
+// (as bytes) starts each pixel; for every flame layer, each of its background transforms maps the pixel's
+// place ((column − (width − 1)/2, row − (height − 1)/2) / half the diagonal · 1.41 / zoom, z = 0, colour
+// index 0) once, and its colour times the transform's weight is added, truncated to a whole byte each time
+// as JWildfire's int does: a true colour a variation painted, else the render palette's entry ⌊254 c + ½⌋
+// (held in 0–255) scaled by 200/256. The sum is held in 0–255 at the end. JWildfire makes its DC variations
+// sample the point itself there (prepareBackgroundRendering sets ColorOnly), and so does this.
+// Java's (int) of a double, kept a double: truncated towards 0, saturating, NaN as 0.
+double javaTruncated(double value) {
+  return std::isnan(value) ? 0.0 : std::trunc(std::clamp(value, -2147483648.0, 2147483647.0));
+}
+
+std::vector<glm::vec3> backgroundPicture(const Scene& scene, int width, int height, std::uint64_t seed) {
+  std::vector<const PatternLayer*> layers;
+  for (const PatternLayer& layer : scene.layers)
+    if (layer.kind == PatternKind::Flame) layers.push_back(&layer);
+  if (layers.empty() || layers.front()->flame.backgroundXforms.empty()) return {};
+  const std::size_t pixels = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+  std::vector<std::array<double, 3>> bytes(pixels);
+  const glm::vec3 base = glm::clamp(linearToSrgb(scene.tone.background), glm::vec3(0.0f), glm::vec3(1.0f));
+  for (auto& b : bytes)
+    for (int c = 0; c < 3; ++c) b[static_cast<std::size_t>(c)] = std::round(base[c] * 255.0);
+  const double halfDiagonal =
+      std::sqrt(static_cast<double>(width) * width + static_cast<double>(height) * height) * 0.5;
+  for (const PatternLayer* source : layers) {
+    const FlameGenome& genome = source->flame;
+    if (genome.backgroundXforms.empty()) continue;
+    const double scale = 1.41 / genome.backgroundZoom / halfDiagonal;
+    const std::array<glm::vec3, 256> palette = filePalette(source->color);
+    for (const FlameXform& xform : genome.backgroundXforms) {
+      // The transform alone, as a game of one transform of weight 1 (its weight scales its colour).
+      PatternLayer layer = *source;
+      layer.flame = FlameGenome{};
+      layer.flame.xforms.push_back(xform);
+      layer.flame.xforms.back().weight = 1.0;
+      layer.flame.xforms.back().opacity = 1.0;
+      for (VariationTerm& term : layer.flame.xforms.back().variations)
+        if (const VariationInfo* info = findVariation(term.name))
+          if (const int k = info->paramIndex("ColorOnly"); k >= 0 && static_cast<std::size_t>(k) < term.params.size())
+            term.params[static_cast<std::size_t>(k)] = 1.0;
+      const ChaosGame game(layer, "a background transform");
+      const bool painted = game.paintsRgb();
+      const double amount = xform.weight;
+      parallelFor(static_cast<std::size_t>(height), 8, [&](std::size_t begin, std::size_t end) {
+        ChaosLanes lanes;
+        lanes.resize(static_cast<std::size_t>(width));
+        std::vector<double> ox(static_cast<std::size_t>(width)), oy(ox.size()), oz(ox.size()), oc(ox.size());
+        for (std::size_t row = begin; row < end; ++row) {
+          SplitMix64 rng(seed * 0x9e3779b97f4a7c15ULL + row + 1);
+          for (std::size_t i = 0; i < ox.size(); ++i) {
+            game.seedLane(lanes, i, rng);
+            lanes.x[i] = (static_cast<double>(i) - (width - 1) * 0.5) * scale;
+            lanes.y[i] = (static_cast<double>(row) - (height - 1) * 0.5) * scale;
+            lanes.z[i] = 0.0;
+            lanes.color[i] = 0.0;
+          }
+          game.step(lanes, ox.data(), oy.data(), oz.data(), oc.data(), ox.size());
+          for (std::size_t i = 0; i < ox.size(); ++i) {
+            double rgb[3];
+            const std::uint32_t paint = painted ? lanes.rgb[i] : 0u;
+            if (paint & kRgbPainted) {
+              for (int c = 0; c < 3; ++c) rgb[c] = static_cast<double>(paint >> (8 * c) & 255u);
+            } else {
+              const double index = std::clamp(javaTruncated(oc[i] * 254.0 + 0.5), 0.0, 255.0);
+              const glm::vec3& entry = palette[static_cast<std::size_t>(index)];
+              for (int c = 0; c < 3; ++c) rgb[c] = std::round(entry[c] * 255.0) * 200.0 / 256.0;
+            }
+            std::array<double, 3>& b = bytes[row * ox.size() + i];
+            for (int c = 0; c < 3; ++c)
+              b[static_cast<std::size_t>(c)] = javaTruncated(b[static_cast<std::size_t>(c)] + rgb[c] * amount);
+          }
+        }
+      });
+    }
+  }
+  std::vector<glm::vec3> picture(pixels);
+  for (std::size_t p = 0; p < pixels; ++p)
+    for (int c = 0; c < 3; ++c)
+      picture[p][c] = static_cast<float>(std::clamp(bytes[p][static_cast<std::size_t>(c)], 0.0, 255.0) / 255.0);
+  return picture;
+}
+
 bool finitePositive(double v) {
   return std::isfinite(v) && v > 0.0;
 }
@@ -577,6 +661,7 @@ FlatRenderResult renderFlatSolid(const Scene& scene, const FlatRenderOptions& op
   });
 
   const glm::dvec3 background(glm::clamp(linearToSrgb(scene.tone.background), glm::vec3(0.0f), glm::vec3(1.0f)));
+  const std::vector<glm::vec3> picture = backgroundPicture(scene, width, height, options.seed);
   const DensityImage shaded = shadeSolidRaster(solid, nearest, shadowMaps, bucketsPerUnit, background);
   DensityImage filtered;
   spatialFilter(shaded, oversample, flat.filterRadius, filtered);
@@ -594,9 +679,10 @@ FlatRenderResult renderFlatSolid(const Scene& scene, const FlatRenderOptions& op
       const double coverage = std::clamp(static_cast<double>(v[3]), 0.0, 1.0);
       const double alpha = std::pow(coverage, 1.0 + 1.0 / gamma);
       float* pixel = result.image.at(x, y);
+      const glm::dvec3 behind =
+          picture.empty() ? background : glm::dvec3(picture[static_cast<std::size_t>(y) * width + x]);
       for (int channel = 0; channel < 3; ++channel) {
-        const double value =
-            std::clamp(static_cast<double>(v[channel]), 0.0, 1.0) + background[channel] * (1.0 - alpha);
+        const double value = std::clamp(static_cast<double>(v[channel]), 0.0, 1.0) + behind[channel] * (1.0 - alpha);
         pixel[channel] = flatPixelLevel(static_cast<float>(value), options.bitDepth);
       }
       pixel[3] = 1.0f;
@@ -736,6 +822,18 @@ FlatRenderResult renderFlat(const Scene& scene, const FlatRenderOptions& options
   finish.oversample = oversample;
   finish.filterRadius = flat.filterRadius;
   finish.flam3KernelTruncation = true;
+  // JWildfire's background transforms: the picture sits under the output pixels, not the gutter.
+  const std::vector<glm::vec3> picture = backgroundPicture(scene, width, height, options.seed);
+  std::vector<glm::vec3> behind;
+  if (!picture.empty()) {
+    behind.assign(static_cast<std::size_t>(sum.width / oversample) * (sum.height / oversample),
+                  glm::clamp(linearToSrgb(sceneTone.background), glm::vec3(0.0f), glm::vec3(1.0f)));
+    const std::size_t finishedWidth = static_cast<std::size_t>(sum.width / oversample);
+    for (int y = 0; y < height; ++y)
+      std::copy_n(picture.begin() + static_cast<std::ptrdiff_t>(y) * width, width,
+                  behind.begin() + static_cast<std::ptrdiff_t>((y + gutter) * finishedWidth + gutter));
+    finish.backgroundPicture = &behind;
+  }
   const FinishedImage finished = finishImage(sum, finish);
 
   FlatRenderResult result;

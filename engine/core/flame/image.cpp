@@ -337,7 +337,9 @@ FinishedImage finishImage(const DensityImage& in, const FinishSettings& settings
         // where it does not, and the overlay goes on top (finish_tone.glsl).
         const double covered = std::min(alpha, 1.0);
         color = (color - 0.5 * covered) * tone.contrast + 0.5 * covered;
-        color += (1.0 - covered) * background;
+        const std::size_t at = static_cast<std::size_t>(y) * width + x;
+        const bool pictured = settings.backgroundPicture && settings.backgroundPicture->size() == result.alpha.size();
+        color += (1.0 - covered) * (pictured ? glm::dvec3((*settings.backgroundPicture)[at]) : background);
         if (useOverlay) {
           const std::size_t p = static_cast<std::size_t>(y) * width + x;
           if (overlay->mode == MeshDisplay::Ghost) {

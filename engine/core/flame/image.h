@@ -77,6 +77,9 @@ struct FinishSettings {
   // are normalised over every offset within h, so a kernel of whole width (the narrowest, 1, where
   // the density is highest) keeps only 1 / (1 + 4 e^(−4.5)) ≈ 96% of its pixel's value.
   bool flam3KernelTruncation = false;
+  // A background per output pixel (display values 0–1, rows top to bottom, the output's size) in place of
+  // tone.background: JWildfire's background transforms paint one. nullptr: tone.background everywhere.
+  const std::vector<glm::vec3>* backgroundPicture = nullptr;
 };
 
 struct FinishedImage {

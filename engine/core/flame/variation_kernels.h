@@ -233,6 +233,8 @@ void addJwildfireCorpusVariations(std::vector<VariationInfo>& catalogue);
 void addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's svg_wf, points of an SVG drawing (variations_svg.cpp).
 void addSvgVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire's colormap_wf, colour from a picture laid over the plane (variations_colormap.cpp).
+void addColormapVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's subflame variations, which embed a whole flame (variations_subflame.cpp).
 void addSubflameVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's parplot2d_wf, a parametric surface of formulas (variations_parplot.cpp).

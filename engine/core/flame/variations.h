@@ -97,6 +97,11 @@ struct VariationInput {
   // The flame's palette as the file writes it, 256 entries of r | g << 8 | b << 16 (bytes), for
   // the variations that pick the palette's entry nearest to a colour; nullptr outside a game.
   const std::uint32_t* palette = nullptr;
+  // JWildfire's XYZPoint.doHide per lane: 1 where the point is not drawn. It lasts from step to step (a
+  // point stays hidden until a variation that hides points says otherwise), so it comes in as the lane's
+  // flag and a variation that hides points (VariationInfo::hidesPoints) may set or clear it. nullptr where
+  // nothing keeps it (a single evaluation, or a transform without such a variation).
+  std::uint8_t* hidden = nullptr;
 };
 
 // A painted true colour as VariationInput::rgb holds it: the channels (bytes) with kRgbPainted set,
@@ -174,6 +179,8 @@ struct VariationInfo {
   // May paint a point's true colour (VariationInput::rgb), JWildfire's XYZPoint.rgbColor: dc_quadtree's
   // Gradient 0. The chaos game keeps true colours only for flames with such a variation.
   bool paintsRgb = false;
+  // May hide a point (VariationInput::hidden), JWildfire's XYZPoint.doHide: colormap_wf's with_alpha.
+  bool hidesPoints = false;
   // How many doubles of memory per lane the variation keeps from step to step (VariationInput::state).
   std::size_t laneState = 0;
   VariationFn apply = nullptr;

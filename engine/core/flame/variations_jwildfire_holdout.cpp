@@ -621,6 +621,47 @@ VOXFLAME_VARIATION_TARGETS void dcDucks(const VariationInput& in, double* __rest
   });
 }
 
+// dc_inversion (Jesus Sosa's, after a shadertoy of circle inversions): v = the point, 'iterations' times
+// v ← inv(|v_x|, v_y) · scale + (sin 0.123t, atan 0.0567t)) with inv the inversion in the circle of radius
+// 0.9 about (½, ½) followed by JWildfire's small twist (x += sin(x/1000)/cos(y/1000), then y +=
+// sin(x/1000) cos(y/1000) with the new x), l = √(v_x⁴ + v_y⁴) of the last step and m the least l; the colour
+// is 1 − e^(−c), c = b · 11 l² ((3 m (1 − m))⁵ + 0.14), b the unit vector of ½ + ½ (sin 1.79s, sin 1.345s,
+// sin 1.123s), s = 2.1 + 0.025t. Square [−1, 1]².
+VOXFLAME_VARIATION_TARGETS void dcInversion(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                            double* __restrict oz) {
+  const double* P = in.params;
+  const double time = P[1];
+  const double iterations = jwfLimitedInt(P[2], 0.0, 100.0);
+  // setParameter clamps the scales into [1.1, 3] (a NaN passes, as through Tools.limitValue).
+  const double scaleX = std::isnan(P[3]) ? P[3] : std::clamp(P[3], 1.1, 3.0);
+  const double scaleY = std::isnan(P[4]) ? P[4] : std::clamp(P[4], 1.1, 3.0);
+  const double offsetX = std::sin(time * 0.123), offsetY = std::atan(time * 0.0567);
+  const double s = 2.1 + time * 0.025;
+  double bx = std::sin(s * 1.790) * 0.5 + 0.5, by = std::sin(s * 1.345) * 0.5 + 0.5,
+         bz = std::sin(s * 1.123) * 0.5 + 0.5;
+  const double length = std::sqrt(bx * bx + by * by + bz * bz);
+  bx /= length, by /= length, bz /= length;
+  // Java's Math.min: NaN when either is.
+  const auto javaMin = [](double a, double b) { return std::isnan(a) || std::isnan(b) ? a + b : std::min(a, b); };
+  dcBaseKernel(in, ox, oy, oz, 5, 1.0, [&](double px, double py) {
+    double vx = px, vy = py, l = 0.0, least = 10000.0;
+    for (double k = 0.0; k < iterations; k += 1.0) {
+      vx = std::abs(vx) * scaleX + offsetX;
+      vy = vy * scaleY + offsetY;
+      const double dx = vx - 0.5, dy = vy - 0.5;
+      const double f = 0.9 * (0.9 / (dx * dx + dy * dy));
+      vx = 0.5 - dx * f;
+      vy = 0.5 - dy * f;
+      vx += std::sin(vx * 0.001) / std::cos(vy * 0.001);
+      vy += std::sin(vx * 0.001) * std::cos(vy * 0.001);
+      l = std::sqrt(vx * vx * vx * vx + vy * vy * vy * vy);
+      least = javaMin(l, least);
+    }
+    const double brightness = l * l * 11.0 * (std::pow(3.0 * least * (1.0 - least), 5.0) + 0.14);
+    return Rgb{1.0 - std::exp(-bx * brightness), 1.0 - std::exp(-by * brightness), 1.0 - std::exp(-bz * brightness)};
+  });
+}
+
 }  // namespace
 
 void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue) {
@@ -737,6 +778,23 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
       "clock-driven time, which time overrides",
       k3D, kRandom, &dcDucks,
       dcBaseParams({count("seed", 10000.0, 0.0, 10000.0), {"time", 10.0, 0.0, 100.0}, {"zoom", 1.0, -10.0, 10.0}}));
+  catalogue.back().directColour = true;
+  catalogue.back().readsSum = true;
+  catalogue.back().paintsRgb = true;
+  add("dc_inversion",
+      "w q, q = Ψ-uniform in [−1, 1]² (ColorOnly: the point); Gradient 2: colour index the grey level of the "
+      "circle-inversion colour at q (iterations steps of v → inv((|v_x|, v_y) · (scaleX, scaleY) + (sin 0.123 "
+      "time, atan 0.0567 time)), inv the inversion in the circle of radius 0.9 about (½, ½) plus JWildfire's "
+      "small twist; colour 1 − e^(−11 l² ((3m(1 − m))⁵ + 0.14) b), l the last √(v_x⁴ + v_y⁴), m the least, b a "
+      "unit colour turning with time); Gradient 0 paints the point that RGB colour, 1 the palette's entry "
+      "nearest to it, both leaving the index; z + grey · scale_z + offset_z (reset_z: z = that); seed is "
+      "JWildfire's clock-driven time, which time overrides",
+      k3D, kRandom, &dcInversion,
+      dcBaseParams({count("seed", 10000.0, 0.0, 10000.0),
+                    {"time", 0.0, 0.0, 100.0},
+                    count("iterations", 50.0, 0.0, 100.0),
+                    {"scaleX", 1.5, 1.1, 3.0},
+                    {"scaleY", 1.5, 1.1, 3.0}}));
   catalogue.back().directColour = true;
   catalogue.back().readsSum = true;
   catalogue.back().paintsRgb = true;

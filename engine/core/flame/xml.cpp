@@ -32,6 +32,7 @@
 #include "core/flame/svg_raster.h"
 #include "core/flame/text_raster.h"
 #include "core/flame/variations.h"
+#include "core/flame/variations_colormap.h"
 #include "core/random.h"
 
 namespace voxflame::core {
@@ -774,7 +775,11 @@ class FlameReader {
         const auto param = byLowerName.find(lowered(name + "_" + info->textParams[i].name));
         if (param == byLowerName.end()) continue;
         consumed.insert(param->second.first);
-        if (std::optional<std::string> text = decodeJwildfireResource(param->second.second.value())) {
+        // colormap_wf's inlined picture is a file's bytes, which JSON's UTF-8 text cannot hold: its hex is kept.
+        if (info->name == "colormap_wf" && info->textParams[i].name == "inlined_image" &&
+            decodeJwildfireResource(param->second.second.value())) {
+          term.texts[i] = param->second.second.value();
+        } else if (std::optional<std::string> text = decodeJwildfireResource(param->second.second.value())) {
           // Scenes are JSON, which holds UTF-8 only: other bytes are read as Latin-1 (as elsewhere here).
           bool changed = false;
           term.texts[i] = asUtf8(*text, changed);
@@ -811,6 +816,21 @@ class FlameReader {
         warn(context + " has " + name +
              " with a color_seed, which only pyr3 writes: pyr3's dc_perlin leaves the point where it is and paints "
              "it an RGB colour from noise, which voxflame's (Fractorium's) does not; it was read as Fractorium's");
+      }
+      // colormap_wf draws an inlined PNG; a picture file the flame only names is not in it, and an inlined
+      // picture of another format is not read: JWildfire's default picture (its four-corner gradient) stands in.
+      if (info->name == "colormap_wf" && term.weight != 0.0) {
+        if (!term.texts.at(1).empty()) {
+          if (const std::string problem = colormapPictureProblem(term.texts.at(1)); !problem.empty()) {
+            lose("picture of " + withoutCopyMark(name));
+            warn(context + " has " + name + " whose inlined picture voxflame cannot read (" + problem +
+                 "); JWildfire's default picture (its four-corner gradient) stands in");
+          }
+        } else if (!term.texts.at(0).empty()) {
+          lose("picture of " + withoutCopyMark(name));
+          warn(context + " has " + name + " with the picture file '" + term.texts.at(0).substr(0, 120) +
+               "', which the flame does not hold; JWildfire's default picture (its four-corner gradient) stands in");
+        }
       }
       // text_wf's font: one that is not installed here is drawn in the family fontconfig offers
       // instead (Java2D falls back the same way), which the importer names; the text itself is kept.
@@ -2864,10 +2884,31 @@ ImportedFlame readFlame(const pugi::xml_node& node, const std::string& where, co
         reader.readLayerCurves(layer, context, factor);
         for (MotionChannel& channel : reader.takePendingChannels()) layerChannels.push_back(std::move(channel));
       }
+      // JWildfire's background transforms paint the picture's background (FlameGenome::backgroundXforms).
+      // The flat view draws them; a 3D render has no such picture plane and shows the plain background.
       if (layer.child("bgxform")) {
-        reader.lose("JWildfire background transforms");
+        std::size_t bgNumber = 0;
+        for (const pugi::xml_node bg : layer.children("bgxform")) {
+          if (genome.backgroundXforms.size() == kMaxFlameXforms) {
+            reader.lose("background transforms after the " + std::to_string(kMaxFlameXforms) + "th");
+            reader.warn("JWildfire " + context + " has more than " + std::to_string(kMaxFlameXforms) +
+                        " background transforms; the rest were left out");
+            break;
+          }
+          const std::string bgWhere =
+              (layerContext.empty() ? "" : layerContext + " ") + "background transform " + std::to_string(++bgNumber);
+          genome.backgroundXforms.push_back(reader.xform(bg, bgWhere, false));
+          if (!reader.takePendingChannels().empty()) {
+            reader.lose("motion of background transforms");
+            reader.warn(bgWhere + " is animated, which voxflame does not keyframe; it stands still");
+          }
+        }
+        if (const auto zoom = parseNumber(node.attribute("cam_zoom").value()); zoom && *zoom > 0.0 && *zoom < 1e6)
+          genome.backgroundZoom = *zoom;
+        reader.lose("JWildfire background transforms in 3D renders");
         reader.warn("JWildfire " + context +
-                    " has background transforms (<bgxform>), which paint JWildfire's background; they were left out");
+                    " has background transforms (<bgxform>), which paint JWildfire's background: the flat view "
+                    "draws them, a 3D render shows the plain background colour");
       }
       const std::vector<GradientStop> palette = gradientOf(readPalette(layer, reader));
       const bool depthAdded = finishGenome(genome, layerContext);
