@@ -72,6 +72,13 @@ gl::RenderSettings viewOf(const core::Scene& scene, const core::GridGeometry& gr
   return settings;
 }
 
+// The device path on every renderer, llvmpipe's included (it packs on the host there otherwise).
+class GpuVolume : public ::testing::Test {
+ protected:
+  void SetUp() override { gl::GpuAccumulator::setPackOnDeviceWithSoftwareRenderer(true); }
+  void TearDown() override { gl::GpuAccumulator::setPackOnDeviceWithSoftwareRenderer(false); }
+};
+
 // A backend sharing this thread's context, refined to `points` of the default preset's pattern.
 struct SharedBackend {
   core::Scene scene = core::defaultScene();
@@ -87,7 +94,7 @@ struct SharedBackend {
 
 }  // namespace
 
-TEST(GpuVolume, APackOnTheGpuIsThePackOnTheHostTexelForTexel) {
+TEST_F(GpuVolume, APackOnTheGpuIsThePackOnTheHostTexelForTexel) {
   if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
   gl::HeadlessContext context;
   // 48³ keeps a colour cell per voxel; above 256³ a colour cell spans 2×2×2 voxels.
@@ -124,7 +131,7 @@ TEST(GpuVolume, APackOnTheGpuIsThePackOnTheHostTexelForTexel) {
   }
 }
 
-TEST(GpuVolume, TheRendererDrawsACopiedVolumeAsAnUploadedOneShadowsIncluded) {
+TEST_F(GpuVolume, TheRendererDrawsACopiedVolumeAsAnUploadedOneShadowsIncluded) {
   if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
   gl::HeadlessContext context;
   SharedBackend refined(64, 1'500'000);
@@ -177,7 +184,7 @@ TEST(GpuVolume, TheRendererDrawsACopiedVolumeAsAnUploadedOneShadowsIncluded) {
   EXPECT_GT(unlitDifference / total, 0.05);
 }
 
-TEST(GpuVolume, AVolumeWhoseBackendIsGoneIsNotDrawn) {
+TEST_F(GpuVolume, AVolumeWhoseBackendIsGoneIsNotDrawn) {
   if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
   gl::HeadlessContext context;
   core::PackedVolume onDevice;
@@ -197,7 +204,7 @@ TEST(GpuVolume, AVolumeWhoseBackendIsGoneIsNotDrawn) {
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
 }
 
-TEST(GpuVolume, ABackendWithoutTheRenderersContextPacksOnTheHost) {
+TEST_F(GpuVolume, ABackendWithoutTheRenderersContextPacksOnTheHost) {
   if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
   gl::GpuAccumulator backend(bunnyMask(32));
   const core::Scene scene = core::defaultScene();
@@ -205,6 +212,7 @@ TEST(GpuVolume, ABackendWithoutTheRenderersContextPacksOnTheHost) {
   backend.setPattern(scene.layers, 5);
   EXPECT_TRUE(backend.waitUntilDone(120.0));
   EXPECT_FALSE(backend.sharesWithRenderer());
+  EXPECT_FALSE(backend.packsOnDevice());
   core::PackedVolume volume;
   ASSERT_TRUE(core::packVolume(backend, volume));
   EXPECT_FALSE(volume.onDevice());

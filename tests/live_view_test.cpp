@@ -20,6 +20,7 @@
 #include "explorer_session.h"
 #include "export_job.h"
 #include "gl/canvas.h"
+#include "gl/gpu_accumulator.h"
 #include "gl/headless_context.h"
 #include "gl/read_back.h"
 #include "live_view.h"
@@ -764,6 +765,11 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
 // packs its grid there, and the view copies it and sweeps its shadow there. The picture at rest is
 // the one the CPU backend's grid gives (another sampling of the same pattern), lit alike.
 TEST_F(LiveViewTest, TheGpuBackendsGridReachesTheViewOnTheGpuAndLooksLikeTheCpus) {
+  // llvmpipe packs on the host otherwise.
+  struct DevicePath {
+    DevicePath() { gl::GpuAccumulator::setPackOnDeviceWithSoftwareRenderer(true); }
+    ~DevicePath() { gl::GpuAccumulator::setPackOnDeviceWithSoftwareRenderer(false); }
+  } devicePath;
   edit([&](core::Scene& scene) {
     scene.render.lighting = true;
     scene.points = 3'000'000;

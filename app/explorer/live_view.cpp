@@ -114,8 +114,8 @@ void LiveView::takeVolume() {
   const auto uploadStart = std::chrono::steady_clock::now();
   const bool uploaded = uploadInProgress_ && renderer_.continueUpload(uploadBytes);
   if (uploadInProgress_) {
-    // The bytes the slabs held: the budget, or what was left of the volume.
-    const std::size_t total = (shown_->density.size() + shown_->colours.size()) * sizeof(std::uint16_t);
+    // The bytes the slabs held (uploaded, or copied on the GPU): the budget, or what was left of the volume.
+    const std::size_t total = (shown_->geometry.voxelCount() + 4 * shown_->colour.cellCount()) * sizeof(std::uint16_t);
     const std::size_t bytes = std::min(uploadBytes, total - std::min(total, uploadedBytes_));
     uploadedBytes_ += bytes;
     if (bytes >= kUploadBytesPerFrame / 8) {

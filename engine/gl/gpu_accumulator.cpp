@@ -832,7 +832,7 @@ void GpuAccumulator::sampleDensity(core::DensitySample& out) const {
 }
 
 bool GpuAccumulator::packOnDevice(core::PackedVolume& out) const {
-  if (!sharesWithRenderer_) return false;
+  if (!packsOnDevice()) return false;
   // The volume this buffer held goes back to the pool first, so the pack can reuse its textures.
   out.device.reset();
   const core::GridGeometry& g = mask_->geometry;

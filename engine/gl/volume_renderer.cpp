@@ -291,21 +291,19 @@ void VolumeRenderer::allocate(Slot& slot, glm::ivec3 size, const core::ColourLay
 }
 
 void VolumeRenderer::beginUpload(const core::PackedVolume& volume) {
-  pending_ = nullptr;
-  allocate(slots_[kMain], volume.geometry.size, volume.colour);
-  if (volume.onDevice()) {
-    copyFromDevice(slots_[kMain], volume);
-    return;
-  }
   pending_ = &volume;
   pendingZ_ = 0;
+  allocate(slots_[kMain], volume.geometry.size, volume.colour);
+  // A GPU copies a whole volume in well under a millisecond; a software rasteriser copies on the
+  // CPU's cores, so there it goes in slabs under the upload's budget, like an upload.
+  if (volume.onDevice() && !softwareRasteriser_) continueUpload(~std::size_t{0});
 }
 
 void VolumeRenderer::uploadProxy(const core::PackedVolume& volume) {
   Slot& slot = slots_[kProxy];
   allocate(slot, volume.geometry.size, volume.colour);
   if (volume.onDevice()) {
-    copyFromDevice(slot, volume);
+    copyFromDevice(slot, volume, 0, volume.geometry.size.z);
     return;
   }
   uploadSlab(slot, volume, 0, volume.geometry.size.z);
@@ -334,48 +332,66 @@ void VolumeRenderer::uploadSlab(Slot& slot, const core::PackedVolume& volume, in
 bool VolumeRenderer::continueUpload(std::size_t budgetBytes) {
   if (!pending_) return true;
   const core::PackedVolume& volume = *pending_;
-  const std::size_t densityValues = slots_[kMain].hasDensity ? volume.density.size() : 0;
+  const std::size_t voxels = volume.geometry.voxelCount();
+  const std::size_t densityValues = slots_[kMain].hasDensity ? voxels : 0;
   const std::size_t slabBytes =
-      (densityValues + volume.colours.size()) * sizeof(std::uint16_t) / std::max(volume.geometry.size.z, 1);
+      (densityValues + 4 * volume.colour.cellCount()) * sizeof(std::uint16_t) / std::max(volume.geometry.size.z, 1);
   const int slabs = static_cast<int>(std::clamp<std::size_t>(budgetBytes / std::max<std::size_t>(slabBytes, 1), 1,
                                                              static_cast<std::size_t>(volume.geometry.size.z)));
   const int endZ = std::min(volume.geometry.size.z, pendingZ_ + slabs);
-  uploadSlab(slots_[kMain], volume, pendingZ_, endZ);
+  if (volume.onDevice()) {
+    copyFromDevice(slots_[kMain], volume, pendingZ_, endZ);
+  } else {
+    uploadSlab(slots_[kMain], volume, pendingZ_, endZ);
+    if (endZ == volume.geometry.size.z) finishUpload(slots_[kMain], volume);
+  }
   pendingZ_ = endZ;
   if (pendingZ_ < volume.geometry.size.z) return false;
-  finishUpload(slots_[kMain], volume);
   pending_ = nullptr;
   return true;
 }
 
-void VolumeRenderer::copyFromDevice(Slot& slot, const core::PackedVolume& volume) {
+void VolumeRenderer::copyFromDevice(Slot& slot, const core::PackedVolume& volume, int firstZ, int endZ) {
   auto* source = dynamic_cast<GpuVolume*>(volume.device.get());
   if (!source) throw core::Error("a volume on the GPU that this renderer cannot read");
   const glm::ivec3 size = volume.geometry.size, cells = volume.colour.size, bricks = volume.brickCount;
-  glBindTexture(GL_TEXTURE_3D, slot.emptyDistance);
-  glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, bricks.x, bricks.y, bricks.z, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE, nullptr);
+  // The colour cells over these slices (a cell over two slabs is copied with both).
+  const int firstCellZ = firstZ >> volume.colour.shift;
+  const int endCellZ = std::min(cells.z, ((endZ - 1) >> volume.colour.shift) + 1);
+  const bool last = endZ == size.z;
   {
-    // Held until the copy's sync is made, so the backend cannot delete the textures meanwhile.
+    // Held until the copy's sync is made, so the backend cannot delete the textures meanwhile. The
+    // volume is not packed into again while it is shown (its buffer is with the live view), so
+    // the slabs of one copy all come from one pack.
     std::lock_guard lock(source->mutex);
     if (!source->alive || !source->packed || source->size != size || source->colourSize != cells) {
       slot.version = 0;  // the backend is gone: nothing to show from it
       return;
     }
     glWaitSync(source->packed, 0, GL_TIMEOUT_IGNORED);  // the pack's commands come first on the device
-    glCopyImageSubData(source->colour, GL_TEXTURE_3D, 0, 0, 0, 0, slot.volume, GL_TEXTURE_3D, 0, 0, 0, 0, cells.x,
-                       cells.y, cells.z);
+    glCopyImageSubData(source->colour, GL_TEXTURE_3D, 0, 0, 0, firstCellZ, slot.volume, GL_TEXTURE_3D, 0, 0, 0,
+                       firstCellZ, cells.x, cells.y, endCellZ - firstCellZ);
     if (slot.hasDensity)
-      glCopyImageSubData(source->density, GL_TEXTURE_3D, 0, 0, 0, 0, slot.density, GL_TEXTURE_3D, 0, 0, 0, 0, size.x,
-                         size.y, size.z);
-    glCopyImageSubData(source->emptyDistance, GL_TEXTURE_3D, 0, 0, 0, 0, slot.emptyDistance, GL_TEXTURE_3D, 0, 0, 0, 0,
-                       bricks.x, bricks.y, bricks.z);
+      glCopyImageSubData(source->density, GL_TEXTURE_3D, 0, 0, 0, firstZ, slot.density, GL_TEXTURE_3D, 0, 0, 0, firstZ,
+                         size.x, size.y, endZ - firstZ);
+    if (last) {
+      // The empty distances are small (a byte per 4³ voxels): copied whole with the last slab, so
+      // they match the volume.
+      glBindTexture(GL_TEXTURE_3D, slot.emptyDistance);
+      glTexImage3D(GL_TEXTURE_3D, 0, GL_R8UI, bricks.x, bricks.y, bricks.z, 0, GL_RED_INTEGER, GL_UNSIGNED_BYTE,
+                   nullptr);
+      glCopyImageSubData(source->emptyDistance, GL_TEXTURE_3D, 0, 0, 0, 0, slot.emptyDistance, GL_TEXTURE_3D, 0, 0, 0,
+                         0, bricks.x, bricks.y, bricks.z);
+    }
     if (source->copied) glDeleteSync(source->copied);
     source->copied = glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
   }
   glFlush();  // the backend's next pack into these textures waits on the sync
-  copiedBytes_ += 4 * sizeof(std::uint16_t) * static_cast<std::uint64_t>(cells.x) * cells.y * cells.z +
-                  (slot.hasDensity ? sizeof(std::uint16_t) * volume.geometry.voxelCount() : 0);
-  setSlotVolume(slot, volume);
+  copiedBytes_ += 4 * sizeof(std::uint16_t) * static_cast<std::uint64_t>(cells.x) * cells.y * (endCellZ - firstCellZ) +
+                  (slot.hasDensity ? sizeof(std::uint16_t) * static_cast<std::uint64_t>(size.x) * size.y *
+                                         static_cast<std::uint64_t>(endZ - firstZ)
+                                   : 0);
+  if (last) setSlotVolume(slot, volume);
 }
 
 void VolumeRenderer::finishUpload(Slot& slot, const core::PackedVolume& volume) {

@@ -105,7 +105,8 @@ class VolumeRenderer {
 
   // Uploads a packed volume, reallocating the textures when the grid's size changed. A volume packed
   // on the GPU (PackedVolume::device, by a backend sharing this renderer's context) is copied there
-  // instead, whole, with no upload: beginUpload completes it and continueUpload has nothing to do.
+  // instead, with no upload: whole by beginUpload on a GPU, in slabs under the budget on a software
+  // rasteriser (whose copies run on the CPU).
   void upload(const core::PackedVolume& volume);
   // Uploads at most `budgetBytes` of the pending volume (whole z-slabs) and returns whether the
   // upload is complete, so a frame never stalls on a large grid. beginUpload keeps a pointer:
@@ -222,8 +223,9 @@ class VolumeRenderer {
   void allocate(Slot& slot, glm::ivec3 size, const core::ColourLayout& colour);
   void uploadSlab(Slot& slot, const core::PackedVolume& volume, int firstZ, int endZ);
   void finishUpload(Slot& slot, const core::PackedVolume& volume);
-  // A volume packed on the GPU (PackedVolume::device) is copied there, whole, in place of an upload.
-  void copyFromDevice(Slot& slot, const core::PackedVolume& volume);
+  // Slices [firstZ, endZ) of a volume packed on the GPU (PackedVolume::device), copied there in
+  // place of an upload; the last slab completes the slot.
+  void copyFromDevice(Slot& slot, const core::PackedVolume& volume, int firstZ, int endZ);
   void setSlotVolume(Slot& slot, const core::PackedVolume& volume);  // what a march needs to know of it
 
   // The march programs, built when first used, one per combination of the bits of MarchVariant:
