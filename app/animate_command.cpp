@@ -284,8 +284,17 @@ int animateCommand(const AnimateArguments& arguments) {
         const double offset =
             arguments.motionBlur > 1 ? ((sub + 0.5) / arguments.motionBlur - 0.5) * arguments.shutter / fps : 0.0;
         const core::Scene moment = core::sceneAtTime(scene, std::max(0.0, time + offset));
+        // Under the GPU backend the renderer comes first: the backend shares its context and
+        // leaves each frame's grid on the GPU.
+        if (!renderer && options.backend == core::BackendKind::Gpu) {
+          renderer.emplace();
+          options.renderer = renderer->shareGroup();
+        }
         if (accumulateFor(moment)) {
-          core::packVolume(accumulated.snapshot, volume);
+          if (accumulated.packed)
+            volume = std::move(*accumulated.packed);
+          else
+            core::packVolume(accumulated.snapshot, volume);
           if (!renderer) renderer.emplace();
           renderer->setVolume(volume, shape);
         }

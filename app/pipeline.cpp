@@ -182,7 +182,8 @@ AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& s
   std::uint64_t target = options.points ? options.points : untilNoise ? kUntilNoisePointCap : scene.points;
   if (scene.render.method == core::RenderMethod::Points) target = std::min(target, kGridPointsForPointsMethod);
   const auto start = std::chrono::steady_clock::now();
-  const std::unique_ptr<core::RefinementBackend> backend = makeBackend(options.backend, shape.mask, options.threads);
+  std::unique_ptr<core::RefinementBackend> backend =
+      makeBackend(options.backend, shape.mask, options.threads, nullptr, options.renderer);
   core::RefinementBackend& accumulator = *backend;
   core::ConvergenceMeter meter;
   core::DensitySample sample;
@@ -253,7 +254,14 @@ AccumulatedVolume accumulateVolume(const core::Scene& scene, const SceneShape& s
   if (!reached || !result.warning.empty()) result.noise = measure();  // else measured once stopped, above
   report(result.stats, result.noise);
   if (!result.stats.problem.empty()) throw core::Error(result.stats.problem);
-  accumulator.snapshot(result.snapshot);
+  if (accumulator.packsOnDevice() && scene.render.method == core::RenderMethod::Volume) {
+    // The grid stays on the GPU: packed there for the renderer, which copies it there.
+    result.packed.emplace();
+    core::packVolume(accumulator, *result.packed);
+    result.packedBy = std::move(backend);
+  } else {
+    accumulator.snapshot(result.snapshot);
+  }
   result.seconds = secondsSince(start);
   return result;
 }
@@ -280,6 +288,10 @@ void FrameRenderer::keepSums(bool keep) {
 
 const std::string& FrameRenderer::rendererName() const {
   return impl_->name;
+}
+
+gl::ShareGroup FrameRenderer::shareGroup() const {
+  return gl::currentShareGroup();
 }
 
 void FrameRenderer::setVolume(const core::PackedVolume& volume, const SceneShape& shape) {
@@ -310,11 +322,14 @@ FrameRenderer::Rendered FrameRenderer::renderWithStats(const core::Scene& scene,
     d.meshUploaded = true;
   }
   if (scene.render.lighting) {
-    core::ShadowVolume shadow;
-    core::computeShadowVolume(*d.volume,
-                              core::lightDirection(scene.render.lightAzimuthDeg, scene.render.lightElevationDeg),
-                              core::kAbsorptionPerDensity, kShadowDownsample, shadow);
-    d.renderer.uploadShadow(shadow, kShadowDownsample);
+    const glm::dvec3 light = core::lightDirection(scene.render.lightAzimuthDeg, scene.render.lightElevationDeg);
+    if (d.volume->onDevice()) {
+      d.renderer.computeShadow(gl::VolumeRenderer::Source::Main, light, core::kAbsorptionPerDensity, kShadowDownsample);
+    } else {
+      core::ShadowVolume shadow;
+      core::computeShadowVolume(*d.volume, light, core::kAbsorptionPerDensity, kShadowDownsample, shadow);
+      d.renderer.uploadShadow(shadow, kShadowDownsample);
+    }
   }
   gl::RenderSettings settings;
   settings.camera = core::orbitCamera(scene.camera, d.shape->mask->geometry.box(),
@@ -377,22 +392,37 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   if (options.stage) options.stage(StillStage::Loading, 0.0);
   const SceneShape shape = buildSceneShape(scene);
   core::PackedVolume volume;
+  // Under the GPU backend the renderer comes first, so the backend can share its context and
+  // leave the grid on the GPU (a chunked render reads its grids back, chunk by chunk).
+  std::optional<FrameRenderer> renderer;
+  StillOptions accumulation = options;
+  if (options.backend == core::BackendKind::Gpu && !options.chunks) {
+    renderer.emplace();
+    accumulation.renderer = renderer->shareGroup();
+  }
   {
-    AccumulatedVolume accumulated = accumulateVolume(scene, shape, options);
+    AccumulatedVolume accumulated = accumulateVolume(scene, shape, accumulation);
     result.stats = accumulated.stats;
     result.warning = accumulated.warning;
     result.accumulateSeconds = accumulated.seconds;
     result.noise = accumulated.noise;
     // A farm task's chunks of the volume method are all it renders.
     if (options.chunks && !options.chunks->finish && scene.render.method != core::RenderMethod::Points) return result;
-    core::packVolume(accumulated.snapshot, volume);
+    if (accumulated.packed) {
+      result.gridOnDevice = true;
+      volume = std::move(*accumulated.packed);
+      // Copied while the backend that packed it still holds its textures.
+      renderer->setVolume(volume, shape);
+    } else {
+      core::packVolume(accumulated.snapshot, volume);
+    }
   }
   if (options.cancel && options.cancel->load()) throw RenderCancelled();
   const auto renderStart = std::chrono::steady_clock::now();
-  FrameRenderer renderer;
-  result.renderer = renderer.rendererName();
-  renderer.setVolume(volume, shape);
-  renderer.setPointsPass(options.points, options.threads, options.chunks ? &*options.chunks : nullptr);
+  if (!renderer) renderer.emplace();
+  result.renderer = renderer->rendererName();
+  if (!volume.onDevice()) renderer->setVolume(volume, shape);
+  renderer->setPointsPass(options.points, options.threads, options.chunks ? &*options.chunks : nullptr);
   // Between sub-samples a cancelled render stops and a progress bar moves.
   std::function<void(double)> renderProgress;
   if (options.cancel || options.stage)
@@ -402,7 +432,7 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
     };
   if (options.stage) options.stage(StillStage::Rendering, 0.0);
   FrameRenderer::Rendered rendered =
-      renderer.renderWithStats(scene, options.width, options.height, options.linearOutput, renderProgress);
+      renderer->renderWithStats(scene, options.width, options.height, options.linearOutput, renderProgress);
   result.image = std::move(rendered.image);
   result.coverage = rendered.coverage;
   result.pointsProjected = rendered.pointsProjected;

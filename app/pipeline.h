@@ -18,7 +18,9 @@
 #include "core/image_io.h"
 #include "core/inside_mask.h"
 #include "core/packed_volume.h"
+#include "core/refinement/refinement_backend.h"
 #include "core/scene.h"
+#include "gl/headless_context.h"
 
 namespace voxflame::app {
 
@@ -67,6 +69,10 @@ struct StillOptions {
   // What refines the volume (resolveBackend gives it from the user's choice): the CPU's threads
   // (`threads` of them) or the GPU's compute shaders. A farm's chunks all use one.
   core::BackendKind backend = core::BackendKind::Cpu;
+  // The context of the FrameRenderer that will draw the volume (FrameRenderer::shareGroup), when
+  // one exists before the accumulation: a GPU backend sharing it packs its grid on the GPU for that
+  // renderer (AccumulatedVolume::packed), with no read-back. Empty: the grid comes to host memory.
+  gl::ShareGroup renderer;
   bool linearOutput = false;                  // linear light (for EXR) instead of display-encoded
   const std::atomic<bool>* cancel = nullptr;  // when set and raised, renderStill throws RenderCancelled
   std::function<void(const core::AccumulatorStats&, std::uint64_t target)> progress;  // may be empty
@@ -86,7 +92,8 @@ struct StillResult {
   double renderSeconds = 0.0;
   std::string renderer;                                // GL_RENDERER
   core::BackendKind backend = core::BackendKind::Cpu;  // what refined the volume
-  std::string warning;                                 // e.g. fewer points landed inside the mesh than asked for
+  bool gridOnDevice = false;          // the GPU backend's grid reached the renderer on the GPU (no read-back)
+  std::string warning;                // e.g. fewer points landed inside the mesh than asked for
   double coverage = 0.0;              // share of the mesh's silhouette where the pattern shows (flame/image.h)
   std::uint64_t pointsProjected = 0;  // points method: points projected into the image (0: volume method)
   double noise = std::numeric_limits<double>::quiet_NaN();  // the grid's final noise estimate (NaN: none)
@@ -110,7 +117,11 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options);
 // For the points method the grid only gives depth (transmittance and shadows), so it takes at
 // most kGridPointsForPointsMethod points; the points pass projects the full count.
 struct AccumulatedVolume {
-  core::VolumeSnapshot snapshot;
+  core::VolumeSnapshot snapshot;  // empty where `packed` is set
+  // The volume packed on the GPU for StillOptions::renderer (PackedVolume::device), in place of the
+  // snapshot, and the backend whose textures it names, kept until the renderer has copied them.
+  std::optional<core::PackedVolume> packed;
+  std::unique_ptr<core::RefinementBackend> packedBy;
   core::AccumulatorStats stats;
   double seconds = 0.0;
   std::string warning;                                      // e.g. fewer points landed inside the mesh than asked for
@@ -130,8 +141,11 @@ class FrameRenderer {
   FrameRenderer(const FrameRenderer&) = delete;
   FrameRenderer& operator=(const FrameRenderer&) = delete;
 
-  // The volume (and the shape it was accumulated in) later render() calls draw.
+  // The volume (and the shape it was accumulated in) later render() calls draw. One packed on the
+  // GPU (AccumulatedVolume::packed) is copied there, and its shadows are swept there too.
   void setVolume(const core::PackedVolume& volume, const SceneShape& shape);
+  // This renderer's context, for StillOptions::renderer (on the thread that made the renderer).
+  gl::ShareGroup shareGroup() const;
   // For the points method: how many points to project (0: the scene's count) on how many threads.
   void setPointsPass(std::uint64_t points, int threads, const ChunkPlan* chunks = nullptr);
   // `scene`'s camera, tone and render settings (method, samples, oversample, mesh overlay,

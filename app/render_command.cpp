@@ -498,10 +498,11 @@ int renderCommand(const RenderArguments& arguments) {
   const std::uint64_t shown = result.pointsProjected ? result.pointsProjected : result.stats.points;
   std::printf(
       "wrote %s (%d×%d, %s method, %d samples, %llu points inside, pattern covers %.0f%% of the mesh, %.2f s "
-      "accumulating on the %s backend, %.2f s rendering on %s)\n",
+      "accumulating on the %s backend%s, %.2f s rendering on %s)\n",
       output.c_str(), options.width, options.height, std::string(core::toString(scene.render.method)).c_str(),
       scene.render.samples, static_cast<unsigned long long>(shown), 100.0 * result.coverage, result.accumulateSeconds,
-      std::string(core::toString(result.backend)).c_str(), result.renderSeconds, result.renderer.c_str());
+      std::string(core::toString(result.backend)).c_str(), result.gridOnDevice ? " (the grid kept on the GPU)" : "",
+      result.renderSeconds, result.renderer.c_str());
   if (arguments.stats) std::printf("stats %s\n", stillMetadata(scene, result).at("voxflame:stats").c_str());
   if (checkpoint)
     std::printf("the chunks stay in %s; delete it when the image is what you want\n", checkpoint->folder.c_str());

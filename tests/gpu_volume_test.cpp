@@ -25,6 +25,7 @@
 #include "gl/gpu_volume.h"
 #include "gl/headless_context.h"
 #include "gl/volume_renderer.h"
+#include "pipeline.h"
 
 using namespace voxflame;
 
@@ -217,4 +218,32 @@ TEST_F(GpuVolume, ABackendWithoutTheRenderersContextPacksOnTheHost) {
   ASSERT_TRUE(core::packVolume(backend, volume));
   EXPECT_FALSE(volume.onDevice());
   EXPECT_EQ(volume.density.size(), volume.geometry.voxelCount());
+}
+
+// A still under the GPU backend keeps its grid on the GPU from the backend to the renderer, and
+// draws what the host path draws, shadows included.
+TEST_F(GpuVolume, AStillOnTheGpuBackendKeepsItsGridOnTheGpu) {
+  if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
+  core::Scene scene = core::defaultScene();
+  scene.gridResolution = 64;
+  scene.points = 1'500'000;
+  scene.render.lighting = true;
+  app::StillOptions options;
+  options.width = 160;
+  options.height = 120;
+  options.backend = core::BackendKind::Gpu;
+  const app::StillResult onDevice = app::renderStill(scene, options);
+  EXPECT_TRUE(onDevice.gridOnDevice);
+  gl::GpuAccumulator::setPackOnDeviceWithSoftwareRenderer(false);
+  const app::StillResult onHost = app::renderStill(scene, options);
+  EXPECT_FALSE(onHost.gridOnDevice);
+  EXPECT_EQ(onDevice.stats.points, onHost.stats.points);
+  EXPECT_GT(core::ssimLuma(onDevice.image, onHost.image), 0.99);
+  double difference = 0.0, total = 0.0;
+  for (std::size_t i = 0; i < onHost.image.pixels.size(); ++i) {
+    difference += std::abs(onDevice.image.pixels[i] - onHost.image.pixels[i]);
+    total += onHost.image.pixels[i];
+  }
+  EXPECT_GT(total, 0.0);
+  EXPECT_LT(difference / total, 0.02);
 }
