@@ -267,9 +267,12 @@ template <ColorMode kMode, Output kOut, bool kTracksStep = true>
     if constexpr (kOut != Output::Nearest) {
       const std::uint32_t r = xorshift32(noise[i]);
       noise[i] = r;
-      along = k.alongStep * (jitterOffset(r) + 0.5);
+      // Without the step (a chaos game's, alongStep 0) the draw is still taken, so the jitters
+      // below stay the same, but nothing is made of it.
+      if constexpr (kTracksStep) along = k.alongStep * (jitterOffset(r) + 0.5);
     }
-    const double qx = xi - along * dx, qy = yi - along * dy, qz = zi - along * dz;
+    const double qx = kTracksStep ? xi - along * dx : xi, qy = kTracksStep ? yi - along * dy : yi,
+                 qz = kTracksStep ? zi - along * dz : zi;
     const double gx = k.m[0] * qx + k.m[1] * qy + k.m[2] * qz + k.o[0];
     const double gy = k.m[3] * qx + k.m[4] * qy + k.m[5] * qz + k.o[1];
     const double gz = k.m[6] * qx + k.m[7] * qy + k.m[8] * qz + k.o[2];
@@ -397,6 +400,44 @@ ClassifyFn classifier(ColorMode mode, Output output, bool chaosGame) {
       return classifierFor<Output::Points>(mode, chaosGame);
   }
   return classifierFor<Output::Jittered>(mode, chaosGame);
+}
+
+// Branch-free append of every settled point of a step in a brick that touches the mask (a
+// 4×4×4-voxel bitmap small enough to stay in L1/L2 drops most outside points here) to out from
+// entry n on; the exact test happens at the flush, where the voxel's cell (which carries the
+// inside flag) is fetched anyway. Returns the new end; adds the settled points it dropped to
+// outside and the escaped orbits to escapes. A function of restrict-qualified arrays, so the
+// loop keeps them in registers (the same loop over a batch's vectors reloaded them every point).
+// kPainted: a point's colour is its painted true colour where it has one (painted non-null).
+template <bool kPainted>
+std::size_t appendSplatsOf(const std::int32_t* __restrict voxel, const std::int32_t* __restrict cell,
+                           const std::int32_t* __restrict slab, const std::int32_t* __restrict brick,
+                           const std::int32_t* __restrict colorIndex, const std::int32_t* __restrict escaped,
+                           const std::uint32_t* __restrict painted, const std::uint32_t* __restrict palette,
+                           const std::uint64_t* __restrict bricks, std::size_t count, Splat* __restrict out,
+                           std::size_t n, std::uint64_t& outside, std::int32_t& escapes) {
+  std::uint64_t dropped = 0;
+  std::int32_t escapedHere = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::int32_t v = voxel[i];
+    std::uint32_t rgb = palette[static_cast<std::uint8_t>(colorIndex[i])];
+    if constexpr (kPainted) rgb = painted[i] & kRgbPainted ? painted[i] & 0xffffffu : rgb;
+    out[n] = Splat{static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(cell[i]),
+                   rgb | static_cast<std::uint32_t>(slab[i]) << 24};
+    const auto brickIndex = static_cast<std::uint32_t>(brick[i]);
+    // Integer arithmetic, not bools: GCC turned the bool form into a bit-test branch, which
+    // mispredicts about every other point of a pattern spread over the grid (a flame).
+    const std::uint64_t inBrick = (bricks[brickIndex >> 6] >> (brickIndex & 63u)) & 1u;
+    const std::uint64_t valid = (static_cast<std::uint32_t>(v) >> 31) ^ 1u;        // v >= 0
+    const std::uint64_t settled = (static_cast<std::uint32_t>(v + 1) >> 31) ^ 1u;  // v >= -1
+    const std::uint64_t keep = inBrick & valid;
+    n += keep;
+    dropped += settled & (keep ^ 1u);
+    escapedHere += escaped[i];
+  }
+  outside += dropped;
+  escapes += escapedHere;
+  return n;
 }
 
 }  // namespace
@@ -1106,40 +1147,17 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
         }
         splats.pointCount = n;
       };
-      const auto appendSplats = [&](const auto& colourOf) {
-        // Branch-free append of every settled point in a brick that touches the mask (a 4×4×4-voxel
-        // bitmap small enough to stay in L1/L2 drops most outside points here); the exact test
-        // happens at the flush, where the voxel's cell (which carries the inside flag) is fetched anyway.
-        const std::uint64_t* bricks = brickBits_.data();
-        Splat* out = splats.entries.data();
-        std::size_t n = splats.count;
-        for (std::size_t i = 0; i < orbits; ++i) {
-          const std::int32_t v = b.voxel[i];
-          out[n] = Splat{static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(b.cell[i]),
-                         colourOf(i) | static_cast<std::uint32_t>(b.slab[i]) << 24};
-          const auto brickIndex = static_cast<std::uint32_t>(b.brick[i]);
-          // Integer arithmetic, not bools: GCC turned the bool form into a bit-test branch, which
-          // mispredicts about every other point of a pattern spread over the grid (a flame).
-          const std::uint64_t inBrick = (bricks[brickIndex >> 6] >> (brickIndex & 63u)) & 1u;
-          const std::uint64_t valid = (static_cast<std::uint32_t>(v) >> 31) ^ 1u;        // v >= 0
-          const std::uint64_t settled = (static_cast<std::uint32_t>(v + 1) >> 31) ^ 1u;  // v >= -1
-          const std::uint64_t keep = inBrick & valid;
-          n += keep;
-          outside += settled & (keep ^ 1u);
-          escapedHere += b.escaped[i];
-        }
-        splats.count = n;
-      };
       if (sink_) {
         if (trueColours)
           appendPoints(paintedColour);
         else
           appendPoints(paletteColour);
         if (splats.pointCount >= kFlushThreshold) points += flushPoints(threadIndex, streamId, splats);
-      } else if (trueColours) {
-        appendSplats(paintedColour);
       } else {
-        appendSplats(paletteColour);
+        const auto append = trueColours ? &appendSplatsOf<true> : &appendSplatsOf<false>;
+        splats.count = append(b.voxel.data(), b.cell.data(), b.slab.data(), b.brick.data(), b.colorIndex.data(),
+                              b.escaped.data(), painted, packedPalette, brickBits_.data(), orbits,
+                              splats.entries.data(), splats.count, outside, escapedHere);
       }
       if (escapedHere > 0) [[unlikely]] {
         escapes += static_cast<std::uint64_t>(escapedHere);
