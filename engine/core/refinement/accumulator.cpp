@@ -306,13 +306,13 @@ template <ColorMode kMode, Output kOut, bool kTracksStep = true>
       gyOut[i] = fy < uy ? fy : uy * kBelow;
       gzOut[i] = fz < uz ? fz : uz * kBelow;
     }
-    // -1: outside the grid (counted as outside); -2: not a point yet (transient or escaped).
+    // The voxel's coordinates and what the point is, for the integer pass below (in the arrays that
+    // pass fills): 2 when settled, plus 1 when in the grid.
     const bool settled = finite & (age[i] > kTransientSteps);
-    voxel[i] = settled ? (inGrid ? vi + k.sizeX * vj + k.sizeXY * vk : -1) : -2;
-    brick[i] = (vi >> 2) + k.bricksX * (vj >> 2) + k.bricksXY * (vk >> 2);
-    const std::int32_t ck = vk >> k.colourShift;
-    cell[i] = (vi >> k.colourShift) + k.cellsX * (vj >> k.colourShift) + k.cellsXY * ck;
-    slab[i] = ck >> k.slabShift;
+    brick[i] = vi;
+    cell[i] = vj;
+    slab[i] = vk;
+    voxel[i] = (settled ? 2 : 0) | (inGrid ? 1 : 0);
     escaped[i] = finite ? 0 : 1;
     if constexpr (kTracksStep) {
       sx[i] = dx;
@@ -323,6 +323,17 @@ template <ColorMode kMode, Output kOut, bool kTracksStep = true>
       pz[i] = zi;
     }
     age[i] += age[i] < kAgeLimit ? 1 : 0;
+  }
+  // The integer indices in a pass of their own: in the loop above, with its doubles, the vectoriser
+  // ran out of registers and spilled.
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::int32_t vi = brick[i], vj = cell[i], vk = slab[i], what = voxel[i];
+    // -1: outside the grid (counted as outside); -2: not a point yet (transient or escaped).
+    voxel[i] = (what & 2) ? ((what & 1) ? vi + k.sizeX * vj + k.sizeXY * vk : -1) : -2;
+    brick[i] = (vi >> 2) + k.bricksX * (vj >> 2) + k.bricksXY * (vk >> 2);
+    const std::int32_t ck = vk >> k.colourShift;
+    cell[i] = (vi >> k.colourShift) + k.cellsX * (vj >> k.colourShift) + k.cellsXY * ck;
+    slab[i] = ck >> k.slabShift;
   }
 }
 
