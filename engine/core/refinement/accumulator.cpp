@@ -425,8 +425,9 @@ std::size_t appendSplatsOf(const std::int32_t* __restrict voxel, const std::int3
                            const std::int32_t* __restrict slab, const std::int32_t* __restrict brick,
                            const std::int32_t* __restrict colorIndex, const std::int32_t* __restrict escaped,
                            const std::uint32_t* __restrict painted, const std::uint32_t* __restrict palette,
-                           const std::uint64_t* __restrict bricks, std::size_t count, Splat* __restrict out,
-                           std::size_t n, std::uint64_t& outside, std::int32_t& escapes) {
+                           const std::uint64_t* __restrict bricks, const detail::ColourCell* cells,
+                           const std::uint32_t* hits, std::size_t count, Splat* __restrict out, std::size_t n,
+                           std::uint64_t& outside, std::int32_t& escapes) {
   std::uint64_t dropped = 0;
   std::int32_t escapedHere = 0;
   for (std::size_t i = 0; i < count; ++i) {
@@ -442,6 +443,11 @@ std::size_t appendSplatsOf(const std::int32_t* __restrict voxel, const std::int3
     const std::uint64_t valid = (static_cast<std::uint32_t>(v) >> 31) ^ 1u;        // v >= 0
     const std::uint64_t settled = (static_cast<std::uint32_t>(v + 1) >> 31) ^ 1u;  // v >= -1
     const std::uint64_t keep = inBrick & valid;
+    // The flush adds the point to its colour cell (and its voxel's hits, where they are apart), an
+    // access to anywhere in the grid: asked for now, the line comes while the orbits step on, and
+    // the flush finds it in the cache. A point not kept asks for the first cell, once.
+    __builtin_prefetch(cells + static_cast<std::uint32_t>(cell[i]) * keep, 1, 3);
+    if (hits) __builtin_prefetch(hits + static_cast<std::uint32_t>(v) * keep, 1, 3);
     n += keep;
     dropped += settled & (keep ^ 1u);
     escapedHere += escaped[i];
@@ -1167,8 +1173,9 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
       } else {
         const auto append = trueColours ? &appendSplatsOf<true> : &appendSplatsOf<false>;
         splats.count = append(b.voxel.data(), b.cell.data(), b.slab.data(), b.brick.data(), b.colorIndex.data(),
-                              b.escaped.data(), painted, packedPalette, brickBits_.data(), orbits,
-                              splats.entries.data(), splats.count, outside, escapedHere);
+                              b.escaped.data(), painted, packedPalette, brickBits_.data(), colours_.data(),
+                              colour_.shift == 0 ? nullptr : hits_.data(), orbits, splats.entries.data(), splats.count,
+                              outside, escapedHere);
       }
       if (escapedHere > 0) [[unlikely]] {
         escapes += static_cast<std::uint64_t>(escapedHere);
