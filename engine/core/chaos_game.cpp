@@ -29,31 +29,28 @@ static_assert(kMaxFlameXforms + kMaxFlameSymmetry < 256, "ChaosLanes::choice hol
 #define VOXFLAME_CHAOS_TARGETS
 #endif
 
-// Each lane draws its transform: the top bits of its next random number index the pick table.
-[[gnu::always_inline]] inline void drawBody(std::uint32_t* __restrict random, std::uint8_t* __restrict choice,
-                                            const std::uint8_t* __restrict pick, int shift, std::size_t count) {
-  for (std::size_t i = 0; i < count; ++i) {
+// Each lane draws its transform: the top bits of its next random number index the pick table (with
+// xaos, the row of the transform it took last, and it remembers its choice). Counted as drawn, four
+// ways (lane i in count i mod 4): lanes that follow each other often choose the same transform, and
+// with one count per transform each increment would wait for the one before it.
+constexpr std::size_t kCountWays = 4;
+using GroupCounts = std::array<std::array<std::uint32_t, kMaxFlameXforms + kMaxFlameSymmetry>, kCountWays>;
+template <bool kXaos>
+void drawAndCount(std::uint32_t* __restrict random, std::uint8_t* __restrict choice, std::uint8_t* __restrict previous,
+                  const std::uint8_t* __restrict pick, int shift, int rowBits, std::size_t count, GroupCounts& counts) {
+  const auto draw = [&](std::size_t i) {
     const std::uint32_t r = laneNext(random[i]);
     random[i] = r;
-    choice[i] = pick[r >> shift];
-  }
-}
-VOXFLAME_CHAOS_TARGETS void drawTransforms(std::uint32_t* random, std::uint8_t* choice, const std::uint8_t* pick,
-                                           int shift, std::size_t count) {
-  drawBody(random, choice, pick, shift, count);
-}
-
-// With xaos: each lane draws from the row of the transform it took last, then remembers its choice.
-void drawTransformsAfter(std::uint32_t* __restrict random, std::uint8_t* __restrict choice,
-                         std::uint8_t* __restrict previous, const std::uint8_t* __restrict pick, int shift, int rowBits,
-                         std::size_t count) {
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::uint32_t r = laneNext(random[i]);
-    random[i] = r;
-    const std::uint8_t k = pick[(static_cast<std::size_t>(previous[i]) << rowBits) | (r >> shift)];
+    const std::size_t row = kXaos ? static_cast<std::size_t>(previous[i]) << rowBits : 0;
+    const std::uint8_t k = pick[row | (r >> shift)];
     choice[i] = k;
-    previous[i] = static_cast<std::uint8_t>(k + 1);
-  }
+    if constexpr (kXaos) previous[i] = static_cast<std::uint8_t>(k + 1);
+    return k;
+  };
+  std::size_t lane = 0;
+  for (; lane + kCountWays <= count; lane += kCountWays)
+    for (std::size_t way = 0; way < kCountWays; ++way) ++counts[way][draw(lane + way)];
+  for (; lane < count; ++lane) ++counts[lane % kCountWays][draw(lane)];
 }
 
 // Fills one row of the pick table: entry e covers draws in [e, e + 1) / size; each transform owns
@@ -679,24 +676,19 @@ void ChaosGame::keepPaintedRgb(const Compiled& xform, ChaosLanes& lanes, const s
 
 void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
                           std::size_t count) const {
-  // 1. Every lane draws its transform.
+  // 1. Every lane draws its transform, counted by transform for 2.
   std::uint32_t* random = lanes.random.data();
   std::uint8_t* choice = lanes.choice.data();
-  if (xaos_)
-    drawTransformsAfter(random, choice, lanes.previous.data(), pick_.data(), 32 - kPickBits, kPickBits, count);
-  else
-    drawTransforms(random, choice, pick_.data(), 32 - kPickBits, count);
-  // 2. Counting sort of the lanes by transform, counted four ways (lane i in count i mod 4): lanes
-  // that follow each other often chose the same transform, and with one count per transform each
-  // increment would wait for the one before it.
-  constexpr std::size_t kWays = 4;
+  constexpr std::size_t kWays = kCountWays;
   const std::size_t xformCount = xforms_.size();
-  std::array<std::array<std::uint32_t, kMaxFlameXforms + kMaxFlameSymmetry>, kWays> cursor;
+  GroupCounts cursor;
   for (auto& way : cursor) std::fill_n(way.begin(), xformCount, 0u);
+  if (xaos_)
+    drawAndCount<true>(random, choice, lanes.previous.data(), pick_.data(), 32 - kPickBits, kPickBits, count, cursor);
+  else
+    drawAndCount<false>(random, choice, lanes.previous.data(), pick_.data(), 32 - kPickBits, kPickBits, count, cursor);
+  // 2. Counting sort of the lanes by transform.
   std::size_t lane = 0;
-  for (; lane + kWays <= count; lane += kWays)
-    for (std::size_t way = 0; way < kWays; ++way) ++cursor[way][choice[lane + way]];
-  for (; lane < count; ++lane) ++cursor[lane % kWays][choice[lane]];
   // start[k]: group k's first place in `order`; cursor[w][k]: the next place for way w's lanes of it.
   std::array<std::uint32_t, kMaxFlameXforms + kMaxFlameSymmetry + 1> start;
   std::uint32_t place = 0;
