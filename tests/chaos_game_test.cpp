@@ -689,3 +689,71 @@ TEST(ChaosGame, ChainedFinalTransformsApplyInOrder) {
   single.step(lanes, &x, &y, &z, &c, 1);
   EXPECT_NEAR(x, 1.25, 1e-12);
 }
+
+// The chaos game moves no random state through a group whose variations are all marked fixed
+// (VariationInfo::random false), so that mark must hold: a fixed variation leaves every lane's
+// generator as it was, at points near the origin, ordinary ones and far ones.
+TEST(ChaosGame, VariationsMarkedFixedDrawNoRandomNumbers) {
+  const std::vector<std::array<double, 3>> points = {{0.0, 0.0, 0.0},   {1e-9, -1e-9, 0.0}, {0.3, -0.4, 0.2},
+                                                     {-0.7, 0.9, -0.5}, {1.5, 2.5, -3.0},   {-12.0, 7.0, 4.0},
+                                                     {1e5, -3e4, 2e3},  {0.5, 0.5, 0.5}};
+  const std::size_t n = points.size();
+  for (const VariationInfo& info : variationCatalogue()) {
+    if (info.random) continue;
+    std::vector<double> x(n), y(n), z(n), ox(n), oy(n), oz(n), colour(n, 0.5);
+    std::vector<double> state(n * std::max<std::size_t>(info.laneState, 1), 0.0);
+    std::vector<std::uint32_t> random(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      x[i] = points[i][0];
+      y[i] = points[i][1];
+      z[i] = points[i][2];
+      random[i] = 0x9e3779b9u * static_cast<std::uint32_t>(i + 1) | 1u;
+    }
+    const std::vector<std::uint32_t> before = random;
+    const std::array<double, 12> identity{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+    const std::vector<double> params = info.defaultParams();
+    const std::vector<std::string> texts = info.defaultTexts();
+    VariationInput in;
+    in.x = in.tx = x.data();
+    in.y = in.ty = y.data();
+    in.z = in.tz = z.data();
+    in.random = random.data();
+    in.count = n;
+    in.params = params.data();
+    in.affine = identity.data();
+    in.colour = colour.data();
+    in.texts = texts.empty() ? nullptr : texts.data();
+    in.state = info.laneState > 0 ? state.data() : nullptr;
+    info.apply(in, ox.data(), oy.data(), oz.data());
+    EXPECT_EQ(random, before) << info.name << " is marked fixed but draws random numbers";
+  }
+}
+
+// Lanes that took a transform of fixed variations keep their generators as the transform draw left
+// them; the others, whose transform draws, move on.
+TEST(ChaosGame, OnlyTransformsThatDrawMoveTheirLanesGenerators) {
+  FlameGenome g;
+  g.xforms.push_back(xform(1.0, affine({0.5, 0, 0, 0.5, 0, 0.5, 0, 0, 0, 0, 0.5, 0})));
+  g.xforms.push_back(xform(1.0, affine({0.5, 0, 0, -0.5, 0, 0.5, 0, 0, 0, 0, 0.5, 0})));
+  g.xforms[1].variations = {{"blur", 1.0, {}}};
+  ASSERT_TRUE(variationOrThrow("blur").random);
+  const ChaosGame game(flameLayer(g), "layer");
+  LaneRun run(game);
+  std::size_t fixed = 0, drawn = 0;
+  for (int s = 0; s < 20; ++s) {
+    const std::vector<std::uint32_t> before = run.lanes.random;
+    run.step(game);
+    for (std::size_t i = 0; i < kLanes; ++i) {
+      EXPECT_EQ(run.lanes.visible[i], 1);
+      if (run.lanes.choice[i] == 0) {
+        EXPECT_EQ(run.lanes.random[i], laneNext(before[i]));
+        ++fixed;
+      } else {
+        EXPECT_NE(run.lanes.random[i], laneNext(before[i]));
+        ++drawn;
+      }
+    }
+  }
+  EXPECT_GT(fixed, 1000u);
+  EXPECT_GT(drawn, 1000u);
+}

@@ -29,31 +29,28 @@ static_assert(kMaxFlameXforms + kMaxFlameSymmetry < 256, "ChaosLanes::choice hol
 #define VOXFLAME_CHAOS_TARGETS
 #endif
 
-// Each lane draws its transform: the top bits of its next random number index the pick table.
-[[gnu::always_inline]] inline void drawBody(std::uint32_t* __restrict random, std::uint8_t* __restrict choice,
-                                            const std::uint8_t* __restrict pick, int shift, std::size_t count) {
-  for (std::size_t i = 0; i < count; ++i) {
+// Each lane draws its transform: the top bits of its next random number index the pick table (with
+// xaos, the row of the transform it took last, and it remembers its choice). Counted as drawn, four
+// ways (lane i in count i mod 4): lanes that follow each other often choose the same transform, and
+// with one count per transform each increment would wait for the one before it.
+constexpr std::size_t kCountWays = 4;
+using GroupCounts = std::array<std::array<std::uint32_t, kMaxFlameXforms + kMaxFlameSymmetry>, kCountWays>;
+template <bool kXaos>
+void drawAndCount(std::uint32_t* __restrict random, std::uint8_t* __restrict choice, std::uint8_t* __restrict previous,
+                  const std::uint8_t* __restrict pick, int shift, int rowBits, std::size_t count, GroupCounts& counts) {
+  const auto draw = [&](std::size_t i) {
     const std::uint32_t r = laneNext(random[i]);
     random[i] = r;
-    choice[i] = pick[r >> shift];
-  }
-}
-VOXFLAME_CHAOS_TARGETS void drawTransforms(std::uint32_t* random, std::uint8_t* choice, const std::uint8_t* pick,
-                                           int shift, std::size_t count) {
-  drawBody(random, choice, pick, shift, count);
-}
-
-// With xaos: each lane draws from the row of the transform it took last, then remembers its choice.
-void drawTransformsAfter(std::uint32_t* __restrict random, std::uint8_t* __restrict choice,
-                         std::uint8_t* __restrict previous, const std::uint8_t* __restrict pick, int shift, int rowBits,
-                         std::size_t count) {
-  for (std::size_t i = 0; i < count; ++i) {
-    const std::uint32_t r = laneNext(random[i]);
-    random[i] = r;
-    const std::uint8_t k = pick[(static_cast<std::size_t>(previous[i]) << rowBits) | (r >> shift)];
+    const std::size_t row = kXaos ? static_cast<std::size_t>(previous[i]) << rowBits : 0;
+    const std::uint8_t k = pick[row | (r >> shift)];
     choice[i] = k;
-    previous[i] = static_cast<std::uint8_t>(k + 1);
-  }
+    if constexpr (kXaos) previous[i] = static_cast<std::uint8_t>(k + 1);
+    return k;
+  };
+  std::size_t lane = 0;
+  for (; lane + kCountWays <= count; lane += kCountWays)
+    for (std::size_t way = 0; way < kCountWays; ++way) ++counts[way][draw(lane + way)];
+  for (; lane < count; ++lane) ++counts[lane % kCountWays][draw(lane)];
 }
 
 // Fills one row of the pick table: entry e covers draws in [e, e + 1) / size; each transform owns
@@ -81,7 +78,9 @@ bool fillPickRow(std::uint8_t* row, std::size_t size, const std::vector<double>&
   return true;
 }
 
-// The lanes of one group gathered through the affine map into contiguous arrays.
+// The lanes of one group gathered through the affine map into contiguous arrays, with their
+// random states unless the group draws none (kWithRandom false: a group of fixed variations).
+template <bool kWithRandom>
 [[gnu::always_inline]] inline void gatherBody(const std::uint32_t* __restrict group, std::size_t n,
                                               const double* __restrict x, const double* __restrict y,
                                               const double* __restrict z, const std::uint32_t* __restrict random,
@@ -93,16 +92,23 @@ bool fillPickRow(std::uint8_t* row, std::size_t size, const std::vector<double>&
     tx[j] = a[0] * px + a[1] * py + a[2] * pz + a[3];
     ty[j] = a[4] * px + a[5] * py + a[6] * pz + a[7];
     tz[j] = a[8] * px + a[9] * py + a[10] * pz + a[11];
-    groupRandom[j] = random[l];
+    if constexpr (kWithRandom) groupRandom[j] = random[l];
   }
 }
 VOXFLAME_CHAOS_TARGETS void gatherAffine(const std::uint32_t* group, std::size_t n, const double* x, const double* y,
                                          const double* z, const std::uint32_t* random, const double* a, double* tx,
-                                         double* ty, double* tz, std::uint32_t* groupRandom) {
-  gatherBody(group, n, x, y, z, random, a, tx, ty, tz, groupRandom);
+                                         double* ty, double* tz, std::uint32_t* groupRandom, bool withRandom = true) {
+  if (withRandom)
+    gatherBody<true>(group, n, x, y, z, random, a, tx, ty, tz, groupRandom);
+  else
+    gatherBody<false>(group, n, x, y, z, random, a, tx, ty, tz, groupRandom);
 }
 
 // The group's results back into their lanes, with flam3's colour blend and the opacity draw.
+// Without kWithRandom the lanes' random states stay as they were (the group drew none, see
+// gatherBody); without kWritesVisible an opaque group leaves visible to the caller (stepFlame sets
+// all of it at once in a game where nothing hides points).
+template <bool kOpaque, bool kWithRandom, bool kWritesVisible>
 [[gnu::always_inline]] inline void scatterBody(const std::uint32_t* __restrict group, std::size_t n,
                                                const double* __restrict ox, const double* __restrict oy,
                                                const double* __restrict oz, std::uint32_t* __restrict groupRandom,
@@ -110,27 +116,43 @@ VOXFLAME_CHAOS_TARGETS void gatherAffine(const std::uint32_t* group, std::size_t
                                                double* __restrict color, std::uint32_t* __restrict random,
                                                std::int32_t* __restrict visible, double keep, double pull,
                                                double opacity) {
+  static_assert(kOpaque || (kWithRandom && kWritesVisible), "a translucent group draws for its opacity");
   for (std::size_t j = 0; j < n; ++j) {
     const std::uint32_t l = group[j];
     x[l] = ox[j];
     y[l] = oy[j];
     z[l] = oz[j];
     color[l] = keep * color[l] + pull;
-    std::uint32_t r = groupRandom[j];
-    // Only a translucent transform draws for its opacity (the loop is built twice, see below).
-    visible[l] = opacity >= 1.0 ? 1 : (laneUniform(r) < opacity ? 1 : 0);
-    random[l] = r;
+    if constexpr (kWithRandom) {
+      std::uint32_t r = groupRandom[j];
+      // Only a translucent transform draws for its opacity.
+      if constexpr (kWritesVisible) visible[l] = kOpaque ? 1 : (laneUniform(r) < opacity ? 1 : 0);
+      random[l] = r;
+    } else if constexpr (kWritesVisible) {
+      visible[l] = 1;
+    }
   }
 }
+// drawsRandom: the group's variations may have drawn random numbers; setsVisible: write each
+// lane's visible flag (a translucent group always does, and draws for it).
 VOXFLAME_CHAOS_TARGETS void scatterGroup(const std::uint32_t* group, std::size_t n, const double* ox, const double* oy,
                                          const double* oz, std::uint32_t* groupRandom, double* x, double* y, double* z,
                                          double* color, std::uint32_t* random, std::int32_t* visible, double keep,
-                                         double pull, double opacity) {
-  // Two copies of the loop, so the common opaque case has no draw and no compare in it.
-  if (opacity >= 1.0)
-    scatterBody(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull, 1.0);
+                                         double pull, double opacity, bool drawsRandom, bool setsVisible) {
+  // Copies of the loop, so the common opaque case has no draw and no compare in it, and a group of
+  // fixed variations moves no random state.
+  if (opacity < 1.0)
+    scatterBody<false, true, true>(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull,
+                                   opacity);
+  else if (drawsRandom && setsVisible)
+    scatterBody<true, true, true>(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull, 1.0);
+  else if (drawsRandom)
+    scatterBody<true, true, false>(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull, 1.0);
+  else if (setsVisible)
+    scatterBody<true, false, true>(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull, 1.0);
   else
-    scatterBody(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull, opacity);
+    scatterBody<true, false, false>(group, n, ox, oy, oz, groupRandom, x, y, z, color, random, visible, keep, pull,
+                                    1.0);
 }
 
 // p ← M p + t in place (the post-affine).
@@ -245,6 +267,7 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
         }
       }
       c.hasNormalTerms = c.hasNormalTerms || stage == VariationStage::Normal;
+      c.drawsRandom = c.drawsRandom || info.random;
       c.directColour = c.directColour || info.directColour;
       c.paintsRgb = c.paintsRgb || info.paintsRgb;
       c.hidesByTerm = c.hidesByTerm || info.hidesPoints;
@@ -653,24 +676,19 @@ void ChaosGame::keepPaintedRgb(const Compiled& xform, ChaosLanes& lanes, const s
 
 void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double* outZ, double* outColor,
                           std::size_t count) const {
-  // 1. Every lane draws its transform.
+  // 1. Every lane draws its transform, counted by transform for 2.
   std::uint32_t* random = lanes.random.data();
   std::uint8_t* choice = lanes.choice.data();
-  if (xaos_)
-    drawTransformsAfter(random, choice, lanes.previous.data(), pick_.data(), 32 - kPickBits, kPickBits, count);
-  else
-    drawTransforms(random, choice, pick_.data(), 32 - kPickBits, count);
-  // 2. Counting sort of the lanes by transform, counted four ways (lane i in count i mod 4): lanes
-  // that follow each other often chose the same transform, and with one count per transform each
-  // increment would wait for the one before it.
-  constexpr std::size_t kWays = 4;
+  constexpr std::size_t kWays = kCountWays;
   const std::size_t xformCount = xforms_.size();
-  std::array<std::array<std::uint32_t, kMaxFlameXforms + kMaxFlameSymmetry>, kWays> cursor;
+  GroupCounts cursor;
   for (auto& way : cursor) std::fill_n(way.begin(), xformCount, 0u);
+  if (xaos_)
+    drawAndCount<true>(random, choice, lanes.previous.data(), pick_.data(), 32 - kPickBits, kPickBits, count, cursor);
+  else
+    drawAndCount<false>(random, choice, lanes.previous.data(), pick_.data(), 32 - kPickBits, kPickBits, count, cursor);
+  // 2. Counting sort of the lanes by transform.
   std::size_t lane = 0;
-  for (; lane + kWays <= count; lane += kWays)
-    for (std::size_t way = 0; way < kWays; ++way) ++cursor[way][choice[lane + way]];
-  for (; lane < count; ++lane) ++cursor[lane % kWays][choice[lane]];
   // start[k]: group k's first place in `order`; cursor[w][k]: the next place for way w's lanes of it.
   std::array<std::uint32_t, kMaxFlameXforms + kMaxFlameSymmetry + 1> start;
   std::uint32_t place = 0;
@@ -691,18 +709,22 @@ void ChaosGame::stepFlame(ChaosLanes& lanes, double* outX, double* outY, double*
   double* z = lanes.z.data();
   double* color = lanes.color.data();
   std::int32_t* visible = lanes.visible.data();
+  // Where no transform hides points every drawn point is shown: set here in one pass, not lane by
+  // lane in each group's scatter.
+  if (!hidesPoints_) std::fill_n(visible, count, 1);
   for (std::size_t k = 0; k < xforms_.size(); ++k) {
     const std::uint32_t first = start[k], n = start[k + 1] - start[k];
     if (n == 0) continue;
     const Compiled& xf = xforms_[k];
     const std::uint32_t* group = order + first;
+    const bool drawsRandom = xf.drawsRandom || xf.opacity < 1.0;
     gatherAffine(group, n, x, y, z, random, xf.affine.data(), lanes.tx.data(), lanes.ty.data(), lanes.tz.data(),
-                 lanes.groupRandom.data());
+                 lanes.groupRandom.data(), drawsRandom);
     if (xf.directColour) startDirectColour(xf, lanes, group, n);
     if (xf.hasField) fillField(xf, group, n, x, y, z, lanes);
     applyGroup(xf, lanes, group, n);
     scatterGroup(group, n, lanes.ox.data(), lanes.oy.data(), lanes.oz.data(), lanes.groupRandom.data(), x, y, z, color,
-                 random, visible, 1.0 - xf.colorSpeed, xf.colorSpeed * xf.color, xf.opacity);
+                 random, visible, 1.0 - xf.colorSpeed, xf.colorSpeed * xf.color, xf.opacity, drawsRandom, hidesPoints_);
     if (xf.directColour) {
       // The plain blend scatterGroup wrote is replaced by the direct-colour one.
       finishDirectColour(xf, lanes, n);

@@ -122,6 +122,7 @@ class ChaosGame {
     std::array<double, 12> post{};
     std::vector<Term> terms;  // pre_ terms first, then the others, then post_ ones (each in file order)
     bool hasNormalTerms = false;
+    bool drawsRandom = false;  // has a term that draws random numbers (VariationInfo::random)
     double color = 0.0, colorSpeed = 0.5, opacity = 1.0;
     bool directColour = false;  // has a term that reads or sets the colour index (VariationInfo::directColour)
     double directColor = 1.0;

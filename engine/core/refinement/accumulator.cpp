@@ -24,11 +24,17 @@ namespace voxflame::core {
 
 namespace {
 
-constexpr std::size_t kOrbitsPerBatch = 256;    // independent orbits advanced together per layer
-constexpr int kStepsPerBatch = 128;             // steps per batch before checking for a new generation
-constexpr std::int32_t kTransientSteps = 32;    // steps an orbit takes before it may splat
-constexpr std::int32_t kAgeLimit = 1 << 30;     // ages saturate here (time colouring then freezes)
-constexpr int kMaxSlabs = 64;                   // grid slabs, each with its own mutex
+constexpr std::size_t kOrbitsPerBatch = 256;  // independent orbits advanced together per layer
+// A chaos game's orbits: four times as many, for as many samples a batch in a quarter of the steps. A
+// step of a flame works transform by transform on the orbits that drew each (chaos_game.h), and with
+// 20 transforms 256 orbits leave about a dozen to a group, where each group's and each variation
+// call's fixed cost weighed as much as the variations themselves.
+constexpr std::size_t kChaosOrbitsPerBatch = 1024;
+constexpr std::size_t kMaxOrbitsPerBatch = std::max(kOrbitsPerBatch, kChaosOrbitsPerBatch);
+constexpr int kStepsPerBatch = 128;           // steps per batch before checking for a new generation (with 256 orbits)
+constexpr std::int32_t kTransientSteps = 32;  // steps an orbit takes before it may splat
+constexpr std::int32_t kAgeLimit = 1 << 30;   // ages saturate here (time colouring then freezes)
+constexpr int kMaxSlabs = 64;                 // grid slabs, each with its own mutex
 constexpr std::size_t kFlushThreshold = 8'192;  // splats a thread collects before adding them to the grid
 using detail::kColourCountLimit;
 using detail::kOutsideBit;
@@ -79,15 +85,15 @@ struct SplatBuffer {
   std::vector<std::uint32_t> rgb;
   std::size_t pointCount = 0;
   void reset(std::size_t slabs) {
-    entries.assign(kFlushThreshold + kOrbitsPerBatch, Splat{});
+    entries.assign(kFlushThreshold + kMaxOrbitsPerBatch, Splat{});
     sorted.assign(entries.size(), Splat{});
     slabStart.assign(slabs + 1, 0);
     count = 0;
   }
   void reservePoints() {
     if (!x.empty()) return;
-    for (auto* v : {&x, &y, &z}) v->assign(kFlushThreshold + kOrbitsPerBatch, 0.0f);
-    rgb.assign(kFlushThreshold + kOrbitsPerBatch, 0);
+    for (auto* v : {&x, &y, &z}) v->assign(kFlushThreshold + kMaxOrbitsPerBatch, 0.0f);
+    rgb.assign(kFlushThreshold + kMaxOrbitsPerBatch, 0);
   }
 };
 
@@ -197,28 +203,33 @@ LayerKernel makeKernel(const PreparedLayer& layer, const GridGeometry& grid, con
 // argument so the per-point work has no switch.
 // The arrays of an OrbitBatch as __restrict function parameters: GCC honours restrict reliably
 // on parameters (not on locals loaded from a struct), and without it the loop does not vectorise.
-#define VOXFLAME_CLASSIFY_PARAMS                                                                                  \
-  const LayerKernel &kernel, const double *__restrict x, const double *__restrict y, const double *__restrict z,  \
-      double *__restrict px, double *__restrict py, double *__restrict pz, double *__restrict sx,                 \
-      double *__restrict sy, double *__restrict sz, std::int32_t *__restrict age, std::int32_t *__restrict voxel, \
-      std::int32_t *__restrict colorIndex, std::int32_t *__restrict escaped, std::int32_t *__restrict brick,      \
-      std::int32_t *__restrict cell, std::int32_t *__restrict slab, std::uint32_t *__restrict noise,              \
-      float *__restrict gxOut, float *__restrict gyOut, float *__restrict gzOut, const double *__restrict colorCoord
+#define VOXFLAME_CLASSIFY_PARAMS                                                                                      \
+  const LayerKernel &kernel, const double *__restrict x, const double *__restrict y, const double *__restrict z,      \
+      double *__restrict px, double *__restrict py, double *__restrict pz, double *__restrict sx,                     \
+      double *__restrict sy, double *__restrict sz, std::int32_t *__restrict age, std::int32_t *__restrict voxel,     \
+      std::int32_t *__restrict colorIndex, std::int32_t *__restrict escaped, std::int32_t *__restrict brick,          \
+      std::int32_t *__restrict cell, std::int32_t *__restrict slab, std::uint32_t *__restrict noise,                  \
+      float *__restrict gxOut, float *__restrict gyOut, float *__restrict gzOut, const double *__restrict colorCoord, \
+      std::size_t count
 #define VOXFLAME_CLASSIFY_ARGS                                                                                      \
   kernel, x, y, z, px, py, pz, sx, sy, sz, age, voxel, colorIndex, escaped, brick, cell, slab, noise, gxOut, gyOut, \
-      gzOut, colorCoord
+      gzOut, colorCoord, count
 
 // One pass over a batch after it advanced: escape test, colour value, voxel index. Bitwise &
 // (not &&) and selects keep the body one basic block so it vectorises across orbits; the colour
 // mode is a template argument so the per-point work has no switch.
-template <ColorMode kMode, Output kOut>
+// kTracksStep false: the point's last step (p and s) is neither read nor kept, for a layer that
+// never needs it: a chaos game (no flow to draw along its step) coloured by its colour index.
+template <ColorMode kMode, Output kOut, bool kTracksStep = true>
 [[gnu::always_inline]] inline void classifyBody(VOXFLAME_CLASSIFY_PARAMS) {
+  static_assert(kTracksStep || kMode == ColorMode::Index);
   const LayerKernel k = kernel;  // a local copy cannot alias the arrays written below
-  for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
+  for (std::size_t i = 0; i < count; ++i) {
     const double xi = x[i], yi = y[i], zi = z[i];
     const bool finite =
         (std::abs(xi) < k.escapeRadius) & (std::abs(yi) < k.escapeRadius) & (std::abs(zi) < k.escapeRadius);
-    const double dx = xi - px[i], dy = yi - py[i], dz = zi - pz[i];
+    const double dx = kTracksStep ? xi - px[i] : 0.0, dy = kTracksStep ? yi - py[i] : 0.0,
+                 dz = kTracksStep ? zi - pz[i] : 0.0;
     double value;
     if constexpr (kMode == ColorMode::Speed) {
       value = std::sqrt(dx * dx + dy * dy + dz * dz);
@@ -256,9 +267,12 @@ template <ColorMode kMode, Output kOut>
     if constexpr (kOut != Output::Nearest) {
       const std::uint32_t r = xorshift32(noise[i]);
       noise[i] = r;
-      along = k.alongStep * (jitterOffset(r) + 0.5);
+      // Without the step (a chaos game's, alongStep 0) the draw is still taken, so the jitters
+      // below stay the same, but nothing is made of it.
+      if constexpr (kTracksStep) along = k.alongStep * (jitterOffset(r) + 0.5);
     }
-    const double qx = xi - along * dx, qy = yi - along * dy, qz = zi - along * dz;
+    const double qx = kTracksStep ? xi - along * dx : xi, qy = kTracksStep ? yi - along * dy : yi,
+                 qz = kTracksStep ? zi - along * dz : zi;
     const double gx = k.m[0] * qx + k.m[1] * qy + k.m[2] * qz + k.o[0];
     const double gy = k.m[3] * qx + k.m[4] * qy + k.m[5] * qz + k.o[1];
     const double gz = k.m[6] * qx + k.m[7] * qy + k.m[8] * qz + k.o[2];
@@ -292,34 +306,47 @@ template <ColorMode kMode, Output kOut>
       gyOut[i] = fy < uy ? fy : uy * kBelow;
       gzOut[i] = fz < uz ? fz : uz * kBelow;
     }
-    // -1: outside the grid (counted as outside); -2: not a point yet (transient or escaped).
+    // The voxel's coordinates and what the point is, for the integer pass below (in the arrays that
+    // pass fills): 2 when settled, plus 1 when in the grid.
     const bool settled = finite & (age[i] > kTransientSteps);
-    voxel[i] = settled ? (inGrid ? vi + k.sizeX * vj + k.sizeXY * vk : -1) : -2;
+    brick[i] = vi;
+    cell[i] = vj;
+    slab[i] = vk;
+    voxel[i] = (settled ? 2 : 0) | (inGrid ? 1 : 0);
+    escaped[i] = finite ? 0 : 1;
+    if constexpr (kTracksStep) {
+      sx[i] = dx;
+      sy[i] = dy;
+      sz[i] = dz;
+      px[i] = xi;
+      py[i] = yi;
+      pz[i] = zi;
+    }
+    age[i] += age[i] < kAgeLimit ? 1 : 0;
+  }
+  // The integer indices in a pass of their own: in the loop above, with its doubles, the vectoriser
+  // ran out of registers and spilled.
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::int32_t vi = brick[i], vj = cell[i], vk = slab[i], what = voxel[i];
+    // -1: outside the grid (counted as outside); -2: not a point yet (transient or escaped).
+    voxel[i] = (what & 2) ? ((what & 1) ? vi + k.sizeX * vj + k.sizeXY * vk : -1) : -2;
     brick[i] = (vi >> 2) + k.bricksX * (vj >> 2) + k.bricksXY * (vk >> 2);
     const std::int32_t ck = vk >> k.colourShift;
     cell[i] = (vi >> k.colourShift) + k.cellsX * (vj >> k.colourShift) + k.cellsXY * ck;
     slab[i] = ck >> k.slabShift;
-    escaped[i] = finite ? 0 : 1;
-    sx[i] = dx;
-    sy[i] = dy;
-    sz[i] = dz;
-    px[i] = xi;
-    py[i] = yi;
-    pz[i] = zi;
-    age[i] += age[i] < kAgeLimit ? 1 : 0;
   }
 }
 
 // Built twice: for any x86-64 and for AVX2, picked at run time, so the binary still runs on CPUs
 // without AVX2.
-template <ColorMode kMode, Output kOut>
+template <ColorMode kMode, Output kOut, bool kTracksStep = true>
 [[gnu::noinline]] void classifyBaseline(VOXFLAME_CLASSIFY_PARAMS) {
-  classifyBody<kMode, kOut>(VOXFLAME_CLASSIFY_ARGS);
+  classifyBody<kMode, kOut, kTracksStep>(VOXFLAME_CLASSIFY_ARGS);
 }
 #if defined(__x86_64__) && !defined(__AVX2__)
-template <ColorMode kMode, Output kOut>
+template <ColorMode kMode, Output kOut, bool kTracksStep = true>
 [[gnu::target("avx2"), gnu::noinline]] void classifyAvx2(VOXFLAME_CLASSIFY_PARAMS) {
-  classifyBody<kMode, kOut>(VOXFLAME_CLASSIFY_ARGS);
+  classifyBody<kMode, kOut, kTracksStep>(VOXFLAME_CLASSIFY_ARGS);
 }
 #endif
 
@@ -330,13 +357,15 @@ using ClassifyFn = void (*)(VOXFLAME_CLASSIFY_PARAMS);
 void classifyBatch(ClassifyFn classify, const LayerKernel& kernel, OrbitBatch& b) {
   classify(kernel, b.x.data(), b.y.data(), b.z.data(), b.px.data(), b.py.data(), b.pz.data(), b.sx.data(), b.sy.data(),
            b.sz.data(), b.age.data(), b.voxel.data(), b.colorIndex.data(), b.escaped.data(), b.brick.data(),
-           b.cell.data(), b.slab.data(), b.noise.data(), b.gx.data(), b.gy.data(), b.gz.data(), b.colorCoord.data());
+           b.cell.data(), b.slab.data(), b.noise.data(), b.gx.data(), b.gy.data(), b.gz.data(), b.colorCoord.data(),
+           b.x.size());
 }
 
 template <Output kOut>
-ClassifyFn classifierFor(ColorMode mode) {
+ClassifyFn classifierFor(ColorMode mode, bool chaosGame) {
 #if defined(__x86_64__) && !defined(__AVX2__)
   if (cpuHasAvx2()) {
+    if (chaosGame && mode == ColorMode::Index) return &classifyAvx2<ColorMode::Index, kOut, false>;
     switch (mode) {
       case ColorMode::Speed:
         return &classifyAvx2<ColorMode::Speed, kOut>;
@@ -353,6 +382,7 @@ ClassifyFn classifierFor(ColorMode mode) {
     }
   }
 #endif
+  if (chaosGame && mode == ColorMode::Index) return &classifyBaseline<ColorMode::Index, kOut, false>;
   switch (mode) {
     case ColorMode::Speed:
       return &classifyBaseline<ColorMode::Speed, kOut>;
@@ -370,16 +400,61 @@ ClassifyFn classifierFor(ColorMode mode) {
   return &classifyBaseline<ColorMode::Speed, kOut>;
 }
 
-ClassifyFn classifier(ColorMode mode, Output output) {
+// chaosGame: the layer is a chaos game's (whose points are not drawn along their step).
+ClassifyFn classifier(ColorMode mode, Output output, bool chaosGame) {
   switch (output) {
     case Output::Nearest:
-      return classifierFor<Output::Nearest>(mode);
+      return classifierFor<Output::Nearest>(mode, chaosGame);
     case Output::Jittered:
-      return classifierFor<Output::Jittered>(mode);
+      return classifierFor<Output::Jittered>(mode, chaosGame);
     case Output::Points:
-      return classifierFor<Output::Points>(mode);
+      return classifierFor<Output::Points>(mode, chaosGame);
   }
-  return classifierFor<Output::Jittered>(mode);
+  return classifierFor<Output::Jittered>(mode, chaosGame);
+}
+
+// Branch-free append of every settled point of a step in a brick that touches the mask (a
+// 4×4×4-voxel bitmap small enough to stay in L1/L2 drops most outside points here) to out from
+// entry n on; the exact test happens at the flush, where the voxel's cell (which carries the
+// inside flag) is fetched anyway. Returns the new end; adds the settled points it dropped to
+// outside and the escaped orbits to escapes. A function of restrict-qualified arrays, so the
+// loop keeps them in registers (the same loop over a batch's vectors reloaded them every point).
+// kPainted: a point's colour is its painted true colour where it has one (painted non-null).
+template <bool kPainted>
+std::size_t appendSplatsOf(const std::int32_t* __restrict voxel, const std::int32_t* __restrict cell,
+                           const std::int32_t* __restrict slab, const std::int32_t* __restrict brick,
+                           const std::int32_t* __restrict colorIndex, const std::int32_t* __restrict escaped,
+                           const std::uint32_t* __restrict painted, const std::uint32_t* __restrict palette,
+                           const std::uint64_t* __restrict bricks, const detail::ColourCell* cells,
+                           const std::uint32_t* hits, std::size_t count, Splat* __restrict out, std::size_t n,
+                           std::uint64_t& outside, std::int32_t& escapes) {
+  std::uint64_t dropped = 0;
+  std::int32_t escapedHere = 0;
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::int32_t v = voxel[i];
+    std::uint32_t rgb = palette[static_cast<std::uint8_t>(colorIndex[i])];
+    if constexpr (kPainted) rgb = painted[i] & kRgbPainted ? painted[i] & 0xffffffu : rgb;
+    out[n] = Splat{static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(cell[i]),
+                   rgb | static_cast<std::uint32_t>(slab[i]) << 24};
+    const auto brickIndex = static_cast<std::uint32_t>(brick[i]);
+    // Integer arithmetic, not bools: GCC turned the bool form into a bit-test branch, which
+    // mispredicts about every other point of a pattern spread over the grid (a flame).
+    const std::uint64_t inBrick = (bricks[brickIndex >> 6] >> (brickIndex & 63u)) & 1u;
+    const std::uint64_t valid = (static_cast<std::uint32_t>(v) >> 31) ^ 1u;        // v >= 0
+    const std::uint64_t settled = (static_cast<std::uint32_t>(v + 1) >> 31) ^ 1u;  // v >= -1
+    const std::uint64_t keep = inBrick & valid;
+    // The flush adds the point to its colour cell (and its voxel's hits, where they are apart), an
+    // access to anywhere in the grid: asked for now, the line comes while the orbits step on, and
+    // the flush finds it in the cache. A point not kept asks for the first cell, once.
+    __builtin_prefetch(cells + static_cast<std::uint32_t>(cell[i]) * keep, 1, 3);
+    if (hits) __builtin_prefetch(hits + static_cast<std::uint32_t>(v) * keep, 1, 3);
+    n += keep;
+    dropped += settled & (keep ^ 1u);
+    escapedHere += escaped[i];
+  }
+  outside += dropped;
+  escapes += escapedHere;
+  return n;
 }
 
 }  // namespace
@@ -935,6 +1010,15 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
 
   double maxWeight = 0.0;
   for (const auto& l : layers_) maxWeight = std::max(maxWeight, l.layer.weight);
+  const auto drawn = [&](const PreparedLayer& l) { return l.bounded && l.layer.weight > 0.0 && maxWeight > 0.0; };
+  const auto orbitsOf = [](const PreparedLayer& l) { return l.game ? kChaosOrbitsPerBatch : kOrbitsPerBatch; };
+  // A batch is as many samples of each layer whatever its orbits: with a chaos game among the
+  // layers, every layer takes that many fewer steps (a batch stays as short, for a new pattern to
+  // wait on), and the stream's step counts below are in those steps.
+  std::size_t mostOrbits = kOrbitsPerBatch;
+  for (const auto& l : layers_)
+    if (drawn(l)) mostOrbits = std::max(mostOrbits, orbitsOf(l));
+  const int stepsPerBatch = static_cast<int>(kStepsPerBatch * kOrbitsPerBatch / mostOrbits);
 
   std::uint64_t iterations = 0, points = 0, outside = 0, escapes = 0;
   const Output output = sink_ ? Output::Points : deposit_ == Deposit::Nearest ? Output::Nearest : Output::Jittered;
@@ -949,7 +1033,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
     const std::uint64_t target = targetPoints_.load();
     const std::uint64_t quota = (target + kStreams - 1) / kStreams;
     const std::uint64_t done = streamPoints_[static_cast<std::size_t>(stream)].load();
-    const double yield = batches.empty() ? 0.0 : batches.front().pointsPerStep * kStepsPerBatch;
+    const double yield = batches.empty() ? 0.0 : batches.front().pointsPerStep * stepsPerBatch;
     const bool history = yield > 0.0 && batches.front().epoch == orbitEpoch_.load(std::memory_order_relaxed) &&
                          batches.front().generation == generation;
     if (target > 0 && quota > done) {
@@ -957,22 +1041,22 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
       // Without a batch of this chunk behind it, the stream's orbits are fresh: they take their
       // transient first, then yield at most one point a step each.
       // Every layer's orbits add points, each in proportion to its steps.
-      double layerShare = 0.0;
+      double orbitShare = 0.0;
       for (const auto& l : layers_)
-        if (l.bounded && l.layer.weight > 0.0 && maxWeight > 0.0) layerShare += l.layer.weight / maxWeight;
-      layerShare = std::max(layerShare, 1.0);
-      stepFraction =
-          history ? 1.1 * remaining / yield
-                  : (kTransientSteps + 1.1 * remaining / (static_cast<double>(kOrbitsPerBatch) * layerShare) + 1.0) /
-                        static_cast<double>(kStepsPerBatch);
-      stepFraction = std::clamp(stepFraction, 1.0 / kStepsPerBatch, 1.0);
+        if (drawn(l)) orbitShare += static_cast<double>(orbitsOf(l)) * l.layer.weight / maxWeight;
+      orbitShare = std::max(orbitShare, static_cast<double>(kOrbitsPerBatch));
+      stepFraction = history
+                         ? 1.1 * remaining / yield
+                         : (kTransientSteps + 1.1 * remaining / orbitShare + 1.0) / static_cast<double>(stepsPerBatch);
+      stepFraction = std::clamp(stepFraction, 1.0 / stepsPerBatch, 1.0);
     }
   }
   bool freshOrbits = false;  // the orbits were (re)seeded this batch: their transient came first
   for (std::size_t li = 0; li < layers_.size(); ++li) {
     const PreparedLayer& layer = layers_[li];
-    if (!layer.bounded || maxWeight <= 0.0 || layer.layer.weight <= 0.0) continue;
+    if (!drawn(layer)) continue;
     OrbitBatch& b = batches[li];
+    const std::size_t orbits = orbitsOf(layer);
     const std::uint64_t epoch = orbitEpoch_.load(std::memory_order_relaxed);
     if (b.generation != generation || b.epoch != epoch) {
       // New generation or chunk: restart this thread's orbits from the seed pool, reproducibly.
@@ -980,24 +1064,24 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
       b.generation = generation;
       b.epoch = epoch;
       b.rng = SplitMix64(mixSeed(seed_, (streamId << 8) + li));
-      for (auto* v : {&b.x, &b.y, &b.z, &b.px, &b.py, &b.pz, &b.sx, &b.sy, &b.sz}) v->assign(kOrbitsPerBatch, 0.0);
-      b.age.assign(kOrbitsPerBatch, 0);
-      b.voxel.assign(kOrbitsPerBatch, -1);
-      b.colorIndex.assign(kOrbitsPerBatch, 0);
-      b.escaped.assign(kOrbitsPerBatch, 0);
-      b.brick.assign(kOrbitsPerBatch, 0);
-      b.cell.assign(kOrbitsPerBatch, 0);
-      b.slab.assign(kOrbitsPerBatch, 0);
+      for (auto* v : {&b.x, &b.y, &b.z, &b.px, &b.py, &b.pz, &b.sx, &b.sy, &b.sz}) v->assign(orbits, 0.0);
+      b.age.assign(orbits, 0);
+      b.voxel.assign(orbits, -1);
+      b.colorIndex.assign(orbits, 0);
+      b.escaped.assign(orbits, 0);
+      b.brick.assign(orbits, 0);
+      b.cell.assign(orbits, 0);
+      b.slab.assign(orbits, 0);
       // The jitter has its own random numbers, so the orbits are the same whatever the deposit.
       SplitMix64 noiseSeeds(mixSeed(mixSeed(seed_, 0x6a6974746572ULL), (streamId << 8) + li));
-      b.noise.resize(kOrbitsPerBatch);
+      b.noise.resize(orbits);
       for (auto& n : b.noise) n = static_cast<std::uint32_t>(noiseSeeds.next() >> 32) | 1u;
-      for (auto* v : {&b.gx, &b.gy, &b.gz}) v->assign(kOrbitsPerBatch, 0.0f);
-      b.colorCoord.assign(kOrbitsPerBatch, 0.0);
+      for (auto* v : {&b.gx, &b.gy, &b.gz}) v->assign(orbits, 0.0f);
+      b.colorCoord.assign(orbits, 0.0);
       if (layer.game) {
         // A chaos game's lanes start anywhere; their transient (kTransientSteps) finds the attractor.
-        b.chaos.resize(kOrbitsPerBatch);
-        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) layer.game->seedLane(b.chaos, i, b.rng);
+        b.chaos.resize(orbits);
+        for (std::size_t i = 0; i < orbits; ++i) layer.game->seedLane(b.chaos, i, b.rng);
       } else {
         // Each orbit starts a hair off its seed: seeds lie along a few probe orbits, and a flow's
         // orbits started on one trajectory would retrace it, phase-shifted, instead of filling the
@@ -1009,7 +1093,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
         // pulls even a hair this fine apart within tens of steps, and a point on a voxel centre
         // keeps to its voxel.
         const double hair = layer.info->kind == AttractorKind::Flow ? 1e-5 : 1e-9;
-        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
+        for (std::size_t i = 0; i < orbits; ++i) {
           const glm::dvec3 s = layer.seeds[b.rng.next() % layer.seeds.size()];
           b.x[i] = b.px[i] = s.x + hair * (1.0 + std::abs(s.x)) * b.rng.symmetric();
           b.y[i] = b.py[i] = s.y + hair * (1.0 + std::abs(s.y)) * b.rng.symmetric();
@@ -1022,10 +1106,10 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
     const double* params = layer.layer.params.data();
     const double h = layer.layer.step;
     // A layer's weight is its share of the iterations, hence of the density it adds.
-    const int fullSteps = std::max(1, static_cast<int>(std::lround(kStepsPerBatch * layer.layer.weight / maxWeight)));
+    const int fullSteps = std::max(1, static_cast<int>(std::lround(stepsPerBatch * layer.layer.weight / maxWeight)));
     const int steps = std::max(1, static_cast<int>(std::ceil(fullSteps * stepFraction)));
     const LayerKernel kernel = makeKernel(layer, grid, colour_, slabShift_, paletteMode_);
-    const ClassifyFn classify = classifier(layer.layer.color.mode, output);
+    const ClassifyFn classify = classifier(layer.layer.color.mode, output, game != nullptr);
     std::uint32_t packedPalette[256];
     for (std::size_t c = 0; c < 256; ++c)
       packedPalette[c] = std::uint32_t{layer.palette[c].r} | std::uint32_t{layer.palette[c].g} << 8 |
@@ -1042,18 +1126,18 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
     const bool trueColours = game && game->paintsRgb() && layer.layer.color.mode == ColorMode::Index;
     for (int s = 0; s < steps; ++s) {
       if (game) {
-        game->step(b.chaos, b.x.data(), b.y.data(), b.z.data(), b.colorCoord.data(), kOrbitsPerBatch);
+        game->step(b.chaos, b.x.data(), b.y.data(), b.z.data(), b.colorCoord.data(), orbits);
       } else {
-        advance(params, h, b.x.data(), b.y.data(), b.z.data(), kOrbitsPerBatch);
+        advance(params, h, b.x.data(), b.y.data(), b.z.data(), orbits);
       }
       classifyBatch(classify, kernel, b);
       if (game && game->hidesPoints()) {
         // A point its transform's opacity (or a quaternion slice) hides is not a point at all.
         const std::int32_t* visible = b.chaos.visible.data();
         std::int32_t* voxel = b.voxel.data();
-        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) voxel[i] = visible[i] ? voxel[i] : -2;
+        for (std::size_t i = 0; i < orbits; ++i) voxel[i] = visible[i] ? voxel[i] : -2;
       }
-      iterations += kOrbitsPerBatch;
+      iterations += orbits;
       std::int32_t escapedHere = 0;
       const auto appendPoints = [&](const auto& colourOf) {
         // Points for the sink: the exact test (the voxel's mask flag) here, since no grid cell is
@@ -1064,7 +1148,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
         float* outZ = splats.z.data();
         std::uint32_t* outRgb = splats.rgb.data();
         std::size_t n = splats.pointCount;
-        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
+        for (std::size_t i = 0; i < orbits; ++i) {
           const std::int32_t v = b.voxel[i];
           outX[n] = b.gx[i];
           outY[n] = b.gy[i];
@@ -1080,44 +1164,22 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
         }
         splats.pointCount = n;
       };
-      const auto appendSplats = [&](const auto& colourOf) {
-        // Branch-free append of every settled point in a brick that touches the mask (a 4×4×4-voxel
-        // bitmap small enough to stay in L1/L2 drops most outside points here); the exact test
-        // happens at the flush, where the voxel's cell (which carries the inside flag) is fetched anyway.
-        const std::uint64_t* bricks = brickBits_.data();
-        Splat* out = splats.entries.data();
-        std::size_t n = splats.count;
-        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
-          const std::int32_t v = b.voxel[i];
-          out[n] = Splat{static_cast<std::uint32_t>(v), static_cast<std::uint32_t>(b.cell[i]),
-                         colourOf(i) | static_cast<std::uint32_t>(b.slab[i]) << 24};
-          const auto brickIndex = static_cast<std::uint32_t>(b.brick[i]);
-          // Integer arithmetic, not bools: GCC turned the bool form into a bit-test branch, which
-          // mispredicts about every other point of a pattern spread over the grid (a flame).
-          const std::uint64_t inBrick = (bricks[brickIndex >> 6] >> (brickIndex & 63u)) & 1u;
-          const std::uint64_t valid = (static_cast<std::uint32_t>(v) >> 31) ^ 1u;        // v >= 0
-          const std::uint64_t settled = (static_cast<std::uint32_t>(v + 1) >> 31) ^ 1u;  // v >= -1
-          const std::uint64_t keep = inBrick & valid;
-          n += keep;
-          outside += settled & (keep ^ 1u);
-          escapedHere += b.escaped[i];
-        }
-        splats.count = n;
-      };
       if (sink_) {
         if (trueColours)
           appendPoints(paintedColour);
         else
           appendPoints(paletteColour);
         if (splats.pointCount >= kFlushThreshold) points += flushPoints(threadIndex, streamId, splats);
-      } else if (trueColours) {
-        appendSplats(paintedColour);
       } else {
-        appendSplats(paletteColour);
+        const auto append = trueColours ? &appendSplatsOf<true> : &appendSplatsOf<false>;
+        splats.count = append(b.voxel.data(), b.cell.data(), b.slab.data(), b.brick.data(), b.colorIndex.data(),
+                              b.escaped.data(), painted, packedPalette, brickBits_.data(), colours_.data(),
+                              colour_.shift == 0 ? nullptr : hits_.data(), orbits, splats.entries.data(), splats.count,
+                              outside, escapedHere);
       }
       if (escapedHere > 0) [[unlikely]] {
         escapes += static_cast<std::uint64_t>(escapedHere);
-        for (std::size_t i = 0; i < kOrbitsPerBatch; ++i) {
+        for (std::size_t i = 0; i < orbits; ++i) {
           if (!b.escaped[i]) continue;
           if (game) {
             game->seedLane(b.chaos, i, b.rng);
@@ -1156,7 +1218,7 @@ void Accumulator::runBatch(int threadIndex, int stream, std::uint64_t generation
   }
   // What a step of this stream yields now, its orbits past their transient.
   if (!batches.empty()) {
-    const double steps = std::ceil(kStepsPerBatch * stepFraction) - (freshOrbits ? kTransientSteps : 0);
+    const double steps = std::ceil(stepsPerBatch * stepFraction) - (freshOrbits ? kTransientSteps : 0);
     batches.front().pointsPerStep = steps > 0.0 ? static_cast<double>(points) / steps : 0.0;
   }
   iterations_.fetch_add(iterations, std::memory_order_relaxed);
