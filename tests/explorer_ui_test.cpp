@@ -1693,7 +1693,11 @@ TEST_F(ExplorerUi, TheNoiseTargetIsASettingAndTheLoopRestsOnlyWhenNothingMoves) 
   status.noiseTarget = 0.0;
   EXPECT_EQ(app::convergenceText(status), "refining: 65 M points, noise 1.2%");
   status.backend = core::BackendKind::Gpu;
+  status.gridOnDevice = true;
   EXPECT_EQ(app::convergenceText(status), "refining on the GPU: 65 M points, noise 1.2%");
+  // Where the grid cannot stay on the GPU (a GLX window, a software renderer), the status says so.
+  status.gridOnDevice = false;
+  EXPECT_EQ(app::convergenceText(status), "refining on the GPU (grid read back): 65 M points, noise 1.2%");
   status.backend = core::BackendKind::Cpu;
 
   // The Lyapunov analysis of the pattern runs in the background at first: that is not rest.

@@ -245,10 +245,13 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   const int windowWidth = options.width > 0 ? options.width : (scriptedRun ? 1280 : settingsLoad.settings.window.width);
   const int windowHeight =
       options.height > 0 ? options.height : (scriptedRun ? 720 : settingsLoad.settings.window.height);
-  // The context is made through EGL where it can be: the GPU refinement backend's context then
-  // shares its textures (gl::currentShareGroup), so the grid reaches the ray-marcher on the GPU.
-  // Where EGL cannot make one, the platform's own (GLX) does, and the grid comes through host memory.
-  glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
+  // Where the GPU refines (the "refine on" setting at start), the context is made through EGL when
+  // it can be: the GPU backend's context then shares its textures (gl::currentShareGroup), so the
+  // grid reaches the ray-marcher on the GPU. Otherwise, and where EGL cannot make one, the
+  // platform's own (GLX) does: Mesa's EGL on X11 crashes when the X server goes away under it,
+  // where GLX lets X11Watch end the explorer cleanly with the scene autosaved.
+  if (settingsLoad.settings.refinementBackend != BackendChoice::Cpu)
+    glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_EGL_CONTEXT_API);
   GLFWwindow* window = glfwCreateWindow(windowWidth, windowHeight, title.c_str(), nullptr, nullptr);
   if (!window) {
     glfwWindowHint(GLFW_CONTEXT_CREATION_API, GLFW_NATIVE_CONTEXT_API);
