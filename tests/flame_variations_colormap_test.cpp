@@ -3,7 +3,6 @@
 // following GradientCreator's fixed-point steps and DC_InversionFunc's loop.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -13,7 +12,6 @@
 #include <vector>
 
 #include "core/chaos_game.h"
-#include "core/error.h"
 #include "core/flame/variations.h"
 #include "core/flame/variations_colormap.h"
 #include "core/flame/xml.h"

@@ -20,9 +20,6 @@
 #include "core/attractor.h"
 #include "core/chunk_sums.h"
 #include "core/error.h"
-#include "core/grid.h"
-#include "core/inside_mask.h"
-#include "core/mesh.h"
 #include "core/refinement/accumulator.h"
 #include "core/flame/variations.h"
 #include "core/random.h"
@@ -34,16 +31,14 @@
 #include "gl/shader_program.h"
 #include "refinement_backends.h"
 #include "test_support.h"
+#include "gl_test_support.h"
 
 using namespace voxflame;
 
-namespace {
+using test::bunnyMask;
+using test::glAvailable;
 
-std::shared_ptr<const core::InsideMask> bunnyMask(int resolution) {
-  const core::TriangleMesh mesh = core::loadSceneMesh(core::defaultScene());
-  return std::make_shared<const core::InsideMask>(
-      core::buildInsideMask(mesh, core::gridOverBox(mesh.bounds(), resolution)));
-}
+namespace {
 
 // `chunk`: another chunk of one seed draws independent streams over the same prepared pattern (the
 // same probe, fit and placement), so two chunks differ by sampling noise alone.
@@ -80,15 +75,6 @@ std::vector<std::uint64_t> colourSums(const core::GridSums& sums) {
   all.insert(all.end(), sums.green.begin(), sums.green.end());
   all.insert(all.end(), sums.blue.begin(), sums.blue.end());
   return all;
-}
-
-bool glAvailable() {
-  try {
-    const gl::HeadlessContext context;
-    return true;
-  } catch (const core::Error&) {
-    return false;
-  }
 }
 
 }  // namespace

@@ -13,10 +13,8 @@
 #include <vector>
 
 #include "core/camera.h"
-#include "core/error.h"
 #include "core/flame/image.h"
 #include "core/image_metrics.h"
-#include "core/inside_mask.h"
 #include "core/mesh.h"
 #include "core/packed_volume.h"
 #include "core/scene_io.h"
@@ -26,25 +24,14 @@
 #include "gl/headless_context.h"
 #include "gl/volume_renderer.h"
 #include "pipeline.h"
+#include "gl_test_support.h"
 
 using namespace voxflame;
 
+using test::bunnyMask;
+using test::glAvailable;
+
 namespace {
-
-std::shared_ptr<const core::InsideMask> bunnyMask(int resolution) {
-  const core::TriangleMesh mesh = core::loadSceneMesh(core::defaultScene());
-  return std::make_shared<const core::InsideMask>(
-      core::buildInsideMask(mesh, core::gridOverBox(mesh.bounds(), resolution)));
-}
-
-bool glAvailable() {
-  try {
-    const gl::HeadlessContext context;
-    return true;
-  } catch (const core::Error&) {
-    return false;
-  }
-}
 
 template <class T>
 std::vector<T> readTexture(GLuint texture, GLenum format, GLenum type, std::size_t values) {

@@ -11,6 +11,21 @@ glm::dvec3 lightDirection(double azimuthDeg, double elevationDeg) {
   return {std::cos(elevation) * std::sin(azimuth), std::sin(elevation), std::cos(elevation) * std::cos(azimuth)};
 }
 
+ShadowSweep shadowSweep(glm::dvec3 towardLight) {
+  const glm::dvec3 light =
+      glm::length(towardLight) > 0.0 ? towardLight / glm::length(towardLight) : glm::dvec3(0, 1, 0);
+  const glm::dvec3 magnitude = glm::abs(light);
+  ShadowSweep sweep;
+  sweep.axis = magnitude.x >= magnitude.y && magnitude.x >= magnitude.z ? 0 : (magnitude.y >= magnitude.z ? 1 : 2);
+  sweep.u = (sweep.axis + 1) % 3;
+  sweep.v = (sweep.axis + 2) % 3;
+  const double along = light[sweep.axis];
+  sweep.towardLightStep = along >= 0.0 ? 1 : -1;
+  sweep.shift = {light[sweep.u] / std::abs(along), light[sweep.v] / std::abs(along)};
+  sweep.pathPerSlice = 1.0 / std::abs(along);
+  return sweep;
+}
+
 bool computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, double extinctionScale, int downsample,
                          ShadowVolume& out, std::stop_token stop) {
   const GridGeometry& g = volume.geometry;
@@ -41,15 +56,10 @@ bool computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, dou
   }
 
   // Sweep along the axis the light is most aligned with, from the light's side.
-  const glm::dvec3 light =
-      glm::length(towardLight) > 0.0 ? towardLight / glm::length(towardLight) : glm::dvec3(0, 1, 0);
-  const glm::dvec3 magnitude = glm::abs(light);
-  const int axis = magnitude.x >= magnitude.y && magnitude.x >= magnitude.z ? 0 : (magnitude.y >= magnitude.z ? 1 : 2);
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const double along = light[axis];
-  const int towardLightStep = along >= 0.0 ? 1 : -1;
-  const double shiftU = light[u] / std::abs(along), shiftV = light[v] / std::abs(along);
-  const float pathPerSlice = static_cast<float>(1.0 / std::abs(along));  // cell edges crossed per slice
+  const ShadowSweep sweep = shadowSweep(towardLight);
+  const int axis = sweep.axis, u = sweep.u, v = sweep.v, towardLightStep = sweep.towardLightStep;
+  const double shiftU = sweep.shift.x, shiftV = sweep.shift.y;
+  const auto pathPerSlice = static_cast<float>(sweep.pathPerSlice);
 
   std::vector<float> depth(cells, 0.0f);
   const int slices = out.size[axis];

@@ -8,6 +8,7 @@
 #include <stop_token>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "packed_volume.h"
@@ -25,6 +26,17 @@ struct ShadowVolume {
 // (a millisecond or so at 512³) and returns false, `out` then being no shadow; true otherwise.
 bool computeShadowVolume(const PackedVolume& volume, glm::dvec3 towardLight, double extinctionScale, int downsample,
                          ShadowVolume& out, std::stop_token stop = {});
+
+// How the sweep crosses the cells toward a light: slice by slice along the axis the light is most
+// aligned with, from the light's side, each slice reading the one before it `shift` cells sideways.
+// The CPU's sweep and the GPU's (gl::VolumeRenderer::computeShadow) both follow it.
+struct ShadowSweep {
+  int axis = 1, u = 2, v = 0;  // the sweep's axis and the slice's two others
+  int towardLightStep = 1;     // +1: the light lies toward higher indices along the axis
+  glm::dvec2 shift{0.0};       // where a cell reads the slice before it, in cells along u and v
+  double pathPerSlice = 1.0;   // cell edges a ray toward the light crosses per slice
+};
+ShadowSweep shadowSweep(glm::dvec3 towardLight);  // `towardLight` need not be normalised
 
 // The unit vector toward a light at these angles, in the camera's orbit convention (Y up).
 glm::dvec3 lightDirection(double azimuthDeg, double elevationDeg);

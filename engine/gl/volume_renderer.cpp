@@ -470,29 +470,22 @@ void VolumeRenderer::computeShadow(Source source, glm::dvec3 towardLight, double
   glDispatchCompute(groups(cellCount), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  // Sweep along the axis the light is most aligned with, from the light's side.
-  const glm::dvec3 light =
-      glm::length(towardLight) > 0.0 ? towardLight / glm::length(towardLight) : glm::dvec3(0, 1, 0);
-  const glm::dvec3 magnitude = glm::abs(light);
-  const int axis = magnitude.x >= magnitude.y && magnitude.x >= magnitude.z ? 0 : (magnitude.y >= magnitude.z ? 1 : 2);
-  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
-  const double along = light[axis];
-  const int towardLightStep = along >= 0.0 ? 1 : -1;
+  // The CPU's sweep (core::shadowSweep), one dispatch a slice.
+  const core::ShadowSweep plan = core::shadowSweep(towardLight);
   const ShaderProgram& sweep = program(1);
-  glUniform1i(sweep.uniform("uAxis"), axis);
-  glUniform1i(sweep.uniform("uU"), u);
-  glUniform1i(sweep.uniform("uV"), v);
-  glUniform2f(sweep.uniform("uShift"), static_cast<float>(light[u] / std::abs(along)),
-              static_cast<float>(light[v] / std::abs(along)));
-  glUniform1f(sweep.uniform("uPathPerSlice"), static_cast<float>(1.0 / std::abs(along)));
-  const int slices = cells[axis];
+  glUniform1i(sweep.uniform("uAxis"), plan.axis);
+  glUniform1i(sweep.uniform("uU"), plan.u);
+  glUniform1i(sweep.uniform("uV"), plan.v);
+  glUniform2f(sweep.uniform("uShift"), static_cast<float>(plan.shift.x), static_cast<float>(plan.shift.y));
+  glUniform1f(sweep.uniform("uPathPerSlice"), static_cast<float>(plan.pathPerSlice));
+  const int slices = cells[plan.axis];
   const GLint sliceLocation = sweep.uniform("uSlice"), previousLocation = sweep.uniform("uPrevious");
   for (int step = 0; step < slices; ++step) {
-    const int a = towardLightStep > 0 ? slices - 1 - step : step;
-    const int previous = a + towardLightStep;
+    const int a = plan.towardLightStep > 0 ? slices - 1 - step : step;
+    const int previous = a + plan.towardLightStep;
     glUniform1i(sliceLocation, a);
     glUniform1i(previousLocation, previous >= 0 && previous < slices ? previous : -1);
-    glDispatchCompute(groups(static_cast<std::size_t>(cells[u]) * cells[v]), 1, 1);
+    glDispatchCompute(groups(static_cast<std::size_t>(cells[plan.u]) * cells[plan.v]), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
 

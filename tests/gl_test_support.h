@@ -1,0 +1,31 @@
+// Helpers shared by the suites that drive the GPU backend: the default preset's mask, and whether
+// a headless GL context can be made here at all.
+#pragma once
+
+#include <memory>
+
+#include "core/error.h"
+#include "core/inside_mask.h"
+#include "core/mesh.h"
+#include "core/scene_io.h"
+#include "gl/headless_context.h"
+
+namespace voxflame::test {
+
+// The inside mask of the default preset's mesh (the bunny) at this resolution.
+inline std::shared_ptr<const core::InsideMask> bunnyMask(int resolution) {
+  const core::TriangleMesh mesh = core::loadSceneMesh(core::defaultScene());
+  return std::make_shared<const core::InsideMask>(
+      core::buildInsideMask(mesh, core::gridOverBox(mesh.bounds(), resolution)));
+}
+
+inline bool glAvailable() {
+  try {
+    const gl::HeadlessContext context;
+    return true;
+  } catch (const core::Error&) {
+    return false;
+  }
+}
+
+}  // namespace voxflame::test
