@@ -400,14 +400,14 @@ void GpuAccumulator::loop(std::stop_token stop, std::exception_ptr* startError, 
       continue;
     }
     if (active_.load() && !held_.load() && !targetReached()) {
+      dispatching_ = true;
       lock.unlock();
       dispatchRound(*device);
       lock.lock();
+      dispatching_ = false;
       continue;
     }
-    waiting_ = true;
     wake_.wait(lock, stop, [&] { return !tasks_.empty() || (active_.load() && !held_.load() && !targetReached()); });
-    waiting_ = false;
   }
   // Tasks still queued belong to callers that are being destroyed with us; their waits end with
   // the stop (runOnDevice is never called concurrently with the destructor).
@@ -418,22 +418,28 @@ void GpuAccumulator::loop(std::stop_token stop, std::exception_ptr* startError, 
 
 bool GpuAccumulator::idle() const {
   std::lock_guard lock(mutex_);
-  // Asleep, and nothing has been asked of it since (a change of work wakes it under this mutex).
-  return waiting_ && tasks_.empty() && !(active_.load() && !held_.load() && !targetReached());
+  // No round of dispatches under way or due, and no change of the grid queued or running. A reader's
+  // task (a read-back, a pack) may run meanwhile: it changes nothing a waiter on idle() looks at.
+  return !dispatching_ && changingTasks_ == 0 && !(active_.load() && !held_.load() && !targetReached());
 }
 
-void GpuAccumulator::runOnDevice(const std::function<void(Device&)>& task) const {
+void GpuAccumulator::runOnDevice(const std::function<void(Device&)>& task, bool changesGrid) const {
   std::mutex doneMutex;
   std::condition_variable doneCondition;
   bool done = false;
   std::exception_ptr error;
   {
     std::lock_guard lock(mutex_);
-    tasks_.emplace_back([&](Device& device) {
+    if (changesGrid) ++changingTasks_;
+    tasks_.emplace_back([&, changesGrid](Device& device) {
       try {
         task(device);
       } catch (...) {
         error = std::current_exception();
+      }
+      if (changesGrid) {
+        std::lock_guard taskLock(mutex_);
+        --changingTasks_;
       }
       std::lock_guard doneLock(doneMutex);
       done = true;
@@ -589,46 +595,48 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
     notifyWorkChanged();
     return;
   }
-  runOnDevice([&](Device& device) {
-    for (auto* list : {&device.orbits, &device.seeds, &device.palettes, &device.flameData, &device.flamePicks})
-      if (!list->empty()) {
-        glDeleteBuffers(static_cast<GLsizei>(list->size()), list->data());
-        list->clear();
-      }
-    device.layers = std::move(uniforms);
-    for (const LayerUniforms& u : device.layers) {
-      device.orbits.push_back(
-          makeBuffer(kOrbitsBinding, std::size_t{orbits_} * (u.chaos ? kChaosOrbitBytes : kOrbitBytes)));
-      device.seeds.push_back(makeBuffer(kSeedsBinding, u.seeds.size() * sizeof(glm::vec4), u.seeds.data()));
-      device.palettes.push_back(makeBuffer(kPaletteBinding, sizeof(u.palette), u.palette.data()));
-      device.flameData.push_back(
-          makeBuffer(kFlameDataBinding, u.kernel.data.size() * sizeof(float), u.kernel.data.data()));
-      device.flamePicks.push_back(
-          makeBuffer(kFlamePickBinding, u.kernel.pick.size() * sizeof(std::uint32_t), u.kernel.pick.data()));
-      // All ones: every orbit reads as unseeded (state.y) and seeds itself at its first step.
-      const GLuint ones = 0xFFFFFFFFu;
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.orbits.back());
-      glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
-      if (u.runs) device.layerProgram(u);
-    }
-    clearGrid(device);
-    if (glGetError() != GL_NO_ERROR) throw core::Error("the GPU backend could not set up the pattern's buffers");
-    std::lock_guard lock(mutex_);
-    layers_ = std::move(prepared);
-    seed_ = seed;
-    chunk_ = 0;
-    orbitsFresh_ = true;
-    pointsPerStep_ = 0.0;
-    iterations_ = 0;
-    points_ = 0;
-    chunkPoints_ = 0;
-    outside_ = 0;
-    escapes_ = 0;
-    generationStart_ = nowSeconds();
-    active_ = anyBounded(layers_) && unsupported.empty();
-    generation_.fetch_add(1, std::memory_order_acq_rel);
-    version_.fetch_add(1, std::memory_order_acq_rel);
-  });
+  runOnDevice(
+      [&](Device& device) {
+        for (auto* list : {&device.orbits, &device.seeds, &device.palettes, &device.flameData, &device.flamePicks})
+          if (!list->empty()) {
+            glDeleteBuffers(static_cast<GLsizei>(list->size()), list->data());
+            list->clear();
+          }
+        device.layers = std::move(uniforms);
+        for (const LayerUniforms& u : device.layers) {
+          device.orbits.push_back(
+              makeBuffer(kOrbitsBinding, std::size_t{orbits_} * (u.chaos ? kChaosOrbitBytes : kOrbitBytes)));
+          device.seeds.push_back(makeBuffer(kSeedsBinding, u.seeds.size() * sizeof(glm::vec4), u.seeds.data()));
+          device.palettes.push_back(makeBuffer(kPaletteBinding, sizeof(u.palette), u.palette.data()));
+          device.flameData.push_back(
+              makeBuffer(kFlameDataBinding, u.kernel.data.size() * sizeof(float), u.kernel.data.data()));
+          device.flamePicks.push_back(
+              makeBuffer(kFlamePickBinding, u.kernel.pick.size() * sizeof(std::uint32_t), u.kernel.pick.data()));
+          // All ones: every orbit reads as unseeded (state.y) and seeds itself at its first step.
+          const GLuint ones = 0xFFFFFFFFu;
+          glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.orbits.back());
+          glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+          if (u.runs) device.layerProgram(u);
+        }
+        clearGrid(device);
+        if (glGetError() != GL_NO_ERROR) throw core::Error("the GPU backend could not set up the pattern's buffers");
+        std::lock_guard lock(mutex_);
+        layers_ = std::move(prepared);
+        seed_ = seed;
+        chunk_ = 0;
+        orbitsFresh_ = true;
+        pointsPerStep_ = 0.0;
+        iterations_ = 0;
+        points_ = 0;
+        chunkPoints_ = 0;
+        outside_ = 0;
+        escapes_ = 0;
+        generationStart_ = nowSeconds();
+        active_ = anyBounded(layers_) && unsupported.empty();
+        generation_.fetch_add(1, std::memory_order_acq_rel);
+        version_.fetch_add(1, std::memory_order_acq_rel);
+      },
+      /*changesGrid=*/true);
   notifyWorkChanged();
 }
 
@@ -647,28 +655,30 @@ void GpuAccumulator::clearGrid(Device& device) const {
 }
 
 void GpuAccumulator::setChunk(std::uint64_t chunk, bool clearGrid) {
-  runOnDevice([&](Device& device) {
-    for (GLuint orbits : device.orbits) {
-      const GLuint ones = 0xFFFFFFFFu;
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, orbits);
-      glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
-    }
-    if (clearGrid) this->clearGrid(device);
-    std::lock_guard lock(mutex_);
-    chunk_ = chunk;
-    orbitsFresh_ = true;
-    pointsPerStep_ = 0.0;
-    chunkPoints_ = 0;
-    if (clearGrid) {
-      iterations_ = 0;
-      points_ = 0;
-      outside_ = 0;
-      escapes_ = 0;
-      generationStart_ = nowSeconds();
-      generation_.fetch_add(1, std::memory_order_acq_rel);
-    }
-    version_.fetch_add(1, std::memory_order_acq_rel);
-  });
+  runOnDevice(
+      [&](Device& device) {
+        for (GLuint orbits : device.orbits) {
+          const GLuint ones = 0xFFFFFFFFu;
+          glBindBuffer(GL_SHADER_STORAGE_BUFFER, orbits);
+          glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+        }
+        if (clearGrid) this->clearGrid(device);
+        std::lock_guard lock(mutex_);
+        chunk_ = chunk;
+        orbitsFresh_ = true;
+        pointsPerStep_ = 0.0;
+        chunkPoints_ = 0;
+        if (clearGrid) {
+          iterations_ = 0;
+          points_ = 0;
+          outside_ = 0;
+          escapes_ = 0;
+          generationStart_ = nowSeconds();
+          generation_.fetch_add(1, std::memory_order_acq_rel);
+        }
+        version_.fetch_add(1, std::memory_order_acq_rel);
+      },
+      /*changesGrid=*/true);
   notifyWorkChanged();
 }
 

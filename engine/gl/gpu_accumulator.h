@@ -110,7 +110,9 @@ class GpuAccumulator final : public core::RefinementBackend {
   void loop(std::stop_token stop, std::exception_ptr* startError, std::mutex* startMutex,
             std::condition_variable* started, bool* ready);
   // Runs `task` on the GPU thread and waits for it; rethrows what it threw.
-  void runOnDevice(const std::function<void(Device&)>& task) const;
+  // `changesGrid`: the task clears or reseeds (setPattern, setChunk); a reader's (a read-back, a
+  // density sample, a pack) leaves the grid and the counts as they are, so the backend stays idle().
+  void runOnDevice(const std::function<void(Device&)>& task, bool changesGrid = false) const;
   void dispatchRound(Device& device);  // GPU thread: one dispatch of every layer, then the counts
   bool targetReached() const;
   void clearGrid(Device& device) const;  // GPU thread: an empty grid, outside flags from the mask
@@ -134,7 +136,8 @@ class GpuAccumulator final : public core::RefinementBackend {
   mutable std::mutex mutex_;
   mutable std::condition_variable_any wake_;  // tasks, holds, targets, patterns, stop
   mutable std::deque<std::function<void(Device&)>> tasks_;
-  bool waiting_ = false;                     // the GPU thread sleeps in wake_ (idle())
+  bool dispatching_ = false;                 // the GPU thread runs a round of dispatches (idle())
+  mutable int changingTasks_ = 0;            // tasks that change the grid, queued or running (idle())
   std::vector<core::PreparedLayer> layers_;  // the current generation's (set under mutex_)
   std::uint64_t seed_ = 1;
   std::uint64_t chunk_ = 0;
