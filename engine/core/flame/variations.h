@@ -111,19 +111,19 @@ inline constexpr std::uint32_t paintedRgb(std::uint32_t r, std::uint32_t g, std:
   return kRgbPainted | (r & 255u) | (g & 255u) << 8 | (b & 255u) << 16;
 }
 // The entry of a packed 256-entry palette nearest to (r, g, b) in RGB distance, the first of equals:
-// JWildfire's DC_BaseFunc.findKey and SVGWFFunc.getColorIdx.
-inline std::size_t nearestPaletteEntry(const std::uint32_t* palette, std::uint32_t red, std::uint32_t green,
-                                       std::uint32_t blue) {
-  const auto r = static_cast<std::int32_t>(red), g = static_cast<std::int32_t>(green),
-             b = static_cast<std::int32_t>(blue);
+// JWildfire's DC_BaseFunc.findKey and SVGWFFunc.getColorIdx. `scale` multiplies the palette's
+// channels first: colormap_wf's getColorIdx matches against JWildfire's render palette, the
+// gradient scaled by 200/256.
+inline std::size_t nearestPaletteEntry(const std::uint32_t* palette, std::int32_t red, std::int32_t green,
+                                       std::int32_t blue, double scale = 1.0) {
   std::size_t best = 0;
-  std::int32_t bestDistance = 0x7fffffff;
+  double bestDistance = 0.0;
   for (std::size_t k = 0; k < 256; ++k) {
-    const std::int32_t dr = static_cast<std::int32_t>(palette[k] & 255u) - r;
-    const std::int32_t dg = static_cast<std::int32_t>(palette[k] >> 8 & 255u) - g;
-    const std::int32_t db = static_cast<std::int32_t>(palette[k] >> 16 & 255u) - b;
-    const std::int32_t d = dr * dr + dg * dg + db * db;
-    if (d < bestDistance) {
+    const double dr = static_cast<double>(palette[k] & 255u) * scale - red;
+    const double dg = static_cast<double>(palette[k] >> 8 & 255u) * scale - green;
+    const double db = static_cast<double>(palette[k] >> 16 & 255u) * scale - blue;
+    const double d = dr * dr + dg * dg + db * db;
+    if (k == 0 || d < bestDistance) {
       bestDistance = d;
       best = k;
     }

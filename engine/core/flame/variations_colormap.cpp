@@ -178,26 +178,6 @@ inline Channels pixel(const Picture& picture, std::int32_t column, std::int32_t 
           static_cast<double>(p >> 24)};
 }
 
-// JWildfire's getColorIdx: the entry of its render palette nearest (Euclidean) to the colour, the first of
-// equals, over 255. That palette is the gradient's entries scaled by 200/256 (RenderColor.setColor), so a
-// picture's colour is matched against darker entries, as in JWildfire.
-inline double nearestRenderIndex(const std::uint32_t* palette, std::int32_t r, std::int32_t g, std::int32_t b) {
-  constexpr double kScale = 200.0 / 256.0;
-  std::size_t best = 0;
-  double bestDistance = 0.0;
-  for (std::size_t k = 0; k < 256; ++k) {
-    const double dr = static_cast<double>(palette[k] & 255u) * kScale - r;
-    const double dg = static_cast<double>(palette[k] >> 8 & 255u) * kScale - g;
-    const double db = static_cast<double>(palette[k] >> 16 & 255u) * kScale - b;
-    const double distance = std::sqrt(dr * dr + dg * dg + db * db);
-    if (k == 0 || distance < bestDistance) {
-      bestDistance = distance;
-      best = k;
-    }
-  }
-  return static_cast<double>(best) / 255.0;
-}
-
 // colormap_wf (see the catalogue's formula below). Parameters: scale_x, scale_y, scale_z, offset_x,
 // offset_y, offset_z, tile_x, tile_y, reset_z, dc_color, blend_colormap, with_alpha, is_sequence,
 // sequence_start, sequence_digits (the last three only pick a file of an image sequence).
@@ -255,7 +235,10 @@ VOXFLAME_VARIATION_TARGETS void colormapWf(const VariationInput& in, double* __r
       rgb[i] = paintedRgb(byte(c.r), byte(c.g), byte(c.b));
     }
     // dc_color > 0: the colour index of the render palette's entry nearest to it; below 0 neither.
-    if (palette) colour[i] = nearestRenderIndex(palette, ftoi(c.r), ftoi(c.g), ftoi(c.b));
+    // JWildfire's getColorIdx matches against its render palette: the gradient scaled by 200/256.
+    if (palette)
+      colour[i] =
+          static_cast<double>(nearestPaletteEntry(palette, ftoi(c.r), ftoi(c.g), ftoi(c.b), 200.0 / 256.0)) / 255.0;
     // JWildfire's doHide: with_alpha hides the point on a pixel of alpha at most 0.1 (outside the picture, or a
     // transparent pixel of an inlined one; the default picture is opaque), and without it a colormap_wf term
     // shows the point again.
