@@ -218,7 +218,7 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       const std::vector<float> tables = gl::gpuNoiseTables();
       data.insert(data.end(), tables.begin(), tables.end());
     }
-    const std::string text = "#version 430 core\n" + gl::embeddedShader("flame_variations.glsl").text +
+    const std::string text = "#version 430 core\n" + gl::gpuVariationSource() +
                              "\nlayout(local_size_x = 64) in;\n"
                              "layout(std430, binding = 0) buffer Points { vec4 points[]; };\n"
                              "layout(std430, binding = 1) buffer Streams { uint streams[]; };\n"

@@ -11,34 +11,37 @@
 #include "core/flame/noise.h"
 #include "core/flame/variations.h"
 #include "core/scene.h"
+#include "shader_program.h"
 
 namespace voxflame::gl {
 
 namespace {
 
-// What flame_variations.glsl defines, as V_<name>.
-const std::vector<std::string> kGpuVariations = {
-    "linear", "sinusoidal", "spherical", "swirl", "horseshoe", "polar", "handkerchief", "heart", "disc", "spiral",
-    "hyperbolic", "diamond", "ex", "julia", "bent", "waves", "fisheye", "popcorn", "exponential", "power", "cosine",
-    "rings", "fan", "blob", "pdj", "fan2", "rings2", "eyefish", "bubble", "cylinder", "perspective", "noise", "julian",
-    "juliascope", "blur", "gaussian_blur", "radial_blur", "pie", "ngon", "curl", "rectangles", "linear3D",
-    "spherical3D", "julia3D", "julia3Dz", "bubble3D", "hemisphere", "cylinder3D", "sinusoidal3D", "swirl3D", "curl3D",
-    "pie3D", "blur3D", "zblur", "zscale", "ztranslate", "zcone",
-    // the rest of flam3's (variations_flam3.cpp), and flatten (a stage's z set to 0)
-    "flatten", "arch", "tangent", "square", "rays", "blade", "secant2", "twintrian", "cross", "disc2", "super_shape",
-    "flower", "conic", "parabola", "bent2", "bipolar", "boarders", "butterfly", "cell", "cpow", "curve", "edisc",
-    "elliptic", "escher", "foci", "lazysusan", "loonie", "modulus", "oscilloscope", "polar2", "popcorn2", "scry",
-    "separation", "split", "splits", "stripes", "wedge", "wedge_julia", "wedge_sph", "whorl", "waves2", "exp", "log",
-    "sin", "cos", "tan", "sec", "csc", "cot", "sinh", "cosh", "tanh", "sech", "csch", "coth", "auger",
-    // plugins of Apophysis, JWildfire and Fractorium that the corpus's flames use most
-    "pre_blur", "mobius", "unpolar", "sineblur", "glynnia", "epispiral", "crop", "julian2", "epispiral_wf",
-    "blur_circle", "blur_linear", "exblur", "twoface", "hypertile", "hypertile1", "hypertile2", "rotate_x", "rotate_y",
-    "rotate_z", "foci_3D", "circlecrop", "bwraps", "juni", "blur_zoom", "eJulia", "eMotion", "depth", "crackle",
-    "julian3Dx", "inflateZ_3", "bi_linear", "acoth", "acosh", "glynnSim1", "hypertile3D1", "hypertile3D2", "cropn",
-    "hexes", "octagon", "bcircle", "waves23", "wdisc", "waves4_wf", "rblur", "zscale_wf", "lazyTravis"};
+// The files of the GPU's variations, in the order they are put together: flame_variations.glsl
+// first, as it declares the data buffers and the helpers (psi, atan2c, ...) the others call. A
+// family's file is the CPU catalogue's family (core/flame/variations_*.cpp) in float.
+constexpr std::array<std::string_view, 6> kVariationFiles = {
+    "flame_variations.glsl",    "flame_variations_2d.glsl",    "flame_variations_2d_more.glsl",
+    "flame_variations_3d.glsl", "flame_variations_blurs.glsl", "flame_variations_jwildfire.glsl"};
+
+// The names the variation files define, each as `vec3 V_<name>(vec3 p, float w, int P, int A)`.
+std::vector<std::string> definedVariations(const std::string& source) {
+  static constexpr std::string_view kOpening = "vec3 V_";
+  static constexpr std::string_view kSignature = "(vec3 p, float w, int P, int A)";
+  std::vector<std::string> names;
+  for (std::size_t at = source.find(kOpening); at != std::string::npos; at = source.find(kOpening, at + 1)) {
+    if (at > 0 && source[at - 1] != '\n') continue;  // a call, not a definition
+    const std::size_t nameStart = at + kOpening.size();
+    const std::size_t nameEnd = source.find('(', nameStart);
+    if (nameEnd == std::string::npos || source.compare(nameEnd, kSignature.size(), kSignature) != 0) continue;
+    names.push_back(source.substr(nameStart, nameEnd - nameStart));
+  }
+  return names;
+}
 
 bool gpuHasVariation(std::string_view name) {
-  return std::find(kGpuVariations.begin(), kGpuVariations.end(), name) != kGpuVariations.end();
+  const std::vector<std::string>& names = gpuFlameVariations();
+  return std::find(names.begin(), names.end(), name) != names.end();
 }
 
 // Why one transform cannot run on the GPU, or empty.
@@ -304,8 +307,21 @@ std::vector<float> gpuNoiseTables() {
   return values;
 }
 
+const std::string& gpuVariationSource() {
+  // Each file from its line 1 as source string k + 1, its place in kVariationFiles (the driver's
+  // log says "k+1:line"; the program's own file is string 0), so a compile error points into it.
+  static const std::string source = [] {
+    std::string text;
+    for (std::size_t k = 0; k < kVariationFiles.size(); ++k)
+      text += "#line 1 " + std::to_string(k + 1) + "\n" + embeddedShader(kVariationFiles[k]).text + "\n";
+    return text;
+  }();
+  return source;
+}
+
 const std::vector<std::string>& gpuFlameVariations() {
-  return kGpuVariations;
+  static const std::vector<std::string> names = definedVariations(gpuVariationSource());
+  return names;
 }
 
 std::string flameKernelUnsupported(const core::PatternLayer& layer) {

@@ -42,7 +42,9 @@ std::string flameKernelUnsupported(const core::PatternLayer& layer);
 // two transforms or more). Call only when flameKernelUnsupported(layer) is empty.
 FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGame& game, bool groupChoice);
 
-// The variations the GPU's chaos game has (flame_variations.glsl), in the catalogue's spelling.
+// The GLSL of the GPU's variations (shaders/flame_variations*.glsl, one file per family, put together).
+const std::string& gpuVariationSource();
+// The variations it defines (as V_<name>), in the catalogue's spelling.
 const std::vector<std::string>& gpuFlameVariations();
 
 // Whether the GPU's variation `name` reads simplex noise (crackle): its term's parameters (all of

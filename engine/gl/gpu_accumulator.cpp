@@ -195,14 +195,12 @@ struct GpuAccumulator::Device {
     const ShaderSource body = embeddedShader(file);
     std::string text = "#version 430 core\n" + defines + (hitsInCells ? "#define HITS_IN_CELLS\n" : "");
     text += prelude + "\n";
-    text += "#line 1\n" + body.text;
+    text += "#line 1 0\n" + body.text;  // string 0: the file (the preludes number theirs)
     return programs.emplace(key, ShaderProgram(ShaderSource{body.file, std::move(text)})).first->second;
   }
   // The program that runs one layer's steps.
   const ShaderProgram& layerProgram(const LayerUniforms& u) {
-    if (u.chaos)
-      return program("accumulate.comp.glsl", "",
-                     embeddedShader("flame_variations.glsl").text + "\n#line 1\n" + u.kernel.source);
+    if (u.chaos) return program("accumulate.comp.glsl", "", gpuVariationSource() + "\n#line 1 99\n" + u.kernel.source);
     return program("accumulate.comp.glsl", "#define " + u.system + "\n" + (u.rk4 ? "#define INTEGRATOR_RK4\n" : ""),
                    true);
   }
