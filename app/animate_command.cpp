@@ -208,7 +208,7 @@ int animateCommand(const AnimateArguments& arguments) {
   StillOptions options;
   options.threads = arguments.threads;
   // One backend for every frame: keyframes change values, never a layer's kind.
-  options.backend = resolveBackend(arguments.backend, scene.layers, scene.render.method);
+  options.backend = resolveBackend(arguments.backend, scene.layers);
   // Split into chunks as `render` splits a still (its default K), so `voxflame render FRAME.png`
   // makes the frame again, byte for byte.
   options.chunks = ChunkPlan{};

@@ -20,6 +20,7 @@
 #include "core/shadow_volume.h"
 #include "core/mask_cache.h"
 #include "core/scene_io.h"
+#include "gl/gpu_accumulator.h"
 #include "gl/headless_context.h"
 #include "gl/volume_renderer.h"
 #include "version.h"
@@ -276,6 +277,7 @@ struct FrameRenderer::Impl {
   std::uint64_t points = 0;
   int threads = 0;
   const ChunkPlan* chunks = nullptr;
+  core::BackendKind pointsBackend = core::BackendKind::Cpu;
   bool keepSums = false;
 };
 
@@ -301,10 +303,12 @@ void FrameRenderer::setVolume(const core::PackedVolume& volume, const SceneShape
   impl_->shape = &shape;
 }
 
-void FrameRenderer::setPointsPass(std::uint64_t points, int threads, const ChunkPlan* chunks) {
+void FrameRenderer::setPointsPass(std::uint64_t points, int threads, const ChunkPlan* chunks,
+                                  core::BackendKind backend) {
   impl_->points = points;
   impl_->threads = threads;
   impl_->chunks = chunks;
+  impl_->pointsBackend = backend;
 }
 
 core::ImageRGBA FrameRenderer::render(const core::Scene& scene, int width, int height, bool linearOutput,
@@ -346,6 +350,10 @@ FrameRenderer::Rendered FrameRenderer::renderWithStats(const core::Scene& scene,
     points.threads = d.threads;
     points.progress = progress;
     points.pointsInside = &pointsProjected;
+    if (d.pointsBackend == core::BackendKind::Gpu)
+      points.projectingBackend = [](std::shared_ptr<const core::InsideMask> mask,
+                                    const core::PointProjection& projection,
+                                    int) { return gl::makeGpuProjectingBackend(std::move(mask), projection); };
     if (d.chunks) {
       points.chunks = d.chunks->chunks;
       points.chunkList = d.chunks->render;
@@ -396,7 +404,9 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   // leave the grid on the GPU (a chunked render reads its grids back, chunk by chunk).
   std::optional<FrameRenderer> renderer;
   StillOptions accumulation = options;
-  if (options.backend == core::BackendKind::Gpu && !options.chunks) {
+  // The points method reads the grid on the host (its camera's and light's transmittance).
+  if (options.backend == core::BackendKind::Gpu && !options.chunks &&
+      scene.render.method != core::RenderMethod::Points) {
     renderer.emplace();
     accumulation.renderer = renderer->shareGroup();
   }
@@ -422,7 +432,8 @@ StillResult renderStill(const core::Scene& scene, const StillOptions& options) {
   if (!renderer) renderer.emplace();
   result.renderer = renderer->rendererName();
   if (!volume.onDevice()) renderer->setVolume(volume, shape);
-  renderer->setPointsPass(options.points, options.threads, options.chunks ? &*options.chunks : nullptr);
+  renderer->setPointsPass(options.points, options.threads, options.chunks ? &*options.chunks : nullptr,
+                          options.backend);
   // Between sub-samples a cancelled render stops and a progress bar moves.
   std::function<void(double)> renderProgress;
   if (options.cancel || options.stage)

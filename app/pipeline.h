@@ -146,8 +146,10 @@ class FrameRenderer {
   void setVolume(const core::PackedVolume& volume, const SceneShape& shape);
   // This renderer's context, for StillOptions::renderer (on the thread that made the renderer).
   gl::ShareGroup shareGroup() const;
-  // For the points method: how many points to project (0: the scene's count) on how many threads.
-  void setPointsPass(std::uint64_t points, int threads, const ChunkPlan* chunks = nullptr);
+  // For the points method: how many points to project (0: the scene's count) on how many threads,
+  // and by which backend (the GPU's projects them on the device, core::ProjectingBackend).
+  void setPointsPass(std::uint64_t points, int threads, const ChunkPlan* chunks = nullptr,
+                     core::BackendKind backend = core::BackendKind::Cpu);
   // `scene`'s camera, tone and render settings (method, samples, oversample, mesh overlay,
   // lighting). `progress` (may be empty) gets the fraction done (after each tile's sub-sample, or
   // as points are projected); it may throw to stop the render.

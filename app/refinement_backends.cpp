@@ -23,12 +23,9 @@ BackendChoice backendChoiceFromString(std::string_view name) {
   throw core::Error(message);
 }
 
-core::BackendKind resolveBackend(BackendChoice choice, const std::vector<core::PatternLayer>& layers,
-                                 core::RenderMethod method) {
+core::BackendKind resolveBackend(BackendChoice choice, const std::vector<core::PatternLayer>& layers) {
   if (choice == BackendChoice::Cpu) return core::BackendKind::Cpu;
-  std::string unsupported = gl::gpuUnsupportedReason(layers);
-  if (unsupported.empty() && method == core::RenderMethod::Points)
-    unsupported = "the points method projects its points on the CPU; it needs the CPU backend";
+  const std::string unsupported = gl::gpuUnsupportedReason(layers);
   if (choice == BackendChoice::Gpu) {
     if (!unsupported.empty()) throw core::Error(unsupported + " (--backend cpu or auto)");
     return core::BackendKind::Gpu;

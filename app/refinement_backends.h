@@ -20,12 +20,12 @@ inline constexpr std::string_view kBackendChoiceNames[] = {"cpu", "gpu", "auto"}
 std::string_view toString(BackendChoice choice);
 BackendChoice backendChoiceFromString(std::string_view name);  // throws core::Error listing the choices
 
-// The backend `choice` gives these layers under `method`. Cpu is the CPU. Gpu is the GPU, or a
-// core::Error saying why it cannot be (a layer it does not run, the points method, no OpenGL 4.3).
+// The backend `choice` gives these layers. Cpu is the CPU. Gpu is the GPU, or a core::Error saying
+// why it cannot be (a layer it does not run, no OpenGL 4.3). Under the points method it also
+// projects the points (core::PointsPassOptions::projectingBackend).
 // Auto takes the GPU when the machine's GL renderer is a hardware one and the GPU runs the pattern,
 // else the CPU. Asking about the hardware makes a GL context once per process.
-core::BackendKind resolveBackend(BackendChoice choice, const std::vector<core::PatternLayer>& layers,
-                                 core::RenderMethod method = core::RenderMethod::Volume);
+core::BackendKind resolveBackend(BackendChoice choice, const std::vector<core::PatternLayer>& layers);
 
 // A backend of `kind` on `mask`. threads and cores are the CPU's (0: every hardware thread).
 // `renderer`: the context of the renderer that will draw the grid (gl::currentShareGroup() on its

@@ -399,7 +399,7 @@ int renderCommand(const RenderArguments& arguments) {
   scene = core::sceneFromJson(core::sceneToJson(scene), "(command line)");
   scene.embedded = embedded;
   scene.baseDirectory = baseDirectory;
-  options.backend = resolveBackend(arguments.backend, scene.layers, scene.render.method);
+  options.backend = resolveBackend(arguments.backend, scene.layers);
 
   // Every still but one with a noise target is split into chunks: one code path, whether it runs
   // here at once, is resumed, or is spread over a farm.

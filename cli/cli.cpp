@@ -82,7 +82,7 @@ CLI::Option* addBackendChoice(CLI::App& command, app::BackendChoice& target) {
       command, "--backend", target, {app::BackendChoice::Cpu, app::BackendChoice::Gpu, app::BackendChoice::Auto},
       [](app::BackendChoice c) { return app::toString(c); },
       "What refines the volume: cpu (every core), gpu (compute shaders; attractor and quaternion Julia layers, "
-      "flame layers of the variations it has, and the volume method), "
+      "flame layers of the variations it has; under the points method it projects the points too), "
       "auto (the GPU where it is a hardware one and runs the pattern, else the CPU). Default: cpu. A render's "
       "chunks all come from one backend");
 }

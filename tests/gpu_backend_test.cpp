@@ -14,14 +14,18 @@
 #include <cstdlib>
 #include <filesystem>
 #include <memory>
+#include <numeric>
 #include <string>
 #include <vector>
 
 #include "core/attractor.h"
+#include "core/camera.h"
 #include "core/chunk_sums.h"
 #include "core/error.h"
 #include "core/refinement/accumulator.h"
 #include "core/flame/variations.h"
+#include "core/packed_volume.h"
+#include "core/point_renderer.h"
 #include "core/random.h"
 #include "core/scene_io.h"
 #include "gl/flame_kernel.h"
@@ -499,8 +503,6 @@ TEST(GpuBackend, AutoTakesTheGpuOnlyOnHardwareForWhatItRuns) {
             software ? core::BackendKind::Cpu : core::BackendKind::Gpu);
   EXPECT_EQ(app::resolveBackend(app::BackendChoice::Gpu, attractor.layers), core::BackendKind::Gpu);
   EXPECT_EQ(app::resolveBackend(app::BackendChoice::Cpu, attractor.layers), core::BackendKind::Cpu);
-  EXPECT_EQ(app::resolveBackend(app::BackendChoice::Auto, attractor.layers, core::RenderMethod::Points),
-            core::BackendKind::Cpu);
   core::Scene flame = attractor;
   flame.layers.front().kind = core::PatternKind::Flame;
   flame.layers.front().flame = core::defaultFlame();
@@ -509,4 +511,73 @@ TEST(GpuBackend, AutoTakesTheGpuOnlyOnHardwareForWhatItRuns) {
       {"falloff2", 0.5, core::variationOrThrow("falloff2").defaultParams()});
   EXPECT_EQ(app::resolveBackend(app::BackendChoice::Auto, flame.layers), core::BackendKind::Cpu);
   EXPECT_THROW(app::resolveBackend(app::BackendChoice::Gpu, flame.layers), core::Error);
+}
+
+namespace {
+
+// The density (or colour) channel of a points image's sums.
+std::vector<float> channel(const core::DensityImage& image, int c) {
+  std::vector<float> values(image.values.size() / 4);
+  for (std::size_t i = 0; i < values.size(); ++i) values[i] = image.values[4 * i + static_cast<std::size_t>(c)];
+  return values;
+}
+
+}  // namespace
+
+// The points method on the GPU (gl::makeGpuProjectingBackend): the same screen histogram as the
+// CPU's PointProjector within sampling noise, two chunks of each backend against each other, with
+// everything that dims a point on: the camera's transmittance through the grid, the light's shadow,
+// a thin lens and fog. Then the same unlit, without lens or fog.
+TEST(GpuBackend, ProjectsThePointsMethodsPointsAsTheCpuDoes) {
+  if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
+  const auto mask = bunnyMask(40);
+  for (const char* preset : {"default.json", "flame-silk-bunny.json"}) {
+    for (const bool dimmed : {true, false}) {
+      core::Scene scene = core::loadScene(test::sourcePath("presets") / preset);
+      SCOPED_TRACE(std::string(preset) + (dimmed ? ", lit, lens and fog" : ", plain"));
+      scene.render.method = core::RenderMethod::Points;
+      scene.render.lighting = dimmed;
+      scene.render.dofAperture = dimmed ? 0.04 : 0.0;
+      scene.render.fog = dimmed ? 0.6 : 0.0;
+      scene.tone.opacity = dimmed ? std::max(scene.tone.opacity, 1.0) : scene.tone.opacity;
+      core::Accumulator grid(mask, 2);
+      grid.setTargetPoints(1'000'000);
+      grid.setPattern(scene.layers, scene.seed);
+      ASSERT_TRUE(grid.waitUntilDone(120.0));
+      core::PackedVolume volume;
+      core::packVolume(grid, volume);
+      const core::CameraFrame camera = core::orbitCamera(scene.camera, mask->geometry.box(), 1.6);
+      const auto project = [&](bool gpu, int chunk) {
+        core::PointsPassOptions options;
+        options.points = 1'600'000;
+        options.threads = 2;
+        options.chunks = 2;
+        options.chunkList = std::vector<int>{chunk};
+        if (gpu)
+          options.projectingBackend = [](std::shared_ptr<const core::InsideMask> m,
+                                         const core::PointProjection& projection,
+                                         int) { return gl::makeGpuProjectingBackend(std::move(m), projection); };
+        return core::projectScenePoints(scene, mask, volume, camera, 160, 100, options);
+      };
+      const core::DensityImage cpuA = project(false, 0), cpuB = project(false, 1);
+      const core::DensityImage gpuA = project(true, 0), gpuB = project(true, 1);
+      ASSERT_EQ(gpuA.values.size(), cpuA.values.size());
+      EXPECT_DOUBLE_EQ(gpuA.hitsPerUnitDensity, cpuA.hitsPerUnitDensity);
+      const auto total = [](const std::vector<float>& v) { return std::accumulate(v.begin(), v.end(), 0.0); };
+      // The same brightness: what one point adds, dimmed alike (within a few per cent of noise).
+      const double cpuSum = total(channel(cpuA, 3)), gpuSum = total(channel(gpuA, 3));
+      EXPECT_NEAR(gpuSum / cpuSum, 1.0, 0.03) << "summed density: CPU " << cpuSum << ", GPU " << gpuSum;
+      for (int c : {3, 0, 1, 2}) {
+        SCOPED_TRACE("channel " + std::to_string(c));
+        const double cc = relativeRms(channel(cpuA, c), channel(cpuB, c));
+        const double gg = relativeRms(channel(gpuA, c), channel(gpuB, c));
+        const double gc = relativeRms(channel(gpuA, c), channel(cpuA, c));
+        EXPECT_LE(gc, 1.5 * std::sqrt(0.5 * (cc * cc + gg * gg)))
+            << "CPU against CPU " << cc << ", GPU against GPU " << gg << ", GPU against CPU " << gc;
+        if (std::getenv("VOXFLAME_PRINT_AGREEMENT"))
+          std::printf("%s %s channel %d: cc %.4f gg %.4f gc %.4f\n", preset, dimmed ? "dimmed" : "plain", c, cc, gg,
+                      gc);
+      }
+    }
+  }
 }

@@ -535,12 +535,15 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
       std::string backendNote;
       core::BackendKind kind = core::BackendKind::Cpu;
       try {
-        // The points method projects the grid's points on the CPU, dimmed by a grid in host memory.
-        kind = resolveBackend(choice, scene.layers, method);
+        kind = resolveBackend(choice, scene.layers);
       } catch (const core::Error& why) {
         backendNote = std::string(why.what()) + "; refining on the CPU";
       }
-      const std::string key = shapeKey(scene) + "|" + std::string(core::toString(kind));
+      // Under the points method the points are dimmed by the grid in host memory: a GPU backend
+      // then reads its grid back rather than handing it to the renderer on the GPU.
+      const bool gridForPoints = method == core::RenderMethod::Points && kind == core::BackendKind::Gpu;
+      const std::string key =
+          shapeKey(scene) + "|" + std::string(core::toString(kind)) + (gridForPoints ? "|read back" : "");
       // Only this thread replaces engine_, so it may use it without the lock; the UI reaches it
       // only under the lock, for calls that never wait.
       Engine* current = engine_.get();
@@ -580,8 +583,8 @@ void ExplorerSession::controlLoop(std::stop_token stop) {
           old.reset();
           std::unique_ptr<Engine> engine;
           try {
-            engine =
-                std::make_unique<Engine>(key, mask, proxyMask, threads_, snapshotInterval_, kind, rendererShareGroup());
+            engine = std::make_unique<Engine>(key, mask, proxyMask, threads_, snapshotInterval_, kind,
+                                              gridForPoints ? gl::ShareGroup{} : rendererShareGroup());
           } catch (const core::Error& why) {
             if (kind == core::BackendKind::Cpu) throw;
             // No GPU context here after all (or the grid does not fit it): the CPU refines.

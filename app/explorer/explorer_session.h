@@ -184,7 +184,8 @@ class ExplorerSession {
   // Gpu takes it wherever it runs the pattern. A pattern it does not run (a flame) refines on the
   // CPU, and the status says why. A change of backend rebuilds the grid (the mask comes from the
   // cache); the proxy always refines on the CPU. Cheap when nothing changed: call it every frame.
-  // `method`: the points method projects the grid's points on the CPU, so it refines there.
+  // `method`: under the points method the points are dimmed by the grid in host memory, so a GPU
+  // backend then reads its grid back instead of handing it to the renderer on the GPU.
   void setBackendChoice(BackendChoice choice, core::RenderMethod method = core::RenderMethod::Volume);
   // The context of the renderer that draws this session's volumes (gl::currentShareGroup() on the
   // thread that draws): a GPU backend made from then on shares it and hands its grid over on the

@@ -8,6 +8,7 @@
 #include "core/chunk_sums.h"
 #include "core/error.h"
 #include "core/point_renderer.h"
+#include "gl/gpu_accumulator.h"
 
 namespace voxflame::app {
 
@@ -65,6 +66,10 @@ void LivePoints::start(LivePointsRequest request) {
     options.chunks = kChunks;
     options.makeImage = false;
     options.progressInterval = 0.05;
+    if (request.backend == core::BackendKind::Gpu)
+      options.projectingBackend = [](std::shared_ptr<const core::InsideMask> mask,
+                                     const core::PointProjection& projection,
+                                     int) { return gl::makeGpuProjectingBackend(std::move(mask), projection); };
     options.progress = [&stop](double) {
       if (stop.stop_requested()) throw Stopped{};
     };

@@ -18,6 +18,7 @@
 #include "core/flame/image.h"
 #include "core/inside_mask.h"
 #include "core/packed_volume.h"
+#include "core/refinement/refinement_backend.h"
 #include "core/scene.h"
 
 namespace voxflame::app {
@@ -29,6 +30,9 @@ struct LivePointsRequest {
   core::CameraFrame camera;
   int width = 0, height = 0;  // supersampled pixels: the view's size times the oversample
   int threads = 0;            // 0: one per hardware thread
+  // The GPU projects the points on the device (gl::makeGpuProjectingBackend) where the session
+  // refines on it; else the CPU's accumulation workers do.
+  core::BackendKind backend = core::BackendKind::Cpu;
 };
 
 struct LivePointsProgress {

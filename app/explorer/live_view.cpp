@@ -323,6 +323,7 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
     // the points need, so the session holds it here until the view or the pattern changes.
     pointsGridPoints_ = shown_->points;
     request.camera = settings.camera;
+    request.backend = status.backend;
     request.width = width * oversample;
     request.height = height * oversample;
     points_.start(std::move(request));

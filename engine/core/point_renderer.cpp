@@ -6,6 +6,8 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <thread>
 
 #include <glm/mat4x4.hpp>
@@ -122,25 +124,30 @@ PointProjector::PointProjector(const PointProjection& projection, int threads) :
   for (std::vector<float>& histogram : histograms_) histogram.assign(4 * pixels, 0.0f);
   streamRandom_.resize(static_cast<std::size_t>(Accumulator::streamsPerChunk()));
   scratch_.resize(static_cast<std::size_t>(threads));
+  const PointScale scale = pointScale(p_);
+  pointDensity_ = scale.pointDensity;
+  unit_ = scale.unit;
+}
+
+PointScale pointScale(const PointProjection& p) {
   // One point's D in its pixel: (volume inside the mesh) / (points · pixel footprint), lengths in
   // grid sides (flame/image.h). The footprint grows with the view depth squared in perspective.
-  const GridGeometry& g = p_.grid;
+  const GridGeometry& g = p.grid;
   const double side = g.voxelSize * std::max({g.size.x, g.size.y, g.size.z, 1});
-  const double scale = std::max(std::abs(p_.camera.projection[1][1]), 1e-12);
-  const double pixelAtUnitDepth = 2.0 / (scale * p_.height) / side;
-  const double volume = std::max(p_.insideVoxels, 1.0) * std::pow(g.voxelSize / side, 3.0);
-  pointDensity_ = volume / (std::max(p_.totalPoints, 1.0) * pixelAtUnitDepth * pixelAtUnitDepth);
+  const double scale = std::max(std::abs(p.camera.projection[1][1]), 1e-12);
+  const double pixelAtUnitDepth = 2.0 / (scale * p.height) / side;
+  const double volume = std::max(p.insideVoxels, 1.0) * std::pow(g.voxelSize / side, 3.0);
+  const double pointDensity = volume / (std::max(p.totalPoints, 1.0) * pixelAtUnitDepth * pixelAtUnitDepth);
   // A point at the depth of the grid's centre adds up to 1024 counts: rounding to whole counts is
   // noise far below the point's own (a point is one sample: even 16 counts add under 0.1% to its
   // variance). Fewer when the points are many, so that one pixel can hold 1% of them all before its
   // count saturates: an attractor's slow spots gather millions of points in a pixel of a 16K print.
   // (Depths are in world units, so the count is set where the points are, not at unit depth.)
-  const double centreDepth =
-      p_.camera.orthographic ? 1.0 : std::max(viewDepth(p_.camera, p_.grid.box().center()), 1e-9);
-  const double countsPerPoint = std::clamp(
-      static_cast<double>(std::numeric_limits<std::uint32_t>::max()) / (0.01 * std::max(p_.totalPoints, 1.0)), 16.0,
-      1024.0);
-  unit_ = pointDensity_ / (countsPerPoint * (p_.camera.orthographic ? 1.0 : centreDepth * centreDepth));
+  const double centreDepth = p.camera.orthographic ? 1.0 : std::max(viewDepth(p.camera, p.grid.box().center()), 1e-9);
+  const double countsPerPoint =
+      std::clamp(static_cast<double>(std::numeric_limits<std::uint32_t>::max()) / (0.01 * std::max(p.totalPoints, 1.0)),
+                 16.0, 1024.0);
+  return {pointDensity, pointDensity / (countsPerPoint * (p.camera.orthographic ? 1.0 : centreDepth * centreDepth))};
 }
 
 namespace {
@@ -347,49 +354,62 @@ DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const Inside
   projection.fog = scene.render.fog;
   projection.fogStart = transmittance.nearDepth;
   projection.seed = scene.seed;
-  PointProjector projector(projection, threads);
+  const PointScale pointUnits = pointScale(projection);
+  // The CPU's projector, fed by an Accumulator; or a backend that projects its points itself, whose
+  // sums are taken chunk by chunk.
+  std::optional<PointProjector> projector;
+  if (!options.projectingBackend) projector.emplace(projection, threads);
   const int chunks = std::max(1, options.chunks);
   std::vector<int> chunkList;
   if (options.chunkList)
     chunkList = *options.chunkList;
   else
     for (int chunk = 0; chunk < chunks; ++chunk) chunkList.push_back(chunk);
-  // With chunkDone each chunk's sums are taken as it finishes and added here (with those of chunks
-  // rendered earlier); without, the projector's histograms hold every chunk's points.
+  // With chunkDone (or a projecting backend) each chunk's sums are taken as it finishes and added
+  // here (with those of chunks rendered earlier); else the projector's histograms hold every chunk's points.
   ImageSums total;
-  const bool perChunk = static_cast<bool>(options.chunkDone);
+  const bool perChunk = static_cast<bool>(options.chunkDone) || !projector;
   if (perChunk) {
     if (options.earlierSums) {
       total = *options.earlierSums;
-      if (total.width != width || total.height != height || total.unit != projector.unit())
+      if (total.width != width || total.height != height || total.unit != pointUnits.unit)
         throw Error("the chunks rendered earlier are of another image");
     } else {
-      total.reset(width, height, projector.unit());
+      total.reset(width, height, pointUnits.unit);
     }
   }
   AccumulatorStats stats;
   std::uint64_t pointsInside = perChunk ? total.points : 0, iterations = perChunk ? total.iterations : 0;
   {
-    Accumulator accumulator(mask, threads);
-    accumulator.setPointSink(&projector);
-    accumulator.setHeld(true);  // nothing runs until the first chunk's streams are set
-    accumulator.setTargetPoints(1);
-    accumulator.setDeepSeeds(true);
-    accumulator.setPaletteMode(scene.flat.paletteMode);
-    accumulator.setPattern(scene.layers, scene.seed);
+    std::unique_ptr<ProjectingBackend> projecting;
+    std::unique_ptr<Accumulator> cpu;
+    RefinementBackend* accumulator = nullptr;
+    if (projector) {
+      cpu = std::make_unique<Accumulator>(mask, threads);
+      cpu->setPointSink(&*projector);
+      accumulator = cpu.get();
+    } else {
+      projecting = options.projectingBackend(mask, projection, threads);
+      accumulator = &projecting->backend();
+    }
+    accumulator->setHeld(true);  // nothing runs until the first chunk's streams are set
+    accumulator->setTargetPoints(1);
+    accumulator->setDeepSeeds(true);
+    accumulator->setPaletteMode(scene.flat.paletteMode);
+    accumulator->setPattern(scene.layers, scene.seed);
     // A pattern that mostly misses the mesh would never reach its target: stop after as many
     // iterations as the grid pass allows.
     const std::uint64_t iterationLimit = 40 * target + 50'000'000;
     std::size_t chunksDone = 0;
     for (const int chunk : chunkList) {
       const std::uint64_t chunkTarget = chunkPoints(target, chunks, chunk);
-      const std::uint64_t iterationsBefore = accumulator.stats().iterations;
-      const std::uint64_t pointsBefore = accumulator.stats().points;
-      accumulator.setChunk(static_cast<std::uint64_t>(chunk), false);
-      accumulator.setTargetPoints(chunkTarget);
-      accumulator.setHeld(false);
-      while (!accumulator.waitUntilDone(options.progressInterval)) {
-        stats = accumulator.stats();
+      const std::uint64_t iterationsBefore = accumulator->stats().iterations;
+      const std::uint64_t pointsBefore = accumulator->stats().points;
+      accumulator->setChunk(static_cast<std::uint64_t>(chunk), false);
+      accumulator->setTargetPoints(chunkTarget);
+      accumulator->setHeld(false);
+      while (!accumulator->waitUntilDone(options.progressInterval)) {
+        stats = accumulator->stats();
         const double done = (static_cast<double>(chunksDone) +
                              std::min(1.0, static_cast<double>(stats.points - pointsBefore) /
                                                static_cast<double>(std::max<std::uint64_t>(chunkTarget, 1)))) /
@@ -399,22 +419,22 @@ DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const Inside
             !stats.problem.empty())
           break;
       }
-      accumulator.setHeld(true);
-      stats = accumulator.stats();
+      accumulator->setHeld(true);
+      stats = accumulator->stats();
       if (!stats.problem.empty()) break;
       ++chunksDone;
       if (perChunk) {
         // Held, the workers finish the batch they are in before the next chunk's streams are set;
         // the chunk reached its target, so there is none.
-        ImageSums sums = projector.takeSums();
+        ImageSums sums = projector ? projector->takeSums() : projecting->takeSums();
         sums.points = stats.points - pointsBefore;
         sums.iterations = stats.iterations - iterationsBefore;
-        options.chunkDone(chunk, sums);
+        if (options.chunkDone) options.chunkDone(chunk, sums);
         if (options.makeImage) total.add(sums);
       }
       if (options.chunkFinished) options.chunkFinished(static_cast<int>(chunksDone));
     }
-    stats = accumulator.stats();
+    stats = accumulator->stats();
   }  // the workers are joined here: no point arrives after this
   if (!stats.problem.empty()) throw Error(stats.problem);
   if (!perChunk) {
@@ -436,7 +456,7 @@ DensityImage projectScenePoints(const Scene& scene, std::shared_ptr<const Inside
     image.values.resize(total.counts.size());
     for (std::size_t i = 0; i < total.counts.size(); ++i) image.values[i] = densityOfCount(total.counts[i], total.unit);
   } else {
-    image = projector.merge();
+    image = projector->merge();
   }
   // Each point's share of D assumed `target` points; the batches overshoot it a little (or a
   // pattern that barely meets the mesh falls short), so the image is scaled to what landed.

@@ -20,6 +20,8 @@
 #include "chunk_sums.h"
 #include "camera.h"
 #include "core/flame/image.h"
+#include "core/refinement/refinement_backend.h"
+#include "inside_mask.h"
 #include "packed_volume.h"
 #include "shadow_volume.h"
 
@@ -81,6 +83,14 @@ struct PointProjection {
   std::uint64_t seed = 1;      // for the lens samples
 };
 
+// What one point adds: its D in its pixel at unit view depth (over depth² in perspective), and the D
+// one count of the histogram stands for. The CPU's projector and the GPU's share it.
+struct PointScale {
+  double pointDensity = 1.0;
+  double unit = 1.0;
+};
+PointScale pointScale(const PointProjection& projection);
+
 // A PointSink that projects points into one histogram per worker thread. The histograms count in
 // fixed-point units (unit(): up to a 1024th of what a point adds at the grid centre's depth), each point's share
 // rounded up or down at random in proportion, so the rounding adds no bias. Integer sums are the
@@ -129,6 +139,18 @@ class PointProjector : public PointSink {
   std::atomic<std::uint64_t> projected_{0};
 };
 
+// A refinement backend that projects its accepted points into a screen histogram of its own, in
+// PointProjector's units and layout (pointScale), instead of handing them to a PointSink: the GPU's,
+// whose points never leave the device.
+class ProjectingBackend {
+ public:
+  virtual ~ProjectingBackend() = default;
+  virtual RefinementBackend& backend() = 0;
+  // The sums since the last call (ImageSums's points and iterations left 0), and the histogram
+  // starts again from zero. Call while the backend is held.
+  virtual ImageSums takeSums() = 0;
+};
+
 // The density the histogram's counts stand for, as merge and a chunked render's finish both make it.
 inline float densityOfCount(std::uint32_t count, double unit) {
   return static_cast<float>(static_cast<double>(count) * unit);
@@ -156,6 +178,11 @@ struct PointsPassOptions {
   const ImageSums* earlierSums = nullptr;
   bool makeImage = true;  // false: only render the chunks (a farm task); the result is empty
   std::function<void(int chunksDone)> chunkFinished;  // after each chunk (may be empty)
+  // When set, makes the backend that iterates and projects the points itself (the GPU's:
+  // gl/gpu_points.h); when empty, a CPU Accumulator feeds a PointProjector.
+  std::function<std::unique_ptr<ProjectingBackend>(std::shared_ptr<const InsideMask> mask,
+                                                   const PointProjection& projection, int threads)>
+      projectingBackend;
 };
 // Chunk `chunk`'s share of `points` split into `chunks` (the first points % chunks get one more).
 std::uint64_t chunkPoints(std::uint64_t points, int chunks, int chunk);

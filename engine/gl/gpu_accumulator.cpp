@@ -9,15 +9,18 @@
 #include <cmath>
 #include <exception>
 #include <map>
+#include <optional>
 #include <utility>
 
 #include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/chunk_sums.h"
 #include "core/error.h"
 #include "core/random.h"
 #include "core/packed_volume.h"
+#include "core/point_renderer.h"
 #include "gl/flame_kernel.h"
 #include "gl/gpu_volume.h"
 #include "gl/headless_context.h"
@@ -30,7 +33,9 @@ namespace {
 
 constexpr GLuint kOrbitsBinding = 0, kCellsBinding = 1, kHitsBinding = 2, kSeedsBinding = 3, kCountersBinding = 4,
                  kPaletteBinding = 5, kMaskBinding = 6, kSampleBinding = 7, kFlameDataBinding = 8,
-                 kFlamePickBinding = 9, kDistanceInBinding = 10, kDistanceOutBinding = 11;
+                 kFlamePickBinding = 9, kDistanceInBinding = 10, kDistanceOutBinding = 11, kScreenBinding = 12;
+// The points method's texture units (accumulate.comp.glsl's PROJECT_POINTS).
+constexpr GLint kViewTransmittanceUnit = 0, kLightTransmittanceUnit = 1;
 constexpr int kTransientSteps = 32;  // as the CPU's: steps an orbit takes before it may add a point
 // accumulate.comp.glsl's Orbit: an attractor's, and a chaos game's with its state, colour and stream
 // (112 bytes with a float state, 128 with a double one: the larger serves both).
@@ -174,11 +179,26 @@ struct GpuAccumulator::Device {
   // this list holds it. The bricks' distance buffers of the pack, ping and pong.
   std::vector<std::shared_ptr<GpuVolume>> volumes;
   GLuint distance[2] = {0, 0};
+  // The points method (projectPoints): the screen histogram, the camera's and the light's
+  // transmittance (textures), and what the shader needs to know of them. The projection's pointers
+  // to the host's volumes are not kept.
+  struct Projection {
+    core::PointProjection p;
+    core::PointScale scale;
+    bool dimmed = false, lit = false;
+    glm::ivec3 viewCells{0};
+    float viewNear = 0.0f, viewDepthScale = 1.0f;
+    glm::ivec3 shadowSize{0};
+  };
+  std::optional<Projection> projection;
+  GLuint screen = 0, viewTransmittance = 0, lightTransmittance = 0;
 
   ~Device() {
     for (const std::shared_ptr<GpuVolume>& volume : volumes) deleteVolume(*volume);
-    for (GLuint* b : {&cells, &hits, &counters, &mask, &sample, &distance[0], &distance[1]})
+    for (GLuint* b : {&cells, &hits, &counters, &mask, &sample, &distance[0], &distance[1], &screen})
       if (*b) glDeleteBuffers(1, b);
+    for (GLuint* t : {&viewTransmittance, &lightTransmittance})
+      if (*t) glDeleteTextures(1, t);
     for (auto* list : {&orbits, &seeds, &palettes, &flameData, &flamePicks})
       if (!list->empty()) glDeleteBuffers(static_cast<GLsizei>(list->size()), list->data());
     programs.clear();
@@ -200,9 +220,11 @@ struct GpuAccumulator::Device {
   }
   // The program that runs one layer's steps.
   const ShaderProgram& layerProgram(const LayerUniforms& u) {
-    if (u.chaos) return program("accumulate.comp.glsl", "", gpuVariationSource() + "\n#line 1 99\n" + u.kernel.source);
-    return program("accumulate.comp.glsl", "#define " + u.system + "\n" + (u.rk4 ? "#define INTEGRATOR_RK4\n" : ""),
-                   true);
+    const std::string projecting = projection ? "#define PROJECT_POINTS\n" : "";
+    if (u.chaos)
+      return program("accumulate.comp.glsl", projecting, gpuVariationSource() + "\n#line 1 99\n" + u.kernel.source);
+    return program("accumulate.comp.glsl",
+                   projecting + "#define " + u.system + "\n" + (u.rk4 ? "#define INTEGRATOR_RK4\n" : ""), true);
   }
 
   void bindGrid() const {
@@ -751,6 +773,7 @@ void GpuAccumulator::dispatchRound(Device& device) {
     glUniform1f(program.uniform("uAxisOffset"), u.axisOffset);
     glUniform3fv(program.uniform("uCenter"), 1, &u.center[0]);
     glUniform1i(program.uniform("uJittered"), deposit_.load() == core::Deposit::Jittered ? 1 : 0);
+    if (device.projection) setProjectionUniforms(device, program);
     const GLuint workgroup = u.kernel.groupChoice ? 256u : 64u;  // accumulate.comp.glsl's local size
     glDispatchCompute((orbits_ + workgroup - 1u) / workgroup, 1, 1);
     iterations += std::uint64_t{orbits_} * static_cast<std::uint64_t>(steps);
@@ -777,6 +800,140 @@ void GpuAccumulator::dispatchRound(Device& device) {
     doneSignal_.notify_all();
   }
   progress_.notify();
+}
+
+void GpuAccumulator::setProjectionUniforms(const Device& device, const ShaderProgram& program) const {
+  const Device::Projection& projection = *device.projection;
+  const core::PointProjection& p = projection.p;
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kScreenBinding, device.screen);
+  glActiveTexture(GL_TEXTURE0 + kViewTransmittanceUnit);
+  glBindTexture(GL_TEXTURE_3D, device.viewTransmittance);
+  glActiveTexture(GL_TEXTURE0 + kLightTransmittanceUnit);
+  glBindTexture(GL_TEXTURE_3D, device.lightTransmittance);
+  glActiveTexture(GL_TEXTURE0);
+  glUniform1i(program.uniform("uViewTransmittance"), kViewTransmittanceUnit);
+  glUniform1i(program.uniform("uLightTransmittance"), kLightTransmittanceUnit);
+  const glm::mat4 view(p.camera.view), projectionMatrix(p.camera.projection);
+  glUniformMatrix4fv(program.uniform("uView"), 1, GL_FALSE, &view[0][0]);
+  glUniformMatrix4fv(program.uniform("uProjection"), 1, GL_FALSE, &projectionMatrix[0][0]);
+  const glm::vec3 origin(p.grid.origin);
+  glUniform3fv(program.uniform("uOrigin"), 1, &origin[0]);
+  glUniform1f(program.uniform("uVoxelSize"), static_cast<float>(p.grid.voxelSize));
+  glUniform1i(program.uniform("uOrthographic"), p.camera.orthographic ? 1 : 0);
+  glUniform1f(program.uniform("uNearPlane"), static_cast<float>(p.camera.nearPlane));
+  glUniform2i(program.uniform("uScreenSize"), p.width, p.height);
+  glUniform1f(program.uniform("uPointCounts"),
+              static_cast<float>(projection.scale.pointDensity / projection.scale.unit));
+  glUniform1f(program.uniform("uAperture"), static_cast<float>(p.dofAperture));
+  glUniform1f(program.uniform("uFocus"), static_cast<float>(std::max(p.dofFocusDepth, 1e-9)));
+  const double side = p.grid.voxelSize * std::max({p.grid.size.x, p.grid.size.y, p.grid.size.z, 1});
+  glUniform1f(program.uniform("uFogPerDepth"), static_cast<float>(p.fog / side));
+  glUniform1f(program.uniform("uFogStart"), static_cast<float>(p.fogStart));
+  glUniform1i(program.uniform("uDimmed"), projection.dimmed ? 1 : 0);
+  glUniform3i(program.uniform("uViewCells"), projection.viewCells.x, projection.viewCells.y, projection.viewCells.z);
+  glUniform1f(program.uniform("uViewNear"), projection.viewNear);
+  glUniform1f(program.uniform("uViewDepthScale"), projection.viewDepthScale);
+  glUniform1i(program.uniform("uLit"), projection.lit ? 1 : 0);
+  glUniform3i(program.uniform("uShadowSize"), projection.shadowSize.x, projection.shadowSize.y,
+              projection.shadowSize.z);
+  glUniform1f(program.uniform("uShadowToCell"), 1.0f / static_cast<float>(std::max(1, p.shadowDownsample)));
+  glUniform1f(program.uniform("uLightStrength"), static_cast<float>(p.lightStrength));
+}
+
+void GpuAccumulator::projectPoints(const core::PointProjection& projection) {
+  if (projection.width <= 0 || projection.height <= 0) throw core::Error("the points image must have a positive size");
+  runOnDevice(
+      [&](Device& device) {
+        Device::Projection made;
+        made.p = projection;
+        made.p.transmittance = nullptr;
+        made.p.shadow = nullptr;
+        made.scale = core::pointScale(projection);
+        const std::size_t bytes = 4 * sizeof(std::uint32_t) * static_cast<std::size_t>(projection.width) *
+                                  static_cast<std::size_t>(projection.height);
+        GLint maxBlock = 0;
+        glGetIntegerv(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+        if (bytes > static_cast<std::size_t>(static_cast<GLuint>(maxBlock)))
+          throw core::Error("the points image of " + std::to_string(projection.width) + "×" +
+                            std::to_string(projection.height) + " supersampled pixels needs " +
+                            std::to_string(bytes >> 20) + " MiB of sums, more than this GPU binds at once (" +
+                            std::to_string(static_cast<GLuint>(maxBlock) >> 20) +
+                            " MiB); render it smaller, with less oversampling, or on the CPU (--backend cpu)");
+        if (device.screen) glDeleteBuffers(1, &device.screen);
+        device.screen = makeBuffer(kScreenBinding, bytes);
+        const GLuint zero = 0;
+        glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        const auto texture = [](GLuint& name, GLint format, GLenum type, glm::ivec3 size, const void* values) {
+          if (!name) glGenTextures(1, &name);
+          glBindTexture(GL_TEXTURE_3D, name);
+          glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+          glTexImage3D(GL_TEXTURE_3D, 0, format, size.x, size.y, size.z, 0, GL_RED, type, values);
+          glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+          glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+          glTexParameteri(GL_TEXTURE_3D, GL_TEXTURE_MAX_LEVEL, 0);
+          glBindTexture(GL_TEXTURE_3D, 0);
+        };
+        // An unused one gets a texel, so that every sampler names a complete texture.
+        const float clear = 1.0f;
+        const std::uint8_t lit = 255;
+        if (const core::ViewTransmittance* t = projection.transmittance; t && !t->values.empty()) {
+          made.dimmed = true;
+          made.viewCells = {t->width, t->height, t->depth};
+          made.viewNear = static_cast<float>(t->nearDepth);
+          made.viewDepthScale = t->depthScale;
+          texture(device.viewTransmittance, GL_R32F, GL_FLOAT, {t->depth + 1, t->width, t->height}, t->values.data());
+        } else {
+          texture(device.viewTransmittance, GL_R32F, GL_FLOAT, {1, 1, 1}, &clear);
+        }
+        if (const core::ShadowVolume* shadow = projection.shadow; shadow && !shadow->transmittance.empty()) {
+          made.lit = true;
+          made.shadowSize = shadow->size;
+          texture(device.lightTransmittance, GL_R8, GL_UNSIGNED_BYTE, shadow->size, shadow->transmittance.data());
+        } else {
+          texture(device.lightTransmittance, GL_R8, GL_UNSIGNED_BYTE, {1, 1, 1}, &lit);
+        }
+        device.projection = made;
+      },
+      true);
+}
+
+core::ImageSums GpuAccumulator::takeScreenSums() {
+  core::ImageSums sums;
+  runOnDevice([&](Device& device) {
+    if (!device.projection) throw core::Error("this GPU backend projects no points");
+    const core::PointProjection& p = device.projection->p;
+    sums.reset(p.width, p.height, device.projection->scale.unit);
+    glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.screen);
+    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(sums.counts.size() * sizeof(std::uint32_t)),
+                       sums.counts.data());
+    const GLuint zero = 0;
+    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  });
+  return sums;
+}
+
+namespace {
+
+// The points method's backend on the GPU: a GpuAccumulator that projects its points.
+class GpuProjectingBackend final : public core::ProjectingBackend {
+ public:
+  GpuProjectingBackend(std::shared_ptr<const core::InsideMask> mask, const core::PointProjection& projection)
+      : backend_(std::move(mask)) {
+    backend_.projectPoints(projection);
+  }
+  core::RefinementBackend& backend() override { return backend_; }
+  core::ImageSums takeSums() override { return backend_.takeScreenSums(); }
+
+ private:
+  GpuAccumulator backend_;
+};
+
+}  // namespace
+
+std::unique_ptr<core::ProjectingBackend> makeGpuProjectingBackend(std::shared_ptr<const core::InsideMask> mask,
+                                                                  const core::PointProjection& projection) {
+  return std::make_unique<GpuProjectingBackend>(std::move(mask), projection);
 }
 
 void GpuAccumulator::readSlabsImpl(core::GridReading& reading, void (*visit)(const core::GridSlabView&, void*),

@@ -28,7 +28,9 @@
 #include <thread>
 #include <vector>
 
+#include "core/chunk_sums.h"
 #include "core/inside_mask.h"
+#include "core/point_renderer.h"
 #include "core/progress_signal.h"
 #include "core/refinement/refinement_backend.h"
 #include "gl/headless_context.h"
@@ -44,6 +46,8 @@ inline bool gpuSupports(const std::vector<core::PatternLayer>& layers) {
 // Whether a headless GL context here runs on a hardware GPU (not a software rasteriser such as
 // llvmpipe): what `--backend auto` asks. Creates and drops a context; false when none can be made.
 bool hardwareGpuAvailable();
+
+class ShaderProgram;
 
 class GpuAccumulator final : public core::RefinementBackend {
  public:
@@ -96,6 +100,14 @@ class GpuAccumulator final : public core::RefinementBackend {
   }
   static void setPackOnDeviceWithSoftwareRenderer(bool always) { packOnDeviceWithSoftwareRenderer_.store(always); }
 
+  // The points method on the device (core/point_renderer.h): from here on every accepted point is
+  // projected through `projection`'s camera into a screen histogram of its size, dimmed by its
+  // transmittance and shadow volumes (uploaded here), in core::pointScale's units, and the grid
+  // gets none. Throws core::Error when the histogram is larger than the device binds at once.
+  void projectPoints(const core::PointProjection& projection);
+  // The histogram's sums since the last call, and it starts again from zero (call while held).
+  core::ImageSums takeScreenSums();
+
   std::string renderer() const { return renderer_; }  // GL_RENDERER of its context
   bool softwareRenderer() const { return software_; }
   // Orbits per layer, and the steps each takes per dispatch: fewer on a software rasteriser, whose
@@ -114,6 +126,7 @@ class GpuAccumulator final : public core::RefinementBackend {
   // density sample, a pack) leaves the grid and the counts as they are, so the backend stays idle().
   void runOnDevice(const std::function<void(Device&)>& task, bool changesGrid = false) const;
   void dispatchRound(Device& device);  // GPU thread: one dispatch of every layer, then the counts
+  void setProjectionUniforms(const Device& device, const ShaderProgram& program) const;
   bool targetReached() const;
   void clearGrid(Device& device) const;  // GPU thread: an empty grid, outside flags from the mask
   void notifyWorkChanged();
@@ -170,5 +183,10 @@ class GpuAccumulator final : public core::RefinementBackend {
 
   std::jthread thread_;  // last: started once everything it uses exists
 };
+
+// The points method's projecting backend on the GPU (for core::PointsPassOptions::projectingBackend):
+// a GpuAccumulator whose accepted points go into its screen histogram, never to the host.
+std::unique_ptr<core::ProjectingBackend> makeGpuProjectingBackend(std::shared_ptr<const core::InsideMask> mask,
+                                                                  const core::PointProjection& projection);
 
 }  // namespace voxflame::gl

@@ -67,6 +67,7 @@ uniform float uAxisOffset;
 uniform vec3 uCenter;
 uniform bool uJittered;        // core::Deposit::Jittered (else Nearest)
 
+
 const int kTransientSteps = 32;
 const uint kUnseeded = 0xFFFFFFFFu;
 const uint kAgeLimit = 1u << 30;
@@ -100,6 +101,95 @@ void addColour(uint cell, uint colour) {
     atomicAdd(cells[cell].z, (colour >> 16) & 0xffu);
   }
 }
+
+#ifdef PROJECT_POINTS
+// The points method (core/point_renderer.h, core::PointProjector, stays the reference): each accepted
+// point is projected through the camera into a supersampled screen histogram instead of the grid,
+// dimmed by the camera's transmittance through the volume in front of it, by the light's shadow and
+// by fog, its share rounded to whole counts at random in proportion (so no bias), and added with
+// integer atomics: 4 counts per pixel (red, green, blue, density), saturating at 2^32 - 1.
+layout(std430, binding = 12) buffer Screen { uint screen[]; };
+// core::ViewTransmittance's values as a texture: x the slice boundary (depth + 1 of them), y and z
+// the cell across and down; its layout is the CPU array's.
+uniform sampler3D uViewTransmittance;
+uniform sampler3D uLightTransmittance;  // core::ShadowVolume, 0–1
+uniform mat4 uView;
+uniform mat4 uProjection;
+uniform vec3 uOrigin;            // the grid's, world units
+uniform float uVoxelSize;
+uniform bool uOrthographic;
+uniform float uNearPlane;
+uniform ivec2 uScreenSize;       // supersampled pixels
+uniform float uPointCounts;      // counts one point adds at unit view depth (core::PointScale)
+uniform float uAperture;         // thin lens radius, world units (0: pinhole)
+uniform float uFocus;            // view depth in focus
+uniform float uFogPerDepth;
+uniform float uFogStart;
+uniform bool uDimmed;            // a view transmittance is bound
+uniform ivec3 uViewCells;        // its cells across, down, and slices
+uniform float uViewNear;
+uniform float uViewDepthScale;   // slices per unit of view depth
+uniform bool uLit;               // a shadow volume is bound
+uniform ivec3 uShadowSize;
+uniform float uShadowToCell;     // 1 / the shadow's downsample
+uniform float uLightStrength;
+
+// Two 16-bit uniforms in [-0.5, 0.5) from one 32-bit draw (the CPU takes four from 64 bits).
+float halfJitter(uint r, int part) { return float((r >> (16 * part)) & 0xffffu) * (1.0 / 65536.0) - 0.5; }
+uint countOf(float value, float dither) { return uint(clamp(value + dither, 0.0, 4294967040.0)); }
+void addCount(uint index, uint add) {
+  if (add == 0u) return;
+  uint before = atomicAdd(screen[index], add);
+  if (before + add < before) atomicMax(screen[index], 0xffffffffu);  // wrapped: saturate
+}
+
+void projectPoint(vec3 g, uint colour, inout uint r) {
+  vec4 eye = uView * vec4(uOrigin + uVoxelSize * g, 1.0);
+  float depth = -eye.z;
+  if (depth <= uNearPlane) return;
+  if (uAperture > 0.0) {
+    // A thin lens: seen from a random point of the lens disc, refocused at uFocus.
+    r = xorshift32(r);
+    float radius = uAperture * sqrt(float(r >> 8) * (1.0 / 16777216.0));
+    r = xorshift32(r);
+    float angle = 6.28318530718 * float(r >> 8) * (1.0 / 16777216.0);
+    eye.xy += radius * vec2(cos(angle), sin(angle)) * (depth / uFocus - 1.0);
+  }
+  vec4 clip = uProjection * eye;
+  float u = clip.x / clip.w * 0.5 + 0.5, v = 0.5 - clip.y / clip.w * 0.5;
+  float px = u * float(uScreenSize.x), py = v * float(uScreenSize.y);
+  if (!(px >= 0.0 && py >= 0.0 && px < float(uScreenSize.x) && py < float(uScreenSize.y))) return;
+  float weight = uOrthographic ? uPointCounts : uPointCounts / (depth * depth);
+  if (uDimmed && depth > uViewNear) {
+    // A jittered nearest cell across, linear along depth: the expected value interpolates between
+    // cell centres (core::ViewTransmittance::at).
+    r = xorshift32(r);
+    int x = clamp(int(floor(u * float(uViewCells.x) + halfJitter(r, 0))), 0, uViewCells.x - 1);
+    int y = clamp(int(floor(v * float(uViewCells.y) + halfJitter(r, 1))), 0, uViewCells.y - 1);
+    float z = min((depth - uViewNear) * uViewDepthScale, float(uViewCells.z));
+    int z0 = min(int(z), uViewCells.z - 1);
+    float front = texelFetch(uViewTransmittance, ivec3(z0, x, y), 0).r;
+    float back = texelFetch(uViewTransmittance, ivec3(z0 + 1, x, y), 0).r;
+    weight *= front + (z - float(z0)) * (back - front);
+  }
+  if (uLit) {
+    r = xorshift32(r);
+    uint first = r;
+    r = xorshift32(r);
+    vec3 jitter = vec3(halfJitter(first, 0), halfJitter(first, 1), halfJitter(r, 0));
+    ivec3 cell = clamp(ivec3(floor(g * uShadowToCell + jitter)), ivec3(0), uShadowSize - 1);
+    weight *= 1.0 + uLightStrength * (texelFetch(uLightTransmittance, cell, 0).r - 1.0);
+  }
+  if (uFogPerDepth > 0.0) weight *= exp(-uFogPerDepth * max(0.0, depth - uFogStart));
+  r = xorshift32(r);
+  float dither = float(r >> 8) * (1.0 / 16777216.0);
+  uint at = 4u * (uint(py) * uint(uScreenSize.x) + uint(px));
+  addCount(at, countOf(weight * float(colour & 0xffu) * (1.0 / 255.0), dither));
+  addCount(at + 1u, countOf(weight * float((colour >> 8) & 0xffu) * (1.0 / 255.0), dither));
+  addCount(at + 2u, countOf(weight * float((colour >> 16) & 0xffu) * (1.0 / 255.0), dither));
+  addCount(at + 3u, countOf(weight, dither));
+}
+#endif
 
 void seedOrbit(inout Orbit o, uint index) {
   uint h = pcgHash(uStreamSeed ^ pcgHash(index * 2654435761u + o.state.z * 40503u));
@@ -201,7 +291,12 @@ void main() {
     r = xorshift32(r);
     float along = uAlongStep * (jitterOffset(r) + 0.5);
     vec3 g = uToGrid * (q - along * d) + uGridOffset;
+#ifdef PROJECT_POINTS
+    // The points method projects the exact position, and tests the voxel it lies in.
+    if (false) {
+#else
     if (uJittered) {
+#endif
       r = xorshift32(r);
       g.x += jitterOffset(r);
       r = xorshift32(r);
@@ -209,7 +304,6 @@ void main() {
       r = xorshift32(r);
       g.z += jitterOffset(r);
     }
-    o.state.x = r;
     bool inGrid = finite && all(greaterThanEqual(g, vec3(0.0))) && all(lessThan(g, vec3(uGridSize)));
     // A point its transform's opacity (or a quaternion slice) hides is not a point at all.
     bool settled = finite && visible && o.state.y > uint(kTransientSteps);
@@ -226,20 +320,29 @@ void main() {
         if ((cells[cell].w & kOutsideBit) != 0u) {
           ++outside;
         } else {
+#ifdef PROJECT_POINTS
+          projectPoint(g, colour, r);
+#else
           addColour(cell, colour);  // the cell's count is the voxel's hits
+#endif
           ++inside;
         }
 #else
         if ((hits[voxel] & kOutsideBit) != 0u) {
           ++outside;
         } else {
+#ifdef PROJECT_POINTS
+          projectPoint(g, colour, r);
+#else
           atomicAdd(hits[voxel], 1u);
           addColour(cell, colour);
+#endif
           ++inside;
         }
 #endif
       }
     }
+    o.state.x = r;
     if (!finite) {
       ++escapes;
       seedOrbit(o, index);
