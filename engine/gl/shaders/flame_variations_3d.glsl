@@ -1,3 +1,609 @@
 // Flame variations for the GPU backend (flame_variations.glsl has the conventions and the helpers):
-// the CPU catalogue's variations_3d_more.cpp, variations_3d_quaternion.cpp, variations_3d_shapes.cpp, variations_3d_sum.cpp, variations_apophysis.cpp, variations_fractorium.cpp and the rest of variations_flam3.cpp and variations_plugins.cpp
-// (engine/core/flame/), in float.
+// the CPU catalogue's variations_3d_more.cpp, variations_3d_quaternion.cpp, variations_3d_shapes.cpp,
+// variations_3d_sum.cpp, variations_apophysis.cpp, variations_fractorium.cpp and the rest of
+// variations_flam3.cpp and variations_plugins.cpp (engine/core/flame/), in float. Those that read the
+// sum of the terms before them, replace it, or move the colour index stay on the CPU.
+
+// Fractorium's integer parameter (⌊v + ½⌋, clamped) and std::round (half away from zero).
+float v3d_integer(float v, float lo, float hi) { return clamp(floor(v + 0.5), lo, hi); }
+float v3d_round(float v) { return sign(v) * floor(abs(v) + 0.5); }
+
+// ---- quaternions (variations_3d_quaternion.cpp) --------------------------------------------------
+
+// q = x + v, v = (y, z): each result is (X, K y, K z); a = |v|, 1/a guarded as Fractorium's Zeps.
+float v3d_inverseA(vec3 p) { return 1.0 / fractoriumZeps(sqrt(p.y * p.y + p.z * p.z)); }
+vec3 v3d_quat(vec3 p, float X, float K) { return vec3(X, K * p.y, K * p.z); }
+vec3 V_sinq(vec3 p, float w, int P, int A) {
+  float a = length(p.yz);
+  return v3d_quat(p, w * sin(p.x) * cosh(a), w * cos(p.x) * sinh(a) * v3d_inverseA(p));
+}
+vec3 V_cosq(vec3 p, float w, int P, int A) {
+  float a = length(p.yz);
+  return v3d_quat(p, w * cos(p.x) * cosh(a), -w * sin(p.x) * sinh(a) * v3d_inverseA(p));
+}
+vec3 V_sinhq(vec3 p, float w, int P, int A) {
+  float a = length(p.yz);
+  return v3d_quat(p, w * sinh(p.x) * cos(a), w * cosh(p.x) * sin(a) * v3d_inverseA(p));
+}
+vec3 V_coshq(vec3 p, float w, int P, int A) {
+  float a = length(p.yz);
+  return v3d_quat(p, w * cosh(p.x) * cos(a), w * sinh(p.x) * sin(a) * v3d_inverseA(p));
+}
+// The reciprocals divide by |q|², as Fractorium does.
+float v3d_quatNi(vec3 p, float w) { return w / fractoriumZeps(dot(p, p)); }
+vec3 V_secq(vec3 p, float w, int P, int A) {
+  float a = length(p.yz), ni = v3d_quatNi(p, w);
+  return v3d_quat(p, ni * cos(p.x) * cosh(a), ni * sin(p.x) * sinh(a) * v3d_inverseA(p));
+}
+vec3 V_sechq(vec3 p, float w, int P, int A) {
+  float a = length(p.yz), ni = v3d_quatNi(p, w);
+  return v3d_quat(p, ni * cosh(p.x) * cos(a), -ni * sinh(p.x) * sin(a) * v3d_inverseA(p));
+}
+vec3 V_cscq(vec3 p, float w, int P, int A) {
+  float a = length(p.yz), ni = v3d_quatNi(p, w);
+  return v3d_quat(p, ni * sin(p.x) * cosh(a), -ni * cos(p.x) * sinh(a) * v3d_inverseA(p));
+}
+vec3 V_cschq(vec3 p, float w, int P, int A) {
+  float a = length(p.yz), ni = v3d_quatNi(p, w);
+  return v3d_quat(p, ni * sinh(p.x) * cos(a), -ni * cosh(p.x) * sin(a) * v3d_inverseA(p));
+}
+// tan, cot and their hyperbolic forms: (S C + D B a², ±(D C − S B)) scaled by ni.
+vec2 v3d_tanLike(float S, float C, float D, float B, float a2, float ni) {
+  return vec2((S * C + D * B * a2) * ni, (D * C - S * B) * ni);
+}
+vec3 V_tanq(vec3 p, float w, int P, int A) {
+  float a2 = dot(p.yz, p.yz), a = sqrt(a2), inv = v3d_inverseA(p);
+  float s = sin(p.x), c = cos(p.x), sh = sinh(a), ch = cosh(a);
+  vec2 t = v3d_tanLike(s * ch, c * ch, c * sh * inv, -s * sh * inv, a2, v3d_quatNi(p, w));
+  return v3d_quat(p, t.x, t.y);
+}
+vec3 V_cotq(vec3 p, float w, int P, int A) {
+  float a2 = dot(p.yz, p.yz), a = sqrt(a2), inv = v3d_inverseA(p);
+  float s = sin(p.x), c = cos(p.x), sh = sinh(a), ch = cosh(a);
+  vec2 t = v3d_tanLike(s * ch, c * ch, c * sh * inv, -s * sh * inv, a2, v3d_quatNi(p, w));
+  return v3d_quat(p, t.x, -t.y);
+}
+vec3 V_tanhq(vec3 p, float w, int P, int A) {
+  float a2 = dot(p.yz, p.yz), a = sqrt(a2), inv = v3d_inverseA(p);
+  float s = sin(a), c = cos(a), sh = sinh(p.x), ch = cosh(p.x);
+  vec2 t = v3d_tanLike(sh * c, ch * c, ch * s * inv, sh * s * inv, a2, v3d_quatNi(p, w));
+  return v3d_quat(p, t.x, t.y);
+}
+vec3 V_cothq(vec3 p, float w, int P, int A) {
+  float a2 = dot(p.yz, p.yz), a = sqrt(a2), inv = v3d_inverseA(p), q2 = dot(p, p);
+  float s = sin(a), c = cos(a), sh = sinh(p.x), ch = cosh(p.x);
+  vec2 t = v3d_tanLike(sh * c, ch * c, ch * s * inv, sh * s * inv, a2, w / fractoriumZeps(q2 * q2));
+  return v3d_quat(p, t.x, t.y);
+}
+vec3 V_estiq(vec3 p, float w, int P, int A) {
+  float a = length(p.yz), e = exp(p.x);
+  return v3d_quat(p, w * e * cos(a), w * e * sin(a) * v3d_inverseA(p));
+}
+vec3 V_loq(vec3 p, float w, int P, int A) {
+  float denominator = 0.5 * w / log(P_(P, 0));
+  float a2 = dot(p.yz, p.yz), a = sqrt(a2);
+  return v3d_quat(p, log(p.x * p.x + a2) * denominator, w * atan2c(a, p.x) / fractoriumZeps(a));
+}
+
+// ---- shapes (variations_3d_shapes.cpp) -----------------------------------------------------------
+
+vec3 V_blade3D(vec3 p, float w, int P, int A) {
+  float t = psi() * w * sqrt(p.x * p.x + p.y * p.y);
+  float s = sin(t), c = cos(t);
+  return w * vec3(p.x * (c + s), p.x * (c - s), p.z * (s - c));
+}
+vec3 V_blob3D(vec3 p, float w, int P, int A) {
+  float low = P_(P, 0), diff = P_(P, 1) - P_(P, 0), waves = P_(P, 2);
+  float rho = sqrt(p.x * p.x + p.y * p.y);
+  float wave = sin(waves * atan2c(p.x, p.y));
+  float r = rho * (low + diff * (0.5 + 0.5 * wave));
+  float invRho = 1.0 / fractoriumZeps(rho);
+  return w * vec3(p.x * invRho * r, p.y * invRho * r, wave * r);
+}
+vec3 V_bubble2(vec3 p, float w, int P, int A) {
+  float sx = P_(P, 0), sy = P_(P, 1), sz = P_(P, 2);
+  float r = w / fractoriumZeps(0.25 * dot(p, p) + 1.0);
+  return vec3(p.x * r * sx, p.y * r * sy, w * (p.z >= 0.0 ? p.z + sz : p.z - sz) + p.z * r * sz);
+}
+vec3 V_disc3d(vec3 p, float w, int P, int A) {
+  float pi = P_(P, 0), scale = w / fractoriumZeps(pi);
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  float v = scale * atan2c(p.x, p.y);
+  return v * vec3(sin(r * pi), cos(r * pi), r * cos(p.z));
+}
+vec3 V_ovoid3d(vec3 p, float w, int P, int A) {
+  float r = w / fractoriumZeps(dot(p, p));
+  return p * r * vec3(P_(P, 0), P_(P, 1), P_(P, 2));
+}
+vec3 V_sphyp3D(vec3 p, float w, int P, int A) {
+  bool zOn = v3d_round(P_(P, 3)) == 1.0;
+  float t = fractoriumZeps(dot(p, p));
+  return vec3(p.x * w / pow(t, P_(P, 0)), p.y * w / pow(t, P_(P, 1)), zOn ? p.z * w / pow(t, P_(P, 2)) : w * p.z);
+}
+vec3 V_spherivoid(vec3 p, float w, int P, int A) {
+  float radius = P_(P, 0);
+  float rho = sqrt(p.x * p.x + p.y * p.y);
+  float zr = sqrt(p.z * p.z + rho * rho);
+  float polar = acos(clamp(p.z / zr, -1.0, 1.0));
+  float invRho = 1.0 / fractoriumZeps(rho);
+  float s = w * sin(polar) * (zr + radius);
+  return vec3(p.x * invRho * s, p.y * invRho * s, w * cos(polar) * (zr + radius));
+}
+// The weight scales the angles, not the result (Fractorium's).
+vec3 V_psphere(vec3 p, float w, int P, int A) {
+  float vpi = w * kPi, c0 = p.x * vpi, c1 = p.y * vpi, cos1 = cos(c1);
+  return vec3(-cos(c0) * sin(c1), sin(c0) * cos1, cos1 * P_(P, 0));
+}
+vec3 V_svf(vec3 p, float w, int P, int A) {
+  float cn = cos(P_(P, 0) * p.y), cy = cos(p.y);
+  return w * vec3(cy * cn * cos(p.x), cy * cn * sin(p.x), sin(p.y) * cn);
+}
+// The (1 − sor) y part of z is outside the weight, as in Fractorium.
+vec3 V_taurus(vec3 p, float w, int P, int A) {
+  float r = P_(P, 0), freq = P_(P, 1), inv = P_(P, 2), sor = P_(P, 3);
+  float sy = sin(p.y);
+  float ir = inv * r + (1.0 - inv) * r * cos(freq * p.x);
+  return vec3(w * cos(p.x) * (ir + sy), w * sin(p.x) * (ir + sy), w * sor * cos(p.y) + (1.0 - sor) * p.y);
+}
+vec3 V_helix(vec3 p, float w, int P, int A) {
+  float t = p.z * (P_(P, 0) * kTwoPi), width = P_(P, 1);
+  return w * vec3(p.x + cos(t) * width, p.y + sin(t) * width, p.z);
+}
+vec3 V_helicoid(vec3 p, float w, int P, int A) {
+  float t = p.z * (P_(P, 0) * kTwoPi) + atan2c(p.y, p.x);
+  float wr = w * sqrt(p.x * p.x + p.y * p.y);
+  return vec3(wr * cos(t), wr * sin(t), w * p.z);
+}
+vec3 V_linearT3D(vec3 p, float w, int P, int A) {
+  vec3 e = vec3(P_(P, 0), P_(P, 1), P_(P, 2));
+  vec3 s = vec3(p.x < 0.0 ? -w : w, p.y < 0.0 ? -w : w, p.z < 0.0 ? -w : w);
+  return s * pow(abs(p), e);
+}
+vec3 V_ho(vec3 p, float w, int P, int A) {
+  float px = P_(P, 0), py = P_(P, 1), pz = P_(P, 2);
+  float uu = p.x * p.x, vv = p.y * p.y, ww = p.z * p.z;
+  float cv = cos(p.y), sv = sin(p.y);
+  float cucv = cos(p.x) * cv, sucv = sin(p.x) * cv;
+  return w * vec3(pow(abs(cucv), px) + cucv * px + 0.25 * atan2c(vv, ww),
+                  pow(abs(sucv), py) + sucv * py + 0.25 * atan2c(uu, ww), pow(abs(sv), pz) + sv * pz);
+}
+vec3 V_splits3D(vec3 p, float w, int P, int A) {
+  float sx = P_(P, 0), sy = P_(P, 1), sz = P_(P, 2);
+  return w * vec3(p.x >= 0.0 ? p.x + sx : p.x - sx, p.y >= 0.0 ? p.y + sy : p.y - sy, p.z >= 0.0 ? p.z + sz : p.z - sz);
+}
+vec3 V_waves2_3D(vec3 p, float w, int P, int A) {
+  float freq = P_(P, 0), scale = P_(P, 1);
+  float mean = (p.x + p.y) * 0.5;
+  return w * vec3(p.x + scale * sin(p.y * freq), p.y + scale * sin(p.x * freq), p.z + scale * sin(mean * freq));
+}
+// erf by Abramowitz & Stegun 7.1.26 (within 1.5e-7).
+float v3d_erf(float x) {
+  float t = 1.0 / (1.0 + 0.3275911 * abs(x));
+  float poly = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+  return sign(x) * (1.0 - poly * exp(-x * x));
+}
+vec3 V_xerf(vec3 p, float w, int P, int A) {
+  float r2 = dot(p, p);
+  return w * vec3(abs(p.x) >= 2.0 ? p.x / r2 : v3d_erf(p.x), abs(p.y) >= 2.0 ? p.y / r2 : v3d_erf(p.y),
+                  abs(p.z) >= 2.0 ? p.z / r2 : v3d_erf(p.z));
+}
+vec3 V_bubbleT3D(vec3 p, float w, int P, int A) {
+  float stripes = floor(P_(P, 0) + 0.5), absStripes = abs(stripes);
+  bool invStripes = stripes < 0.0;
+  float ratio = clamp(clamp(P_(P, 1), 0.0, 2.0), 0.01, 1.99);
+  float hole = clamp(P_(P, 2), -360.0, 360.0), exponentZ = P_(P, 3);
+  bool symmetryZ = v3d_integer(P_(P, 4), 0.0, 1.0) == 1.0, blur = v3d_integer(P_(P, 5), 0.0, 1.0) == 1.0;
+  float angStrip = absStripes != 0.0 ? kPi / absStripes : 0.0, strip2 = 2.0 * angStrip;
+  float sn = sin(angStrip), cs = cos(angStrip), strip1 = fractoriumZeps(ratio * angStrip);
+  float holeAngle = symmetryZ ? (hole < 0.0 ? abs(hole) : min(hole, 179.9)) : hole;
+  bool invHole = holeAngle < 0.0;
+  holeAngle = invHole ? abs(hole) / 360.0 * kTwoPi / 2.0 : kPi - holeAngle / 360.0 * kTwoPi / 2.0;
+  float holeComp = kPi - holeAngle;
+  bool pushesHole = blur && exponentZ == 1.0;
+  float px = p.x, py = p.y, pz = p.z;
+  float rad = fractoriumZeps((px * px + py * py) / 4.0 + 1.0);
+  if (absStripes != 0.0) {
+    float a = atan2c(px, py);
+    if (a < 0.0) a += kTwoPi;
+    if (a > strip2) {  // the remainder in (0, strip2], as Fractorium's subtraction leaves it
+      a = fmodc(a, strip2);
+      if (a == 0.0) a = strip2;
+    }
+    bool cut = invStripes ? a < strip1 : a > strip1;
+    if (cut && !blur) {
+      px = 0.0;
+      py = 0.0;
+    } else if (cut) {
+      float c = cs, s = sn;
+      bool single = invStripes ? absStripes == 1.0 : ratio == 1.0;
+      if (!single) {
+        float turn = invStripes ? a - (a - strip1) / strip1 * (strip2 - strip1)
+                                : a - (a - strip1) / fractoriumZeps(strip2 - strip1) * strip1;
+        c = cos(turn);
+        s = sin(turn);
+      }
+      float tx = c * px - s * py, ty = s * px + c * py;
+      px = tx;
+      py = ty;
+    }
+  }
+  px /= rad;
+  py /= rad;
+  float angZ = 0.0;
+  if (px != 0.0 || py != 0.0) {
+    pz = 2.0 / pow(rad, exponentZ) - 1.0;
+    float q = px * px + py * py;
+    angZ = exponentZ <= 2.0 ? kPi - acos(pz / (q + pz * pz)) : kPi - atan2c(q * q, pz);
+  } else {
+    pz = 0.0;
+  }
+  bool cut = false;
+  float angTmp = 0.0;
+  if (!symmetryZ) {
+    cut = invHole ? angZ < holeAngle : angZ > holeAngle;
+    angTmp = invHole ? kPi - angZ / fractoriumZeps(holeComp * holeAngle - kPi / 2.0)
+                     : (kPi - angZ) / fractoriumZeps(holeComp * holeAngle - kPi / 2.0);
+  } else {
+    cut = angZ > holeAngle || angZ < kPi - holeAngle;
+    angTmp = angZ > holeAngle ? (kPi - angZ) / holeComp * (kPi - 2.0 * holeComp) + holeComp - kPi / 2.0
+                              : kPi / 2.0 - (angZ / holeComp * (kPi - 2.0 * holeComp) + holeComp);
+  }
+  if (cut && !pushesHole) {
+    px = 0.0;
+    py = 0.0;
+    pz = 0.0;
+  } else if (cut) {
+    float from = angZ - kPi / 2.0;
+    float fac = cos(angTmp) / cos(from);
+    px *= fac;
+    py *= fac;
+    pz *= sin(angTmp) / sin(from);
+  }
+  return w * vec3(px, py, pz);
+}
+
+// ---- 3D blurs (variations_3d_shapes.cpp) ---------------------------------------------------------
+
+vec3 V_square3D(vec3 p, float w, int P, int A) {
+  float a = psi(), b = psi(), c = psi();
+  return w * (vec3(a, b, c) - 0.5);
+}
+vec3 V_farblur(vec3 p, float w, int P, int A) {
+  vec3 d = p - vec3(P_(P, 3), P_(P, 4), P_(P, 5));
+  float r = w * dot(d, d) * gaussPsi();
+  float u = psi() * kTwoPi;
+  float v = psi() * kTwoPi;
+  float sv = sin(v);
+  return vec3(P_(P, 0) * r * sv * cos(u), P_(P, 1) * r * sv * sin(u), P_(P, 2) * r * cos(v));
+}
+// A power below 0 counts as 0 (Fractorium's); pow(Ψ, 0) is 1, Ψ = 0 included, as in C.
+vec3 V_sphereblur(vec3 p, float w, int P, int A) {
+  float power = max(P_(P, 0), 0.0);
+  float angle = psi() * kTwoPi;
+  float polar = acos(psi() * 2.0 - 1.0);
+  float u = psi();
+  float up = power == 0.0 ? 1.0 : (u == 0.0 ? 0.0 : (power == 1.0 ? u : pow(u, power)));
+  float q = acos(up * 2.0 - 1.0) / kPi;
+  float r = q == 0.0 ? 0.0 : w * pow(q, 2.0 / 3.0);  // ∛(q²)
+  float sz = sin(polar);
+  return vec3(r * cos(angle) * sz, r * sin(angle) * sz, r * cos(polar));
+}
+
+// ---- more of Fractorium's 3D ones (variations_3d_more.cpp) ---------------------------------------
+
+// (A q + B)/(C q + D) of q = x + y i + z j; the quotient's k part is dropped.
+vec3 V_mobiq(vec3 p, float w, int P, int A) {
+  vec4 a = vec4(P_(P, 0), P_(P, 1), P_(P, 2), P_(P, 3)), b = vec4(P_(P, 4), P_(P, 5), P_(P, 6), P_(P, 7));
+  vec4 c = vec4(P_(P, 8), P_(P, 9), P_(P, 10), P_(P, 11)), d = vec4(P_(P, 12), P_(P, 13), P_(P, 14), P_(P, 15));
+  float qt = p.x, qx = p.y, qy = p.z;
+  vec4 nn = vec4(a.x * qt - a.y * qx - a.z * qy, a.x * qx + a.y * qt - a.w * qy, a.x * qy + a.z * qt + a.w * qx,
+                 a.w * qt + a.y * qy - a.z * qx) + b;
+  vec4 e = vec4(c.x * qt - c.y * qx - c.z * qy, c.x * qx + c.y * qt - c.w * qy, c.x * qy + c.z * qt + c.w * qx,
+                c.w * qt + c.y * qy - c.z * qx) + d;
+  float ni = w / dot(e, e);
+  return ni * vec3(dot(nn, e), nn.y * e.x - nn.x * e.y - nn.z * e.w + nn.w * e.z,
+                   nn.z * e.x - nn.x * e.z - nn.w * e.y + nn.y * e.w);
+}
+vec3 V_julia3Dq(vec3 p, float w, int P, int A) {
+  float power = countParam(P_(P, 0)), divisor = countParam(P_(P, 1));
+  float invPower = divisor / power, absInvPower = abs(invPower);
+  float halfInvPower = 0.5 * invPower - 0.5, branch = kTwoPi / power, branches = abs(power);
+  float k = floor(psi() * branches);
+  float t = atan2c(p.y, p.x) * invPower + k * branch;
+  float pz = p.z * absInvPower;
+  float r2 = p.x * p.x + p.y * p.y;
+  float r = w * pow(r2 + pz * pz, halfInvPower);
+  float rs = r * sqrt(r2);
+  return vec3(rs * cos(t), rs * sin(t), r * pz);
+}
+// A period of 0 stops its wave; ρ = √|x² + y² + z| (z, not z²), as in Fractorium.
+float v3d_inversePeriod(float period) { return period == 0.0 ? 0.0 : 1.0 / period; }
+vec3 V_heat(vec3 p, float w, int P, int A) {
+  float tx = v3d_inversePeriod(P_(P, 0)), px = v3d_inversePeriod(P_(P, 3)), rx = v3d_inversePeriod(P_(P, 6));
+  float at = w * P_(P, 2), bt = kTwoPi * tx, ct = P_(P, 1) * tx;
+  float ap = w * P_(P, 5), bp = kTwoPi * px, cp = P_(P, 4) * px;
+  float ar = w * P_(P, 8), br = kTwoPi * rx, cr = P_(P, 7) * rx;
+  float r = sqrt(abs(p.x * p.x + p.y * p.y + p.z));
+  r += ar * sin(br * r + cr);
+  if (r == 0.0) r = kFractoriumEps;
+  float azimuth = at * sin(bt * r + ct) + atan2c(p.y, p.x);
+  float polar = ap * sin(bp * r + cp) + acos(clamp(p.z / r, -1.0, 1.0));
+  float sp = sin(polar);
+  return r * vec3(cos(azimuth) * sp, sin(azimuth) * sp, cos(polar));
+}
+// |p|² taken as x² + y² + z (z, not z²), as in Fractorium.
+vec3 V_hypertile3D(vec3 p, float w, int P, int A) {
+  float pp = v3d_integer(P_(P, 0), 3.0, 2147483647.0), q = v3d_integer(P_(P, 1), 3.0, 2147483647.0);
+  float tile = floor(P_(P, 2) + 0.5);
+  float pa = kTwoPi / pp, qa = kTwoPi / q;
+  float r = -(cos(pa) - 1.0) / fractoriumZeps(cos(pa) + cos(qa));
+  r = r > 0.0 ? 1.0 / fractoriumZeps(sqrt(1.0 + r)) : 1.0;
+  float cx = r * cos(tile * pa), cy = r * sin(tile * pa);
+  float c2 = cx * cx + cy * cy, c2x = 2.0 * cx, c2y = 2.0 * cy;
+  float s2x = 1.0 + cx * cx - cy * cy, s2y = 1.0 + cy * cy - cx * cx, s2z = 1.0 - cy * cy - cx * cx;
+  float r2 = p.x * p.x + p.y * p.y + p.z;
+  float x2cx = c2x * p.x, y2cy = c2y * p.y;
+  float d = w / fractoriumZeps(c2 * r2 + x2cx - y2cy + 1.0);
+  return d * vec3(p.x * s2x - cx * (y2cy - r2 - 1.0), p.y * s2y + cy * (-x2cx - r2 - 1.0), p.z * s2z);
+}
+vec3 V_loonie_3D(vec3 p, float w, int P, int A) {
+  float vv = w * w;
+  float pz = p.z == 0.0 ? atan2c(p.y, p.x) : p.z;
+  float r2 = p.x * p.x + p.y * p.y + pz * pz;
+  float r = r2 < vv ? w * sqrt(vv / r2 - 1.0) : w;
+  return r * vec3(p.x, p.y, pz * 0.5);
+}
+vec3 V_scry_3D(vec3 p, float w, int P, int A) {
+  float invWeight = 1.0 / fractoriumZeps(w);
+  float t = dot(p, p);
+  float r = 1.0 / fractoriumZeps(sqrt(t) * (t + invWeight));
+  float pz = p.z == 0.0 ? atan2c(p.y, p.x) : p.z;
+  return r * vec3(p.x, p.y, pz);
+}
+vec3 V_line(vec3 p, float w, int P, int A) {
+  float delta = P_(P, 0) * kPi, phi = P_(P, 1) * kPi;
+  vec3 u = vec3(cos(delta) * cos(phi), sin(delta) * cos(phi), sin(phi));
+  u /= length(u);
+  return u * (psi() * w);
+}
+vec3 V_hypercrop(vec3 p, float w, int P, int A) {
+  float sides = fractoriumZeps(P_(P, 0)), zero = P_(P, 2);
+  float coeff = fractoriumZeps(sides * 0.5 / kPi), a0 = kPi / sides;
+  float len = 1.0 / fractoriumZeps(cos(a0)), d = P_(P, 1) * sin(a0) * len;
+  float angle = floor(atan2c(p.y, p.x) * coeff) / coeff + a0;
+  float x0 = cos(angle) * len, y0 = sin(angle) * len;
+  float dx = p.x - x0, dy = p.y - y0;
+  vec3 f = p;
+  if (sqrt(dx * dx + dy * dy) < d) {
+    if (zero > 1.5) {
+      f.xy = vec2(x0, y0);
+    } else if (zero > 0.5) {
+      f.xy = vec2(0.0);
+    } else {
+      float edge = atan2c(dy, dx);
+      f.xy = vec2(x0 + cos(edge) * d, y0 + sin(edge) * d);
+    }
+    f.z = 0.0;
+  }
+  return f * w;
+}
+// The random sign bit is Ψ < ½; Fractorium's exponents as it has them.
+vec3 V_SuperShape3D(vec3 p, float w, int P, int A) {
+  float rho2pi = P_(P, 0) * (2.0 / kPi), phi2pi = P_(P, 1) * (2.0 / kPi), m41 = P_(P, 2) / 4.0, m42 = P_(P, 3) / 4.0;
+  float n11 = P_(P, 8), n12 = P_(P, 9), n21 = P_(P, 10), n22 = P_(P, 11), n31 = P_(P, 12), n32 = P_(P, 13);
+  float an21 = pow(abs(1.0 / P_(P, 4)), n21), an22 = pow(abs(1.0 / P_(P, 5)), n22);
+  float bn31 = pow(abs(1.0 / P_(P, 6)), n31), bn32 = pow(abs(1.0 / P_(P, 7)), n32);
+  float spiral = P_(P, 14);
+  bool toroid = floor(P_(P, 15) + 0.5) == 1.0;
+  float rho = psi() * rho2pi;
+  float phi = psi() * phi2pi;
+  if (psi() < 0.5) phi = -phi;
+  float sr = sin(rho), cr = cos(rho), sp = sin(phi), cp = cos(phi);
+  float pr1 = an21 * pow(abs(cos(m41 * rho)), n21) + bn31 * pow(abs(sin(m41 * rho)), n31);
+  float pr2 = an22 * pow(abs(cos(m42 * phi)), n22) + bn32 * pow(abs(sin(m42 * phi)), n32);
+  float r1 = pow(abs(pr1), n11) + spiral * rho;
+  float r2 = pow(abs(pr2), n12);
+  float ring = toroid ? r1 + r2 * cp : r1 * r2 * cp;
+  return w * vec3(cr * ring, sr * ring, r2 * sp);
+}
+vec3 V_pRose3D(vec3 p, float w, int P, int A) {
+  float l = P_(P, 0), k = P_(P, 1), c = P_(P, 2), z1 = P_(P, 3), z2 = P_(P, 4), refSc = P_(P, 5);
+  float opt = P_(P, 6), optSc = P_(P, 7), opt3 = P_(P, 8), transp = P_(P, 9), dist = P_(P, 10);
+  float wagsc = P_(P, 11), crvsc = P_(P, 12), f = P_(P, 13), wigsc = P_(P, 14), offset = P_(P, 15);
+  float cycle = kTwoPi / fractoriumZeps(k);
+  float petals = abs(k) < 0.0001 ? (k < 0.0 ? -0.0001 : 0.0001) : k;
+  float freq = f * kTwoPi, wigScale = wigsc * 0.5;
+  float smooth12 = min(abs(opt), 2.0), smooth3 = min(abs(opt3), 1.0);
+  float absOptSc = abs(optSc), antiOpt1 = 2.0 - smooth12;
+  float optDir = opt3 < 0.0 ? -1.0 : (opt < 0.0 ? -1.0 : 1.0);
+  float ghost = optDir > 0.0 ? 0.0 : transp * transp;
+  bool negative = psi() < 0.5;
+  bool ghostly = psi() < ghost;
+  float rad = sqrt(p.x * p.x + p.y * p.y);
+  float curve1 = rad / l, curve2 = curve1 * curve1, curve3 = (rad - l * 0.5) / l, curve4 = curve2 * curve2;
+  float th = atan2c(p.y, p.x);
+  float wig = th / fractoriumZeps(cycle) * freq * 0.5 + offset * cycle;
+  float sin2 = sin(curve2 * kPi), cos3 = cos(curve3 * kPi);
+  float wag = sin(curve1 * kPi * absOptSc) + wagsc * 0.4 * rad + crvsc * 0.5 * (optDir < 0.0 ? sin2 : cos3);
+  float wag3 = sin(curve4 * kPi * absOptSc) + wagsc * rad * rad * 0.4 + crvsc * 0.5 * (optDir < 0.0 ? cos3 : sin2);
+  float wag2 = sin(curve2 * kPi * absOptSc) + wagsc * 0.4 * rad + crvsc * 0.5 * cos3;
+  float wag12 = 0.0;
+  if (smooth12 <= 1.0)
+    wag12 = wag;
+  else if (smooth12 <= 2.0)
+    wag12 = wag2 * (1.0 - antiOpt1) + wag * antiOpt1;
+  float waggle = 0.0;
+  if (smooth3 == 0.0)
+    waggle = wag12;
+  else if (smooth3 > 0.0)
+    waggle = wag12 * (1.0 - smooth3) + wag3 * smooth3;
+  bool mirrored = ghostly && negative;
+  float petal = w * 0.5 * (mirrored ? refSc : 1.0) * l * cos(petals * th + c);
+  float lift = (mirrored ? z2 : z1) * waggle + rad * 0.5 * rad * 0.5 * sin(wig) * wigScale + dist;
+  return vec3(petal * cos(th), petal * sin(th), w * (mirrored ? -0.5 : 0.5) * lift);
+}
+
+// ---- Fractorium's own (variations_fractorium.cpp) ------------------------------------------------
+
+vec3 V_pow_block(vec3 p, float w, int P, int A) {
+  float numerator = P_(P, 0), denominator = P_(P, 1), root = P_(P, 2), correctN = P_(P, 3), correctD = P_(P, 4);
+  float power = numerator / fractoriumZeps(denominator * correctN * (1.0 / correctD));
+  float divisor = fractoriumZeps(denominator);
+  float k = floor(psi() * denominator);
+  float r = pow(p.x * p.x + p.y * p.y, power * 0.5) * w;
+  float a = (atan2c(p.y, p.x) / divisor + root * kTwoPi * k / divisor) * numerator;
+  return vec3(r * cos(a), r * sin(a), w * p.z);
+}
+vec3 V_poincare3D(vec3 p, float w, int P, int A) {
+  float radius = P_(P, 0), a = P_(P, 1) * kPi / 2.0, b = P_(P, 2) * kPi / 2.0;
+  vec3 c = vec3(-radius * cos(a) * cos(b), radius * sin(a) * cos(b), -radius * sin(b));
+  float c2 = dot(c, c);
+  vec3 s = vec3(c.x * c.x - c.y * c.y - c.z * c.z, c.y * c.y - c.x * c.x - c.z * c.z,
+                c.z * c.z - c.y * c.y - c.x * c.x) + 1.0;
+  float r2 = dot(p, p);
+  vec3 k = 2.0 * c * p;
+  float d = w / (c2 * r2 - k.x - k.y - k.z + 1.0);
+  return d * (p * s + c * (vec3(k.y + k.z, k.x + k.z, k.y + k.x) - r2 - 1.0));
+}
+// a^n for a whole n, a of either sign (GLSL's pow wants a ≥ 0).
+float v3d_wholePow(float a, float n) {
+  float m = pow(abs(a), n);
+  return a < 0.0 && mod(n, 2.0) == 1.0 ? -m : m;
+}
+// Its box blur adds mul · a^boxpow · D / scale outside the weight, as Fractorium does.
+vec3 V_falloff(vec3 p, float w, int P, int A) {
+  float scatter = 0.04 * max(P_(P, 0), kFractoriumEps);
+  float minDist = max(P_(P, 1), 0.0);
+  vec3 mul = clamp(vec3(P_(P, 2), P_(P, 3), P_(P, 4)), 0.0, 1.0);
+  vec3 centre = vec3(P_(P, 5), P_(P, 6), P_(P, 7));
+  bool invert = v3d_integer(P_(P, 8), 0.0, 1.0) != 0.0;
+  float type = v3d_integer(P_(P, 9), 0.0, 2.0);
+  float boxPow = v3d_integer(P_(P, 10), 2.0, 32.0);
+  float ax = psi() - 0.5;
+  float ay = psi() - 0.5;
+  float az = psi() - 0.5;
+  vec3 a = vec3(ax, ay, az);
+  vec3 d = p - centre;
+  float r = sqrt(dot(d, d));
+  float rs = max(((invert ? max(1.0 - r, 0.0) : max(r, 0.0)) - minDist) * scatter, 0.0);
+  if (type == 0.0) return w * (p + mul * a * rs);
+  if (type == 1.0) {
+    float radius = r + mul.x * ax * rs;
+    float phi = atan2c(p.y, p.x) + mul.y * ay * rs;
+    float sigma = asin(r == 0.0 ? 0.0 : p.z / r) + mul.z * az * rs;
+    return radius * w * vec3(cos(sigma) * cos(phi), cos(sigma) * sin(phi), sin(sigma));
+  }
+  float scale = clamp(rs, 0.0, 0.9) + 0.1, denom = 1.0 / scale;
+  vec3 target = floor(p * denom) + scale * a;
+  vec3 powA = vec3(v3d_wholePow(ax, boxPow), v3d_wholePow(ay, boxPow), v3d_wholePow(az, boxPow));
+  return w * (p + (target - p) * mul * rs) + mul * powA * rs * denom;
+}
+// Hugo Elias' integer noise with 32-bit wrap-around, in [0, 1] (double: the seed counts floor it).
+double v3d_voronNoise(int value) {
+  uint v = uint(value);
+  v = (v << 13) ^ v;
+  uint mixed = v * (v * v * 15731u + 789221u) + 1376312589u;
+  return double(mixed & 0x7fffffffu) * (1.0lf / 2147483647.0lf);
+}
+int v3d_seed(float v) {  // clamped into int's range, as Fractorium's int holds it
+  float s = floor(v + 0.5);
+  return s >= 2147483648.0 ? 2147483647 : (s <= -2147483648.0 ? -2147483647 - 1 : int(s));
+}
+vec3 V_Voron(vec3 p, float w, int P, int A) {
+  float k = P_(P, 0), side = P_(P, 1);
+  if (abs(side) < 1e-6) side = side < 0.0 ? -kFractoriumEps : kFractoriumEps;
+  double count = double(v3d_integer(P_(P, 2), 1.0, 25.0));
+  int seedX = v3d_seed(P_(P, 3)), seedY = v3d_seed(P_(P, 4));
+  float cellX = floor(p.x / side), cellY = floor(p.y / side);
+  // A point beyond ±2²⁰ cells (far outside any flame) escapes, as on the CPU.
+  if (!(abs(cellX) < 1048576.0 && abs(cellY) < 1048576.0)) {
+    float nan = uintBitsToFloat(0x7fc00000u);
+    return vec3(nan, nan, w * p.z);
+  }
+  int m = int(cellX), nn = int(cellY);
+  float best = 20.0, bestX = 0.0, bestY = 0.0;
+  for (int di = -1; di < 2; ++di) {
+    for (int dj = -1; dj < 2; ++dj) {
+      int m1 = m + di, n1 = nn + dj;
+      int seeds = int(1.0lf + floor(count * v3d_voronNoise(19 * m1 + 257 * n1 + seedX)));
+      for (int l = 0; l < seeds; ++l) {
+        float sx = (float(v3d_voronNoise(l + 64 * m1 + 15 * n1 + seedX)) + float(m1)) * side;
+        float sy = (float(v3d_voronNoise(l + 21 * m1 + 33 * n1 + seedY)) + float(n1)) * side;
+        float ddx = p.x - sx, ddy = p.y - sy;
+        float r = sqrt(ddx * ddx + ddy * ddy);
+        if (r < best) {
+          best = r;
+          bestX = sx;
+          bestY = sy;
+        }
+      }
+    }
+  }
+  return w * vec3(k * (p.x - bestX) + bestX, k * (p.y - bestY) + bestY, p.z);
+}
+vec3 V_smartshape(vec3 p, float w, int P, int A) {
+  float power = max(P_(P, 0), 2.0), roundStr = P_(P, 1), roundWidth = P_(P, 2), distortion = P_(P, 3);
+  bool compensate = clamp(P_(P, 4), 0.0, 1.0) > 0.0;
+  float alpha = kTwoPi / power;
+  float alphaCoeff = tan(alpha * 0.5) * 2.0;
+  float roundCoeff = roundStr / sin(alpha * 0.5) / power * 2.0;
+  float dang = (atan2c(p.y, p.x) + kPi) / alpha;
+  float rad = sqrt(p.x * p.x + p.y * p.y);
+  float zang1 = floor(dang), xang1 = dang - zang1;
+  float xang2 = xang1 > 0.5 ? 1.0 - xang1 : xang1;
+  float zang = xang1 > 0.5 ? zang1 + 1.0 : zang1;
+  float sgn = xang1 > 0.5 ? -1.0 : 1.0;
+  float xang = compensate && distortion >= 1.0 ? atan(xang2 * alphaCoeff) / alpha : xang2;
+  float coeff1 = 1.0;
+  if (distortion != 0.0) {
+    float coeff0 = 1.0 / cos(xang * alpha);
+    if (roundStr != 0.0) {
+      float width = roundWidth != 1.0 ? exp(log(xang * 2.0) * roundWidth) * roundCoeff : xang * 2.0 * roundCoeff;
+      coeff1 = abs((1.0 - width) * coeff0 + width);
+    } else {
+      coeff1 = coeff0;
+    }
+  }
+  float coeff = distortion != 1.0 ? exp(log(coeff1) * distortion) : coeff1;
+  float ang = (zang + sgn * xang) * alpha - kPi;
+  float t = w * coeff * rad;
+  return vec3(cos(ang) * t, sin(ang) * t, w * p.z);
+}
+// The point's direction kept, its distance r replaced by w·T²/r, T the sum of four shapes' radii.
+vec3 V_y(vec3 p, float w, int P, int A) {
+  float hypergon = P_(P, 0), hypergonN = max(floor(P_(P, 1) + 0.5), 3.0), hypergonR = P_(P, 2);
+  float star = P_(P, 3), starN = max(floor(P_(P, 4) + 0.5), 3.0);
+  float starSlope = clamp(P_(P, 5), kFractoriumEps, kPi / 2.0);
+  float lituus = P_(P, 6), lituusA = P_(P, 7);
+  float super_ = P_(P, 8), superM = P_(P, 9), superN1 = P_(P, 10), superN2 = P_(P, 11), superN3 = P_(P, 12);
+  float hypergonD = sqrt(1.0 + hypergonR * hypergonR), hd2 = hypergonD * hypergonD;
+  float tanStarSlope = abs(starSlope - kPi / 2.0) < 1e-6 ? tan(starSlope - 0.05) : tan(starSlope);
+  float oneOverN1 = -1.0 / fractoriumZeps(superN1);
+  float a = atan2c(p.y, p.x);
+  float total = 0.0;
+  if (hypergon != 0.0) {
+    float t1 = fmodc(abs(a), kTwoPi / hypergonN) - kPi / hypergonN;
+    float t2 = tan(t1) * tan(t1) + 1.0;
+    total += t2 >= hd2 ? hypergon : hypergon * (hypergonD - sqrt(hd2 - t2)) / sqrt(t2);
+  }
+  if (star != 0.0) {
+    float t1 = tan(abs(fmodc(abs(a), kTwoPi / starN) - kPi / starN));
+    total += star * sqrt(tanStarSlope * tanStarSlope * (1.0 + t1 * t1) / ((t1 + tanStarSlope) * (t1 + tanStarSlope)));
+  }
+  if (lituus != 0.0) total += lituus * pow(abs(a / kPi + 1.0), -lituusA);
+  if (super_ != 0.0) {
+    float t4 = a * superM / 4.0;
+    total += super_ * pow(pow(abs(cos(t4)), superN2) + pow(abs(sin(t4)), superN3), oneOverN1);
+  }
+  float r = w * total * total / (sqrt(p.x * p.x + p.y * p.y) + kEpsilon);
+  return vec3(r * cos(a), r * sin(a), w * p.z);
+}
+
+// ---- the rest of flam3's (variations_flam3.cpp) --------------------------------------------------
+
+vec3 V_flux(vec3 p, float w, int P, int A) {
+  float xpw = p.x + w, xmw = p.x - w;
+  float r = w * (2.0 + P_(P, 0)) * sqrt(sqrt(p.y * p.y + xpw * xpw) / (sqrt(p.y * p.y + xmw * xmw) + kEpsilon));
+  float a = (atan2c(p.y, xmw) - atan2c(p.y, xpw)) * 0.5;
+  return vec3(r * cos(a), r * sin(a), w * p.z);
+}
