@@ -1,3 +1,885 @@
 // Flame variations for the GPU backend (flame_variations.glsl has the conventions and the helpers):
 // the CPU catalogue's variations_2d_a.cpp, variations_2d_b.cpp and variations_2d_c.cpp
 // (engine/core/flame/), in float.
+
+// ---- Fractorium's parameter rules and shared helpers (variations_2d_shared.h) -----------------
+
+float v2d_cyclic(float v, float lo, float hi) {  // REAL_CYCLIC
+  if (v > hi) return lo + fmodc(v - lo, hi - lo);
+  if (v < lo) return hi - fmodc(hi - v, hi - lo);
+  return v;
+}
+float v2d_nonzero(float v) {  // REAL_NONZERO: within 1e-6 of 0 becomes ±ε
+  return v > -1e-6 && v < 1e-6 ? (v < 0.0 ? -kFractoriumEps : kFractoriumEps) : v;
+}
+float v2d_integer(float v, float lo, float hi) { return clamp(floor(v + 0.5), lo, hi); }
+float v2d_round(float v) { return sign(v) * floor(abs(v) + 0.5); }  // std::round
+float v2d_safeSqrt(float v) { return v <= 0.0 ? 0.0 : sqrt(v); }
+bool v2d_odd(float whole) { return fmodc(whole, 2.0) != 0.0; }
+
+// sin in double (GLSL has none): the hashes below multiply it by 43758.5453 and keep the fraction,
+// which float's sin cannot give. Reduced to [−π/2, π/2], then Taylor to x¹⁹ (error below 3e-16).
+double v2d_dsin(double x) {
+  const double kPiD = 3.141592653589793lf, kTwoPiD = 6.283185307179586lf, kHalfPiD = 1.5707963267948966lf;
+  precise double r = x - floor(x / kTwoPiD + 0.5lf) * kTwoPiD;
+  if (r > kHalfPiD) r = kPiD - r;
+  if (r < -kHalfPiD) r = -kPiD - r;
+  precise double r2 = r * r;
+  precise double s = -1.0lf / 121645100408832000.0lf;
+  s = s * r2 + 1.0lf / 355687428096000.0lf;
+  s = s * r2 - 1.0lf / 1307674368000.0lf;
+  s = s * r2 + 1.0lf / 6227020800.0lf;
+  s = s * r2 - 1.0lf / 39916800.0lf;
+  s = s * r2 + 1.0lf / 362880.0lf;
+  s = s * r2 - 1.0lf / 5040.0lf;
+  s = s * r2 + 1.0lf / 120.0lf;
+  s = s * r2 - 1.0lf / 6.0lf;
+  return r + r * r2 * s;
+}
+// Fractorium's HashShadertoy, in double as on the CPU.
+float v2d_hash(double x, double y, double seed) {
+  precise double v = v2d_dsin(x * 12.9898lf + y * 78.233lf + seed) * 43758.5453lf;
+  return float(v - floor(v));
+}
+
+// Complex numbers as vec2 (principal branches, as std::complex).
+vec2 v2d_cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
+vec2 v2d_cdiv(vec2 a, vec2 b) {
+  float s = max(abs(b.x), abs(b.y));  // scaled, so |b|² stays in float's range
+  vec2 bs = b / s;
+  return vec2(a.x * bs.x + a.y * bs.y, a.y * bs.x - a.x * bs.y) / (s * dot(bs, bs));
+}
+vec2 v2d_csqrt(vec2 z) {
+  if (z.x == 0.0 && z.y == 0.0) return vec2(0.0);
+  float r = length(z);
+  if (z.x >= 0.0) {
+    float t = sqrt(0.5 * (r + z.x));
+    return vec2(t, z.y / (2.0 * t));
+  }
+  float t = sqrt(0.5 * (r - z.x));
+  return vec2(abs(z.y) / (2.0 * t), z.y < 0.0 ? -t : t);
+}
+vec2 v2d_clog(vec2 z) { return vec2(log(length(z)), atan2c(z.y, z.x)); }
+
+// ---- inverse hyperbolic functions (variations_2d_a.cpp) --------------------------------------
+
+vec2 v2d_arcsech(vec2 z) {
+  vec2 q = v2d_cdiv(vec2(1.0, 0.0), z);
+  return v2d_clog(q + v2d_cmul(v2d_csqrt(q + vec2(1.0, 0.0)), v2d_csqrt(q - vec2(1.0, 0.0))));
+}
+vec3 V_arcsech(vec3 p, float w, int P, int A) { return vec3(w / kPi * v2d_arcsech(p.xy), w * p.z); }
+// The ±1 outside the weight, as on the CPU.
+vec3 V_arcsech2(vec3 p, float w, int P, int A) {
+  vec2 r = 2.0 * w / kPi * v2d_arcsech(p.xy);
+  return r.y < 0.0 ? vec3(r.x, r.y + 1.0, w * p.z) : vec3(-r.x, r.y - 1.0, w * p.z);
+}
+vec3 V_arcsinh(vec3 p, float w, int P, int A) {
+  vec2 q = p.xy;
+  vec2 r = v2d_clog(q + v2d_csqrt(v2d_cmul(q, q) + vec2(1.0, 0.0)));
+  return vec3(2.0 * w / kPi * r, w * p.z);
+}
+vec3 V_arctanh(vec3 p, float w, int P, int A) {
+  vec2 q = p.xy;
+  vec2 r = v2d_clog(v2d_cdiv(q + vec2(1.0, 0.0), vec2(1.0, 0.0) - q));
+  return vec3(w / kPi * r, w * p.z);
+}
+
+// ---- barycentric and bipolar coordinates -------------------------------------------------------
+
+vec3 V_barycentroid(vec3 p, float w, int P, int A) {
+  float a = P_(P, 0), b = P_(P, 1), c = P_(P, 2), d = P_(P, 3);
+  float dot00 = a * a + b * b, dot01 = a * c + b * d, dot11 = c * c + d * d;
+  float invDenom = 1.0 / fractoriumZeps(dot00 * dot11 - dot01 * dot01);
+  float dot02 = a * p.x + b * p.y, dot12 = c * p.x + d * p.y;
+  float u = (dot11 * dot02 - dot01 * dot12) * invDenom;
+  float v = (dot00 * dot12 - dot01 * dot02) * invDenom;
+  return vec3(w * sqrt(u * u + p.x * p.x) * sign(u), w * sqrt(v * v + p.y * p.y) * sign(v), w * p.z);
+}
+float v2d_bipolarTau(float x, float y) {
+  float y2 = y * y;
+  return 0.5 * (log((x + 1.0) * (x + 1.0) + y2) - log((x - 1.0) * (x - 1.0) + y2));
+}
+float v2d_bipolarSigma(float x, float y) { return kPi - atan2c(y, x + 1.0) - atan2c(y, 1.0 - x); }
+vec2 v2d_fromBipolar(float tau, float sigma, float w) {
+  float t = fractoriumZeps(cosh(tau) - cos(sigma));
+  return vec2(w * sinh(tau) / t, w * sin(sigma) / t);
+}
+vec3 V_bCollide(vec3 p, float w, int P, int A) {
+  float a = v2d_cyclic(P_(P, 0), -1.0, 1.0), num = clamp(P_(P, 1), kFractoriumEps, 2147483647.0);
+  float cnPi = num / kPi, piCn = kPi / fractoriumZeps(num), caCn = kPi * a / fractoriumZeps(num);
+  float tau = v2d_bipolarTau(p.x, p.y), sigma = v2d_bipolarSigma(p.x, p.y);
+  float alt = trunc(sigma * cnPi);
+  sigma = alt * piCn + fmodc(v2d_odd(alt) ? sigma - caCn : sigma + caCn, piCn);
+  return vec3(v2d_fromBipolar(tau, sigma, w), w * p.z);
+}
+vec3 V_bMod(vec3 p, float w, int P, int A) {
+  float radius = max(P_(P, 0), 0.0), dist_ = v2d_cyclic(P_(P, 1), 0.0, 2.0);
+  float tau = v2d_bipolarTau(p.x, p.y), sigma = v2d_bipolarSigma(p.x, p.y);
+  if (tau < radius && -tau < radius) tau = fmodc(tau + radius + dist_ * radius, 2.0 * radius) - radius;
+  return vec3(v2d_fromBipolar(tau, sigma, w), w * p.z);
+}
+vec3 V_bSwirl(vec3 p, float w, int P, int A) {
+  float tau = v2d_bipolarTau(p.x, p.y);
+  float sigma = v2d_bipolarSigma(p.x, p.y) + tau * P_(P, 1) + P_(P, 0) / fractoriumZeps(tau);
+  return vec3(v2d_fromBipolar(tau, sigma, w), w * p.z);
+}
+vec3 V_bisplit(vec3 p, float w, int P, int A) {
+  float v = 0.1 * w;
+  return vec3(v / tan(p.x) * cos(p.y), v / sin(p.x) * -p.y, w * p.z);
+}
+vec3 V_blob2(vec3 p, float w, int P, int A) {
+  float mode = P_(P, 0), waves = P_(P, 1), radius = P_(P, 2), prescale = P_(P, 3), postscale = P_(P, 4);
+  float symmetry = clamp(P_(P, 5), -1.0, 1.0), compensation = P_(P, 6);
+  float deltaHelp = 1.0 + compensation * symmetry * (symmetry < 0.0 ? -1.0 : 1.0);
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  if (r < radius) return w * p;
+  float delta = (sin(atan2c(p.y, p.x) * waves) + symmetry) / deltaHelp;
+  float positive = delta < 0.0 ? -1.0 : 1.0;
+  delta = exp(prescale * log(delta * positive)) * postscale * (mode != 0.0 ? mode : positive);
+  float rad = radius + (r - radius) * delta, rz = fractoriumZeps(r);
+  return vec3(w * rad * p.x / rz, w * rad * p.y / rz, w * p.z);
+}
+
+// ---- blocks ------------------------------------------------------------------------------------
+
+float v2d_blockAngle(float v, float r2) {
+  float t = r2 + 1.0, v2 = 2.0 * v;
+  float vmax = 0.5 * (v2d_safeSqrt(t + v2) + v2d_safeSqrt(t - v2));
+  float a = v / fractoriumZeps(vmax);
+  return atan2c(a, v2d_safeSqrt((1.0 - a) * (1.0 + a)));
+}
+vec3 V_block(vec3 p, float w, int P, int A) {
+  float r2 = p.x * p.x + p.y * p.y;
+  return vec3(w * (2.0 / kPi) * v2d_blockAngle(p.x, r2), w * (2.0 / kPi) * v2d_blockAngle(p.y, r2), w * p.z);
+}
+// The weight enters twice, as on the CPU.
+vec3 V_blocky(vec3 p, float w, int P, int A) {
+  float mp = v2d_nonzero(P_(P, 2));
+  float vx = w / (kPi / 2.0) * P_(P, 0), vy = w / (kPi / 2.0) * P_(P, 1);
+  float r = w / fractoriumZeps((cos(p.x) + cos(p.y)) / mp + 1.0);
+  float r2 = p.x * p.x + p.y * p.y;
+  return vec3(vx * v2d_blockAngle(p.x, r2) * r, vy * v2d_blockAngle(p.y, r2) * r, w * p.z);
+}
+
+// ---- circles -----------------------------------------------------------------------------------
+
+vec3 V_cardioid(vec3 p, float w, int P, int A) {
+  float r2 = p.x * p.x + p.y * p.y, rz = fractoriumZeps(sqrt(r2));
+  float r = w * sqrt(r2 + sin(atan2c(p.y, p.x) * P_(P, 0)) + 1.0);
+  return vec3(r * p.x / rz, r * p.y / rz, w * p.z);
+}
+vec3 V_circlecrop2(vec3 p, float w, int P, int A) {
+  float inner = min(P_(P, 0), P_(P, 1)), outer = max(P_(P, 0), P_(P, 1));
+  bool zero = clamp(P_(P, 2), 0.0, 1.0) != 0.0;
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  vec2 o = vec2(0.0);
+  if (r > outer || r < inner) {
+    if (!zero) {
+      float a = atan2c(p.y, p.x);
+      o = vec2(sin(a), cos(a)) * outer * w;
+    }
+  } else {
+    o = p.xy * w;
+  }
+  return vec3(o, w * p.z);
+}
+vec3 V_circlesplit(vec3 p, float w, int P, int A) {
+  float radius = P_(P, 0), split = P_(P, 1);
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  vec2 q = p.xy;
+  if (!(r < radius - split)) {
+    float a = atan2c(p.y, p.x), len = r + split;
+    q = vec2(cos(a), sin(a)) * len;
+  }
+  return vec3(w * q, w * p.z);
+}
+// The angle along the square of half-side max(|x|, |y|) (returned in side).
+float v2d_circlizeAngle(float px, float py, out float side) {
+  float ax = abs(px), ay = abs(py), perimeter;
+  if (ax >= ay) {
+    perimeter = px >= ay ? ax + py : 5.0 * ax - py;
+    side = ax;
+  } else {
+    perimeter = py >= ax ? 3.0 * ay - px : 7.0 * ay + px;
+    side = ay;
+  }
+  return kPi / 4.0 * perimeter / side - kPi / 4.0;
+}
+vec3 V_circlize(vec3 p, float w, int P, int A) {
+  float side;
+  float a = v2d_circlizeAngle(p.x, p.y, side);
+  float r = w / (kPi / 4.0) * side + P_(P, 0);
+  return vec3(r * cos(a), r * sin(a), w * p.z);
+}
+vec3 V_circlize2(vec3 p, float w, int P, int A) {
+  float side;
+  float a = v2d_circlizeAngle(p.x, p.y, side);
+  float r = w * (side + P_(P, 0));
+  return vec3(r * cos(a), r * sin(a), w * p.z);
+}
+vec3 V_circus(vec3 p, float w, int P, int A) {
+  float scale = P_(P, 0), inv = 1.0 / P_(P, 0);
+  float r0 = sqrt(p.x * p.x + p.y * p.y), rz = fractoriumZeps(r0);
+  float r = r0 <= 1.0 ? r0 * scale : r0 * inv;
+  return vec3(w * r * p.x / rz, w * r * p.y / rz, w * p.z);
+}
+vec3 V_collideoscope(vec3 p, float w, int P, int A) {
+  float num = fractoriumZeps(P_(P, 1));
+  float knPi = num / kPi, piKn = kPi / num, kaKn = kPi * P_(P, 0) / num;
+  float a = atan2c(p.y, p.x);
+  float r = w * sqrt(p.x * p.x + p.y * p.y);
+  if (a >= 0.0) {
+    float alt = trunc(a * knPi);
+    a = alt * piKn + fmodc(v2d_odd(alt) ? a - kaKn : a + kaKn, piKn);
+  } else {
+    float alt = trunc(-a * knPi);
+    a = -(alt * piKn + fmodc(v2d_odd(alt) ? -kaKn - a : kaKn - a, piKn));
+  }
+  return vec3(r * cos(a), r * sin(a), w * p.z);
+}
+float v2d_coswrap(float v, float phase, float blend, float repeat) {
+  float u = 0.5 * v + 0.5;
+  float b = fmodc(repeat * u, 1.0);
+  float mid = u + (0.5 - cos(u * 4.0 + phase) * 0.5 - u) * blend;
+  return mid + (0.5 - cos(b * 4.0 + phase) * 0.5 - mid) * blend;
+}
+// The −1 outside the weight, as on the CPU.
+vec3 V_coswrap(vec3 p, float w, int P, int A) {
+  float repeatRaw = v2d_integer(P_(P, 0), -2147483647.0, 2147483647.0);
+  float repeat = abs(repeatRaw == 0.0 ? (P_(P, 0) < 0.0 ? -1.0 : 1.0) : repeatRaw);
+  float px = kPi * v2d_cyclic(P_(P, 3), -1.0, 1.0), py = kPi * v2d_cyclic(P_(P, 4), -1.0, 1.0);
+  float blendX = 0.5 - cos(P_(P, 1) + px) * 0.5, blendY = 0.5 - cos(P_(P, 2) + py) * 0.5;
+  return vec3(-1.0 + 2.0 * w * v2d_coswrap(p.x, px, blendX, repeat),
+              -1.0 + 2.0 * w * v2d_coswrap(p.y, py, blendY, repeat), w * p.z);
+}
+vec3 V_crescents(vec3 p, float w, int P, int A) {
+  float s = sin(p.x), c = cos(p.x), k = w * (cosh(p.y) + 1.0) * s * s;
+  return vec3(k * s, k * c, w * p.z);
+}
+// The weight is left off φ, as on the CPU.
+vec3 V_curvature(vec3 p, float w, int P, int A) {
+  return vec3(w / fractoriumZeps(sqrt(p.x * p.x + p.y * p.y)), atan2c(p.y, p.x), w * p.z);
+}
+vec3 V_cylinder2(vec3 p, float w, int P, int A) {
+  return vec3(w * (p.x / fractoriumZeps(sqrt(p.x * p.x + 1.0))), w * p.y, w * p.z);
+}
+vec3 V_deltaa(vec3 p, float w, int P, int A) {
+  float y2 = p.y * p.y;
+  float r = w * (sqrt(y2 + (p.x + 1.0) * (p.x + 1.0)) / sqrt(y2 + (p.x - 1.0) * (p.x - 1.0)));
+  float a = (atan2c(p.y, p.x - 1.0) - atan2c(p.y, p.x + 1.0)) / 2.0;
+  return vec3(r * cos(a), r * sin(a), w * p.z);
+}
+
+// ---- cells, eclipse (variations_2d_b.cpp) -------------------------------------------------------
+
+// The cells' coordinates and hashes in double, as on the CPU (the hashes need the very arguments).
+vec3 V_dust(vec3 p, float w, int P, int A) {
+  double density = double(fractoriumZeps(v2d_nonzero(P_(P, 0))));
+  float distortion = P_(P, 1), power = P_(P, 2);
+  double fx = floor(double(abs(p.x))), fy = floor(double(abs(p.y)));
+  double cx = (fx - density * trunc(fx / density)) / density, cy = (fy - density * trunc(fy / density)) / density;
+  float a = (float(cx) + v2d_hash(cx, cy, 1.0lf) * distortion) * kTwoPi;
+  float r = exp(log(float(cy) + v2d_hash(cy, cx, 2.0lf) * distortion) * power);
+  return vec3(w * cos(a) * r, w * sin(a) * r, w * p.z);
+}
+vec3 V_eclipse(vec3 p, float w, int P, int A) {
+  float shift = v2d_cyclic(P_(P, 0), -2.0, 2.0);
+  float px = w * p.x;
+  if (abs(p.y) <= w) {
+    float c2 = sqrt(w * w - p.y * p.y);
+    if (abs(p.x) <= c2) {
+      float moved = p.x + shift * w;
+      px = abs(moved) >= c2 ? -(w * p.x) : w * moved;
+    }
+  }
+  return vec3(px, w * p.y, w * p.z);
+}
+
+// ---- elliptic coordinates ----------------------------------------------------------------------
+
+// log(1 + u) without losing u's digits next to 1.
+float v2d_log1p(float u) {
+  float v = 1.0 + u;
+  return v == 1.0 ? u : log(v) * u / (v - 1.0);
+}
+// The elliptic coordinates of p, worked out where float would cancel: X = (d₊ + d₋)/2 (at least 1),
+// S = √(X² − 1), μ = acosh X, ν = acos(x/X) ∈ [0, π] (unsigned). X² − 1 and X² − x² are formed
+// without the differences of near-equal numbers that the CPU's double absorbs.
+struct v2d_Elliptic {
+  float xmax, s, mu, nu;
+};
+v2d_Elliptic v2d_elliptic(float x, float y) {
+  float dp = sqrt((x + 1.0) * (x + 1.0) + y * y), dm = sqrt((x - 1.0) * (x - 1.0) + y * y);
+  float r2 = x * x + y * y, pm = dp * dm, q = 1.0 - x * x + y * y;
+  v2d_Elliptic e;
+  e.xmax = 0.5 * (dp + dm);
+  float xm1 = r2 >= 1.0 ? 0.5 * (r2 - 1.0 + pm) : 2.0 * y * y / (pm + 1.0 - r2);  // X² − 1
+  float xmx = q >= 0.0 ? 0.5 * (q + pm) : 2.0 * x * x * y * y / (pm - q);          // X² − x²
+  if (!(e.xmax >= 1.0)) {
+    e.xmax = 1.0;
+    xm1 = 0.0;
+    xmx = 1.0 - x * x;
+  }
+  e.s = sqrt(max(xm1, 0.0));
+  e.mu = v2d_log1p(xm1 / (e.xmax + 1.0) + e.s);
+  e.nu = atan2c(sqrt(max(xmx, 0.0)), x);
+  return e;
+}
+vec3 V_eCollide(vec3 p, float w, int P, int A) {
+  float a = v2d_cyclic(P_(P, 0), 0.0, 1.0), num = v2d_integer(P_(P, 1), 1.0, 2147483647.0);
+  float cnPi = num / kPi, piCn = kPi / num, caCn = kPi * a / num;
+  v2d_Elliptic e = v2d_elliptic(p.x, p.y);
+  float alt = trunc(e.nu * cnPi);
+  float nu = alt * piCn + fmodc(v2d_odd(alt) ? e.nu - caCn : e.nu + caCn, piCn);
+  if (!(p.y > 0.0)) nu = -nu;
+  return vec3(w * e.xmax * cos(nu), w * e.s * sin(nu), w * p.z);
+}
+vec3 V_eMod(vec3 p, float w, int P, int A) {
+  float radius = max(P_(P, 0), 0.0), dist_ = v2d_cyclic(P_(P, 1), 0.0, 2.0);
+  v2d_Elliptic e = v2d_elliptic(p.x, p.y);
+  float mu = e.mu, nu = p.y < 0.0 ? -e.nu : e.nu;
+  if (mu < radius && -mu < radius)
+    mu = nu > 0.0 ? fmodc(mu + radius + dist_ * radius, 2.0 * radius) - radius
+                  : fmodc(mu - radius - dist_ * radius, 2.0 * radius) + radius;
+  return vec3(w * cosh(mu) * cos(nu), w * sinh(mu) * sin(nu), w * p.z);
+}
+vec3 V_ePush(vec3 p, float w, int P, int A) {
+  float push = P_(P, 0), dist = P_(P, 1), rotate = v2d_cyclic(P_(P, 2), -kPi, kPi);
+  v2d_Elliptic e = v2d_elliptic(p.x, p.y);
+  float mu = e.mu * dist + push, nu = (p.y < 0.0 ? -e.nu : e.nu) + rotate;
+  return vec3(w * cosh(mu) * cos(nu), w * sinh(mu) * sin(nu), w * p.z);
+}
+vec3 V_eRotate(vec3 p, float w, int P, int A) {
+  float rotate = v2d_cyclic(P_(P, 0), -kPi, kPi);
+  v2d_Elliptic e = v2d_elliptic(p.x, p.y);
+  float nu = fmodc((p.y < 0.0 ? -e.nu : e.nu) + rotate + kPi, kTwoPi) - kPi;
+  return vec3(w * e.xmax * cos(nu), w * e.s * sin(nu), w * p.z);
+}
+vec3 V_eScale(vec3 p, float w, int P, int A) {
+  float scale = v2d_nonzero(clamp(P_(P, 0), 0.0, 1.0)), angle = v2d_cyclic(P_(P, 1), 0.0, kTwoPi);
+  v2d_Elliptic e = v2d_elliptic(p.x, p.y);
+  float mu = e.mu * scale, nu = p.y < 0.0 ? -e.nu : e.nu;
+  nu = fmodc(fmodc(scale * (nu + kPi + angle), kTwoPi * scale) - angle - scale * kPi, kTwoPi);
+  if (nu > kPi) nu -= kTwoPi;
+  if (nu < -kPi) nu += kTwoPi;
+  return vec3(w * cosh(mu) * cos(nu), w * sinh(mu) * sin(nu), w * p.z);
+}
+vec3 V_eSwirl(vec3 p, float w, int P, int A) {
+  float inner = P_(P, 0), outer = P_(P, 1);
+  v2d_Elliptic e = v2d_elliptic(p.x, p.y);
+  float mu = e.mu;
+  float nu = (p.y < 0.0 ? -e.nu : e.nu) + mu * outer + (inner == 0.0 ? 0.0 : inner / mu);
+  return vec3(w * cosh(mu) * cos(nu), w * sinh(mu) * sin(nu), w * p.z);
+}
+
+// ---- polynomials, exponentials and functions of r --------------------------------------------
+
+// Only the first two terms weighted, as on the CPU.
+vec3 V_ennepers(vec3 p, float w, int P, int A) {
+  float x2 = p.x * p.x, y2 = p.y * p.y;
+  return vec3(w * (p.x - x2 * p.x / 3.0) + p.x * y2, w * (p.y - y2 * p.y / 3.0) + p.y * x2, w * p.z);
+}
+// erf by Abramowitz & Stegun 7.1.26 (error below 1.5e-7; GLSL has none).
+float v2d_erf(float v) {
+  float x = abs(v), t = 1.0 / (1.0 + 0.3275911 * x);
+  float poly = t * (0.254829592 + t * (-0.284496736 + t * (1.421413741 + t * (-1.453152027 + t * 1.061405429))));
+  float e = 1.0 - poly * exp(-x * x);
+  return v < 0.0 ? -e : e;
+}
+vec3 V_erf(vec3 p, float w, int P, int A) { return w * vec3(v2d_erf(p.x), v2d_erf(p.y), p.z); }
+// The weight only inside f, as on the CPU.
+vec3 V_excinis(vec3 p, float w, int P, int A) {
+  float lengthScalar = P_(P, 0), radiusFunc = clamp(P_(P, 1), 0.0, 5.0), eps = P_(P, 2);
+  float rPrior = sqrt(p.x * p.x + p.y * p.y) * lengthScalar;
+  float rEps = abs(rPrior) > eps ? 0.0 : (rPrior >= 0.0 ? 1.0 : -1.0) * eps;
+  float r = w / fractoriumZeps(rPrior + rEps);
+  float f = r;
+  if (radiusFunc < 1.0)
+    f = r;
+  else if (radiusFunc < 2.0)
+    f = cos(r);
+  else if (radiusFunc < 3.0)
+    f = exp(r);
+  else if (radiusFunc < 4.0)
+    f = log(abs(r) + abs(rEps));
+  else
+    f = 1.0 / fractoriumZeps(r + rEps);
+  return vec3((p.x - p.y) * (p.x + p.y) * f, 2.0 * p.x * p.y * f, w * p.z);
+}
+vec3 V_exp2(vec3 p, float w, int P, int A) {
+  float e = w * exp(p.x * kPi);
+  return vec3(e * cos(p.y * kPi), e * sin(p.y * kPi), w * p.z);
+}
+vec3 V_expo(vec3 p, float w, int P, int A) {
+  float re = P_(P, 0), im = P_(P, 1);
+  float k = 0.5 * log(fractoriumZeps(re * re + im * im)), t = atan2c(im, re);
+  float e = w * exp(p.x * k - p.y * t), a = p.x * t + p.y * k;
+  return vec3(e * cos(a), e * sin(a), w * p.z);
+}
+vec3 V_fdisc(vec3 p, float w, int P, int A) {
+  float a = kTwoPi / (sqrt(p.x * p.x + p.y * p.y) + 1.0);
+  float r = (atan2c(p.y, p.x) / kPi + 1.0) * 0.5;
+  return vec3(w * r * cos(a), w * r * sin(a), w * p.z);
+}
+vec2 v2d_fibonacci(float x, float y, float w, float sc, float sc2) {
+  const float lnPhi = 0.48121182505960344, invRoot5 = 0.4472135954999579;
+  float a1 = y * lnPhi, a2 = -(x * kPi + y * lnPhi);
+  float e1 = sc * exp(sc2 * (x * lnPhi)), e2 = sc * exp(sc2 * -(x * lnPhi - y * kPi));
+  return vec2(w * (e1 * cos(a1) - e2 * cos(a2)) * invRoot5, w * (e1 * sin(a1) - e2 * sin(a2)) * invRoot5);
+}
+vec3 V_fibonacci(vec3 p, float w, int P, int A) { return vec3(v2d_fibonacci(p.x, p.y, w, 1.0, 1.0), w * p.z); }
+vec3 V_fibonacci2(vec3 p, float w, int P, int A) {
+  return vec3(v2d_fibonacci(p.x, p.y, w, P_(P, 0), P_(P, 1)), w * p.z);
+}
+
+// ---- flips and flowers ---------------------------------------------------------------------------
+
+vec3 V_flipcircle(vec3 p, float w, int P, int A) {
+  return vec3(w * p.x, p.x * p.x + p.y * p.y > w * w ? w * p.y : -(w * p.y), w * p.z);
+}
+vec3 V_flipx(vec3 p, float w, int P, int A) { return vec3(p.y > 0.0 ? -(w * p.x) : w * p.x, w * p.y, w * p.z); }
+vec3 V_flipy(vec3 p, float w, int P, int A) { return vec3(w * p.x, p.x > 0.0 ? -(w * p.y) : w * p.y, w * p.z); }
+vec3 V_flowerdb(vec3 p, float w, int P, int A) {
+  float petals = P_(P, 0), split = petals * P_(P, 1), spread = P_(P, 2);
+  float r = w * sqrt(p.x * p.x + p.y * p.y), t = atan2c(p.y, p.x);
+  float r2 = r * abs((spread + sin(petals * t)) * cos(split * t));
+  return vec3(r2 * cos(t), r2 * sin(t), w * p.z);
+}
+vec3 V_foci_p(vec3 p, float w, int P, int A) {
+  float ex = fractoriumZeps(exp(p.x));
+  float e1 = ex * P_(P, 0), e2 = P_(P, 1) / ex;
+  float r = w / fractoriumZeps(e1 + e2 - cos(p.y));
+  return vec3((e1 - e2) * r, sin(p.y) * r, w * p.z);
+}
+vec3 V_funnel(vec3 p, float w, int P, int A) {
+  float effect = v2d_integer(P_(P, 0), -2147483647.0, 2147483647.0) * kPi;
+  float t = 1.0 / fractoriumZeps(cos(p.y)) + effect;
+  return vec3(w * (tanh(p.x) * t), w * (tanh(p.y) * t), w * p.z);
+}
+// ln Γ(v) for v ≥ 0 (GLSL has none): moved up to 7 or more, then Stirling's series.
+float v2d_lgamma(float v) {
+  float prod = 1.0;
+  for (int k = 0; k < 8 && v < 7.0; ++k) {
+    prod *= v;
+    v += 1.0;
+  }
+  float zi = 1.0 / v, zi2 = zi * zi;
+  float s = (v - 0.5) * log(v) - v + 0.91893853320467274 + zi * (1.0 / 12.0 - zi2 * (1.0 / 360.0 - zi2 / 1260.0));
+  return s - log(abs(prod));
+}
+vec3 V_gamma(vec3 p, float w, int P, int A) {
+  return vec3(w * v2d_lgamma(sqrt(p.x * p.x + p.y * p.y)), w * atan2c(p.y, p.x), w * p.z);
+}
+vec3 V_henon(vec3 p, float w, int P, int A) {
+  return vec3((1.0 - P_(P, 0) * p.x * p.x + p.y) * w, P_(P, 1) * p.x * w, w * p.z);
+}
+// δ outside the weight in the second form, as on the CPU.
+vec3 V_hole(vec3 p, float w, int P, int A) {
+  float a = P_(P, 0);
+  bool inside = v2d_integer(P_(P, 1), 0.0, 1.0) != 0.0;
+  float r0 = sqrt(p.x * p.x + p.y * p.y), rz = fractoriumZeps(r0);
+  float delta = pow(atan2c(p.y, p.x) / kPi + 1.0, a);
+  float r = inside ? w * delta / (r0 + delta) : w * r0 + delta;
+  return vec3(r * p.x / rz, r * p.y / rz, w * p.z);
+}
+vec3 V_idisc(vec3 p, float w, int P, int A) {
+  float a = kPi / (sqrt(p.x * p.x + p.y * p.y) + 1.0);
+  float r = atan2c(p.y, p.x) * w / kPi;
+  return vec3(r * cos(a), r * sin(a), w * p.z);
+}
+vec3 V_inkdrop(vec3 p, float w, int P, int A) {
+  float r = max(P_(P, 0), 0.0), cx = P_(P, 1), cy = P_(P, 2);
+  float dx = p.x - cx, dy = p.y - cy, d2 = dx * dx + dy * dy;
+  float adjust = sqrt(d2 + r * r) - sqrt(d2), bearing = atan2c(dy, dx);
+  return vec3(w * (p.x + cos(bearing) * adjust), w * (p.y + sin(bearing) * adjust), w * p.z);
+}
+
+// ---- Jacobi's elliptic functions -------------------------------------------------------------------
+
+// sn, cn, dn of u for the parameter 1 − emmc (Numerical Recipes' sncndn, accuracy 0.0003), as the CPU.
+vec3 v2d_sncndn(float u, float emmc) {
+  const float kAccuracy = 0.0003;
+  float emc = emmc;
+  if (emc == 0.0) {
+    float c = 1.0 / cosh(u);
+    return vec3(tanh(u), c, c);
+  }
+  bool negative = emc < 0.0;
+  float d = 1.0;
+  if (negative) {
+    d = 1.0 - emc;
+    emc = -emc / d;
+    d = sqrt(d);
+    u = d * u;
+  }
+  float em[8], en[8];
+  float a = 1.0, c = 0.0, dn = 1.0;
+  int last = 0;
+  for (int i = 0; i < 8; ++i) {
+    last = i;
+    em[i] = a;
+    emc = sqrt(emc);
+    en[i] = emc;
+    c = 0.5 * (a + emc);
+    if (abs(a - emc) <= kAccuracy * a) break;
+    emc = a * emc;
+    a = c;
+  }
+  u = c * u;
+  float sn = sin(u), cn = cos(u);
+  if (sn != 0.0) {
+    a = cn / sn;
+    c = a * c;
+    for (int k = last; k >= 0; --k) {
+      float b = em[k];
+      a = c * a;
+      c = dn * c;
+      dn = (en[k] + a) / (b + a);
+      a = c / b;
+    }
+    a = 1.0 / (abs(c) > 1e15 ? abs(c) : sqrt(c * c + 1.0));  // c² would overflow float
+    sn = sn < 0.0 ? -a : a;
+    cn = c * sn;
+  }
+  if (negative) {
+    a = dn;
+    dn = cn;
+    cn = a;
+    sn = sn / d;
+  }
+  return vec3(sn, cn, dn);
+}
+// which = 0 sn, 1 cn, 2 dn of x + iy by the addition theorems.
+vec2 v2d_jacobi(int which, float x, float y, float k, float w) {
+  vec3 fx = v2d_sncndn(x, k), fy = v2d_sncndn(y, 1.0 - k);
+  vec2 num;
+  if (which == 0)
+    num = vec2(fx.x * fy.z, fx.y * fx.z * fy.y * fy.x);
+  else if (which == 1)
+    num = vec2(fx.y * fy.y, -fx.z * fx.x * fy.z * fy.x);
+  else
+    num = vec2(fx.z * fy.y * fy.z, -fx.y * fx.x * fy.x * k);
+  float denom = w / fractoriumZeps(fx.x * fx.x * fy.x * fy.x * k + fy.y * fy.y);
+  return denom * num;
+}
+vec3 V_jac_sn(vec3 p, float w, int P, int A) {
+  return vec3(v2d_jacobi(0, p.x, p.y, clamp(P_(P, 0), -1.0, 1.0), w), w * p.z);
+}
+vec3 V_jac_cn(vec3 p, float w, int P, int A) {
+  return vec3(v2d_jacobi(1, p.x, p.y, clamp(P_(P, 0), -1.0, 1.0), w), w * p.z);
+}
+vec3 V_jac_dn(vec3 p, float w, int P, int A) {
+  return vec3(v2d_jacobi(2, p.x, p.y, clamp(P_(P, 0), -1.0, 1.0), w), w * p.z);
+}
+// No weight on x and y, as on the CPU.
+vec3 V_Kaleidoscope(vec3 p, float w, int P, int A) {
+  float pull = P_(P, 0), rotate = P_(P, 1), lineUp = P_(P, 2), shiftX = P_(P, 3), shiftY = P_(P, 4);
+  const float s = 0.70710678118654752, c = 0.70710678118654752;
+  float ox = rotate * p.x * c - p.y * s + lineUp + shiftX;
+  float oy = p.y > 0.0 ? rotate * p.y * c + p.x * s + pull + lineUp + shiftY
+                       : rotate * p.y * c + p.x * s - pull - lineUp;
+  return vec3(ox, oy, w * p.z);
+}
+
+// ---- random ones -------------------------------------------------------------------------------------
+
+vec3 V_tanh_spiral(vec3 p, float w, int P, int A) {
+  float a = P_(P, 0);
+  float t = (psi() - 0.5) * kTwoPi;
+  float aux = fractoriumZeps(cos(a * t) + cosh(t));
+  return vec3(w * (sinh(t) / aux), w * (sin(a * t) / aux), w * p.z);
+}
+vec3 V_tile_hlp(vec3 p, float w, int P, int A) {
+  float width = v2d_nonzero(P_(P, 0)), shift = width * w;
+  float u = psi();
+  float v = p.x / width;
+  bool positive = v > 0.0;
+  float f = positive ? v - trunc(v) : v + trunc(v);
+  float move = cos(f * kPi) < 2.0 * u - 1.0 ? (positive ? -shift : shift) : 0.0;
+  return vec3(w * p.x + move, w * p.y, w * p.z);
+}
+vec3 V_tile_log(vec3 p, float w, int P, int A) {
+  float spread = P_(P, 0);
+  float logU = log(1.0 - psi());
+  float s = psi() < 0.5 ? spread : -spread;
+  return vec3(w * (p.x + v2d_round(logU * s)), w * p.y, w * p.z);
+}
+
+// ---- cells and grids (variations_2d_c.cpp) ----------------------------------------------------------
+
+// The cell's centre and its hash in double, as on the CPU.
+vec3 V_bwraps_rand(vec3 p, float w, int P, int A) {
+  float cell = P_(P, 0), space = P_(P, 1), gain = P_(P, 2), innerTwist = P_(P, 3), outerTwist = P_(P, 4);
+  float symm = P_(P, 5);
+  double seed = double(P_(P, 6));
+  float g2 = gain * gain;
+  float halfCell = 0.5 * (cell / (1.0 + space * space));
+  vec2 q = p.xy;
+  if (cell != 0.0) {
+    double dcell = double(cell), invCell = 1.0lf / dcell;
+    double cx = (floor(double(p.x) * invCell) + 0.5lf) * dcell, cy = (floor(double(p.y) * invCell) + 0.5lf) * dcell;
+    float lx = float(double(p.x) - cx), ly = float(double(p.y) - cy);
+    float radius = halfCell * (symm == 0.0 ? v2d_hash(cx, cy, seed) : v2d_hash(cx * cx, cy * cy, seed));
+    float mb = g2 * radius;
+    float maxBubble = mb > 2.0 ? 1.0 : mb / (mb * mb * 0.25 + 1.0);
+    float r2 = radius * radius;
+    if (!(lx * lx + ly * ly > r2)) {
+      float rFactor = radius / fractoriumZeps(maxBubble);
+      float lx2 = lx * g2, ly2 = ly * g2;
+      float r = rFactor / ((lx2 * lx2 + ly2 * ly2) * 0.25 + 1.0);
+      float lx3 = lx2 * r, ly3 = ly2 * r;
+      float t = (lx3 * lx3 + ly3 * ly3) / fractoriumZeps(r2);
+      float theta = innerTwist * (1.0 - t) + outerTwist * t;
+      float c = cos(theta), s = sin(theta);
+      q = vec2(float(cx) + c * lx3 + s * ly3, float(cy) - s * lx3 + c * ly3);
+    }
+  }
+  return vec3(q * w, w * p.z);
+}
+// Java's (int) of a number: truncated, saturating, NaN as 0.
+int v2d_javaInt(float v) {
+  if (isnan(v)) return 0;
+  if (v >= 2147483647.0) return 2147483647;
+  if (v <= -2147483648.0) return -2147483647 - 1;
+  return int(v);
+}
+// Hugo Elias' integer noise in [0, 1], the int arithmetic wrapping as on the CPU.
+float v2d_noise2(int x, int y) {
+  uint k = uint(x + y * 57);
+  k = (k << 13) ^ k;
+  uint v = k * (k * k * 15731u + 789221u) + 1376312589u;
+  return float(v & 0x7fffffffu) * (1.0 / 2147483647.0);
+}
+// X and Y read but not used, as on the CPU.
+vec3 V_CircleLinear(vec3 p, float w, int P, int A) {
+  float sc = v2d_nonzero(P_(P, 0)), k = P_(P, 1), dens1 = P_(P, 2), dens2 = P_(P, 3), reverse = P_(P, 4);
+  float seed = v2d_integer(P_(P, 7), -2147483647.0, 2147483647.0);
+  int m = v2d_javaInt(floor(0.5 * p.x / sc)), n = v2d_javaInt(floor(0.5 * p.y / sc));
+  float m21 = 2.0 * float(m) + 1.0, n21 = 2.0 * float(n) + 1.0;
+  vec2 q = vec2(p.x - m21 * sc, p.y - n21 * sc);
+  float u = fractoriumZeps(length(q));
+  float v = (0.3 + 0.7 * v2d_noise2(m + 10, n + 3)) * sc;
+  float z1 = v2d_noise2(v2d_javaInt(float(m) + seed), n);
+  if (z1 < dens1 && u < v) {
+    bool plain = reverse > 0.0 ? z1 < dens1 * dens2 : z1 > dens1 * dens2;
+    q *= plain ? k : v / u * (1.0 - k) + k;
+  }
+  return vec3(w * (q.x + m21 * sc), w * (q.y + n21 * sc), w * p.z);
+}
+// foci_p's map with the result fuzzed by fuzzyMode and blended in by fuzzyInterpolationMode.
+vec3 V_dragonfire(vec3 p, float w, int P, int A) {
+  float c1 = P_(P, 0), c2 = P_(P, 1), mode = clamp(P_(P, 2), 0.0, 7.0), radius = P_(P, 3);
+  float blendMode = clamp(P_(P, 4), 0.0, 6.0), position = P_(P, 5), logScalar = P_(P, 6), scalar = P_(P, 7);
+  float val = position;
+  if (!(blendMode < 2.0)) {
+    float a = position * kPi;
+    float trig = blendMode < 3.0 ? cos(a) : blendMode < 4.0 ? tan(a) : blendMode < 5.0 ? sinh(a) : asinh(a);
+    val = (1.0 - trig) * scalar;
+  }
+  float ex = exp(p.x) * c1, enx = c2 / fractoriumZeps(ex);
+  float r = w / fractoriumZeps(ex + enx - cos(p.y));
+  vec2 f = vec2((ex - enx) * r, sin(p.y) * r), q = f;
+  if (!(mode < 1.0)) {
+    vec2 fuzz = vec2(cos(logScalar / fractoriumZeps(log(abs(f.x)))), cos(logScalar / fractoriumZeps(log(abs(f.y)))));
+    vec2 dir = vec2(fuzz.x < 0.0 ? -radius : radius, fuzz.y < 0.0 ? -radius : radius);
+    vec2 nf;
+    if (mode < 2.0)
+      nf = f + fuzz;
+    else if (mode < 3.0)
+      nf = f * sin(fuzz);
+    else if (mode < 4.0)
+      nf = f * exp(sin(fuzz));
+    else if (mode < 5.0)
+      nf = f + dir;
+    else if (mode < 6.0)
+      nf = f + exp(dir);
+    else
+      nf = f + vec2(exp(sin(dir.x)), exp(cos(dir.y)));
+    q = blendMode < 1.0 ? nf : f * (1.0 - val) + nf * val;
+  }
+  return vec3(q, w * p.z);
+}
+vec3 V_fourth(vec3 p, float w, int P, int A) {
+  float spin = v2d_cyclic(P_(P, 0), 0.0, kTwoPi), space = P_(P, 1), twist = P_(P, 2), cx = P_(P, 3), cy = P_(P, 4);
+  float w2 = w * w, r2 = p.x * p.x + p.y * p.y;
+  vec2 q = w * p.xy;
+  if (p.x > 0.0 && p.y > 0.0) {
+    float r = sqrt(r2), k = w / r / fractoriumZeps(r);
+    q = k * p.xy;
+  } else if (p.x > 0.0 && p.y < 0.0) {
+    if (r2 < w2) q = w * sqrt(w2 / r2 - 1.0) * p.xy;
+  } else if (p.x < 0.0 && p.y > 0.0) {
+    float sx = p.x - cx, sy = p.y + cy;
+    float r = sqrt(sx * sx + sy * sy);
+    if (r < w) {
+      float a = atan2c(sy, sx) + spin + twist * (w - r);
+      r *= w;
+      q = vec2(r * cos(a) + cx, r * sin(a) - cy);
+    } else {
+      r = w * (1.0 + space / fractoriumZeps(r));
+      q = vec2(r * sx + cx, r * sy - cy);
+    }
+  }
+  return vec3(q, w * p.z);
+}
+float v2d_gdoffsClip(float a) { return a < 0.0 ? -fmodc(abs(a), 1.0) : fmodc(abs(a), 1.0); }
+float v2d_gdoffsOsc(float p, float a) { return v2d_gdoffsClip((-cos(p * a * kTwoPi) + 1.0) / 2.0); }
+float v2d_gdoffsFlip(float a, float b, float c) { return c * (b - a) + a; }
+float v2d_gdoffs(float v, float b, float osc) {
+  float mid = v2d_gdoffsFlip(v, v2d_gdoffsOsc(v, 4.0), osc);
+  return v2d_gdoffsFlip(mid, v2d_gdoffsOsc(v2d_gdoffsClip(b * v), 4.0), osc);
+}
+vec3 V_gdoffs(vec3 p, float w, int P, int A) {
+  float dx = clamp(P_(P, 0), 0.0, 16.0) * 0.1, dy = clamp(P_(P, 1), 0.0, 16.0) * 0.1;
+  float ax = (abs(P_(P, 2)) < 0.1 ? 0.1 : abs(P_(P, 2))) * 2.0;
+  float ay = (abs(P_(P, 3)) < 0.1 ? 0.1 : abs(P_(P, 3))) * 2.0;
+  float cx = P_(P, 4), cy = P_(P, 5), gamma = v2d_integer(P_(P, 6), 1.0, 6.0);
+  bool square = v2d_integer(P_(P, 7), 0.0, 1.0) != 0.0;
+  float b = gamma * 2.0 / max(ax, ay);
+  float oscX = v2d_gdoffsOsc(dx, 1.0), oscY = square ? oscX : v2d_gdoffsOsc(dy, 1.0);
+  return vec3(w * v2d_gdoffs(p.x + cx, b, oscX), w * v2d_gdoffs(p.y + cy, b, oscY), w * p.z);
+}
+vec3 V_gnarly(vec3 p, float w, int P, int A) {
+  float cell = P_(P, 0), twist = P_(P, 1);
+  float r2 = fractoriumZeps(0.25 * cell * cell);
+  vec2 q = p.xy;
+  if (cell != 0.0) {
+    vec2 c = (floor(q / cell) + 0.5) * cell;
+    vec2 l = q - c;
+    float d2 = dot(l, l);
+    if (d2 <= r2) {
+      float theta = twist * log(d2 / r2);
+      float s = sin(theta), co = cos(theta);
+      q = vec2(c.x + co * l.x + s * l.y, c.y - s * l.x + co * l.y);
+    }
+  }
+  return vec3(w * q, w * p.z);
+}
+vec3 V_gridout(vec3 p, float w, int P, int A) {
+  float rx = trunc(p.x >= 0.0 ? p.x + 0.5 : p.x - 0.5), ry = trunc(p.y >= 0.0 ? p.y + 0.5 : p.y - 0.5);
+  vec2 q = p.xy;
+  if (ry <= 0.0) {
+    if (rx > 0.0) {
+      if (-ry >= rx)
+        q.x += 1.0;
+      else
+        q.y += 1.0;
+    } else {
+      if (ry <= rx)
+        q.x += 1.0;
+      else
+        q.y -= 1.0;
+    }
+  } else {
+    if (rx > 0.0) {
+      if (ry >= rx)
+        q.x -= 1.0;
+      else
+        q.y += 1.0;
+    } else {
+      if (ry > -rx)
+        q.x -= 1.0;
+      else
+        q.y -= 1.0;
+    }
+  }
+  return vec3(w * q, w * p.z);
+}
+vec3 V_hex_modulus(vec3 p, float w, int P, int A) {
+  const float root3 = 1.7320508075688772, halfRoot3 = 0.8660254037844386;
+  float hsize = halfRoot3 / fractoriumZeps(P_(P, 0)), scale = w / halfRoot3;
+  float px = p.x * hsize, py = p.y * hsize, third = py / 3.0;
+  float cx = root3 / 3.0 * px - third, cz = 2.0 * third, cy = -cx - cz;
+  float rx = v2d_round(cx), ry = v2d_round(cy), rz = v2d_round(cz);
+  float dx = abs(rx - cx), dy = abs(ry - cy), dz = abs(rz - cz);
+  if (dx > dy && dx > dz)
+    rx = -ry - rz;
+  else if (dy > dz)
+    ry = -rx - rz;
+  else
+    rz = -rx - ry;
+  return vec3((px - (root3 * rx + halfRoot3 * rz)) * scale, (py - 1.5 * rz) * scale, w * p.z);
+}
+float v2d_interferenceWave(float type, float a, float b, float c, float p, float v) {
+  if (type == 1.0) return a * 2.0 * pow(abs(asin(cos(b * v + c - kPi / 2.0))) / kPi, p);
+  if (type == 2.0) return a * pow(sin(b * v + c) < 0.0 ? kFractoriumEps : 1.0, p);
+  return a * pow(abs(sin(b * v + c)), p);
+}
+vec3 V_interference2(vec3 p, float w, int P, int A) {
+  float a1 = P_(P, 0), b1 = P_(P, 1), c1 = P_(P, 2), p1 = P_(P, 3), t1 = v2d_integer(P_(P, 4), 0.0, 2.0);
+  float a2 = P_(P, 5), b2 = P_(P, 6), c2 = P_(P, 7), p2 = P_(P, 8), t2 = v2d_integer(P_(P, 9), 0.0, 2.0);
+  return vec3(w * (v2d_interferenceWave(t1, a1, b1, c1, p1, p.x) + v2d_interferenceWave(t2, a2, b2, c2, p2, p.x)),
+              w * (v2d_interferenceWave(t1, a1, b1, c1, p1, p.y) + v2d_interferenceWave(t2, a2, b2, c2, p2, p.y)),
+              w * p.z);
+}
+
+// ---- random ones ---------------------------------------------------------------------------------
+
+// Fractorium's Rand(n): ⌊Ψ·n⌋, or ⌊Ψ·2³²⌋ for n = 0; the product in double, so that no rounding
+// reaches the next whole number.
+float v2d_whole(float upper) { return float(floor(double(psi()) * double(upper == 0.0 ? 4294967296.0 : upper))); }
+// All three numbers drawn at every point, as on the CPU.
+vec3 V_vignette(vec3 p, float w, int P, int A) {
+  float posX = P_(P, 0), posY = P_(P, 1), innerRadius = P_(P, 2), fadeRadius = v2d_nonzero(P_(P, 3));
+  float power = v2d_nonzero(P_(P, 4)), blur = P_(P, 5);
+  float inner = abs(innerRadius), fade = abs(fadeRadius), powerHelper = 1.0 / abs(power);
+  float u1 = psi(), u2 = psi(), u3 = psi();
+  vec2 q = p.xy;
+  float dist = length(q - vec2(posX, posY));
+  if (dist < inner) {
+    if (innerRadius < 0.0) q = vec2(0.0);
+  } else {
+    dist = (dist - inner) / fade;
+    float kept = 1.0 - pow(u1, powerHelper);
+    float du = dist * u2;
+    float blurR = blur * du * du, blurA = u3 * kTwoPi;
+    bool dropped = fadeRadius > 0.0 ? kept < dist : 1.0 - kept > dist;
+    q = dropped ? vec2(0.0) : q + blurR * vec2(cos(blurA), sin(blurA));
+  }
+  return vec3(q * w, w * p.z);
+}
+// The draws left to right, as on the CPU.
+vec3 V_waffle(vec3 p, float w, int P, int A) {
+  float slices = v2d_nonzero(P_(P, 0)), xt = P_(P, 1), yt = P_(P, 2);
+  float whole = trunc(min(abs(slices), 4294967296.0));
+  float sinR = w * sin(P_(P, 3)), cosR = w * cos(P_(P, 3));
+  float pick = v2d_whole(5.0);
+  float a, r;
+  if (pick == 0.0) {
+    float a0 = v2d_whole(whole), a1 = psi();
+    float r0 = v2d_whole(whole), r1 = psi();
+    a = (a0 + a1 * xt) / slices;
+    r = (r0 + r1 * yt) / slices;
+  } else if (pick == 1.0) {
+    float a0 = v2d_whole(whole), a1 = psi();
+    float r0 = v2d_whole(whole);
+    a = (a0 + a1) / slices;
+    r = (r0 + yt) / slices;
+  } else if (pick == 2.0) {
+    float a0 = v2d_whole(whole);
+    float r0 = v2d_whole(whole), r1 = psi();
+    a = (a0 + xt) / slices;
+    r = (r0 + r1) / slices;
+  } else if (pick == 3.0) {
+    a = psi();
+    float r0 = v2d_whole(whole), r1 = psi();
+    r = (r0 + yt + r1 * (1.0 - yt)) / slices;
+  } else {
+    float a0 = v2d_whole(whole), a1 = psi();
+    a = (a0 + xt + a1 * (1.0 - xt)) / slices;
+    r = psi();
+  }
+  return vec3(cosR * a + sinR * r, -sinR * a + cosR * r, w * p.z);
+}
+// The weight enters twice, as on the CPU; power 0 is taken as 2.
+vec3 V_wavesn(vec3 p, float w, int P, int A) {
+  float freqX = P_(P, 0), freqY = P_(P, 1), scaleX = P_(P, 2), scaleY = P_(P, 3), incX = P_(P, 4), incY = P_(P, 5);
+  float power = P_(P, 6) == 0.0 ? 2.0 : P_(P, 6);
+  float absN = trunc(min(abs(power), 4294967296.0)), cn = 1.0 / power / 2.0;
+  float angle = (atan2c(p.y, p.x) + kTwoPi * v2d_whole(absN)) / power;
+  float r = w * pow(p.x * p.x + p.y * p.y, cn);
+  float xn = r * cos(angle), yn = r * sin(angle);
+  float sinY = sin(freqX * yn), sinX = sin(freqY * xn);
+  return vec3(w * (xn + 0.5 * (scaleX * sinY + abs(xn) * incX * sinY)),
+              w * (yn + 0.5 * (scaleY * sinX + abs(yn) * incY * sinX)), w * p.z);
+}
