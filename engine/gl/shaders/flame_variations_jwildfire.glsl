@@ -1,3 +1,891 @@
 // Flame variations for the GPU backend (flame_variations.glsl has the conventions and the helpers):
 // the CPU catalogue's variations_jwildfire*.cpp
 // (engine/core/flame/), in float.
+
+// std::round and JWildfire's Tools.FTOI: half away from zero.
+float jwf_round(float v) { return sign(v) * floor(abs(v) + 0.5); }
+// A filled curve's scale: Ψ₂ when Ψ₁ < filled, else 1; both numbers are drawn for every point.
+float jwf_filled(float filled) {
+  float psi1 = psi(), psi2 = psi();
+  return filled > 0.0 && filled > psi1 ? psi2 : 1.0;
+}
+float jwf_pow10(float v) {
+  float v2 = v * v, v4 = v2 * v2;
+  return v4 * v4 * v2;
+}
+
+// ---- variations_jwildfire_more.cpp ----------------------------------------------------------
+
+vec3 V_rose_wf(vec3 p, float w, int P, int A) {
+  float amp = P_(P, 0), waves = jwf_round(P_(P, 1)), filled = P_(P, 2);
+  float a = atan2c(p.x, p.y);
+  float r = amp * cos(waves * a) * jwf_filled(filled);
+  return vec3(w * sin(a) * r, w * cos(a) * r, w * p.z);
+}
+vec3 V_heart_wf(vec3 p, float w, int P, int A) {
+  float scaleX = P_(P, 0), shiftT = P_(P, 1), scaleLeft = P_(P, 2), scaleRight = P_(P, 3);
+  float a = atan2c(p.x, p.y), r = sqrt(p.x * p.x + p.y * p.y);
+  bool left = a < 0.0;
+  float t = min((left ? -a : a) / kPi * 60.0 * (left ? scaleLeft : scaleRight) - shiftT, 60.0);
+  float side = left ? -1.0 : 1.0;
+  float nx = side * 0.001 * (-t * t + 40.0 * t + 1200.0) * sin(kPi * t / 180.0) * r;
+  float ny = -0.001 * (-t * t + 40.0 * t + 400.0) * cos(kPi * t / 180.0) * r;
+  return vec3(w * nx * scaleX, w * ny, w * p.z);
+}
+vec3 V_maple_leaf(vec3 p, float w, int P, int A) {
+  float t = atan2c(p.x, p.y) - kPi / 2.0;
+  float r = w * jwf_filled(P_(P, 0));
+  float c6 = cos(6.0 * t), c30 = cos(30.0 * t), ct = cos(t), c3 = cos(3.0 * t);
+  float ct2 = ct * ct, ct4 = ct2 * ct2;
+  float c30sq = c30 * c30, c30p4 = c30sq * c30sq, c30p12 = c30p4 * c30p4 * c30p4;
+  float notch = 1.0 - jwf_pow10(sin(6.0 * t));
+  float lobe = 1.0 - jwf_pow10(ct) * c3 * c3;
+  float lx = (1.0 + c6 * c6 + 0.2 * jwf_pow10(c6 * cos(24.0 * t)) + (c30p12 / 9.0) * notch) * sin(2.0 * t) *
+             (1.0 - ct4) * lobe;
+  float ly = 21.0 / 20.0 * cos(2.0 * t) * (1.0 - ct4 + 0.5 * jwf_pow10(ct * c3)) *
+             (1.0 + c6 * c6 + 0.2 * jwf_pow10(c6 * cos(18.0 * t)) + (c30p4 / 4.0 + c30p12 / 10.0) * lobe * notch);
+  return vec3(r * lx, r * ly, w * p.z);
+}
+// waves2_wf (power 1) and waves3_wf (power 2): the sine or cosine waves, damped by e^damp.
+vec3 jwf_waves(vec3 p, float w, int P, bool squared) {
+  float scaleX = P_(P, 0), scaleY = P_(P, 1), freqX = P_(P, 2), freqY = P_(P, 3);
+  bool cosX = jwf_round(P_(P, 4)) == 1.0, cosY = jwf_round(P_(P, 5)) == 1.0;
+  float dampX = abs(P_(P, 6)) < 1e-8 ? 1.0 : exp(P_(P, 6));
+  float dampY = abs(P_(P, 7)) < 1e-8 ? 1.0 : exp(P_(P, 7));
+  float wx = cosX ? cos(p.y * freqX) : sin(p.y * freqX);
+  float wy = cosY ? cos(p.x * freqY) : sin(p.x * freqY);
+  if (squared) {
+    wx *= wx;
+    wy *= wy;
+  }
+  return vec3(w * (p.x + dampX * scaleX * wx) * dampX, w * (p.y + dampY * scaleY * wy) * dampY, w * p.z);
+}
+vec3 V_waves3_wf(vec3 p, float w, int P, int A) { return jwf_waves(p, w, P, true); }
+vec3 V_tangent3D(vec3 p, float w, int P, int A) { return w * vec3(sin(p.x) / cos(p.y), tan(p.y), tan(p.x)); }
+// JWildfire's 1/q keeps q where |q|² is 0 (it conjugates it only); the square root's two parts
+// are worked out in double, as (radius ± dr) cancel where the other is large.
+vec3 V_acosech(vec3 p, float w, int P, int A) {
+  float m2 = p.x * p.x + p.y * p.y;
+  float inverse = m2 == 0.0 ? 1.0 : 1.0 / m2;
+  double re = double(p.x * inverse), im = double(-p.y * inverse);
+  double dr = re * re - im * im - 1.0lf, di = 2.0lf * re * im;
+  double radius = sqrt(dr * dr + di * di);
+  double sr = sqrt(max(0.0lf, 0.5lf * (radius + dr)));
+  double si = (di < 0.0lf ? -1.0lf : 1.0lf) * sqrt(max(0.0lf, 0.5lf * (radius - dr)));
+  float ar = float(re + sr), ai = float(im + si);
+  float lr = 0.5 * log(ar * ar + ai * ai + 1e-20), li = atan2c(ai, ar);
+  float s = psi() < 0.5 ? w * 2.0 / kPi : -w * 2.0 / kPi;
+  return vec3(s * li, s * lr, w * p.z);
+}
+vec3 V_cos2_bs(vec3 p, float w, int P, int A) {
+  float x1 = P_(P, 0), x2 = P_(P, 1), y1 = P_(P, 2), y2 = P_(P, 3);
+  return vec3(w * cos(p.x * x2) * cosh(p.y * y2), -w * sin(p.x * x1) * sinh(p.y * y1), w * p.z);
+}
+// The denominators below in forms without cancellation (cosh a − cos b = 2 sinh²(a/2) + 2 sin²(b/2),
+// ...); where one is 0 nothing is added, z included, as on the CPU.
+vec3 V_coth2_bs(vec3 p, float w, int P, int A) {
+  float x1 = P_(P, 0), x2 = P_(P, 1), y1 = P_(P, 2), y2 = P_(P, 3);
+  float sa = sinh(0.5 * x2 * p.x), sb = sin(0.5 * y2 * p.y);
+  float d = 2.0 * (sa * sa + sb * sb);
+  if (d == 0.0) return vec3(0.0);
+  float f = w / d;
+  return vec3(f * sinh(x1 * p.x), f * sin(y1 * p.y), w * p.z);
+}
+vec3 V_sec2_bs(vec3 p, float w, int P, int A) {
+  float x1 = P_(P, 0), x2 = P_(P, 1), y1 = P_(P, 2), y2 = P_(P, 3);
+  float cx = cos(p.x), sy = sinh(p.y);
+  float d = 2.0 * (cx * cx + sy * sy);  // cos 2x + cosh 2y
+  if (d == 0.0) return vec3(0.0);
+  float f = w * 2.0 / d;
+  return vec3(f * cos(p.x * x2) * cosh(p.y * y2), f * sin(p.x * x1) * sinh(p.y * y1), w * p.z);
+}
+vec3 V_tan2_bs(vec3 p, float w, int P, int A) {
+  float x1 = P_(P, 0), x2 = P_(P, 1), y1 = P_(P, 2), y2 = P_(P, 3);
+  float ca = cos(0.5 * x2 * p.x), sb = sinh(0.5 * y2 * p.y);
+  float d = 2.0 * (ca * ca + sb * sb);  // cos(x2 x) + cosh(y2 y)
+  if (d == 0.0) return vec3(0.0);
+  float f = w / d;
+  return vec3(f * sin(x1 * p.x), f * sinh(y1 * p.y), w * p.z);
+}
+vec3 V_chunk(vec3 p, float w, int P, int A) {
+  float a = w * P_(P, 0), b = w * P_(P, 1), c = w * P_(P, 2), d = w * P_(P, 3), e = w * P_(P, 4), f = w * P_(P, 5);
+  bool outside = clamp(jwf_round(P_(P, 6)), 0.0, 1.0) == 1.0;
+  float r = a * p.x * p.x + b * p.x * p.y + c * p.y * p.y + d * p.x + e * p.y + f;
+  bool keep = outside ? r > 0.0 : r <= 0.0;
+  return keep ? vec3(p.x, p.y, w * p.z) : vec3(0.0);
+}
+
+// ---- variations_jwildfire_shapes.cpp --------------------------------------------------------
+
+vec3 V_bwraps7(vec3 p, float w, int P, int A) {
+  float cellsize = P_(P, 0), space = P_(P, 1), gain = P_(P, 2), innerTwist = P_(P, 3), outerTwist = P_(P, 4);
+  float radius = 0.5 * (cellsize / (1.0 + space * space));
+  float g2 = gain * gain + 1e-6;
+  float maxBubble = g2 * radius;
+  maxBubble = maxBubble > 2.0 ? 1.0 : maxBubble / (maxBubble * maxBubble / 4.0 + 1.0);
+  float r2 = radius * radius, rFactor = radius / maxBubble;
+  vec2 v = p.xy;
+  if (cellsize != 0.0) {
+    vec2 c = (floor(v / cellsize) + 0.5) * cellsize;
+    vec2 l = v - c;
+    if (!(dot(l, l) > r2)) {
+      l *= g2;
+      l *= rFactor / (dot(l, l) / 4.0 + 1.0);
+      float t = dot(l, l) / r2;  // 0 at the centre, 1 at the rim
+      float theta = innerTwist * (1.0 - t) + outerTwist * t;
+      float s = sin(theta), co = cos(theta);
+      v = vec2(c.x + co * l.x + s * l.y, c.y - s * l.x + co * l.y);
+    }
+  }
+  return vec3(w * v, w * p.z);
+}
+vec3 V_yin_yang(vec3 p, float w, int P, int A) {
+  float radius = clamp(P_(P, 0), 0.0, 1.0);
+  float sinA = sin(kPi * P_(P, 1)), cosA = cos(kPi * P_(P, 1));
+  float sinB = sin(kPi * P_(P, 2)), cosB = cos(kPi * P_(P, 2));
+  bool dual = clamp(jwf_round(P_(P, 3)), 0.0, 1.0) == 1.0;
+  bool outside = clamp(jwf_round(P_(P, 4)), 0.0, 1.0) == 1.0;
+  float u = psi();
+  float rx = 0.0, ry = 0.0;
+  if (p.x * p.x + p.y * p.y < 1.0) {
+    bool yang = dual && u > 0.5;
+    float inv = yang ? -1.0 : 1.0, rr = yang ? 1.0 - radius : radius;
+    float s = yang ? sinB : sinA, c = yang ? cosB : cosA;
+    float xx = p.x * c - p.y * s, yy = p.x * s + p.y * c;
+    if (yy > 0.0) {
+      float t = sqrt(1.0 - yy * yy);
+      float alfa = (1.0 - xx / t) * 0.5;
+      float t1 = (t - 0.5) * 2.0;
+      float k1 = alfa * rr + (1.0 - alfa);
+      rx = (t1 * k1 + alfa * (rr - 1.0)) * inv;
+      ry = sqrt(1.0 - t1 * t1) * k1 * inv;
+    } else {
+      rx = (xx * (1.0 - rr) + rr) * inv;
+      ry = yy * (1.0 - rr) * inv;
+    }
+  } else if (outside) {
+    rx = p.x;
+    ry = p.y;
+  }
+  return vec3(w * rx, w * ry, w * p.z);
+}
+vec3 V_affine3D(vec3 p, float w, int P, int A) {
+  vec3 translate = vec3(P_(P, 0), P_(P, 1), P_(P, 2));
+  const float degree = kPi / 180.0;
+  float sinX = sin(P_(P, 6) * degree), cosX = cos(P_(P, 6) * degree);
+  float sinY = sin(P_(P, 7) * degree), cosY = cos(P_(P, 7) * degree);
+  float sinZ = sin(P_(P, 8) * degree), cosZ = cos(P_(P, 8) * degree);
+  vec3 s = p * vec3(P_(P, 3), P_(P, 4), P_(P, 5));
+  float ax = s.x + P_(P, 9) * s.y + P_(P, 10) * s.z;
+  float ay = P_(P, 11) * s.x + s.y + P_(P, 12) * s.z;
+  float az = P_(P, 13) * s.x + P_(P, 14) * s.y + s.z;
+  float u = cosY * ax + sinY * (sinX * ay + cosX * az);
+  float v = cosX * ay - sinX * az;
+  return w * (vec3(cosZ * u - sinZ * v, sinZ * u + cosZ * v, -sinY * ax + cosY * (sinX * ay + cosX * az)) + translate);
+}
+vec3 V_cannabiscurve_wf(vec3 p, float w, int P, int A) {
+  float a = atan2c(p.x, p.y);
+  float r = (1.0 + 0.9 * cos(8.0 * a)) * (1.0 + 0.1 * cos(24.0 * a)) * (0.9 + 0.1 * cos(200.0 * a)) * (1.0 + sin(a));
+  r *= jwf_filled(P_(P, 0));
+  float turned = a + kPi / 2.0;
+  return vec3(w * sin(turned) * r, w * cos(turned) * r, w * p.z);
+}
+vec3 V_cloverleaf_wf(vec3 p, float w, int P, int A) {
+  float a = atan2c(p.x, p.y);
+  float r = (sin(2.0 * a) + 0.25 * sin(6.0 * a)) * jwf_filled(P_(P, 0));
+  return vec3(w * sin(a) * r, w * cos(a) * r, w * p.z);
+}
+vec3 V_japanese_maple_leaf(vec3 p, float w, int P, int A) {
+  float t = atan2c(p.x, p.y) * 0.5 + kPi / 2.0;
+  float r = w * 0.667 * jwf_filled(P_(P, 0));
+  float c8 = cos(8.0 * t), c80 = cos(80.0 * t), ct = cos(t), c3 = cos(3.0 * t);
+  float st = sin(t), ct2 = ct * ct, ct4 = ct2 * ct2, ct8 = ct4 * ct4;
+  float shared8 = c8 * c8 + 0.2 * jwf_pow10(c8 * cos(24.0 * t));
+  float fringe = c80 * c80 / 6.0 + jwf_pow10(c80) / 15.0;
+  float notch = 1.0 - jwf_pow10(sin(8.0 * t));
+  float lobe = 1.0 - jwf_pow10(ct) * c3 * c3;
+  float lx = (4.0 / 15.0 + shared8 + fringe) * notch * sin(2.0 * t) * (1.0 + st) *
+             (lobe + ct8 * ct * jwf_pow10(cos(5.0 * t)) / 30.0);
+  float ly = (8.0 / 30.0 + shared8 + fringe * lobe * notch) * cos(2.0 * t) * (1.0 + st + jwf_pow10(ct * c3));
+  return vec3(r * lx, r * ly, w * p.z);
+}
+vec3 V_spherical3D_wf(vec3 p, float w, int P, int A) {
+  float sgn = jwf_round(P_(P, 0)) == 0.0 ? 1.0 : -1.0;
+  float exponent = P_(P, 1);
+  float rr = dot(p, p) + kEpsilon;
+  float r = sgn * w / (abs(exponent - 2.0) < 1e-8 ? rr : pow(rr, exponent / 2.0));
+  return p * r;
+}
+vec3 V_waves2_wf(vec3 p, float w, int P, int A) { return jwf_waves(p, w, P, false); }
+vec3 V_butterfly3D(vec3 p, float w, int P, int A) {
+  float wx = w * 1.3029400317411197908970256609023;  // 4/√(3π)
+  float y2 = 2.0 * p.y;
+  float r = wx * sqrt(abs(p.x * p.y) / (kEpsilon + p.x * p.x + y2 * y2));
+  return vec3(r * p.x, r * y2, r * abs(y2) * sqrt(p.x * p.x + p.y * p.y) / 4.0);
+}
+vec3 V_cylinder_apo(vec3 p, float w, int P, int A) { return w * vec3(sin(p.x), p.y, cos(p.x)); }
+
+// ---- variations_jwildfire_tail.cpp ----------------------------------------------------------
+
+vec3 V_dustpoint(vec3 p, float w, int P, int A) {
+  float sgn = psi() < 0.5 ? 1.0 : -1.0;
+  float pick = psi();
+  float r = sqrt(p.x * p.x + p.y * p.y) + kEpsilon;
+  vec2 q = p.xy / 3.0;
+  if (pick < 0.5)
+    q = vec2(p.x / r - 1.0, sgn * p.y / r);
+  else if (pick >= 0.75)
+    q.x += 2.0 / 3.0;
+  return vec3(w * q, w * p.z);
+}
+// prepost_affine's rotation, row-major (yaw, pitch, roll in degrees at P + 3 ...).
+mat3 jwf_prepostRotation(int P) {
+  const float degree = kPi / 180.0;
+  float sy = sin(P_(P, 3) * degree), cy = cos(P_(P, 3) * degree);
+  float sp = sin(P_(P, 4) * degree), cp = cos(P_(P, 4) * degree);
+  float sr = sin(P_(P, 5) * degree), cr = cos(P_(P, 5) * degree);
+  // GLSL's mat3 takes columns: this is the transpose of the CPU's rows.
+  return mat3(cy * cr - sy * sp * sr, sy * cp, cy * sr + sy * sp * cr,
+              -sy * cr - cy * sp * sr, cy * cp, cy * sp * cr - sy * sr,
+              -cp * sr, -sp, cp * cr);
+}
+vec3 jwf_prepostScale(int P) {
+  vec3 s = vec3(P_(P, 0), P_(P, 1), P_(P, 2));
+  return vec3(s.x == 0.0 ? 1e-8 : s.x, s.y == 0.0 ? 1e-8 : s.y, s.z == 0.0 ? 1e-8 : s.z);
+}
+vec3 V_prepost_affine(vec3 p, float w, int P, int A) {
+  if (w == 0.0) return p;
+  return jwf_prepostRotation(P) * (w * jwf_prepostScale(P) * p) + vec3(P_(P, 6), P_(P, 7), P_(P, 8));
+}
+vec3 V_pre_prepost_affine(vec3 p, float w, int P, int A) {
+  if (w == 0.0) return p;
+  // The transpose of the rotation turns it back.
+  vec3 q = (p - vec3(P_(P, 6), P_(P, 7), P_(P, 8))) * jwf_prepostRotation(P);
+  return q / (w * jwf_prepostScale(P));
+}
+// The n-gon pushed onto its circumcircle (circlize) or the circle pulled onto it, blended by w.
+vec3 jwf_circlize(vec3 p, float w, int P, bool inverse) {
+  float sides = clamp(jwf_round(P_(P, 0)), 3.0, 50.0), rotation = P_(P, 1) * kPi / 180.0;
+  bool reverse = clamp(jwf_round(P_(P, 2)), 0.0, 1.0) == 1.0;
+  bool circlize = reverse != inverse;
+  float angle = atan2c(p.y, p.x);
+  float r = sqrt(p.x * p.x + p.y * p.y) + kEpsilon;
+  float piN = kPi / sides, a = angle - rotation;
+  float factor = cos(piN) / cos(a - piN * (2.0 * floor(sides * a / kTwoPi) + 1.0));
+  float target = circlize ? r / factor : r * factor;
+  r = r + (target - r) * w;
+  return vec3(r * cos(angle), r * sin(angle), w * p.z);
+}
+vec3 V_prepost_circlize(vec3 p, float w, int P, int A) { return jwf_circlize(p, w, P, false); }
+vec3 V_pre_prepost_circlize(vec3 p, float w, int P, int A) { return jwf_circlize(p, w, P, true); }
+// Weight 0 or a zero denominator leaves the point.
+vec3 V_prepost_mobius(vec3 p, float w, int P, int A) {
+  vec2 a = vec2(P_(P, 0), P_(P, 4)), b = vec2(P_(P, 1), P_(P, 5));
+  vec2 c = vec2(P_(P, 2), P_(P, 6)), d = vec2(P_(P, 3), P_(P, 7));
+  vec2 u = vec2(a.x * p.x - a.y * p.y + b.x, a.x * p.y + a.y * p.x + b.y);
+  vec2 v = vec2(c.x * p.x - c.y * p.y + d.x, c.x * p.y + c.y * p.x + d.y);
+  float den = dot(v, v);
+  if (w == 0.0 || den == 0.0) return vec3(p.xy, w * p.z);
+  float k = w / den;
+  return vec3(k * (u.x * v.x + u.y * v.y), k * (u.y * v.x - u.x * v.y), w * p.z);
+}
+vec3 V_pre_prepost_mobius(vec3 p, float w, int P, int A) {
+  vec2 a = vec2(P_(P, 0), P_(P, 4)), b = vec2(P_(P, 1), P_(P, 5));
+  vec2 c = vec2(P_(P, 2), P_(P, 6)), d = vec2(P_(P, 3), P_(P, 7));
+  vec2 u = vec2(d.x * p.x - d.y * p.y - b.x, d.x * p.y + d.y * p.x - b.y);
+  vec2 v = vec2(-c.x * p.x + c.y * p.y + a.x, -c.x * p.y - c.y * p.x + a.y);
+  float den = dot(v, v);
+  if (w == 0.0 || den == 0.0) return vec3(p.xy, w * p.z);
+  float k = 1.0 / (w * den);
+  return vec3(k * (u.x * v.x + u.y * v.y), k * (u.y * v.x - u.x * v.y), w * p.z);
+}
+
+// ---- variations_jwildfire.cpp ---------------------------------------------------------------
+
+// One of vibration2's waves (parameters at P + first, its modulations at P + mod), added to q.
+vec2 jwf_vibration(vec2 p, int P, int first, int mod, vec2 q) {
+  float dir = P_(P, first), angle = P_(P, first + 1), freq = P_(P, first + 2), amp = P_(P, first + 3);
+  float phase = P_(P, first + 4);
+  float along = p.x * cos(dir) + p.y * sin(dir);
+  float dirL = dir + P_(P, mod) * cos(along * P_(P, mod + 1) * kTwoPi);
+  float angleL = angle + P_(P, mod + 2) * cos(along * P_(P, mod + 3) * kTwoPi);
+  float phaseL = P_(P, mod + 4) * cos(along * P_(P, mod + 5) * kTwoPi) / freq;
+  float ampL = amp + amp * P_(P, mod + 6) * cos(along * P_(P, mod + 7) * kTwoPi);
+  float total = angleL + dirL;
+  float alongL = p.x * cos(dirL) + p.y * sin(dirL);
+  float local = ampL * sin(alongL * freq * kTwoPi + phaseL + kTwoPi * phase / freq);
+  return q + local * vec2(cos(total), sin(total));
+}
+vec3 V_vibration2(vec3 p, float w, int P, int A) {
+  vec2 q = jwf_vibration(p.xy, P, 0, 10, p.xy);
+  q = jwf_vibration(p.xy, P, 5, 18, q);
+  return vec3(w * q, w * p.z);
+}
+
+// ---- variations_jwildfire_corpus.cpp --------------------------------------------------------
+
+// The branch k 2π/Re_p (k below 32767) is reduced to one turn in double, where the CPU takes the
+// cosine of the whole angle.
+vec3 V_juliacomplex(vec3 p, float w, int P, int A) {
+  float re = P_(P, 0), im = P_(P, 1), dist = P_(P, 2), logAdd = abs(P_(P, 3));
+  float d = re * re + im * im, b = re;
+  if (abs(d) < 0.001) {
+    d = 1.0;
+    b = 1.0;
+  } else if (abs(b) < 0.001) {
+    b = 1.0;
+  }
+  float halfInversePower = 0.5 * dist / b;
+  float inverseRe = dist * re / d, inverseIm = -dist * im / d;
+  bool twists = abs(inverseIm) > 0.001;
+  float phi = atan2c(p.y, p.x);
+  float r2 = p.x * p.x + p.y * p.y;
+  float spiral = twists && abs(r2) > 0.001 ? 0.5 * log(logAdd + r2) * inverseIm : 0.0;
+  double turns = double(floor(psi() * 32767.0)) / double(b);
+  float branch = float((turns - floor(turns)) * 6.283185307179586lf);
+  float angle = phi * inverseRe + spiral + branch;
+  float radius = w * pow(r2, halfInversePower) * (twists ? exp(-inverseIm * phi) : 1.0);
+  return vec3(radius * cos(angle), radius * sin(angle), w * p.z);
+}
+
+// crown_js: a^k t reaches 10¹⁰ and more, so each angle is reduced to one turn in double (a^k by
+// repeated products, exact for a whole a as the CPU's pow is).
+vec3 V_crown_js(vec3 p, float w, int P, int A) {
+  float a = P_(P, 0), b = P_(P, 1);
+  double t = -3.141592653589793lf + 6.283185307179586lf * double(psi());
+  double speed = 1.0lf;
+  vec2 s = vec2(0.0);
+  for (int k = 1; k < 15; ++k) {
+    speed *= double(a);
+    double th = speed * t * (k % 2 == 0 ? -1.0lf : 1.0lf);
+    double turns = th * (1.0lf / 6.283185307179586lf);
+    float reduced = float((turns - floor(turns)) * 6.283185307179586lf);
+    float inverse = 1.0 / pow(a, b * float(k));
+    s += vec2(sin(reduced), cos(reduced)) * inverse;
+  }
+  float mag2 = dot(s, s);
+  return vec3(w * s, w * mag2 * mag2);
+}
+
+// Minkowski's question-mark function on [0, 1], 20 steps down the Stern–Brocot tree.
+float jwf_minkowski(float x) {
+  float p = 0.0, q = 1.0, r = 1.0, s = 1.0, y = 0.0, d = 1.0;
+  for (int step = 0; step < 20; ++step) {
+    d *= 0.5;
+    float m = p + r, n = q + s;
+    if (x < m / n) {
+      r = m;
+      s = n;
+    } else {
+      y += d;
+      p = m;
+      q = n;
+    }
+  }
+  return y + d;
+}
+float jwf_minkowskiSine(float x, bool altWave) {
+  float lp = fmodc(abs(x), 4.0);
+  float p = fmodc(abs(x), 2.0);
+  if (p > 1.0) p = 2.0 - p;
+  float mink = altWave ? jwf_minkowski(p) - p : jwf_minkowski(p);
+  return (lp < 2.0) != (x > 0.0) ? mink : -mink;
+}
+vec3 V_minkowskope(vec3 p, float w, int P, int A) {
+  float separation = P_(P, 0), frequencyX = P_(P, 1), frequencyY = P_(P, 2), amplitude = P_(P, 3);
+  float perturbation = P_(P, 4), damping = P_(P, 5);
+  bool altWave = frequencyX <= 0.0;
+  float pt = perturbation * jwf_minkowskiSine(0.5 * frequencyY * p.y, altWave);
+  float wave = jwf_minkowskiSine(0.5 * frequencyX * p.x + pt - 1.0, altWave);
+  float t = amplitude * (abs(damping) <= 1e-8 ? 1.0 : exp(-abs(p.x) * damping)) * wave + separation;
+  float sgn = abs(p.y) <= t ? -w : w;
+  return vec3(sgn * p.xy, w * p.z);
+}
+
+// maurer_rose: Ψ₁…Ψ₄ drawn for every point.
+vec2 jwf_rose(float theta, float k, float c) { return (cos(k * theta) + c) * vec2(cos(theta), sin(theta)); }
+vec3 V_maurer_rose(vec3 p, float w, int P, int A) {
+  float k = P_(P, 0) / P_(P, 1), c = P_(P, 2);
+  float step = kTwoPi * (P_(P, 3) / 360.0);
+  float cycles = P_(P, 4) * step / kTwoPi;
+  float showSum = P_(P, 5) + P_(P, 6) + P_(P, 7);
+  float lineShare = P_(P, 5) / showSum, pointShare = P_(P, 6) / showSum;
+  float pointThreshold = lineShare + pointShare, pointHalfThreshold = lineShare + pointShare / 2.0;
+  float lineThickness = P_(P, 8) / 100.0, pointThickness = P_(P, 9) / 100.0, curveThickness = P_(P, 10) / 100.0;
+  float psi1 = psi(), psi2 = psi(), psi3 = psi(), psi4 = psi();
+  float t = cycles * atan2c(p.y, p.x);
+  float theta1 = floor(t / step) * step, theta2 = theta1 + step;
+  vec2 a = jwf_rose(theta1, k, c), b = jwf_rose(theta2, k, c);
+  vec2 q;
+  if (psi1 < lineShare) {
+    // Along the chord by its slope, as JWildfire goes.
+    float dx = b.x - a.x, dy = b.y - a.y, slope = dy / dx;
+    float along = psi2 * sqrt(dx * dx + dy * dy);
+    float xOffset = along / sqrt(1.0 + slope * slope);
+    if (b.x < a.x) xOffset = -xOffset;
+    float yOffset = abs(slope * xOffset);
+    if (b.y < a.y) yOffset = -yOffset;
+    if (lineThickness != 0.0) {
+      xOffset += (psi3 - 0.5) * lineThickness;
+      yOffset += (psi4 - 0.5) * lineThickness;
+    }
+    q = a + vec2(xOffset, yOffset);
+  } else if (psi1 <= pointThreshold) {
+    vec2 offset = vec2(0.0);
+    if (pointThickness != 0.0) {
+      float radius = psi2 * pointThickness, angle = psi3 * kTwoPi;
+      offset = radius * vec2(cos(angle), sin(angle));
+    }
+    q = (psi1 <= pointHalfThreshold ? a : b) + offset;
+  } else {
+    q = jwf_rose(t, k, c);
+    if (curveThickness != 0.0) q += (vec2(psi2, psi3) - 0.5) * curveThickness;
+  }
+  return vec3(w * q, w * p.z);
+}
+
+// C's pow, which GLSL leaves undefined for a negative base: odd and even whole powers keep their
+// signs, other powers of a negative number are NaN.
+float jwf_powc(float x, float y) {
+  if (y == 0.0) return 1.0;
+  if (x >= 0.0) return x == 0.0 ? (y > 0.0 ? 0.0 : 1.0 / x) : pow(x, y);
+  if (y != floor(y)) return intBitsToFloat(0x7fc00000);
+  float r = pow(-x, y);
+  return mod(y, 2.0) == 1.0 ? -r : r;
+}
+// JWildfire's square path (hamid_js's preset 9): 400 steps round the unit square.
+vec2 jwf_hamidSquarePath(float step) {
+  if (step >= 400.0) step -= 400.0 * floor(step / 400.0);
+  if (step < 100.0) return vec2(step / 100.0, 0.0);
+  if (step < 200.0) return vec2(1.0, (step - 100.0) / 100.0);
+  if (step < 300.0) return vec2((300.0 - step) / 100.0, 1.0);
+  return vec2(0.0, (400.0 - step) / 100.0);
+}
+// hamid_js's formulas: jwf_T(k, c) = k c π I / N, JWildfire's parameters a … p at P + 3 ...
+#define jwf_T(times, c1) ((times) * (c1) * kPi * I / np)
+#define jwf_S(times, c1) sin(jwf_T(times, c1))
+#define jwf_C(times, c1) cos(jwf_T(times, c1))
+vec4 jwf_hamidLine(int preset, int P, float I, float np) {
+  float a = P_(P, 3), b = P_(P, 4), c = P_(P, 5), d = P_(P, 6), e = P_(P, 7), f = P_(P, 8), g = P_(P, 9);
+  float h = P_(P, 10), ii = P_(P, 11), j = P_(P, 12), k = P_(P, 13);
+  switch (preset) {
+    case 0: return vec4(-jwf_S(4.0, a), -jwf_C(2.0, b), -0.5 * e * jwf_S(8.0, c), -0.5 * f * jwf_C(4.0, d));
+    case 1: return vec4(-jwf_S(2.0, a), -jwf_C(2.0, b), -0.5 * e * jwf_S(8.0, c), -0.5 * f * jwf_C(12.0, d));
+    case 2: return vec4(-jwf_S(8.0, a), -jwf_C(2.0, b), -0.5 * e * jwf_S(6.0, c), -0.5 * f * jwf_C(2.0, d));
+    case 3: return vec4(-jwf_S(10.0, a), -jwf_C(2.0, b), -0.5 * e * jwf_S(12.0, c), -0.5 * f * jwf_C(2.0, d));
+    case 4: {  // the figure starts 699 steps along
+      float s = kPi * (I + 699.0) / np;
+      return vec4(sin(10.0 * a * s), cos(8.0 * b * s), sin(12.0 * c * s), cos(10.0 * d * s));
+    }
+    case 5:  // x1 divides by 1000 where the others divide by N: JWildfire's
+      return vec4(-2.0 * a * cos(4.0 * b * kPi * I / 1000.0), 0.5 * c * jwf_powc(jwf_C(6.0, d), 3.0 * ii),
+                  -2.0 * e * jwf_S(6.0, f) / 15.0 * j, 4.0 * g * jwf_S(2.0, h) / 15.0 * k);
+    case 6:
+      return vec4(3.0 * a * jwf_powc(jwf_S(2.0, b), 3.0 * h), -jwf_C(8.0, c),
+                  1.5 * d * jwf_powc(jwf_S(2.0, e), 3.0 * ii), -0.5 * f * jwf_C(6.0, g));
+    case 7:
+      return vec4(jwf_C(6.0, a), -jwf_C(8.0, b), 1.5 * c * jwf_powc(jwf_S(2.0, 1.0), 3.0 * f),
+                  -0.5 * d * jwf_C(6.0, e));
+    case 8:
+      return vec4(jwf_powc(jwf_S(20.0, a), 3.0), jwf_powc(jwf_C(18.0, b), 3.0 * e), jwf_powc(jwf_S(16.0, c), 3.0),
+                  jwf_powc(jwf_C(14.0, d), 3.0 * f));
+    default: return vec4(jwf_hamidSquarePath(I), jwf_hamidSquarePath(I + 199.0));
+  }
+}
+// A circle's centre and radius.
+vec3 jwf_hamidCircle(int preset, int P, float I, float np) {
+  float a = P_(P, 3), b = P_(P, 4), c = P_(P, 5), d = P_(P, 6), e = P_(P, 7), f = P_(P, 8), g = P_(P, 9);
+  float h = P_(P, 10), ii = P_(P, 11), j = P_(P, 12), k = P_(P, 13), l = P_(P, 14), m = P_(P, 15);
+  float nn = P_(P, 16), o = P_(P, 17), p = P_(P, 18);
+  const float kDot = 1.0 / 150.0;  // the smallest circle's radius
+  switch (preset) {
+    case 10:
+      return vec3(2.0 * a * jwf_S(2.0, b) / 3.0 + jwf_S(36.0, c) * jwf_C(30.0, d) / 3.0 * k +
+                      jwf_powc(jwf_S(14.0, 1.0), 3.0 * l) / 3.0 * m,
+                  2.0 * e * jwf_C(2.0, f) / 3.0 * nn + jwf_C(36.0, g) * jwf_C(30.0, h) / 3.0 * o +
+                      jwf_powc(jwf_C(14.0, ii), 3.0) / 5.0 * p,
+                  kDot + jwf_powc(jwf_S(36.0, j), 4.0) / 9.0);
+    case 11: return vec3(jwf_S(14.0, a), jwf_C(32.0, b), jwf_powc(jwf_S(20.0, c), 2.0) / 3.0 * d);
+    case 12:
+      return vec3(2.0 * a * jwf_S(6.0, b) / 3.0 + jwf_S(36.0, c) * jwf_C(30.0, d) / 4.0 +
+                      jwf_powc(jwf_S(14.0, e), 3.0 * k) / 4.0 * l,
+                  2.0 * f * jwf_C(6.0, g) / 3.0 + jwf_C(28.0, h) * jwf_C(30.0, ii) / 3.0 +
+                      jwf_powc(jwf_C(14.0, 1.0), 3.0 * m) / 5.0 * nn,
+                  kDot + jwf_powc(jwf_S(36.0, j), 4.0 * o) / 20.0 * p);
+    case 13:
+      return vec3(jwf_S(10.0, a), jwf_powc(jwf_C(28.0, b), 3.0 * e), jwf_powc(jwf_S(18.0, c), 2.0) / 3.0 * d);
+    case 14:
+      return vec3(2.0 * a * jwf_S(18.0, b) / 3.0 + jwf_powc(jwf_S(40.0, c), 3.0) * jwf_C(30.0, d) / 3.0 +
+                      jwf_powc(jwf_S(34.0, e), 3.0 * k) / 4.0 * l,
+                  2.0 * f * jwf_C(18.0, g) / 3.0 + jwf_powc(jwf_C(28.0, h), 3.0) * jwf_C(40.0, 1.0) / 3.0 +
+                      jwf_powc(jwf_C(34.0, ii), 3.0 * m) / 3.0 * nn,
+                  kDot + jwf_powc(jwf_S(56.0, j), 4.0 * o) / 8.0 * p);
+    case 15:
+      return vec3(2.0 * a * jwf_S(14.0, b) / 3.0 + jwf_powc(jwf_S(10.0, c), 3.0) * jwf_C(28.0, d) / 3.0 +
+                      jwf_powc(jwf_S(46.0, e), 3.0 * m) / 3.0 * nn,
+                  2.0 * jwf_C(14.0, f) / 3.0 + jwf_powc(jwf_C(10.0, g), 3.0) * jwf_C(28.0, h) / 3.0 +
+                      jwf_powc(jwf_C(34.0, j), 3.0 * o) / 3.0,
+                  kDot + jwf_powc(jwf_S(72.0, k), 6.0) / 9.0 + jwf_powc(jwf_S(12.0, l), 4.0) / 20.0 * p);
+    case 16:
+      return vec3(jwf_S(38.0, a) * jwf_C(26.0, b) / 2.0 + jwf_powc(jwf_S(18.0, c), 3.0 * l) / 2.0 * m,
+                  2.0 * jwf_C(18.0, d) / 3.0 + jwf_C(38.0, e) * jwf_C(36.0, f) / 3.0 +
+                      jwf_powc(jwf_C(18.0, g), 3.0 * nn) / 4.0 * o,
+                  kDot + jwf_powc(jwf_S(18.0, h), 10.0) * jwf_powc(jwf_S(100.0, ii), 6.0) / 100.0 +
+                      jwf_powc(jwf_S(72.0, j), 8.0) * jwf_powc(jwf_C(18.0, k), 6.0) / 20.0 * p);
+    case 17:
+      return vec3(2.0 * a * jwf_S(10.0, b) + jwf_powc(jwf_S(6.0, c), 3.0) * jwf_C(28.0, d) / 3.0 +
+                      jwf_S(126.0, e) / 10.0 * l,
+                  2.0 * jwf_C(6.0, f) / 3.0 + jwf_powc(jwf_C(18.0, g), 3.0) * jwf_C(36.0, h) / 3.0 +
+                      jwf_C(126.0, ii) / 10.0 * m,
+                  kDot + jwf_powc(jwf_S(48.0, j), 4.0) * (1.0 + jwf_powc(jwf_S(12.0, k), 2.0 * nn)) / 18.0 * o);
+    case 18:
+      return vec3(2.0 * a * jwf_S(18.0, b) / 5.0 + jwf_powc(jwf_S(34.0, c), 3.0 * j) / 3.0 * k +
+                      jwf_powc(jwf_S(50.0, d), 3.0 * l) / 3.0 * m,
+                  2.0 * jwf_C(18.0, e) / 3.0 + jwf_powc(jwf_C(34.0, f), 3.0) / 3.0 +
+                      jwf_powc(jwf_C(50.0, g), 3.0 * nn) / 10.0 * o,
+                  kDot + jwf_powc(jwf_S(58.0, ii), 4.0) / 10.0 * p);
+    default:
+      return vec3(jwf_C(10.0, a) * (c - jwf_powc(jwf_S(16.0, b), 2.0 * h) / 2.0 * ii),
+                  jwf_S(10.0, d) * (f - jwf_powc(jwf_C(34.0, e), 2.0 * j) / 2.0 * k),
+                  1.0 / 200.0 + jwf_powc(jwf_S(52.0, g), 4.0 * l) / 10.0 * m);
+  }
+}
+#undef jwf_T
+#undef jwf_S
+#undef jwf_C
+vec3 V_hamid_js(vec3 p, float w, int P, int A) {
+  float presetValue = clamp(jwf_round(P_(P, 0)), 0.0, 19.0);
+  int preset = isnan(presetValue) ? 0 : int(presetValue);
+  float lines = trunc(clamp(P_(P, 1), -2147483648.0, 2147483647.0));
+  float np = lines == 0.0 || isnan(lines) ? 1.0 : lines;
+  bool filled = trunc(P_(P, 2)) == 1.0;
+  float I = trunc(psi() * np + 1.0);
+  vec2 q;
+  if (preset < 10) {
+    vec4 line = jwf_hamidLine(preset, P, I, np);
+    float xdiff = line.z - line.x, ydiff = line.w - line.y;
+    float slope = xdiff == 0.0 ? 10000.0 : ydiff / xdiff;
+    float along = psi() * sqrt(xdiff * xdiff + ydiff * ydiff);
+    float xoffset = along / sqrt(1.0 + slope * slope);
+    if (line.z < line.x) xoffset = -xoffset;
+    float yoffset = abs(slope * xoffset);
+    if (line.w < line.y) yoffset = -yoffset;
+    q = line.xy + vec2(xoffset, yoffset);
+  } else {
+    vec3 circle = jwf_hamidCircle(preset, P, I, np);
+    float radius = circle.z;
+    if (filled && psi() > 0.05) radius *= psi();
+    float angle = psi() * kTwoPi;
+    q = circle.xy + radius * vec2(cos(angle), sin(angle));
+  }
+  return vec3(w * q, w * p.z);
+}
+
+// rhodonea's cycles to close the rose (BigInteger.gcd on the whole knumer and kdenom).
+float jwf_gcd(float a, float b) {
+  uint ua = uint(min(abs(a), 2147483648.0)), ub = uint(min(abs(b), 2147483648.0));
+  while (ub != 0u) {
+    uint r = ua % ub;
+    ua = ub;
+    ub = r;
+  }
+  return float(ua);
+}
+float jwf_rhodoneaMode(float v) {
+  float m = floor(v);
+  return m >= 0.0 && m <= 6.0 ? m : 0.0;
+}
+// Ψ is drawn for every point. Mode 1's clearing of x where y is exactly 0 acts on this term's own
+// y here: the CPU tests the running sum, which is the same for a transform's first term.
+vec3 V_rhodonea(vec3 p, float w, int P, int A) {
+  float kn = P_(P, 0), kd = P_(P, 1), innerSpread = P_(P, 4), outerSpread = P_(P, 5), fill = P_(P, 9);
+  float radialOffset = P_(P, 10), cyclesParam = P_(P, 11), metacycles = P_(P, 13);
+  float k = kn / kd, cyclesToClose;
+  if (fmodc(k, 1.0) == 0.0) {
+    if (fmodc(k, 2.0) == 0.0)
+      cyclesToClose = 1.0;
+    else
+      cyclesToClose = radialOffset != 0.0 || innerSpread != 0.0 || outerSpread != 0.0 || fill != 0.0 ? 1.0 : 0.5;
+  } else if (fmodc(kn, 1.0) == 0.0 && fmodc(kd, 1.0) == 0.0) {
+    float gcd = jwf_gcd(kn, kd);
+    if (gcd != 1.0) {
+      kn /= gcd;
+      kd /= gcd;
+    }
+    cyclesToClose = fmodc(kn, 2.0) == 0.0 || fmodc(kd, 2.0) == 0.0 ? kd : kd / 2.0;
+  } else {
+    cyclesToClose = 16.0;
+  }
+  float cycles = cyclesParam == 0.0 ? cyclesToClose * metacycles : cyclesParam;
+  float innerMode = jwf_rhodoneaMode(P_(P, 2)), outerMode = jwf_rhodoneaMode(P_(P, 3));
+  float innerRatio = P_(P, 6), outerRatio = P_(P, 7), split = P_(P, 8);
+  float cycleOffset = P_(P, 12), expansionStep = P_(P, 14);
+  float u = psi();
+  float rin = split * sqrt(p.x * p.x + p.y * p.y);
+  float tin = atan2c(p.y, p.x);
+  float t = cycles * (tin + cycleOffset * kTwoPi);
+  float r = cos(k * t) + radialOffset;
+  if (fill != 0.0) r += fill * (u - 0.5);
+  float cx = r * cos(t), cy = r * sin(t);
+  float expansion = floor(cycles * (tin + kPi) / (cyclesToClose * kTwoPi));
+  float amount = w + expansion * expansionStep;
+  bool outer = abs(rin) > abs(r);
+  float mode = outer ? outerMode : innerMode;
+  float spread = outer ? outerSpread : innerSpread, ratio = outer ? outerRatio : innerRatio;
+  float xin = cx < 0.0 ? -abs(p.x) : abs(p.x), yin = cy < 0.0 ? -abs(p.y) : abs(p.y);
+  vec2 q = amount * vec2(cx, cy);
+  if (mode == 1.0) {
+    q = amount * vec2((rin * spread * ratio - spread * ratio + 1.0) * cx, (rin * spread - spread + 1.0) * cy);
+    if (q.y == 0.0) q.x = 0.0;
+  } else if (mode == 2.0) {  // towards the point outside, away from it inside
+    float sgn = outer ? 1.0 : -1.0;
+    q = amount * vec2(cx + sgn * spread * ratio * (outer ? xin - cx : cx - xin),
+                      cy + sgn * spread * (outer ? yin - cy : cy - yin));
+  } else if (mode == 3.0) {
+    float sgn = outer ? 1.0 : -1.0;
+    q = amount * vec2(cx + sgn * spread * ratio * xin, cy + sgn * spread * yin);
+  } else if (mode == 4.0) {
+    q = amount * vec2((0.5 * rin + spread * ratio) * cx, (0.5 * rin + spread) * cy);
+  } else if (mode == 5.0 || mode == 6.0) {
+    // Mode 5 keeps the point outside and drops it inside; mode 6 the reverse.
+    q = outer == (mode == 5.0) ? p.xy : vec2(intBitsToFloat(0x7fc00000));
+  }
+  return vec3(q, w * p.z);
+}
+
+// inversion's shape (0 circle … 6 supershape, in s: shape, scale, rotation; a … f at P + 5 ...):
+// its radius at angle tin from the origin.
+float jwf_inversionRadius(vec3 s, int P, float tin) {
+  float shape = s.x, scale = s.y, t = tin - s.z;
+  float a = P_(P, 5), b = P_(P, 6), c = P_(P, 7), d = P_(P, 8), e = P_(P, 9), f = P_(P, 10);
+  if (shape == 1.0) return a * b / sqrt(b * cos(t) * b * cos(t) + a * sin(t) * a * sin(t)) * scale;
+  if (shape == 2.0) {
+    float ct = cos(t), st = sin(t);
+    return sqrt(a * a * b * b / (b * b * ct * ct - a * a * st * st)) * scale;
+  }
+  if (shape == 3.0) {
+    float theta = abs(fmodc(t, kTwoPi));
+    float sides = floor(a);
+    return cos(kPi / sides) / cos(fmodc(theta, kTwoPi / sides) - kPi / sides) * scale;
+  }
+  if (shape == 4.0) return (cos(a / b * t) + c) * scale;
+  if (shape == 5.0) return a * b / pow(pow(abs(a * sin(t)), c) + pow(abs(b * cos(t)), c), 1.0 / c) * scale;
+  if (shape == 6.0)
+    return pow(pow(abs(cos(c * t / 4.0) / a), e) + pow(abs(sin(c * t / 4.0) / b), f), -1.0 / d) * scale;
+  return scale;  // the circle, and any other shape number
+}
+// The rose's period (JWildfire's Rhodonea.calcPeriod).
+float jwf_rosePeriod(float a, float b, float c) {
+  float k = a / b;
+  if (fmodc(k, 1.0) == 0.0) return fmodc(k, 2.0) == 0.0 || c != 0.0 ? kTwoPi : kPi;
+  if (fmodc(a, 1.0) == 0.0 && fmodc(b, 1.0) == 0.0) {
+    float kn = a, kd = b;
+    float gcd = jwf_gcd(kn, kd);
+    if (gcd != 1.0) {
+      kn /= gcd;
+      kd /= gcd;
+    }
+    return fmodc(kn, 2.0) == 0.0 || fmodc(kd, 2.0) == 0.0 ? kd * kTwoPi : kd * kPi;
+  }
+  return kTwoPi;
+}
+float jwf_pNormSquared(vec2 q, float p, float m) { return pow(pow(abs(q.x), p) + pow(abs(q.y), p), 2.0 / (p * m)); }
+// Ψ₁…Ψ₅ drawn for every point; the points passed through or drawn on the outline carry no z.
+vec3 V_inversion(vec3 p, float w, int P, int A) {
+  float scale = P_(P, 0), shape = trunc(P_(P, 2));
+  if (!(shape >= 0.0 && shape <= 6.0)) shape = 0.0;
+  vec3 s = vec3(shape, scale, kPi * P_(P, 1));
+  float period = shape == 4.0 ? jwf_rosePeriod(P_(P, 5), P_(P, 6), P_(P, 7)) : kTwoPi;
+  float imode = trunc(P_(P, 3));
+  bool hideUninverted = P_(P, 4) == 1.0;
+  float ringMode = trunc(P_(P, 11)), ringScale = P_(P, 12);
+  float pnormPoint = P_(P, 13), pnormShape = P_(P, 14), pnormPmod = P_(P, 15), pnormSmod = P_(P, 16);
+  float drawShape = P_(P, 17), thickness = P_(P, 18), passthrough = P_(P, 19);
+  float ringMin = ringScale <= scale ? ringScale * scale : scale * scale / (ringScale * scale);
+  float ringMax = ringScale <= scale ? scale * scale / (ringScale * scale) : ringScale * scale;
+  bool ring = ringMode != 0.0 && ringScale != 1.0;
+  float psi1 = psi(), psi2 = psi(), psi3 = psi(), psi4 = psi(), psi5 = psi();
+  if (drawShape > 0.0 && psi1 < drawShape) {
+    // The outline's own point at the angle (not the farthest crossing), as JWildfire draws it.
+    float theta = psi2 * period;
+    vec2 c = jwf_inversionRadius(s, P, theta) * vec2(cos(theta), sin(theta));
+    if (thickness != 0.0) c += 0.01 * (vec2(psi3, psi4) - 0.5) * thickness;
+    return vec3(c, 0.0);
+  }
+  if (passthrough > 0.0 && psi5 < passthrough) return vec3(p.xy, 0.0);
+  float rin = sqrt(p.x * p.x + p.y * p.y), tin = atan2c(p.y, p.x);
+  float r;
+  vec2 c;
+  if (shape != 4.0) {
+    r = jwf_inversionRadius(s, P, tin);
+    c = r * vec2(cos(tin), sin(tin));
+  } else {
+    // The farthest of the rose's crossings at tin, tin + π, … (at most 1000).
+    r = -0.0001;
+    c = vec2(0.0);
+    float turns = min(trunc(period / kTwoPi), 1000.0);
+    for (float i = 0.0; i < turns; i += 1.0) {
+      float theta = tin + i * kPi, ri = jwf_inversionRadius(s, P, theta);
+      if (abs(ri) > r) {
+        c = ri * vec2(cos(theta), sin(theta));
+        r = abs(ri);
+      }
+    }
+  }
+  bool invert = imode == 1.0 ? rin > r : imode == 2.0 ? rin < r : true;
+  if (invert && ring) {
+    if (ringMode == 1.0) invert = rin >= ringMin && rin <= ringMax;
+    if (ringMode == 2.0) invert = rin <= ringMin || rin >= ringMax;
+  }
+  if (!invert) return hideUninverted ? vec3(vec2(intBitsToFloat(0x7fc00000)), p.z) : p;
+  float num = pnormShape == 2.0 && pnormSmod == 1.0 ? r * r : jwf_pNormSquared(c, pnormShape, pnormSmod);
+  float den = pnormPoint == 2.0 && pnormPmod == 1.0 ? p.x * p.x + p.y * p.y
+                                                    : jwf_pNormSquared(p.xy, pnormPoint, pnormPmod);
+  float factor = w * (num / den);
+  return vec3(factor * p.xy, w * p.z);
+}
+
+// nBlur (Fractorium's): its precalculated values, worked out per call as on the CPU.
+struct jwf_NBlur {
+  float numEdges, midAngle, angStart, angStripes, ratioStripes, ratioComplement, ratioHole, tan90m2, arcTan1, arcTan2;
+  float speedCalc1, speedCalc2, maxStripes;
+  bool hasStripes, negStripes, circumCircle, equalBlur, exactCalc;
+};
+// Squeezes a stripe's angle towards angTmp (the stripe's edge) when it lies beyond speed.
+void jwf_nBlurSqueezeDown(float angTmp, float speed, float angStart, float angMem, inout float angXY,
+                          inout vec2 q) {
+  if (angTmp - angXY > speed) {
+    float shift = (angTmp - speed - angXY) * speed / (angStart - speed);
+    float a = angMem - angXY + angTmp - shift;
+    q = vec2(sin(a), cos(a));
+    angXY = angTmp - shift;
+  }
+}
+// A random point of the polygon (xy), its length (z) and the ring's inner length at its angle (w);
+// lenOuter the outer one.
+vec4 jwf_nBlurPoint(jwf_NBlur s, out float lenOuter) {
+  float angXY;
+  if (s.exactCalc) {
+    angXY = psi() * kTwoPi;
+  } else {
+    float t = psi();
+    float edge = floor(psi() * s.numEdges);
+    angXY = (atan(s.arcTan1 * (t - 0.5)) / s.arcTan2 + 0.5 + edge) * s.midAngle;
+  }
+  float angMem = angXY;
+  vec2 q = vec2(sin(angXY), cos(angXY));
+  while (angXY > s.midAngle) angXY -= s.midAngle;
+  if (s.hasStripes) {
+    int count = 0;
+    float angTmp = s.angStart;
+    while (angXY > angTmp) {
+      angTmp += s.angStripes;
+      if (angTmp > s.midAngle) angTmp = s.midAngle;
+      ++count;
+    }
+    if (angTmp != s.midAngle) angTmp -= s.angStart;
+    // The negative stripes are the positive ones' complement.
+    int drawn = s.negStripes ? 0 : 1;
+    float ratio = s.negStripes ? s.ratioComplement : s.ratioStripes;
+    float speed = s.negStripes ? s.speedCalc1 : s.speedCalc2;
+    if ((count & 1) == drawn) {
+      if (angXY > angTmp && (!s.negStripes || float(count) != s.maxStripes)) {
+        angXY += s.angStart;
+        angMem += s.angStart;
+        angTmp += s.angStripes;
+        ++count;
+      } else {
+        angXY -= s.angStart;
+        angMem -= s.angStart;
+        angTmp -= s.angStripes;
+        --count;
+      }
+      q = vec2(sin(angMem), cos(angMem));
+    }
+    int kept = 1 - drawn;
+    if ((count & 1) == kept && ratio > 1.0) {
+      if (angXY > angTmp && float(count) != s.maxStripes) {
+        angMem = angMem - angXY + angTmp + (angXY - angTmp) / s.angStart * ratio * s.angStart;
+        angXY = angTmp + (angXY - angTmp) / s.angStart * ratio * s.angStart;
+      } else {
+        angMem = angMem - angXY + angTmp - (angTmp - angXY) / s.angStart * ratio * s.angStart;
+        angXY = angTmp + (angXY - angTmp) / s.angStart * ratio * s.angStart;
+      }
+      q = vec2(sin(angMem), cos(angMem));
+    }
+    if ((count & 1) == kept && ratio < 1.0) {
+      if (abs(angXY - angTmp) > speed && float(count) != s.maxStripes) {
+        if (angXY - angTmp > speed) {
+          float shift = (angXY - (angTmp + speed)) * speed / (s.angStart - speed);
+          float a = angMem - angXY + angTmp + shift;
+          q = vec2(sin(a), cos(a));
+          angXY = angTmp + shift;
+        }
+        jwf_nBlurSqueezeDown(angTmp, speed, s.angStart, angMem, angXY, q);
+      }
+      if (float(count) == s.maxStripes) {
+        if (s.negStripes) angTmp = s.midAngle;
+        jwf_nBlurSqueezeDown(angTmp, speed, s.angStart, angMem, angXY, q);
+      }
+    }
+  }
+  float outerX = s.tan90m2 / (s.tan90m2 - tan(angXY)), outerY = outerX * tan(angXY);
+  lenOuter = sqrt(outerX * outerX + outerY * outerY);
+  float radius = s.equalBlur ? sqrt(psi()) : psi();
+  if (!s.exactCalc && !s.circumCircle) radius *= lenOuter;
+  float lenInner = s.ratioHole * lenOuter;
+  if (!s.exactCalc && radius < lenInner) {
+    float span = s.circumCircle ? 1.0 - lenInner + 2.220446049250313e-16 : lenOuter - lenInner;
+    radius = (s.equalBlur ? sqrt(psi()) : psi()) * span + lenInner;
+  }
+  q *= radius;
+  return vec4(q, length(q), lenInner);
+}
+float jwf_fractoriumInteger(float v, float low, float high) { return clamp(floor(v + 0.5), low, high); }
+vec3 V_nBlur(vec3 p, float w, int P, int A) {
+  jwf_NBlur s;
+  s.numEdges = jwf_fractoriumInteger(P_(P, 0), 3.0, 1000.0);
+  float numStripes = jwf_fractoriumInteger(P_(P, 1), -1000.0, 1000.0);
+  s.ratioStripes = clamp(P_(P, 2), 0.0, 2.0);
+  s.ratioHole = clamp(P_(P, 3), 0.0, 1.0);
+  s.circumCircle = jwf_fractoriumInteger(P_(P, 4), 0.0, 1.0) == 1.0;
+  bool adjustToLinear = jwf_fractoriumInteger(P_(P, 5), 0.0, 1.0) == 1.0;
+  s.equalBlur = jwf_fractoriumInteger(P_(P, 6), 0.0, 1.0) == 1.0;
+  s.exactCalc = jwf_fractoriumInteger(P_(P, 7), 0.0, 1.0) == 1.0;
+  float highlight = P_(P, 8);
+  s.hasStripes = numStripes != 0.0;
+  s.negStripes = numStripes < 0.0;
+  float absStripes = abs(numStripes);
+  s.midAngle = kTwoPi / s.numEdges;
+  s.angStripes = 0.0;
+  s.angStart = 0.0;
+  s.ratioComplement = 0.0;
+  if (s.hasStripes) {
+    s.angStripes = s.midAngle / (2.0 * absStripes);
+    s.angStart = s.angStripes / 2.0;
+    s.ratioComplement = 2.0 - s.ratioStripes;
+  }
+  if (s.ratioHole > 0.95 && s.exactCalc && !s.circumCircle) s.ratioHole = 0.95;
+  s.tan90m2 = tan(kPi / 2.0 + s.midAngle / 2.0);
+  float sinA = sin(s.midAngle / 2.0), cosA = cos(s.midAngle / 2.0);
+  if (!(highlight > 0.1)) highlight = 0.1;
+  float adjusted = w;
+  if (adjustToLinear) {
+    float turns = fmodc(s.numEdges, 4.0) == 0.0 ? s.numEdges / 2.0 - 1.0 : floor(s.numEdges / 2.0);
+    adjusted = w / fractoriumZeps(sqrt(2.0 - 2.0 * cos(s.midAngle * turns)) / 2.0);
+  }
+  if (s.circumCircle) {
+    s.exactCalc = false;
+    highlight = 0.1;
+  }
+  s.speedCalc1 = s.ratioComplement * s.angStart;
+  s.speedCalc2 = s.ratioStripes * s.angStart;
+  s.maxStripes = 2.0 * absStripes;
+  s.arcTan1 = (s.negStripes ? 7.5 : 13.0) / pow(s.numEdges, 1.3) * highlight;
+  s.arcTan2 = 2.0 * atan(s.arcTan1 / -2.0);
+  float lenOuter;
+  vec4 point = jwf_nBlurPoint(s, lenOuter);
+  for (int tries = 1; s.exactCalc && tries < 100 && (point.z < point.w || point.z > lenOuter); ++tries)
+    point = jwf_nBlurPoint(s, lenOuter);
+  return vec3(adjusted * (cosA * point.x - sinA * point.y), adjusted * (sinA * point.x + cosA * point.y), w * p.z);
+}
