@@ -247,6 +247,16 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       synthCase({0.4, 17.0, 1.3, 0.8, 1.0}),
       synthCase({0.4, 23.0, 1.0, 0.8, 0.0}),
       synthCase({1.2, 26.0, 1.5, 0.8, 0.0}),
+      synthCase({0.4, 1.0, 1.0, 0.8, 1.0}),
+      synthCase({0.4, 4.0, 1.0, 0.8, 1.0}),
+      synthCase({0.4, 8.0, 1.0, 0.8, 1.0}),
+      synthCase({0.4, 12.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 16.0, 1.0, 0.8, 1.0}),
+      synthCase({0.4, 18.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 19.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 20.0, 1.5, 0.8, 0.0}),
+      synthCase({0.4, 21.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 25.0, 1.0, 0.8, 0.0}),
   };
   cases.insert(cases.end(), more.begin(), more.end());
   int checked = 0;
