@@ -169,6 +169,13 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
   };
   std::vector<Case> cases;
   for (const std::string& name : gl::gpuFlameVariations()) cases.push_back({name, {}});
+  // synth with five waves (shapes, skews and layers of every kind) after its base parameters.
+  const auto synthCase = [](std::vector<double> params) {
+    const std::vector<double> waves = {0.3, 0.0, 0.0, 2.0, 0.3, 0.0, 0.2, 4.0, 0.3, 3.0,  0.0, 1.0, 0.25, 3.0,  -0.2,
+                                       1.5, 0.5, 2.0, 0.1, 7.0, 0.0, 5.0, 0.2, 3.0, 0.15, 6.0, 0.0, 1.0,  -0.4, 0.0};
+    params.insert(params.end(), waves.begin(), waves.end());
+    return Case{"synth", params};
+  };
   const std::vector<Case> more = {
       {"mobius", {0.7, 0.3, -0.2, 0.4, 0.5, -0.6, 1.1, 0.2}},
       {"crop", {-0.6, -0.8, 0.9, 0.7, 0.5, 0.0}},
@@ -322,6 +329,58 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"inversion", {1.1, 0.1, 5.0, 0.0, 0.0, 1.5, 1.2, 2.5, 2.0, 3.0, 2.5, 0.0, 1.0,
                      2.0, 2.0, 1.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0}},
       {"crown_js", {3.0, 0.9}},
+      {"linearT", {2.0, 0.5}},
+      {"polynomial", {2.0, 0.5, 0.3, -0.2, 0.1, 0.4}},
+      {"projective", {0.3, -0.2, 1.0, 1.0, 0.5, 0.1, -0.3, 1.0, 0.2}},
+      {"lazyjess", {2.0, 1.0, 0.3, 2.0}},
+      {"lazyjess", {6.0, 0.7, 0.4, 2.0}},
+      {"loonie2", {5.0, 0.4, 0.3, 4.0}},
+      {"loonie2", {2.0, -0.3, 0.5, 4.0}},
+      {"mcarpet", {0.5, 0.7, 0.3, 0.4}},
+      {"mobius_strip", {2.0, 1.0, 6.28, 1.0, 0.3, 0.2}},
+      {"murl", {0.6, 3.0}},
+      {"murl2", {0.5, 3.0}},
+      {"murl2", {-0.4, -2.0}},
+      {"ortho", {1.3, -0.8}},
+      {"oscilloscope2", {0.5, 3.14, 3.14, 1.0, 1.0, 0.7}},
+      {"rotate", {30.0}},
+      {"shift", {0.3, -0.2, 40.0}},
+      {"sigmoid", {0.5, -0.3}},
+      {"sigmoid", {0.0, -2.0}},
+      {"target", {0.5, 1.7, 0.8}},
+      {"target0", {0.5, 1.7, 0.6}},
+      {"target2", {0.5, 1.7, 0.8, 0.9}},
+      {"xheart", {1.0, 0.5}},
+      {"unicorngaloshen", {1.0, 1.2, 0.5, 1.0, 0.1, 2.0, 0.2, 1.0}},
+      {"unicorngaloshen", {1.0, 1.2, 0.5, 1.0, 0.1, 2.0, 0.2, 3.0}},
+      {"unicorngaloshen", {1.0, 1.2, 0.5, 1.0, 0.1, 2.0, 0.2, 4.0}},
+      {"waves22", {0.3, 0.2, 3.0, 2.0, 1.0, 0.0, 3.0, -1.0}},
+      {"waves2_radial", {7.0, 0.1, 13.0, 0.1, 0.5, 2.0}},
+      {"waves2b", {2.0, 3.0, 0.00005, -0.00005, 1.0, 0.5, 0.8, 1.2, 1.0, 0.4}},
+      {"waves2b", {2.0, 3.0, 0.00005, 1.5, 1.0, 0.5, 0.8, 1.2, 1.0, -0.5}},
+      {"waves4", {0.05, 0.05, 7.0, 13.0, 1.0, 0.1}},
+      {"w", {0.7, 0.8, 5.0, 1.2, 0.6, 5.0, 1.0, 0.3, 1.0, 0.5, 3.0, 1.5, 1.0, 1.0}},
+      {"x", {0.8, 5.0, 1.2, 0.6, 5.0, 1.0, 0.3, 1.0, 0.5, 3.0, 1.5, 1.0, 1.0}},
+      {"z", {0.8, 5.0, 1.2, 0.6, 5.0, 1.0, 0.3, 1.0, 0.5, 3.0, 1.5, 1.0, 1.0}},
+      {"xtrb", {3.0, 1.2, 0.3, 1.5, 0.6, 0.2}},
+      synthCase({0.4, 13.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 14.0, 1.0, 0.8, 1.0}),
+      synthCase({0.4, 0.0, 0.5, 0.8, 1.0}),
+      synthCase({0.4, 15.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 2.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 17.0, 1.3, 0.8, 1.0}),
+      synthCase({0.4, 23.0, 1.0, 0.8, 0.0}),
+      synthCase({1.2, 26.0, 1.5, 0.8, 0.0}),
+      synthCase({0.4, 1.0, 1.0, 0.8, 1.0}),
+      synthCase({0.4, 4.0, 1.0, 0.8, 1.0}),
+      synthCase({0.4, 8.0, 1.0, 0.8, 1.0}),
+      synthCase({0.4, 12.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 16.0, 1.0, 0.8, 1.0}),
+      synthCase({0.4, 18.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 19.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 20.0, 1.5, 0.8, 0.0}),
+      synthCase({0.4, 21.0, 1.0, 0.8, 0.0}),
+      synthCase({0.4, 25.0, 1.0, 0.8, 0.0}),
   };
   cases.insert(cases.end(), more.begin(), more.end());
   int checked = 0;
