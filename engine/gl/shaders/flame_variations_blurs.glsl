@@ -6,7 +6,7 @@
 
 // pow that C's pow matches at a zero base (GLSL leaves pow(0, y) undefined).
 float blurs_pow(float x, float y) {
-  if (x == 0.0) return y > 0.0 ? 0.0 : (y == 0.0 ? 1.0 : 1.0 / 0.0);
+  if (x == 0.0) return y > 0.0 ? 0.0 : (y == 0.0 ? 1.0 : uintBitsToFloat(0x7f800000u));  // +∞
   return pow(x, y);
 }
 // std::round: half away from zero.
