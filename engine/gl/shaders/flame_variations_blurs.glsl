@@ -1,3 +1,861 @@
 // Flame variations for the GPU backend (flame_variations.glsl has the conventions and the helpers):
 // the CPU catalogue's variations_blurs.cpp, variations_blurs_more.cpp, variations_blur_b2.cpp and variations_truchet.cpp
 // (engine/core/flame/), in float.
+
+// ---- helpers (blurs_ prefix: the family files share one shader) ---------------------------------
+
+// pow that C's pow matches at a zero base (GLSL leaves pow(0, y) undefined).
+float blurs_pow(float x, float y) {
+  if (x == 0.0) return y > 0.0 ? 0.0 : (y == 0.0 ? 1.0 : uintBitsToFloat(0x7f800000u));  // +∞
+  return pow(x, y);
+}
+// std::round: half away from zero.
+float blurs_round(float v) { return sign(v) * floor(abs(v) + 0.5); }
+// Whether a whole number is odd, as fmod(v, 2) != 0 (NaN and ±∞ count as odd, as there).
+bool blurs_isOdd(float v) { return !(mod(v, 2.0) == 0.0); }
+// 2π · frac(k/n): the angle 2πk/n of a random branch k reduced in double, where k (up to 32767 or
+// 2²⁴) times 2π/n is too large for float's cos and sin.
+float blurs_turns(float k, float n) {
+  double t = double(k) / double(n);
+  return float(t - floor(t)) * kTwoPi;
+}
+// sin in double (GLSL has no double trig): Cody–Waite reduction by π/2 and Taylor series on
+// [−π/4, π/4], within a few ulp; the shader hash below multiplies it by 43758.
+double blurs_dsin(double v) {
+  double q = floor(v * 0.63661977236758134lf + 0.5lf);
+  precise double r = fma(-q, 1.5707963267948966lf, v) - q * 6.123233995736766e-17lf;
+  double r2 = r * r;
+  double s = r * (1.0lf + r2 * (-1.6666666666666666e-1lf + r2 * (8.333333333333333e-3lf + r2 * (-1.984126984126984e-4lf
+             + r2 * (2.7557319223985893e-6lf + r2 * (-2.505210838544172e-8lf + r2 * (1.6059043836821613e-10lf
+             + r2 * (-7.647163731819816e-13lf + r2 * (2.8114572543455206e-15lf + r2 * -8.22063524662433e-18lf)))))))));
+  double c = 1.0lf + r2 * (-0.5lf + r2 * (4.1666666666666664e-2lf + r2 * (-1.388888888888889e-3lf
+             + r2 * (2.48015873015873e-5lf + r2 * (-2.755731922398589e-7lf + r2 * (2.08767569878681e-9lf
+             + r2 * (-1.1470745597729725e-11lf + r2 * (4.779477332387385e-14lf + r2 * -1.5619206968586225e-16lf))))))));
+  int n = int(q) & 3;
+  return n == 0 ? s : (n == 1 ? c : (n == 2 ? -s : -c));
+}
+// Fractorium's HashShadertoy, fract(43758.5453 sin(12.9898 a + 78.233 b + seed)), in double: float's
+// sin of its argument is far too coarse for the fraction.
+double blurs_dhash(double a, double b, double seed) {
+  precise double v = blurs_dsin(a * 12.9898lf + b * 78.233lf + seed) * 43758.5453lf;
+  return v - floor(v);
+}
+float blurs_hash(double a, double b, double seed) { return float(blurs_dhash(a, b, seed)); }
+// Fractorium's REAL_CYCLIC, fmod from the end the value left.
+float blurs_cyclic(float v, float lo, float hi) {
+  if (v > hi) return lo + fmodc(v - lo, hi - lo);
+  if (v < lo) return hi - fmodc(hi - v, hi - lo);
+  return v;
+}
+// Fractorium's integer parameter: ⌊v + ½⌋ clamped.
+float blurs_integer(float v, float lo, float hi) { return clamp(floor(v + 0.5), lo, hi); }
+// REAL_NONZERO: within 10⁻⁶ of 0 becomes ±ε.
+float blurs_nonzero(float v) { return v > -1e-6 && v < 1e-6 ? (v < 0.0 ? -kFractoriumEps : kFractoriumEps) : v; }
+
+// ---- variations_blurs.cpp ----------------------------------------------------------------------
+
+vec3 V_gaussian(vec3 p, float w, int P, int A) {
+  float angle = psi() * kTwoPi;
+  float r = w * gaussPsi();
+  return vec3(r * cos(angle) + p.x, r * sin(angle) + p.y, w * p.z);
+}
+vec3 V_blur_square(vec3 p, float w, int P, int A) {
+  float a = psi(), b = psi();
+  return vec3(2.0 * w * (a - 0.5), 2.0 * w * (b - 0.5), w * p.z);
+}
+vec3 V_circleblur(vec3 p, float w, int P, int A) {
+  float rad = sqrt(psi());
+  float angle = psi() * kTwoPi;
+  return vec3(w * cos(angle) * rad, w * sin(angle) * rad, w * p.z);
+}
+vec3 V_blur_pixelize(vec3 p, float w, int P, int A) {
+  float size = max(P_(P, 0), kFractoriumEps), inverse = 1.0 / size, v = w * size, scale = P_(P, 1);
+  float cx = floor(p.x * inverse), cy = floor(p.y * inverse);
+  float a = psi(), b = psi();
+  return vec3(v * (cx + scale * (a - 0.5) + 0.5), v * (cy + scale * (b - 0.5) + 0.5), w * p.z);
+}
+vec3 V_blur_heart(vec3 p, float w, int P, int A) {
+  float pw = P_(P, 0), a = P_(P, 1), b = P_(P, 2), scale = fractoriumZeps(abs(a) + abs(b));
+  float u = (psi() - 0.5) * 2.0;
+  float v = (psi() - 0.5) * 2.0;
+  float k = v < 0.0 ? -1.0 : 1.0;
+  float limit = (a * blurs_pow(abs(u), pw) + k * b * sqrt(abs(1.0 - u * u)) - a) / scale;
+  v = k > 0.0 ? min(v, limit) : max(v, limit);
+  return w * vec3(u, v, p.z);
+}
+vec3 V_d_spherical(vec3 p, float w, int P, int A) {
+  float r2 = p.x * p.x + p.y * p.y;
+  float f = psi() < P_(P, 0) ? w / fractoriumZeps(r2) : w;
+  return vec3(f * p.x, f * p.y, w * p.z);
+}
+vec3 V_juliaq(vec3 p, float w, int P, int A) {
+  float power = fractoriumZeps(P_(P, 0)), inverse = P_(P, 1) / power;
+  float k = floor(psi() * 32767.0);
+  float a = atan2c(p.y, p.x) * inverse + blurs_turns(k, power);
+  float r = w * blurs_pow(p.x * p.x + p.y * p.y, 0.5 * inverse);
+  return vec3(r * cos(a), r * sin(a), w * p.z);
+}
+vec3 V_Juliac(vec3 p, float w, int P, int A) {
+  float reInverse = 1.0 / fractoriumZeps(P_(P, 0));
+  double re = 1.0lf / double(reInverse);
+  float im = 0.01 * P_(P, 1), halfDist = 0.5 * P_(P, 2);
+  double k = double(floor(psi() * 16777216.0));
+  float branch = float(k - re * trunc(k / re));  // C's fmod(k, re), k ≥ 0
+  float arg = atan2c(p.y, p.x) + branch * kTwoPi;
+  float lnmod = halfDist * log(p.x * p.x + p.y * p.y);
+  float angle = arg * reInverse + lnmod * im;
+  float m = w * exp(lnmod * reInverse - arg * im);
+  return vec3(m * cos(angle), m * sin(angle), w * p.z);
+}
+// cos(a t) − cosh t as −2 (sin²(a t/2) + sinh²(t/2)): float's difference of the two near t = 0 loses
+// what the pole's huge values need.
+vec3 V_coth_spiral(vec3 p, float w, int P, int A) {
+  float a = P_(P, 0);
+  float t = (psi() - 0.5) * kTwoPi;
+  float sa = sin(0.5 * a * t), sh = sinh(0.5 * t);
+  float aux = fractoriumZeps(-2.0 * (sa * sa + sh * sh));
+  return vec3(w * (-sinh(t) / aux), w * (sin(a * t) / aux), w * p.z);
+}
+vec3 V_depth_gaussian(vec3 p, float w, int P, int A) {
+  float blur = P_(P, 0) / 10.0, radius = P_(P, 1);
+  float r = sqrt(-2.0 * log(1.0 - psi()));
+  float angle = psi() * kTwoPi;
+  float rad = sqrt(p.x * p.x + p.y * p.y);
+  float aux = rad > radius ? r * blur * (rad - radius) : 0.0;
+  return w * vec3(p.x + aux * cos(angle), p.y + aux * sin(angle), p.z);
+}
+vec3 V_depth_ngon(vec3 p, float w, int P, int A) {
+  float side = kTwoPi / fractoriumZeps(P_(P, 0)), halfSide = side / 2.0, blur = P_(P, 1) / 10.0, radius = P_(P, 2);
+  float angle = psi() * kTwoPi;
+  float phi = angle - side * floor(angle / fractoriumZeps(side));
+  phi = phi > halfSide ? phi - side : phi;
+  float rad = sqrt(p.x * p.x + p.y * p.y);
+  float stretch = 1.0 / fractoriumZeps(cos(phi));
+  float aux = rad > radius ? stretch * blur * (rad - radius) : 0.0;
+  return w * vec3(p.x + aux * cos(angle), p.y + aux * sin(angle), p.z);
+}
+// Fractorium's flam3-compatible depth_ngon2 is depth_ngon (its other parameters act in the other form).
+vec3 V_depth_ngon2(vec3 p, float w, int P, int A) { return V_depth_ngon(p, w, P, A); }
+vec3 V_depth_sine(vec3 p, float w, int P, int A) {
+  float power = max(P_(P, 0), 0.0), blur = P_(P, 1) / 10.0, radius = P_(P, 2);
+  float angle = psi() * kTwoPi;
+  float u = psi();
+  float r = power == 1.0 ? acos(u * 2.0 - 1.0) / kPi : acos(exp(log(1.0 - u) * power) * 2.0 - 1.0) / kPi;
+  float rad = sqrt(p.x * p.x + p.y * p.y);
+  float aux = rad > radius ? r * blur * (rad - radius) : 0.0;
+  return w * vec3(p.x + aux * cos(angle), p.y + aux * sin(angle), p.z);
+}
+// cosh τ − cos σ as 2 (sinh²(τ/2) + sin²(σ/2)), free of float's cancellation where both are near 1.
+vec3 V_bTransform(vec3 p, float w, int P, int A) {
+  float rotate = P_(P, 0), power = clamp(P_(P, 1), 1.0, 2147483647.0), move = P_(P, 2), split = P_(P, 3);
+  float xp1 = p.x + 1.0, y2 = p.y * p.y;
+  float tau = 0.5 * (log(xp1 * xp1 + y2) - log((p.x - 1.0) * (p.x - 1.0) + y2)) / power + move;
+  float sigma = kPi - atan2c(p.y, xp1) - atan2c(p.y, 1.0 - p.x) + rotate;
+  sigma = sigma / power + kTwoPi / power * floor(psi() * power);
+  tau += p.x >= 0.0 ? split : -split;
+  float sh = sinh(0.5 * tau), ss = sin(0.5 * sigma);
+  float d = fractoriumZeps(2.0 * (sh * sh + ss * ss));
+  return vec3(w * sinh(tau) / d, w * sin(sigma) / d, w * p.z);
+}
+vec3 V_boarders2(vec3 p, float w, int P, int A) {
+  float c = fractoriumZeps(abs(P_(P, 0))), cl = c * fractoriumZeps(abs(P_(P, 1)));
+  float cr = c + c * fractoriumZeps(abs(P_(P, 2)));
+  float rx = blurs_round(p.x), ry = blurs_round(p.y);
+  float dx = p.x - rx, dy = p.y - ry;
+  float px = dx * c + rx, py = dy * c + ry;
+  if (psi() < cr) {
+    if (abs(dx) >= abs(dy)) {
+      float side = dx >= 0.0 ? cl : -cl;
+      px += side;
+      py += side * dy / fractoriumZeps(dx);
+    } else {
+      float side = dy >= 0.0 ? cl : -cl;
+      py += side;
+      px += dx / dy * side;
+    }
+  }
+  return vec3(w * px, w * py, w * p.z);
+}
+vec3 V_GlynnSim5(vec3 p, float w, int P, int A) {
+  float radius = P_(P, 0), inner = P_(P, 0) + P_(P, 1), contrast = clamp(P_(P, 2), 0.0, 1.0), power = P_(P, 3);
+  float u = psi();
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  float alpha = abs(radius / fractoriumZeps(r));
+  vec2 q = vec2(0.0);
+  if (!(r < inner)) q = u > contrast * blurs_pow(alpha, power) ? w * p.xy : vec2(w * alpha * alpha);
+  return vec3(q, w * p.z);
+}
+vec3 V_GlynnSim4(vec3 p, float w, int P, int A) {
+  float radius = P_(P, 0), contrast = clamp(P_(P, 1), 0.0, 1.0), power = P_(P, 2);
+  float u = psi();
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  float alpha = abs(radius / fractoriumZeps(r));
+  float f = u > contrast * blurs_pow(alpha, power) ? w : w * (alpha * alpha);
+  return vec3(r < radius ? w * vec2(P_(P, 3), P_(P, 4)) : f * p.xy, w * p.z);
+}
+vec3 V_checks(vec3 p, float w, int P, int A) {
+  float cx = P_(P, 0), cy = P_(P, 1), cells = 1.0 / fractoriumZeps(P_(P, 2)), spread = P_(P, 3);
+  float rx = spread * psi();
+  float ry = spread * psi();
+  float sum = blurs_round(p.x * cells) + blurs_round(p.y * cells);
+  bool odd = abs(fmodc(sum, 2.0)) == 1.0;
+  return w * vec3(p.x + (odd ? rx - cx : cx), p.y + (odd ? -cy : cy + ry), p.z);
+}
+// r + x as y²/(r − x) for x < 0, where float's sum cancels.
+vec3 V_glynnia2(vec3 p, float w, int P, int A) {
+  float v2 = w * sqrt(2.0) / 2.0;
+  bool root = psi() > 0.5;
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  bool upper = r > 0.0 && p.y > 0.0;
+  float sgn = upper ? 1.0 : -1.0;
+  float rx = p.x < 0.0 ? p.y * p.y / (r - p.x) : r + p.x;
+  if (root) {
+    float d = sqrt(rx);
+    d = upper ? d : fractoriumZeps(d);
+    return vec3(sgn * v2 * d, -(v2 / d * p.y), w * p.z);
+  }
+  float g = sqrt(r * (p.y * p.y + rx * rx));
+  float f = w / (upper ? g : fractoriumZeps(g));
+  return vec3(sgn * f * rx, f * p.y, w * p.z);
+}
+vec3 V_hex_rand(vec3 p, float w, int P, int A) {
+  const float kSqrt3Half = 0.86602540378443865, kTwoOverSqrt3 = 1.1547005383792515, kThirdTurn = 2.0943951023931955;
+  float cellsX = P_(P, 0), cellsY = P_(P, 1), halfSize = P_(P, 2) * 0.5, power = P_(P, 3);
+  float density = clamp(P_(P, 4), 0.0, 1.0);
+  double seed = double(P_(P, 5));
+  // The angle within the hexagon's six triangles, and the distance to its edge in that direction.
+  float k = psi() * 6.0;
+  float sector = floor(k), t = k - sector;
+  float edge = sqrt(1.0 + t * t - t);
+  float sgn = sector - floor(k / 2.0) * 2.0 == 1.0 ? 1.0 : -1.0;
+  float angle = kThirdTurn * floor(sector / 2.0) + sgn * asin(kSqrt3Half * t / edge) - kPi / 2.0;
+  float cx = floor(psi() * cellsX * 2.0) - cellsX;
+  float cy = floor(psi() * cellsY * 2.0) - cellsY;
+  // The hashes take the centre as the CPU computes it, in double.
+  double hx = double(cx) + 0.5lf * double(cy), hy = double(cy) * 0.86602540378443864676lf;
+  float spread = sqrt(psi());
+  vec2 q = vec2(0.0);
+  if (blurs_hash(hy, hx, seed) < density) {
+    float r = halfSize * edge * spread * kTwoOverSqrt3 * blurs_pow(blurs_hash(hx, hy, seed), power);
+    q = vec2((cos(angle) * r + float(hx)) * w, (sin(angle) * r + float(hy)) * w);
+  }
+  return vec3(q, w * p.z);
+}
+// crackle2's jittered point of the unit cell c.
+vec2 blurs_cracklePoint(float cx, float cy, float jitter) {
+  return vec2(cx + jitter * blurs_hash(double(cx), double(cy), 34554.0lf),
+              cy + jitter * blurs_hash(double(cy), double(cx) * 3.0lf, 34561.0lf));
+}
+vec3 V_crackle2(vec3 p, float w, int P, int A) {
+  float cellsize = max(P_(P, 0), 0.0001), jitter = 1.0 / fractoriumZeps(cellsize);
+  float cx = floor(p.x), cy = floor(p.y);
+  vec2 q0 = blurs_cracklePoint(cx, cy, jitter);
+  bool vertical = psi() < 0.5;
+  float step_ = psi() < 0.5 ? 1.0 : -1.0;
+  float nx = vertical ? cx : cx + step_, ny = vertical ? cy + step_ : cy;
+  vec2 q1 = blurs_cracklePoint(nx, ny, jitter);
+  float t = psi();
+  return vec3((q0 + (q1 - q0) * t) * cellsize, w * p.z);
+}
+vec3 V_cpow3(vec3 p, float w, int P, int A) {
+  float r = P_(P, 0), d = fractoriumZeps(P_(P, 1)), divisor = fractoriumZeps(P_(P, 2)), spread = P_(P, 3);
+  float a0 = atan2c((d < 0.0 ? -log(-d) : log(d)) * r, kTwoPi);
+  float c = cos(a0) * r * cos(a0) / divisor, e = cos(a0) * r * sin(a0) / divisor;
+  float coeff = e == 0.0 ? 0.0 : -0.095 * spread / e;
+  float a = atan2c(p.y, p.x);
+  a = a < 0.0 ? a + kTwoPi : a;
+  a = cos(a / 2.0) < 2.0 * psi() - 1.0 ? a - kTwoPi : a;
+  float sgn = psi() < 0.5 ? kTwoPi : -kTwoPi;
+  a += sgn * blurs_round(log(1.0 - psi()) * coeff);
+  float k = floor(psi() * 32767.0);
+  float lnr2 = log(p.x * p.x + p.y * p.y);
+  float m = w * exp(c / 2.0 * lnr2 - e * a);
+  float angle = c * a + e / 2.0 * lnr2 + blurs_turns(k, divisor);
+  return vec3(m * cos(angle), m * sin(angle), w * p.z);
+}
+
+// ---- variations_blurs_more.cpp -----------------------------------------------------------------
+
+// Hugo Elias' integer noise of a cell in [0, 1] (Fractorium's DiscreteNoise2), int arithmetic
+// wrapping as Java's does.
+float blurs_cellNoise(int x, int y) {
+  uint k = uint(x) + uint(y) * 57u;
+  k = (k << 13) ^ k;
+  uint v = k * (k * k * 15731u + 789221u) + 1376312589u;
+  return float(double(v & 0x7fffffffu) * (1.0lf / 2147483647.0lf));
+}
+// Java's (int) of a whole float: saturating, NaN as 0.
+int blurs_javaInt(float v) {
+  if (isnan(v)) return 0;
+  if (v >= 2147483647.0) return 2147483647;
+  if (v <= -2147483648.0) return -2147483647 - 1;
+  return int(v);
+}
+vec3 V_asteria(vec3 p, float w, int P, int A) {
+  float alpha = blurs_cyclic(P_(P, 0), 0.0, 1.0);
+  float s = sin(kPi * alpha), c = cos(kPi * alpha);
+  float u = psi();
+  float x0 = w * p.x, y0 = w * p.y;
+  float r = x0 * x0 + y0 * y0;
+  float ax = abs(x0) - 1.0, ay = abs(y0) - 1.0;
+  bool inside = r < 1.0, nearCorner = sqrt(ax * ax + ay * ay) < 1.0;
+  bool keep = inside && nearCorner ? u > 0.35 : !inside;
+  if (keep) return vec3(x0, y0, w * p.z);
+  float xx = x0 * c - y0 * s, yy = x0 * s + y0 * c;
+  float t = 1.0 - abs(yy);
+  float nx = xx / sqrt(max(1.0 - yy * yy, kEpsilon)) * (1.0 - sqrt(max(1.0 - t * t, 0.0)));
+  return vec3(nx * c + yy * s, -nx * s + yy * c, w * p.z);
+}
+vec3 V_Circle_Rand(vec3 p, float w, int P, int A) {
+  float sideX = P_(P, 0) * 0.5, sideY = P_(P, 1) * 0.5, size = max(P_(P, 2), 0.0), power = P_(P, 3);
+  float density = clamp(P_(P, 4), 0.0, 1.0);
+  double seed = double(P_(P, 5));
+  float a = psi() * kTwoPi;
+  float r = sqrt(psi());
+  float cx = 2.0 * (floor(psi() * sideX * 2.0 + 0.5) - sideX);
+  float cy = 2.0 * (floor(psi() * sideY * 2.0 + 0.5) - sideY);
+  float ret = blurs_hash(double(cy), double(cx), seed) < density
+                  ? size * r * exp(log(blurs_hash(double(cx), double(cy), seed)) * power)
+                  : 0.0;
+  vec2 q = ret > 0.0 ? w * vec2(cos(a) * ret + cx, sin(a) * ret + cy) : vec2(0.0);
+  return vec3(q, w * p.z);
+}
+// The point is the last drawn one: the CPU moves it into its cell and back, which float need not copy.
+// The loop runs to its end without `break`: llvmpipe handed a draw of the try after the last to q.x
+// when the loop broke off.
+vec3 V_CircleRand(vec3 p, float w, int P, int A) {
+  float sc = blurs_nonzero(P_(P, 0)), dens = P_(P, 1), spanX = P_(P, 2), spanY = P_(P, 3);
+  float seed = blurs_integer(P_(P, 4), -2147483647.0, 2147483647.0);
+  vec2 q = vec2(0.0);
+  bool done = false;
+  for (int tries = 1; tries <= 11; ++tries) {
+    if (done) continue;
+    float u1 = psi();
+    float u2 = psi();
+    q = vec2(spanX * (1.0 - 2.0 * u1), spanY * (1.0 - 2.0 * u2));
+    float m = floor(0.5 * q.x / sc), k = floor(0.5 * q.y / sc);
+    float dx = q.x - (m * 2.0 + 1.0) * sc, dy = q.y - (k * 2.0 + 1.0) * sc;
+    bool outside = blurs_cellNoise(blurs_javaInt(m + seed), blurs_javaInt(k)) > dens ||
+                   sqrt(dx * dx + dy * dy) >
+                       (0.3 + 0.7 * blurs_cellNoise(blurs_javaInt(m + 10.0), blurs_javaInt(k + 3.0))) * sc;
+    done = tries > 10 || !outside;
+  }
+  return w * vec3(q, p.z);
+}
+vec3 V_CircleTrans1(vec3 p, float w, int P, int A) {
+  float sc = fractoriumZeps(blurs_nonzero(P_(P, 0))), dens = P_(P, 1), cx = P_(P, 2), cy = P_(P, 3);
+  float seed = blurs_integer(P_(P, 4), -2147483647.0, 2147483647.0);
+  float spanX = abs(cx), spanY = abs(cy);
+  float ux = (p.x - cx) * 0.5 + cx, uy = (p.y - cy) * 0.5 + cy;
+  float m = floor(0.5 * ux / sc), k = floor(0.5 * uy / sc);
+  float dx = ux - (m * 2.0 + 1.0) * sc, dy = uy - (k * 2.0 + 1.0) * sc;
+  bool keep = blurs_cellNoise(blurs_javaInt(m + seed), blurs_javaInt(k)) > dens ||
+              sqrt(dx * dx + dy * dy) >
+                  (0.3 + 0.7 * blurs_cellNoise(blurs_javaInt(m + 10.0), blurs_javaInt(k + 3.0))) * sc;
+  // The random circle point (Fractorium's CircleR), drawn by every point; no `break`, as in CircleRand.
+  float rx = 0.0, ry = 0.0, rm = 0.0, rk = 0.0;
+  bool done = false;
+  for (int tries = 1; tries <= 11; ++tries) {
+    if (done) continue;
+    float qx = spanX * (1.0 - 2.0 * psi());
+    float qy = spanY * (1.0 - 2.0 * psi());
+    rm = floor(0.5 * qx / sc);
+    rk = floor(0.5 * qy / sc);
+    float angle = kTwoPi * psi();
+    float u = 0.3 + 0.7 * blurs_cellNoise(blurs_javaInt(rm + 10.0), blurs_javaInt(rk + 3.0));
+    rx = u * cos(angle);
+    ry = u * sin(angle);
+    done = tries > 10 || !(blurs_cellNoise(blurs_javaInt(rm + seed), blurs_javaInt(rk)) > dens);
+  }
+  ux = keep ? ux : rx + (rm * 2.0 + 1.0) * sc;
+  uy = keep ? uy : ry + (rk * 2.0 + 1.0) * sc;
+  return w * vec3(ux, uy, p.z);
+}
+// Below a spread of 1 Fractorium's branch is any 32-bit integer: the angle is then as good as random
+// and float cannot follow the CPU's (nor need to).
+vec3 V_cpow2(vec3 p, float w, int P, int A) {
+  float divisor = P_(P, 2), spread = fractoriumZeps(P_(P, 3));
+  float c = P_(P, 0) * cos(kPi / 2.0 * P_(P, 1)) / divisor, d = P_(P, 0) * sin(kPi / 2.0 * P_(P, 1)) / divisor;
+  float branches = spread >= 1.0 ? min(floor(spread), 4294967295.0) : 0.0;
+  float u = psi();
+  float a = atan2c(p.y, p.x);
+  float k = branches >= 1.0 ? floor(u * branches) : floor(u * 4294967296.0) - 2147483648.0;
+  k += a < 0.0 ? 1.0 : 0.0;
+  a += kTwoPi * k;
+  if (cos(a * (0.5 / spread)) < psi() * 2.0 - 1.0) a -= kTwoPi * spread;
+  float lnr2 = log(p.x * p.x + p.y * p.y);
+  float r = w * exp(c / 2.0 * lnr2 - d * a);
+  float t = c * a + d / 2.0 * lnr2 + blurs_turns(floor(psi() * 32767.0), divisor);
+  return vec3(r * cos(t), r * sin(t), w * p.z);
+}
+// depth_blur's star (starShape and starPoint in the CPU file): the offset's length factor, and its
+// angle in `angle`. s = (length, sin α, cos α, 2 power), step = 2π/power.
+vec4 blurs_starShape(float power, float range) {
+  float alpha0 = kPi / fractoriumZeps(power);
+  float length_ = sqrt(1.0 + range * range - 2.0 * range * cos(alpha0));
+  float alpha = asin(sin(alpha0) * range / fractoriumZeps(length_));
+  return vec4(length_, sin(alpha), cos(alpha), power * 2.0);
+}
+float blurs_starPoint(vec4 s, float step_, float oddSign, float u1, float u2, out float angle) {
+  float f = u1 * s.w;
+  float whole = trunc(f);
+  f -= whole;
+  float t = f * s.x;
+  float zz = sqrt(1.0 + t * t - 2.0 * t * s.z);
+  float turn = asin(s.y * t / fractoriumZeps(zz));
+  angle = step_ * trunc(whole / 2.0) + (blurs_isOdd(whole) ? oddSign : -oddSign) * turn - kPi / 2.0;
+  return zz * sqrt(u2);
+}
+vec3 V_depth_blur(vec3 p, float w, int P, int A) {
+  vec4 star = blurs_starShape(P_(P, 0), P_(P, 1));
+  float blur = P_(P, 2) / 10.0, radius = P_(P, 3);
+  float u1 = psi(), u2 = psi();
+  float angle;
+  float len = blurs_starPoint(star, kTwoPi / fractoriumZeps(P_(P, 0)), -1.0, u1, u2, angle);
+  float rad = sqrt(p.x * p.x + p.y * p.y);
+  float aux = rad > radius ? len * blur * (rad - radius) : 0.0;
+  return w * vec3(p.x + aux * cos(angle), p.y + aux * sin(angle), p.z);
+}
+vec3 V_depth_blur2(vec3 p, float w, int P, int A) {
+  vec4 star = blurs_starShape(P_(P, 0), P_(P, 1));
+  float blur = P_(P, 2) / 10.0, radius = P_(P, 3), x0 = P_(P, 4), y0 = P_(P, 5);
+  float invMulX = 1.0 / fractoriumZeps(P_(P, 6)), invMulY = 1.0 / fractoriumZeps(P_(P, 7)), power = P_(P, 8);
+  float u1 = psi(), u2 = psi();
+  float angle;
+  float len = blurs_starPoint(star, kTwoPi / fractoriumZeps(P_(P, 0)), 1.0, u1, u2, angle);
+  float dx = (p.x - x0) * invMulX, dy = (p.y - y0) * invMulY;
+  float rad = sqrt(dx * dx + dy * dy);
+  float aux = rad > radius ? len * blur * exp(log(rad - radius) * power) : 0.0;
+  return w * vec3(p.x + aux * cos(angle), p.y + aux * sin(angle), p.z);
+}
+vec3 V_depth_gaussian2(vec3 p, float w, int P, int A) {
+  float blur = P_(P, 0) / 10.0, radius = P_(P, 1), x0 = P_(P, 2), y0 = P_(P, 3);
+  float invMulX2 = 1.0 / fractoriumZeps(P_(P, 4) * P_(P, 4)), invMulY2 = 1.0 / fractoriumZeps(P_(P, 5) * P_(P, 5));
+  float power = P_(P, 6);
+  float r = sqrt(-2.0 * log(1.0 - psi()));
+  float angle = psi() * kTwoPi;
+  float dx = (p.x - x0) / invMulX2, dy = (p.y - y0) / invMulY2;
+  float rad = sqrt(dx * dx + dy * dy);
+  float aux = rad > radius ? r * blur * exp(log(rad - radius) * power) : 0.0;
+  return w * vec3(p.x + aux * cos(angle), p.y + aux * sin(angle), p.z);
+}
+vec3 V_depth_sine2(vec3 p, float w, int P, int A) {
+  float power = max(P_(P, 0), 0.0), blur = P_(P, 1) / 10.0, radius = P_(P, 2), x0 = P_(P, 3), y0 = P_(P, 4);
+  float mulX = fractoriumZeps(P_(P, 5)), mulY = fractoriumZeps(P_(P, 6)), grow = P_(P, 7);
+  float angle = psi() * kTwoPi;
+  float u = psi();
+  float r = power == 1.0 ? acos(u * 2.0 - 1.0) / kPi : acos(exp(log(1.0 - u) * power) * 2.0 - 1.0) / kPi;
+  float dx = (p.x - x0) / mulX, dy = (p.y - y0) / mulY;
+  float rad = sqrt(dx * dx + dy * dy);
+  float aux = rad > radius ? r * blur * exp(log(rad - radius) * grow) : 0.0;
+  return w * vec3(p.x + aux * cos(angle), p.y + aux * sin(angle), p.z);
+}
+vec3 V_GlynnSim2(vec3 p, float w, int P, int A) {
+  float radius = max(P_(P, 0), 0.0), thickness = clamp(P_(P, 1), 0.0, 1.0);
+  float contrast = clamp(P_(P, 2), 0.0, 1.0), power = abs(P_(P, 3));
+  float phi1 = kPi * P_(P, 4) / 180.0, delta = kPi * P_(P, 5) / 180.0 - phi1;
+  float gamma = thickness * (2.0 * radius + thickness) / fractoriumZeps(radius + thickness);
+  float u1 = psi(), u2 = psi();
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  float ring = radius + thickness - gamma * u1, phi = phi1 + delta * u2;
+  float alpha = abs(radius / fractoriumZeps(r));
+  float f = u1 > contrast * blurs_pow(alpha, power) ? w : w * (alpha * alpha);
+  return vec3(r < radius ? w * ring * vec2(cos(phi), sin(phi)) : f * p.xy, w * p.z);
+}
+vec3 V_GlynnSim3(vec3 p, float w, int P, int A) {
+  float radius = P_(P, 0), radius1 = P_(P, 0) + P_(P, 1), contrast = clamp(P_(P, 3), 0.0, 1.0), power = P_(P, 4);
+  float radius2 = radius * radius / fractoriumZeps(radius1);
+  float gamma = radius1 / fractoriumZeps(radius1 + radius2);
+  float u1 = psi(), u2 = psi(), u3 = psi();
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  float phi = kTwoPi * u2, ring = u3 < gamma ? radius1 : radius2;
+  float alpha = abs(radius / fractoriumZeps(r));
+  float f = u1 > contrast * blurs_pow(alpha, power) ? w : w * (alpha * alpha);
+  return vec3(r < radius1 ? w * ring * vec2(cos(phi), sin(phi)) : f * p.xy, w * p.z);
+}
+vec3 V_hex_truchet(vec3 p, float w, int P, int A) {
+  float size = clamp(P_(P, 0), -1.0, 1.0), side = P_(P, 1);
+  double seed = double(P_(P, 2));
+  float oneMinusSize = (1.0 - size) * 0.85;
+  float low = (0.15 + oneMinusSize * 0.5) * (0.15 + oneMinusSize * 0.5);
+  float span = (1.0 - oneMinusSize * 0.5) * (1.0 - oneMinusSize * 0.5) - low, cells = side * 2.0 + 1.0;
+  float angle = psi() * kTwoPi;
+  float r = sqrt(psi() * span + low);
+  float cornerX = angle < 2.0943 ? 1.0 : (angle < 4.1887 ? -1.0 : 0.0);
+  float cornerY = angle < 4.1887 ? 0.5773 : -1.1547;
+  float cx = 2.0 * (floor(psi() * cells) - side);
+  float cy = 2.0 * (floor(psi() * cells) - side);
+  float turn = blurs_hash(double(cx), double(cy), seed) < 0.5 ? 0.0 : 1.0471;
+  float c = cos(turn), s = sin(turn), a = angle + 2.6179 - turn;
+  return vec3((cos(a) * r + cornerX * c + cornerY * s + cx + 0.5 * cy) * w,
+              (sin(a) * r - cornerX * s + cornerY * c + 0.866 * cy) * w, w * p.z);
+}
+
+// ---- variations_blur_b2.cpp --------------------------------------------------------------------
+
+vec3 V_Lissajous(vec3 p, float w, int P, int A) {
+  float t = (P_(P, 1) - P_(P, 0)) * psi() + P_(P, 0);
+  float spread = psi() - 0.5;
+  float shift = P_(P, 4) * t + P_(P, 6) * spread;
+  return w * vec3(sin(P_(P, 2) * t + P_(P, 5)) + shift, sin(P_(P, 3) * t) + shift, p.z);
+}
+vec3 V_Spirograph(vec3 p, float w, int P, int A) {
+  float a = P_(P, 0), b = P_(P, 1), d = P_(P, 2), tMin = P_(P, 3), yMin = P_(P, 4), tMax = P_(P, 5), yMax = P_(P, 6);
+  float t = (tMax - tMin) * psi() + tMin;
+  float shift = (yMax - yMin) * psi() + yMin;
+  float ab = a + b, inner = ab / b * t;
+  return w * vec3(ab * cos(t) - P_(P, 7) * cos(inner) + d * cos(t) + shift,
+                  ab * sin(t) - P_(P, 8) * sin(inner) + d * sin(t) + shift, p.z);
+}
+vec3 V_point_symmetry(vec3 p, float w, int P, int A) {
+  float cx = P_(P, 0), cy = P_(P, 1), order = P_(P, 2), step_ = kTwoPi / fractoriumZeps(P_(P, 2));
+  float angle = floor(psi() * order) * step_;
+  float dx = (p.x - cx) * w, dy = (p.y - cy) * w;
+  float c = cos(angle), s = sin(angle);
+  return vec3(cx + dx * c + dy * s, cy + dy * c - dx * s, w * p.z);
+}
+vec3 V_spher(vec3 p, float w, int P, int A) {
+  float u = psi();
+  float r2 = fractoriumZeps(p.x * p.x + p.y * p.y);
+  float k = r2 > 1.0 ? (u < 0.5 ? w / r2 : w) : 0.0;
+  return vec3(k * p.x, k * p.y, w * p.z);
+}
+vec3 V_squish(vec3 p, float w, int P, int A) {
+  float power = max(P_(P, 0), 2.0), invPower = 1.0 / power;
+  float ax = abs(p.x), ay = abs(p.y);
+  float s, q;
+  if (ax > ay) {
+    s = ax;
+    q = p.x > 0.0 ? p.y : 4.0 * s - p.y;
+  } else {
+    s = ay;
+    q = p.y > 0.0 ? 2.0 * s - p.x : 6.0 * s + p.x;
+  }
+  q = invPower * (q + 8.0 * s * floor(power * psi()));
+  vec2 o;
+  if (q <= s) {
+    o = vec2(s, q);
+  } else if (q <= 3.0 * s) {
+    o = vec2(2.0 * s - q, s);
+  } else if (q <= 5.0 * s) {
+    o = vec2(-s, 4.0 * s - q);
+  } else if (q <= 7.0 * s) {
+    o = vec2(-(6.0 * s - q), -s);
+  } else {
+    o = vec2(s, 8.0 * s - q);
+  }
+  return w * vec3(o, p.z);
+}
+vec3 V_sschecks(vec3 p, float w, int P, int A) {
+  float cx = P_(P, 0), cy = P_(P, 1), invSize = 1.0 / fractoriumZeps(P_(P, 2)), jitter = P_(P, 3);
+  float u = psi();
+  float r = w / fractoriumZeps(p.x * p.x + p.y * p.y);
+  float cell = blurs_round(p.x * invSize) + blurs_round(p.y * invSize);
+  bool odd = fmodc(cell, 2.0) != 0.0;
+  float dx = odd ? -cx + jitter * u : cx;
+  float dy = odd ? -cy : cy + jitter * u;
+  return w * vec3(sin(p.x) * r + dx, sin(p.y) * r + dy, p.z);
+}
+vec3 V_starblur(vec3 p, float w, int P, int A) {
+  float power = P_(P, 0), range = P_(P, 1);
+  float halfAngle = kPi / power;
+  float length_ = sqrt(1.0 + range * range - 2.0 * range * cos(halfAngle));
+  float alpha = asin(sin(halfAngle) * range / length_);
+  float sinAlpha = sin(alpha), cosAlpha = cos(alpha), sector = kTwoPi / power;
+  float f = psi() * power * 2.0;
+  float edge = trunc(f);
+  f -= edge;
+  float px = f * length_;
+  float d = sqrt(1.0 + px * px - 2.0 * px * cosAlpha);
+  float turn = asin(sinAlpha * px / d);
+  float angle = sector * trunc(edge / 2.0) + (blurs_isOdd(edge) ? turn : -turn) - kPi / 2.0;
+  d *= sqrt(psi());
+  return vec3(w * d * cos(angle), w * d * sin(angle), w * p.z);
+}
+vec3 V_log_db(vec3 p, float w, int P, int A) {
+  float base = P_(P, 0), fixPeriod = P_(P, 1);
+  float denominator = w * (base > kFractoriumEps ? 0.5 / log(2.718281828459045 * base) : 0.5);
+  float period = fixPeriod > kFractoriumEps ? kPi * fixPeriod : kPi;
+  float turns = 0.0;
+  for (int k = 0; k < 7; ++k) {
+    float adp = floor(psi() * 10.0) - 5.0;
+    turns += abs(adp) >= 3.0 ? 0.0 : adp;
+  }
+  return vec3(denominator * log(p.x * p.x + p.y * p.y), w * (atan2c(p.y, p.x) + turns * period), w * p.z);
+}
+vec3 V_starblur2(vec3 p, float w, int P, int A) {
+  float power = P_(P, 0), range = P_(P, 1), width = P_(P, 4);
+  float pz = fractoriumZeps(power), halfAngle = kPi / pz;
+  float length_ = sqrt(1.0 + range * range - 2.0 * range * cos(halfAngle));
+  float alpha = asin(sin(halfAngle) * range / fractoriumZeps(length_));
+  float hole = min(abs(P_(P, 2)), 1.0), holeSq = hole * hole;
+  float stripes = fractoriumZeps(abs(P_(P, 3)));
+  float sinAlpha = sin(alpha), cosAlpha2 = cos(alpha) * 2.0;
+  float k = psi() * power * 2.0;
+  float edge = floor(k);
+  float f = k - edge;
+  float fs = trunc(f * stripes);
+  bool even = !blurs_isOdd(edge);
+  float dif = even ? width * (f * stripes - fs) : 1.0 - width * (f * stripes - fs);
+  float ff = (dif + fs) / stripes;
+  float px = ff * length_;
+  float d = fractoriumZeps(sqrt(1.0 + px * px - px * cosAlpha2));
+  float sgn = edge - floor(k / 2.0) * 2.0 == 1.0 ? 1.0 : -1.0;
+  float angle = kTwoPi / pz * trunc(edge / 2.0) + sgn * asin(sinAlpha * px / d) - kPi / 2.0;
+  float scaled = w * d * sqrt(psi() * (1.0 - holeSq) + holeSq);
+  return vec3(cos(angle) * scaled, sin(angle) * scaled, w * p.z);
+}
+vec3 V_SphericalN(vec3 p, float w, int P, int A) {
+  float power = P_(P, 0), dist = P_(P, 1);
+  float r = fractoriumZeps(blurs_pow(sqrt(p.x * p.x + p.y * p.y), dist));
+  float k = floor(power * psi());
+  float alpha = atan2c(p.y, p.x) + k * (kTwoPi / fractoriumZeps(floor(power)));
+  return vec3(w * cos(alpha) / r, w * sin(alpha) / r, w * p.z);
+}
+vec3 V_SplitBrdr(vec3 p, float w, int P, int A) {
+  float sx = P_(P, 0), sy = P_(P, 1), px = P_(P, 2), py = P_(P, 3);
+  float b = w / ((p.x * p.x + p.y * p.y) * 0.25 + 1.0);
+  float roundX = roundEven(p.x), roundY = roundEven(p.y);
+  float offX = p.x - roundX, offY = p.y - roundY;
+  float ax = offX * 0.5 + roundX, ay = offY * 0.5 + roundY;
+  if (psi() < 0.75) {
+    if (abs(offX) >= abs(offY)) {
+      if (offX >= 0.0) {
+        ax += sx;
+        ay += sy * offY / fractoriumZeps(offX);
+      } else {
+        ax -= sy;
+        ay -= sy * offY / fractoriumZeps(offX);
+      }
+    } else {
+      if (offY >= 0.0) {
+        ay += sy;
+        ax += offX / fractoriumZeps(offY) * sy;
+      } else {
+        ay -= sy;
+        ax -= offX / fractoriumZeps(offY) * sx;
+      }
+    }
+  }
+  return vec3(p.x * b + w * ax + p.x * px, p.y * b + w * ay + p.y * py, w * p.z);
+}
+vec3 V_npolar(vec3 p, float w, int P, int A) {
+  float parity = P_(P, 0), nnz = P_(P, 1) == 0.0 ? 1.0 : P_(P, 1);
+  float vvar = w / kPi, vvar2 = vvar * 0.5, absN = abs(nnz), cn = 1.0 / nnz / 2.0;
+  bool odd = fmodc(abs(parity), 2.0) != 0.0;
+  float turn = kTwoPi * floor(psi() * absN);
+  float r2 = p.x * p.x + p.y * p.y;
+  if (odd) {
+    float angle = (atan2c(p.y, p.x) + turn) / nnz;
+    float r = w * blurs_pow(r2, cn) * parity;
+    return vec3(cos(angle) * r, sin(angle) * r, w * p.z);
+  }
+  float lx = vvar * atan2c(p.x, p.y), ly = vvar2 * log(r2);
+  float angle = (atan2c(ly, lx) + turn) / nnz;
+  float r = w * blurs_pow(lx * lx + ly * ly, cn);
+  float s = sin(angle) * r, c = cos(angle) * r;
+  return vec3(vvar2 * log(c * c + s * s), vvar * atan2c(c, s), w * p.z);
+}
+vec3 V_phoenix_julia(vec3 p, float w, int P, int A) {
+  float power = fractoriumZeps(P_(P, 0)), invN = P_(P, 1) / power;
+  float dx = P_(P, 2) + 1.0, dy = P_(P, 3) + 1.0;
+  float k = floor(psi() * 32767.0);
+  float t = atan2c(p.y * dy, p.x * dx) * invN + blurs_turns(k, power);
+  float r = w * blurs_pow(p.x * p.x + p.y * p.y, invN / 2.0);
+  return vec3(r * cos(t), r * sin(t), w * p.z);
+}
+vec3 V_MobiusN(vec3 p, float w, int P, int A) {
+  float reA = P_(P, 0), imA = P_(P, 1), reB = P_(P, 2), imB = P_(P, 3);
+  float reC = P_(P, 4), imC = P_(P, 5), reD = P_(P, 6), imD = P_(P, 7);
+  float power = abs(P_(P, 8)) < 1.0 ? 1.0 : P_(P, 8);
+  float exponent = 4.0 * P_(P, 9) / power, root = 1.0 / exponent, whole = floor(power);
+  float r = blurs_pow(sqrt(p.x * p.x + p.y * p.y), exponent);
+  float alpha = atan2c(p.y, p.x) * power;
+  float ux = r * cos(alpha), uy = r * sin(alpha);
+  float reU = reA * ux - imA * uy + reB, imU = reA * uy + imA * ux + imB;
+  float reV = reC * ux - imC * uy + reD, imV = reC * uy + imC * ux + imD;
+  float radV = reV * reV + imV * imV;
+  float vx = (reU * reV + imU * imV) / radV, vy = (imU * reV - reU * imV) / radV;
+  float rr = blurs_pow(sqrt(vx * vx + vy * vy), root);
+  float k = floor(power * psi());
+  float angle = (atan2c(vy, vx) + k * kTwoPi) / whole;
+  return vec3(w * rr * cos(angle), w * rr * sin(angle), w * p.z);
+}
+
+// ---- variations_truchet.cpp --------------------------------------------------------------------
+
+// C's fmod in double (exact for the LCG's whole-number-sized values below).
+double blurs_dfmod(double a, double m) { return a - m * trunc(a / m); }
+// Whether the square Truchet tile of an LCG or hash value v is of type 1: fmod(fmod(32747 v + 12345,
+// 65535), 2) ≥ 1, in double as on the CPU.
+bool blurs_tileType(double v) {
+  precise double a = v * 32747.0lf + 12345.0lf;
+  return !(blurs_dfmod(blurs_dfmod(a, 65535.0lf), 2.0lf) < 1.0lf);
+}
+// The square Truchet tile the point falls in (truchetTile on the CPU): the position in its tile and
+// the distances from the two arcs' centre lines relative to their half-width.
+vec4 blurs_truchetTile(vec2 q, float scale, bool type1, float exponent, float oneOverExponent, float rmax,
+                       bool roundAway) {
+  vec2 s = q * scale;
+  vec2 rr = s - (roundAway ? vec2(blurs_round(s.x), blurs_round(s.y)) : floor(s + 0.5));
+  float x = rr.x < 0.0 ? 1.0 + rr.x : rr.x, y = rr.y < 0.0 ? 1.0 + rr.y : rr.y;
+  float xval1 = type1 ? x - 1.0 : x, xval2 = type1 ? x : x - 1.0;
+  float r0 = blurs_pow(blurs_pow(abs(xval1), exponent) + blurs_pow(abs(y), exponent), oneOverExponent);
+  float r1 = blurs_pow(blurs_pow(abs(xval2), exponent) + blurs_pow(abs(y - 1.0), exponent), oneOverExponent);
+  return vec4(x, y, abs(r0 - 0.5) / rmax, abs(r1 - 0.5) / rmax);
+}
+vec3 V_Truchet_fill(vec3 p, float w, int P, int A) {
+  float exponent = clamp(blurs_cyclic(P_(P, 0), 0.001, 2.0), 0.001, 2.0);
+  float width = clamp(blurs_cyclic(P_(P, 1), 0.001, 1.0), 0.001, 1.0);
+  float seed = P_(P, 2);
+  float oneOverEx = 1.0 / exponent;
+  float rmax = fractoriumZeps(0.5 * (pow(2.0, oneOverEx) - 1.0) * width);
+  bool type1 = seed == 1.0;
+  if (seed != 0.0 && seed != 1.0) {
+    double ds = double(seed);
+    double seed2 = sqrt(ds * 1.5lf) / (ds * 0.5lf) * 0.25lf;
+    double xr = double(blurs_round(abs(p.x))) * seed2, yr = double(blurs_round(abs(p.y))) * seed2;
+    precise double randint = (ds + xr + yr + xr * yr) * seed2 * 0.5lf;
+    type1 = blurs_tileType(randint);
+  }
+  vec4 t = blurs_truchetTile(p.xy, 1.0 / w, type1, exponent, oneOverEx, rmax, true);
+  vec2 c = 2.0 * (t.xy + floor(p.xy));
+  return vec3((t.z < 1.0 ? c : vec2(0.0)) + (t.w < 1.0 ? c : vec2(0.0)) - p.xy, w * p.z);
+}
+vec3 V_Truchet_glyph(vec3 p, float w, int P, int A) {
+  float exponent = clamp(P_(P, 0), 0.001, 2.0), width = clamp(P_(P, 1), 0.001, 1.0);
+  float clampedAmp = max(P_(P, 2), kFractoriumEps), maxSize = max(P_(P, 3), 0.0);
+  float rads = P_(P, 4) * kPi / 180.0, seed = P_(P, 5);
+  float oneN = 1.0 / fractoriumZeps(exponent);
+  float rmax = fractoriumZeps(0.5 * (pow(2.0, oneN) - 1.0) * width);
+  float halfAmpMax = clampedAmp * 0.5 * maxSize, amp = fractoriumZeps(clampedAmp);
+  float c = cos(rads), s = sin(rads);
+  bool type1 = seed == 1.0;
+  if (seed != 0.0 && seed != 1.0)
+    type1 = blurs_tileType(blurs_dhash(double(floor(abs(p.x) + 0.5)), double(floor(abs(p.y) + 0.5)), double(seed)));
+  vec2 v = p.xy - (floor(p.xy / amp) + 0.5) * amp;
+  float u = c * v.x + s * v.y, vv = -s * v.x + c * v.y;
+  if (!(abs(u) + abs(vv) < halfAmpMax)) return vec3(p.xy, w * p.z);
+  vec4 t = blurs_truchetTile(p.xy, 1.0 / w, type1, exponent, oneN, rmax, false);
+  vec2 cc = 2.0 * (t.xy + floor(p.xy));
+  return vec3((t.z < 1.0 ? cc : vec2(0.0)) + (t.w < 1.0 ? cc : vec2(0.0)) - p.xy, w * p.z);
+}
+vec3 V_Truchet_inv(vec3 p, float w, int P, int A) {
+  float exponent = clamp(P_(P, 0), 0.001, 2.0), width = clamp(P_(P, 1), 0.001, 1.0);
+  float rotation = P_(P, 2), size = max(P_(P, 3), 0.0), seed = P_(P, 4);
+  float oneN = 1.0 / fractoriumZeps(exponent);
+  float rmax = fractoriumZeps(0.5 * (pow(2.0, oneN) - 1.0) * width);
+  bool type1 = seed == 1.0;
+  if (seed != 0.0 && seed != 1.0) {
+    double ds = double(seed);
+    double seed2 = sqrt(ds * 1.5lf) / (ds * 0.5lf) * 0.25lf;
+    double xr = double(floor(p.x + 0.5)) * seed2, yr = double(floor(p.y + 0.5)) * seed2;
+    precise double randint = (xr + yr + xr * yr + ds) * (seed2 * 0.5lf);
+    type1 = blurs_tileType(randint);
+  }
+  vec4 t = blurs_truchetTile(p.xy, (cos(rotation) + sin(rotation)) / w, type1, exponent, oneN, rmax, false);
+  bool off = t.z > 1.0 && t.w > 1.0;
+  return vec3(off ? (t.xy + floor(p.xy)) * size : vec2(0.0), w * p.z);
+}
+vec3 V_Truchet_hex_fill(vec3 p, float w, int P, int A) {
+  const double kSqrt3 = 1.7320508075688772lf;
+  float sides = floor(P_(P, 0) + 0.5);
+  bool flipX = blurs_integer(P_(P, 1), 0.0, 1.0) != 0.0, flipY = blurs_integer(P_(P, 2), 0.0, 1.0) != 0.0;
+  float spreadX = P_(P, 3), spreadY = P_(P, 4), seed = floor(P_(P, 5) + 0.5);
+  float sectors = 3.0 * sides, oneOverSectors = 1.0 / fractoriumZeps(sectors);
+  float l1 = log(psi());
+  float rx = floor(l1 * (psi() < 0.5 ? spreadX : -spreadX));
+  float l2 = log(psi());
+  float rz = floor(l2 * (psi() < 0.5 ? spreadY : -spreadY));
+  // The hexagon's centre as the CPU computes it, in double, for the hash.
+  double hx = kSqrt3 * double(rx) + kSqrt3 / 2.0lf * double(psi() < 0.5 ? rz : -rz), hy = 1.5lf * double(rz);
+  bool keep = true;
+  if (seed == 1.0) {
+    keep = blurs_isOdd(rx) || blurs_isOdd(rz);
+  } else if (seed >= 2.0) {
+    keep = !(blurs_hash(hx, hy, double(seed)) < 0.5);
+  }
+  float rangle = floor(psi() * sectors) * kTwoPi * oneOverSectors;
+  float yAux = flipY && !keep ? -p.y : p.y, xAux = flipX && !keep ? -p.x : p.x;
+  float ang = yAux * oneOverSectors * kPi + rangle, a = 1.0 + xAux * oneOverSectors * kPi;
+  float fx = a * cos(ang), fy = a * sin(ang);
+  float split = atan2c(fy, fx);
+  if (split < 0.0) split += kTwoPi;
+  float centre = (kPi + floor(1.5 * split / kPi) * kTwoPi) / 3.0;
+  float nx = fx - cos(centre) * 2.0, ny = fy - sin(centre) * 2.0;
+  float turn = keep ? 0.5 : -0.5;
+  float h = 0.86602540378443865;
+  float tx = h * nx - turn * ny, ty = turn * nx + h * ny;
+  return vec3(w * (tx * 0.5 + float(hx)), w * (ty * 0.5 + float(hy)), w * p.z);
+}
+vec3 V_Truchet_hex_crop(vec3 p, float w, int P, int A) {
+  const double kSqrt3 = 1.7320508075688772lf;
+  float wd = clamp(P_(P, 0), 0.0, 5.0), mode = blurs_integer(P_(P, 1), 0.0, 2.0);
+  bool inv = blurs_integer(P_(P, 2), 0.0, 1.0) != 0.0;
+  float seed = floor(P_(P, 3) + 0.5);
+  float d1 = 0.5 + wd, d2 = 0.5 - wd;
+  const float kCoef = 1.5 / kPi;
+  float u = psi();
+  // Cube coordinates of the hexagon, rounded, the coordinate with the largest rounding error recomputed.
+  float yOver3 = p.y / 3.0;
+  float cx = 0.57735026918962576 * p.x - yOver3, cz = 2.0 * yOver3, cy = -cx - cz;
+  float rx = blurs_round(cx), ry = blurs_round(cy), rz = blurs_round(cz);
+  float dx = abs(rx - cx), dy = abs(ry - cy), dz = abs(rz - cz);
+  if (dx > dy && dx > dz) {
+    rx = -ry - rz;
+  } else if (dy > dz) {
+    ry = -rx - rz;
+  } else {
+    rz = -rx - ry;
+  }
+  double hxd = kSqrt3 * double(rx) + kSqrt3 / 2.0lf * double(rz), hyd = 1.5lf * double(rz);
+  float hx = float(hxd), hy = float(hyd);
+  float fx = p.x - hx, fy = p.y - hy;
+  float add = 0.0;
+  if (seed == 1.0) {
+    if (!blurs_isOdd(rx) && !blurs_isOdd(rz)) add = kPi / 3.0;
+  } else if (seed >= 2.0) {
+    if (blurs_hash(hxd, hyd, double(seed)) < 0.5) add = kPi / 3.0;
+  }
+  float angle = atan2c(fy, fx) + kPi / 6.0 - add;
+  float angle2 = floor(angle * kCoef) / kCoef + kPi / 6.0 + add;
+  float x0 = cos(angle2), y0 = sin(angle2);
+  float dist = sqrt((fx - x0) * (fx - x0) + (fy - y0) * (fy - y0));
+  bool crop = inv ? (dist > d1 || dist < d2) : (dist < d1 && dist > d2);
+  if (crop) {
+    if (mode < 0.5) {
+      fx = 0.0;
+      fy = 0.0;
+    } else if (mode < 1.5) {
+      fx = x0;
+      fy = y0;
+    } else {
+      float rangle = atan2c(fy - y0, fx - x0), d = u < 0.5 ? d1 : d2;
+      fx = x0 + cos(rangle) * d;
+      fy = y0 + sin(rangle) * d;
+    }
+  }
+  return vec3((fx + hx) * w, (fy + hy) * w, w * p.z);
+}
+vec3 V_squares(vec3 p, float w, int P, int A) {
+  float cell = P_(P, 0), minRing = max(P_(P, 1), 0.0), maxRing = max(P_(P, 2), 0.0), rings = P_(P, 3);
+  double seed = double(P_(P, 4)), zeroSeed = double(P_(P, 6));
+  float zero = P_(P, 5);
+  vec2 q = p.xy;
+  if (cell != 0.0) {
+    // The cell's centre in double, as the CPU hashes it.
+    double dcell = double(cell);
+    double dcx = (floor(double(p.x) / dcell) + 0.5lf) * dcell, dcy = (floor(double(p.y) / dcell) + 0.5lf) * dcell;
+    float cx = float(dcx), cy = float(dcy);
+    float lx = p.x - cx, ly = p.y - cy;
+    float ax = abs(floor(lx * rings * 2.0 / cell + 0.5));
+    float ay = abs(floor(ly * rings * 2.0 / cell + 0.5));
+    float m = max(ax, ay);
+    float top = maxRing + floor(blurs_hash(dcx * dcx, dcy * dcy, seed) * (rings - maxRing));
+    float level = m > top || m < minRing ? 0.0 : m - minRing;
+    float angle = blurs_hash(dcx * dcx, dcy * dcy, zeroSeed) < zero ? 0.0 : level * kPi / 2.0;
+    float c = cos(angle), s = sin(angle);
+    q = vec2(cx + lx * c - ly * s, cy + lx * s + ly * c);
+  }
+  return w * vec3(q, p.z);
+}
