@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <numeric>
 #include <string>
@@ -407,6 +408,7 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
   };
   cases.insert(cases.end(), more.begin(), more.end());
   int checked = 0;
+  std::map<std::string, gl::ShaderProgram> programs;
   for (const Case& c : cases) {
     const std::string& name = c.name;
     SCOPED_TRACE(name);
@@ -424,20 +426,25 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       const std::vector<float> tables = gl::gpuNoiseTables();
       data.insert(data.end(), tables.begin(), tables.end());
     }
-    const std::string text = "#version 430 core\n" + gl::gpuVariationSource() +
-                             "\nlayout(local_size_x = 64) in;\n"
-                             "layout(std430, binding = 0) buffer Points { vec4 points[]; };\n"
-                             "layout(std430, binding = 1) buffer Streams { uint streams[]; };\n"
-                             "void main() {\n"
-                             "  uint i = gl_GlobalInvocationID.x;\n"
-                             "  gChaosRandom = streams[i];\n"
-                             "  gVariationT = points[i].xyz;\n"
-                             "  points[i].xyz = V_" +
-                             name +
-                             "(points[i].xyz, flameData[12], 13, 0);\n"
-                             "  streams[i] = gChaosRandom;\n"
-                             "}\n";
-    const gl::ShaderProgram program(gl::ShaderSource{"flame_variations.glsl (" + name + ")", text});
+    // One program per variation: the cases with other parameters differ only in the data.
+    auto program = programs.find(name);
+    if (program == programs.end()) {
+      const std::string text = "#version 430 core\n" + gl::gpuVariationSource({name}) +
+                               "\nlayout(local_size_x = 64) in;\n"
+                               "layout(std430, binding = 0) buffer Points { vec4 points[]; };\n"
+                               "layout(std430, binding = 1) buffer Streams { uint streams[]; };\n"
+                               "void main() {\n"
+                               "  uint i = gl_GlobalInvocationID.x;\n"
+                               "  gChaosRandom = streams[i];\n"
+                               "  gVariationT = points[i].xyz;\n"
+                               "  points[i].xyz = V_" +
+                               name +
+                               "(points[i].xyz, flameData[12], 13, 0);\n"
+                               "  streams[i] = gChaosRandom;\n"
+                               "}\n";
+      program =
+          programs.emplace(name, gl::ShaderProgram(gl::ShaderSource{"flame_variations (" + name + ")", text})).first;
+    }
     std::vector<float> points = input;
     std::vector<std::uint32_t> gpuStreams = streams;
     std::array<GLuint, 3> buffers{};
@@ -450,7 +457,7 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     upload(buffers[0], 0, points.size() * sizeof(float), points.data());
     upload(buffers[1], 1, gpuStreams.size() * sizeof(std::uint32_t), gpuStreams.data());
     upload(buffers[2], 8, data.size() * sizeof(float), data.data());
-    glUseProgram(program.id());
+    glUseProgram(program->second.id());
     glDispatchCompute(kPoints / 64, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[0]);
@@ -782,4 +789,38 @@ TEST(GpuBackend, ProjectsThePointsMethodsPointsAsTheCpuDoes) {
       }
     }
   }
+}
+
+// What the GPU's chaos game lacks of the catalogue, each for a reason: a variation that reads or
+// writes more than the point (colour, true colour, the running sum, hidden points, per-lane memory,
+// text) needs a kernel the generator does not make yet (flame_kernel.cpp refuses it by its flags),
+// and the few named here need more than a V_ function. Porting one takes it off this list; a new
+// variation of the catalogue without a GPU twin fails here until it has one or a reason.
+TEST(GpuBackend, EveryVariationTheGpuLacksHasAReason) {
+  const std::map<std::string, std::string> lacking = {
+      {"hopalong", "draws from a table of 2^20 orbit points the CPU builds per parameter set"},
+      {"crob", "moves the point the terms after it map (VariationInput::movableX/Y)"},
+      {"obj_mesh_primitive_wf", "samples a built-in mesh's triangles"},
+  };
+  const std::vector<std::string>& gpu = gl::gpuFlameVariations();
+  int onGpu = 0, flagged = 0, named = 0;
+  for (const core::VariationInfo& info : core::variationCatalogue()) {
+    if (std::find(gpu.begin(), gpu.end(), info.name) != gpu.end()) {
+      ++onGpu;
+      continue;
+    }
+    const bool flags = info.directColour || info.paintsRgb || info.readsSum || info.hidesPoints ||
+                       info.replaces != core::VariationInfo::Replaces::Nothing || info.laneState > 0 ||
+                       !info.textParams.empty();
+    if (flags) {
+      ++flagged;
+      continue;
+    }
+    EXPECT_TRUE(lacking.contains(info.name)) << info.name << " is not on the GPU, and no reason says why";
+    ++named;
+  }
+  EXPECT_EQ(named, static_cast<int>(lacking.size()))
+      << "a variation named here is on the GPU, or its flags say why not";
+  std::printf("on the GPU %d of %zu; lacking by their flags %d, for the reasons named %d\n", onGpu,
+              core::variationCatalogue().size(), flagged, named);
 }

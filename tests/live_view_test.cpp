@@ -799,6 +799,47 @@ TEST_F(LiveViewTest, TheGpuBackendsGridReachesTheViewOnTheGpuAndLooksLikeTheCpus
   EXPECT_LT(difference / total, 0.08) << "the GPU's grid drew another picture";
 }
 
+// Under the points method a GPU session's grid is read back to host memory, where the points are
+// dimmed by it (a hardware GPU projects them with gl::makeGpuProjectingBackend, which
+// gpu_backend_test.cpp holds to the CPU's projector; llvmpipe projects on the CPU): the picture at
+// rest is the CPU session's (another sampling of the same points), and the status names the GPU.
+TEST_F(LiveViewTest, ThePointsViewOnTheGpuBackendIsTheCpusPicture) {
+  struct DevicePath {  // the grid would reach the view on the GPU under the volume method
+    DevicePath() { gl::GpuAccumulator::setPackOnDeviceWithSoftwareRenderer(true); }
+    ~DevicePath() { gl::GpuAccumulator::setPackOnDeviceWithSoftwareRenderer(false); }
+  } devicePath;
+  edit([&](core::Scene& scene) {
+    scene.render.method = core::RenderMethod::Points;
+    scene.render.lighting = true;
+    scene.points = 2'000'000;
+  });
+  std::vector<std::uint8_t> pictures[2];
+  for (const app::BackendChoice choice : {app::BackendChoice::Cpu, app::BackendChoice::Gpu}) {
+    SCOPED_TRACE(std::string(app::toString(choice)));
+    app::ExplorerSession refining{1, std::chrono::milliseconds(50)};
+    state.services.settings.refinementBackend = choice;
+    app::LiveView view(refining);
+    ASSERT_TRUE(
+        runUntilRest(refining, view, [&] { app::liveFrame(view, state, kWidth, kHeight, canvas.framebuffer()); }));
+    const app::SessionStatus status = refining.status();
+    EXPECT_EQ(status.backend, choice == app::BackendChoice::Gpu ? core::BackendKind::Gpu : core::BackendKind::Cpu);
+    EXPECT_FALSE(status.gridOnDevice) << "the points are dimmed by the grid in host memory";
+    EXPECT_TRUE(view.pointsProgress().finished) << view.pointsProgress().error;
+    EXPECT_TRUE(state.frame.view.pointsShown);
+    canvas.save(std::string("gpu_points_") + std::string(app::toString(choice)));
+    pictures[choice == app::BackendChoice::Gpu ? 1 : 0] = canvas.pixels();
+  }
+  state.services.settings.refinementBackend = app::BackendChoice::Cpu;
+  double difference = 0.0, total = 0.0;
+  for (std::size_t i = 0; i < pictures[0].size(); i += 4)
+    for (std::size_t c = 0; c < 3; ++c) {
+      difference += std::abs(static_cast<int>(pictures[0][i + c]) - static_cast<int>(pictures[1][i + c]));
+      total += pictures[0][i + c];
+    }
+  ASSERT_GT(total, 0.0);
+  EXPECT_LT(difference / total, 0.08) << "the GPU's points drew another picture";
+}
+
 // The session's gridIdle on either backend (RefinementBackend::idle): false while the large grid
 // refines, true once a hold has let the work under way land, and from then on the grid adds
 // nothing for as long as the hold lasts (checked at the session's next news: a steer of its

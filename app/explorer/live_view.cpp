@@ -10,6 +10,7 @@
 #include "core/color.h"
 #include "core/error.h"
 #include "gl/read_back.h"
+#include "gl/renderer_kind.h"
 #include "pipeline.h"
 
 namespace voxflame::app {
@@ -323,7 +324,11 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
     // the points need, so the session holds it here until the view or the pattern changes.
     pointsGridPoints_ = shown_->points;
     request.camera = settings.camera;
-    request.backend = status.backend;
+    // On a software rasteriser the GPU's projection runs on the CPU's cores beside the frame, as the
+    // CPU's own would, and llvmpipe was seen to stall a compute context's read-back for minutes while
+    // the frame's context drew: there the CPU projects.
+    static const bool software = gl::softwareRasteriser();
+    request.backend = software ? core::BackendKind::Cpu : status.backend;
     request.width = width * oversample;
     request.height = height * oversample;
     points_.start(std::move(request));

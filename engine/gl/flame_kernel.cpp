@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <cctype>
 #include <cmath>
+#include <map>
 #include <string_view>
 
 #include "core/chaos_game.h"
@@ -24,19 +26,106 @@ constexpr std::array<std::string_view, 6> kVariationFiles = {
     "flame_variations.glsl",    "flame_variations_2d.glsl",    "flame_variations_2d_more.glsl",
     "flame_variations_3d.glsl", "flame_variations_blurs.glsl", "flame_variations_jwildfire.glsl"};
 
-// The names the variation files define, each as `vec3 V_<name>(vec3 p, float w, int P, int A)`.
-std::vector<std::string> definedVariations(const std::string& source) {
-  static constexpr std::string_view kOpening = "vec3 V_";
+// The variation files split for the kernels: every top-level function apart (the V_<name>
+// variations and the helpers they call), and the rest (buffers, constants, globals, macros) kept
+// in place between them. A kernel compiles the rest and only the functions its variations reach:
+// the driver parses and translates every function it is given, and a thousand unused ones made a
+// llvmpipe compile take over a second.
+struct SplitVariations {
+  struct Piece {
+    std::string text;        // with a #line, so the driver's log points into the file
+    std::string function;    // empty: always put in
+    std::vector<int> calls;  // the pieces of the functions it names
+  };
+  std::vector<Piece> pieces;  // in the files' order, which is an order GLSL accepts
+  std::map<std::string, int, std::less<>> functionPiece;
+  std::vector<std::string> names;  // the variations (V_<name>), in the files' order
+};
+
+bool identifierChar(char c) {
+  return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+// The name a line at depth 0 starts to define (`type name(`), or empty; a prototype (`...);`) defines none.
+std::string definedFunction(std::string_view line) {
+  std::size_t at = 0;
+  while (at < line.size() && identifierChar(line[at])) ++at;  // the return type
+  if (at == 0 || at >= line.size() || line[at] != ' ') return {};
+  const std::size_t nameStart = ++at;
+  while (at < line.size() && identifierChar(line[at])) ++at;
+  if (at == nameStart || at >= line.size() || line[at] != '(') return {};
+  const std::string_view code = line.substr(0, line.find("//"));
+  if (code.find(';') != std::string_view::npos && code.find('{') == std::string_view::npos) return {};
+  return std::string(line.substr(nameStart, at - nameStart));
+}
+
+SplitVariations splitVariationFiles() {
   static constexpr std::string_view kSignature = "(vec3 p, float w, int P, int A)";
-  std::vector<std::string> names;
-  for (std::size_t at = source.find(kOpening); at != std::string::npos; at = source.find(kOpening, at + 1)) {
-    if (at > 0 && source[at - 1] != '\n') continue;  // a call, not a definition
-    const std::size_t nameStart = at + kOpening.size();
-    const std::size_t nameEnd = source.find('(', nameStart);
-    if (nameEnd == std::string::npos || source.compare(nameEnd, kSignature.size(), kSignature) != 0) continue;
-    names.push_back(source.substr(nameStart, nameEnd - nameStart));
+  SplitVariations split;
+  for (std::size_t k = 0; k < kVariationFiles.size(); ++k) {
+    // Each file is source string k + 1, its place in kVariationFiles (the program's own file is 0).
+    const std::string file = std::to_string(k + 1);
+    const std::string text = embeddedShader(kVariationFiles[k]).text;
+    SplitVariations::Piece* piece = nullptr;
+    bool inFunction = false, opened = false;
+    int depth = 0;
+    std::size_t lineNumber = 0;
+    for (std::size_t at = 0; at < text.size();) {
+      std::size_t end = text.find('\n', at);
+      if (end == std::string::npos) end = text.size();
+      const std::string_view line(text.data() + at, end - at);
+      ++lineNumber;
+      at = end + 1;
+      const std::string function = depth == 0 && !inFunction ? definedFunction(line) : std::string();
+      if (!function.empty() || !piece) {
+        split.pieces.emplace_back();
+        piece = &split.pieces.back();
+        piece->text = "#line " + std::to_string(lineNumber) + " " + file + "\n";
+        piece->function = function;
+        inFunction = !function.empty();
+        opened = false;
+        if (inFunction) {
+          split.functionPiece[function] = static_cast<int>(split.pieces.size()) - 1;
+          if (function.starts_with("V_") && line.substr(line.find('(')).starts_with(kSignature))
+            split.names.push_back(function.substr(2));
+        }
+      }
+      piece->text.append(line);
+      piece->text.push_back('\n');
+      // Braces outside comments (GLSL has no strings); a function ends where its depth returns to 0.
+      const std::string_view code = line.substr(0, line.find("//"));
+      for (const char c : code) {
+        if (c == '{') opened = true;
+        depth += c == '{' ? 1 : c == '}' ? -1 : 0;
+      }
+      if (inFunction && opened && depth == 0) {
+        inFunction = false;
+        piece = nullptr;  // what follows starts a piece of its own
+      }
+    }
   }
-  return names;
+  // What each piece calls: the identifiers in it that name a function.
+  for (SplitVariations::Piece& piece : split.pieces) {
+    const std::string& t = piece.text;
+    for (std::size_t at = 0; at < t.size();) {
+      if (!identifierChar(t[at])) {
+        ++at;
+        continue;
+      }
+      const std::size_t start = at;
+      while (at < t.size() && identifierChar(t[at])) ++at;
+      const auto found = split.functionPiece.find(std::string_view(t).substr(start, at - start));
+      if (found != split.functionPiece.end() &&
+          split.pieces[static_cast<std::size_t>(found->second)].function != piece.function)
+        piece.calls.push_back(found->second);
+    }
+  }
+  return split;
+}
+
+const SplitVariations& splitVariations() {
+  static const SplitVariations split = splitVariationFiles();
+  return split;
 }
 
 bool gpuHasVariation(std::string_view name) {
@@ -109,6 +198,7 @@ class Generator {
         const std::vector<float> extras = gpuNoiseExtras(full, tables);
         k_.data.insert(k_.data.end(), extras.begin(), extras.end());
       }
+      k_.variations.push_back(t.info->name);
       return "V_" + t.info->name + "(" + point + ", flameData[" + std::to_string(weight) + "], " +
              std::to_string(params) + ", A)";
     };
@@ -307,21 +397,31 @@ std::vector<float> gpuNoiseTables() {
   return values;
 }
 
-const std::string& gpuVariationSource() {
-  // Each file from its line 1 as source string k + 1, its place in kVariationFiles (the driver's
-  // log says "k+1:line"; the program's own file is string 0), so a compile error points into it.
-  static const std::string source = [] {
-    std::string text;
-    for (std::size_t k = 0; k < kVariationFiles.size(); ++k)
-      text += "#line 1 " + std::to_string(k + 1) + "\n" + embeddedShader(kVariationFiles[k]).text + "\n";
-    return text;
-  }();
-  return source;
+std::string gpuVariationSource(const std::vector<std::string>& variations) {
+  const SplitVariations& split = splitVariations();
+  // The pieces that are no function, the variations named, and every function those reach.
+  std::vector<bool> wanted(split.pieces.size(), false);
+  std::vector<int> pending;
+  for (std::size_t i = 0; i < split.pieces.size(); ++i)
+    if (split.pieces[i].function.empty()) pending.push_back(static_cast<int>(i));
+  for (const std::string& name : variations)
+    if (const auto found = split.functionPiece.find("V_" + name); found != split.functionPiece.end())
+      pending.push_back(found->second);
+  while (!pending.empty()) {
+    const auto i = static_cast<std::size_t>(pending.back());
+    pending.pop_back();
+    if (wanted[i]) continue;
+    wanted[i] = true;
+    pending.insert(pending.end(), split.pieces[i].calls.begin(), split.pieces[i].calls.end());
+  }
+  std::string text;
+  for (std::size_t i = 0; i < split.pieces.size(); ++i)
+    if (wanted[i]) text += split.pieces[i].text;
+  return text;
 }
 
 const std::vector<std::string>& gpuFlameVariations() {
-  static const std::vector<std::string> names = definedVariations(gpuVariationSource());
-  return names;
+  return splitVariations().names;
 }
 
 std::string flameKernelUnsupported(const core::PatternLayer& layer) {

@@ -26,8 +26,9 @@ struct FlameKernel {
   // chaosStep(inout CHAOS_STATE state, inout float colour, inout uint previous, out vec3 drawn,
   // out float drawnColour)`.
   std::string source;
-  std::vector<float> data;          // flame_variations.glsl's flameData
-  std::vector<std::uint32_t> pick;  // flamePick: core::ChaosGame::pickTable, one transform index per entry
+  std::vector<float> data;              // flame_variations.glsl's flameData
+  std::vector<std::uint32_t> pick;      // flamePick: core::ChaosGame::pickTable, one transform index per entry
+  std::vector<std::string> variations;  // the V_ functions it calls (gpuVariationSource's argument)
   // Groups of orbits share each step's transform (accumulate.comp.glsl's GROUP_CHOICE): the
   // program's workgroups are then 256 orbits, not 64.
   bool groupChoice = false;
@@ -42,8 +43,10 @@ std::string flameKernelUnsupported(const core::PatternLayer& layer);
 // two transforms or more). Call only when flameKernelUnsupported(layer) is empty.
 FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGame& game, bool groupChoice);
 
-// The GLSL of the GPU's variations (shaders/flame_variations*.glsl, one file per family, put together).
-const std::string& gpuVariationSource();
+// The GLSL of the GPU's variations (shaders/flame_variations*.glsl, one file per family) a kernel
+// needs: what every variation shares (buffers, constants, helpers), and the V_ functions of
+// `variations` and of those they call.
+std::string gpuVariationSource(const std::vector<std::string>& variations);
 // The variations it defines (as V_<name>), in the catalogue's spelling.
 const std::vector<std::string>& gpuFlameVariations();
 

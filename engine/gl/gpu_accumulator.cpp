@@ -222,7 +222,8 @@ struct GpuAccumulator::Device {
   const ShaderProgram& layerProgram(const LayerUniforms& u) {
     const std::string projecting = projection ? "#define PROJECT_POINTS\n" : "";
     if (u.chaos)
-      return program("accumulate.comp.glsl", projecting, gpuVariationSource() + "\n#line 1 99\n" + u.kernel.source);
+      return program("accumulate.comp.glsl", projecting,
+                     gpuVariationSource(u.kernel.variations) + "\n#line 1 99\n" + u.kernel.source);
     return program("accumulate.comp.glsl",
                    projecting + "#define " + u.system + "\n" + (u.rk4 ? "#define INTEGRATOR_RK4\n" : ""), true);
   }

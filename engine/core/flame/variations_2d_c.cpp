@@ -581,6 +581,7 @@ void variation_kernels::addFractorium2DVariationsC(std::vector<VariationInfo>& c
        {"center_x", 0.0, -2.0, 2.0},
        {"center_y", 0.0, -2.0, 2.0},
        {"dropoff", 1e6, 0.0, 1e6}});
+  catalogue.back().readsSum = true;  // outside the hexagon it overwrites the sum so far
   add("hypershift",
       "q = p/r² + (shift, 0): (1 − shift²) q/|q|² + (shift, 0), z; as an ordinary term it replaces the sum so far "
       "(Fractorium's flam3-compatible behaviour)",

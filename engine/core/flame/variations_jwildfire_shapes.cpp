@@ -723,6 +723,7 @@ void variation_kernels::addJwildfireShapeVariations(std::vector<VariationInfo>& 
        {"stem_length", 0.0, 0.0, 2.0},
        {"petal_fold_strength", 0.0, -2.0, 2.0},
        {"petal_fold_radius", 1.0, 0.0, 2.0}});
+  catalogue.back().readsSum = true;  // its z is the sum so far's, moved
   add("recurrenceplot",
       "(i/N − ½, j/N − ½, z) for a random pair of samples i, j = ⌊NΨ⌋ of the signal func_id (30 of them) with |y(i) − "
       "y(j)| < tolerance, N = Density; the point itself is not used; pairs are drawn again until one is near (up to "
