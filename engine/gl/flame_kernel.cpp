@@ -142,7 +142,8 @@ std::string xformUnsupported(const core::FlameXform& xform) {
     if (!info) return "variation '" + term.name + "'";
     if (!gpuHasVariation(info->name)) return "variation '" + term.name + "'";
     // None of the GPU's variations has these, but a future one might: say so rather than draw wrong.
-    if (info->directColour || info->paintsRgb || info->readsSum ||
+    // (A direct-colour one reads and sets gColour, which the transform blends in by direct_color.)
+    if (info->paintsRgb || info->readsSum || info->hidesPoints || info->laneState > 0 ||
         info->replaces != core::VariationInfo::Replaces::Nothing)
       return "variation '" + term.name + "'";
   }
@@ -169,6 +170,17 @@ class Generator {
     const int affine = put(xform.affine.m.data(), 12);
     s += "vec3 " + name + "(vec3 p, inout float c, inout bool visible) {\n";
     s += "  int A = " + std::to_string(affine) + ";\n";
+    // A direct-colour variation starts from the colour the transform's blend gives and may set it;
+    // the transform then blends that in by its direct_color (core::ChaosGame::startDirectColour).
+    bool direct = false;
+    for (const core::VariationTerm& term : xform.variations)
+      if (const core::VariationInfo* info = core::findVariation(term.name); info && term.weight != 0.0)
+        direct = direct || info->directColour;
+    const int blend = put(1.0 - xform.colorSpeed);
+    put(xform.colorSpeed * xform.color);
+    if (direct)
+      s += "  float saved = flameData[" + std::to_string(blend) + "] * c + flameData[" + std::to_string(blend + 1) +
+           "];\n  gColour = saved;\n";
     s += "  vec3 t = vec3(dot(vec3(flameData[A], flameData[A + 1], flameData[A + 2]), p) + flameData[A + 3],\n"
          "                dot(vec3(flameData[A + 4], flameData[A + 5], flameData[A + 6]), p) + flameData[A + 7],\n"
          "                dot(vec3(flameData[A + 8], flameData[A + 9], flameData[A + 10]), p) + flameData[A + 11]);\n";
@@ -237,14 +249,19 @@ class Generator {
            "           dot(vec3(flameData[Q + 4], flameData[Q + 5], flameData[Q + 6]), o) + flameData[Q + 7],\n"
            "           dot(vec3(flameData[Q + 8], flameData[Q + 9], flameData[Q + 10]), o) + flameData[Q + 11]);\n";
     }
-    const int keep = put(1.0 - xform.colorSpeed);
-    put(xform.colorSpeed * xform.color);
-    put(xform.opacity);
-    s += "  c = flameData[" + std::to_string(keep) + "] * c + flameData[" + std::to_string(keep + 1) + "];\n";
+    const int opacity = put(xform.opacity);
+    if (direct) {
+      // Fractorium's Xform::Apply: saved + direct_color · (set − saved), NaN as 0.
+      const int directColor = put(xform.directColor);
+      s += "  c = saved + flameData[" + std::to_string(directColor) + "] * (gColour - saved);\n";
+      s += "  c = isnan(c) ? 0.0 : c;\n";
+    } else {
+      s += "  c = flameData[" + std::to_string(blend) + "] * c + flameData[" + std::to_string(blend + 1) + "];\n";
+    }
     if (final)
-      s += "  visible = visible && psi() < flameData[" + std::to_string(keep + 2) + "];\n";
+      s += "  visible = visible && psi() < flameData[" + std::to_string(opacity) + "];\n";
     else if (xform.opacity < 1.0)
-      s += "  visible = psi() < flameData[" + std::to_string(keep + 2) + "];\n";
+      s += "  visible = psi() < flameData[" + std::to_string(opacity) + "];\n";
     else
       s += "  visible = true;\n";
     s += "  return o;\n}\n";

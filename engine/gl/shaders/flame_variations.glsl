@@ -9,6 +9,9 @@ layout(std430, binding = 8) readonly buffer FlameData { float flameData[]; };
 layout(std430, binding = 9) readonly buffer FlamePick { uint flamePick[]; };
 
 uint gChaosRandom;  // the orbit's chaos stream (xorshift32, never 0), as core::laneUniform draws it
+// The point's colour index as its transform's blend left it, for the direct-colour variations
+// (VariationInfo::directColour), which read and may set it: core's VariationInput::colour.
+float gColour;
 
 float psi() {
   gChaosRandom ^= gChaosRandom << 13;

@@ -607,3 +607,74 @@ vec3 V_flux(vec3 p, float w, int P, int A) {
   float a = (atan2c(p.y, xmw) - atan2c(p.y, xpw)) * 0.5;
   return vec3(r * cos(a), r * sin(a), w * p.z);
 }
+
+// ---- direct colour: the colour index in gColour (variations_apophysis.cpp, variations_fractorium.cpp) ----
+
+float v3d_logMap(float v) { return v == 0.0 ? 0.0 : (2.718281828 + log(v * 2.718281828)) * 0.25 * (v < 0.0 ? -1.0 : 1.0); }
+float v3d_logScale(float v) {
+  return v == 0.0 ? 0.0 : log((abs(v) + 1.0) * 2.718281828) * (v < 0.0 ? -1.0 : 1.0) / 2.718281828;
+}
+float v3d_fractoriumInteger(float v, float low, float high) { return clamp(floor(v + 0.5), low, high); }
+float v3d_roundHalfAway(float v) { return sign(v) * floor(abs(v) + 0.5); }
+
+vec3 V_falloff2(vec3 p, float w, int P, int A) {
+  float scale = 0.04 * max(P_(P, 0), 1e-6), mindist = max(P_(P, 1), 0.0);
+  vec3 mul = clamp(vec3(P_(P, 2), P_(P, 3), P_(P, 4)), 0.0, 1.0);
+  float mulC = clamp(P_(P, 5), 0.0, 1.0);
+  vec3 centre = vec3(P_(P, 6), P_(P, 7), P_(P, 8));
+  bool invert = v3d_roundHalfAway(P_(P, 9)) >= 1.0;
+  float type = v3d_roundHalfAway(P_(P, 10));
+  float d = length(p - centre);
+  if (invert) d = 1.0 - d;
+  d = max(0.0, (max(d, 0.0) - mindist) * scale);
+  float a = psi(), b = psi(), c = psi();
+  vec3 q;
+  if (type == 1.0) {
+    float rIn = length(p) + 1e-6;
+    float sigma = asin(clamp(p.z / rIn, -1.0, 1.0)) + mul.z * a * d;
+    float phi = atan2c(p.y, p.x) + mul.y * b * d;
+    float r = rIn + mul.x * c * d;
+    q = vec3(r * cos(sigma) * cos(phi), r * cos(sigma) * sin(phi), sin(sigma));
+  } else if (type >= 2.0) {
+    float sigma = d * a * kTwoPi, phi = d * b * kPi, r = d * c;
+    q = p + mul * vec3(r * cos(sigma) * cos(phi), r * cos(sigma) * sin(phi), r * sin(sigma));
+  } else {
+    q = p + mul * vec3(a, b, c) * d;
+  }
+  if (mulC != 0.0) gColour = abs(fmodc(gColour + mulC * (psi() - 0.5) * d, 1.0));
+  return w * q;
+}
+
+vec3 V_falloff3(vec3 p, float w, int P, int A) {
+  float type = v3d_fractoriumInteger(P_(P, 0), 0.0, 3.0);
+  bool square = v3d_fractoriumInteger(P_(P, 1), 0.0, 1.0) != 0.0;
+  float rMax = 0.04 * max(P_(P, 2), 2.220446e-16);
+  float minDist = max(P_(P, 3), 0.0);
+  bool invert = v3d_fractoriumInteger(P_(P, 4), 0.0, 1.0) != 0.0;
+  vec3 mul = clamp(vec3(P_(P, 5), P_(P, 6), P_(P, 7)), 0.0, 1.0);
+  float mulC = clamp(P_(P, 8), 0.0, 1.0);
+  vec3 centre = vec3(P_(P, 9), P_(P, 10), P_(P, 11));
+  float alpha = P_(P, 12);
+  float rx = psi() - 0.5, ry = psi() - 0.5, rz = psi() - 0.5, rc = psi() - 0.5;
+  vec3 dp = p - centre;
+  float radius = square ? max(abs(dp.x), max(abs(dp.y), abs(dp.z))) : length(dp);
+  float dist = max(((invert ? max(1.0 - radius, 0.0) : max(radius, 0.0)) - minDist) * rMax, 0.0);
+  if (type == 0.0) {
+    float sigma = dist * ry * kTwoPi, phi = dist * rz * kPi, rad = dist * rx;
+    gColour = abs(fmodc(gColour + mulC * rc * dist, 1.0));
+    return w * (p + mul * vec3(rad * cos(sigma) * cos(phi), rad * cos(sigma) * sin(phi), rad * sin(sigma)));
+  }
+  if (type == 1.0) {
+    if (p == vec3(0.0)) return vec3(0.0);  // adds w·0, and leaves the colour
+    float rIn = length(p);
+    float r = rIn + mul.x * rx * dist;
+    float phi = atan2c(p.y, p.x) + mul.y * ry * dist;
+    float sigma = asin(p.z / rIn) + mul.z * rz * dist;
+    gColour = abs(fmodc(gColour + mulC * rc * dist, 1.0));
+    return w * vec3(r * cos(sigma) * cos(phi), r * cos(sigma) * sin(phi), r * sin(sigma));
+  }
+  float coeff = rMax <= 2.220446e-16 ? dist : dist + alpha * (v3d_logMap(dist) - dist);
+  gColour = abs(fmodc(gColour + v3d_logMap(mulC) * v3d_logScale(rc) * coeff, 1.0));
+  return w * (p + vec3(v3d_logMap(mul.x) * v3d_logScale(rx), v3d_logMap(mul.y) * v3d_logScale(ry),
+                       v3d_logMap(mul.z) * v3d_logScale(rz)) * coeff);
+}
