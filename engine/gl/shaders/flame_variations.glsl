@@ -44,6 +44,32 @@ float countParam(float v) {
   float r = sign(v) * floor(abs(v) + 0.5);  // std::round: half away from zero
   return r == 0.0 ? 1.0 : r;
 }
+float roundHalfAway(float v) { return sign(v) * floor(abs(v) + 0.5); }  // std::round
+// Fractorium's integer parameter: ⌊v + ½⌋ clamped to [lo, hi].
+float fractoriumInteger(float v, float lo, float hi) { return clamp(floor(v + 0.5), lo, hi); }
+// sin in double (GLSL has no double trig): Cody–Waite reduction by π/2 and Taylor series on
+// [−π/4, π/4], within a few ulp. The hashes multiply it by 43758.5453 and keep the fraction, which
+// float's sin cannot give.
+double dsin(double v) {
+  double q = floor(v * 0.63661977236758134lf + 0.5lf);
+  precise double r = fma(-q, 1.5707963267948966lf, v) - q * 6.123233995736766e-17lf;
+  double r2 = r * r;
+  double s = r * (1.0lf + r2 * (-1.6666666666666666e-1lf + r2 * (8.333333333333333e-3lf + r2 * (-1.984126984126984e-4lf
+             + r2 * (2.7557319223985893e-6lf + r2 * (-2.505210838544172e-8lf + r2 * (1.6059043836821613e-10lf
+             + r2 * (-7.647163731819816e-13lf + r2 * (2.8114572543455206e-15lf + r2 * -8.22063524662433e-18lf)))))))));
+  double c = 1.0lf + r2 * (-0.5lf + r2 * (4.1666666666666664e-2lf + r2 * (-1.388888888888889e-3lf
+             + r2 * (2.48015873015873e-5lf + r2 * (-2.755731922398589e-7lf + r2 * (2.08767569878681e-9lf
+             + r2 * (-1.1470745597729725e-11lf + r2 * (4.779477332387385e-14lf + r2 * -1.5619206968586225e-16lf))))))));
+  int n = int(q) & 3;
+  return n == 0 ? s : (n == 1 ? c : (n == 2 ? -s : -c));
+}
+// Fractorium's HashShadertoy, fract(43758.5453 sin(12.9898 a + 78.233 b + seed)), in double: float's
+// sin of its argument is far too coarse for the fraction.
+double hashShadertoyD(double a, double b, double seed) {
+  precise double v = dsin(a * 12.9898lf + b * 78.233lf + seed) * 43758.5453lf;
+  return v - floor(v);
+}
+float hashShadertoy(double a, double b, double seed) { return float(hashShadertoyD(a, b, seed)); }
 
 // ---- flam3's classics (variations_flam3_classic.cpp) ----------------------------------------
 

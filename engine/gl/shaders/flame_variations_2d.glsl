@@ -12,35 +12,9 @@ float v2d_cyclic(float v, float lo, float hi) {  // REAL_CYCLIC
 float v2d_nonzero(float v) {  // REAL_NONZERO: within 1e-6 of 0 becomes ±ε
   return v > -1e-6 && v < 1e-6 ? (v < 0.0 ? -kFractoriumEps : kFractoriumEps) : v;
 }
-float v2d_integer(float v, float lo, float hi) { return clamp(floor(v + 0.5), lo, hi); }
-float v2d_round(float v) { return sign(v) * floor(abs(v) + 0.5); }  // std::round
 float v2d_safeSqrt(float v) { return v <= 0.0 ? 0.0 : sqrt(v); }
 bool v2d_odd(float whole) { return fmodc(whole, 2.0) != 0.0; }
 
-// sin in double (GLSL has none): the hashes below multiply it by 43758.5453 and keep the fraction,
-// which float's sin cannot give. Reduced to [−π/2, π/2], then Taylor to x¹⁹ (error below 3e-16).
-double v2d_dsin(double x) {
-  const double kPiD = 3.141592653589793lf, kTwoPiD = 6.283185307179586lf, kHalfPiD = 1.5707963267948966lf;
-  precise double r = x - floor(x / kTwoPiD + 0.5lf) * kTwoPiD;
-  if (r > kHalfPiD) r = kPiD - r;
-  if (r < -kHalfPiD) r = -kPiD - r;
-  precise double r2 = r * r;
-  precise double s = -1.0lf / 121645100408832000.0lf;
-  s = s * r2 + 1.0lf / 355687428096000.0lf;
-  s = s * r2 - 1.0lf / 1307674368000.0lf;
-  s = s * r2 + 1.0lf / 6227020800.0lf;
-  s = s * r2 - 1.0lf / 39916800.0lf;
-  s = s * r2 + 1.0lf / 362880.0lf;
-  s = s * r2 - 1.0lf / 5040.0lf;
-  s = s * r2 + 1.0lf / 120.0lf;
-  s = s * r2 - 1.0lf / 6.0lf;
-  return r + r * r2 * s;
-}
-// Fractorium's HashShadertoy, in double as on the CPU.
-float v2d_hash(double x, double y, double seed) {
-  precise double v = v2d_dsin(x * 12.9898lf + y * 78.233lf + seed) * 43758.5453lf;
-  return float(v - floor(v));
-}
 
 // Complex numbers as vec2 (principal branches, as std::complex).
 vec2 v2d_cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
@@ -245,7 +219,7 @@ float v2d_coswrap(float v, float phase, float blend, float repeat) {
 }
 // The −1 outside the weight, as on the CPU.
 vec3 V_coswrap(vec3 p, float w, int P, int A) {
-  float repeatRaw = v2d_integer(P_(P, 0), -2147483647.0, 2147483647.0);
+  float repeatRaw = fractoriumInteger(P_(P, 0), -2147483647.0, 2147483647.0);
   float repeat = abs(repeatRaw == 0.0 ? (P_(P, 0) < 0.0 ? -1.0 : 1.0) : repeatRaw);
   float px = kPi * v2d_cyclic(P_(P, 3), -1.0, 1.0), py = kPi * v2d_cyclic(P_(P, 4), -1.0, 1.0);
   float blendX = 0.5 - cos(P_(P, 1) + px) * 0.5, blendY = 0.5 - cos(P_(P, 2) + py) * 0.5;
@@ -278,8 +252,8 @@ vec3 V_dust(vec3 p, float w, int P, int A) {
   float distortion = P_(P, 1), power = P_(P, 2);
   double fx = floor(double(abs(p.x))), fy = floor(double(abs(p.y)));
   double cx = (fx - density * trunc(fx / density)) / density, cy = (fy - density * trunc(fy / density)) / density;
-  float a = (float(cx) + v2d_hash(cx, cy, 1.0lf) * distortion) * kTwoPi;
-  float r = exp(log(float(cy) + v2d_hash(cy, cx, 2.0lf) * distortion) * power);
+  float a = (float(cx) + hashShadertoy(cx, cy, 1.0lf) * distortion) * kTwoPi;
+  float r = exp(log(float(cy) + hashShadertoy(cy, cx, 2.0lf) * distortion) * power);
   return vec3(w * cos(a) * r, w * sin(a) * r, w * p.z);
 }
 vec3 V_eclipse(vec3 p, float w, int P, int A) {
@@ -326,7 +300,7 @@ v2d_Elliptic v2d_elliptic(float x, float y) {
   return e;
 }
 vec3 V_eCollide(vec3 p, float w, int P, int A) {
-  float a = v2d_cyclic(P_(P, 0), 0.0, 1.0), num = v2d_integer(P_(P, 1), 1.0, 2147483647.0);
+  float a = v2d_cyclic(P_(P, 0), 0.0, 1.0), num = fractoriumInteger(P_(P, 1), 1.0, 2147483647.0);
   float cnPi = num / kPi, piCn = kPi / num, caCn = kPi * a / num;
   v2d_Elliptic e = v2d_elliptic(p.x, p.y);
   float alt = trunc(e.nu * cnPi);
@@ -452,7 +426,7 @@ vec3 V_foci_p(vec3 p, float w, int P, int A) {
   return vec3((e1 - e2) * r, sin(p.y) * r, w * p.z);
 }
 vec3 V_funnel(vec3 p, float w, int P, int A) {
-  float effect = v2d_integer(P_(P, 0), -2147483647.0, 2147483647.0) * kPi;
+  float effect = fractoriumInteger(P_(P, 0), -2147483647.0, 2147483647.0) * kPi;
   float t = 1.0 / fractoriumZeps(cos(p.y)) + effect;
   return vec3(w * (tanh(p.x) * t), w * (tanh(p.y) * t), w * p.z);
 }
@@ -476,7 +450,7 @@ vec3 V_henon(vec3 p, float w, int P, int A) {
 // δ outside the weight in the second form, as on the CPU.
 vec3 V_hole(vec3 p, float w, int P, int A) {
   float a = P_(P, 0);
-  bool inside = v2d_integer(P_(P, 1), 0.0, 1.0) != 0.0;
+  bool inside = fractoriumInteger(P_(P, 1), 0.0, 1.0) != 0.0;
   float r0 = sqrt(p.x * p.x + p.y * p.y), rz = fractoriumZeps(r0);
   float delta = pow(atan2c(p.y, p.x) / kPi + 1.0, a);
   float r = inside ? w * delta / (r0 + delta) : w * r0 + delta;
@@ -602,7 +576,7 @@ vec3 V_tile_log(vec3 p, float w, int P, int A) {
   float spread = P_(P, 0);
   float logU = log(1.0 - psi());
   float s = psi() < 0.5 ? spread : -spread;
-  return vec3(w * (p.x + v2d_round(logU * s)), w * p.y, w * p.z);
+  return vec3(w * (p.x + roundHalfAway(logU * s)), w * p.y, w * p.z);
 }
 
 // ---- cells and grids (variations_2d_c.cpp) ----------------------------------------------------------
@@ -619,7 +593,7 @@ vec3 V_bwraps_rand(vec3 p, float w, int P, int A) {
     double dcell = double(cell), invCell = 1.0lf / dcell;
     double cx = (floor(double(p.x) * invCell) + 0.5lf) * dcell, cy = (floor(double(p.y) * invCell) + 0.5lf) * dcell;
     float lx = float(double(p.x) - cx), ly = float(double(p.y) - cy);
-    float radius = halfCell * (symm == 0.0 ? v2d_hash(cx, cy, seed) : v2d_hash(cx * cx, cy * cy, seed));
+    float radius = halfCell * (symm == 0.0 ? hashShadertoy(cx, cy, seed) : hashShadertoy(cx * cx, cy * cy, seed));
     float mb = g2 * radius;
     float maxBubble = mb > 2.0 ? 1.0 : mb / (mb * mb * 0.25 + 1.0);
     float r2 = radius * radius;
@@ -653,7 +627,7 @@ float v2d_noise2(int x, int y) {
 // X and Y read but not used, as on the CPU.
 vec3 V_CircleLinear(vec3 p, float w, int P, int A) {
   float sc = v2d_nonzero(P_(P, 0)), k = P_(P, 1), dens1 = P_(P, 2), dens2 = P_(P, 3), reverse = P_(P, 4);
-  float seed = v2d_integer(P_(P, 7), -2147483647.0, 2147483647.0);
+  float seed = fractoriumInteger(P_(P, 7), -2147483647.0, 2147483647.0);
   int m = v2d_javaInt(floor(0.5 * p.x / sc)), n = v2d_javaInt(floor(0.5 * p.y / sc));
   float m21 = 2.0 * float(m) + 1.0, n21 = 2.0 * float(n) + 1.0;
   vec2 q = vec2(p.x - m21 * sc, p.y - n21 * sc);
@@ -733,8 +707,8 @@ vec3 V_gdoffs(vec3 p, float w, int P, int A) {
   float dx = clamp(P_(P, 0), 0.0, 16.0) * 0.1, dy = clamp(P_(P, 1), 0.0, 16.0) * 0.1;
   float ax = (abs(P_(P, 2)) < 0.1 ? 0.1 : abs(P_(P, 2))) * 2.0;
   float ay = (abs(P_(P, 3)) < 0.1 ? 0.1 : abs(P_(P, 3))) * 2.0;
-  float cx = P_(P, 4), cy = P_(P, 5), gamma = v2d_integer(P_(P, 6), 1.0, 6.0);
-  bool square = v2d_integer(P_(P, 7), 0.0, 1.0) != 0.0;
+  float cx = P_(P, 4), cy = P_(P, 5), gamma = fractoriumInteger(P_(P, 6), 1.0, 6.0);
+  bool square = fractoriumInteger(P_(P, 7), 0.0, 1.0) != 0.0;
   float b = gamma * 2.0 / max(ax, ay);
   float oscX = v2d_gdoffsOsc(dx, 1.0), oscY = square ? oscX : v2d_gdoffsOsc(dy, 1.0);
   return vec3(w * v2d_gdoffs(p.x + cx, b, oscX), w * v2d_gdoffs(p.y + cy, b, oscY), w * p.z);
@@ -790,7 +764,7 @@ vec3 V_hex_modulus(vec3 p, float w, int P, int A) {
   float hsize = halfRoot3 / fractoriumZeps(P_(P, 0)), scale = w / halfRoot3;
   float px = p.x * hsize, py = p.y * hsize, third = py / 3.0;
   float cx = root3 / 3.0 * px - third, cz = 2.0 * third, cy = -cx - cz;
-  float rx = v2d_round(cx), ry = v2d_round(cy), rz = v2d_round(cz);
+  float rx = roundHalfAway(cx), ry = roundHalfAway(cy), rz = roundHalfAway(cz);
   float dx = abs(rx - cx), dy = abs(ry - cy), dz = abs(rz - cz);
   if (dx > dy && dx > dz)
     rx = -ry - rz;
@@ -806,8 +780,8 @@ float v2d_interferenceWave(float type, float a, float b, float c, float p, float
   return a * pow(abs(sin(b * v + c)), p);
 }
 vec3 V_interference2(vec3 p, float w, int P, int A) {
-  float a1 = P_(P, 0), b1 = P_(P, 1), c1 = P_(P, 2), p1 = P_(P, 3), t1 = v2d_integer(P_(P, 4), 0.0, 2.0);
-  float a2 = P_(P, 5), b2 = P_(P, 6), c2 = P_(P, 7), p2 = P_(P, 8), t2 = v2d_integer(P_(P, 9), 0.0, 2.0);
+  float a1 = P_(P, 0), b1 = P_(P, 1), c1 = P_(P, 2), p1 = P_(P, 3), t1 = fractoriumInteger(P_(P, 4), 0.0, 2.0);
+  float a2 = P_(P, 5), b2 = P_(P, 6), c2 = P_(P, 7), p2 = P_(P, 8), t2 = fractoriumInteger(P_(P, 9), 0.0, 2.0);
   return vec3(w * (v2d_interferenceWave(t1, a1, b1, c1, p1, p.x) + v2d_interferenceWave(t2, a2, b2, c2, p2, p.x)),
               w * (v2d_interferenceWave(t1, a1, b1, c1, p1, p.y) + v2d_interferenceWave(t2, a2, b2, c2, p2, p.y)),
               w * p.z);

@@ -7,7 +7,6 @@
 
 float v2dm_signNz(float v) { return v < 0.0 ? -1.0 : 1.0; }
 // Fractorium's INTEGER parameter: ⌊v + ½⌋ clamped.
-float v2dm_integer(float v, float lo, float hi) { return clamp(floor(v + 0.5), lo, hi); }
 // GLSL's tanh may overflow to NaN for large arguments; it is ±1 in float well before 20.
 float v2dm_tanh(float v) { return tanh(clamp(v, -20.0, 20.0)); }
 // Fractorium's wrap of a cyclic parameter into [lo, hi] (fmod from the end it left).
@@ -102,7 +101,7 @@ vec3 V_lazyjess(vec3 p, float w, int P, int A) {
   return vec3(q, w * p.z);
 }
 vec3 V_loonie2(vec3 p, float w, int P, int A) {
-  float sides = v2dm_integer(P_(P, 0), 1.0, 50.0);
+  float sides = fractoriumInteger(P_(P, 0), 1.0, 50.0);
   float a = kTwoPi / sides, st = -kPi / 2.0 * clamp(P_(P, 1), -1.0, 1.0);
   float c = kPi / 2.0 * clamp(P_(P, 2), -1.0, 1.0);
   float sina = sin(a), cosa = cos(a), sins = sin(st), coss = cos(st), sinc = sin(c), cosc = cos(c);
@@ -519,7 +518,7 @@ vec3 V_truchet_knot(vec3 p, float w, int P, int A) {
 
 // Each sine (or with mode 1 its lift ½(1 + sin)) to a power truncated towards 0.
 vec3 V_waves22(vec3 p, float w, int P, int A) {
-  bool liftX = v2dm_integer(P_(P, 4), 0.0, 1.0) >= 0.5, liftY = v2dm_integer(P_(P, 5), 0.0, 1.0) >= 0.5;
+  bool liftX = fractoriumInteger(P_(P, 4), 0.0, 1.0) >= 0.5, liftY = fractoriumInteger(P_(P, 5), 0.0, 1.0) >= 0.5;
   float sx = sin(p.y * P_(P, 2)), sy = sin(p.x * P_(P, 3));
   float bx = liftX ? 0.5 * (1.0 + sx) : sx, by = liftY ? 0.5 * (1.0 + sy) : sy;
   return w * vec3(p.x + v2dm_powWhole(bx, trunc(P_(P, 6))) * P_(P, 0),
@@ -536,28 +535,13 @@ vec3 V_waves3(vec3 p, float w, int P, int A) {
   float sx = P_(P, 0) * 0.5 * (1.0 + sin(p.y * P_(P, 4))), sy = P_(P, 1) * 0.5 * (1.0 + sin(p.x * P_(P, 5)));
   return w * vec3(p.x + sin(p.y * P_(P, 2)) * sx, p.y + sin(p.x * P_(P, 3)) * sy, p.z);
 }
-// sin in double (GLSL has none): Cody–Waite reduction by π/2 in two parts, then Taylor series on
-// [−π/4, π/4]. waves4's hash multiplies the sine by 43758.5453 and keeps the fraction, so a float
-// sine would leave nothing of it.
-double v2dm_sinD(double x) {
-  precise double k = floor(x * 0.63661977236758134lf + 0.5lf);
-  precise double r = (x - k * 1.5707963267948966lf) - k * 6.123233995736766e-17lf;
-  precise double r2 = r * r;
-  precise double s = 1.0lf, c = 1.0lf;
-  // Horner's form of the series up to r¹⁷ (sine) and r¹⁸ (cosine).
-  for (int n = 17; n >= 3; n -= 2) s = 1.0lf - r2 / double((n - 1) * n) * s;
-  for (int n = 18; n >= 2; n -= 2) c = 1.0lf - r2 / double((n - 1) * n) * c;
-  s *= r;
-  int q = int(k) & 3;
-  return q == 0 ? s : (q == 1 ? c : (q == 2 ? -s : -c));
-}
 // waves4 and waves42: waves2 whose x amplitude is a hash of the band of y the point is in, squared
 // (the hash in double, as the CPU has it).
 vec3 v2dm_wavesHashed(vec3 p, float w, int P, double band) {
-  bool cont = v2dm_integer(P_(P, 4), 0.0, 1.0) == 1.0;
+  bool cont = fractoriumInteger(P_(P, 4), 0.0, 1.0) == 1.0;
   precise double yd = double(p.y);
   precise double k = floor(yd * band);
-  precise double h = v2dm_sinD(k * 12.9898lf + k * 78.233lf + 1.0lf + yd * (double(P_(P, 5)) * 0.001lf)) * 43758.5453lf;
+  precise double h = dsin(k * 12.9898lf + k * 78.233lf + 1.0lf + yd * (double(P_(P, 5)) * 0.001lf)) * 43758.5453lf;
   h -= trunc(h);
   float hf = cont ? (h > 0.5lf ? 1.0 : 0.0) : float(h);
   return w * vec3(p.x + sin(p.y * P_(P, 2)) * hf * hf * P_(P, 0), p.y + sin(p.x * P_(P, 3)) * P_(P, 1), p.z);
@@ -691,7 +675,7 @@ vec2 v2dm_xtrbHex(v2dm_Xtrb t, float al, float be, float ga, float u) {
 }
 // The weight enters twice, as in Fractorium.
 vec3 V_xtrb(vec3 p, float w, int P, int A) {
-  float power = v2dm_integer(P_(P, 0), -2147483647.0, 2147483647.0);
+  float power = fractoriumInteger(P_(P, 0), -2147483647.0, 2147483647.0);
   if (power == 0.0) power = v2dm_signNz(P_(P, 0));
   float radius = P_(P, 1), dist = P_(P, 3);
   float br = 0.047 + P_(P, 4), cr = 0.047 + P_(P, 5), ar = kPi - br - cr;
@@ -755,7 +739,7 @@ float v2dm_synthLayer(int Q, float a, float t, float factor) {
     y = y > v ? 0.5 + 0.5 * (y - v) / fractoriumZeps(1.0 - v) : 0.5 - 0.5 * (v - y) / fractoriumZeps(v);
   }
   float x;
-  int type = int(v2dm_integer(P_(Q, 1), 0.0, 8.0));
+  int type = int(fractoriumInteger(P_(Q, 1), 0.0, 8.0));
   if (type == 0) {  // sine
     x = sin(y * kTwoPi);
   } else if (type == 1) {  // cosine
@@ -776,7 +760,7 @@ float v2dm_synthLayer(int Q, float a, float t, float factor) {
     float c = cos((y - 0.5) * (kTwoPi / frequency));
     x = c / fractoriumZeps(1.0 - c);
   }
-  int layer = int(v2dm_integer(P_(Q, 5), 0.0, 3.0));
+  int layer = int(fractoriumInteger(P_(Q, 5), 0.0, 3.0));
   if (layer == 0) return factor + amplitude * x;
   if (layer == 1) return factor * (1.0 + amplitude * x);
   float v2 = a + amplitude * x;
@@ -830,9 +814,9 @@ vec2 v2dm_synthSinCos(int P, float t, bool mixIn) {
               (1.0 - mixv) * cs + (v2dm_synthValue(P, t + kPi / 2.0) - 1.0));
 }
 vec3 V_synth(vec3 p, float w, int P, int A) {
-  int mode = int(v2dm_integer(P_(P, 1), 0.0, 26.0));
+  int mode = int(fractoriumInteger(P_(P, 1), 0.0, 26.0));
   float power = P_(P, 2), mixv = P_(P, 3);
-  bool smooth_ = v2dm_integer(P_(P, 4), 0.0, 1.0) != 0.0;
+  bool smooth_ = fractoriumInteger(P_(P, 4), 0.0, 1.0) != 0.0;
   float vx = p.x, vy = p.y, r2 = vx * vx + vy * vy;
   float theta0 = atan2c(vx, vy);  // flam3's θ
   float px = 0.0, py = 0.0;

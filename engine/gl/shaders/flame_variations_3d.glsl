@@ -5,8 +5,6 @@
 // sum of the terms before them, replace it, or move the colour index stay on the CPU.
 
 // Fractorium's integer parameter (⌊v + ½⌋, clamped) and std::round (half away from zero).
-float v3d_integer(float v, float lo, float hi) { return clamp(floor(v + 0.5), lo, hi); }
-float v3d_round(float v) { return sign(v) * floor(abs(v) + 0.5); }
 
 // ---- quaternions (variations_3d_quaternion.cpp) --------------------------------------------------
 
@@ -116,7 +114,7 @@ vec3 V_ovoid3d(vec3 p, float w, int P, int A) {
   return p * r * vec3(P_(P, 0), P_(P, 1), P_(P, 2));
 }
 vec3 V_sphyp3D(vec3 p, float w, int P, int A) {
-  bool zOn = v3d_round(P_(P, 3)) == 1.0;
+  bool zOn = roundHalfAway(P_(P, 3)) == 1.0;
   float t = fractoriumZeps(dot(p, p));
   return vec3(p.x * w / pow(t, P_(P, 0)), p.y * w / pow(t, P_(P, 1)), zOn ? p.z * w / pow(t, P_(P, 2)) : w * p.z);
 }
@@ -192,7 +190,7 @@ vec3 V_bubbleT3D(vec3 p, float w, int P, int A) {
   bool invStripes = stripes < 0.0;
   float ratio = clamp(clamp(P_(P, 1), 0.0, 2.0), 0.01, 1.99);
   float hole = clamp(P_(P, 2), -360.0, 360.0), exponentZ = P_(P, 3);
-  bool symmetryZ = v3d_integer(P_(P, 4), 0.0, 1.0) == 1.0, blur = v3d_integer(P_(P, 5), 0.0, 1.0) == 1.0;
+  bool symmetryZ = fractoriumInteger(P_(P, 4), 0.0, 1.0) == 1.0, blur = fractoriumInteger(P_(P, 5), 0.0, 1.0) == 1.0;
   float angStrip = absStripes != 0.0 ? kPi / absStripes : 0.0, strip2 = 2.0 * angStrip;
   float sn = sin(angStrip), cs = cos(angStrip), strip1 = fractoriumZeps(ratio * angStrip);
   float holeAngle = symmetryZ ? (hole < 0.0 ? abs(hole) : min(hole, 179.9)) : hole;
@@ -333,7 +331,7 @@ vec3 V_heat(vec3 p, float w, int P, int A) {
 }
 // |p|² taken as x² + y² + z (z, not z²), as in Fractorium.
 vec3 V_hypertile3D(vec3 p, float w, int P, int A) {
-  float pp = v3d_integer(P_(P, 0), 3.0, 2147483647.0), q = v3d_integer(P_(P, 1), 3.0, 2147483647.0);
+  float pp = fractoriumInteger(P_(P, 0), 3.0, 2147483647.0), q = fractoriumInteger(P_(P, 1), 3.0, 2147483647.0);
   float tile = floor(P_(P, 2) + 0.5);
   float pa = kTwoPi / pp, qa = kTwoPi / q;
   float r = -(cos(pa) - 1.0) / fractoriumZeps(cos(pa) + cos(qa));
@@ -476,9 +474,9 @@ vec3 V_falloff(vec3 p, float w, int P, int A) {
   float minDist = max(P_(P, 1), 0.0);
   vec3 mul = clamp(vec3(P_(P, 2), P_(P, 3), P_(P, 4)), 0.0, 1.0);
   vec3 centre = vec3(P_(P, 5), P_(P, 6), P_(P, 7));
-  bool invert = v3d_integer(P_(P, 8), 0.0, 1.0) != 0.0;
-  float type = v3d_integer(P_(P, 9), 0.0, 2.0);
-  float boxPow = v3d_integer(P_(P, 10), 2.0, 32.0);
+  bool invert = fractoriumInteger(P_(P, 8), 0.0, 1.0) != 0.0;
+  float type = fractoriumInteger(P_(P, 9), 0.0, 2.0);
+  float boxPow = fractoriumInteger(P_(P, 10), 2.0, 32.0);
   float ax = psi() - 0.5;
   float ay = psi() - 0.5;
   float az = psi() - 0.5;
@@ -512,7 +510,7 @@ int v3d_seed(float v) {  // clamped into int's range, as Fractorium's int holds 
 vec3 V_Voron(vec3 p, float w, int P, int A) {
   float k = P_(P, 0), side = P_(P, 1);
   if (abs(side) < 1e-6) side = side < 0.0 ? -kFractoriumEps : kFractoriumEps;
-  double count = double(v3d_integer(P_(P, 2), 1.0, 25.0));
+  double count = double(fractoriumInteger(P_(P, 2), 1.0, 25.0));
   int seedX = v3d_seed(P_(P, 3)), seedY = v3d_seed(P_(P, 4));
   float cellX = floor(p.x / side), cellY = floor(p.y / side);
   // A point beyond ±2²⁰ cells (far outside any flame) escapes, as on the CPU.
@@ -614,16 +612,14 @@ float v3d_logMap(float v) { return v == 0.0 ? 0.0 : (2.718281828 + log(v * 2.718
 float v3d_logScale(float v) {
   return v == 0.0 ? 0.0 : log((abs(v) + 1.0) * 2.718281828) * (v < 0.0 ? -1.0 : 1.0) / 2.718281828;
 }
-float v3d_fractoriumInteger(float v, float low, float high) { return clamp(floor(v + 0.5), low, high); }
-float v3d_roundHalfAway(float v) { return sign(v) * floor(abs(v) + 0.5); }
 
 vec3 V_falloff2(vec3 p, float w, int P, int A) {
   float scale = 0.04 * max(P_(P, 0), 1e-6), mindist = max(P_(P, 1), 0.0);
   vec3 mul = clamp(vec3(P_(P, 2), P_(P, 3), P_(P, 4)), 0.0, 1.0);
   float mulC = clamp(P_(P, 5), 0.0, 1.0);
   vec3 centre = vec3(P_(P, 6), P_(P, 7), P_(P, 8));
-  bool invert = v3d_roundHalfAway(P_(P, 9)) >= 1.0;
-  float type = v3d_roundHalfAway(P_(P, 10));
+  bool invert = roundHalfAway(P_(P, 9)) >= 1.0;
+  float type = roundHalfAway(P_(P, 10));
   float d = length(p - centre);
   if (invert) d = 1.0 - d;
   d = max(0.0, (max(d, 0.0) - mindist) * scale);
@@ -646,11 +642,11 @@ vec3 V_falloff2(vec3 p, float w, int P, int A) {
 }
 
 vec3 V_falloff3(vec3 p, float w, int P, int A) {
-  float type = v3d_fractoriumInteger(P_(P, 0), 0.0, 3.0);
-  bool square = v3d_fractoriumInteger(P_(P, 1), 0.0, 1.0) != 0.0;
+  float type = fractoriumInteger(P_(P, 0), 0.0, 3.0);
+  bool square = fractoriumInteger(P_(P, 1), 0.0, 1.0) != 0.0;
   float rMax = 0.04 * max(P_(P, 2), 2.220446e-16);
   float minDist = max(P_(P, 3), 0.0);
-  bool invert = v3d_fractoriumInteger(P_(P, 4), 0.0, 1.0) != 0.0;
+  bool invert = fractoriumInteger(P_(P, 4), 0.0, 1.0) != 0.0;
   vec3 mul = clamp(vec3(P_(P, 5), P_(P, 6), P_(P, 7)), 0.0, 1.0);
   float mulC = clamp(P_(P, 8), 0.0, 1.0);
   vec3 centre = vec3(P_(P, 9), P_(P, 10), P_(P, 11));

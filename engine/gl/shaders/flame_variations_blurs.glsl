@@ -10,7 +10,6 @@ float blurs_pow(float x, float y) {
   return pow(x, y);
 }
 // std::round: half away from zero.
-float blurs_round(float v) { return sign(v) * floor(abs(v) + 0.5); }
 // Whether a whole number is odd, as fmod(v, 2) != 0 (NaN and ±∞ count as odd, as there).
 bool blurs_isOdd(float v) { return !(mod(v, 2.0) == 0.0); }
 // 2π · frac(k/n): the angle 2πk/n of a random branch k reduced in double, where k (up to 32767 or
@@ -19,28 +18,6 @@ float blurs_turns(float k, float n) {
   double t = double(k) / double(n);
   return float(t - floor(t)) * kTwoPi;
 }
-// sin in double (GLSL has no double trig): Cody–Waite reduction by π/2 and Taylor series on
-// [−π/4, π/4], within a few ulp; the shader hash below multiplies it by 43758.
-double blurs_dsin(double v) {
-  double q = floor(v * 0.63661977236758134lf + 0.5lf);
-  precise double r = fma(-q, 1.5707963267948966lf, v) - q * 6.123233995736766e-17lf;
-  double r2 = r * r;
-  double s = r * (1.0lf + r2 * (-1.6666666666666666e-1lf + r2 * (8.333333333333333e-3lf + r2 * (-1.984126984126984e-4lf
-             + r2 * (2.7557319223985893e-6lf + r2 * (-2.505210838544172e-8lf + r2 * (1.6059043836821613e-10lf
-             + r2 * (-7.647163731819816e-13lf + r2 * (2.8114572543455206e-15lf + r2 * -8.22063524662433e-18lf)))))))));
-  double c = 1.0lf + r2 * (-0.5lf + r2 * (4.1666666666666664e-2lf + r2 * (-1.388888888888889e-3lf
-             + r2 * (2.48015873015873e-5lf + r2 * (-2.755731922398589e-7lf + r2 * (2.08767569878681e-9lf
-             + r2 * (-1.1470745597729725e-11lf + r2 * (4.779477332387385e-14lf + r2 * -1.5619206968586225e-16lf))))))));
-  int n = int(q) & 3;
-  return n == 0 ? s : (n == 1 ? c : (n == 2 ? -s : -c));
-}
-// Fractorium's HashShadertoy, fract(43758.5453 sin(12.9898 a + 78.233 b + seed)), in double: float's
-// sin of its argument is far too coarse for the fraction.
-double blurs_dhash(double a, double b, double seed) {
-  precise double v = blurs_dsin(a * 12.9898lf + b * 78.233lf + seed) * 43758.5453lf;
-  return v - floor(v);
-}
-float blurs_hash(double a, double b, double seed) { return float(blurs_dhash(a, b, seed)); }
 // Fractorium's REAL_CYCLIC, fmod from the end the value left.
 float blurs_cyclic(float v, float lo, float hi) {
   if (v > hi) return lo + fmodc(v - lo, hi - lo);
@@ -48,7 +25,6 @@ float blurs_cyclic(float v, float lo, float hi) {
   return v;
 }
 // Fractorium's integer parameter: ⌊v + ½⌋ clamped.
-float blurs_integer(float v, float lo, float hi) { return clamp(floor(v + 0.5), lo, hi); }
 // REAL_NONZERO: within 10⁻⁶ of 0 becomes ±ε.
 float blurs_nonzero(float v) { return v > -1e-6 && v < 1e-6 ? (v < 0.0 ? -kFractoriumEps : kFractoriumEps) : v; }
 
@@ -160,7 +136,7 @@ vec3 V_bTransform(vec3 p, float w, int P, int A) {
 vec3 V_boarders2(vec3 p, float w, int P, int A) {
   float c = fractoriumZeps(abs(P_(P, 0))), cl = c * fractoriumZeps(abs(P_(P, 1)));
   float cr = c + c * fractoriumZeps(abs(P_(P, 2)));
-  float rx = blurs_round(p.x), ry = blurs_round(p.y);
+  float rx = roundHalfAway(p.x), ry = roundHalfAway(p.y);
   float dx = p.x - rx, dy = p.y - ry;
   float px = dx * c + rx, py = dy * c + ry;
   if (psi() < cr) {
@@ -197,7 +173,7 @@ vec3 V_checks(vec3 p, float w, int P, int A) {
   float cx = P_(P, 0), cy = P_(P, 1), cells = 1.0 / fractoriumZeps(P_(P, 2)), spread = P_(P, 3);
   float rx = spread * psi();
   float ry = spread * psi();
-  float sum = blurs_round(p.x * cells) + blurs_round(p.y * cells);
+  float sum = roundHalfAway(p.x * cells) + roundHalfAway(p.y * cells);
   bool odd = abs(fmodc(sum, 2.0)) == 1.0;
   return w * vec3(p.x + (odd ? rx - cx : cx), p.y + (odd ? -cy : cy + ry), p.z);
 }
@@ -235,16 +211,16 @@ vec3 V_hex_rand(vec3 p, float w, int P, int A) {
   double hx = double(cx) + 0.5lf * double(cy), hy = double(cy) * 0.86602540378443864676lf;
   float spread = sqrt(psi());
   vec2 q = vec2(0.0);
-  if (blurs_hash(hy, hx, seed) < density) {
-    float r = halfSize * edge * spread * kTwoOverSqrt3 * blurs_pow(blurs_hash(hx, hy, seed), power);
+  if (hashShadertoy(hy, hx, seed) < density) {
+    float r = halfSize * edge * spread * kTwoOverSqrt3 * blurs_pow(hashShadertoy(hx, hy, seed), power);
     q = vec2((cos(angle) * r + float(hx)) * w, (sin(angle) * r + float(hy)) * w);
   }
   return vec3(q, w * p.z);
 }
 // crackle2's jittered point of the unit cell c.
 vec2 blurs_cracklePoint(float cx, float cy, float jitter) {
-  return vec2(cx + jitter * blurs_hash(double(cx), double(cy), 34554.0lf),
-              cy + jitter * blurs_hash(double(cy), double(cx) * 3.0lf, 34561.0lf));
+  return vec2(cx + jitter * hashShadertoy(double(cx), double(cy), 34554.0lf),
+              cy + jitter * hashShadertoy(double(cy), double(cx) * 3.0lf, 34561.0lf));
 }
 vec3 V_crackle2(vec3 p, float w, int P, int A) {
   float cellsize = max(P_(P, 0), 0.0001), jitter = 1.0 / fractoriumZeps(cellsize);
@@ -266,7 +242,7 @@ vec3 V_cpow3(vec3 p, float w, int P, int A) {
   a = a < 0.0 ? a + kTwoPi : a;
   a = cos(a / 2.0) < 2.0 * psi() - 1.0 ? a - kTwoPi : a;
   float sgn = psi() < 0.5 ? kTwoPi : -kTwoPi;
-  a += sgn * blurs_round(log(1.0 - psi()) * coeff);
+  a += sgn * roundHalfAway(log(1.0 - psi()) * coeff);
   float k = floor(psi() * 32767.0);
   float lnr2 = log(p.x * p.x + p.y * p.y);
   float m = w * exp(c / 2.0 * lnr2 - e * a);
@@ -314,8 +290,8 @@ vec3 V_Circle_Rand(vec3 p, float w, int P, int A) {
   float r = sqrt(psi());
   float cx = 2.0 * (floor(psi() * sideX * 2.0 + 0.5) - sideX);
   float cy = 2.0 * (floor(psi() * sideY * 2.0 + 0.5) - sideY);
-  float ret = blurs_hash(double(cy), double(cx), seed) < density
-                  ? size * r * exp(log(blurs_hash(double(cx), double(cy), seed)) * power)
+  float ret = hashShadertoy(double(cy), double(cx), seed) < density
+                  ? size * r * exp(log(hashShadertoy(double(cx), double(cy), seed)) * power)
                   : 0.0;
   vec2 q = ret > 0.0 ? w * vec2(cos(a) * ret + cx, sin(a) * ret + cy) : vec2(0.0);
   return vec3(q, w * p.z);
@@ -325,7 +301,7 @@ vec3 V_Circle_Rand(vec3 p, float w, int P, int A) {
 // when the loop broke off.
 vec3 V_CircleRand(vec3 p, float w, int P, int A) {
   float sc = blurs_nonzero(P_(P, 0)), dens = P_(P, 1), spanX = P_(P, 2), spanY = P_(P, 3);
-  float seed = blurs_integer(P_(P, 4), -2147483647.0, 2147483647.0);
+  float seed = fractoriumInteger(P_(P, 4), -2147483647.0, 2147483647.0);
   vec2 q = vec2(0.0);
   bool done = false;
   for (int tries = 1; tries <= 11; ++tries) {
@@ -344,7 +320,7 @@ vec3 V_CircleRand(vec3 p, float w, int P, int A) {
 }
 vec3 V_CircleTrans1(vec3 p, float w, int P, int A) {
   float sc = fractoriumZeps(blurs_nonzero(P_(P, 0))), dens = P_(P, 1), cx = P_(P, 2), cy = P_(P, 3);
-  float seed = blurs_integer(P_(P, 4), -2147483647.0, 2147483647.0);
+  float seed = fractoriumInteger(P_(P, 4), -2147483647.0, 2147483647.0);
   float spanX = abs(cx), spanY = abs(cy);
   float ux = (p.x - cx) * 0.5 + cx, uy = (p.y - cy) * 0.5 + cy;
   float m = floor(0.5 * ux / sc), k = floor(0.5 * uy / sc);
@@ -485,7 +461,7 @@ vec3 V_hex_truchet(vec3 p, float w, int P, int A) {
   float cornerY = angle < 4.1887 ? 0.5773 : -1.1547;
   float cx = 2.0 * (floor(psi() * cells) - side);
   float cy = 2.0 * (floor(psi() * cells) - side);
-  float turn = blurs_hash(double(cx), double(cy), seed) < 0.5 ? 0.0 : 1.0471;
+  float turn = hashShadertoy(double(cx), double(cy), seed) < 0.5 ? 0.0 : 1.0471;
   float c = cos(turn), s = sin(turn), a = angle + 2.6179 - turn;
   return vec3((cos(a) * r + cornerX * c + cornerY * s + cx + 0.5 * cy) * w,
               (sin(a) * r - cornerX * s + cornerY * c + 0.866 * cy) * w, w * p.z);
@@ -550,7 +526,7 @@ vec3 V_sschecks(vec3 p, float w, int P, int A) {
   float cx = P_(P, 0), cy = P_(P, 1), invSize = 1.0 / fractoriumZeps(P_(P, 2)), jitter = P_(P, 3);
   float u = psi();
   float r = w / fractoriumZeps(p.x * p.x + p.y * p.y);
-  float cell = blurs_round(p.x * invSize) + blurs_round(p.y * invSize);
+  float cell = roundHalfAway(p.x * invSize) + roundHalfAway(p.y * invSize);
   bool odd = fmodc(cell, 2.0) != 0.0;
   float dx = odd ? -cx + jitter * u : cx;
   float dy = odd ? -cy : cy + jitter * u;
@@ -697,7 +673,7 @@ bool blurs_tileType(double v) {
 vec4 blurs_truchetTile(vec2 q, float scale, bool type1, float exponent, float oneOverExponent, float rmax,
                        bool roundAway) {
   vec2 s = q * scale;
-  vec2 rr = s - (roundAway ? vec2(blurs_round(s.x), blurs_round(s.y)) : floor(s + 0.5));
+  vec2 rr = s - (roundAway ? vec2(roundHalfAway(s.x), roundHalfAway(s.y)) : floor(s + 0.5));
   float x = rr.x < 0.0 ? 1.0 + rr.x : rr.x, y = rr.y < 0.0 ? 1.0 + rr.y : rr.y;
   float xval1 = type1 ? x - 1.0 : x, xval2 = type1 ? x : x - 1.0;
   float r0 = blurs_pow(blurs_pow(abs(xval1), exponent) + blurs_pow(abs(y), exponent), oneOverExponent);
@@ -714,7 +690,7 @@ vec3 V_Truchet_fill(vec3 p, float w, int P, int A) {
   if (seed != 0.0 && seed != 1.0) {
     double ds = double(seed);
     double seed2 = sqrt(ds * 1.5lf) / (ds * 0.5lf) * 0.25lf;
-    double xr = double(blurs_round(abs(p.x))) * seed2, yr = double(blurs_round(abs(p.y))) * seed2;
+    double xr = double(roundHalfAway(abs(p.x))) * seed2, yr = double(roundHalfAway(abs(p.y))) * seed2;
     precise double randint = (ds + xr + yr + xr * yr) * seed2 * 0.5lf;
     type1 = blurs_tileType(randint);
   }
@@ -732,7 +708,7 @@ vec3 V_Truchet_glyph(vec3 p, float w, int P, int A) {
   float c = cos(rads), s = sin(rads);
   bool type1 = seed == 1.0;
   if (seed != 0.0 && seed != 1.0)
-    type1 = blurs_tileType(blurs_dhash(double(floor(abs(p.x) + 0.5)), double(floor(abs(p.y) + 0.5)), double(seed)));
+    type1 = blurs_tileType(hashShadertoyD(double(floor(abs(p.x) + 0.5)), double(floor(abs(p.y) + 0.5)), double(seed)));
   vec2 v = p.xy - (floor(p.xy / amp) + 0.5) * amp;
   float u = c * v.x + s * v.y, vv = -s * v.x + c * v.y;
   if (!(abs(u) + abs(vv) < halfAmpMax)) return vec3(p.xy, w * p.z);
@@ -760,7 +736,7 @@ vec3 V_Truchet_inv(vec3 p, float w, int P, int A) {
 vec3 V_Truchet_hex_fill(vec3 p, float w, int P, int A) {
   const double kSqrt3 = 1.7320508075688772lf;
   float sides = floor(P_(P, 0) + 0.5);
-  bool flipX = blurs_integer(P_(P, 1), 0.0, 1.0) != 0.0, flipY = blurs_integer(P_(P, 2), 0.0, 1.0) != 0.0;
+  bool flipX = fractoriumInteger(P_(P, 1), 0.0, 1.0) != 0.0, flipY = fractoriumInteger(P_(P, 2), 0.0, 1.0) != 0.0;
   float spreadX = P_(P, 3), spreadY = P_(P, 4), seed = floor(P_(P, 5) + 0.5);
   float sectors = 3.0 * sides, oneOverSectors = 1.0 / fractoriumZeps(sectors);
   float l1 = log(psi());
@@ -773,7 +749,7 @@ vec3 V_Truchet_hex_fill(vec3 p, float w, int P, int A) {
   if (seed == 1.0) {
     keep = blurs_isOdd(rx) || blurs_isOdd(rz);
   } else if (seed >= 2.0) {
-    keep = !(blurs_hash(hx, hy, double(seed)) < 0.5);
+    keep = !(hashShadertoy(hx, hy, double(seed)) < 0.5);
   }
   float rangle = floor(psi() * sectors) * kTwoPi * oneOverSectors;
   float yAux = flipY && !keep ? -p.y : p.y, xAux = flipX && !keep ? -p.x : p.x;
@@ -790,8 +766,8 @@ vec3 V_Truchet_hex_fill(vec3 p, float w, int P, int A) {
 }
 vec3 V_Truchet_hex_crop(vec3 p, float w, int P, int A) {
   const double kSqrt3 = 1.7320508075688772lf;
-  float wd = clamp(P_(P, 0), 0.0, 5.0), mode = blurs_integer(P_(P, 1), 0.0, 2.0);
-  bool inv = blurs_integer(P_(P, 2), 0.0, 1.0) != 0.0;
+  float wd = clamp(P_(P, 0), 0.0, 5.0), mode = fractoriumInteger(P_(P, 1), 0.0, 2.0);
+  bool inv = fractoriumInteger(P_(P, 2), 0.0, 1.0) != 0.0;
   float seed = floor(P_(P, 3) + 0.5);
   float d1 = 0.5 + wd, d2 = 0.5 - wd;
   const float kCoef = 1.5 / kPi;
@@ -799,7 +775,7 @@ vec3 V_Truchet_hex_crop(vec3 p, float w, int P, int A) {
   // Cube coordinates of the hexagon, rounded, the coordinate with the largest rounding error recomputed.
   float yOver3 = p.y / 3.0;
   float cx = 0.57735026918962576 * p.x - yOver3, cz = 2.0 * yOver3, cy = -cx - cz;
-  float rx = blurs_round(cx), ry = blurs_round(cy), rz = blurs_round(cz);
+  float rx = roundHalfAway(cx), ry = roundHalfAway(cy), rz = roundHalfAway(cz);
   float dx = abs(rx - cx), dy = abs(ry - cy), dz = abs(rz - cz);
   if (dx > dy && dx > dz) {
     rx = -ry - rz;
@@ -815,7 +791,7 @@ vec3 V_Truchet_hex_crop(vec3 p, float w, int P, int A) {
   if (seed == 1.0) {
     if (!blurs_isOdd(rx) && !blurs_isOdd(rz)) add = kPi / 3.0;
   } else if (seed >= 2.0) {
-    if (blurs_hash(hxd, hyd, double(seed)) < 0.5) add = kPi / 3.0;
+    if (hashShadertoy(hxd, hyd, double(seed)) < 0.5) add = kPi / 3.0;
   }
   float angle = atan2c(fy, fx) + kPi / 6.0 - add;
   float angle2 = floor(angle * kCoef) / kCoef + kPi / 6.0 + add;
@@ -851,9 +827,9 @@ vec3 V_squares(vec3 p, float w, int P, int A) {
     float ax = abs(floor(lx * rings * 2.0 / cell + 0.5));
     float ay = abs(floor(ly * rings * 2.0 / cell + 0.5));
     float m = max(ax, ay);
-    float top = maxRing + floor(blurs_hash(dcx * dcx, dcy * dcy, seed) * (rings - maxRing));
+    float top = maxRing + floor(hashShadertoy(dcx * dcx, dcy * dcy, seed) * (rings - maxRing));
     float level = m > top || m < minRing ? 0.0 : m - minRing;
-    float angle = blurs_hash(dcx * dcx, dcy * dcy, zeroSeed) < zero ? 0.0 : level * kPi / 2.0;
+    float angle = hashShadertoy(dcx * dcx, dcy * dcy, zeroSeed) < zero ? 0.0 : level * kPi / 2.0;
     float c = cos(angle), s = sin(angle);
     q = vec2(cx + lx * c - ly * s, cy + lx * s + ly * c);
   }

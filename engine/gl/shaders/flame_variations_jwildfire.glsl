@@ -3,7 +3,6 @@
 // (engine/core/flame/), in float.
 
 // std::round and JWildfire's Tools.FTOI: half away from zero.
-float jwf_round(float v) { return sign(v) * floor(abs(v) + 0.5); }
 // A filled curve's scale: Ψ₂ when Ψ₁ < filled, else 1; both numbers are drawn for every point.
 float jwf_filled(float filled) {
   float psi1 = psi(), psi2 = psi();
@@ -17,7 +16,7 @@ float jwf_pow10(float v) {
 // ---- variations_jwildfire_more.cpp ----------------------------------------------------------
 
 vec3 V_rose_wf(vec3 p, float w, int P, int A) {
-  float amp = P_(P, 0), waves = jwf_round(P_(P, 1)), filled = P_(P, 2);
+  float amp = P_(P, 0), waves = roundHalfAway(P_(P, 1)), filled = P_(P, 2);
   float a = atan2c(p.x, p.y);
   float r = amp * cos(waves * a) * jwf_filled(filled);
   return vec3(w * sin(a) * r, w * cos(a) * r, w * p.z);
@@ -49,7 +48,7 @@ vec3 V_maple_leaf(vec3 p, float w, int P, int A) {
 // waves2_wf (power 1) and waves3_wf (power 2): the sine or cosine waves, damped by e^damp.
 vec3 jwf_waves(vec3 p, float w, int P, bool squared) {
   float scaleX = P_(P, 0), scaleY = P_(P, 1), freqX = P_(P, 2), freqY = P_(P, 3);
-  bool cosX = jwf_round(P_(P, 4)) == 1.0, cosY = jwf_round(P_(P, 5)) == 1.0;
+  bool cosX = roundHalfAway(P_(P, 4)) == 1.0, cosY = roundHalfAway(P_(P, 5)) == 1.0;
   float dampX = abs(P_(P, 6)) < 1e-8 ? 1.0 : exp(P_(P, 6));
   float dampY = abs(P_(P, 7)) < 1e-8 ? 1.0 : exp(P_(P, 7));
   float wx = cosX ? cos(p.y * freqX) : sin(p.y * freqX);
@@ -109,7 +108,7 @@ vec3 V_tan2_bs(vec3 p, float w, int P, int A) {
 }
 vec3 V_chunk(vec3 p, float w, int P, int A) {
   float a = w * P_(P, 0), b = w * P_(P, 1), c = w * P_(P, 2), d = w * P_(P, 3), e = w * P_(P, 4), f = w * P_(P, 5);
-  bool outside = clamp(jwf_round(P_(P, 6)), 0.0, 1.0) == 1.0;
+  bool outside = clamp(roundHalfAway(P_(P, 6)), 0.0, 1.0) == 1.0;
   float r = a * p.x * p.x + b * p.x * p.y + c * p.y * p.y + d * p.x + e * p.y + f;
   bool keep = outside ? r > 0.0 : r <= 0.0;
   return keep ? vec3(p.x, p.y, w * p.z) : vec3(0.0);
@@ -143,8 +142,8 @@ vec3 V_yin_yang(vec3 p, float w, int P, int A) {
   float radius = clamp(P_(P, 0), 0.0, 1.0);
   float sinA = sin(kPi * P_(P, 1)), cosA = cos(kPi * P_(P, 1));
   float sinB = sin(kPi * P_(P, 2)), cosB = cos(kPi * P_(P, 2));
-  bool dual = clamp(jwf_round(P_(P, 3)), 0.0, 1.0) == 1.0;
-  bool outside = clamp(jwf_round(P_(P, 4)), 0.0, 1.0) == 1.0;
+  bool dual = clamp(roundHalfAway(P_(P, 3)), 0.0, 1.0) == 1.0;
+  bool outside = clamp(roundHalfAway(P_(P, 4)), 0.0, 1.0) == 1.0;
   float u = psi();
   float rx = 0.0, ry = 0.0;
   if (p.x * p.x + p.y * p.y < 1.0) {
@@ -210,7 +209,7 @@ vec3 V_japanese_maple_leaf(vec3 p, float w, int P, int A) {
   return vec3(r * lx, r * ly, w * p.z);
 }
 vec3 V_spherical3D_wf(vec3 p, float w, int P, int A) {
-  float sgn = jwf_round(P_(P, 0)) == 0.0 ? 1.0 : -1.0;
+  float sgn = roundHalfAway(P_(P, 0)) == 0.0 ? 1.0 : -1.0;
   float exponent = P_(P, 1);
   float rr = dot(p, p) + kEpsilon;
   float r = sgn * w / (abs(exponent - 2.0) < 1e-8 ? rr : pow(rr, exponent / 2.0));
@@ -265,8 +264,8 @@ vec3 V_pre_prepost_affine(vec3 p, float w, int P, int A) {
 }
 // The n-gon pushed onto its circumcircle (circlize) or the circle pulled onto it, blended by w.
 vec3 jwf_circlize(vec3 p, float w, int P, bool inverse) {
-  float sides = clamp(jwf_round(P_(P, 0)), 3.0, 50.0), rotation = P_(P, 1) * kPi / 180.0;
-  bool reverse = clamp(jwf_round(P_(P, 2)), 0.0, 1.0) == 1.0;
+  float sides = clamp(roundHalfAway(P_(P, 0)), 3.0, 50.0), rotation = P_(P, 1) * kPi / 180.0;
+  bool reverse = clamp(roundHalfAway(P_(P, 2)), 0.0, 1.0) == 1.0;
   bool circlize = reverse != inverse;
   float angle = atan2c(p.y, p.x);
   float r = sqrt(p.x * p.x + p.y * p.y) + kEpsilon;
@@ -554,7 +553,7 @@ vec3 jwf_hamidCircle(int preset, int P, float I, float np) {
 #undef jwf_S
 #undef jwf_C
 vec3 V_hamid_js(vec3 p, float w, int P, int A) {
-  float presetValue = clamp(jwf_round(P_(P, 0)), 0.0, 19.0);
+  float presetValue = clamp(roundHalfAway(P_(P, 0)), 0.0, 19.0);
   int preset = isnan(presetValue) ? 0 : int(presetValue);
   float lines = trunc(clamp(P_(P, 1), -2147483648.0, 2147483647.0));
   float np = lines == 0.0 || isnan(lines) ? 1.0 : lines;
