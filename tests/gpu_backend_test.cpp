@@ -613,6 +613,16 @@ void expectAgreement(const core::Scene& scene, bool groupChoice, const std::stri
                 colourCc, colourGg, colourGc);
 }
 
+// The default scene with the default flame in place of its attractor, coloured by the flame's index.
+core::Scene defaultFlameScene() {
+  core::Scene scene = core::defaultScene();
+  core::PatternLayer& layer = scene.layers.front();
+  layer.kind = core::PatternKind::Flame;
+  layer.color.mode = core::ColorMode::Index;
+  layer.flame = core::defaultFlame();
+  return scene;
+}
+
 }  // namespace
 
 // The parts of a genome no shipped preset has, in one flame: xaos (which draws per orbit), a pre_
@@ -621,12 +631,8 @@ void expectAgreement(const core::Scene& scene, bool groupChoice, const std::stri
 // transforms drawn per group of orbits (flame_kernel.h).
 TEST(GpuBackend, AgreesWithTheCpuOnEveryPartOfAGenome) {
   if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
-  core::Scene scene = core::defaultScene();
-  core::PatternLayer& layer = scene.layers.front();
-  layer.kind = core::PatternKind::Flame;
-  layer.color.mode = core::ColorMode::Index;
-  core::FlameGenome& flame = layer.flame;
-  flame = core::defaultFlame();
+  core::Scene scene = defaultFlameScene();
+  core::FlameGenome& flame = scene.layers.front().flame;
   ASSERT_GE(flame.xforms.size(), 2u);
   flame.xforms[0].variations = {{"pre_swirl", 0.3, {}}, {"julian", 0.7, {3.0, 1.0}}, {"post_bubble", 0.9, {}}};
   flame.xforms[0].xaos = {0.2, 1.0};
@@ -657,12 +663,8 @@ TEST(GpuBackend, AgreesWithTheCpuOnEveryPartOfAGenome) {
 // moving cells (their noise read at its slice, in double).
 TEST(GpuBackend, AgreesWithTheCpuOnTermsThatReadMoreThanThePoint) {
   if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
-  core::Scene scene = core::defaultScene();
-  core::PatternLayer& layer = scene.layers.front();
-  layer.kind = core::PatternKind::Flame;
-  layer.color.mode = core::ColorMode::Index;
-  core::FlameGenome& flame = layer.flame;
-  flame = core::defaultFlame();
+  core::Scene scene = defaultFlameScene();
+  core::FlameGenome& flame = scene.layers.front().flame;
   ASSERT_GE(flame.xforms.size(), 3u);
   // The moving cells, whose noise is slow on llvmpipe, in the transform drawn least.
   flame.xforms[0].variations = {
@@ -677,12 +679,8 @@ TEST(GpuBackend, AgreesWithTheCpuOnTermsThatReadMoreThanThePoint) {
 // and a final transform whose post_falloff3 does it fully: the colour sums agree with the CPU's.
 TEST(GpuBackend, AgreesWithTheCpuOnDirectColour) {
   if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
-  core::Scene scene = core::defaultScene();
-  core::PatternLayer& layer = scene.layers.front();
-  layer.kind = core::PatternKind::Flame;
-  layer.color.mode = core::ColorMode::Index;
-  core::FlameGenome& flame = layer.flame;
-  flame = core::defaultFlame();
+  core::Scene scene = defaultFlameScene();
+  core::FlameGenome& flame = scene.layers.front().flame;
   ASSERT_GE(flame.xforms.size(), 2u);
   flame.xforms[0].variations.push_back({"falloff2", 0.3, {20.0, 0.1, 0.1, 0.1, 0.1, 1.0, 0.2, 0.0, 0.0, 0.0, 2.0}});
   flame.xforms[0].directColor = 0.6;

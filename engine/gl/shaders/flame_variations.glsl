@@ -70,6 +70,59 @@ double hashShadertoyD(double a, double b, double seed) {
   return v - floor(v);
 }
 float hashShadertoy(double a, double b, double seed) { return float(hashShadertoyD(a, b, seed)); }
+// sn, cn, dn of u for the parameter 1 − emmc (Numerical Recipes' sncndn, accuracy 0.0003), as the CPU.
+vec3 jacobiSnCnDn(float u, float emmc) {
+  const float kAccuracy = 0.0003;
+  float emc = emmc;
+  if (emc == 0.0) {
+    float c = 1.0 / cosh(u);
+    return vec3(tanh(clamp(u, -20.0, 20.0)), c, c);  // GLSL's tanh may give NaN far out
+  }
+  bool negative = emc < 0.0;
+  float d = 1.0;
+  if (negative) {
+    d = 1.0 - emc;
+    emc = -emc / d;
+    d = sqrt(d);
+    u = d * u;
+  }
+  float em[8], en[8];
+  float a = 1.0, c = 0.0, dn = 1.0;
+  int last = 0;
+  for (int i = 0; i < 8; ++i) {
+    last = i;
+    em[i] = a;
+    emc = sqrt(emc);
+    en[i] = emc;
+    c = 0.5 * (a + emc);
+    if (abs(a - emc) <= kAccuracy * a) break;
+    emc = a * emc;
+    a = c;
+  }
+  u = c * u;
+  float sn = sin(u), cn = cos(u);
+  if (sn != 0.0) {
+    a = cn / sn;
+    c = a * c;
+    for (int k = last; k >= 0; --k) {
+      float b = em[k];
+      a = c * a;
+      c = dn * c;
+      dn = (en[k] + a) / (b + a);
+      a = c / b;
+    }
+    a = 1.0 / (abs(c) > 1e15 ? abs(c) : sqrt(c * c + 1.0));  // c² would overflow float
+    sn = sn < 0.0 ? -a : a;
+    cn = c * sn;
+  }
+  if (negative) {
+    a = dn;
+    dn = cn;
+    cn = a;
+    sn = sn / d;
+  }
+  return vec3(sn, cn, dn);
+}
 
 // ---- flam3's classics (variations_flam3_classic.cpp) ----------------------------------------
 

@@ -941,48 +941,6 @@ vec3 V_synth(vec3 p, float w, int P, int A) {
   }
   return vec3(w * px, w * py, w * p.z);
 }
-// The Jacobi elliptic sn(u | 1 − emmc) by the descending Landen (AGM) transformation, as the CPU's
-// jacobiSn (Fractorium's): at most 8 steps, stopping at a relative accuracy of 3·10⁻⁴; tanh u at emmc 0.
-float v2dm_jacobiSn(float uu, float emmc) {
-  if (emmc == 0.0) return v2dm_tanh(uu);
-  float emc = emmc, u = uu, d = 1.0;
-  bool negative = emc < 0.0;
-  if (negative) {
-    d = 1.0 - emc;
-    emc = -emc / d;
-    d = sqrt(d);
-    u = d * u;
-  }
-  float em[8], en[8];
-  float a = 1.0, c = 1.0, dn = 1.0;
-  int last = 0;
-  for (int i = 0; i < 8; ++i) {
-    last = i;
-    em[i] = a;
-    emc = sqrt(emc);
-    en[i] = emc;
-    c = 0.5 * (a + emc);
-    if (abs(a - emc) <= 0.0003 * a) break;
-    emc = a * emc;
-    a = c;
-  }
-  u = c * u;
-  float sn = sin(u), cn = cos(u);
-  if (sn != 0.0) {
-    a = cn / sn;
-    c = a * c;
-    for (int k = last; k >= 0; --k) {
-      float b = em[k];
-      a = c * a;
-      c = dn * c;
-      dn = (en[k] + a) / (b + a);
-      a = c / b;
-    }
-    a = 1.0 / sqrt(c * c + 1.0);
-    sn = sn < 0.0 ? -a : a;
-  }
-  return negative ? sn / d : sn;
-}
 // The Bessel function J₁(x) = (1/π) ∫₀^π cos(τ − x sin τ) dτ by the trapezoid rule, which for this
 // periodic integrand is exact but for terms of order J_{2N}(x): N a little above |x| is plenty.
 float v2dm_besselJ1(float x) {
@@ -996,7 +954,7 @@ float v2dm_besselJ1(float x) {
 }
 // sin(f sgn(v) |v|^pw), or sn(f v | 1 − jacok) for pw in [0, 10⁻⁴), J₁(f v) for pw in (−10⁻⁴, 0).
 float v2dm_waves2bWave(float v, float freq, float pw, float jacok) {
-  if (pw >= 0.0 && pw < 1e-4) return v2dm_jacobiSn(v * freq, jacok);
+  if (pw >= 0.0 && pw < 1e-4) return jacobiSnCnDn(v * freq, jacok).x;
   if (pw < 0.0 && pw > -1e-4) return v2dm_besselJ1(v * freq);
   return sin((v < 0.0 ? -1.0 : 1.0) * pow(fractoriumZeps(abs(v)), pw) * freq);
 }
