@@ -10,7 +10,6 @@
 #include "core/color.h"
 #include "core/error.h"
 #include "gl/read_back.h"
-#include "gl/renderer_kind.h"
 #include "pipeline.h"
 
 namespace voxflame::app {
@@ -327,8 +326,7 @@ bool LiveView::updatePoints(const core::Scene& scene, const LiveInputs& inputs, 
     // On a software rasteriser the GPU's projection runs on the CPU's cores beside the frame, as the
     // CPU's own would, and llvmpipe was seen to stall a compute context's read-back for minutes while
     // the frame's context drew: there the CPU projects.
-    static const bool software = gl::softwareRasteriser();
-    request.backend = software ? core::BackendKind::Cpu : status.backend;
+    request.backend = renderer_.onSoftwareRasteriser() ? core::BackendKind::Cpu : status.backend;
     request.width = width * oversample;
     request.height = height * oversample;
     points_.start(std::move(request));

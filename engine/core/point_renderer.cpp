@@ -124,9 +124,7 @@ PointProjector::PointProjector(const PointProjection& projection, int threads) :
   for (std::vector<float>& histogram : histograms_) histogram.assign(4 * pixels, 0.0f);
   streamRandom_.resize(static_cast<std::size_t>(Accumulator::streamsPerChunk()));
   scratch_.resize(static_cast<std::size_t>(threads));
-  const PointScale scale = pointScale(p_);
-  pointDensity_ = scale.pointDensity;
-  unit_ = scale.unit;
+  scale_ = pointScale(p_);
 }
 
 PointScale pointScale(const PointProjection& p) {
@@ -147,7 +145,8 @@ PointScale pointScale(const PointProjection& p) {
   const double countsPerPoint =
       std::clamp(static_cast<double>(std::numeric_limits<std::uint32_t>::max()) / (0.01 * std::max(p.totalPoints, 1.0)),
                  16.0, 1024.0);
-  return {pointDensity, pointDensity / (countsPerPoint * (p.camera.orthographic ? 1.0 : centreDepth * centreDepth))};
+  return {pointDensity, pointDensity / (countsPerPoint * (p.camera.orthographic ? 1.0 : centreDepth * centreDepth)),
+          p.fog / side};
 }
 
 namespace {
@@ -183,13 +182,12 @@ void PointProjector::consume(int thread, const AcceptedPoints& points) {
   const float width = static_cast<float>(p_.width), height = static_cast<float>(p_.height);
   const auto aperture = static_cast<float>(p_.dofAperture);
   const auto focus = static_cast<float>(std::max(p_.dofFocusDepth, 1e-9));
-  const double side = p_.grid.voxelSize * std::max({p_.grid.size.x, p_.grid.size.y, p_.grid.size.z, 1});
-  const auto fogPerDepth = static_cast<float>(p_.fog / side);
+  const auto fogPerDepth = static_cast<float>(scale_.fogPerDepth);
   const auto fogStart = static_cast<float>(p_.fogStart);
   const ShadowVolume* shadow = p_.shadow;
   const int shadowDownsample = std::max(1, p_.shadowDownsample);
   const auto lightStrength = static_cast<float>(p_.lightStrength);
-  const auto pointDensity = static_cast<float>(pointDensity_ / unit_);  // in counts
+  const auto pointDensity = static_cast<float>(scale_.pointDensity / scale_.unit);  // in counts
   const ViewTransmittance* transmittance = p_.transmittance;
   std::vector<Projected>& batch = scratch_[static_cast<std::size_t>(thread)];
   batch.clear();
@@ -297,13 +295,13 @@ DensityImage PointProjector::merge() {
     std::vector<float>().swap(histograms_[t]);
   }
   histograms_.clear();
-  for (float& value : image.values) value = densityOfCount(std::bit_cast<std::uint32_t>(value), unit_);
+  for (float& value : image.values) value = densityOfCount(std::bit_cast<std::uint32_t>(value), scale_.unit);
   return image;
 }
 
 ImageSums PointProjector::takeSums() {
   ImageSums sums;
-  sums.reset(p_.width, p_.height, unit_);
+  sums.reset(p_.width, p_.height, scale_.unit);
   for (std::vector<float>& histogram : histograms_) {
     for (std::size_t i = 0; i < histogram.size(); ++i) {
       sums.counts[i] = saturatingAdd(sums.counts[i], std::bit_cast<std::uint32_t>(histogram[i]));

@@ -83,11 +83,13 @@ struct PointProjection {
   std::uint64_t seed = 1;      // for the lens samples
 };
 
-// What one point adds: its D in its pixel at unit view depth (over depth² in perspective), and the D
-// one count of the histogram stands for. The CPU's projector and the GPU's share it.
+// What one point adds: its D in its pixel at unit view depth (over depth² in perspective), the D
+// one count of the histogram stands for, and the fog's extinction per unit of view depth. The CPU's
+// projector and the GPU's share it.
 struct PointScale {
   double pointDensity = 1.0;
   double unit = 1.0;
+  double fogPerDepth = 0.0;
 };
 PointScale pointScale(const PointProjection& projection);
 
@@ -107,13 +109,12 @@ class PointProjector : public PointSink {
   // The sums so far, and the histograms start again from zero: a finished chunk's own sums. Call
   // when no points arrive.
   ImageSums takeSums();
-  double unit() const { return unit_; }
+  double unit() const { return scale_.unit; }
   std::uint64_t projected() const { return projected_.load(); }
 
  private:
   PointProjection p_;
-  double pointDensity_ = 1.0;  // D one point adds to its pixel at unit view depth (over depth² in perspective)
-  double unit_ = 1.0;          // D one count of the histogram stands for
+  PointScale scale_;
   // Fixed-point counts (uint32 bit patterns in float storage, so merge turns them into the image's
   // floats in place: a 16K print has no room for a second full-size copy).
   std::vector<std::vector<float>> histograms_;

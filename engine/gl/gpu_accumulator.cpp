@@ -166,6 +166,9 @@ struct LayerUniforms {
   std::vector<glm::vec4> seeds;
   int stepShare = 1;  // steps per dispatch, of stepsPerDispatch, by its weight
   bool runs = false;  // bounded, with weight
+  // Its program, compiled when the pattern is set (or the points method begins) rather than looked
+  // up by its whole source at every dispatch. Device::programs owns it.
+  const ShaderProgram* program = nullptr;
 };
 
 struct GpuAccumulator::Device {
@@ -624,7 +627,7 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
             list->clear();
           }
         device.layers = std::move(uniforms);
-        for (const LayerUniforms& u : device.layers) {
+        for (LayerUniforms& u : device.layers) {
           device.orbits.push_back(
               makeBuffer(kOrbitsBinding, std::size_t{orbits_} * (u.chaos ? kChaosOrbitBytes : kOrbitBytes)));
           device.seeds.push_back(makeBuffer(kSeedsBinding, u.seeds.size() * sizeof(glm::vec4), u.seeds.data()));
@@ -637,7 +640,7 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
           const GLuint ones = 0xFFFFFFFFu;
           glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.orbits.back());
           glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
-          if (u.runs) device.layerProgram(u);
+          if (u.runs) u.program = &device.layerProgram(u);
         }
         clearGrid(device);
         if (glGetError() != GL_NO_ERROR) throw core::Error("the GPU backend could not set up the pattern's buffers");
@@ -738,7 +741,7 @@ void GpuAccumulator::dispatchRound(Device& device) {
     if (!u.runs) continue;
     const int steps = std::max(1, static_cast<int>(std::ceil(u.stepShare * stepFraction)));
     roundSteps = std::max(roundSteps, steps);
-    const ShaderProgram& program = device.layerProgram(u);
+    const ShaderProgram& program = *u.program;
     const GLuint id = program.id();
     glUseProgram(id);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOrbitsBinding, device.orbits[li]);
@@ -827,8 +830,7 @@ void GpuAccumulator::setProjectionUniforms(const Device& device, const ShaderPro
               static_cast<float>(projection.scale.pointDensity / projection.scale.unit));
   glUniform1f(program.uniform("uAperture"), static_cast<float>(p.dofAperture));
   glUniform1f(program.uniform("uFocus"), static_cast<float>(std::max(p.dofFocusDepth, 1e-9)));
-  const double side = p.grid.voxelSize * std::max({p.grid.size.x, p.grid.size.y, p.grid.size.z, 1});
-  glUniform1f(program.uniform("uFogPerDepth"), static_cast<float>(p.fog / side));
+  glUniform1f(program.uniform("uFogPerDepth"), static_cast<float>(projection.scale.fogPerDepth));
   glUniform1f(program.uniform("uFogStart"), static_cast<float>(p.fogStart));
   glUniform1i(program.uniform("uDimmed"), projection.dimmed ? 1 : 0);
   glUniform3i(program.uniform("uViewCells"), projection.viewCells.x, projection.viewCells.y, projection.viewCells.z);
@@ -894,6 +896,9 @@ void GpuAccumulator::projectPoints(const core::PointProjection& projection) {
           texture(device.lightTransmittance, GL_R8, GL_UNSIGNED_BYTE, {1, 1, 1}, &lit);
         }
         device.projection = made;
+        // The layers' programs project from now on.
+        for (LayerUniforms& u : device.layers)
+          if (u.runs) u.program = &device.layerProgram(u);
       },
       true);
 }

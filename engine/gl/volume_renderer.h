@@ -123,7 +123,8 @@ class VolumeRenderer {
   void marchFrom(Source source) { marched_ = source == Source::Main ? kMain : kProxy; }
   Source marchedSource() const { return marched_ == kMain ? Source::Main : Source::Proxy; }
   bool hasVolume(Source source) const { return slots_[source == Source::Main ? kMain : kProxy].version > 0; }
-  bool hasVolume() const { return slots_[marched_].version > 0; }  // the one march() draws
+  bool hasVolume() const { return slots_[marched_].version > 0; }    // the one march() draws
+  bool onSoftwareRasteriser() const { return softwareRasteriser_; }  // its context's, as made
 
   void setMesh(const core::TriangleMesh& mesh);  // for the ghost and silhouette overlays
   // Light transmittance used when settings.render.lighting is on; `downsample` voxels per cell of
