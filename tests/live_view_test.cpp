@@ -493,8 +493,13 @@ TEST_F(LiveViewTest, ASlowStillViewRefinesInBandsWithinItsBudgetUntilEveryBandHa
   EXPECT_EQ(samples & (samples - 1), 0);
   EXPECT_TRUE(samples == app::LiveView::kMaxSamples || view.lastSettledShare() <= app::LiveView::kSettledShare);
   EXPECT_EQ(view.refineBands().samples(), samples);
-  for (int row = 0; row < view.targetRows(); row += app::RefineBands::kBandRows)
-    EXPECT_EQ(view.refineBands().samplesOfRow(row), samples) << "row " << row;
+  // The last doubling is finished in strips over the frames after its pass, and the bands of the
+  // next pass go on meanwhile (should that picture not have settled, they are not lost): the view
+  // rests on the finished picture, with every band at its samples and the first few a pass ahead.
+  for (int row = 0; row < view.targetRows(); row += app::RefineBands::kBandRows) {
+    EXPECT_GE(view.refineBands().samplesOfRow(row), samples) << "row " << row;
+    EXPECT_LE(view.refineBands().samplesOfRow(row), samples + 1) << "row " << row;
+  }
   EXPECT_EQ(view.targetRows(), kHeight);
   // 20 ms at 1 ms a row leaves room for a band or two, never the whole target.
   EXPECT_LT(widestBand, kHeight / 2);
