@@ -408,6 +408,10 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"SphericalN", {4.0, 1.5}},
       {"hex_rand", {5.0, 5.0, 1.0, 1.5, 0.5, 3.0}},
       {"Circle_Rand", {6.0, 6.0, 1.0, 1.5, 0.6, 2.0}},
+      {"axis_symmetry_wf", {0.0, 0.25, 0.5, 0.5, 30.0, 0.3, 0.1, 0.2, -0.7, 0.4, 0.6}},
+      {"axis_symmetry_wf", {1.0, -0.3, 0.4, 0.2, -75.0, 0.3, 0.1, 0.2, -0.7, -0.9, 0.6}},
+      {"axis_symmetry_wf", {2.0, 0.3, -0.6, 0.7, 120.0, 0.3, 0.1, 0.45, -0.7, -0.9, -0.8}},
+      {"hypershift", {0.7}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})

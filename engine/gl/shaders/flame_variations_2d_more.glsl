@@ -968,3 +968,67 @@ vec3 V_waves2b(vec3 p, float w, int P, int A) {
   return w * vec3(p.x + csX * v2dm_waves2bWave(p.y, P_(P, 0), pwX, jacok),
                   p.y + csY * v2dm_waves2bWave(p.x, P_(P, 1), pwY, jacok), p.z);
 }
+// ---- variations_fractorium.cpp (mirrors and symmetries), variations_2d_m.cpp (rays), variations_2d_c.cpp ----
+// Fractorium's mirrors: one coordinate's magnitude, negated when Ψ < ½; the weight is not applied.
+vec3 V_mirror_x(vec3 p, float w, int P, int A) { return vec3(psi() < 0.5 ? -abs(p.x) : abs(p.x), p.y, p.z); }
+vec3 V_mirror_y(vec3 p, float w, int P, int A) { return vec3(p.x, psi() < 0.5 ? -abs(p.y) : abs(p.y), p.z); }
+vec3 V_mirror_z(vec3 p, float w, int P, int A) { return vec3(p.x, p.y, psi() < 0.5 ? -abs(p.z) : abs(p.z)); }
+// JWildfire's post_axis_symmetry_wf: the weight is the distance moved, not a factor. Its axis-z turn
+// ends at centre_y, as JWildfire's does (and the CPU's).
+vec3 V_axis_symmetry_wf(vec3 p, float w, int P, int A) {
+  int axis = int(clamp(roundHalfAway(P_(P, 0)), 0.0, 2.0));
+  vec3 centre = vec3(P_(P, 1), P_(P, 2), P_(P, 3));
+  float halfTurn = P_(P, 4) * kTwoPi / 180.0 / 2.0;
+  float s = sin(halfTurn), c = cos(halfTurn), shift = w / 2.0;
+  bool near = psi() < 0.5;
+  if (abs(w) <= 1e-8) return p;
+  gColour = fmodc(gColour + (near ? P_(P, 5 + axis) : P_(P, 8 + axis)), 1.0);
+  float sgn = near ? 1.0 : -1.0;  // the two sides turn opposite ways
+  bool rotate = abs(halfTurn) > 1e-8;
+  if (axis == 2) {
+    float d = p.z - centre.z;
+    p.z = near ? centre.z + d + shift : centre.z - d - shift;
+    if (rotate) {
+      float dx = p.x - centre.x, dz = p.z - centre.z;
+      p.x = centre.x + dx * c + sgn * dz * s;
+      p.z = centre.y + dz * c - sgn * dx * s;
+    }
+    return p;
+  }
+  if (axis == 0) {
+    float d = p.x - centre.x;
+    p.x = near ? centre.x + d + shift : centre.x - d - shift;
+  } else {
+    float d = p.y - centre.y;
+    p.y = near ? centre.y + d + shift : centre.y - d - shift;
+  }
+  if (rotate) {
+    float dx = p.x - centre.x, dy = p.y - centre.y;
+    p.xy = vec2(centre.x + dx * c + sgn * dy * s, centre.y + dy * c - sgn * dx * s);
+  }
+  return p;
+}
+vec3 V_rays1(vec3 p, float w, int P, int A) {
+  float r2 = p.x * p.x + p.y * p.y;
+  float u = 1.0 / fractoriumZeps(tan(sqrt(r2))) + w * (4.0 / (kPi * kPi));
+  return vec3(w * u * r2 / fractoriumZeps(p.x), w * u * r2 / fractoriumZeps(p.y), w * p.z);
+}
+vec3 V_rays2(vec3 p, float w, int P, int A) {
+  float r2 = p.x * p.x + p.y * p.y;
+  float u = 1.0 / cos(r2 * tan(1.0 / fractoriumZeps(r2)));
+  return vec3(w / 10.0 * u * r2 / fractoriumZeps(p.x), w / 10.0 * u * r2 / fractoriumZeps(p.y), w * p.z);
+}
+vec3 V_rays3(vec3 p, float w, int P, int A) {
+  float r2 = p.x * p.x + p.y * p.y, r4 = r2 * r2;
+  float u = 1.0 / sqrt(cos(sin(r4) * sin(1.0 / fractoriumZeps(r4))));
+  return vec3(w / 10.0 * u * cos(r2) * r2 / fractoriumZeps(p.x), w / 10.0 * u * tan(r2) * r2 / fractoriumZeps(p.y),
+              w * p.z);
+}
+// A hyperbolic translation of the unit disc: 1/p shifted along x, inverted again, shifted back.
+vec3 V_hypershift(vec3 p, float w, int P, int A) {
+  float shift = P_(P, 0);
+  float inv = 1.0 / fractoriumZeps(p.x * p.x + p.y * p.y);
+  vec2 q = vec2(inv * p.x + shift, inv * p.y);
+  float r = w * (1.0 - shift * shift) / fractoriumZeps(dot(q, q));
+  return vec3(r * q.x + shift, r * q.y, w * p.z);
+}
