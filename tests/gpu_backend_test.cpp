@@ -412,6 +412,16 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"axis_symmetry_wf", {1.0, -0.3, 0.4, 0.2, -75.0, 0.3, 0.1, 0.2, -0.7, -0.9, 0.6}},
       {"axis_symmetry_wf", {2.0, 0.3, -0.6, 0.7, 120.0, 0.3, 0.1, 0.45, -0.7, -0.9, -0.8}},
       {"hypershift", {0.7}},
+      {"pixel_flow", {30.0, 0.7, 50.0, 12345.0, 1.0}},
+      {"truchet", {1.0, 1.3, 0.8, 0.7, 1.5, 37.0, 1.0}},
+      {"truchet", {0.0, 1.5, 0.9, -0.4, 2.0, 123.5, 1.0}},
+      {"shredlin", {0.3, -0.6, 1.7, 0.9}},
+      {"plane_wf", {2.0, 3.0, 1.0, 1.0, 2.0, 0.0, 0.0, 0.0, 0.0, 0.0}},
+      {"point_symmetry_wf", {-0.3, 0.7, 5.0, 0.37}},
+      {"mirror_wf", {1.0, 1.0, 1.0, 0.3, -0.2, 0.4, 1.2, -0.8, 0.3, -0.45, 0.7}},
+      {"spirograph3D", {1.3, 0.7, 0.9, -300.0, 800.0, 0.3, 1.0, 1.0}},
+      {"spirograph3D", {1.0, -0.3, 0.4, -20.0, 500.0, 0.4, 3.0, 1.0}},
+      {"spirograph3D", {1.0, -0.3, 0.4, 0.0, 1000.0, 0.4, 4.0, 0.0}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})

@@ -888,3 +888,213 @@ vec3 V_nBlur(vec3 p, float w, int P, int A) {
     point = jwf_nBlurPoint(s, lenOuter);
   return vec3(adjusted * (cosA * point.x - sinA * point.y), adjusted * (sinA * point.x + cosA * point.y), w * p.z);
 }
+
+// ---- variations_jwildfire.cpp, variations_jwildfire_shapes.cpp, variations_jwildfire_more.cpp (jwa) ----
+
+// Java's (int) of a number as a float: truncated, saturating, NaN as 0.
+float jwa_javaInt(float v) { return isnan(v) ? 0.0 : clamp(trunc(v), -2147483648.0, 2147483647.0); }
+int jwa_javaIntI(double v) {
+  if (isnan(v)) return 0;
+  if (v >= 2147483647.0lf) return 2147483647;
+  if (v <= -2147483648.0lf) return -2147483647 - 1;
+  return int(v);
+}
+// C's fmod in double (the sign of a), corrected by one step where the quotient rounds (core's laneFmod).
+double jwa_dfmod(double a, double m) {
+  double am = abs(m);
+  double r = a - trunc(a / m) * m;
+  r = a >= 0.0lf ? (r < 0.0lf ? r + am : r) : (r > 0.0lf ? r - am : r);
+  return a >= 0.0lf ? (r >= am ? r - am : r) : (r <= -am ? r + am : r);
+}
+// An angle in double brought into [−π, π] for float's sin and cos: t runs to thousands of radians.
+float jwa_angle(double v) {
+  const double kTwoPiD = 6.283185307179586lf;
+  return float(v - kTwoPiD * floor(v / kTwoPiD + 0.5lf));
+}
+// Bob Jenkins' integer hash as pixel_flow has it, scaled to about [−1, 1] (int arithmetic wraps as Java's).
+double jwa_pixelFlowHash(int a) {
+  a = (a ^ 61) ^ (a >> 16);
+  a = a + a * 8;
+  a = a ^ (a >> 4);
+  a = a * 0x27d4eb2d;
+  a = a ^ (a >> 15);
+  return double(a) / 2147483647.0lf;
+}
+// Java's int / 2: truncated towards 0 (GLSL leaves a negative operand's quotient to the driver).
+int jwa_halve(int v) { return (v + (v < 0 ? 1 : 0)) >> 1; }
+vec3 V_pixel_flow(vec3 p, float w, int P, int A) {
+  float angle = P_(P, 0) * 0.0174532925;  // JWildfire's rounded π/180
+  float len = P_(P, 1);
+  double width = double(P_(P, 2));
+  int seed = jwa_javaIntI(floor(double(clamp(P_(P, 3), -2147483648.0, 2147483647.0)) + 0.5lf));
+  float dirX = w * len * cos(angle), dirY = w * len * sin(angle);
+  bool direct = roundHalfAway(P_(P, 4)) != 0.0;
+  float r01 = psi();
+  if (direct) gColour = r01;
+  int blockX = jwa_javaIntI(floor(double(p.x) * width));
+  blockX = jwa_javaIntI(double(blockX) + (2.0lf - 4.0lf * jwa_pixelFlowHash(blockX * seed + 1)));
+  int blockY = jwa_javaIntI(floor(double(p.y) * width));
+  blockY = jwa_javaIntI(double(blockY) + (2.0lf - 4.0lf * jwa_pixelFlowHash(blockY * seed + 1)));
+  float streak = float((jwa_pixelFlowHash(blockY + blockX * (seed * -1)) +
+                        jwa_pixelFlowHash(blockX + jwa_halve(blockY * seed))) * 0.5lf);
+  float r2 = r01 * r01;
+  float fade = streak * r2 * r2;
+  return vec3(dirX * fade, dirY * fade, w * p.z);
+}
+// The superellipse norm (|a|^e + |b|^e)^(1/e).
+float jwa_norm(float a, float b, float e) { return pow(pow(abs(a), e) + pow(abs(b), e), 1.0 / e); }
+vec3 V_truchet(vec3 p, float w, int P, int A) {
+  bool extended = clamp(floor(P_(P, 0) + 0.5), 0.0, 1.0) == 1.0;
+  float exponent = clamp(P_(P, 1), 0.001, 2.0), width = clamp(P_(P, 2), 0.001, 1.0);
+  float rotation = P_(P, 3), size = clamp(P_(P, 4), 0.001, 10.0);
+  double seed = double(abs(P_(P, 5)));
+  bool directColour = clamp(roundHalfAway(P_(P, 6)), 0.0, 1.0) == 1.0;
+  float rMax = 0.5 * (pow(2.0, 1.0 / exponent) - 1.0) * width;
+  float scale = (cos(-rotation) - sin(-rotation)) / w;
+  float tx = p.x * scale, ty = p.y * scale;
+  tx -= jwa_javaInt(floor(tx + 0.5));
+  ty -= jwa_javaInt(floor(ty + 0.5));
+  if (tx < 0.0) tx += 1.0;
+  if (ty < 0.0) ty += 1.0;
+  // The tile's hash in double: float would round its products of tens of thousands.
+  double tile = 0.0lf;
+  if (seed == 1.0lf) {
+    tile = 1.0lf;
+  } else if (seed != 0.0lf) {
+    double randint;
+    if (!extended) {
+      double seed2 = sqrt(seed + seed / 2.0lf) / (seed * 0.5lf) * 0.25lf;
+      double xr = floor(double(p.x) + 0.5lf) * seed2, yr = floor(double(p.y) + 0.5lf) * seed2;
+      randint = (xr + yr + xr * yr + seed) * seed2 / 2.0lf;
+      randint = jwa_dfmod(randint * 32747.0lf + 12345.0lf, 65535.0lf);
+    } else {
+      int xr = jwa_javaIntI(floor(double(p.x) + 0.5lf)), yr = jwa_javaIntI(floor(double(p.y) + 0.5lf));
+      double iterations = min(abs(double(xr + yr + xr * yr)), 1000.0lf);
+      randint = floor(seed) + iterations;
+      for (double k = 0.0lf; k < iterations; k += 1.0lf)
+        randint = jwa_dfmod(randint * 32747.0lf + 12345.0lf, 65535.0lf);
+    }
+    tile = jwa_dfmod(randint, 2.0lf);
+  }
+  bool diagonal = extended ? tile == 1.0lf : tile < 1.0lf;
+  float r0 = diagonal ? jwa_norm(tx, ty, exponent) : jwa_norm(tx - 1.0, ty, exponent);
+  float r1 = diagonal ? jwa_norm(tx - 1.0, ty - 1.0, exponent) : jwa_norm(tx, ty - 1.0, exponent);
+  vec2 q = size * vec2(tx + floor(p.x), ty + floor(p.y));
+  vec3 o = vec3(0.0);
+  if (abs(r0 - 0.5) / rMax < 1.0) {
+    if (directColour) gColour = clamp(r0, 0.0, 1.0);
+    o.xy += q;
+  }
+  if (abs(r1 - 0.5) / rMax < 1.0) {
+    if (directColour) gColour = clamp(1.0 - r1, 0.0, 1.0);
+    o += vec3(q, w * p.z);
+  }
+  return o;
+}
+float jwa_shred(float v, float distance, float width) {
+  float range = v / distance;
+  float whole = jwa_javaInt(range);
+  float side = v < 0.0 ? 1.0 : 0.0;
+  return distance * ((range - whole) * width + whole + (0.5 - side) * (1.0 - width));
+}
+vec3 V_shredlin(vec3 p, float w, int P, int A) {
+  float xDistance = P_(P, 0), xWidth = clamp(P_(P, 1), -1.0, 1.0);
+  float yDistance = P_(P, 2), yWidth = clamp(P_(P, 3), -1.0, 1.0);
+  return vec3(w * jwa_shred(p.x, xDistance, xWidth), w * jwa_shred(p.y, yDistance, yWidth), w * p.z);
+}
+vec3 V_plane_wf(vec3 p, float w, int P, int A) {
+  float position = P_(P, 0), size = P_(P, 1);
+  float axis = clamp(roundHalfAway(P_(P, 2)), 0.0, 2.0);
+  bool direct = clamp(roundHalfAway(P_(P, 3)), 0.0, 1.0) == 1.0;
+  float colourMode = clamp(roundHalfAway(P_(P, 4)), 0.0, 3.0);
+  float a = 0.5 - psi(), b = 0.5 - psi();
+  if (direct) {
+    // The square's own (u, v), which on the plane zx are (z, x).
+    float cu = (axis == 2.0 ? b : a) + 0.5, cv = (axis == 2.0 ? a : b) + 0.5;
+    if (colourMode == 1.0) gColour = cu;
+    if (colourMode == 2.0) gColour = cv;
+    if (colourMode == 3.0) gColour = cu * cv;
+    gColour = clamp(gColour, 0.0, 1.0);
+  }
+  float u = a * size, v = b * size;
+  vec3 q = vec3(u, v, position);
+  if (axis == 1.0) q = vec3(position, u, v);
+  else if (axis == 2.0) q = vec3(u, position, v);
+  return w * q;
+}
+vec3 V_point_symmetry_wf(vec3 p, float w, int P, int A) {
+  float cx = P_(P, 0), cy = P_(P, 1);
+  float order = clamp(roundHalfAway(P_(P, 2)), 1.0, 2147483647.0);
+  float colourShift = P_(P, 3);
+  // ⌊Ψ·order⌋ in double: float's product may round up to the next whole number.
+  float k = min(float(floor(double(psi()) * double(order))), order - 1.0);
+  if (colourShift != 0.0) gColour = fmodc(gColour + k * colourShift, 1.0);
+  float turn = jwa_angle(double(k) * (6.283185307179586lf / double(order)));
+  float s = sin(turn), c = cos(turn);
+  float dx = (p.x - cx) * w, dy = (p.y - cy) * w;
+  return vec3(cx + dx * c + dy * s, cy + dy * c - dx * s, w * p.z);
+}
+vec3 V_mirror_wf(vec3 p, float w, int P, int A) {
+  bool on = abs(w) > 1e-8;  // the weight only switches it off
+  bool xAxis = on && roundHalfAway(P_(P, 0)) > 0.0, yAxis = on && roundHalfAway(P_(P, 1)) > 0.0;
+  bool zAxis = on && roundHalfAway(P_(P, 2)) > 0.0;
+  float xShift = P_(P, 3), yShift = P_(P, 4), zShift = P_(P, 5), xScale = P_(P, 6), yScale = P_(P, 7);
+  float psi1 = psi(), psi2 = psi(), psi3 = psi();
+  vec3 q = p;
+  if (xAxis && psi1 < 0.5) {
+    q.x = xScale * (-q.x - xShift);
+    q.y = yScale * q.y;
+    gColour = fmodc(gColour + P_(P, 8), 1.0);
+  }
+  if (yAxis && psi2 < 0.5) {
+    q.x = xScale * q.x;
+    q.y = yScale * (-q.y - yShift);
+    gColour = fmodc(gColour + P_(P, 9), 1.0);
+  }
+  if (zAxis && psi3 < 0.5) {
+    q.z = -q.z - zShift;
+    gColour = fmodc(gColour + P_(P, 10), 1.0);
+  }
+  return q;
+}
+vec3 V_triangle(vec3 p, float w, int P, int A) {
+  float root = sqrt(psi()), r2 = psi();
+  float a = 1.0 - root, b = root * (1.0 - r2), c = r2 * root;
+  vec3 v1 = vec3(P_(P, 0), P_(P, 1), P_(P, 2)), v2 = vec3(P_(P, 3), P_(P, 4), P_(P, 5));
+  vec3 v3 = vec3(P_(P, 6), P_(P, 7), P_(P, 8));
+  return w * (a * v1 + b * v2 + c * v3);
+}
+vec3 V_spirograph3D(vec3 p, float w, int P, int A) {
+  float a = P_(P, 0), b = P_(P, 1), c = P_(P, 2), width = P_(P, 5);
+  double tMin = double(P_(P, 3)), tMax = double(P_(P, 4));
+  float mode = clamp(roundHalfAway(P_(P, 6)), 0.0, 4.0);
+  float ab = a + b;
+  double ratio = (double(a) + double(b)) / double(b);
+  bool directColour = clamp(roundHalfAway(P_(P, 7)), 0.0, 1.0) == 1.0;
+  // t runs to a thousand radians and more: the angles are reduced in double.
+  double t = (tMax - tMin) * double(psi()) + tMin;
+  if (directColour) gColour = float(jwa_dfmod(t / 6.283185307179586lf, 1.0lf));  // negative below t = 0
+  float w1 = 0.0, w2 = 0.0, w3 = 0.0;
+  if (mode == 0.0) {
+    w1 = w2 = w3 = width * psi() - width / 2.0;
+  } else if (mode == 1.0) {
+    float offset = width * psi() - width / 2.0;
+    float t36 = jwa_angle(36.0lf * t);
+    w1 = offset * sin(t36);
+    w2 = offset * sin(t36 + kTwoPi / 3.0);
+    w3 = offset * sin(t36 + 2.0 * kTwoPi / 3.0);
+  } else if (mode == 2.0) {
+    w1 = width * psi() - width / 2.0;
+    w2 = width * psi() - width / 2.0;
+    w3 = width * psi() - width / 2.0;
+  } else if (mode == 3.0) {
+    w1 = width * gaussPsi() / 2.0;
+    w2 = width * gaussPsi() / 2.0;
+    w3 = width * gaussPsi() / 2.0;
+  } else {
+    w1 = psi() < 0.5 ? width : -width;
+  }
+  float t1 = jwa_angle(t), tr = jwa_angle(ratio * t);
+  float sr = sin(tr);
+  return w * vec3(ab * cos(t1) - c * cos(tr) + w1, ab * sin(t1) - c * sr + w2, c * sr + w3);
+}
