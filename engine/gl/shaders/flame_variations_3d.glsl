@@ -712,8 +712,12 @@ vec3 V_dc_cube(vec3 p, float w, int P, int A) {
   gColour = clamp(P_(P, face), 0.0, 1.0);
   return w * q * vec3(P_(P, 6), P_(P, 7), P_(P, 8));
 }
-// Apophysis' Round: away from zero at halves, through a 64-bit integer (large values kept).
-float dcol_apophysisRound(float v) { return abs(v) < 4.611686e18 ? trunc(v >= 0.0 ? v + 0.5 : v - 0.5) : v; }
+// Apophysis' Round: halves away from zero. The fraction is taken exactly, where float's v ± ½ could
+// round up across the next whole number; large values, whole in float, are kept as the CPU keeps them.
+float dcol_apophysisRound(float v) {
+  float t = trunc(v);
+  return abs(v - t) >= 0.5 ? t + sign(v) : t;
+}
 vec3 V_dc_gridout(vec3 p, float w, int P, int A) {
   float rx = dcol_apophysisRound(p.x), ry = dcol_apophysisRound(p.y);
   bool alongX;
