@@ -422,6 +422,14 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"spirograph3D", {1.3, 0.7, 0.9, -300.0, 800.0, 0.3, 1.0, 1.0}},
       {"spirograph3D", {1.0, -0.3, 0.4, -20.0, 500.0, 0.4, 3.0, 1.0}},
       {"spirograph3D", {1.0, -0.3, 0.4, 0.0, 1000.0, 0.4, 4.0, 0.0}},
+      {"dc_carpet", {0.6}},
+      {"dc_cube", {0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, -1.2, 1.5}},
+      {"dc_triangle", {0.6, 0.0}},
+      {"dc_ztransl", {0.2, 0.7, 1.5, 0.0, 1.0}},
+      {"randCubes", {0.7, 1.3, 5.0, 37.0, 1.4}},
+      {"curl_sp", {0.5, 0.3, 0.4, -0.6, 0.2, -0.8}},
+      {"concentric", {1.3, 7.0, 0.4, -0.6}},
+      {"hypershift2", {5.0, 4.0}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})

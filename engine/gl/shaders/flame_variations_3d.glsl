@@ -674,3 +674,201 @@ vec3 V_falloff3(vec3 p, float w, int P, int A) {
   return w * (p + vec3(v3d_logMap(mul.x) * v3d_logScale(rx), v3d_logMap(mul.y) * v3d_logScale(ry),
                        v3d_logMap(mul.z) * v3d_logScale(rz)) * coeff);
 }
+
+// ---- Fractorium's direct-colour family and three that discard the sum (variations_direct_colour.cpp,
+// variations_3d_more.cpp, variations_3d_sum.cpp) ----------------------------------------------------
+
+// p + (±1, ±1) through the transform's own 2D affine map, read in Apophysis' order as dc_carpet does.
+vec3 V_dc_carpet(vec3 p, float w, int P, int A) {
+  float ca = flameData[A], cb = flameData[A + 1], cc = flameData[A + 3], cd = flameData[A + 4];
+  float ce = flameData[A + 5], cf = flameData[A + 7];
+  float h0 = 0.1 * P_(P, 0);
+  float x0 = psi() < 0.5 ? 1.0 : -1.0;
+  float y0 = psi() < 0.5 ? 1.0 : -1.0;
+  float px = p.x + x0, py = p.y + y0;
+  float xr = x0 == y0 ? 0.0 : -2.0;  // Fractorium's integer xor of the two signs
+  float h = -h0 + (1.0 - xr) * h0;
+  gColour = fmodc(abs(gColour * 0.5 * (1.0 + h) + xr * (1.0 - h) * 0.5), 1.0);
+  return vec3(w * (ca * px + cb * py + ce), w * (cc * px + cd * py + cf), w * p.z);
+}
+vec3 V_dc_cube(vec3 p, float w, int P, int A) {
+  float u = 2.0 * psi() - 1.0;
+  float v = 2.0 * psi() - 1.0;
+  float axis = floor(3.0 * psi());
+  bool negative = psi() < 0.5;
+  float side = negative ? -1.0 : 1.0;
+  vec3 q;
+  int face;
+  if (axis == 0.0) {
+    q = vec3(side, u, v);
+    face = negative ? 0 : 1;
+  } else if (axis == 1.0) {
+    q = vec3(u, side, v);
+    face = negative ? 2 : 3;
+  } else {
+    q = vec3(u, v, side);
+    face = negative ? 4 : 5;
+  }
+  gColour = clamp(P_(P, face), 0.0, 1.0);
+  return w * q * vec3(P_(P, 6), P_(P, 7), P_(P, 8));
+}
+// Apophysis' Round: halves away from zero. The fraction is taken exactly, where float's v ± ½ could
+// round up across the next whole number; large values, whole in float, are kept as the CPU keeps them.
+float dcol_apophysisRound(float v) {
+  float t = trunc(v);
+  return abs(v - t) >= 0.5 ? t + sign(v) : t;
+}
+vec3 V_dc_gridout(vec3 p, float w, int P, int A) {
+  float rx = dcol_apophysisRound(p.x), ry = dcol_apophysisRound(p.y);
+  bool alongX;
+  float step;
+  if (ry <= 0.0) {
+    if (rx > 0.0) {
+      alongX = -ry >= rx;
+      step = 1.0;
+    } else {
+      alongX = ry <= rx;
+      step = alongX ? 1.0 : -1.0;
+    }
+  } else if (rx > 0.0) {
+    alongX = ry >= rx;
+    step = alongX ? -1.0 : 1.0;
+  } else {
+    alongX = ry > -rx;
+    step = -1.0;
+  }
+  gColour = fmodc(gColour + (alongX ? 0.25 : 0.75), 1.0);
+  return w * vec3(p.x + (alongX ? step : 0.0), p.y + (alongX ? 0.0 : step), p.z);
+}
+// Onto dc_triangle's edge u + v = 1 from beyond it.
+vec2 dcol_ontoEdge(vec2 uv) {
+  if (uv.x > uv.y) {
+    float u = min(uv.x, 1.0);
+    return vec2(u, 1.0 - u);
+  }
+  float v = min(uv.y, 1.0);
+  return vec2(1.0 - v, v);
+}
+// Both numbers are drawn for every point, as the CPU draws them (Fractorium only for points outside).
+vec3 V_dc_triangle(vec3 p, float w, int P, int A) {
+  float xx = flameData[A], xy = flameData[A + 1], yx = -flameData[A + 3], yy = -flameData[A + 4];
+  float cx = flameData[A + 5], cy = flameData[A + 7];
+  float spread = clamp(P_(P, 0), -1.0, 1.0);
+  bool zeroEdges = fractoriumInteger(P_(P, 1), 0.0, 1.0) != 0.0;
+  float dot00 = xx * xx + xy * xy, dot01 = xx * yx + xy * yy, dot11 = yx * yx + yy * yy;
+  float denom = fractoriumZeps(dot00 * dot11 - dot01 * dot01);
+  float ru = psi(), rv = psi();
+  float px = p.x - cx, py = p.y - cy;
+  float dot02 = xx * px + xy * py, dot12 = yx * px + yy * py;
+  vec2 uv = vec2((dot11 * dot02 - dot01 * dot12) / denom, (dot00 * dot12 - dot01 * dot02) / denom);
+  bool inside = false;
+  float f = 1.0;
+  if (uv.x + uv.y > 1.0) {
+    f = -1.0;
+    uv = dcol_ontoEdge(uv);
+  } else if (uv.x < 0.0 || uv.y < 0.0) {
+    uv = clamp(uv, 0.0, 1.0);
+  } else {
+    inside = true;
+  }
+  if (!inside) {
+    if (zeroEdges) {
+      uv = vec2(0.0);
+    } else {
+      uv = clamp(uv + vec2(ru, rv) * spread * f, -1.0, 1.0);
+      if (uv.x + uv.y > 1.0 && spread > 0.0) uv = dcol_ontoEdge(uv);
+    }
+  }
+  gColour = fmodc(abs(uv.x + uv.y), 1.0);
+  return vec3(w * (cx + uv.x * xx + uv.y * yx), w * (cy + uv.x * xy + uv.y * yy), w * p.z);
+}
+vec3 V_dc_ztransl(vec3 p, float w, int P, int A) {
+  float a = clamp(P_(P, 0), 0.0, 1.0), b = clamp(P_(P, 1), 0.0, 1.0);
+  float low = min(a, b), span = fractoriumZeps(max(a, b) - low);
+  float factor = P_(P, 2);
+  bool overwrite = fractoriumInteger(P_(P, 3), 0.0, 1.0) != 0.0;
+  bool clampIt = fractoriumInteger(P_(P, 4), 0.0, 1.0) != 0.0;
+  float zf = factor * (gColour - low) / span;
+  if (clampIt) zf = clamp(zf, 0.0, 1.0);
+  return vec3(w * p.x, w * p.y, overwrite ? w * zf : w * p.z * zf);
+}
+// Java's (int) of a double: truncated, saturating, NaN as 0.
+int dcol_javaInt(double v) {
+  if (isnan(v)) return 0;
+  if (v >= 2147483647.0lf) return 2147483647;
+  if (v <= -2147483648.0lf) return -2147483647 - 1;
+  return int(v);
+}
+// Bob Jenkins' 32-bit integer hash as Fractorium has it, over INT_MAX (the int arithmetic wrapping,
+// its right shifts keeping the sign).
+float dcol_jenkinsHash(int a) {
+  a = (a ^ 61) ^ (a >> 16);
+  a = int(uint(a) + uint(a) * 8u);
+  a = a ^ (a >> 4);
+  a = int(uint(a) * 0x27d4eb2du);
+  a = a ^ (a >> 15);
+  return float(a) / 2147483647.0;
+}
+// No weight, as Fractorium has it. The block numbers are whole; their products with the seed go
+// through double, where they are exact, before Java's int.
+vec3 V_randCubes(vec3 p, float w, int P, int A) {
+  float size = P_(P, 0), height = P_(P, 1), spread = P_(P, 2), density = P_(P, 4);
+  double seed = double(fractoriumInteger(P_(P, 3), -1e6, 1e6));
+  float lx = log(1.0 - psi());  // 1 − Ψ is in (0, 1]
+  float bx = floor(lx * (psi() < 0.5 ? spread : -spread));
+  float ly = log(1.0 - psi());
+  float by = floor(ly * (psi() < 0.5 ? spread : -spread));
+  float h = dcol_jenkinsHash(dcol_javaInt(double(bx) * seed))
+            + dcol_jenkinsHash(dcol_javaInt(double(bx) + double(by) * seed));
+  float ux = psi(), uy = psi(), uz = psi();
+  gColour = h / 2.0;
+  return vec3((bx * density + ux) * size, (by * density + uy) * size, height * h * pow(uz, 0.125));
+}
+// Fractorium's Powq4c: |v|^e with v's sign (0 counts as +), v itself for e = 1.
+float dcol_powq4c(float v, float e) { return e == 1.0 ? v : pow(abs(v), e) * (v < 0.0 ? -1.0 : 1.0); }
+// Fractorium's Spread: |(a, b)| with a's sign (+ only for a > 0).
+float dcol_spread(float a, float b) { return sqrt(a * a + b * b) * (a > 0.0 ? 1.0 : -1.0); }
+vec3 V_curl_sp(vec3 p, float w, int P, int A) {
+  float e = fractoriumZeps(P_(P, 0)), inverseE = 1.0 / e;
+  float c1 = P_(P, 1), c2 = P_(P, 2), sx = P_(P, 3), sy = P_(P, 4), dcAdjust = 0.1 * P_(P, 5);
+  float px = dcol_powq4c(p.x, e), py = dcol_powq4c(p.y, e), pz = dcol_powq4c(p.z, e);
+  float d = px * px - py * py;
+  float re = dcol_spread(c1 * px + c2 * d, sx) + 1.0;
+  float im = dcol_spread(c1 * py + 2.0 * c2 * px * py, sy);
+  float c = fractoriumZeps(dcol_powq4c(re * re + im * im, inverseE));
+  float r = w / c;
+  gColour = clamp(gColour + dcAdjust * c, 0.0, 1.0);
+  return vec3((px * re + py * im) * r, (py * re - px * im) * r, pz * w / c);
+}
+// The chaos step discards the terms summed before it (VariationInfo::replaces), as for hypershift2.
+vec3 V_concentric(vec3 p, float w, int P, int A) {
+  float radius = P_(P, 0), density = P_(P, 1), rBlur = P_(P, 2), zBlur = P_(P, 3);
+  float level = floor(psi() * density) * (1.0 / fractoriumZeps(density));
+  float angle = psi() * kTwoPi;
+  float ring = level * radius;
+  if (rBlur != 0.0) ring += (sqrt(psi()) * 2.0 - 1.0) * rBlur;
+  float zb = zBlur != 0.0 ? (psi() * 2.0 - 1.0) * zBlur : 0.0;
+  return vec3(ring * cos(angle) * w, ring * sin(angle) * w, (zb - level) * w);
+}
+vec3 V_hypershift2(vec3 p, float w, int P, int A) {
+  float pp_ = max(P_(P, 0), 2.0), qq = max(P_(P, 1), 2.0);
+  float pq = kPi / qq, pp = kPi / pp_, spq = sin(pq), spp = sin(pp);
+  float shift = sin(kPi * 0.5 - pq - pp) / sqrt(1.0 - spq * spq - spp * spp);
+  float lifted = sin(kPi / 2.0 + pp);
+  float scale2 = 1.0 / sqrt(lifted * lifted / (spq * spq) - 1.0) * (lifted / spq - 1.0);
+  float scale = 1.0 - shift * shift;
+  vec2 f = p.xy * scale2;
+  float rad = 1.0 / fractoriumZeps(dot(f, f));
+  vec2 s = vec2(rad * f.x + shift, rad * f.y);
+  rad = w * scale / fractoriumZeps(dot(s, s));
+  float angle = (floor(psi() * pp_) * 2.0 + 1.0) * kPi / pp_;
+  float X = rad * s.x + shift, Y = rad * s.y;
+  float c = cos(angle), sn = sin(angle);
+  return vec3(c * X - sn * Y, sn * X + c * Y, p.z * rad);
+}
+// An ordinary term's: nothing added to x and y, z (which replaces the sum's) max(w, 0) with the chance
+// root_face, else w Ψ. (The CPU's pre_/post_ form keeps x and y instead.)
+vec3 V_extrude(vec3 p, float w, int P, int A) {
+  float u1 = psi(), u2 = psi();
+  return vec3(0.0, 0.0, u1 < P_(P, 0) ? max(w, 0.0) : w * u2);
+}
