@@ -430,6 +430,13 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"curl_sp", {0.5, 0.3, 0.4, -0.6, 0.2, -0.8}},
       {"concentric", {1.3, 7.0, 0.4, -0.6}},
       {"hypershift2", {5.0, 4.0}},
+      {"stabilize", {100.0, 12345.0, 500.0, 1.0}},
+      {"cut_fractal", {0.0, 0.0, 1.2, 30.0, 0.8, 1.0}},
+      {"juliaNab", {-3.5, 1.3, 0.4, 0.7}},
+      {"szubieta", {256.0, 33.0, 1.0, 1.0}},
+      {"dc_triTile", {2.0, 2.0, 0.3, 0.85, 1.0, 5.0, 2.0, 2.0, 1.0, 4.0, 2.0, 3.0, 1.0, 3.0, 1.0, 2.0}},
+      {"dc_triTile", {5.0, 1.0, 0.3, 0.85, 1.0, 5.0, 2.0, 2.0, 1.0, 4.0, 2.0, 3.0, 1.0, 3.0, 1.0, 2.0}},
+      {"dc_triTile", {6.0, 2.0, 0.3, 0.85, 1.0, 5.0, 2.0, 2.0, 1.0, 4.0, 2.0, 3.0, 1.0, 3.0, 1.0, 2.0}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})

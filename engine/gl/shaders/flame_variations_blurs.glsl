@@ -835,3 +835,365 @@ vec3 V_squares(vec3 p, float w, int P, int A) {
   }
   return w * vec3(q, p.z);
 }
+
+// ---- variations_jwildfire_tail.cpp, variations_jwildfire_holdout.cpp (szubieta, dc_triTile) --------------
+// and juliaNab of variations_blurs_more.cpp (helpers prefixed jwb_: the _jwildfire file's come after this one).
+
+float jwb_nan() { return uintBitsToFloat(0x7fc00000u); }
+// JWildfire's (int) Tools.limitValue of a cut_ shape's count (a NaN stays NaN, so no mode matches).
+float jwb_intParam(float v, float lo, float hi) { return isnan(v) ? v : trunc(clamp(v, lo, hi)); }
+// The same for the holdout file's counts, where a NaN is taken as the low end.
+float jwb_limitedInt(float v, float lo, float hi) { return isnan(v) ? lo : trunc(clamp(v, lo, hi)); }
+// cos in double (GLSL has no double trig).
+double jwb_dcos(double v) { return dsin(v + 1.5707963267948966lf); }
+
+vec3 V_juliaNab(vec3 p, float w, int P, int A) {
+  float branches = abs(P_(P, 0)), root = fractoriumZeps(branches);
+  float exponent = 1.0 / root / 2.0 * P_(P, 1), b = P_(P, 2), separ = P_(P, 3);
+  // The branch in double: Ψ |n| has more bits than float holds.
+  float k = float(floor(double(psi()) * double(branches)));
+  float a = (atan2c(p.y, blurs_pow(abs(p.x), separ)) + kTwoPi * k) / root;
+  float r = w * blurs_pow(dot(p.xy, p.xy), exponent);
+  return vec3(r * cos(a) + b, r * sin(a) + b, p.z);
+}
+
+// java.util.Random's 48-bit state as (low 32 bits, high 16 bits): GLSL has no 64-bit integers.
+uvec2 jwb_mul48(uvec2 a, uvec2 b) {
+  uint hi, lo;
+  umulExtended(a.x, b.x, hi, lo);
+  return uvec2(lo, (hi + a.y * b.x + a.x * b.y) & 0xffffu);
+}
+uvec2 jwb_add48(uvec2 a, uvec2 b) {
+  uint carry;
+  uint lo = uaddCarry(a.x, b.x, carry);
+  return uvec2(lo, (a.y + b.y + carry) & 0xffffu);
+}
+const uvec2 jwb_kJavaMultiplier = uvec2(0xdeece66du, 0x5u), jwb_kJavaIncrement = uvec2(0xbu, 0u);
+uvec2 jwb_javaStep(uvec2 s) { return jwb_add48(jwb_mul48(s, jwb_kJavaMultiplier), jwb_kJavaIncrement); }
+// The state 4k steps on, in O(log k): the step s → m s + a composed with itself by squaring.
+uvec2 jwb_javaSkip4(uvec2 s, uint k) {
+  uvec2 mul = jwb_kJavaMultiplier, add = jwb_kJavaIncrement;
+  for (int i = 0; i < 2; ++i) {  // four steps as one
+    add = jwb_mul48(jwb_add48(mul, uvec2(1u, 0u)), add);
+    mul = jwb_mul48(mul, mul);
+  }
+  uvec2 accMul = uvec2(1u, 0u), accAdd = uvec2(0u);
+  for (; k > 0u; k >>= 1) {
+    if ((k & 1u) != 0u) {
+      accMul = jwb_mul48(accMul, mul);
+      accAdd = jwb_add48(jwb_mul48(accAdd, mul), add);
+    }
+    add = jwb_mul48(jwb_add48(mul, uvec2(1u, 0u)), add);
+    mul = jwb_mul48(mul, mul);
+  }
+  return jwb_add48(jwb_mul48(accMul, s), accAdd);
+}
+// nextDouble() from the state, which it advances by two steps (26 and 27 bits).
+double jwb_javaNextDouble(inout uvec2 s) {
+  s = jwb_javaStep(s);
+  uint high = (s.y << 10) | (s.x >> 22);
+  s = jwb_javaStep(s);
+  uint low = (s.y << 11) | (s.x >> 21);
+  return (double(high) * 134217728.0lf + double(low)) * (1.0lf / 9007199254740992.0lf);
+}
+vec3 V_stabilize(vec3 p, float w, int P, int A) {
+  // In double: Ψ n and the chance p/1000 need more bits than float holds.
+  double count = max(1.0lf, min(double(roundHalfAway(P_(P, 0))), 2147483647.0lf));
+  double chance = double(P_(P, 2)) / 1000.0lf;
+  bool dc = clamp(roundHalfAway(P_(P, 3)), 0.0, 1.0) != 0.0;
+  int seed = blurs_javaInt(roundHalfAway(P_(P, 1)));
+  uvec2 seeded = uvec2(uint(seed) ^ jwb_kJavaMultiplier.x, (seed < 0 ? 0xffffu : 0u) ^ jwb_kJavaMultiplier.y);
+  if (!(double(psi()) < chance)) return p;  // the weight is not applied
+  uint k = uint(min(floor(double(psi()) * count), count - 1.0lf));
+  uvec2 s = jwb_javaSkip4(seeded, k);
+  double px = jwb_javaNextDouble(s) * 2.0lf - 1.0lf;
+  double py = jwb_javaNextDouble(s) * 2.0lf - 1.0lf;
+  if (dc) {  // ½, ¼, ¾, ⅛, …: (2(k + 1 − 2^L) + 1) / 2^(L+1), L = ⌊log₂(k + 1)⌋
+    int level = findMSB(k + 1u);
+    gColour = float(2u * (k + 1u - (1u << level)) + 1u) / exp2(float(level + 1));
+  }
+  return vec3(float(px), float(py), 0.0);
+}
+
+// The cut_ shapes' point: the transform's (mode 0) or a uniform one in [lo, lo + span)².
+vec2 jwb_cutPoint(bool random, vec2 p, float lo, float span) {
+  if (!random) return p;
+  float x = span * psi() + lo;
+  float y = span * psi() + lo;
+  return vec2(x, y);
+}
+vec3 jwb_cutResult(bool drop, vec2 q, float z, float w) { return drop ? vec3(jwb_nan()) : w * vec3(q, z); }
+vec3 V_cut_fractal(vec3 p, float w, int P, int A) {
+  bool random = jwb_intParam(P_(P, 1), 0.0, 1.0) == 1.0;
+  double time = double(P_(P, 2)), zoom = double(P_(P, 4));
+  float iters = jwb_intParam(P_(P, 3), 1.0, 100.0);
+  bool invert = jwb_intParam(P_(P, 5), 0.0, 1.0) == 1.0;
+  // In double: the fractal's steps magnify float's rounding far beyond the pattern's scale.
+  double cx = jwb_dcos(time + 1.5lf) * 0.15lf - 0.25lf, cy = dsin(time + 1.8lf) * 0.15lf - 0.25lf;
+  vec2 q = jwb_cutPoint(random, p.xy, -0.5, 1.0);
+  precise double ux = double(q.y) * zoom, uy = double(q.x) * zoom;
+  for (float k = 0.0; k < iters; ++k) {
+    precise double s = 0.5lf / (ux * ux + uy * uy);
+    ux = abs(ux) * s + cx;
+    uy = abs(uy) * s + cy;
+  }
+  precise double pattern = abs(ux * ux + uy * uy - 0.01lf) * 2.0lf;
+  return jwb_cutResult(invert ? pattern <= 0.5lf : pattern > 0.5lf, q, p.z, w);
+}
+
+// szubieta: a disc (JWildfire's 20-sided nBlur polygon) of radius scale at a random cell of the width ×
+// height grid, the colour index Paul Bourke's pattern at the cell.
+vec3 V_szubieta(vec3 p, float w, int P, int A) {
+  float width = jwb_limitedInt(P_(P, 0), 32.0, 256.0), height = jwb_limitedInt(P_(P, 1), 32.0, 256.0);
+  bool squareTile = jwb_limitedInt(P_(P, 2), 0.0, 1.0) == 1.0;
+  float scale = isnan(P_(P, 3)) ? 0.0 : clamp(P_(P, 3), 0.0, 1.0);
+  // nBlur's constants for 20 sides: the sector, tan(π/2 + sector/2), the spread 13/20^1.3 and its norm.
+  const float kSector = kTwoPi / 20.0, kEdgeTan = -6.31375151, kSpread = 0.264608845, kSpreadNorm = -0.263080916;
+  const float kTurnSin = 0.156434465, kTurnCos = 0.987688341;
+  // The cell and the sector in double: Ψ · cells and Ψ · 32767 have more bits than float holds.
+  double cells = double(width * height);
+  uint cell = uint(min(floor(double(psi()) * cells), cells - 1.0lf)), rows = uint(height);
+  float ci = float(cell / rows), cj = float(cell % rows);
+  float u = psi();
+  float edge = float(uint(floor(double(psi()) * 32767.0lf)) % 20u);
+  float angle = (atan(kSpread * (u - 0.5)) / kSpreadNorm + 0.5 + edge) * kSector;
+  vec2 q = vec2(sin(angle), cos(angle));
+  for (int k = 0; k < 20 && angle > kSector; ++k) angle -= kSector;
+  float t = tan(angle);
+  float ex = kEdgeTan / (kEdgeTan - t), ey = ex * t;
+  q *= sqrt(psi()) * sqrt(ex * ex + ey * ey);
+  q = vec2(kTurnCos * q.x - kTurnSin * q.y, kTurnSin * q.x + kTurnCos * q.y);
+  float w10 = 0.1 * w;
+  int gi = int(ci), gj = int(cj);
+  // Java's int % keeps the dividend's sign; |a % m| = |a| % m.
+  int value = squareTile ? (gi & (gj - 2 * (gi ^ gj) + gj) & gi) % 256 : abs(gi * gi - 2 * (gi | gj) + gj * gj) % 255;
+  gColour = float(abs(value)) / 255.0;
+  return vec3(w10 * (q.x * scale + (ci - width / 2.0)), w10 * (q.y * scale + (cj - height / 2.0)), w * p.z);
+}
+
+// dc_triTile: a random tile of a substitution tiling, reached by random subdivisions of a prototile, and
+// a uniform point of it. In double: the tiles' corners meet exactly (the point-in-tile test compares
+// them), as on the CPU.
+struct jwb_Tile {
+  int type;  // which prototile (1 or 2)
+  double col;
+  dvec2 a, b, c;
+};
+struct jwb_Tiling {
+  int tiling;
+  double alfa, col1, col2;
+};
+jwb_Tile jwb_tile(jwb_Tiling s, int type, dvec2 a, dvec2 b, dvec2 c) {
+  return jwb_Tile(type, type == 1 ? s.col1 : s.col2, a, b, c);
+}
+dvec2 jwb_lerp(dvec2 p, dvec2 q, double t) {
+  precise dvec2 r = p + t * (q - p);
+  return r;
+}
+dvec2 jwb_mid(dvec2 p, dvec2 q) { return (p + q) / 2.0lf; }
+// The prototile t of each tiling (the CPU's cos and sin of its angles, to the last bit).
+jwb_Tile jwb_prototile(jwb_Tiling s, int t) {
+  const dvec2 o = dvec2(0.0lf);
+  const double c72 = 0.30901699437494745lf, s72 = 0.95105651629515353lf, c36 = 0.80901699437494745lf;
+  const double s36 = 0.58778525229247314lf, inv = 0.61803398874989479lf, sqrtInv = 0.78615137775742328lf;
+  const double c60 = 0.50000000000000011lf, s60 = 0.8660254037844386lf, c30 = 0.86602540378443871lf;
+  const double s30 = 0.49999999999999994lf;
+  if (s.tiling == 1)
+    return t == 1 ? jwb_tile(s, 1, o, dvec2(c72, s72), dvec2(0.6180339887498949lf, 0.0lf))
+                  : jwb_tile(s, 2, o, dvec2(c36, s36), dvec2(1.6180339887498949lf, 0.0lf));
+  if (s.tiling == 2) return jwb_tile(s, t, o, dvec2(c60, 0.0lf), dvec2(0.0lf, s60));
+  if (s.tiling == 3)
+    return t == 1 ? jwb_tile(s, 1, o, dvec2(c60, s60), dvec2(1.0000000000000002lf, 0.0lf))
+                  : jwb_tile(s, 2, o, dvec2(c30, s30), dvec2(1.7320508075688774lf, 0.0lf));
+  if (s.tiling == 4) return jwb_tile(s, t, o, dvec2(c72, s72), dvec2(0.6180339887498949lf, 0.0lf));
+  if (s.tiling == 5)
+    return t == 1 ? jwb_tile(s, 1, o, dvec2(0.0lf, 1.0lf), dvec2(2.0lf, 0.0lf))
+                  : jwb_tile(s, 2, o, dvec2(0.0lf, 2.0lf), dvec2(1.0lf, 0.0lf));
+  return t == 1 ? jwb_tile(s, 1, o, dvec2(inv, sqrtInv), dvec2(inv, 0.0lf))
+                : jwb_tile(s, 2, o, dvec2(0.0lf, sqrtInv), dvec2(1.0lf, 0.0lf));
+}
+// One child of the tile, picked by u (JWildfire's devis for each tiling).
+jwb_Tile jwb_subdivide(jwb_Tiling s, jwb_Tile tile, double u) {
+  double al = s.alfa;
+  dvec2 a = tile.a, b = tile.b, c = tile.c;
+  bool one = tile.type == 1;
+  if (s.tiling == 1) {  // FiveFold: Penrose triangles without rotations
+    if (one) {
+      dvec2 p4 = jwb_lerp(b, c, al);
+      return u < al * al ? jwb_tile(s, 1, c, a, p4) : jwb_tile(s, 2, b, p4, a);
+    }
+    dvec2 p4 = jwb_lerp(c, a, al), p5 = jwb_lerp(c, b, al);
+    return u < al * al          ? jwb_tile(s, 2, b, p4, a)
+           : u < 2.0lf * al * al ? jwb_tile(s, 2, c, p5, p4)
+                                 : jwb_tile(s, 1, b, p4, p5);
+  }
+  if (s.tiling == 2) {  // trihex: two kinds swap places in half the children
+    dvec2 p4 = jwb_mid(a, c), p5 = jwb_mid(b, c), p6 = jwb_mid(a, p5);
+    int other = 3 - tile.type;
+    return u < 0.25lf  ? jwb_tile(s, tile.type, p4, p5, c)
+           : u < 0.5lf ? jwb_tile(s, other, p4, p5, a)
+           : u < 0.75lf ? jwb_tile(s, other, p6, p5, b)
+                        : jwb_tile(s, tile.type, p6, a, b);
+  }
+  if (s.tiling == 3) {  // equithirds
+    if (one) {
+      dvec2 p4 = jwb_lerp(a, c, 0.5lf), p5 = jwb_lerp(p4, b, al);
+      return u < al ? jwb_tile(s, 2, b, p5, a) : u < 2.0lf * al ? jwb_tile(s, 2, c, p5, b) : jwb_tile(s, 2, a, p5, c);
+    }
+    dvec2 p4 = jwb_lerp(a, c, al), p5 = jwb_lerp(c, a, al);
+    return u < al ? jwb_tile(s, 2, b, p4, a) : u < 2.0lf * al ? jwb_tile(s, 2, c, p5, b) : jwb_tile(s, 1, p4, b, p5);
+  }
+  if (s.tiling == 4) {  // overlapping Robinson triangles
+    dvec2 p4 = jwb_lerp(b, a, al), p5 = jwb_lerp(a, b, al), p6 = jwb_lerp(b, c, al);
+    return u < 0.3lf    ? jwb_tile(s, 2, p4, b, p6)
+           : u < 0.63lf ? jwb_tile(s, 3 - tile.type, p6, a, p5)
+                        : jwb_tile(s, 1, c, a, p6);
+  }
+  if (s.tiling == 5) {  // pinwheel: five children, ⌊5u⌋
+    int k = clamp(int(u * 5.0lf), 0, 4);
+    if (one) {
+      dvec2 p4 = jwb_lerp(b, c, 0.2lf), p5 = jwb_lerp(b, c, 0.6lf), p6 = jwb_lerp(a, c, 0.5lf);
+      dvec2 p7 = jwb_lerp(a, p4, 0.5lf);
+      return k == 0   ? jwb_tile(s, 2, p4, a, b)
+             : k == 1 ? jwb_tile(s, 2, p7, p6, a)
+             : k == 2 ? jwb_tile(s, 1, p7, p4, p6)
+             : k == 3 ? jwb_tile(s, 1, p5, p6, p4)
+                      : jwb_tile(s, 2, p5, c, p6);
+    }
+    dvec2 p4 = jwb_lerp(c, b, 0.2lf), p5 = jwb_lerp(c, b, 0.6lf), p6 = jwb_lerp(a, b, 0.5lf);
+    dvec2 p7 = jwb_lerp(a, p4, 0.5lf);
+    return k == 0   ? jwb_tile(s, 1, p4, c, a)
+           : k == 1 ? jwb_tile(s, 1, p7, a, p6)
+           : k == 2 ? jwb_tile(s, 2, p7, p6, p4)
+           : k == 3 ? jwb_tile(s, 2, p5, p4, p6)
+                    : jwb_tile(s, 1, p5, p6, b);
+  }
+  // golden pinwheel
+  if (one) {
+    dvec2 p4 = jwb_lerp(a, b, al), p5 = jwb_lerp(b, a, al), p6 = jwb_lerp(c, b, al), p7 = jwb_lerp(a, c, al);
+    return u < 0.146lf   ? jwb_tile(s, 1, a, p4, p7)
+           : u < 0.382lf ? jwb_tile(s, 2, p4, p7, p6)
+           : u < 0.618lf ? jwb_tile(s, 2, c, p6, p7)
+           : u < 0.764lf ? jwb_tile(s, 1, p4, p6, p5)
+                         : jwb_tile(s, 2, p5, p6, b);
+  }
+  dvec2 p4 = jwb_lerp(b, a, al), p5 = jwb_lerp(b, c, al), p6 = jwb_lerp(c, b, al), p7 = jwb_lerp(a, c, al);
+  dvec2 p8 = jwb_lerp(c, a, al), p9 = jwb_lerp(p4, p7, al), p10 = jwb_lerp(p7, p4, al);
+  return u < 0.146lf   ? jwb_tile(s, 2, p4, b, p5)
+         : u < 0.236lf ? jwb_tile(s, 1, p4, p5, p9)
+         : u < 0.382lf ? jwb_tile(s, 2, p10, a, p4)
+         : u < 0.472lf ? jwb_tile(s, 1, p7, a, p10)
+         : u < 0.618lf ? jwb_tile(s, 2, p9, p5, p7)
+         : u < 0.764lf ? jwb_tile(s, 2, p6, p5, p7)
+         : u < 0.854lf ? jwb_tile(s, 1, p7, p6, p8)
+                       : jwb_tile(s, 2, p8, p6, c);
+}
+// A walk of subdivisions (steps, on, eq, depth), at most 64 as on the CPU; each child's kind enters
+// path as a binary digit when record is set (Java's int, wrapping).
+jwb_Tile jwb_walkTiles(jwb_Tiling s, jwb_Tile tile, vec4 walk, bool record, inout uint path) {
+  float left = walk.x, k = 1.0, taken = 0.0;
+  while (left > 0.0 && taken < 64.0) {
+    tile = jwb_subdivide(s, tile, double(psi()));
+    taken += 1.0;
+    if (record) path = 2u * path + uint(tile.type - 1);
+    bool other = float(tile.type) != walk.z;
+    if (walk.y == 0.0) {
+      if (k == walk.x && other) left += walk.w;
+    } else if (k >= walk.x && k < walk.x + walk.w && other) {
+      left += 1.0;
+    }
+    left -= 1.0;
+    k += 1.0;
+  }
+  return tile;
+}
+// JWildfire's discretNoise: Hugo Elias' integer hash over [0, 1].
+double jwb_discreteNoise(uint n) {
+  uint h = (n << 13) ^ n;
+  uint r = h * (h * h * 15731u + 789221u) + 1376312589u;
+  return double(r & 0x7fffffffu) / 2147483647.0lf;
+}
+// A uniform point of the triangle as JWildfire's tile blur finds it: the corners sorted by x, two
+// draws pick a point of a parallelogram over half the triangle, folded back in.
+dvec2 jwb_pointInTile(jwb_Tile tile) {
+  dvec2 p1, p2, p3;
+  dvec2 a = tile.a, b = tile.b, c = tile.c;
+  if (a.x <= b.x && a.x <= c.x) {
+    p1 = a;
+    p2 = b.x <= c.x ? b : c;
+    p3 = b.x <= c.x ? c : b;
+  } else if (b.x <= a.x && b.x <= c.x) {
+    p1 = b;
+    p2 = a.x <= c.x ? a : c;
+    p3 = a.x <= c.x ? c : a;
+  } else {
+    p1 = c;
+    p2 = a.x <= b.x ? a : b;
+    p3 = a.x <= b.x ? b : a;
+  }
+  double r1 = double(psi());
+  double r2 = double(psi());
+  dvec2 q;
+  if (p1.x == p2.x && p2.x == p3.x) {
+    double v1, v2;
+    if (p1.y <= p2.y && p1.y <= p3.y) {
+      v1 = p1.y;
+      v2 = p3.y > p2.y ? p2.y : p3.y;
+    } else if (p2.y <= p1.y && p2.y <= p3.y) {
+      v1 = p2.y;
+      v2 = p3.y > p1.y ? p1.y : p3.y;
+    } else {
+      v1 = p3.y;
+      v2 = p2.y > p1.y ? p1.y : p2.y;
+    }
+    precise double y = v1 + r1 * (v2 - v1);
+    q = dvec2(p1.x, y);
+  } else if (p1.x == p2.x) {
+    dvec2 p4 = jwb_mid(p1, p3);
+    precise dvec2 p5 = p3 + p2 - p4, p6 = p1 + p2 - p4;
+    q = jwb_lerp(jwb_lerp(p3, p4, r1), jwb_lerp(p5, p2, r1), r2);
+    precise double edge = p3.y + (p2.y - p3.y) / (p2.x - p3.x) * (q.x - p3.x);
+    precise double line = p3.y + (p3.y - p1.y) / (p3.x - p1.x) * (p2.x - p3.x);
+    bool above = p2.y > line;
+    if (above ? q.y > edge : q.y < edge) q = jwb_lerp(jwb_lerp(p2, p6, r1), jwb_lerp(p4, p1, r1), r2);
+  } else {
+    dvec2 p4 = jwb_mid(p1, p3);
+    precise dvec2 p5 = p1 + p2 - p4, p6 = p3 + p2 - p4;
+    q = jwb_lerp(jwb_lerp(p1, p4, r1), jwb_lerp(p5, p2, r1), r2);
+    precise double edge = p1.y + (p2.y - p1.y) / (p2.x - p1.x) * (q.x - p1.x);
+    precise double line = p1.y + (p3.y - p1.y) / (p3.x - p1.x) * (p2.x - p1.x);
+    bool above = p2.y > line;
+    if (above ? q.y > edge : q.y < edge) q = jwb_lerp(jwb_lerp(p2, p6, r1), jwb_lerp(p4, p3, r1), r2);
+  }
+  // Degenerate tiles: a point of the segment.
+  if (p1 == p2) q = jwb_lerp(p1, p3, r1);
+  if (p1 == p3) q = jwb_lerp(p1, p2, r1);
+  if (p2 == p3) q = jwb_lerp(p1, p2, r1);
+  return q;
+}
+vec3 V_dc_triTile(vec3 p, float w, int P, int A) {
+  int tiling = int(jwb_limitedInt(P_(P, 0), 1.0, 6.0));
+  int t = roundHalfAway(P_(P, 1)) <= 1.0 ? 1 : 2;
+  double alfa = tiling == 1 || tiling == 4 ? 0.6180339887498949lf
+                : tiling == 3              ? 1.0lf / 3.0lf
+                : tiling == 6              ? 0.3819660112501051lf
+                                           : 0.0lf;
+  jwb_Tiling s = jwb_Tiling(tiling, alfa, double(P_(P, 2)), double(P_(P, 3)));
+  vec4 first = vec4(roundHalfAway(P_(P, 5)), jwb_limitedInt(P_(P, 4), 0.0, 1.0), jwb_limitedInt(P_(P, 6), 0.0, 2.0),
+                    roundHalfAway(P_(P, 7)));
+  jwb_Tile tile = jwb_prototile(s, t);
+  tile.col = 0.0lf;  // JWildfire's t2 starts with colour 0, which stays where no step is taken
+  uint path = 0u;
+  tile = jwb_walkTiles(s, tile, first, false, path);
+  int kind = tile.type;
+  int Q = kind == 1 ? 8 : 12;  // the second walk's parameters: itt1, … or itt2, …
+  vec4 second = vec4(roundHalfAway(P_(P, Q + 1)), jwb_limitedInt(P_(P, Q), 0.0, 1.0),
+                     jwb_limitedInt(P_(P, Q + 2), 0.0, 2.0), roundHalfAway(P_(P, Q + 3)));
+  tile = jwb_walkTiles(s, tile, second, true, path);
+  double base = jwb_discreteNoise(path + (kind == 1 ? 43u : 31u));
+  dvec2 q = jwb_pointInTile(tile);
+  double sum = base + tile.col;
+  gColour = float(sum - trunc(sum));  // C's fmod(·, 1)
+  return vec3(w * float(q.x), w * float(q.y), w * p.z);
+}
+
