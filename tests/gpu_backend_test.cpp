@@ -437,6 +437,12 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"dc_triTile", {2.0, 2.0, 0.3, 0.85, 1.0, 5.0, 2.0, 2.0, 1.0, 4.0, 2.0, 3.0, 1.0, 3.0, 1.0, 2.0}},
       {"dc_triTile", {5.0, 1.0, 0.3, 0.85, 1.0, 5.0, 2.0, 2.0, 1.0, 4.0, 2.0, 3.0, 1.0, 3.0, 1.0, 2.0}},
       {"dc_triTile", {6.0, 2.0, 0.3, 0.85, 1.0, 5.0, 2.0, 2.0, 1.0, 4.0, 2.0, 3.0, 1.0, 3.0, 1.0, 2.0}},
+      {"crop_trapezoid", {0.5, 0.2, 0.5, 1.0}},
+      {"crop_trapezoid", {2.0, 1.5, 2.0, 0.0}},
+      {"cut_glypho", {0.0, 1.3, 1.0, 0.115, 0.75, 1.5}},
+      {"cut_triskel", {0.0, 0.7, 1.0}},
+      {"cut_web", {1000.0, 0.3, 0.0, 0.05, 0.0}},
+      {"dc_crackle_wf", {0.7, 0.5, 0.6, 1.3, 0.2, 1.5, -0.2}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})
@@ -446,6 +452,9 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     cases.push_back(
         {"falloff3", {type, type == 1.0 ? 1.0 : 0.0, 1.2, 0.3, 0.0, 1.0, 0.7, 0.5, 0.8, 0.1, -0.2, 0.3, 0.4}});
   cases.insert(cases.end(), more.begin(), more.end());
+  // A palette for the variations that paint true colours and match them to its entries.
+  std::array<std::uint32_t, 256> palette{};
+  for (std::uint32_t i = 0; i < 256; ++i) palette[i] = i | (255u - i) << 8 | ((i * 37u) & 255u) << 16;
   int checked = 0;
   std::map<std::string, gl::ShaderProgram> programs;
   for (const Case& c : cases) {
@@ -465,31 +474,73 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       const std::vector<float> tables = gl::gpuNoiseTables();
       data.insert(data.end(), tables.begin(), tables.end());
     }
+    // After the parameters, as the kernel generator puts them: where the term's memory starts in
+    // gLane, then where the palette a painting variation compares with lies in the data.
+    if (info->laneState > 0 || info->paintsRgb) data.push_back(0.0f);
+    if (info->paintsRgb) {
+      data.push_back(static_cast<float>(data.size() + 1));
+      for (const std::uint32_t entry : palette)
+        for (int channel = 0; channel < 3; ++channel)
+          data.push_back(static_cast<float>((entry >> (8 * channel)) & 255u));
+    }
+    const int stage = static_cast<int>(core::variationStage(name));
+    // A variation with memory is called twice, so that the second call reads what the first kept.
+    const int calls = info->laneState > 0 ? 2 : 1;
     // One program per variation: the cases with other parameters differ only in the data.
     auto program = programs.find(name);
     if (program == programs.end()) {
-      const std::string text = "#version 430 core\n" + gl::gpuVariationSource({name}) +
-                               "\nlayout(local_size_x = 64) in;\n"
-                               "layout(std430, binding = 0) buffer Points { vec4 points[]; };\n"
-                               "layout(std430, binding = 1) buffer Streams { uint streams[]; };\n"
-                               "void main() {\n"
-                               "  uint i = gl_GlobalInvocationID.x;\n"
-                               "  gChaosRandom = streams[i];\n"
-                               "  gVariationT = points[i].xyz;\n"
-                               "  gColour = 0.5;\n"
-                               "  points[i].xyz = V_" +
-                               name +
-                               "(points[i].xyz, flameData[12], 13, 0);\n"
-                               "  streams[i] = gChaosRandom;\n"
-                               "  points[i].w = gColour;\n"
-                               "}\n";
+      const std::string lane =
+          info->laneState > 0 ? "#define LANE_MEMORY " + std::to_string(info->laneState) + "\n" : "";
+      const std::string text =
+          "#version 430 core\n" + lane + gl::gpuVariationSource({name}) +
+          "\nlayout(local_size_x = 64) in;\n"
+          "layout(std430, binding = 0) buffer Points { vec4 points[]; };\n"
+          "layout(std430, binding = 1) buffer Streams { uint streams[]; };\n"
+          "layout(std430, binding = 2) buffer Sums { vec4 sums[]; };\n"
+          "layout(std430, binding = 3) buffer Flags { uvec2 flags[]; };\n"
+          "void main() {\n"
+          "  uint i = gl_GlobalInvocationID.x;\n"
+          "  gChaosRandom = streams[i];\n"
+          "  gVariationT = points[i].xyz;\n"
+          "  gColour = 0.5;\n"
+          "  gStage = " +
+          std::to_string(stage) +
+          ";\n"
+          "  gRgb = flags[i].x;\n"
+          "  gHidden = flags[i].y != 0u;\n" +
+          (info->laneState > 0 ? "  for (int k = 0; k < LANE_MEMORY; ++k) gLane[k] = 0.0lf;\n" : "") +
+          "  vec3 result;\n"
+          "  for (int call = 0; call < " +
+          std::to_string(calls) +
+          "; ++call) {\n"
+          "    gSum = sums[i].xyz;\n"
+          "    result = V_" +
+          name +
+          "(points[i].xyz, flameData[12], 13, 0);\n"
+          "  }\n"
+          "  points[i].xyz = result;\n"
+          "  streams[i] = gChaosRandom;\n"
+          "  points[i].w = gColour;\n"
+          "  flags[i] = uvec2(gRgb, gHidden ? 1u : 0u);\n"
+          "}\n";
       program =
           programs.emplace(name, gl::ShaderProgram(gl::ShaderSource{"flame_variations (" + name + ")", text})).first;
     }
+    // A variation that reads the sum before it finds one there (the GPU's gSum, the CPU's output
+    // arrays); the others add to nothing. Some points come hidden, for the variations that may show them.
+    std::vector<float> sums(kPoints * 4, 0.0f);
+    std::vector<std::uint32_t> flags(kPoints * 2, 0u);
+    for (std::size_t i = 0; i < kPoints; ++i) {
+      if (info->readsSum)
+        for (int a = 0; a < 3; ++a)
+          sums[4 * i + static_cast<std::size_t>(a)] =
+              0.6f * input[4 * ((i + 7) % kPoints) + static_cast<std::size_t>(a)];
+      flags[2 * i + 1] = i % 3 == 0 ? 1u : 0u;
+    }
     std::vector<float> points = input;
     std::vector<std::uint32_t> gpuStreams = streams;
-    std::array<GLuint, 3> buffers{};
-    glGenBuffers(3, buffers.data());
+    std::array<GLuint, 5> buffers{};
+    glGenBuffers(5, buffers.data());
     const auto upload = [](GLuint buffer, GLuint binding, std::size_t bytes, const void* values) {
       glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
       glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), values, GL_DYNAMIC_DRAW);
@@ -498,16 +549,20 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     upload(buffers[0], 0, points.size() * sizeof(float), points.data());
     upload(buffers[1], 1, gpuStreams.size() * sizeof(std::uint32_t), gpuStreams.data());
     upload(buffers[2], 8, data.size() * sizeof(float), data.data());
+    upload(buffers[3], 2, sums.size() * sizeof(float), sums.data());
+    upload(buffers[4], 3, flags.size() * sizeof(std::uint32_t), flags.data());
     glUseProgram(program->second.id());
     glDispatchCompute(kPoints / 64, 1, 1);
     glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[0]);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(points.size() * sizeof(float)),
-                       points.data());
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffers[1]);
-    glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(gpuStreams.size() * sizeof(std::uint32_t)),
-                       gpuStreams.data());
-    glDeleteBuffers(3, buffers.data());
+    const auto read = [](GLuint buffer, std::size_t bytes, void* values) {
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+      glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(bytes), values);
+    };
+    read(buffers[0], points.size() * sizeof(float), points.data());
+    read(buffers[1], gpuStreams.size() * sizeof(std::uint32_t), gpuStreams.data());
+    std::vector<std::uint32_t> gpuFlags(flags.size());
+    read(buffers[4], gpuFlags.size() * sizeof(std::uint32_t), gpuFlags.data());
+    glDeleteBuffers(5, buffers.data());
 
     // The catalogue's kernel on the same points (as doubles of the same floats) and streams.
     std::vector<double> x(kPoints), y(kPoints), z(kPoints), ox(kPoints, 0.0), oy(kPoints, 0.0), oz(kPoints, 0.0);
@@ -518,6 +573,13 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       z[i] = input[4 * i + 2];
     }
     std::vector<std::uint32_t> cpuStreams = streams;
+    std::vector<std::uint32_t> rgb(kPoints);
+    std::vector<std::uint8_t> hidden(kPoints);
+    for (std::size_t i = 0; i < kPoints; ++i) {
+      rgb[i] = flags[2 * i];
+      hidden[i] = static_cast<std::uint8_t>(flags[2 * i + 1]);
+    }
+    std::vector<double> memory(kPoints * info->laneState, 0.0);
     core::VariationInput in;
     in.x = in.tx = x.data();
     in.y = in.ty = y.data();
@@ -528,11 +590,31 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     in.params = params.data();
     in.affine = affine.data();
     in.colour = colour.data();
-    info->apply(in, ox.data(), oy.data(), oz.data());
+    in.stage = static_cast<core::VariationStage>(stage);
+    in.rgb = info->paintsRgb ? rgb.data() : nullptr;
+    in.palette = info->paintsRgb ? palette.data() : nullptr;
+    in.hidden = info->hidesPoints ? hidden.data() : nullptr;
+    in.state = info->laneState > 0 ? memory.data() : nullptr;
+    for (int call = 0; call < calls; ++call) {
+      for (std::size_t i = 0; i < kPoints; ++i) {
+        ox[i] = sums[4 * i];
+        oy[i] = sums[4 * i + 1];
+        oz[i] = sums[4 * i + 2];
+      }
+      info->apply(in, ox.data(), oy.data(), oz.data());
+    }
     std::size_t compared = 0, apart = 0;
     for (std::size_t i = 0; i < kPoints; ++i) {
       const double expected[3] = {ox[i], oy[i], oz[i]};
-      if (!std::isfinite(expected[0] + expected[1] + expected[2])) continue;
+      const bool gpuFinite = std::isfinite(points[4 * i] + points[4 * i + 1] + points[4 * i + 2]);
+      if (!std::isfinite(expected[0] + expected[1] + expected[2])) {
+        // A point both drop (a crop's NaN) agrees; a point only the CPU drops is not compared.
+        if (!gpuFinite) {
+          ++compared;
+          EXPECT_EQ(gpuStreams[i], cpuStreams[i]) << "point " << i << ": another number of random draws";
+        }
+        continue;
+      }
       if (std::max({std::abs(expected[0]), std::abs(expected[1]), std::abs(expected[2])}) > 1e3) continue;
       ++compared;
       EXPECT_EQ(gpuStreams[i], cpuStreams[i]) << "point " << i << ": another number of random draws";
@@ -543,6 +625,13 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       }
       // A direct-colour variation's colour index too (the others leave it).
       if (std::isfinite(colour[i])) near = near && std::abs(points[4 * i + 3] - colour[i]) <= 1e-3;
+      // A painted true colour: the same flag, each channel within a step of rounding.
+      const std::uint32_t gpuRgb = gpuFlags[2 * i];
+      near = near && (gpuRgb & core::kRgbPainted) == (rgb[i] & core::kRgbPainted);
+      for (int channel = 0; channel < 3; ++channel)
+        near = near && std::abs(static_cast<int>((gpuRgb >> (8 * channel)) & 255u) -
+                                static_cast<int>((rgb[i] >> (8 * channel)) & 255u)) <= 1;
+      near = near && gpuFlags[2 * i + 1] == hidden[i];
       if (!near) ++apart;
     }
     EXPECT_GE(compared, kPoints / 2) << "too few points give finite values to compare";

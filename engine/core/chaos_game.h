@@ -88,6 +88,9 @@ class ChaosGame {
   static constexpr int pickBits() { return kPickBits; }
   static constexpr std::size_t pickSize() { return kPickSize; }
   const std::vector<std::uint8_t>& pickTable() const { return pick_; }
+  // The file's palette in bytes (VariationInput::palette), filled for flames whose variations paint
+  // true colours: what they compare a painted colour with.
+  const std::array<std::uint32_t, 256>& variationPalette() const { return palette_; }
   bool usesXaos() const { return xaos_; }
   const std::vector<std::array<double, 12>>& symmetryGroupMaps() const { return group_; }
   const std::vector<std::array<double, 12>>& postSymmetryImages() const { return postSymmetry_; }

@@ -141,18 +141,50 @@ std::string xformUnsupported(const core::FlameXform& xform) {
     const core::VariationInfo* info = core::findVariation(term.name);
     if (!info) return "variation '" + term.name + "'";
     if (!gpuHasVariation(info->name)) return "variation '" + term.name + "'";
-    // None of the GPU's variations has these, but a future one might: say so rather than draw wrong.
-    // (A direct-colour one reads and sets gColour, which the transform blends in by direct_color.)
-    if (info->paintsRgb || info->readsSum || info->hidesPoints || info->laneState > 0 ||
-        info->replaces != core::VariationInfo::Replaces::Nothing)
-      return "variation '" + term.name + "'";
+    // Text parameters reach no GLSL: a variation that takes them runs on the GPU only once its
+    // port says how (none does yet). The other flags the generator handles (flame_variations.glsl).
+    if (!info->textParams.empty()) return "variation '" + term.name + "'";
   }
   return {};
 }
 
+// What a flame's variations need of the kernel beyond the point and colour index.
+struct KernelNeeds {
+  bool paintsRgb = false;      // some transform paints true colours (gRgb, gPointRgb)
+  bool hidesPoints = false;    // some variation hides points (gHidden, kept per orbit)
+  std::size_t laneMemory = 0;  // doubles of gLane per orbit, every laneState term's own
+};
+
+bool paintsRgb(const core::FlameXform& xform) {
+  for (const core::VariationTerm& term : xform.variations)
+    if (const core::VariationInfo* info = core::findVariation(term.name); info && term.weight != 0.0 && info->paintsRgb)
+      return true;
+  return false;
+}
+
+KernelNeeds kernelNeeds(const std::vector<core::FlameXform>& xforms, const core::FlameGenome& genome) {
+  KernelNeeds needs;
+  const auto add = [&](const core::FlameXform& xform) {
+    for (const core::VariationTerm& term : xform.variations) {
+      const core::VariationInfo* info = core::findVariation(term.name);
+      if (!info || term.weight == 0.0) continue;
+      needs.paintsRgb = needs.paintsRgb || info->paintsRgb;
+      needs.hidesPoints = needs.hidesPoints || info->hidesPoints;
+      needs.laneMemory += info->laneState;
+    }
+  };
+  for (const core::FlameXform& xform : xforms) add(xform);
+  if (genome.hasFinal) {
+    add(genome.finalXform);
+    for (const core::FlameXform& chained : genome.chainedFinals) add(chained);
+  }
+  return needs;
+}
+
 class Generator {
  public:
-  explicit Generator(FlameKernel& kernel) : k_(kernel) {}
+  explicit Generator(FlameKernel& kernel, bool paintsRgb = false, const std::array<std::uint32_t, 256>& palette = {})
+      : k_(kernel), paintsRgb_(paintsRgb), variationPalette_(palette) {}
 
   // Adds `values` to the data block; returns where they start.
   int put(const double* values, std::size_t count) {
@@ -170,6 +202,8 @@ class Generator {
     const int affine = put(xform.affine.m.data(), 12);
     s += "vec3 " + name + "(vec3 p, inout float c, inout bool visible) {\n";
     s += "  int A = " + std::to_string(affine) + ";\n";
+    const bool paints = paintsRgb(xform);
+    if (paints) s += "  gRgb = 0u;\n";  // JWildfire clears rgbColor as each transform starts
     // A direct-colour variation starts from the colour the transform's blend gives and may set it;
     // the transform then blends that in by its direct_color (core::ChaosGame::startDirectColour).
     bool direct = false;
@@ -210,6 +244,14 @@ class Generator {
         const std::vector<float> extras = gpuNoiseExtras(full, tables);
         k_.data.insert(k_.data.end(), extras.begin(), extras.end());
       }
+      // After its parameters (all of them): where its memory per orbit starts in gLane, then where
+      // the palette it compares painted colours with lies in flameData (flame_variations.glsl).
+      if (t.info->laneState > 0 || t.info->paintsRgb) {
+        for (std::size_t i = t.term->params.size(); i < t.info->params.size(); ++i) put(t.info->params[i].defaultValue);
+        put(static_cast<double>(laneSlots_));
+        laneSlots_ += t.info->laneState;
+        if (t.info->paintsRgb) put(static_cast<double>(palette()));
+      }
       k_.variations.push_back(t.info->name);
       return "V_" + t.info->name + "(" + point + ", flameData[" + std::to_string(weight) + "], " +
              std::to_string(params) + ", A)";
@@ -217,7 +259,9 @@ class Generator {
     // A pre_ or post_ term replaces the coordinates its variation maps (or adds to them, for an
     // additive one) and keeps the others: core's combineStage.
     const auto combine = [&](const Term& t, const char* point) {
-      std::string code = "  { vec3 r = " + call(t, point) + ";\n";
+      // One that reads the sum finds none here: its result is all it adds (core clears the output).
+      std::string code = t.info->readsSum ? "  gSum = vec3(0.0);\n" : "";
+      code += "  { vec3 r = " + call(t, point) + ";\n";
       const std::string op = t.info->additive ? " += " : " = ";
       if (t.info->mapsXY) code += std::string("    ") + point + ".xy" + op + "r.xy;\n";
       if (t.info->threeD) code += std::string("    ") + point + ".z" + op + "r.z;\n";
@@ -229,18 +273,29 @@ class Generator {
     bool readsT = false;
     for (const auto& stage : stages)
       for (const Term& t : stage) readsT = readsT || t.info->name == "depth";
+    // The stage, for the variations that read it (flame_variations.glsl's gStage).
+    if (!stages[0].empty()) s += "  gStage = 0;\n";
     for (const Term& t : stages[0]) {
       if (readsT) s += "  gVariationT = t;\n";
       s += combine(t, "t");
     }
     if (readsT) s += "  gVariationT = t;\n";
+    s += "  gStage = 1;\n";
     s += stages[1].empty() ? "  vec3 o = t;\n" : "  vec3 o = vec3(0.0);\n";
     bool flatten = false;
     for (const Term& t : stages[1]) {
-      s += "  o += " + call(t, "t") + ";\n";
+      // A term that assigns where the others add (shredlin, mirror_x) discards the sum so far.
+      using Replaces = core::VariationInfo::Replaces;
+      if (t.info->replaces == Replaces::XY || t.info->replaces == Replaces::XYZ) s += "  o.xy = vec2(0.0);\n";
+      if (t.info->replaces == Replaces::Z || t.info->replaces == Replaces::XYZ) s += "  o.z = 0.0;\n";
+      if (t.info->readsSum)
+        s += "  gSum = o;\n  o = " + call(t, "t") + ";\n";  // it returns the new sum
+      else
+        s += "  o += " + call(t, "t") + ";\n";
       flatten = flatten || t.info->name == "flatten";
     }
     if (flatten) s += "  o.z = 0.0;\n";  // as core's applyGroup: the sum's z, after every ordinary term
+    if (!stages[2].empty()) s += "  gStage = 2;\n";
     for (const Term& t : stages[2]) s += combine(t, "o");
     if (xform.hasPost && !xform.post.isIdentity()) {
       const int post = put(xform.post.m.data(), 12);
@@ -258,6 +313,10 @@ class Generator {
     } else {
       s += "  c = flameData[" + std::to_string(blend) + "] * c + flameData[" + std::to_string(blend + 1) + "];\n";
     }
+    // The point's true colour (core::ChaosGame::keepPaintedRgb): a transform's replaces it (none
+    // painted: the colour index's), a final transform's only where it paints one.
+    if (paintsRgb_ && !final) s += paints ? "  gPointRgb = gRgb;\n" : "  gPointRgb = 0u;\n";
+    if (paintsRgb_ && final && paints) s += "  if (gRgb != 0u) gPointRgb = gRgb;\n";
     if (final)
       s += "  visible = visible && psi() < flameData[" + std::to_string(opacity) + "];\n";
     else if (xform.opacity < 1.0)
@@ -283,6 +342,18 @@ class Generator {
     s += "}\n";
   }
 
+  // Where the variations' palette lies in the data block (3 floats a colour), put there the first
+  // time a term asks.
+  int palette() {
+    if (palette_ < 0) {
+      palette_ = static_cast<int>(k_.data.size());
+      for (const std::uint32_t c : variationPalette_)
+        for (int channel = 0; channel < 3; ++channel)
+          k_.data.push_back(static_cast<float>((c >> (8 * channel)) & 255u));
+    }
+    return palette_;
+  }
+
   // Where the noise tables lie in the data block, put there the first time a term asks.
   int noiseTables() {
     if (noise_ < 0) {
@@ -295,14 +366,21 @@ class Generator {
 
  private:
   FlameKernel& k_;
-  int noise_ = -1;
+  bool paintsRgb_ = false;
+  std::array<std::uint32_t, 256> variationPalette_;
+  std::size_t laneSlots_ = 0;  // gLane's doubles given out so far
+  int noise_ = -1, palette_ = -1;
 };
 
 void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, bool groupChoice, FlameKernel& kernel) {
-  Generator g(kernel);
+  const std::vector<core::FlameXform> xforms = core::expandSymmetry(layer.flame);
+  const KernelNeeds needs = kernelNeeds(xforms, layer.flame);
+  Generator g(kernel, needs.paintsRgb, game.variationPalette());
   std::string& s = kernel.source;
   s += "#define CHAOS_STATE vec4\n";
-  const std::vector<core::FlameXform> xforms = core::expandSymmetry(layer.flame);
+  if (needs.paintsRgb) s += "#define PAINTS_RGB\nuint gPointRgb;\n";  // the drawn point's (accumulate.comp.glsl)
+  if (needs.hidesPoints) s += "#define HIDES_POINTS\n";
+  kernel.laneMemory = needs.laneMemory;
   for (std::size_t k = 0; k < xforms.size(); ++k) g.xformFunction("xform" + std::to_string(k), xforms[k], false);
   const core::FlameGenome& genome = layer.flame;
   if (genome.hasFinal) {
@@ -319,7 +397,9 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, b
   // Without xaos, a group of orbits may share each step's transform (GROUP_CHOICE in
   // accumulate.comp.glsl): the draw is then the group's, and chaosStepWith runs the one it names.
   // A flame with xaos picks per orbit, by the transform each took last.
-  kernel.groupChoice = groupChoice && !game.usesXaos() && xforms.size() > 1;
+  // Nor may orbits be dealt to other lanes when each lane keeps memory of its own orbit (gLane, gHidden).
+  kernel.groupChoice =
+      groupChoice && !game.usesXaos() && xforms.size() > 1 && needs.laneMemory == 0 && !needs.hidesPoints;
   if (kernel.groupChoice) s += "#define GROUP_CHOICE\n";
   s += "uint pickTransform(uint draw) { return flamePick[draw >> " + std::to_string(shift) + "]; }\n";
   s += "bool chaosStepWith(uint k, inout CHAOS_STATE state, inout float colour, out vec3 drawn,\n"
@@ -352,7 +432,9 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, b
   if (!game.symmetryGroupMaps().empty()) s += "  o = throughSymmetry(o);\n";
   if (!game.postSymmetryImages().empty()) s += "  o = throughPostSymmetry(o);\n";
   s += "  drawn = good ? o : vec3(uintBitsToFloat(0x7fc00000u));\n";
-  s += "  drawnColour = oc;\n  return visible;\n}\n";
+  // A point a variation hid (JWildfire's doHide) is not drawn, though it goes on moving.
+  s += needs.hidesPoints ? "  drawnColour = oc;\n  return visible && !gHidden;\n}\n"
+                         : "  drawnColour = oc;\n  return visible;\n}\n";
 }
 
 // core::ChaosGame::stepJulia in double: the inverse iteration multiplies each coordinate by the
@@ -396,7 +478,7 @@ void juliaSource(const core::PatternLayer& layer, FlameKernel& kernel) {
 }  // namespace
 
 bool gpuVariationReadsNoise(std::string_view name) {
-  return name == "crackle";
+  return name == "crackle" || name == "dc_crackle_wf";  // the same cells, and the slice at the same place
 }
 
 std::vector<float> gpuNoiseExtras(const std::vector<double>& params, int tables) {

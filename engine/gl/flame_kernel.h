@@ -32,6 +32,9 @@ struct FlameKernel {
   // Groups of orbits share each step's transform (accumulate.comp.glsl's GROUP_CHOICE): the
   // program's workgroups are then 256 orbits, not 64.
   bool groupChoice = false;
+  // Doubles of memory per orbit its variations keep from step to step (VariationInfo::laneState):
+  // flame_variations.glsl's gLane, LANE_MEMORY, which the program defines before the variations.
+  std::size_t laneMemory = 0;
 };
 
 // Empty when the GPU's chaos game runs `layer` (a flame or quaternion Julia layer); else what it

@@ -33,7 +33,8 @@ namespace {
 
 constexpr GLuint kOrbitsBinding = 0, kCellsBinding = 1, kHitsBinding = 2, kSeedsBinding = 3, kCountersBinding = 4,
                  kPaletteBinding = 5, kMaskBinding = 6, kSampleBinding = 7, kFlameDataBinding = 8,
-                 kFlamePickBinding = 9, kDistanceInBinding = 10, kDistanceOutBinding = 11, kScreenBinding = 12;
+                 kFlamePickBinding = 9, kDistanceInBinding = 10, kDistanceOutBinding = 11, kScreenBinding = 12,
+                 kLaneMemoryBinding = 13;
 // The points method's texture units (accumulate.comp.glsl's PROJECT_POINTS).
 constexpr GLint kViewTransmittanceUnit = 0, kLightTransmittanceUnit = 1;
 constexpr int kTransientSteps = 32;  // as the CPU's: steps an orbit takes before it may add a point
@@ -119,6 +120,12 @@ GLuint makeBuffer(GLuint binding, std::size_t bytes, const void* data = nullptr)
   return buffer;
 }
 
+void clearToZero(GLuint buffer) {
+  const GLuint zero = 0;
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+}
+
 }  // namespace
 
 std::string gpuUnsupportedReason(const std::vector<core::PatternLayer>& layers) {
@@ -174,7 +181,8 @@ struct LayerUniforms {
 struct GpuAccumulator::Device {
   std::unique_ptr<HeadlessContext> context;
   GLuint cells = 0, hits = 0, counters = 0, mask = 0, sample = 0;
-  std::vector<GLuint> orbits, seeds, palettes, flameData, flamePicks;
+  // Per layer; laneMemory: what its variations keep per orbit (FlameKernel::laneMemory, at least 16 bytes).
+  std::vector<GLuint> orbits, seeds, palettes, flameData, flamePicks, laneMemory;
   std::vector<LayerUniforms> layers;
   std::map<std::string, ShaderProgram> programs;  // by their defines
   bool hitsInCells = true;
@@ -202,7 +210,7 @@ struct GpuAccumulator::Device {
       if (*b) glDeleteBuffers(1, b);
     for (GLuint* t : {&viewTransmittance, &lightTransmittance})
       if (*t) glDeleteTextures(1, t);
-    for (auto* list : {&orbits, &seeds, &palettes, &flameData, &flamePicks})
+    for (auto* list : {&orbits, &seeds, &palettes, &flameData, &flamePicks, &laneMemory})
       if (!list->empty()) glDeleteBuffers(static_cast<GLsizei>(list->size()), list->data());
     programs.clear();
   }
@@ -224,9 +232,13 @@ struct GpuAccumulator::Device {
   // The program that runs one layer's steps.
   const ShaderProgram& layerProgram(const LayerUniforms& u) {
     const std::string projecting = projection ? "#define PROJECT_POINTS\n" : "";
-    if (u.chaos)
+    if (u.chaos) {
+      // gLane's size comes before the variations, which declare it.
+      const std::string lane =
+          u.kernel.laneMemory > 0 ? "#define LANE_MEMORY " + std::to_string(u.kernel.laneMemory) + "\n" : "";
       return program("accumulate.comp.glsl", projecting,
-                     gpuVariationSource(u.kernel.variations) + "\n#line 1 99\n" + u.kernel.source);
+                     lane + gpuVariationSource(u.kernel.variations) + "\n#line 1 99\n" + u.kernel.source);
+    }
     return program("accumulate.comp.glsl",
                    projecting + "#define " + u.system + "\n" + (u.rk4 ? "#define INTEGRATOR_RK4\n" : ""), true);
   }
@@ -621,7 +633,8 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
   }
   runOnDevice(
       [&](Device& device) {
-        for (auto* list : {&device.orbits, &device.seeds, &device.palettes, &device.flameData, &device.flamePicks})
+        for (auto* list : {&device.orbits, &device.seeds, &device.palettes, &device.flameData, &device.flamePicks,
+                           &device.laneMemory})
           if (!list->empty()) {
             glDeleteBuffers(static_cast<GLsizei>(list->size()), list->data());
             list->clear();
@@ -640,6 +653,9 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
           const GLuint ones = 0xFFFFFFFFu;
           glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.orbits.back());
           glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+          device.laneMemory.push_back(
+              makeBuffer(kLaneMemoryBinding, std::size_t{orbits_} * u.kernel.laneMemory * sizeof(double)));
+          clearToZero(device.laneMemory.back());  // Fractorium's and the CPU's memory starts at 0
           if (u.runs) u.program = &device.layerProgram(u);
         }
         clearGrid(device);
@@ -686,6 +702,7 @@ void GpuAccumulator::setChunk(std::uint64_t chunk, bool clearGrid) {
           glBindBuffer(GL_SHADER_STORAGE_BUFFER, orbits);
           glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
         }
+        for (GLuint memory : device.laneMemory) clearToZero(memory);  // fresh orbits remember nothing
         if (clearGrid) this->clearGrid(device);
         std::lock_guard lock(mutex_);
         chunk_ = chunk;
@@ -749,6 +766,7 @@ void GpuAccumulator::dispatchRound(Device& device) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPaletteBinding, device.palettes[li]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFlameDataBinding, device.flameData[li]);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kFlamePickBinding, device.flamePicks[li]);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kLaneMemoryBinding, device.laneMemory[li]);
     if (!u.chaos) {
       std::array<float, 32> params{};
       std::copy(u.params.begin(), u.params.end(), params.begin());

@@ -402,12 +402,15 @@ void variation_kernels::addDirectColourVariations(std::vector<VariationInfo>& ca
                                   kRandom = CatalogueAdder::kRandom, kFixed = CatalogueAdder::kFixed;
   [[maybe_unused]] const auto count = &CatalogueAdder::count;
   const auto direct = [&] { catalogue.back().directColour = true; };
+  // Its colour is taken at the sum so far with its own value added: it reads the output arrays.
+  const auto readsSum = [&] { catalogue.back().readsSum = true; };
 
   add("dc_bubble",
       "(s x, s y, w (2/s − 1)), s = w / (r²/4 + 1); colour |(Sx + centerx)² + (Sy + centery)²| / scale mod 1, S "
       "the sum of the transform's terms up to this one (a pre_/post_ term's input plus its result) (Fractorium's)",
       k3D, kFixed, &dcBubble, {{"centerx", 0.0, -2.0, 2.0}, {"centery", 0.0, -2.0, 2.0}, {"scale", 1.0, -2.0, 2.0}});
   direct();
+  readsSum();
   add("dc_carpet",
       "q = p + (±1, ±1), signs Ψ < ½, through the transform's affine read as (a qx + b qy + e, c qx + d qy + f), "
       "z; colour |c (1 + h)/2 + k (1 − h)/2| mod 1 from the colour index c: k = h = 0 for equal signs, else k = −2, "
@@ -439,6 +442,7 @@ void variation_kernels::addDirectColourVariations(std::vector<VariationInfo>& ca
        {"y", 0.125, -1.0, 1.0},
        {"blur", 1.0, 0.0, 2.0}});
   direct();
+  readsSum();
   add("dc_gridout",
       "p + one unit step along gridout's square spiral, chosen by the rounded point's octant; z; colour + ¼ for a step "
       "in x, + ¾ for one in y, mod 1 (Fractorium's)",
@@ -449,6 +453,7 @@ void variation_kernels::addDirectColourVariations(std::vector<VariationInfo>& ca
       "up to this one (a pre_/post_ term's input plus its result) (Fractorium's)",
       k2D, kFixed, &dcLinear, {{"offset", 0.0, -2.0, 2.0}, {"angle", 0.0, -kPi, kPi}, {"scale", 1.0, -2.0, 2.0}});
   direct();
+  readsSum();
   add("dc_perlin",
       "a random (vx, vy) in a square, disc or blur (shape 0–2) of size 1 + edge, mapped into noise space (map 0–5: "
       "flat, spherical, half/quarter sphere, bubbles) times scale, with octaves of simplex noise N (amps, freqs); "

@@ -742,6 +742,7 @@ void variation_kernels::addJwildfireShapeVariations(std::vector<VariationInfo>& 
        {"offset", 0.0, 0.0, 1.0},
        {"tolerance", 5.0, 0.0, 50.0}});
   catalogue.back().directColour = true;
+  catalogue.back().readsSum = true;  // dc 1 and 2 colour at the sum so far with its own value added
   add("minkowskope",
       "−p where |y| ≤ t, else p; z; t = amplitude e^(−damping |x|) M(frequencyx x/2 − 1 + perturbation M(frequencyy "
       "y/2)) + separation, M a wave of Minkowski's question-mark function (dark-beam's, as JWildfire has it; files may "

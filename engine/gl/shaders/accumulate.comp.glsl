@@ -33,7 +33,9 @@ struct Orbit {
 #ifdef CHAOS_GAME
   CHAOS_STATE chaos;  // the iterated state (a quaternion's fourth component in w; dvec4 for one); position is what is drawn
   vec4 chaosColour;   // x: flam3's colour index, 0–1
-  uvec4 chaosStream;  // x: the chaos stream (xorshift32, never 0), y: 1 + the transform taken last (xaos)
+  // x: the chaos stream (xorshift32, never 0), y: 1 + the transform taken last (xaos), z: JWildfire's
+  // doHide (gHidden)
+  uvec4 chaosStream;
 #endif
 };
 layout(std430, binding = 0) buffer Orbits { Orbit orbits[]; };
@@ -44,6 +46,10 @@ layout(std430, binding = 2) buffer Hits { uint hits[]; };
 layout(std430, binding = 3) readonly buffer Seeds { vec4 seeds[]; };  // points on the attractor
 layout(std430, binding = 4) buffer Counters { uint counters[]; };     // inside, outside, escapes
 layout(std430, binding = 5) readonly buffer Palette { uint palette[]; };  // 256 linear RGB8
+#ifdef LANE_MEMORY
+// What the flame's variations keep per orbit from step to step (flame_variations.glsl's gLane).
+layout(std430, binding = 13) buffer LaneMemory { double laneMemory[]; };
+#endif
 
 uniform uint uOrbitCount;
 uniform int uSteps;
@@ -200,6 +206,7 @@ void seedOrbit(inout Orbit o, uint index) {
   o.chaosColour = vec4(float(e >> 8) * (1.0 / 16777216.0), 0.0, 0.0, 0.0);
   gChaosRandom = pcgHash(e) | 1u;
   o.chaosStream = uvec4(gChaosRandom, 0u, 0u, 0u);
+  gHidden = false;  // as the CPU's seedLane
   vec3 start = vec3(o.chaos.xyz);
 #else
   vec3 s = seeds[h % max(uSeedCount, 1u)].xyz;
@@ -226,6 +233,10 @@ void main() {
   uint inside = 0u, outside = 0u, escapes = 0u;
 #ifdef CHAOS_GAME
   gChaosRandom = o.chaosStream.x;
+  gHidden = o.chaosStream.z != 0u;
+#ifdef LANE_MEMORY
+  for (int i = 0; i < LANE_MEMORY; ++i) gLane[i] = laneMemory[index * uint(LANE_MEMORY) + uint(i)];
+#endif
 #else
   real3 state = real3(o.position.xyz);
 #endif
@@ -287,6 +298,9 @@ void main() {
     }
     t = finite ? clamp(t, 0.0, 255.0) : 0.0;
     uint colour = palette[uint(t)];
+#ifdef PAINTS_RGB
+    if ((gPointRgb & kRgbPainted) != 0u) colour = gPointRgb & 0xffffffu;  // a variation's true colour
+#endif
 
     r = xorshift32(r);
     float along = uAlongStep * (jitterOffset(r) + 0.5);
@@ -379,6 +393,10 @@ void main() {
   }
 #ifdef CHAOS_GAME
   o.chaosStream.x = gChaosRandom;
+  o.chaosStream.z = gHidden ? 1u : 0u;
+#ifdef LANE_MEMORY
+  for (int i = 0; i < LANE_MEMORY; ++i) laneMemory[index * uint(LANE_MEMORY) + uint(i)] = gLane[i];
+#endif
 #endif
   orbits[index] = o;
   if (inside != 0u) atomicAdd(counters[0], inside);

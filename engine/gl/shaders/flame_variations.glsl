@@ -12,6 +12,32 @@ uint gChaosRandom;  // the orbit's chaos stream (xorshift32, never 0), as core::
 // The point's colour index as its transform's blend left it, for the direct-colour variations
 // (VariationInfo::directColour), which read and may set it: core's VariationInput::colour.
 float gColour;
+// What of core's VariationInput the flagged variations (VariationInfo) read or set besides the point:
+// - readsSum: gSum is the sum of the ordinary terms before the term (0 in a pre_ or post_ term), and
+//   the variation returns the new sum, where every other one returns what it adds to it;
+// - paintsRgb: gRgb is the point's true colour as VariationInput::rgb holds it (kRgbPainted set; 0 at
+//   the start of the transform: none painted);
+// - hidesPoints: gHidden is JWildfire's doHide, kept per orbit from step to step;
+// - laneState: gLane holds every such term's memory per orbit, kept from step to step; a term's
+//   first index in it follows its parameters in flameData: int(flameData[P + its parameter count]);
+// - paintsRgb: after that index, where the palette it compares painted colours with starts in
+//   flameData (VariationInput::palette, the file's colours in sRGB bytes): 3 floats (red, green,
+//   blue, 0–255) a colour, 256 colours (variationPalette).
+// And every variation may read gStage, its term's stage (VariationInput::stage: 0 pre_, 1 ordinary,
+// 2 post_), for those that work otherwise as pre_ or post_ terms (extrude, cubic3D, dc_bubble).
+vec3 gSum;
+int gStage;
+uint gRgb;
+bool gHidden;
+const uint kRgbPainted = 1u << 24;
+#ifdef LANE_MEMORY
+double gLane[LANE_MEMORY];
+#endif
+// Palette entry i (0–255) as VariationInput::palette packs it; `at`: where the palette starts.
+uint variationPalette(int at, int i) {
+  int e = at + 3 * clamp(i, 0, 255);
+  return uint(flameData[e]) | uint(flameData[e + 1]) << 8 | uint(flameData[e + 2]) << 16;
+}
 
 float psi() {
   gChaosRandom ^= gChaosRandom << 13;

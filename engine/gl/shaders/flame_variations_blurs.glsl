@@ -844,6 +844,22 @@ float jwb_nan() { return uintBitsToFloat(0x7fc00000u); }
 float jwb_intParam(float v, float lo, float hi) { return isnan(v) ? v : trunc(clamp(v, lo, hi)); }
 // The same for the holdout file's counts, where a NaN is taken as the low end.
 float jwb_limitedInt(float v, float lo, float hi) { return isnan(v) ? lo : trunc(clamp(v, lo, hi)); }
+// GLSL's clamp and smoothstep as JWildfire's G writes them: a NaN passes, and edge0 > edge1 is fine.
+float jwb_clamp(float v, float lo, float hi) { return isnan(v) ? v : min(max(v, lo), hi); }
+float jwb_smoothstep(float e0, float e1, float v) {
+  float t = jwb_clamp((v - e0) / (e1 - e0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+// JWildfire's G.atan2, a cheap approximation (within about 0.07 rad) the cut_ shapes use.
+float jwb_fastAtan2(float y, float x) {
+  const float kQuarter = kPi / 4.0;
+  float ay = abs(y);
+  float angle =
+      x >= 0.0 ? kQuarter - kQuarter * ((x - ay) / (x + ay)) : 3.0 * kQuarter - kQuarter * ((x + ay) / (ay - x));
+  return y < 0.0 ? -angle : angle;
+}
+// std::max(a, b) as C++ has it: a unless a < b (so a NaN b leaves a).
+float jwb_max(float a, float b) { return a < b ? b : a; }
 // cos in double (GLSL has no double trig).
 double jwb_dcos(double v) { return dsin(v + 1.5707963267948966lf); }
 
@@ -939,6 +955,57 @@ vec3 V_cut_fractal(vec3 p, float w, int P, int A) {
   }
   precise double pattern = abs(ux * ux + uy * uy - 0.01lf) * 2.0lf;
   return jwb_cutResult(invert ? pattern <= 0.5lf : pattern > 0.5lf, q, p.z, w);
+}
+vec3 V_cut_glypho(vec3 p, float w, int P, int A) {
+  bool random = jwb_intParam(P_(P, 0), 0.0, 1.0) == 1.0;
+  float zoom = clamp(P_(P, 1), 0.1, 50.0);
+  bool invert = jwb_intParam(P_(P, 2), 0.0, 1.0) == 1.0;
+  float f1 = P_(P, 3), f2 = P_(P, 4), f3 = P_(P, 5);
+  vec2 q = jwb_cutPoint(random, p.xy, -0.5, 1.0);
+  vec2 u = q * zoom;
+  // 30 discs: scales 1, 1.5, 2, each at ten angles 10⁻⁴ + jπ/5 (JWildfire's stepped angle).
+  const float kStep = kPi / 5.0;
+  float m = 0.0;
+  for (int i = 0; i < 30; ++i) {
+    float s = 1.0 + 0.5 * float(i / 10), a = 0.0001 + float(i % 10) * kStep + s * kStep * 0.5;
+    vec2 v = u * s + 0.4 * vec2(cos(a), sin(a));
+    m += jwb_smoothstep(f1 * s, 0.0, length(v)) * f3;
+  }
+  bool on = !(fract(m * f3) < f2);
+  return jwb_cutResult(invert ? on : !on, q, p.z, w);
+}
+vec3 V_cut_triskel(vec3 p, float w, int P, int A) {
+  bool random = jwb_intParam(P_(P, 0), 0.0, 1.0) == 1.0;
+  float zoom = P_(P, 1);
+  bool invert = jwb_intParam(P_(P, 2), 0.0, 1.0) == 1.0;
+  vec2 q = jwb_cutPoint(random, p.xy, -1.0, 2.0);
+  vec2 u = vec2(q.x * zoom, q.y * zoom + 0.1);
+  float shade = 0.0;
+  for (int arm = 0; arm < 3; ++arm) {
+    u = vec2(-0.5 * u.x - 0.866 * u.y, 0.866 * u.x - 0.5 * u.y);
+    float ax = u.x + 0.03, ay = u.y - 0.577;
+    float l = 3.0 * sqrt(ax * ax + ay * ay), b = jwb_fastAtan2(ay, ax);
+    shade = jwb_max(shade, l + fract(b / 7.0 + 0.3) < 2.0 ? 0.5 + 0.5 * sin(b + 6.24 * l) : 0.0);
+  }
+  float pattern = jwb_smoothstep(0.0, 0.1, abs(shade - 0.5)) - jwb_smoothstep(0.8, 0.9, shade);
+  return jwb_cutResult(invert ? pattern <= 0.5 : pattern > 0.5, q, p.z, w);
+}
+// One family of cut_web's threads: |mod(v 10/2π + time, 2) − 1| − thick, smoothed over ±d/2.
+float jwb_webThread(float v, float d, float time, float thick) {
+  float m = v * (10.0 / kTwoPi) + time;
+  return jwb_smoothstep(-0.5 * d, 0.5 * d, abs(m - 2.0 * floor(m / 2.0) - 1.0) - thick);
+}
+vec3 V_cut_web(vec3 p, float w, int P, int A) {
+  float time = P_(P, 1);
+  bool random = jwb_intParam(P_(P, 2), 0.0, 1.0) == 1.0;
+  float thick = clamp(P_(P, 3), 0.0, 0.9);
+  bool invert = jwb_intParam(P_(P, 4), 0.0, 1.0) == 1.0;
+  vec2 q = jwb_cutPoint(random, p.xy, -1.0, 2.0);
+  vec2 u = q * 0.5;
+  float l = log(length(u)), b = jwb_fastAtan2(u.y, u.x);
+  float d = l * 0.05 * (10.0 / kTwoPi);
+  float pattern = jwb_webThread(l - 4.0 * b, d, time, thick) + jwb_webThread(b + 4.0 * l, d, time, thick);
+  return jwb_cutResult(invert ? pattern <= 0.0 : pattern > 0.0, q, p.z, w);
 }
 
 // szubieta: a disc (JWildfire's 20-sided nBlur polygon) of radius scale at a random cell of the width ×
@@ -1197,3 +1264,51 @@ vec3 V_dc_triTile(vec3 p, float w, int P, int A) {
   return vec3(w * float(q.x), w * float(q.y), w * p.z);
 }
 
+// dc_crackle_wf: crackle's map of a random point of the blurred disc (the point itself with weight 0),
+// its Voronoi distance L giving the colour index. After its parameters (flame_kernel.cpp puts them
+// there, as for crackle): its slice z as a double's two halves, then the noise tables' place.
+vec3 V_dc_crackle_wf(vec3 p, float w, int P, int A) {
+  float cellsize = P_(P, 0), power = P_(P, 1), distort = P_(P, 2), scale = P_(P, 3);
+  float colourScale = P_(P, 5), colourOffset = P_(P, 6);
+  vec3 o = vec3(0.0, 0.0, w * p.z);
+  if (cellsize == 0.0) return o;  // crackle's guard: no cells, nothing drawn or coloured
+  // The slice and the tables only move the cells with distort (crackleCentre reads them only then).
+  double slice =
+      distort == 0.0 ? 0.0lf : packDouble2x32(uvec2(floatBitsToUint(P_(P, 7)), floatBitsToUint(P_(P, 8))));
+  int N = distort == 0.0 ? 0 : int(P_(P, 9));
+  float halfSize = cellsize / 2.0;
+  vec2 u = p.xy;
+  if (w != 0.0) {
+    float a = psi(), b = psi(), c = psi();
+    float blurred = (a + b) / 2.0 + (c - 0.5) / 4.0;
+    float theta = kTwoPi * psi();
+    u = blurred * vec2(sin(theta), cos(theta));
+  }
+  vec2 cell = vec2(javaFloorToInt(u.x / halfSize), javaFloorToInt(u.y / halfSize));
+  // The nearest centre of the 3×3 block around u's cell (the first of equals), the block re-centred on it.
+  int nearest = 0;
+  float nearestD2 = 3.0e38;
+  vec2 centre = vec2(0.0);
+  for (int k = 0; k < 9; ++k) {
+    vec2 at = crackleCentre(N, cell + vec2(k / 3 - 1, k % 3 - 1), halfSize, distort, slice);
+    float d2 = dot(at - u, at - u);
+    if (d2 < nearestD2) {
+      nearestD2 = d2;
+      nearest = k;
+      centre = at;
+    }
+  }
+  cell += vec2(nearest / 3 - 1, nearest % 3 - 1);
+  float distance = -3.0e38;  // the Voronoi distance: the largest ratio over the neighbours
+  for (int k = 0; k < 9; ++k) {
+    if (k == 4) continue;
+    vec2 q = crackleCentre(N, cell + vec2(k / 3 - 1, k % 3 - 1), halfSize, distort, slice) - centre;
+    float ratio = q == vec2(0.0) ? 1.0 : 2.0 * dot(u - centre, q) / dot(q, q);
+    distance = max(distance, ratio);
+  }
+  float pull = pow(distance + 1e-30, power) * scale / (distance + 1e-30);
+  float c = distance * colourScale + colourOffset;
+  gColour = c > 1.0 ? 1.0 : (c >= 0.0 ? c : 0.0);  // a NaN as 0
+  o.xy = w * ((u - centre) * pull + centre);
+  return o;
+}

@@ -1098,3 +1098,18 @@ vec3 V_spirograph3D(vec3 p, float w, int P, int A) {
   float sr = sin(tr);
   return w * vec3(ab * cos(t1) - c * cos(tr) + w1, ab * sin(t1) - c * sr + w2, c * sr + w3);
 }
+// Inside or outside by the sign of Inigo Quilez' signed distance to the trapezoid, as on the CPU; a dropped
+// point is NaN (the chaos game's escape).
+vec3 V_crop_trapezoid(vec3 p, float w, int P, int A) {
+  float r1 = P_(P, 0), r2 = P_(P, 1), he = P_(P, 2);
+  bool invert = clamp(P_(P, 3), 0.0, 1.0) >= 1.0;
+  float k2x = r2 - r1, k2y = 2.0 * he, k2k2 = k2x * k2x + k2y * k2y;
+  float px = abs(p.x), py = p.y;
+  float cax = max(0.0, px - (py < 0.0 ? r1 : r2)), cay = abs(py) - he;
+  float along = clamp(((r2 - px) * k2x + (he - py) * k2y) / k2k2, 0.0, 1.0);
+  float cbx = px - r2 + k2x * along, cby = py - he + k2y * along;
+  float s = cbx < 0.0 && cay < 0.0 ? -1.0 : 1.0;
+  float d = s * sqrt(min(cax * cax + cay * cay, cbx * cbx + cby * cby));
+  bool drop = invert ? d <= 0.0 : d > 0.0;
+  return drop ? vec3(uintBitsToFloat(0x7fc00000u)) : w * p;
+}
