@@ -492,7 +492,7 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       const std::string lane =
           info->laneState > 0 ? "#define LANE_MEMORY " + std::to_string(info->laneState) + "\n" : "";
       const std::string text =
-          "#version 430 core\n" + lane + gl::gpuVariationSource({name}) +
+          "#version 430 core\n" + lane + gl::gpuVariationSource({info->name}) +
           "\nlayout(local_size_x = 64) in;\n"
           "layout(std430, binding = 0) buffer Points { vec4 points[]; };\n"
           "layout(std430, binding = 1) buffer Streams { uint streams[]; };\n"
@@ -515,13 +515,14 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
           "; ++call) {\n"
           "    gSum = sums[i].xyz;\n"
           "    result = V_" +
-          name +
+          info->name +
           "(points[i].xyz, flameData[12], 13, 0);\n"
           "  }\n"
           "  points[i].xyz = result;\n"
           "  streams[i] = gChaosRandom;\n"
           "  points[i].w = gColour;\n"
           "  flags[i] = uvec2(gRgb, gHidden ? 1u : 0u);\n"
+          "  sums[i] = vec4(gVariationT, 0.0);\n"  // where crob moved the transform's point
           "}\n";
       program =
           programs.emplace(name, gl::ShaderProgram(gl::ShaderSource{"flame_variations (" + name + ")", text})).first;
@@ -531,7 +532,7 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     std::vector<float> sums(kPoints * 4, 0.0f);
     std::vector<std::uint32_t> flags(kPoints * 2, 0u);
     for (std::size_t i = 0; i < kPoints; ++i) {
-      if (info->readsSum)
+      if (info->readsSum && stage == 1)  // a pre_ or post_ term's output arrays start cleared
         for (int a = 0; a < 3; ++a)
           sums[4 * i + static_cast<std::size_t>(a)] =
               0.6f * input[4 * ((i + 7) % kPoints) + static_cast<std::size_t>(a)];
@@ -562,6 +563,8 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     read(buffers[1], gpuStreams.size() * sizeof(std::uint32_t), gpuStreams.data());
     std::vector<std::uint32_t> gpuFlags(flags.size());
     read(buffers[4], gpuFlags.size() * sizeof(std::uint32_t), gpuFlags.data());
+    std::vector<float> movedT(sums.size());
+    read(buffers[3], movedT.size() * sizeof(float), movedT.data());
     glDeleteBuffers(5, buffers.data());
 
     // The catalogue's kernel on the same points (as doubles of the same floats) and streams.
@@ -595,6 +598,9 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     in.palette = info->paintsRgb ? palette.data() : nullptr;
     in.hidden = info->hidesPoints ? hidden.data() : nullptr;
     in.state = info->laneState > 0 ? memory.data() : nullptr;
+    std::vector<double> moveX = x, moveY = y;  // an ordinary term's transform point, which crob may move
+    in.movableX = stage == 1 ? moveX.data() : nullptr;
+    in.movableY = stage == 1 ? moveY.data() : nullptr;
     for (int call = 0; call < calls; ++call) {
       for (std::size_t i = 0; i < kPoints; ++i) {
         ox[i] = sums[4 * i];
@@ -632,6 +638,8 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
         near = near && std::abs(static_cast<int>((gpuRgb >> (8 * channel)) & 255u) -
                                 static_cast<int>((rgb[i] >> (8 * channel)) & 255u)) <= 1;
       near = near && gpuFlags[2 * i + 1] == hidden[i];
+      near = near && std::abs(movedT[4 * i] - moveX[i]) <= 1e-3 * (1.0 + std::abs(moveX[i])) &&
+             std::abs(movedT[4 * i + 1] - moveY[i]) <= 1e-3 * (1.0 + std::abs(moveY[i]));
       if (!near) ++apart;
     }
     EXPECT_GE(compared, kPoints / 2) << "too few points give finite values to compare";

@@ -288,10 +288,14 @@ class Generator {
       using Replaces = core::VariationInfo::Replaces;
       if (t.info->replaces == Replaces::XY || t.info->replaces == Replaces::XYZ) s += "  o.xy = vec2(0.0);\n";
       if (t.info->replaces == Replaces::Z || t.info->replaces == Replaces::XYZ) s += "  o.z = 0.0;\n";
+      // crob moves the transform's point (gVariationT) for the terms after it (core's movableX/Y).
+      const bool movesT = t.info->name == "crob";
+      if (movesT) s += "  gVariationT = t;\n";
       if (t.info->readsSum)
         s += "  gSum = o;\n  o = " + call(t, "t") + ";\n";  // it returns the new sum
       else
         s += "  o += " + call(t, "t") + ";\n";
+      if (movesT) s += "  t = gVariationT;\n";
       flatten = flatten || t.info->name == "flatten";
     }
     if (flatten) s += "  o.z = 0.0;\n";  // as core's applyGroup: the sum's z, after every ordinary term
@@ -478,7 +482,9 @@ void juliaSource(const core::PatternLayer& layer, FlameKernel& kernel) {
 }  // namespace
 
 bool gpuVariationReadsNoise(std::string_view name) {
-  return name == "crackle" || name == "dc_crackle_wf";  // the same cells, and the slice at the same place
+  // crackle's and dc_crackle_wf's cells (the slice at the same place); dc_perlin's octaves, which
+  // read only the tables' place of the extras.
+  return name == "crackle" || name == "dc_crackle_wf" || name == "dc_perlin";
 }
 
 std::vector<float> gpuNoiseExtras(const std::vector<double>& params, int tables) {
