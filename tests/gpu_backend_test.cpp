@@ -483,6 +483,13 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
         for (int channel = 0; channel < 3; ++channel)
           data.push_back(static_cast<float>((entry >> (8 * channel)) & 255u));
     }
+    if (info->table) {  // where its table starts, how many points, and the points
+      const std::vector<std::string> texts = info->defaultTexts();
+      const std::vector<double> table = info->table(params.data(), texts.empty() ? nullptr : texts.data());
+      data.push_back(static_cast<float>(data.size() + 2));
+      data.push_back(static_cast<float>(table.size() / 2));
+      data.insert(data.end(), table.begin(), table.end());
+    }
     const int stage = static_cast<int>(core::variationStage(name));
     // A variation with memory is called twice, so that the second call reads what the first kept.
     const int calls = info->laneState > 0 ? 2 : 1;
@@ -599,6 +606,8 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     in.hidden = info->hidesPoints ? hidden.data() : nullptr;
     in.state = info->laneState > 0 ? memory.data() : nullptr;
     std::vector<double> moveX = x, moveY = y;  // an ordinary term's transform point, which crob may move
+    const std::vector<std::string> texts = info->defaultTexts();
+    in.texts = texts.empty() ? nullptr : texts.data();
     in.movableX = stage == 1 ? moveX.data() : nullptr;
     in.movableY = stage == 1 ? moveY.data() : nullptr;
     for (int call = 0; call < calls; ++call) {
@@ -801,6 +810,46 @@ TEST(GpuBackend, AgreesWithTheCpuOnTermsThatReadMoreThanThePoint) {
   flame.xforms[2].variations.push_back({"crackle", 0.3, {1.0, 0.2, -0.5, 1.0, 0.4}});
   ASSERT_TRUE(gl::gpuSupports(scene.layers)) << gl::gpuUnsupportedReason(scene.layers);
   expectAgreement(scene, true, "pre_blur, crackle, post_depth");
+}
+
+// Terms that do more than add to the sum: shredlin and extrude discard what the terms before them
+// added (all of x and y, z alone), cubic3D and dc_linear read the sum before them (dc_linear to colour
+// the point at it), pre_extrude keeps the point's x and y as only a pre_ term does (the stage), and
+// crob moves the transform's point for the terms after it.
+TEST(GpuBackend, AgreesWithTheCpuOnTermsThatReplaceOrReadTheSum) {
+  if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
+  core::Scene scene = defaultFlameScene();
+  core::FlameGenome& flame = scene.layers.front().flame;
+  ASSERT_GE(flame.xforms.size(), 3u);
+  flame.xforms[0].variations = {{"spherical", 0.6, {}}, {"shredlin", 0.5, {1.0, 0.8, 0.6, 0.4}}, {"linear", 0.3, {}}};
+  flame.xforms[1].variations = {
+      {"pre_extrude", 0.4, {0.5}}, {"linear", 0.7, {}}, {"cubic3D", 0.3, {1.2, 0.4}}, {"extrude", 0.2, {0.3}}};
+  flame.xforms[2].variations = {
+      {"crob", 0.2, {-1.0, 1.0, -1.0, 1.0, 0.1, 0.0}}, {"linear", 0.8, {}}, {"dc_linear", 0.2, {0.3, 0.5, 1.2}}};
+  flame.xforms[2].directColor = 1.0;
+  ASSERT_TRUE(gl::gpuSupports(scene.layers)) << gl::gpuUnsupportedReason(scene.layers);
+  expectAgreement(scene, true, "shredlin, extrude, cubic3D, dc_linear, crob");
+}
+
+// Memory per orbit and true colours: post_smartcrop puts the points it crops where the orbit's last
+// kept point was (its cropmode 2, with that point's colour), and dc_booleans paints true colours.
+TEST(GpuBackend, AgreesWithTheCpuOnMemoryPerOrbitAndTrueColours) {
+  if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
+  core::Scene scene = defaultFlameScene();
+  core::FlameGenome& flame = scene.layers.front().flame;
+  ASSERT_GE(flame.xforms.size(), 3u);
+  const core::VariationInfo& smartcrop = core::variationOrThrow("smartcrop");
+  std::vector<double> crop = smartcrop.defaultParams();
+  crop[static_cast<std::size_t>(smartcrop.paramIndex("power"))] = 5.0;
+  crop[static_cast<std::size_t>(smartcrop.paramIndex("radius"))] = 0.8;
+  crop[static_cast<std::size_t>(smartcrop.paramIndex("cropmode"))] = 2.0;
+  crop[static_cast<std::size_t>(smartcrop.paramIndex("static"))] = 2.0;
+  flame.xforms[0].variations.push_back({"post_smartcrop", 1.0, crop});
+  flame.xforms[0].directColor = 1.0;
+  flame.xforms[1].variations.push_back({"dc_booleans", 0.3, core::variationOrThrow("dc_booleans").defaultParams()});
+  ASSERT_TRUE(gl::gpuSupports(scene.layers)) << gl::gpuUnsupportedReason(scene.layers);
+  // Orbits dealt to other lanes would leave their memory behind: such a flame draws per orbit.
+  expectAgreement(scene, true, "post_smartcrop, dc_booleans");
 }
 
 // Direct colour: a transform whose falloff2 moves the colour index, blended in by its direct_color,

@@ -141,9 +141,8 @@ std::string xformUnsupported(const core::FlameXform& xform) {
     const core::VariationInfo* info = core::findVariation(term.name);
     if (!info) return "variation '" + term.name + "'";
     if (!gpuHasVariation(info->name)) return "variation '" + term.name + "'";
-    // Text parameters reach no GLSL: a variation that takes them runs on the GPU only once its
-    // port says how (none does yet). The other flags the generator handles (flame_variations.glsl).
-    if (!info->textParams.empty()) return "variation '" + term.name + "'";
+    // Text parameters reach a GLSL port only through the table its kernel builds from them.
+    if (!info->textParams.empty() && !info->table) return "variation '" + term.name + "'";
   }
   return {};
 }
@@ -251,6 +250,19 @@ class Generator {
         put(static_cast<double>(laneSlots_));
         laneSlots_ += t.info->laneState;
         if (t.info->paintsRgb) put(static_cast<double>(palette()));
+      }
+      // The table a kernel picks points from (svg_wf's pixels, hopalong's orbit), after its parameters
+      // (all of them): where it starts and how many points it holds, then the (x, y) pairs.
+      if (t.info->table) {
+        std::vector<double> full = t.term->params;
+        for (std::size_t i = full.size(); i < t.info->params.size(); ++i)
+          full.push_back(t.info->params[i].defaultValue);
+        put(full.data() + t.term->params.size(), full.size() - t.term->params.size());
+        const std::vector<std::string> texts = t.term->texts.empty() ? t.info->defaultTexts() : t.term->texts;
+        const std::vector<double> table = t.info->table(full.data(), texts.empty() ? nullptr : texts.data());
+        put(static_cast<double>(k_.data.size() + 2));
+        put(static_cast<double>(table.size() / 2));
+        put(table.data(), table.size());
       }
       k_.variations.push_back(t.info->name);
       return "V_" + t.info->name + "(" + point + ", flameData[" + std::to_string(weight) + "], " +

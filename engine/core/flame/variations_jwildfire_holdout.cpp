@@ -108,6 +108,19 @@ VOXFLAME_VARIATION_TARGETS void hopalong(const VariationInput& in, double* __res
   }
 }
 
+// hopalong's orbit for a backend of its own: (x, y) pairs, points 1 … kHopalongPoints.
+std::vector<double> hopalongTable(const double* params, const std::string*) {
+  const double key[5] = {std::clamp(params[1], -1.0, 1.0), std::clamp(params[2], -1.0, 1.0),
+                         std::clamp(params[3], -1.0, 1.0), params[4], params[5]};
+  const std::shared_ptr<const HopalongOrbit> orbit = hopalongOrbit(key);
+  std::vector<double> table(2 * kHopalongPoints);
+  for (std::size_t k = 0; k < kHopalongPoints; ++k) {
+    table[2 * k] = orbit->x[k];
+    table[2 * k + 1] = orbit->y[k];
+  }
+  return table;
+}
+
 // ---- szubieta ----------------------------------------------------------------------------------
 
 // szubieta (Jesus Sosa's, after Paul Bourke's CircleSquares and Square Tile patterns): a disc of
@@ -682,6 +695,7 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
        {"c", 0.25, -1.0, 1.0},
        {"startx", 0.0, -1.0, 1.0},
        {"starty", 0.0, -1.0, 1.0}});
+  catalogue.back().table = &hopalongTable;
   add("szubieta",
       "w · 0.1 (scale q + (i − width/2, j − height/2)), z: cell (i, j) of the width × height grid from Ψ₁, q a "
       "point of a 20-sided nBlur polygon of radius 1 (Ψ₂, Ψ₃, Ψ₄); the colour index becomes Paul Bourke's "

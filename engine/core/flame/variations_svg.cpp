@@ -109,6 +109,19 @@ VOXFLAME_VARIATION_TARGETS void svgWf(const VariationInput& in, double* __restri
   }
 }
 
+// svg_wf's pixels for a backend of its own: (X, Y) pairs.
+std::vector<double> svgTable(const double* params, const std::string* texts) {
+  const double resolution = std::isnan(params[1]) ? 0.1 : std::clamp(params[1], 0.1, 100.0);
+  const std::shared_ptr<const SvgPoints> points =
+      svgPoints(resolution, std::round(params[3]) != 0.0, texts ? texts[0] : std::string(kDefaultSvg));
+  std::vector<double> table(2 * points->x.size());
+  for (std::size_t k = 0; k < points->x.size(); ++k) {
+    table[2 * k] = points->x[k];
+    table[2 * k + 1] = points->y[k];
+  }
+  return table;
+}
+
 }  // namespace
 
 void variation_kernels::addSvgVariations(std::vector<VariationInfo>& catalogue) {
@@ -129,6 +142,7 @@ void variation_kernels::addSvgVariations(std::vector<VariationInfo>& catalogue) 
        {"offset_x", 0.0, -2.5, 2.5},
        {"offset_y", 0.0, -2.5, 2.5}});
   catalogue.back().textParams = {{"svg", kDefaultSvg}};
+  catalogue.back().table = &svgTable;
 }
 
 }  // namespace voxflame::core

@@ -97,6 +97,20 @@ VOXFLAME_VARIATION_TARGETS void textWf(const VariationInput& in, double* __restr
   }
 }
 
+// text_wf's pixels for a backend of its own: (X, Y) pairs; none without texts, as the kernel.
+std::vector<double> textTable(const double* params, const std::string* texts) {
+  if (!texts) return {};
+  const std::shared_ptr<const TextPoints> points =
+      textPoints(texts[0], texts[1], wholePixels(params[0], 0, kTextRasterMaxSide),
+                 wholePixels(params[6], -kTextRasterMaxSide, kTextRasterMaxSide));
+  std::vector<double> table(2 * points->x.size());
+  for (std::size_t k = 0; k < points->x.size(); ++k) {
+    table[2 * k] = points->x[k];
+    table[2 * k + 1] = points->y[k];
+  }
+  return table;
+}
+
 }  // namespace
 
 void variation_kernels::addTextVariations(std::vector<VariationInfo>& catalogue) {
@@ -118,6 +132,7 @@ void variation_kernels::addTextVariations(std::vector<VariationInfo>& catalogue)
        {"offset_y", 0.0, -1.0, 1.0},
        count("baseline", 0.0, 0.0, 100.0)});
   catalogue.back().textParams = {{"text", kDefaultText}, {"font_name", kDefaultFont}};
+  catalogue.back().table = &textTable;
 }
 
 }  // namespace voxflame::core

@@ -22,7 +22,9 @@ float gColour;
 //   first index in it follows its parameters in flameData: int(flameData[P + its parameter count]);
 // - paintsRgb: after that index, where the palette it compares painted colours with starts in
 //   flameData (VariationInput::palette, the file's colours in sRGB bytes): 3 floats (red, green,
-//   blue, 0–255) a colour, 256 colours (variationPalette).
+//   blue, 0–255) a colour, 256 colours (variationPalette);
+// - a table (VariationInfo::table: svg_wf's pixels, hopalong's orbit): after the parameters, where
+//   the (x, y) pairs start in flameData and how many there are (tablePoint).
 // And every variation may read gStage, its term's stage (VariationInput::stage: 0 pre_, 1 ordinary,
 // 2 post_), for those that work otherwise as pre_ or post_ terms (extrude, cubic3D, dc_bubble).
 vec3 gSum;
@@ -33,6 +35,13 @@ const uint kRgbPainted = 1u << 24;
 #ifdef LANE_MEMORY
 double gLane[LANE_MEMORY];
 #endif
+// Point k of the table of the term whose table's place follows its N parameters at P.
+vec2 tablePoint(int P, int N, int k) {
+  int at = int(flameData[P + N]) + 2 * k;
+  return vec2(flameData[at], flameData[at + 1]);
+}
+// Which of a table's `count` points a draw picks: ⌊Ψ count⌋ in double, as the CPU's index.
+int tableIndex(float draw, int count) { return min(int(floor(double(draw) * double(count))), count - 1); }
 // Palette entry i (0–255) as VariationInput::palette packs it; `at`: where the palette starts.
 uint variationPalette(int at, int i) {
   int e = at + 3 * clamp(i, 0, 255);
@@ -1483,4 +1492,41 @@ vec3 V_lazyTravis(vec3 p, float w, int P, int A) {
     py = -s;
   }
   return vec3(w * px, w * py, w * p.z);
+}
+
+// ---- points from a table the CPU's kernel builds (VariationInfo::table) ----------------------------
+
+// A table's point picked by Ψ₁, moved by the blur (e^{radius √(−ln(1 − Ψ₂))} − 1)/1000 along 2πΨ₃ when
+// radius > 0.01 (core's pickBlurredPixel); `count` points follow the N parameters at P.
+vec2 pickBlurredPoint(int P, int N, int count, float radius) {
+  vec2 q = tablePoint(P, N, tableIndex(psi(), count));
+  if (radius > 0.01) {
+    float dr = (exp(radius * sqrt(-log(1.0 - psi()))) - 1.0) * 0.001;
+    float da = psi() * kTwoPi;
+    q += dr * vec2(cos(da), sin(da));
+  }
+  return q;
+}
+// svg_wf and text_wf: a painted pixel (scaled and moved, the weight not applied), or (Ψ₁, Ψ₂) without
+// two of them.
+vec3 pixelOrDraws(vec3 p, float w, int P, int N, float radius, vec4 scaleOffset, float scale) {
+  int count = int(flameData[P + N + 1]);
+  if (count > 1) {
+    vec2 q = pickBlurredPoint(P, N, count, radius);
+    return vec3((q * scaleOffset.xy + scaleOffset.zw) * scale, w * p.z);
+  }
+  float a = psi();
+  float b = psi();
+  return vec3(a, b, w * p.z);
+}
+vec3 V_svg_wf(vec3 p, float w, int P, int A) {
+  return pixelOrDraws(p, w, P, 8, P_(P, 0), vec4(P_(P, 4), P_(P, 5), P_(P, 6), P_(P, 7)), 1.0);
+}
+vec3 V_text_wf(vec3 p, float w, int P, int A) {
+  return pixelOrDraws(p, w, P, 7, P_(P, 1), vec4(P_(P, 2), P_(P, 3), P_(P, 4), P_(P, 5)), 3.0);
+}
+// hopalong: w · a point of the orbit's first 2²⁰ (Ψ picks it), z carried.
+vec3 V_hopalong(vec3 p, float w, int P, int A) {
+  int count = int(flameData[P + 7]);
+  return vec3(w * tablePoint(P, 6, tableIndex(psi(), count)), w * p.z);
 }
