@@ -443,6 +443,17 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"cut_triskel", {0.0, 0.7, 1.0}},
       {"cut_web", {1000.0, 0.3, 0.0, 0.05, 0.0}},
       {"dc_crackle_wf", {0.7, 0.5, 0.6, 1.3, 0.2, 1.5, -0.2}},
+      // The readers of the sum: other spreads and styles, octapol's polar disc and triangles, and
+      // pre_/post_ forms, which read their own point where an ordinary term reads the sum.
+      {"cubic3D", {2.5, 1.5}},
+      {"post_cubic3D", {0.25, 0.7}},
+      {"cubicLattice_3D", {3.0, 2.0}},
+      {"pre_popcorn2_3D", {0.4, -0.3, 0.7, 1.3}},
+      {"post_roundspher3D", {}},
+      {"octapol", {0.3, 0.2, 0.3, 0.5}},
+      {"pre_dc_bubble", {0.3, -0.2, 0.7}},
+      {"post_dc_cylinder", {0.2, 0.7, 0.5, 0.3, -0.2, 0.5}},
+      {"pre_dc_linear", {-0.4, 2.1, 1.7}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})

@@ -872,3 +872,137 @@ vec3 V_extrude(vec3 p, float w, int P, int A) {
   float u1 = psi(), u2 = psi();
   return vec3(0.0, 0.0, u1 < P_(P, 0) ? max(w, 0.0) : w * u2);
 }
+// ---- those that read the sum before them (variations_3d_sum.cpp, variations_direct_colour.cpp) -------
+// Each returns the new sum: gSum plus what its kernel adds, or with what it rewrites rewritten. A pre_
+// or post_ term (gStage ≠ 1) reads its own point where an ordinary one reads the sum.
+// cubic3D's and cubicLattice_3D's spread: xpand/2, or √xpand/2 beyond ±1.
+float sum3_latticeFill(float xpand) { return abs(xpand) <= 1.0 ? xpand * 0.5 : sqrt(xpand) * 0.5; }
+// One of the cube's eight corners picked by ⌊8Ψ⌋ in Fractorium's order (the CPU's cubeCorner).
+vec3 sum3_cubeCorner(float u) {
+  float node = floor(u * 8.0);
+  float half_ = node - 4.0 * floor(node / 4.0);
+  return vec3(node < 4.0 ? 1.0 : -1.0, half_ == 1.0 || half_ == 3.0 ? -1.0 : 1.0, half_ >= 2.0 ? -1.0 : 1.0);
+}
+vec3 V_cubic3D(vec3 p, float w, int P, int A) {
+  float fill = sum3_latticeFill(P_(P, 0)), style = P_(P, 1);
+  float smooth_ = abs(w) <= 0.5 ? w * 2.0 : 1.0;
+  float smoothStyle =
+      abs(style) <= 1.0 ? style : (style > 1.0 ? 1.0 + (style - 1.0) * 0.25 : (style + 1.0) * 0.25 - 1.0);
+  float smoothFill = smooth_ * fill, smoothRest = smooth_ * (1.0 - fill), half_ = w * 0.5;
+  vec3 k = sum3_cubeCorner(psi());
+  float ex = 1.0 - smoothStyle * (1.0 - cos(atan2c(p.x, p.z)));
+  float ey = 1.0 - smoothStyle * (1.0 - sin(atan2c(p.y, p.z)));
+  float mean = smoothStyle > 1.0 ? (ex + ey) / 2.0 * smoothStyle : (ex + ey) * 0.5;
+  vec3 e = vec3(ex, ey, 1.0 - smoothStyle * (1.0 - mean));
+  vec3 s = gStage == 1 ? gSum : p;
+  return gSum + s - smoothRest * s * e + p * smoothFill * e + k * half_;
+}
+vec3 V_cubicLattice_3D(vec3 p, float w, int P, int A) {
+  float fill = sum3_latticeFill(P_(P, 0));
+  bool shaped = fractoriumInteger(P_(P, 1), 1.0, 2.0) == 2.0;
+  vec3 k = sum3_cubeCorner(psi());
+  vec3 e = vec3(1.0);
+  if (shaped) {
+    e.x = cos(atan2c(p.x, p.z));
+    e.y = sin(atan2c(p.y, p.z));
+    e.z = (e.x + e.y) * 0.5;
+  }
+  vec3 s = gStage == 1 ? gSum : p;
+  return gSum + (s + p) * fill * e + k * w;
+}
+// sin(tan v) in double: tan(c y) is huge near its poles, where float's tan and sin lose every digit.
+double sum3_sinTan(double v) {
+  double t = dsin(v) / dsin(v + 1.5707963267948966lf);
+  return dsin(t);
+}
+vec3 V_popcorn2_3D(vec3 p, float w, int P, int A) {
+  float px = P_(P, 0), py = P_(P, 1), pz = P_(P, 2);
+  double c = double(P_(P, 3));
+  float sinTanC = float(sum3_sinTan(c)), half_ = w * 0.5, v = abs(w) <= 1.0 ? abs(w) * w : w;
+  float lift = v * sinTanC * atan2c(p.y, p.x);
+  float t = p.z == 0.0 ? lift : p.z;
+  float other = gStage == 1 ? gSum.z : p.z;
+  return gSum + vec3(half_ * (p.x + px * float(sum3_sinTan(c * double(p.y)))),
+                     half_ * (p.y + py * float(sum3_sinTan(c * double(p.x)))),
+                     (other == 0.0 ? lift : 0.0) + v * (pz * sinTanC * t));
+}
+vec3 V_roundspher3D(vec3 p, float w, int P, int A) {
+  const float kTwoOverPi = 2.0 / kPi;
+  float r2 = p.x * p.x + p.y * p.y, cosR = cos(sqrt(r2));
+  float t = p.z == 0.0 ? cosR : p.z;
+  float other = gStage == 1 ? gSum.z : p.z;
+  float keep = other == 0.0 ? cosR : other;
+  float d = r2 + t * t, e = 1.0 / d + kTwoOverPi * kTwoOverPi;
+  // An ordinary term replaces the sum's z (by keep, which is that z where it is not 0).
+  return vec3(gSum.xy + w * (w / d * p.xy / e), (gStage == 1 ? 0.0 : gSum.z) + keep + w * (w / d * t / e));
+}
+// Fractorium's HitsRect(top-left, bottom-right, q), and whether q lies strictly inside the triangle
+// (a, b, c) by its barycentric coordinates, as octapol's CPU kernel has them.
+bool sum3_inRect(vec2 tl, vec2 br, vec2 q) { return q.x >= tl.x && q.y >= tl.y && q.x <= br.x && q.y <= br.y; }
+bool sum3_inTriangle(vec2 a, vec2 b, vec2 c, vec2 q) {
+  vec2 v0 = c - a, v1 = b - a, v2 = q - a;
+  float d00 = dot(v0, v0), d01 = dot(v0, v1), d02 = dot(v0, v2), d11 = dot(v1, v1), d12 = dot(v1, v2);
+  float denom = d00 * d11 - d01 * d01;
+  if (denom == 0.0) return false;
+  float u = (d11 * d02 - d01 * d12) / denom, v = (d00 * d12 - d01 * d02) / denom;
+  return u + v < 1.0 && u > 0.0 && v > 0.0;
+}
+vec3 V_octapol(vec3 p, float w, int P, int A) {
+  float polarWeight = P_(P, 0), s = abs(P_(P, 2)), t = abs(P_(P, 3)), h = 0.5 * s;
+  float st = h + t, radius = 0.707106781 * s * abs(P_(P, 1));
+  vec2 a = vec2(-h, h + t), b = vec2(h, h + t), c = vec2(t, h), d = vec2(t, -h), e = vec2(h, -h - t);
+  vec2 f = vec2(-h, -h - t), g = vec2(-t, -h), hh = vec2(-t, h), i = vec2(-h, h), j = vec2(h, h);
+  vec2 k = vec2(-h, -h), l = vec2(h, -h);
+  vec2 q = p.xy * 0.15, add = vec2(0.0);
+  bool clear = false;
+  float r = length(q);
+  if (radius > 0.0 && r <= radius) {
+    // A polar weight of 0 leaves the point as it is, even at the origin (where ln 0 would make 0/0).
+    float rd = polarWeight == 0.0 ? 0.0 : log((r / radius) * (r / radius)) * polarWeight;
+    float phi = atan2c(q.y, q.x);
+    add = w * (q + (vec2(phi, r) - q) * rd);
+  } else if (abs(q.x) <= st && abs(q.y) <= st) {
+    bool hit = sum3_inRect(hh, k, q) || sum3_inRect(j, d, q) || sum3_inRect(a, j, q) || sum3_inRect(k, e, q) ||
+               sum3_inTriangle(i, a, hh, q) || sum3_inTriangle(j, b, c, q) || sum3_inTriangle(l, d, e, q) ||
+               sum3_inTriangle(k, f, g, q);
+    add = hit ? w * q : vec2(0.0);
+    clear = !hit;
+  } else {
+    clear = true;
+  }
+  vec2 before = clear && gStage == 1 ? vec2(0.0) : gSum.xy;
+  return vec3(before + add + w * q, gSum.z + w * p.z);
+}
+// Fractorium's 1 / scale with a zero scale taken as 1e-5.
+float sum3_inverseScale(float scale) { return 1.0 / (scale == 0.0 ? 1e-5 : scale); }
+// The colour of dc_bubble, dc_cylinder and dc_linear is taken at the new sum; a pre_ or post_ term's
+// (whose sum starts at 0 on the CPU) at its input point plus its result.
+vec2 sum3_colourAt(vec3 sum, vec3 p) { return sum.xy + (gStage == 1 ? vec2(0.0) : p.xy); }
+vec3 V_dc_bubble(vec3 p, float w, int P, int A) {
+  float cx = P_(P, 0), cy = P_(P, 1), inv = sum3_inverseScale(P_(P, 2));
+  float r2 = p.x * p.x + p.y * p.y;
+  float s = w / fractoriumZeps(r2 / 4.0 + 1.0);
+  vec3 sum = gSum + vec3(s * p.xy, w * (2.0 / s - 1.0));
+  vec2 at = sum3_colourAt(sum, p) + vec2(cx, cy);
+  gColour = fmodc(abs(inv * dot(at, at)), 1.0);
+  return sum;
+}
+// dc_linear's and dc_cylinder's colour: the position along the direction `angle`.
+float sum3_linearColour(vec2 at, int P) {
+  float offset = P_(P, 0), angle = P_(P, 1), inv = sum3_inverseScale(P_(P, 2));
+  return fmodc(abs(0.5 * (inv * (cos(angle) * at.x + sin(angle) * at.y + offset) + 1.0)), 1.0);
+}
+vec3 V_dc_cylinder(vec3 p, float w, int P, int A) {
+  float sx = P_(P, 3), sy = P_(P, 4), blur = P_(P, 5);
+  float turn = psi() * kTwoPi;
+  float r = blur * gaussPsi();
+  // No weight on y, as Fractorium has it.
+  vec3 sum = gSum + vec3(w * sin(p.x + r * sin(turn)) * sx, r + p.y * sy, w * cos(p.x + r * cos(turn)));
+  gColour = sum3_linearColour(sum3_colourAt(sum, p), P);
+  return sum;
+}
+vec3 V_dc_linear(vec3 p, float w, int P, int A) {
+  vec3 sum = gSum + w * p;
+  gColour = sum3_linearColour(sum3_colourAt(sum, p), P);
+  return sum;
+}
