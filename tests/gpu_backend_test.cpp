@@ -454,6 +454,20 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"pre_dc_bubble", {0.3, -0.2, 0.7}},
       {"post_dc_cylinder", {0.2, 0.7, 0.5, 0.3, -0.2, 0.5}},
       {"pre_dc_linear", {-0.4, 2.1, 1.7}},
+      // The true-colour painters: Gradient 1 (the palette's nearest entry) and 2 (the index), ColorOnly,
+      // reset_z off. Their patterns iterate chaotically, so the parameters are floats exactly (the GPU
+      // reads them as floats: dc_inversion's scale 1.8 against the CPU's double moved 64 of 512 colours).
+      {"dc_booleans", {777.0, 2.0, 300.0, 0.0, 2.0, 0.5, -0.25, 1.0}},
+      {"dc_booleans", {1000.0, 0.0, 1000.0, 0.0, 1.0, 0.25, 0.125, 0.0}},
+      {"dc_booleans", {-55.0, 1.0, 50.0, 1.0, 2.0, 0.5, 0.0, 0.0}},
+      {"dc_quadtree", {1.0, 10000.0, 0.0, 1000.0, 30.0, 0.0, 1.0, 0.25, 0.125, 0.0}},
+      {"dc_quadtree", {0.75, 10000.0, 3.25, 300.0, 20.0, 1.0, 2.0, 0.5, -0.125, 1.0}},
+      {"dc_ducks", {10000.0, 10.0, 1.0, 0.0, 1.0, 0.25, 0.125, 0.0}},
+      {"dc_ducks", {10000.0, 37.5, 2.5, 0.0, 2.0, 0.5, -0.25, 1.0}},
+      {"dc_inversion", {10000.0, 23.0, 50.0, 1.75, 1.25, 0.0, 2.0, 0.5, -0.25, 1.0}},
+      {"dc_inversion", {10000.0, 41.5, 60.0, 2.5, 1.125, 1.0, 1.0, 0.25, 0.5, 0.0}},
+      {"glsl_apollonian", {5000.0, 10000.0, 73.5, 1.0}},
+      {"glsl_apollonian", {300.0, 10000.0, 1234.0, 0.0}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})

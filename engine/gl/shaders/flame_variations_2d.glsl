@@ -804,3 +804,305 @@ vec3 V_wavesn(vec3 p, float w, int P, int A) {
   return vec3(w * (xn + 0.5 * (scaleX * sinY + abs(xn) * incX * sinY)),
               w * (yn + 0.5 * (scaleY * sinX + abs(yn) * incY * sinX)), w * p.z);
 }
+
+// ---- variations_jwildfire_corpus.cpp (dc_booleans), variations_jwildfire_holdout.cpp (dc_quadtree, dc_ducks,
+// dc_inversion), variations_jwildfire_glsl.cpp (glsl_apollonian): JWildfire's true-colour painters. Their
+// patterns iterate folds, logarithms or inversions many times, so they run in double, with trig and
+// logarithms of their own (GLSL has none in double) and `precise` against fused multiply-adds.
+
+// sin and cos in double, as dsin reduces, but with the series' first terms added last: the loops below
+// take sines of small arguments, which dsin's rounding of 1 + r² (…) gets wrong by an ulp one time in five.
+dvec2 rgb_sinCos(double v) {
+  double q = floor(v * 0.63661977236758134lf + 0.5lf);
+  precise double r = fma(-q, 1.5707963267948966lf, v) - q * 6.123233995736766e-17lf;
+  precise double r2 = r * r;
+  precise double ps = -8.22063524662433e-18lf;
+  ps = ps * r2 + 2.8114572543455206e-15lf;
+  ps = ps * r2 - 7.647163731819816e-13lf;
+  ps = ps * r2 + 1.6059043836821613e-10lf;
+  ps = ps * r2 - 2.505210838544172e-8lf;
+  ps = ps * r2 + 2.7557319223985893e-6lf;
+  ps = ps * r2 - 1.984126984126984e-4lf;
+  ps = ps * r2 + 8.333333333333333e-3lf;
+  ps = ps * r2 - 1.6666666666666666e-1lf;
+  precise double s = r + r * (r2 * ps);
+  precise double pc = -1.5619206968586225e-16lf;
+  pc = pc * r2 + 4.779477332387385e-14lf;
+  pc = pc * r2 - 1.1470745597729725e-11lf;
+  pc = pc * r2 + 2.08767569878681e-9lf;
+  pc = pc * r2 - 2.755731922398589e-7lf;
+  pc = pc * r2 + 2.48015873015873e-5lf;
+  pc = pc * r2 - 1.388888888888889e-3lf;
+  pc = pc * r2 + 4.1666666666666664e-2lf;
+  precise double hz = 0.5lf * r2;
+  precise double h = 1.0lf - hz;
+  precise double c = h + (((1.0lf - h) - hz) + r2 * r2 * pc);
+  int n = int(q) & 3;
+  return n == 0 ? dvec2(s, c) : (n == 1 ? dvec2(c, -s) : (n == 2 ? dvec2(-s, -c) : dvec2(-c, s)));
+}
+double rgb_dsin(double v) { return rgb_sinCos(v).x; }
+double rgb_dcos(double v) { return rgb_sinCos(v).y; }
+double rgb_nan() { return packDouble2x32(uvec2(0u, 0x7ff80000u)); }
+// The natural logarithm in double: v = 2^e m, m in [√½, √2), ln m = 2 atanh((m − 1)/(m + 1)) by its series.
+double rgb_dlog(double v) {
+  if (isnan(v) || v < 0.0lf) return rgb_nan();
+  if (v == 0.0lf) return -packDouble2x32(uvec2(0u, 0x7ff00000u));
+  if (isinf(v)) return v;
+  int e;
+  double m = frexp(v, e);
+  if (m < 0.70710678118654752lf) {
+    m *= 2.0lf;
+    e -= 1;
+  }
+  precise double s = (m - 1.0lf) / (m + 1.0lf);
+  precise double s2 = s * s;
+  precise double series = 1.0lf / 21.0lf;
+  for (int k = 9; k >= 0; --k) series = series * s2 + 1.0lf / double(2 * k + 1);
+  precise double r = double(e) * 0.69314718055994531lf + 2.0lf * s * series;
+  return r;
+}
+// atan in double: float's atan refined by two Newton steps on sin y − v cos y.
+double rgb_datan(double v) {
+  double y = double(atan(float(v)));
+  for (int k = 0; k < 2; ++k) {
+    double s = rgb_dsin(y), c = rgb_dcos(y);
+    y -= (s - v * c) / (c + v * s);
+  }
+  return y;
+}
+// Java's (int) of a double: truncated, saturated, NaN 0 (core's javaInt).
+int rgb_javaInt(double v) {
+  if (isnan(v)) return 0;
+  if (v >= 2147483647.0lf) return 2147483647;
+  if (v <= -2147483648.0lf) return -2147483647 - 1;
+  return int(v);
+}
+// The colour channel's byte: ⌊256 c⌋ clamped into 0–255 (core's rgbByte).
+double rgb_byte(double c) { return clamp(double(rgb_javaInt(floor(c * 256.0lf))), 0.0lf, 255.0lf); }
+// The palette's entry nearest to (r, g, b), the first of equals (core's nearestPaletteEntry).
+int rgb_nearest(int at, int r, int g, int b) {
+  int best = 0, bestDistance = 0;
+  for (int k = 0; k < 256; ++k) {
+    uint e = variationPalette(at, k);
+    int dr = int(e & 255u) - r, dg = int(e >> 8 & 255u) - g, db = int(e >> 16 & 255u) - b;
+    int d = dr * dr + dg * dg + db * db;
+    if (k == 0 || d < bestDistance) {
+      bestDistance = d;
+      best = k;
+    }
+  }
+  return best;
+}
+// Paints the bytes (Gradient 0) or the palette's entry nearest to them (Gradient 1).
+void rgb_paint(int at, bool matched, dvec3 bytes) {
+  uint r = uint(bytes.x), g = uint(bytes.y), b = uint(bytes.z);
+  gRgb = matched ? kRgbPainted | variationPalette(at, rgb_nearest(at, int(r), int(g), int(b)))
+                 : kRgbPainted | r | g << 8 | b << 16;
+}
+
+// java.util.Random's 48-bit state as three 16-bit limbs held in doubles, whose products stay exact.
+dvec3 rgb_javaStep(dvec3 s) {
+  const double kLimb = 65536.0lf;
+  double r0 = s.x * 58989.0lf + 11.0lf;  // multiplier 0x5DEECE66D: limbs 0xE66D, 0xDEEC, 0x5; increment 0xB
+  double c0 = floor(r0 / kLimb);
+  double r1 = s.x * 57068.0lf + s.y * 58989.0lf + c0;
+  double c1 = floor(r1 / kLimb);
+  double r2 = s.x * 5.0lf + s.y * 57068.0lf + s.z * 58989.0lf + c1;
+  return dvec3(r0 - c0 * kLimb, r1 - c1 * kLimb, r2 - floor(r2 / kLimb) * kLimb);
+}
+double rgb_javaNextDouble(inout dvec3 s) {
+  s = rgb_javaStep(s);
+  double high = floor((s.z * 4294967296.0lf + s.y * 65536.0lf + s.x) / 4194304.0lf);  // 26 bits
+  s = rgb_javaStep(s);
+  double low = floor((s.z * 4294967296.0lf + s.y * 65536.0lf + s.x) / 2097152.0lf);  // 27 bits
+  return (high * 134217728.0lf + low) * (1.0lf / 9007199254740992.0lf);
+}
+// dc_booleans' integer parameters: NaN taken as 0, clamped and truncated.
+float rgb_booleansInt(float v, float lo, float hi) { return trunc(clamp(isnan(v) ? 0.0 : v, lo, hi)); }
+vec3 V_dc_booleans(vec3 p, float w, int P, int A) {
+  int seed = rgb_javaInt(double(P_(P, 0)));
+  uint bits = uint(seed);
+  dvec3 s = dvec3(double((bits & 0xffffu) ^ 0xe66du), double((bits >> 16) ^ 0xdeecu),
+                  double((seed < 0 ? 0xffffu : 0u) ^ 5u));
+  double offsetX = double(seed) * rgb_javaNextDouble(s);
+  double offsetY = double(seed) * rgb_javaNextDouble(s);
+  int type = int(rgb_booleansInt(P_(P, 1), 0.0, 2.0));
+  double zoom = double(P_(P, 2));
+  bool colourOnly = rgb_booleansInt(P_(P, 3), 0.0, 1.0) == 1.0;
+  int gradient = int(rgb_booleansInt(P_(P, 4), 0.0, 2.0));
+  bool resets = rgb_booleansInt(P_(P, 7), 0.0, 1.0) == 1.0 && gStage == 1;
+  vec2 u = p.xy;
+  if (!colourOnly) {
+    u.x = psi() - 0.5;
+    u.y = psi() - 0.5;
+  }
+  // t = ⌊u⌋ op ⌊v⌋, the colour hsv(sin t, 1, cos t) in bytes, its luminance by JWildfire's truncated shares.
+  int a = rgb_javaInt(double(u.x) * zoom + offsetX), b = rgb_javaInt(double(u.y) * zoom + offsetY);
+  double t = double(type == 0 ? (a ^ b) : type == 1 ? (a & b) : (a | b));
+  double hue = rgb_dsin(t), value = rgb_dcos(t);
+  const double kOffsets[3] = double[3](1.0lf, 2.0lf / 3.0lf, 1.0lf / 3.0lf);
+  const double kShares[3] = double[3](0.299lf, 0.587lf, 0.114lf);
+  double bytes[3];
+  int luminance = 0;
+  for (int c = 0; c < 3; ++c) {
+    double channel = value * clamp(abs(fract(hue + kOffsets[c]) * 6.0lf - 3.0lf) - 1.0lf, 0.0lf, 1.0lf);
+    bytes[c] = clamp(floor(channel * 256.0lf), 0.0lf, 255.0lf);
+    luminance += int(bytes[c] * kShares[c]);
+  }
+  double level = double(luminance) / 255.0lf;
+  if (gradient == 2) gColour = float(level);
+  else rgb_paint(int(flameData[P + 9]), gradient == 1, dvec3(bytes[0], bytes[1], bytes[2]));
+  float dz = float(level * double(P_(P, 5)) + double(P_(P, 6)));
+  return vec3(gSum.x + w * u.x, gSum.y + w * u.y, (resets ? 0.0 : gSum.z) + dz);
+}
+
+// JWildfire's DC_BaseFunc (dc_quadtree, dc_ducks, dc_inversion): integer parameters NaN taken as lo.
+float rgb_limitedInt(float v, float lo, float hi) { return isnan(v) ? lo : trunc(clamp(v, lo, hi)); }
+// The point the pattern is read at: uniform in the square of half-width `halfWidth`, or with ColorOnly
+// (parameter k) the point itself.
+dvec2 rgb_dcPoint(vec3 p, int P, int k, double halfWidth) {
+  if (rgb_limitedInt(P_(P, k), 0.0, 1.0) == 1.0) return dvec2(p.xy);
+  double u = halfWidth * (2.0lf * double(psi()) - 1.0lf);
+  double v = halfWidth * (2.0lf * double(psi()) - 1.0lf);
+  return dvec2(u, v);
+}
+// The common tail: the colour (grey level as the index with Gradient 2, else painted), the point and z.
+// P[k …]: ColorOnly, Gradient, scale_z, offset_z, reset_z; N the parameter count.
+vec3 rgb_dcFinish(vec3 p, float w, int P, int k, int N, dvec2 q, dvec3 colour) {
+  dvec3 bytes = dvec3(rgb_byte(colour.x), rgb_byte(colour.y), rgb_byte(colour.z));
+  double level = (trunc(bytes.x * 0.299lf) + trunc(bytes.y * 0.587lf) + trunc(bytes.z * 0.114lf)) / 255.0lf;
+  float gradient = rgb_limitedInt(P_(P, k + 1), 0.0, 2.0);
+  if (gradient == 2.0) gColour = float(level);
+  else rgb_paint(int(flameData[P + N + 1]), gradient == 1.0, bytes);
+  bool reset = rgb_limitedInt(P_(P, k + 4), 0.0, 1.0) == 1.0;
+  float dz = float(level * double(P_(P, k + 2)) + double(P_(P, k + 3)));
+  return vec3(gSum.x + w * float(q.x), gSum.y + w * float(q.y), reset ? dz : gSum.z + w * p.z + dz);
+}
+
+// dc_quadtree: its cells' hashes take the sine of ids up to 4^levels, which needs double.
+vec3 V_dc_quadtree(vec3 p, float w, int P, int A) {
+  double zoom = isnan(P_(P, 0)) ? 0.1lf : clamp(double(P_(P, 0)), 0.1lf, 50.0lf), time = double(P_(P, 2));
+  double width = isnan(P_(P, 3)) ? 100.0lf : clamp(double(P_(P, 3)), 100.0lf, 1000.0lf);
+  double levels = double(rgb_limitedInt(P_(P, 4), 1.0, 50.0));
+  dvec2 q = rgb_dcPoint(p, P, 5, 0.5lf);
+  precise double ux = q.x / zoom + 0.5lf, uy = q.y / zoom + 0.5lf, r = 1.0lf, id = 1.0lf;
+  precise dvec3 o = dvec3(0.0lf, 0.0lf, 1.0lf);
+  for (double level = 0.0lf; level < levels; level += 1.0lf) {
+    if (min(min(ux, 1.0lf - ux), min(uy, 1.0lf - uy)) < 0.3lf * r / width) {
+      o -= 1.0lf;
+      break;
+    }
+    precise double hash =
+        0.5lf + 0.5lf * rgb_dsin(id + time) * rgb_dsin(id * 2.17lf - time) * rgb_dsin(id * 5.7lf + time);
+    if (hash > 0.7lf) break;
+    double fx = ux < 0.5lf ? 0.0lf : 1.0lf, fy = uy < 0.5lf ? 0.0lf : 1.0lf;
+    id = 4.0lf * id + 2.0lf * fy + fx;
+    ux = ux * 2.0lf - fx;
+    uy = uy * 2.0lf - fy;
+    r *= 2.0lf;
+    if (r > width) break;
+    o += 0.13lf;
+  }
+  return rgb_dcFinish(p, w, P, 5, 10, q, o);
+}
+
+// JWildfire's G.atan2, the first-order approximation dc_ducks is drawn with.
+double rgb_glslAtan2(double y, double x) {
+  const double kQuarter = 0.78539816339744831lf, kThreeQuarters = 3.0lf * 0.78539816339744831lf;
+  double ay = abs(y);
+  precise double angle =
+      x >= 0.0lf ? kQuarter - kQuarter * ((x - ay) / (x + ay)) : kThreeQuarters - kQuarter * ((x + ay) / (ay - x));
+  return y < 0.0lf ? -angle : angle;
+}
+double rgb_band(double f) { return floor(0.5lf + f * 1.1lf) / 1.1lf; }
+vec3 V_dc_ducks(vec3 p, float w, int P, int A) {
+  double t = double(P_(P, 1)) / 65.0lf * 30.0lf, zoom = double(P_(P, 2));
+  precise double stepX = 0.1lf * rgb_dsin(t / 3.0lf) - 0.1lf, stepY = 5.0lf + 0.1lf * rgb_dcos(t / 5.0lf);
+  dvec2 q = rgb_dcPoint(p, P, 3, 1.0lf);
+  precise double ex = q.x * zoom, ey = q.y * zoom, c = 0.0lf;
+  for (int k = 0; k < 50; ++k) {
+    double ay = abs(ey);
+    precise double nx = rgb_dlog(sqrt(ex * ex + ay * ay)), ny = rgb_glslAtan2(ay, ex) - 6.2lf;
+    ex = nx + stepX;
+    ey = ny + stepY;
+    c += sqrt(ex * ex + ey * ey);
+  }
+  const double kLn2 = 0.69314718055994531lf;
+  precise double d = rgb_dlog(rgb_dlog(c * 0.05lf) / kLn2) / kLn2 * 6.0lf;
+  double fr = rgb_band(0.1lf + 0.7lf * rgb_dsin(d)), fg = rgb_band(0.1lf + 0.5lf * rgb_dsin(d - 0.7lf)),
+         fb = rgb_band(0.7lf + 0.7lf * rgb_dcos(d - 0.7lf));
+  return rgb_dcFinish(p, w, P, 3, 8, q, dvec3(fb, fr, fg));
+}
+
+vec3 V_dc_inversion(vec3 p, float w, int P, int A) {
+  double time = double(P_(P, 1));
+  double iterations = double(rgb_limitedInt(P_(P, 2), 0.0, 100.0));
+  // setParameter clamps the scales into [1.1, 3] (a NaN passes).
+  double scaleX = isnan(P_(P, 3)) ? double(P_(P, 3)) : clamp(double(P_(P, 3)), 1.1lf, 3.0lf);
+  double scaleY = isnan(P_(P, 4)) ? double(P_(P, 4)) : clamp(double(P_(P, 4)), 1.1lf, 3.0lf);
+  double offsetX = rgb_dsin(time * 0.123lf), offsetY = rgb_datan(time * 0.0567lf);
+  double s = 2.1lf + time * 0.025lf;
+  precise dvec3 b = dvec3(rgb_dsin(s * 1.790lf), rgb_dsin(s * 1.345lf), rgb_dsin(s * 1.123lf)) * 0.5lf + 0.5lf;
+  precise double length = sqrt(b.x * b.x + b.y * b.y + b.z * b.z);
+  b /= length;
+  dvec2 q = rgb_dcPoint(p, P, 5, 1.0lf);
+  precise double vx = q.x, vy = q.y, l = 0.0lf, least = 10000.0lf;
+  for (double k = 0.0lf; k < iterations; k += 1.0lf) {
+    vx = abs(vx) * scaleX + offsetX;
+    vy = vy * scaleY + offsetY;
+    precise double dx = vx - 0.5lf, dy = vy - 0.5lf;
+    precise double f = 0.9lf * (0.9lf / (dx * dx + dy * dy));
+    vx = 0.5lf - dx * f;
+    vy = 0.5lf - dy * f;
+    vx += rgb_dsin(vx * 0.001lf) / rgb_dcos(vy * 0.001lf);
+    vy += rgb_dsin(vx * 0.001lf) * rgb_dcos(vy * 0.001lf);
+    l = sqrt(vx * vx * vx * vx + vy * vy * vy * vy);
+    least = isnan(l) || isnan(least) ? l + least : min(l, least);  // Java's Math.min
+  }
+  precise double m = 3.0lf * least * (1.0lf - least);
+  precise double brightness = l * l * 11.0lf * (m * m * m * m * m + 0.14lf);
+  dvec3 colour = dvec3(1.0 - exp(-float(b.x * brightness)), 1.0 - exp(-float(b.y * brightness)),
+                       1.0 - exp(-float(b.z * brightness)));
+  return rgb_dcFinish(p, w, P, 5, 10, q, colour);
+}
+
+// glsl_apollonian's matrices (js.glsl.mat3 by columns) and the matrix times a vector, summed as Java does.
+dvec3 rgb_times(dmat3 m, dvec3 v) {
+  precise dvec3 r = m[0] * v.x + m[1] * v.y;
+  r += m[2] * v.z;
+  return r;
+}
+vec3 V_glsl_apollonian(vec3 p, float w, int P, int A) {
+  const double kHeight = 1000000.0lf;
+  double width = isnan(P_(P, 0)) ? 100.0lf : trunc(clamp(double(P_(P, 0)), 100.0lf, 10000000.0lf));
+  float g = P_(P, 3);
+  bool index = !isnan(g) && clamp(roundHalfAway(g), 0.0, 1.0) == 1.0;
+  double pi = trunc(double(psi()) * width), pj = trunc(double(psi()) * kHeight);
+  vec3 o = vec3(w * float(pi / width - 0.5lf), w * float(pj / kHeight - 0.5lf), w * p.z);
+  // The pattern at the pixel's centre: v = f m (2 uv, 0) folded 50 times, then 0.6 sin v + ½.
+  double time = isnan(P_(P, 2)) || isinf(P_(P, 2)) ? 0.0lf : double(P_(P, 2));
+  double t = 0.05lf * time;
+  double sa = rgb_dsin(t + 1.0lf), ca = rgb_dcos(t + 1.0lf), sb = rgb_dsin(t + 2.0lf), cb = rgb_dcos(t + 2.0lf);
+  double sc = rgb_dsin(t + 3.0lf), cc = rgb_dcos(t + 3.0lf);
+  precise dmat3 m = dmat3(dvec3(cb * cc, -cb * sc, sb),
+                          dvec3(sa * sb * cc + ca * sc, -sa * sb * sc + ca * cc, -sa * cb),
+                          dvec3(-ca * sb * cc + sa * sc, ca * sb * sc + sa * cc, ca * cb));
+  precise dmat3 folded = m * (1.2lf + 0.1lf * rgb_dsin(0.1lf * time));
+  precise dmat3 zoomed = m * (2.0lf + 0.25lf * rgb_dsin(0.3lf * time));
+  precise double u = 2.0lf * (pi + 0.5lf) / width - 1.0lf, v = 2.0lf * (pj + 0.5lf) / kHeight - 1.0lf;
+  precise dvec3 q = rgb_times(zoomed, dvec3(2.0lf * u, 2.0lf * v, 0.0lf));
+  for (int k = 0; k < 50; ++k) {
+    precise double d = q.x * q.x + q.y * q.y + q.z * q.z;
+    precise dvec3 f = rgb_times(folded, q);
+    q = abs(f / d * 0.5lf - 0.5lf) * 2.0lf - 1.0lf;
+  }
+  vec3 c = sin(vec3(q)) * 0.6 + 0.5;
+  if (index) {
+    float grey = c.x * c.y;
+    if (!isnan(grey)) gColour = grey;
+  } else {
+    gRgb = kRgbPainted | uint(rgb_byte(double(c.x))) | uint(rgb_byte(double(c.y))) << 8
+           | uint(rgb_byte(double(c.z))) << 16;
+  }
+  return o;
+}
