@@ -468,6 +468,20 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"dc_inversion", {10000.0, 41.5, 60.0, 2.5, 1.125, 1.0, 1.0, 0.25, 0.5, 0.0}},
       {"glsl_apollonian", {5000.0, 10000.0, 73.5, 1.0}},
       {"glsl_apollonian", {300.0, 10000.0, 1234.0, 0.0}},
+      // smartcrop's cropmode 2 reads its memory (the second call), radial sectors, other statics.
+      {"smartcrop", {5.0, 1.5, 0.3, 2.0, 0.7, 0.2, 0.5, 0.1, 0.25, 2.0, 2.0}},
+      {"smartcrop", {1.3, 1.0, 0.0, 1.0, 1.0, 0.2, 0.5, 0.1, 0.0, 2.0, 1.0}},
+      {"smartcrop", {-4.0, 1.2, 0.0, 1.0, 1.0, 0.0, 0.3, 0.0, 0.1, 0.0, 2.0}},
+      {"smartcrop", {3.0, 1.2, -0.4, 0.5, 1.3, 0.1, 0.3, 0.2, 0.1, 1.0, 3.0}},
+      // fract_mandelbrot_wf's buddhabrot orbit per orbit, other powers, z_fill with its log scale.
+      {"fract_mandelbrot_wf",
+       {100.0, -2.35, 0.75, -1.2, 1.2, 1.0, 2.0, 1.0, 1.0, 3.0, -5.0, 3.0, 7.0, 0.4, 0.55, 0.0, 0.0, 0.0, 0.0, 0.0}},
+      {"fract_mandelbrot_wf",
+       {80.0, -1.3, 1.3, -1.3, 1.3, 0.0, 5.0, 1.0, 2.0, 2.0, -3.0, 5.0, 7.0, 1.0, 0.0, 0.0, 0.1, 0.6, 1.0, 0.0}},
+      {"crob", {-0.5, 1.5, -1.0, 0.7, 1.0, 0.3, 1.5}},
+      {"crob", {1.0, -1.0, -0.8, 1.2, 0.0, 0.5, 2.0}},
+      {"dc_perlin", {1.0, 1.0, 0.2, 0.6, 0.3, 0.5, 0.2, 1.5, 3.0, 1.5, 2.2, 0.3, 20.0, 0.4}},
+      {"dc_perlin", {2.0, 5.0, 0.0, 1.0, 0.25, 0.25, 0.5, 2.5, 2.0, 3.0, 1.5, 0.2, 10.0, 0.9}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})
@@ -1057,7 +1071,6 @@ TEST(GpuBackend, ProjectsThePointsMethodsPointsAsTheCpuDoes) {
 TEST(GpuBackend, EveryVariationTheGpuLacksHasAReason) {
   const std::map<std::string, std::string> lacking = {
       {"hopalong", "draws from a table of 2^20 orbit points the CPU builds per parameter set"},
-      {"crob", "moves the point the terms after it map (VariationInput::movableX/Y)"},
       {"obj_mesh_primitive_wf", "samples a built-in mesh's triangles"},
   };
   const std::vector<std::string>& gpu = gl::gpuFlameVariations();

@@ -1312,3 +1312,374 @@ vec3 V_dc_crackle_wf(vec3 p, float w, int P, int A) {
   o.xy = w * ((u - centre) * pull + centre);
   return o;
 }
+
+// ---- per-orbit memory, a moved transform point and octaves of noise (variations_plugins.cpp:
+// smartcrop; variations_jwildfire_glsl.cpp: fract_mandelbrot_wf; variations_blurs_more.cpp: crob;
+// variations_direct_colour.cpp: dc_perlin) -------------------------------------------------------
+
+const float lane_kFractoriumEps = 2.220446049250313e-16;  // Fractorium's Zeps: the double's epsilon
+float lane_zeps(float v) { return v == 0.0 ? lane_kFractoriumEps : v; }
+float lane_nan() { return uintBitsToFloat(0x7fc00000u); }
+
+// Zy0rg's smartcrop as Fractorium has it. Its memory (4 doubles after its first slot in gLane): the
+// last point let through, times w, and its colour index. The transform's point it crops for static
+// ≤ 1 is the point itself in a pre_ or ordinary term, gVariationT in a post_ one.
+vec3 V_smartcrop(vec3 p, float w, int P, int A) {
+  float power = P_(P, 0), radius = P_(P, 1), roundstr = P_(P, 2), roundwidth = P_(P, 3);
+  float distortion = P_(P, 4), edge = P_(P, 5), scatter = P_(P, 6), offset = P_(P, 7), rotation = P_(P, 8);
+  float cropmode = P_(P, 9), staticMode = P_(P, 10);
+  int M = int(P_(P, 11));
+  bool keepInside = (power > 0.0) == (radius > 0.0);
+  float workRadius = abs(radius);
+  float workPower = power == 0.0 ? lane_kFractoriumEps : abs(power);
+  bool radial = workPower < 2.0;
+  if (radial) workPower *= kPi;
+  float alpha = kTwoPi / workPower;
+  float halfSin = sin(alpha / 2.0);
+  float roundCoeff = roundstr / lane_zeps(halfSin) / workPower * 2.0;
+  float turn = rotation * alpha;
+  bool readsPoint = staticMode > 1.0;
+  bool cropReplaces = staticMode > 1.0 || staticMode == -1.0;
+  bool keepReplaces = staticMode > 0.0;
+  bool keepsTransformPoint = staticMode == 3.0;
+  vec3 t = gStage == 2 ? gVariationT : p;
+  vec3 q = readsPoint ? p : t;
+  float angle = atan2c(q.y, q.x);
+  float rad = sqrt(q.x * q.x + q.y * q.y);
+  // All three drawn, in the plugin's order, as the CPU does.
+  float a = psi(), b = psi(), c = psi();
+  bool cropped = false, toMemory = false, toOrigin = false;
+  vec2 moved = vec2(0.0);
+  if (radial) {
+    float jitter = edge * (a - 0.5);
+    float sector = angle / kTwoPi + 1.0 + jitter;
+    sector = (sector - trunc(sector)) * kTwoPi;
+    if ((sector > workPower) == keepInside) {
+      cropped = true;
+      if (cropmode == 2.0) {
+        toMemory = true;
+      } else {
+        float spread = (c * scatter + offset + jitter) * kPi;
+        float turned = trunc(b * 2.0) > 0.0 ? workPower + spread : -spread;
+        moved = w * rad * vec2(cos(turned), sin(turned));
+      }
+    }
+  } else {
+    float coeff = 1.0;
+    if (distortion != 0.0) {
+      float side = (angle + kPi) / alpha;
+      side -= trunc(side);
+      side = side < 0.5 ? side : 1.0 - side;
+      coeff = 1.0 / cos(side * alpha);
+      if (roundstr != 0.0) {
+        float width = (roundwidth != 1.0 ? exp(log(side * 2.0) * roundwidth) : side * 2.0) * roundCoeff;
+        coeff = abs((1.0 - width) * coeff + width);
+      }
+      if (distortion != 1.0) coeff = exp(log(coeff) * distortion);
+    }
+    float reach = coeff * (edge != 0.0 ? workRadius + edge * (a - 0.5) : workRadius);
+    if ((rad > reach) == keepInside) {
+      cropped = true;
+      if (cropmode == 2.0) {
+        toMemory = true;
+      } else if (cropmode == 0.0) {
+        toOrigin = true;
+      } else {
+        float r = cropmode == -1.0 ? rad : reach + coeff * ((edge != 0.0 ? b : a) * scatter + offset);
+        moved = w * r * vec2(cos(angle + turn), sin(angle + turn));
+      }
+    }
+  }
+  vec3 result;
+  if (!cropped) {
+    vec3 kept = w * (keepsTransformPoint ? t : q);
+    gLane[M] = double(kept.x);
+    gLane[M + 1] = double(kept.y);
+    gLane[M + 2] = double(kept.z);
+    if (cropmode == 2.0) gLane[M + 3] = double(gColour);
+    result = keepReplaces ? kept : kept + p;
+  } else if (toMemory) {
+    result = vec3(gLane[M], gLane[M + 1], gLane[M + 2]);
+    gColour = float(gLane[M + 3]);
+    if (!cropReplaces) result += p;
+  } else if (toOrigin) {
+    result = cropReplaces ? vec3(0.0) : p;
+  } else {
+    result = vec3(moved, w * q.z);
+    if (!cropReplaces) result += p;
+  }
+  return result;
+}
+
+// JWildfire's fract_mandelbrot_wf. The orbits run in double with the CPU's operations (precise:
+// no fused multiply-adds), since where a start escapes, and the buddhabrot's orbit, hang on every bit.
+// JWildfire's count parameter: rounded half away from 0, clamped, NaN as `nanValue`.
+int lane_jwfCount(float v, float lo, float hi, float nanValue) {
+  return int(isnan(v) ? nanValue : clamp(roundHalfAway(v), lo, hi));
+}
+// One step of z → z^power + c as the CPU expands it; sq: the squares of the point before the step.
+void lane_mandelbrotStep(int power, dvec2 c, inout dvec2 z, inout dvec2 sq, inout double count) {
+  precise double x = z.x, y = z.y;
+  precise double xs = x * x, ys = y * y;
+  precise double nx, ny;
+  if (power == 2) {
+    ny = 2.0lf * x * y + c.y;
+    nx = (xs - ys) + c.x;
+  } else if (power == 3) {
+    nx = xs * x - 3.0lf * x * ys + c.x;
+    ny = 3.0lf * xs * y - ys * y + c.y;
+  } else if (power == 4) {
+    nx = xs * xs + ys * ys - 6.0lf * xs * ys + c.x;
+    ny = 4.0lf * x * y * (xs - ys) + c.y;
+  } else {
+    precise double px = x * (xs * xs - 10.0lf * xs * ys + 5.0lf * ys * ys);
+    precise double py = y * (ys * ys - 10.0lf * xs * ys + 5.0lf * xs * xs);
+    for (int k = 5; k < power; ++k) {
+      precise double ax = x * px - y * py, ay = x * py + px * y;
+      px = ax;
+      py = ay;
+    }
+    nx = px + c.x;
+    ny = py + c.y;
+  }
+  z = dvec2(nx, ny);
+  sq = dvec2(xs, ys);
+  count += 1.0lf;
+}
+// JWildfire's iterate from c: steps while the point has not escaped, at most maxIter tests; the tests.
+int lane_mandelbrotIterate(int power, dvec2 c, int maxIter, out dvec2 z, out dvec2 sq, out double count) {
+  z = c;
+  sq = dvec2(0.0lf);
+  count = 0.0lf;
+  int tests = 0;
+  while (tests++ < maxIter && !(sq.x + sq.y >= 4.0lf)) lane_mandelbrotStep(power, c, z, sq, count);
+  return tests;
+}
+// The double the CPU most likely has for a parameter flameData holds as a float: the shortest decimal
+// that rounds to it (defaults and a file's numbers are short decimals). Where the starts fall hangs
+// on these bounds: a float's −2.35 moves a start by 1e-7, which tips its escape count now and then.
+double lane_decimalDouble(float f) {
+  if (f == 0.0 || isinf(f) || isnan(f)) return double(f);
+  double v = abs(double(f));
+  int e10 = int(floor(log2(abs(f)) * 0.30102999566398120));
+  for (int digits = 1; digits <= 10; ++digits) {
+    int e = digits - 1 - e10;
+    if (abs(e) > 22) break;  // 10^e exact in double
+    double scale = 1.0lf;
+    for (int k = 0; k < abs(e); ++k) scale *= 10.0lf;
+    double d = e >= 0 ? floor(v * scale + 0.5lf) / scale : floor(v / scale + 0.5lf) * scale;
+    if (float(d) == abs(f)) return f < 0.0 ? -d : d;
+  }
+  return double(f);
+}
+float lane_fractHeight(float count, float maxIter, float scalez, float offsetz, bool logZ) {
+  float t = count / maxIter;
+  return scalez / 10.0 * (logZ ? log(1.0 + t) * 0.43429448190325176 : t) + offsetz;
+}
+vec3 V_fract_mandelbrot_wf(vec3 p, float w, int P, int A) {
+  int maxIter = lane_jwfCount(P_(P, 0), 1.0, 10000.0, 1.0);
+  int power = lane_jwfCount(P_(P, 6), 2.0, 64.0, 2.0);
+  int clipIterMin = lane_jwfCount(P_(P, 9), -1e9, 1e9, 0.0);
+  int clipIterMax = lane_jwfCount(P_(P, 10), -1e9, 1e9, 0.0);
+  int maxClipIter = lane_jwfCount(P_(P, 11), -1.0, 100.0, 0.0);
+  int minIter = lane_jwfCount(P_(P, 12), -1.0, 1e9, 0.0);
+  double xmin = lane_decimalDouble(P_(P, 1)), xmax = lane_decimalDouble(P_(P, 2));
+  double ymin = lane_decimalDouble(P_(P, 3)), ymax = lane_decimalDouble(P_(P, 4));
+  float scalez = P_(P, 8), scale = P_(P, 13), offsetx = P_(P, 14), offsety = P_(P, 15), offsetz = P_(P, 16);
+  float zFill = clamp(P_(P, 17), 0.0, 1.0);
+  bool buddhabrot = lane_jwfCount(P_(P, 5), -1.0, 1.0, 0.0) > 0;
+  bool directColour = lane_jwfCount(P_(P, 7), -1.0, 1.0, 0.0) != 0;
+  bool logZ = lane_jwfCount(P_(P, 18), 0.0, 1.0, 0.0) == 1;
+  bool colourOnly = lane_jwfCount(P_(P, 19), 0.0, 1.0, 0.0) == 1;
+  int M = int(P_(P, 20));
+  dvec2 z, sq;
+  double count;
+  if (buddhabrot) {
+    // The lane's memory: drawing or not, the start, the point, its squares, the steps, the length.
+    dvec2 c;
+    double len = gLane[M + 8];
+    if (gLane[M] == 0.0lf) {
+      for (int k = 0;; ++k) {
+        c.x = (xmax - xmin) * double(psi()) + xmin;
+        c.y = (ymax - ymin) * double(psi()) + ymin;
+        int tests = lane_mandelbrotIterate(power, c, maxIter, z, sq, count);
+        if (sq.x + sq.y >= 4.0lf && tests > minIter) {
+          len = double(tests);
+          break;
+        }
+        if (k == 249) return vec3(lane_nan());
+      }
+      z = c;
+      sq = dvec2(0.0lf);
+      count = 0.0lf;
+      for (int skip = 0; skip < minIter; ++skip) lane_mandelbrotStep(power, c, z, sq, count);
+    } else {
+      c = dvec2(gLane[M + 1], gLane[M + 2]);
+      z = dvec2(gLane[M + 3], gLane[M + 4]);
+      sq = dvec2(gLane[M + 5], gLane[M + 6]);
+      count = gLane[M + 7];
+    }
+    lane_mandelbrotStep(power, c, z, sq, count);
+    gLane[M] = count >= len ? 0.0lf : 1.0lf;
+    gLane[M + 1] = c.x;
+    gLane[M + 2] = c.y;
+    gLane[M + 3] = z.x;
+    gLane[M + 4] = z.y;
+    gLane[M + 5] = sq.x;
+    gLane[M + 6] = sq.y;
+    gLane[M + 7] = count;
+    gLane[M + 8] = len;
+    gColour = clamp(float(double(gColour) + count / len), 0.0, 1.0);
+    return vec3(scale * w * (vec2(z) + vec2(offsetx, offsety)), 0.0);
+  }
+  // Up to max_clip_iter starts; the first neither deep inside nor far outside is kept.
+  dvec2 c0 = dvec2(0.0lf);
+  int tests = 0;
+  for (int k = 0; k < maxClipIter; ++k) {
+    if (colourOnly) {
+      c0 = dvec2(p.xy);
+    } else {
+      c0.x = (xmax - xmin) * double(psi()) + xmin;
+      c0.y = (ymax - ymin) * double(psi()) + ymin;
+    }
+    tests = lane_mandelbrotIterate(power, c0, maxIter, z, sq, count);
+    bool clipped = (clipIterMax < 0 && tests >= maxIter + clipIterMax) || (clipIterMin > 0 && tests <= clipIterMin);
+    if (!clipped) break;
+    if (k == maxClipIter - 1) return vec3(lane_nan());
+  }
+  vec3 o = vec3(0.0);
+  if (!colourOnly) o.xy = scale * w * (vec2(c0) + vec2(offsetx, offsety));
+  float height = scale * w * lane_fractHeight(float(tests), float(maxIter), scalez, offsetz, logZ);
+  if (zFill > 1e-8 && psi() < zFill) {
+    float below = scale * w * lane_fractHeight(float(tests - 1), float(maxIter), scalez, offsetz, logZ);
+    height = (below - height) * psi() + height;
+  }
+  o.z = height;
+  if (directColour) {
+    float c = gColour + float(tests) / float(maxIter);
+    if (c > 1.0) c -= 1.0;
+    gColour = c < 0.0 ? 0.0 : (c > 1.0 ? 1.0 : c);
+  }
+  return o;
+}
+
+// Fractorium's crob: a crop to the frame [left, right] × [top, bottom], the outside sent to a random
+// point of the band inside the frame (blur) or to the origin, unweighted; as an ordinary term it moves
+// the transform's point (gVariationT) there too. The rejection loops stop at 64 tries, as the CPU's.
+// Ψ^e as std::pow has it for Ψ in [0, 1) and e ≥ 0 (GLSL's pow leaves 0^e undefined).
+float lane_powUnit(float u, float e) { return e == 0.0 ? 1.0 : (u == 0.0 ? 0.0 : pow(u, e)); }
+vec3 V_crob(vec3 p, float w, int P, int A) {
+  float top = min(P_(P, 0), P_(P, 1)), bottom = max(P_(P, 0), P_(P, 1));
+  if (top == bottom) {
+    top = -1.0;
+    bottom = 1.0;
+  }
+  float left = min(P_(P, 2), P_(P, 3)), right = max(P_(P, 2), P_(P, 3));
+  if (left == right) {
+    left = -1.0;
+    right = 1.0;
+  }
+  bool blur = fractoriumInteger(P_(P, 4), -2147483647.0, 2147483647.0) != 0.0;
+  float ratio = max(min(P_(P, 5), 1.0), 0.0), power = max(P_(P, 6), 0.0);
+  float intervalX = abs(right) - left, intervalY = abs(bottom) - top;
+  float halfX = intervalX / 2.0, halfY = intervalY / 2.0;
+  float minHalf = halfX > halfY ? halfY : halfX;
+  float x0c = halfX > halfY ? right - minHalf : right - halfX;
+  float y0c = halfX < halfY ? top + minHalf : top + halfY;
+  float setProb = intervalY / (intervalX + intervalY);
+  float inset = blur ? minHalf * ratio : 0.0;
+  float quarter = 0.25 * setProb, halfProb = 0.5 * setProb, threeQuarters = 0.75 * setProb;
+  float section = psi();
+  vec2 c = vec2(0.0);
+  if (blur) {
+    if (section < setProb) {
+      for (int tries = 0; tries < 64; ++tries) {
+        c.y = top + psi() * halfY;
+        c.x = right - lane_powUnit(psi(), power) * ratio * minHalf;
+        if (!((c.y - y0c) / lane_zeps(c.x - x0c) < -1.0)) break;
+      }
+      c.x = section < halfProb ? left + right - c.x : c.x;
+      c.y = section > quarter && section < threeQuarters ? bottom + top - c.y : c.y;
+    } else {
+      for (int tries = 0; tries < 64; ++tries) {
+        c.x = right - psi() * halfX;
+        c.y = top + lane_powUnit(psi(), power) * ratio * minHalf;
+        float gradient = (c.y - y0c) / lane_zeps(c.x - x0c);
+        if (!(gradient <= 0.0 && gradient > -1.0)) break;
+      }
+      c.y = section > halfProb ? bottom + top - c.y : c.y;
+      c.x = section > quarter && section < threeQuarters ? left + right - c.x : c.x;
+    }
+  }
+  bool outside = p.x < left + inset || p.x > right - inset || p.y < top + inset || p.y > bottom - inset;
+  if (!outside) c = vec2(0.0);
+  if (outside && gStage == 1) gVariationT.xy = c;
+  return vec3(c, w * p.z);
+}
+
+// Fractorium's dc_perlin with voxflame's simplex noise (simplexNoise3D, the tables' place after its
+// parameters and crackle's two slice words). Its octaves scale x twice and z never, as the CPU's.
+float lane_perlinNoise(int N, dvec3 v, float amps, float freqs, int octaves) {
+  float total = 0.0, a = 1.0;
+  for (int k = 0; k < octaves; ++k) {
+    total += simplexNoise3D(N, v) / lane_zeps(a);
+    a *= amps;
+    v.x *= double(freqs);
+    v.y *= double(freqs);
+    v.x *= double(freqs);
+  }
+  return total;
+}
+vec3 V_dc_perlin(vec3 p, float w, int P, int A) {
+  float shape = fractoriumInteger(P_(P, 0), 0.0, 2.0), map = fractoriumInteger(P_(P, 1), 0.0, 5.0);
+  float selectCentre = clamp(P_(P, 2), -1.0, 1.0), selectRange = clamp(P_(P, 3), 0.1, 2.0);
+  float centre = P_(P, 4), range = P_(P, 5), edge = P_(P, 6), scale = P_(P, 7);
+  int octaves = int(fractoriumInteger(P_(P, 8), 1.0, 5.0));
+  float amps = P_(P, 9), freqs = P_(P, 10), z0 = P_(P, 11);
+  int bailout = int(fractoriumInteger(P_(P, 12), 2.0, 1000.0));
+  float seed = isinf(P_(P, 13)) || isnan(P_(P, 13)) ? 0.0 : P_(P, 13);
+  int N = int(P_(P, 16));
+  float bottom = selectCentre - selectRange, top = selectCentre + selectRange;
+  bottom = bottom > 0.75 ? 0.75 : (bottom < -2.0 ? -3.0 : bottom);
+  top = top < -0.75 ? -0.75 : (top > 3.0 ? 3.0 : top);
+  // The point in double: the noise's simplex choice hangs on its last bits.
+  double vx = 0.0lf, vy = 0.0lf;
+  float n = 0.0, e = 0.0;
+  int tries = 0;
+  do {
+    e = 0.0;
+    float r;
+    if (shape == 0.0) {
+      vx = double(1.0 + edge) * (double(psi()) - 0.5lf);
+      vy = double(1.0 + edge) * (double(psi()) - 0.5lf);
+      r = float(max(abs(vx), abs(vy)));
+      if (r > 1.0 - edge) e = 0.5 * (r - 1.0 + edge) / edge;
+    } else {
+      if (shape == 1.0) {
+        r = psi() + psi();
+        r = (r > 1.0 ? 2.0 - r : r) * (1.0 + edge);
+      } else {
+        r = (1.0 + edge) * psi();
+      }
+      if (r > 1.0 - edge) e = 0.5 * (r - 1.0 + edge) / edge;
+      float theta = psi() * kTwoPi;
+      vx = double(0.5 * r * sin(theta));
+      vy = double(0.5 * r * cos(theta));
+    }
+    precise double r2 = vx * vx + vy * vy;
+    precise dvec3 v = double(scale) * dvec3(vx, vy, double(z0));
+    if (map == 1.0 || map == 2.0 || map == 3.0) {
+      double f = map == 1.0 ? (r2 == 0.0lf ? 1.0lf / double(lane_kFractoriumEps) : 1.0lf / r2)
+                            : 1.0lf / (r2 + (map == 2.0 ? 0.5lf : 0.25lf));
+      v.xy *= f;
+    } else if (map == 4.0 || map == 5.0) {
+      double lift = sqrt(abs(0.25lf - r2));
+      v.z = double(scale) * ((map == 4.0 ? 1.0lf : 2.0lf) * lift + double(z0));
+    }
+    n = lane_perlinNoise(N, v, amps, freqs, octaves);
+    e = n > 0.0 ? n * (1.0 + e * e * 20.0) + 2.0 * e : n * (1.0 + e * e * 20.0) - 2.0 * e;
+  } while ((e < bottom || e > top) && tries++ < bailout);
+  float c = centre + range * n + seed;
+  gColour = c - floor(c);
+  return vec3(w * vec2(vx, vy), w * p.z);
+}
