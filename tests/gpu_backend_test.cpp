@@ -443,6 +443,11 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"cut_triskel", {0.0, 0.7, 1.0}},
       {"cut_web", {1000.0, 0.3, 0.0, 0.05, 0.0}},
       {"dc_crackle_wf", {0.7, 0.5, 0.6, 1.3, 0.2, 1.5, -0.2}},
+      {"flower_db", {5.0, 0.3, 0.8, 0.6, 1.2, 0.7, 0.9}},
+      {"recurrenceplot", {0.0, 0.5, 10.0, 5.0, 700.0, 1.0, 0.6, 0.0, 0.2, 5.0}},
+      {"recurrenceplot", {23.0, 2.0, 3.0, 40.0, 1500.0, 2.0, 1.0, 0.5, 0.0, 1.0}},
+      {"dc_gnarly", {6.0, 0.3, -0.4, 3.5, 2.5, 2.0, 1.5, 5.0, -4.0, 1.0, 5.0, -3.0, 0.7, 0.6, -0.3, 0.8, 0.2, 0.0}},
+      {"dc_gnarly", {3.0, 0.3, -0.4, 3.5, 2.5, 2.0, 1.5, 5.0, -4.0, 0.0, 5.0, -3.0, 0.7, 0.6, 0.4, 0.8, 0.2, 1.0}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})
