@@ -1113,3 +1113,207 @@ vec3 V_crop_trapezoid(vec3 p, float w, int P, int A) {
   bool drop = invert ? d <= 0.0 : d > 0.0;
   return drop ? vec3(uintBitsToFloat(0x7fc00000u)) : w * p;
 }
+
+// ---- Terms that read the sum before them (variations_jwildfire_shapes.cpp: flower_db, recurrenceplot;
+// variations_jwildfire_holdout.cpp: dc_gnarly). Each returns the new sum.
+
+// The rose added to the sum; z is the sum's, moved by the stem and the fold and held at −stem_length.
+vec3 V_flower_db(vec3 p, float w, int P, int A) {
+  float petals = P_(P, 0), split = P_(P, 1), spread = P_(P, 2), thickness = P_(P, 3), stem = P_(P, 4);
+  float foldStrength = P_(P, 5), foldRadius = P_(P, 6);
+  float t = atan2c(p.y, p.x);
+  float r = w * sqrt(p.x * p.x + p.y * p.y) * abs((spread + sin(petals * t)) * cos(split * petals * t));
+  vec2 s = gSum.xy + vec2(sin(t), cos(t)) * r;
+  float pz = gSum.z - thickness * (2.0 / r - 1.0);
+  float rNew = length(s);
+  if (rNew > foldRadius) pz += (rNew - foldRadius) * foldStrength;
+  if (stem != 0.0 && pz <= -stem) pz = -stem;
+  return vec3(s, pz);
+}
+
+// recurrenceplot's signal in double (dsin): whether a pair is near decides how many pairs are drawn,
+// which must be the CPU's count; exp, tanh and tan of a·u are float's (the GPU has no double ones).
+const double sumj_kPi = 3.141592653589793lf;
+double sumj_legendre(int degree, double x) {
+  double previous = 1.0lf, current = x;
+  if (degree == 0) return 1.0lf;
+  for (int d = 1; d < degree; ++d) {
+    double next = ((2.0lf * d + 1.0lf) * x * current - d * previous) / (d + 1.0lf);
+    previous = current;
+    current = next;
+  }
+  return current;
+}
+double sumj_chebyshev(int degree, double x) {
+  double previous = 1.0lf, current = x;
+  if (degree == 0) return 1.0lf;
+  for (int d = 1; d < degree; ++d) {
+    double next = 2.0lf * x * current - previous;
+    previous = current;
+    current = next;
+  }
+  return current;
+}
+double sumj_recurrenceSignal(int id, double a, double b, double n, int k, double i) {
+  double u = i * sumj_kPi / n, h = i * sumj_kPi / (0.5lf * n);
+  double sum = 0.0lf;
+  switch (id) {
+    case 0: return 50.0lf * dsin(4.0lf * u) + 25.0lf * dsin(40.0lf * u);
+    case 1: return 10.0lf * dsin(5.0lf * u) * 5.0lf * dsin(15.0lf * u);
+    case 2: return 50.0lf * jwb_dcos(24.0lf * u + 5.0lf * dsin(6.0lf * u));
+    case 3: return 50.0lf * dsin(20.0lf * u) + 50.0lf * dsin(22.0lf * u + sumj_kPi);
+    case 4: return 50.0lf * dsin(20.0lf * u) + 10.0lf * dsin(22.0lf * u);
+    case 5: return 50.0lf * dsin(a * u + dsin(a * u));
+    case 6: return a / (1.0lf + double(exp(float(-b * (i - n / 2.0lf) / n))));
+    case 7:
+      return (400.0lf / sumj_kPi) *
+             (dsin(h) + dsin(3.0lf * h) / 3.0lf + dsin(5.0lf * h) / 5.0lf + dsin(7.0lf * h) / 7.0lf);
+    case 8:
+      return 400.0lf / sumj_kPi * sumj_kPi *
+             (dsin(h) - dsin(3.0lf * h) / 9.0lf + dsin(5.0lf * h) / 25.0lf - dsin(7.0lf * h) / 49.0lf);
+    case 9: return double(tanh(clamp(float(a * u), -20.0, 20.0)));  // GLSL's tanh may give NaN far out
+    case 10: return dsin(a * u) / jwb_dcos(a * u);
+    case 11:
+      for (int m = 1; m <= 8; ++m) sum += dsin(m * h) / m;
+      return (-200.0lf / sumj_kPi) * sum;
+    case 12: return 50.0lf * dsin(40.0lf * u) + 50.0lf * dsin(44.0lf * u);
+    case 13: return 50.0lf * dsin(40.0lf * u) + 50.0lf * dsin(44.0lf * u + sumj_kPi);
+    case 14: return 100.0lf * dsin(16.0lf * u) - 500.0lf + i * 0.25lf;
+    case 15: return 100.0lf * dsin(16.0lf * u);
+    case 16: return 1.0lf / jwb_dcos(a * u);
+    case 17: return 50.0lf * jwb_dcos(50.0lf * u + 25.0lf * dsin(u));
+    case 18: {
+      double d = 2.0lf * a * i / n - a;
+      return a * double(exp(float(-b * d * d)));
+    }
+    case 19: return 500.0lf * dsin(10.0lf * u) * double(exp(float(-5.0lf * i / n)));
+    case 20: return 500.0lf * dsin(20.0lf * u) * double(exp(float(-3.0lf * i / n)));
+    case 21: return 50.0lf * (dsin(2.0lf * u) / jwb_dcos(2.0lf * u));
+    case 22: {
+      int degree = dcol_javaInt(b);
+      return degree >= 0 && degree <= 10 ? a * sumj_legendre(degree, 2.0lf * i / n - 1.0lf) : 0.0lf;
+    }
+    case 23:
+      for (int j = 1; j <= k; ++j)
+        sum += dsin(i * (2.0lf * j - 1.0lf) * b * (2.0lf * sumj_kPi) / n) / (2.0lf * j - 1.0lf);
+      return sum * (4.0lf * a / sumj_kPi);
+    case 24:
+      for (int j = 1; j <= k; ++j) sum += dsin(i * j * b * (2.0lf * sumj_kPi) / n) / j;
+      return sum * (-2.0lf * a / sumj_kPi);
+    case 25:
+      for (int j = 1; j <= k; ++j)
+        sum += jwb_dcos(i * (2.0lf * j) * b * (2.0lf * sumj_kPi) / n) / ((2.0lf * j - 1.0lf) * (2.0lf * j + 1.0lf));
+      return (4.0lf * a / sumj_kPi) * (0.5lf - sum);
+    case 26:
+      for (int j = 1; j <= k; ++j)
+        sum += (j % 2 == 0 ? 1.0lf : -1.0lf) * jwb_dcos(i * (2.0lf * j) * b * sumj_kPi / n) / (j * j);
+      return a * sumj_kPi * sumj_kPi / 3.0lf + 4.0lf * a * sum;
+    case 27: {
+      double v = b * sumj_kPi * (i - 0.5lf * n) / n;
+      return a * dsin(v) / v;
+    }
+    case 28: {
+      double v = (i - 0.5lf * n) / n;
+      return a * double(exp(float(-b * v * v))) * jwb_dcos(2.0lf * k * sumj_kPi * i / n);
+    }
+    case 29: return k >= 0 && k <= 12 ? a * sumj_chebyshev(k, 2.0lf * i / n - 1.0lf) : 0.0lf;
+    default: return 0.0lf;
+  }
+}
+// Pairs drawn until one is near (up to 1000, else NaN); the samples ⌊N Ψ⌋ in double, exactly the CPU's.
+vec3 V_recurrenceplot(vec3 p, float w, int P, int A) {
+  int id = dcol_javaInt(double(P_(P, 0)));
+  double a = double(P_(P, 1)), b = double(P_(P, 2));
+  int k = clamp(dcol_javaInt(double(P_(P, 3))), 0, 1000);
+  double n = double(dcol_javaInt(double(P_(P, 4))));
+  int directColour = dcol_javaInt(double(P_(P, 5)));
+  float colourScale = 1.0 / (P_(P, 6) == 0.0 ? 1e-5 : P_(P, 6));
+  float angle = P_(P, 7), colourOffset = P_(P, 8);
+  double tolerance = double(P_(P, 9));
+  float runningSum = gStage == 1 ? 0.0 : 1.0;
+  float px = uintBitsToFloat(0x7fc00000u), py = px;
+  for (int tries = 0; tries < 1000; ++tries) {
+    double si = double(dcol_javaInt(n * double(psi())));
+    double sj = double(dcol_javaInt(n * double(psi())));
+    double d = abs(sumj_recurrenceSignal(id, a, b, n, k, si) - sumj_recurrenceSignal(id, a, b, n, k, sj));
+    if (d < tolerance) {
+      px = float(si / n - 0.5lf);
+      py = float(sj / n - 0.5lf);
+      break;
+    }
+  }
+  vec3 s = gSum + w * vec3(px, py, p.z);
+  if (directColour == 0 || isnan(px)) return s;
+  float sx = s.x + runningSum * p.x, sy = s.y + runningSum * p.y;
+  float index = directColour == 1 ? 0.5 * colourScale * sx * sy + colourOffset
+                                  : 0.5 * (colourScale * (cos(angle) * sx + sin(angle) * sy + colourOffset) + 1.0);
+  if (directColour == 1 || directColour == 2) gColour = fmodc(abs(index), 1.0);
+  return s;
+}
+
+// std::clamp: NaN stays NaN (GLSL's clamp may make it a bound).
+float sumj_clamp(float v, float lo, float hi) { return v < lo ? lo : (hi < v ? hi : v); }
+// The blurred point's gnarly offset by mode, half of both added to the sum; the colour index by dc, and
+// z moved (or with reset_z replaced) by colour · scale_z + offset_z.
+vec3 V_dc_gnarly(vec3 p, float w, int P, int A) {
+  float mode = sumj_clamp(roundHalfAway(P_(P, 0)), 0.0, 8.0);
+  float sx = P_(P, 1), sy = P_(P, 2), fx1 = P_(P, 3), fy1 = P_(P, 4), fx2 = P_(P, 5), fy2 = P_(P, 6);
+  float fx3 = P_(P, 7), fy3 = P_(P, 8);
+  bool dc = sumj_clamp(roundHalfAway(P_(P, 9)), 0.0, 1.0) != 0.0;
+  float colour1 = P_(P, 10), colour2 = P_(P, 11);
+  float fmag = isnan(P_(P, 12)) ? 1.0 : sumj_clamp(P_(P, 12), 0.05, 1.0);
+  float distort = P_(P, 13), blur = P_(P, 14), scaleZ = P_(P, 15), offsetZ = P_(P, 16);
+  bool reset = sumj_clamp(roundHalfAway(P_(P, 17)), 0.0, 1.0) > 0.0;
+  float x0 = p.x, y0 = p.y;
+  if (blur > 0.0) {
+    float turn = psi() * kTwoPi;
+    float sum = 0.0;
+    for (int k = 0; k < 6; ++k) sum += psi();
+    float r = blur * (sum - 3.0);
+    x0 += r * cos(turn);
+    y0 += r * sin(turn);
+  } else if (blur < 0.0) {
+    x0 += psi() * blur * 2.0 - blur;
+    y0 += psi() * blur * 2.0 - blur;
+  }
+  float x1, y1;
+  if (mode == 1.0) {
+    x1 = cos(fx1 * y0 + sin(fx2 * (y0 + sin(fx3 * y0))));
+    y1 = cos(fy1 * x0 + sin(fy2 * (x0 + sin(fy3 * x0))));
+  } else if (mode == 2.0) {
+    x1 = sin(fx1 * y0 + sin(fx2 * (y0 + cos(fx3 * y0))));
+    y1 = sin(fy1 * x0 + sin(fy2 * (x0 + cos(fy3 * x0))));
+  } else if (mode == 3.0) {
+    x1 = cos(fx1 * y0 + sin(fx2 * (x0 + sin(fx3 * y0))));
+    y1 = cos(fy1 * x0 + sin(fy2 * (y0 + sin(fy3 * x0))));
+  } else if (mode == 4.0) {
+    x1 = sin(fx1 * y0 + sin(sqrt(abs(fx2 * (y0 + cos(fx3 * y0))))));
+    y1 = sin(fy1 * x0 + sin(sqrt(abs(fy2 * (x0 + cos(fy3 * x0))))));
+  } else if (mode == 5.0) {
+    x1 = cos(fx1 * y0 + asinh(fx2 * (y0 + sin(fx3 * y0))));
+    y1 = cos(fy1 * x0 + asinh(fy2 * (x0 + sin(fy3 * x0))));
+  } else if (mode == 6.0) {
+    x1 = cos(fx1 * y0 + tan(fx2 * (y0 + sin(fx3 * y0))));
+    y1 = cos(fy1 * x0 + tan(fy2 * (x0 + sin(fy3 * x0))));
+  } else if (mode == 7.0) {
+    float vx = fx2 * (y0 + cos(fx3 * y0)), vy = fy2 * (x0 + cos(fy3 * x0));
+    x1 = sin(fx1 * y0 + sin(vx * vx));
+    y1 = sin(fy1 * x0 + sin(vy * vy));
+  } else if (mode == 8.0) {
+    float vx = fx2 * (x0 + cos(fx3 * y0)), vy = fy2 * (y0 + cos(fy3 * x0));
+    x1 = sin(fx1 * y0 + sin(vx * vx));
+    y1 = sin(fy1 * x0 + sin(vy * vy));
+  } else {
+    x1 = sin(fx1 * y0);
+    y1 = sin(fy1 * x0);
+  }
+  x1 *= sx;
+  y1 *= sy;
+  vec2 s = gSum.xy + w * vec2(x0 + x1, y0 + y1) / 2.0;
+  if (dc) {
+    float ds = distort == 0.0 ? 0.0 : log(sqrt(x1 * x1 + y1 * y1)) * distort;
+    gColour = fmodc(abs(cos(x0 + x1 * colour1 + ds) + sin(y0 + y1 * colour2 + ds)), fmag);
+  }
+  float dz = gColour * scaleZ + offsetZ;
+  return vec3(s, reset ? dz : gSum.z + w * p.z + dz);
+}
