@@ -1114,8 +1114,26 @@ vec3 V_crop_trapezoid(vec3 p, float w, int P, int A) {
   return drop ? vec3(uintBitsToFloat(0x7fc00000u)) : w * p;
 }
 
-// ---- Terms that read the sum before them (variations_jwildfire_shapes.cpp: flower_db, recurrenceplot;
-// variations_jwildfire_holdout.cpp: dc_gnarly). Each returns the new sum.
+// ---- Terms that read the sum before them (variations_2d_c.cpp: hexcrop; variations_jwildfire_shapes.cpp:
+// flower_db, recurrenceplot; variations_jwildfire_holdout.cpp: dc_gnarly). Each returns the new sum.
+
+// Inside the hexagon (even–odd crossings of a ray to −x) p + centre is added; outside the sum becomes
+// (dropoff, dropoff).
+vec3 V_hexcrop(vec3 p, float w, int P, int A) {
+  float sx = P_(P, 0), sy = P_(P, 1), dropoff = P_(P, 4);
+  const float kHx[6] = float[6](-0.5, 0.5, 1.4142135623730950488, 0.5, -0.5, -1.4142135623730950488);
+  const float kHy[6] = float[6](1.0606601717798212866, 1.0606601717798212866, 0.0,
+                                -1.0606601717798212866, -1.0606601717798212866, 0.0);
+  float px = p.x + P_(P, 2), py = p.y + P_(P, 3);
+  bool inside = false;
+  for (int k = 0, j = 5; k < 6; j = k++) {
+    float hxk = kHx[k] * sx, hxj = kHx[j] * sx, hyk = kHy[k] * sy, hyj = kHy[j] * sy;
+    if ((hyk <= py && py < hyj) || (hyj <= py && py < hyk))
+      if (px < (hxj - hxk) * (py - hyk) / fractoriumZeps(hyj - hyk) + hxk) inside = !inside;
+  }
+  float z = gSum.z + w * p.z;
+  return inside ? vec3(gSum.x + px * w, gSum.y + py * w, z) : vec3(dropoff, dropoff, z);
+}
 
 // The rose added to the sum; z is the sum's, moved by the stem and the fold and held at −stem_length.
 vec3 V_flower_db(vec3 p, float w, int P, int A) {
