@@ -22,20 +22,19 @@ const std::string kFlame = std::string(VOXFLAME_SOURCE_DIR) + "/presets/flame-si
 const std::string kAttractor = std::string(VOXFLAME_SOURCE_DIR) + "/presets/aizawa-orb.json";
 const std::string kJulia = std::string(VOXFLAME_SOURCE_DIR) + "/presets/qjulia-loop.json";
 
-// The silk bunny with a variation the GPU's chaos game does not have (smartcrop, which keeps
-// memory per orbit),
-// written into `folder`.
+// The silk bunny with a variation the GPU's chaos game does not have (subflame_wf, which iterates
+// a flame of its own), written into `folder`.
 std::string flameTheGpuLacks(const std::filesystem::path& folder) {
   std::ifstream in(kFlame);
   std::stringstream text;
   text << in.rdbuf();
   std::string json = text.str();
   const std::string hyperbolic = "\"name\": \"hyperbolic\"";
-  json.replace(json.find(hyperbolic), hyperbolic.size(), "\"name\": \"smartcrop\"");
+  json.replace(json.find(hyperbolic), hyperbolic.size(), "\"name\": \"subflame_wf\"");
   // The mesh path is relative to the preset: the copy names the shipped one.
   const std::string mesh = "\"meshes/bunny.obj\"";
   json.replace(json.find(mesh), mesh.size(), "\"" + std::string(VOXFLAME_SOURCE_DIR) + "/presets/meshes/bunny.obj\"");
-  const std::filesystem::path path = folder / "smartcrop.json";
+  const std::filesystem::path path = folder / "subflame.json";
   std::ofstream(path) << json;
   return path.string();
 }
@@ -226,7 +225,7 @@ TEST(ChunkBackends, TheGpuBackendRefusesWhatItDoesNotRunWithAMessage) {
   EXPECT_EQ(result.exitStatus, 1) << result.output;
   EXPECT_TRUE(contains(result.output,
                        "a flame layer needs the CPU backend: the GPU backend does not have variation "
-                       "'smartcrop'"))
+                       "'subflame_wf'"))
       << result.output;
   // auto falls back to the CPU, whatever the machine.
   result =

@@ -478,6 +478,8 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
        {100.0, -2.35, 0.75, -1.2, 1.2, 1.0, 2.0, 1.0, 1.0, 3.0, -5.0, 3.0, 7.0, 0.4, 0.55, 0.0, 0.0, 0.0, 0.0, 0.0}},
       {"fract_mandelbrot_wf",
        {80.0, -1.3, 1.3, -1.3, 1.3, 0.0, 5.0, 1.0, 2.0, 2.0, -3.0, 5.0, 7.0, 1.0, 0.0, 0.0, 0.1, 0.6, 1.0, 0.0}},
+      {"pre_extrude", {0.4}},
+      {"post_extrude", {0.7}},
       {"crob", {-0.5, 1.5, -1.0, 0.7, 1.0, 0.3, 1.5}},
       {"crob", {1.0, -1.0, -0.8, 1.2, 0.0, 0.5, 2.0}},
       {"dc_perlin", {1.0, 1.0, 0.2, 0.6, 0.3, 0.5, 0.2, 1.5, 3.0, 1.5, 2.2, 0.3, 20.0, 0.4}},
@@ -883,7 +885,7 @@ TEST(GpuBackend, AgreesWithTheCpuOnTermsThatReplaceOrReadTheSum) {
   flame.xforms[1].variations = {
       {"pre_extrude", 0.4, {0.5}}, {"linear", 0.7, {}}, {"cubic3D", 0.3, {1.2, 0.4}}, {"extrude", 0.2, {0.3}}};
   flame.xforms[2].variations = {
-      {"crob", 0.2, {-1.0, 1.0, -1.0, 1.0, 0.1, 0.0}}, {"linear", 0.8, {}}, {"dc_linear", 0.2, {0.3, 0.5, 1.2}}};
+      {"crob", 0.2, {-0.8, 0.8, -0.8, 0.8, 1.0, 0.3, 1.5}}, {"linear", 0.8, {}}, {"dc_linear", 0.2, {0.3, 0.5, 1.2}}};
   flame.xforms[2].directColor = 1.0;
   ASSERT_TRUE(gl::gpuSupports(scene.layers)) << gl::gpuUnsupportedReason(scene.layers);
   expectAgreement(scene, true, "shredlin, extrude, cubic3D, dc_linear, crob");
@@ -899,7 +901,11 @@ TEST(GpuBackend, AgreesWithTheCpuOnMemoryPerOrbitAndTrueColours) {
   const core::VariationInfo& smartcrop = core::variationOrThrow("smartcrop");
   std::vector<double> crop = smartcrop.defaultParams();
   crop[static_cast<std::size_t>(smartcrop.paramIndex("power"))] = 5.0;
-  crop[static_cast<std::size_t>(smartcrop.paramIndex("radius"))] = 0.8;
+  // A radius that crops a share of the points, not most: where most are cropped, each orbit's points
+  // pile at its own last kept point and the picture depends on how many steps the orbits have taken
+  // (the CPU's at 1.5 M points and at 6 M differ by 0.34), which backends of other orbit counts do
+  // not share. Memory kept only within a dispatch here moves the GPU's picture 0.27 from the CPU's.
+  crop[static_cast<std::size_t>(smartcrop.paramIndex("radius"))] = 2.0;
   crop[static_cast<std::size_t>(smartcrop.paramIndex("cropmode"))] = 2.0;
   crop[static_cast<std::size_t>(smartcrop.paramIndex("static"))] = 2.0;
   flame.xforms[0].variations.push_back({"post_smartcrop", 1.0, crop});
@@ -1008,7 +1014,7 @@ TEST(GpuBackend, AutoTakesTheGpuOnlyOnHardwareForWhatItRuns) {
   flame.layers.front().flame = core::defaultFlame();
   // A variation the GPU's chaos game does not have keeps the layer on the CPU.
   flame.layers.front().flame.xforms.front().variations.push_back(
-      {"smartcrop", 0.5, core::variationOrThrow("smartcrop").defaultParams()});
+      {"subflame_wf", 0.5, core::variationOrThrow("subflame_wf").defaultParams()});
   EXPECT_EQ(app::resolveBackend(app::BackendChoice::Auto, flame.layers), core::BackendKind::Cpu);
   EXPECT_THROW(app::resolveBackend(app::BackendChoice::Gpu, flame.layers), core::Error);
 }
@@ -1089,30 +1095,25 @@ TEST(GpuBackend, ProjectsThePointsMethodsPointsAsTheCpuDoes) {
 // variation of the catalogue without a GPU twin fails here until it has one or a reason.
 TEST(GpuBackend, EveryVariationTheGpuLacksHasAReason) {
   const std::map<std::string, std::string> lacking = {
-      {"hopalong", "draws from a table of 2^20 orbit points the CPU builds per parameter set"},
-      {"obj_mesh_primitive_wf", "samples a built-in mesh's triangles"},
+      {"obj_mesh_primitive_wf", "samples a built-in mesh's triangles, which the CPU builds and subdivides"},
+      {"colormap_wf", "paints from an image the CPU decodes, and hides points by its alpha"},
+      {"subflame_wf", "iterates a flame given as text, which would need a kernel of its own"},
+      {"glynns3subfl", "iterates a flame given as text, which would need a kernel of its own"},
+      {"parplot2d_wf", "evaluates formulas given as text (muParser), which would need them in GLSL"},
   };
   const std::vector<std::string>& gpu = gl::gpuFlameVariations();
-  int onGpu = 0, flagged = 0, named = 0;
+  int onGpu = 0, named = 0;
   for (const core::VariationInfo& info : core::variationCatalogue()) {
     if (std::find(gpu.begin(), gpu.end(), info.name) != gpu.end()) {
       ++onGpu;
       continue;
     }
-    const bool flags = info.directColour || info.paintsRgb || info.readsSum || info.hidesPoints ||
-                       info.replaces != core::VariationInfo::Replaces::Nothing || info.laneState > 0 ||
-                       !info.textParams.empty();
-    if (flags) {
-      ++flagged;
-      continue;
-    }
     EXPECT_TRUE(lacking.contains(info.name)) << info.name << " is not on the GPU, and no reason says why";
     ++named;
   }
-  EXPECT_EQ(named, static_cast<int>(lacking.size()))
-      << "a variation named here is on the GPU, or its flags say why not";
-  std::printf("on the GPU %d of %zu; lacking by their flags %d, for the reasons named %d\n", onGpu,
-              core::variationCatalogue().size(), flagged, named);
+  EXPECT_EQ(named, static_cast<int>(lacking.size())) << "a variation named here is on the GPU";
+  std::printf("on the GPU %d of %zu; lacking for the reasons named %d\n", onGpu, core::variationCatalogue().size(),
+              named);
 }
 
 // How much of the real flames in ../shared/data/flames the GPU's chaos game runs, and what keeps
@@ -1155,5 +1156,5 @@ TEST(GpuBackend, RunsMostFlamesOfTheSharedCorpus) {
               100.0 * static_cast<double>(onGpu) / static_cast<double>(std::max<std::size_t>(flames, 1)));
   for (const auto& [why, n] : reasons) std::printf("  %3zu  %s\n", n, why.c_str());
   EXPECT_GE(flames, 250u);
-  EXPECT_GE(onGpu, flames * 90 / 100);
+  EXPECT_GE(onGpu, flames * 98 / 100);  // 266 of 268 when it was set
 }

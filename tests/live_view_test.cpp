@@ -783,7 +783,7 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Gpu) << gpuSession.status().backendNote;
   core::Scene lacking = flame;
   lacking.layers.front().flame.xforms.front().variations.push_back(
-      {"smartcrop", 0.5, core::variationOrThrow("smartcrop").defaultParams()});
+      {"subflame_wf", 0.5, core::variationOrThrow("subflame_wf").defaultParams()});
   gpuSession.post(lacking);
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Cpu);

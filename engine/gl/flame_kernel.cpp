@@ -282,9 +282,10 @@ class Generator {
     };
     // depth reads the transform's point (gVariationT): for a pre_ term the point it maps, for the
     // others the point after the pre_ terms (core's VariationInput::tx).
+    // smartcrop too, which crops the transform's point where its static says so.
     bool readsT = false;
     for (const auto& stage : stages)
-      for (const Term& t : stage) readsT = readsT || t.info->name == "depth";
+      for (const Term& t : stage) readsT = readsT || t.info->name == "depth" || t.info->name == "smartcrop";
     // The stage, for the variations that read it (flame_variations.glsl's gStage).
     if (!stages[0].empty()) s += "  gStage = 0;\n";
     for (const Term& t : stages[0]) {

@@ -870,7 +870,8 @@ vec3 V_hypershift2(vec3 p, float w, int P, int A) {
 // root_face, else w Ψ. (The CPU's pre_/post_ form keeps x and y instead.)
 vec3 V_extrude(vec3 p, float w, int P, int A) {
   float u1 = psi(), u2 = psi();
-  return vec3(0.0, 0.0, u1 < P_(P, 0) ? max(w, 0.0) : w * u2);
+  float keep = gStage == 1 ? 0.0 : 1.0;  // a pre_ or post_ term keeps x and y
+  return vec3(keep * p.xy, u1 < P_(P, 0) ? max(w, 0.0) : w * u2);
 }
 // ---- those that read the sum before them (variations_3d_sum.cpp, variations_direct_colour.cpp) -------
 // Each returns the new sum: gSum plus what its kernel adds, or with what it rewrites rewritten. A pre_
