@@ -478,6 +478,9 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
        {100.0, -2.35, 0.75, -1.2, 1.2, 1.0, 2.0, 1.0, 1.0, 3.0, -5.0, 3.0, 7.0, 0.4, 0.55, 0.0, 0.0, 0.0, 0.0, 0.0}},
       {"fract_mandelbrot_wf",
        {80.0, -1.3, 1.3, -1.3, 1.3, 0.0, 5.0, 1.0, 2.0, 2.0, -3.0, 5.0, 7.0, 1.0, 0.0, 0.0, 0.1, 0.6, 1.0, 0.0}},
+      {"obj_mesh_primitive_wf", {4.0, 1.2, 0.8, 1.0, 0.1, -0.2, 0.3, 0.0, 12.0, 0.42, -0.45, 1.0, 0.1, 1.0, 0.0}},
+      {"obj_mesh_primitive_wf", {0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 2.0, 12.0, 0.42, -0.45, 1.0, 0.1, 1.0, 0.0}},
+      {"obj_mesh_primitive_wf", {11.0, 1.5, 1.0, 0.7, 0.0, 0.2, 0.0, 0.0, 12.0, 0.42, -0.45, 1.0, 0.1, 1.0, 0.0}},
       {"pre_extrude", {0.4}},
       {"post_extrude", {0.7}},
       {"crob", {-0.5, 1.5, -1.0, 0.7, 1.0, 0.3, 1.5}},
@@ -531,11 +534,11 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
         for (int channel = 0; channel < 3; ++channel)
           data.push_back(static_cast<float>((entry >> (8 * channel)) & 255u));
     }
-    if (info->table) {  // where its table starts, how many points, and the points
+    if (info->table) {  // where its table starts, how many numbers, and the numbers
       const std::vector<std::string> texts = info->defaultTexts();
       const std::vector<double> table = info->table(params.data(), texts.empty() ? nullptr : texts.data());
       data.push_back(static_cast<float>(data.size() + 2));
-      data.push_back(static_cast<float>(table.size() / 2));
+      data.push_back(static_cast<float>(table.size()));
       data.insert(data.end(), table.begin(), table.end());
     }
     const int stage = static_cast<int>(core::variationStage(name));
@@ -1095,7 +1098,6 @@ TEST(GpuBackend, ProjectsThePointsMethodsPointsAsTheCpuDoes) {
 // variation of the catalogue without a GPU twin fails here until it has one or a reason.
 TEST(GpuBackend, EveryVariationTheGpuLacksHasAReason) {
   const std::map<std::string, std::string> lacking = {
-      {"obj_mesh_primitive_wf", "samples a built-in mesh's triangles, which the CPU builds and subdivides"},
       {"colormap_wf", "paints from an image the CPU decodes, and hides points by its alpha"},
       {"subflame_wf", "iterates a flame given as text, which would need a kernel of its own"},
       {"glynns3subfl", "iterates a flame given as text, which would need a kernel of its own"},

@@ -251,8 +251,8 @@ class Generator {
         laneSlots_ += t.info->laneState;
         if (t.info->paintsRgb) put(static_cast<double>(palette()));
       }
-      // The table a kernel picks points from (svg_wf's pixels, hopalong's orbit), after its parameters
-      // (all of them): where it starts and how many points it holds, then the (x, y) pairs.
+      // The table a kernel picks from (svg_wf's pixels, hopalong's orbit, a mesh's faces), after its
+      // parameters (all of them): where it starts and how many numbers it holds, then the numbers.
       if (t.info->table) {
         std::vector<double> full = t.term->params;
         for (std::size_t i = full.size(); i < t.info->params.size(); ++i)
@@ -261,7 +261,7 @@ class Generator {
         const std::vector<std::string> texts = t.term->texts.empty() ? t.info->defaultTexts() : t.term->texts;
         const std::vector<double> table = t.info->table(full.data(), texts.empty() ? nullptr : texts.data());
         put(static_cast<double>(k_.data.size() + 2));
-        put(static_cast<double>(table.size() / 2));
+        put(static_cast<double>(table.size()));
         put(table.data(), table.size());
       }
       k_.variations.push_back(t.info->name);

@@ -133,8 +133,9 @@ inline std::size_t nearestPaletteEntry(const std::uint32_t* palette, std::int32_
 
 // Adds weight · V(p) to (outX, outY, outZ) for every lane of `in`.
 using VariationFn = void (*)(const VariationInput& in, double* outX, double* outY, double* outZ);
-// The points a kernel picks from, as it builds them once per parameter set (and text) and keeps them:
-// (x, y) pairs, interleaved. `texts`: the term's text parameters (the defaults where it has none).
+// What a kernel picks from, as it builds it once per parameter set (and text) and keeps it, as
+// numbers in the kernel's own layout (svg_wf's pixels and hopalong's orbit: (x, y) pairs;
+// obj_mesh_primitive_wf: its faces). `texts`: the term's text parameters (the defaults where it has none).
 using VariationTableFn = std::vector<double> (*)(const double* params, const std::string* texts);
 
 struct VariationParam {
@@ -187,8 +188,9 @@ struct VariationInfo {
   // How many doubles of memory per lane the variation keeps from step to step (VariationInput::state).
   std::size_t laneState = 0;
   VariationFn apply = nullptr;
-  // For a kernel that picks points from a table it builds (svg_wf's pixels, hopalong's orbit): the
-  // table, for a backend that runs its own copy of the kernel (the GPU's); nullptr for the others.
+  // For a kernel that picks from a table it builds (svg_wf's pixels, hopalong's orbit, a mesh's
+  // faces): the table, for a backend that runs its own copy of the kernel (the GPU's); nullptr for
+  // the others.
   VariationTableFn table = nullptr;
 
   int paramIndex(std::string_view paramName) const;  // -1 when absent

@@ -22,6 +22,7 @@
 #include <limits>
 #include <memory>
 #include <numbers>
+#include <string>
 #include <unordered_map>
 #include <vector>
 
@@ -560,6 +561,28 @@ VOXFLAME_VARIATION_TARGETS void objMeshPrimitiveWf(const VariationInput& in, dou
   }
 }
 
+// obj_mesh_primitive_wf's faces for a backend of its own: the face count, 1 when the faces are
+// weighted (else 0), the picks Ψ is scaled to, the cumulative weights when weighted, then each face's
+// three corners as the kernel takes them (scaled and moved, in float): 9 numbers a face.
+std::vector<double> objMeshTable(const double* params, const std::string*) {
+  const PrimitiveKey key{objMeshPrimitiveIndex(params[0]), jwfLimitedCount(params[7], 0, 6),
+                         jwfLimitedCount(params[8], 0, 24), params[9], params[10]};
+  const std::shared_ptr<const BuiltPrimitive> built = builtPrimitive(key);
+  const PrimitiveMesh& mesh = built->mesh;
+  const std::size_t faces = mesh.faceCount();
+  const bool weighted = !mesh.cumulative.empty();
+  std::vector<double> table = {static_cast<double>(faces), weighted ? 1.0 : 0.0,
+                               weighted ? static_cast<double>(mesh.cumulative.back()) : static_cast<double>(faces)};
+  if (weighted)
+    for (const std::uint64_t c : mesh.cumulative) table.push_back(static_cast<double>(c));
+  for (std::size_t f = 0; f < faces; ++f)
+    for (int corner = 0; corner < 3; ++corner) {
+      const float* v = &mesh.vertices[3 * mesh.faces[3 * f + static_cast<std::size_t>(corner)]];
+      for (int c = 0; c < 3; ++c) table.push_back(static_cast<float>(v[c] * params[1 + c] + params[4 + c]));
+    }
+  return table;
+}
+
 }  // namespace
 
 const char* objMeshPrimitiveName(std::size_t index) {
@@ -696,6 +719,7 @@ void variation_kernels::addJwildfireMeshVariations(std::vector<VariationInfo>& c
        {"displ_amount", 0.1, -1.0, 1.0},
        CatalogueAdder::jwildfireInt("blend_displ_map", 1.0, 0.0, 1.0),
        CatalogueAdder::jwildfireInt("receive_only_shadows", 0.0, 0.0, 1.0)});
+  catalogue.back().table = &objMeshTable;
 }
 
 }  // namespace voxflame::core

@@ -23,8 +23,8 @@ float gColour;
 // - paintsRgb: after that index, where the palette it compares painted colours with starts in
 //   flameData (VariationInput::palette, the file's colours in sRGB bytes): 3 floats (red, green,
 //   blue, 0–255) a colour, 256 colours (variationPalette);
-// - a table (VariationInfo::table: svg_wf's pixels, hopalong's orbit): after the parameters, where
-//   the (x, y) pairs start in flameData and how many there are (tablePoint).
+// - a table (VariationInfo::table: svg_wf's pixels, hopalong's orbit, a mesh's faces): after the
+//   parameters, where its numbers start in flameData and how many there are (tableAt, tableSize).
 // And every variation may read gStage, its term's stage (VariationInput::stage: 0 pre_, 1 ordinary,
 // 2 post_), for those that work otherwise as pre_ or post_ terms (extrude, cubic3D, dc_bubble).
 vec3 gSum;
@@ -35,9 +35,12 @@ const uint kRgbPainted = 1u << 24;
 #ifdef LANE_MEMORY
 double gLane[LANE_MEMORY];
 #endif
-// Point k of the table of the term whose table's place follows its N parameters at P.
+// Where the table of the term whose N parameters are at P starts, and how many numbers it holds.
+int tableAt(int P, int N) { return int(flameData[P + N]); }
+int tableSize(int P, int N) { return int(flameData[P + N + 1]); }
+// Point k of such a table of (x, y) pairs.
 vec2 tablePoint(int P, int N, int k) {
-  int at = int(flameData[P + N]) + 2 * k;
+  int at = tableAt(P, N) + 2 * k;
   return vec2(flameData[at], flameData[at + 1]);
 }
 // Which of a table's `count` points a draw picks: ⌊Ψ count⌋ in double, as the CPU's index.
@@ -1510,7 +1513,7 @@ vec2 pickBlurredPoint(int P, int N, int count, float radius) {
 // svg_wf and text_wf: a painted pixel (scaled and moved, the weight not applied), or (Ψ₁, Ψ₂) without
 // two of them.
 vec3 pixelOrDraws(vec3 p, float w, int P, int N, float radius, vec4 scaleOffset, float scale) {
-  int count = int(flameData[P + N + 1]);
+  int count = tableSize(P, N) / 2;
   if (count > 1) {
     vec2 q = pickBlurredPoint(P, N, count, radius);
     return vec3((q * scaleOffset.xy + scaleOffset.zw) * scale, w * p.z);
@@ -1527,6 +1530,39 @@ vec3 V_text_wf(vec3 p, float w, int P, int A) {
 }
 // hopalong: w · a point of the orbit's first 2²⁰ (Ψ picks it), z carried.
 vec3 V_hopalong(vec3 p, float w, int P, int A) {
-  int count = int(flameData[P + 7]);
+  int count = tableSize(P, 6) / 2;
   return vec3(w * tablePoint(P, 6, tableIndex(psi(), count)), w * p.z);
+}
+// obj_mesh_primitive_wf: w (a P₁ + b P₂ + c P₃) on a face of the mesh (Ψ₁ picks it, by the cumulative
+// weights where the table has them), a = 1 − √Ψ₂, b = √Ψ₂ (1 − Ψ₃), c = √Ψ₂ Ψ₃; nothing, and no draw,
+// for a mesh without faces. The table: faces, weighted, picks, [cumulative], 9 numbers a face.
+vec3 V_obj_mesh_primitive_wf(vec3 p, float w, int P, int A) {
+  int at = tableAt(P, 15);
+  int faces = int(flameData[at]);
+  if (faces == 0) return vec3(0.0);
+  bool weighted = flameData[at + 1] != 0.0;
+  double picks = double(flameData[at + 2]);
+  double pick = min(floor(double(psi()) * picks), picks - 1.0lf);
+  int face = int(pick);
+  int corners = at + 3;
+  if (weighted) {
+    // The first face whose cumulative weight exceeds the pick (std::upper_bound).
+    int low = 0, high = faces;
+    while (low < high) {
+      int middle = (low + high) / 2;
+      if (double(flameData[at + 3 + middle]) > pick)
+        high = middle;
+      else
+        low = middle + 1;
+    }
+    face = low;
+    corners += faces;
+  }
+  float r1 = sqrt(psi()), r2 = psi();
+  vec3 bary = vec3(1.0 - r1, r1 * (1.0 - r2), r2 * r1);
+  int f = corners + 9 * face;
+  vec3 sum = vec3(0.0);
+  for (int corner = 0; corner < 3; ++corner)
+    sum += bary[corner] * vec3(flameData[f + 3 * corner], flameData[f + 3 * corner + 1], flameData[f + 3 * corner + 2]);
+  return w * sum;
 }
