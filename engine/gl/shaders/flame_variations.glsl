@@ -85,22 +85,39 @@ float countParam(float v) {
 float roundHalfAway(float v) { return sign(v) * floor(abs(v) + 0.5); }  // std::round
 // Fractorium's integer parameter: ⌊v + ½⌋ clamped to [lo, hi].
 float fractoriumInteger(float v, float lo, float hi) { return clamp(floor(v + 0.5), lo, hi); }
-// sin in double (GLSL has no double trig): Cody–Waite reduction by π/2 and Taylor series on
-// [−π/4, π/4], within a few ulp. The hashes multiply it by 43758.5453 and keep the fraction, which
-// float's sin cannot give.
-double dsin(double v) {
+// sin and cos in double (GLSL has no double trig): Cody–Waite reduction by π/2 and Taylor series on
+// [−π/4, π/4], within an ulp, the series' first terms added last (small arguments' sines come out
+// right). The hashes multiply a sine by 43758.5453 and keep the fraction, which float's sin cannot give.
+dvec2 dsinCos(double v) {
   double q = floor(v * 0.63661977236758134lf + 0.5lf);
   precise double r = fma(-q, 1.5707963267948966lf, v) - q * 6.123233995736766e-17lf;
-  double r2 = r * r;
-  double s = r * (1.0lf + r2 * (-1.6666666666666666e-1lf + r2 * (8.333333333333333e-3lf + r2 * (-1.984126984126984e-4lf
-             + r2 * (2.7557319223985893e-6lf + r2 * (-2.505210838544172e-8lf + r2 * (1.6059043836821613e-10lf
-             + r2 * (-7.647163731819816e-13lf + r2 * (2.8114572543455206e-15lf + r2 * -8.22063524662433e-18lf)))))))));
-  double c = 1.0lf + r2 * (-0.5lf + r2 * (4.1666666666666664e-2lf + r2 * (-1.388888888888889e-3lf
-             + r2 * (2.48015873015873e-5lf + r2 * (-2.755731922398589e-7lf + r2 * (2.08767569878681e-9lf
-             + r2 * (-1.1470745597729725e-11lf + r2 * (4.779477332387385e-14lf + r2 * -1.5619206968586225e-16lf))))))));
+  precise double r2 = r * r;
+  precise double ps = -8.22063524662433e-18lf;
+  ps = ps * r2 + 2.8114572543455206e-15lf;
+  ps = ps * r2 - 7.647163731819816e-13lf;
+  ps = ps * r2 + 1.6059043836821613e-10lf;
+  ps = ps * r2 - 2.505210838544172e-8lf;
+  ps = ps * r2 + 2.7557319223985893e-6lf;
+  ps = ps * r2 - 1.984126984126984e-4lf;
+  ps = ps * r2 + 8.333333333333333e-3lf;
+  ps = ps * r2 - 1.6666666666666666e-1lf;
+  precise double s = r + r * (r2 * ps);
+  precise double pc = -1.5619206968586225e-16lf;
+  pc = pc * r2 + 4.779477332387385e-14lf;
+  pc = pc * r2 - 1.1470745597729725e-11lf;
+  pc = pc * r2 + 2.08767569878681e-9lf;
+  pc = pc * r2 - 2.755731922398589e-7lf;
+  pc = pc * r2 + 2.48015873015873e-5lf;
+  pc = pc * r2 - 1.388888888888889e-3lf;
+  pc = pc * r2 + 4.1666666666666664e-2lf;
+  precise double hz = 0.5lf * r2;
+  precise double h = 1.0lf - hz;
+  precise double c = h + (((1.0lf - h) - hz) + r2 * r2 * pc);
   int n = int(q) & 3;
-  return n == 0 ? s : (n == 1 ? c : (n == 2 ? -s : -c));
+  return n == 0 ? dvec2(s, c) : (n == 1 ? dvec2(c, -s) : (n == 2 ? dvec2(-s, -c) : dvec2(-c, s)));
 }
+double dsin(double v) { return dsinCos(v).x; }
+double dcos(double v) { return dsinCos(v).y; }
 // Fractorium's HashShadertoy, fract(43758.5453 sin(12.9898 a + 78.233 b + seed)), in double: float's
 // sin of its argument is far too coarse for the fraction.
 double hashShadertoyD(double a, double b, double seed) {
@@ -1190,20 +1207,11 @@ vec2 crackleCentre(int N, vec2 cell, float halfSize, float distort, double slice
 }
 // slobo777's crackle as variations_plugins.cpp has it. After its parameters (flame_kernel.cpp puts
 // them there): its slice z as a double's two halves, then the noise tables' place in flameData.
-vec3 V_crackle(vec3 p, float w, int P, int A) {
-  float cellsize = P_(P, 0), power = P_(P, 1), distort = P_(P, 2), scale = P_(P, 3);
-  double slice = packDouble2x32(uvec2(floatBitsToUint(P_(P, 5)), floatBitsToUint(P_(P, 6))));
-  int N = int(P_(P, 7));
-  vec3 o = vec3(0.0, 0.0, w * p.z);
-  if (cellsize == 0.0) return o;  // the plugin's guard: no cells, nothing drawn
-  float halfSize = cellsize / 2.0;
-  float a = psi(), b = psi(), c = psi();
-  float blurred = (a + b) / 2.0 + (c - 0.5) / 4.0;
-  float theta = kTwoPi * psi();
-  vec2 u = blurred * vec2(sin(theta), cos(theta));
+// The crackle cell u lies in: its centre (xy), the one nearest u among the 3×3 block around u's
+// square (the first of equals, as the CPU takes it), and u's Voronoi distance from it (z), the
+// largest ratio over its neighbours (1 on a shared edge); crackle's and dc_crackle_wf's.
+vec3 crackleCell(vec2 u, float halfSize, float distort, double slice, int N) {
   vec2 cell = vec2(javaFloorToInt(u.x / halfSize), javaFloorToInt(u.y / halfSize));
-  // The centre nearest u among the 3×3 block around its cell (the first of equals, as the CPU
-  // takes it); the block is then re-centred on it, so that its cell is surrounded on all sides.
   int nearest = 0;
   float nearestD2 = 3.0e38;
   vec2 centre = vec2(0.0);
@@ -1216,8 +1224,7 @@ vec3 V_crackle(vec3 p, float w, int P, int A) {
       centre = at;
     }
   }
-  cell += vec2(nearest / 3 - 1, nearest % 3 - 1);
-  // Voronoi distance from that centre: the largest ratio over its neighbours (1 on a shared edge).
+  cell += vec2(nearest / 3 - 1, nearest % 3 - 1);  // re-centred: the nearest's cell has neighbours all round
   float distance = -3.0e38;
   for (int k = 0; k < 9; ++k) {
     if (k == 4) continue;
@@ -1225,6 +1232,22 @@ vec3 V_crackle(vec3 p, float w, int P, int A) {
     float ratio = q == vec2(0.0) ? 1.0 : 2.0 * dot(u - centre, q) / dot(q, q);
     distance = max(distance, ratio);
   }
+  return vec3(centre, distance);
+}
+vec3 V_crackle(vec3 p, float w, int P, int A) {
+  float cellsize = P_(P, 0), power = P_(P, 1), distort = P_(P, 2), scale = P_(P, 3);
+  double slice = packDouble2x32(uvec2(floatBitsToUint(P_(P, 5)), floatBitsToUint(P_(P, 6))));
+  int N = int(P_(P, 7));
+  vec3 o = vec3(0.0, 0.0, w * p.z);
+  if (cellsize == 0.0) return o;  // the plugin's guard: no cells, nothing drawn
+  float halfSize = cellsize / 2.0;
+  float a = psi(), b = psi(), c = psi();
+  float blurred = (a + b) / 2.0 + (c - 0.5) / 4.0;
+  float theta = kTwoPi * psi();
+  vec2 u = blurred * vec2(sin(theta), cos(theta));
+  vec3 cell = crackleCell(u, halfSize, distort, slice, N);
+  vec2 centre = cell.xy;
+  float distance = cell.z;
   // The CPU's 1e-100 guard is 0 in float; 1e-30 keeps 0/0 away as it does.
   float pull = pow(distance + 1e-30, power) * scale / (distance + 1e-30);
   o.xy = w * ((u - centre) * pull + centre);
@@ -1562,7 +1585,9 @@ vec3 V_obj_mesh_primitive_wf(vec3 p, float w, int P, int A) {
   vec3 bary = vec3(1.0 - r1, r1 * (1.0 - r2), r2 * r1);
   int f = corners + 9 * face;
   vec3 sum = vec3(0.0);
-  for (int corner = 0; corner < 3; ++corner)
-    sum += bary[corner] * vec3(flameData[f + 3 * corner], flameData[f + 3 * corner + 1], flameData[f + 3 * corner + 2]);
+  for (int corner = 0; corner < 3; ++corner) {
+    int c = f + 3 * corner;
+    sum += bary[corner] * vec3(flameData[c], flameData[c + 1], flameData[c + 2]);
+  }
   return w * sum;
 }

@@ -810,38 +810,6 @@ vec3 V_wavesn(vec3 p, float w, int P, int A) {
 // patterns iterate folds, logarithms or inversions many times, so they run in double, with trig and
 // logarithms of their own (GLSL has none in double) and `precise` against fused multiply-adds.
 
-// sin and cos in double, as dsin reduces, but with the series' first terms added last: the loops below
-// take sines of small arguments, which dsin's rounding of 1 + r² (…) gets wrong by an ulp one time in five.
-dvec2 rgb_sinCos(double v) {
-  double q = floor(v * 0.63661977236758134lf + 0.5lf);
-  precise double r = fma(-q, 1.5707963267948966lf, v) - q * 6.123233995736766e-17lf;
-  precise double r2 = r * r;
-  precise double ps = -8.22063524662433e-18lf;
-  ps = ps * r2 + 2.8114572543455206e-15lf;
-  ps = ps * r2 - 7.647163731819816e-13lf;
-  ps = ps * r2 + 1.6059043836821613e-10lf;
-  ps = ps * r2 - 2.505210838544172e-8lf;
-  ps = ps * r2 + 2.7557319223985893e-6lf;
-  ps = ps * r2 - 1.984126984126984e-4lf;
-  ps = ps * r2 + 8.333333333333333e-3lf;
-  ps = ps * r2 - 1.6666666666666666e-1lf;
-  precise double s = r + r * (r2 * ps);
-  precise double pc = -1.5619206968586225e-16lf;
-  pc = pc * r2 + 4.779477332387385e-14lf;
-  pc = pc * r2 - 1.1470745597729725e-11lf;
-  pc = pc * r2 + 2.08767569878681e-9lf;
-  pc = pc * r2 - 2.755731922398589e-7lf;
-  pc = pc * r2 + 2.48015873015873e-5lf;
-  pc = pc * r2 - 1.388888888888889e-3lf;
-  pc = pc * r2 + 4.1666666666666664e-2lf;
-  precise double hz = 0.5lf * r2;
-  precise double h = 1.0lf - hz;
-  precise double c = h + (((1.0lf - h) - hz) + r2 * r2 * pc);
-  int n = int(q) & 3;
-  return n == 0 ? dvec2(s, c) : (n == 1 ? dvec2(c, -s) : (n == 2 ? dvec2(-s, -c) : dvec2(-c, s)));
-}
-double rgb_dsin(double v) { return rgb_sinCos(v).x; }
-double rgb_dcos(double v) { return rgb_sinCos(v).y; }
 double rgb_nan() { return packDouble2x32(uvec2(0u, 0x7ff80000u)); }
 // The natural logarithm in double: v = 2^e m, m in [√½, √2), ln m = 2 atanh((m − 1)/(m + 1)) by its series.
 double rgb_dlog(double v) {
@@ -865,7 +833,7 @@ double rgb_dlog(double v) {
 double rgb_datan(double v) {
   double y = double(atan(float(v)));
   for (int k = 0; k < 2; ++k) {
-    double s = rgb_dsin(y), c = rgb_dcos(y);
+    double s = dsin(y), c = dcos(y);
     y -= (s - v * c) / (c + v * s);
   }
   return y;
@@ -939,7 +907,7 @@ vec3 V_dc_booleans(vec3 p, float w, int P, int A) {
   // t = ⌊u⌋ op ⌊v⌋, the colour hsv(sin t, 1, cos t) in bytes, its luminance by JWildfire's truncated shares.
   int a = rgb_javaInt(double(u.x) * zoom + offsetX), b = rgb_javaInt(double(u.y) * zoom + offsetY);
   double t = double(type == 0 ? (a ^ b) : type == 1 ? (a & b) : (a | b));
-  double hue = rgb_dsin(t), value = rgb_dcos(t);
+  double hue = dsin(t), value = dcos(t);
   const double kOffsets[3] = double[3](1.0lf, 2.0lf / 3.0lf, 1.0lf / 3.0lf);
   const double kShares[3] = double[3](0.299lf, 0.587lf, 0.114lf);
   double bytes[3];
@@ -993,7 +961,7 @@ vec3 V_dc_quadtree(vec3 p, float w, int P, int A) {
       break;
     }
     precise double hash =
-        0.5lf + 0.5lf * rgb_dsin(id + time) * rgb_dsin(id * 2.17lf - time) * rgb_dsin(id * 5.7lf + time);
+        0.5lf + 0.5lf * dsin(id + time) * dsin(id * 2.17lf - time) * dsin(id * 5.7lf + time);
     if (hash > 0.7lf) break;
     double fx = ux < 0.5lf ? 0.0lf : 1.0lf, fy = uy < 0.5lf ? 0.0lf : 1.0lf;
     id = 4.0lf * id + 2.0lf * fy + fx;
@@ -1017,7 +985,7 @@ double rgb_glslAtan2(double y, double x) {
 double rgb_band(double f) { return floor(0.5lf + f * 1.1lf) / 1.1lf; }
 vec3 V_dc_ducks(vec3 p, float w, int P, int A) {
   double t = double(P_(P, 1)) / 65.0lf * 30.0lf, zoom = double(P_(P, 2));
-  precise double stepX = 0.1lf * rgb_dsin(t / 3.0lf) - 0.1lf, stepY = 5.0lf + 0.1lf * rgb_dcos(t / 5.0lf);
+  precise double stepX = 0.1lf * dsin(t / 3.0lf) - 0.1lf, stepY = 5.0lf + 0.1lf * dcos(t / 5.0lf);
   dvec2 q = rgb_dcPoint(p, P, 3, 1.0lf);
   precise double ex = q.x * zoom, ey = q.y * zoom, c = 0.0lf;
   for (int k = 0; k < 50; ++k) {
@@ -1029,8 +997,8 @@ vec3 V_dc_ducks(vec3 p, float w, int P, int A) {
   }
   const double kLn2 = 0.69314718055994531lf;
   precise double d = rgb_dlog(rgb_dlog(c * 0.05lf) / kLn2) / kLn2 * 6.0lf;
-  double fr = rgb_band(0.1lf + 0.7lf * rgb_dsin(d)), fg = rgb_band(0.1lf + 0.5lf * rgb_dsin(d - 0.7lf)),
-         fb = rgb_band(0.7lf + 0.7lf * rgb_dcos(d - 0.7lf));
+  double fr = rgb_band(0.1lf + 0.7lf * dsin(d)), fg = rgb_band(0.1lf + 0.5lf * dsin(d - 0.7lf)),
+         fb = rgb_band(0.7lf + 0.7lf * dcos(d - 0.7lf));
   return rgb_dcFinish(p, w, P, 3, 8, q, dvec3(fb, fr, fg));
 }
 
@@ -1040,9 +1008,9 @@ vec3 V_dc_inversion(vec3 p, float w, int P, int A) {
   // setParameter clamps the scales into [1.1, 3] (a NaN passes).
   double scaleX = isnan(P_(P, 3)) ? double(P_(P, 3)) : clamp(double(P_(P, 3)), 1.1lf, 3.0lf);
   double scaleY = isnan(P_(P, 4)) ? double(P_(P, 4)) : clamp(double(P_(P, 4)), 1.1lf, 3.0lf);
-  double offsetX = rgb_dsin(time * 0.123lf), offsetY = rgb_datan(time * 0.0567lf);
+  double offsetX = dsin(time * 0.123lf), offsetY = rgb_datan(time * 0.0567lf);
   double s = 2.1lf + time * 0.025lf;
-  precise dvec3 b = dvec3(rgb_dsin(s * 1.790lf), rgb_dsin(s * 1.345lf), rgb_dsin(s * 1.123lf)) * 0.5lf + 0.5lf;
+  precise dvec3 b = dvec3(dsin(s * 1.790lf), dsin(s * 1.345lf), dsin(s * 1.123lf)) * 0.5lf + 0.5lf;
   precise double length = sqrt(b.x * b.x + b.y * b.y + b.z * b.z);
   b /= length;
   dvec2 q = rgb_dcPoint(p, P, 5, 1.0lf);
@@ -1054,8 +1022,8 @@ vec3 V_dc_inversion(vec3 p, float w, int P, int A) {
     precise double f = 0.9lf * (0.9lf / (dx * dx + dy * dy));
     vx = 0.5lf - dx * f;
     vy = 0.5lf - dy * f;
-    vx += rgb_dsin(vx * 0.001lf) / rgb_dcos(vy * 0.001lf);
-    vy += rgb_dsin(vx * 0.001lf) * rgb_dcos(vy * 0.001lf);
+    vx += dsin(vx * 0.001lf) / dcos(vy * 0.001lf);
+    vy += dsin(vx * 0.001lf) * dcos(vy * 0.001lf);
     l = sqrt(vx * vx * vx * vx + vy * vy * vy * vy);
     least = isnan(l) || isnan(least) ? l + least : min(l, least);  // Java's Math.min
   }
@@ -1082,13 +1050,13 @@ vec3 V_glsl_apollonian(vec3 p, float w, int P, int A) {
   // The pattern at the pixel's centre: v = f m (2 uv, 0) folded 50 times, then 0.6 sin v + ½.
   double time = isnan(P_(P, 2)) || isinf(P_(P, 2)) ? 0.0lf : double(P_(P, 2));
   double t = 0.05lf * time;
-  double sa = rgb_dsin(t + 1.0lf), ca = rgb_dcos(t + 1.0lf), sb = rgb_dsin(t + 2.0lf), cb = rgb_dcos(t + 2.0lf);
-  double sc = rgb_dsin(t + 3.0lf), cc = rgb_dcos(t + 3.0lf);
+  double sa = dsin(t + 1.0lf), ca = dcos(t + 1.0lf), sb = dsin(t + 2.0lf), cb = dcos(t + 2.0lf);
+  double sc = dsin(t + 3.0lf), cc = dcos(t + 3.0lf);
   precise dmat3 m = dmat3(dvec3(cb * cc, -cb * sc, sb),
                           dvec3(sa * sb * cc + ca * sc, -sa * sb * sc + ca * cc, -sa * cb),
                           dvec3(-ca * sb * cc + sa * sc, ca * sb * sc + sa * cc, ca * cb));
-  precise dmat3 folded = m * (1.2lf + 0.1lf * rgb_dsin(0.1lf * time));
-  precise dmat3 zoomed = m * (2.0lf + 0.25lf * rgb_dsin(0.3lf * time));
+  precise dmat3 folded = m * (1.2lf + 0.1lf * dsin(0.1lf * time));
+  precise dmat3 zoomed = m * (2.0lf + 0.25lf * dsin(0.3lf * time));
   precise double u = 2.0lf * (pi + 0.5lf) / width - 1.0lf, v = 2.0lf * (pj + 0.5lf) / kHeight - 1.0lf;
   precise dvec3 q = rgb_times(zoomed, dvec3(2.0lf * u, 2.0lf * v, 0.0lf));
   for (int k = 0; k < 50; ++k) {

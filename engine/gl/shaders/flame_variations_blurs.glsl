@@ -860,8 +860,6 @@ float jwb_fastAtan2(float y, float x) {
 }
 // std::max(a, b) as C++ has it: a unless a < b (so a NaN b leaves a).
 float jwb_max(float a, float b) { return a < b ? b : a; }
-// cos in double (GLSL has no double trig).
-double jwb_dcos(double v) { return dsin(v + 1.5707963267948966lf); }
 
 vec3 V_juliaNab(vec3 p, float w, int P, int A) {
   float branches = abs(P_(P, 0)), root = fractoriumZeps(branches);
@@ -945,7 +943,7 @@ vec3 V_cut_fractal(vec3 p, float w, int P, int A) {
   float iters = jwb_intParam(P_(P, 3), 1.0, 100.0);
   bool invert = jwb_intParam(P_(P, 5), 0.0, 1.0) == 1.0;
   // In double: the fractal's steps magnify float's rounding far beyond the pattern's scale.
-  double cx = jwb_dcos(time + 1.5lf) * 0.15lf - 0.25lf, cy = dsin(time + 1.8lf) * 0.15lf - 0.25lf;
+  double cx = dcos(time + 1.5lf) * 0.15lf - 0.25lf, cy = dsin(time + 1.8lf) * 0.15lf - 0.25lf;
   vec2 q = jwb_cutPoint(random, p.xy, -0.5, 1.0);
   precise double ux = double(q.y) * zoom, uy = double(q.x) * zoom;
   for (float k = 0.0; k < iters; ++k) {
@@ -1284,28 +1282,9 @@ vec3 V_dc_crackle_wf(vec3 p, float w, int P, int A) {
     float theta = kTwoPi * psi();
     u = blurred * vec2(sin(theta), cos(theta));
   }
-  vec2 cell = vec2(javaFloorToInt(u.x / halfSize), javaFloorToInt(u.y / halfSize));
-  // The nearest centre of the 3×3 block around u's cell (the first of equals), the block re-centred on it.
-  int nearest = 0;
-  float nearestD2 = 3.0e38;
-  vec2 centre = vec2(0.0);
-  for (int k = 0; k < 9; ++k) {
-    vec2 at = crackleCentre(N, cell + vec2(k / 3 - 1, k % 3 - 1), halfSize, distort, slice);
-    float d2 = dot(at - u, at - u);
-    if (d2 < nearestD2) {
-      nearestD2 = d2;
-      nearest = k;
-      centre = at;
-    }
-  }
-  cell += vec2(nearest / 3 - 1, nearest % 3 - 1);
-  float distance = -3.0e38;  // the Voronoi distance: the largest ratio over the neighbours
-  for (int k = 0; k < 9; ++k) {
-    if (k == 4) continue;
-    vec2 q = crackleCentre(N, cell + vec2(k / 3 - 1, k % 3 - 1), halfSize, distort, slice) - centre;
-    float ratio = q == vec2(0.0) ? 1.0 : 2.0 * dot(u - centre, q) / dot(q, q);
-    distance = max(distance, ratio);
-  }
+  vec3 cell = crackleCell(u, halfSize, distort, slice, N);
+  vec2 centre = cell.xy;
+  float distance = cell.z;
   float pull = pow(distance + 1e-30, power) * scale / (distance + 1e-30);
   float c = distance * colourScale + colourOffset;
   gColour = c > 1.0 ? 1.0 : (c >= 0.0 ? c : 0.0);  // a NaN as 0

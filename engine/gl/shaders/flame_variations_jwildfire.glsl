@@ -1178,7 +1178,7 @@ double sumj_recurrenceSignal(int id, double a, double b, double n, int k, double
   switch (id) {
     case 0: return 50.0lf * dsin(4.0lf * u) + 25.0lf * dsin(40.0lf * u);
     case 1: return 10.0lf * dsin(5.0lf * u) * 5.0lf * dsin(15.0lf * u);
-    case 2: return 50.0lf * jwb_dcos(24.0lf * u + 5.0lf * dsin(6.0lf * u));
+    case 2: return 50.0lf * dcos(24.0lf * u + 5.0lf * dsin(6.0lf * u));
     case 3: return 50.0lf * dsin(20.0lf * u) + 50.0lf * dsin(22.0lf * u + sumj_kPi);
     case 4: return 50.0lf * dsin(20.0lf * u) + 10.0lf * dsin(22.0lf * u);
     case 5: return 50.0lf * dsin(a * u + dsin(a * u));
@@ -1190,7 +1190,7 @@ double sumj_recurrenceSignal(int id, double a, double b, double n, int k, double
       return 400.0lf / sumj_kPi * sumj_kPi *
              (dsin(h) - dsin(3.0lf * h) / 9.0lf + dsin(5.0lf * h) / 25.0lf - dsin(7.0lf * h) / 49.0lf);
     case 9: return double(tanh(clamp(float(a * u), -20.0, 20.0)));  // GLSL's tanh may give NaN far out
-    case 10: return dsin(a * u) / jwb_dcos(a * u);
+    case 10: return dsin(a * u) / dcos(a * u);
     case 11:
       for (int m = 1; m <= 8; ++m) sum += dsin(m * h) / m;
       return (-200.0lf / sumj_kPi) * sum;
@@ -1198,15 +1198,15 @@ double sumj_recurrenceSignal(int id, double a, double b, double n, int k, double
     case 13: return 50.0lf * dsin(40.0lf * u) + 50.0lf * dsin(44.0lf * u + sumj_kPi);
     case 14: return 100.0lf * dsin(16.0lf * u) - 500.0lf + i * 0.25lf;
     case 15: return 100.0lf * dsin(16.0lf * u);
-    case 16: return 1.0lf / jwb_dcos(a * u);
-    case 17: return 50.0lf * jwb_dcos(50.0lf * u + 25.0lf * dsin(u));
+    case 16: return 1.0lf / dcos(a * u);
+    case 17: return 50.0lf * dcos(50.0lf * u + 25.0lf * dsin(u));
     case 18: {
       double d = 2.0lf * a * i / n - a;
       return a * double(exp(float(-b * d * d)));
     }
     case 19: return 500.0lf * dsin(10.0lf * u) * double(exp(float(-5.0lf * i / n)));
     case 20: return 500.0lf * dsin(20.0lf * u) * double(exp(float(-3.0lf * i / n)));
-    case 21: return 50.0lf * (dsin(2.0lf * u) / jwb_dcos(2.0lf * u));
+    case 21: return 50.0lf * (dsin(2.0lf * u) / dcos(2.0lf * u));
     case 22: {
       int degree = dcol_javaInt(b);
       return degree >= 0 && degree <= 10 ? a * sumj_legendre(degree, 2.0lf * i / n - 1.0lf) : 0.0lf;
@@ -1220,11 +1220,11 @@ double sumj_recurrenceSignal(int id, double a, double b, double n, int k, double
       return sum * (-2.0lf * a / sumj_kPi);
     case 25:
       for (int j = 1; j <= k; ++j)
-        sum += jwb_dcos(i * (2.0lf * j) * b * (2.0lf * sumj_kPi) / n) / ((2.0lf * j - 1.0lf) * (2.0lf * j + 1.0lf));
+        sum += dcos(i * (2.0lf * j) * b * (2.0lf * sumj_kPi) / n) / ((2.0lf * j - 1.0lf) * (2.0lf * j + 1.0lf));
       return (4.0lf * a / sumj_kPi) * (0.5lf - sum);
     case 26:
       for (int j = 1; j <= k; ++j)
-        sum += (j % 2 == 0 ? 1.0lf : -1.0lf) * jwb_dcos(i * (2.0lf * j) * b * sumj_kPi / n) / (j * j);
+        sum += (j % 2 == 0 ? 1.0lf : -1.0lf) * dcos(i * (2.0lf * j) * b * sumj_kPi / n) / (j * j);
       return a * sumj_kPi * sumj_kPi / 3.0lf + 4.0lf * a * sum;
     case 27: {
       double v = b * sumj_kPi * (i - 0.5lf * n) / n;
@@ -1232,7 +1232,7 @@ double sumj_recurrenceSignal(int id, double a, double b, double n, int k, double
     }
     case 28: {
       double v = (i - 0.5lf * n) / n;
-      return a * double(exp(float(-b * v * v))) * jwb_dcos(2.0lf * k * sumj_kPi * i / n);
+      return a * double(exp(float(-b * v * v))) * dcos(2.0lf * k * sumj_kPi * i / n);
     }
     case 29: return k >= 0 && k <= 12 ? a * sumj_chebyshev(k, 2.0lf * i / n - 1.0lf) : 0.0lf;
     default: return 0.0lf;
