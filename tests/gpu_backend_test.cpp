@@ -481,6 +481,9 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"obj_mesh_primitive_wf", {4.0, 1.2, 0.8, 1.0, 0.1, -0.2, 0.3, 0.0, 12.0, 0.42, -0.45, 1.0, 0.1, 1.0, 0.0}},
       {"obj_mesh_primitive_wf", {0.0, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 2.0, 12.0, 0.42, -0.45, 1.0, 0.1, 1.0, 0.0}},
       {"obj_mesh_primitive_wf", {11.0, 1.5, 1.0, 0.7, 0.0, 0.2, 0.0, 0.0, 12.0, 0.42, -0.45, 1.0, 0.1, 1.0, 0.0}},
+      {"colormap_wf", {1.3, 0.8, 0.2, 0.1, -0.2, 0.05, 1.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 4.0}},
+      {"colormap_wf", {0.7, 1.2, -0.2, 0.3, 0.2, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 1.0, 0.0, 1.0, 4.0}},
+      {"post_colormap_wf", {1.1, 1.1, 0.1, 0.0, 0.0, 0.1, 0.0, 0.0, 1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 4.0}},
       {"pre_extrude", {0.4}},
       {"post_extrude", {0.7}},
       {"crob", {-0.5, 1.5, -1.0, 0.7, 1.0, 0.3, 1.5}},
@@ -526,20 +529,23 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       data.insert(data.end(), tables.begin(), tables.end());
     }
     // After the parameters, as the kernel generator puts them: where the term's memory starts in
-    // gLane, then where the palette a painting variation compares with lies in the data.
+    // gLane and where the palette a painting variation compares with lies in the data; then where
+    // its table starts, its size and the table. The palette goes at the end.
     if (info->laneState > 0 || info->paintsRgb) data.push_back(0.0f);
-    if (info->paintsRgb) {
-      data.push_back(static_cast<float>(data.size() + 1));
-      for (const std::uint32_t entry : palette)
-        for (int channel = 0; channel < 3; ++channel)
-          data.push_back(static_cast<float>((entry >> (8 * channel)) & 255u));
-    }
-    if (info->table) {  // where its table starts, how many numbers, and the numbers
+    const std::size_t paletteAt = data.size();
+    if (info->paintsRgb) data.push_back(0.0f);
+    if (info->table) {
       const std::vector<std::string> texts = info->defaultTexts();
       const std::vector<double> table = info->table(params.data(), texts.empty() ? nullptr : texts.data());
       data.push_back(static_cast<float>(data.size() + 2));
       data.push_back(static_cast<float>(table.size()));
       data.insert(data.end(), table.begin(), table.end());
+    }
+    if (info->paintsRgb) {
+      data[paletteAt] = static_cast<float>(data.size());
+      for (const std::uint32_t entry : palette)
+        for (int channel = 0; channel < 3; ++channel)
+          data.push_back(static_cast<float>((entry >> (8 * channel)) & 255u));
     }
     const int stage = static_cast<int>(core::variationStage(name));
     // A variation with memory is called twice, so that the second call reads what the first kept.
@@ -823,6 +829,35 @@ core::Scene defaultFlameScene() {
   return scene;
 }
 
+// The share of each channel in the grid's colour sums on both backends: the colour sums' relative
+// RMS is mostly the density's, and a colour gone wrong (an index, a palette entry) shows here. Within
+// 3× the CPU's own difference between two chunks, or 0.002.
+void expectSameColourShares(const core::Scene& scene) {
+  const auto mask = bunnyMask(40);
+  const auto meanColour = [&](core::RefinementBackend& backend, std::uint64_t chunk) {
+    const core::GridSums sums = refine(backend, scene, 1'500'000, scene.seed, chunk);
+    std::array<double, 3> total{};
+    for (std::size_t i = 0; i < sums.red.size(); ++i) {
+      total[0] += static_cast<double>(sums.red[i]);
+      total[1] += static_cast<double>(sums.green[i]);
+      total[2] += static_cast<double>(sums.blue[i]);
+    }
+    const double all = total[0] + total[1] + total[2];
+    return std::array<double, 3>{total[0] / all, total[1] / all, total[2] / all};
+  };
+  core::Accumulator cpu(mask, 2);
+  gl::GpuAccumulator gpu(mask);
+  const std::array<double, 3> cpuA = meanColour(cpu, 0), cpuB = meanColour(cpu, 1), gpuA = meanColour(gpu, 0);
+  for (int c = 0; c < 3; ++c) {
+    const double noise = std::abs(cpuA[static_cast<std::size_t>(c)] - cpuB[static_cast<std::size_t>(c)]);
+    EXPECT_NEAR(gpuA[static_cast<std::size_t>(c)], cpuA[static_cast<std::size_t>(c)], std::max(3.0 * noise, 0.002))
+        << "channel " << c << "'s share of the colour";
+    if (std::getenv("VOXFLAME_PRINT_AGREEMENT"))
+      std::printf("channel %d's share: CPU %.5f and %.5f, GPU %.5f\n", c, cpuA[static_cast<std::size_t>(c)],
+                  cpuB[static_cast<std::size_t>(c)], gpuA[static_cast<std::size_t>(c)]);
+  }
+}
+
 }  // namespace
 
 // The parts of a genome no shipped preset has, in one flame: xaos (which draws per orbit), a pre_
@@ -894,8 +929,9 @@ TEST(GpuBackend, AgreesWithTheCpuOnTermsThatReplaceOrReadTheSum) {
   expectAgreement(scene, true, "shredlin, extrude, cubic3D, dc_linear, crob");
 }
 
-// Memory per orbit and true colours: post_smartcrop puts the points it crops where the orbit's last
-// kept point was (its cropmode 2, with that point's colour), and dc_booleans paints true colours.
+// Memory per orbit, true colours and hidden points: post_smartcrop puts the points it crops where the
+// orbit's last kept point was (its cropmode 2, with that point's colour), dc_booleans paints true
+// colours, and post_colormap_wf colours by its picture through the palette and hides points.
 TEST(GpuBackend, AgreesWithTheCpuOnMemoryPerOrbitAndTrueColours) {
   if (!glAvailable()) GTEST_SKIP() << "no headless OpenGL context here";
   core::Scene scene = defaultFlameScene();
@@ -914,9 +950,14 @@ TEST(GpuBackend, AgreesWithTheCpuOnMemoryPerOrbitAndTrueColours) {
   flame.xforms[0].variations.push_back({"post_smartcrop", 1.0, crop});
   flame.xforms[0].directColor = 1.0;
   flame.xforms[1].variations.push_back({"dc_booleans", 0.3, core::variationOrThrow("dc_booleans").defaultParams()});
+  // colormap_wf matching its picture's colours to the palette (which the kernel finds in its data),
+  // and hiding the points outside the picture until a transform shows them again.
+  flame.xforms[2].variations.push_back(
+      {"post_colormap_wf", 1.0, {1.5, 1.5, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 1.0, 0.0, 1.0, 4.0}});
+  flame.xforms[2].directColor = 1.0;
   ASSERT_TRUE(gl::gpuSupports(scene.layers)) << gl::gpuUnsupportedReason(scene.layers);
   // Orbits dealt to other lanes would leave their memory behind: such a flame draws per orbit.
-  expectAgreement(scene, true, "post_smartcrop, dc_booleans");
+  expectAgreement(scene, true, "post_smartcrop, dc_booleans, post_colormap_wf");
 }
 
 // Direct colour: a transform whose falloff2 moves the colour index, blended in by its direct_color,
@@ -936,29 +977,7 @@ TEST(GpuBackend, AgreesWithTheCpuOnDirectColour) {
   ASSERT_TRUE(gl::gpuSupports(scene.layers)) << gl::gpuUnsupportedReason(scene.layers);
   expectAgreement(scene, true, "falloff2 and post_falloff3, direct colour");
   // The colour sums' RMS is mostly the density's: the mean colour shows a colour index gone wrong.
-  const auto mask = bunnyMask(40);
-  const auto meanColour = [&](core::RefinementBackend& backend, std::uint64_t chunk) {
-    const core::GridSums sums = refine(backend, scene, 1'500'000, scene.seed, chunk);
-    std::array<double, 3> total{};
-    for (std::size_t i = 0; i < sums.red.size(); ++i) {
-      total[0] += static_cast<double>(sums.red[i]);
-      total[1] += static_cast<double>(sums.green[i]);
-      total[2] += static_cast<double>(sums.blue[i]);
-    }
-    const double all = total[0] + total[1] + total[2];
-    return std::array<double, 3>{total[0] / all, total[1] / all, total[2] / all};
-  };
-  core::Accumulator cpu(mask, 2);
-  gl::GpuAccumulator gpu(mask);
-  const std::array<double, 3> cpuA = meanColour(cpu, 0), cpuB = meanColour(cpu, 1), gpuA = meanColour(gpu, 0);
-  for (int c = 0; c < 3; ++c) {
-    const double noise = std::abs(cpuA[static_cast<std::size_t>(c)] - cpuB[static_cast<std::size_t>(c)]);
-    EXPECT_NEAR(gpuA[static_cast<std::size_t>(c)], cpuA[static_cast<std::size_t>(c)], std::max(3.0 * noise, 0.002))
-        << "channel " << c << "'s share of the colour";
-    if (std::getenv("VOXFLAME_PRINT_AGREEMENT"))
-      std::printf("channel %d's share: CPU %.5f and %.5f, GPU %.5f\n", c, cpuA[static_cast<std::size_t>(c)],
-                  cpuB[static_cast<std::size_t>(c)], gpuA[static_cast<std::size_t>(c)]);
-  }
+  expectSameColourShares(scene);
 }
 
 // The shipped flames with every orbit drawing its own transform (the agreement test above draws per
@@ -1098,7 +1117,6 @@ TEST(GpuBackend, ProjectsThePointsMethodsPointsAsTheCpuDoes) {
 // variation of the catalogue without a GPU twin fails here until it has one or a reason.
 TEST(GpuBackend, EveryVariationTheGpuLacksHasAReason) {
   const std::map<std::string, std::string> lacking = {
-      {"colormap_wf", "paints from an image the CPU decodes, and hides points by its alpha"},
       {"subflame_wf", "iterates a flame given as text, which would need a kernel of its own"},
       {"glynns3subfl", "iterates a flame given as text, which would need a kernel of its own"},
       {"parplot2d_wf", "evaluates formulas given as text (muParser), which would need them in GLSL"},

@@ -229,35 +229,31 @@ class Generator {
         stages[static_cast<int>(stage)].push_back({core::findVariation(term.name), &term});
       }
     const auto call = [&](const Term& t, const char* point) {
-      // Crackle's noise tables go in before its numbers, which must follow one another.
-      const int tables = gpuVariationReadsNoise(t.info->name) ? noiseTables() : -1;
+      // Shared blocks (crackle's noise tables, the palette) go in before the term's numbers, which
+      // must follow one another.
+      const bool noise = gpuVariationReadsNoise(t.info->name);
+      const int tables = noise ? noiseTables() : -1;
+      const int paletteAt = t.info->paintsRgb ? palette() : -1;
       const int weight = put(t.term->weight);
       const int params = static_cast<int>(k_.data.size());
       put(t.term->params.data(), t.term->params.size());
-      if (gpuVariationReadsNoise(t.info->name)) {
-        // Its parameters in full (defaults for any missing), then what crackle reads after them.
-        std::vector<double> full = t.term->params;
-        for (std::size_t i = full.size(); i < t.info->params.size(); ++i)
-          full.push_back(t.info->params[i].defaultValue);
+      // What follows the parameters, in this order where it applies (flame_variations.glsl): the
+      // parameters in full (defaults for any missing), crackle's extras; where its memory per orbit
+      // starts in gLane, where the palette lies; where its table starts, its size, and the table.
+      std::vector<double> full = t.term->params;
+      for (std::size_t i = full.size(); i < t.info->params.size(); ++i) full.push_back(t.info->params[i].defaultValue);
+      if (noise || t.info->laneState > 0 || t.info->paintsRgb || t.info->table)
         put(full.data() + t.term->params.size(), full.size() - t.term->params.size());
+      if (noise) {
         const std::vector<float> extras = gpuNoiseExtras(full, tables);
         k_.data.insert(k_.data.end(), extras.begin(), extras.end());
       }
-      // After its parameters (all of them): where its memory per orbit starts in gLane, then where
-      // the palette it compares painted colours with lies in flameData (flame_variations.glsl).
       if (t.info->laneState > 0 || t.info->paintsRgb) {
-        for (std::size_t i = t.term->params.size(); i < t.info->params.size(); ++i) put(t.info->params[i].defaultValue);
         put(static_cast<double>(laneSlots_));
         laneSlots_ += t.info->laneState;
-        if (t.info->paintsRgb) put(static_cast<double>(palette()));
+        if (t.info->paintsRgb) put(static_cast<double>(paletteAt));
       }
-      // The table a kernel picks from (svg_wf's pixels, hopalong's orbit, a mesh's faces), after its
-      // parameters (all of them): where it starts and how many numbers it holds, then the numbers.
       if (t.info->table) {
-        std::vector<double> full = t.term->params;
-        for (std::size_t i = full.size(); i < t.info->params.size(); ++i)
-          full.push_back(t.info->params[i].defaultValue);
-        put(full.data() + t.term->params.size(), full.size() - t.term->params.size());
         const std::vector<std::string> texts = t.term->texts.empty() ? t.info->defaultTexts() : t.term->texts;
         const std::vector<double> table = t.info->table(full.data(), texts.empty() ? nullptr : texts.data());
         put(static_cast<double>(k_.data.size() + 2));

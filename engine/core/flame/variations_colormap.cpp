@@ -253,6 +253,18 @@ VOXFLAME_VARIATION_TARGETS void colormapWf(const VariationInput& in, double* __r
   }
 }
 
+// colormap_wf's picture for a backend of its own: its width and height, then each pixel's red,
+// green, blue and alpha (0–255), row by row.
+std::vector<double> colormapTable(const double*, const std::string* texts) {
+  const std::shared_ptr<const Picture> held = pictureFor(texts ? &texts[1] : nullptr);
+  const Picture& picture = *held;
+  std::vector<double> table = {static_cast<double>(picture.width), static_cast<double>(picture.height)};
+  table.reserve(2 + 4 * picture.pixels.size());
+  for (const std::uint32_t p : picture.pixels)
+    for (int channel = 0; channel < 4; ++channel) table.push_back(static_cast<double>(p >> (8 * channel) & 255u));
+  return table;
+}
+
 }  // namespace
 
 std::string colormapPictureProblem(const std::string& inlinedHex) {
@@ -302,6 +314,7 @@ void variation_kernels::addColormapVariations(std::vector<VariationInfo>& catalo
   catalogue.back().readsSum = true;
   catalogue.back().paintsRgb = true;
   catalogue.back().hidesPoints = true;
+  catalogue.back().table = &colormapTable;
 }
 
 }  // namespace voxflame::core

@@ -24,7 +24,8 @@ float gColour;
 //   flameData (VariationInput::palette, the file's colours in sRGB bytes): 3 floats (red, green,
 //   blue, 0–255) a colour, 256 colours (variationPalette);
 // - a table (VariationInfo::table: svg_wf's pixels, hopalong's orbit, a mesh's faces): after the
-//   parameters, where its numbers start in flameData and how many there are (tableAt, tableSize).
+//   parameters (and the two numbers above, for one that has them), where its numbers start in
+//   flameData and how many there are (tableAt, tableSize).
 // And every variation may read gStage, its term's stage (VariationInput::stage: 0 pre_, 1 ordinary,
 // 2 post_), for those that work otherwise as pre_ or post_ terms (extrude, cubic3D, dc_bubble).
 vec3 gSum;

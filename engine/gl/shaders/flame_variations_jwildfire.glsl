@@ -1335,3 +1335,79 @@ vec3 V_dc_gnarly(vec3 p, float w, int P, int A) {
   float dz = gColour * scaleZ + offsetZ;
   return vec3(s, reset ? dz : gSum.z + w * p.z + dz);
 }
+
+// ---- colormap_wf (variations_colormap.cpp): its picture is its table (VariationInfo::table) ----------
+
+// JWildfire's Tools.FTOI: half away from zero, through Java's saturating int; NaN as 0.
+int cmap_ftoi(double v) { return v > 0.0lf ? jwa_javaIntI(v + 0.5lf) : (v < 0.0lf ? jwa_javaIntI(-(abs(v) + 0.5lf)) : 0); }
+// JWildfire's tiling of a pixel index into [0, side) (core's tiled: −side lands one side too far, as there).
+int cmap_tiled(int index, int side) {
+  if (index < 0) return index - (index / side - 1) * side;
+  return index >= side ? index - (index / side) * side : index;
+}
+// Pixel (column, row) of the picture at `at` (width, height, then red, green, blue, alpha a pixel).
+vec4 cmap_pixel(int at, int width, int column, int row) {
+  int k = at + 2 + 4 * (row * width + column);
+  return vec4(flameData[k], flameData[k + 1], flameData[k + 2], flameData[k + 3]);
+}
+// core's nearestPaletteEntry: the first entry of the palette (scaled) nearest to (r, g, b).
+int cmap_nearestEntry(int paletteAt, ivec3 c, double scale) {
+  int best = 0;
+  double bestDistance = 0.0lf;
+  for (int k = 0; k < 256; ++k) {
+    uint e = variationPalette(paletteAt, k);
+    dvec3 d = dvec3(double(e & 255u), double((e >> 8) & 255u), double((e >> 16) & 255u)) * scale - dvec3(c);
+    double distance = dot(d, d);
+    if (k == 0 || distance < bestDistance) {
+      bestDistance = distance;
+      best = k;
+    }
+  }
+  return best;
+}
+// Returns the new sum (it reads it: reset_z replaces its z); x and y only a pre_/post_ term keeps.
+vec3 V_colormap_wf(vec3 p, float w, int P, int A) {
+  const int N = 15;
+  double scaleX = P_(P, 0), scaleY = P_(P, 1), offsetX = P_(P, 3), offsetY = P_(P, 4);
+  float scaleZ = P_(P, 2), offsetZ = P_(P, 5);
+  bool tileX = cmap_ftoi(P_(P, 6)) == 1, tileY = cmap_ftoi(P_(P, 7)) == 1, resets = cmap_ftoi(P_(P, 8)) != 0;
+  int dcColor = cmap_ftoi(P_(P, 9));
+  bool blend = cmap_ftoi(P_(P, 10)) > 0, withAlpha = cmap_ftoi(P_(P, 11)) > 0;
+  int paletteAt = int(flameData[P + N + 1]);
+  int at = tableAt(P, N + 2);
+  int width = int(flameData[at]), height = int(flameData[at + 1]);
+  double u = (double(p.x) - (offsetX + 0.5lf) + 1.0lf) / scaleX * double(width - 2);
+  double v = (double(p.y) - (offsetY + 0.5lf) + 1.0lf) / scaleY * double(height - 2);
+  int column = blend ? jwa_javaIntI(trunc(u)) : cmap_ftoi(u);
+  int row = blend ? jwa_javaIntI(trunc(v)) : cmap_ftoi(v);
+  if (tileX) column = cmap_tiled(column, width);
+  if (tileY) row = cmap_tiled(row, height);
+  vec4 c = vec4(0.0);
+  if (column >= 0 && column < width && row >= 0 && row < height) {
+    c = cmap_pixel(at, width, column, row);
+    if (blend) {
+      // Bilinear with the right, lower and lower-right pixels (transparent black past the edge) by the
+      // fractions, negative for negative u, v (JWildfire extrapolates there).
+      float fu = float(u - trunc(u)), fv = float(v - trunc(v));
+      bool right = column < width - 1, below = row < height - 1;
+      vec4 ru = right ? cmap_pixel(at, width, column + 1, row) : vec4(0.0);
+      vec4 lb = below ? cmap_pixel(at, width, column, row + 1) : vec4(0.0);
+      vec4 rb = right && below ? cmap_pixel(at, width, column + 1, row + 1) : vec4(0.0);
+      vec4 top = c + (ru - c) * fu, bottom = lb + (rb - lb) * fu;
+      c = top + (bottom - top) * fv;
+    }
+  }
+  ivec3 rounded = ivec3(cmap_ftoi(c.r), cmap_ftoi(c.g), cmap_ftoi(c.b));
+  if (dcColor == 0) {
+    uvec3 bytes = uvec3(clamp(rounded, ivec3(0), ivec3(255)));
+    gRgb = kRgbPainted | bytes.r | bytes.g << 8 | bytes.b << 16;
+  }
+  if (dcColor > 0) gColour = float(cmap_nearestEntry(paletteAt, rounded, 200.0lf / 256.0lf)) / 255.0;
+  gHidden = withAlpha && c.a <= 0.1;
+  float dz = offsetZ;
+  if (abs(scaleZ) > 1e-8) dz += scaleZ * (0.299 * c.r + 0.588 * c.g + 0.113 * c.b) / 255.0;
+  bool inPlace = gStage != 1;
+  vec3 o = gSum + (inPlace ? p : vec3(0.0));
+  o.z = resets ? dz : o.z + dz;
+  return o;
+}
