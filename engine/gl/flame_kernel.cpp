@@ -239,10 +239,12 @@ class Generator {
       put(t.term->params.data(), t.term->params.size());
       // What follows the parameters, in this order where it applies (flame_variations.glsl): the
       // parameters in full (defaults for any missing), crackle's extras; where its memory per orbit
-      // starts in gLane, where the palette lies; where its table starts, its size, and the table.
+      // starts in gLane, where the palette lies; where its table starts, its size, and the table;
+      // the parameters in double.
       std::vector<double> full = t.term->params;
       for (std::size_t i = full.size(); i < t.info->params.size(); ++i) full.push_back(t.info->params[i].defaultValue);
-      if (noise || t.info->laneState > 0 || t.info->paintsRgb || t.info->table)
+      if (noise || t.info->laneState > 0 || t.info->paintsRgb || t.info->table ||
+          gpuVariationReadsDoubles(t.info->name))
         put(full.data() + t.term->params.size(), full.size() - t.term->params.size());
       if (noise) {
         const std::vector<float> extras = gpuNoiseExtras(full, tables);
@@ -259,6 +261,10 @@ class Generator {
         put(static_cast<double>(k_.data.size() + 2));
         put(static_cast<double>(table.size()));
         put(table.data(), table.size());
+      }
+      if (gpuVariationReadsDoubles(t.info->name)) {
+        const std::vector<float> words = gpuDoubleParams(full);
+        k_.data.insert(k_.data.end(), words.begin(), words.end());
       }
       k_.variations.push_back(t.info->name);
       return "V_" + t.info->name + "(" + point + ", flameData[" + std::to_string(weight) + "], " +
@@ -494,6 +500,21 @@ bool gpuVariationReadsNoise(std::string_view name) {
   // crackle's and dc_crackle_wf's cells (the slice at the same place); dc_perlin's octaves, which
   // read only the tables' place of the extras.
   return name == "crackle" || name == "dc_crackle_wf" || name == "dc_perlin";
+}
+
+bool gpuVariationReadsDoubles(std::string_view name) {
+  return name == "dc_inversion" || name == "fract_mandelbrot_wf";
+}
+
+std::vector<float> gpuDoubleParams(const std::vector<double>& params) {
+  // Carried in floats that are only copied, never computed with (as the noise's slice).
+  std::vector<float> words;
+  for (const double v : params) {
+    const auto bits = std::bit_cast<std::uint64_t>(v);
+    words.push_back(std::bit_cast<float>(static_cast<std::uint32_t>(bits)));
+    words.push_back(std::bit_cast<float>(static_cast<std::uint32_t>(bits >> 32)));
+  }
+  return words;
 }
 
 std::vector<float> gpuNoiseExtras(const std::vector<double>& params, int tables) {

@@ -56,6 +56,12 @@ const std::vector<std::string>& gpuFlameVariations();
 // Whether the GPU's variation `name` reads simplex noise (crackle): its term's parameters (all of
 // them) are then followed in flameData by gpuNoiseExtras.
 bool gpuVariationReadsNoise(std::string_view name);
+// Whether the GPU's variation `name` reads its parameters in double as well, where float's rounding
+// of one moves what it draws (dc_inversion's scales and time, fract_mandelbrot_wf's bounds): each of
+// its parameters then follows everything else of its term in flameData as its double's bits (low
+// word, high word), gpuDoubleParams.
+bool gpuVariationReadsDoubles(std::string_view name);
+std::vector<float> gpuDoubleParams(const std::vector<double>& params);
 // What crackle reads after its parameters `params`: its slice z in double (its bits in two floats)
 // and `tables`, where gpuNoiseTables() lie in flameData (the kernel puts them in once).
 std::vector<float> gpuNoiseExtras(const std::vector<double>& params, int tables);

@@ -25,7 +25,8 @@ float gColour;
 //   blue, 0–255) a colour, 256 colours (variationPalette);
 // - a table (VariationInfo::table: svg_wf's pixels, hopalong's orbit, a mesh's faces): after the
 //   parameters (and the two numbers above, for one that has them), where its numbers start in
-//   flameData and how many there are (tableAt, tableSize).
+//   flameData and how many there are (tableAt, tableSize);
+// - and last, for the variations gpuVariationReadsDoubles names, every parameter in double (paramDouble).
 // And every variation may read gStage, its term's stage (VariationInput::stage: 0 pre_, 1 ordinary,
 // 2 post_), for those that work otherwise as pre_ or post_ terms (extrude, cubic3D, dc_bubble).
 vec3 gSum;
@@ -39,6 +40,10 @@ double gLane[LANE_MEMORY];
 // Where the table of the term whose N parameters are at P starts, and how many numbers it holds.
 int tableAt(int P, int N) { return int(flameData[P + N]); }
 int tableSize(int P, int N) { return int(flameData[P + N + 1]); }
+// Parameter i in double, of those that start at `at` (a double's bits in two floats).
+double paramDouble(int at, int i) {
+  return packDouble2x32(uvec2(floatBitsToUint(flameData[at + 2 * i]), floatBitsToUint(flameData[at + 2 * i + 1])));
+}
 // Point k of such a table of (x, y) pairs.
 vec2 tablePoint(int P, int N, int k) {
   int at = tableAt(P, N) + 2 * k;

@@ -1003,11 +1003,14 @@ vec3 V_dc_ducks(vec3 p, float w, int P, int A) {
 }
 
 vec3 V_dc_inversion(vec3 p, float w, int P, int A) {
-  double time = double(P_(P, 1));
+  // Time and the scales in double (after its 10 parameters, the memory slot and the palette's place):
+  // the iterated inversions part from the CPU's at a float's rounding of them.
+  const int D = P + 12;
+  double time = paramDouble(D, 1);
   double iterations = double(rgb_limitedInt(P_(P, 2), 0.0, 100.0));
   // setParameter clamps the scales into [1.1, 3] (a NaN passes).
-  double scaleX = isnan(P_(P, 3)) ? double(P_(P, 3)) : clamp(double(P_(P, 3)), 1.1lf, 3.0lf);
-  double scaleY = isnan(P_(P, 4)) ? double(P_(P, 4)) : clamp(double(P_(P, 4)), 1.1lf, 3.0lf);
+  double scaleX = isnan(paramDouble(D, 3)) ? paramDouble(D, 3) : clamp(paramDouble(D, 3), 1.1lf, 3.0lf);
+  double scaleY = isnan(paramDouble(D, 4)) ? paramDouble(D, 4) : clamp(paramDouble(D, 4), 1.1lf, 3.0lf);
   double offsetX = dsin(time * 0.123lf), offsetY = rgb_datan(time * 0.0567lf);
   double s = 2.1lf + time * 0.025lf;
   precise dvec3 b = dvec3(dsin(s * 1.790lf), dsin(s * 1.345lf), dsin(s * 1.123lf)) * 0.5lf + 0.5lf;

@@ -1434,23 +1434,6 @@ int lane_mandelbrotIterate(int power, dvec2 c, int maxIter, out dvec2 z, out dve
   while (tests++ < maxIter && !(sq.x + sq.y >= 4.0lf)) lane_mandelbrotStep(power, c, z, sq, count);
   return tests;
 }
-// The double the CPU most likely has for a parameter flameData holds as a float: the shortest decimal
-// that rounds to it (defaults and a file's numbers are short decimals). Where the starts fall hangs
-// on these bounds: a float's −2.35 moves a start by 1e-7, which tips its escape count now and then.
-double lane_decimalDouble(float f) {
-  if (f == 0.0 || isinf(f) || isnan(f)) return double(f);
-  double v = abs(double(f));
-  int e10 = int(floor(log2(abs(f)) * 0.30102999566398120));
-  for (int digits = 1; digits <= 10; ++digits) {
-    int e = digits - 1 - e10;
-    if (abs(e) > 22) break;  // 10^e exact in double
-    double scale = 1.0lf;
-    for (int k = 0; k < abs(e); ++k) scale *= 10.0lf;
-    double d = e >= 0 ? floor(v * scale + 0.5lf) / scale : floor(v / scale + 0.5lf) * scale;
-    if (float(d) == abs(f)) return f < 0.0 ? -d : d;
-  }
-  return double(f);
-}
 float lane_fractHeight(float count, float maxIter, float scalez, float offsetz, bool logZ) {
   float t = count / maxIter;
   return scalez / 10.0 * (logZ ? log(1.0 + t) * 0.43429448190325176 : t) + offsetz;
@@ -1462,8 +1445,10 @@ vec3 V_fract_mandelbrot_wf(vec3 p, float w, int P, int A) {
   int clipIterMax = lane_jwfCount(P_(P, 10), -1e9, 1e9, 0.0);
   int maxClipIter = lane_jwfCount(P_(P, 11), -1.0, 100.0, 0.0);
   int minIter = lane_jwfCount(P_(P, 12), -1.0, 1e9, 0.0);
-  double xmin = lane_decimalDouble(P_(P, 1)), xmax = lane_decimalDouble(P_(P, 2));
-  double ymin = lane_decimalDouble(P_(P, 3)), ymax = lane_decimalDouble(P_(P, 4));
+  // The bounds in double (after its 20 parameters and the memory slot): where the starts fall hangs
+  // on them, and a float's −2.35 moves a start by 1e-7, which tips its escape count now and then.
+  double xmin = paramDouble(P + 21, 1), xmax = paramDouble(P + 21, 2);
+  double ymin = paramDouble(P + 21, 3), ymax = paramDouble(P + 21, 4);
   float scalez = P_(P, 8), scale = P_(P, 13), offsetx = P_(P, 14), offsety = P_(P, 15), offsetz = P_(P, 16);
   float zFill = clamp(P_(P, 17), 0.0, 1.0);
   bool buddhabrot = lane_jwfCount(P_(P, 5), -1.0, 1.0, 0.0) > 0;
