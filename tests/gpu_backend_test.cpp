@@ -467,7 +467,9 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"dc_inversion", {10000.0, 23.0, 50.0, 1.75, 1.25, 0.0, 2.0, 0.5, -0.25, 1.0}},
       {"dc_inversion", {10000.0, 41.5, 60.0, 2.5, 1.125, 1.0, 1.0, 0.25, 0.5, 0.0}},
       // Scales and a time no float holds: the kernel reads them in double.
-      {"dc_inversion", {10000.0, 17.3, 50.0, 1.8, 1.3, 0.0, 0.0, 0.5, -0.25, 1.0}},
+      // (With them in float, 417 and 485 of the 512 points' colours part from the CPU's.)
+      {"dc_inversion", {10000.0, 0.0, 100.0, 1.8, 1.3, 0.0, 0.0, 0.5, -0.25, 1.0}},
+      {"dc_inversion", {10000.0, 3.7, 80.0, 2.3, 1.7, 0.0, 0.0, 0.5, -0.25, 1.0}},
       {"glsl_apollonian", {5000.0, 10000.0, 73.5, 1.0}},
       {"glsl_apollonian", {300.0, 10000.0, 1234.0, 0.0}},
       // smartcrop's cropmode 2 reads its memory (the second call), radial sectors, other statics.
