@@ -244,7 +244,7 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
                          info.readsSum,
                          {},
                          0.0});
-      c.terms.back().texts = term.texts.size() == info.textParams.size() ? term.texts : info.defaultTexts();
+      c.terms.back().texts = info.textsFor(term.texts);
       c.terms.back().laneState = info.laneState;
       if (c.hasField) {
         // JWildfire's Variation.addWeightingFieldParam: every term of the named variation, the

@@ -80,6 +80,8 @@ class ChaosGame {
   // Whether a variation may paint points a true colour (VariationInfo::paintsRgb): then step fills
   // lanes.rgb, which whoever colours the drawn points reads before the colour index.
   bool paintsRgb() const { return paintsRgb_; }
+  // Whether a variation may hide points (VariationInfo::hidesPoints), JWildfire's doHide kept per lane.
+  bool hidesPointsByTerm() const { return hidesByTerm_; }
 
   // What another backend needs to run the same game (the GPU's generated kernel): the pick table
   // (rows of pickSize() entries, each a transform index: one row without xaos, 1 + transforms

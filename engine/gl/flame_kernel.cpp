@@ -147,37 +147,28 @@ std::string xformUnsupported(const core::FlameXform& xform) {
   return {};
 }
 
-// What a flame's variations need of the kernel beyond the point and colour index.
-struct KernelNeeds {
-  bool paintsRgb = false;      // some transform paints true colours (gRgb, gPointRgb)
-  bool hidesPoints = false;    // some variation hides points (gHidden, kept per orbit)
-  std::size_t laneMemory = 0;  // doubles of gLane per orbit, every laneState term's own
-};
-
-bool paintsRgb(const core::FlameXform& xform) {
+// Whether a term of `xform` (of weight other than 0, as core::ChaosGame compiles them) has `flag`.
+bool anyTerm(const core::FlameXform& xform, bool core::VariationInfo::*flag) {
   for (const core::VariationTerm& term : xform.variations)
-    if (const core::VariationInfo* info = core::findVariation(term.name); info && term.weight != 0.0 && info->paintsRgb)
+    if (const core::VariationInfo* info = core::findVariation(term.name); info && term.weight != 0.0 && info->*flag)
       return true;
   return false;
 }
 
-KernelNeeds kernelNeeds(const std::vector<core::FlameXform>& xforms, const core::FlameGenome& genome) {
-  KernelNeeds needs;
+// Doubles of memory per orbit the flame's terms keep (VariationInfo::laneState), each term its own.
+std::size_t laneMemory(const std::vector<core::FlameXform>& xforms, const core::FlameGenome& genome) {
+  std::size_t doubles = 0;
   const auto add = [&](const core::FlameXform& xform) {
-    for (const core::VariationTerm& term : xform.variations) {
-      const core::VariationInfo* info = core::findVariation(term.name);
-      if (!info || term.weight == 0.0) continue;
-      needs.paintsRgb = needs.paintsRgb || info->paintsRgb;
-      needs.hidesPoints = needs.hidesPoints || info->hidesPoints;
-      needs.laneMemory += info->laneState;
-    }
+    for (const core::VariationTerm& term : xform.variations)
+      if (const core::VariationInfo* info = core::findVariation(term.name); info && term.weight != 0.0)
+        doubles += info->laneState;
   };
   for (const core::FlameXform& xform : xforms) add(xform);
   if (genome.hasFinal) {
     add(genome.finalXform);
     for (const core::FlameXform& chained : genome.chainedFinals) add(chained);
   }
-  return needs;
+  return doubles;
 }
 
 class Generator {
@@ -201,14 +192,11 @@ class Generator {
     const int affine = put(xform.affine.m.data(), 12);
     s += "vec3 " + name + "(vec3 p, inout float c, inout bool visible) {\n";
     s += "  int A = " + std::to_string(affine) + ";\n";
-    const bool paints = paintsRgb(xform);
+    const bool paints = anyTerm(xform, &core::VariationInfo::paintsRgb);
     if (paints) s += "  gRgb = 0u;\n";  // JWildfire clears rgbColor as each transform starts
     // A direct-colour variation starts from the colour the transform's blend gives and may set it;
     // the transform then blends that in by its direct_color (core::ChaosGame::startDirectColour).
-    bool direct = false;
-    for (const core::VariationTerm& term : xform.variations)
-      if (const core::VariationInfo* info = core::findVariation(term.name); info && term.weight != 0.0)
-        direct = direct || info->directColour;
+    const bool direct = anyTerm(xform, &core::VariationInfo::directColour);
     const int blend = put(1.0 - xform.colorSpeed);
     put(xform.colorSpeed * xform.color);
     if (direct)
@@ -256,7 +244,7 @@ class Generator {
         if (t.info->paintsRgb) put(static_cast<double>(paletteAt));
       }
       if (t.info->table) {
-        const std::vector<std::string> texts = t.term->texts.empty() ? t.info->defaultTexts() : t.term->texts;
+        const std::vector<std::string> texts = t.info->textsFor(t.term->texts);
         const std::vector<double> table = t.info->table(full.data(), texts.empty() ? nullptr : texts.data());
         put(static_cast<double>(k_.data.size() + 2));
         put(static_cast<double>(table.size()));
@@ -282,20 +270,12 @@ class Generator {
       if (t.info->name == "flatten") code += std::string("    ") + point + ".z = 0.0;\n";
       return code + "  }\n";
     };
-    // depth reads the transform's point (gVariationT): for a pre_ term the point it maps, for the
-    // others the point after the pre_ terms (core's VariationInput::tx).
-    // smartcrop too, which crops the transform's point where its static says so.
-    bool readsT = false;
-    for (const auto& stage : stages)
-      for (const Term& t : stage) readsT = readsT || t.info->name == "depth" || t.info->name == "smartcrop";
-    // The stage, for the variations that read it (flame_variations.glsl's gStage).
+    // The transform's point (gVariationT, core's VariationInput::tx), which depth and smartcrop read:
+    // for a pre_ term the point it maps, for the others the point after the pre_ terms. The driver
+    // drops the stores where no variation reads it. And the stage (gStage), for those that read it.
     if (!stages[0].empty()) s += "  gStage = 0;\n";
-    for (const Term& t : stages[0]) {
-      if (readsT) s += "  gVariationT = t;\n";
-      s += combine(t, "t");
-    }
-    if (readsT) s += "  gVariationT = t;\n";
-    s += "  gStage = 1;\n";
+    for (const Term& t : stages[0]) s += "  gVariationT = t;\n" + combine(t, "t");
+    s += "  gVariationT = t;\n  gStage = 1;\n";
     s += stages[1].empty() ? "  vec3 o = t;\n" : "  vec3 o = vec3(0.0);\n";
     bool flatten = false;
     for (const Term& t : stages[1]) {
@@ -303,14 +283,13 @@ class Generator {
       using Replaces = core::VariationInfo::Replaces;
       if (t.info->replaces == Replaces::XY || t.info->replaces == Replaces::XYZ) s += "  o.xy = vec2(0.0);\n";
       if (t.info->replaces == Replaces::Z || t.info->replaces == Replaces::XYZ) s += "  o.z = 0.0;\n";
-      // crob moves the transform's point (gVariationT) for the terms after it (core's movableX/Y).
-      const bool movesT = t.info->name == "crob";
-      if (movesT) s += "  gVariationT = t;\n";
       if (t.info->readsSum)
         s += "  gSum = o;\n  o = " + call(t, "t") + ";\n";  // it returns the new sum
       else
         s += "  o += " + call(t, "t") + ";\n";
-      if (movesT) s += "  t = gVariationT;\n";
+      // An ordinary term may move the transform's point for the terms after it (crob, core's
+      // movableX/Y); where none does, the driver folds this away.
+      s += "  t = gVariationT;\n";
       flatten = flatten || t.info->name == "flatten";
     }
     if (flatten) s += "  o.z = 0.0;\n";  // as core's applyGroup: the sum's z, after every ordinary term
@@ -393,13 +372,12 @@ class Generator {
 
 void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, bool groupChoice, FlameKernel& kernel) {
   const std::vector<core::FlameXform> xforms = core::expandSymmetry(layer.flame);
-  const KernelNeeds needs = kernelNeeds(xforms, layer.flame);
-  Generator g(kernel, needs.paintsRgb, game.variationPalette());
+  Generator g(kernel, game.paintsRgb(), game.variationPalette());
   std::string& s = kernel.source;
   s += "#define CHAOS_STATE vec4\n";
-  if (needs.paintsRgb) s += "#define PAINTS_RGB\nuint gPointRgb;\n";  // the drawn point's (accumulate.comp.glsl)
-  if (needs.hidesPoints) s += "#define HIDES_POINTS\n";
-  kernel.laneMemory = needs.laneMemory;
+  if (game.paintsRgb()) s += "#define PAINTS_RGB\nuint gPointRgb;\n";  // the drawn point's (accumulate.comp.glsl)
+  if (game.hidesPointsByTerm()) s += "#define HIDES_POINTS\n";
+  kernel.laneMemory = laneMemory(xforms, layer.flame);
   for (std::size_t k = 0; k < xforms.size(); ++k) g.xformFunction("xform" + std::to_string(k), xforms[k], false);
   const core::FlameGenome& genome = layer.flame;
   if (genome.hasFinal) {
@@ -418,7 +396,7 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, b
   // A flame with xaos picks per orbit, by the transform each took last.
   // Nor may orbits be dealt to other lanes when each lane keeps memory of its own orbit (gLane, gHidden).
   kernel.groupChoice =
-      groupChoice && !game.usesXaos() && xforms.size() > 1 && needs.laneMemory == 0 && !needs.hidesPoints;
+      groupChoice && !game.usesXaos() && xforms.size() > 1 && kernel.laneMemory == 0 && !game.hidesPointsByTerm();
   if (kernel.groupChoice) s += "#define GROUP_CHOICE\n";
   s += "uint pickTransform(uint draw) { return flamePick[draw >> " + std::to_string(shift) + "]; }\n";
   s += "bool chaosStepWith(uint k, inout CHAOS_STATE state, inout float colour, out vec3 drawn,\n"
@@ -452,8 +430,8 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, b
   if (!game.postSymmetryImages().empty()) s += "  o = throughPostSymmetry(o);\n";
   s += "  drawn = good ? o : vec3(uintBitsToFloat(0x7fc00000u));\n";
   // A point a variation hid (JWildfire's doHide) is not drawn, though it goes on moving.
-  s += needs.hidesPoints ? "  drawnColour = oc;\n  return visible && !gHidden;\n}\n"
-                         : "  drawnColour = oc;\n  return visible;\n}\n";
+  s += game.hidesPointsByTerm() ? "  drawnColour = oc;\n  return visible && !gHidden;\n}\n"
+                                : "  drawnColour = oc;\n  return visible;\n}\n";
 }
 
 // core::ChaosGame::stepJulia in double: the inverse iteration multiplies each coordinate by the

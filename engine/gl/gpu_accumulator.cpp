@@ -120,10 +120,10 @@ GLuint makeBuffer(GLuint binding, std::size_t bytes, const void* data = nullptr)
   return buffer;
 }
 
-void clearToZero(GLuint buffer) {
-  const GLuint zero = 0;
+// Every 32-bit word of `buffer` set to `word` (the buffer stays bound).
+void fillBuffer(GLuint buffer, GLuint word) {
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &word);
 }
 
 }  // namespace
@@ -650,12 +650,10 @@ void GpuAccumulator::setPattern(const std::vector<core::PatternLayer>& layers, s
           device.flamePicks.push_back(
               makeBuffer(kFlamePickBinding, u.kernel.pick.size() * sizeof(std::uint32_t), u.kernel.pick.data()));
           // All ones: every orbit reads as unseeded (state.y) and seeds itself at its first step.
-          const GLuint ones = 0xFFFFFFFFu;
-          glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.orbits.back());
-          glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+          fillBuffer(device.orbits.back(), 0xFFFFFFFFu);
           device.laneMemory.push_back(
               makeBuffer(kLaneMemoryBinding, std::size_t{orbits_} * u.kernel.laneMemory * sizeof(double)));
-          clearToZero(device.laneMemory.back());  // Fractorium's and the CPU's memory starts at 0
+          fillBuffer(device.laneMemory.back(), 0);  // Fractorium's and the CPU's memory starts at 0
           if (u.runs) u.program = &device.layerProgram(u);
         }
         clearGrid(device);
@@ -697,12 +695,8 @@ void GpuAccumulator::clearGrid(Device& device) const {
 void GpuAccumulator::setChunk(std::uint64_t chunk, bool clearGrid) {
   runOnDevice(
       [&](Device& device) {
-        for (GLuint orbits : device.orbits) {
-          const GLuint ones = 0xFFFFFFFFu;
-          glBindBuffer(GL_SHADER_STORAGE_BUFFER, orbits);
-          glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
-        }
-        for (GLuint memory : device.laneMemory) clearToZero(memory);  // fresh orbits remember nothing
+        for (GLuint orbits : device.orbits) fillBuffer(orbits, 0xFFFFFFFFu);
+        for (GLuint memory : device.laneMemory) fillBuffer(memory, 0);  // fresh orbits remember nothing
         if (clearGrid) this->clearGrid(device);
         std::lock_guard lock(mutex_);
         chunk_ = chunk;
@@ -746,9 +740,7 @@ void GpuAccumulator::dispatchRound(Device& device) {
                        : (kTransientSteps + 1.1 * remaining / static_cast<double>(orbits_) + 1.0) / stepsPerDispatch_;
     stepFraction = std::clamp(stepFraction, 1.0 / stepsPerDispatch_, 1.0);
   }
-  const GLuint zero = 0;
-  glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.counters);
-  glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  fillBuffer(device.counters, 0);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCountersBinding, device.counters);
   device.bindGrid();
   std::uint64_t iterations = 0;
@@ -882,8 +874,7 @@ void GpuAccumulator::projectPoints(const core::PointProjection& projection) {
                             " MiB); render it smaller, with less oversampling, or on the CPU (--backend cpu)");
         if (device.screen) glDeleteBuffers(1, &device.screen);
         device.screen = makeBuffer(kScreenBinding, bytes);
-        const GLuint zero = 0;
-        glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        fillBuffer(device.screen, 0);
         const auto texture = [](GLuint& name, GLint format, GLenum type, glm::ivec3 size, const void* values) {
           if (!name) glGenTextures(1, &name);
           glBindTexture(GL_TEXTURE_3D, name);
@@ -931,8 +922,7 @@ core::ImageSums GpuAccumulator::takeScreenSums() {
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.screen);
     glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, static_cast<GLsizeiptr>(sums.counts.size() * sizeof(std::uint32_t)),
                        sums.counts.data());
-    const GLuint zero = 0;
-    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    fillBuffer(device.screen, 0);
   });
   return sums;
 }
@@ -1060,9 +1050,7 @@ bool GpuAccumulator::packOnDevice(core::PackedVolume& out) const {
         glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(brickCount * sizeof(GLuint)), nullptr,
                      GL_DYNAMIC_COPY);
     }
-    const GLuint empty = core::kMaxEmptyDistance;
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, device.distance[0]);
-    glClearBufferData(GL_SHADER_STORAGE_BUFFER, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &empty);
+    fillBuffer(device.distance[0], core::kMaxEmptyDistance);
 
     auto bindPass = [&](const char* define) -> const ShaderProgram& {
       const ShaderProgram& program = device.program("pack_volume.comp.glsl", define, false);

@@ -88,6 +88,10 @@ std::vector<std::string> VariationInfo::defaultTexts() const {
   return values;
 }
 
+std::vector<std::string> VariationInfo::textsFor(const std::vector<std::string>& texts) const {
+  return texts.size() == textParams.size() ? texts : defaultTexts();
+}
+
 namespace {
 
 // Whether a variation's result depends on the point: it is run at two points with the same random

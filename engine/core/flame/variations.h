@@ -197,6 +197,8 @@ struct VariationInfo {
   std::vector<double> defaultParams() const;
   int textParamIndex(std::string_view paramName) const;  // -1 when absent
   std::vector<std::string> defaultTexts() const;
+  // A term's text parameters as its kernel takes them: `texts` where it gives them all, else the defaults.
+  std::vector<std::string> textsFor(const std::vector<std::string>& texts) const;
 };
 
 VariationStage variationStage(std::string_view name);

@@ -206,7 +206,9 @@ void seedOrbit(inout Orbit o, uint index) {
   o.chaosColour = vec4(float(e >> 8) * (1.0 / 16777216.0), 0.0, 0.0, 0.0);
   gChaosRandom = pcgHash(e) | 1u;
   o.chaosStream = uvec4(gChaosRandom, 0u, 0u, 0u);
+#ifdef HIDES_POINTS
   gHidden = false;  // as the CPU's seedLane
+#endif
   vec3 start = vec3(o.chaos.xyz);
 #else
   vec3 s = seeds[h % max(uSeedCount, 1u)].xyz;
@@ -233,7 +235,9 @@ void main() {
   uint inside = 0u, outside = 0u, escapes = 0u;
 #ifdef CHAOS_GAME
   gChaosRandom = o.chaosStream.x;
+#ifdef HIDES_POINTS
   gHidden = o.chaosStream.z != 0u;
+#endif
 #ifdef LANE_MEMORY
   for (int i = 0; i < LANE_MEMORY; ++i) gLane[i] = laneMemory[index * uint(LANE_MEMORY) + uint(i)];
 #endif
@@ -393,7 +397,9 @@ void main() {
   }
 #ifdef CHAOS_GAME
   o.chaosStream.x = gChaosRandom;
+#ifdef HIDES_POINTS
   o.chaosStream.z = gHidden ? 1u : 0u;
+#endif
 #ifdef LANE_MEMORY
   for (int i = 0; i < LANE_MEMORY; ++i) laneMemory[index * uint(LANE_MEMORY) + uint(i)] = gLane[i];
 #endif
