@@ -773,7 +773,8 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
     return gpuSession.takeVolumeIfNewer(volume) && volume.points > 0 && volume.maxDensity > 0.0f;
   }));
 
-  // A flame of the GPU's variations refines there; one with a variation it lacks falls back to the CPU, saying why.
+  // A flame of the GPU's variations refines there; one with what it lacks (a weighting field) falls back to the
+  // CPU, saying why.
   core::Scene flame = scene;
   flame.layers.front().kind = core::PatternKind::Flame;
   flame.layers.front().flame = core::defaultFlame();
@@ -782,8 +783,8 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Gpu) << gpuSession.status().backendNote;
   core::Scene lacking = flame;
-  lacking.layers.front().flame.xforms.front().variations.push_back(
-      {"subflame_wf", 0.5, core::variationOrThrow("subflame_wf").defaultParams()});
+  lacking.layers.front().flame.xforms.front().fieldKind = core::WeightFieldKind::Noise;
+  lacking.layers.front().flame.xforms.front().fieldAmount = 0.5;
   gpuSession.post(lacking);
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Cpu);

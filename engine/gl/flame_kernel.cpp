@@ -6,13 +6,20 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <optional>
+#include <set>
 #include <string_view>
+#include <utility>
 
 #include "core/chaos_game.h"
+#include "core/error.h"
 #include "core/flame/flame.h"
 #include "core/flame/noise.h"
+#include "core/flame/parplot_formula.h"
+#include "core/flame/subflame.h"
 #include "core/flame/variations.h"
 #include "core/scene.h"
+#include "parplot_glsl.h"
 #include "shader_program.h"
 
 namespace voxflame::gl {
@@ -133,6 +140,24 @@ bool gpuHasVariation(std::string_view name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
+// parplot2d_wf, whose formulas the kernel compiles (parplotSurface).
+bool drawsFormulas(const core::VariationInfo& info) {
+  return info.name == "parplot2d_wf";
+}
+
+// A parplot2d_wf term's three formulas, or nullopt where muParser cannot read one (the CPU's term
+// then adds nothing, and the GPU's likewise).
+std::optional<std::array<std::string, 3>> termFormulas(const core::VariationInfo& info,
+                                                       const core::VariationTerm& term) {
+  const std::vector<std::string> texts = info.textsFor(term.texts);
+  std::array<std::string, 3> formulas;
+  for (std::size_t k = 0; k < 3; ++k) {
+    if (core::parplotFormulaError(texts[k])) return std::nullopt;
+    formulas[k] = texts[k];
+  }
+  return formulas;
+}
+
 // Why one transform cannot run on the GPU, or empty.
 std::string xformUnsupported(const core::FlameXform& xform) {
   if (xform.hasWeightField()) return "a weighting field";
@@ -141,7 +166,14 @@ std::string xformUnsupported(const core::FlameXform& xform) {
     const core::VariationInfo* info = core::findVariation(term.name);
     if (!info) return "variation '" + term.name + "'";
     if (!gpuHasVariation(info->name)) return "variation '" + term.name + "'";
-    // Text parameters reach a GLSL port only through the table its kernel builds from them.
+    if (drawsFormulas(*info)) {
+      if (const auto formulas = termFormulas(*info, term))
+        for (const std::string& formula : *formulas)
+          if (const ParplotGlsl glsl = parplotFormulaGlsl(core::parplotMuParserText(formula)); !glsl.error.empty())
+            return "what a parplot2d_wf formula asks: " + glsl.error;
+      continue;
+    }
+    // Other text parameters reach a GLSL port only through the table its kernel builds from them.
     if (!info->textParams.empty() && !info->table) return "variation '" + term.name + "'";
   }
   return {};
@@ -231,9 +263,11 @@ class Generator {
       // the parameters in double.
       std::vector<double> full = t.term->params;
       for (std::size_t i = full.size(); i < t.info->params.size(); ++i) full.push_back(t.info->params[i].defaultValue);
-      if (noise || t.info->laneState > 0 || t.info->paintsRgb || t.info->table ||
+      const bool formulas = drawsFormulas(*t.info);
+      if (noise || t.info->laneState > 0 || t.info->paintsRgb || t.info->table || formulas ||
           gpuVariationReadsDoubles(t.info->name))
         put(full.data() + t.term->params.size(), full.size() - t.term->params.size());
+      if (formulas) put(static_cast<double>(surface(*t.info, *t.term)));
       if (noise) {
         const std::vector<float> extras = gpuNoiseExtras(full, tables);
         k_.data.insert(k_.data.end(), extras.begin(), extras.end());
@@ -246,9 +280,19 @@ class Generator {
       if (t.info->table) {
         const std::vector<std::string> texts = t.info->textsFor(t.term->texts);
         const std::vector<double> table = t.info->table(full.data(), texts.empty() ? nullptr : texts.data());
-        put(static_cast<double>(k_.data.size() + 2));
+        // A table already in the data (a symmetry's copies of a transform, one embedded flame drawn
+        // by several terms: 4 M numbers each) is pointed at, not put in again.
+        const auto same = std::find_if(tables_.begin(), tables_.end(), [&](const std::pair<int, std::size_t>& placed) {
+          return placed.second == table.size() &&
+                 std::equal(table.begin(), table.end(), k_.data.begin() + placed.first,
+                            [](double v, float f) { return static_cast<float>(v) == f; });
+        });
+        put(static_cast<double>(same != tables_.end() ? same->first : static_cast<int>(k_.data.size()) + 2));
         put(static_cast<double>(table.size()));
-        put(table.data(), table.size());
+        if (same == tables_.end()) {
+          tables_.emplace_back(static_cast<int>(k_.data.size()), table.size());
+          put(table.data(), table.size());
+        }
       }
       if (gpuVariationReadsDoubles(t.info->name)) {
         const std::vector<float> words = gpuDoubleParams(full);
@@ -352,6 +396,18 @@ class Generator {
     return palette_;
   }
 
+  // Which of the kernel's parplot surfaces draws `term`'s formulas (one per set of formulas), −1
+  // where muParser cannot read one.
+  int surface(const core::VariationInfo& info, const core::VariationTerm& term) {
+    const auto formulas = termFormulas(info, term);
+    if (!formulas) return -1;
+    const auto found = std::find(surfaces_.begin(), surfaces_.end(), *formulas);
+    if (found != surfaces_.end()) return static_cast<int>(found - surfaces_.begin());
+    surfaces_.push_back(*formulas);
+    return static_cast<int>(surfaces_.size()) - 1;
+  }
+  const std::vector<std::array<std::string, 3>>& surfaces() const { return surfaces_; }
+
   // Where the noise tables lie in the data block, put there the first time a term asks.
   int noiseTables() {
     if (noise_ < 0) {
@@ -366,7 +422,9 @@ class Generator {
   FlameKernel& k_;
   bool paintsRgb_ = false;
   std::array<std::uint32_t, 256> variationPalette_;
-  std::size_t laneSlots_ = 0;  // gLane's doubles given out so far
+  std::size_t laneSlots_ = 0;                         // gLane's doubles given out so far
+  std::vector<std::pair<int, std::size_t>> tables_;   // the variations' tables in the data: where, how long
+  std::vector<std::array<std::string, 3>> surfaces_;  // parplot2d_wf's formulas, by surface
   int noise_ = -1, palette_ = -1;
 };
 
@@ -432,6 +490,7 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, b
   // A point a variation hid (JWildfire's doHide) is not drawn, though it goes on moving.
   s += game.hidesPointsByTerm() ? "  drawnColour = oc;\n  return visible && !gHidden;\n}\n"
                                 : "  drawnColour = oc;\n  return visible;\n}\n";
+  if (!g.surfaces().empty()) s += gpuParplotSurfaces(g.surfaces());
 }
 
 // core::ChaosGame::stepJulia in double: the inverse iteration multiplies each coordinate by the
@@ -495,6 +554,26 @@ std::vector<float> gpuDoubleParams(const std::vector<double>& params) {
   return words;
 }
 
+std::string gpuParplotSurfaces(const std::vector<std::array<std::string, 3>>& surfaces) {
+  std::string s = embeddedShader("parplot_functions.glsl").text;
+  s += "vec3 parplotSurface(int which, float u, float v, int Q) {\n";
+  s += "  float param_a = flameData[Q], param_b = flameData[Q + 1], param_c = flameData[Q + 2],\n"
+       "        param_d = flameData[Q + 3], param_e = flameData[Q + 4], param_f = flameData[Q + 5];\n"
+       "  switch (which) {\n";
+  for (std::size_t k = 0; k < surfaces.size(); ++k) {
+    std::array<std::string, 3> glsl;
+    for (std::size_t axis = 0; axis < 3; ++axis) {
+      ParplotGlsl translated = parplotFormulaGlsl(core::parplotMuParserText(surfaces[k][axis]));
+      if (!translated.error.empty())
+        throw core::Error("parplot2d_wf formula '" + surfaces[k][axis] + "': " + translated.error);
+      glsl[axis] = std::move(translated.glsl);
+    }
+    s += "    case " + std::to_string(k) + ":\n      return vec3(" + glsl[0] + ",\n                  " + glsl[1] +
+         ",\n                  " + glsl[2] + ");\n";
+  }
+  return s + "  }\n  return vec3(0.0);\n}\n";
+}
+
 std::vector<float> gpuNoiseExtras(const std::vector<double>& params, int tables) {
   // The slice's bits, low word first (GLSL's packDouble2x32), carried in floats that are only
   // copied, never computed with.
@@ -541,13 +620,23 @@ std::string flameKernelUnsupported(const core::PatternLayer& layer) {
   if (layer.kind == core::PatternKind::QuaternionJulia) return {};
   if (layer.kind != core::PatternKind::Flame) return "not a chaos-game layer";
   const core::FlameGenome& genome = layer.flame;
-  for (const core::FlameXform& xform : genome.xforms)
-    if (std::string why = xformUnsupported(xform); !why.empty()) return why;
+  std::vector<const core::FlameXform*> all;
+  for (const core::FlameXform& xform : genome.xforms) all.push_back(&xform);
   if (genome.hasFinal) {
-    if (std::string why = xformUnsupported(genome.finalXform); !why.empty()) return why;
-    for (const core::FlameXform& xform : genome.chainedFinals)
-      if (std::string why = xformUnsupported(xform); !why.empty()) return why;
+    all.push_back(&genome.finalXform);
+    for (const core::FlameXform& xform : genome.chainedFinals) all.push_back(&xform);
   }
+  std::set<std::string> embedded;  // the texts of the flames embedded by subflame terms
+  for (const core::FlameXform* xform : all) {
+    if (std::string why = xformUnsupported(*xform); !why.empty()) return why;
+    for (const core::VariationTerm& term : xform->variations)
+      if (const core::VariationInfo* info = core::findVariation(term.name);
+          info && term.weight != 0.0 && core::embedsFlame(*info))
+        embedded.insert(info->textsFor(term.texts).front());
+  }
+  // The kernel reads where a table starts as a float, exact up to 2²⁴; each embedded flame's cloud
+  // is 4 × 2²⁰ numbers, so three fit beside everything else.
+  if (embedded.size() > 3) return "more than three embedded flames";
   return {};
 }
 

@@ -8,6 +8,7 @@
 // calls are shaders/flame_variations.glsl.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <string_view>
@@ -53,6 +54,11 @@ std::string gpuVariationSource(const std::vector<std::string>& variations);
 // The variations it defines (as V_<name>), in the catalogue's spelling.
 const std::vector<std::string>& gpuFlameVariations();
 
+// The GLSL that defines parplotSurface (shaders/flame_variations_jwildfire.glsl) for parplot2d_wf's
+// surfaces, each three formulas (x, y, z) as its term gives them, surface k at `which` k, with the
+// functions the formulas call (shaders/parplot_functions.glsl). Throws core::Error for a formula
+// flameKernelUnsupported refuses.
+std::string gpuParplotSurfaces(const std::vector<std::array<std::string, 3>>& surfaces);
 // Whether the GPU's variation `name` reads simplex noise (crackle): its term's parameters (all of
 // them) are then followed in flameData by gpuNoiseExtras.
 bool gpuVariationReadsNoise(std::string_view name);

@@ -194,7 +194,7 @@ std::optional<std::string> compile(mu::Parser& p, const std::string& formula) {
   try {
     // JWildfire's empty formula is 0.0; one of blanks alone is a Java syntax error, which muParser
     // reports as an empty expression.
-    p.SetExpr(formula.empty() ? std::string("0") : fromJava(formula));
+    p.SetExpr(parplotMuParserText(formula));
     p.Eval();  // muParser parses on the first evaluation
     if (p.GetNumResults() != 1) return "it gives " + std::to_string(p.GetNumResults()) + " values, not one";
     return std::nullopt;
@@ -206,6 +206,10 @@ std::optional<std::string> compile(mu::Parser& p, const std::string& formula) {
 }
 
 }  // namespace
+
+std::string parplotMuParserText(const std::string& formula) {
+  return formula.empty() ? std::string("0") : fromJava(formula);
+}
 
 std::optional<std::string> parplotFormulaError(const std::string& formula) {
   mu::Parser p;

@@ -13,6 +13,10 @@
 
 namespace voxflame::core {
 
+// The formula as muParser reads it: Java's qualifiers, literal suffixes and casts rewritten (see
+// parplot_formula.cpp); an empty formula is "0". The GPU's kernel generator translates this text.
+std::string parplotMuParserText(const std::string& formula);
+
 // Why one formula cannot be evaluated (muParser's message), or nullopt when it can. An empty
 // formula is 0, as in JWildfire.
 std::optional<std::string> parplotFormulaError(const std::string& formula);

@@ -285,6 +285,18 @@ VOXFLAME_VARIATION_TARGETS void glynns3subfl(const VariationInput& in, double* _
   }
 }
 
+// The cloud a term draws from, for the GPU's copy of the kernels: x, y, z and colour index per point.
+std::vector<double> subflameTable(const double*, const std::string* texts) {
+  const std::shared_ptr<const EmbeddedCloud> cloud =
+      embeddedCloud(texts ? std::string_view(texts[0]) : std::string_view());
+  std::vector<double> table;
+  if (!cloud) return table;
+  table.reserve(4 * cloud->x.size());
+  for (std::size_t k = 0; k < cloud->x.size(); ++k)
+    table.insert(table.end(), {cloud->x[k], cloud->y[k], cloud->z[k], cloud->colour[k]});
+  return table;
+}
+
 // The subflame parameters both variations share, with JWildfire's defaults (`colourMode` differs).
 std::vector<VariationParam> subflameParams(double colourMode) {
   const auto count = &CatalogueAdder::count;
@@ -352,6 +364,7 @@ void variation_kernels::addSubflameVariations(std::vector<VariationInfo>& catalo
   catalogue.back().textParams = {{"flame", ""}};
   catalogue.back().directColour = true;
   catalogue.back().additive = true;
+  catalogue.back().table = &subflameTable;
   {
     std::vector<VariationParam> params = {
         {"probability", 0.5, 0.0, 1.0}, count("show", 1.0, 0.0, 1.0), {"radius", 1.0, 0.1, 2.1},
@@ -370,6 +383,7 @@ void variation_kernels::addSubflameVariations(std::vector<VariationInfo>& catalo
   catalogue.back().textParams = {{"flame", ""}};
   catalogue.back().directColour = true;
   catalogue.back().readsSum = true;
+  catalogue.back().table = &subflameTable;
 }
 
 }  // namespace voxflame::core

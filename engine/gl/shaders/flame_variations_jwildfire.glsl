@@ -1411,3 +1411,106 @@ vec3 V_colormap_wf(vec3 p, float w, int P, int A) {
   o.z = resets ? dz : o.z + dz;
   return o;
 }
+
+// subflame_wf and glynns3subfl: a point of the embedded flame's attractor. Their table is the CPU's
+// cloud of it (x, y, z and colour index per point), built once per embedded flame; Ψ picks a point
+// and the shape's parameters at S (scale, angle in degrees, offset_x, offset_y, offset_z,
+// colorscale_z, color_mode) move it. False, Ψ drawn all the same, when the cloud is empty.
+bool subflamePoint(int P, int S, int N, out vec3 q) {
+  int count = tableSize(P, N) / 4;
+  float draw = psi();
+  q = vec3(0.0);
+  if (count == 0) return false;
+  int at = tableAt(P, N) + 4 * tableIndex(draw, count);
+  float scale = P_(S, 0), angle = P_(S, 1) * kPi / 180.0;
+  float cosA = cos(angle), sinA = sin(angle);
+  float x = scale * flameData[at], y = scale * flameData[at + 1], c = flameData[at + 3];
+  q = vec3(x * cosA - y * sinA + P_(S, 2), x * sinA + y * cosA + P_(S, 3),
+           scale * flameData[at + 2] + P_(S, 4) + P_(S, 5) * c);
+  float mode = P_(S, 6);  // −1 leaves the colour alone; a NaN is taken as −1
+  if (!isnan(mode) && clamp(roundHalfAway(mode), -2.0, 4.0) != -1.0) gColour = c;
+  return true;
+}
+// subflame_wf: the point q added without the weight, as JWildfire adds it.
+vec3 V_subflame_wf(vec3 p, float w, int P, int A) {
+  vec3 q;
+  subflamePoint(P, P, 12, q);
+  return q;
+}
+// glynns3subfl: with chance `probability` Glynn's circle inversion of (x, y) replaces the sum's x and
+// y (z carried), else w q is added (the CPU's glynns3subfl says the rule). Draws: the inversion's,
+// the branch's, the subflame's.
+vec3 V_glynns3subfl(vec3 p, float w, int P, int A) {
+  float probability = clamp(P_(P, 0), 0.0, 1.0);
+  bool show = trunc(clamp(P_(P, 1), 0.0, 1.0)) == 1.0;
+  float radius = P_(P, 2), thickness = clamp(P_(P, 3), 0.0, 1.0), contrast = clamp(P_(P, 4), 0.0, 1.0);
+  float absPow = abs(P_(P, 5));
+  bool circle2 = trunc(P_(P, 6)) == 0.0 || isnan(P_(P, 6));  // Java's (int) cast: NaN is 0
+  float radius1 = radius + thickness, radius2 = radius * radius / radius1;
+  float gamma2 = radius1 / (radius1 + radius2);
+  float phi10 = kPi * P_(P, 7) / 180.0, delta = kPi * P_(P, 8) / 180.0 - phi10;
+  float gamma1 = thickness * (2.0 * radius + thickness) / (radius + thickness);
+  float inner = circle2 ? radius1 : radius;
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  float alpha = radius / r;
+  vec2 g = p.xy;
+  if (r < inner) {
+    if (show) {
+      float rr, phi;
+      if (circle2) {
+        phi = kTwoPi * psi();
+        rr = psi() < gamma2 ? radius1 : radius2;
+      } else {
+        rr = radius + thickness - gamma1 * psi();
+        phi = phi10 + delta * psi();
+      }
+      g = rr * vec2(cos(phi), sin(phi));
+    }
+  } else if (!(psi() > contrast * pow(alpha, absPow))) {
+    g = alpha * alpha * p.xy;
+  }
+  if (psi() < probability) return vec3(w * g, gSum.z + w * p.z);
+  vec3 q;
+  if (!subflamePoint(P, P + 9, 21, q)) return gSum;
+  return gSum + w * q;
+}
+
+// parplot2d_wf's surfaces: the kernel generator defines this from the terms' formulas (surface
+// `which`, param_a … param_f at flameData[Q …]; flame_kernel.cpp).
+vec3 parplotSurface(int which, float u, float v, int Q);
+// parplot2d_wf: w (X(u, v), Y(u, v), Z(u, v)), (u, v) drawn in [umin, umax] × [vmin, vmax] (or read
+// from x and y with solid 0); the colour index from u and v with direct_color (the CPU's
+// parplot2dWf says the rule). After the parameters: which surface, −1 where a formula does not
+// compile, which adds nothing and draws nothing, as on the CPU.
+vec3 V_parplot2d_wf(vec3 p, float w, int P, int A) {
+  int which = int(P_(P, 17));
+  if (which < 0) return vec3(0.0);
+  float uMin = P_(P, 1), uMax = P_(P, 2), vMin = P_(P, 3), vMax = P_(P, 4);
+  if (uMin > uMax) {
+    float swap = uMin;
+    uMin = uMax;
+    uMax = swap;
+  }
+  if (vMin > vMax) {
+    float swap = vMin;
+    vMin = vMax;
+    vMax = swap;
+  }
+  float du = uMax - uMin, dv = vMax - vMin;
+  bool solid = roundHalfAway(P_(P, 10)) != 0.0;
+  float mode = roundHalfAway(P_(P, 6));
+  bool setsColour = roundHalfAway(P_(P, 5)) > 0.0 && mode != 0.0;
+  float s = p.x, t = p.y;
+  if (solid) {
+    s = psi();
+    t = psi();
+  }
+  float u = uMin + s * du, v = vMin + t * dv;
+  vec3 q = parplotSurface(which, u, v, P + 11);
+  if (setsColour) {
+    float cu = (u - uMin) / du, cv = (v - vMin) / dv;
+    float c = mode == 1.0 ? cu : mode == 2.0 ? cv : cv * cu;
+    gColour = isnan(c) ? 0.0 : clamp(c, 0.0, 1.0);
+  }
+  return w * q;
+}
