@@ -1,7 +1,10 @@
-// Helpers shared by the suites that drive the GPU backend: the default preset's mask, and whether
-// a headless GL context can be made here at all.
+// Helpers shared by the suites that drive the GPU backend: the default preset's mask, whether a
+// headless GL context can be made here at all, and a storage buffer's upload.
 #pragma once
 
+#include <epoxy/gl.h>
+
+#include <cstddef>
 #include <memory>
 
 #include "core/error.h"
@@ -26,6 +29,13 @@ inline bool glAvailable() {
   } catch (const core::Error&) {
     return false;
   }
+}
+
+// `bytes` of `values` into `buffer`, bound to storage-buffer binding `binding`.
+inline void uploadStorage(GLuint buffer, GLuint binding, std::size_t bytes, const void* values) {
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), values, GL_DYNAMIC_DRAW);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
 }
 
 }  // namespace voxflame::test

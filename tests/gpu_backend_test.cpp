@@ -665,16 +665,11 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     std::vector<std::uint32_t> gpuStreams = streams;
     std::array<GLuint, 5> buffers{};
     glGenBuffers(5, buffers.data());
-    const auto upload = [](GLuint buffer, GLuint binding, std::size_t bytes, const void* values) {
-      glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-      glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), values, GL_DYNAMIC_DRAW);
-      glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
-    };
-    upload(buffers[0], 0, points.size() * sizeof(float), points.data());
-    upload(buffers[1], 1, gpuStreams.size() * sizeof(std::uint32_t), gpuStreams.data());
-    upload(buffers[2], 8, data.size() * sizeof(float), data.data());
-    upload(buffers[3], 2, sums.size() * sizeof(float), sums.data());
-    upload(buffers[4], 3, flags.size() * sizeof(std::uint32_t), flags.data());
+    test::uploadStorage(buffers[0], 0, points.size() * sizeof(float), points.data());
+    test::uploadStorage(buffers[1], 1, gpuStreams.size() * sizeof(std::uint32_t), gpuStreams.data());
+    test::uploadStorage(buffers[2], 8, data.size() * sizeof(float), data.data());
+    test::uploadStorage(buffers[3], 2, sums.size() * sizeof(float), sums.data());
+    test::uploadStorage(buffers[4], 3, flags.size() * sizeof(std::uint32_t), flags.data());
     glUseProgram(program->second.id());
     glUniform1i(program->second.uniform("uWhich"), which);
     glUniform1i(program->second.uniform("uStage"), stage);

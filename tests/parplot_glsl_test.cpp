@@ -66,14 +66,9 @@ Evaluated evaluate(const std::vector<std::string>& formulas) {
   std::vector<float> results(surfaces.size() * kPoints * 4);
   std::array<GLuint, 3> buffers{};
   glGenBuffers(3, buffers.data());
-  const auto upload = [](GLuint buffer, GLuint binding, std::size_t bytes, const void* values) {
-    glBindBuffer(GL_SHADER_STORAGE_BUFFER, buffer);
-    glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(bytes), values, GL_DYNAMIC_DRAW);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, buffer);
-  };
-  upload(buffers[0], 0, uv.size() * sizeof(float), uv.data());
-  upload(buffers[1], 1, results.size() * sizeof(float), results.data());
-  upload(buffers[2], 8, data.size() * sizeof(float), data.data());  // flameData
+  test::uploadStorage(buffers[0], 0, uv.size() * sizeof(float), uv.data());
+  test::uploadStorage(buffers[1], 1, results.size() * sizeof(float), results.data());
+  test::uploadStorage(buffers[2], 8, data.size() * sizeof(float), data.data());  // flameData
   glUseProgram(program.id());
   glDispatchCompute(static_cast<GLuint>(surfaces.size()), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);

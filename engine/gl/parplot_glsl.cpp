@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "core/flame/parplot_formula.h"
+
 namespace voxflame::gl {
 
 namespace {
@@ -29,32 +31,15 @@ std::string floatLiteral(double value) {
   return value < 0.0 ? "(" + literal + ")" : literal;
 }
 
-// The names a formula may read besides u, v and param_a … param_f: parplot_formula.cpp's
-// constants, and muParser's own (_pi as muParser rounds it).
+// The names a formula may read besides u, v and param_a … param_f: core's parplotConstants, and
+// muParser's own (_pi as muParser rounds it).
 const std::map<std::string, double, std::less<>>& constants() {
-  constexpr double kPi = std::numbers::pi;
-  static const std::map<std::string, double, std::less<>> table = {
-      {"pi", kPi},
-      {"PI", kPi},
-      {"E", std::numbers::e},
-      {"M_PI", kPi},
-      {"M_PI_2", kPi * 0.5},
-      {"M_PI_4", kPi * 0.25},
-      {"M_1_PI", 1.0 / kPi},
-      {"M_2_PI", 2.0 / kPi},
-      {"M_2PI", 2.0 * kPi},
-      {"M_1_2PI", 1.0 / kPi / 2.0},
-      {"M_SQRT2", std::numbers::sqrt2},
-      {"M_E", std::numbers::e},
-      {"M_LOG2E", std::numbers::log2e},
-      {"EPSILON", 1e-8},
-      {"SMALL_EPSILON", 1e-300},
-      {"C_255", 255.0},
-      {"TRUE", 1.0},
-      {"FALSE", 0.0},
-      {"_pi", 3.141592653589},
-      {"_e", std::numbers::e},
-  };
+  static const std::map<std::string, double, std::less<>> table = [] {
+    std::map<std::string, double, std::less<>> names(core::parplotConstants().begin(), core::parplotConstants().end());
+    names["_pi"] = 3.141592653589;
+    names["_e"] = std::numbers::e;
+    return names;
+  }();
   return table;
 }
 

@@ -149,30 +149,8 @@ void defineJwildfireNames(mu::Parser& p) {
   for (const auto& [name, fn] : two) p.DefineFun(name, fn);
   p.DefineOprt("%", &javaRemainder, mu::prMUL_DIV, mu::oaLEFT, true);
   p.DefineInfixOprt("!", &logicalNot);
-  // `pi` is a local of JWildfire's generated code; the rest are MathLib's constants (and Math.PI,
-  // Math.E once their qualifier is dropped). A bare `e` is none of them: JWildfire rejects it.
-  constexpr double kPi = std::numbers::pi;
-  const std::pair<const char*, double> constants[] = {
-      {"pi", kPi},
-      {"PI", kPi},
-      {"E", std::numbers::e},
-      {"M_PI", kPi},
-      {"M_PI_2", kPi * 0.5},
-      {"M_PI_4", kPi * 0.25},
-      {"M_1_PI", 1.0 / kPi},
-      {"M_2_PI", 2.0 / kPi},
-      {"M_2PI", 2.0 * kPi},
-      {"M_1_2PI", 1.0 / kPi / 2.0},
-      {"M_SQRT2", std::numbers::sqrt2},
-      {"M_E", std::numbers::e},
-      {"M_LOG2E", std::numbers::log2e},
-      {"EPSILON", 1e-8},
-      {"SMALL_EPSILON", 1e-300},
-      {"C_255", 255.0},
-      {"TRUE", 1.0},
-      {"FALSE", 0.0},
-  };
-  for (const auto& [name, value] : constants) p.DefineConst(name, value);
+  // A bare `e` is none of the constants: JWildfire rejects it.
+  for (const auto& [name, value] : parplotConstants()) p.DefineConst(name, value);
 }
 
 // The values a formula reads; muParser keeps their addresses.
@@ -206,6 +184,31 @@ std::optional<std::string> compile(mu::Parser& p, const std::string& formula) {
 }
 
 }  // namespace
+
+const std::vector<std::pair<std::string, double>>& parplotConstants() {
+  constexpr double kPi = std::numbers::pi;
+  static const std::vector<std::pair<std::string, double>> constants = {
+      {"pi", kPi},
+      {"PI", kPi},
+      {"E", std::numbers::e},
+      {"M_PI", kPi},
+      {"M_PI_2", kPi * 0.5},
+      {"M_PI_4", kPi * 0.25},
+      {"M_1_PI", 1.0 / kPi},
+      {"M_2_PI", 2.0 / kPi},
+      {"M_2PI", 2.0 * kPi},
+      {"M_1_2PI", 1.0 / kPi / 2.0},
+      {"M_SQRT2", std::numbers::sqrt2},
+      {"M_E", std::numbers::e},
+      {"M_LOG2E", std::numbers::log2e},
+      {"EPSILON", 1e-8},
+      {"SMALL_EPSILON", 1e-300},
+      {"C_255", 255.0},
+      {"TRUE", 1.0},
+      {"FALSE", 0.0},
+  };
+  return constants;
+}
 
 std::string parplotMuParserText(const std::string& formula) {
   return formula.empty() ? std::string("0") : fromJava(formula);

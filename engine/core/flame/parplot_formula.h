@@ -10,12 +10,18 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace voxflame::core {
 
 // The formula as muParser reads it: Java's qualifiers, literal suffixes and casts rewritten (see
 // parplot_formula.cpp); an empty formula is "0". The GPU's kernel generator translates this text.
 std::string parplotMuParserText(const std::string& formula);
+
+// The constants a formula may name besides muParser's own (_pi, _e): `pi`, a local of JWildfire's
+// generated code, and MathLib's constants (Math.PI and Math.E once their qualifier is dropped).
+const std::vector<std::pair<std::string, double>>& parplotConstants();
 
 // Why one formula cannot be evaluated (muParser's message), or nullopt when it can. An empty
 // formula is 0, as in JWildfire.
