@@ -145,17 +145,14 @@ bool drawsFormulas(const core::VariationInfo& info) {
   return info.name == "parplot2d_wf";
 }
 
-// A parplot2d_wf term's three formulas, or nullopt where muParser cannot read one (the CPU's term
-// then adds nothing, and the GPU's likewise).
+// A parplot2d_wf term's three formulas, or nullopt where muParser cannot read one: the CPU's own
+// test (its evaluator, compiled once per thread and kept), where the term then adds nothing, as
+// the GPU's does.
 std::optional<std::array<std::string, 3>> termFormulas(const core::VariationInfo& info,
                                                        const core::VariationTerm& term) {
   const std::vector<std::string> texts = info.textsFor(term.texts);
-  std::array<std::string, 3> formulas;
-  for (std::size_t k = 0; k < 3; ++k) {
-    if (core::parplotFormulaError(texts[k])) return std::nullopt;
-    formulas[k] = texts[k];
-  }
-  return formulas;
+  if (!core::parplotEvaluator(texts[0], texts[1], texts[2]).ok()) return std::nullopt;
+  return std::array<std::string, 3>{texts[0], texts[1], texts[2]};
 }
 
 // Why one transform cannot run on the GPU, or empty.
