@@ -22,15 +22,20 @@ const std::string kFlame = std::string(VOXFLAME_SOURCE_DIR) + "/presets/flame-si
 const std::string kAttractor = std::string(VOXFLAME_SOURCE_DIR) + "/presets/aizawa-orb.json";
 const std::string kJulia = std::string(VOXFLAME_SOURCE_DIR) + "/presets/qjulia-loop.json";
 
-// The silk bunny with what the GPU's chaos game does not have (a weighting field on a transform),
-// written into `folder`.
+// The silk bunny with what the GPU's chaos game does not have (a weighting field that moves a
+// parameter of crackle, whose GPU port reads numbers derived from its parameters), written into
+// `folder`.
 std::string flameTheGpuLacks(const std::filesystem::path& folder) {
   std::ifstream in(kFlame);
   std::stringstream text;
   text << in.rdbuf();
   std::string json = text.str();
   const std::string variations = "\"variations\": [";
-  json.insert(json.find(variations), "\"field\": {\"kind\": \"noise\", \"amount\": 0.5}, ");
+  json.insert(json.find(variations) + variations.size(),
+              "{\"name\": \"crackle\", \"weight\": 0.1, \"cellsize\": 1.0}, ");
+  json.insert(json.find(variations),
+              "\"field\": {\"kind\": \"noise\", \"param1_variation\": \"crackle\", "
+              "\"param1_name\": \"cellsize\", \"param1_intensity\": 0.5}, ");
   // The mesh path is relative to the preset: the copy names the shipped one.
   const std::string mesh = "\"meshes/bunny.obj\"";
   json.replace(json.find(mesh), mesh.size(), "\"" + std::string(VOXFLAME_SOURCE_DIR) + "/presets/meshes/bunny.obj\"");
@@ -223,8 +228,9 @@ TEST(ChunkBackends, TheGpuBackendRefusesWhatItDoesNotRunWithAMessage) {
   auto result =
       runVoxflame("render " + lacking + kQuick + kSize + " -o f.png --method volume --backend gpu", folder.path());
   EXPECT_EQ(result.exitStatus, 1) << result.output;
-  EXPECT_TRUE(
-      contains(result.output, "a flame layer needs the CPU backend: the GPU backend does not have a weighting field"))
+  EXPECT_TRUE(contains(result.output,
+                       "a flame layer needs the CPU backend: the GPU backend does not have a weighting field "
+                       "on crackle's parameters"))
       << result.output;
   // auto falls back to the CPU, whatever the machine.
   result =

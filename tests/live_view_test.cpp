@@ -12,13 +12,13 @@
 #include <fstream>
 
 #include "core/camera.h"
-#include "core/flame/variations.h"
 #include "core/image_io.h"
 #include "core/image_metrics.h"
 #include "core/scene.h"
 #include "core/scene_io.h"
 #include "explorer_session.h"
 #include "export_job.h"
+#include "gl_test_support.h"
 #include "gl/canvas.h"
 #include "gl/gpu_accumulator.h"
 #include "gl/headless_context.h"
@@ -773,8 +773,8 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
     return gpuSession.takeVolumeIfNewer(volume) && volume.points > 0 && volume.maxDensity > 0.0f;
   }));
 
-  // A flame of the GPU's variations refines there; one with what it lacks (a weighting field) falls back to the
-  // CPU, saying why.
+  // A flame of the GPU's variations refines there; one with what it lacks (a weighting field on crackle's
+  // parameters) falls back to the CPU, saying why.
   core::Scene flame = scene;
   flame.layers.front().kind = core::PatternKind::Flame;
   flame.layers.front().flame = core::defaultFlame();
@@ -783,8 +783,7 @@ TEST_F(LiveViewTest, TheRefinementBackendSettingPicksWhatRefinesTheLargeGrid) {
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Gpu) << gpuSession.status().backendNote;
   core::Scene lacking = flame;
-  lacking.layers.front().flame.xforms.front().fieldKind = core::WeightFieldKind::Noise;
-  lacking.layers.front().flame.xforms.front().fieldAmount = 0.5;
+  test::addWhatTheGpuLacks(lacking.layers.front().flame.xforms.front());
   gpuSession.post(lacking);
   ASSERT_TRUE(gpuSession.waitUntilApplied(120.0));
   EXPECT_EQ(gpuSession.status().backend, core::BackendKind::Cpu);

@@ -242,30 +242,10 @@ ChaosGame::Compiled ChaosGame::compile(const FlameXform& xform) {
                          info.name == "flatten",
                          info.replaces,
                          info.readsSum,
-                         {},
-                         0.0});
+                         {}});
       c.terms.back().texts = info.textsFor(term.texts);
       c.terms.back().laneState = info.laneState;
-      if (c.hasField) {
-        // JWildfire's Variation.addWeightingFieldParam: every term of the named variation, the
-        // first entry of a parameter name counting.
-        Term& added = c.terms.back();
-        bool weightSet = false;
-        for (const FlameXform::FieldParam& p : xform.fieldParams()) {
-          if (p.intensity == 0.0 || p.variation != term.name) continue;
-          if (p.name == "amount") {
-            if (!weightSet) added.fieldWeight = p.intensity;
-            weightSet = true;
-            continue;
-          }
-          const int index = info.paramIndex(p.name);
-          if (index < 0 || static_cast<std::size_t>(index) >= added.params.size()) continue;
-          const auto at = static_cast<std::size_t>(index);
-          if (std::none_of(added.fieldParams.begin(), added.fieldParams.end(),
-                           [&](const Term::FieldParam& q) { return q.index == at; }))
-            added.fieldParams.push_back({at, p.intensity, info.params[at].integer || info.params[at].jwildfireInt});
-        }
-      }
+      if (c.hasField) c.terms.back().field = weightFieldTerm(xform, term, info);
       c.hasNormalTerms = c.hasNormalTerms || stage == VariationStage::Normal;
       c.drawsRandom = c.drawsRandom || info.random;
       c.directColour = c.directColour || info.directColour;
@@ -458,7 +438,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, const std::
   const double* __restrict noise = lanes.fieldNoise.data();
   // A term's factor in lane j: the field's, times its own weight's (the field's `amount` parameter).
   const auto factor = [&](const Term& term, std::size_t j) {
-    return term.fieldWeight == 0.0 ? field[j] : field[j] * (1.0 + noise[j] * term.fieldWeight);
+    return term.field.weight == 0.0 ? field[j] : field[j] * (1.0 + noise[j] * term.field.weight);
   };
   const auto scaleByField = [&](const Term& term, double* a, double* b, double* c) {
     for (std::size_t j = 0; j < count; ++j) {
@@ -512,7 +492,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, const std::
     const bool ordinary = term.stage == VariationStage::Normal;
     in.movableX = ordinary ? tx : nullptr;
     in.movableY = ordinary ? ty : nullptr;
-    if (term.fieldParams.empty()) {
+    if (term.field.params.empty()) {
       term.apply(in, rx, ry, rz);
       return;
     }
@@ -525,7 +505,7 @@ void ChaosGame::applyGroup(const Compiled& xform, ChaosLanes& lanes, const std::
     for (std::size_t j = 0; j < groupSize; ++j) {
       double* const own = params.data() + j * size;
       std::copy(term.params.begin(), term.params.end(), own);
-      for (const Term::FieldParam& p : term.fieldParams) {
+      for (const WeightFieldTerm::Param& p : term.field.params) {
         const double scaled = own[p.index] * (1.0 + noise[j] * p.intensity);
         own[p.index] = p.integer ? std::round(scaled) : scaled;  // JWildfire's FTOI for an int parameter
       }

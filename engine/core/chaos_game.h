@@ -107,16 +107,8 @@ class ChaosGame {
     bool flattens = false;                                                // flatten: z is 0 after this stage
     VariationInfo::Replaces replaces = VariationInfo::Replaces::Nothing;  // as an ordinary term
     bool readsSum = false;                                                // as an ordinary term
-    // What the transform's weighting field does to this term besides `field`: parameters it
-    // scales per point (rounded where it is a count, or an int in JWildfire), and its own weight (the
-    // field's `amount` parameter).
-    struct FieldParam {
-      std::size_t index = 0;
-      double intensity = 0.0;
-      bool integer = false;
-    };
-    std::vector<FieldParam> fieldParams;
-    double fieldWeight = 0.0;
+    // What the transform's weighting field does to this term besides `field` (weightFieldTerm).
+    WeightFieldTerm field;
     std::vector<std::string> texts{};  // its text parameters, all of them
     std::size_t laneState = 0;         // VariationInfo::laneState
     std::size_t stateSlot = 0;         // its array in ChaosLanes::termState when laneState > 0

@@ -29,9 +29,11 @@ namespace {
 // The files of the GPU's variations, in the order they are put together: flame_variations.glsl
 // first, as it declares the data buffers and the helpers (psi, atan2c, ...) the others call. A
 // family's file is the CPU catalogue's family (core/flame/variations_*.cpp) in float.
-constexpr std::array<std::string_view, 6> kVariationFiles = {
+// weight_field.glsl last: the weighting fields' noise, which calls simplexNoise3D.
+constexpr std::array<std::string_view, 7> kVariationFiles = {
     "flame_variations.glsl",    "flame_variations_2d.glsl",    "flame_variations_2d_more.glsl",
-    "flame_variations_3d.glsl", "flame_variations_blurs.glsl", "flame_variations_jwildfire.glsl"};
+    "flame_variations_3d.glsl", "flame_variations_blurs.glsl", "flame_variations_jwildfire.glsl",
+    "weight_field.glsl"};
 
 // The variation files split for the kernels: every top-level function apart (the V_<name>
 // variations and the helpers they call), and the rest (buffers, constants, globals, macros) kept
@@ -155,14 +157,22 @@ std::optional<std::array<std::string, 3>> termFormulas(const core::VariationInfo
   return std::array<std::string, 3>{texts[0], texts[1], texts[2]};
 }
 
+// Whether the GPU's variation reads numbers the generator derives from its parameters (a table
+// built from them, crackle's slice in double, the parameters in double, parplot2d_wf's surface),
+// which a weighting field that moves its parameters per point would leave as they were.
+bool derivesFromParameters(const core::VariationInfo& info) {
+  return info.table || gpuVariationReadsNoise(info.name) || gpuVariationReadsDoubles(info.name) || drawsFormulas(info);
+}
+
 // Why one transform cannot run on the GPU, or empty.
 std::string xformUnsupported(const core::FlameXform& xform) {
-  if (xform.hasWeightField()) return "a weighting field";
   for (const core::VariationTerm& term : xform.variations) {
     if (term.weight == 0.0) continue;
     const core::VariationInfo* info = core::findVariation(term.name);
     if (!info) return "variation '" + term.name + "'";
     if (!gpuHasVariation(info->name)) return "variation '" + term.name + "'";
+    if (derivesFromParameters(*info) && !core::weightFieldTerm(xform, term, *info).params.empty())
+      return "a weighting field on " + term.name + "'s parameters";
     if (drawsFormulas(*info)) {
       if (const auto formulas = termFormulas(*info, term))
         for (const std::string& formula : *formulas)
@@ -234,6 +244,17 @@ class Generator {
     s += "  vec3 t = vec3(dot(vec3(flameData[A], flameData[A + 1], flameData[A + 2]), p) + flameData[A + 3],\n"
          "                dot(vec3(flameData[A + 4], flameData[A + 5], flameData[A + 6]), p) + flameData[A + 7],\n"
          "                dot(vec3(flameData[A + 8], flameData[A + 9], flameData[A + 10]), p) + flameData[A + 11]);\n";
+    // The weighting field (core::ChaosGame::fillField): its noise n at the transform's input or at
+    // the affine point, and every term's factor 1 + amount · n.
+    const bool field = xform.hasWeightField();
+    int fieldAt = -1;
+    if (field) {
+      fieldAt = fieldBlock(xform);
+      const int amount = put(xform.fieldAmount);
+      s += "  float fieldN = weightFieldNoise(" + std::to_string(fieldAt) + ", " +
+           (xform.fieldInput == core::WeightFieldInput::Position ? "p" : "t") + ");\n";
+      s += "  float field = 1.0 + flameData[" + std::to_string(amount) + "] * fieldN;\n";
+    }
     struct Term {
       const core::VariationInfo* info;
       const core::VariationTerm* term;
@@ -245,6 +266,9 @@ class Generator {
         if (term.weight == 0.0 || core::variationStage(term.name) != stage) continue;
         stages[static_cast<int>(stage)].push_back({core::findVariation(term.name), &term});
       }
+    // Code a term's call needs before the statement that calls it: the copy of its numbers that the
+    // field's noise moves (core::ChaosGame::applyGroup's lane-by-lane parameters).
+    std::string setup;
     const auto call = [&](const Term& t, const char* point) {
       // Shared blocks (crackle's noise tables, the palette) go in before the term's numbers, which
       // must follow one another.
@@ -296,15 +320,43 @@ class Generator {
         k_.data.insert(k_.data.end(), words.begin(), words.end());
       }
       k_.variations.push_back(t.info->name);
-      return "V_" + t.info->name + "(" + point + ", flameData[" + std::to_string(weight) + "], " +
-             std::to_string(params) + ", A)";
+      const core::WeightFieldTerm moved =
+          field ? core::weightFieldTerm(xform, *t.term, *t.info) : core::WeightFieldTerm{};
+      std::string at = std::to_string(params);
+      setup.clear();
+      if (!moved.params.empty()) {
+        // Everything the variation reads relative to P (xformUnsupported refused those whose numbers
+        // are derived from the parameters), into gFieldBlock, each moved parameter scaled there.
+        const std::size_t block = k_.data.size() - static_cast<std::size_t>(params);
+        k_.fieldBlock = std::max(k_.fieldBlock, block);
+        setup +=
+            "  for (int i = 0; i < " + std::to_string(block) + "; ++i) gFieldBlock[i] = flameData[" + at + " + i];\n";
+        for (const core::WeightFieldTerm::Param& moving : moved.params) {
+          const std::string slot = "gFieldBlock[" + std::to_string(moving.index) + "]";
+          const std::string scaled =
+              slot + " * (1.0 + fieldN * flameData[" + std::to_string(put(moving.intensity)) + "])";
+          // An integer parameter rounds half away from 0, as std::round (JWildfire's FTOI).
+          setup += "  " + slot + " = " +
+                   (moving.integer ? "sign(" + scaled + ") * floor(abs(" + scaled + ") + 0.5)" : scaled) + ";\n";
+        }
+        at = "kFieldBlock";
+      }
+      return "V_" + t.info->name + "(" + point + ", flameData[" + std::to_string(weight) + "], " + at + ", A)";
+    };
+    // A term's factor under the field: the field's, times its own weight's (WeightFieldTerm::weight).
+    const auto factor = [&](const Term& t) -> std::string {
+      const double weight = core::weightFieldTerm(xform, *t.term, *t.info).weight;
+      if (weight == 0.0) return "field";
+      return "field * (1.0 + fieldN * flameData[" + std::to_string(put(weight)) + "])";
     };
     // A pre_ or post_ term replaces the coordinates its variation maps (or adds to them, for an
     // additive one) and keeps the others: core's combineStage.
     const auto combine = [&](const Term& t, const char* point) {
       // One that reads the sum finds none here: its result is all it adds (core clears the output).
       std::string code = t.info->readsSum ? "  gSum = vec3(0.0);\n" : "";
-      code += "  { vec3 r = " + call(t, point) + ";\n";
+      const std::string called = call(t, point);
+      code += setup + "  { vec3 r = " + called + ";\n";
+      if (field) code += "    r *= " + factor(t) + ";\n";
       const std::string op = t.info->additive ? " += " : " = ";
       if (t.info->mapsXY) code += std::string("    ") + point + ".xy" + op + "r.xy;\n";
       if (t.info->threeD) code += std::string("    ") + point + ".z" + op + "r.z;\n";
@@ -324,10 +376,16 @@ class Generator {
       using Replaces = core::VariationInfo::Replaces;
       if (t.info->replaces == Replaces::XY || t.info->replaces == Replaces::XYZ) s += "  o.xy = vec2(0.0);\n";
       if (t.info->replaces == Replaces::Z || t.info->replaces == Replaces::XYZ) s += "  o.z = 0.0;\n";
-      if (t.info->readsSum)
-        s += "  gSum = o;\n  o = " + call(t, "t") + ";\n";  // it returns the new sum
+      const std::string called = call(t, "t");
+      s += setup;
+      if (t.info->readsSum && field)  // its change to the sum, scaled
+        s += "  gSum = o;\n  o += " + factor(t) + " * (" + called + " - o);\n";
+      else if (t.info->readsSum)
+        s += "  gSum = o;\n  o = " + called + ";\n";  // it returns the new sum
+      else if (field)
+        s += "  o += " + factor(t) + " * " + called + ";\n";
       else
-        s += "  o += " + call(t, "t") + ";\n";
+        s += "  o += " + called + ";\n";
       // An ordinary term may move the transform's point for the terms after it (crob, core's
       // movableX/Y); where none does, the driver folds this away.
       s += "  t = gVariationT;\n";
@@ -343,6 +401,14 @@ class Generator {
            "           dot(vec3(flameData[Q + 4], flameData[Q + 5], flameData[Q + 6]), o) + flameData[Q + 7],\n"
            "           dot(vec3(flameData[Q + 8], flameData[Q + 9], flameData[Q + 10]), o) + flameData[Q + 11]);\n";
     }
+    if (field && xform.fieldJitter != 0.0) {
+      // core::ChaosGame::jitterByField: each coordinate in turn, read at the point as moved so far.
+      const std::string jitter = "flameData[" + std::to_string(put(0.1 * xform.fieldJitter)) + "]";
+      const std::string noise = "weightFieldNoise(" + std::to_string(fieldAt) + ", ";
+      s += "  o.x += " + jitter + " * " + noise + "vec3(o.x, o.y, o.z));\n";
+      s += "  o.y += " + jitter + " * " + noise + "vec3(o.y, o.x, o.z));\n";
+      s += "  o.z += " + jitter + " * " + noise + "vec3(o.z, o.x, o.y));\n";
+    }
     const int opacity = put(xform.opacity);
     if (direct) {
       // Fractorium's Xform::Apply: saved + direct_color · (set − saved), NaN as 0.
@@ -352,6 +418,8 @@ class Generator {
     } else {
       s += "  c = flameData[" + std::to_string(blend) + "] * c + flameData[" + std::to_string(blend + 1) + "];\n";
     }
+    if (field && xform.fieldColor != 0.0)  // core::ChaosGame::colourByField, after the blend
+      s += "  c *= 1.0 + flameData[" + std::to_string(put(0.1 * xform.fieldColor)) + "] * fieldN;\n";
     // The point's true colour (core::ChaosGame::keepPaintedRgb): a transform's replaces it (none
     // painted: the colour index's), a final transform's only where it paints one.
     if (paintsRgb_ && !final) s += paints ? "  gPointRgb = gRgb;\n" : "  gPointRgb = 0u;\n";
@@ -404,6 +472,17 @@ class Generator {
     return static_cast<int>(surfaces_.size()) - 1;
   }
   const std::vector<std::array<std::string, 3>>& surfaces() const { return surfaces_; }
+
+  // Where a transform's weighting field lies in the data block (weight_field.glsl's layout); puts
+  // the noise tables first where its noise is simplex.
+  int fieldBlock(const core::FlameXform& xform) {
+    const int tables = xform.fieldNoise == core::WeightFieldNoise::Simplex ? noiseTables() : 0;
+    k_.variations.emplace_back("weightFieldNoise");
+    const int at = static_cast<int>(k_.data.size());
+    const std::vector<float> block = gpuWeightFieldBlock(xform, tables);
+    k_.data.insert(k_.data.end(), block.begin(), block.end());
+    return at;
+  }
 
   // Where the noise tables lie in the data block, put there the first time a term asks.
   int noiseTables() {
@@ -579,6 +658,30 @@ std::vector<float> gpuNoiseExtras(const std::vector<double>& params, int tables)
           std::bit_cast<float>(static_cast<std::uint32_t>(bits >> 32)), static_cast<float>(tables)};
 }
 
+std::vector<float> gpuWeightFieldBlock(const core::FlameXform& xform, int tables) {
+  std::vector<float> block;
+  block.push_back(xform.fieldKind == core::WeightFieldKind::Noise ? 1.0f : 2.0f);
+  for (const int code :
+       {static_cast<int>(xform.fieldFractal), static_cast<int>(xform.fieldNoise),
+        static_cast<int>(xform.fieldCellDistance), static_cast<int>(xform.fieldCellReturn), xform.fieldOctaves})
+    block.push_back(static_cast<float>(code));
+  block.push_back(static_cast<float>(xform.fieldFrequency));
+  block.push_back(static_cast<float>(xform.fieldGain));
+  block.push_back(static_cast<float>(xform.fieldLacunarity));
+  block.push_back(std::bit_cast<float>(static_cast<std::int32_t>(xform.fieldSeed)));  // its bits, never computed with
+  block.push_back(static_cast<float>(tables));
+  if (xform.fieldNoise == core::WeightFieldNoise::Simplex) {
+    const int octaves = xform.fieldKind == core::WeightFieldKind::Noise ? 1 : xform.fieldOctaves;
+    for (int octave = 0; octave < octaves; ++octave) {
+      const std::array<double, 3> offset = core::weightFieldSimplexOffset(
+          static_cast<std::int32_t>(static_cast<std::uint32_t>(xform.fieldSeed) + static_cast<std::uint32_t>(octave)));
+      const std::vector<float> words = gpuDoubleParams({offset.begin(), offset.end()});
+      block.insert(block.end(), words.begin(), words.end());
+    }
+  }
+  return block;
+}
+
 std::vector<float> gpuNoiseTables() {
   const core::SimplexNoiseTables& tables = core::simplexNoiseTables();
   std::vector<float> values(tables.hash.begin(), tables.hash.end());
@@ -593,9 +696,11 @@ std::string gpuVariationSource(const std::vector<std::string>& variations) {
   std::vector<int> pending;
   for (std::size_t i = 0; i < split.pieces.size(); ++i)
     if (split.pieces[i].function.empty()) pending.push_back(static_cast<int>(i));
-  for (const std::string& name : variations)
-    if (const auto found = split.functionPiece.find("V_" + name); found != split.functionPiece.end())
-      pending.push_back(found->second);
+  for (const std::string& name : variations) {
+    auto found = split.functionPiece.find("V_" + name);
+    if (found == split.functionPiece.end()) found = split.functionPiece.find(name);  // a helper the kernel calls
+    if (found != split.functionPiece.end()) pending.push_back(found->second);
+  }
   while (!pending.empty()) {
     const auto i = static_cast<std::size_t>(pending.back());
     pending.pop_back();

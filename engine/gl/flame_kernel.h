@@ -16,6 +16,7 @@
 
 namespace voxflame::core {
 struct PatternLayer;
+struct FlameXform;
 class ChaosGame;
 }  // namespace voxflame::core
 
@@ -27,19 +28,24 @@ struct FlameKernel {
   // chaosStep(inout CHAOS_STATE state, inout float colour, inout uint previous, out vec3 drawn,
   // out float drawnColour)`.
   std::string source;
-  std::vector<float> data;              // flame_variations.glsl's flameData
-  std::vector<std::uint32_t> pick;      // flamePick: core::ChaosGame::pickTable, one transform index per entry
-  std::vector<std::string> variations;  // the V_ functions it calls (gpuVariationSource's argument)
+  std::vector<float> data;          // flame_variations.glsl's flameData
+  std::vector<std::uint32_t> pick;  // flamePick: core::ChaosGame::pickTable, one transform index per entry
+  // The V_ functions it calls, and the helpers of the variation files its own code calls
+  // (weightFieldNoise): gpuVariationSource's argument.
+  std::vector<std::string> variations;
   // Groups of orbits share each step's transform (accumulate.comp.glsl's GROUP_CHOICE): the
   // program's workgroups are then 256 orbits, not 64.
   bool groupChoice = false;
   // Doubles of memory per orbit its variations keep from step to step (VariationInfo::laneState):
   // flame_variations.glsl's gLane, LANE_MEMORY, which the program defines before the variations.
   std::size_t laneMemory = 0;
+  // Floats of the largest term block a weighting field moves parameters of (flame_variations.glsl's
+  // gFieldBlock, FIELD_BLOCK, which the program defines before the variations); 0: none.
+  std::size_t fieldBlock = 0;
 };
 
 // Empty when the GPU's chaos game runs `layer` (a flame or quaternion Julia layer); else what it
-// lacks, for a message ("variation 'falloff2'", "a weighting field").
+// lacks, for a message ("variation 'falloff2'", "a weighting field on crackle's parameters").
 std::string flameKernelUnsupported(const core::PatternLayer& layer);
 
 // The kernel of `layer`, whose prepared game is `game` (the same pick table the CPU draws from).
@@ -49,7 +55,7 @@ FlameKernel makeFlameKernel(const core::PatternLayer& layer, const core::ChaosGa
 
 // The GLSL of the GPU's variations (shaders/flame_variations*.glsl, one file per family) a kernel
 // needs: what every variation shares (buffers, constants, helpers), and the V_ functions of
-// `variations` and of those they call.
+// `variations` (or, for a name with no V_ function, the helper of that name) and those they call.
 std::string gpuVariationSource(const std::vector<std::string>& variations);
 // The variations it defines (as V_<name>), in the catalogue's spelling.
 const std::vector<std::string>& gpuFlameVariations();
@@ -74,5 +80,9 @@ std::vector<float> gpuNoiseExtras(const std::vector<double>& params, int tables)
 // core::simplexNoiseTables() as flame_variations.glsl reads them: the hash (1024 entries), then the
 // gradients (1024 × 3).
 std::vector<float> gpuNoiseTables();
+// The block shaders/weight_field.glsl's weightFieldNoise reads for `xform`'s weighting field (its
+// kind, noise, octaves, frequency, seed...); `tables`: where gpuNoiseTables() lie in flameData,
+// which its simplex noise reads.
+std::vector<float> gpuWeightFieldBlock(const core::FlameXform& xform, int tables);
 
 }  // namespace voxflame::gl

@@ -233,9 +233,10 @@ struct GpuAccumulator::Device {
   const ShaderProgram& layerProgram(const LayerUniforms& u) {
     const std::string projecting = projection ? "#define PROJECT_POINTS\n" : "";
     if (u.chaos) {
-      // gLane's size comes before the variations, which declare it.
-      const std::string lane =
+      // gLane's and gFieldBlock's sizes come before the variations, which declare them.
+      std::string lane =
           u.kernel.laneMemory > 0 ? "#define LANE_MEMORY " + std::to_string(u.kernel.laneMemory) + "\n" : "";
+      if (u.kernel.fieldBlock > 0) lane += "#define FIELD_BLOCK " + std::to_string(u.kernel.fieldBlock) + "\n";
       return program("accumulate.comp.glsl", projecting,
                      lane + gpuVariationSource(u.kernel.variations) + "\n#line 1 99\n" + u.kernel.source);
     }

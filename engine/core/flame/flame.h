@@ -15,6 +15,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -154,6 +155,26 @@ struct FlameXform {
 
 // The weighting field's noise n(p) of a transform (0 without a field).
 double weightFieldNoise(const FlameXform& xform, double x, double y, double z);
+// Where a field's simplex noise of seed `seed` (an octave's: the field's seed + the octave) is read
+// from: the point plus this offset, which moves each seed to a far-off place of the noise.
+std::array<double, 3> weightFieldSimplexOffset(std::int32_t seed);
+
+struct VariationInfo;
+// What a transform's weighting field does to one of its terms besides the field's factor
+// 1 + amount · n: the parameters it scales per point by 1 + n · intensity (rounded where the
+// parameter is a count, or an int in JWildfire), and the term's own weight factor 1 + n · weight
+// (the field's `amount` parameter). JWildfire's Variation.addWeightingFieldParam: every term of the
+// named variation, the first entry of a parameter name counting, only parameters the term sets.
+struct WeightFieldTerm {
+  struct Param {
+    std::size_t index = 0;
+    double intensity = 0.0;
+    bool integer = false;
+  };
+  std::vector<Param> params;
+  double weight = 0.0;
+};
+WeightFieldTerm weightFieldTerm(const FlameXform& xform, const VariationTerm& term, const VariationInfo& info);
 
 // Symmetry as flam3 makes it: extra transforms that turn the whole pattern by 360°/N about `axis`
 // (and mirror it across a plane through the axis), chosen like any other transform but never

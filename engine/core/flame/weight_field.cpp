@@ -4,6 +4,7 @@
 // follow FastNoise's behaviour (its interpolation, ranges, fractal sums and cellular return
 // values) with voxflame's own hash and tables, so each family has FastNoise's character and
 // scale but not its very values.
+#include <algorithm>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -13,6 +14,7 @@
 
 #include "core/flame/flame.h"
 #include "core/flame/noise.h"
+#include "core/flame/variations.h"
 
 namespace voxflame::core {
 
@@ -129,13 +131,10 @@ double cubicNoise(std::int32_t seed, double x, double y, double z) {
   return cubicBlend(planes[0], planes[1], planes[2], planes[3], w) / (1.5 * 1.5 * 1.5);
 }
 
-// Simplex noise from voxflame's shared table; the seed moves it to a far-off place of its space
-// (irrational steps: no two seeds align).
+// Simplex noise from voxflame's shared table, moved by the seed (weightFieldSimplexOffset).
 double simplexNoise(std::int32_t seed, double x, double y, double z) {
-  const double s = static_cast<double>(seed);
-  return simplexNoise3D(x + std::fmod(s * 0.7548776662466927, 1.0) * 4096.0,
-                        y + std::fmod(s * 0.5698402909980532, 1.0) * 4096.0,
-                        z + std::fmod(s * 0.4301597090019468, 1.0) * 4096.0);
+  const std::array<double, 3> offset = weightFieldSimplexOffset(seed);
+  return simplexNoise3D(x + offset[0], y + offset[1], z + offset[2]);
 }
 
 // White noise: a value per point, hashed from the coordinates' single-precision bits as
@@ -250,6 +249,34 @@ double weightFieldNoise(const FlameXform& xform, double x, double y, double z) {
   }
   if (xform.fieldFractal == WeightFieldFractal::Rigid) return sum;
   return bound != 0.0 ? sum / bound : 0.0;
+}
+
+std::array<double, 3> weightFieldSimplexOffset(std::int32_t seed) {
+  // Irrational steps: no two seeds align.
+  const double s = static_cast<double>(seed);
+  return {std::fmod(s * 0.7548776662466927, 1.0) * 4096.0, std::fmod(s * 0.5698402909980532, 1.0) * 4096.0,
+          std::fmod(s * 0.4301597090019468, 1.0) * 4096.0};
+}
+
+WeightFieldTerm weightFieldTerm(const FlameXform& xform, const VariationTerm& term, const VariationInfo& info) {
+  WeightFieldTerm bound;
+  if (!xform.hasWeightField()) return bound;
+  bool weightSet = false;
+  for (const FlameXform::FieldParam& p : xform.fieldParams()) {
+    if (p.intensity == 0.0 || p.variation != term.name) continue;
+    if (p.name == "amount") {
+      if (!weightSet) bound.weight = p.intensity;
+      weightSet = true;
+      continue;
+    }
+    const int index = info.paramIndex(p.name);
+    if (index < 0 || static_cast<std::size_t>(index) >= term.params.size()) continue;
+    const auto at = static_cast<std::size_t>(index);
+    if (std::none_of(bound.params.begin(), bound.params.end(),
+                     [&](const WeightFieldTerm::Param& q) { return q.index == at; }))
+      bound.params.push_back({at, p.intensity, info.params[at].integer || info.params[at].jwildfireInt});
+  }
+  return bound;
 }
 
 }  // namespace voxflame::core

@@ -37,9 +37,23 @@ const uint kRgbPainted = 1u << 24;
 #ifdef LANE_MEMORY
 double gLane[LANE_MEMORY];
 #endif
+#ifdef FIELD_BLOCK
+// A term whose parameters a weighting field moves per point (core::WeightFieldTerm) reads them from
+// here: the kernel copies the term's numbers (flameData[P...], everything a variation reads relative
+// to P) in, scales them, and calls the variation with P = kFieldBlock.
+float gFieldBlock[FIELD_BLOCK];
+const int kFieldBlock = -(1 << 24);
+#endif
+// The term's number i of those that start at `base`: every read relative to P goes through here.
+float P_(int base, int i) {
+#ifdef FIELD_BLOCK
+  if (base + i < 0) return gFieldBlock[base + i - kFieldBlock];
+#endif
+  return flameData[base + i];
+}
 // Where the table of the term whose N parameters are at P starts, and how many numbers it holds.
-int tableAt(int P, int N) { return int(flameData[P + N]); }
-int tableSize(int P, int N) { return int(flameData[P + N + 1]); }
+int tableAt(int P, int N) { return int(P_(P, N)); }
+int tableSize(int P, int N) { return int(P_(P, N + 1)); }
 // Parameter i in double, of those that start at `at` (a double's bits in two floats).
 double paramDouble(int at, int i) {
   return packDouble2x32(uvec2(floatBitsToUint(flameData[at + 2 * i]), floatBitsToUint(flameData[at + 2 * i + 1])));
@@ -74,7 +88,6 @@ const float kTwoPi = 6.28318530717959;
 const float kEpsilon = 1e-30;
 const float kFlam3Eps = 1e-10;
 
-float P_(int base, int i) { return flameData[base + i]; }
 // atan2 as C has it at the origin (GLSL leaves atan(0, 0) undefined).
 float atan2c(float a, float b) { return (a == 0.0 && b == 0.0) ? 0.0 : atan(a, b); }
 float fmodc(float a, float m) {  // C's fmod: the sign of a (core's laneFmod)

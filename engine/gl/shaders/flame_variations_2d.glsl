@@ -919,7 +919,7 @@ vec3 V_dc_booleans(vec3 p, float w, int P, int A) {
   }
   double level = double(luminance) / 255.0lf;
   if (gradient == 2) gColour = float(level);
-  else rgb_paint(int(flameData[P + 9]), gradient == 1, dvec3(bytes[0], bytes[1], bytes[2]));
+  else rgb_paint(int(P_(P, 9)), gradient == 1, dvec3(bytes[0], bytes[1], bytes[2]));
   float dz = float(level * double(P_(P, 5)) + double(P_(P, 6)));
   return vec3(gSum.x + w * u.x, gSum.y + w * u.y, (resets ? 0.0 : gSum.z) + dz);
 }
@@ -941,7 +941,7 @@ vec3 rgb_dcFinish(vec3 p, float w, int P, int k, int N, dvec2 q, dvec3 colour) {
   double level = (trunc(bytes.x * 0.299lf) + trunc(bytes.y * 0.587lf) + trunc(bytes.z * 0.114lf)) / 255.0lf;
   float gradient = rgb_limitedInt(P_(P, k + 1), 0.0, 2.0);
   if (gradient == 2.0) gColour = float(level);
-  else rgb_paint(int(flameData[P + N + 1]), gradient == 1.0, bytes);
+  else rgb_paint(int(P_(P, N + 1)), gradient == 1.0, bytes);
   bool reset = rgb_limitedInt(P_(P, k + 4), 0.0, 1.0) == 1.0;
   float dz = float(level * double(P_(P, k + 2)) + double(P_(P, k + 3)));
   return vec3(gSum.x + w * float(q.x), gSum.y + w * float(q.y), reset ? dz : gSum.z + w * p.z + dz);

@@ -1373,7 +1373,7 @@ vec3 V_colormap_wf(vec3 p, float w, int P, int A) {
   bool tileX = cmap_ftoi(P_(P, 6)) == 1, tileY = cmap_ftoi(P_(P, 7)) == 1, resets = cmap_ftoi(P_(P, 8)) != 0;
   int dcColor = cmap_ftoi(P_(P, 9));
   bool blend = cmap_ftoi(P_(P, 10)) > 0, withAlpha = cmap_ftoi(P_(P, 11)) > 0;
-  int paletteAt = int(flameData[P + N + 1]);
+  int paletteAt = int(P_(P, N + 1));
   int at = tableAt(P, N + 2);
   int width = int(flameData[at]), height = int(flameData[at + 1]);
   double u = (double(p.x) - (offsetX + 0.5lf) + 1.0lf) / scaleX * double(width - 2);
