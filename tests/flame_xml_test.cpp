@@ -431,6 +431,66 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
   EXPECT_GT(withParameters, 0u) << "no catalogue variation has parameters: only their names were checked";
 }
 
+// flam3 takes any whole symmetry order; Electric Sheep's genomes have ones such as 57.
+TEST(FlameXml, LargeSymmetryOrdersAreRead) {
+  const ImportedFlame flame = readFlameXml(flameFile(kTwoXforms, "<symmetry kind=\"-57\"/>"), "s.flam3").flame;
+  EXPECT_EQ(flame.genome.symmetry.rotational, 57);
+  EXPECT_TRUE(flame.genome.symmetry.mirror);
+  EXPECT_EQ(expandSymmetry(flame.genome).size(), 2u + 56u + 1u);  // the turns and the mirror
+}
+
+// flam3 3.x writes its palette rows with printf's "%2x": a byte under 16 is a space and a digit,
+// and the spaces are part of the row (Mossop's fractal-flame renders, electricsheep.247's).
+TEST(FlameXml, Flam3PalettesWhoseBytesArePaddedWithSpacesAreRead) {
+  std::string block = "<palette count=\"256\" format=\"RGB\">\n";
+  std::string zeroPadded;
+  char hex[8];
+  for (int i = 0; i < 256; ++i) {
+    if (i % 8 == 0) block += "      ";
+    const int r = i % 16, g = (7 * i) % 256, b = 255 - i;  // every row has bytes under 16
+    std::snprintf(hex, sizeof hex, "%2x%2x%2x", r, g, b);
+    block += hex;
+    std::snprintf(hex, sizeof hex, "%02x%02x%02x", r, g, b);
+    zeroPadded += hex;
+    if (i % 8 == 7) block += "\n";
+  }
+  block += "   </palette>\n";
+  ASSERT_NE(block.find("       "), std::string::npos) << "a row should start with a padded byte";
+  const ImportedFlame padded = readFlameXml(flameFile(kTwoXforms, block), "padded.flam3").flame;
+  const ImportedFlame plain =
+      readFlameXml(flameFile(kTwoXforms, "<palette count=\"256\" format=\"RGB\">" + zeroPadded + "</palette>"),
+                   "plain.flam3")
+          .flame;
+  ASSERT_EQ(padded.palette.size(), 256u);
+  for (std::size_t i = 0; i < 256; ++i) EXPECT_EQ(padded.palette.at(i).color, plain.palette.at(i).color) << i;
+  EXPECT_TRUE(padded.warnings.empty()) << padded.warnings.front();
+  // A space inside a byte's low digit is no padding.
+  EXPECT_NE(errorOf(flameFile(kTwoXforms, "<palette count=\"256\" format=\"RGB\">\n      0c 5e2d" +
+                                              std::string(40, 'a') + "\n</palette>")),
+            "");
+}
+
+// flam3 names oscilloscope's parameters oscope_* (Fractorium oscilloscope_*): both are read.
+TEST(FlameXml, Flam3sOscopeParametersAreOscilloscopes) {
+  const VariationInfo* oscilloscope = findVariation("oscilloscope");
+  ASSERT_NE(oscilloscope, nullptr);
+  const ImportedFlame flame =
+      readFlameXml(flameFile("<xform weight=\"1\" oscilloscope=\"0.5\" oscope_frequency=\"3\" oscope_amplitude=\"2\" "
+                             "oscope_damping=\"0.25\" oscope_separation=\"1.5\" coefs=\"0.5 0 0 0.5 0 0\"/>"),
+                   "o.flam3")
+          .flame;
+  EXPECT_FALSE(hasWarningContaining(flame, "oscope")) << flame.warnings.front();
+  ASSERT_EQ(flame.genome.xforms.at(0).variations.size(), 1u);
+  const VariationTerm& term = flame.genome.xforms.at(0).variations.at(0);
+  const auto param = [&](const char* name) {
+    return term.params.at(static_cast<std::size_t>(oscilloscope->paramIndex(name)));
+  };
+  EXPECT_EQ(param("frequency"), 3.0);
+  EXPECT_EQ(param("amplitude"), 2.0);
+  EXPECT_EQ(param("damping"), 0.25);
+  EXPECT_EQ(param("separation"), 1.5);
+}
+
 TEST(FlameXml, JulianPowerAndDistanceAreRead) {
   const VariationInfo* julian = findVariation("julian");
   ASSERT_NE(julian, nullptr) << "the variation catalogue has lost 'julian'";
@@ -463,7 +523,9 @@ TEST(FlameXml, BadFilesAreErrorsNamingTheFile) {
   expectError(flameFile("<xform weight=\"-1\" coefs=\"1 0 0 1 0 0\"/>"), "weight");
   expectError(flameFile("<xform weight=\"1\" linear=\"1e400\" coefs=\"1 0 0 1 0 0\"/>"), "linear");
   expectError(flameFile("<xform weight=\"1\" linear=\"x\" coefs=\"1 0 0 1 0 0\"/>"), "not a number");
-  expectError(flameFile(kTwoXforms, "<symmetry kind=\"99\"/>"), "symmetry");
+  expectError(flameFile(kTwoXforms, "<symmetry kind=\"200\"/>"), "symmetry");
+  expectError(flameFile(kTwoXforms, "<symmetry kind=\"-128\"/>"), "symmetry");
+  expectError(flameFile(kTwoXforms, "<symmetry kind=\"2.5\"/>"), "symmetry");
   expectError(flameFile(kTwoXforms, "<palette count=\"256\" format=\"RGB\">00fg00</palette>"), "hex digits");
   expectError(flameFile(kTwoXforms, "<palette count=\"256\" format=\"RGB\">00ff0</palette>"), "hex digits");
   std::string many;

@@ -29,7 +29,7 @@ inline constexpr std::size_t kMaxFlameXforms = 128;
 // Final transforms after the first that a flame may chain (FlameGenome::chainedFinals).
 inline constexpr std::size_t kMaxChainedFinals = 16;
 inline constexpr std::size_t kMaxXformVariations = 16;
-inline constexpr int kMaxFlameSymmetry = 24;
+inline constexpr int kMaxFlameSymmetry = 127;
 // The largest magnitude a flame's numbers may have (affine and post coefficients, transform and variation weights,
 // xaos factors): the validator, the flame importer and the preset schema all refuse beyond it.
 inline constexpr double kFlameCoefficientLimit = 1e6;

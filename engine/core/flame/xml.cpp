@@ -168,6 +168,8 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
   if (info.name == "pixel_flow") names.push_back(param);
   if (info.name == "q_ode") names.push_back(termAttribute + param);
   if (info.name == "minkowskope") names.push_back("mskope_" + param);  // the Apophysis plugin's names
+  if (info.name == "oscilloscope")
+    names.push_back("oscope_" + param);  // flam3's own names (Fractorium writes oscilloscope_)
   if (info.name == "rational3") {
     static const std::array<std::string_view, 8> fractorium = {"t3", "t2", "t1", "tc", "b3", "b2", "b1", "bc"};
     const auto at = std::find(fractorium.begin(), fractorium.end(), param);
@@ -1725,6 +1727,54 @@ std::optional<Palette> parseHexPalette(std::string_view text, HexLayout layout) 
   return palette;
 }
 
+// flam3 3.x writes its palette rows with printf's "%2x": a byte under 16 is a space and one digit
+// (" b41c c 41c17..."), so the spaces are digits, not separators. Its rows are fixed: an indent, then
+// 8 colours of 6 columns each. The hex of such a block, its padding read as zeros; nullopt where a
+// line is not an indent and 48 columns of hex digits and spaces (the block is not of this kind).
+std::optional<std::string> spacePaddedHexRows(std::string_view text) {
+  constexpr std::size_t kRowColumns = 8 * 6;
+  std::string hex;
+  while (!text.empty()) {
+    const std::size_t end = std::min(text.find('\n'), text.size());
+    std::string_view line = text.substr(0, end);
+    text.remove_prefix(std::min(end + 1, text.size()));
+    while (!line.empty() && (line.back() == ' ' || line.back() == '\t' || line.back() == '\r')) line.remove_suffix(1);
+    const std::size_t indent = line.find_first_not_of(" \t");
+    if (indent == std::string_view::npos) continue;  // a blank line
+    if (line.size() < kRowColumns) return std::nullopt;
+    const std::string_view row = line.substr(line.size() - kRowColumns);
+    if (line.substr(0, line.size() - kRowColumns).find_first_not_of(" \t") != std::string_view::npos)
+      return std::nullopt;
+    for (std::size_t i = 0; i < kRowColumns; ++i) {
+      if (row[i] == ' ' && i % 2 == 0) {
+        hex.push_back('0');
+      } else if (hexDigit(row[i]) >= 0) {
+        hex.push_back(row[i]);
+      } else {
+        return std::nullopt;
+      }
+    }
+  }
+  if (hex.empty()) return std::nullopt;
+  return hex;
+}
+
+// Whether a line of `text` has a space or tab between two of its other characters.
+bool hasSpaceWithinARow(std::string_view text) {
+  bool inRow = false, gap = false;
+  for (const char c : text) {
+    if (c == '\n' || c == '\r') {
+      inRow = gap = false;
+    } else if (c == ' ' || c == '\t') {
+      gap = inRow;
+    } else {
+      if (gap) return true;
+      inRow = true;
+    }
+  }
+  return false;
+}
+
 // flam3's palette table, read once per path (1.5 MB of XML) and kept for the process.
 struct PaletteTable {
   std::map<int, Palette> palettes;
@@ -1847,7 +1897,12 @@ Palette readPalette(const pugi::xml_node& flame, FlameReader& reader) {
                                                 : HexLayout{0, 0};
     if (layout.digits == 0)
       reader.fail("", std::string("<") + element + " format=\"" + format + "\"> is not RGB or RGBA");
-    std::optional<Palette> parsed = parseHexPalette(data, layout);
+    // Rows with spaces inside are flam3 3.x's padded bytes: read as such first (with the spaces
+    // dropped, a block whose padding happens to be whole colours would read as shifted colours).
+    std::optional<Palette> parsed;
+    if (layout.digits == 6 && hasSpaceWithinARow(data))
+      if (const std::optional<std::string> padded = spacePaddedHexRows(data)) parsed = parseHexPalette(*padded, layout);
+    if (!parsed) parsed = parseHexPalette(data, layout);
     if (!parsed && format.empty()) parsed = parseHexPalette(data, layout.digits == 6 ? kHexPadded : kHexRgb);
     if (!parsed)
       reader.fail("", std::string("<") + element + "> must hold colours as hex digits (" +
