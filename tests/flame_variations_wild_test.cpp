@@ -4,8 +4,7 @@
 // precision, independently of the code under test. The point is (0.3, −0.7, 0.5) with weight 0.8, as in
 // flame_variations_more_test.cpp; random variations are replayed from the lane's seed: xorshift32 gives Ψ = 0.879466,
 // 0.545326, 0.394069, 0.000355, … from 0x2545F491 and Ψ = 0.316594, 0.875707, 0.483300 from 0x9E3779B9. mandelbrot
-// and threeply start from an empty memory (a single evaluation keeps none); colorscale_wf reads the harness's
-// colour index, 0.375.
+// starts from an empty memory (a single evaluation keeps none); colorscale_wf reads the harness's colour index, 0.375.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -37,10 +36,11 @@ const std::vector<PointCase>& pointCases() {
   // invsquircular's weight enters its formula. sph3D scales z by its x parameter. colorscale_wf adds dz = 0.375 ·
   // scale_z · 0.8 + offset_z (times Ψ₁ with sides). bubble_wf's z is negative where Ψ₁ < ½ (the low seed). bwraps2's
   // rows: inside a bubble, twisted, outside one (the point, weighted), and a gain beyond 2 (the bubble recurves).
-  // threeply's first call from (0, 0) gives (0, a). spligon's sides 0.3 rounds to 0 and is taken as 1. lazysensen:
-  // the defaults keep the point (⌊0.3⌋ = 0 even, ⌊−0.7⌋ = −1 odd and negative); ⌊0.5 · 2.5⌋ = 1 (odd) negates z;
-  // at (1.2, −2.6, 0.7) with scales (−2, 0.5, −1) only y's ⌊−1.3⌋ = −2 (even and negative) negates. cpow3_wf's
-  // defaults come out alike for both seeds (Ψ₁ < 1 truncates to n = 0, and neither Ψ₂ jumps).
+  // threeply draws orbit point k + 1 = 1 + ⌊2²⁰ Ψ₁⌋ (k = 922187 for the high seed, 331972 for the low). spligon's sides
+  // 0.3 rounds to 0 and is taken as 1. lazysensen: the defaults keep the point (⌊0.3⌋ = 0 even, ⌊−0.7⌋ = −1 odd and
+  // negative); ⌊0.5 · 2.5⌋ = 1 (odd) negates z; at (1.2, −2.6, 0.7) with scales (−2, 0.5, −1) only y's ⌊−1.3⌋ = −2
+  // (even and negative) negates. cpow3_wf's defaults come out alike for both seeds (Ψ₁ < 1 truncates to n = 0, and
+  // neither Ψ₂ jumps).
   static const std::vector<PointCase> cases = {
       {"mandelbrot", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {32925.87757110596, 32925.87757110596, 0.0}},
       {"mandelbrot", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-1192.4314498901367, -1192.4314498901367, 0.0}},
@@ -117,8 +117,10 @@ const std::vector<PointCase>& pointCases() {
        kHighSeed,
        {0.0993882469850481, -0.8299263852775554, 0.4}},
       {"invpolar", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.19416407864998741, 0.1410684605501936, 0.4}},
-      {"threeply", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.0, -0.044000000000000004, 0.4}},
-      {"threeply", {1.3, 0.4, -2.2}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.0, 0.0010400000000000001, 0.4}},
+      {"threeply", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.012565573692044384, -1.0389033403958021, 0.4}},
+      {"threeply", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.9692000738996625, -0.4798747493278488, 0.4}},
+      {"threeply", {1.3, 0.4, -2.2}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.2641844360632727, 0.2661827448288339, 0.4}},
+      {"threeply", {1.3, 0.4, -2.2}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.11502071412662979, 0.10132806207074074, 0.4}},
       {"spligon", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.4528203230275509, -0.9600000000000002, 0.4}},
       {"spligon", {5.5, -0.7, 2.5}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.7943000074533222, -0.4803036905669603, 0.4}},
       {"spligon", {0.3, 0.6, 1.0}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.24000000000000013, -1.0399999999999998, 0.4}},
@@ -257,23 +259,27 @@ TEST(FlameVariationWild, MandelbrotMaxPointsDrawsFromAFixedSetOfStarts) {
   EXPECT_GT(starts(1234.0, -1.0).size(), 500u);  // none kept: every start drawn afresh
 }
 
-// threeply's orbit, kept from call to call: (0, a), (a, a), then the map proper (the Python script's calls).
-TEST(FlameVariationWild, ThreeplyStepsItsOrbitEachCall) {
-  std::vector<double> memory;
-  const std::vector<Call> calls = runWithMemory("threeply", {-55.0, -1.0, -42.0}, kHighSeed, 4, memory);
-  const std::vector<Call> expected = {{0.0, -0.044000000000000004, 0.4},
-                                      {-0.044000000000000004, -0.044000000000000004, 0.4},
-                                      {-0.036060938387954024, 0.0, 0.4},
-                                      {0.013307320814771408, -0.00793906161204598, 0.4}};
-  for (std::size_t k = 0; k < calls.size(); ++k) {
-    EXPECT_NEAR(calls[k].x, expected[k].x, 1e-12) << "call " << k;
-    EXPECT_NEAR(calls[k].y, expected[k].y, 1e-12) << "call " << k;
-    EXPECT_NEAR(calls[k].z, expected[k].z, 1e-12) << "call " << k;
-  }
-  // An orbit that overflows starts over from (0, 0) instead of staying NaN.
-  const std::vector<Call> wild = runWithMemory("threeply", {1e308, 1e308, -1e308}, kHighSeed, 4, memory);
-  EXPECT_TRUE(std::isfinite(memory[0]) && std::isfinite(memory[1]));
-  EXPECT_EQ(variationOrThrow("threeply").replaces, VariationInfo::Replaces::XY);
+// threeply's table is the orbit from (0, 0): (0, a), (a, a), then the map proper (the Python script's points); an
+// orbit that overflows starts over from (0, 0), so later points are finite again.
+TEST(FlameVariationWild, ThreeplyDrawsFromItsOrbit) {
+  const VariationInfo& info = variationOrThrow("threeply");
+  ASSERT_NE(info.table, nullptr);
+  EXPECT_EQ(info.replaces, VariationInfo::Replaces::XY);
+  const std::vector<double> params = {-55.0, -1.0, -42.0};
+  const std::vector<double> table = info.table(params.data(), nullptr);
+  ASSERT_EQ(table.size(), std::size_t{2} << 20);
+  const std::vector<double> first = {
+      0.0, -55.0, -55.0, -55.0, -45.076172984942524, 0.0, 16.63415101846426, -9.923827015057476};
+  for (std::size_t k = 0; k < first.size(); ++k) EXPECT_NEAR(table[k], first[k], 1e-12) << k;
+  // a = 1.7e308 overflows y′ = a − x at its fifth point (one in five points after that, the Python script found).
+  const std::vector<double> wild = {1.7e308, 0.0, 0.0};
+  const std::vector<double> restarted = info.table(wild.data(), nullptr);
+  EXPECT_TRUE(std::isinf(restarted[9]));
+  EXPECT_EQ(restarted[10], 0.0);  // from (0, 0) again: (0, a)
+  EXPECT_EQ(restarted[11], 1.7e308);
+  std::size_t finite = 0;
+  for (const double v : restarted) finite += std::isfinite(v) ? 1 : 0;
+  EXPECT_GT(finite, restarted.size() * 3 / 4);
 }
 
 // colorscale_wf's reset_z makes z of the sum dz (0.375 · 1.2 · 0.8 + 0.25 = 0.61) where the others add to it.

@@ -1,17 +1,20 @@
 // JWildfire variations that flame files in public repositories use and the other families lacked, so
 // that those files imported with parts left out: mandelbrot (points near the Mandelbrot set's edge,
 // found by a walk kept per lane), invsquircular, sph3D, colorscale_wf (z from the colour index),
-// bubble_wf, bwraps2 (which files use as pre_bwraps2), invpolar, threeply (an orbit kept per lane),
+// bubble_wf, bwraps2 (which files use as pre_bwraps2), invpolar, threeply (points of an orbit),
 // spligon, lazysensen, disc3 and cpow3_wf. Each is a kernel below and one row of the table at the end
 // (see variations.h for the notation and variation_kernels.h for what the files share). Each follows
 // its JWildfire class (…/tina/variation/<Name>Func.java), quirks included where noted; random numbers
 // come from the lane's own stream (laneUniform), where JWildfire draws from its own generators.
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "core/flame/variation_kernels.h"
@@ -241,31 +244,67 @@ VOXFLAME_VARIATION_2D(invpolar, {
   outY[i] += w * ny * std::cos(x[i] * kPi);
 })
 
-// threeply (James Henderson's orbit, as JWildfire has it): the point is ignored; the lane's orbit steps x′ =
-// y − sgn(x) |sin x cos b + c − x sin(a + b + c)|, y′ = a − x from (0, 0) and 0.001 w (x′, y′) is the result,
-// which replaces the terms before it (JWildfire assigns it); z is carried. The orbit is the lane's memory; one
-// that overflows starts again from (0, 0) (JWildfire's would stay NaN).
-constexpr std::size_t kThreeplyState = 2;
+// threeply (James Henderson's orbit, as JWildfire has it): the point is ignored; JWildfire's variation keeps the
+// orbit x′ = y − sgn(x) |sin x cos b + c − x sin(a + b + c)|, y′ = a − x from (0, 0) per render thread and adds
+// 0.001 w (x′, y′) of its next point each call, assigning it (the terms before it are discarded). Lanes here that
+// kept their own orbits would all step the same orbit in step with one another, so, as hopalong does, it draws
+// one of the orbit's first 2²⁰ points instead (Ψ picks which): the same points with the same weights as a thread
+// of JWildfire's with that many calls. An orbit that overflows starts again from (0, 0) (JWildfire's stays NaN).
+constexpr std::size_t kThreeplyPoints = std::size_t{1} << 20;
+
+struct ThreeplyOrbit {
+  double a, b, c;
+  std::vector<double> xy;  // (x, y) pairs, points 1 … kThreeplyPoints
+};
+
+std::shared_ptr<const ThreeplyOrbit> threeplyOrbit(double a, double b, double c) {
+  thread_local std::shared_ptr<const ThreeplyOrbit> last;
+  static RecentBuilds<ThreeplyOrbit> orbits(2);
+  // Bitwise, so that a NaN parameter finds its orbit again instead of building one per call.
+  const auto same = [&](const ThreeplyOrbit& orbit) {
+    return std::bit_cast<std::uint64_t>(orbit.a) == std::bit_cast<std::uint64_t>(a) &&
+           std::bit_cast<std::uint64_t>(orbit.b) == std::bit_cast<std::uint64_t>(b) &&
+           std::bit_cast<std::uint64_t>(orbit.c) == std::bit_cast<std::uint64_t>(c);
+  };
+  return orbits.get(last, same, [&] {
+    auto orbit = std::make_shared<ThreeplyOrbit>();
+    orbit->a = a;
+    orbit->b = b;
+    orbit->c = c;
+    orbit->xy.resize(2 * kThreeplyPoints);
+    const double cosB = std::cos(b), sinABC = std::sin(a + b + c);
+    double x0 = 0.0, y0 = 0.0;
+    for (std::size_t k = 0; k < kThreeplyPoints; ++k) {
+      const double sgn = x0 > 0.0 ? 1.0 : (x0 < 0.0 ? -1.0 : 0.0);
+      const double xn = y0 - sgn * std::abs(std::sin(x0) * cosB + c - x0 * sinABC);
+      const double yn = a - x0;
+      orbit->xy[2 * k] = xn;
+      orbit->xy[2 * k + 1] = yn;
+      const bool finite = std::isfinite(xn) && std::isfinite(yn);
+      x0 = finite ? xn : 0.0;
+      y0 = finite ? yn : 0.0;
+    }
+    return std::shared_ptr<const ThreeplyOrbit>(std::move(orbit));
+  });
+}
 
 VOXFLAME_VARIATION_TARGETS void threeply(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                          double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  const double a = P[0], b = P[1], c = P[2];
-  const double cosB = std::cos(b), sinABC = std::sin(a + b + c);
+  const std::shared_ptr<const ThreeplyOrbit> orbit = threeplyOrbit(P[0], P[1], P[2]);
+  const double* __restrict xy = orbit->xy.data();
+  constexpr double kPoints = static_cast<double>(kThreeplyPoints);
   for (std::size_t i = 0; i < n; ++i) {
-    double scratch[kThreeplyState] = {0.0, 0.0};
-    double* memory = in.state ? in.state + kThreeplyState * (in.lanes ? in.lanes[i] : i) : scratch;
-    const double x0 = memory[0], y0 = memory[1];
-    const double sgn = x0 > 0.0 ? 1.0 : (x0 < 0.0 ? -1.0 : 0.0);
-    const double xn = y0 - sgn * std::abs(std::sin(x0) * cosB + c - x0 * sinABC);
-    const double yn = a - x0;
-    const bool finite = std::isfinite(xn) && std::isfinite(yn);
-    memory[0] = finite ? xn : 0.0;
-    memory[1] = finite ? yn : 0.0;
-    outX[i] += 0.001 * xn * w;
-    outY[i] += 0.001 * yn * w;
+    const auto k = static_cast<std::size_t>(std::min(std::floor(laneUniform(rnd[i]) * kPoints), kPoints - 1.0));
+    outX[i] += 0.001 * xy[2 * k] * w;
+    outY[i] += 0.001 * xy[2 * k + 1] * w;
     outZ[i] += w * z[i];
   }
+}
+
+// threeply's orbit for a backend of its own: (x, y) pairs, points 1 … kThreeplyPoints.
+std::vector<double> threeplyTable(const double* params, const std::string*) {
+  return threeplyOrbit(params[0], params[1], params[2])->xy;
 }
 
 // spligon (DarkBeam's): the point moved by r along the angle t = ⌊φ n/2π⌋ 2π/n − π i/(2n) of its sector of n
@@ -403,10 +442,11 @@ void variation_kernels::addJwildfireWildVariations(std::vector<VariationInfo>& c
        {"outer_twist", 0.0, -kPi, kPi}});
   add("invpolar", "((1 + y) sin πx, (1 + y) cos πx) (JWildfire's)", k2D, kFixed, &invpolar);
   add("threeply",
-      "0.001 (x′, y′) of the lane's orbit x′ = y − sgn(x) |sin x cos b + c − x sin(a + b + c)|, y′ = a − x from (0, "
-      "0); the point is not used; z (James Henderson's, as JWildfire has it; the terms before it are discarded)",
-      k2D, kFixed, &threeply, {{"a", -55.0, -100.0, 100.0}, {"b", -1.0, -10.0, 10.0}, {"c", -42.0, -100.0, 100.0}});
-  catalogue.back().laneState = kThreeplyState;
+      "0.001 w h_k, z: h_k point k = 1 + ⌊2²⁰ Ψ⌋ of the orbit of (0, 0) under x′ = y − sgn(x) |sin x cos b + c − x "
+      "sin(a + b + c)|, y′ = a − x; the point is not used, the terms before it are discarded. JWildfire adds the "
+      "orbit's next point each call; here one of its first 2²⁰ points is drawn (James Henderson's)",
+      k2D, kRandom, &threeply, {{"a", -55.0, -100.0, 100.0}, {"b", -1.0, -10.0, 10.0}, {"c", -42.0, -100.0, 100.0}});
+  catalogue.back().table = &threeplyTable;
   catalogue.back().replaces = VariationInfo::Replaces::XY;
   add("spligon",
       "(x + r cos t, y + r sin t), t = ⌊φ n/2π⌋ 2π/n − π i/(2n), n = sides (1 where it rounds to 0) (DarkBeam's)", k2D,

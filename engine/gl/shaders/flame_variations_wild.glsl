@@ -151,18 +151,10 @@ vec3 V_invpolar(vec3 p, float w, int P, int A) {
   return vec3(w * ny * sin(p.x * kPi), w * ny * cos(p.x * kPi), w * p.z);
 }
 
-// The lane's memory: the orbit's point.
+// A point of the orbit's table (after its 3 parameters), Ψ picking which, as on the CPU.
 vec3 V_threeply(vec3 p, float w, int P, int A) {
-  float a = P_(P, 0), b = P_(P, 1), c = P_(P, 2);
-  int M = int(P_(P, 3));
-  float x0 = float(gLane[M]), y0 = float(gLane[M + 1]);
-  float sgn = x0 > 0.0 ? 1.0 : (x0 < 0.0 ? -1.0 : 0.0);
-  float xn = y0 - sgn * abs(sin(x0) * cos(b) + c - x0 * sin(a + b + c));
-  float yn = a - x0;
-  bool finite = !(isnan(xn) || isinf(xn) || isnan(yn) || isinf(yn));
-  gLane[M] = finite ? double(xn) : 0.0lf;
-  gLane[M + 1] = finite ? double(yn) : 0.0lf;
-  return vec3(0.001 * xn * w, 0.001 * yn * w, w * p.z);
+  int count = tableSize(P, 3) / 2;
+  return vec3(0.001 * tablePoint(P, 3, tableIndex(psi(), count)) * w, w * p.z);
 }
 
 vec3 V_spligon(vec3 p, float w, int P, int A) {
