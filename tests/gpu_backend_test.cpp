@@ -517,6 +517,25 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"dc_gnarly", {3.0, 0.3, -0.4, 3.5, 2.5, 2.0, 1.5, 5.0, -4.0, 0.0, 5.0, -3.0, 0.7, 0.6, 0.4, 0.8, 0.2, 1.0}},
       {"hexcrop", {2.0, 1.8, 0.3, -0.2, 1e6}},
       {"hexcrop", {1.7, 2.2, -0.4, 0.3, 0.0}},
+      // variations_jwildfire_wild.cpp: mandelbrot's walk on a wider skin (its memory's second call), with invert,
+      // and from max_points' fixed starts (a seed no float holds: it reads its parameters in double); colorscale_wf
+      // with sides and with reset_z, and as a pre_ term; the others' parameters.
+      {"mandelbrot", {50.0, -2.0, 1.0, -1.0, 1.0, 0.0, 0.3, 0.5, -0.25, -1.0, 1234.0, 0.6}},
+      {"mandelbrot", {30.0, -2.0, 1.0, -1.0, 1.0, 1.0, 0.012, 0.0, 0.0, -1.0, 1234.0, 0.4}},
+      {"mandelbrot", {40.0, -2.0, 1.0, -1.2, 1.2, 0.0, 1.0, 0.3, 0.2, 150.0, 987654321.0, 0.5}},
+      {"colorscale_wf", {0.5, -0.3, 1.2, 0.25, 0.0, 1.0}},
+      {"colorscale_wf", {0.5, -0.3, 1.2, 0.25, 1.0, 0.0}},
+      {"pre_colorscale_wf", {0.5, -0.3, 1.2, 0.25, 0.0, 1.0}},
+      {"sph3D", {1.3, -0.4, 2.0}},
+      {"bwraps2", {0.9, 0.4, 1.6, 0.8, -0.5}},
+      {"pre_bwraps2", {1.5, 0.2, 3.0, 1.1, -0.7}},
+      {"threeply", {1.3, 0.4, -2.2}},
+      {"spligon", {5.5, -0.7, 2.5}},
+      {"lazysensen", {1.517, 3.0, 2.5}},
+      {"lazysensen", {-2.0, 0.5, -1.0}},
+      {"disc3", {0.7, 1.2, 0.9, 1.1, 0.8, 1.3, 0.6, 1.4}},
+      {"cpow3_wf", {1.3, 0.4, 3.0, 2.5, 0.0, 0.5, 0.7}},
+      {"cpow3_wf", {1.3, 0.4, 3.0, 2.5, 1.0, 0.5, 0.7}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})

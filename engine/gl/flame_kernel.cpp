@@ -30,10 +30,11 @@ namespace {
 // first, as it declares the data buffers and the helpers (psi, atan2c, ...) the others call. A
 // family's file is the CPU catalogue's family (core/flame/variations_*.cpp) in float.
 // weight_field.glsl last: the weighting fields' noise, which calls simplexNoise3D.
-constexpr std::array<std::string_view, 7> kVariationFiles = {
-    "flame_variations.glsl",    "flame_variations_2d.glsl",    "flame_variations_2d_more.glsl",
-    "flame_variations_3d.glsl", "flame_variations_blurs.glsl", "flame_variations_jwildfire.glsl",
-    "weight_field.glsl"};
+constexpr std::array<std::string_view, 8> kVariationFiles = {
+    "flame_variations.glsl",         "flame_variations_2d.glsl",
+    "flame_variations_2d_more.glsl", "flame_variations_3d.glsl",
+    "flame_variations_blurs.glsl",   "flame_variations_jwildfire.glsl",
+    "flame_variations_wild.glsl",    "weight_field.glsl"};
 
 // The variation files split for the kernels: every top-level function apart (the V_<name>
 // variations and the helpers they call), and the rest (buffers, constants, globals, macros) kept
@@ -616,7 +617,7 @@ bool gpuVariationReadsNoise(std::string_view name) {
 }
 
 bool gpuVariationReadsDoubles(std::string_view name) {
-  return name == "dc_inversion" || name == "fract_mandelbrot_wf";
+  return name == "dc_inversion" || name == "fract_mandelbrot_wf" || name == "mandelbrot";
 }
 
 std::vector<float> gpuDoubleParams(const std::vector<double>& params) {

@@ -53,6 +53,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addJwildfireMeshVariations(c);
   variation_kernels::addTextVariations(c);
   variation_kernels::addJwildfireGlslVariations(c);
+  variation_kernels::addJwildfireWildVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")
@@ -277,8 +278,8 @@ std::string variationsMarkdown() {
         "obj_mesh_primitive_wf's meshes are built in code and text_wf's text is drawn by FreeType. Not here: "
         "polarplot3d_wf and\nisosfplot3d_wf (formula text of other shapes), obj_mesh_wf (a mesh file beside the "
         "flame), dla3d_wf "
-        "(a grown cluster),\nbrush_stroke_wf (images), and mandelbrot and Fractorium's hexaplay3D and hexnix3D "
-        "(an orbit or a walk over\nhexagons kept from one iteration to the next). `hopalong` keeps an orbit too, "
+        "(a grown cluster),\nbrush_stroke_wf (images), and Fractorium's hexaplay3D and hexnix3D "
+        "(a walk over\nhexagons kept from one iteration to the next). `hopalong` keeps an orbit too, "
         "but one that does not depend on the\npoint: it draws a point of the orbit's first 2²⁰ instead.\n\n"
      << "| name | kind | parameters (default, slider range) | formula |\n"
      << "| --- | --- | --- | --- |\n";

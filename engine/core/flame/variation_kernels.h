@@ -245,6 +245,9 @@ void addJwildfireMeshVariations(std::vector<VariationInfo>& catalogue);
 void addTextVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire's glsl_apollonian, dc_crackle_wf and fract_mandelbrot_wf (variations_jwildfire_glsl.cpp).
 void addJwildfireGlslVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire variations that flames in public repositories use: mandelbrot, invsquircular, sph3D, colorscale_wf,
+// bubble_wf, bwraps2, invpolar, threeply, spligon, lazysensen, disc3, cpow3_wf (variations_jwildfire_wild.cpp).
+void addJwildfireWildVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

@@ -1,0 +1,201 @@
+// The variations of core/flame/variations_jwildfire_wild.cpp (JWildfire's mandelbrot, invsquircular, sph3D,
+// colorscale_wf, bubble_wf, bwraps2, invpolar, threeply, spligon, lazysensen, disc3 and cpow3_wf) in float, as
+// flame_variations.glsl describes; the CPU kernels are the reference and say what each does.
+
+// JWildfire's Tools.FTOI (half away from 0) in double, held in Java's int range.
+double wild_javaInt(double v) {
+  return clamp(sign(v) * floor(abs(v) + 0.5lf), -2147483648.0lf, 2147483647.0lf);
+}
+float wild_nan() { return uintBitsToFloat(0x7fc00000u); }
+// One uniform in [0, 1) from a hash state, as core::laneUniform advances it.
+float wild_uniform(inout uint h) {
+  h ^= h << 13;
+  h ^= h >> 17;
+  h ^= h << 5;
+  return float(h >> 8) * (1.0 / 16777216.0);
+}
+
+// mandelbrot in double throughout (its parameters in double after its 12 and the memory slot): where a start
+// falls and how long its orbit stays decide which starts are kept and how many draws a call makes. The
+// lane's memory: the last kept start and its height.
+vec3 V_mandelbrot(vec3 p, float w, int P, int A) {
+  int M = int(P_(P, 12));
+  double iter = min(wild_javaInt(paramDouble(P + 13, 0)), 10000.0lf);
+  double xmin = paramDouble(P + 13, 1), xmax = paramDouble(P + 13, 2);
+  double ymin = paramDouble(P + 13, 3), ymax = paramDouble(P + 13, 4);
+  double invert = wild_javaInt(paramDouble(P + 13, 5)), skin = paramDouble(P + 13, 6);
+  double maxPoints = wild_javaInt(paramDouble(P + 13, 9));
+  if (maxPoints > 0.0lf && maxPoints < 100.0lf) maxPoints = 100.0lf;
+  uint seed = uint(int(wild_javaInt(paramDouble(P + 13, 10))));
+  double zRange = paramDouble(P + 13, 11);
+  float cx = P_(P, 7), cy = P_(P, 8);
+  precise double x0 = gLane[M], y0 = gLane[M + 1], z0 = gLane[M + 2];
+  precise double x1 = x0, zx = x0, y1 = y0, zy = y0;
+  bool inverted = double(psi()) < invert;
+  double steps = inverted ? 0.0lf : iter;
+  int k = 0;
+  while (k++ < 10 &&
+         (inverted ? steps < iter : (steps >= iter || (skin < 1.0lf && steps < 0.1lf * iter * (1.0lf - skin))))) {
+    if (x0 == 0.0lf && y0 == 0.0lf) {
+      if (maxPoints > 0.0lf) {
+        double pick = min(floor(double(psi()) * maxPoints), maxPoints - 1.0lf);
+        uint h = seed * 0x9E3779B1u ^ (uint(pick) + 1u) * 0x85EBCA77u;
+        h ^= h >> 16;
+        h *= 0x7FEB352Du;
+        h ^= h >> 15;
+        h *= 0x846CA68Bu;
+        h ^= h >> 16;
+        if (h == 0u) h = 0x6D2B79F5u;
+        double u = double(wild_uniform(h)), v = double(wild_uniform(h)), t = double(wild_uniform(h));
+        x0 = (xmax - xmin) * u + xmin;
+        y0 = (ymax - ymin) * v + ymin;
+        z0 = t * zRange;
+      } else {
+        x0 = (xmax - xmin) * double(psi()) + xmin;
+        y0 = (ymax - ymin) * double(psi()) + ymin;
+        z0 = double(psi()) * zRange;
+      }
+    } else {
+      x0 = (skin + 0.001lf) * (double(psi()) - 0.5lf) + x0;
+      y0 = (skin + 0.001lf) * (double(psi()) - 0.5lf) + y0;
+    }
+    x1 = x0;
+    zx = x0;
+    y1 = y0;
+    zy = y0;
+    steps = 0.0lf;
+    for (;;) {
+      precise double size = zx * zx + zy * zy;
+      if (!(size < 4.0lf && steps < iter)) break;
+      precise double next = zx * zx - zy * zy + x0;
+      zy = 2.0lf * zx * zy + y0;
+      zx = next;
+      steps += 1.0lf;
+    }
+    if (steps >= iter || skin == 1.0lf || steps < 0.1lf * (iter * (1.0lf - skin))) {
+      x0 = 0.0lf;
+      y0 = 0.0lf;
+    }
+  }
+  if (k >= 10) {
+    x1 = 50000.0lf - double(psi()) * 100000.0lf;
+    y1 = x1;
+  }
+  gLane[M] = x0;
+  gLane[M + 1] = y0;
+  gLane[M + 2] = z0;
+  return vec3(w * (float(x1) + cx * float(zx)), w * (float(y1) + cy * float(zy)), float(z0));
+}
+
+vec3 V_invsquircular(vec3 p, float w, int P, int A) {
+  vec2 q = vec2(0.0);
+  if (w != 0.0) {
+    float u = p.x, v = p.y;
+    float r = u * u + v * v;
+    float r2 = sqrt(r * (w * w * r - 4.0 * u * u * v * v) / w);
+    float rho = sqrt(r - r2) / 1.4142135623730951;
+    q = vec2(rho / u, rho / v);
+  }
+  if (isnan(q.x) || isinf(q.x) || isnan(q.y) || isinf(q.y)) return vec3(wild_nan());
+  return vec3(q, w * p.z);
+}
+
+vec3 V_sph3D(vec3 p, float w, int P, int A) {
+  float px = P_(P, 0), py = P_(P, 1);
+  vec3 s = vec3(px * p.x, py * p.y, px * p.z);
+  return p * (w / (dot(s, s) + 1e-29));
+}
+
+// Reads the sum before it (gSum) and returns the new one.
+vec3 V_colorscale_wf(vec3 p, float w, int P, int A) {
+  float draw = psi();
+  float dz = gColour * P_(P, 2) * w + P_(P, 3);
+  vec3 s = gSum;
+  s.x += w * P_(P, 0) * p.x;
+  s.y += w * P_(P, 1) * p.y;
+  s.z = P_(P, 4) > 0.0 ? dz : s.z + (P_(P, 5) > 0.0 ? dz * draw : dz);
+  return s;
+}
+
+vec3 V_bubble_wf(vec3 p, float w, int P, int A) {
+  float r = (p.x * p.x + p.y * p.y) / 4.0 + 1.0;
+  float side = psi() < 0.5 ? -1.0 : 1.0;
+  return vec3(p.xy * (w / r), side * (w * (2.0 / r - 1.0)));
+}
+
+vec3 V_bwraps2(vec3 p, float w, int P, int A) {
+  float cellsize = P_(P, 0), space = P_(P, 1), gain = P_(P, 2), innerTwist = P_(P, 3), outerTwist = P_(P, 4);
+  float radius = 0.5 * (cellsize / (1.0 + space * space));
+  float g2 = gain * gain / cellsize + 1e-6;
+  float maxBubble = g2 * radius;
+  maxBubble = maxBubble > 2.0 ? 1.0 : maxBubble * (1.0 / (maxBubble * maxBubble / 4.0 + 1.0));
+  float r2 = radius * radius, rfactor = radius / maxBubble;
+  vec2 q = p.xy;
+  if (cellsize != 0.0) {  // float holds no |cellsize| below the CPU's 1e-300 but 0
+    vec2 centre = (floor(p.xy / cellsize) + 0.5) * cellsize;
+    vec2 l = p.xy - centre;
+    if (!(dot(l, l) > r2)) {
+      l *= g2;
+      l *= rfactor / (dot(l, l) / 4.0 + 1.0);
+      float t = r2 > 0.0 ? dot(l, l) / r2 : 0.0;
+      float theta = innerTwist * (1.0 - t) + outerTwist * t;
+      float s = sin(theta), c = cos(theta);
+      q = vec2(centre.x + c * l.x + s * l.y, centre.y - s * l.x + c * l.y);
+    }
+  }
+  return w * vec3(q, p.z);
+}
+
+vec3 V_invpolar(vec3 p, float w, int P, int A) {
+  float ny = 1.0 + p.y;
+  return vec3(w * ny * sin(p.x * kPi), w * ny * cos(p.x * kPi), w * p.z);
+}
+
+// A point of the orbit's table (after its 3 parameters), Ψ picking which, as on the CPU.
+vec3 V_threeply(vec3 p, float w, int P, int A) {
+  int count = tableSize(P, 3) / 2;
+  return vec3(0.001 * tablePoint(P, 3, tableIndex(psi(), count)) * w, w * p.z);
+}
+
+vec3 V_spligon(vec3 p, float w, int P, int A) {
+  float sides = roundHalfAway(P_(P, 0)) == 0.0 ? 1.0 : P_(P, 0), r = P_(P, 1);
+  float th = sides / kTwoPi, thi = 1.0 / th;
+  float j = kPi * P_(P, 2) / (-2.0 * sides);
+  float t = thi * floor(atan2c(p.y, p.x) * th) + j;
+  return vec3(w * (p.x + cos(t) * r), w * (p.y + sin(t) * r), w * p.z);
+}
+
+float wild_lazysensenFlip(float v, float s) {
+  if (s == 0.0) return v;
+  float m = floor(v * s);
+  if (isnan(m)) return v;
+  m = clamp(m, -2147483648.0, 2147483647.0);
+  float odd = m - 2.0 * trunc(m / 2.0);  // Java's %: the sign of m
+  return (m >= 0.0 ? odd == 1.0 : odd == 0.0) ? -v : v;
+}
+vec3 V_lazysensen(vec3 p, float w, int P, int A) {
+  return w * vec3(wild_lazysensenFlip(p.x, P_(P, 0)), wild_lazysensenFlip(p.y, P_(P, 1)),
+                  wild_lazysensenFlip(p.z, P_(P, 2)));
+}
+
+vec3 V_disc3(vec3 p, float w, int P, int A) {
+  float rho = kPi * sqrt(p.x * P_(P, 3) * p.x * P_(P, 4) + p.y * P_(P, 5) * p.y * P_(P, 6));
+  float r = w * atan2c(p.x, p.y) / kPi * P_(P, 2);
+  return vec3(sin(rho) * P_(P, 0) * P_(P, 7) * r, cos(rho) * P_(P, 1) * P_(P, 7) * r, w * p.z);
+}
+
+vec3 V_cpow3_wf(vec3 p, float w, int P, int A) {
+  float divisor = P_(P, 2), spread = P_(P, 3), spread2 = P_(P, 5), offset2 = P_(P, 6);
+  float ang = kTwoPi / divisor;
+  float c = P_(P, 0) * cos(kPi / 2.0 * P_(P, 1)) / divisor, d = P_(P, 0) * sin(kPi / 2.0 * P_(P, 1)) / divisor;
+  float a = atan2c(p.y, p.x);
+  float turns = psi() * spread;
+  if (P_(P, 4) >= 1.0) turns = trunc(turns);
+  if (a < 0.0) turns += 1.0;
+  a += kTwoPi * turns;
+  if (cos(a * (0.5 / spread)) < psi() * 2.0 - 1.0) a -= kTwoPi * spread;
+  float lnr2 = log(p.x * p.x + p.y * p.y);
+  float r = w * exp(c / 2.0 * lnr2 - d * a);
+  float alpha = c * a * (d / 2.0) * lnr2 * ang * (psi() * spread2 + offset2);
+  return vec3(r * cos(alpha), r * sin(alpha), w * p.z);
+}
