@@ -414,7 +414,7 @@ TEST(FlamePreset, BadFlameLayersNameTheKeyAndTheReason) {
                 preset(R"({"kind": "flame", "flame": {"xforms": [{"variations": [{"name": "linear", "pwr": 2}]}]}})"))
                 .find("'layers[0].flame.xforms[0].variations[0].pwr' is not a known key"),
             std::string::npos);
-  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{}], "symmetry": {"rotational": 99}}})"))
+  EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{}], "symmetry": {"rotational": 128}}})"))
                 .find("rotational"),
             std::string::npos);
   EXPECT_NE(presetErrorOf(preset(R"({"kind": "flame", "flame": {"xforms": [{}], "post_symmetry": {"order": 65}}})"))
