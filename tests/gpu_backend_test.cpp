@@ -536,6 +536,17 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"disc3", {0.7, 1.2, 0.9, 1.1, 0.8, 1.3, 0.6, 1.4}},
       {"cpow3_wf", {1.3, 0.4, 3.0, 2.5, 0.0, 0.5, 0.7}},
       {"cpow3_wf", {1.3, 0.4, 3.0, 2.5, 1.0, 0.5, 0.7}},
+      // dc_portal, dc_menger and dc_tesla (their patterns' colours and grey levels; dc_portal's and dc_tesla's time,
+      // waves, zoom and style in double, which no float holds here), post_stun as the file writes it and stun's
+      // thresholds in either order.
+      {"dc_portal", {1000.0, 3.7, 2.5, 7.3, 0.0, 2.0, 0.5, -0.25, 1.0}},
+      {"dc_portal", {1000.0, 0.0, 5.0, 15.0, 1.0, 0.0, 0.25, 0.125, 0.0}},
+      {"dc_menger", {1.55, 5.0, 0.0, 2.0, 0.5, -0.25, 1.0}},
+      {"dc_menger", {0.75, 2.0, 1.0, 1.0, 0.25, 0.5, 0.0}},
+      {"dc_tesla", {20.0, 12.0, 10000.0, 10.732000000000001, 11.0, 0.0, 2.0, 0.5, -0.25, 1.0}},
+      {"dc_tesla", {9.0, 30.3, 10000.0, 3.3, 2.7, 1.0, 1.0, 0.25, 0.5, 0.0}},
+      {"post_stun", {0.0, 0.0, 1.0}},
+      {"stun", {2.5, 0.7, 0.1}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})

@@ -164,6 +164,34 @@ VOXFLAME_VARIATION_TARGETS void julian2(const VariationInput& in, double* __rest
   }
 }
 
+// stun (Apophysis' post_stun plugin, written to act after the other terms on their sum: as post_stun it
+// maps the point it is handed): beyond r² > r_min (r² itself against the radius, as the plugin does) the
+// point is scaled by 1/m − 1, m = (r + |power r Ψ|)² where that exceeds r_max, else r²; then (3w/π atan2(x,
+// y), 3w/2π ln(x² + y²), 3w z). power, r_min and r_max are clamped into [0, 10¹⁰¹] as the plugin's ranges.
+VOXFLAME_VARIATION_TARGETS void stun(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                     double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const auto ranged = [](double v) { return std::clamp(v, 0.0, 1e101); };
+  const double power = std::abs(ranged(P[0])), rMin = ranged(P[1]), rMax = ranged(P[2]);
+  const double low = rMin < rMax ? rMin : rMax, high = rMin > rMax ? rMin : rMax;
+  const double w3 = 3.0 * w, w1 = w3 / kPi, w2 = 0.5 * w1;
+  for (std::size_t i = 0; i < n; ++i) {
+    double px = x[i], py = y[i];
+    const double r2 = px * px + py * py;
+    if (r2 > low) {
+      const double r = std::sqrt(r2);
+      const double reach = r + std::abs(power * r * laneUniform(rnd[i]));
+      const double m = reach * reach > high ? reach * reach : r2;
+      const double scale = 1.0 / m - 1.0;
+      px *= scale;
+      py *= scale;
+    }
+    outX[i] += w1 * std::atan2(px, py);
+    outY[i] += w2 * std::log(px * px + py * py);
+    outZ[i] += w3 * z[i];
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addApophysisVariations(std::vector<VariationInfo>& catalogue) {
@@ -223,6 +251,11 @@ void variation_kernels::addApophysisVariations(std::vector<VariationInfo>& catal
        {"d", 1.0, -2.0, 2.0},
        {"e", 0.0, -2.0, 2.0},
        {"f", 0.0, -2.0, 2.0}});
+  add("stun",
+      "(3w/π atan2(x', y'), 3w/2π ln(x'² + y'²), 3w z), p' = p (1/m − 1) where r² > min(r_min, r_max), m = (r + "
+      "|power r Ψ|)² where that exceeds max(r_min, r_max), else r²; else p' = p (Apophysis' post_stun plugin, which "
+      "maps the sum of the other terms: post_stun here)",
+      k3D, kRandom, &stun, {{"power", 1.0, 0.0, 10.0}, {"r_min", 0.0, 0.0, 10.0}, {"r_max", 1.0, 0.0, 10.0}});
 }
 
 }  // namespace voxflame::core

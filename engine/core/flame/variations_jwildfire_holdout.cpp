@@ -675,6 +675,78 @@ VOXFLAME_VARIATION_TARGETS void dcInversion(const VariationInput& in, double* __
   });
 }
 
+// dc_portal (Jesus Sosa's, after the shadertoys 4tBBRw and Xt2BzD): at uv = the point · zoom, with t = 1000 +
+// time, c = 3 sin(t (1 + √|uv| / waves) + t/8 cos uv_x cos uv_y); the colour is (|c| − 1, |c| − 1.5, |c| − 2)
+// where c > 0, else |c| − 1.5 in each channel (the shader's "metal" colour). Square [−½, ½]².
+VOXFLAME_VARIATION_TARGETS void dcPortal(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  const double* P = in.params;
+  const double t = 1000.0 + P[1], waves = P[2], zoom = P[3];
+  dcBaseKernel(in, ox, oy, oz, 4, 0.5, [&](double px, double py) {
+    const double ux = px * zoom, uy = py * zoom;
+    const double d = 1.0 + std::sqrt(std::sqrt(ux * ux + uy * uy)) / waves;
+    const double c = std::sin(d * t + t * 0.125 * std::cos(ux) * std::cos(uy)) * 3.0;
+    const double a = std::abs(c);
+    return c > 0.0 ? Rgb{a - 1.0, a - 1.5, a - 2.0} : Rgb{a - 1.5, a - 1.5, a - 1.5};
+  });
+}
+
+// dc_menger (Jesus Sosa's): white inside a Sierpiński carpet, black outside. At q = 1.3 zoom · the point,
+// d = the box's distance |max(|q| − 1, 0)| + min(max of |q| − 1, 0), then `level` times a = (s q mod 2) − 1
+// (GLSL's mod), s ← 3s, d = max(d, (min |1 − 3|a|| − 1)/s); white where d ≤ 0. Square [−½, ½]².
+VOXFLAME_VARIATION_TARGETS void dcMenger(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                         double* __restrict oz) {
+  const double* P = in.params;
+  const double zoom = P[0], level = jwfLimitedInt(P[1], 1.0, 5.0);
+  const auto glslMod = [](double v, double m) { return v - m * std::floor(v / m); };
+  dcBaseKernel(in, ox, oy, oz, 2, 0.5, [&](double px, double py) {
+    const double qx = px * zoom * 1.3, qy = py * zoom * 1.3;
+    const double bx = std::abs(qx) - 1.0, by = std::abs(qy) - 1.0;
+    const double outX = std::max(bx, 0.0), outY = std::max(by, 0.0);
+    double d = std::sqrt(outX * outX + outY * outY) + std::min(std::max(bx, by), 0.0);
+    double s = 1.0;
+    for (double k = 0.0; k < level; k += 1.0) {
+      const double ax = glslMod(qx * s, 2.0) - 1.0, ay = glslMod(qy * s, 2.0) - 1.0;
+      const double rx = 1.0 - std::abs(ax) * 3.0, ry = 1.0 - std::abs(ay) * 3.0;
+      s *= 3.0;
+      d = std::max(d, (std::min(std::abs(rx), std::abs(ry)) - 1.0) / s);
+    }
+    const double c = d > 0.0 ? 0.0 : 1.0;
+    return Rgb{c, c, c};
+  });
+}
+
+// dc_tesla (Jesus Sosa's, after a shadertoy field): p = (zoom · the point, 1), s = ½, `levels` times m = |p|²
+// s^|sin(time/8)|, p ← |p|/m + (−0.9, −0.23456 |sin time|, −1), a += e^(−k/style) e^(−strength |m/m'|^1.2) (m'
+// the m before, 0 at first), tw += e^(−2k/style); strength = 20 + 0.03 ln(10⁻⁶ + fract(4500 sin 10 time)), a
+// starting at 1.5, tw at 0 (JWildfire's CPU; its GPU code starts tw at 0.01). The grey max(0, 6 a/tw − 2).
+// Square [−½, ½]².
+VOXFLAME_VARIATION_TARGETS void dcTesla(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  const double* P = in.params;
+  const double levels = jwfLimitedInt(P[0], 1.0, 25.0);
+  const double style = std::isnan(P[1]) ? P[1] : std::clamp(P[1], 5.0, 100.0);
+  const double time = P[3], zoom = P[4];
+  const double wave = 4500.0 * std::sin(time * 10.0);
+  const double strength = 20.0 + 0.03 * std::log(1e-6 + (wave - std::floor(wave)));
+  const double shrink = std::pow(0.5, std::abs(std::sin(time / 8.0))), lift = -0.23456 * std::abs(std::sin(time));
+  dcBaseKernel(in, ox, oy, oz, 5, 0.5, [&](double px, double py) {
+    double vx = px * zoom, vy = py * zoom, vz = 1.0, accum = 1.5, previous = 0.0, tw = 0.0;
+    for (double k = 0.0; k < levels; k += 1.0) {
+      const double mag = (vx * vx + vy * vy + vz * vz) * shrink;
+      vx = std::abs(vx) / mag - 0.9;
+      vy = std::abs(vy) / mag + lift;
+      vz = std::abs(vz) / mag - 1.0;
+      const double weight = std::exp(-k / style);
+      accum += weight * std::exp(-strength * std::pow(std::abs(mag / previous), 1.2));
+      tw += weight * weight;
+      previous = mag;
+    }
+    const double grey = std::max(0.0, 6.0 * accum / tw - 2.0);
+    return Rgb{grey, grey, grey};
+  });
+}
+
 }  // namespace
 
 void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>& catalogue) {
@@ -809,6 +881,44 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
                     count("iterations", 50.0, 0.0, 100.0),
                     {"scaleX", 1.5, 1.1, 3.0},
                     {"scaleY", 1.5, 1.1, 3.0}}));
+  catalogue.back().directColour = true;
+  catalogue.back().readsSum = true;
+  catalogue.back().paintsRgb = true;
+  add("dc_portal",
+      "w q, q = Ψ-uniform in [−½, ½]² (ColorOnly: the point); Gradient 2: colour index the grey level of the "
+      "portal's colour at uv = q · zoom (c = 3 sin(t (1 + √|uv|/waves) + t/8 cos uv_x cos uv_y), t = 1000 + time; "
+      "(|c| − 1, |c| − 1.5, |c| − 2) where c > 0, else |c| − 1.5 in each channel); Gradient 0 paints the point "
+      "that RGB colour, 1 the palette's entry nearest to it, both leaving the index; z + grey · scale_z + offset_z "
+      "(reset_z: z = that); seed is JWildfire's clock-driven time, which time overrides",
+      k3D, kRandom, &dcPortal,
+      dcBaseParams({count("seed", 1000.0, 0.0, 10000.0),
+                    {"time", 0.0, 0.0, 100.0},
+                    {"waves", 5.0, 0.0, 20.0},
+                    {"zoom", 15.0, 0.0, 50.0}}));
+  catalogue.back().directColour = true;
+  catalogue.back().readsSum = true;
+  catalogue.back().paintsRgb = true;
+  add("dc_menger",
+      "w q, q = Ψ-uniform in [−½, ½]² (ColorOnly: the point); Gradient 2: colour index the grey level of a "
+      "Sierpiński carpet at 1.3 zoom · q (white inside, where the box's distance and level crosses' distances "
+      "are all ≤ 0, else black); Gradient 0 paints the point that RGB colour, 1 the palette's entry nearest to it, "
+      "both leaving the index; z + grey · scale_z + offset_z (reset_z: z = that)",
+      k3D, kRandom, &dcMenger, dcBaseParams({{"zoom", 1.0, -10.0, 10.0}, count("level", 3.0, 1.0, 5.0)}));
+  catalogue.back().directColour = true;
+  catalogue.back().readsSum = true;
+  catalogue.back().paintsRgb = true;
+  add("dc_tesla",
+      "w q, q = Ψ-uniform in [−½, ½]² (ColorOnly: the point); Gradient 2: colour index the grey level of a field "
+      "at (zoom q, 1) (levels steps of p → |p|/m + (−0.9, −0.23456 |sin time|, −1), m = |p|² ½^|sin(time/8)|, "
+      "summing e^(−k/style) e^(−strength |m/m'|^1.2); grey max(0, 6 a/tw − 2)); Gradient 0 paints the point that "
+      "RGB colour, 1 the palette's entry nearest to it, both leaving the index; z + grey · scale_z + offset_z "
+      "(reset_z: z = that); seed is JWildfire's clock-driven time, which time overrides",
+      k3D, kRandom, &dcTesla,
+      dcBaseParams({count("levels", 20.0, 1.0, 25.0),
+                    {"style", 10.0, 5.0, 100.0},
+                    count("seed", 10000.0, 0.0, 10000.0),
+                    {"time", 0.0, 0.0, 100.0},
+                    {"zoom", 4.0, -10.0, 10.0}}));
   catalogue.back().directColour = true;
   catalogue.back().readsSum = true;
   catalogue.back().paintsRgb = true;

@@ -178,7 +178,8 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
   if (info.name == "crop_trapezoid" && param == "base_sup") names.push_back(termAttribute + "_Base Sup.");
   if (info.name == "crop_trapezoid" && param == "base_inf") names.push_back(termAttribute + "_Base Inf.");
   // JWildfire's hamid_js names two parameters "number_lines/circles" and "filled circles", and
-  // dc_booleans before 2021 its type "^/&/|" and its z_scale and z_offset (scale_z, offset_z since).
+  // dc_booleans before 2021 its type "^/&/|"; its DC_BaseFunc variations (dc_booleans, dc_menger, ...)
+  // named scale_z and offset_z z_scale and z_offset before July 2021.
   if (info.name == "hamid_js" && param == "number_lines_circles")
     names.push_back(termAttribute + "_number_lines/circles");
   if (info.name == "hamid_js" && param == "filled_circles") names.push_back(termAttribute + "_filled circles");
@@ -187,8 +188,8 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
   // "show/hide(1/0)".
   if (info.name == "glynns3subfl" && param == "probability") names.push_back(termAttribute + "_weight");
   if (info.name == "glynns3subfl" && param == "show") names.push_back(termAttribute + "_show/hide(1/0)");
-  if (info.name == "dc_booleans" && param == "scale_z") names.push_back(termAttribute + "_z_scale");
-  if (info.name == "dc_booleans" && param == "offset_z") names.push_back(termAttribute + "_z_offset");
+  if (info.name.starts_with("dc_") && param == "scale_z") names.push_back(termAttribute + "_z_scale");
+  if (info.name.starts_with("dc_") && param == "offset_z") names.push_back(termAttribute + "_z_offset");
   if (info.name == "mobius" && param.size() == 4) {
     std::string bare = param;
     bare[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(bare[0])));

@@ -951,6 +951,21 @@ vec3 V_julian2(vec3 p, float w, int P, int A) {
   float r = w * pow(px * px + py * py, exponent);
   return vec3(r * cos(angle), r * sin(angle), w * p.z);
 }
+vec3 V_stun(vec3 p, float w, int P, int A) {
+  float power = abs(clamp(P_(P, 0), 0.0, 3.4e38)), rMin = clamp(P_(P, 1), 0.0, 3.4e38);
+  float rMax = clamp(P_(P, 2), 0.0, 3.4e38);
+  float low = rMin < rMax ? rMin : rMax, high = rMin > rMax ? rMin : rMax;
+  float w3 = 3.0 * w, w1 = w3 / kPi, w2 = 0.5 * w1;
+  vec2 q = p.xy;
+  float r2 = q.x * q.x + q.y * q.y;
+  if (r2 > low) {
+    float r = sqrt(r2);
+    float reach = r + abs(power * r * psi());
+    float m = reach * reach > high ? reach * reach : r2;
+    q *= 1.0 / m - 1.0;
+  }
+  return vec3(w1 * atan2c(q.x, q.y), w2 * log(q.x * q.x + q.y * q.y), w3 * p.z);
+}
 vec3 V_epispiral_wf(vec3 p, float w, int P, int A) {
   float theta = atan2c(p.x, p.y);
   float d = cos(P_(P, 0) * theta);

@@ -1,6 +1,7 @@
 // The variations of core/flame/variations_jwildfire_wild.cpp (JWildfire's mandelbrot, invsquircular, sph3D,
 // colorscale_wf, bubble_wf, bwraps2, invpolar, threeply, spligon, lazysensen, disc3 and cpow3_wf) in float, as
-// flame_variations.glsl describes; the CPU kernels are the reference and say what each does.
+// flame_variations.glsl describes, and variations_jwildfire_holdout.cpp's dc_portal, dc_menger and dc_tesla;
+// the CPU kernels are the reference and say what each does.
 
 // JWildfire's Tools.FTOI (half away from 0) in double, held in Java's int range.
 double wild_javaInt(double v) {
@@ -198,4 +199,77 @@ vec3 V_cpow3_wf(vec3 p, float w, int P, int A) {
   float r = w * exp(c / 2.0 * lnr2 - d * a);
   float alpha = c * a * (d / 2.0) * lnr2 * ang * (psi() * spread2 + offset2);
   return vec3(r * cos(alpha), r * sin(alpha), w * p.z);
+}
+
+// dc_portal in double (time, waves and zoom too, after its 9 parameters, the memory slot and the palette's
+// place): the sine's argument is some thousand radians, where a float's rounding moves the colour.
+vec3 V_dc_portal(vec3 p, float w, int P, int A) {
+  const int D = P + 11;
+  double t = 1000.0lf + paramDouble(D, 1), waves = paramDouble(D, 2), zoom = paramDouble(D, 3);
+  dvec2 q = rgb_dcPoint(p, P, 4, 0.5lf);
+  precise double ux = q.x * zoom, uy = q.y * zoom;
+  precise double d = 1.0lf + sqrt(sqrt(ux * ux + uy * uy)) / waves;
+  precise double c = dsin(d * t + t * 0.125lf * dcos(ux) * dcos(uy)) * 3.0lf;
+  double a = abs(c);
+  dvec3 colour = c > 0.0lf ? dvec3(a - 1.0lf, a - 1.5lf, a - 2.0lf) : dvec3(a - 1.5lf);
+  return rgb_dcFinish(p, w, P, 4, 9, q, colour);
+}
+
+// dc_menger: the carpet's cells in double, as the CPU's (a point on a cell's edge is either colour).
+vec3 V_dc_menger(vec3 p, float w, int P, int A) {
+  double zoom = double(P_(P, 0)), level = double(rgb_limitedInt(P_(P, 1), 1.0, 5.0));
+  dvec2 q = rgb_dcPoint(p, P, 2, 0.5lf);
+  precise double qx = q.x * zoom * 1.3lf, qy = q.y * zoom * 1.3lf;
+  precise double bx = abs(qx) - 1.0lf, by = abs(qy) - 1.0lf;
+  precise double ox = max(bx, 0.0lf), oy = max(by, 0.0lf);
+  precise double d = sqrt(ox * ox + oy * oy) + min(max(bx, by), 0.0lf);
+  double s = 1.0lf;
+  for (double k = 0.0lf; k < level; k += 1.0lf) {
+    precise double ax = qx * s - 2.0lf * floor(qx * s / 2.0lf) - 1.0lf;
+    precise double ay = qy * s - 2.0lf * floor(qy * s / 2.0lf) - 1.0lf;
+    precise double rx = 1.0lf - abs(ax) * 3.0lf, ry = 1.0lf - abs(ay) * 3.0lf;
+    s *= 3.0lf;
+    d = max(d, (min(abs(rx), abs(ry)) - 1.0lf) / s);
+  }
+  double c = d > 0.0lf ? 0.0lf : 1.0lf;
+  return rgb_dcFinish(p, w, P, 2, 7, q, dvec3(c));
+}
+
+// e^v in double for |v| ≤ 1 (its Taylor series), dc_tesla's ½^|sin(time/8)|.
+double wild_dexpSmall(double v) {
+  precise double term = 1.0lf, sum = 1.0lf;
+  for (int k = 1; k < 24; ++k) {
+    term *= v / double(k);
+    sum += term;
+  }
+  return sum;
+}
+// dc_tesla: the orbit in double (it is chaotic: a float's rounding moves its colour), with time, style and
+// zoom in double (after its 10 parameters, the memory slot and the palette's place); each step's weight in
+// float.
+vec3 V_dc_tesla(vec3 p, float w, int P, int A) {
+  const int D = P + 12;
+  double levels = double(rgb_limitedInt(P_(P, 0), 1.0, 25.0));
+  double style = isnan(paramDouble(D, 1)) ? paramDouble(D, 1) : clamp(paramDouble(D, 1), 5.0lf, 100.0lf);
+  double time = paramDouble(D, 3), zoom = paramDouble(D, 4);
+  precise double wave = 4500.0lf * dsin(time * 10.0lf);
+  float strength = float(20.0lf + 0.03lf * rgb_dlog(1e-6lf + (wave - floor(wave))));
+  double shrink = wild_dexpSmall(-abs(dsin(time / 8.0lf)) * 0.69314718055994531lf);
+  double lift = -0.23456lf * abs(dsin(time));
+  dvec2 q = rgb_dcPoint(p, P, 5, 0.5lf);
+  precise double vx = q.x * zoom, vy = q.y * zoom, vz = 1.0lf, previous = 0.0lf;
+  float accum = 1.5, tw = 0.0;
+  for (double k = 0.0lf; k < levels; k += 1.0lf) {
+    precise double mag = (vx * vx + vy * vy + vz * vz) * shrink;
+    vx = abs(vx) / mag - 0.9lf;
+    vy = abs(vy) / mag + lift;
+    vz = abs(vz) / mag - 1.0lf;
+    float weight = exp(float(-k / style));
+    // The first step's ratio is infinite on the CPU (m' = 0, m > 0): its term is 0.
+    if (previous != 0.0lf) accum += weight * exp(-strength * pow(abs(float(mag / previous)), 1.2));
+    tw += weight * weight;
+    previous = mag;
+  }
+  double grey = double(max(0.0, 6.0 * accum / tw - 2.0));
+  return rgb_dcFinish(p, w, P, 5, 10, q, dvec3(grey));
 }
