@@ -259,13 +259,16 @@ class Generator {
     struct Term {
       const core::VariationInfo* info;
       const core::VariationTerm* term;
+      core::WeightFieldTerm field;  // what the transform's weighting field does to it (none without one)
     };
     std::array<std::vector<Term>, 3> stages;
     for (const core::VariationStage stage :
          {core::VariationStage::Pre, core::VariationStage::Normal, core::VariationStage::Post})
       for (const core::VariationTerm& term : xform.variations) {
         if (term.weight == 0.0 || core::variationStage(term.name) != stage) continue;
-        stages[static_cast<int>(stage)].push_back({core::findVariation(term.name), &term});
+        const core::VariationInfo* info = core::findVariation(term.name);
+        stages[static_cast<int>(stage)].push_back(
+            {info, &term, field ? core::weightFieldTerm(xform, term, *info) : core::WeightFieldTerm{}});
       }
     // Code a term's call needs before the statement that calls it: the copy of its numbers that the
     // field's noise moves (core::ChaosGame::applyGroup's lane-by-lane parameters).
@@ -321,8 +324,7 @@ class Generator {
         k_.data.insert(k_.data.end(), words.begin(), words.end());
       }
       k_.variations.push_back(t.info->name);
-      const core::WeightFieldTerm moved =
-          field ? core::weightFieldTerm(xform, *t.term, *t.info) : core::WeightFieldTerm{};
+      const core::WeightFieldTerm& moved = t.field;
       std::string at = std::to_string(params);
       setup.clear();
       if (!moved.params.empty()) {
@@ -346,7 +348,7 @@ class Generator {
     };
     // A term's factor under the field: the field's, times its own weight's (WeightFieldTerm::weight).
     const auto factor = [&](const Term& t) -> std::string {
-      const double weight = core::weightFieldTerm(xform, *t.term, *t.info).weight;
+      const double weight = t.field.weight;
       if (weight == 0.0) return "field";
       return "field * (1.0 + fieldN * flameData[" + std::to_string(put(weight)) + "])";
     };

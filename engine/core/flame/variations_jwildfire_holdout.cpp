@@ -840,6 +840,11 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
     own.push_back(count("reset_z", 1.0, 0.0, 1.0));
     return own;
   };
+  // JWildfire's DC_BaseFunc painters: colour index or true colour from a picture, z from its grey level.
+  const auto paintsLikeDcBase = [&] {
+    VariationInfo& info = catalogue.back();
+    info.directColour = info.readsSum = info.paintsRgb = true;
+  };
   add("dc_quadtree",
       "w q, q = Ψ-uniform in [−½, ½]² (ColorOnly: the point); Gradient 2: colour index the grey level of Neyret's "
       "quadtree colour at q (cells split while ½ + ½ sin(id + time) sin(2.17 id − time) sin(5.7 id + time) ≤ 0.7, "
@@ -852,9 +857,7 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
                     {"time", 0.0, 0.0, 100.0},
                     {"width", 1000.0, 100.0, 1000.0},
                     count("levels", 30.0, 1.0, 50.0)}));
-  catalogue.back().directColour = true;
-  catalogue.back().readsSum = true;
-  catalogue.back().paintsRgb = true;
+  paintsLikeDcBase();
   add("dc_ducks",
       "w q, q = Ψ-uniform in [−1, 1]² (ColorOnly: the point); Gradient 2: colour index the grey level of the "
       "ducks fractal's colour at q·zoom (50 steps of e → (log |e'|, ∠e' − 6.2) + (0.1 sin(t/3) − 0.1, 5 + 0.1 "
@@ -864,9 +867,7 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
       "clock-driven time, which time overrides",
       k3D, kRandom, &dcDucks,
       dcBaseParams({count("seed", 10000.0, 0.0, 10000.0), {"time", 10.0, 0.0, 100.0}, {"zoom", 1.0, -10.0, 10.0}}));
-  catalogue.back().directColour = true;
-  catalogue.back().readsSum = true;
-  catalogue.back().paintsRgb = true;
+  paintsLikeDcBase();
   add("dc_inversion",
       "w q, q = Ψ-uniform in [−1, 1]² (ColorOnly: the point); Gradient 2: colour index the grey level of the "
       "circle-inversion colour at q (iterations steps of v → inv((|v_x|, v_y) · (scaleX, scaleY) + (sin 0.123 "
@@ -881,9 +882,7 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
                     count("iterations", 50.0, 0.0, 100.0),
                     {"scaleX", 1.5, 1.1, 3.0},
                     {"scaleY", 1.5, 1.1, 3.0}}));
-  catalogue.back().directColour = true;
-  catalogue.back().readsSum = true;
-  catalogue.back().paintsRgb = true;
+  paintsLikeDcBase();
   add("dc_portal",
       "w q, q = Ψ-uniform in [−½, ½]² (ColorOnly: the point); Gradient 2: colour index the grey level of the "
       "portal's colour at uv = q · zoom (c = 3 sin(t (1 + √|uv|/waves) + t/8 cos uv_x cos uv_y), t = 1000 + time; "
@@ -895,18 +894,14 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
                     {"time", 0.0, 0.0, 100.0},
                     {"waves", 5.0, 0.0, 20.0},
                     {"zoom", 15.0, 0.0, 50.0}}));
-  catalogue.back().directColour = true;
-  catalogue.back().readsSum = true;
-  catalogue.back().paintsRgb = true;
+  paintsLikeDcBase();
   add("dc_menger",
       "w q, q = Ψ-uniform in [−½, ½]² (ColorOnly: the point); Gradient 2: colour index the grey level of a "
       "Sierpiński carpet at 1.3 zoom · q (white inside, where the box's distance and level crosses' distances "
       "are all ≤ 0, else black); Gradient 0 paints the point that RGB colour, 1 the palette's entry nearest to it, "
       "both leaving the index; z + grey · scale_z + offset_z (reset_z: z = that)",
       k3D, kRandom, &dcMenger, dcBaseParams({{"zoom", 1.0, -10.0, 10.0}, count("level", 3.0, 1.0, 5.0)}));
-  catalogue.back().directColour = true;
-  catalogue.back().readsSum = true;
-  catalogue.back().paintsRgb = true;
+  paintsLikeDcBase();
   add("dc_tesla",
       "w q, q = Ψ-uniform in [−½, ½]² (ColorOnly: the point); Gradient 2: colour index the grey level of a field "
       "at (zoom q, 1) (levels steps of p → |p|/m + (−0.9, −0.23456 |sin time|, −1), m = |p|² ½^|sin(time/8)|, "
@@ -919,9 +914,7 @@ void variation_kernels::addJwildfireHoldoutVariations(std::vector<VariationInfo>
                     count("seed", 10000.0, 0.0, 10000.0),
                     {"time", 0.0, 0.0, 100.0},
                     {"zoom", 4.0, -10.0, 10.0}}));
-  catalogue.back().directColour = true;
-  catalogue.back().readsSum = true;
-  catalogue.back().paintsRgb = true;
+  paintsLikeDcBase();
 }
 
 }  // namespace voxflame::core
