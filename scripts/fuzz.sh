@@ -19,7 +19,7 @@ targets=(flame_xml_fuzzer preset_fuzzer)
 # -O1 keeps the sanitizers' reports readable and the build short; asserts stay on (no NDEBUG).
 CC=clang CXX=clang++ VOXFLAME_BUILD_TYPE=RelWithDebInfo VOXFLAME_BUILD_TARGET="${targets[*]}" \
   "$root/scripts/setup.sh" "$build" -DVOXFLAME_FUZZ=ON -DVOXFLAME_TESTS=OFF \
-  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -g" "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -g" "$@"
+  "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -gline-tables-only" "$@"
 
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
