@@ -214,6 +214,43 @@ std::string parplotMuParserText(const std::string& formula) {
   return formula.empty() ? std::string("0") : fromJava(formula);
 }
 
+std::array<std::string, 3> polarplotSurfaceFormulas(const std::string& formula) {
+  std::string out;
+  out.reserve(formula.size() + 8);
+  std::size_t i = 0;
+  const std::size_t n = formula.size();
+  while (i < n) {
+    const char c = formula[i];
+    if (std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_') {
+      std::size_t j = i;
+      while (j < n && identifierChar(formula[j])) ++j;
+      const std::string_view word = std::string_view(formula).substr(i, j - i);
+      // A member's name (`Math.u`) is not the variable.
+      const bool member = i > 0 && formula[i - 1] == '.';
+      if (!member && word == "t")
+        out += 'u';
+      else if (!member && word == "u")
+        out += 'v';
+      else if (!member && word == "v")
+        out += "polarplot3d_wf_has_no_v";
+      else
+        out += word;
+      i = j;
+      continue;
+    }
+    if (digit(c)) {  // a literal with its suffix or exponent letter, which names nothing
+      std::size_t j = i;
+      while (j < n && (identifierChar(formula[j]) || formula[j] == '.')) ++j;
+      out.append(formula, i, j - i);
+      i = j;
+      continue;
+    }
+    out += c;
+    ++i;
+  }
+  return {out, "0", "0"};
+}
+
 std::optional<std::string> parplotFormulaError(const std::string& formula) {
   mu::Parser p;
   Variables vars;

@@ -23,6 +23,12 @@ std::string parplotMuParserText(const std::string& formula);
 // generated code, and MathLib's constants (Math.PI and Math.E once their qualifier is dropped).
 const std::vector<std::pair<std::string, double>>& parplotConstants();
 
+// JWildfire's polarplot3d_wf draws r(t, u), one formula of t, u and param_a … param_f, in polar
+// coordinates. It is evaluated as a parplot surface (r(t, u), 0, 0) of (u, v) = (t, u): its formula
+// with t renamed u and u renamed v (and a v, which polarplot3d_wf does not have, renamed so that it
+// names nothing), and "0" for Y and Z. An empty formula stays empty: the variation then adds nothing.
+std::array<std::string, 3> polarplotSurfaceFormulas(const std::string& formula);
+
 // Why one formula cannot be evaluated (muParser's message), or nullopt when it can. An empty
 // formula is 0, as in JWildfire.
 std::optional<std::string> parplotFormulaError(const std::string& formula);
