@@ -31,7 +31,8 @@ constexpr double kPi = 3.141592653589793;
 // and Ψ₄ (radius from the hole fill · edge to the edge); parameters clamped as JWildfire's setParameter does (the
 // last row). dc_warping (ColorOnly keeps the point; else (Ψ₁ − ½, Ψ₂ − ½)) at seed 6239's shifts (x0, y0) =
 // (−0.4479, 0.1258) and zoom 2.5 is (123, 57, 41) at (0.1, 0.2) (grey 73/255) and (67, 39, 32) at (−0.2, 0.15)
-// (grey 45/255); unshifted at Ψ's point (103, 44, 30) (grey 58/255).
+// (grey 45/255); unshifted at Ψ's point (103, 44, 30) (grey 58/255). With reset_z, z is grey · scale_z + offset_z (the
+// sum's 0.5 replaced).
 const std::vector<PointCase>& pointCases() {
   static const std::vector<PointCase> cases = {
       {"polarplot3d_wf",
@@ -88,7 +89,7 @@ const std::vector<PointCase>& pointCases() {
        {0.1, 0.2, 0.5},
        0.8,
        kHighSeed,
-       {0.08000000000000002, 0.16000000000000003, 0.24313725490196078}},
+       {0.08000000000000002, 0.16000000000000003, -0.2568627450980392}},
       {"dc_warping",
        {6239.0, 2.5, -0.44785959212788384, 0.12577015000039604, 1.0, 2.0, 2.0, 0.0, 0.0},
        {-0.2, 0.15, 0.5},
@@ -101,7 +102,7 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kLowSeed,
        {-0.14672517776489258, 0.30056557655334476, 0.7637254901960784}},
-      {"dc_warping", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.3035731315612793, 0.03626041412353516, 0.0}},
+      {"dc_warping", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.3035731315612793, 0.03626041412353516, -0.5}},
   };
   return cases;
 }
