@@ -300,12 +300,12 @@ void variation_kernels::addJwildfireRareVariations(std::vector<VariationInfo>& c
        count("blend_colormap", 1.0, 0.0, 1.0),
        {"displ_amount", 0.1, -1.0, 1.0},
        count("blend_displ_map", 1.0, 0.0, 1.0),
-       {"param_a", 5.0, -2.5, 2.5},
-       {"param_b", 2.0, -2.5, 2.5},
-       {"param_c", 0.0, -2.5, 2.5},
-       {"param_d", 0.0, -2.5, 2.5},
-       {"param_e", 0.0, -2.5, 2.5},
-       {"param_f", 0.0, -2.5, 2.5}});
+       {"param_a", 5.0, -10.0, 10.0},
+       {"param_b", 2.0, -10.0, 10.0},
+       {"param_c", 0.0, -10.0, 10.0},
+       {"param_d", 0.0, -10.0, 10.0},
+       {"param_e", 0.0, -10.0, 10.0},
+       {"param_f", 0.0, -10.0, 10.0}});
   catalogue.back().textParams = {{"formula", kPolarDefaultFormula}};
   catalogue.back().directColour = true;
   add("sunflower",
