@@ -631,8 +631,8 @@ bool gpuVariationReadsNoise(std::string_view name) {
 }
 
 bool gpuVariationReadsDoubles(std::string_view name) {
-  return name == "dc_inversion" || name == "dc_portal" || name == "dc_tesla" || name == "fract_mandelbrot_wf" ||
-         name == "mandelbrot";
+  return name == "dc_inversion" || name == "dc_portal" || name == "dc_tesla" || name == "dc_warping" ||
+         name == "fract_mandelbrot_wf" || name == "mandelbrot";
 }
 
 std::vector<float> gpuDoubleParams(const std::vector<double>& params) {

@@ -331,8 +331,9 @@ vec3 V_sunflower(vec3 p, float w, int P, int A) {
   return vec3(w * (q.x * size + rho * float(sc.y)), w * (q.y * size + rho * float(sc.x)), w * p.z);
 }
 
-// dc_warping in double throughout: its hash keeps the fraction of 43758.5 sin(·), and the warps feed
-// the noise back into the places the hash reads, so a float's rounding anywhere changes the colour.
+// dc_warping in double throughout, its zoom and shifts too (after its 9 parameters, the memory slot and the
+// palette's place): its hash keeps the fraction of 43758.5 sin(·), and the warps feed the noise back into the
+// places the hash reads, so a float's rounding anywhere changes the colour.
 double rare_fract(double v) { return v - floor(v); }
 double rare_mix(double a, double b, double t) { return a * (1.0lf - t) + b * t; }
 double rare_smoothstep(double e0, double e1, double v) {
@@ -376,7 +377,8 @@ dvec3 rare_warpMap(dvec2 p) {
 }
 double rare_grey(dvec3 c) { return c.x * 0.333lf + c.y * 0.333lf + c.z * 0.333lf; }
 vec3 V_dc_warping(vec3 p, float w, int P, int A) {
-  double zoom = double(P_(P, 1)), x0 = double(P_(P, 2)), y0 = double(P_(P, 3));
+  const int D = P + 11;
+  double zoom = paramDouble(D, 1), x0 = paramDouble(D, 2), y0 = paramDouble(D, 3);
   dvec2 q = rgb_dcPoint(p, P, 4, 0.5lf);
   const double e = 0.0045lf;
   dvec2 at = dvec2(q.x * zoom + x0, q.y * zoom + y0);
@@ -388,7 +390,9 @@ vec3 V_dc_warping(vec3 p, float w, int P, int A) {
   double edge = 8.0lf * abs(2.0lf * gc - ga - gb);
   double lift = 1.0lf + 0.2lf * ny * ny, sheen = 0.05lf * ny * ny * ny;
   double qx = (q.x + 1.0lf) / 2.0lf, qy = (q.y + 1.0lf) / 2.0lf;
-  double vignette = double(pow(float(16.0lf * qx * qy * (1.0lf - qx) * (1.0lf - qy)), 0.1));
+  // (A negative base, the point read outside the square, gives NaN as C's pow does.)
+  float base = float(16.0lf * qx * qy * (1.0lf - qx) * (1.0lf - qy));
+  double vignette = base < 0.0 ? rgb_nan() : double(pow(base, 0.1));
   dvec3 colour = (dvec3(c.x + edge, c.y + 0.7lf * edge, c.z + 0.6lf * edge) * lift + sheen) * vignette;
-  return rgb_dcFinish(p, w, P, 4, 8, q, colour);
+  return rgb_dcFinish(p, w, P, 4, 9, q, colour);
 }
