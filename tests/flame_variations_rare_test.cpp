@@ -1,6 +1,6 @@
-// JWildfire's polarplot3d_wf, sunflower and dc_warping (variations_jwildfire_rare.cpp) and the import of the files
-// that use them (and of dc_tesla's parameters from before 2020), each at points whose expected values were worked
-// out from JWildfire's Java classes by a separate Python script in double precision, independently of the code
+// JWildfire's polarplot3d_wf, isosfplot3d_wf, sunflower and dc_warping (variations_jwildfire_rare.cpp) and the import
+// of the files that use them (and of dc_tesla's parameters from before 2020), each at points whose expected values were
+// worked out from JWildfire's Java classes by a separate Python script in double precision, independently of the code
 // under test. Weight 0.8; the harness's sum starts at (0.125, −0.25, 0.5) with colour index 0.375. Random rows replay
 // the lane's seed: xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594, 0.875707, … from
 // 0x9E3779B9.
@@ -31,8 +31,10 @@ constexpr double kPi = 3.141592653589793;
 // and Ψ₄ (radius from the hole fill · edge to the edge); parameters clamped as JWildfire's setParameter does (the
 // last row). dc_warping (ColorOnly keeps the point; else (Ψ₁ − ½, Ψ₂ − ½)) at seed 6239's shifts (x0, y0) =
 // (−0.4479, 0.1258) and zoom 2.5 is (123, 57, 41) at (0.1, 0.2) (grey 73/255) and (67, 39, 32) at (−0.2, 0.15)
-// (grey 45/255); unshifted at Ψ's point (103, 44, 30) (grey 58/255). With reset_z, z is grey · scale_z + offset_z (the
-// sum's 0.5 replaced).
+// (grey 45/255); isosfplot3d_wf with its default formula |x| + |y| + |z| − param_a: the first of Ψ-uniform
+// points of the box (Ψ₁, Ψ₂, Ψ₃ for x, y, z, and so on) within thickness of 0 (the 8th with 0x2545F491, the
+// 45th with 0x9E3779B9 by default); unshifted at Ψ's point (103, 44, 30) (grey 58/255). With reset_z, z is grey ·
+// scale_z + offset_z (the sum's 0.5 replaced).
 const std::vector<PointCase>& pointCases() {
   static const std::vector<PointCase> cases = {
       {"polarplot3d_wf",
@@ -103,6 +105,37 @@ const std::vector<PointCase>& pointCases() {
        kLowSeed,
        {-0.14672517776489258, 0.30056557655334476, 0.7637254901960784}},
       {"dc_warping", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.3035731315612793, 0.03626041412353516, -0.5}},
+      {"isosfplot3d_wf",
+       {},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.6304583072662354, 0.08319454193115235, -0.06712603569030762}},
+      {"isosfplot3d_wf",
+       {},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.04269132614135743, 0.4048972606658936, -0.38248972892761235}},
+      {"isosfplot3d_wf",
+       {-1.0, 1.0, -1.0, -1.0, 1.0, -1.5, 1.5, 0.3, 160.0, 1.0, 4.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.6071462631225586, 0.07252082824707032, -0.2542346477508545}},
+      {"isosfplot3d_wf",
+       {-1.0, -1.0, 1.0, -1.0, 1.0, -1.5, 1.5, 0.2, 160.0, 1.0, 6.0, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.13487062454223633, 0.19527721405029297, 0.18136882781982422}},
+      // Three tries at a shell 10⁻⁴ thick find nothing: the point adds nothing (and is hidden).
+      {"isosfplot3d_wf",
+       {-1.0, -1.0, 1.0, -1.0, 1.0, -1.5, 1.5, 0.0001, 3.0, 1.0, 6.0, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.0, 0.0, 0.0}},
   };
   return cases;
 }
@@ -156,6 +189,28 @@ const std::vector<ColourCase>& colourCases() {
        kHighSeed,
        73.0 / 255.0},
       {"dc_warping", {}, {0.3, -0.7, 0.5}, kHighSeed, kStartColour},
+      {"isosfplot3d_wf", {}, {0.3, -0.7, 0.5}, kHighSeed, 0.05989159735060315},
+      {"isosfplot3d_wf",
+       {-1.0, 1.0, -1.0, -1.0, 1.0, -1.5, 1.5, 0.3, 160.0, 1.0, 4.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {0.3, -0.7, 0.5},
+       kHighSeed,
+       0.545325517654419},
+      {"isosfplot3d_wf",
+       {-1.0, -1.0, 1.0, -1.0, 1.0, -1.5, 1.5, 0.2, 160.0, 1.0, 6.0, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {0.3, -0.7, 0.5},
+       kLowSeed,
+       0.2585891061674275},
+      // octagon-b's color_mode 1 reads a colour map (none here), and a point found nowhere keeps its index.
+      {"isosfplot3d_wf",
+       {-1.0, -1.0, 1.0, -1.0, 1.0, -1.5, 1.5, 0.2, 160.0, 1.0, 1.0, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {0.3, -0.7, 0.5},
+       kLowSeed,
+       kStartColour},
+      {"isosfplot3d_wf",
+       {-1.0, -1.0, 1.0, -1.0, 1.0, -1.5, 1.5, 0.0001, 3.0, 1.0, 6.0, 1.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {0.3, -0.7, 0.5},
+       kLowSeed,
+       kStartColour},
   };
   return cases;
 }
@@ -173,7 +228,7 @@ TEST(FlameVariationRare, OddPointsStayFiniteOrNaNWhole) {
   for (const double v : {0.0, inf, -inf, nan, 1e300}) {
     // polarplot3d_wf and sunflower draw from their parameters alone (sunflower carries w z); dc_warping places a
     // random point of its square and sets z (reset_z).
-    for (const char* name : {"polarplot3d_wf", "sunflower", "dc_warping"}) {
+    for (const char* name : {"polarplot3d_wf", "sunflower", "dc_warping", "isosfplot3d_wf"}) {
       const VariationInfo& info = variationOrThrow(name);
       const Outputs out = run(info, info.defaultParams(), {v, -v, 0.5}, 0.8, kHighSeed, 3);
       EXPECT_TRUE(std::isfinite(out.x[0]) && std::isfinite(out.y[0]) && std::isfinite(out.z[0])) << name << " " << v;
@@ -195,6 +250,16 @@ TEST(FlameVariationRare, OddPointsStayFiniteOrNaNWhole) {
     const Outputs out = run(polar, params, {0.3, -0.7, 0.5}, 0.8, kHighSeed, 3);
     EXPECT_TRUE(out.colour[0] >= 0.0 && out.colour[0] <= 1.0) << v;
   }
+  // isosfplot3d_wf with odd bounds, thickness and tries: no trap, no NaN, a colour index in [0, 1].
+  const VariationInfo& isosf = variationOrThrow("isosfplot3d_wf");
+  for (const double v : {0.0, inf, nan, 1e300, -1e300}) {
+    const Outputs out =
+        run(isosf, {-1.0, v, 1.0, -1.0, v, -1.5, 1.5, v, v, 1.0, 9.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+            {0.3, -0.7, 0.5}, 0.8, kHighSeed, 3);
+    // (Infinite bounds and thickness find a point at infinity at once, as JWildfire does.)
+    EXPECT_FALSE(std::isnan(out.x[0]) || std::isnan(out.y[0]) || std::isnan(out.z[0])) << v;
+    EXPECT_TRUE(out.colour[0] >= 0.0 && out.colour[0] <= 1.0) << v;
+  }
   const VariationInfo& sunflower = variationOrThrow("sunflower");
   const Outputs odd = run(sunflower, {nan, nan, 0.02, 180.0, 0.0, 0.0, nan}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, 3);
   EXPECT_TRUE(std::isfinite(odd.x[0]) && std::isfinite(odd.y[0]));
@@ -210,6 +275,15 @@ TEST(FlameVariationRare, PolarplotFormulasRenameTheirVariables) {
   // v is no variable of polarplot3d_wf's: it stays unknown, and the formula does not compile.
   EXPECT_TRUE(parplotFormulaError(polarplotSurfaceFormulas("v + t")[0]).has_value());
   EXPECT_FALSE(parplotFormulaError(polarplotSurfaceFormulas("sin(param_a*u) + param_b")[0]).has_value());
+  // isosfplot3d_wf's x, y, z become u, v and the evaluator's third variable; u and v name nothing there.
+  EXPECT_EQ(isosfplotSurfaceFormulas("fabs(x) + fabs(y) + sqrt(fabs(z)) - 1")[0],
+            "fabs(u) + fabs(v) + sqrt(fabs(isosf_z)) - 1");
+  EXPECT_TRUE(parplotFormulaError(isosfplotSurfaceFormulas("x + u")[0]).has_value());
+  ParplotEvaluator& octagon =
+      parplotEvaluator(isosfplotSurfaceFormulas("fabs(x) + fabs(y) + sqrt(fabs(z)) - 1")[0], "0", "0");
+  ASSERT_TRUE(octagon.ok());
+  octagon.setThird(0.25);
+  EXPECT_DOUBLE_EQ(octagon(0.5, -0.25)[0], 0.25);
 }
 
 ImportedFlame importXform(const std::string& xform) {
@@ -218,9 +292,9 @@ ImportedFlame importXform(const std::string& xform) {
   return readFlameXml(text, "t.flame").flame;
 }
 
-// JWildfire writes polarplot3d_wf's formula as the hex of its bytes, beside image names; sunflower's fill as "F.
-// filling" (no XML name); dc_warping before 2020 only its seed, whose shifts (x0, y0) it took from
-// java.util.Random(6239); dc_tesla before 2020 its unused thicknes and shift.
+// JWildfire writes polarplot3d_wf's and isosfplot3d_wf's formula as the hex of its bytes, beside image names;
+// sunflower's fill as "F. filling" (no XML name); dc_warping before 2020 only its seed, whose shifts (x0, y0) it took
+// from java.util.Random(6239); dc_tesla before 2020 its unused thicknes and shift.
 TEST(FlameVariationRare, ImportsTheFilesNames) {
   const ImportedFlame polar = importXform(
       R"(polarplot3d_wf="0.75" polarplot3d_wf_preset_id="1" polarplot3d_wf_cylindrical="1" polarplot3d_wf_tmin="-3" )"
@@ -257,6 +331,17 @@ TEST(FlameVariationRare, ImportsTheFilesNames) {
   const std::vector<double>& params = shifted.genome.xforms.at(0).variations.at(0).params;
   EXPECT_EQ(params.at(2), 0.3);
   EXPECT_EQ(params.at(3), 0.3);
+
+  // octagon-b's isosfplot3d_wf: its formula, box and colour map's mode.
+  const ImportedFlame octagon = importXform(
+      R"(isosfplot3d_wf="1.0" isosfplot3d_wf_preset_id="-1" isosfplot3d_wf_xmin="-1.0" isosfplot3d_wf_zmax="1.5" )"
+      R"(isosfplot3d_wf_thickness="0.05" isosfplot3d_wf_max_iter="160" isosfplot3d_wf_color_mode="1" )"
+      R"(isosfplot3d_wf_formula="66616273287829202B2066616273287929202B20737172742866616273287A2929202D2031" )"
+      R"(isosfplot3d_wf_colormap_filename="" coefs="1 0 0 1 0 0")");
+  ASSERT_TRUE(octagon.leftOut.empty()) << octagon.leftOut.front();
+  const VariationTerm& iso = octagon.genome.xforms.at(0).variations.at(0);
+  EXPECT_EQ(iso.texts, (std::vector<std::string>{"fabs(x) + fabs(y) + sqrt(fabs(z)) - 1"}));
+  EXPECT_EQ(iso.params.at(10), 1.0);
 
   const ImportedFlame tesla = importXform(
       R"(dc_tesla="1.0" dc_tesla_levels="20" dc_tesla_thicknes="1000.0" dc_tesla_style="12.0" dc_tesla_shift="1.5" )"

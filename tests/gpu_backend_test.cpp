@@ -565,6 +565,14 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"dc_warping", {6239.0, 2.5, -0.44785959212788384, 0.3, 0.0, 0.0, 0.0, 0.0, 1.0}},
       {"dc_warping", {0.0, 1.5, 0.2, 0.2, 0.0, 1.0, 0.5, -0.25, 0.0}},
       {"dc_warping", {0.0, 2.5, -0.4, 0.1, 1.0, 2.0, 0.5, 0.1, 1.0}},
+      // isosfplot3d_wf: octagon-b's surface and colour from x; a thin shell, few tries and swapped bounds (many
+      // points hidden), the colour from y · z.
+      {"isosfplot3d_wf",
+       {-1.0, -1.0, 1.0, -1.0, 1.0, -1.5, 1.5, 0.05, 160.0, 1.0, 3.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {"fabs(x) + fabs(y) + sqrt(fabs(z)) - 1"}},
+      {"isosfplot3d_wf",
+       {-1.0, 1.2, -1.2, 1.2, -1.2, -1.2, 1.2, 0.01, 12.0, 1.0, 7.0, 1.0, 0.9, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {"x*x + y*y + z*z - param_a*param_a"}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})
@@ -588,7 +596,9 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
   };
   // A case's variation, as the catalogue names it (pre_ and post_ forms share their variation's
   // function; the stage is a uniform).
-  const auto drawsFormulas = [](const std::string& name) { return name == "parplot2d_wf" || name == "polarplot3d_wf"; };
+  const auto drawsFormulas = [](const std::string& name) {
+    return name == "parplot2d_wf" || name == "polarplot3d_wf" || name == "isosfplot3d_wf";
+  };
   const auto programKey = [&](const Case& c) {
     const std::string& name = core::variationOrThrow(c.name).name;
     std::string key = name;
@@ -607,9 +617,11 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     Batch& batch = batches.back();
     if (formulas) {
       const std::vector<std::string> texts = c.texts.empty() ? core::variationOrThrow(c.name).defaultTexts() : c.texts;
-      batch.surfaces =
-          gl::gpuParplotSurfaces({texts.size() == 1 ? core::polarplotSurfaceFormulas(texts[0])
-                                                    : std::array<std::string, 3>{texts[0], texts[1], texts[2]}});
+      const std::string& name = core::variationOrThrow(c.name).name;
+      batch.surfaces = gl::gpuParplotSurfaces({name == "polarplot3d_wf" ? core::polarplotSurfaceFormulas(texts[0])
+                                               : name == "isosfplot3d_wf"
+                                                   ? core::isosfplotSurfaceFormulas(texts[0])
+                                                   : std::array<std::string, 3>{texts[0], texts[1], texts[2]}});
     }
     const core::VariationInfo& info = core::variationOrThrow(c.name);
     batch.lane = std::max(batch.lane, info.laneState);

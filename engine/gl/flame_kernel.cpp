@@ -143,15 +143,15 @@ bool gpuHasVariation(std::string_view name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// parplot2d_wf and polarplot3d_wf, whose formulas the kernel compiles (parplotSurface).
+// parplot2d_wf, polarplot3d_wf and isosfplot3d_wf, whose formulas the kernel compiles (parplotSurface).
 bool drawsFormulas(const core::VariationInfo& info) {
-  return info.name == "parplot2d_wf" || info.name == "polarplot3d_wf";
+  return info.name == "parplot2d_wf" || info.name == "polarplot3d_wf" || info.name == "isosfplot3d_wf";
 }
 
 // A parplot2d_wf term's three formulas, or polarplot3d_wf's formula as a surface (r(t, u), 0, 0)
-// (core::polarplotSurfaceFormulas), or nullopt where muParser cannot read one, or polarplot3d_wf's
-// formula is empty: the CPU's own test (its evaluator, compiled once per thread and kept), where the
-// term then adds nothing, as the GPU's does.
+// (core::polarplotSurfaceFormulas), or isosfplot3d_wf's (F(x, y, z), 0, 0), or nullopt where muParser cannot read one,
+// or polarplot3d_wf's formula is empty: the CPU's own test (its evaluator, compiled once per thread and kept), where
+// the term then adds nothing, as the GPU's does.
 std::optional<std::array<std::string, 3>> termFormulas(const core::VariationInfo& info,
                                                        const core::VariationTerm& term) {
   const std::vector<std::string> texts = info.textsFor(term.texts);
@@ -159,6 +159,8 @@ std::optional<std::array<std::string, 3>> termFormulas(const core::VariationInfo
   if (info.name == "polarplot3d_wf") {
     if (texts[0].empty()) return std::nullopt;
     surface = core::polarplotSurfaceFormulas(texts[0]);
+  } else if (info.name == "isosfplot3d_wf") {
+    surface = core::isosfplotSurfaceFormulas(texts[0]);
   } else {
     surface = {texts[0], texts[1], texts[2]};
   }
@@ -579,8 +581,9 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, b
                                 : "  drawnColour = oc;\n  return visible;\n}\n";
   // A term whose formulas do not compile calls no surface (which −1), but its call is in the program,
   // so parplotSurface is defined wherever a term draws formulas.
-  if (std::any_of(kernel.variations.begin(), kernel.variations.end(),
-                  [](const std::string& name) { return name == "parplot2d_wf" || name == "polarplot3d_wf"; }))
+  if (std::any_of(kernel.variations.begin(), kernel.variations.end(), [](const std::string& name) {
+        return name == "parplot2d_wf" || name == "polarplot3d_wf" || name == "isosfplot3d_wf";
+      }))
     s += gpuParplotSurfaces(g.surfaces());
 }
 

@@ -1,9 +1,9 @@
 // JWildfire variations that a few published flames use: polarplot3d_wf (a formula r(t, u) drawn in
-// spherical or cylindrical coordinates), sunflower (a sunflower's seeds as small polygons) and
-// dc_warping (Jesus Sosa's port of Íñigo Quílez's domain-warping shader, a DC_BaseFunc painter). Each
-// variation is a kernel below and one row of the table at the end (see variations.h for the notation
-// and variation_kernels.h for what the files share). The formulas follow JWildfire's classes of the
-// same names (PolarPlot3DWFFunc, SunFlowersFunc with its DrawFunc, DC_WarpingFunc).
+// spherical or cylindrical coordinates), isosfplot3d_wf (an implicit surface F(x, y, z) = 0), sunflower
+// (a sunflower's seeds as small polygons) and dc_warping (Jesus Sosa's port of Íñigo Quílez's domain-warping shader, a
+// DC_BaseFunc painter). Each variation is a kernel below and one row of the table at the end (see variations.h for the
+// notation and variation_kernels.h for what the files share). The formulas follow JWildfire's classes of the same names
+// (PolarPlot3DWFFunc, IsoSFPlot3DWFFunc, SunFlowersFunc with its DrawFunc, DC_WarpingFunc).
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -112,6 +112,72 @@ void polarplot3dWf(const VariationInput& in, double* __restrict ox, double* __re
       outX[i] += w * ri * std::cos(ti);
       outY[i] += w * ri * std::sin(ti);
       outZ[i] += w * ui;
+    }
+  }
+}
+
+// ---- isosfplot3d_wf ----------------------------------------------------------------------------
+
+// The formula when a term gives none: an octahedron's surface, in a box of ±1.5 by default (JWildfire picks
+// a preset at random instead; every file that uses isosfplot3d_wf writes its formula and box).
+constexpr const char* kIsosfDefaultFormula = "fabs(x) + fabs(y) + fabs(z) - param_a";
+constexpr double kIsosfMaxIterations = 100000.0;
+
+// isosfplot3d_wf: up to max_iter times a point (x, y, z) uniform in the box [xmin, xmax] × [ymin, ymax] ×
+// [zmin, zmax] (the bounds swapped where min > max) until |F(x, y, z)| ≤ thickness; the first such adds w (x,
+// y, z), and a point with none is hidden (JWildfire's doHide) and adds nothing. With direct_color the colour
+// index of a found point becomes x's place in its range (color_mode 3), y's (4), z's (5), x's times y's (6),
+// y's times z's (7), z's times x's (8), or all three's (9 and any other above 2), clamped to [0, 1]; modes 0 …
+// 2 read a colour-map image, which does not travel with the flame. max_iter is at least 1, thickness at least
+// 10⁻¹⁰ (JWildfire's setParameter); max_iter is held to 10⁵ here (JWildfire's Java int would let a
+// file stall its render). An empty formula is 0: the first point is found.
+void isosfplot3dWf(const VariationInput& in, double* __restrict ox, double* __restrict oy, double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  static const std::string kDefault = kIsosfDefaultFormula;
+  const std::string& formula = in.texts ? in.texts[0] : kDefault;
+  thread_local std::string lastFormula;
+  thread_local std::array<std::string, 3> lastTexts;
+  thread_local bool any = false;
+  if (!any || formula != lastFormula) {
+    lastTexts = isosfplotSurfaceFormulas(formula);
+    lastFormula = formula;
+    any = true;
+  }
+  ParplotEvaluator& surface = parplotEvaluator(lastTexts[0], lastTexts[1], lastTexts[2]);
+  if (!surface.ok()) return;
+  surface.setParams(P + 12);
+  const Range bx = orderedRange(P[1], P[2]), by = orderedRange(P[3], P[4]), bz = orderedRange(P[5], P[6]);
+  const double thickness = P[7] < 1e-10 ? 1e-10 : P[7];  // (a NaN stays NaN: nothing is ever found)
+  // Tools.FTOI of the int parameters: half away from 0, as std::round (a NaN max_iter is 1).
+  const double iterations = std::isnan(P[8]) ? 1.0 : std::clamp(std::round(P[8]), 1.0, kIsosfMaxIterations);
+  const double mode = std::round(P[10]);
+  const bool setsColour = std::round(P[9]) > 0.0 && mode >= 3.0;
+  std::uint8_t* __restrict hidden = in.hidden;
+  for (std::size_t i = 0; i < n; ++i) {
+    double px = 0.0, py = 0.0, pz = 0.0;
+    bool found = false;
+    for (double k = 0.0; k < iterations && !found; k += 1.0) {
+      px = bx.min + laneUniform(rnd[i]) * bx.span;
+      py = by.min + laneUniform(rnd[i]) * by.span;
+      pz = bz.min + laneUniform(rnd[i]) * bz.span;
+      surface.setThird(pz);
+      found = std::abs(surface(px, py)[0]) <= thickness;
+    }
+    if (hidden) hidden[i] = found ? 0u : 1u;
+    if (!found) continue;
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * pz;
+    if (setsColour) {
+      const double cx = (px - bx.min) / bx.span, cy = (py - by.min) / by.span, cz = (pz - bz.min) / bz.span;
+      const double c = mode == 3.0   ? cx
+                       : mode == 4.0 ? cy
+                       : mode == 5.0 ? cz
+                       : mode == 6.0 ? cx * cy
+                       : mode == 7.0 ? cy * cz
+                       : mode == 8.0 ? cz * cx
+                                     : cx * cy * cz;
+      colour[i] = std::isnan(c) ? 0.0 : std::clamp(c, 0.0, 1.0);
     }
   }
 }
@@ -308,6 +374,35 @@ void variation_kernels::addJwildfireRareVariations(std::vector<VariationInfo>& c
        {"param_f", 0.0, -10.0, 10.0}});
   catalogue.back().textParams = {{"formula", kPolarDefaultFormula}};
   catalogue.back().directColour = true;
+  add("isosfplot3d_wf",
+      "w (x, y, z), the first of up to max_iter points Ψ-uniform in the box [xmin, xmax] × [ymin, ymax] × [zmin, zmax] "
+      "where |F(x, y, z)| ≤ thickness, F the formula `formula` (a Java expression of x, y, z, pi and param_a … "
+      "param_f with JWildfire's MathLib functions); with none the point is hidden and nothing is added; "
+      "direct_color 1: the colour index becomes x's place in its range (color_mode 3), y's (4), z's (5), x's times "
+      "y's (6), y's times z's (7), z's times x's (8), the three's (9), clamped to [0, 1]; color_mode 0 … 2 need "
+      "JWildfire's colour-map image and do nothing; preset_id is not looked up (files carry the preset's formula)",
+      k3D, kRandom, &isosfplot3dWf,
+      {count("preset_id", -1.0, -1.0, 60.0),
+       {"xmin", -1.5, -10.0, 10.0},
+       {"xmax", 1.5, -10.0, 10.0},
+       {"ymin", -1.5, -10.0, 10.0},
+       {"ymax", 1.5, -10.0, 10.0},
+       {"zmin", -1.5, -10.0, 10.0},
+       {"zmax", 1.5, -10.0, 10.0},
+       {"thickness", 0.05, 0.0, 1.0},
+       count("max_iter", 160.0, 1.0, 1000.0),
+       count("direct_color", 1.0, 0.0, 1.0),
+       count("color_mode", 9.0, 0.0, 9.0),
+       count("blend_colormap", 1.0, 0.0, 1.0),
+       {"param_a", 1.0, -10.0, 10.0},
+       {"param_b", 0.0, -10.0, 10.0},
+       {"param_c", 0.0, -10.0, 10.0},
+       {"param_d", 0.0, -10.0, 10.0},
+       {"param_e", 0.0, -10.0, 10.0},
+       {"param_f", 0.0, -10.0, 10.0}});
+  catalogue.back().textParams = {{"formula", kIsosfDefaultFormula}};
+  catalogue.back().directColour = true;
+  catalogue.back().hidesPoints = true;
   add("sunflower",
       "w (scale · s · q + ρ (cos θ, sin θ)), z: seed k = 1 + ⌊nPoints Ψ⌋, ρ = √(k/(nPoints + 1)), θ = k · angle (3 − "
       "√5) π/180, s = 1 − ρ (invert: ρ), q a point of an nBlur polygon of `shape` sides with a hole of fill (the "

@@ -364,16 +364,16 @@ std::pair<double, double> dcWarpingShifts(double seedValue) {
 // loses nothing, a named image is left out (the image file does not travel with the flame).
 bool isJwildfireResource(const VariationInfo& info, std::string_view param) {
   const bool imageMaps = info.name == "plane_wf" || info.name == "parplot2d_wf" || info.name == "polarplot3d_wf" ||
-                         info.name == "obj_mesh_primitive_wf";
+                         info.name == "isosfplot3d_wf" || info.name == "obj_mesh_primitive_wf";
   return (imageMaps && (param == "colormap_filename" || param == "displ_map_filename")) ||
          (info.name == "recurrenceplot" && param == "func_id_reference") ||
-         (info.name == "parplot2d_wf" && param == "preset_id_reference") ||
+         ((info.name == "parplot2d_wf" || info.name == "isosfplot3d_wf") && param == "preset_id_reference") ||
          (info.name == "obj_mesh_primitive_wf" && param == "primitive_reference") ||
          (embedsFlame(info) && param == "flame_filename");
 }
 bool jwildfireResourceMatters(const VariationInfo& info, std::string_view param, std::string_view value) {
   return (info.name == "plane_wf" || info.name == "parplot2d_wf" || info.name == "polarplot3d_wf" ||
-          info.name == "obj_mesh_primitive_wf") &&
+          info.name == "isosfplot3d_wf" || info.name == "obj_mesh_primitive_wf") &&
          param.ends_with("_filename") && !value.empty();
 }
 
@@ -908,17 +908,21 @@ class FlameReader {
           }
         }
       }
-      // polarplot3d_wf's formula, evaluated as a parplot surface (polarplotSurfaceFormulas): one
-      // muParser cannot read, or none, makes the term add nothing, as JWildfire's does.
-      if (info->name == "polarplot3d_wf" && term.weight != 0.0) {
+      // polarplot3d_wf's and isosfplot3d_wf's formula, evaluated as a parplot surface
+      // (polarplotSurfaceFormulas, isosfplotSurfaceFormulas): one muParser cannot read makes the term add
+      // nothing, as JWildfire's does, and so does polarplot3d_wf's empty one.
+      if ((info->name == "polarplot3d_wf" || info->name == "isosfplot3d_wf") && term.weight != 0.0) {
         const std::string& formula = term.texts.at(0);
+        const bool polar = info->name == "polarplot3d_wf";
         if (!byLowerName.contains(lowered(name + "_formula"))) {
           lose("formula of " + withoutCopyMark(name));
-          warn(context + " has " + name + " without its formula; voxflame's default (JWildfire's preset 0) stands in");
-        } else if (formula.empty()) {
+          warn(context + " has " + name + " without its formula; voxflame's default (" +
+               (polar ? "JWildfire's preset 0" : "an octahedron") + ") stands in");
+        } else if (polar && formula.empty()) {
           lose("formula of " + withoutCopyMark(name));
           warn(context + " has " + name + " with an empty formula; the variation adds nothing");
-        } else if (const std::optional<std::string> error = parplotFormulaError(polarplotSurfaceFormulas(formula)[0])) {
+        } else if (const std::optional<std::string> error = parplotFormulaError(
+                       (polar ? polarplotSurfaceFormulas(formula) : isosfplotSurfaceFormulas(formula))[0])) {
           lose("formula of " + withoutCopyMark(name));
           warn(context + " has " + name + " whose formula \"" +
                (formula.size() > 120 ? formula.substr(0, 120) + "..." : formula) +

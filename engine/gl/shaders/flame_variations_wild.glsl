@@ -274,7 +274,7 @@ vec3 V_dc_tesla(vec3 p, float w, int P, int A) {
   return rgb_dcFinish(p, w, P, 5, 10, q, dvec3(grey));
 }
 
-// variations_jwildfire_rare.cpp's polarplot3d_wf, sunflower and dc_warping.
+// variations_jwildfire_rare.cpp's polarplot3d_wf, sunflower, dc_warping and isosfplot3d_wf.
 
 // A range as JWildfire's init takes it, (min, max − min), the bounds swapped where min > max.
 vec2 rare_range(float a, float b) { return a > b ? vec2(b, a - b) : vec2(a, b - a); }
@@ -395,4 +395,40 @@ vec3 V_dc_warping(vec3 p, float w, int P, int A) {
   double vignette = base < 0.0 ? rgb_nan() : double(pow(base, 0.1));
   dvec3 colour = (dvec3(c.x + edge, c.y + 0.7lf * edge, c.z + 0.6lf * edge) * lift + sheen) * vignette;
   return rgb_dcFinish(p, w, P, 4, 9, q, colour);
+}
+
+// isosfplot3d_wf: up to max_iter points of the box until |F(x, y, z)| ≤ thickness, F from the kernel's parplot
+// surface `which` (after its 18 parameters; −1, a formula that does not compile, adds nothing) with z in
+// gParplotThird; with none the point is hidden and nothing is added. The colour as the CPU's isosfplot3dWf.
+vec3 V_isosfplot3d_wf(vec3 p, float w, int P, int A) {
+  int which = int(P_(P, 18));
+  if (which < 0) return vec3(0.0);
+  vec2 bx = rare_range(P_(P, 1), P_(P, 2)), by = rare_range(P_(P, 3), P_(P, 4)), bz = rare_range(P_(P, 5), P_(P, 6));
+  float thickness = P_(P, 7) < 1e-10 ? 1e-10 : P_(P, 7);
+  float iterations = isnan(P_(P, 8)) ? 1.0 : clamp(roundHalfAway(P_(P, 8)), 1.0, 100000.0);
+  float mode = roundHalfAway(P_(P, 10));
+  bool setsColour = roundHalfAway(P_(P, 9)) > 0.0 && mode >= 3.0;
+  vec3 q = vec3(0.0);
+  bool found = false;
+  for (float k = 0.0; k < iterations && !found; k += 1.0) {
+    q.x = bx.x + psi() * bx.y;
+    q.y = by.x + psi() * by.y;
+    q.z = bz.x + psi() * bz.y;
+    gParplotThird = q.z;
+    found = abs(parplotSurface(which, q.x, q.y, P + 12).x) <= thickness;
+  }
+  gHidden = !found;
+  if (!found) return vec3(0.0);
+  if (setsColour) {
+    vec3 c = (q - vec3(bx.x, by.x, bz.x)) / vec3(bx.y, by.y, bz.y);
+    float v = mode == 3.0   ? c.x
+              : mode == 4.0 ? c.y
+              : mode == 5.0 ? c.z
+              : mode == 6.0 ? c.x * c.y
+              : mode == 7.0 ? c.y * c.z
+              : mode == 8.0 ? c.z * c.x
+                            : c.x * c.y * c.z;
+    gColour = isnan(v) ? 0.0 : clamp(v, 0.0, 1.0);
+  }
+  return w * q;
 }
