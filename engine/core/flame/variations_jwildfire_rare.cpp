@@ -56,14 +56,16 @@ inline Range orderedRange(double a, double b) {
   return {a, b - a};
 }
 
-// This thread's surface texts for the last formula it saw (polarplotSurfaceFormulas renames the
-// formula's variables; done once per formula, not per call).
-const std::array<std::string, 3>& polarSurfaceTexts(const std::string& formula) {
+// This thread's surface texts for the last formula it saw, as `Convert` (polarplotSurfaceFormulas,
+// isosfplotSurfaceFormulas) makes them from it: it renames the formula's variables, once per formula, not
+// per call.
+template <std::array<std::string, 3> (*Convert)(const std::string&)>
+const std::array<std::string, 3>& surfaceTexts(const std::string& formula) {
   thread_local std::string lastFormula;
   thread_local std::array<std::string, 3> lastTexts;
   thread_local bool any = false;
   if (!any || formula != lastFormula) {
-    lastTexts = polarplotSurfaceFormulas(formula);
+    lastTexts = Convert(formula);
     lastFormula = formula;
     any = true;
   }
@@ -82,7 +84,7 @@ void polarplot3dWf(const VariationInput& in, double* __restrict ox, double* __re
   static const std::string kDefault = kPolarDefaultFormula;
   const std::string& formula = in.texts ? in.texts[0] : kDefault;
   if (formula.empty()) return;
-  const std::array<std::string, 3>& texts = polarSurfaceTexts(formula);
+  const std::array<std::string, 3>& texts = surfaceTexts<&polarplotSurfaceFormulas>(formula);
   ParplotEvaluator& surface = parplotEvaluator(texts[0], texts[1], texts[2]);
   if (!surface.ok()) return;
   surface.setParams(P + kPolarParamA);
@@ -135,15 +137,8 @@ void isosfplot3dWf(const VariationInput& in, double* __restrict ox, double* __re
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
   static const std::string kDefault = kIsosfDefaultFormula;
   const std::string& formula = in.texts ? in.texts[0] : kDefault;
-  thread_local std::string lastFormula;
-  thread_local std::array<std::string, 3> lastTexts;
-  thread_local bool any = false;
-  if (!any || formula != lastFormula) {
-    lastTexts = isosfplotSurfaceFormulas(formula);
-    lastFormula = formula;
-    any = true;
-  }
-  ParplotEvaluator& surface = parplotEvaluator(lastTexts[0], lastTexts[1], lastTexts[2]);
+  const std::array<std::string, 3>& texts = surfaceTexts<&isosfplotSurfaceFormulas>(formula);
+  ParplotEvaluator& surface = parplotEvaluator(texts[0], texts[1], texts[2]);
   if (!surface.ok()) return;
   surface.setParams(P + 12);
   const Range bx = orderedRange(P[1], P[2]), by = orderedRange(P[3], P[4]), bz = orderedRange(P[5], P[6]);

@@ -177,8 +177,8 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
     if (at != fractorium.end()) names.push_back(termAttribute + "_" + char('a' + (at - fractorium.begin())));
   }
   if (info.name == "crop_trapezoid" && param == "base_sup") names.push_back(termAttribute + "_Base Sup.");
-  if (info.name == "sunflower" && param == "fill") names.push_back(termAttribute + "_F. filling");
   if (info.name == "crop_trapezoid" && param == "base_inf") names.push_back(termAttribute + "_Base Inf.");
+  if (info.name == "sunflower" && param == "fill") names.push_back(termAttribute + "_F. filling");
   // JWildfire's hamid_js names two parameters "number_lines/circles" and "filled circles", and
   // dc_booleans before 2021 its type "^/&/|"; its DC_BaseFunc variations (dc_booleans, dc_menger, ...)
   // named scale_z and offset_z z_scale and z_offset before July 2021.
