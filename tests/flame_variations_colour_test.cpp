@@ -479,7 +479,8 @@ TEST(FlameVariationColour, OnlyColourVariationsAreMarkedDirectColour) {
         info.name == "falloff3" || info.name == "pixel_flow" || info.name == "stabilize" || info.name == "szubieta" ||
         info.name == "subflame_wf" || info.name == "glynns3subfl" || info.name == "plane_wf" ||
         info.name == "truchet" || info.name == "spirograph3D" || info.name == "recurrenceplot" ||
-        info.name == "parplot2d_wf" || info.name == "point_symmetry_wf" || info.name == "mirror_wf" ||
+        info.name == "parplot2d_wf" || info.name == "polarplot3d_wf" || info.name == "isosfplot3d_wf" ||
+        info.name == "sunflower" || info.name == "point_symmetry_wf" || info.name == "mirror_wf" ||
         info.name == "axis_symmetry_wf" || info.name == "glsl_apollonian" || info.name == "fract_mandelbrot_wf" ||
         info.name == "colormap_wf" ||  // dc_color 1 sets the index from its picture
         info.name == "smartcrop" ||    // cropmode 2 restores the kept point's colour

@@ -422,6 +422,8 @@ TEST(FlameXml, EveryCatalogueVariationAndItsParametersAreRead) {
     else if (info.name == "parplot2d_wf")  // its formulas, text parameters, are not given here
       EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"xformula of parplot2d_wf", "yformula of parplot2d_wf",
                                                          "zformula of parplot2d_wf"}));
+    else if (info.name == "polarplot3d_wf" || info.name == "isosfplot3d_wf")  // nor their formula
+      EXPECT_EQ(flame.leftOut, (std::vector<std::string>{"formula of " + info.name}));
     else if (info.name == "glsl_apollonian") {  // JWildfire's "Density Pixels" has a space, which XML does not allow
       ASSERT_EQ(flame.warnings.size(), 1u) << flame.warnings.front();
       EXPECT_NE(flame.warnings.front().find("not well-formed"), std::string::npos) << flame.warnings.front();

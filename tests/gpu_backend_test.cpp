@@ -26,6 +26,7 @@
 #include "core/chunk_sums.h"
 #include "core/error.h"
 #include "core/refinement/accumulator.h"
+#include "core/flame/parplot_formula.h"
 #include "core/flame/variations.h"
 #include "core/flame/xml.h"
 #include "core/packed_volume.h"
@@ -548,6 +549,31 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"dc_tesla", {9.0, 30.3, 10000.0, 3.3, 2.7, 1.0, 1.0, 0.25, 0.5, 0.0}},
       {"post_stun", {0.0, 0.0, 1.0}},
       {"stun", {2.5, 0.7, 0.1}},
+      // variations_jwildfire_rare.cpp: polarplot3d_wf cylindrical with swapped bounds and each colour mode's
+      // source (t, r, t·u), Java's spelling; sunflower with a hole, inverted; dc_warping painting, matching the
+      // palette and as grey with reset_z, with the old files' two shifts.
+      {"polarplot3d_wf",
+       {1.0, 3.0, -3.0, -3.0, 3.0, 2.0, -2.0, 1.0, 1.0, 1.0, 1.0, 0.1, 1.0, 5.0, 2.0, 0.0, 0.0, 0.0, 0.0},
+       {"Math.sin(param_a*u) + param_b"}},
+      {"polarplot3d_wf",
+       {-1.0, -3.0, 3.0, -1.5, 1.5, -2.0, 2.0, 0.0, 1.0, 3.0, 1.0, 0.1, 1.0, 5.0, 6.0, 0.25, 0.0, 0.0, 0.0},
+       {"(sin(param_a*t) + cos(param_b*u)) + param_c"}},
+      {"polarplot3d_wf",
+       {-1.0, -3.0, 3.0, 0.0, 4.7, -2.0, 2.0, 0.0, 1.0, 4.0, 1.0, 0.1, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {"u*1.0f + t/(double)4"}},
+      {"sunflower", {1000.0, 10.0, 0.02, 180.0, 0.0, 0.0, 0.0}},
+      {"sunflower", {300.0, 5.0, 0.3, 137.5, 0.0, 0.4, 1.0}},
+      {"dc_warping", {6239.0, 2.5, -0.44785959212788384, 0.3, 0.0, 0.0, 0.0, 0.0, 1.0}},
+      {"dc_warping", {0.0, 1.5, 0.2, 0.2, 0.0, 1.0, 0.5, -0.25, 0.0}},
+      {"dc_warping", {0.0, 2.5, -0.4, 0.1, 1.0, 2.0, 0.5, 0.1, 1.0}},
+      // isosfplot3d_wf: octagon-b's surface and colour from x; a thin shell, few tries and swapped bounds (many
+      // points hidden), the colour from y · z.
+      {"isosfplot3d_wf",
+       {-1.0, -1.0, 1.0, -1.0, 1.0, -1.5, 1.5, 0.05, 160.0, 1.0, 3.0, 1.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {"fabs(x) + fabs(y) + sqrt(fabs(z)) - 1"}},
+      {"isosfplot3d_wf",
+       {-1.0, 1.2, -1.2, 1.2, -1.2, -1.2, 1.2, 0.01, 12.0, 1.0, 7.0, 1.0, 0.9, 0.0, 0.0, 0.0, 0.0, 0.0},
+       {"x*x + y*y + z*z - param_a*param_a"}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})
@@ -572,22 +598,32 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
   };
   // A case's variation, as the catalogue names it (pre_ and post_ forms share their variation's
   // function; the stage is a uniform).
-  const auto programKey = [](const Case& c) {
+  const auto drawsFormulas = [](const std::string& name) {
+    return name == "parplot2d_wf" || name == "polarplot3d_wf" || name == "isosfplot3d_wf";
+  };
+  const auto programKey = [&](const Case& c) {
     const std::string& name = core::variationOrThrow(c.name).name;
-    return name == "parplot2d_wf" && !c.texts.empty() ? name + c.texts[0] + c.texts[1] + c.texts[2] : name;
+    std::string key = name;
+    if (drawsFormulas(name))
+      for (const std::string& text : c.texts) key += "\n" + text;
+    return key;
   };
   std::vector<Batch> batches;
   std::map<std::string, std::pair<std::size_t, int>> slotOf;  // a case's program and its place in it
   for (const Case& c : cases) {
     const std::string key = programKey(c);
     if (slotOf.contains(key)) continue;
-    const bool formulas = core::variationOrThrow(c.name).name == "parplot2d_wf";
+    const bool formulas = drawsFormulas(core::variationOrThrow(c.name).name);
     if (batches.empty() || formulas || !batches.back().surfaces.empty() || batches.back().names.size() >= 4)
       batches.emplace_back();
     Batch& batch = batches.back();
     if (formulas) {
       const std::vector<std::string> texts = c.texts.empty() ? core::variationOrThrow(c.name).defaultTexts() : c.texts;
-      batch.surfaces = gl::gpuParplotSurfaces({{texts[0], texts[1], texts[2]}});
+      const std::string& name = core::variationOrThrow(c.name).name;
+      batch.surfaces = gl::gpuParplotSurfaces({name == "polarplot3d_wf" ? core::polarplotSurfaceFormulas(texts[0])
+                                               : name == "isosfplot3d_wf"
+                                                   ? core::isosfplotSurfaceFormulas(texts[0])
+                                                   : std::array<std::string, 3>{texts[0], texts[1], texts[2]}});
     }
     const core::VariationInfo& info = core::variationOrThrow(c.name);
     batch.lane = std::max(batch.lane, info.laneState);
@@ -607,8 +643,8 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
     std::vector<float> data(affine.begin(), affine.end());
     data.push_back(static_cast<float>(weight));
     for (double v : params) data.push_back(static_cast<float>(v));
-    if (name == "parplot2d_wf") data.push_back(0.0f);  // its surface, the program's only one
-    if (gl::gpuVariationReadsNoise(name)) {            // what it reads after its parameters, then the tables
+    if (drawsFormulas(name)) data.push_back(0.0f);  // its surface, the program's only one
+    if (gl::gpuVariationReadsNoise(name)) {         // what it reads after its parameters, then the tables
       const std::vector<float> extras = gl::gpuNoiseExtras(params, static_cast<int>(data.size() + 3));
       data.insert(data.end(), extras.begin(), extras.end());
       const std::vector<float> tables = gl::gpuNoiseTables();

@@ -143,19 +143,29 @@ bool gpuHasVariation(std::string_view name) {
   return std::find(names.begin(), names.end(), name) != names.end();
 }
 
-// parplot2d_wf, whose formulas the kernel compiles (parplotSurface).
+// parplot2d_wf, polarplot3d_wf and isosfplot3d_wf, whose formulas the kernel compiles (parplotSurface).
 bool drawsFormulas(const core::VariationInfo& info) {
-  return info.name == "parplot2d_wf";
+  return info.name == "parplot2d_wf" || info.name == "polarplot3d_wf" || info.name == "isosfplot3d_wf";
 }
 
-// A parplot2d_wf term's three formulas, or nullopt where muParser cannot read one: the CPU's own
-// test (its evaluator, compiled once per thread and kept), where the term then adds nothing, as
-// the GPU's does.
+// A parplot2d_wf term's three formulas, or polarplot3d_wf's formula as a surface (r(t, u), 0, 0)
+// (core::polarplotSurfaceFormulas), or isosfplot3d_wf's (F(x, y, z), 0, 0), or nullopt where muParser cannot read one,
+// or polarplot3d_wf's formula is empty: the CPU's own test (its evaluator, compiled once per thread and kept), where
+// the term then adds nothing, as the GPU's does.
 std::optional<std::array<std::string, 3>> termFormulas(const core::VariationInfo& info,
                                                        const core::VariationTerm& term) {
   const std::vector<std::string> texts = info.textsFor(term.texts);
-  if (!core::parplotEvaluator(texts[0], texts[1], texts[2]).ok()) return std::nullopt;
-  return std::array<std::string, 3>{texts[0], texts[1], texts[2]};
+  std::array<std::string, 3> surface;
+  if (info.name == "polarplot3d_wf") {
+    if (texts[0].empty()) return std::nullopt;
+    surface = core::polarplotSurfaceFormulas(texts[0]);
+  } else if (info.name == "isosfplot3d_wf") {
+    surface = core::isosfplotSurfaceFormulas(texts[0]);
+  } else {
+    surface = {texts[0], texts[1], texts[2]};
+  }
+  if (!core::parplotEvaluator(surface[0], surface[1], surface[2]).ok()) return std::nullopt;
+  return surface;
 }
 
 // Whether the GPU's variation reads numbers the generator derives from its parameters (a table
@@ -178,7 +188,7 @@ std::string xformUnsupported(const core::FlameXform& xform) {
       if (const auto formulas = termFormulas(*info, term))
         for (const std::string& formula : *formulas)
           if (const ParplotGlsl glsl = parplotFormulaGlsl(core::parplotMuParserText(formula)); !glsl.error.empty())
-            return "what a parplot2d_wf formula asks: " + glsl.error;
+            return "what a " + info->name + " formula asks: " + glsl.error;
       continue;
     }
     // Other text parameters reach a GLSL port only through the table its kernel builds from them.
@@ -569,7 +579,12 @@ void flameSource(const core::PatternLayer& layer, const core::ChaosGame& game, b
   // A point a variation hid (JWildfire's doHide) is not drawn, though it goes on moving.
   s += game.hidesPointsByTerm() ? "  drawnColour = oc;\n  return visible && !gHidden;\n}\n"
                                 : "  drawnColour = oc;\n  return visible;\n}\n";
-  if (!g.surfaces().empty()) s += gpuParplotSurfaces(g.surfaces());
+  // A term whose formulas do not compile calls no surface (which −1), but its call is in the program,
+  // so parplotSurface is defined wherever a term draws formulas.
+  if (std::any_of(kernel.variations.begin(), kernel.variations.end(), [](const std::string& name) {
+        return name == "parplot2d_wf" || name == "polarplot3d_wf" || name == "isosfplot3d_wf";
+      }))
+    s += gpuParplotSurfaces(g.surfaces());
 }
 
 // core::ChaosGame::stepJulia in double: the inverse iteration multiplies each coordinate by the
@@ -619,8 +634,8 @@ bool gpuVariationReadsNoise(std::string_view name) {
 }
 
 bool gpuVariationReadsDoubles(std::string_view name) {
-  return name == "dc_inversion" || name == "dc_portal" || name == "dc_tesla" || name == "fract_mandelbrot_wf" ||
-         name == "mandelbrot";
+  return name == "dc_inversion" || name == "dc_portal" || name == "dc_tesla" || name == "dc_warping" ||
+         name == "fract_mandelbrot_wf" || name == "mandelbrot";
 }
 
 std::vector<float> gpuDoubleParams(const std::vector<double>& params) {
@@ -645,7 +660,7 @@ std::string gpuParplotSurfaces(const std::vector<std::array<std::string, 3>>& su
     for (std::size_t axis = 0; axis < 3; ++axis) {
       ParplotGlsl translated = parplotFormulaGlsl(core::parplotMuParserText(surfaces[k][axis]));
       if (!translated.error.empty())
-        throw core::Error("parplot2d_wf formula '" + surfaces[k][axis] + "': " + translated.error);
+        throw core::Error("parplot formula '" + surfaces[k][axis] + "': " + translated.error);
       glsl[axis] = std::move(translated.glsl);
     }
     s += "    case " + std::to_string(k) + ":\n      return vec3(" + glsl[0] + ",\n                  " + glsl[1] +

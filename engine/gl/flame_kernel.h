@@ -70,8 +70,8 @@ std::string gpuParplotSurfaces(const std::vector<std::array<std::string, 3>>& su
 bool gpuVariationReadsNoise(std::string_view name);
 // Whether the GPU's variation `name` reads its parameters in double as well, where float's rounding
 // of one moves what it draws (dc_inversion's scales and time, dc_portal's time, waves and zoom, dc_tesla's,
-// fract_mandelbrot_wf's and mandelbrot's bounds): each of its parameters then follows everything else of its term in
-// flameData as its double's bits (low word, high word), gpuDoubleParams.
+// dc_warping's zoom and shifts, fract_mandelbrot_wf's and mandelbrot's bounds): each of its parameters then follows
+// everything else of its term in flameData as its double's bits (low word, high word), gpuDoubleParams.
 bool gpuVariationReadsDoubles(std::string_view name);
 std::vector<float> gpuDoubleParams(const std::vector<double>& params);
 // What crackle reads after its parameters `params`: its slice z in double (its bits in two floats)

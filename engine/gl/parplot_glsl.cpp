@@ -338,6 +338,7 @@ class Translator {
       return {found->second.glsl(args), constant && arity > 0};  // muParser folds no variadic call
     }
     if (word == "u" || word == "v") return {std::string(word), false};
+    if (word == "isosf_z") return {"gParplotThird", false};  // isosfplot3d_wf's z
     if (word.size() == 7 && word.starts_with("param_") && word[6] >= 'a' && word[6] <= 'f')
       return {std::string(word), false};
     if (const auto found = constants().find(word); found != constants().end())

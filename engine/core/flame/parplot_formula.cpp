@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <exception>
+#include <initializer_list>
 #include <limits>
 #include <numbers>
 #include <string_view>
@@ -155,7 +156,7 @@ void defineJwildfireNames(mu::Parser& p) {
 
 // The values a formula reads; muParser keeps their addresses.
 struct Variables {
-  double u = 0.0, v = 0.0;
+  double u = 0.0, v = 0.0, z = 0.0;  // z: isosfplot3d_wf's third variable
   double params[6] = {0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
 };
 
@@ -163,6 +164,7 @@ void bind(mu::Parser& p, Variables& vars) {
   defineJwildfireNames(p);
   p.DefineVar("u", &vars.u);
   p.DefineVar("v", &vars.v);
+  p.DefineVar("isosf_z", &vars.z);
   const char* names[6] = {"param_a", "param_b", "param_c", "param_d", "param_e", "param_f"};
   for (int k = 0; k < 6; ++k) p.DefineVar(names[k], &vars.params[k]);
 }
@@ -214,6 +216,56 @@ std::string parplotMuParserText(const std::string& formula) {
   return formula.empty() ? std::string("0") : fromJava(formula);
 }
 
+namespace {
+
+// `formula` with its variables (whole names, not a member's `Math.u`, not a literal's suffix) renamed:
+// each of `from` to the same place of `to`.
+std::string renamedVariables(const std::string& formula, std::initializer_list<std::string_view> from,
+                             std::initializer_list<std::string_view> to) {
+  std::string out;
+  out.reserve(formula.size() + 8);
+  std::size_t i = 0;
+  const std::size_t n = formula.size();
+  while (i < n) {
+    const char c = formula[i];
+    if (std::isalpha(static_cast<unsigned char>(c)) != 0 || c == '_') {
+      std::size_t j = i;
+      while (j < n && identifierChar(formula[j])) ++j;
+      const std::string_view word = std::string_view(formula).substr(i, j - i);
+      const bool member = i > 0 && formula[i - 1] == '.';
+      const auto found = std::find(from.begin(), from.end(), word);
+      if (!member && found != from.end())
+        out += *(to.begin() + (found - from.begin()));
+      else
+        out += word;
+      i = j;
+      continue;
+    }
+    if (digit(c)) {  // a literal with its suffix or exponent letter, which names nothing
+      std::size_t j = i;
+      while (j < n && (identifierChar(formula[j]) || formula[j] == '.')) ++j;
+      out.append(formula, i, j - i);
+      i = j;
+      continue;
+    }
+    out += c;
+    ++i;
+  }
+  return out;
+}
+
+}  // namespace
+
+std::array<std::string, 3> polarplotSurfaceFormulas(const std::string& formula) {
+  return {renamedVariables(formula, {"t", "u", "v"}, {"u", "v", "polarplot3d_wf_has_no_v"}), "0", "0"};
+}
+
+std::array<std::string, 3> isosfplotSurfaceFormulas(const std::string& formula) {
+  return {renamedVariables(formula, {"x", "y", "z", "u", "v"},
+                           {"u", "v", "isosf_z", "isosfplot3d_wf_has_no_u", "isosfplot3d_wf_has_no_v"}),
+          "0", "0"};
+}
+
 std::optional<std::string> parplotFormulaError(const std::string& formula) {
   mu::Parser p;
   Variables vars;
@@ -247,6 +299,10 @@ bool ParplotEvaluator::ok() const {
 
 bool ParplotEvaluator::isFor(const std::string& x, const std::string& y, const std::string& z) const {
   return impl_->sources[0] == x && impl_->sources[1] == y && impl_->sources[2] == z;
+}
+
+void ParplotEvaluator::setThird(double z) {
+  impl_->vars.z = z;
 }
 
 void ParplotEvaluator::setParams(const double* sixParams) {

@@ -23,6 +23,17 @@ std::string parplotMuParserText(const std::string& formula);
 // generated code, and MathLib's constants (Math.PI and Math.E once their qualifier is dropped).
 const std::vector<std::pair<std::string, double>>& parplotConstants();
 
+// JWildfire's polarplot3d_wf draws r(t, u), one formula of t, u and param_a … param_f, in polar
+// coordinates. It is evaluated as a parplot surface (r(t, u), 0, 0) of (u, v) = (t, u): its formula
+// with t renamed u and u renamed v (and a v, which polarplot3d_wf does not have, renamed so that it
+// names nothing), and "0" for Y and Z. An empty formula stays empty: the variation then adds nothing.
+std::array<std::string, 3> polarplotSurfaceFormulas(const std::string& formula);
+// JWildfire's isosfplot3d_wf draws the points where |F(x, y, z)| is at most a thickness, one formula of x,
+// y, z and param_a … param_f. It is evaluated as the surface (F, 0, 0) of (u, v) = (x, y) with z the
+// evaluator's third variable, isosf_z (setThird; a parplot formula may read it too, as 0): x renamed u, y
+// renamed v, z renamed isosf_z (and a u or v, which isosfplot3d_wf does not have, renamed to name nothing).
+std::array<std::string, 3> isosfplotSurfaceFormulas(const std::string& formula);
+
 // Why one formula cannot be evaluated (muParser's message), or nullopt when it can. An empty
 // formula is 0, as in JWildfire.
 std::optional<std::string> parplotFormulaError(const std::string& formula);
@@ -38,6 +49,8 @@ class ParplotEvaluator {
 
   bool ok() const;  // false when a formula does not compile: it then evaluates to nothing
   bool isFor(const std::string& x, const std::string& y, const std::string& z) const;
+  // isosfplot3d_wf's z (isosf_z), read by every evaluation after this; 0 until set.
+  void setThird(double z);
   // param_a … param_f, read by every evaluation after this.
   void setParams(const double* sixParams);
   // (X, Y, Z) at (u, v); NaN or infinite where the formulas are (sqrt of a negative, 1/0).

@@ -248,6 +248,9 @@ void addJwildfireGlslVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire variations that flames in public repositories use: mandelbrot, invsquircular, sph3D, colorscale_wf,
 // bubble_wf, bwraps2, invpolar, threeply, spligon, lazysensen, disc3, cpow3_wf (variations_jwildfire_wild.cpp).
 void addJwildfireWildVariations(std::vector<VariationInfo>& catalogue);
+// JWildfire variations that a few published flames use: polarplot3d_wf, isosfplot3d_wf, sunflower,
+// dc_warping (variations_jwildfire_rare.cpp).
+void addJwildfireRareVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

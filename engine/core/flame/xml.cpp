@@ -156,7 +156,8 @@ const VariationInfo* variationNamed(std::string_view name) {
 // capitalised (Re_A … Im_D). FracFx's octagon plugin for Apophysis names its offsets octa_x,
 // octa_y and octa_z (JWildfire's octagon_x ...); bezo97's pixel_flow plugin writes its parameters
 // bare (angle, len, ...). JWildfire's crop_trapezoid names two parameters "Base Sup." and
-// "Base Inf." (not XML names; tolerantXml keeps them), the catalogue's base_sup and base_inf.
+// "Base Inf." (not XML names; tolerantXml keeps them), the catalogue's base_sup and base_inf, and
+// its sunflower names one "F. filling", the catalogue's fill.
 // Fractorium's q_ode names its parameters q_ode01 … q_ode12, without the "_". JWildfire's rational3
 // names Fractorium's t3, t2, t1, tc, b3, b2, b1, bc as a … h.
 std::vector<std::string> fileParamNames(const std::string& termAttribute, const VariationInfo& info,
@@ -177,6 +178,7 @@ std::vector<std::string> fileParamNames(const std::string& termAttribute, const 
   }
   if (info.name == "crop_trapezoid" && param == "base_sup") names.push_back(termAttribute + "_Base Sup.");
   if (info.name == "crop_trapezoid" && param == "base_inf") names.push_back(termAttribute + "_Base Inf.");
+  if (info.name == "sunflower" && param == "fill") names.push_back(termAttribute + "_F. filling");
   // JWildfire's hamid_js names two parameters "number_lines/circles" and "filled circles", and
   // dc_booleans before 2021 its type "^/&/|"; its DC_BaseFunc variations (dc_booleans, dc_menger, ...)
   // named scale_z and offset_z z_scale and z_offset before July 2021.
@@ -329,9 +331,31 @@ std::string withoutCopyMark(std::string_view name) {
 }
 
 // Values an editor works out from a variation's parameters and writes beside them: Fractorium
-// writes auger's half_scale (scale / 2). They carry nothing of their own.
+// writes auger's half_scale (scale / 2). And parameters an editor wrote that never changed what the
+// variation draws: JWildfire's dc_tesla had `thicknes` and `shift` until 2020, which it did not read.
+// They carry nothing of their own.
 bool isDerivedParam(const VariationInfo& info, std::string_view param) {
-  return info.name == "auger" && param == "half_scale";
+  return (info.name == "auger" && param == "half_scale") ||
+         (info.name == "dc_tesla" && (param == "thicknes" || param == "shift"));
+}
+
+// dc_warping's shifts from its seed as JWildfire's setParameter makes them: Java's (int) of the seed,
+// then 2 · nextDouble() − 1 of a new java.util.Random(seed) (its 48-bit linear congruence), x first.
+std::pair<double, double> dcWarpingShifts(double seedValue) {
+  const std::int64_t seed =
+      std::isnan(seedValue) ? 0 : static_cast<std::int64_t>(std::clamp(seedValue, -2147483648.0, 2147483647.0));
+  constexpr std::uint64_t kMultiplier = 0x5DEECE66DULL, kMask = (std::uint64_t{1} << 48) - 1;
+  std::uint64_t state = (static_cast<std::uint64_t>(seed) ^ kMultiplier) & kMask;
+  const auto next = [&state](int bits) {
+    state = (state * kMultiplier + 0xBULL) & kMask;
+    return state >> (48 - bits);
+  };
+  const auto nextDouble = [&next] {
+    const std::uint64_t high = next(26), low = next(27);
+    return static_cast<double>((high << 27) + low) * 0x1.0p-53;
+  };
+  const double x = 2.0 * nextDouble() - 1.0;
+  return {x, 2.0 * nextDouble() - 1.0};
 }
 
 // JWildfire writes a variation's resources (file names, references) beside its parameters: plane_wf's
@@ -339,15 +363,17 @@ bool isDerivedParam(const VariationInfo& info, std::string_view param) {
 // obj_mesh_primitive_wf's reference documents. voxflame reads no images: an empty name (no image)
 // loses nothing, a named image is left out (the image file does not travel with the flame).
 bool isJwildfireResource(const VariationInfo& info, std::string_view param) {
-  const bool imageMaps = info.name == "plane_wf" || info.name == "parplot2d_wf" || info.name == "obj_mesh_primitive_wf";
+  const bool imageMaps = info.name == "plane_wf" || info.name == "parplot2d_wf" || info.name == "polarplot3d_wf" ||
+                         info.name == "isosfplot3d_wf" || info.name == "obj_mesh_primitive_wf";
   return (imageMaps && (param == "colormap_filename" || param == "displ_map_filename")) ||
          (info.name == "recurrenceplot" && param == "func_id_reference") ||
-         (info.name == "parplot2d_wf" && param == "preset_id_reference") ||
+         ((info.name == "parplot2d_wf" || info.name == "isosfplot3d_wf") && param == "preset_id_reference") ||
          (info.name == "obj_mesh_primitive_wf" && param == "primitive_reference") ||
          (embedsFlame(info) && param == "flame_filename");
 }
 bool jwildfireResourceMatters(const VariationInfo& info, std::string_view param, std::string_view value) {
-  return (info.name == "plane_wf" || info.name == "parplot2d_wf" || info.name == "obj_mesh_primitive_wf") &&
+  return (info.name == "plane_wf" || info.name == "parplot2d_wf" || info.name == "polarplot3d_wf" ||
+          info.name == "isosfplot3d_wf" || info.name == "obj_mesh_primitive_wf") &&
          param.ends_with("_filename") && !value.empty();
 }
 
@@ -770,6 +796,19 @@ class FlameReader {
           consumed.insert(param->second.first);
           break;
         }
+      // JWildfire's dc_warping shifts its pattern by (x0, x0) since x0 became a parameter (2020), which
+      // its seed `randomize` sets and a file's x0 then overrides; before, by (x0, y0), both from the
+      // seed (dcWarpingShifts). The catalogue's y0 is that second shift.
+      if (info->name == "dc_warping") {
+        const auto at = [&](const char* param) { return static_cast<std::size_t>(info->paramIndex(param)); };
+        if (byLowerName.contains(lowered(name + "_x0"))) {
+          if (!byLowerName.contains(lowered(name + "_y0"))) term.params.at(at("y0")) = term.params.at(at("x0"));
+        } else {
+          const auto [x0, y0] = dcWarpingShifts(term.params.at(at("randomize")));
+          term.params.at(at("x0")) = x0;
+          term.params.at(at("y0")) = y0;
+        }
+      }
       // Text parameters (JWildfire's resources, which it writes as the hex of their bytes).
       if (!info->textParams.empty()) term.texts = info->defaultTexts();
       // An embedded flame is read, checked and said of at once (readTermText).
@@ -867,6 +906,27 @@ class FlameReader {
                  (formula.size() > 120 ? formula.substr(0, 120) + "..." : formula) +
                  "\" cannot be evaluated (muParser: " + *error + "); the variation adds nothing");
           }
+        }
+      }
+      // polarplot3d_wf's and isosfplot3d_wf's formula, evaluated as a parplot surface
+      // (polarplotSurfaceFormulas, isosfplotSurfaceFormulas): one muParser cannot read makes the term add
+      // nothing, as JWildfire's does, and so does polarplot3d_wf's empty one.
+      if ((info->name == "polarplot3d_wf" || info->name == "isosfplot3d_wf") && term.weight != 0.0) {
+        const std::string& formula = term.texts.at(0);
+        const bool polar = info->name == "polarplot3d_wf";
+        if (!byLowerName.contains(lowered(name + "_formula"))) {
+          lose("formula of " + withoutCopyMark(name));
+          warn(context + " has " + name + " without its formula; voxflame's default (" +
+               (polar ? "JWildfire's preset 0" : "an octahedron") + ") stands in");
+        } else if (polar && formula.empty()) {
+          lose("formula of " + withoutCopyMark(name));
+          warn(context + " has " + name + " with an empty formula; the variation adds nothing");
+        } else if (const std::optional<std::string> error = parplotFormulaError(
+                       (polar ? polarplotSurfaceFormulas(formula) : isosfplotSurfaceFormulas(formula))[0])) {
+          lose("formula of " + withoutCopyMark(name));
+          warn(context + " has " + name + " whose formula \"" +
+               (formula.size() > 120 ? formula.substr(0, 120) + "..." : formula) +
+               "\" cannot be evaluated (muParser: " + *error + "); the variation adds nothing");
         }
       }
       if (info->name == "obj_mesh_primitive_wf" && term.weight != 0.0) checkObjMeshPrimitive(name, context, term);

@@ -1478,6 +1478,8 @@ vec3 V_glynns3subfl(vec3 p, float w, int P, int A) {
 // parplot2d_wf's surfaces: the kernel generator defines this from the terms' formulas (surface
 // `which`, param_a … param_f at flameData[Q …]; flame_kernel.cpp).
 vec3 parplotSurface(int which, float u, float v, int Q);
+// The surfaces' third variable, isosfplot3d_wf's z (its formulas' isosf_z), set before the call.
+float gParplotThird = 0.0;
 // parplot2d_wf: w (X(u, v), Y(u, v), Z(u, v)), (u, v) drawn in [umin, umax] × [vmin, vmax] (or read
 // from x and y with solid 0); the colour index from u and v with direct_color (the CPU's
 // parplot2dWf says the rule). After the parameters: which surface, −1 where a formula does not

@@ -273,3 +273,162 @@ vec3 V_dc_tesla(vec3 p, float w, int P, int A) {
   double grey = double(max(0.0, 6.0 * accum / tw - 2.0));
   return rgb_dcFinish(p, w, P, 5, 10, q, dvec3(grey));
 }
+
+// variations_jwildfire_rare.cpp's polarplot3d_wf, sunflower, dc_warping and isosfplot3d_wf.
+
+// A range as JWildfire's init takes it, (min, max − min), the bounds swapped where min > max.
+vec2 rare_range(float a, float b) { return a > b ? vec2(b, a - b) : vec2(a, b - a); }
+// polarplot3d_wf: r from the kernel's parplot surface `which` (after its 19 parameters; −1, a formula
+// that does not compile or none, adds nothing), the surface's x being r(t, u); drawn in spherical or
+// cylindrical coordinates, the colour as the CPU's polarplot3dWf.
+vec3 V_polarplot3d_wf(vec3 p, float w, int P, int A) {
+  int which = int(P_(P, 19));
+  if (which < 0) return vec3(0.0);
+  vec2 t = rare_range(P_(P, 1), P_(P, 2)), u = rare_range(P_(P, 3), P_(P, 4)), r = rare_range(P_(P, 5), P_(P, 6));
+  bool spherical = roundHalfAway(P_(P, 7)) == 0.0;
+  float mode = roundHalfAway(P_(P, 9));
+  bool setsColour = roundHalfAway(P_(P, 8)) > 0.0 && mode >= 1.0 && mode <= 4.0;
+  float ti = t.x + psi() * t.y;
+  float ui = u.x + psi() * u.y;
+  float ri = parplotSurface(which, ti, ui, P + 13).x;
+  if (setsColour) {
+    float ct = (ti - t.x) / t.y, cu = (ui - u.x) / u.y;
+    float c = mode == 1.0 ? ct : mode == 2.0 ? cu : mode == 3.0 ? (ri - r.x) / r.y : ct * cu;
+    gColour = isnan(c) ? 0.0 : clamp(c, 0.0, 1.0);
+  }
+  if (spherical) return w * ri * vec3(sin(ui) * cos(ti), sin(ui) * sin(ti), cos(ui));
+  return w * vec3(ri * cos(ti), ri * sin(ti), ui);
+}
+
+// sunflower: seed k (Ψ) at ρ (cos θ, sin θ), θ in double (k · angle (3 − √5) degrees reach thousands of
+// radians), drawn as an nBlur polygon of `shape` sides with a hole of fill, scaled by scale · s.
+vec3 V_sunflower(vec3 p, float w, int P, int A) {
+  float count = rgb_limitedInt(P_(P, 0), 10.0, 1000.0), sides = rgb_limitedInt(P_(P, 1), 3.0, 20.0);
+  float scale = isnan(P_(P, 2)) ? P_(P, 2) : clamp(P_(P, 2), 0.0, 100.0);
+  double angle = isnan(P_(P, 3)) ? double(P_(P, 3)) : clamp(double(P_(P, 3)), 0.0lf, 360.0lf);
+  float fill = isnan(P_(P, 5)) ? P_(P, 5) : clamp(P_(P, 5), 0.0, 1.0);
+  bool invert = rgb_limitedInt(P_(P, 6), 0.0, 1.0) == 1.0;
+  // Ψ · count in double, as on the CPU (a float product may round up to the next seed).
+  float k = float(min(floor(double(psi()) * double(count)), double(count) - 1.0lf)) + 1.0;
+  float rho = sqrt(k) / 30.0 / (sqrt(count + 1.0) / 30.0);
+  dvec2 sc = dsinCos(double(k) * (angle * (3.0lf - 2.2360679774997898lf)) * 3.14159265358979323846lf / 180.0lf);
+  float s = invert ? rho : 1.0 - rho;
+  // The polygon: nBlur's sector, its spread inside one, the edge and the radius (DrawFunc's).
+  float sector = kTwoPi / sides, edgeTan = tan(kPi / 2.0 + sector / 2.0);
+  float spread = 13.0 / pow(sides, 1.3), spreadNorm = 2.0 * atan(spread / -2.0);
+  float along = psi();
+  float edge = float(uint(floor(double(psi()) * 32767.0lf)) % uint(sides));
+  float a = (atan(spread * (along - 0.5)) / spreadNorm + 0.5 + edge) * sector;
+  vec2 q = vec2(sin(a), cos(a));
+  for (int j = 0; j < 20 && a > sector; ++j) a -= sector;
+  float tangent = tan(a);
+  float ex = edgeTan / (edgeTan - tangent), ey = ex * tangent;
+  float outer = sqrt(ex * ex + ey * ey), inner = fill * outer;
+  q *= inner + sqrt(psi()) * (outer - inner);
+  q = vec2(cos(sector / 2.0) * q.x - sin(sector / 2.0) * q.y, sin(sector / 2.0) * q.x + cos(sector / 2.0) * q.y);
+  gColour = s;
+  float size = scale * s;
+  return vec3(w * (q.x * size + rho * float(sc.y)), w * (q.y * size + rho * float(sc.x)), w * p.z);
+}
+
+// dc_warping in double throughout, its zoom and shifts too (after its 9 parameters, the memory slot and the
+// palette's place): its hash keeps the fraction of 43758.5 sin(·), and the warps feed the noise back into the
+// places the hash reads, so a float's rounding anywhere changes the colour.
+double rare_fract(double v) { return v - floor(v); }
+double rare_mix(double a, double b, double t) { return a * (1.0lf - t) + b * t; }
+double rare_smoothstep(double e0, double e1, double v) {
+  double t = clamp((v - e0) / (e1 - e0), 0.0lf, 1.0lf);
+  return t * t * (3.0lf - 2.0lf * t);
+}
+double rare_warpHash(double x, double y) {
+  return -1.0lf + 2.0lf * rare_fract(dsin(x * 127.1lf + y * 311.7lf) * 43758.5453123lf);
+}
+double rare_warpNoise(dvec2 p) {
+  dvec2 i = floor(p);
+  precise dvec2 f = p - i;
+  precise dvec2 u = f * f * f;  // JWildfire's CPU code: (3 − 2) f where the shader has 3 − 2f
+  return rare_mix(rare_mix(rare_warpHash(i.x, i.y), rare_warpHash(i.x + 1.0lf, i.y), u.x),
+                  rare_mix(rare_warpHash(i.x, i.y + 1.0lf), rare_warpHash(i.x + 1.0lf, i.y + 1.0lf), u.x), u.y);
+}
+dvec2 rare_warpTurn(dvec2 p, double scale) {
+  precise dvec2 s = p * scale;
+  return dvec2(0.8lf * s.x - 0.6lf * s.y, 0.6lf * s.x + 0.8lf * s.y);
+}
+double rare_warpFbm(dvec2 p) {
+  precise double f = 0.5lf * rare_warpNoise(p);
+  p = rare_warpTurn(p, 2.02lf);
+  f += 0.25lf * rare_warpNoise(p);
+  p = rare_warpTurn(p, 2.03lf);
+  f += 0.125lf * rare_warpNoise(p);
+  p = rare_warpTurn(p, 2.01lf);
+  f += 0.0625lf * rare_warpNoise(p);
+  return f / 0.9375lf;
+}
+dvec2 rare_warpFbm2(dvec2 p) { return dvec2(rare_warpFbm(p), rare_warpFbm(p.yx)); }
+dvec3 rare_warpMap(dvec2 p) {
+  p *= 0.7lf;
+  dvec2 inner = rare_warpFbm2(p * 4.0lf);
+  dvec2 middle = rare_warpFbm2((p + inner) * 2.0lf);
+  dvec2 outer = rare_warpFbm2(p + middle);
+  double bl = rare_smoothstep(-0.8lf, 0.8lf, outer.x - outer.y);
+  double ti = rare_smoothstep(-1.0lf, 1.0lf, rare_warpFbm(p));
+  return dvec3(rare_mix(rare_mix(0.5lf, 1.0lf, ti), 0.0lf, bl), rare_mix(rare_mix(0.0lf, 0.75lf, ti), 0.0lf, bl),
+               rare_mix(rare_mix(0.0lf, 0.35lf, ti), 0.02lf, bl));
+}
+double rare_grey(dvec3 c) { return c.x * 0.333lf + c.y * 0.333lf + c.z * 0.333lf; }
+vec3 V_dc_warping(vec3 p, float w, int P, int A) {
+  const int D = P + 11;
+  double zoom = paramDouble(D, 1), x0 = paramDouble(D, 2), y0 = paramDouble(D, 3);
+  dvec2 q = rgb_dcPoint(p, P, 4, 0.5lf);
+  const double e = 0.0045lf;
+  dvec2 at = dvec2(q.x * zoom + x0, q.y * zoom + y0);
+  dvec3 c = rare_warpMap(at);
+  double gc = rare_grey(c), ga = rare_grey(rare_warpMap(at + dvec2(e, 0.0lf))),
+         gb = rare_grey(rare_warpMap(at + dvec2(0.0lf, e)));
+  double nx = ga - gc, nz = gb - gc;
+  double ny = e / sqrt(nx * nx + e * e + nz * nz);
+  double edge = 8.0lf * abs(2.0lf * gc - ga - gb);
+  double lift = 1.0lf + 0.2lf * ny * ny, sheen = 0.05lf * ny * ny * ny;
+  double qx = (q.x + 1.0lf) / 2.0lf, qy = (q.y + 1.0lf) / 2.0lf;
+  // (A negative base, the point read outside the square, gives NaN as C's pow does.)
+  float base = float(16.0lf * qx * qy * (1.0lf - qx) * (1.0lf - qy));
+  double vignette = base < 0.0 ? rgb_nan() : double(pow(base, 0.1));
+  dvec3 colour = (dvec3(c.x + edge, c.y + 0.7lf * edge, c.z + 0.6lf * edge) * lift + sheen) * vignette;
+  return rgb_dcFinish(p, w, P, 4, 9, q, colour);
+}
+
+// isosfplot3d_wf: up to max_iter points of the box until |F(x, y, z)| ≤ thickness, F from the kernel's parplot
+// surface `which` (after its 18 parameters; −1, a formula that does not compile, adds nothing) with z in
+// gParplotThird; with none the point is hidden and nothing is added. The colour as the CPU's isosfplot3dWf.
+vec3 V_isosfplot3d_wf(vec3 p, float w, int P, int A) {
+  int which = int(P_(P, 18));
+  if (which < 0) return vec3(0.0);
+  vec2 bx = rare_range(P_(P, 1), P_(P, 2)), by = rare_range(P_(P, 3), P_(P, 4)), bz = rare_range(P_(P, 5), P_(P, 6));
+  float thickness = P_(P, 7) < 1e-10 ? 1e-10 : P_(P, 7);
+  float iterations = isnan(P_(P, 8)) ? 1.0 : clamp(roundHalfAway(P_(P, 8)), 1.0, 100000.0);
+  float mode = roundHalfAway(P_(P, 10));
+  bool setsColour = roundHalfAway(P_(P, 9)) > 0.0 && mode >= 3.0;
+  vec3 q = vec3(0.0);
+  bool found = false;
+  for (float k = 0.0; k < iterations && !found; k += 1.0) {
+    q.x = bx.x + psi() * bx.y;
+    q.y = by.x + psi() * by.y;
+    q.z = bz.x + psi() * bz.y;
+    gParplotThird = q.z;
+    found = abs(parplotSurface(which, q.x, q.y, P + 12).x) <= thickness;
+  }
+  gHidden = !found;
+  if (!found) return vec3(0.0);
+  if (setsColour) {
+    vec3 c = (q - vec3(bx.x, by.x, bz.x)) / vec3(bx.y, by.y, bz.y);
+    float v = mode == 3.0   ? c.x
+              : mode == 4.0 ? c.y
+              : mode == 5.0 ? c.z
+              : mode == 6.0 ? c.x * c.y
+              : mode == 7.0 ? c.y * c.z
+              : mode == 8.0 ? c.z * c.x
+                            : c.x * c.y * c.z;
+    gColour = isnan(v) ? 0.0 : clamp(v, 0.0, 1.0);
+  }
+  return w * q;
+}
