@@ -229,6 +229,10 @@ RestSignature restSignature(const ExplorerSession& session, const ExplorerState&
 
 int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options) {
   if (!haveDisplay()) return renderInsteadOfWindow(initialScene);
+  // Before the window: a signal that comes while the window, GL and the panels are set up (seconds
+  // on a slow machine, with the window already shown) is kept, and the loop's first frame ends with
+  // the scene autosaved, instead of the process dying with nothing saved.
+  const QuitSignals quitSignals;
 
   GlfwSession glfw;
   X11Watch& x11 = *glfw.x11;
@@ -292,7 +296,6 @@ int runExplorer(const core::Scene& initialScene, const ExplorerOptions& options)
   glfwSetWindowUserPointer(window, &input);
   installInputCallbacks(window);
   std::vector<std::string>& dropped = input.dropped;
-  const QuitSignals quitSignals;
   {
     ExplorerSession session;
     PresetLibrary presets(findShippedPresetFolder(), state.services.settings.presetFolder());
