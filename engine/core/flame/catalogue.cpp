@@ -54,6 +54,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addTextVariations(c);
   variation_kernels::addJwildfireGlslVariations(c);
   variation_kernels::addJwildfireWildVariations(c);
+  variation_kernels::addPluginsRareVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")

@@ -273,3 +273,55 @@ vec3 V_dc_tesla(vec3 p, float w, int P, int A) {
   double grey = double(max(0.0, 6.0 * accum / tw - 2.0));
   return rgb_dcFinish(p, w, P, 5, 10, q, dvec3(grey));
 }
+
+// sym_bg2, sym_ng11, sym_ng15 (JWildfire's symmetry groups): one of a fixed set of maps, picked by ⌊count Ψ⌋ in
+// double as on the CPU; each linear part as (a, b, d, e).
+vec3 V_sym_bg2(vec3 p, float w, int P, int A) {
+  float stepX = P_(P, 0), stepY = P_(P, 1);
+  vec2 q = tableIndex(psi(), 2) == 0 ? vec2(p.x - stepX / 2.0 - 1.0, p.y - stepY / 2.0)
+                                     : vec2(p.x + stepX / 2.0, -p.y + stepY / 2.0 + 1.0);
+  return w * vec3(q, p.z);
+}
+vec3 V_sym_ng11(vec3 p, float w, int P, int A) {
+  const vec4 linear[8] = vec4[8](vec4(1, 0, 0, 1), vec4(-1, 0, 0, -1), vec4(0, 1, -1, 0), vec4(0, -1, 1, 0),
+                                 vec4(-1, 0, 0, 1), vec4(0, -1, -1, 0), vec4(0, 1, 1, 0), vec4(1, 0, 0, -1));
+  // The translations' signs: (of spacex, of stepx/2, of spacey, of stepy/2).
+  const vec4 signs[8] = vec4[8](vec4(1, 1, 1, 1), vec4(-1, 1, -1, 1), vec4(1, 1, -1, 1), vec4(-1, 1, 1, 1),
+                                vec4(-1, -1, 1, -1), vec4(-1, -1, -1, -1), vec4(1, -1, 1, -1), vec4(1, -1, -1, -1));
+  float space = P_(P, 0), spaceX = P_(P, 1), spaceY = P_(P, 2), halfX = P_(P, 3) / 2.0, halfY = P_(P, 4) / 2.0;
+  int k = tableIndex(psi(), 8);
+  vec4 m = linear[k], s = signs[k];
+  vec2 q = p.xy + space;
+  float c = s.x * spaceX + s.y * halfX, f = s.z * spaceY + s.w * halfY;
+  return w * vec3(m.x * q.x + m.y * q.y + c, m.z * q.x + m.w * q.y + f, p.z);
+}
+vec3 V_sym_ng15(vec3 p, float w, int P, int A) {
+  const vec4 linear[6] = vec4[6](vec4(0.0, 1.0, -1.0, 0.0), vec4(0.0, -1.0, -1.0, 0.0), vec4(0.866, -0.5, 0.5, 0.866),
+                                 vec4(0.866, 0.5, 0.5, -0.866), vec4(-0.866, -0.5, 0.5, -0.866),
+                                 vec4(-0.866, 0.5, 0.5, 0.866));
+  float shift = sqrt(P_(P, 0) * P_(P, 0) / 2.0), halfX = P_(P, 1) / 2.0, halfY = P_(P, 2) / 2.0;
+  int k = tableIndex(psi(), 12);
+  vec4 m = linear[k % 6];
+  float s = k < 6 ? -1.0 : 1.0;
+  vec2 q = p.xy + shift;
+  return w * vec3(m.x * q.x + m.y * q.y + s * halfX, m.z * q.x + m.w * q.y + s * halfY, p.z);
+}
+
+// flam3's original secant: y is not scaled by the weight.
+vec3 V_secant(vec3 p, float w, int P, int A) {
+  float r = w * sqrt(p.x * p.x + p.y * p.y);
+  return vec3(w * p.x, 1.0 / cos(r), w * p.z);
+}
+
+// julian2dc: julian2, and the colour index from the result's radius and angle.
+vec3 V_julian2dc(vec3 p, float w, int P, int A) {
+  float powerN = countParam(P_(P, 0)), exponent = P_(P, 1) / powerN * 0.5, rootCount = abs(powerN);
+  float col = P_(P, 2);
+  float a = P_(P, 3), b = P_(P, 4), c = P_(P, 5), d = P_(P, 6), e = P_(P, 7), f = P_(P, 8);
+  float px = a * p.x + b * p.y + e, py = c * p.x + d * p.y + f;
+  float root = trunc(rootCount * psi());
+  float angle = (atan2c(py, px) + kTwoPi * root) / powerN;
+  float r = w * pow(px * px + py * py, exponent);
+  gColour = fmodc(abs(r * col + angle / kTwoPi * (1.0 - col)), 1.0);
+  return vec3(r * cos(angle), r * sin(angle), w * p.z);
+}

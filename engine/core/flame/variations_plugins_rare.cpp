@@ -1,0 +1,177 @@
+// Rarer plugins that published flame files use: JWildfire's symmetry-group variations sym_bg2, sym_ng11 and
+// sym_ng15 (Jesús Sosa's, after McGregor and Watt's "The Art of Graphics for the IBM PC": each point goes through
+// one of a fixed set of rigid maps picked at random, so the attractor holds every copy), flam3's original secant
+// (before flam3 2.7.10 replaced it by secant2; electric sheep of that time use it), and the Apophysis plugins
+// julian2dc (xyrus02's julian2 that also colours the point) and shape (cyberxaos' superformula blur). Each is a
+// kernel below and one row of the table at the end (see variations.h for the notation and variation_kernels.h for
+// what the files share). Random numbers come from the lane's own stream (laneUniform), where the originals draw
+// from their own generators.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "core/flame/variation_kernels.h"
+
+namespace voxflame::core {
+
+namespace {
+
+using namespace variation_kernels;
+
+// ---- JWildfire's symmetry groups ---------------------------------------------------------------------
+// One of `count` maps (a x + b y + c, d x + e y + f), picked by ⌊count Ψ⌋ (JWildfire's (int)(count ·
+// Math.random())). The linear parts are fixed; the translations come from the parameters.
+struct SymLinear {
+  double a, b, d, e;
+};
+
+[[gnu::always_inline]] inline std::size_t symPick(std::uint32_t& state, std::size_t count) {
+  const auto k = static_cast<std::size_t>(laneUniform(state) * static_cast<double>(count));
+  return std::min(k, count - 1);
+}
+
+// sym_bg2, band group 2: the point moved left by stepx/2 + 1 and down by stepy/2, or mirrored in the x axis and
+// moved right by stepx/2 and up by stepy/2 + 1.
+VOXFLAME_VARIATION_TARGETS void symBg2(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                       double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double stepX = P[0], stepY = P[1];
+  for (std::size_t i = 0; i < n; ++i) {
+    double px, py;
+    if (symPick(rnd[i], 2) == 0) {
+      px = x[i] - stepX / 2.0 - 1.0;
+      py = y[i] - stepY / 2.0;
+    } else {
+      px = x[i] + stepX / 2.0;
+      py = -y[i] + stepY / 2.0 + 1.0;
+    }
+    outX[i] += w * px;
+    outY[i] += w * py;
+    outZ[i] += w * z[i];
+  }
+}
+
+// sym_ng11, net group 11: the point shifted by (space, space), then one of the eight maps of the square's
+// symmetry group (the four quarter turns and the four mirrors), each with its own translation made of
+// ±spacex ± stepx/2 and ±spacey ± stepy/2 (JWildfire's table).
+constexpr SymLinear kSymNg11Linear[8] = {{1.0, 0.0, 0.0, 1.0},  {-1.0, 0.0, 0.0, -1.0}, {0.0, 1.0, -1.0, 0.0},
+                                         {0.0, -1.0, 1.0, 0.0}, {-1.0, 0.0, 0.0, 1.0},  {0.0, -1.0, -1.0, 0.0},
+                                         {0.0, 1.0, 1.0, 0.0},  {1.0, 0.0, 0.0, -1.0}};
+// The translations' signs: (of spacex, of stepx/2, of spacey, of stepy/2).
+constexpr double kSymNg11Signs[8][4] = {{1, 1, 1, 1},    {-1, 1, -1, 1},   {1, 1, -1, 1},  {-1, 1, 1, 1},
+                                        {-1, -1, 1, -1}, {-1, -1, -1, -1}, {1, -1, 1, -1}, {1, -1, -1, -1}};
+
+VOXFLAME_VARIATION_TARGETS void symNg11(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double space = P[0], spaceX = P[1], spaceY = P[2], halfX = P[3] / 2.0, halfY = P[4] / 2.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t k = symPick(rnd[i], 8);
+    const SymLinear& m = kSymNg11Linear[k];
+    const double* s = kSymNg11Signs[k];
+    const double qx = x[i] + space, qy = y[i] + space;
+    const double c = s[0] * spaceX + s[1] * halfX, f = s[2] * spaceY + s[3] * halfY;
+    outX[i] += w * (m.a * qx + m.b * qy + c);
+    outY[i] += w * (m.d * qx + m.e * qy + f);
+    outZ[i] += w * z[i];
+  }
+}
+
+// sym_ng15, net group 15: the point shifted by (ρ, ρ), ρ = √(radius²/2), then one of twelve maps: six rotations
+// and reflections at multiples of 60° (JWildfire writes cos 30° as 0.866), each once moved by −(stepx, stepy)/2
+// and once by +(stepx, stepy)/2.
+constexpr SymLinear kSymNg15Linear[6] = {{0.0, 1.0, -1.0, 0.0},       {0.0, -1.0, -1.0, 0.0},
+                                         {0.866, -0.5, 0.5, 0.866},   {0.866, 0.5, 0.5, -0.866},
+                                         {-0.866, -0.5, 0.5, -0.866}, {-0.866, 0.5, 0.5, 0.866}};
+
+VOXFLAME_VARIATION_TARGETS void symNg15(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                        double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double shift = std::sqrt(P[0] * P[0] / 2.0), halfX = P[1] / 2.0, halfY = P[2] / 2.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t k = symPick(rnd[i], 12);
+    const SymLinear& m = kSymNg15Linear[k % 6];
+    const double sign = k < 6 ? -1.0 : 1.0;
+    const double qx = x[i] + shift, qy = y[i] + shift;
+    outX[i] += w * (m.a * qx + m.b * qy + sign * halfX);
+    outY[i] += w * (m.d * qx + m.e * qy + sign * halfY);
+    outZ[i] += w * z[i];
+  }
+}
+
+// ---- flam3's original secant ---------------------------------------------------------------------------
+// (w x, 1/cos(w r)): y is not scaled by the weight, as flam3 had it until 2.7.10 (secant2 scales it and closes
+// the gap at cos = 0 by ∓1).
+VOXFLAME_VARIATION_2D(secant, {
+  const double r = w * std::sqrt(x[i] * x[i] + y[i] * y[i]);
+  outX[i] += w * x[i];
+  outY[i] += 1.0 / std::cos(r);
+})
+
+// ---- Apophysis plugins ---------------------------------------------------------------------------------
+// xyrus02's julian2dc: julian2 (julian of q = (a x + b y + e, c x + d y + f)) that sets the colour index to
+// |ρ col + α/2π (1 − col)| mod 1, ρ the result's radius (with the weight) and α its angle.
+VOXFLAME_VARIATION_TARGETS void julian2dc(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                          double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double powerN = countParam(P[0]), exponent = P[1] / powerN * 0.5, rootCount = std::abs(powerN);
+  const double col = P[2];
+  const double a = P[3], b = P[4], c = P[5], d = P[6], e = P[7], f = P[8];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double px = a * x[i] + b * y[i] + e, py = c * x[i] + d * y[i] + f;
+    const double root = std::trunc(rootCount * laneUniform(rnd[i]));
+    const double angle = (std::atan2(py, px) + kTwoPi * root) / powerN;
+    const double r = w * std::pow(px * px + py * py, exponent);
+    outX[i] += r * std::cos(angle);
+    outY[i] += r * std::sin(angle);
+    outZ[i] += w * z[i];
+    colour[i] = laneFmod(std::abs(r * col + angle / kTwoPi * (1.0 - col)), 1.0);
+  }
+}
+
+}  // namespace
+
+void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& catalogue) {
+  const CatalogueAdder add(catalogue);
+  [[maybe_unused]] constexpr bool k2D = CatalogueAdder::k2D, k3D = CatalogueAdder::k3D,
+                                  kRandom = CatalogueAdder::kRandom, kFixed = CatalogueAdder::kFixed;
+  const auto count = &CatalogueAdder::count;
+
+  add("sym_bg2",
+      "(x − stepx/2 − 1, y − stepy/2) or (x + stepx/2, −y + stepy/2 + 1), one at random (Ψ < ½ the first), z "
+      "(JWildfire's band symmetry group 2)",
+      k2D, kRandom, &symBg2, {{"stepx", 0.0, -2.0, 2.0}, {"stepy", 0.0, -2.0, 2.0}});
+  add("sym_ng11",
+      "q = (x + space, y + space) through one of the square's eight rotations and mirrors, picked by ⌊8Ψ⌋, each "
+      "moved by its own (±spacex ± stepx/2, ±spacey ± stepy/2), z (JWildfire's net symmetry group 11)",
+      k2D, kRandom, &symNg11,
+      {{"space", 0.0, -2.0, 2.0},
+       {"spacex", 0.0, -2.0, 2.0},
+       {"spacey", 0.0, -2.0, 2.0},
+       {"stepx", 1.5, -3.0, 3.0},
+       {"stepy", 1.5, -3.0, 3.0}});
+  add("sym_ng15",
+      "q = p + (ρ, ρ), ρ = √(radius²/2), through one of six rotations and mirrors at multiples of 60° (cos 30° as "
+      "0.866), moved by ∓(stepx, stepy)/2: twelve maps, picked by ⌊12Ψ⌋, z (JWildfire's net symmetry group 15)",
+      k2D, kRandom, &symNg15, {{"radius", 0.0, 0.0, 2.0}, {"stepx", 0.0, -3.0, 3.0}, {"stepy", 0.0, -3.0, 3.0}});
+  add("secant", "(w x, 1/cos(w r)), z: y not scaled by the weight (flam3's before 2.7.10; w the weight)", k2D, kFixed,
+      &secant);
+  add("julian2dc",
+      "julian2's |q|^(dist/power) (cos α, sin α), z, q = (a x + b y + e, c x + d y + f), α = (∠q + 2πk)/power, k = "
+      "trunc(|power|·Ψ); the colour index becomes |ρ col + α/2π (1 − col)| mod 1, ρ = w |q|^(dist/power) (xyrus02's)",
+      k2D, kRandom, &julian2dc,
+      {count("power", 2.0, -12.0, 12.0),
+       {"dist", 1.0, -3.0, 3.0},
+       {"col", 0.0, -1.0, 2.0},
+       {"a", 1.0, -2.0, 2.0},
+       {"b", 0.0, -2.0, 2.0},
+       {"c", 0.0, -2.0, 2.0},
+       {"d", 1.0, -2.0, 2.0},
+       {"e", 0.0, -2.0, 2.0},
+       {"f", 0.0, -2.0, 2.0}});
+  catalogue.back().directColour = true;
+}
+
+}  // namespace voxflame::core

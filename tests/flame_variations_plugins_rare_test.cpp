@@ -1,0 +1,192 @@
+// JWildfire's symmetry groups sym_bg2, sym_ng11 and sym_ng15, flam3's original secant and Apophysis' julian2dc
+// (variations_plugins_rare.cpp), each at points whose expected values were worked out from JWildfire's Java classes,
+// flam3's old formula and the plugin's C by a separate Python script in double precision, independently of the code
+// under test. Weight 0.8; the harness's sum starts at (0.125, −0.25, 0.5) with colour index 0.375. Random rows replay
+// the lane's seed: xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594, 0.875707, … from
+// 0x9E3779B9.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "core/flame/variations.h"
+#include "core/flame/xml.h"
+#include "variation_point_case.h"
+
+using namespace voxflame::core;
+
+namespace {
+
+using namespace voxflame::test;
+
+// The symmetry rows pick map ⌊count Ψ₁⌋: sym_bg2 its second map with the high seed and its first with the low one,
+// sym_ng11 map 7 and map 2, sym_ng15 map 10 and map 3 (of twelve: 0–5 moved by −step/2, 6–11 by +step/2). The
+// parameters marked "file" are those of the published flames that use them. secant: (w x, 1/cos(w r)), y not
+// weighted. julian2dc picks root ⌊|power| Ψ₁⌋ and sets the colour index (the colour table below).
+const std::vector<PointCase>& pointCases() {
+  static const std::vector<PointCase> cases = {
+      {"sym_bg2", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.24, 1.36, 0.4}},
+      {"sym_bg2", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.5599999999999999, -0.5599999999999999, 0.4}},
+      // file
+      {"sym_bg2", {-1.0, -0.832}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.16000000000000003, 1.0272000000000001, 0.4}},
+      {"sym_bg2", {-1.0, -0.832}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.16000000000000003, -0.22719999999999999, 0.4}},
+      {"sym_ng11", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.36000000000000004, -0.040000000000000036, 0.4}},
+      {"sym_ng11", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {0.040000000000000036, 0.36000000000000004, 0.4}},
+      {"sym_ng11",
+       {-0.4, 0.1, 0.2, 1.5, 1.25},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.6000000000000001, 0.2200000000000001, 0.4}},
+      {"sym_ng11",
+       {-0.4, 0.1, 0.2, 1.5, 1.25},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.2000000000000001, 0.42000000000000004, 0.4}},
+      {"sym_ng15", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.07216, 0.60496, 0.4}},
+      {"sym_ng15", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.07216, 0.60496, 0.4}},
+      // file
+      {"sym_ng15", {0.625, 1.6, 1.024}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.229206068449588, 0.8851594590428619, 0.4}},
+      {"sym_ng15",
+       {0.625, 1.6, 1.024},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.229206068449588, 0.06595945904286182, 0.4}},
+      {"secant", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.24, 1.2194071216358846, 0.4}},
+      // cos(w r) < 0: y negative (secant2 would add 1).
+      {"secant", {}, {2.0, 0.5, 0.5}, 0.8, kHighSeed, {1.6, -12.760718720804427, 0.4}},
+      {"julian2dc", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.5828419506072336, 0.3843237429403043, 0.4}},
+      {"julian2dc", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {0.5828419506072338, -0.38432374294030425, 0.4}},
+      // file
+      {"julian2dc",
+       {2.0, 1.0, 0.346, 0.8, 0.0, 0.3, 1.4, 0.2, 0.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.6771290581476097, 0.4205992883825045, 0.4}},
+      // power −3: root 2 with the high seed, root 0 with the low one.
+      {"julian2dc",
+       {-3.0, 0.5, 1.25, 1.0, 0.2, -0.1, 0.9, 0.05, -0.1},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {-0.6805566955396543, 0.47916923643487364, 0.4}},
+      {"julian2dc",
+       {-3.0, 0.5, 1.25, 1.0, 0.2, -0.1, 0.9, 0.05, -0.1},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.7552510792344197, 0.34979476883549543, 0.4}},
+  };
+  return cases;
+}
+
+class PluginsRareVariationAtPoint : public testing::TestWithParam<PointCase> {};
+
+TEST_P(PluginsRareVariationAtPoint, MatchesTheHandComputedValue) {
+  expectMatchesTheHandComputedValue(GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(PluginsRare, PluginsRareVariationAtPoint, testing::ValuesIn(pointCases()), caseLabel);
+
+const PointCaseTableRegistration registered(&pointCases);
+
+// julian2dc's colour index: |ρ col + α/2π (1 − col)| mod 1, ρ and α the result's radius (weighted) and angle.
+const std::vector<ColourCase>& colourCases() {
+  static const std::vector<ColourCase> cases = {
+      {"julian2dc", {}, {0.3, -0.7, 0.5}, kHighSeed, 0.40722026460228916},
+      {"julian2dc", {}, {0.3, -0.7, 0.5}, kLowSeed, 0.09277973539771085},
+      {"julian2dc", {2.0, 1.0, 0.346, 0.8, 0.0, 0.3, 1.4, 0.2, 0.0}, {0.3, -0.7, 0.5}, kHighSeed, 0.5449505809211291},
+      {"julian2dc", {2.0, 1.0, 0.346, 0.8, 0.0, 0.3, 1.4, 0.2, 0.0}, {0.3, -0.7, 0.5}, kLowSeed, 0.21795058092112915},
+      {"julian2dc",
+       {-3.0, 0.5, 1.25, 1.0, 0.2, -0.1, 0.9, 0.05, -0.1},
+       {0.3, -0.7, 0.5},
+       kHighSeed,
+       0.18981186611116652},
+      {"julian2dc",
+       {-3.0, 0.5, 1.25, 1.0, 0.2, -0.1, 0.9, 0.05, -0.1},
+       {0.3, -0.7, 0.5},
+       kLowSeed,
+       0.023145199444499998},
+  };
+  return cases;
+}
+
+class PluginsRareVariationSetsColour : public testing::TestWithParam<ColourCase> {};
+
+TEST_P(PluginsRareVariationSetsColour, ToTheHandComputedValue) {
+  expectSetsTheHandComputedColour(GetParam());
+}
+
+INSTANTIATE_TEST_SUITE_P(PluginsRare, PluginsRareVariationSetsColour, testing::ValuesIn(colourCases()),
+                         colourCaseLabel);
+
+TEST(FlameVariationPluginsRare, OddPointsStayFiniteOrNaNWhole) {
+  const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
+  // The symmetry maps are rigid motions: a finite point stays finite, a non-finite one is not made finite.
+  for (const char* name : {"sym_bg2", "sym_ng11", "sym_ng15"}) {
+    const VariationInfo& info = variationOrThrow(name);
+    for (const double v : {0.0, 1e300, -1e300}) {
+      const Outputs out = run(info, info.defaultParams(), {v, -v, v}, 0.8, kHighSeed, 3);
+      EXPECT_TRUE(std::isfinite(out.x[0]) && std::isfinite(out.y[0]) && std::isfinite(out.z[0])) << name << " " << v;
+    }
+    for (const double v : {inf, -inf, nan}) {
+      const Outputs out = run(info, info.defaultParams(), {v, 0.25, 0.5}, 0.8, kHighSeed, 3);
+      EXPECT_FALSE(std::isfinite(out.x[0]) && std::isfinite(out.y[0])) << name << " " << v;
+    }
+  }
+  // secant at the origin: (0, 1); far away cos is some number in [−1, 1], so y is finite or ±∞.
+  const VariationInfo& secant = variationOrThrow("secant");
+  const Outputs origin = run(secant, {}, {0.0, 0.0, 0.5}, 0.8, kHighSeed, 1);
+  EXPECT_EQ(origin.x[0] - kStartX, 0.0);
+  EXPECT_DOUBLE_EQ(origin.y[0] - kStartY, 1.0);
+  const Outputs far = run(secant, {}, {inf, nan, 0.5}, 0.8, kHighSeed, 1);
+  EXPECT_FALSE(std::isfinite(far.x[0]));
+  // julian2dc at the image of the origin (q = 0) with a positive exponent: the origin, colour from the angle alone.
+  const VariationInfo& julian2dc = variationOrThrow("julian2dc");
+  const Outputs zero = run(julian2dc, julian2dc.defaultParams(), {0.0, 0.0, 0.5}, 0.8, kLowSeed, 1);
+  EXPECT_EQ(zero.x[0] - kStartX, 0.0);
+  EXPECT_EQ(zero.y[0] - kStartY, 0.0);
+  EXPECT_TRUE(std::isfinite(zero.colour[0]) && zero.colour[0] >= 0.0 && zero.colour[0] < 1.0);
+  // A negative dist sends q = 0 to infinity: the point is not finite, and neither is made up.
+  const Outputs pole =
+      run(julian2dc, {2.0, -1.0, 0.5, 1.0, 0.0, 0.0, 1.0, 0.0, 0.0}, {0.0, 0.0, 0.5}, 0.8, kLowSeed, 1);
+  EXPECT_FALSE(std::isfinite(pole.x[0]) && std::isfinite(pole.y[0]));
+  const Outputs huge = run(julian2dc, julian2dc.defaultParams(), {1e300, -1e300, 0.5}, 0.8, kHighSeed, 1);
+  EXPECT_FALSE(std::isnan(huge.x[0]) != std::isnan(huge.y[0]));
+}
+
+ImportedFlame importXform(const std::string& xform) {
+  const std::string text = "<flames><flame name=\"t\" size=\"64 64\"><xform weight=\"1\" color=\"0\" " + xform +
+                           "/><color index=\"0\" rgb=\"255 255 255\"/></flame></flames>";
+  return readFlameXml(text, "t.flame").flame;
+}
+
+// The files' own spellings: JWildfire writes each parameter after the variation's name (and an fx_priority that
+// does not change the map), Apophysis writes julian2dc's, flam3 wrote secant without parameters.
+TEST(FlameVariationPluginsRare, ImportsTheFilesNames) {
+  const ImportedFlame flame = importXform(
+      R"(sym_ng15="1.0" sym_ng15_fx_priority="0" sym_ng15_radius="0.625" sym_ng15_stepx="1.6" sym_ng15_stepy="1.024" )"
+      R"(julian2dc="0.5" julian2dc_power="2" julian2dc_dist="1" julian2dc_col="0.346" julian2dc_a="0.8" )"
+      R"(julian2dc_b="0" julian2dc_c="0.3" julian2dc_d="1.4" julian2dc_e="0.2" julian2dc_f="0" secant="0.25" )"
+      R"(coefs="1 0 0 1 0 0")");
+  ASSERT_TRUE(flame.leftOut.empty()) << flame.leftOut.front();
+  const auto& terms = flame.genome.xforms.at(0).variations;
+  ASSERT_EQ(terms.size(), 3u);
+  for (const VariationTerm& term : terms) {
+    if (term.name == "sym_ng15") {
+      EXPECT_EQ(term.params, (std::vector<double>{0.625, 1.6, 1.024}));
+    } else if (term.name == "julian2dc") {
+      EXPECT_EQ(term.params, (std::vector<double>{2.0, 1.0, 0.346, 0.8, 0.0, 0.3, 1.4, 0.2, 0.0}));
+    } else {
+      EXPECT_EQ(term.name, "secant");
+      EXPECT_TRUE(term.params.empty());
+    }
+  }
+}
+
+}  // namespace
