@@ -1,9 +1,9 @@
-// JWildfire's symmetry groups sym_bg2, sym_ng11 and sym_ng15, flam3's original secant and Apophysis' julian2dc
-// (variations_plugins_rare.cpp), each at points whose expected values were worked out from JWildfire's Java classes,
-// flam3's old formula and the plugin's C by a separate Python script in double precision, independently of the code
-// under test. Weight 0.8; the harness's sum starts at (0.125, −0.25, 0.5) with colour index 0.375. Random rows replay
-// the lane's seed: xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594, 0.875707, … from
-// 0x9E3779B9.
+// JWildfire's symmetry groups sym_bg2, sym_ng11 and sym_ng15, flam3's original secant and the Apophysis plugins
+// julian2dc and shape (variations_plugins_rare.cpp), each at points whose expected values were worked out from
+// JWildfire's Java classes, flam3's old formula, julian2dc's C and (for shape) the superformula by a separate Python
+// script in double precision, independently of the code under test. Weight 0.8; the harness's sum starts at (0.125,
+// −0.25, 0.5) with colour index 0.375. Random rows replay the lane's seed: xorshift32 gives Ψ = 0.879466, 0.545326, …
+// from 0x2545F491 and Ψ = 0.316594, 0.875707, … from 0x9E3779B9.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -81,6 +81,34 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kLowSeed,
        {0.7552510792344197, 0.34979476883549543, 0.4}},
+      // shape: w (Ψ₁ − holes) R(φ) (x, y)/r, R the superformula's radius at φ.
+      {"shape", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {-0.032708234772874364, 0.07631921447004018, 0.4}},
+      {"shape", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.18545054672121658, 0.43271794234950534, 0.4}},
+      // file
+      {"shape",
+       {4.0, 1.5, 0.7, 2.0, 1.0, 1.0, -0.6},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.37874928545528386, -0.8837483327289956, 0.4}},
+      {"shape",
+       {4.0, 1.5, 0.7, 2.0, 1.0, 1.0, -0.6},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.234651588108916, -0.5475203722541373, 0.4}},
+      {"shape",
+       {5.0, 2.0, 1.5, 0.5, 0.8, 1.3, 0.25},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.20598041599301053, -0.48062097065035786, 0.4}},
+      {"shape",
+       {5.0, 2.0, 1.5, 0.5, 0.8, 1.3, 0.25},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {0.02179141292133405, -0.05084663014977945, 0.4}},
   };
   return cases;
 }
@@ -158,6 +186,17 @@ TEST(FlameVariationPluginsRare, OddPointsStayFiniteOrNaNWhole) {
   EXPECT_FALSE(std::isfinite(pole.x[0]) && std::isfinite(pole.y[0]));
   const Outputs huge = run(julian2dc, julian2dc.defaultParams(), {1e300, -1e300, 0.5}, 0.8, kHighSeed, 1);
   EXPECT_FALSE(std::isnan(huge.x[0]) != std::isnan(huge.y[0]));
+  // shape places a point within its curve whatever the point's distance: at the origin there is no direction, so
+  // the point stays at the origin; a huge one stays within the curve (its r² overflows: at the origin too).
+  const VariationInfo& shape = variationOrThrow("shape");
+  const std::vector<double> file = {4.0, 1.5, 0.7, 2.0, 1.0, 1.0, -0.6};
+  const Outputs centre = run(shape, file, {0.0, 0.0, 0.5}, 0.8, kHighSeed, 1);
+  EXPECT_EQ(centre.x[0] - kStartX, 0.0);
+  EXPECT_EQ(centre.y[0] - kStartY, 0.0);
+  const Outputs farOut = run(shape, file, {1e300, -1e300, 0.5}, 0.8, kHighSeed, 1);
+  EXPECT_LT(std::hypot(farOut.x[0] - kStartX, farOut.y[0] - kStartY), 0.8 * 1.6 + 1e-9);
+  const Outputs notFinite = run(shape, file, {inf, nan, 0.5}, 0.8, kHighSeed, 1);
+  EXPECT_FALSE(std::isfinite(notFinite.x[0]) && std::isfinite(notFinite.y[0]));
 }
 
 ImportedFlame importXform(const std::string& xform) {

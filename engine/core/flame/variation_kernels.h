@@ -249,7 +249,7 @@ void addJwildfireGlslVariations(std::vector<VariationInfo>& catalogue);
 // bubble_wf, bwraps2, invpolar, threeply, spligon, lazysensen, disc3, cpow3_wf (variations_jwildfire_wild.cpp).
 void addJwildfireWildVariations(std::vector<VariationInfo>& catalogue);
 // Rarer plugins that published flames use: JWildfire's sym_bg2, sym_ng11 and sym_ng15, flam3's original secant and
-// Apophysis' julian2dc (variations_plugins_rare.cpp).
+// the Apophysis plugins julian2dc and shape (variations_plugins_rare.cpp).
 void addPluginsRareVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels

@@ -131,6 +131,28 @@ VOXFLAME_VARIATION_TARGETS void julian2dc(const VariationInput& in, double* __re
   }
 }
 
+// cyberxaos' shape: a blur filling the superformula's curve, R(φ) = (|cos(m φ/4)/a|^n2 + |sin(m φ/4)/b|^n3)^(−1/n1),
+// along the point's direction: w (Ψ − holes) R(φ) (x, y)/r. Negative holes leave a hole of holes/(holes − 1) of
+// the curve's size; super_shape with rnd 1 is the same blur without a and b. Written from the superformula and the
+// plugin's description (its source was not at hand); renders of the published flames that use it match the pictures
+// their authors made with Apophysis. The defaults other than holes are ours.
+VOXFLAME_VARIATION_TARGETS void shape(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                      double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  const double quarterM = P[0] / 4.0, negInvN1 = -1.0 / P[1], n2 = P[2], n3 = P[3], a = P[4], b = P[5];
+  const double holes = P[6];
+  for (std::size_t i = 0; i < n; ++i) {
+    const double theta = quarterM * std::atan2(y[i], x[i]);
+    const double t1 = std::pow(std::abs(std::cos(theta) / a), n2);
+    const double t2 = std::pow(std::abs(std::sin(theta) / b), n3);
+    const double r = std::sqrt(x[i] * x[i] + y[i] * y[i]);
+    const double scale = w * (laneUniform(rnd[i]) - holes) * std::pow(t1 + t2, negInvN1) / (r + kEpsilon);
+    outX[i] += scale * x[i];
+    outY[i] += scale * y[i];
+    outZ[i] += w * z[i];
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& catalogue) {
@@ -172,6 +194,17 @@ void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& cat
        {"e", 0.0, -2.0, 2.0},
        {"f", 0.0, -2.0, 2.0}});
   catalogue.back().directColour = true;
+  add("shape",
+      "w (Ψ − holes) R(φ) (x, y)/r, z: a blur filling the superformula's curve R(φ) = (|cos(m φ/4)/a|^n2 + |sin(m "
+      "φ/4)/b|^n3)^(−1/n1), with a hole of holes/(holes − 1) of it where holes < 0 (cyberxaos' Apophysis plugin)",
+      k2D, kRandom, &shape,
+      {{"m", 6.0, 0.0, 20.0},
+       {"n1", 1.0, -5.0, 10.0},
+       {"n2", 1.0, -5.0, 10.0},
+       {"n3", 1.0, -5.0, 10.0},
+       {"a", 1.0, -2.0, 2.0},
+       {"b", 1.0, -2.0, 2.0},
+       {"holes", 1.0, -2.0, 2.0}});
 }
 
 }  // namespace voxflame::core

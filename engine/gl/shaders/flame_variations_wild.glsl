@@ -325,3 +325,14 @@ vec3 V_julian2dc(vec3 p, float w, int P, int A) {
   gColour = fmodc(abs(r * col + angle / kTwoPi * (1.0 - col)), 1.0);
   return vec3(r * cos(angle), r * sin(angle), w * p.z);
 }
+
+// shape (cyberxaos'): a blur filling the superformula's curve along the point's direction.
+vec3 V_shape(vec3 p, float w, int P, int A) {
+  float quarterM = P_(P, 0) / 4.0, negInvN1 = -1.0 / P_(P, 1), n2 = P_(P, 2), n3 = P_(P, 3);
+  float a = P_(P, 4), b = P_(P, 5), holes = P_(P, 6);
+  float theta = quarterM * atan2c(p.y, p.x);
+  float t1 = pow(abs(cos(theta) / a), n2), t2 = pow(abs(sin(theta) / b), n3);
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  float scale = w * (psi() - holes) * pow(t1 + t2, negInvN1) / (r + kEpsilon);
+  return vec3(scale * p.x, scale * p.y, w * p.z);
+}
