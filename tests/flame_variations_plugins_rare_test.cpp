@@ -1,9 +1,9 @@
-// JWildfire's symmetry groups sym_bg2, sym_ng11 and sym_ng15, flam3's original secant and the Apophysis plugins
-// julian2dc and shape (variations_plugins_rare.cpp), each at points whose expected values were worked out from
-// JWildfire's Java classes, flam3's old formula, julian2dc's C and (for shape) the superformula by a separate Python
-// script in double precision, independently of the code under test. Weight 0.8; the harness's sum starts at (0.125,
-// −0.25, 0.5) with colour index 0.375. Random rows replay the lane's seed: xorshift32 gives Ψ = 0.879466, 0.545326, …
-// from 0x2545F491 and Ψ = 0.316594, 0.875707, … from 0x9E3779B9.
+// JWildfire's symmetry groups sym_bg2, sym_ng11 and sym_ng15 and its glsl_circlesblue, flam3's original secant and
+// the Apophysis plugins julian2dc and shape (variations_plugins_rare.cpp), each at points whose expected values were
+// worked out from JWildfire's Java classes, flam3's old formula, julian2dc's C and (for shape) the superformula by a
+// separate Python script in double precision, independently of the code under test. Weight 0.8; the harness's sum
+// starts at (0.125, −0.25, 0.5) with colour index 0.375. Random rows replay the lane's seed: xorshift32 gives Ψ =
+// 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594, 0.875707, … from 0x9E3779B9.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -109,6 +109,14 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kLowSeed,
        {0.02179141292133405, -0.05084663014977945, 0.4}},
+      // glsl_circlesblue: w (i/width − ½, j/10⁶ − ½), pixel (⌊Ψ₁ width⌋, ⌊Ψ₂ 10⁶⌋), whatever the point.
+      {"glsl_circlesblue", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.3035728, 0.03625999999999996, 0.4}},
+      {"glsl_circlesblue",
+       {1000.0, 10000.0, 197.572, 0.3, 60.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.1472, 0.3005648, 0.4}},
   };
   return cases;
 }
@@ -140,6 +148,15 @@ const std::vector<ColourCase>& colourCases() {
        {0.3, -0.7, 0.5},
        kLowSeed,
        0.023145199444499998},
+      // glsl_circlesblue with Gradient 1: sin(r/(r + g + b)) of the bubbles' colour at the pixel; where no bubble
+      // covers it (0/0) the index is left.
+      {"glsl_circlesblue",
+       {1000.0, 10000.0, 197.572, 0.3, 60.0, 1.0},
+       {0.3, -0.7, 0.5},
+       kHighSeed,
+       0.11404146779597489},
+      {"glsl_circlesblue", {1000.0, 10000.0, 197.572, 0.3, 60.0, 1.0}, {0.3, -0.7, 0.5}, kLowSeed, 0.11643048558773295},
+      {"glsl_circlesblue", {1000000.0, 10000.0, 1.0, 0.04, 40.0, 1.0}, {0.3, -0.7, 0.5}, kHighSeed, kStartColour},
   };
   return cases;
 }
@@ -199,6 +216,46 @@ TEST(FlameVariationPluginsRare, OddPointsStayFiniteOrNaNWhole) {
   EXPECT_FALSE(std::isfinite(notFinite.x[0]) && std::isfinite(notFinite.y[0]));
 }
 
+// glsl_circlesblue's Gradient 0 paints the bubbles' colour at the pixel as JWildfire's dbl2int bytes (⌊256 c⌋ held
+// within 0 … 255), from the same transcription: (0.0121, 0.0381, 0.0623) → (3, 9, 15) at pixel (879466, 545325) with
+// the published flame's parameters; (0.2931, 1.0259, 1.2455) → (75, 255, 255) and (0.0438, 0.1585, 0.1728) → (11,
+// 40, 44) on a 1000-wide grid at time 197.572; no bubble at all at pixel (316593, 875706) at time 1: black. The index
+// is left.
+TEST(FlameVariationPluginsRare, CirclesblueGradientZeroPaintsTheBubblesColour) {
+  const VariationInfo& info = variationOrThrow("glsl_circlesblue");
+  EXPECT_TRUE(info.paintsRgb);
+  const struct {
+    std::vector<double> params;
+    std::uint32_t seed;
+    std::uint32_t painted;
+  } cases[] = {{{1000000.0, 10000.0, 1.0, 0.252, 100.0, 0.0}, kHighSeed, paintedRgb(3, 9, 15)},
+               {{1000000.0, 10000.0, 1.0, 0.252, 100.0, 0.0}, kLowSeed, paintedRgb(0, 0, 0)},
+               {{1000.0, 10000.0, 197.572, 0.3, 60.0, 0.0}, kHighSeed, paintedRgb(75, 255, 255)},
+               {{1000.0, 10000.0, 197.572, 0.3, 60.0, 0.0}, kLowSeed, paintedRgb(11, 40, 44)}};
+  for (const auto& c : cases) {
+    constexpr std::size_t kLanes = 37;
+    std::vector<double> xs(kLanes, 0.3), ys(kLanes, -0.7), zs(kLanes, 0.5), ox(kLanes), oy(kLanes), oz(kLanes),
+        colour(kLanes, 0.375);
+    std::vector<std::uint32_t> random(kLanes, c.seed), rgb(kLanes, 0u);
+    VariationInput in;
+    in.x = in.tx = xs.data();
+    in.y = in.ty = ys.data();
+    in.z = in.tz = zs.data();
+    in.random = random.data();
+    in.count = kLanes;
+    in.weight = 0.8;
+    in.params = c.params.data();
+    in.affine = kAffine;
+    in.colour = colour.data();
+    in.rgb = rgb.data();
+    info.apply(in, ox.data(), oy.data(), oz.data());
+    for (std::size_t lane = 0; lane < kLanes; ++lane) {
+      EXPECT_EQ(rgb[lane], c.painted) << "lane " << lane;
+      EXPECT_EQ(colour[lane], 0.375);
+    }
+  }
+}
+
 ImportedFlame importXform(const std::string& xform) {
   const std::string text = "<flames><flame name=\"t\" size=\"64 64\"><xform weight=\"1\" color=\"0\" " + xform +
                            "/><color index=\"0\" rgb=\"255 255 255\"/></flame></flames>";
@@ -207,6 +264,19 @@ ImportedFlame importXform(const std::string& xform) {
 
 // The files' own spellings: JWildfire writes each parameter after the variation's name (and an fx_priority that
 // does not change the map), Apophysis writes julian2dc's, flam3 wrote secant without parameters.
+// JWildfire writes glsl_circlesblue's "Density Pixels" with its space and its other parameters capitalised.
+TEST(FlameVariationPluginsRare, ImportsCirclesbluesParameters) {
+  const ImportedFlame flame =
+      importXform(R"(glsl_circlesblue="1.0" glsl_circlesblue_fx_priority="0" glsl_circlesblue_Density Pixels="1000" )"
+                  R"(glsl_circlesblue_Seed="10000" glsl_circlesblue_time="2.5" glsl_circlesblue_Radiusy="0.252" )"
+                  R"(glsl_circlesblue_Bubles="100" glsl_circlesblue_Gradient="1" coefs="1 0 0 1 0 0")");
+  ASSERT_TRUE(flame.leftOut.empty()) << flame.leftOut.front();
+  const auto& terms = flame.genome.xforms.at(0).variations;
+  ASSERT_EQ(terms.size(), 1u);
+  EXPECT_EQ(terms[0].name, "glsl_circlesblue");
+  EXPECT_EQ(terms[0].params, (std::vector<double>{1000.0, 10000.0, 2.5, 0.252, 100.0, 1.0}));
+}
+
 TEST(FlameVariationPluginsRare, ImportsTheFilesNames) {
   const ImportedFlame flame = importXform(
       R"(sym_ng15="1.0" sym_ng15_fx_priority="0" sym_ng15_radius="0.625" sym_ng15_stepx="1.6" sym_ng15_stepy="1.024" )"

@@ -1,11 +1,11 @@
-// Rarer plugins that published flame files use: JWildfire's symmetry-group variations sym_bg2, sym_ng11 and
-// sym_ng15 (Jesús Sosa's, after McGregor and Watt's "The Art of Graphics for the IBM PC": each point goes through
-// one of a fixed set of rigid maps picked at random, so the attractor holds every copy), flam3's original secant
-// (before flam3 2.7.10 replaced it by secant2; electric sheep of that time use it), and the Apophysis plugins
-// julian2dc (xyrus02's julian2 that also colours the point) and shape (cyberxaos' superformula blur). Each is a
-// kernel below and one row of the table at the end (see variations.h for the notation and variation_kernels.h for
-// what the files share). Random numbers come from the lane's own stream (laneUniform), where the originals draw
-// from their own generators.
+// Rarer plugins that published flame files use: JWildfire's symmetry-group variations sym_bg2, sym_ng11 and sym_ng15
+// (Jesús Sosa's, after McGregor and Watt's "The Art of Graphics for the IBM PC": each point goes through one of a
+// fixed set of rigid maps picked at random, so the attractor holds every copy) and its glsl_circlesblue (Sosa's port
+// of a shader of rising bubbles), flam3's original secant (before flam3 2.7.10 replaced it by secant2; electric sheep
+// of that time use it), and the Apophysis plugins julian2dc (xyrus02's julian2 that also colours the point) and shape
+// (cyberxaos' superformula blur). Each is a kernel below and one row of the table at the end (see variations.h for the
+// notation and variation_kernels.h for what the files share). Random numbers come from the lane's own stream
+// (laneUniform), where the originals draw from their own generators.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -153,6 +153,92 @@ VOXFLAME_VARIATION_TARGETS void shape(const VariationInput& in, double* __restri
   }
 }
 
+// ---- JWildfire's glsl_circlesblue ---------------------------------------------------------------------
+// Jesús Sosa's port of a shader of rising bubbles: pixel (i, j) of a resolution × 10⁶ grid drawn at random, the
+// point w (i/resolution − ½, j/10⁶ − ½) (JWildfire sets the grid's height from its width once, when the variation
+// is made, as glsl_apollonian's), and the bubbles' colour at the pixel's centre uv = 2 (i + ½, j + ½)/size − 1.
+// Bubble k (of Bubles) at time t: pha = tan(6k + 1)/2 + ½, siz = (cos(2.4k + 5)/2 + ½)⁴, pox = cos(3.55k + 4.1),
+// radius ρ = Radiusy + 0.12 sin k + 0.08, centre (pox + sin(t/15 + pha + siz), −1 − ρ + (2 + 2ρ)((pha + 0.02 t (0.2
+// + 0.8 siz)) mod 1)), colour mix((0.1, 0.2, 0.8), (0.2, 0.8, 0.6), ½ + ½ sin(k sin(0.03 t pox) + 1.9)), added
+// times (1 − smoothstep(ρ (0.65 + 0.2 sin(pox t)), ρ, distance)) (1 − cos(pox t)); the sum times 0.3. Gradient 0
+// paints the point that RGB colour (JWildfire's dbl2int bytes), Gradient 1 makes the colour index sin(r/(r + g + b))
+// (left where that is NaN). Seed only draws JWildfire's random time, which the file's time overrides; so it is
+// not used here.
+constexpr int kCirclesBlueMaxBubbles = 100;
+
+struct CirclesBlueBubble {
+  double x, y, inner, radius, r, g, b, fade;
+};
+
+// The bubbles at time t with radius parameter `radius` (the part that does not depend on the pixel).
+void circlesBlueBubbles(double time, double radius, int count, CirclesBlueBubble* out) {
+  for (int k = 0; k < count; ++k) {
+    const double kd = k;
+    const double pha = std::tan(kd * 6.0 + 1.0) * 0.5 + 0.5;
+    const double siz = std::pow(std::cos(kd * 2.4 + 5.0) * 0.5 + 0.5, 4.0);
+    const double pox = std::cos(kd * 3.55 + 4.1);
+    const double rad = radius + std::sin(kd) * 0.12 + 0.08;
+    const double rise = pha + 0.1 * (time / 5.0) * (0.2 + 0.8 * siz);
+    const double mix = 0.5 + 0.5 * std::sin(kd * std::sin(time * pox * 0.03) + 1.9);
+    CirclesBlueBubble& b = out[k];
+    b.x = pox + std::sin(time / 15.0 + pha + siz);
+    b.y = -1.0 - rad + (2.0 + 2.0 * rad) * (rise - std::floor(rise));
+    b.inner = rad * (0.65 + 0.20 * std::sin(pox * time));
+    b.radius = rad;
+    b.r = 0.1 * (1.0 - mix) + 0.2 * mix;
+    b.g = 0.2 * (1.0 - mix) + 0.8 * mix;
+    b.b = 0.8 * (1.0 - mix) + 0.6 * mix;
+    b.fade = 1.0 - std::cos(pox * time);
+  }
+}
+
+VOXFLAME_VARIATION_TARGETS void glslCirclesblue(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                                double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  constexpr double kHeight = 1000000.0;
+  // JWildfire's (int) Tools.limitValue(v, low, high): clamped, then truncated; NaN passes the clamp and is 0.
+  const auto limitedInt = [](double v, double low, double high) {
+    return std::isnan(v) ? 0.0 : std::trunc(std::clamp(v, low, high));
+  };
+  const auto limited = [](double v, double low, double high) { return std::isnan(v) ? v : std::clamp(v, low, high); };
+  const double width = std::max(limitedInt(P[0], 100.0, 10000000.0), 100.0);
+  const double time = limited(P[2], 1.0, 1000.0), radius = limited(P[3], 0.0, 1.0);
+  const int count = static_cast<int>(limitedInt(P[4], 1.0, kCirclesBlueMaxBubbles));
+  const bool index = limitedInt(P[5], 0.0, 1.0) == 1.0;
+  std::uint32_t* __restrict rgb = index ? nullptr : in.rgb;
+  CirclesBlueBubble bubbles[kCirclesBlueMaxBubbles];
+  if (index || rgb) circlesBlueBubbles(time, radius, count, bubbles);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double pi = std::trunc(laneUniform(rnd[i]) * width), pj = std::trunc(laneUniform(rnd[i]) * kHeight);
+    outX[i] += w * (pi / width - 0.5);
+    outY[i] += w * (pj / kHeight - 0.5);
+    outZ[i] += w * z[i];
+    if (!index && !rgb) continue;
+    const double u = 2.0 * (pi + 0.5) / width - 1.0, v = 2.0 * (pj + 0.5) / kHeight - 1.0;
+    double red = 0.0, green = 0.0, blue = 0.0;
+    for (int k = 0; k < count; ++k) {
+      const CirclesBlueBubble& b = bubbles[k];
+      const double dx = u - b.x, dy = v - b.y;
+      const double distance = std::sqrt(dx * dx + dy * dy);
+      const double t = std::min(std::max((distance - b.inner) / (b.radius - b.inner), 0.0), 1.0);
+      const double cover = 1.0 - t * t * (3.0 - 2.0 * t);
+      red += b.r * cover * b.fade;
+      green += b.g * cover * b.fade;
+      blue += b.b * cover * b.fade;
+    }
+    red *= 0.3;
+    green *= 0.3;
+    blue *= 0.3;
+    if (rgb) {
+      rgb[i] = paintedRgb(static_cast<std::uint32_t>(rgbByte(red)), static_cast<std::uint32_t>(rgbByte(green)),
+                          static_cast<std::uint32_t>(rgbByte(blue)));
+      continue;
+    }
+    const double c = std::sin(red / (red + green + blue));
+    if (c == c) colour[i] = c;
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& catalogue) {
@@ -205,6 +291,20 @@ void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& cat
        {"a", 1.0, -2.0, 2.0},
        {"b", 1.0, -2.0, 2.0},
        {"holes", 1.0, -2.0, 2.0}});
+  add("glsl_circlesblue",
+      "w (i/Density Pixels − ½, j/10⁶ − ½), z: pixel i = ⌊Ψ₁ Density Pixels⌋, j = ⌊Ψ₂ 10⁶⌋; Gradient 0 paints the "
+      "point the colour of Sosa's rising bubbles at the pixel (Bubles of them, radius Radiusy + 0.12 sin k + 0.08, "
+      "placed and coloured by k and time), Gradient 1 makes the colour index sin(r/(r + g + b)); Seed is JWildfire's "
+      "random time, which time overrides (JWildfire's)",
+      k2D, kRandom, &glslCirclesblue,
+      {count("Density Pixels", 1000000.0, 100.0, 1000000.0),
+       count("Seed", 10000.0, 0.0, 10000.0),
+       {"time", 1.0, 1.0, 1000.0},
+       {"Radiusy", 0.04, 0.0, 1.0},
+       count("Bubles", 40.0, 1.0, 100.0),
+       count("Gradient", 0.0, 0.0, 1.0)});
+  catalogue.back().directColour = true;
+  catalogue.back().paintsRgb = true;
 }
 
 }  // namespace voxflame::core

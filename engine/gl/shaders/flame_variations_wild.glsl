@@ -336,3 +336,47 @@ vec3 V_shape(vec3 p, float w, int P, int A) {
   float scale = w * (psi() - holes) * pow(t1 + t2, negInvN1) / (r + kEpsilon);
   return vec3(scale * p.x, scale * p.y, w * p.z);
 }
+
+// glsl_circlesblue: the bubbles in double (their places and colours turn on sines of k and of time up to 1000,
+// which float's trig does not hold), as the CPU's.
+vec3 V_glsl_circlesblue(vec3 p, float w, int P, int A) {
+  const double kHeight = 1000000.0lf;
+  float pw = P_(P, 0), pt = P_(P, 2), pr = P_(P, 3), pb = P_(P, 4), pg = P_(P, 5);
+  double width = max(isnan(pw) ? 0.0lf : trunc(clamp(double(pw), 100.0lf, 10000000.0lf)), 100.0lf);
+  double time = isnan(pt) ? double(pt) : clamp(double(pt), 1.0lf, 1000.0lf);
+  double radius = isnan(pr) ? double(pr) : clamp(double(pr), 0.0lf, 1.0lf);
+  int count = isnan(pb) ? 0 : int(trunc(clamp(pb, 1.0, 100.0)));
+  bool index = !isnan(pg) && trunc(clamp(pg, 0.0, 1.0)) == 1.0;
+  double pi = trunc(double(psi()) * width), pj = trunc(double(psi()) * kHeight);
+  vec3 o = vec3(w * float(pi / width - 0.5lf), w * float(pj / kHeight - 0.5lf), w * p.z);
+  precise double u = 2.0lf * (pi + 0.5lf) / width - 1.0lf, v = 2.0lf * (pj + 0.5lf) / kHeight - 1.0lf;
+  precise dvec3 sum = dvec3(0.0lf);
+  for (int k = 0; k < count; ++k) {
+    double kd = double(k);
+    dvec2 sc = dsinCos(kd * 6.0lf + 1.0lf);
+    precise double pha = sc.x / sc.y * 0.5lf + 0.5lf;
+    precise double base = dcos(kd * 2.4lf + 5.0lf) * 0.5lf + 0.5lf;
+    precise double siz = base * base * (base * base);
+    double pox = dcos(kd * 3.55lf + 4.1lf);
+    precise double rad = radius + dsin(kd) * 0.12lf + 0.08lf;
+    precise double rise = pha + 0.1lf * (time / 5.0lf) * (0.2lf + 0.8lf * siz);
+    precise double mixA = 0.5lf + 0.5lf * dsin(kd * dsin(time * pox * 0.03lf) + 1.9lf);
+    precise double bx = pox + dsin(time / 15.0lf + pha + siz);
+    precise double by = -1.0lf - rad + (2.0lf + 2.0lf * rad) * (rise - floor(rise));
+    precise double inner = rad * (0.65lf + 0.20lf * dsin(pox * time));
+    precise double fade = 1.0lf - dcos(pox * time);
+    precise dvec3 col = dvec3(0.1lf, 0.2lf, 0.8lf) * (1.0lf - mixA) + dvec3(0.2lf, 0.8lf, 0.6lf) * mixA;
+    precise double dx = u - bx, dy = v - by;
+    precise double t = min(max((sqrt(dx * dx + dy * dy) - inner) / (rad - inner), 0.0lf), 1.0lf);
+    precise double cover = 1.0lf - t * t * (3.0lf - 2.0lf * t);
+    sum += col * cover * fade;
+  }
+  sum *= 0.3lf;
+  if (index) {
+    float c = sin(float(sum.x / (sum.x + sum.y + sum.z)));
+    if (!isnan(c)) gColour = c;
+  } else {
+    gRgb = kRgbPainted | uint(rgb_byte(sum.x)) | uint(rgb_byte(sum.y)) << 8 | uint(rgb_byte(sum.z)) << 16;
+  }
+  return o;
+}
