@@ -1,9 +1,9 @@
-// JWildfire's symmetry groups sym_bg2, sym_ng11 and sym_ng15 and its glsl_circlesblue, flam3's original secant and
-// the Apophysis plugins julian2dc and shape (variations_plugins_rare.cpp), each at points whose expected values were
-// worked out from JWildfire's Java classes, flam3's old formula, julian2dc's C and (for shape) the superformula by a
-// separate Python script in double precision, independently of the code under test. Weight 0.8; the harness's sum
-// starts at (0.125, −0.25, 0.5) with colour index 0.375. Random rows replay the lane's seed: xorshift32 gives Ψ =
-// 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594, 0.875707, … from 0x9E3779B9.
+// JWildfire's symmetry groups sym_bg2, sym_ng11 and sym_ng15 and its glsl_circlesblue and glsl_grid3D, flam3's original
+// secant and the Apophysis plugins julian2dc and shape (variations_plugins_rare.cpp), each at points whose expected
+// values were worked out from JWildfire's Java classes, flam3's old formula, julian2dc's C and (for shape) the
+// superformula by a separate Python script in double precision, independently of the code under test. Weight 0.8; the
+// harness's sum starts at (0.125, −0.25, 0.5) with colour index 0.375. Random rows replay the lane's seed: xorshift32
+// gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594, 0.875707, … from 0x9E3779B9.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -117,6 +117,8 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kLowSeed,
        {-0.1472, 0.3005648, 0.4}},
+      {"glsl_grid3D", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.14672559999999998, 0.3005648, 0.4}},
+      {"glsl_grid3D", {1000.0, 10000.0, 37.5}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.3032, 0.03625999999999996, 0.4}},
   };
   return cases;
 }
@@ -216,44 +218,55 @@ TEST(FlameVariationPluginsRare, OddPointsStayFiniteOrNaNWhole) {
   EXPECT_FALSE(std::isfinite(notFinite.x[0]) && std::isfinite(notFinite.y[0]));
 }
 
+// A painting variation over 37 lanes: each lane paints `painted` and leaves the colour index.
+void expectPaints(const std::string& name, const std::vector<double>& params, std::uint32_t seed,
+                  std::uint32_t painted) {
+  const VariationInfo& info = variationOrThrow(name);
+  EXPECT_TRUE(info.paintsRgb);
+  constexpr std::size_t kLanes = 37;
+  std::vector<double> xs(kLanes, 0.3), ys(kLanes, -0.7), zs(kLanes, 0.5), ox(kLanes), oy(kLanes), oz(kLanes),
+      colour(kLanes, 0.375);
+  std::vector<std::uint32_t> random(kLanes, seed), rgb(kLanes, 0u);
+  VariationInput in;
+  in.x = in.tx = xs.data();
+  in.y = in.ty = ys.data();
+  in.z = in.tz = zs.data();
+  in.random = random.data();
+  in.count = kLanes;
+  in.weight = 0.8;
+  in.params = params.data();
+  in.affine = kAffine;
+  in.colour = colour.data();
+  in.rgb = rgb.data();
+  info.apply(in, ox.data(), oy.data(), oz.data());
+  for (std::size_t lane = 0; lane < kLanes; ++lane) {
+    EXPECT_EQ(rgb[lane], painted) << name << " lane " << lane;
+    EXPECT_EQ(colour[lane], 0.375);
+  }
+}
+
 // glsl_circlesblue's Gradient 0 paints the bubbles' colour at the pixel as JWildfire's dbl2int bytes (⌊256 c⌋ held
 // within 0 … 255), from the same transcription: (0.0121, 0.0381, 0.0623) → (3, 9, 15) at pixel (879466, 545325) with
 // the published flame's parameters; (0.2931, 1.0259, 1.2455) → (75, 255, 255) and (0.0438, 0.1585, 0.1728) → (11,
-// 40, 44) on a 1000-wide grid at time 197.572; no bubble at all at pixel (316593, 875706) at time 1: black. The index
-// is left.
+// 40, 44) on a 1000-wide grid at time 197.572; no bubble at all at pixel (316593, 875706) at time 1: black.
 TEST(FlameVariationPluginsRare, CirclesblueGradientZeroPaintsTheBubblesColour) {
-  const VariationInfo& info = variationOrThrow("glsl_circlesblue");
-  EXPECT_TRUE(info.paintsRgb);
-  const struct {
-    std::vector<double> params;
-    std::uint32_t seed;
-    std::uint32_t painted;
-  } cases[] = {{{1000000.0, 10000.0, 1.0, 0.252, 100.0, 0.0}, kHighSeed, paintedRgb(3, 9, 15)},
-               {{1000000.0, 10000.0, 1.0, 0.252, 100.0, 0.0}, kLowSeed, paintedRgb(0, 0, 0)},
-               {{1000.0, 10000.0, 197.572, 0.3, 60.0, 0.0}, kHighSeed, paintedRgb(75, 255, 255)},
-               {{1000.0, 10000.0, 197.572, 0.3, 60.0, 0.0}, kLowSeed, paintedRgb(11, 40, 44)}};
-  for (const auto& c : cases) {
-    constexpr std::size_t kLanes = 37;
-    std::vector<double> xs(kLanes, 0.3), ys(kLanes, -0.7), zs(kLanes, 0.5), ox(kLanes), oy(kLanes), oz(kLanes),
-        colour(kLanes, 0.375);
-    std::vector<std::uint32_t> random(kLanes, c.seed), rgb(kLanes, 0u);
-    VariationInput in;
-    in.x = in.tx = xs.data();
-    in.y = in.ty = ys.data();
-    in.z = in.tz = zs.data();
-    in.random = random.data();
-    in.count = kLanes;
-    in.weight = 0.8;
-    in.params = c.params.data();
-    in.affine = kAffine;
-    in.colour = colour.data();
-    in.rgb = rgb.data();
-    info.apply(in, ox.data(), oy.data(), oz.data());
-    for (std::size_t lane = 0; lane < kLanes; ++lane) {
-      EXPECT_EQ(rgb[lane], c.painted) << "lane " << lane;
-      EXPECT_EQ(colour[lane], 0.375);
-    }
-  }
+  expectPaints("glsl_circlesblue", {1000000.0, 10000.0, 1.0, 0.252, 100.0, 0.0}, kHighSeed, paintedRgb(3, 9, 15));
+  expectPaints("glsl_circlesblue", {1000000.0, 10000.0, 1.0, 0.252, 100.0, 0.0}, kLowSeed, paintedRgb(0, 0, 0));
+  expectPaints("glsl_circlesblue", {1000.0, 10000.0, 197.572, 0.3, 60.0, 0.0}, kHighSeed, paintedRgb(75, 255, 255));
+  expectPaints("glsl_circlesblue", {1000.0, 10000.0, 197.572, 0.3, 60.0, 0.0}, kLowSeed, paintedRgb(11, 40, 44));
+}
+
+// glsl_grid3D paints the grey of its march through the pixel, from the same transcription: 0.1708 → 43 at pixel
+// (879466, 545325) and 0.3842 → 98 at (316593, 875706) at the default time 200; 0.2236 → 57 and 0.2182 → 55 at the
+// published flame's time 410.032; 0.3220 → 82 and 0.2042 → 52 on a 1000-wide grid at time 37.5.
+TEST(FlameVariationPluginsRare, Grid3dPaintsItsMarchsGrey) {
+  const std::vector<double> defaults = variationOrThrow("glsl_grid3D").defaultParams();
+  expectPaints("glsl_grid3D", defaults, kHighSeed, paintedRgb(43, 43, 43));
+  expectPaints("glsl_grid3D", defaults, kLowSeed, paintedRgb(98, 98, 98));
+  expectPaints("glsl_grid3D", {1000000.0, 10000.0, 410.032}, kHighSeed, paintedRgb(57, 57, 57));
+  expectPaints("glsl_grid3D", {1000000.0, 10000.0, 410.032}, kLowSeed, paintedRgb(55, 55, 55));
+  expectPaints("glsl_grid3D", {1000.0, 10000.0, 37.5}, kHighSeed, paintedRgb(82, 82, 82));
+  expectPaints("glsl_grid3D", {1000.0, 10000.0, 37.5}, kLowSeed, paintedRgb(52, 52, 52));
 }
 
 ImportedFlame importXform(const std::string& xform) {

@@ -1,11 +1,11 @@
 // Rarer plugins that published flame files use: JWildfire's symmetry-group variations sym_bg2, sym_ng11 and sym_ng15
-// (Jesús Sosa's, after McGregor and Watt's "The Art of Graphics for the IBM PC": each point goes through one of a
-// fixed set of rigid maps picked at random, so the attractor holds every copy) and its glsl_circlesblue (Sosa's port
-// of a shader of rising bubbles), flam3's original secant (before flam3 2.7.10 replaced it by secant2; electric sheep
-// of that time use it), and the Apophysis plugins julian2dc (xyrus02's julian2 that also colours the point) and shape
-// (cyberxaos' superformula blur). Each is a kernel below and one row of the table at the end (see variations.h for the
-// notation and variation_kernels.h for what the files share). Random numbers come from the lane's own stream
-// (laneUniform), where the originals draw from their own generators.
+// (Jesús Sosa's, after McGregor and Watt's "The Art of Graphics for the IBM PC": each point goes through one of a fixed
+// set of rigid maps picked at random, so the attractor holds every copy) and its glsl_circlesblue and glsl_grid3D
+// (Sosa's ports of shaders: rising bubbles, a ray-marched grid), flam3's original secant (before flam3 2.7.10 replaced
+// it by secant2; electric sheep of that time use it), and the Apophysis plugins julian2dc (xyrus02's julian2 that also
+// colours the point) and shape (cyberxaos' superformula blur). Each is a kernel below and one row of the table at the
+// end (see variations.h for the notation and variation_kernels.h for what the files share). Random numbers come from
+// the lane's own stream (laneUniform), where the originals draw from their own generators.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -239,6 +239,75 @@ VOXFLAME_VARIATION_TARGETS void glslCirclesblue(const VariationInput& in, double
   }
 }
 
+// ---- JWildfire's glsl_grid3D ----------------------------------------------------------------------------
+// Sosa's port of kabuto's ray-marched grid: pixel (i, j) of a resolution × 10⁶ grid drawn at random, the point w
+// (i/resolution − ½, j/10⁶ − ½), painted the grey level of the march through the pixel's centre (JWildfire's
+// GLSLFunc leaves its Gradient at 0 and gives glsl_grid3D no parameter for it, so it always paints). The ray:
+// direction (u − ½, v − ½, 1) normalised, turned about x and then y by a = 0.021 t (as the Java writes vec3 ×
+// mat3), from (0, 0.1 t, 0); 30 steps each move it by the least component of the field F(p) and add (30 − step)/(F(p)
+// + 0.1) to the sum S, F(p) = √(q² + q.yzx²)/8 − 0.05 with q the point scaled by 0.1 and three times rotated (x, y,
+// z) → (y, z, x) and folded to 2|fract(q) − ½|; the grey level is the sum of the channels of 1 − 1/(1 + 10⁻⁴ S).
+// Seed only draws JWildfire's random time, which the file's time overrides; so it is not used here.
+double grid3dGrey(double u, double v, double time) {
+  constexpr int kSteps = 30;
+  double dx = u - 0.5, dy = v - 0.5, dz = 1.0;
+  const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+  dx /= length;
+  dy /= length;
+  dz /= length;
+  const double a = time * 0.021, ca = std::cos(a), sa = std::sin(a);
+  const double y1 = dy * ca - dz * sa, z1 = dy * sa + dz * ca;  // about x
+  const double x2 = dx * ca - z1 * sa, z2 = dx * sa + z1 * ca;  // about y
+  dx = x2;
+  dy = y1;
+  dz = z2;
+  double px = 0.0, py = time * 0.1, pz = 0.0;
+  double sx = 0.0, sy = 0.0, sz = 0.0;
+  for (int step = 0; step < kSteps; ++step) {
+    double qx = px * 0.1, qy = py * 0.1, qz = pz * 0.1, scale = 0.1;
+    for (int k = 0; k < 3; ++k) {
+      const double rx = qy, ry = qz, rz = qx;
+      qx = std::abs(rx - std::floor(rx) - 0.5) * 2.0;
+      qy = std::abs(ry - std::floor(ry) - 0.5) * 2.0;
+      qz = std::abs(rz - std::floor(rz) - 0.5) * 2.0;
+      scale *= 2.0;
+    }
+    qx *= qx;
+    qy *= qy;
+    qz *= qz;
+    const double fx = std::sqrt(qx + qy) / scale - 0.05, fy = std::sqrt(qy + qz) / scale - 0.05;
+    const double fz = std::sqrt(qz + qx) / scale - 0.05;
+    const double f = std::min(std::min(fx, fy), fz);
+    px += dx * f;
+    py += dy * f;
+    pz += dz * f;
+    const double weight = static_cast<double>(kSteps - step);
+    sx += weight / (fx + 0.1);
+    sy += weight / (fy + 0.1);
+    sz += weight / (fz + 0.1);
+  }
+  const double k = 0.09 / static_cast<double>(kSteps * kSteps);
+  return (1.0 - 1.0 / (1.0 + sx * k)) + (1.0 - 1.0 / (1.0 + sy * k)) + (1.0 - 1.0 / (1.0 + sz * k));
+}
+
+VOXFLAME_VARIATION_TARGETS void glslGrid3d(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                           double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  constexpr double kHeight = 1000000.0;
+  const double width = std::isnan(P[0]) ? 100.0 : std::trunc(std::clamp(P[0], 100.0, 10000000.0));
+  const double time = std::isnan(P[2]) ? P[2] : std::clamp(P[2], 1.0, 1000.0);
+  std::uint32_t* __restrict rgb = in.rgb;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double pi = std::trunc(laneUniform(rnd[i]) * width), pj = std::trunc(laneUniform(rnd[i]) * kHeight);
+    outX[i] += w * (pi / width - 0.5);
+    outY[i] += w * (pj / kHeight - 0.5);
+    outZ[i] += w * z[i];
+    if (!rgb) continue;
+    const auto grey = static_cast<std::uint32_t>(rgbByte(grid3dGrey((pi + 0.5) / width, (pj + 0.5) / kHeight, time)));
+    rgb[i] = paintedRgb(grey, grey, grey);
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& catalogue) {
@@ -304,6 +373,15 @@ void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& cat
        count("Bubles", 40.0, 1.0, 100.0),
        count("Gradient", 0.0, 0.0, 1.0)});
   catalogue.back().directColour = true;
+  catalogue.back().paintsRgb = true;
+  add("glsl_grid3D",
+      "w (i/Density Pixels − ½, j/10⁶ − ½), z: pixel i = ⌊Ψ₁ Density Pixels⌋, j = ⌊Ψ₂ 10⁶⌋, painted the grey of "
+      "kabuto's ray-marched grid through it (30 steps from (0, 0.1 time, 0), turned by 0.021 time); Seed is "
+      "JWildfire's random time, which time overrides (JWildfire's)",
+      k2D, kRandom, &glslGrid3d,
+      {count("Density Pixels", 1000000.0, 100.0, 1000000.0),
+       count("Seed", 10000.0, 0.0, 10000.0),
+       {"time", 200.0, 1.0, 1000.0}});
   catalogue.back().paintsRgb = true;
 }
 

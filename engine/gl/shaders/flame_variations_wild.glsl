@@ -380,3 +380,36 @@ vec3 V_glsl_circlesblue(vec3 p, float w, int P, int A) {
   }
   return o;
 }
+
+// glsl_grid3D: kabuto's ray-marched grid through the pixel, in double (30 steps of a march that folds the ray's
+// point by fract three times a step), as the CPU's; it always paints.
+vec3 V_glsl_grid3D(vec3 p, float w, int P, int A) {
+  const double kHeight = 1000000.0lf;
+  float pw = P_(P, 0), pt = P_(P, 2);
+  double width = isnan(pw) ? 100.0lf : trunc(clamp(double(pw), 100.0lf, 10000000.0lf));
+  double time = isnan(pt) ? double(pt) : clamp(double(pt), 1.0lf, 1000.0lf);
+  double pi = trunc(double(psi()) * width), pj = trunc(double(psi()) * kHeight);
+  vec3 o = vec3(w * float(pi / width - 0.5lf), w * float(pj / kHeight - 0.5lf), w * p.z);
+  precise dvec3 d = dvec3((pi + 0.5lf) / width - 0.5lf, (pj + 0.5lf) / kHeight - 0.5lf, 1.0lf);
+  d /= sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  dvec2 sc = dsinCos(time * 0.021lf);
+  precise double y1 = d.y * sc.y - d.z * sc.x, z1 = d.y * sc.x + d.z * sc.y;
+  precise double x2 = d.x * sc.y - z1 * sc.x, z2 = d.x * sc.x + z1 * sc.y;
+  d = dvec3(x2, y1, z2);
+  precise dvec3 pos = dvec3(0.0lf, time * 0.1lf, 0.0lf), sum = dvec3(0.0lf);
+  for (int step = 0; step < 30; ++step) {
+    precise dvec3 q = pos * 0.1lf;
+    for (int k = 0; k < 3; ++k) {
+      q = q.yzx;
+      q = abs(q - floor(q) - 0.5lf) * 2.0lf;
+    }
+    q *= q;
+    precise dvec3 f = sqrt(q + q.yzx) / 0.8lf - 0.05lf;
+    pos += d * min(min(f.x, f.y), f.z);
+    sum += double(30 - step) / (f + 0.1lf);
+  }
+  precise dvec3 c = 1.0lf - 1.0lf / (1.0lf + sum * (0.09lf / 900.0lf));
+  uint grey = uint(rgb_byte(c.x + c.y + c.z));
+  gRgb = kRgbPainted | grey | grey << 8 | grey << 16;
+  return o;
+}
