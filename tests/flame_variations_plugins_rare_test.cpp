@@ -1,9 +1,9 @@
-// JWildfire's symmetry groups sym_bg2, sym_ng11 and sym_ng15 and its glsl_circlesblue and glsl_grid3D, flam3's original
-// secant and the Apophysis plugins julian2dc and shape (variations_plugins_rare.cpp), each at points whose expected
-// values were worked out from JWildfire's Java classes, flam3's old formula, julian2dc's C and (for shape) the
-// superformula by a separate Python script in double precision, independently of the code under test. Weight 0.8; the
-// harness's sum starts at (0.125, −0.25, 0.5) with colour index 0.375. Random rows replay the lane's seed: xorshift32
-// gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594, 0.875707, … from 0x9E3779B9.
+// JWildfire's symmetry groups sym_bg2, sym_ng11 and sym_ng15 and its glsl_circlesblue, glsl_grid3D and glsl_mandala,
+// flam3's original secant and the Apophysis plugins julian2dc and shape (variations_plugins_rare.cpp), each at points
+// whose expected values were worked out from JWildfire's Java classes, flam3's old formula, julian2dc's C and (for
+// shape) the superformula by a separate Python script in double precision, independently of the code under test. Weight
+// 0.8; the harness's sum starts at (0.125, −0.25, 0.5) with colour index 0.375. Random rows replay the lane's seed:
+// xorshift32 gives Ψ = 0.879466, 0.545326, … from 0x2545F491 and Ψ = 0.316594, 0.875707, … from 0x9E3779B9.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -119,6 +119,13 @@ const std::vector<PointCase>& pointCases() {
        {-0.1472, 0.3005648, 0.4}},
       {"glsl_grid3D", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.14672559999999998, 0.3005648, 0.4}},
       {"glsl_grid3D", {1000.0, 10000.0, 37.5}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.3032, 0.03625999999999996, 0.4}},
+      {"glsl_mandala", {}, {0.3, -0.7, 0.5}, 0.8, kHighSeed, {0.3035728, 0.03625999999999996, 0.4}},
+      {"glsl_mandala",
+       {1000.0, 0.3, 0.2, 3.0, 5.0, 0.0, 20.0, 1.0, 0.0, 0.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kLowSeed,
+       {-0.1472, 0.3005648, 0.4}},
   };
   return cases;
 }
@@ -159,6 +166,17 @@ const std::vector<ColourCase>& colourCases() {
        0.11404146779597489},
       {"glsl_circlesblue", {1000.0, 10000.0, 197.572, 0.3, 60.0, 1.0}, {0.3, -0.7, 0.5}, kLowSeed, 0.11643048558773295},
       {"glsl_circlesblue", {1000000.0, 10000.0, 1.0, 0.04, 40.0, 1.0}, {0.3, -0.7, 0.5}, kHighSeed, kStartColour},
+      // glsl_mandala with Gradient 1: r·g of the kaleidoscope's colour (unclamped, as JWildfire leaves it).
+      {"glsl_mandala",
+       {1000.0, 0.3, 0.2, 3.0, 5.0, 0.0, 20.0, 1.0, 0.0, 0.0, 1.0},
+       {0.3, -0.7, 0.5},
+       kHighSeed,
+       0.1292880450066749},
+      {"glsl_mandala",
+       {1000.0, 0.3, 0.2, 3.0, 5.0, 0.0, 20.0, 1.0, 0.0, 0.0, 1.0},
+       {0.3, -0.7, 0.5},
+       kLowSeed,
+       -0.07310722756676542},
   };
   return cases;
 }
@@ -267,6 +285,23 @@ TEST(FlameVariationPluginsRare, Grid3dPaintsItsMarchsGrey) {
   expectPaints("glsl_grid3D", {1000000.0, 10000.0, 410.032}, kLowSeed, paintedRgb(55, 55, 55));
   expectPaints("glsl_grid3D", {1000.0, 10000.0, 37.5}, kHighSeed, paintedRgb(82, 82, 82));
   expectPaints("glsl_grid3D", {1000.0, 10000.0, 37.5}, kLowSeed, paintedRgb(52, 52, 52));
+}
+
+// glsl_mandala's Gradient 0 paints the kaleidoscope's colour, from the same transcription (JWildfire's G.atan2
+// included): (0.1349, 0.5296, 0.5431) → (34, 135, 139) and (0.2933, 0.2214, 0.5799) → (75, 56, 148) with the
+// defaults; (0.3835, 0.3997, 0.6349) → (98, 102, 162) and (0.6014, 0.7475, 0.8046) → (153, 191, 205) with the
+// published flame's parameters; on a 1000-wide grid with five sides, no multiply fold, 21 folds and iR inverted
+// (0.7949, 0.1626, 0.8717) → (203, 41, 223) and (−0.1221, 0.5985, 0.1768) → (0, 153, 45).
+TEST(FlameVariationPluginsRare, MandalaGradientZeroPaintsTheKaleidoscopesColour) {
+  const std::vector<double> defaults = variationOrThrow("glsl_mandala").defaultParams();
+  const std::vector<double> file = {1000000.0, 0.877, -0.241245675, 1.56, 6.0, 1.5, 64.0, 0.0, 0.0, 1.0, 0.0};
+  const std::vector<double> other = {1000.0, 0.3, 0.2, 3.0, 5.0, 0.0, 20.0, 1.0, 0.0, 0.0, 0.0};
+  expectPaints("glsl_mandala", defaults, kHighSeed, paintedRgb(34, 135, 139));
+  expectPaints("glsl_mandala", defaults, kLowSeed, paintedRgb(75, 56, 148));
+  expectPaints("glsl_mandala", file, kHighSeed, paintedRgb(98, 102, 162));
+  expectPaints("glsl_mandala", file, kLowSeed, paintedRgb(153, 191, 205));
+  expectPaints("glsl_mandala", other, kHighSeed, paintedRgb(203, 41, 223));
+  expectPaints("glsl_mandala", other, kLowSeed, paintedRgb(0, 153, 45));
 }
 
 ImportedFlame importXform(const std::string& xform) {

@@ -1,11 +1,11 @@
 // Rarer plugins that published flame files use: JWildfire's symmetry-group variations sym_bg2, sym_ng11 and sym_ng15
 // (Jesús Sosa's, after McGregor and Watt's "The Art of Graphics for the IBM PC": each point goes through one of a fixed
-// set of rigid maps picked at random, so the attractor holds every copy) and its glsl_circlesblue and glsl_grid3D
-// (Sosa's ports of shaders: rising bubbles, a ray-marched grid), flam3's original secant (before flam3 2.7.10 replaced
-// it by secant2; electric sheep of that time use it), and the Apophysis plugins julian2dc (xyrus02's julian2 that also
-// colours the point) and shape (cyberxaos' superformula blur). Each is a kernel below and one row of the table at the
-// end (see variations.h for the notation and variation_kernels.h for what the files share). Random numbers come from
-// the lane's own stream (laneUniform), where the originals draw from their own generators.
+// set of rigid maps picked at random, so the attractor holds every copy) and its glsl_circlesblue, glsl_grid3D and
+// glsl_mandala (Sosa's ports of shaders: rising bubbles, a ray-marched grid, a kaleidoscope), flam3's original secant
+// (before flam3 2.7.10 replaced it by secant2; electric sheep of that time use it), and the Apophysis plugins julian2dc
+// (xyrus02's julian2 that also colours the point) and shape (cyberxaos' superformula blur). Each is a kernel below and
+// one row of the table at the end (see variations.h for the notation and variation_kernels.h for what the files share).
+// Random numbers come from the lane's own stream (laneUniform), where the originals draw from their own generators.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -308,6 +308,96 @@ VOXFLAME_VARIATION_TARGETS void glslGrid3d(const VariationInput& in, double* __r
   }
 }
 
+// ---- JWildfire's glsl_mandala ---------------------------------------------------------------------------
+// Sosa's kaleidoscope: pixel (i, j) of a resolution × 10⁶ grid drawn at random, the point w (i/resolution − ½, j/10⁶
+// − ½), coloured by the pattern at the pixel's centre uv = (5.5 − scale)(2 (i + ½, j + ½)/size − 1). The pattern:
+// s = K(uv), t = K(s), K folding the angle into a wedge of π/⌊sides⌋ (|angle mod 2k − k|, with JWildfire's G.atan2,
+// a cheap approximation of the angle, which the pattern's look depends on); v = t·s, u = mix(s, t, cos v); where
+// multiply > 0.001 u is folded by JWildfire's mods ((u.y, u.x) mod ⌊multiply⌋, then mod −u); then p = (u, mX v)
+// goes through ⌊loops⌋ + 1 (at most 73) folds p → (1.3, 0.999, 0.678)·|p/(p·p) − (1, 1.02, mY/π)| with y and z
+// swapped; iR, iG, iB take a channel c to 1 − c. Gradient 0 paints the point that RGB colour (dbl2int bytes),
+// Gradient 1 makes the colour index r·g (left where that is NaN).
+
+// JWildfire's G.atan2: π/4 (1 − r) from the octant's ratio r, not the exact angle; 0/0 (the origin) is NaN.
+inline double glslAtan2(double y, double x) {
+  const double c1 = kPi / 4.0, c2 = 3.0 * c1, ay = std::abs(y);
+  const double angle = x >= 0.0 ? c1 - c1 * ((x - ay) / (x + ay)) : c2 - c1 * ((x + ay) / (ay - x));
+  return y < 0.0 ? -angle : angle;
+}
+
+// G.Kscope: the point's angle folded into [0, k], its length kept.
+inline void mandalaKscope(double& x, double& y, double k) {
+  const double a = glslAtan2(y, x), m = 2.0 * k;
+  const double angle = std::abs(a - m * std::floor(a / m) - k) + 0.1 * 0.0;
+  const double length = std::sqrt(x * x + y * y);
+  x = length * std::cos(angle);
+  y = length * std::sin(angle);
+}
+
+struct MandalaColour {
+  double r, g, b;
+};
+
+MandalaColour mandalaColour(double u0, double v0, const double* P) {
+  constexpr double kRcpi = 0.318309886183791;
+  const double mX = P[1], mY = P[2], zoom = 5.5 - P[3], sides = P[4], multiply = P[5], loops = P[6];
+  double sx = zoom * u0, sy = zoom * v0;
+  const double k = kPi / std::floor(sides);
+  mandalaKscope(sx, sy, k);
+  double tx = sx, ty = sy;
+  mandalaKscope(tx, ty, k);
+  const double v = tx * sx + ty * sy, c = std::cos(v);
+  double ux = sx * (1.0 - c) + tx * c, uy = sy * (1.0 - c) + ty * c;
+  if (multiply > 0.001) {
+    const double m = std::floor(multiply);
+    const double t2x = uy - m * std::floor(uy / m), t2y = ux - m * std::floor(ux / m);
+    const double t3x = -ux, t3y = -uy;
+    const double t5x = uy + (t2x - t3x * std::floor(t2x / t3x)), t5y = ux + (t2y - t3y * std::floor(t2y / t3y));
+    ux = t5y;
+    uy = t5x;
+  }
+  double px = ux, py = uy, pz = mX * v;
+  const double last = std::floor(loops);
+  for (int l = 0; l < 73; ++l) {
+    if (static_cast<double>(l) > last) break;
+    const double d = px * px + py * py + pz * pz;
+    const double ax = std::abs(std::abs(px) / d - 1.0), ay = std::abs(std::abs(py) / d - 1.02);
+    const double az = std::abs(std::abs(pz) / d - mY * kRcpi);
+    px = 1.3 * ax;
+    py = 0.678 * az;
+    pz = 0.999 * ay;
+  }
+  const auto flag = [](double value) { return !std::isnan(value) && std::trunc(std::clamp(value, 0.0, 1.0)) == 1.0; };
+  if (flag(P[7])) px = 1.0 - px;
+  if (flag(P[8])) py = 1.0 - py;
+  if (flag(P[9])) pz = 1.0 - pz;
+  return {px, py, pz};
+}
+
+VOXFLAME_VARIATION_TARGETS void glslMandala(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                            double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  constexpr double kHeight = 1000000.0;
+  const double width = std::isnan(P[0]) ? 100.0 : std::trunc(std::clamp(P[0], 100.0, 10000000.0));
+  const bool index = !std::isnan(P[10]) && std::trunc(std::clamp(P[10], 0.0, 1.0)) == 1.0;
+  std::uint32_t* __restrict rgb = index ? nullptr : in.rgb;
+  for (std::size_t i = 0; i < n; ++i) {
+    const double pi = std::trunc(laneUniform(rnd[i]) * width), pj = std::trunc(laneUniform(rnd[i]) * kHeight);
+    outX[i] += w * (pi / width - 0.5);
+    outY[i] += w * (pj / kHeight - 0.5);
+    outZ[i] += w * z[i];
+    if (!index && !rgb) continue;
+    const MandalaColour c = mandalaColour(2.0 * (pi + 0.5) / width - 1.0, 2.0 * (pj + 0.5) / kHeight - 1.0, P);
+    if (rgb) {
+      rgb[i] = paintedRgb(static_cast<std::uint32_t>(rgbByte(c.r)), static_cast<std::uint32_t>(rgbByte(c.g)),
+                          static_cast<std::uint32_t>(rgbByte(c.b)));
+      continue;
+    }
+    const double grey = c.r * c.g;
+    if (grey == grey) colour[i] = grey;
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& catalogue) {
@@ -382,6 +472,25 @@ void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& cat
       {count("Density Pixels", 1000000.0, 100.0, 1000000.0),
        count("Seed", 10000.0, 0.0, 10000.0),
        {"time", 200.0, 1.0, 1000.0}});
+  catalogue.back().paintsRgb = true;
+  add("glsl_mandala",
+      "w (i/Density Pixels − ½, j/10⁶ − ½), z: pixel i = ⌊Ψ₁ Density Pixels⌋, j = ⌊Ψ₂ 10⁶⌋; Gradient 0 paints the "
+      "point the colour of Sosa's kaleidoscope at the pixel ((5.5 − scale)·uv folded into wedges of π/⌊sides⌋, "
+      "blended, folded by multiply, then ⌊loops⌋ + 1 folds p → (1.3, 0.999, 0.678)·|p/(p·p) − (1, 1.02, mY/π)| of (u, "
+      "mX v); iR, iG, iB invert a channel), Gradient 1 makes the colour index r·g (JWildfire's)",
+      k2D, kRandom, &glslMandala,
+      {count("Density Pixels", 1000000.0, 100.0, 1000000.0),
+       {"mX", 0.025, -1.0, 1.0},
+       {"mY", -0.001245675, -1.0, 1.0},
+       {"scale", 2.0, 0.0, 5.0},
+       {"sides", 12.0, 1.0, 24.0},
+       {"multiply", 1.5, 0.0, 5.0},
+       {"loops", 64.0, 0.0, 72.0},
+       count("iR", 0.0, 0.0, 1.0),
+       count("iG", 0.0, 0.0, 1.0),
+       count("iB", 1.0, 0.0, 1.0),
+       count("Gradient", 0.0, 0.0, 1.0)});
+  catalogue.back().directColour = true;
   catalogue.back().paintsRgb = true;
 }
 

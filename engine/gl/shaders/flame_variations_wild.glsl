@@ -413,3 +413,62 @@ vec3 V_glsl_grid3D(vec3 p, float w, int P, int A) {
   gRgb = kRgbPainted | grey | grey << 8 | grey << 16;
   return o;
 }
+
+// glsl_mandala: Sosa's kaleidoscope in double (its up to 73 folds p → |p/(p·p) − c| part float's rounding), with
+// JWildfire's approximate G.atan2, as the CPU's.
+double wild_glslAtan2(double y, double x) {
+  const double c1 = 0.78539816339744831lf, c2 = 3.0lf * c1;
+  double ay = abs(y);
+  precise double angle = x >= 0.0lf ? c1 - c1 * ((x - ay) / (x + ay)) : c2 - c1 * ((x + ay) / (ay - x));
+  return y < 0.0lf ? -angle : angle;
+}
+dvec2 wild_kscope(dvec2 q, double k) {
+  precise double a = wild_glslAtan2(q.y, q.x), m = 2.0lf * k;
+  precise double angle = abs(a - m * floor(a / m) - k);
+  precise double len = sqrt(q.x * q.x + q.y * q.y);
+  dvec2 sc = dsinCos(angle);
+  return dvec2(len * sc.y, len * sc.x);
+}
+vec3 V_glsl_mandala(vec3 p, float w, int P, int A) {
+  const double kHeight = 1000000.0lf;
+  float pw = P_(P, 0), pg = P_(P, 10);
+  double width = isnan(pw) ? 100.0lf : trunc(clamp(double(pw), 100.0lf, 10000000.0lf));
+  bool index = !isnan(pg) && trunc(clamp(pg, 0.0, 1.0)) == 1.0;
+  double pi = trunc(double(psi()) * width), pj = trunc(double(psi()) * kHeight);
+  vec3 o = vec3(w * float(pi / width - 0.5lf), w * float(pj / kHeight - 0.5lf), w * p.z);
+  double mX = double(P_(P, 1)), mY = double(P_(P, 2)), zoom = 5.5lf - double(P_(P, 3));
+  double k = 3.14159265358979323846lf / floor(double(P_(P, 4)));
+  double multiply = double(P_(P, 5)), last = floor(double(P_(P, 6)));
+  precise dvec2 s = wild_kscope(dvec2(zoom * (2.0lf * (pi + 0.5lf) / width - 1.0lf),
+                                      zoom * (2.0lf * (pj + 0.5lf) / kHeight - 1.0lf)), k);
+  precise dvec2 t = wild_kscope(s, k);
+  precise double v = t.x * s.x + t.y * s.y;
+  double c = dcos(v);
+  precise dvec2 u = s * (1.0lf - c) + t * c;
+  if (multiply > 0.001lf) {
+    double m = floor(multiply);
+    precise dvec2 t2 = dvec2(u.y - m * floor(u.y / m), u.x - m * floor(u.x / m));
+    precise dvec2 t3 = -u;
+    precise dvec2 t5 = dvec2(u.y + (t2.x - t3.x * floor(t2.x / t3.x)), u.x + (t2.y - t3.y * floor(t2.y / t3.y)));
+    u = t5.yx;
+  }
+  precise dvec3 q = dvec3(u, mX * v);
+  double shift = mY * 0.318309886183791lf;
+  for (int l = 0; l < 73; ++l) {
+    if (double(l) > last) break;
+    precise double d = q.x * q.x + q.y * q.y + q.z * q.z;
+    precise dvec3 a = abs(abs(q) / d - dvec3(1.0lf, 1.02lf, shift));
+    q = dvec3(1.3lf * a.x, 0.678lf * a.z, 0.999lf * a.y);
+  }
+  float fr = P_(P, 7), fg = P_(P, 8), fb = P_(P, 9);
+  if (!isnan(fr) && trunc(clamp(fr, 0.0, 1.0)) == 1.0) q.x = 1.0lf - q.x;
+  if (!isnan(fg) && trunc(clamp(fg, 0.0, 1.0)) == 1.0) q.y = 1.0lf - q.y;
+  if (!isnan(fb) && trunc(clamp(fb, 0.0, 1.0)) == 1.0) q.z = 1.0lf - q.z;
+  if (index) {
+    float grey = float(q.x * q.y);
+    if (!isnan(grey)) gColour = grey;
+  } else {
+    gRgb = kRgbPainted | uint(rgb_byte(q.x)) | uint(rgb_byte(q.y)) << 8 | uint(rgb_byte(q.z)) << 16;
+  }
+  return o;
+}
