@@ -484,6 +484,7 @@ TEST(FlameVariationColour, OnlyColourVariationsAreMarkedDirectColour) {
         info.name == "julian2dc" ||         // the index from the result's radius and angle
         info.name == "glsl_circlesblue" ||  // Gradient 1: the index from its bubbles' colour
         info.name == "glsl_mandala" ||      // Gradient 1: the index from its pattern's colour
+        info.name == "glsl_acrilic" ||      // Gradient 1: the index from its pattern's colour
         info.name == "colormap_wf" ||       // dc_color 1 sets the index from its picture
         info.name == "smartcrop" ||         // cropmode 2 restores the kept point's colour
         info.name == "colorscale_wf";       // reads the index (z from it), JWildfire's VARTYPE_DC

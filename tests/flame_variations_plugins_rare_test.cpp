@@ -126,6 +126,13 @@ const std::vector<PointCase>& pointCases() {
        0.8,
        kLowSeed,
        {-0.1472, 0.3005648, 0.4}},
+      {"glsl_acrilic", {}, {0.3, -0.7, 0.5}, 0.8, kLowSeed, {-0.14672559999999998, 0.3005648, 0.4}},
+      {"glsl_acrilic",
+       {1000.0, 10000.0, 37.25, 5.0, 30.0, 7.0, 4.0, 60.0, 20.0, 90.0, 0.5, 2.5, 4.0, 1.0},
+       {0.3, -0.7, 0.5},
+       0.8,
+       kHighSeed,
+       {0.3032, 0.03625999999999996, 0.4}},
   };
   return cases;
 }
@@ -177,6 +184,17 @@ const std::vector<ColourCase>& colourCases() {
        {0.3, -0.7, 0.5},
        kLowSeed,
        -0.07310722756676542},
+      // glsl_acrilic with Gradient 1: sin(r/(r + g + b)) of the pour's colour.
+      {"glsl_acrilic",
+       {1000.0, 10000.0, 37.25, 5.0, 30.0, 7.0, 4.0, 60.0, 20.0, 90.0, 0.5, 2.5, 4.0, 1.0},
+       {0.3, -0.7, 0.5},
+       kHighSeed,
+       0.9244712110079876},
+      {"glsl_acrilic",
+       {1000.0, 10000.0, 37.25, 5.0, 30.0, 7.0, 4.0, 60.0, 20.0, 90.0, 0.5, 2.5, 4.0, 1.0},
+       {0.3, -0.7, 0.5},
+       kLowSeed,
+       0.5089859965351877},
   };
   return cases;
 }
@@ -304,6 +322,23 @@ TEST(FlameVariationPluginsRare, MandalaGradientZeroPaintsTheKaleidoscopesColour)
   expectPaints("glsl_mandala", other, kLowSeed, paintedRgb(0, 153, 45));
 }
 
+// glsl_acrilic's Gradient 0 paints the pour's colour, from the same transcription: (0.9959, −0.1386, 0.3926) → (254,
+// 0, 100) and (0.3952, −0.2707, 0.7401) → (101, 0, 189) with the defaults; (0.9700, −0.2837, 0.9877) → (248, 0, 252)
+// and (0.9915, −0.1530, −0.6976) → (253, 0, 0) with the published flame's parameters; (0.9279, 0.7191, −0.8604) →
+// (237, 184, 0) and (0.9989, 0.9499, −0.0783) → (255, 243, 0) on a 1000-wide grid with other parameters.
+TEST(FlameVariationPluginsRare, AcrilicGradientZeroPaintsThePoursColour) {
+  const std::vector<double> defaults = variationOrThrow("glsl_acrilic").defaultParams();
+  const std::vector<double> file = {1000000.0, 10000.0, 152.44, 8.0, 10.0, 12.0, 18.0,
+                                    12.0,      75.0,    75.0,   1.0, 1.5,  1.3,  0.0};
+  const std::vector<double> other = {1000.0, 10000.0, 37.25, 5.0, 30.0, 7.0, 4.0, 60.0, 20.0, 90.0, 0.5, 2.5, 4.0, 0.0};
+  expectPaints("glsl_acrilic", defaults, kHighSeed, paintedRgb(254, 0, 100));
+  expectPaints("glsl_acrilic", defaults, kLowSeed, paintedRgb(101, 0, 189));
+  expectPaints("glsl_acrilic", file, kHighSeed, paintedRgb(248, 0, 252));
+  expectPaints("glsl_acrilic", file, kLowSeed, paintedRgb(253, 0, 0));
+  expectPaints("glsl_acrilic", other, kHighSeed, paintedRgb(237, 184, 0));
+  expectPaints("glsl_acrilic", other, kLowSeed, paintedRgb(255, 243, 0));
+}
+
 ImportedFlame importXform(const std::string& xform) {
   const std::string text = "<flames><flame name=\"t\" size=\"64 64\"><xform weight=\"1\" color=\"0\" " + xform +
                            "/><color index=\"0\" rgb=\"255 255 255\"/></flame></flames>";
@@ -323,6 +358,20 @@ TEST(FlameVariationPluginsRare, ImportsCirclesbluesParameters) {
   ASSERT_EQ(terms.size(), 1u);
   EXPECT_EQ(terms[0].name, "glsl_circlesblue");
   EXPECT_EQ(terms[0].params, (std::vector<double>{1000.0, 10000.0, 2.5, 0.252, 100.0, 1.0}));
+}
+
+// glsl_acrilic's colour factors are written "Red Fac.", "Green Fac." and "Blue Fac.", spaces and dots included.
+TEST(FlameVariationPluginsRare, ImportsAcrilicsParameters) {
+  const ImportedFlame flame = importXform(
+      R"(glsl_acrilic="1.0" glsl_acrilic_Density Pixels="1000" glsl_acrilic_Seed="10000" glsl_acrilic_time="152.44" )"
+      R"(glsl_acrilic_Steps="8" glsl_acrilic_p1="10.0" glsl_acrilic_p2="12.0" glsl_acrilic_p3="18.0" )"
+      R"(glsl_acrilic_p4="12.0" glsl_acrilic_p5="75.0" glsl_acrilic_p6="75.0" glsl_acrilic_Red Fac.="1.0" )"
+      R"(glsl_acrilic_Green Fac.="1.5" glsl_acrilic_Blue Fac.="1.3" glsl_acrilic_Gradient="0" coefs="1 0 0 1 0 0")");
+  ASSERT_TRUE(flame.leftOut.empty()) << flame.leftOut.front();
+  const auto& terms = flame.genome.xforms.at(0).variations;
+  ASSERT_EQ(terms.size(), 1u);
+  EXPECT_EQ(terms[0].params, (std::vector<double>{1000.0, 10000.0, 152.44, 8.0, 10.0, 12.0, 18.0, 12.0, 75.0, 75.0, 1.0,
+                                                  1.5, 1.3, 0.0}));
 }
 
 TEST(FlameVariationPluginsRare, ImportsTheFilesNames) {

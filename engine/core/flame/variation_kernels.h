@@ -248,8 +248,9 @@ void addJwildfireGlslVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire variations that flames in public repositories use: mandelbrot, invsquircular, sph3D, colorscale_wf,
 // bubble_wf, bwraps2, invpolar, threeply, spligon, lazysensen, disc3, cpow3_wf (variations_jwildfire_wild.cpp).
 void addJwildfireWildVariations(std::vector<VariationInfo>& catalogue);
-// Rarer plugins that published flames use: JWildfire's sym_bg2, sym_ng11, sym_ng15, glsl_circlesblue, glsl_grid3D and
-// glsl_mandala, flam3's original secant and the Apophysis plugins julian2dc and shape (variations_plugins_rare.cpp).
+// Rarer plugins that published flames use: JWildfire's sym_bg2, sym_ng11, sym_ng15, glsl_circlesblue, glsl_grid3D,
+// glsl_mandala and glsl_acrilic, flam3's original secant and the Apophysis plugins julian2dc and shape
+// (variations_plugins_rare.cpp).
 void addPluginsRareVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels

@@ -1,11 +1,12 @@
 // Rarer plugins that published flame files use: JWildfire's symmetry-group variations sym_bg2, sym_ng11 and sym_ng15
 // (Jesús Sosa's, after McGregor and Watt's "The Art of Graphics for the IBM PC": each point goes through one of a fixed
-// set of rigid maps picked at random, so the attractor holds every copy) and its glsl_circlesblue, glsl_grid3D and
-// glsl_mandala (Sosa's ports of shaders: rising bubbles, a ray-marched grid, a kaleidoscope), flam3's original secant
-// (before flam3 2.7.10 replaced it by secant2; electric sheep of that time use it), and the Apophysis plugins julian2dc
-// (xyrus02's julian2 that also colours the point) and shape (cyberxaos' superformula blur). Each is a kernel below and
-// one row of the table at the end (see variations.h for the notation and variation_kernels.h for what the files share).
-// Random numbers come from the lane's own stream (laneUniform), where the originals draw from their own generators.
+// set of rigid maps picked at random, so the attractor holds every copy) and its glsl_circlesblue, glsl_grid3D,
+// glsl_mandala and glsl_acrilic (Sosa's ports of shaders: rising bubbles, a ray-marched grid, a kaleidoscope, an
+// acrylic pour), flam3's original secant (before flam3 2.7.10 replaced it by secant2; electric sheep of that time use
+// it), and the Apophysis plugins julian2dc (xyrus02's julian2 that also colours the point) and shape (cyberxaos'
+// superformula blur). Each is a kernel below and one row of the table at the end (see variations.h for the notation and
+// variation_kernels.h for what the files share). Random numbers come from the lane's own stream (laneUniform), where
+// the originals draw from their own generators.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
@@ -398,6 +399,71 @@ VOXFLAME_VARIATION_TARGETS void glslMandala(const VariationInput& in, double* __
   }
 }
 
+// ---- JWildfire's glsl_acrilic ---------------------------------------------------------------------------
+// Sosa's acrylic pour: pixel (i, j) of a resolution × 10⁶ grid drawn at random, the point w (i/resolution − ½,
+// j/10⁶ − ½), coloured by the pattern at q = 0.7 (i + ½, j + ½)/size. For each channel c = 0, 1, 2 in turn, q is
+// warped by steps k = 1 … Steps − 1: x += 0.1/(k + c) sin(k p1 y + t + cos(t/(p2 k) k + c)), then y += 0.1/(k + c)
+// cos(k p3 x + t + sin(t/(p4 k) k + c)) (the warps go on from the last channel's q), and the channel is
+// cos((sin(p5 x²) + sin(p6 y²)) · its factor). Gradient 0 paints the point that RGB colour (dbl2int bytes),
+// Gradient 1 makes the colour index sin(r/(r + g + b)) (left where that is NaN). Seed only draws JWildfire's random
+// time, which the file's time overrides; so it is not used here.
+struct AcrilicParams {
+  double time, steps, p1, p2, p3, p4, p5, p6, factor[3];
+  explicit AcrilicParams(const double* P) {
+    const auto limited = [](double v, double low, double high) { return std::isnan(v) ? v : std::clamp(v, low, high); };
+    time = P[2];
+    steps = std::isnan(P[3]) ? 0.0 : std::trunc(std::clamp(P[3], 3.0, 100.0));
+    p1 = limited(P[4], 1.0, 100.0);
+    p2 = limited(P[5], 1.0, 100.0);
+    p3 = limited(P[6], 1.0, 100.0);
+    p4 = limited(P[7], 1.0, 100.0);
+    p5 = limited(P[8], 1.0, 100.0);
+    p6 = limited(P[9], 1.0, 100.0);
+    for (int c = 0; c < 3; ++c) factor[c] = limited(P[10 + c], 0.0, 5.0);
+  }
+};
+
+// The colour at the pixel's centre (px, py) of a width × height grid.
+void acrilicColour(double px, double py, double width, double height, const AcrilicParams& a, double out[3]) {
+  double x = 0.7 * px / width, y = 0.7 * py / height;
+  const int steps = static_cast<int>(a.steps);
+  for (int c = 0; c < 3; ++c) {
+    for (int k = 1; k < steps; ++k) {
+      const double step = 0.1 / static_cast<double>(k + c), kd = k;
+      x += step * std::sin(kd * a.p1 * y + a.time + std::cos((a.time / (a.p2 * kd)) * kd + c));
+      y += step * std::cos(kd * a.p3 * x + a.time + std::sin((a.time / (a.p4 * kd)) * kd + c));
+    }
+    out[c] = std::sin(a.p5 * (x * x)) + std::sin(a.p6 * (y * y));
+  }
+  for (int c = 0; c < 3; ++c) out[c] = std::cos(out[c] * a.factor[c]);
+}
+
+VOXFLAME_VARIATION_TARGETS void glslAcrilic(const VariationInput& in, double* __restrict ox, double* __restrict oy,
+                                            double* __restrict oz) {
+  VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
+  constexpr double kHeight = 1000000.0;
+  const double width = std::isnan(P[0]) ? 100.0 : std::trunc(std::clamp(P[0], 100.0, 10000000.0));
+  const bool index = !std::isnan(P[13]) && std::trunc(std::clamp(P[13], 0.0, 1.0)) == 1.0;
+  std::uint32_t* __restrict rgb = index ? nullptr : in.rgb;
+  const AcrilicParams params(P);
+  for (std::size_t i = 0; i < n; ++i) {
+    const double pi = std::trunc(laneUniform(rnd[i]) * width), pj = std::trunc(laneUniform(rnd[i]) * kHeight);
+    outX[i] += w * (pi / width - 0.5);
+    outY[i] += w * (pj / kHeight - 0.5);
+    outZ[i] += w * z[i];
+    if (!index && !rgb) continue;
+    double c[3];
+    acrilicColour(pi + 0.5, pj + 0.5, width, kHeight, params, c);
+    if (rgb) {
+      rgb[i] = paintedRgb(static_cast<std::uint32_t>(rgbByte(c[0])), static_cast<std::uint32_t>(rgbByte(c[1])),
+                          static_cast<std::uint32_t>(rgbByte(c[2])));
+      continue;
+    }
+    const double grey = std::sin(c[0] / (c[0] + c[1] + c[2]));
+    if (grey == grey) colour[i] = grey;
+  }
+}
+
 }  // namespace
 
 void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& catalogue) {
@@ -489,6 +555,28 @@ void variation_kernels::addPluginsRareVariations(std::vector<VariationInfo>& cat
        count("iR", 0.0, 0.0, 1.0),
        count("iG", 0.0, 0.0, 1.0),
        count("iB", 1.0, 0.0, 1.0),
+       count("Gradient", 0.0, 0.0, 1.0)});
+  catalogue.back().directColour = true;
+  catalogue.back().paintsRgb = true;
+  add("glsl_acrilic",
+      "w (i/Density Pixels − ½, j/10⁶ − ½), z: pixel i = ⌊Ψ₁ Density Pixels⌋, j = ⌊Ψ₂ 10⁶⌋; Gradient 0 paints the "
+      "point the colour of Sosa's acrylic pour at the pixel (q = 0.7 uv warped Steps − 1 times per channel by sines "
+      "and cosines of p1 … p4 and time, the channel cos((sin(p5 x²) + sin(p6 y²)) · its factor)), Gradient 1 makes the "
+      "colour index sin(r/(r + g + b)); Seed is JWildfire's random time, which time overrides (JWildfire's)",
+      k2D, kRandom, &glslAcrilic,
+      {count("Density Pixels", 1000000.0, 100.0, 1000000.0),
+       count("Seed", 10000.0, 0.0, 10000.0),
+       {"time", 0.0, 0.0, 1000.0},
+       count("Steps", 10.0, 3.0, 100.0),
+       {"p1", 12.0, 1.0, 100.0},
+       {"p2", 12.0, 1.0, 100.0},
+       {"p3", 12.0, 1.0, 100.0},
+       {"p4", 12.0, 1.0, 100.0},
+       {"p5", 75.0, 1.0, 100.0},
+       {"p6", 75.0, 1.0, 100.0},
+       {"Red Fac.", 1.0, 0.0, 5.0},
+       {"Green Fac.", 1.0, 0.0, 5.0},
+       {"Blue Fac.", 1.0, 0.0, 5.0},
        count("Gradient", 0.0, 0.0, 1.0)});
   catalogue.back().directColour = true;
   catalogue.back().paintsRgb = true;

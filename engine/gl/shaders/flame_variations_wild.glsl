@@ -472,3 +472,43 @@ vec3 V_glsl_mandala(vec3 p, float w, int P, int A) {
   }
   return o;
 }
+
+// glsl_acrilic: Sosa's acrylic pour in double (its warps take sines of k p1 y + time, far beyond what float's trig
+// holds), as the CPU's.
+vec3 V_glsl_acrilic(vec3 p, float w, int P, int A) {
+  const double kHeight = 1000000.0lf;
+  float pw = P_(P, 0), pg = P_(P, 13), ps = P_(P, 3);
+  double width = isnan(pw) ? 100.0lf : trunc(clamp(double(pw), 100.0lf, 10000000.0lf));
+  bool index = !isnan(pg) && trunc(clamp(pg, 0.0, 1.0)) == 1.0;
+  double pi = trunc(double(psi()) * width), pj = trunc(double(psi()) * kHeight);
+  vec3 o = vec3(w * float(pi / width - 0.5lf), w * float(pj / kHeight - 0.5lf), w * p.z);
+  int steps = isnan(ps) ? 0 : int(trunc(clamp(ps, 3.0, 100.0)));
+  double time = double(P_(P, 2)), q[6];
+  for (int k = 0; k < 6; ++k) {
+    float v = P_(P, 4 + k);
+    q[k] = isnan(v) ? double(v) : clamp(double(v), 1.0lf, 100.0lf);
+  }
+  precise double x = 0.7lf * (pi + 0.5lf) / width, y = 0.7lf * (pj + 0.5lf) / kHeight;
+  precise dvec3 c;
+  for (int ch = 0; ch < 3; ++ch) {
+    for (int k = 1; k < steps; ++k) {
+      double kd = double(k);
+      precise double step = 0.1lf / double(k + ch);
+      x += step * dsin(kd * q[0] * y + time + dcos((time / (q[1] * kd)) * kd + double(ch)));
+      y += step * dcos(kd * q[2] * x + time + dsin((time / (q[3] * kd)) * kd + double(ch)));
+    }
+    c[ch] = dsin(q[4] * (x * x)) + dsin(q[5] * (y * y));
+  }
+  for (int ch = 0; ch < 3; ++ch) {
+    float f = P_(P, 10 + ch);
+    double factor = isnan(f) ? double(f) : clamp(double(f), 0.0lf, 5.0lf);
+    c[ch] = dcos(c[ch] * factor);
+  }
+  if (index) {
+    float grey = sin(float(c.x / (c.x + c.y + c.z)));
+    if (!isnan(grey)) gColour = grey;
+  } else {
+    gRgb = kRgbPainted | uint(rgb_byte(c.x)) | uint(rgb_byte(c.y)) << 8 | uint(rgb_byte(c.z)) << 16;
+  }
+  return o;
+}
