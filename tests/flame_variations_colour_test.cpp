@@ -482,9 +482,13 @@ TEST(FlameVariationColour, OnlyColourVariationsAreMarkedDirectColour) {
         info.name == "parplot2d_wf" || info.name == "polarplot3d_wf" || info.name == "isosfplot3d_wf" ||
         info.name == "sunflower" || info.name == "point_symmetry_wf" || info.name == "mirror_wf" ||
         info.name == "axis_symmetry_wf" || info.name == "glsl_apollonian" || info.name == "fract_mandelbrot_wf" ||
-        info.name == "colormap_wf" ||  // dc_color 1 sets the index from its picture
-        info.name == "smartcrop" ||    // cropmode 2 restores the kept point's colour
-        info.name == "colorscale_wf";  // reads the index (z from it), JWildfire's VARTYPE_DC
+        info.name == "julian2dc" ||         // the index from the result's radius and angle
+        info.name == "glsl_circlesblue" ||  // Gradient 1: the index from its bubbles' colour
+        info.name == "glsl_mandala" ||      // Gradient 1: the index from its pattern's colour
+        info.name == "glsl_acrilic" ||      // Gradient 1: the index from its pattern's colour
+        info.name == "colormap_wf" ||       // dc_color 1 sets the index from its picture
+        info.name == "smartcrop" ||         // cropmode 2 restores the kept point's colour
+        info.name == "colorscale_wf";       // reads the index (z from it), JWildfire's VARTYPE_DC
     EXPECT_EQ(info.directColour, colours) << info.name;
   }
 }

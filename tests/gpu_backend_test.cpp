@@ -574,6 +574,26 @@ TEST(GpuBackend, EveryGpuVariationMapsAsTheCatalogueDoes) {
       {"isosfplot3d_wf",
        {-1.0, 1.2, -1.2, 1.2, -1.2, -1.2, 1.2, 0.01, 12.0, 1.0, 7.0, 1.0, 0.9, 0.0, 0.0, 0.0, 0.0, 0.0},
        {"x*x + y*y + z*z - param_a*param_a"}},
+      // The symmetry groups with the published flames' translations, and julian2dc with a negative power and a
+      // colour blend that weighs both radius and angle; shape as a published flame has it, and with a and b;
+      // glsl_circlesblue's bubbles painted and as the index, glsl_grid3D, glsl_mandala and glsl_acrilic as the
+      // published flames have them.
+      {"sym_bg2", {-1.0, -0.832}},
+      {"sym_ng11", {-0.4, 0.1, 0.2, 1.5, 1.25}},
+      {"sym_ng15", {0.625, 1.6, 1.024}},
+      {"julian2dc", {2.0, 1.0, 0.346, 0.8, 0.0, 0.3, 1.4, 0.2, 0.0}},
+      {"julian2dc", {-3.0, 0.5, 1.25, 1.0, 0.2, -0.1, 0.9, 0.05, -0.1}},
+      {"shape", {4.0, 1.5, 0.7, 2.0, 1.0, 1.0, -0.6}},
+      {"shape", {5.0, 2.0, 1.5, 0.5, 0.8, 1.3, 0.25}},
+      {"glsl_circlesblue", {1000000.0, 10000.0, 1.0, 0.252, 100.0, 0.0}},
+      {"glsl_circlesblue", {1000.0, 10000.0, 197.572, 0.3, 60.0, 0.0}},
+      {"glsl_circlesblue", {1000.0, 10000.0, 197.572, 0.3, 60.0, 1.0}},
+      {"glsl_grid3D", {1000000.0, 10000.0, 410.032}},
+      {"glsl_grid3D", {1000.0, 10000.0, 37.5}},
+      {"glsl_mandala", {1000000.0, 0.877, -0.241245675, 1.56, 6.0, 1.5, 64.0, 0.0, 0.0, 1.0, 0.0}},
+      {"glsl_mandala", {1000.0, 0.3, 0.2, 3.0, 5.0, 0.0, 20.0, 1.0, 0.0, 0.0, 1.0}},
+      {"glsl_acrilic", {1000000.0, 10000.0, 152.44, 8.0, 10.0, 12.0, 18.0, 12.0, 75.0, 75.0, 1.0, 1.5, 1.3, 0.0}},
+      {"glsl_acrilic", {1000.0, 10000.0, 37.25, 5.0, 30.0, 7.0, 4.0, 60.0, 20.0, 90.0, 0.5, 2.5, 4.0, 1.0}},
   };
   // Direct colour: the colour index moves too (the test compares it).
   for (const double type : {0.0, 1.0, 2.0})

@@ -55,6 +55,7 @@ std::vector<VariationInfo> buildCatalogue() {
   variation_kernels::addJwildfireGlslVariations(c);
   variation_kernels::addJwildfireWildVariations(c);
   variation_kernels::addJwildfireRareVariations(c);
+  variation_kernels::addPluginsRareVariations(c);
   for (VariationInfo& info : c)
     if (info.name == "zblur" || info.name == "zscale" || info.name == "ztranslate" || info.name == "zcone" ||
         info.name == "flatten" || info.name == "inflateZ_3" || info.name == "zscale_wf")

@@ -251,6 +251,10 @@ void addJwildfireWildVariations(std::vector<VariationInfo>& catalogue);
 // JWildfire variations that a few published flames use: polarplot3d_wf, isosfplot3d_wf, sunflower,
 // dc_warping (variations_jwildfire_rare.cpp).
 void addJwildfireRareVariations(std::vector<VariationInfo>& catalogue);
+// Rarer plugins that published flames use: JWildfire's sym_bg2, sym_ng11, sym_ng15, glsl_circlesblue, glsl_grid3D,
+// glsl_mandala and glsl_acrilic, flam3's original secant and the Apophysis plugins julian2dc and shape
+// (variations_plugins_rare.cpp).
+void addPluginsRareVariations(std::vector<VariationInfo>& catalogue);
 
 }  // namespace voxflame::core::variation_kernels
 

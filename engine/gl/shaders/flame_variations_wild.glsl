@@ -431,4 +431,241 @@ vec3 V_isosfplot3d_wf(vec3 p, float w, int P, int A) {
     gColour = isnan(v) ? 0.0 : clamp(v, 0.0, 1.0);
   }
   return w * q;
+// sym_bg2, sym_ng11, sym_ng15 (JWildfire's symmetry groups): one of a fixed set of maps, picked by ⌊count Ψ⌋ in
+// double as on the CPU; each linear part as (a, b, d, e).
+vec3 V_sym_bg2(vec3 p, float w, int P, int A) {
+  float stepX = P_(P, 0), stepY = P_(P, 1);
+  vec2 q = tableIndex(psi(), 2) == 0 ? vec2(p.x - stepX / 2.0 - 1.0, p.y - stepY / 2.0)
+                                     : vec2(p.x + stepX / 2.0, -p.y + stepY / 2.0 + 1.0);
+  return w * vec3(q, p.z);
+}
+vec3 V_sym_ng11(vec3 p, float w, int P, int A) {
+  const vec4 linear[8] = vec4[8](vec4(1, 0, 0, 1), vec4(-1, 0, 0, -1), vec4(0, 1, -1, 0), vec4(0, -1, 1, 0),
+                                 vec4(-1, 0, 0, 1), vec4(0, -1, -1, 0), vec4(0, 1, 1, 0), vec4(1, 0, 0, -1));
+  // The translations' signs: (of spacex, of stepx/2, of spacey, of stepy/2).
+  const vec4 signs[8] = vec4[8](vec4(1, 1, 1, 1), vec4(-1, 1, -1, 1), vec4(1, 1, -1, 1), vec4(-1, 1, 1, 1),
+                                vec4(-1, -1, 1, -1), vec4(-1, -1, -1, -1), vec4(1, -1, 1, -1), vec4(1, -1, -1, -1));
+  float space = P_(P, 0), spaceX = P_(P, 1), spaceY = P_(P, 2), halfX = P_(P, 3) / 2.0, halfY = P_(P, 4) / 2.0;
+  int k = tableIndex(psi(), 8);
+  vec4 m = linear[k], s = signs[k];
+  vec2 q = p.xy + space;
+  float c = s.x * spaceX + s.y * halfX, f = s.z * spaceY + s.w * halfY;
+  return w * vec3(m.x * q.x + m.y * q.y + c, m.z * q.x + m.w * q.y + f, p.z);
+}
+vec3 V_sym_ng15(vec3 p, float w, int P, int A) {
+  const vec4 linear[6] = vec4[6](vec4(0.0, 1.0, -1.0, 0.0), vec4(0.0, -1.0, -1.0, 0.0), vec4(0.866, -0.5, 0.5, 0.866),
+                                 vec4(0.866, 0.5, 0.5, -0.866), vec4(-0.866, -0.5, 0.5, -0.866),
+                                 vec4(-0.866, 0.5, 0.5, 0.866));
+  float shift = sqrt(P_(P, 0) * P_(P, 0) / 2.0), halfX = P_(P, 1) / 2.0, halfY = P_(P, 2) / 2.0;
+  int k = tableIndex(psi(), 12);
+  vec4 m = linear[k % 6];
+  float s = k < 6 ? -1.0 : 1.0;
+  vec2 q = p.xy + shift;
+  return w * vec3(m.x * q.x + m.y * q.y + s * halfX, m.z * q.x + m.w * q.y + s * halfY, p.z);
+}
+
+// flam3's original secant: y is not scaled by the weight.
+vec3 V_secant(vec3 p, float w, int P, int A) {
+  float r = w * sqrt(p.x * p.x + p.y * p.y);
+  return vec3(w * p.x, 1.0 / cos(r), w * p.z);
+}
+
+// julian2dc: julian2, and the colour index from the result's radius and angle.
+vec3 V_julian2dc(vec3 p, float w, int P, int A) {
+  float powerN = countParam(P_(P, 0)), exponent = P_(P, 1) / powerN * 0.5, rootCount = abs(powerN);
+  float col = P_(P, 2);
+  float a = P_(P, 3), b = P_(P, 4), c = P_(P, 5), d = P_(P, 6), e = P_(P, 7), f = P_(P, 8);
+  float px = a * p.x + b * p.y + e, py = c * p.x + d * p.y + f;
+  float root = trunc(rootCount * psi());
+  float angle = (atan2c(py, px) + kTwoPi * root) / powerN;
+  float r = w * pow(px * px + py * py, exponent);
+  gColour = fmodc(abs(r * col + angle / kTwoPi * (1.0 - col)), 1.0);
+  return vec3(r * cos(angle), r * sin(angle), w * p.z);
+}
+
+// shape (cyberxaos'): a blur filling the superformula's curve along the point's direction.
+vec3 V_shape(vec3 p, float w, int P, int A) {
+  float quarterM = P_(P, 0) / 4.0, negInvN1 = -1.0 / P_(P, 1), n2 = P_(P, 2), n3 = P_(P, 3);
+  float a = P_(P, 4), b = P_(P, 5), holes = P_(P, 6);
+  float theta = quarterM * atan2c(p.y, p.x);
+  float t1 = pow(abs(cos(theta) / a), n2), t2 = pow(abs(sin(theta) / b), n3);
+  float r = sqrt(p.x * p.x + p.y * p.y);
+  float scale = w * (psi() - holes) * pow(t1 + t2, negInvN1) / (r + kEpsilon);
+  return vec3(scale * p.x, scale * p.y, w * p.z);
+}
+
+// glsl_circlesblue: the bubbles in double (their places and colours turn on sines of k and of time up to 1000,
+// which float's trig does not hold), as the CPU's.
+vec3 V_glsl_circlesblue(vec3 p, float w, int P, int A) {
+  const double kHeight = 1000000.0lf;
+  float pw = P_(P, 0), pt = P_(P, 2), pr = P_(P, 3), pb = P_(P, 4), pg = P_(P, 5);
+  double width = max(isnan(pw) ? 0.0lf : trunc(clamp(double(pw), 100.0lf, 10000000.0lf)), 100.0lf);
+  double time = isnan(pt) ? double(pt) : clamp(double(pt), 1.0lf, 1000.0lf);
+  double radius = isnan(pr) ? double(pr) : clamp(double(pr), 0.0lf, 1.0lf);
+  int count = isnan(pb) ? 0 : int(trunc(clamp(pb, 1.0, 100.0)));
+  bool index = !isnan(pg) && trunc(clamp(pg, 0.0, 1.0)) == 1.0;
+  double pi = trunc(double(psi()) * width), pj = trunc(double(psi()) * kHeight);
+  vec3 o = vec3(w * float(pi / width - 0.5lf), w * float(pj / kHeight - 0.5lf), w * p.z);
+  precise double u = 2.0lf * (pi + 0.5lf) / width - 1.0lf, v = 2.0lf * (pj + 0.5lf) / kHeight - 1.0lf;
+  precise dvec3 sum = dvec3(0.0lf);
+  for (int k = 0; k < count; ++k) {
+    double kd = double(k);
+    dvec2 sc = dsinCos(kd * 6.0lf + 1.0lf);
+    precise double pha = sc.x / sc.y * 0.5lf + 0.5lf;
+    precise double base = dcos(kd * 2.4lf + 5.0lf) * 0.5lf + 0.5lf;
+    precise double siz = base * base * (base * base);
+    double pox = dcos(kd * 3.55lf + 4.1lf);
+    precise double rad = radius + dsin(kd) * 0.12lf + 0.08lf;
+    precise double rise = pha + 0.1lf * (time / 5.0lf) * (0.2lf + 0.8lf * siz);
+    precise double mixA = 0.5lf + 0.5lf * dsin(kd * dsin(time * pox * 0.03lf) + 1.9lf);
+    precise double bx = pox + dsin(time / 15.0lf + pha + siz);
+    precise double by = -1.0lf - rad + (2.0lf + 2.0lf * rad) * (rise - floor(rise));
+    precise double inner = rad * (0.65lf + 0.20lf * dsin(pox * time));
+    precise double fade = 1.0lf - dcos(pox * time);
+    precise dvec3 col = dvec3(0.1lf, 0.2lf, 0.8lf) * (1.0lf - mixA) + dvec3(0.2lf, 0.8lf, 0.6lf) * mixA;
+    precise double dx = u - bx, dy = v - by;
+    precise double t = min(max((sqrt(dx * dx + dy * dy) - inner) / (rad - inner), 0.0lf), 1.0lf);
+    precise double cover = 1.0lf - t * t * (3.0lf - 2.0lf * t);
+    sum += col * cover * fade;
+  }
+  sum *= 0.3lf;
+  if (index) {
+    float c = sin(float(sum.x / (sum.x + sum.y + sum.z)));
+    if (!isnan(c)) gColour = c;
+  } else {
+    gRgb = kRgbPainted | uint(rgb_byte(sum.x)) | uint(rgb_byte(sum.y)) << 8 | uint(rgb_byte(sum.z)) << 16;
+  }
+  return o;
+}
+
+// glsl_grid3D: kabuto's ray-marched grid through the pixel, in double (30 steps of a march that folds the ray's
+// point by fract three times a step), as the CPU's; it always paints.
+vec3 V_glsl_grid3D(vec3 p, float w, int P, int A) {
+  const double kHeight = 1000000.0lf;
+  float pw = P_(P, 0), pt = P_(P, 2);
+  double width = isnan(pw) ? 100.0lf : trunc(clamp(double(pw), 100.0lf, 10000000.0lf));
+  double time = isnan(pt) ? double(pt) : clamp(double(pt), 1.0lf, 1000.0lf);
+  double pi = trunc(double(psi()) * width), pj = trunc(double(psi()) * kHeight);
+  vec3 o = vec3(w * float(pi / width - 0.5lf), w * float(pj / kHeight - 0.5lf), w * p.z);
+  precise dvec3 d = dvec3((pi + 0.5lf) / width - 0.5lf, (pj + 0.5lf) / kHeight - 0.5lf, 1.0lf);
+  d /= sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  dvec2 sc = dsinCos(time * 0.021lf);
+  precise double y1 = d.y * sc.y - d.z * sc.x, z1 = d.y * sc.x + d.z * sc.y;
+  precise double x2 = d.x * sc.y - z1 * sc.x, z2 = d.x * sc.x + z1 * sc.y;
+  d = dvec3(x2, y1, z2);
+  precise dvec3 pos = dvec3(0.0lf, time * 0.1lf, 0.0lf), sum = dvec3(0.0lf);
+  for (int step = 0; step < 30; ++step) {
+    precise dvec3 q = pos * 0.1lf;
+    for (int k = 0; k < 3; ++k) {
+      q = q.yzx;
+      q = abs(q - floor(q) - 0.5lf) * 2.0lf;
+    }
+    q *= q;
+    precise dvec3 f = sqrt(q + q.yzx) / 0.8lf - 0.05lf;
+    pos += d * min(min(f.x, f.y), f.z);
+    sum += double(30 - step) / (f + 0.1lf);
+  }
+  precise dvec3 c = 1.0lf - 1.0lf / (1.0lf + sum * (0.09lf / 900.0lf));
+  uint grey = uint(rgb_byte(c.x + c.y + c.z));
+  gRgb = kRgbPainted | grey | grey << 8 | grey << 16;
+  return o;
+}
+
+// glsl_mandala: Sosa's kaleidoscope in double (its up to 73 folds p → |p/(p·p) − c| part float's rounding), with
+// JWildfire's approximate G.atan2, as the CPU's.
+double wild_glslAtan2(double y, double x) {
+  const double c1 = 0.78539816339744831lf, c2 = 3.0lf * c1;
+  double ay = abs(y);
+  precise double angle = x >= 0.0lf ? c1 - c1 * ((x - ay) / (x + ay)) : c2 - c1 * ((x + ay) / (ay - x));
+  return y < 0.0lf ? -angle : angle;
+}
+dvec2 wild_kscope(dvec2 q, double k) {
+  precise double a = wild_glslAtan2(q.y, q.x), m = 2.0lf * k;
+  precise double angle = abs(a - m * floor(a / m) - k);
+  precise double len = sqrt(q.x * q.x + q.y * q.y);
+  dvec2 sc = dsinCos(angle);
+  return dvec2(len * sc.y, len * sc.x);
+}
+vec3 V_glsl_mandala(vec3 p, float w, int P, int A) {
+  const double kHeight = 1000000.0lf;
+  float pw = P_(P, 0), pg = P_(P, 10);
+  double width = isnan(pw) ? 100.0lf : trunc(clamp(double(pw), 100.0lf, 10000000.0lf));
+  bool index = !isnan(pg) && trunc(clamp(pg, 0.0, 1.0)) == 1.0;
+  double pi = trunc(double(psi()) * width), pj = trunc(double(psi()) * kHeight);
+  vec3 o = vec3(w * float(pi / width - 0.5lf), w * float(pj / kHeight - 0.5lf), w * p.z);
+  double mX = double(P_(P, 1)), mY = double(P_(P, 2)), zoom = 5.5lf - double(P_(P, 3));
+  double k = 3.14159265358979323846lf / floor(double(P_(P, 4)));
+  double multiply = double(P_(P, 5)), last = floor(double(P_(P, 6)));
+  precise dvec2 s = wild_kscope(dvec2(zoom * (2.0lf * (pi + 0.5lf) / width - 1.0lf),
+                                      zoom * (2.0lf * (pj + 0.5lf) / kHeight - 1.0lf)), k);
+  precise dvec2 t = wild_kscope(s, k);
+  precise double v = t.x * s.x + t.y * s.y;
+  double c = dcos(v);
+  precise dvec2 u = s * (1.0lf - c) + t * c;
+  if (multiply > 0.001lf) {
+    double m = floor(multiply);
+    precise dvec2 t2 = dvec2(u.y - m * floor(u.y / m), u.x - m * floor(u.x / m));
+    precise dvec2 t3 = -u;
+    precise dvec2 t5 = dvec2(u.y + (t2.x - t3.x * floor(t2.x / t3.x)), u.x + (t2.y - t3.y * floor(t2.y / t3.y)));
+    u = t5.yx;
+  }
+  precise dvec3 q = dvec3(u, mX * v);
+  double shift = mY * 0.318309886183791lf;
+  for (int l = 0; l < 73; ++l) {
+    if (double(l) > last) break;
+    precise double d = q.x * q.x + q.y * q.y + q.z * q.z;
+    precise dvec3 a = abs(abs(q) / d - dvec3(1.0lf, 1.02lf, shift));
+    q = dvec3(1.3lf * a.x, 0.678lf * a.z, 0.999lf * a.y);
+  }
+  float fr = P_(P, 7), fg = P_(P, 8), fb = P_(P, 9);
+  if (!isnan(fr) && trunc(clamp(fr, 0.0, 1.0)) == 1.0) q.x = 1.0lf - q.x;
+  if (!isnan(fg) && trunc(clamp(fg, 0.0, 1.0)) == 1.0) q.y = 1.0lf - q.y;
+  if (!isnan(fb) && trunc(clamp(fb, 0.0, 1.0)) == 1.0) q.z = 1.0lf - q.z;
+  if (index) {
+    float grey = float(q.x * q.y);
+    if (!isnan(grey)) gColour = grey;
+  } else {
+    gRgb = kRgbPainted | uint(rgb_byte(q.x)) | uint(rgb_byte(q.y)) << 8 | uint(rgb_byte(q.z)) << 16;
+  }
+  return o;
+}
+
+// glsl_acrilic: Sosa's acrylic pour in double (its warps take sines of k p1 y + time, far beyond what float's trig
+// holds), as the CPU's.
+vec3 V_glsl_acrilic(vec3 p, float w, int P, int A) {
+  const double kHeight = 1000000.0lf;
+  float pw = P_(P, 0), pg = P_(P, 13), ps = P_(P, 3);
+  double width = isnan(pw) ? 100.0lf : trunc(clamp(double(pw), 100.0lf, 10000000.0lf));
+  bool index = !isnan(pg) && trunc(clamp(pg, 0.0, 1.0)) == 1.0;
+  double pi = trunc(double(psi()) * width), pj = trunc(double(psi()) * kHeight);
+  vec3 o = vec3(w * float(pi / width - 0.5lf), w * float(pj / kHeight - 0.5lf), w * p.z);
+  int steps = isnan(ps) ? 0 : int(trunc(clamp(ps, 3.0, 100.0)));
+  double time = double(P_(P, 2)), q[6];
+  for (int k = 0; k < 6; ++k) {
+    float v = P_(P, 4 + k);
+    q[k] = isnan(v) ? double(v) : clamp(double(v), 1.0lf, 100.0lf);
+  }
+  precise double x = 0.7lf * (pi + 0.5lf) / width, y = 0.7lf * (pj + 0.5lf) / kHeight;
+  precise dvec3 c;
+  for (int ch = 0; ch < 3; ++ch) {
+    for (int k = 1; k < steps; ++k) {
+      double kd = double(k);
+      precise double step = 0.1lf / double(k + ch);
+      x += step * dsin(kd * q[0] * y + time + dcos((time / (q[1] * kd)) * kd + double(ch)));
+      y += step * dcos(kd * q[2] * x + time + dsin((time / (q[3] * kd)) * kd + double(ch)));
+    }
+    c[ch] = dsin(q[4] * (x * x)) + dsin(q[5] * (y * y));
+  }
+  for (int ch = 0; ch < 3; ++ch) {
+    float f = P_(P, 10 + ch);
+    double factor = isnan(f) ? double(f) : clamp(double(f), 0.0lf, 5.0lf);
+    c[ch] = dcos(c[ch] * factor);
+  }
+  if (index) {
+    float grey = sin(float(c.x / (c.x + c.y + c.z)));
+    if (!isnan(grey)) gColour = grey;
+  } else {
+    gRgb = kRgbPainted | uint(rgb_byte(c.x)) | uint(rgb_byte(c.y)) << 8 | uint(rgb_byte(c.z)) << 16;
+  }
+  return o;
 }
