@@ -431,6 +431,8 @@ vec3 V_isosfplot3d_wf(vec3 p, float w, int P, int A) {
     gColour = isnan(v) ? 0.0 : clamp(v, 0.0, 1.0);
   }
   return w * q;
+}
+
 // sym_bg2, sym_ng11, sym_ng15 (JWildfire's symmetry groups): one of a fixed set of maps, picked by ⌊count Ψ⌋ in
 // double as on the CPU; each linear part as (a, b, d, e).
 vec3 V_sym_bg2(vec3 p, float w, int P, int A) {
