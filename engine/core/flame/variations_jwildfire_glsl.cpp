@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/flame/noise.h"
+#include "core/flame/glsl_pixel.h"
 #include "core/flame/variation_kernels.h"
 
 namespace voxflame::core {
@@ -86,18 +87,14 @@ struct Apollonian {
 VOXFLAME_VARIATION_TARGETS void glslApollonian(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                                double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  constexpr double kHeight = 1000000.0;
-  const double width = std::isnan(P[0]) ? 100.0 : std::trunc(std::clamp(P[0], 100.0, 10000000.0));
+  const double width = glslPixelColumns(P[0]);
   const bool index = jwfCount(P[3], 0.0, 1.0, 0.0) == 1;
   std::uint32_t* __restrict rgb = index ? nullptr : in.rgb;
   const Apollonian pattern(std::isfinite(P[2]) ? P[2] : 0.0);
   for (std::size_t i = 0; i < n; ++i) {
-    const double pi = std::trunc(laneUniform(rnd[i]) * width), pj = std::trunc(laneUniform(rnd[i]) * kHeight);
-    outX[i] += w * (pi / width - 0.5);
-    outY[i] += w * (pj / kHeight - 0.5);
-    outZ[i] += w * z[i];
+    const auto [pi, pj] = addGlslPixel(rnd[i], width, w, z[i], outX[i], outY[i], outZ[i]);
     if (!index && !rgb) continue;
-    const Vec3 c = pattern.colour(2.0 * (pi + 0.5) / width - 1.0, 2.0 * (pj + 0.5) / kHeight - 1.0);
+    const Vec3 c = pattern.colour(2.0 * (pi + 0.5) / width - 1.0, 2.0 * (pj + 0.5) / kGlslPixelRows - 1.0);
     if (rgb) {
       rgb[i] = paintedRgb(static_cast<std::uint32_t>(rgbByte(c.x)), static_cast<std::uint32_t>(rgbByte(c.y)),
                           static_cast<std::uint32_t>(rgbByte(c.z)));

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/flame/glsl_pixel.h"
 #include "core/flame/variation_kernels.h"
 
 namespace voxflame::core {
@@ -196,13 +197,12 @@ void circlesBlueBubbles(double time, double radius, int count, CirclesBlueBubble
 VOXFLAME_VARIATION_TARGETS void glslCirclesblue(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                                 double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  constexpr double kHeight = 1000000.0;
   // JWildfire's (int) Tools.limitValue(v, low, high): clamped, then truncated; NaN passes the clamp and is 0.
   const auto limitedInt = [](double v, double low, double high) {
     return std::isnan(v) ? 0.0 : std::trunc(std::clamp(v, low, high));
   };
   const auto limited = [](double v, double low, double high) { return std::isnan(v) ? v : std::clamp(v, low, high); };
-  const double width = std::max(limitedInt(P[0], 100.0, 10000000.0), 100.0);
+  const double width = glslPixelColumns(P[0]);
   const double time = limited(P[2], 1.0, 1000.0), radius = limited(P[3], 0.0, 1.0);
   const int count = static_cast<int>(limitedInt(P[4], 1.0, kCirclesBlueMaxBubbles));
   const bool index = limitedInt(P[5], 0.0, 1.0) == 1.0;
@@ -210,12 +210,9 @@ VOXFLAME_VARIATION_TARGETS void glslCirclesblue(const VariationInput& in, double
   CirclesBlueBubble bubbles[kCirclesBlueMaxBubbles];
   if (index || rgb) circlesBlueBubbles(time, radius, count, bubbles);
   for (std::size_t i = 0; i < n; ++i) {
-    const double pi = std::trunc(laneUniform(rnd[i]) * width), pj = std::trunc(laneUniform(rnd[i]) * kHeight);
-    outX[i] += w * (pi / width - 0.5);
-    outY[i] += w * (pj / kHeight - 0.5);
-    outZ[i] += w * z[i];
+    const auto [pi, pj] = addGlslPixel(rnd[i], width, w, z[i], outX[i], outY[i], outZ[i]);
     if (!index && !rgb) continue;
-    const double u = 2.0 * (pi + 0.5) / width - 1.0, v = 2.0 * (pj + 0.5) / kHeight - 1.0;
+    const double u = 2.0 * (pi + 0.5) / width - 1.0, v = 2.0 * (pj + 0.5) / kGlslPixelRows - 1.0;
     double red = 0.0, green = 0.0, blue = 0.0;
     for (int k = 0; k < count; ++k) {
       const CirclesBlueBubble& b = bubbles[k];
@@ -294,17 +291,14 @@ double grid3dGrey(double u, double v, double time) {
 VOXFLAME_VARIATION_TARGETS void glslGrid3d(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                            double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  constexpr double kHeight = 1000000.0;
-  const double width = std::isnan(P[0]) ? 100.0 : std::trunc(std::clamp(P[0], 100.0, 10000000.0));
+  const double width = glslPixelColumns(P[0]);
   const double time = std::isnan(P[2]) ? P[2] : std::clamp(P[2], 1.0, 1000.0);
   std::uint32_t* __restrict rgb = in.rgb;
   for (std::size_t i = 0; i < n; ++i) {
-    const double pi = std::trunc(laneUniform(rnd[i]) * width), pj = std::trunc(laneUniform(rnd[i]) * kHeight);
-    outX[i] += w * (pi / width - 0.5);
-    outY[i] += w * (pj / kHeight - 0.5);
-    outZ[i] += w * z[i];
+    const auto [pi, pj] = addGlslPixel(rnd[i], width, w, z[i], outX[i], outY[i], outZ[i]);
     if (!rgb) continue;
-    const auto grey = static_cast<std::uint32_t>(rgbByte(grid3dGrey((pi + 0.5) / width, (pj + 0.5) / kHeight, time)));
+    const auto grey =
+        static_cast<std::uint32_t>(rgbByte(grid3dGrey((pi + 0.5) / width, (pj + 0.5) / kGlslPixelRows, time)));
     rgb[i] = paintedRgb(grey, grey, grey);
   }
 }
@@ -378,17 +372,13 @@ MandalaColour mandalaColour(double u0, double v0, const double* P) {
 VOXFLAME_VARIATION_TARGETS void glslMandala(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                             double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  constexpr double kHeight = 1000000.0;
-  const double width = std::isnan(P[0]) ? 100.0 : std::trunc(std::clamp(P[0], 100.0, 10000000.0));
+  const double width = glslPixelColumns(P[0]);
   const bool index = !std::isnan(P[10]) && std::trunc(std::clamp(P[10], 0.0, 1.0)) == 1.0;
   std::uint32_t* __restrict rgb = index ? nullptr : in.rgb;
   for (std::size_t i = 0; i < n; ++i) {
-    const double pi = std::trunc(laneUniform(rnd[i]) * width), pj = std::trunc(laneUniform(rnd[i]) * kHeight);
-    outX[i] += w * (pi / width - 0.5);
-    outY[i] += w * (pj / kHeight - 0.5);
-    outZ[i] += w * z[i];
+    const auto [pi, pj] = addGlslPixel(rnd[i], width, w, z[i], outX[i], outY[i], outZ[i]);
     if (!index && !rgb) continue;
-    const MandalaColour c = mandalaColour(2.0 * (pi + 0.5) / width - 1.0, 2.0 * (pj + 0.5) / kHeight - 1.0, P);
+    const MandalaColour c = mandalaColour(2.0 * (pi + 0.5) / width - 1.0, 2.0 * (pj + 0.5) / kGlslPixelRows - 1.0, P);
     if (rgb) {
       rgb[i] = paintedRgb(static_cast<std::uint32_t>(rgbByte(c.r)), static_cast<std::uint32_t>(rgbByte(c.g)),
                           static_cast<std::uint32_t>(rgbByte(c.b)));
@@ -441,19 +431,15 @@ void acrilicColour(double px, double py, double width, double height, const Acri
 VOXFLAME_VARIATION_TARGETS void glslAcrilic(const VariationInput& in, double* __restrict ox, double* __restrict oy,
                                             double* __restrict oz) {
   VOXFLAME_VARIATION_BEGIN(in, ox, oy, oz)
-  constexpr double kHeight = 1000000.0;
-  const double width = std::isnan(P[0]) ? 100.0 : std::trunc(std::clamp(P[0], 100.0, 10000000.0));
+  const double width = glslPixelColumns(P[0]);
   const bool index = !std::isnan(P[13]) && std::trunc(std::clamp(P[13], 0.0, 1.0)) == 1.0;
   std::uint32_t* __restrict rgb = index ? nullptr : in.rgb;
   const AcrilicParams params(P);
   for (std::size_t i = 0; i < n; ++i) {
-    const double pi = std::trunc(laneUniform(rnd[i]) * width), pj = std::trunc(laneUniform(rnd[i]) * kHeight);
-    outX[i] += w * (pi / width - 0.5);
-    outY[i] += w * (pj / kHeight - 0.5);
-    outZ[i] += w * z[i];
+    const auto [pi, pj] = addGlslPixel(rnd[i], width, w, z[i], outX[i], outY[i], outZ[i]);
     if (!index && !rgb) continue;
     double c[3];
-    acrilicColour(pi + 0.5, pj + 0.5, width, kHeight, params, c);
+    acrilicColour(pi + 0.5, pj + 0.5, width, kGlslPixelRows, params, c);
     if (rgb) {
       rgb[i] = paintedRgb(static_cast<std::uint32_t>(rgbByte(c[0])), static_cast<std::uint32_t>(rgbByte(c[1])),
                           static_cast<std::uint32_t>(rgbByte(c[2])));
